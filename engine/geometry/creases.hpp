@@ -1,0 +1,50 @@
+// Creases: the tracked edges made by folds (DESIGN.md 3), their signed fold angles and their
+// assignment, and the crease curves (chains of crease edges between junctions).
+#pragma once
+
+#include <vector>
+
+#include "engine/geometry/sheet.hpp"
+#include "engine/geometry/topology.hpp"
+
+namespace curvefold {
+
+// FOLD's edge assignments.
+enum class Assignment : char {
+  Boundary = 'B',
+  Mountain = 'M',
+  Valley = 'V',
+  Flat = 'F',  // an interior edge that only bends, or a crease unfolded flat again
+  Cut = 'C',   // the slit of a tube or cone
+};
+
+// A crease whose |fold angle| is below this (degrees) is reported as flat.
+inline constexpr double kFlatCreaseDegrees = 1e-6;
+
+// Signed dihedral angle between the front normals of the two triangles of an interior edge, in
+// degrees in [-180, 180]: positive for a valley (the front faces turn toward each other),
+// negative for a mountain (the FOLD convention). 0 for a boundary edge.
+double foldAngleDegrees(const Sheet& sheet, const EdgeTopology::EdgeSides& sides);
+
+Assignment assignmentOf(const Sheet& sheet, const EdgeTopology::EdgeSides& sides,
+                        double foldAngle);
+
+struct CreaseEdge {
+  Edge edge;
+  double foldAngle = 0.0;  // degrees, FOLD convention
+  Assignment assignment = Assignment::Flat;
+};
+
+// Every crease-tagged edge with its angle, in edge order.
+std::vector<CreaseEdge> creaseEdges(const Sheet& sheet, const EdgeTopology& edges);
+
+// A maximal chain of crease edges whose inner vertices touch exactly two crease edges.
+struct CreaseCurve {
+  std::vector<VertexIndex> vertices;  // in order; first == last when closed
+  bool closed = false;
+  double planarityError = 0.0;  // metres: largest distance of a vertex from the curve's plane
+};
+
+std::vector<CreaseCurve> creaseCurves(const Sheet& sheet, const EdgeTopology& edges);
+
+}  // namespace curvefold

@@ -1,0 +1,109 @@
+// The fixed and temporal sheets of [Mitani & Igarashi 2011, Sec. 3.3] with grab, drag, commit,
+// cancel, undo and redo (DESIGN.md 2). Folds are recorded as a plane and a 2D development seed, so
+// a design replays independent of vertex numbering.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "engine/geometry/reflection.hpp"
+#include "engine/geometry/sheet.hpp"
+#include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/topology.hpp"
+
+namespace curvefold {
+
+// One committed fold: the grabbed point as a development point, and the plane it was reflected
+// through. grabbed/target are the 3D drag (informative; the plane is what replays).
+struct FoldRecord {
+  glm::dvec2 seed{0.0};
+  ReflectionPlane plane;
+  glm::dvec3 grabbed{0.0};
+  glm::dvec3 target{0.0};
+};
+
+// Applies one recorded fold: the seed becomes a vertex (insertVertexAt), then the part containing
+// it is reflected. Throws InvalidSheet when the seed lies outside the sheet. Bit-identical to the
+// same fold made live through FoldSession.
+Sheet applyFold(const Sheet& sheet, const FoldRecord& fold);
+
+// Applies folds in order to an initial sheet.
+Sheet replayFolds(Sheet initial, const std::vector<FoldRecord>& folds);
+
+class FoldSession {
+ public:
+  explicit FoldSession(Sheet initial);
+
+  const Sheet& initial() const { return *initial_; }
+  const Sheet& fixed() const { return fixed_; }
+  // What to show: the temporal sheet while dragging, else the fixed one.
+  const Sheet& current() const { return dragging_ ? temporal_ : fixed_; }
+  double epsilon() const { return epsilon_; }
+
+  // --- Dragging -----------------------------------------------------------------------------
+  bool dragging() const { return dragging_; }
+  // Grabs a surface point (it becomes a vertex of the temporal sheet). Ends any drag in progress
+  // by cancelling it. Returns the grabbed 3D position.
+  glm::dvec3 beginDrag(const SurfacePoint& point);
+  glm::dvec3 beginDragAtDevelopment(const glm::dvec2& seed);
+  glm::dvec3 beginDragNear(const glm::dvec3& p);
+  // Moves the grabbed point to `target` (sheet coordinates); the temporal sheet is the fixed one
+  // with the part containing the point reflected through the bisector plane. A target within
+  // epsilon of the grabbed point shows the unfolded sheet. Returns what changed since the last
+  // update, for incremental upload.
+  const ReflectionChanges& updateDrag(const glm::dvec3& target);
+  // Commits the temporal sheet as the new fixed sheet (a drag that never left its start adds no
+  // fold). Returns true if a fold was added.
+  bool commit();
+  void cancel();
+
+  const glm::dvec3& grabbedPoint() const { return grabbed_; }
+  const glm::dvec3& dragTarget() const { return target_; }
+  bool hasPlane() const { return folded_; }
+  const ReflectionPlane& plane() const { return plane_; }
+  VertexIndex grabbedVertex() const { return grabVertex_; }
+  const ReflectionChanges& lastChanges() const { return workspace_.changes(); }
+
+  // --- History ------------------------------------------------------------------------------
+  const std::vector<FoldRecord>& folds() const { return history_; }
+  std::size_t foldCount() const { return applied_; }  // folds in the fixed sheet
+  bool canUndo() const { return applied_ > 0; }
+  bool canRedo() const { return applied_ < history_.size(); }
+  bool undo();
+  bool redo();
+
+ private:
+  void setFixed(Sheet sheet);
+  Sheet sheetAfter(std::size_t foldCount) const;
+
+  std::shared_ptr<const Sheet> initial_;
+  double epsilon_ = 0.0;
+  Sheet fixed_;
+  VertexTriangles fixedAdjacency_;
+
+  // Drag state: grabSheet_ is fixed_ with the grabbed point made a vertex.
+  bool dragging_ = false;
+  bool folded_ = false;
+  Sheet grabSheet_;
+  VertexTriangles grabAdjacency_;
+  VertexIndex grabVertex_ = kNoIndex;
+  glm::dvec2 grabSeed_{0.0};
+  glm::dvec3 grabbed_{0.0};
+  glm::dvec3 target_{0.0};
+  ReflectionPlane plane_;
+  Sheet temporal_;
+  ReflectionWorkspace workspace_;
+
+  // Committed folds; the first applied_ are in fixed_, the rest can be redone. Keyframes every
+  // kKeyframeInterval folds bound the cost of undo to a few replayed folds.
+  static constexpr std::size_t kKeyframeInterval = 8;
+  std::vector<FoldRecord> history_;
+  std::size_t applied_ = 0;
+  std::vector<std::shared_ptr<const Sheet>> keyframes_;  // keyframes_[k]: after k*interval folds
+};
+
+}  // namespace curvefold

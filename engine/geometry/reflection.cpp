@@ -1,0 +1,1 @@
+#include "engine/geometry/reflection.hpp"

@@ -1,0 +1,77 @@
+// The sheet: a triangle mesh of paper with a 3D position and a 2D development position per
+// vertex (DESIGN.md 1). Flat index arrays, as in geometry-central; everything derived from them
+// (vertex-to-triangle references, edges, boundary loops) lives in topology.hpp.
+#pragma once
+
+#include <array>
+#include <compare>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace curvefold {
+
+using VertexIndex = std::uint32_t;
+using TriangleIndex = std::uint32_t;
+inline constexpr std::uint32_t kNoIndex = 0xffffffffu;
+
+// Three vertex indices, counter-clockwise in the development: that order defines the front side.
+using Triangle = std::array<VertexIndex, 3>;
+
+// An undirected edge, always stored with a < b.
+struct Edge {
+  VertexIndex a = 0;
+  VertexIndex b = 0;
+
+  static Edge of(VertexIndex u, VertexIndex v) { return u < v ? Edge{u, v} : Edge{v, u}; }
+  auto operator<=>(const Edge&) const = default;
+};
+
+// Edges that carry meaning beyond the mesh: creases made by folds, and the slit of a tube or cone
+// (a boundary edge that the paper glues shut).
+enum class EdgeKind : std::uint8_t { Crease = 0, Slit = 1 };
+
+struct TaggedEdge {
+  Edge edge;
+  EdgeKind kind = EdgeKind::Crease;
+
+  auto operator<=>(const TaggedEdge&) const = default;
+};
+
+struct Sheet {
+  std::vector<glm::dvec3> positions;    // 3D, metres
+  std::vector<glm::dvec2> development;  // flat paper, metres
+  std::vector<Triangle> triangles;
+  std::vector<TaggedEdge> tags;  // sorted by edge, one entry per edge
+
+  std::size_t vertexCount() const { return positions.size(); }
+  std::size_t triangleCount() const { return triangles.size(); }
+
+  // Kind of an edge, or nothing for a plain (bending or boundary) edge. O(log tags).
+  std::optional<EdgeKind> edgeKind(Edge edge) const;
+  // Sorts the tags and drops duplicates (a later entry for the same edge loses).
+  void normalizeTags();
+};
+
+// Bit-for-bit equality of every array (positions compared by their bytes, so -0.0 != 0.0).
+bool identical(const Sheet& a, const Sheet& b);
+
+// Diagonal of the development's bounding box: the sheet's size, invariant under folding.
+double sheetSize(const Sheet& sheet);
+
+// Tolerance below which a signed distance counts as zero (DESIGN.md 2: 1e-9 of the size).
+inline constexpr double kRelativeEpsilon = 1e-9;
+inline double sheetEpsilon(const Sheet& sheet) { return kRelativeEpsilon * sheetSize(sheet); }
+
+// Thrown by validate() and by every operation handed an impossible sheet.
+class InvalidSheet : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace curvefold

@@ -1,0 +1,5 @@
+#include <gtest/gtest.h>
+
+#include "engine/geometry/validate.hpp"
+
+TEST(Sheet, Placeholder) {}
