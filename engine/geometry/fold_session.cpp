@@ -1,1 +1,128 @@
 #include "engine/geometry/fold_session.hpp"
+
+#include <string>
+
+#include <glm/geometric.hpp>
+
+namespace curvefold {
+
+Sheet applyFold(const Sheet& sheet, const FoldRecord& fold) {
+  VertexInsertion grab = insertVertexAt(sheet, fold.seed);
+  return reflect(grab.sheet, grab.vertex, fold.plane).sheet;
+}
+
+Sheet replayFolds(Sheet initial, const std::vector<FoldRecord>& folds) {
+  for (std::size_t i = 0; i < folds.size(); ++i) {
+    try {
+      initial = applyFold(initial, folds[i]);
+    } catch (const InvalidSheet& error) {
+      throw InvalidSheet("fold " + std::to_string(i + 1) + ": " + error.what());
+    }
+  }
+  return initial;
+}
+
+FoldSession::FoldSession(Sheet initial)
+    : initial_(std::make_shared<const Sheet>(std::move(initial))),
+      epsilon_(sheetEpsilon(*initial_)) {
+  setFixed(*initial_);
+  keyframes_.push_back(initial_);
+}
+
+void FoldSession::setFixed(Sheet sheet) {
+  fixed_ = std::move(sheet);
+  fixedAdjacency_ = buildVertexTriangles(fixed_);
+}
+
+glm::dvec3 FoldSession::beginDrag(const SurfacePoint& point) {
+  return beginDragAtDevelopment(developmentOf(fixed_, point));
+}
+
+glm::dvec3 FoldSession::beginDragNear(const glm::dvec3& p) {
+  return beginDrag(closestSurfacePoint(fixed_, p));
+}
+
+glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
+  cancel();
+  VertexInsertion grab = insertVertexAt(fixed_, seed);
+  // Grabbing an existing vertex leaves the topology as it is.
+  const bool inserted = grab.sheet.vertexCount() != fixed_.vertexCount();
+  grabSheet_ = std::move(grab.sheet);
+  grabAdjacency_ = inserted ? buildVertexTriangles(grabSheet_) : fixedAdjacency_;
+  grabVertex_ = grab.vertex;
+  grabSeed_ = seed;
+  grabbed_ = grabSheet_.positions[grabVertex_];
+  target_ = grabbed_;
+  temporal_ = grabSheet_;
+  workspace_.clear();
+  dragging_ = true;
+  folded_ = false;
+  return grabbed_;
+}
+
+const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
+  if (!dragging_) throw std::logic_error("updateDrag without a drag in progress");
+  workspace_.restore(grabSheet_, temporal_);
+  target_ = target;
+  // The seed sits at distance -|target - grabbed|/2 from the bisector; closer than epsilon to the
+  // plane means no fold at all (a target equal to the grabbed point is a no-op, not an error).
+  folded_ = glm::distance(target, grabbed_) > 2.0 * epsilon_;
+  if (!folded_) {
+    workspace_.clear();
+    return workspace_.changes();
+  }
+  plane_ = bisectorPlane(grabbed_, target);
+  workspace_.apply(grabSheet_, grabAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
+  return workspace_.changes();
+}
+
+bool FoldSession::commit() {
+  if (!dragging_) return false;
+  dragging_ = false;
+  if (!folded_) return false;
+  folded_ = false;
+  history_.resize(applied_);
+  // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
+  if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
+    keyframes_.resize(applied_ / kKeyframeInterval + 1);
+  history_.push_back({grabSeed_, plane_, grabbed_, target_});
+  ++applied_;
+  setFixed(std::move(temporal_));
+  temporal_ = Sheet{};
+  if (applied_ % kKeyframeInterval == 0)
+    keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
+  return true;
+}
+
+void FoldSession::cancel() {
+  dragging_ = false;
+  folded_ = false;
+}
+
+Sheet FoldSession::sheetAfter(std::size_t foldCount) const {
+  const std::size_t keyframe = std::min(foldCount / kKeyframeInterval, keyframes_.size() - 1);
+  Sheet sheet = *keyframes_[keyframe];
+  for (std::size_t i = keyframe * kKeyframeInterval; i < foldCount; ++i)
+    sheet = applyFold(sheet, history_[i]);
+  return sheet;
+}
+
+bool FoldSession::undo() {
+  cancel();
+  if (!canUndo()) return false;
+  --applied_;
+  setFixed(sheetAfter(applied_));
+  return true;
+}
+
+bool FoldSession::redo() {
+  cancel();
+  if (!canRedo()) return false;
+  setFixed(applyFold(fixed_, history_[applied_]));
+  ++applied_;
+  if (applied_ % kKeyframeInterval == 0 && keyframes_.size() == applied_ / kKeyframeInterval)
+    keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
+  return true;
+}
+
+}  // namespace curvefold

@@ -7,6 +7,7 @@
 // cut edge. Triangles the plane crosses but the fill never reaches are left alone [Fig. 3].
 #pragma once
 
+#include <unordered_map>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -52,6 +53,8 @@ class ReflectionWorkspace {
              const ReflectionPlane& plane, double epsilon, Sheet& out);
   // Puts `out` back to `sheet` by undoing the last apply() (cost proportional to what changed).
   void restore(const Sheet& sheet, Sheet& out) const;
+  // Forgets the last apply(), for when `out` has been reset to `sheet` by other means.
+  void clear();
 
   const ReflectionChanges& changes() const { return changes_; }
 
@@ -69,7 +72,8 @@ class ReflectionWorkspace {
   std::vector<std::uint32_t> triangleReached_;   // == stamp_: triangle in the reached part
   std::vector<VertexIndex> reachedVertices_;
   std::vector<TriangleIndex> reachedTriangles_;
-  std::vector<std::pair<Edge, VertexIndex>> cuts_;  // cut vertex of each split edge
+  std::unordered_map<std::uint64_t, VertexIndex> cuts_;  // cut vertex of each split edge
+  std::vector<Edge> splitEdges_;
   std::vector<TaggedEdge> newTags_;
 };
 

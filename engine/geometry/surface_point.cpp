@@ -1,1 +1,188 @@
 #include "engine/geometry/surface_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+namespace curvefold {
+namespace {
+
+// Closest point of triangle abc to p, as barycentric coordinates (Ericson, Real-Time Collision
+// Detection, 5.1.5: Voronoi regions of the vertices, then the edges, then the face).
+glm::dvec3 closestBarycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                              const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1, 0, 0};
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return {1 - v - w, v, w};
+}
+
+glm::dvec3 lift(const glm::dvec2& q) { return {q.x, q.y, 0.0}; }
+
+std::string describe(const glm::dvec2& q) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "(" << q.x << ", " << q.y << ")";
+  return out.str();
+}
+
+// Distance from q to segment uv and the parameter of its foot, clamped to [0, 1].
+std::pair<double, double> segmentDistance(const glm::dvec2& q, const glm::dvec2& u,
+                                          const glm::dvec2& v) {
+  const glm::dvec2 d = v - u;
+  const double t = std::clamp(glm::dot(q - u, d) / glm::dot(d, d), 0.0, 1.0);
+  return {glm::distance(q, u + t * d), t};
+}
+
+}  // namespace
+
+glm::dvec3 positionOf(const Sheet& sheet, const SurfacePoint& point) {
+  const Triangle& t = sheet.triangles[point.triangle];
+  return point.barycentric.x * sheet.positions[t[0]] + point.barycentric.y * sheet.positions[t[1]] +
+         point.barycentric.z * sheet.positions[t[2]];
+}
+
+glm::dvec2 developmentOf(const Sheet& sheet, const SurfacePoint& point) {
+  const Triangle& t = sheet.triangles[point.triangle];
+  return point.barycentric.x * sheet.development[t[0]] +
+         point.barycentric.y * sheet.development[t[1]] +
+         point.barycentric.z * sheet.development[t[2]];
+}
+
+SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p) {
+  SurfacePoint best;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const glm::dvec3 bary = closestBarycentric(p, sheet.positions[tri[0]],
+                                               sheet.positions[tri[1]], sheet.positions[tri[2]]);
+    const SurfacePoint candidate{t, bary};
+    const glm::dvec3 offset = positionOf(sheet, candidate) - p;
+    const double distance = glm::dot(offset, offset);
+    if (distance < bestDistance) {
+      bestDistance = distance;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm::dvec2& q,
+                                                   double tolerance) {
+  std::optional<SurfacePoint> best;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  double bestInterior = -std::numeric_limits<double>::infinity();
+  const glm::dvec3 target = lift(q);
+  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const glm::dvec3 a = lift(sheet.development[tri[0]]), b = lift(sheet.development[tri[1]]),
+                     c = lift(sheet.development[tri[2]]);
+    const glm::dvec3 bary = closestBarycentric(target, a, b, c);
+    const double distance = glm::distance(bary.x * a + bary.y * b + bary.z * c, target);
+    if (distance > tolerance || distance > bestDistance) continue;
+    // Among triangles containing q, prefer the one where q is farthest from the edges.
+    const double interior = std::min({bary.x, bary.y, bary.z});
+    if (distance < bestDistance || interior > bestInterior) {
+      bestDistance = distance;
+      bestInterior = interior;
+      best = SurfacePoint{t, bary};
+    }
+  }
+  return best;
+}
+
+VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
+  const double snap = kRelativeGrabSnap * sheetSize(sheet);
+  const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
+  if (!located)
+    throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
+  const TriangleIndex t = located->triangle;
+  const Triangle tri = sheet.triangles[t];
+
+  // An existing vertex within snap distance.
+  VertexIndex nearest = kNoIndex;
+  double nearestDistance = snap;
+  for (VertexIndex v : tri) {
+    const double d = glm::distance(sheet.development[v], q);
+    if (d <= nearestDistance) {
+      nearestDistance = d;
+      nearest = v;
+    }
+  }
+  if (nearest != kNoIndex) return {sheet, nearest};
+
+  VertexInsertion result{sheet, static_cast<VertexIndex>(sheet.vertexCount())};
+  Sheet& out = result.sheet;
+  const VertexIndex m = result.vertex;
+
+  // An edge within snap distance: split it and both of its triangles.
+  for (int i = 0; i < 3; ++i) {
+    const VertexIndex u = tri[i], w = tri[(i + 1) % 3];
+    const auto [distance, s] = segmentDistance(q, sheet.development[u], sheet.development[w]);
+    if (distance > snap) continue;
+    out.positions.push_back(sheet.positions[u] + s * (sheet.positions[w] - sheet.positions[u]));
+    out.development.push_back(sheet.development[u] +
+                              s * (sheet.development[w] - sheet.development[u]));
+    // Each triangle holding the edge (u, w) in either direction becomes two.
+    for (TriangleIndex k = 0; k < sheet.triangleCount(); ++k) {
+      const Triangle& o = sheet.triangles[k];
+      for (int j = 0; j < 3; ++j) {
+        const VertexIndex from = o[j], to = o[(j + 1) % 3], apex = o[(j + 2) % 3];
+        if (Edge::of(from, to) != Edge::of(u, w)) continue;
+        out.triangles[k] = {from, m, apex};
+        out.triangles.push_back({m, to, apex});
+      }
+    }
+    if (const std::optional<EdgeKind> kind = sheet.edgeKind(Edge::of(u, w))) {
+      std::erase_if(out.tags, [&](const TaggedEdge& tag) { return tag.edge == Edge::of(u, w); });
+      out.tags.push_back({Edge::of(u, m), *kind});
+      out.tags.push_back({Edge::of(m, w), *kind});
+      out.normalizeTags();
+    }
+    return result;
+  }
+
+  // Inside the triangle: three triangles around the new vertex, with barycentric coordinates from
+  // the development so the 3D point is the same point of the paper.
+  const glm::dvec2 a = sheet.development[tri[0]], b = sheet.development[tri[1]],
+                   c = sheet.development[tri[2]];
+  const double area = (b - a).x * (c - a).y - (b - a).y * (c - a).x;
+  const double wb = ((q - a).x * (c - a).y - (q - a).y * (c - a).x) / area;
+  const double wc = ((b - a).x * (q - a).y - (b - a).y * (q - a).x) / area;
+  const double wa = 1.0 - wb - wc;
+  out.positions.push_back(wa * sheet.positions[tri[0]] + wb * sheet.positions[tri[1]] +
+                          wc * sheet.positions[tri[2]]);
+  out.development.push_back(q);
+  out.triangles[t] = {tri[0], tri[1], m};
+  out.triangles.push_back({tri[1], tri[2], m});
+  out.triangles.push_back({tri[2], tri[0], m});
+  return result;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,122 @@
+#include <random>
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/geometry/fold_session.hpp"
+#include "sheet_fixtures.hpp"
+
+namespace curvefold {
+namespace {
+
+using testing::expectInvariants;
+using testing::flatGrid;
+
+// A repeatable drag: grab near a point of the current sheet, pass through a few targets, commit.
+void drag(FoldSession& session, const glm::dvec3& near, const std::vector<glm::dvec3>& targets) {
+  session.beginDragNear(near);
+  for (const glm::dvec3& target : targets) {
+    session.updateDrag(target);
+    expectInvariants(session.current(), session.initial());
+  }
+  session.commit();
+  expectInvariants(session.fixed(), session.initial());
+}
+
+std::vector<FoldRecord> firstFolds(const FoldSession& session, std::size_t count) {
+  return {session.folds().begin(), session.folds().begin() + count};
+}
+
+TEST(FoldSession, CommittedDragEqualsReplayedRecordBitForBit) {
+  FoldSession session(flatGrid(8, 6, 0.025));
+  drag(session, {0.013, 0.011, 0.0}, {{0.05, 0.02, 0.02}, {0.1, 0.04, 0.05}, {0.12, 0.05, 0.06}});
+  ASSERT_EQ(session.foldCount(), 1u);
+  const FoldRecord& fold = session.folds()[0];
+  EXPECT_EQ(fold.target, (glm::dvec3{0.12, 0.05, 0.06}));
+  EXPECT_NEAR(fold.seed.x, 0.013, 1e-15);  // a surface point, not a vertex
+  EXPECT_NEAR(fold.seed.y, 0.011, 1e-15);
+  EXPECT_TRUE(identical(session.fixed(), applyFold(session.initial(), fold)));
+  // The grabbed point is now a vertex at the target.
+  const Sheet& sheet = session.fixed();
+  bool found = false;
+  for (VertexIndex v = 0; v < sheet.vertexCount(); ++v)
+    found |= sheet.development[v] == fold.seed &&
+             glm::distance(sheet.positions[v], fold.target) < 1e-12;
+  EXPECT_TRUE(found);
+}
+
+TEST(FoldSession, CancelRestoresTheFixedSheetBitForBit) {
+  FoldSession session(flatGrid(6, 6, 0.03));
+  drag(session, {0.0, 0.0, 0.0}, {{0.09, 0.02, 0.03}});
+  const Sheet before = session.fixed();
+  session.beginDragNear({0.17, 0.16, 0.0});
+  session.updateDrag({0.05, 0.05, 0.1});
+  EXPECT_FALSE(identical(session.current(), before));
+  session.cancel();
+  EXPECT_FALSE(session.dragging());
+  EXPECT_TRUE(identical(session.current(), before));
+  EXPECT_EQ(session.foldCount(), 1u);
+}
+
+TEST(FoldSession, TargetAtTheGrabbedPointIsANoOp) {
+  FoldSession session(flatGrid(4, 4, 0.05));
+  const glm::dvec3 grabbed = session.beginDragNear({0.07, 0.03, 0.0});
+  session.updateDrag({0.15, 0.1, 0.1});
+  session.updateDrag(grabbed);  // back to the start: unfolded again
+  EXPECT_FALSE(session.hasPlane());
+  EXPECT_TRUE(session.current().tags.empty());
+  EXPECT_FALSE(session.commit());
+  EXPECT_EQ(session.foldCount(), 0u);
+  EXPECT_TRUE(identical(session.fixed(), session.initial()));
+}
+
+TEST(FoldSession, UndoRedoAcrossKeyframes) {
+  FoldSession session(flatGrid(10, 10, 0.02));
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> coordinate(0.0, 0.2);
+  for (int i = 0; i < 11; ++i)
+    drag(session, {coordinate(random), coordinate(random), 0.0},
+         {{coordinate(random), coordinate(random), 0.05 + coordinate(random) * 0.2}});
+  ASSERT_EQ(session.foldCount(), 11u);
+  const Sheet afterEleven = session.fixed();
+  const std::vector<FoldRecord> all = session.folds();
+
+  for (int i = 0; i < 4; ++i) ASSERT_TRUE(session.undo());
+  EXPECT_TRUE(identical(session.fixed(), replayFolds(session.initial(), firstFolds(session, 7))));
+  ASSERT_TRUE(session.redo());
+  ASSERT_TRUE(session.redo());
+  EXPECT_TRUE(identical(session.fixed(), replayFolds(session.initial(), firstFolds(session, 9))));
+  ASSERT_TRUE(session.redo());
+  ASSERT_TRUE(session.redo());
+  EXPECT_FALSE(session.redo());
+  EXPECT_TRUE(identical(session.fixed(), afterEleven));
+
+  while (session.undo()) {
+  }
+  EXPECT_EQ(session.foldCount(), 0u);
+  EXPECT_TRUE(identical(session.fixed(), session.initial()));
+
+  // A new fold after undo drops the redo history.
+  ASSERT_TRUE(session.redo());
+  drag(session, {0.1, 0.1, 0.0}, {{0.12, 0.1, 0.05}});
+  EXPECT_EQ(session.folds().size(), 2u);
+  EXPECT_FALSE(session.canRedo());
+  EXPECT_TRUE(identical(session.fixed(), replayFolds(session.initial(), session.folds())));
+  EXPECT_EQ(session.folds()[0].seed, all[0].seed);
+}
+
+TEST(FoldSession, UpdateReportsWhatChanged) {
+  FoldSession session(flatGrid(20, 20, 0.01));
+  session.beginDragNear({0.0, 0.0, 0.0});
+  const ReflectionChanges& changes = session.updateDrag({0.04, 0.0, 0.04});
+  // Only the corner region moved: far fewer vertices than the sheet has.
+  EXPECT_GT(changes.movedVertices.size(), 0u);
+  EXPECT_LT(changes.movedVertices.size(), session.current().vertexCount() / 4);
+  for (VertexIndex v : changes.movedVertices) EXPECT_LT(session.current().development[v].x, 0.04);
+  EXPECT_EQ(changes.firstNewVertex, session.fixed().vertexCount());
+}
+
+}  // namespace
+}  // namespace curvefold
