@@ -1,1 +1,32 @@
-int main() { return 0; }
+// curvefold: design curved-fold origami by reflection (Mitani & Igarashi 2011).
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "curvefold: error: " + std::string(e.what()) + " (see --help)\n";
+  });
+  curvefold::cli::addSurfacesCommand(app);
+  curvefold::cli::addNewCommand(app);
+  curvefold::cli::addFoldCommand(app);
+  curvefold::cli::addExportCommand(app);
+  curvefold::cli::addCheckCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    // Every failure is one line naming the problem; nothing half-written is left behind because
+    // every file is written to a temporary and renamed.
+    std::cerr << "curvefold: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

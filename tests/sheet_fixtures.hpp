@@ -13,8 +13,9 @@ namespace curvefold::testing {
 
 // A flat grid of nx by ny square cells of side `cell` in the plane z = 0 (development = xy),
 // keeping only the cells for which keep(i, j) holds. Each cell is two counter-clockwise triangles.
-inline Sheet flatGrid(int nx, int ny, double cell,
-                      const std::function<bool(int, int)>& keep = [](int, int) { return true; }) {
+inline Sheet flatGrid(
+    int nx, int ny, double cell,
+    const std::function<bool(int, int)>& keep = [](int, int) { return true; }) {
   Sheet sheet;
   std::vector<VertexIndex> index((nx + 1) * (ny + 1), kNoIndex);
   auto vertex = [&](int i, int j) {
@@ -38,7 +39,9 @@ inline Sheet flatGrid(int nx, int ny, double cell,
 }
 
 // The unit square as two triangles: 0=(0,0) 1=(1,0) 2=(1,1) 3=(0,1).
-inline Sheet unitSquare() { return flatGrid(1, 1, 1.0); }
+inline Sheet unitSquare() {
+  return flatGrid(1, 1, 1.0);
+}
 
 // validate() passes and the topology (Euler characteristic, boundary loops, components) is the
 // initial sheet's.

@@ -42,8 +42,8 @@ TEST(FoldSession, CommittedDragEqualsReplayedRecordBitForBit) {
   const Sheet& sheet = session.fixed();
   bool found = false;
   for (VertexIndex v = 0; v < sheet.vertexCount(); ++v)
-    found |= sheet.development[v] == fold.seed &&
-             glm::distance(sheet.positions[v], fold.target) < 1e-12;
+    found |=
+        sheet.development[v] == fold.seed && glm::distance(sheet.positions[v], fold.target) < 1e-12;
   EXPECT_TRUE(found);
 }
 

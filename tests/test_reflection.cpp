@@ -139,8 +139,7 @@ TEST(Reflection, PlaneThroughVerticesSnapsInsteadOfMakingSlivers) {
   for (double offset : {0.0, 3e-12, -3e-12}) {
     // Corner (0,0) dragged across the line y = 0.1 + offset (a row of vertices at offset 0).
     const double line = 0.1 + offset;
-    const ReflectionResult result =
-        reflect(grid, 0, bisectorPlane({0, 0, 0}, {0, 2 * line, 0}));
+    const ReflectionResult result = reflect(grid, 0, bisectorPlane({0, 0, 0}, {0, 2 * line, 0}));
     expectInvariants(result.sheet, grid);
     EXPECT_EQ(result.sheet.vertexCount(), grid.vertexCount()) << "offset " << offset;
     EXPECT_EQ(result.sheet.triangleCount(), grid.triangleCount()) << "offset " << offset;

@@ -66,8 +66,7 @@ Assignment assignmentOf(const Sheet& sheet, const EdgeTopology::EdgeSides& sides
                         double foldAngle) {
   const std::optional<EdgeKind> kind = sheet.edgeKind(sides.edge);
   if (sides.isBoundary()) return kind == EdgeKind::Slit ? Assignment::Cut : Assignment::Boundary;
-  if (kind != EdgeKind::Crease || std::abs(foldAngle) < kFlatCreaseDegrees)
-    return Assignment::Flat;
+  if (kind != EdgeKind::Crease || std::abs(foldAngle) < kFlatCreaseDegrees) return Assignment::Flat;
   return foldAngle > 0.0 ? Assignment::Valley : Assignment::Mountain;
 }
 

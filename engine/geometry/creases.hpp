@@ -26,8 +26,7 @@ inline constexpr double kFlatCreaseDegrees = 1e-6;
 // negative for a mountain (the FOLD convention). 0 for a boundary edge.
 double foldAngleDegrees(const Sheet& sheet, const EdgeTopology::EdgeSides& sides);
 
-Assignment assignmentOf(const Sheet& sheet, const EdgeTopology::EdgeSides& sides,
-                        double foldAngle);
+Assignment assignmentOf(const Sheet& sheet, const EdgeTopology::EdgeSides& sides, double foldAngle);
 
 struct CreaseEdge {
   Edge edge;

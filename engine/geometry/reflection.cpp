@@ -23,20 +23,25 @@ ReflectionPlane bisectorPlane(const glm::dvec3& p0, const glm::dvec3& p1) {
 
 namespace {
 
-std::uint64_t edgeKey(Edge e) { return (std::uint64_t{e.a} << 32) | e.b; }
+std::uint64_t edgeKey(Edge e) {
+  return (std::uint64_t{e.a} << 32) | e.b;
+}
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+double cross2(const glm::dvec2& a, const glm::dvec2& b) {
+  return a.x * b.y - a.y * b.x;
+}
 
 // Shape quality of a development triangle: twice its area over its longest edge squared.
 double quality(const std::vector<glm::dvec2>& dev, VertexIndex a, VertexIndex b, VertexIndex c) {
   const glm::dvec2 ab = dev[b] - dev[a], bc = dev[c] - dev[b], ca = dev[a] - dev[c];
-  const double longest =
-      std::max({glm::dot(ab, ab), glm::dot(bc, bc), glm::dot(ca, ca)});
+  const double longest = std::max({glm::dot(ab, ab), glm::dot(bc, bc), glm::dot(ca, ca)});
   return cross2(ab, dev[c] - dev[a]) / longest;
 }
 
 // Side of a vertex: -1 strictly behind the plane (the seed's side), 0 on it, +1 in front.
-int sideOf(double d, double epsilon) { return d < -epsilon ? -1 : (d > epsilon ? 1 : 0); }
+int sideOf(double d, double epsilon) {
+  return d < -epsilon ? -1 : (d > epsilon ? 1 : 0);
+}
 
 }  // namespace
 
@@ -113,7 +118,8 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
   // use the same parameter, which is exact because each triangle is congruent to its development.
   auto cutVertex = [&](VertexIndex u, VertexIndex w) {
     const Edge e = Edge::of(u, w);
-    auto [it, inserted] = cuts_.try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
+    auto [it, inserted] =
+        cuts_.try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
     if (inserted) {
       const double da = distance_[e.a], db = distance_[e.b];
       const double t = da / (da - db);

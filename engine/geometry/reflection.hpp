@@ -68,8 +68,8 @@ class ReflectionWorkspace {
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> distanceStamp_;  // distance_[v] valid when == stamp_
   std::vector<double> distance_;
-  std::vector<std::uint32_t> vertexReached_;     // == stamp_: negative vertex in the fill
-  std::vector<std::uint32_t> triangleReached_;   // == stamp_: triangle in the reached part
+  std::vector<std::uint32_t> vertexReached_;    // == stamp_: negative vertex in the fill
+  std::vector<std::uint32_t> triangleReached_;  // == stamp_: triangle in the reached part
   std::vector<VertexIndex> reachedVertices_;
   std::vector<TriangleIndex> reachedTriangles_;
   std::unordered_map<std::uint64_t, VertexIndex> cuts_;  // cut vertex of each split edge

@@ -1,8 +1,8 @@
 #include "engine/geometry/sheet.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <glm/common.hpp>

@@ -68,7 +68,9 @@ double sheetSize(const Sheet& sheet);
 // snapped onto a plane stays where it is, which costs up to 2*epsilon of edge length in the
 // reflected part, so the snap sits an order below the 1e-9 isometry tolerance (DESIGN.md 2, 8).
 inline constexpr double kRelativeEpsilon = 1e-10;
-inline double sheetEpsilon(const Sheet& sheet) { return kRelativeEpsilon * sheetSize(sheet); }
+inline double sheetEpsilon(const Sheet& sheet) {
+  return kRelativeEpsilon * sheetSize(sheet);
+}
 
 // Thrown by validate() and by every operation handed an impossible sheet.
 class InvalidSheet : public std::runtime_error {

@@ -43,7 +43,9 @@ glm::dvec3 closestBarycentric(const glm::dvec3& p, const glm::dvec3& a, const gl
   return {1 - v - w, v, w};
 }
 
-glm::dvec3 lift(const glm::dvec2& q) { return {q.x, q.y, 0.0}; }
+glm::dvec3 lift(const glm::dvec2& q) {
+  return {q.x, q.y, 0.0};
+}
 
 std::string describe(const glm::dvec2& q) {
   std::ostringstream out;
@@ -80,8 +82,8 @@ SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p) {
   double bestDistance = std::numeric_limits<double>::infinity();
   for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
     const Triangle& tri = sheet.triangles[t];
-    const glm::dvec3 bary = closestBarycentric(p, sheet.positions[tri[0]],
-                                               sheet.positions[tri[1]], sheet.positions[tri[2]]);
+    const glm::dvec3 bary = closestBarycentric(p, sheet.positions[tri[0]], sheet.positions[tri[1]],
+                                               sheet.positions[tri[2]]);
     const SurfacePoint candidate{t, bary};
     const glm::dvec3 offset = positionOf(sheet, candidate) - p;
     const double distance = glm::dot(offset, offset);
@@ -120,8 +122,7 @@ std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm
 VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
   const double snap = kRelativeGrabSnap * sheetSize(sheet);
   const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
-  if (!located)
-    throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
+  if (!located) throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
   const TriangleIndex t = located->triangle;
   const Triangle tri = sheet.triangles[t];
 

@@ -57,8 +57,7 @@ EdgeTopology buildEdgeTopology(const Sheet& sheet) {
   return result;
 }
 
-std::vector<std::vector<VertexIndex>> boundaryLoops(const Sheet& sheet,
-                                                    const EdgeTopology& edges) {
+std::vector<std::vector<VertexIndex>> boundaryLoops(const Sheet& sheet, const EdgeTopology& edges) {
   // Directed boundary edges, following the orientation of their single triangle.
   std::vector<VertexIndex> next(sheet.vertexCount(), kNoIndex);
   std::size_t boundaryEdgeCount = 0;
@@ -87,8 +86,7 @@ std::vector<std::vector<VertexIndex>> boundaryLoops(const Sheet& sheet,
       if (v == kNoIndex)
         throw InvalidSheet("boundary is not closed at vertex " + std::to_string(loop.back()));
     }
-    if (v != start)
-      throw InvalidSheet("boundary loops touch at vertex " + std::to_string(v));
+    if (v != start) throw InvalidSheet("boundary loops touch at vertex " + std::to_string(v));
     walked += loop.size();
     loops.push_back(std::move(loop));
   }

@@ -18,7 +18,9 @@ std::uint64_t directedKey(VertexIndex from, VertexIndex to) {
   return (static_cast<std::uint64_t>(from) << 32) | to;
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+double cross2(const glm::dvec2& a, const glm::dvec2& b) {
+  return a.x * b.y - a.y * b.x;
+}
 
 // Angle at corner a of triangle (a, b, c); atan2 stays accurate near 0 and pi.
 double cornerAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -76,7 +78,8 @@ AngleDefect largestAngleDefect(const std::vector<glm::dvec3>& positions,
   for (const Triangle& t : triangles) {
     for (int i = 0; i < 3; ++i) {
       const VertexIndex v = t[i];
-      angleSum[v] += cornerAngle(positions[v], positions[t[(i + 1) % 3]], positions[t[(i + 2) % 3]]);
+      angleSum[v] +=
+          cornerAngle(positions[v], positions[t[(i + 1) % 3]], positions[t[(i + 2) % 3]]);
       used[v] = true;
     }
   }
@@ -157,7 +160,8 @@ std::vector<glm::dvec2> unfoldDevelopment(const std::vector<glm::dvec3>& positio
     componentOffset = rightmost + 0.1 * boundingDiagonal(positions);
   }
 
-  // Every edge and orientation must agree; closing a loop around a curved vertex or a tube does not.
+  // Every edge and orientation must agree; closing a loop around a curved vertex or a tube does
+  // not.
   const double tolerance = relativeTolerance * boundingDiagonal(positions);
   for (TriangleIndex t = 0; t < triangles.size(); ++t) {
     const Triangle& tri = triangles[t];

@@ -19,7 +19,9 @@ std::string describe(const glm::dvec3& p) {
   return out.str();
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+double cross2(const glm::dvec2& a, const glm::dvec2& b) {
+  return a.x * b.y - a.y * b.x;
+}
 
 // Twice the signed area of a development triangle.
 double doubledArea(const Sheet& sheet, const Triangle& t) {
@@ -30,8 +32,8 @@ double doubledArea(const Sheet& sheet, const Triangle& t) {
 double smallestHeight(const Sheet& sheet, const Triangle& t) {
   double longest = 0.0;
   for (int i = 0; i < 3; ++i)
-    longest = std::max(
-        longest, glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]));
+    longest = std::max(longest,
+                       glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]));
   return longest > 0.0 ? std::abs(doubledArea(sheet, t)) / longest : 0.0;
 }
 
@@ -44,8 +46,8 @@ void checkArrays(const Sheet& sheet) {
   for (VertexIndex v = 0; v < sheet.vertexCount(); ++v) {
     const glm::dvec3& p = sheet.positions[v];
     const glm::dvec2& q = sheet.development[v];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
-        !std::isfinite(q.x) || !std::isfinite(q.y))
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(q.x) ||
+        !std::isfinite(q.y))
       throw InvalidSheet("vertex " + std::to_string(v) + " has a non-finite coordinate");
   }
   std::vector<bool> used(sheet.vertexCount(), false);
@@ -69,8 +71,8 @@ void checkEdges(const Sheet& sheet, const EdgeTopology& edges) {
     const std::string name =
         "edge (" + std::to_string(sides.edge.a) + ", " + std::to_string(sides.edge.b) + ")";
     if (sides.triangleCount > 2)
-      throw InvalidSheet(name + " is not manifold: it has " +
-                         std::to_string(sides.triangleCount) + " triangles");
+      throw InvalidSheet(name + " is not manifold: it has " + std::to_string(sides.triangleCount) +
+                         " triangles");
     if (sides.triangleCount == 2 && (sides.left == kNoIndex || sides.right == kNoIndex))
       throw InvalidSheet(name + " is inconsistently oriented: both triangles run the same way");
   }
@@ -139,9 +141,8 @@ double maxEdgeLengthError(const Sheet& sheet, const EdgeTopology& edges, Edge* w
   double largest = 0.0;
   for (const auto& sides : edges.edges) {
     const Edge e = sides.edge;
-    const double error =
-        std::abs(glm::distance(sheet.positions[e.a], sheet.positions[e.b]) -
-                 glm::distance(sheet.development[e.a], sheet.development[e.b]));
+    const double error = std::abs(glm::distance(sheet.positions[e.a], sheet.positions[e.b]) -
+                                  glm::distance(sheet.development[e.a], sheet.development[e.b]));
     if (error > largest || std::isnan(error)) {
       largest = error;
       if (worst) *worst = e;

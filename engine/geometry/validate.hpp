@@ -18,7 +18,8 @@ struct ValidationOptions {
   double relativeDegenerateHeight = 1e-12;
 };
 
-// Throws InvalidSheet naming the first problem found (the vertex, edge or triangle and by how much).
+// Throws InvalidSheet naming the first problem found (the vertex, edge or triangle and by how
+// much).
 void validate(const Sheet& sheet, const ValidationOptions& options = {});
 
 // The invariants as numbers, for `curvefold check` and for tests that compare with a reference.

@@ -1,1 +1,293 @@
-// placeholder
+// The surface catalog, parameter checking, and the flat named outlines.
+#include "engine/surfaces/surfaces.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <numbers>
+
+#include "engine/surfaces/surface_builders.hpp"
+
+namespace curvefold {
+namespace detail {
+
+std::string formatNumber(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string formatApprox(double value) {
+  char buffer[64];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
+  return std::string(buffer, result.ptr);
+}
+
+void failParameter(const std::string& surface, const std::string& parameter, double value,
+                   const std::string& why) {
+  throw SurfaceError("surface '" + surface + "': parameter '" + parameter +
+                     "' = " + formatNumber(value) + " " + why);
+}
+
+void checkTriangleCount(const std::string& surface, int resolution, double triangles) {
+  if (triangles > static_cast<double>(kMaxSurfaceTriangles))
+    failParameter(surface, "resolution", resolution,
+                  "gives about " + formatApprox(triangles) + " triangles, more than the limit of " +
+                      std::to_string(kMaxSurfaceTriangles));
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::failParameter;
+using detail::formatNumber;
+using std::numbers::pi;
+
+// Lengths from 0.1 mm to 100 m: below, triangles approach the degeneracy threshold; above, a
+// value is a mistake rather than a sheet of paper.
+constexpr double kMinLength = 1e-4;
+constexpr double kMaxLength = 100.0;
+constexpr int kMaxResolution = 2000;
+// CGAL's mesher makes about 5 triangles per maxEdge^2 of area (measured); 6 leaves a margin.
+constexpr double kMeshTrianglesPerArea = 6.0;
+// A hole may use at most this fraction of the distance from the centre to the outline.
+constexpr double kHoleMargin = 0.9;
+
+SurfaceParameter length(std::string name, double value, std::string description) {
+  return {std::move(name), value, kMinLength, kMaxLength, false, std::move(description)};
+}
+SurfaceParameter holeRadius() {
+  return {"hole_radius", 0.0,   0.0,
+          kMaxLength,    false, "radius of a circular hole in the middle, metres (0 = none)"};
+}
+SurfaceParameter resolution(double value) {
+  return {"resolution",   value, 1.0,
+          kMaxResolution, true,  "segments along the longer direction of the development"};
+}
+SurfaceParameter angle(double value) {
+  return {"angle", value, 0.01, 360.0, false, "angle around the axis, degrees (360 = slit tube)"};
+}
+
+using Builder = std::function<Sheet(const SurfaceParameters&)>;
+
+struct CatalogEntry {
+  SurfaceInfo info;
+  Builder build;
+};
+
+int integer(const SurfaceParameters& p, const char* name) {
+  return static_cast<int>(p.at(name));
+}
+
+double polygonArea(const std::vector<glm::dvec2>& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::dvec2& a = polygon[i];
+    const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+// A regular polygon inscribed in a circle, with edges no longer than maxEdge.
+std::vector<glm::dvec2> circle(double radius, double maxEdge) {
+  const int count = std::max(8, static_cast<int>(std::ceil(2.0 * pi * radius / maxEdge)));
+  std::vector<glm::dvec2> points(count);
+  for (int i = 0; i < count; ++i)
+    points[i] = radius * glm::dvec2(std::cos(2.0 * pi * i / count), std::sin(2.0 * pi * i / count));
+  return points;
+}
+
+// A flat outline with an optional central hole; inradius bounds the hole.
+Sheet flatWithHole(const std::string& surface, const SurfaceParameters& p,
+                   std::vector<glm::dvec2> outline, double longer, double inradius) {
+  const double maxEdge = longer / integer(p, "resolution");
+  const double hole = p.at("hole_radius");
+  std::vector<std::vector<glm::dvec2>> holes;
+  if (hole > 0.0) {
+    if (!(hole < kHoleMargin * inradius))
+      failParameter(surface, "hole_radius", hole,
+                    "must be less than " + detail::formatApprox(kHoleMargin * inradius) +
+                        " (90% of the distance from the centre to the outline)");
+    holes.push_back(circle(hole, maxEdge));
+  }
+  detail::checkTriangleCount(surface, integer(p, "resolution"),
+                             kMeshTrianglesPerArea * polygonArea(outline) / (maxEdge * maxEdge));
+  return triangulateOutline(outline, holes, maxEdge);
+}
+
+Sheet rectangleSheet(const std::string& surface, const SurfaceParameters& p, double width,
+                     double height) {
+  const std::vector<glm::dvec2> outline{{-0.5 * width, -0.5 * height},
+                                        {0.5 * width, -0.5 * height},
+                                        {0.5 * width, 0.5 * height},
+                                        {-0.5 * width, 0.5 * height}};
+  return flatWithHole(surface, p, outline, std::max(width, height), 0.5 * std::min(width, height));
+}
+
+Sheet diskSheet(const SurfaceParameters& p) {
+  const double radius = p.at("radius");
+  const std::vector<glm::dvec2> outline = circle(radius, 2.0 * radius / integer(p, "resolution"));
+  const double inradius = radius * std::cos(pi / static_cast<double>(outline.size()));
+  return flatWithHole("disk", p, outline, 2.0 * radius, inradius);
+}
+
+Sheet starSheet(const SurfaceParameters& p) {
+  const int points = integer(p, "points");
+  const double outer = p.at("outer_radius"), inner = p.at("inner_radius");
+  if (!(inner < outer))
+    failParameter("star", "inner_radius", inner,
+                  "must be less than outer_radius = " + formatNumber(outer));
+  std::vector<glm::dvec2> outline(2 * points);
+  for (int k = 0; k < 2 * points; ++k) {
+    const double a = 0.5 * pi + k * pi / points;  // first point straight up
+    outline[k] = (k % 2 == 0 ? outer : inner) * glm::dvec2(std::cos(a), std::sin(a));
+  }
+  // Distance from the centre to the line through an outer and the next inner point.
+  const glm::dvec2 a = outline[0], b = outline[1];
+  const double inradius = std::abs(a.x * b.y - a.y * b.x) / std::hypot(b.x - a.x, b.y - a.y);
+  return flatWithHole("star", p, outline, 2.0 * outer, inradius);
+}
+
+const std::vector<CatalogEntry>& entries() {
+  static const std::vector<CatalogEntry> catalog = [] {
+    std::vector<CatalogEntry> list;
+    list.push_back({{"square",
+                     "flat square sheet in the plane z = 0",
+                     {length("size", 0.2, "side length, metres"), holeRadius(), resolution(30)}},
+                    [](const SurfaceParameters& p) {
+                      return rectangleSheet("square", p, p.at("size"), p.at("size"));
+                    }});
+    list.push_back(
+        {{"rectangle",
+          "flat rectangular sheet in the plane z = 0 (A4 landscape by default)",
+          {length("width", 0.297, "extent along x, metres"),
+           length("height", 0.21, "extent along y, metres"), holeRadius(), resolution(36)}},
+         [](const SurfaceParameters& p) {
+           return rectangleSheet("rectangle", p, p.at("width"), p.at("height"));
+         }});
+    list.push_back({{"disk",
+                     "flat disk (a regular polygon) in the plane z = 0",
+                     {length("radius", 0.1, "radius, metres"), holeRadius(), resolution(32)}},
+                    diskSheet});
+    list.push_back({{"star",
+                     "flat star polygon in the plane z = 0, first point along +y",
+                     {{"points", 5.0, 3.0, 100.0, true, "number of points"},
+                      length("outer_radius", 0.1, "radius of the points, metres"),
+                      length("inner_radius", 0.045, "radius of the notches between points, metres"),
+                      holeRadius(),
+                      resolution(48)}},
+                    starSheet});
+    list.push_back(
+        {{"cylinder",
+          "cylinder around the y axis; angle 360 is a tube with a slit at -z",
+          {length("radius", 0.045, "radius, metres"),
+           length("height", 0.21, "extent along the axis, metres"), angle(360.0), resolution(48)}},
+         [](const SurfaceParameters& p) {
+           return detail::makeCylinder("cylinder", p.at("radius"), p.at("height"), p.at("angle"),
+                                       integer(p, "resolution"));
+         }});
+    list.push_back({{"half_cylinder",
+                     "half of a cylinder around the y axis (angle 180), bulging toward +z",
+                     {length("radius", 0.06, "radius, metres"),
+                      length("height", 0.21, "extent along the axis, metres"), resolution(48)}},
+                    [](const SurfaceParameters& p) {
+                      return detail::makeCylinder("half_cylinder", p.at("radius"), p.at("height"),
+                                                  180.0, integer(p, "resolution"));
+                    }});
+    list.push_back(
+        {{"cone",
+          "cone around the y axis, apex up; top_radius > 0 truncates it; angle 360 has a slit",
+          {length("base_radius", 0.08, "radius at the base, metres"),
+           length("height", 0.12, "height of the (truncated) cone, metres"),
+           {"top_radius", 0.0, 0.0, kMaxLength, false,
+            "radius at the top, metres (0 = full cone with apex)"},
+           angle(360.0),
+           resolution(64)}},
+         [](const SurfaceParameters& p) {
+           return detail::makeCone("cone", p.at("base_radius"), p.at("height"), p.at("top_radius"),
+                                   p.at("angle"), integer(p, "resolution"));
+         }});
+    list.push_back({{"swept_curve",
+                     "sine curve z = amplitude sin(2 pi x / wavelength) swept along y",
+                     {{"amplitude", 0.015, 0.0, kMaxLength, false, "amplitude of the sine, metres"},
+                      length("wavelength", 0.1, "wavelength of the sine, metres"),
+                      length("curve_width", 0.2, "extent of the curve along x, metres"),
+                      length("length", 0.2, "extent of the sweep along y, metres"),
+                      resolution(48)}},
+                    [](const SurfaceParameters& p) {
+                      return detail::makeSweptSine("swept_curve", p.at("amplitude"),
+                                                   p.at("wavelength"), p.at("curve_width"),
+                                                   p.at("length"), integer(p, "resolution"));
+                    }});
+    list.push_back(
+        {{"helix_tangent",
+          "tangent developable of a helix around the y axis (rulings along its chords)",
+          {length("radius", 0.04, "radius of the helix, metres"),
+           {"pitch", 0.12, 0.0, kMaxLength, false, "rise per turn, metres"},
+           {"turns", 0.75, 0.01, 100.0, false, "turns of the helix"},
+           length("ruling_start", 0.02,
+                  "distance along each ruling where the sheet starts, metres (must exceed the "
+                  "sample spacing)"),
+           length("ruling_width", 0.08, "extent of the sheet along each ruling, metres"),
+           resolution(64)}},
+         [](const SurfaceParameters& p) {
+           return detail::makeHelixTangent("helix_tangent", p.at("radius"), p.at("pitch"),
+                                           p.at("turns"), p.at("ruling_start"),
+                                           p.at("ruling_width"), integer(p, "resolution"));
+         }});
+    return list;
+  }();
+  return catalog;
+}
+
+}  // namespace
+
+const std::vector<SurfaceInfo>& surfaceCatalog() {
+  static const std::vector<SurfaceInfo> infos = [] {
+    std::vector<SurfaceInfo> list;
+    for (const CatalogEntry& entry : entries()) list.push_back(entry.info);
+    return list;
+  }();
+  return infos;
+}
+
+Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
+  const auto& catalog = entries();
+  auto entry = std::find_if(catalog.begin(), catalog.end(),
+                            [&](const CatalogEntry& e) { return e.info.name == name; });
+  if (entry == catalog.end()) {
+    std::string known;
+    for (const CatalogEntry& e : catalog) known += (known.empty() ? "" : ", ") + e.info.name;
+    throw SurfaceError("unknown surface '" + name + "' (known: " + known + ")");
+  }
+  const SurfaceInfo& info = entry->info;
+  for (const auto& [key, value] : overrides) {
+    if (std::none_of(info.parameters.begin(), info.parameters.end(),
+                     [&](const SurfaceParameter& p) { return p.name == key; })) {
+      std::string known;
+      for (const SurfaceParameter& p : info.parameters)
+        known += (known.empty() ? "" : ", ") + p.name;
+      throw SurfaceError("surface '" + name + "' has no parameter '" + key +
+                         "' (parameters: " + known + ")");
+    }
+  }
+  SurfaceParameters values;
+  for (const SurfaceParameter& p : info.parameters) {
+    auto given = overrides.find(p.name);
+    const double value = given == overrides.end() ? p.defaultValue : given->second;
+    if (!std::isfinite(value)) failParameter(name, p.name, value, "must be a finite number");
+    if (value < p.min || value > p.max)
+      failParameter(name, p.name, value,
+                    "must be in [" + formatNumber(p.min) + ", " + formatNumber(p.max) + "]");
+    if (p.integer && value != std::floor(value))
+      failParameter(name, p.name, value, "must be a whole number");
+    values[p.name] = value;
+  }
+  return entry->build(values);
+}
+
+}  // namespace curvefold

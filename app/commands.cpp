@@ -1,0 +1,256 @@
+#include "app/commands.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "engine/geometry/creases.hpp"
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/validate.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/fold_format.hpp"
+#include "engine/io/gltf_writer.hpp"
+#include "engine/io/obj_writer.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
+#include "engine/surfaces/obj_surface.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+// "X,Y,Z" with three finite numbers.
+glm::dvec3 parsePoint(const std::string& text, const std::string& option) {
+  std::istringstream in(text);
+  glm::dvec3 p;
+  char comma1 = 0, comma2 = 0;
+  in >> p.x >> comma1 >> p.y >> comma2 >> p.z;
+  if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(p.x) ||
+      !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw UsageError(option + ": expected X,Y,Z (three finite numbers in metres), got '" + text +
+                     "'");
+  return p;
+}
+
+std::string formatPoint(const glm::dvec3& p) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%.6g,%.6g,%.6g", p.x, p.y, p.z);
+  return buffer;
+}
+
+std::string describeSurface(const Design& design) {
+  if (const auto* generated = std::get_if<GeneratedSurface>(&design.surface))
+    return generated->generator;
+  return "embedded mesh";
+}
+
+// The isometry tolerance for a design: 1e-9 of the size, or what an imported mesh brought with it
+// (an OBJ carries about 6 digits, so its sheet starts with edge errors near 1e-7 that folds keep
+// but never grow).
+double lengthTolerance(const Sheet& initial) {
+  const SheetReport report = measure(initial);
+  return std::max(1e-9 * report.size, 1.5 * report.maxEdgeLengthError);
+}
+
+}  // namespace
+
+void addSurfacesCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("surfaces", "List the initial surfaces and parameters");
+  command->callback([] {
+    for (const SurfaceInfo& surface : surfaceCatalog()) {
+      std::cout << surface.name << ": " << surface.description << "\n";
+      for (const SurfaceParameter& p : surface.parameters) {
+        std::cout << "  --" << p.name << " (default " << p.defaultValue << ", " << p.min << " to "
+                  << p.max << (p.integer ? ", whole number" : "") << "): " << p.description << "\n";
+      }
+    }
+    std::cout << "any .obj file: a developable triangle mesh (with vt as its development, or "
+                 "unfolded when it has none)\n";
+  });
+}
+
+void addNewCommand(CLI::App& app) {
+  CLI::App* command =
+      app.add_subcommand("new", "Start a design from an initial surface (or an OBJ file)");
+  struct Options {
+    std::string surface;
+    std::string output;
+    std::map<std::string, double> values;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("SURFACE", options->surface, "Surface name (see `surfaces`) or an .obj file")
+      ->required();
+  command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
+      ->required();
+  // Every parameter of every surface is an option; makeSurface refuses one the chosen surface
+  // does not have.
+  std::map<std::string, std::string> help;
+  for (const SurfaceInfo& surface : surfaceCatalog())
+    for (const SurfaceParameter& p : surface.parameters) help.try_emplace(p.name, p.description);
+  for (const auto& [name, description] : help)
+    command->add_option("--" + name, options->values[name], description);
+
+  command->callback([options, command] {
+    Design design;
+    if (std::filesystem::path(options->surface).extension() == ".obj") {
+      for (const auto& [name, value] : options->values)
+        if (command->get_option("--" + name)->count() > 0)
+          throw UsageError("--" + name + " does not apply to an OBJ surface");
+      design.surface = readObjSurface(options->surface);
+    } else {
+      GeneratedSurface generated{options->surface, {}};
+      for (const auto& [name, value] : options->values)
+        if (command->get_option("--" + name)->count() > 0) generated.parameters[name] = value;
+      makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
+      design.surface = generated;
+    }
+    saveDesign(design, options->output);
+    const Sheet sheet = initialSheet(design, options->output);
+    std::cout << "wrote " << options->output << " (" << describeSurface(design) << ", "
+              << sheet.triangleCount() << " triangles)\n";
+  });
+}
+
+void addFoldCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "fold", "Add one fold: drag the surface point nearest one point to another");
+  struct Options {
+    std::string design, output, near, to;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("DESIGN", options->design, "Design file to fold")->required();
+  command->add_option("--vertex-near", options->near, "X,Y,Z: grab the surface point nearest this")
+      ->required();
+  command->add_option("--to", options->to, "X,Y,Z: where the grabbed point goes")->required();
+  command->add_option("-o,--output", options->output, "Design file to write")->required();
+  command->callback([options] {
+    const glm::dvec3 near = parsePoint(options->near, "--vertex-near");
+    const glm::dvec3 to = parsePoint(options->to, "--to");
+    Design design = loadDesign(options->design);
+    FoldSession session(buildSheet(design, options->design));
+    const glm::dvec3 grabbed = session.beginDragNear(near);
+    session.updateDrag(to);
+    if (session.commit()) {
+      design.folds.push_back(session.folds().back());
+      const Sheet& sheet = session.fixed();
+      ValidationOptions tolerance;
+      tolerance.relativeLengthTolerance =
+          lengthTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
+      validate(sheet, tolerance);
+      saveDesign(design, options->output);
+      std::cout << "fold " << design.folds.size() << ": grabbed " << formatPoint(grabbed) << " -> "
+                << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
+                << options->output << "\n";
+    } else {
+      saveDesign(design, options->output);
+      std::cout << "target equals the grabbed point " << formatPoint(grabbed)
+                << ": no fold added; wrote " << options->output << "\n";
+    }
+  });
+}
+
+void addExportCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "export", "Write the folded design as FOLD, SVG crease pattern, OBJ and/or glTF");
+  struct Options {
+    std::string design, fold, svg, obj, gltf;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("DESIGN", options->design, "Design file")->required();
+  CLI::Option* fold = command->add_option("--fold", options->fold, "FOLD 1.2 file (.fold)");
+  CLI::Option* svg =
+      command->add_option("--svg", options->svg, "SVG crease pattern at real size (.svg)");
+  CLI::Option* obj = command->add_option("--obj", options->obj, "OBJ with the development as vt");
+  CLI::Option* gltf = command->add_option("--gltf", options->gltf, "glTF 2.0 binary (.glb)");
+  command->callback([options, fold, svg, obj, gltf] {
+    if (fold->count() + svg->count() + obj->count() + gltf->count() == 0)
+      throw UsageError("export: name at least one of --fold, --svg, --obj, --gltf");
+    const Sheet sheet = buildSheet(loadDesign(options->design), options->design);
+    if (fold->count()) writeFold(sheet, options->fold);
+    if (svg->count()) writeSvgCreasePattern(sheet, options->svg);
+    if (obj->count()) writeObj(sheet, options->obj);
+    if (gltf->count()) writeGlb(sheet, options->gltf);
+    for (const std::string* path : {&options->fold, &options->svg, &options->obj, &options->gltf})
+      if (!path->empty()) std::cout << "wrote " << *path << "\n";
+  });
+}
+
+void addCheckCommand(CLI::App& app) {
+  CLI::App* command =
+      app.add_subcommand("check", "Print the geometry invariants; exit non-zero if one fails");
+  auto design = std::make_shared<std::string>();
+  command->add_option("DESIGN", *design, "Design file")->required();
+  command->callback([design] {
+    const Design loaded = loadDesign(*design);
+    const Sheet initial = initialSheet(loaded, *design);
+    const Sheet sheet = buildSheet(loaded, *design);
+    const double tolerance = lengthTolerance(initial);
+    ValidationOptions options;
+    options.relativeLengthTolerance = tolerance / sheetSize(sheet);
+    const SheetReport now = measure(sheet, options);
+    const SheetReport before = measure(initial, options);
+    const EdgeTopology edges = buildEdgeTopology(sheet);
+    const std::vector<CreaseEdge> creases = creaseEdges(sheet, edges);
+    const std::vector<CreaseCurve> curves = creaseCurves(sheet, edges);
+
+    std::vector<std::string> failures;
+    auto line = [&](bool ok, const std::string& text) {
+      std::cout << (ok ? "  ok    " : "  FAIL  ") << text << "\n";
+      if (!ok) failures.push_back(text);
+    };
+    char buffer[256];
+    std::cout << *design << ": " << describeSurface(loaded) << ", " << loaded.folds.size()
+              << " folds, " << now.vertexCount << " vertices, " << now.triangleCount
+              << " triangles\n";
+    std::snprintf(buffer, sizeof buffer,
+                  "isometry: max edge-length error %.3g m (%.3g of the size; limit %.3g m)",
+                  now.maxEdgeLengthError, now.maxEdgeLengthError / now.size, tolerance);
+    line(now.maxEdgeLengthError <= tolerance, buffer);
+    double worstPlanarity = 0.0;
+    for (const CreaseCurve& curve : curves)
+      worstPlanarity = std::max(worstPlanarity, curve.planarityError);
+    std::size_t mountains = 0, valleys = 0;
+    for (const CreaseEdge& crease : creases) {
+      mountains += crease.assignment == Assignment::Mountain;
+      valleys += crease.assignment == Assignment::Valley;
+    }
+    std::snprintf(buffer, sizeof buffer,
+                  "creases: %zu curves, %zu edges (%zu mountain, %zu valley); max planarity "
+                  "error %.3g m",
+                  curves.size(), creases.size(), mountains, valleys, worstPlanarity);
+    line(worstPlanarity <= 1e-9 * now.size, buffer);
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      std::snprintf(buffer, sizeof buffer, "crease %zu: %zu vertices%s, planarity error %.3g m",
+                    i + 1, curves[i].vertices.size(), curves[i].closed ? " (closed)" : "",
+                    curves[i].planarityError);
+      line(curves[i].planarityError <= 1e-9 * now.size, buffer);
+    }
+    line(now.eulerCharacteristic == before.eulerCharacteristic,
+         "Euler characteristic " + std::to_string(now.eulerCharacteristic) + " (initial " +
+             std::to_string(before.eulerCharacteristic) + ")");
+    line(now.boundaryLoopCount == before.boundaryLoopCount,
+         "boundary loops " + std::to_string(now.boundaryLoopCount) + " (initial " +
+             std::to_string(before.boundaryLoopCount) + ")");
+    line(now.componentCount == before.componentCount,
+         "components " + std::to_string(now.componentCount) + " (initial " +
+             std::to_string(before.componentCount) + ")");
+    line(now.manifold, now.manifold ? "manifold" : "not manifold");
+    line(now.consistentlyOriented && now.developmentCounterClockwise,
+         now.consistentlyOriented && now.developmentCounterClockwise
+             ? "consistently oriented (development counter-clockwise)"
+             : "orientation is inconsistent");
+    std::snprintf(buffer, sizeof buffer, "smallest triangle height %.3g of the size",
+                  now.minRelativeHeight);
+    line(now.minRelativeHeight >= options.relativeDegenerateHeight, buffer);
+    line(now.firstProblem.empty(),
+         now.firstProblem.empty() ? "validate: passed" : "validate: " + now.firstProblem);
+    if (!failures.empty()) throw std::runtime_error("check failed: " + failures.front());
+  });
+}
+
+}  // namespace curvefold::cli

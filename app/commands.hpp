@@ -1,0 +1,21 @@
+// The `curvefold` subcommands. Each registers its options on a CLI11 app and runs when chosen;
+// errors are thrown as exceptions and reported by main() as one line with a non-zero exit.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace curvefold::cli {
+
+// Thrown for a bad command line value the option parser could not catch (one line).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+void addSurfacesCommand(CLI::App& app);
+void addNewCommand(CLI::App& app);
+void addFoldCommand(CLI::App& app);
+void addExportCommand(CLI::App& app);
+void addCheckCommand(CLI::App& app);
+
+}  // namespace curvefold::cli

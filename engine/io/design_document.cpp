@@ -1,0 +1,337 @@
+#include "engine/io/design_document.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/validate.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold {
+namespace {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+// A bisector plane's normal is normalised in double precision: a few ulps off unit length.
+constexpr double kUnitTolerance = 1e-9;
+
+std::string format(double value) {
+  std::ostringstream out;
+  out.precision(std::numeric_limits<double>::max_digits10);
+  out << value;
+  return out.str();
+}
+
+// Reads a JSON value into a design, with messages that name where the problem is.
+class Reader {
+ public:
+  explicit Reader(std::string_view name) : name_(name) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
+    throw DesignError(name_ + ": " + (where.empty() ? "" : where + ": ") + problem);
+  }
+
+  const json& member(const json& object, const char* key, const std::string& where) const {
+    if (!object.is_object())
+      fail(where, "must be an object, got " + std::string(object.type_name()));
+    const auto it = object.find(key);
+    if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
+    return *it;
+  }
+
+  const json& array(const json& value, const std::string& where) const {
+    if (!value.is_array()) fail(where, "must be an array, got " + std::string(value.type_name()));
+    return value;
+  }
+
+  double number(const json& value, const std::string& where) const {
+    // JSON has no NaN or infinity; nlohmann writes them as null, and huge literals overflow.
+    if (!value.is_number())
+      fail(where, "must be a finite number, got " + std::string(value.type_name()));
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) fail(where, "must be a finite number");
+    return x;
+  }
+
+  template <int N>
+  glm::vec<N, double> vector(const json& value, const std::string& where) const {
+    if (array(value, where).size() != N)
+      fail(where,
+           "must hold " + std::to_string(N) + " numbers, got " + std::to_string(value.size()));
+    glm::vec<N, double> result;
+    for (int i = 0; i < N; ++i) result[i] = number(value[i], where + "[" + std::to_string(i) + "]");
+    return result;
+  }
+
+  VertexIndex index(const json& value, std::size_t vertexCount, const std::string& where) const {
+    if (!value.is_number_unsigned()) fail(where, "must be a vertex index (a non-negative integer)");
+    const std::uint64_t i = value.get<std::uint64_t>();
+    if (i >= vertexCount)
+      fail(where, "vertex " + std::to_string(i) + " does not exist (the mesh has " +
+                      std::to_string(vertexCount) + " vertices)");
+    return static_cast<VertexIndex>(i);
+  }
+
+  template <std::size_t N>
+  std::array<VertexIndex, N> indices(const json& value, std::size_t vertexCount,
+                                     const std::string& where) const {
+    if (array(value, where).size() != N)
+      fail(where, "must hold " + std::to_string(N) + " vertex indices");
+    std::array<VertexIndex, N> result;
+    for (std::size_t i = 0; i < N; ++i)
+      result[i] = index(value[i], vertexCount, where + "[" + std::to_string(i) + "]");
+    return result;
+  }
+
+  Sheet mesh(const json& value) const {
+    const std::string where = "surface.mesh";
+    Sheet sheet;
+    const json& positions = array(member(value, "positions", where), where + ".positions");
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      sheet.positions.push_back(
+          vector<3>(positions[i], where + ".positions[" + std::to_string(i) + "]"));
+    const json& development = array(member(value, "development", where), where + ".development");
+    for (std::size_t i = 0; i < development.size(); ++i)
+      sheet.development.push_back(
+          vector<2>(development[i], where + ".development[" + std::to_string(i) + "]"));
+    if (sheet.development.size() != sheet.positions.size())
+      fail(where, std::to_string(sheet.positions.size()) + " positions but " +
+                      std::to_string(sheet.development.size()) + " development points");
+    const std::size_t n = sheet.positions.size();
+    const json& triangles = array(member(value, "triangles", where), where + ".triangles");
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+      sheet.triangles.push_back(
+          indices<3>(triangles[i], n, where + ".triangles[" + std::to_string(i) + "]"));
+    auto readTags = [&](const char* key, EdgeKind kind) {
+      const auto it = value.find(key);
+      if (it == value.end()) return;
+      const std::string list = where + "." + key;
+      array(*it, list);
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const std::string item = list + "[" + std::to_string(i) + "]";
+        const auto [a, b] = indices<2>((*it)[i], n, item);
+        if (a == b) fail(item, "an edge needs two different vertices");
+        sheet.tags.push_back({Edge::of(a, b), kind});
+      }
+    };
+    readTags("slits", EdgeKind::Slit);
+    readTags("creases", EdgeKind::Crease);
+    sheet.normalizeTags();
+    try {
+      validate(sheet);
+    } catch (const InvalidSheet& e) {
+      fail(where, e.what());
+    }
+    return sheet;
+  }
+
+  InitialSurface surface(const json& value) const {
+    const std::string where = "surface";
+    if (!value.is_object()) fail(where, "must be an object, got " + std::string(value.type_name()));
+    const bool generated = value.contains("generator");
+    if (generated == value.contains("mesh"))
+      fail(where, "must hold either \"generator\" or \"mesh\"");
+    if (!generated) return mesh(value["mesh"]);
+    GeneratedSurface surface;
+    const json& generator = value["generator"];
+    if (!generator.is_string() || generator.get_ref<const std::string&>().empty())
+      fail(where + ".generator", "must be a surface name");
+    surface.generator = generator.get<std::string>();
+    if (const auto it = value.find("parameters"); it != value.end()) {
+      if (!it->is_object())
+        fail(where + ".parameters", "must be an object, got " + std::string(it->type_name()));
+      for (const auto& [key, parameter] : it->items())
+        surface.parameters[key] = number(parameter, where + ".parameters." + key);
+    }
+    return surface;
+  }
+
+  FoldRecord fold(const json& value, std::size_t number) const {
+    const std::string where = "fold " + std::to_string(number);
+    if (!value.is_object()) fail(where, "must be an object, got " + std::string(value.type_name()));
+    FoldRecord fold;
+    fold.seed = vector<2>(member(value, "seed", where), where + ": seed");
+    const json& plane = member(value, "plane", where);
+    fold.plane.point =
+        vector<3>(member(plane, "point", where + ": plane"), where + ": plane.point");
+    fold.plane.normal =
+        vector<3>(member(plane, "normal", where + ": plane"), where + ": plane.normal");
+    const double length = glm::length(fold.plane.normal);
+    if (length == 0.0) fail(where, "plane.normal is zero");
+    if (std::abs(length - 1.0) > kUnitTolerance)
+      fail(where, "plane.normal is not a unit vector (length " + format(length) + ")");
+    // grabbed and target only describe the drag; the plane is what replays.
+    if (value.contains("grabbed")) fold.grabbed = vector<3>(value["grabbed"], where + ": grabbed");
+    if (value.contains("target")) fold.target = vector<3>(value["target"], where + ": target");
+    return fold;
+  }
+
+  Design design(const json& document) const {
+    if (!document.is_object())
+      fail("", "not a curvefold design (a JSON " + std::string(document.type_name()) +
+                   ", not an object)");
+    const auto format = document.find("format");
+    if (format == document.end()) fail("", "not a curvefold design (no \"format\")");
+    if (!format->is_string() || format->get_ref<const std::string&>() != kDesignFormat)
+      fail("", "not a curvefold design (format " + format->dump() + ", expected \"" +
+                   std::string(kDesignFormat) + "\")");
+    const json& version = member(document, "version", "");
+    if (!version.is_number_integer()) fail("version", "must be an integer");
+    if (version.get<std::int64_t>() != kDesignVersion)
+      fail("", "unsupported version " + version.dump() + " (this build reads version " +
+                   std::to_string(kDesignVersion) + ")");
+    Design design;
+    design.surface = surface(member(document, "surface", ""));
+    const json& folds = array(member(document, "folds", ""), "folds");
+    for (std::size_t i = 0; i < folds.size(); ++i) design.folds.push_back(fold(folds[i], i + 1));
+    return design;
+  }
+
+ private:
+  std::string name_;
+};
+
+ordered_json vectorJson(const glm::dvec2& v) {
+  return {v.x, v.y};
+}
+ordered_json vectorJson(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+ordered_json surfaceJson(const InitialSurface& surface) {
+  if (const auto* generated = std::get_if<GeneratedSurface>(&surface)) {
+    ordered_json parameters = ordered_json::object();
+    for (const auto& [key, value] : generated->parameters) parameters[key] = value;
+    return {{"generator", generated->generator}, {"parameters", std::move(parameters)}};
+  }
+  const Sheet& sheet = std::get<Sheet>(surface);
+  ordered_json mesh = ordered_json::object();
+  ordered_json& positions = mesh["positions"] = ordered_json::array();
+  for (const glm::dvec3& p : sheet.positions) positions.push_back(vectorJson(p));
+  ordered_json& development = mesh["development"] = ordered_json::array();
+  for (const glm::dvec2& p : sheet.development) development.push_back(vectorJson(p));
+  ordered_json& triangles = mesh["triangles"] = ordered_json::array();
+  for (const Triangle& t : sheet.triangles) triangles.push_back({t[0], t[1], t[2]});
+  ordered_json slits = ordered_json::array();
+  ordered_json creases = ordered_json::array();
+  for (const TaggedEdge& tag : sheet.tags)
+    (tag.kind == EdgeKind::Slit ? slits : creases).push_back({tag.edge.a, tag.edge.b});
+  mesh["slits"] = std::move(slits);
+  if (!creases.empty()) mesh["creases"] = std::move(creases);
+  return {{"mesh", std::move(mesh)}};
+}
+
+ordered_json foldJson(const FoldRecord& fold) {
+  return {{"seed", vectorJson(fold.seed)},
+          {"plane",
+           {{"point", vectorJson(fold.plane.point)}, {"normal", vectorJson(fold.plane.normal)}}},
+          {"grabbed", vectorJson(fold.grabbed)},
+          {"target", vectorJson(fold.target)}};
+}
+
+Design parseText(const std::string& text, std::string_view name) {
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C:
+    // problem"; keep the place and the problem.
+    std::string message = e.what();
+    std::string place;
+    if (const auto at = message.find("parse error at "); at != std::string::npos) {
+      message.erase(0, at + 15);
+      if (const auto colon = message.find(": "); colon != std::string::npos) {
+        place = " (" + message.substr(0, colon) + ")";
+        message.erase(0, colon + 2);
+      }
+    }
+    throw DesignError(std::string(name) + ": not valid JSON at byte " + std::to_string(e.byte) +
+                      place + ": " + message);
+  } catch (const json::exception& e) {
+    // A number too large for a double, for instance.
+    std::string message = e.what();
+    if (const auto start = message.find("] "); start != std::string::npos)
+      message.erase(0, start + 2);
+    throw DesignError(std::string(name) + ": not valid JSON: " + message);
+  }
+  return Reader(name).design(document);
+}
+
+}  // namespace
+
+Sheet initialSheet(const Design& design, std::string_view nameForErrors) {
+  if (const auto* sheet = std::get_if<Sheet>(&design.surface)) return *sheet;
+  const auto& generated = std::get<GeneratedSurface>(design.surface);
+  try {
+    return makeSurface(generated.generator, generated.parameters);
+  } catch (const std::exception& e) {
+    throw DesignError(std::string(nameForErrors) + ": surface \"" + generated.generator +
+                      "\": " + e.what());
+  }
+}
+
+Sheet buildSheet(const Design& design, std::string_view nameForErrors) {
+  Sheet sheet = initialSheet(design, nameForErrors);
+  for (std::size_t i = 0; i < design.folds.size(); ++i) {
+    const FoldRecord& fold = design.folds[i];
+    try {
+      sheet = applyFold(sheet, fold);
+    } catch (const InvalidSheet& e) {
+      const std::string where = std::string(nameForErrors) + ": fold " + std::to_string(i + 1);
+      // Same snap distance as a grab, so a seed on the outline still counts as inside.
+      const double tolerance = kRelativeGrabSnap * sheetSize(sheet);
+      if (!locateDevelopmentPoint(sheet, fold.seed, tolerance))
+        throw DesignError(where + ": seed (" + format(fold.seed.x) + ", " + format(fold.seed.y) +
+                          ") lies outside the sheet");
+      throw DesignError(where + ": " + e.what());
+    }
+  }
+  return sheet;
+}
+
+void saveDesign(const Design& design, const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const ordered_json surface = surfaceJson(design.surface);
+  std::vector<ordered_json> folds;
+  for (const FoldRecord& fold : design.folds) folds.push_back(foldJson(fold));
+
+  // One fold per line keeps the document readable and its diffs small.
+  std::string text = "{\n  \"format\": " + json(kDesignFormat).dump() +
+                     ",\n  \"version\": " + std::to_string(kDesignVersion) +
+                     ",\n  \"surface\": " + surface.dump() + ",\n  \"folds\": [";
+  for (std::size_t i = 0; i < folds.size(); ++i)
+    text += (i == 0 ? "\n    " : ",\n    ") + folds[i].dump();
+  text += folds.empty() ? "]\n}\n" : "\n  ]\n}\n";
+
+  // Refuse what could not be loaded back (nlohmann writes NaN as null) before touching the file.
+  try {
+    parseText(text, name);
+  } catch (const DesignError& e) {
+    throw DesignError(std::string("cannot save ") + e.what());
+  }
+  writeFileAtomically(path, text);
+}
+
+Design loadDesign(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError("cannot read " + path.string() + ": " + std::strerror(errno));
+  return parseDesign(in, path.string());
+}
+
+Design parseDesign(std::istream& in, std::string_view nameForErrors) {
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw FileError("cannot read " + std::string(nameForErrors));
+  return parseText(text, nameForErrors);
+}
+
+}  // namespace curvefold

@@ -1,0 +1,63 @@
+// The design document, `*.curvefold.json` (DESIGN.md 4): the initial surface and the ordered
+// committed folds. Folds are stored as a plane and a development seed, so loading replays them
+// independent of vertex numbering. Doubles are written in their shortest exact form, so a saved
+// design rebuilds bit for bit.
+#pragma once
+
+#include <filesystem>
+#include <istream>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+inline constexpr std::string_view kDesignFormat = "curvefold-design";
+inline constexpr int kDesignVersion = 1;
+
+// One line naming the file and the problem, e.g.
+// "bird.curvefold.json: fold 3: seed (0.5, 1.2) lies outside the sheet". Folds count from 1.
+class DesignError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An initial surface made by a generator of the surfaces library (makeSurface).
+struct GeneratedSurface {
+  std::string generator;
+  std::map<std::string, double> parameters;
+};
+
+// Either a generator with its parameters or an embedded mesh (its crease and slit tags kept).
+using InitialSurface = std::variant<GeneratedSurface, Sheet>;
+
+struct Design {
+  InitialSurface surface;
+  std::vector<FoldRecord> folds;
+};
+
+// The sheet before any fold: makeSurface's result or the embedded mesh. Throws DesignError when
+// the generator refuses its parameters. nameForErrors starts every message.
+Sheet initialSheet(const Design& design, std::string_view nameForErrors = "design");
+
+// The initial sheet with every fold replayed in order (what replayFolds gives). Throws DesignError
+// naming the fold that cannot be applied.
+Sheet buildSheet(const Design& design, std::string_view nameForErrors = "design");
+
+// Writes the design atomically. Throws DesignError for a design that could not be loaded back
+// (a number that is not finite, a plane normal that is not a unit vector, an invalid embedded
+// mesh), FileError when the file cannot be written.
+void saveDesign(const Design& design, const std::filesystem::path& path);
+
+// Reads and checks a design (everything but the replay, which buildSheet does). Throws FileError
+// when the file cannot be read, DesignError for anything wrong with its content.
+Design loadDesign(const std::filesystem::path& path);
+Design parseDesign(std::istream& in, std::string_view nameForErrors);
+
+}  // namespace curvefold

@@ -1,0 +1,14 @@
+// FOLD 1.2 export (DESIGN.md 4), the origami ecosystem's format (Origami Simulator, Rabbit Ear,
+// ORIPA): the key frame is the crease pattern in the development, file_frames[0] the folded form.
+#pragma once
+
+#include <filesystem>
+
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+// Writes the sheet as a FOLD file, atomically. Throws FileError when the file cannot be written.
+void writeFold(const Sheet& sheet, const std::filesystem::path& path);
+
+}  // namespace curvefold

@@ -1,0 +1,310 @@
+#include "engine/surfaces/obj_surface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "engine/geometry/topology.hpp"
+#include "engine/geometry/unfold.hpp"
+#include "engine/geometry/validate.hpp"
+
+namespace curvefold {
+namespace {
+
+// One corner of a face: 0-based indices into the file's v and vt lists (vt = -1 when absent).
+struct Corner {
+  long v = 0;
+  long vt = -1;
+};
+
+struct ObjTriangle {
+  std::array<Corner, 3> corners;
+  std::size_t line = 0;
+};
+
+struct ObjData {
+  std::vector<glm::dvec3> v;
+  std::vector<glm::dvec2> vt;
+  std::vector<std::size_t> vLine;
+  std::vector<ObjTriangle> triangles;
+};
+
+class Parser {
+ public:
+  explicit Parser(std::string name) : name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw ObjError(name_ + ":" + std::to_string(line_) + ": " + problem);
+  }
+
+  ObjData parse(std::istream& in) {
+    ObjData data;
+    std::string text;
+    std::optional<bool> facesHaveVt;
+    while (std::getline(in, text)) {
+      ++line_;
+      if (auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
+      const std::vector<std::string_view> tokens = split(text);
+      if (tokens.empty()) continue;
+      const std::string_view keyword = tokens[0];
+      if (keyword == "v") {
+        if (tokens.size() < 4) fail("a vertex needs 3 coordinates");
+        data.v.emplace_back(number(tokens[1]), number(tokens[2]), number(tokens[3]));
+        data.vLine.push_back(line_);
+      } else if (keyword == "vt") {
+        if (tokens.size() < 3) fail("a texture coordinate needs 2 coordinates");
+        data.vt.emplace_back(number(tokens[1]), number(tokens[2]));
+      } else if (keyword == "f") {
+        if (tokens.size() < 4) fail("a face needs at least 3 vertices");
+        std::vector<Corner> corners;
+        for (std::size_t i = 1; i < tokens.size(); ++i)
+          corners.push_back(corner(tokens[i], data.v.size(), data.vt.size()));
+        const bool hasVt = corners[0].vt >= 0;
+        for (const Corner& c : corners)
+          if ((c.vt >= 0) != hasVt)
+            fail("a face mixes corners with and without texture coordinates");
+        if (facesHaveVt && *facesHaveVt != hasVt)
+          fail("faces with and without texture coordinates are mixed");
+        facesHaveVt = hasVt;
+        // Convex polygons become a fan from their first corner.
+        for (std::size_t k = 1; k + 1 < corners.size(); ++k)
+          data.triangles.push_back({{corners[0], corners[k], corners[k + 1]}, line_});
+      }
+      // Normals, groups, materials, smoothing, lines and points do not shape the sheet.
+    }
+    if (in.bad()) throw ObjError(name_ + ": read error");
+    if (data.triangles.empty()) throw ObjError(name_ + ": no faces");
+    return data;
+  }
+
+ private:
+  static std::vector<std::string_view> split(std::string_view text) {
+    std::vector<std::string_view> tokens;
+    std::size_t i = 0;
+    while (i < text.size()) {
+      while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+      std::size_t j = i;
+      while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+      if (j > i) tokens.push_back(text.substr(i, j - i));
+      i = j;
+    }
+    return tokens;
+  }
+
+  double number(std::string_view token) const {
+    std::string_view digits = token;
+    if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error != std::errc() || end != digits.data() + digits.size() || digits.empty())
+      fail("malformed number '" + std::string(token) + "'");
+    if (!std::isfinite(value)) fail("non-finite coordinate '" + std::string(token) + "'");
+    return value;
+  }
+
+  // A 1-based (or negative, relative) index into a list of `count` entries, as 0-based.
+  long index(std::string_view token, std::size_t count, const char* what) const {
+    long value = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error != std::errc() || end != token.data() + token.size() || token.empty())
+      fail(std::string("malformed ") + what + " index '" + std::string(token) + "'");
+    if (value == 0) fail(std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
+    const long resolved = value > 0 ? value - 1 : static_cast<long>(count) + value;
+    if (resolved < 0 || resolved >= static_cast<long>(count))
+      fail(std::string(what) + " index " + std::string(token) + " is out of range (" +
+           std::to_string(count) + " defined so far)");
+    return resolved;
+  }
+
+  Corner corner(std::string_view token, std::size_t vCount, std::size_t vtCount) const {
+    // v, v/vt, v//vn or v/vt/vn; normals are ignored.
+    const std::size_t slash = token.find('/');
+    Corner c;
+    c.v = index(token.substr(0, slash), vCount, "vertex");
+    if (slash != std::string_view::npos) {
+      std::string_view rest = token.substr(slash + 1);
+      const std::string_view vt = rest.substr(0, rest.find('/'));
+      if (!vt.empty()) c.vt = index(vt, vtCount, "texture coordinate");
+    }
+    return c;
+  }
+
+  std::string name_;
+  std::size_t line_ = 0;
+};
+
+double boundingDiagonal(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return glm::length(hi - lo);
+}
+
+double cross2(const glm::dvec2& a, const glm::dvec2& b) {
+  return a.x * b.y - a.y * b.x;
+}
+
+// Tags boundary edges whose endpoints coincide in 3D with another boundary edge's: a seam.
+void tagSeams(Sheet& sheet) {
+  const EdgeTopology edges = buildEdgeTopology(sheet);
+  std::map<std::array<double, 3>, std::uint32_t> pointIds;
+  std::vector<std::uint32_t> pointOf(sheet.vertexCount());
+  for (VertexIndex v = 0; v < sheet.vertexCount(); ++v) {
+    const glm::dvec3& p = sheet.positions[v];
+    pointOf[v] = pointIds.emplace(std::array{p.x, p.y, p.z}, pointIds.size()).first->second;
+  }
+  std::map<Edge, std::vector<Edge>> byPoints;
+  for (const auto& sides : edges.edges)
+    if (sides.isBoundary())
+      byPoints[Edge::of(pointOf[sides.edge.a], pointOf[sides.edge.b])].push_back(sides.edge);
+  for (const auto& [points, group] : byPoints)
+    if (group.size() >= 2)
+      for (const Edge& e : group) sheet.tags.push_back({e, EdgeKind::Slit});
+  sheet.normalizeTags();
+}
+
+}  // namespace
+
+Sheet parseObjSurface(std::istream& in, const std::string& name) {
+  const ObjData data = Parser(name).parse(in);
+  const bool withVt = data.triangles.front().corners[0].vt >= 0;
+  auto lineText = [&](std::size_t line) { return name + ":" + std::to_string(line) + ": "; };
+
+  // Sheet vertices: one per distinct v (without vt) or (v, vt) pair.
+  Sheet sheet;
+  std::map<std::pair<long, long>, VertexIndex> vertexOf;
+  std::vector<long> objVertex;  // sheet vertex -> 0-based OBJ v
+  std::vector<std::size_t> triangleLine;
+  for (const ObjTriangle& t : data.triangles) {
+    Triangle triangle;
+    for (int i = 0; i < 3; ++i) {
+      const Corner& c = t.corners[i];
+      auto [it, added] =
+          vertexOf.emplace(std::pair{c.v, c.vt}, static_cast<VertexIndex>(objVertex.size()));
+      if (added) {
+        objVertex.push_back(c.v);
+        sheet.positions.push_back(data.v[c.v]);
+        sheet.development.push_back(withVt ? data.vt[c.vt] : glm::dvec2(0.0));
+      }
+      triangle[i] = it->second;
+    }
+    if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2])
+      throw ObjError(lineText(t.line) + "a face repeats a vertex");
+    sheet.triangles.push_back(triangle);
+    triangleLine.push_back(t.line);
+  }
+  auto edgeText = [&](VertexIndex a, VertexIndex b) {
+    return "edge between vertices " + std::to_string(objVertex[a] + 1) + " and " +
+           std::to_string(objVertex[b] + 1);
+  };
+
+  // Each directed edge once, each undirected edge at most twice: a consistently oriented manifold.
+  std::map<std::pair<VertexIndex, VertexIndex>, TriangleIndex> directed;
+  std::map<Edge, int> uses;
+  for (TriangleIndex t = 0; t < sheet.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const VertexIndex a = sheet.triangles[t][i], b = sheet.triangles[t][(i + 1) % 3];
+      if (++uses[Edge::of(a, b)] > 2)
+        throw ObjError(lineText(triangleLine[t]) + edgeText(a, b) +
+                       " belongs to more than two faces (non-manifold mesh)");
+      if (!directed.emplace(std::pair{a, b}, t).second)
+        throw ObjError(lineText(triangleLine[t]) + edgeText(a, b) +
+                       " runs the same way in two faces (non-manifold or inconsistently "
+                       "oriented mesh)");
+    }
+  }
+
+  if (!(boundingDiagonal(sheet.positions) > 0.0)) throw ObjError(name + ": all vertices coincide");
+  if (withVt) {
+    // Fit one scale factor from texture units to metres, and mirror clockwise texture layouts.
+    double length3 = 0.0, length2 = 0.0, area = 0.0;
+    for (const Triangle& t : sheet.triangles) {
+      for (int i = 0; i < 3; ++i) {
+        length3 += glm::distance(sheet.positions[t[i]], sheet.positions[t[(i + 1) % 3]]);
+        length2 += glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]);
+      }
+      area += cross2(sheet.development[t[1]] - sheet.development[t[0]],
+                     sheet.development[t[2]] - sheet.development[t[0]]);
+    }
+    if (!(length2 > 0.0)) throw ObjError(name + ": all texture coordinates coincide");
+    const double scale = length3 / length2;
+    const double mirror = area < 0.0 ? -1.0 : 1.0;
+    for (glm::dvec2& p : sheet.development) p = scale * glm::dvec2(mirror * p.x, p.y);
+    // Measured like validate(): relative to the development's size.
+    const double tolerance = kObjRelativeTolerance * sheetSize(sheet);
+    double worst = -1.0;
+    TriangleIndex worstTriangle = 0;
+    int worstCorner = 0;
+    for (TriangleIndex t = 0; t < sheet.triangles.size(); ++t) {
+      for (int i = 0; i < 3; ++i) {
+        const VertexIndex a = sheet.triangles[t][i], b = sheet.triangles[t][(i + 1) % 3];
+        const double error = std::abs(glm::distance(sheet.positions[a], sheet.positions[b]) -
+                                      glm::distance(sheet.development[a], sheet.development[b]));
+        if (error > worst) {
+          worst = error;
+          worstTriangle = t;
+          worstCorner = i;
+        }
+      }
+    }
+    if (worst > tolerance) {
+      const Triangle& t = sheet.triangles[worstTriangle];
+      const VertexIndex a = t[worstCorner], b = t[(worstCorner + 1) % 3];
+      std::ostringstream out;
+      out.precision(6);
+      out << lineText(triangleLine[worstTriangle])
+          << "texture coordinates are not a development of the mesh: " << edgeText(a, b) << " is "
+          << glm::distance(sheet.positions[a], sheet.positions[b]) << " long in 3D but "
+          << glm::distance(sheet.development[a], sheet.development[b]) << " in vt (scaled by "
+          << scale << "), more than " << kObjRelativeTolerance << " of the size";
+      throw ObjError(out.str());
+    }
+  } else {
+    try {
+      sheet.development =
+          unfoldDevelopment(sheet.positions, sheet.triangles, kObjRelativeTolerance);
+    } catch (const NotDevelopable& error) {
+      const AngleDefect defect = largestAngleDefect(sheet.positions, sheet.triangles);
+      if (defect.vertex == kNoIndex || std::abs(defect.radians) <= kObjRelativeTolerance)
+        throw ObjError(name + ": " + error.what());
+      std::ostringstream out;
+      out.precision(6);
+      out << name << ":" << data.vLine[objVertex[defect.vertex]]
+          << ": surface is not developable: largest angle defect "
+          << defect.radians * 180.0 / std::numbers::pi << " degrees (" << defect.radians
+          << " rad) at vertex " << objVertex[defect.vertex] + 1;
+      throw ObjError(out.str());
+    }
+  }
+
+  tagSeams(sheet);
+  try {
+    validate(sheet, ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance});
+  } catch (const InvalidSheet& error) {
+    throw ObjError(name + ": " + error.what());
+  }
+  return sheet;
+}
+
+Sheet readObjSurface(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ObjError(path + ": cannot open: " + std::strerror(errno));
+  return parseObjSurface(in, path);
+}
+
+}  // namespace curvefold

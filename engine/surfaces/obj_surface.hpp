@@ -1,0 +1,34 @@
+// A sheet from a Wavefront OBJ file [Mitani & Igarashi 2011, Sec. 3.1]: `v` positions, `f` faces
+// (triangles or convex polygons, fanned), and optionally `vt` as the development. Without `vt`
+// the development is unfolded from the mesh, and a surface that is not developable is refused
+// with its largest angle defect.
+#pragma once
+
+#include <istream>
+#include <stdexcept>
+#include <string>
+
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+// A file that cannot become a sheet; one line: "file:line: problem" (or "file: problem").
+class ObjError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// OBJ files carry about 6 significant digits, so an imported sheet is congruent to its
+// development within 1e-6 of its size (not the 1e-9 of generated sheets); the result passes
+// validate() with ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance}.
+inline constexpr double kObjRelativeTolerance = 1e-5;
+
+// With `vt`: each distinct (v, vt) pair is a vertex; vt may be in any unit (one uniform scale
+// factor is fitted) and mirrored (it is flipped when faces run clockwise in it). Without `vt`:
+// each used `v` is a vertex and the development is unfolded. Either way, boundary edges that
+// coincide in 3D with another boundary edge (a seam cut open) are tagged EdgeKind::Slit.
+// Throws ObjError naming the file, the line and the problem.
+Sheet parseObjSurface(std::istream& in, const std::string& nameForErrors);
+Sheet readObjSurface(const std::string& path);
+
+}  // namespace curvefold

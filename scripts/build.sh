@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configures and builds curvefold (Release) into build/. Usage: scripts/build.sh [extra cmake args]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs="${CURVEFOLD_JOBS:-2}"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build build -j"$jobs"

@@ -1,0 +1,238 @@
+// The `curvefold` command line, run as a user runs it: exit codes, one-line errors, and no file
+// left behind by a failed command.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("curvefold-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  CommandResult run(const std::string& arguments) const {
+    const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
+    const std::string command = std::string(CURVEFOLD_BINARY) + " " + arguments + " >" +
+                                out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    CommandResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = slurp(out);
+    result.err = slurp(err);
+    return result;
+  }
+
+  // A failed command: non-zero exit, exactly one line on stderr naming the problem, and no file
+  // at `output` (nor a temporary next to it).
+  void expectFailure(const std::string& arguments, const std::string& fragment,
+                     const fs::path& output) const {
+    const CommandResult r = run(arguments);
+    EXPECT_NE(r.exitCode, 0) << arguments;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+    EXPECT_FALSE(fs::exists(output)) << output;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_TRUE(name.front() == '.' || name.find(".tmp") == std::string::npos)
+          << "temporary left behind: " << name;
+    }
+  }
+
+  std::string newDesign(const std::string& arguments, const std::string& name) const {
+    const CommandResult r = run("new " + arguments + " -o " + path(name).string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return path(name).string();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, SurfacesListsEveryInitialSurface) {
+  const CommandResult r = run("surfaces");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"square", "rectangle", "disk", "star", "cylinder", "half_cylinder",
+                           "cone", "swept_curve", "helix_tangent"})
+    EXPECT_NE(r.out.find(std::string(name) + ":"), std::string::npos) << name;
+  EXPECT_NE(r.out.find("--resolution"), std::string::npos);
+}
+
+TEST_F(Cli, EverySubcommandHasHelp) {
+  for (const char* command : {"surfaces", "new", "fold", "export", "check"}) {
+    const CommandResult r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << command;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
+  }
+}
+
+TEST_F(Cli, NewFoldExportCheck) {
+  const std::string design = newDesign("half_cylinder --resolution 24", "a.curvefold.json");
+  const std::string folded = path("b.curvefold.json").string();
+  CommandResult r =
+      run("fold " + design + " --vertex-near 0.05,0.1,0 --to 0.02,0.06,0.05 -o " + folded);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = run("fold " + folded + " --vertex-near -0.05,-0.1,0 --to -0.02,-0.05,0.06 -o " + folded);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(slurp(folded));
+  EXPECT_EQ(json["folds"].size(), 2u);
+
+  r = run("check " + folded);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("isometry"), std::string::npos);
+  EXPECT_NE(r.out.find("Euler characteristic"), std::string::npos);
+  EXPECT_EQ(r.out.find("FAIL"), std::string::npos) << r.out;
+
+  r = run("export " + folded + " --fold " + path("b.fold").string() + " --svg " +
+          path("b.svg").string() + " --obj " + path("b.obj").string() + " --gltf " +
+          path("b.glb").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"b.fold", "b.svg", "b.obj", "b.glb"})
+    EXPECT_GT(fs::file_size(path(name)), 100u) << name;
+  const nlohmann::json fold = nlohmann::json::parse(slurp(path("b.fold")));
+  const auto& assignments = fold["edges_assignment"];
+  EXPECT_GT(std::count(assignments.begin(), assignments.end(), "M") +
+                std::count(assignments.begin(), assignments.end(), "V"),
+            0);
+}
+
+TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {
+  const std::string design = newDesign("square --resolution 8", "a.curvefold.json");
+  // The square is centred on the origin in z = 0: its surface point nearest (0,0,1) is (0,0,0).
+  const CommandResult r = run("fold " + design + " --vertex-near 0,0,1 --to 0,0,0 -o " +
+                              path("b.curvefold.json").string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("no fold added"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(slurp(path("b.curvefold.json")))["folds"].size(), 0u);
+}
+
+TEST_F(Cli, BadSurfaceParametersAreRefused) {
+  const fs::path out = path("x.curvefold.json");
+  const std::string o = " -o " + out.string();
+  expectFailure("new origami_crane" + o, "origami_crane", out);
+  expectFailure("new cylinder --wingspan 3" + o, "--wingspan", out);
+  expectFailure("new cylinder --points 5" + o, "points", out);  // a star's parameter
+  expectFailure("new cylinder --radius 0" + o, "radius", out);
+  expectFailure("new cylinder --radius -0.1" + o, "radius", out);
+  expectFailure("new cylinder --radius nan" + o, "radius", out);
+  expectFailure("new cylinder --radius 1e300" + o, "radius", out);
+  expectFailure("new cylinder --resolution 0" + o, "resolution", out);
+  expectFailure("new cylinder --resolution 1e9" + o, "resolution", out);
+  expectFailure("new star --resolution 2.5" + o, "resolution", out);
+}
+
+TEST_F(Cli, BadPointsAreRefused) {
+  const std::string design = newDesign("square", "a.curvefold.json");
+  const fs::path out = path("b.curvefold.json");
+  expectFailure("fold " + design + " --vertex-near 0,0 --to 0,0,1 -o " + out.string(),
+                "--vertex-near", out);
+  expectFailure("fold " + design + " --vertex-near 0,0,0 --to 0,nan,1 -o " + out.string(), "--to",
+                out);
+}
+
+TEST_F(Cli, BadDesignFilesAreRefused) {
+  const std::string design = newDesign("square --resolution 6", "a.curvefold.json");
+  const std::string text = slurp(design);
+  const fs::path out = path("out.fold");
+
+  std::ofstream(path("truncated.curvefold.json")) << text.substr(0, text.size() / 2);
+  expectFailure("export " + path("truncated.curvefold.json").string() + " --fold " + out.string(),
+                "truncated.curvefold.json", out);
+
+  nlohmann::json json = nlohmann::json::parse(text);
+  json["version"] = 99;
+  std::ofstream(path("future.curvefold.json")) << json.dump();
+  expectFailure("export " + path("future.curvefold.json").string() + " --fold " + out.string(),
+                "version", out);
+
+  json["version"] = 1;
+  json["folds"] =
+      nlohmann::json::array({{{"seed", {5.0, 5.0}},
+                              {"plane", {{"point", {0.0, 0.0, 0.0}}, {"normal", {1.0, 0.0, 0.0}}}},
+                              {"grabbed", {5.0, 5.0, 0.0}},
+                              {"target", {6.0, 5.0, 0.0}}}});
+  std::ofstream(path("outside.curvefold.json")) << json.dump();
+  expectFailure("export " + path("outside.curvefold.json").string() + " --fold " + out.string(),
+                "outside the sheet", out);
+  expectFailure("check " + path("missing.curvefold.json").string(), "missing.curvefold.json", out);
+}
+
+TEST_F(Cli, UnwritableOutputIsRefused) {
+  const std::string design = newDesign("square", "a.curvefold.json");
+  expectFailure("export " + design + " --svg /nonexistent-dir/x.svg", "/nonexistent-dir/x.svg",
+                "/nonexistent-dir/x.svg");
+  expectFailure("new square -o /nonexistent-dir/x.curvefold.json", "/nonexistent-dir",
+                "/nonexistent-dir/x.curvefold.json");
+}
+
+TEST_F(Cli, BadObjFilesAreRefused) {
+  const fs::path out = path("x.curvefold.json");
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(path(name)) << text;
+    return path(name).string();
+  };
+  expectFailure("new " + write("empty.obj", "") + " -o " + out.string(), "empty.obj", out);
+  expectFailure(
+      "new " + write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n") + " -o " + out.string(),
+      "range.obj", out);
+  expectFailure(
+      "new " + write("nan.obj", "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n") + " -o " + out.string(),
+      "nan.obj", out);
+  // Three triangles on one edge.
+  expectFailure("new " +
+                    write("fin.obj",
+                          "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
+                          "f 1 2 3\nf 2 1 4\nf 1 2 5\n") +
+                    " -o " + out.string(),
+                "fin.obj", out);
+  // A pyramid cap: four triangles around an apex that is not flat.
+  expectFailure("new " +
+                    write("cap.obj",
+                          "v 0 0 0.5\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\n"
+                          "f 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 2\n") +
+                    " -o " + out.string(),
+                "angle defect", out);
+}
+
+TEST_F(Cli, ObjSurfaceStartsADesign) {
+  // A strip of two squares bent along their shared edge by 90 degrees: developable.
+  std::ofstream(path("bent.obj")) << "v 0 0 0\nv 0.1 0 0\nv 0.1 0.1 0\nv 0 0.1 0\n"
+                                     "v 0.1 0.1 0.1\nv 0 0.1 0.1\n"
+                                     "f 1 2 3\nf 1 3 4\nf 4 3 5\nf 4 5 6\n";
+  const std::string design = newDesign(path("bent.obj").string(), "a.curvefold.json");
+  const std::string folded = path("b.curvefold.json").string();
+  CommandResult r = run("fold " + design + " --vertex-near 0,0,0 --to 0.02,0.05,0.05 -o " + folded);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = run("check " + folded);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+}
+
+}  // namespace

@@ -1,5 +1,0 @@
-#include <gtest/gtest.h>
-
-#include "engine/geometry/validate.hpp"
-
-TEST(Sheet, Placeholder) {}
