@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 
 #include <glm/geometric.hpp>
 
@@ -46,15 +47,10 @@ int sideOf(double d, double epsilon) {
 }  // namespace
 
 void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCount) {
-  if (distance_.size() < vertexCount) {
-    distance_.resize(vertexCount);
-    distanceStamp_.resize(vertexCount, 0);
-    vertexReached_.resize(vertexCount, 0);
-  }
+  if (vertices_.size() < vertexCount) vertices_.resize(vertexCount);
   if (triangleReached_.size() < triangleCount) triangleReached_.resize(triangleCount, 0);
   if (++stamp_ == 0) {  // wrapped: old stamps could alias the new one
-    std::fill(distanceStamp_.begin(), distanceStamp_.end(), 0);
-    std::fill(vertexReached_.begin(), vertexReached_.end(), 0);
+    std::fill(vertices_.begin(), vertices_.end(), VertexState{});
     std::fill(triangleReached_.begin(), triangleReached_.end(), 0);
     stamp_ = 1;
   }
@@ -62,31 +58,52 @@ void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCo
 
 double ReflectionWorkspace::distanceOf(const Sheet& sheet, const ReflectionPlane& plane,
                                        VertexIndex v) {
-  if (distanceStamp_[v] != stamp_) {
-    distanceStamp_[v] = stamp_;
-    distance_[v] = plane.signedDistance(sheet.positions[v]);
+  VertexState& state = vertices_[v];
+  if (state.distanceStamp != stamp_) {
+    state.distanceStamp = stamp_;
+    state.distance = plane.signedDistance(sheet.positions[v]);
   }
-  return distance_[v];
+  return state.distance;
 }
 
 // Flood fill from the seed through strictly-negative vertices [MI 3.3]: a triangle is reached when
 // it touches a reached vertex, and every strictly-negative vertex of a reached triangle is reached.
+// Reached vertices are reflected into `out` as they are found (their data is in cache then), and
+// each reached triangle is classified: wholly reflected, crossed (to split), or hinged on an edge
+// lying in the plane (a crease candidate).
 void ReflectionWorkspace::fill(const Sheet& sheet, const VertexTriangles& adjacency,
-                               VertexIndex seed, const ReflectionPlane& plane, double epsilon) {
+                               VertexIndex seed, const ReflectionPlane& plane, double epsilon,
+                               Sheet& out) {
   reachedVertices_.clear();
-  reachedTriangles_.clear();
-  vertexReached_[seed] = stamp_;
+  crossedTriangles_.clear();
+  hingeTriangles_.clear();
+  vertices_[seed].reachedStamp = stamp_;
   reachedVertices_.push_back(seed);
+  out.positions[seed] = plane.reflect(sheet.positions[seed]);
   for (std::size_t next = 0; next < reachedVertices_.size(); ++next) {
     for (TriangleIndex t : adjacency.of(reachedVertices_[next])) {
       if (triangleReached_[t] == stamp_) continue;
       triangleReached_[t] = stamp_;
-      reachedTriangles_.push_back(t);
+      int positive = 0, onPlane = 0;
       for (VertexIndex w : sheet.triangles[t]) {
-        if (vertexReached_[w] != stamp_ && distanceOf(sheet, plane, w) < -epsilon) {
-          vertexReached_[w] = stamp_;
-          reachedVertices_.push_back(w);
+        const double d = distanceOf(sheet, plane, w);
+        if (d < -epsilon) {
+          if (vertices_[w].reachedStamp != stamp_) {
+            vertices_[w].reachedStamp = stamp_;
+            reachedVertices_.push_back(w);
+            out.positions[w] = plane.reflect(sheet.positions[w]);
+          }
+        } else if (d > epsilon) {
+          ++positive;
+        } else {
+          ++onPlane;
         }
+      }
+      if (positive > 0) {
+        crossedTriangles_.push_back(t);
+      } else {
+        changes_.reflectedTriangles.push_back(t);
+        if (onPlane == 2) hingeTriangles_.push_back(t);
       }
     }
   }
@@ -106,9 +123,7 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
   resize(sheet.vertexCount(), sheet.triangleCount());
   if (!(distanceOf(sheet, plane, seed) < -epsilon)) return;  // nothing on the seed's side
 
-  fill(sheet, adjacency, seed, plane, epsilon);
-
-  for (VertexIndex v : reachedVertices_) out.positions[v] = plane.reflect(sheet.positions[v]);
+  fill(sheet, adjacency, seed, plane, epsilon, out);
   changes_.movedVertices = reachedVertices_;
 
   cuts_.clear();
@@ -121,7 +136,7 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
     auto [it, inserted] =
         cuts_.try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
     if (inserted) {
-      const double da = distance_[e.a], db = distance_[e.b];
+      const double da = vertices_[e.a].distance, db = vertices_[e.b].distance;
       const double t = da / (da - db);
       out.positions.push_back(sheet.positions[e.a] +
                               t * (sheet.positions[e.b] - sheet.positions[e.a]));
@@ -171,31 +186,26 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
     }
   };
 
-  for (TriangleIndex t : reachedTriangles_) {
+  // An existing edge lying in the plane between a reflected triangle and one outside the reached
+  // part becomes a crease.
+  for (TriangleIndex t : hingeTriangles_) {
+    const Triangle& tri = sheet.triangles[t];
+    int i = 0;
+    while (sideOf(vertices_[tri[i]].distance, epsilon) == 0 ||
+           sideOf(vertices_[tri[(i + 1) % 3]].distance, epsilon) != 0)
+      i = (i + 1) % 3;
+    const VertexIndex u = tri[(i + 1) % 3], w = tri[(i + 2) % 3];
+    for (TriangleIndex other : adjacency.of(u)) {
+      if (other == t || triangleReached_[other] == stamp_) continue;
+      const Triangle& o = sheet.triangles[other];
+      if (o[0] == w || o[1] == w || o[2] == w) newTags_.push_back({Edge::of(u, w)});
+    }
+  }
+
+  for (TriangleIndex t : crossedTriangles_) {
     const Triangle tri = sheet.triangles[t];
     std::array<int, 3> side;
-    bool crossed = false;
-    int onPlane = 0;
-    for (int i = 0; i < 3; ++i) {
-      side[i] = sideOf(distance_[tri[i]], epsilon);
-      crossed |= side[i] > 0;
-      onPlane += side[i] == 0;
-    }
-    if (!crossed) {
-      changes_.reflectedTriangles.push_back(t);
-      // An existing edge lying in the plane between this reflected triangle and one outside the
-      // reached part becomes a crease.
-      if (onPlane == 2) {
-        const int i = side[0] != 0 ? 1 : (side[1] != 0 ? 2 : 0);
-        const VertexIndex u = tri[i], w = tri[(i + 1) % 3];
-        for (TriangleIndex other : adjacency.of(u)) {
-          if (other == t || triangleReached_[other] == stamp_) continue;
-          const Triangle& o = sheet.triangles[other];
-          if (o[0] == w || o[1] == w || o[2] == w) newTags_.push_back({Edge::of(u, w)});
-        }
-      }
-      continue;
-    }
+    for (int i = 0; i < 3; ++i) side[i] = sideOf(vertices_[tri[i]].distance, epsilon);
     // Clip the triangle by the plane, keeping the vertex order (so the development stays CCW).
     std::array<VertexIndex, 4> negative{}, positive{};
     int negativeCount = 0, positiveCount = 0;
@@ -225,13 +235,22 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
   std::size_t creases = 0;
   for (const TaggedEdge& tag : newTags_) creases += tag.kind == EdgeKind::Crease;
   changes_.newCreaseCount = creases;
-  out.tags.clear();
+  // Both lists sorted, so a merge keeps the result sorted in linear time; for an edge in both, the
+  // sheet's entry comes first and survives.
   std::sort(splitEdges_.begin(), splitEdges_.end());
+  keptTags_.clear();
   for (const TaggedEdge& tag : sheet.tags)
     if (!std::binary_search(splitEdges_.begin(), splitEdges_.end(), tag.edge))
-      out.tags.push_back(tag);
-  out.tags.insert(out.tags.end(), newTags_.begin(), newTags_.end());
-  out.normalizeTags();
+      keptTags_.push_back(tag);
+  auto byEdge = [](const TaggedEdge& x, const TaggedEdge& y) { return x.edge < y.edge; };
+  std::stable_sort(newTags_.begin(), newTags_.end(), byEdge);
+  out.tags.clear();
+  std::merge(keptTags_.begin(), keptTags_.end(), newTags_.begin(), newTags_.end(),
+             std::back_inserter(out.tags), byEdge);
+  out.tags.erase(
+      std::unique(out.tags.begin(), out.tags.end(),
+                  [](const TaggedEdge& x, const TaggedEdge& y) { return x.edge == y.edge; }),
+      out.tags.end());
 }
 
 void ReflectionWorkspace::restore(const Sheet& sheet, Sheet& out) const {

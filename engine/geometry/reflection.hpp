@@ -59,22 +59,29 @@ class ReflectionWorkspace {
   const ReflectionChanges& changes() const { return changes_; }
 
  private:
+  // Per-vertex scratch in one record so the fill touches one cache line per vertex.
+  struct VertexState {
+    double distance = 0.0;  // signed distance, valid when distanceStamp == stamp_
+    std::uint32_t distanceStamp = 0;
+    std::uint32_t reachedStamp = 0;  // == stamp_: a strictly-negative vertex of the fill
+  };
+
   void resize(std::size_t vertexCount, std::size_t triangleCount);
   void fill(const Sheet& sheet, const VertexTriangles& adjacency, VertexIndex seed,
-            const ReflectionPlane& plane, double epsilon);
+            const ReflectionPlane& plane, double epsilon, Sheet& out);
   double distanceOf(const Sheet& sheet, const ReflectionPlane& plane, VertexIndex v);
 
   ReflectionChanges changes_;
   std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> distanceStamp_;  // distance_[v] valid when == stamp_
-  std::vector<double> distance_;
-  std::vector<std::uint32_t> vertexReached_;    // == stamp_: negative vertex in the fill
+  std::vector<VertexState> vertices_;
   std::vector<std::uint32_t> triangleReached_;  // == stamp_: triangle in the reached part
   std::vector<VertexIndex> reachedVertices_;
-  std::vector<TriangleIndex> reachedTriangles_;
+  std::vector<TriangleIndex> crossedTriangles_;  // reached, with vertices on both sides
+  std::vector<TriangleIndex> hingeTriangles_;    // reached, not crossed, with an edge in the plane
   std::unordered_map<std::uint64_t, VertexIndex> cuts_;  // cut vertex of each split edge
   std::vector<Edge> splitEdges_;
   std::vector<TaggedEdge> newTags_;
+  std::vector<TaggedEdge> keptTags_;
 };
 
 struct ReflectionResult {
