@@ -17,5 +17,8 @@ void addNewCommand(CLI::App& app);
 void addFoldCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
+// replay_commands.cpp: recorded input.
+void addReplayCommand(CLI::App& app);
+void addRecordScriptCommand(CLI::App& app);
 
 }  // namespace curvefold::cli

@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   curvefold::cli::addFoldCommand(app);
   curvefold::cli::addExportCommand(app);
   curvefold::cli::addCheckCommand(app);
+  curvefold::cli::addReplayCommand(app);
+  curvefold::cli::addRecordScriptCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -32,6 +32,7 @@ FoldSession::FoldSession(Sheet initial)
 void FoldSession::setFixed(Sheet sheet) {
   fixed_ = std::move(sheet);
   fixedAdjacency_ = buildVertexTriangles(fixed_);
+  ++fixedRevision_;
 }
 
 glm::dvec3 FoldSession::beginDrag(const SurfacePoint& point) {

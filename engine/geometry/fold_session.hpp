@@ -43,6 +43,8 @@ class FoldSession {
   // What to show: the temporal sheet while dragging, else the fixed one.
   const Sheet& current() const { return dragging_ ? temporal_ : fixed_; }
   double epsilon() const { return epsilon_; }
+  // Changes whenever the fixed sheet does (commit, undo, redo), for caches built on it.
+  std::uint64_t fixedRevision() const { return fixedRevision_; }
 
   // --- Dragging -----------------------------------------------------------------------------
   bool dragging() const { return dragging_; }
@@ -84,6 +86,7 @@ class FoldSession {
   double epsilon_ = 0.0;
   Sheet fixed_;
   VertexTriangles fixedAdjacency_;
+  std::uint64_t fixedRevision_ = 0;
 
   // Drag state: grabSheet_ is fixed_ with the grabbed point made a vertex.
   bool dragging_ = false;

@@ -77,6 +77,13 @@ glm::dvec2 developmentOf(const Sheet& sheet, const SurfacePoint& point) {
          point.barycentric.z * sheet.development[t[2]];
 }
 
+SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
+                                    const glm::dvec3& p) {
+  const Triangle& tri = sheet.triangles[triangle];
+  return {triangle, closestBarycentric(p, sheet.positions[tri[0]], sheet.positions[tri[1]],
+                                       sheet.positions[tri[2]])};
+}
+
 SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p) {
   SurfacePoint best;
   double bestDistance = std::numeric_limits<double>::infinity();

@@ -20,6 +20,10 @@ struct SurfacePoint {
 glm::dvec3 positionOf(const Sheet& sheet, const SurfacePoint& point);
 glm::dvec2 developmentOf(const Sheet& sheet, const SurfacePoint& point);
 
+// The point of one triangle nearest to p in 3D.
+SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
+                                    const glm::dvec3& p);
+
 // The surface point nearest to p in 3D (brute force over the triangles; ties go to the lowest
 // triangle index, so the answer is deterministic). The sheet must not be empty.
 SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p);

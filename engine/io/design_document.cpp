@@ -208,7 +208,7 @@ ordered_json vectorJson(const glm::dvec3& v) {
   return {v.x, v.y, v.z};
 }
 
-ordered_json surfaceJson(const InitialSurface& surface) {
+ordered_json surfaceJsonOf(const InitialSurface& surface) {
   if (const auto* generated = std::get_if<GeneratedSurface>(&surface)) {
     ordered_json parameters = ordered_json::object();
     for (const auto& [key, value] : generated->parameters) parameters[key] = value;
@@ -269,6 +269,14 @@ Design parseText(const std::string& text, std::string_view name) {
 
 }  // namespace
 
+nlohmann::ordered_json initialSurfaceJson(const InitialSurface& surface) {
+  return surfaceJsonOf(surface);
+}
+
+InitialSurface parseInitialSurface(const nlohmann::json& value, std::string_view nameForErrors) {
+  return Reader(nameForErrors).surface(value);
+}
+
 Sheet initialSheet(const Design& design, std::string_view nameForErrors) {
   if (const auto* sheet = std::get_if<Sheet>(&design.surface)) return *sheet;
   const auto& generated = std::get<GeneratedSurface>(design.surface);
@@ -301,7 +309,7 @@ Sheet buildSheet(const Design& design, std::string_view nameForErrors) {
 
 void saveDesign(const Design& design, const std::filesystem::path& path) {
   const std::string name = path.string();
-  const ordered_json surface = surfaceJson(design.surface);
+  const ordered_json surface = surfaceJsonOf(design.surface);
   std::vector<ordered_json> folds;
   for (const FoldRecord& fold : design.folds) folds.push_back(foldJson(fold));
 

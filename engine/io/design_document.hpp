@@ -13,6 +13,8 @@
 #include <variant>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/sheet.hpp"
 
@@ -59,5 +61,11 @@ void saveDesign(const Design& design, const std::filesystem::path& path);
 // when the file cannot be read, DesignError for anything wrong with its content.
 Design loadDesign(const std::filesystem::path& path);
 Design parseDesign(std::istream& in, std::string_view nameForErrors);
+
+// The "surface" object of a design document, for other formats that embed an initial surface (a
+// recording's header). parseInitialSurface checks the JSON (not whether a generator accepts its
+// parameters: initialSheet does that) and throws DesignError starting with nameForErrors.
+nlohmann::ordered_json initialSurfaceJson(const InitialSurface& surface);
+InitialSurface parseInitialSurface(const nlohmann::json& value, std::string_view nameForErrors);
 
 }  // namespace curvefold

@@ -1,0 +1,221 @@
+// `replay` and `record-script`: recorded input (DESIGN.md 6) on the command line.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/fold_format.hpp"
+#include "engine/io/obj_writer.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
+#include "sim_input/gestures.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string seconds(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g s", value);
+  return buffer;
+}
+
+// A one-line bar on stderr, only when stderr is a terminal and the replay has run (or will run,
+// in real time) longer than a second; redrawn at most ten times a second.
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool realtime, double duration)
+      : enabled_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()) {
+    if (realtime && duration > 1.0) shown_ = enabled_;
+  }
+  ~ProgressBar() { clear(); }
+
+  void update(const ReplayProgress& progress) {
+    if (!enabled_) return;
+    const Clock::time_point now = Clock::now();
+    if (!shown_) {
+      if (now - start_ < std::chrono::seconds(1)) return;
+      shown_ = true;
+    } else if (now - lastDraw_ < std::chrono::milliseconds(100)) {
+      return;
+    }
+    lastDraw_ = now;
+    const double fraction =
+        progress.frameCount == 0 ? 1.0 : double(progress.frame) / double(progress.frameCount);
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(fraction * kWidth);
+    std::string bar =
+        "\rreplaying [" + std::string(filled, '#') + std::string(kWidth - filled, ' ') + "] ";
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, "%3.0f%%  %.1f/%.1f s", 100.0 * fraction, progress.time,
+                  progress.duration);
+    std::cerr << bar << numbers << std::flush;
+  }
+
+  void clear() {
+    if (!shown_) return;
+    std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
+    shown_ = false;
+  }
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  Clock::time_point start_;
+  Clock::time_point lastDraw_{};
+};
+
+// Files that appear together or not at all: each is written (atomically) to a hidden staging
+// name next to its target, and only when all have been written are they renamed into place.
+class OutputSet {
+ public:
+  void add(const fs::path& path, std::function<void(const fs::path&)> writer) {
+    outputs_.push_back({path, std::move(writer)});
+  }
+
+  void write(const fs::path& dir) {
+    bool created = false;
+    if (!dir.empty() && !fs::is_directory(dir)) {
+      std::error_code error;
+      fs::create_directories(dir, error);
+      if (error) throw FileError("cannot create " + dir.string() + ": " + error.message());
+      created = true;
+    }
+    std::vector<fs::path> staged;
+    auto discard = [&] {
+      std::error_code ignored;
+      for (const fs::path& path : staged) fs::remove(path, ignored);
+      if (created) fs::remove(dir, ignored);  // only if still empty
+    };
+    try {
+      for (const Output& output : outputs_) {
+        fs::path stage = output.path;
+        stage.replace_filename("." + output.path.filename().string() + ".staged-" +
+                               std::to_string(::getpid()));
+        staged.push_back(stage);
+        try {
+          output.writer(stage);
+        } catch (const std::exception& e) {
+          // The writers name the staging file; the user knows the target.
+          std::string message = e.what();
+          for (auto at = message.find(stage.string()); at != std::string::npos;
+               at = message.find(stage.string()))
+            message.replace(at, stage.string().size(), output.path.string());
+          throw FileError(message);
+        }
+      }
+      for (std::size_t i = 0; i < outputs_.size(); ++i) {
+        std::error_code error;
+        fs::rename(staged[i], outputs_[i].path, error);
+        if (error)
+          throw FileError("cannot write " + outputs_[i].path.string() + ": " + error.message());
+      }
+    } catch (...) {
+      discard();
+      throw;
+    }
+  }
+
+ private:
+  struct Output {
+    fs::path path;
+    std::function<void(const fs::path&)> writer;
+  };
+  std::vector<Output> outputs_;
+};
+
+}  // namespace
+
+void addReplayCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "replay", "Replay a recording into a design, FOLD, SVG, OBJ and a per-fold log");
+  struct Options {
+    std::string recording, out;
+    bool realtime = false;
+    bool allowTruncated = false;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("REC", options->recording, "Recording (JSON Lines, *.jsonl)")->required();
+  command->add_option("--out", options->out,
+                      "Folder for the output files (default: the recording's name without its "
+                      "extension, in the current folder)");
+  command->add_flag("--realtime", options->realtime, "Replay at the recorded pace");
+  command->add_flag("--allow-truncated", options->allowTruncated,
+                    "Replay a cut-off recording up to its last whole frame (with a warning)");
+  command->callback([options] {
+    const fs::path recordingPath = options->recording;
+    const Recording recording = readRecording(recordingPath, {options->allowTruncated});
+    const std::string name = recordingPath.stem().string();
+    const fs::path dir = options->out.empty() ? fs::path(name) : fs::path(options->out);
+
+    ReplayOptions replayOptions;
+    replayOptions.realtime = options->realtime;
+    const double duration = recording.frames.empty()
+                                ? 0.0
+                                : recording.frames.back().time - recording.frames.front().time;
+    ProgressBar bar(options->realtime, duration);
+    replayOptions.onFrame = [&bar](const ReplayProgress& progress) { bar.update(progress); };
+    const Clock::time_point start = Clock::now();
+    const ReplayResult result = replayRecording(recording, replayOptions);
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    bar.clear();
+
+    std::string log;
+    for (const FoldLogEntry& entry : result.log) log += foldLogLine(entry) + "\n";
+    OutputSet outputs;
+    outputs.add(dir / (name + ".curvefold.json"),
+                [&](const fs::path& path) { saveDesign(result.design, path); });
+    outputs.add(dir / (name + ".fold"),
+                [&](const fs::path& path) { writeFold(result.sheet, path); });
+    outputs.add(dir / (name + ".svg"),
+                [&](const fs::path& path) { writeSvgCreasePattern(result.sheet, path); });
+    outputs.add(dir / (name + ".obj"), [&](const fs::path& path) { writeObj(result.sheet, path); });
+    outputs.add(dir / (name + ".folds.jsonl"),
+                [&](const fs::path& path) { writeFileAtomically(path, log); });
+    outputs.write(dir);
+
+    if (recording.truncated)
+      std::cerr << "curvefold: warning: " << recordingPath.string() << ": truncated at line "
+                << recording.lineCount + 1 << "; replayed the " << recording.frames.size()
+                << " whole frames before it\n";
+    std::cout << "replayed " << recordingPath.string() << ": " << result.frameCount << " frames ("
+              << seconds(result.duration) << "), " << result.design.folds.size()
+              << (result.design.folds.size() == 1 ? " fold, " : " folds, ")
+              << result.sheet.triangleCount() << " triangles, in " << seconds(elapsed)
+              << (result.endedWhileDragging ? " (a drag left unfinished)" : "") << "; wrote "
+              << (dir / (name + ".*")).string() << "\n";
+  });
+}
+
+void addRecordScriptCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("record-script", "Turn a gesture script into a recording");
+  struct Options {
+    std::string script, output;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("SCRIPT", options->script, "Gesture script (JSON)")->required();
+  command->add_option("-o,--output", options->output, "Recording to write (*.jsonl)")->required();
+  command->callback([options] {
+    const Recording recording = recordGestureScript(options->script);
+    writeRecording(recording, options->output);
+    const double duration = recording.frames.empty()
+                                ? 0.0
+                                : recording.frames.back().time - recording.frames.front().time;
+    std::cout << "wrote " << options->output << " (" << recording.frames.size() << " frames, "
+              << seconds(duration) << ")\n";
+  });
+}
+
+}  // namespace curvefold::cli

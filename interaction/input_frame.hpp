@@ -1,0 +1,61 @@
+// The one input type every source produces (OpenXR controllers, the desktop mouse, a recording, a
+// gesture script): a snapshot of both hands in their roles (DESIGN.md 5). No OpenXR or GLFW types,
+// so the interaction core, the recorder and the player are shared by all sources.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+namespace curvefold {
+
+// A rigid transform: rotate by orientation (unit quaternion), then translate by position.
+struct Pose {
+  glm::dvec3 position{0.0};
+  glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // w, x, y, z
+
+  glm::dvec3 apply(const glm::dvec3& p) const { return position + orientation * p; }
+  glm::dvec3 applyToDirection(const glm::dvec3& d) const { return orientation * d; }
+  Pose inverse() const {
+    const glm::dquat inverted = glm::conjugate(orientation);
+    return {inverted * -position, inverted};
+  }
+  // (this * other).apply(p) == this->apply(other.apply(p))
+  Pose operator*(const Pose& other) const {
+    return {apply(other.position), orientation * other.orientation};
+  }
+  bool operator==(const Pose&) const = default;
+};
+
+// Buttons as a bit mask of what is held this frame; the core reacts to presses (rising edges).
+enum class Button : std::uint32_t {
+  Cancel = 1u << 0,
+  Undo = 1u << 1,
+  Redo = 1u << 2,
+  SwitchHands = 1u << 3,
+};
+
+struct InputFrame {
+  double time = 0.0;  // seconds since the start of the session
+
+  // Non-dominant hand: its 6-DOF pose holds the sheet while the clutch (grip) is squeezed.
+  struct SheetHand {
+    Pose pose;
+    bool tracked = false;
+    double clutch = 0.0;  // grip, 0 (open) to 1 (squeezed)
+  } sheetHand;
+
+  // Dominant hand: a 3-DOF point (the controller tip) that grabs with select (the trigger).
+  struct PointHand {
+    glm::dvec3 position{0.0};
+    bool tracked = false;
+    double select = 0.0;  // trigger, 0 (released) to 1 (pulled)
+  } pointHand;
+
+  std::uint32_t buttons = 0;  // Button bits held
+
+  bool held(Button button) const { return (buttons & static_cast<std::uint32_t>(button)) != 0; }
+};
+
+}  // namespace curvefold

@@ -1,0 +1,125 @@
+// The two-handed interaction core (DESIGN.md 5): consumes input frames and drives a FoldSession.
+// The non-dominant hand holds the sheet frame while its clutch is squeezed; the dominant hand's
+// point hovers, grabs a surface point with the trigger and drags it, and release commits. Moving
+// either hand during a drag folds, since the target is taken in sheet coordinates.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "engine/geometry/fold_session.hpp"
+#include "interaction/input_frame.hpp"
+#include "interaction/surface_picker.hpp"
+
+namespace curvefold {
+
+// Thresholds of the interaction, in one place.
+struct InteractionThresholds {
+  // The point hovers the nearest surface point within this distance (metres): about the size of a
+  // controller's tip, so a point can be picked without touching the paper exactly.
+  double hoverRadius = 0.03;
+  // Trigger and grip hysteresis: pressed at or above `press`, released at or below `release`, so a
+  // noisy value near one threshold does not start and stop drags or clutches.
+  double selectPress = 0.75;
+  double selectRelease = 0.25;
+  double clutchPress = 0.75;
+  double clutchRelease = 0.25;
+  // A drag folds only once the target has moved this far (metres) from the grabbed point, so a
+  // click without intent adds no fold; a release before that cancels.
+  double minimumDragDistance = 0.002;
+};
+
+enum class InteractionState { Idle, Hover, Dragging };
+
+// Which hand is dominant (holds the point). The source maps controllers to roles by it.
+enum class Handedness { Right, Left };
+
+enum class InteractionEventKind { Grab, Commit, Cancel, Undo, Redo, SwitchHands };
+
+// Something that happened in the last frame; Grab and Commit also ask for a haptic pulse.
+struct InteractionEvent {
+  InteractionEventKind kind;
+  double time = 0.0;
+};
+
+enum class HapticHand { Sheet, Point };
+struct HapticPulse {
+  HapticHand hand = HapticHand::Point;
+  double amplitude = 0.5;  // 0..1
+  double duration = 0.02;  // seconds
+};
+
+struct HoverPoint {
+  SurfacePoint point;           // on the fixed sheet
+  glm::dvec3 sheetPosition{0};  // sheet coordinates
+  double distance = 0.0;        // from the tip, metres
+};
+
+class InteractionCore {
+ public:
+  InteractionCore(FoldSession& session, const Pose& worldFromSheet,
+                  Handedness handedness = Handedness::Right,
+                  const InteractionThresholds& thresholds = {});
+
+  // Consumes one frame. Frames must come in time order.
+  void process(const InputFrame& frame);
+
+  // --- What a renderer shows ----------------------------------------------------------------
+  InteractionState state() const { return state_; }
+  const Pose& worldFromSheet() const { return worldFromSheet_; }
+  bool clutched() const { return clutched_; }
+  Handedness handedness() const { return handedness_; }
+  const std::optional<HoverPoint>& hover() const { return hover_; }
+  // While dragging: the grabbed point's start and its current target, in sheet coordinates.
+  glm::dvec3 grabStart() const { return session_.grabbedPoint(); }
+  glm::dvec3 grabTarget() const { return session_.dragTarget(); }
+  // The reflection plane (sheet coordinates) while a drag folds the sheet.
+  std::optional<ReflectionPlane> plane() const;
+  // Triangles of the displayed sheet that lie in the reflected part (empty unless folding).
+  const std::vector<TriangleIndex>& reflectedTriangles() const;
+  const FoldSession& session() const { return session_; }
+
+  // What happened in the last processed frame, and the haptic pulses it asks for.
+  const std::vector<InteractionEvent>& events() const { return events_; }
+  const std::vector<HapticPulse>& haptics() const { return haptics_; }
+
+  const InteractionThresholds& thresholds() const { return thresholds_; }
+
+ private:
+  void handleButtons(const InputFrame& frame);
+  void handleSheetHand(const InputFrame::SheetHand& hand);
+  void handlePointHand(const InputFrame& frame);
+  void endDrag(bool commit, double time);
+  void emit(InteractionEventKind kind, double time);
+  const SurfacePicker& picker();
+
+  FoldSession& session_;
+  InteractionThresholds thresholds_;
+  Handedness handedness_;
+  InteractionState state_ = InteractionState::Idle;
+  std::vector<InteractionEvent> events_;
+  std::vector<HapticPulse> haptics_;
+
+  // Sheet hand.
+  Pose worldFromSheet_;
+  bool clutched_ = false;
+  bool clutchAnchored_ = false;  // false while the hand is lost during a clutch
+  Pose handAtClutch_;
+  Pose sheetAtClutch_;
+
+  // Point hand.
+  bool selectHeld_ = false;
+  std::uint32_t buttonsHeld_ = 0;
+  std::optional<HoverPoint> hover_;
+  glm::dvec3 grabOffset_{
+      0.0};  // sheet coordinates: target = inverse(worldFromSheet) * tip + offset
+  bool pointAnchored_ = false;  // false while the point hand is lost during a drag
+  bool dragMoved_ = false;      // the target has left the minimum drag distance
+  glm::dvec3 lastTarget_{0.0};
+
+  std::unique_ptr<SurfacePicker> picker_;
+  std::uint64_t pickerRevision_ = ~std::uint64_t{0};
+};
+
+}  // namespace curvefold

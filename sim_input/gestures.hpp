@@ -1,0 +1,88 @@
+// Synthetic gestures: hand motion made from a few intentions ("turn the sheet 30 degrees",
+// "grab the point nearest P and drag it to Q", "undo"), for tests and example recordings. The
+// generator runs the interaction core on the frames it makes, so a gesture can refer to the sheet
+// as it is at that moment; what comes out is an ordinary recording.
+//
+// Gesture script (JSON):
+//   {"format":"curvefold-gesture-script","version":1,
+//    "source":"script",                 // optional: "script" (default), "desktop" or "synthetic"
+//    "rate":60,                         // frames per second (optional, default 90)
+//    "handedness":"right",              // optional
+//    "surface":{...as in a design document...},
+//    "sheet_frame":{"position":[x,y,z],"orientation":[w,x,y,z]},  // optional
+//    "gestures":[
+//      {"wait":0.3},                                           // seconds, hands still
+//      {"turn_sheet":{"axis":[0,1,0],"degrees":30,"duration":0.5}},
+//      {"move_sheet":{"by":[x,y,z],"duration":0.5}},           // world metres
+//      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
+//               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional
+//      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}}]}
+// "grab" is a point near the sheet in sheet coordinates: the nearest surface point is grabbed.
+// "to" and "via" are where that point is dragged, in sheet coordinates of the sheet frame at the
+// start of the drag; a "turn_sheet" inside a drag turns the sheet with the other hand meanwhile,
+// so the fold follows both hands. Turns pivot about the sheet's centre.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "engine/geometry/fold_session.hpp"
+#include "interaction/interaction_core.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold {
+
+class GestureError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SheetTurn {
+  glm::dvec3 axis{0.0, 1.0, 0.0};  // world
+  double degrees = 0.0;
+};
+
+class GestureRecorder {
+ public:
+  explicit GestureRecorder(RecordingHeader header);
+
+  void wait(double seconds);
+  // Clutch, turn the sheet about its centre (world axis), release.
+  void turnSheet(const SheetTurn& turn, double seconds);
+  // Clutch, move the sheet by a world offset, release.
+  void moveSheet(const glm::dvec3& by, double seconds);
+  // Approach the surface point nearest `grabNear` (sheet coordinates), pull the trigger, drag it
+  // through `path` (sheet coordinates of the frame at the start) over `seconds`, optionally
+  // turning the sheet with the other hand meanwhile, and release. Throws GestureError when the
+  // grab does not take (the point is out of reach).
+  void drag(const glm::dvec3& grabNear, const std::vector<glm::dvec3>& path, double seconds,
+            const std::optional<SheetTurn>& turnDuring = std::nullopt);
+  void press(Button button);
+
+  const Recording& recording() const { return recording_; }
+  const FoldSession& session() const { return *session_; }
+  const InteractionCore& core() const { return *core_; }
+
+ private:
+  // Appends one frame and runs the core on it.
+  void step();
+  // The sheet hand pose that turns the sheet by `turn` (scaled by `fraction`) about its centre.
+  Pose turnedHand(const Pose& start, const Pose& sheetAtStart, const SheetTurn& turn,
+                  double fraction) const;
+
+  Recording recording_;
+  std::unique_ptr<FoldSession> session_;
+  std::unique_ptr<InteractionCore> core_;
+  InputFrame frame_;
+  glm::dvec3 sheetCentre_{0.0};  // sheet coordinates
+  double dt_ = 1.0 / 90.0;
+};
+
+// Runs a gesture script (the format above) into a recording. Throws GestureError naming the file
+// and the gesture for anything wrong with the script.
+Recording recordGestureScript(const std::filesystem::path& script);
+
+}  // namespace curvefold

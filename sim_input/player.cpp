@@ -1,0 +1,149 @@
+#include "sim_input/player.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+namespace curvefold {
+namespace {
+
+std::string_view kindName(FoldLogKind kind) {
+  switch (kind) {
+    case FoldLogKind::Commit:
+      return "commit";
+    case FoldLogKind::Undo:
+      return "undo";
+    case FoldLogKind::Redo:
+      return "redo";
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+double maxEdgeLengthError(const Sheet& sheet) {
+  double worst = 0.0;
+  for (const Triangle& t : sheet.triangles) {
+    for (int i = 0; i < 3; ++i) {
+      const VertexIndex a = t[i], b = t[(i + 1) % 3];
+      const double length3 = glm::distance(sheet.positions[a], sheet.positions[b]);
+      const double length2 = glm::distance(sheet.development[a], sheet.development[b]);
+      worst = std::max(worst, std::abs(length3 - length2));
+    }
+  }
+  return worst;
+}
+
+std::string foldLogLine(const FoldLogEntry& entry) {
+  using nlohmann::ordered_json;
+  const ReflectionPlane& plane = entry.plane;
+  ordered_json value;
+  value["event"] = kindName(entry.kind);
+  value["t"] = entry.time;
+  value["fold"] = entry.fold;
+  value["folds"] = entry.foldCount;
+  value["plane"] = {
+      {"point", ordered_json::array({plane.point.x, plane.point.y, plane.point.z})},
+      {"normal", ordered_json::array({plane.normal.x, plane.normal.y, plane.normal.z})}};
+  value["triangles_before"] = entry.trianglesBefore;
+  value["triangles_after"] = entry.trianglesAfter;
+  value["max_edge_length_error"] = entry.maxEdgeLengthError;
+  return value.dump();
+}
+
+Player::Player(const Recording& recording, const InteractionThresholds& thresholds)
+    : recording_(recording),
+      session_(initialSheet(Design{recording.header.surface, {}}, "recording")),
+      core_(session_, recording.header.sheetFrame, recording.header.handedness, thresholds) {}
+
+const InputFrame& Player::step() {
+  const InputFrame& frame = recording_.frames.at(next_++);
+  const std::size_t foldsBefore = session_.foldCount();
+  const std::size_t trianglesBefore = session_.fixed().triangleCount();
+  core_.process(frame);
+  logEvents(frame.time, foldsBefore, trianglesBefore);
+  return frame;
+}
+
+void Player::logEvents(double time, std::size_t foldsBefore, std::size_t trianglesBefore) {
+  std::vector<FoldLogKind> kinds;
+  for (const InteractionEvent& event : core_.events()) {
+    if (event.kind == InteractionEventKind::Commit) kinds.push_back(FoldLogKind::Commit);
+    if (event.kind == InteractionEventKind::Undo) kinds.push_back(FoldLogKind::Undo);
+    if (event.kind == InteractionEventKind::Redo) kinds.push_back(FoldLogKind::Redo);
+  }
+  // The core emits these only when the fixed sheet changed, one fold each way. A frame with
+  // several (undo and redo pressed together) rebuilds the sheets in between from the history,
+  // whose prefix none of them rewrites.
+  const std::vector<FoldRecord>& history = session_.folds();
+  std::size_t count = foldsBefore;
+  std::size_t triangles = trianglesBefore;
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    FoldLogEntry entry;
+    entry.kind = kinds[i];
+    entry.time = time;
+    entry.fold = kinds[i] == FoldLogKind::Undo ? count : count + 1;
+    count = kinds[i] == FoldLogKind::Undo ? count - 1 : count + 1;
+    entry.foldCount = count;
+    if (entry.fold >= 1 && entry.fold <= history.size())
+      entry.plane = history[entry.fold - 1].plane;
+    entry.trianglesBefore = triangles;
+    if (i + 1 == kinds.size()) {
+      entry.trianglesAfter = session_.fixed().triangleCount();
+      entry.maxEdgeLengthError = maxEdgeLengthError(session_.fixed());
+    } else {
+      const Sheet between =
+          replayFolds(session_.initial(),
+                      std::vector<FoldRecord>(
+                          history.begin(), history.begin() + static_cast<std::ptrdiff_t>(count)));
+      entry.trianglesAfter = between.triangleCount();
+      entry.maxEdgeLengthError = maxEdgeLengthError(between);
+    }
+    triangles = entry.trianglesAfter;
+    log_.push_back(entry);
+  }
+}
+
+Design Player::design() const {
+  const std::vector<FoldRecord>& history = session_.folds();
+  return Design{
+      recording_.header.surface,
+      std::vector<FoldRecord>(history.begin(),
+                              history.begin() + static_cast<std::ptrdiff_t>(session_.foldCount()))};
+}
+
+ReplayResult replayRecording(const Recording& recording, const ReplayOptions& options) {
+  Player player(recording, options.thresholds);
+  const std::vector<InputFrame>& frames = recording.frames;
+  const double start = frames.empty() ? 0.0 : frames.front().time;
+  ReplayProgress progress;
+  progress.frameCount = frames.size();
+  progress.duration = frames.empty() ? 0.0 : frames.back().time - start;
+  const auto clockStart = std::chrono::steady_clock::now();
+  while (!player.done()) {
+    const double time = frames[player.nextFrame()].time - start;
+    if (options.realtime)
+      std::this_thread::sleep_until(clockStart +
+                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(time)));
+    player.step();
+    progress.frame = player.nextFrame();
+    progress.time = time;
+    if (options.onFrame) options.onFrame(progress);
+  }
+
+  ReplayResult result;
+  result.design = player.design();
+  result.sheet = player.session().fixed();
+  result.log = player.log();
+  result.frameCount = frames.size();
+  result.duration = progress.duration;
+  result.endedWhileDragging = player.session().dragging();
+  return result;
+}
+
+}  // namespace curvefold

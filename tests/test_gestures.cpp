@@ -1,0 +1,145 @@
+// Synthetic gestures and the example recordings made from them.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "engine/geometry/validate.hpp"
+#include "sheet_fixtures.hpp"
+#include "sim_input/gestures.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kExamples = fs::path(CURVEFOLD_SOURCE_DIR) / "examples";
+
+struct Replayed {
+  std::unique_ptr<FoldSession> session;
+  std::size_t commits = 0;
+  std::size_t commitsWhileTurning = 0;  // drags during which the sheet hand moved the sheet
+};
+
+// Feeds a recording to a fresh core, checking every invariant after every committed fold.
+Replayed replay(const Recording& recording) {
+  Replayed result;
+  result.session =
+      std::make_unique<FoldSession>(initialSheet(Design{recording.header.surface, {}}));
+  InteractionCore core(*result.session, recording.header.sheetFrame, recording.header.handedness);
+  bool turnedDuringDrag = false;
+  for (const InputFrame& frame : recording.frames) {
+    const Pose before = core.worldFromSheet();
+    const bool wasDragging = core.state() == InteractionState::Dragging;
+    core.process(frame);
+    if (wasDragging && core.state() == InteractionState::Dragging &&
+        !(core.worldFromSheet() == before))
+      turnedDuringDrag = true;
+    for (const InteractionEvent& event : core.events()) {
+      if (event.kind == InteractionEventKind::Grab) turnedDuringDrag = false;
+      if (event.kind != InteractionEventKind::Commit) continue;
+      ++result.commits;
+      result.commitsWhileTurning += turnedDuringDrag;
+      testing::expectInvariants(result.session->fixed(), result.session->initial());
+    }
+  }
+  return result;
+}
+
+RecordingHeader squareHeader() {
+  RecordingHeader header;
+  header.surface = GeneratedSurface{"square", {{"resolution", 20}}};
+  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
+  header.rate = 60;
+  return header;
+}
+
+TEST(Gestures, RecordingReplaysToTheSameSheetBitForBit) {
+  GestureRecorder recorder(squareHeader());
+  recorder.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6);
+  recorder.turnSheet({{0, 1, 0}, 30}, 0.3);
+  recorder.drag({-0.1, 0.1, 0.0}, {{-0.04, 0.02, 0.05}}, 0.6, SheetTurn{{1, 0, 0}, 20});
+  recorder.press(Button::Undo);
+  recorder.press(Button::Redo);
+  ASSERT_EQ(recorder.session().foldCount(), 2u);
+
+  const Replayed first = replay(recorder.recording());
+  const Replayed second = replay(recorder.recording());
+  EXPECT_EQ(first.commits, 2u);
+  EXPECT_EQ(first.commitsWhileTurning, 1u);
+  EXPECT_TRUE(identical(first.session->fixed(), recorder.session().fixed()));
+  EXPECT_TRUE(identical(first.session->fixed(), second.session->fixed()));
+}
+
+TEST(Gestures, TurningTheSheetDuringADragChangesTheFold) {
+  GestureRecorder still(squareHeader()), turning(squareHeader());
+  still.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6);
+  turning.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6, SheetTurn{{0, 0, 1}, 15});
+  ASSERT_EQ(still.session().foldCount(), 1u);
+  ASSERT_EQ(turning.session().foldCount(), 1u);
+  EXPECT_NE(still.session().folds()[0].target, turning.session().folds()[0].target);
+}
+
+TEST(Gestures, AFarGrabPointGrabsTheNearestEdge) {
+  GestureRecorder recorder(squareHeader());
+  // The grabbed point is the nearest surface point, so a point off the sheet grabs its edge.
+  EXPECT_NO_THROW(recorder.drag({1.0, 0.0, 0.0}, {{0.05, 0.0, 0.05}}, 0.3));
+  EXPECT_EQ(recorder.session().foldCount(), 1u);
+}
+
+// Every example script records to exactly the checked-in recording, which replays with every
+// invariant after every fold, at least four folds, and the sheet turned during a drag.
+TEST(Gestures, ExampleRecordingsAreCurrentAndValid) {
+  std::size_t examples = 0;
+  for (const auto& entry : fs::directory_iterator(kExamples / "scripts")) {
+    const std::string name = entry.path().stem().stem().string();  // x.gesture.json -> x
+    SCOPED_TRACE(name);
+    ++examples;
+    const Recording made = recordGestureScript(entry.path());
+    const Recording stored = readRecording(kExamples / "recordings" / (name + ".jsonl"));
+    ASSERT_EQ(stored.frames.size(), made.frames.size()) << "regenerate: scripts/make-examples.sh";
+    for (std::size_t i = 0; i < made.frames.size(); ++i)
+      ASSERT_EQ(frameLine(stored.frames[i]), frameLine(made.frames[i])) << "frame " << i;
+    const Replayed result = replay(stored);
+    EXPECT_GE(result.session->foldCount(), 4u);
+    if (stored.header.source != "desktop") {
+      EXPECT_GE(result.commitsWhileTurning, 1u);
+    }
+  }
+  EXPECT_EQ(examples, 6u);
+}
+
+TEST(Gestures, BadScriptsNameTheProblem) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("curvefold-gestures-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  auto expectError = [&](const std::string& text, const std::string& fragment) {
+    const fs::path file = dir / "bad.gesture.json";
+    std::ofstream(file) << text;
+    try {
+      recordGestureScript(file);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const GestureError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  const std::string head =
+      R"({"format":"curvefold-gesture-script","version":1,"surface":{"generator":"square"},)";
+  expectError("{", "not JSON");
+  expectError(R"({"format":"x","version":1})", "not a curvefold gesture script");
+  expectError(head + R"("gestures":[{"fly":{}}]})", "gesture 1 (fly): unknown gesture");
+  expectError(head + R"("gestures":[{"wait":0.1},{"drag":{"grab":[0,0,0]}}]})",
+              "gesture 2 (drag): missing \"to\"");
+  expectError(head + R"("gestures":[{"turn_sheet":{"axis":[0,0,0],"degrees":4}}]})",
+              "axis must not be zero");
+  expectError(
+      R"({"format":"curvefold-gesture-script","version":1,"surface":{"generator":"blob"},"gestures":[]})",
+      "blob");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace curvefold

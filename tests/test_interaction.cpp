@@ -1,0 +1,291 @@
+// Each interaction rule of DESIGN.md 5, driven by synthetic frames on a flat square sheet
+// (z = 0, centred on the origin, front +z).
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "interaction/interaction_core.hpp"
+#include "sheet_fixtures.hpp"
+
+namespace curvefold {
+namespace {
+
+using testing::expectInvariants;
+
+Sheet square() {
+  // 0.2 m square centred on the origin, 10 x 10 cells.
+  Sheet sheet = testing::flatGrid(10, 10, 0.02);
+  for (glm::dvec3& p : sheet.positions) p -= glm::dvec3(0.1, 0.1, 0.0);
+  for (glm::dvec2& q : sheet.development) q -= glm::dvec2(0.1, 0.1);
+  return sheet;
+}
+
+glm::dquat rotation(double degrees, const glm::dvec3& axis) {
+  return glm::angleAxis(degrees * std::numbers::pi / 180.0, glm::normalize(axis));
+}
+
+void expectNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance = 1e-12) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+// A session on the square held at a pose in front of the user, and a way to send frames.
+class Interaction : public ::testing::Test {
+ protected:
+  Interaction() : session_(square()), core_(session_, sheetFrame_) {
+    frame_.sheetHand.pose = {{-0.2, 1.0, -0.3}, glm::dquat(1, 0, 0, 0)};
+    frame_.sheetHand.tracked = true;
+    frame_.pointHand.position = {0.3, 1.2, -0.3};
+    frame_.pointHand.tracked = true;
+  }
+
+  // Sends the current frame, advanced by one 90 Hz tick, and checks the displayed sheet.
+  void send() {
+    frame_.time += 1.0 / 90.0;
+    core_.process(frame_);
+    expectInvariants(session_.current(), session_.initial());
+  }
+  // The world position of a sheet point under the current sheet frame.
+  glm::dvec3 world(const glm::dvec3& sheetPoint) const {
+    return core_.worldFromSheet().apply(sheetPoint);
+  }
+  void pointAt(const glm::dvec3& worldPosition, double select) {
+    frame_.pointHand.position = worldPosition;
+    frame_.pointHand.select = select;
+    send();
+  }
+  bool sawEvent(InteractionEventKind kind) const {
+    for (const InteractionEvent& e : core_.events())
+      if (e.kind == kind) return true;
+    return false;
+  }
+  // Grab the sheet point p, drag it by `by` (world) in steps, release.
+  void fold(const glm::dvec3& p, const glm::dvec3& by) {
+    pointAt(world(p), 0.0);
+    pointAt(world(p), 1.0);
+    const glm::dvec3 start = world(p);
+    for (int i = 1; i <= 5; ++i) pointAt(start + by * (i / 5.0), 1.0);
+    pointAt(start + by, 0.0);
+  }
+
+  const Pose sheetFrame_{{0.0, 1.2, -0.4}, rotation(30, {1, 0, 0})};
+  FoldSession session_;
+  InteractionCore core_;
+  InputFrame frame_;
+};
+
+TEST_F(Interaction, ClutchMovesTheSheetRigidly) {
+  const Pose handA = frame_.sheetHand.pose;
+  frame_.sheetHand.clutch = 1.0;
+  send();
+  EXPECT_TRUE(core_.clutched());
+  const Pose handB{{0.1, 1.3, -0.2}, rotation(40, {0, 1, 1})};
+  frame_.sheetHand.pose = handB;
+  send();
+  const Pose expected = handB * handA.inverse() * sheetFrame_;
+  expectNear(core_.worldFromSheet().position, expected.position);
+  EXPECT_NEAR(glm::dot(core_.worldFromSheet().orientation, expected.orientation), 1.0, 1e-12);
+  // Rigid: the sheet itself (in sheet coordinates) did not change, and distances are kept.
+  EXPECT_TRUE(identical(session_.current(), session_.initial()));
+  const glm::dvec3 a{0.1, 0.0, 0.0}, b{-0.05, 0.07, 0.0};
+  EXPECT_NEAR(glm::distance(world(a), world(b)), glm::distance(a, b), 1e-12);
+  // Release: the hand moves on without the sheet.
+  frame_.sheetHand.clutch = 0.0;
+  send();
+  const Pose held = core_.worldFromSheet();
+  frame_.sheetHand.pose = {{0.5, 0.5, 0.5}, rotation(90, {0, 0, 1})};
+  send();
+  EXPECT_EQ(core_.worldFromSheet(), held);
+}
+
+TEST_F(Interaction, HoverPicksTheNearestPointWithinTheRadius) {
+  const glm::dvec3 onSheet{0.031, -0.047, 0.0};
+  pointAt(world(onSheet + glm::dvec3(0, 0, 0.01)), 0.0);  // 1 cm above the paper
+  ASSERT_TRUE(core_.hover().has_value());
+  EXPECT_EQ(core_.state(), InteractionState::Hover);
+  expectNear(core_.hover()->sheetPosition, onSheet);
+  EXPECT_NEAR(core_.hover()->distance, 0.01, 1e-12);
+  pointAt(world(onSheet + glm::dvec3(0, 0, core_.thresholds().hoverRadius + 0.001)), 0.0);
+  EXPECT_FALSE(core_.hover().has_value());
+  EXPECT_EQ(core_.state(), InteractionState::Idle);
+  // Pulling the trigger out of range grabs nothing.
+  pointAt(frame_.pointHand.position, 1.0);
+  EXPECT_EQ(core_.state(), InteractionState::Idle);
+}
+
+TEST_F(Interaction, TargetFollowsTheTipWithTheGrabOffset) {
+  const glm::dvec3 onSheet{0.08, 0.08, 0.0};
+  const glm::dvec3 above = onSheet + glm::dvec3(0, 0, 0.012);
+  pointAt(world(above), 0.0);
+  pointAt(world(above), 1.0);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Grab));
+  ASSERT_EQ(core_.haptics().size(), 1u);
+  const glm::dvec3 offset = core_.grabStart() - above;
+  expectNear(core_.grabStart(), onSheet);
+  const glm::dvec3 tip = world(above) + glm::dvec3(-0.03, 0.02, 0.05);
+  pointAt(tip, 1.0);
+  expectNear(core_.grabTarget(), core_.worldFromSheet().inverse().apply(tip) + offset);
+  ASSERT_TRUE(core_.plane().has_value());
+  EXPECT_FALSE(core_.reflectedTriangles().empty());
+}
+
+TEST_F(Interaction, ReleaseCommitsAndCancelRestores) {
+  fold({0.1, 0.1, 0.0}, {-0.02, -0.03, 0.06});
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_EQ(session_.foldCount(), 1u);
+  EXPECT_EQ(core_.state(), InteractionState::Idle);
+  const Sheet afterOne = session_.fixed();
+
+  // A second drag, cancelled with the button mid-way: the fixed sheet comes back bit for bit.
+  const glm::dvec3 corner = world({-0.1, -0.1, 0.0});
+  pointAt(corner, 0.0);
+  pointAt(corner, 1.0);
+  pointAt(corner + glm::dvec3(0.02, 0.03, 0.05), 1.0);
+  EXPECT_FALSE(identical(session_.current(), afterOne));
+  frame_.buttons = static_cast<std::uint32_t>(Button::Cancel);
+  send();
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Cancel));
+  EXPECT_TRUE(identical(session_.current(), afterOne));
+  frame_.buttons = 0;
+  pointAt(corner, 0.0);  // releasing after a cancel commits nothing
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
+TEST_F(Interaction, MovingOnlyTheSheetHandDuringADragChangesTheFold) {
+  const glm::dvec3 corner = world({0.1, -0.1, 0.0});
+  pointAt(corner, 0.0);
+  pointAt(corner, 1.0);
+  const glm::dvec3 tip = corner + glm::dvec3(-0.03, 0.02, 0.06);
+  pointAt(tip, 1.0);
+  const Sheet before = session_.current();
+  const glm::dvec3 targetBefore = core_.grabTarget();
+  const glm::dvec3 offset = targetBefore - core_.worldFromSheet().inverse().apply(tip);
+  // The tip stays; the non-dominant hand clutches and turns the sheet.
+  frame_.sheetHand.clutch = 1.0;
+  send();
+  frame_.sheetHand.pose.orientation = rotation(25, {0, 1, 0});
+  frame_.sheetHand.pose.position += glm::dvec3(0.02, 0.0, 0.0);
+  send();
+  EXPECT_NE(core_.grabTarget(), targetBefore);
+  expectNear(core_.grabTarget(), core_.worldFromSheet().inverse().apply(tip) + offset);
+  EXPECT_FALSE(identical(session_.current(), before));
+  pointAt(tip, 0.0);
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
+TEST_F(Interaction, UndoAndRedoButtons) {
+  fold({0.1, 0.1, 0.0}, {-0.02, -0.03, 0.06});
+  fold({-0.1, 0.1, 0.0}, {0.03, -0.02, 0.05});
+  ASSERT_EQ(session_.foldCount(), 2u);
+  const Sheet afterTwo = session_.fixed();
+  frame_.buttons = static_cast<std::uint32_t>(Button::Undo);
+  send();
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Undo));
+  send();  // held, not pressed again: one undo only
+  EXPECT_EQ(session_.foldCount(), 1u);
+  frame_.buttons = static_cast<std::uint32_t>(Button::Redo);
+  send();
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Redo));
+  EXPECT_TRUE(identical(session_.fixed(), afterTwo));
+}
+
+TEST_F(Interaction, SwitchingHandsEndsTheDragAndSwapsRoles) {
+  const glm::dvec3 corner = world({0.1, 0.1, 0.0});
+  pointAt(corner, 0.0);
+  pointAt(corner, 1.0);
+  pointAt(corner + glm::dvec3(-0.02, -0.02, 0.05), 1.0);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  frame_.sheetHand.clutch = 1.0;
+  frame_.buttons = static_cast<std::uint32_t>(Button::SwitchHands);
+  send();
+  EXPECT_EQ(core_.handedness(), Handedness::Left);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::SwitchHands));
+  EXPECT_NE(core_.state(), InteractionState::Dragging);
+  EXPECT_EQ(session_.foldCount(), 0u);
+  EXPECT_TRUE(identical(session_.current(), session_.initial()));
+  // The trigger still held from before the switch does not grab: it needs a new press.
+  frame_.buttons = 0;
+  pointAt(corner, 1.0);
+  EXPECT_NE(core_.state(), InteractionState::Dragging);
+  pointAt(corner, 0.0);
+  pointAt(corner, 1.0);
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+}
+
+TEST_F(Interaction, UntrackedHandsAreIgnoredNotJumpedTo) {
+  frame_.sheetHand.clutch = 1.0;
+  send();
+  frame_.sheetHand.pose.position += glm::dvec3(0.05, 0, 0);
+  send();
+  const Pose beforeLoss = core_.worldFromSheet();
+  // The sheet hand is lost and reappears 30 cm away: the sheet stays, then follows relative motion.
+  frame_.sheetHand.tracked = false;
+  frame_.sheetHand.pose.position += glm::dvec3(0.3, 0, 0);
+  send();
+  EXPECT_EQ(core_.worldFromSheet(), beforeLoss);
+  frame_.sheetHand.tracked = true;
+  send();
+  expectNear(core_.worldFromSheet().position, beforeLoss.position);
+  frame_.sheetHand.pose.position += glm::dvec3(0.0, 0.01, 0);
+  send();
+  expectNear(core_.worldFromSheet().position, beforeLoss.position + glm::dvec3(0.0, 0.01, 0));
+  frame_.sheetHand.clutch = 0.0;
+  send();
+
+  // The point hand is lost mid-drag and returns elsewhere: the target continues from where it was.
+  const glm::dvec3 corner = world({0.1, 0.1, 0.0});
+  pointAt(corner, 0.0);
+  pointAt(corner, 1.0);
+  pointAt(corner + glm::dvec3(-0.02, 0, 0.03), 1.0);
+  const glm::dvec3 target = core_.grabTarget();
+  frame_.pointHand.tracked = false;
+  pointAt(corner + glm::dvec3(0.4, 0.4, 0.4), 0.0);  // garbage while untracked
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+  EXPECT_EQ(core_.grabTarget(), target);
+  frame_.pointHand.tracked = true;
+  pointAt(corner + glm::dvec3(0.4, 0.4, 0.4), 1.0);
+  expectNear(core_.grabTarget(), target);
+  pointAt(corner + glm::dvec3(0.4, 0.4, 0.41), 1.0);
+  expectNear(core_.grabTarget(),
+             target + core_.worldFromSheet().inverse().applyToDirection({0, 0, 0.01}));
+}
+
+TEST_F(Interaction, NoisyTriggerDoesNotStartOrStopDrags) {
+  const glm::dvec3 corner = world({0.1, 0.1, 0.0});
+  // Hovering near the press threshold without reaching it: no grab.
+  for (double select : {0.7, 0.74, 0.7, 0.745, 0.6}) {
+    pointAt(corner, select);
+    EXPECT_NE(core_.state(), InteractionState::Dragging) << select;
+  }
+  pointAt(corner, 0.8);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  // Noise around the middle and near the release threshold keeps the drag.
+  const glm::dvec3 tip = corner + glm::dvec3(-0.02, -0.03, 0.05);
+  for (double select : {0.5, 0.3, 0.6, 0.26, 0.5, 0.3}) {
+    pointAt(tip, select);
+    EXPECT_EQ(core_.state(), InteractionState::Dragging) << select;
+  }
+  pointAt(tip, 0.2);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
+TEST_F(Interaction, AClickWithoutMotionAddsNoFold) {
+  const glm::dvec3 p = world({0.02, 0.03, 0.0});
+  pointAt(p, 0.0);
+  pointAt(p, 1.0);
+  pointAt(p + glm::dvec3(0.0005, 0, 0), 1.0);  // under the minimum drag distance
+  EXPECT_FALSE(core_.plane().has_value());
+  pointAt(p, 0.0);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Cancel));
+  EXPECT_EQ(session_.foldCount(), 0u);
+  EXPECT_TRUE(identical(session_.fixed(), session_.initial()));
+}
+
+}  // namespace
+}  // namespace curvefold

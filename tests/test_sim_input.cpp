@@ -1,0 +1,656 @@
+// Recorded input: the recording format (bit-for-bit round trip, every bad input refused with its
+// line), the recorder's journal (a killed process keeps its committed folds) and the player.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "engine/io/atomic_file.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "recording_fixtures.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recorder.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::handFrame;
+using testing::squareFoldFrames;
+using testing::squareRecordingHeader;
+
+const fs::path kRecordings = fs::path(CURVEFOLD_TEST_DATA) / "recordings";
+
+// Same bits (so -0.0 differs from 0.0, and NaN never sneaks through as equal).
+bool sameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+void expectSameBits(const glm::dvec3& a, const glm::dvec3& b, const std::string& what) {
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(sameBits(a[i], b[i])) << what << "[" << i << "]";
+}
+
+void expectSameBits(const Pose& a, const Pose& b, const std::string& what) {
+  expectSameBits(a.position, b.position, what + ".position");
+  EXPECT_TRUE(sameBits(a.orientation.w, b.orientation.w)) << what;
+  EXPECT_TRUE(sameBits(a.orientation.x, b.orientation.x)) << what;
+  EXPECT_TRUE(sameBits(a.orientation.y, b.orientation.y)) << what;
+  EXPECT_TRUE(sameBits(a.orientation.z, b.orientation.z)) << what;
+}
+
+void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index) {
+  const std::string what = "frame " + std::to_string(index);
+  EXPECT_TRUE(sameBits(a.time, b.time)) << what;
+  expectSameBits(a.sheetHand.pose, b.sheetHand.pose, what + " sheet");
+  EXPECT_EQ(a.sheetHand.tracked, b.sheetHand.tracked) << what;
+  EXPECT_TRUE(sameBits(a.sheetHand.clutch, b.sheetHand.clutch)) << what;
+  expectSameBits(a.pointHand.position, b.pointHand.position, what + " point");
+  EXPECT_EQ(a.pointHand.tracked, b.pointHand.tracked) << what;
+  EXPECT_TRUE(sameBits(a.pointHand.select, b.pointHand.select)) << what;
+  EXPECT_EQ(a.buttons, b.buttons) << what;
+}
+
+std::string recordingText(const RecordingHeader& header, const std::vector<InputFrame>& frames) {
+  std::string text = headerLine(header) + "\n";
+  for (const InputFrame& frame : frames) text += frameLine(frame) + "\n";
+  return text;
+}
+
+Recording parse(const std::string& text, const ReadOptions& options = {}) {
+  std::istringstream in(text);
+  return parseRecording(in, "test.jsonl", options);
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " not in " << text;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+class TempDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("curvefold-sim-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+// --- Format ------------------------------------------------------------------------------------
+
+TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> any(-3.0, 3.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  // Values that a lossy decimal form would change.
+  const double awkward[] = {
+      0.1, 1.0 / 3.0,          -0.0, 5e-324, 1e300, -2.2250738585072014e-308, 0.3, 1e-17,
+      2.0, 123456789.123456789};
+
+  RecordingHeader header;
+  header.source = "openxr";
+  header.handedness = Handedness::Left;
+  header.rate = 72.5;
+  header.sheetFrame.position = {1.0 / 3.0, -0.0, 1e-17};
+  header.sheetFrame.orientation = glm::normalize(glm::dquat(0.9, 0.1, -0.3, 1.0 / 7.0));
+  header.surface = GeneratedSurface{"cylinder", {{"radius", 0.1 / 3.0}, {"angle", 180.0}}};
+
+  std::vector<InputFrame> frames;
+  double time = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    InputFrame frame;
+    time += unit(random) / 90.0;
+    frame.time = time;
+    const double a = awkward[i % std::size(awkward)];
+    frame.sheetHand.pose.position = {any(random), a, any(random)};
+    frame.sheetHand.pose.orientation =
+        glm::normalize(glm::dquat(any(random), any(random), any(random), any(random)));
+    frame.sheetHand.tracked = i % 3 != 0;
+    frame.sheetHand.clutch = i % 5 == 0 ? 1.0 : unit(random);
+    frame.pointHand.position = {a, any(random), any(random)};
+    frame.pointHand.tracked = i % 4 != 0;
+    frame.pointHand.select = i % 7 == 0 ? 0.0 : unit(random);
+    frame.buttons = static_cast<std::uint32_t>(i % 16);
+    frames.push_back(frame);
+  }
+
+  const Recording read = parse(recordingText(header, frames));
+  EXPECT_FALSE(read.truncated);
+  EXPECT_EQ(read.lineCount, frames.size() + 1);
+  EXPECT_EQ(read.header.source, "openxr");
+  EXPECT_EQ(read.header.handedness, Handedness::Left);
+  EXPECT_TRUE(sameBits(read.header.rate, 72.5));
+  expectSameBits(read.header.sheetFrame, header.sheetFrame, "sheet_frame");
+  const auto& surface = std::get<GeneratedSurface>(read.header.surface);
+  EXPECT_EQ(surface.generator, "cylinder");
+  EXPECT_TRUE(sameBits(surface.parameters.at("radius"), 0.1 / 3.0));
+  ASSERT_EQ(read.frames.size(), frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i) expectSameFrame(read.frames[i], frames[i], i);
+  // Writing what was read gives the same text again.
+  EXPECT_EQ(recordingText(read.header, read.frames), recordingText(header, frames));
+}
+
+TEST(Recording, EmbeddedMeshSurfaceRoundTrips) {
+  RecordingHeader header = squareRecordingHeader();
+  const Sheet sheet = makeSurface("cone", {{"resolution", 6}});
+  header.surface = sheet;
+  const Recording read = parse(recordingText(header, squareFoldFrames()));
+  ASSERT_TRUE(std::holds_alternative<Sheet>(read.header.surface));
+  EXPECT_TRUE(identical(std::get<Sheet>(read.header.surface), sheet));
+}
+
+TEST(Recording, FrameLinesAreJsonWithTheDocumentedKeys) {
+  InputFrame frame = handFrame(
+      0.5, {0, 1, 2}, 0.25, {3, 4, 5}, 1.0,
+      static_cast<std::uint32_t>(Button::Undo) | static_cast<std::uint32_t>(Button::SwitchHands));
+  EXPECT_EQ(frameLine(frame),
+            R"({"t":0.5,"sheet":{"position":[0.0,1.0,2.0],"orientation":[1.0,0.0,0.0,0.0],)"
+            R"("tracked":true,"clutch":0.25},"point":{"position":[3.0,4.0,5.0],"tracked":true,)"
+            R"("select":1.0},"buttons":["undo","switch_hands"]})");
+  frame.buttons = 0;
+  EXPECT_EQ(frameLine(frame).find("buttons"), std::string::npos);
+  EXPECT_EQ(headerLine(squareRecordingHeader()),
+            R"({"format":"curvefold-recording","version":1,"source":"synthetic",)"
+            R"("handedness":"right","units":"m","rate":10.0,"sheet_frame":{"position":[0.0,0.0,)"
+            R"(0.0],"orientation":[1.0,0.0,0.0,0.0]},"surface":{"generator":"square",)"
+            R"("parameters":{"resolution":10.0}}})");
+}
+
+// Every way a recording can be wrong: a RecordingError whose one line names the file and line.
+struct BadInput {
+  const char* name;
+  std::size_t line;      // 1 = header, 2 = first frame
+  std::string from, to;  // replaced in that line of a good recording
+  const char* fragment;  // expected in the message
+};
+
+TEST(Recording, BadInputNamesFileAndLine) {
+  const std::vector<std::string> good =
+      lines(recordingText(squareRecordingHeader(), squareFoldFrames()));
+  const std::vector<BadInput> cases = {
+      {"not json", 4, "{\"t\"", "{t", "not valid JSON"},
+      {"not an object", 3, good[2], "[1,2]", "must be a JSON object"},
+      {"missing t", 2, "\"t\":0.0,", "", "missing \"t\""},
+      {"missing sheet", 2, "\"sheet\"", "\"sheeet\"", "missing \"sheet\""},
+      {"missing clutch", 3, ",\"clutch\":1.0", "", "missing \"clutch\""},
+      {"ill-typed tracked", 5, "\"tracked\":true", "\"tracked\":1", "sheet.tracked"},
+      {"ill-typed position", 7, "\"position\":[0.1,0.1,0.01]", "\"position\":[0.1,0.1]",
+       "point.position"},
+      {"string number", 2, "\"t\":0.0", "\"t\":\"0\"", "t: must be a finite number"},
+      {"NaN (null)", 8, "\"select\":1.0", "\"select\":null", "point.select: must be a finite"},
+      {"overflowing literal", 8, "\"position\":[0.0,-0.1,0.0]", "\"position\":[0.0,-1e999,0.0]",
+       "line 8"},
+      {"non-unit quaternion", 9, "\"orientation\":[1.0,0.0,0.0,0.0]",
+       "\"orientation\":[1.0,0.0,0.0,1e-2]", "not a unit quaternion"},
+      {"clutch above 1", 4, "\"clutch\":1.0", "\"clutch\":1.5", "sheet.clutch: must lie in [0, 1]"},
+      {"select below 0", 2, "\"select\":0.0", "\"select\":-0.1", "point.select: must lie in"},
+      {"time backwards", 11, "\"t\":0.9", "\"t\":0.75", "time goes backwards"},
+      {"unknown button", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":[\"jump\"]",
+       "unknown button \"jump\""},
+      {"buttons not an array", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":\"undo\"",
+       "buttons"},
+      {"unknown version", 1, "\"version\":1", "\"version\":2", "unsupported version 2"},
+      {"version not integer", 1, "\"version\":1", "\"version\":1.5", "unsupported version 1.5"},
+      {"not a recording", 1, "curvefold-recording", "curvefold-design",
+       "not a curvefold recording"},
+      {"unknown source", 1, "\"synthetic\"", "\"kinect\"", "unknown source \"kinect\""},
+      {"unknown handedness", 1, "\"right\"", "\"both\"", "unknown handedness \"both\""},
+      {"units", 1, "\"units\":\"m\"", "\"units\":\"mm\"", "units: must be \"m\""},
+      {"rate", 1, "\"rate\":10.0", "\"rate\":0", "rate: must be positive"},
+      {"sheet frame quaternion", 1, "\"orientation\":[1.0,0.0,0.0,0.0]",
+       "\"orientation\":[2.0,0.0,0.0,0.0]", "sheet_frame.orientation"},
+      {"missing surface", 1,
+       ",\"surface\":{\"generator\":\"square\",\"parameters\":{"
+       "\"resolution\":10.0}}",
+       "", "missing \"surface\""},
+      {"unknown generator", 1, "\"generator\":\"square\"", "\"generator\":\"teapot\"", "teapot"},
+      {"generator refuses a parameter", 1, "\"resolution\":10.0", "\"resolution\":0.0",
+       "resolution"},
+      {"surface not an object", 1,
+       "\"surface\":{\"generator\":\"square\",\"parameters\":{\"resolution\":10.0}}",
+       "\"surface\":\"square\"", "surface: must be an object"},
+  };
+  for (const BadInput& bad : cases) {
+    std::vector<std::string> text = good;
+    text[bad.line - 1] = replaced(text[bad.line - 1], bad.from, bad.to);
+    try {
+      parse(joined(text));
+      ADD_FAILURE() << bad.name << ": accepted";
+    } catch (const RecordingError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(e.line(), bad.line) << bad.name << ": " << message;
+      EXPECT_NE(message.find("test.jsonl: line " + std::to_string(bad.line) + ": "),
+                std::string::npos)
+          << bad.name << ": " << message;
+      EXPECT_NE(message.find(bad.fragment), std::string::npos) << bad.name << ": " << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << bad.name << ": " << message;
+    }
+  }
+}
+
+TEST(Recording, EmbeddedMeshTheEngineRefusesNamesTheHeader) {
+  RecordingHeader header = squareRecordingHeader();
+  header.surface = makeSurface("square", {{"resolution", 2}});
+  const nlohmann::json good = nlohmann::json::parse(headerLine(header));
+  auto expectRefused = [](const nlohmann::json& value, const std::string& fragment) {
+    try {
+      parse(value.dump() + "\n");
+      ADD_FAILURE() << "accepted " << fragment;
+    } catch (const RecordingError& e) {
+      EXPECT_NE(std::string(e.what()).find("test.jsonl: line 1: " + fragment), std::string::npos)
+          << e.what();
+      EXPECT_EQ(e.line(), 1u);
+    }
+  };
+  nlohmann::json bad = good;
+  bad["surface"]["mesh"]["triangles"][0][2] = 99999;
+  expectRefused(bad, "surface.mesh.triangles[0][2]: vertex 99999 does not exist");
+  bad = good;
+  bad["surface"]["mesh"]["positions"][0][2] = 0.05;  // no longer congruent to its development
+  expectRefused(bad, "surface.mesh: ");
+}
+
+TEST(Recording, EmptyOrHeaderlessInputIsRefused) {
+  EXPECT_THROW(parse(""), RecordingError);
+  EXPECT_THROW(parse("\n\n"), RecordingError);
+  try {
+    parse("{\"t\":0}\n");
+    FAIL();
+  } catch (const RecordingError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 1: not a curvefold recording"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Recording, BlankLinesAndAMissingFinalNewlineAreFine) {
+  std::string text = recordingText(squareRecordingHeader(), squareFoldFrames());
+  EXPECT_EQ(parse(text + "\n\n").frames.size(), squareFoldFrames().size());
+  text.pop_back();  // the last frame is whole, just without its newline
+  const Recording read = parse(text);
+  EXPECT_FALSE(read.truncated);
+  EXPECT_EQ(read.frames.size(), squareFoldFrames().size());
+}
+
+TEST(Recording, TruncatedFileIsRefusedUnlessAllowed) {
+  const std::string whole = recordingText(squareRecordingHeader(), squareFoldFrames());
+  const std::size_t frames = squareFoldFrames().size();
+  // Cut the last line in the middle, as a killed writer leaves it.
+  const std::string cut = whole.substr(0, whole.size() - 30);
+  try {
+    parse(cut);
+    FAIL() << "accepted";
+  } catch (const RecordingError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("test.jsonl: truncated at line " + std::to_string(frames + 1)),
+        std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.line(), frames + 1);
+  }
+  const Recording read = parse(cut, {.allowTruncated = true});
+  EXPECT_TRUE(read.truncated);
+  EXPECT_EQ(read.frames.size(), frames - 1);
+  EXPECT_EQ(read.lineCount, frames);
+  const Recording full = parse(whole);
+  for (std::size_t i = 0; i + 1 < frames; ++i) expectSameFrame(read.frames[i], full.frames[i], i);
+
+  // A bad whole line stays an error even when truncation is allowed.
+  EXPECT_THROW(parse(replaced(cut, "\"clutch\":1.0", "\"clutch\":7"), {.allowTruncated = true}),
+               RecordingError);
+  // Without a whole header there is nothing to replay.
+  EXPECT_THROW(parse(whole.substr(0, 40), {.allowTruncated = true}), RecordingError);
+}
+
+TEST(Recording, WritersRefuseWhatTheReaderWouldRefuse) {
+  InputFrame frame = squareFoldFrames().front();
+  InputFrame bad = frame;
+  bad.pointHand.position.x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad = frame;
+  bad.sheetHand.pose.orientation = glm::dquat(1.0, 0.5, 0.0, 0.0);
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad = frame;
+  bad.sheetHand.clutch = 1.0000001;
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad = frame;
+  bad.buttons = 1u << 9;
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad = frame;
+  bad.time = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(frameLine(bad), RecordingError);
+
+  RecordingHeader header = squareRecordingHeader();
+  header.source = "kinect";
+  EXPECT_THROW(headerLine(header), RecordingError);
+  header = squareRecordingHeader();
+  header.rate = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(headerLine(header), RecordingError);
+  header = squareRecordingHeader();
+  header.surface = GeneratedSurface{"teapot", {}};
+  EXPECT_THROW(headerLine(header), RecordingError);
+}
+
+TEST(Recording, DataFilesAreReadWithTheirPathInErrors) {
+  const Recording good = readRecording(kRecordings / "square_one_fold.jsonl");
+  EXPECT_EQ(good.frames.size(), squareFoldFrames().size());
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"nan.jsonl", "line 5"},
+      {"bad_quaternion.jsonl", "line 7"},
+      {"backwards.jsonl", "line 10"},
+      {"version2.jsonl", "line 1"},
+      {"unknown_source.jsonl", "line 1"},
+      {"bad_surface.jsonl", "line 1"},
+      {"truncated.jsonl", "truncated at line 14"}};
+  for (const auto& [name, fragment] : bad) {
+    try {
+      readRecording(kRecordings / name);
+      ADD_FAILURE() << name << " accepted";
+    } catch (const RecordingError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find((kRecordings / name).string() + ": "), std::string::npos) << message;
+      EXPECT_NE(message.find(fragment), std::string::npos) << message;
+    }
+  }
+  EXPECT_THROW(readRecording(kRecordings / "missing.jsonl"), RecordingError);
+  EXPECT_THROW(readRecording(kRecordings), RecordingError);
+}
+
+TEST_F(TempDir, WriteRecordingRoundTrips) {
+  Recording recording{squareRecordingHeader(), squareFoldFrames(), false, 0};
+  writeRecording(recording, dir_ / "a.jsonl");
+  EXPECT_EQ(slurp(dir_ / "a.jsonl"), recordingText(recording.header, recording.frames));
+  std::swap(recording.frames[2], recording.frames[3]);
+  EXPECT_THROW(writeRecording(recording, dir_ / "b.jsonl"), RecordingError);
+  EXPECT_FALSE(fs::exists(dir_ / "b.jsonl"));
+}
+
+// --- Recorder ----------------------------------------------------------------------------------
+
+TEST_F(TempDir, KilledRecorderKeepsEverythingUpToTheCommitPoint) {
+  const fs::path path = dir_ / "killed.jsonl";
+  const std::vector<InputFrame> frames = squareFoldFrames();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // No destructor runs: _exit is a kill as far as the file is concerned.
+    auto* recorder = new Recorder(path, squareRecordingHeader());
+    for (std::size_t i = 0; i < 8; ++i) recorder->append(frames[i]);
+    recorder->commitPoint();
+    for (std::size_t i = 8; i < frames.size(); ++i) recorder->append(frames[i]);
+    _exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const Recording read = readRecording(path);
+  EXPECT_FALSE(read.truncated);
+  ASSERT_EQ(read.frames.size(), 8u);
+  for (std::size_t i = 0; i < 8; ++i) expectSameFrame(read.frames[i], frames[i], i);
+}
+
+TEST_F(TempDir, RecorderFlushesTheCommittingFrameOfALiveSession) {
+  const fs::path path = dir_ / "live.jsonl";
+  const RecordingHeader header = squareRecordingHeader();
+  FoldSession session(initialSheet(Design{header.surface, {}}));
+  InteractionCore core(session, header.sheetFrame, header.handedness);
+  Recorder recorder(path, header);
+  // Before any frame, the header is already on disk.
+  EXPECT_EQ(readRecording(path).frames.size(), 0u);
+  std::size_t flushedAt = 0;
+  for (const InputFrame& frame : squareFoldFrames()) {
+    core.process(frame);
+    recorder.append(frame);
+    if (isCommitPoint(core.events())) {
+      recorder.commitPoint();
+      flushedAt = recorder.frameCount();
+    }
+    // What is on disk always replays: the file never holds half a line.
+    EXPECT_EQ(readRecording(path).frames.size(), flushedAt);
+  }
+  EXPECT_EQ(flushedAt, squareFoldFrames().size());  // the last frame commits
+  EXPECT_EQ(replayRecording(readRecording(path)).design.folds.size(), 1u);
+}
+
+TEST_F(TempDir, RecorderWritesEverythingOnCloseAndOnDestruction) {
+  const std::vector<InputFrame> frames = squareFoldFrames();
+  {
+    Recorder recorder(dir_ / "closed.jsonl", squareRecordingHeader());
+    for (const InputFrame& frame : frames) recorder.append(frame);
+    EXPECT_EQ(recorder.pendingFrames(), frames.size());
+    recorder.close();
+    EXPECT_THROW(recorder.append(frames.back()), FileError);
+  }
+  {
+    Recorder recorder(dir_ / "destroyed.jsonl", squareRecordingHeader());
+    for (const InputFrame& frame : frames) recorder.append(frame);
+  }
+  const std::string expected = recordingText(squareRecordingHeader(), frames);
+  EXPECT_EQ(slurp(dir_ / "closed.jsonl"), expected);
+  EXPECT_EQ(slurp(dir_ / "destroyed.jsonl"), expected);
+}
+
+TEST_F(TempDir, RecorderRefusesToOverwriteUnlessAsked) {
+  const fs::path path = dir_ / "existing.jsonl";
+  { std::ofstream(path) << "someone's recording\n"; }
+  try {
+    Recorder recorder(path, squareRecordingHeader());
+    FAIL() << "overwrote";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(path), "someone's recording\n");
+  {
+    Recorder recorder(path, squareRecordingHeader(), {.overwrite = true});
+    recorder.append(squareFoldFrames().front());
+  }
+  EXPECT_EQ(readRecording(path).frames.size(), 1u);
+  try {
+    Recorder recorder(dir_ / "no" / "such" / "dir.jsonl", squareRecordingHeader());
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("no/such/dir.jsonl"), std::string::npos) << e.what();
+  }
+  // A bad header leaves no file.
+  RecordingHeader bad = squareRecordingHeader();
+  bad.source = "kinect";
+  EXPECT_THROW(Recorder(dir_ / "bad.jsonl", bad), RecordingError);
+  EXPECT_FALSE(fs::exists(dir_ / "bad.jsonl"));
+}
+
+TEST_F(TempDir, RecorderRefusesABadFrameAndKeepsGoing) {
+  const std::vector<InputFrame> frames = squareFoldFrames();
+  Recorder recorder(dir_ / "r.jsonl", squareRecordingHeader());
+  recorder.append(frames[0]);
+  recorder.append(frames[1]);
+  InputFrame bad = frames[2];
+  bad.sheetHand.clutch = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(recorder.append(bad), RecordingError);
+  EXPECT_THROW(recorder.append(frames[0]), RecordingError);  // back in time
+  recorder.append(frames[2]);
+  recorder.close();
+  EXPECT_EQ(readRecording(dir_ / "r.jsonl").frames.size(), 3u);
+}
+
+// --- Player ------------------------------------------------------------------------------------
+
+Recording squareRecording(std::vector<InputFrame> frames = squareFoldFrames()) {
+  return Recording{squareRecordingHeader(), std::move(frames), false, 0};
+}
+
+TEST(Player, HandBuiltDragMakesOneFoldBitIdenticalOnEveryReplay) {
+  const Recording recording = squareRecording();
+  std::size_t calls = 0;
+  ReplayOptions options;
+  options.onFrame = [&](const ReplayProgress& progress) {
+    ++calls;
+    EXPECT_EQ(progress.frame, calls);
+    EXPECT_EQ(progress.frameCount, recording.frames.size());
+  };
+  const ReplayResult first = replayRecording(recording, options);
+  EXPECT_EQ(calls, recording.frames.size());
+  ASSERT_EQ(first.design.folds.size(), 1u);
+  EXPECT_EQ(first.frameCount, recording.frames.size());
+  EXPECT_DOUBLE_EQ(first.duration, 1.2);
+  EXPECT_FALSE(first.endedWhileDragging);
+  // The grabbed edge point went to (0.05, 0, 0.05): the plane bisects the drag.
+  const ReflectionPlane& plane = first.design.folds[0].plane;
+  EXPECT_NEAR(plane.normal.x, -std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(plane.normal.z, std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(plane.point.x, 0.075, 1e-9);
+
+  ASSERT_EQ(first.log.size(), 1u);
+  const FoldLogEntry& entry = first.log[0];
+  EXPECT_EQ(entry.kind, FoldLogKind::Commit);
+  EXPECT_DOUBLE_EQ(entry.time, 1.2);
+  EXPECT_EQ(entry.fold, 1u);
+  EXPECT_EQ(entry.foldCount, 1u);
+  EXPECT_EQ(entry.plane.normal, plane.normal);
+  EXPECT_EQ(entry.trianglesBefore, makeSurface("square", {{"resolution", 10}}).triangleCount());
+  EXPECT_EQ(entry.trianglesAfter, first.sheet.triangleCount());
+  EXPECT_GT(entry.trianglesAfter, entry.trianglesBefore);
+  EXPECT_LT(entry.maxEdgeLengthError, 1e-12);
+
+  const ReplayResult second = replayRecording(recording);
+  EXPECT_TRUE(identical(first.sheet, second.sheet));
+  // The design rebuilds the very sheet the session made.
+  EXPECT_TRUE(identical(first.sheet, buildSheet(first.design)));
+  // And so does a replay of the recording written to text and read back.
+  const Recording reread = parse(recordingText(recording.header, recording.frames));
+  EXPECT_TRUE(identical(first.sheet, replayRecording(reread).sheet));
+}
+
+TEST(Player, UndoAndRedoAreLogged) {
+  std::vector<InputFrame> frames = squareFoldFrames();
+  InputFrame last = frames.back();
+  auto press = [&](Button button) {
+    last.time += 0.1;
+    last.buttons = static_cast<std::uint32_t>(button);
+    frames.push_back(last);
+    last.time += 0.1;
+    last.buttons = 0;
+    frames.push_back(last);
+  };
+  press(Button::Undo);
+  press(Button::Redo);
+  press(Button::Undo);
+  const ReplayResult result = replayRecording(squareRecording(frames));
+  ASSERT_EQ(result.log.size(), 4u);
+  EXPECT_EQ(result.log[1].kind, FoldLogKind::Undo);
+  EXPECT_EQ(result.log[1].fold, 1u);
+  EXPECT_EQ(result.log[1].foldCount, 0u);
+  EXPECT_EQ(result.log[1].trianglesBefore, result.log[0].trianglesAfter);
+  EXPECT_EQ(result.log[1].trianglesAfter, result.log[0].trianglesBefore);
+  EXPECT_EQ(result.log[1].plane.normal, result.log[0].plane.normal);
+  EXPECT_EQ(result.log[2].kind, FoldLogKind::Redo);
+  EXPECT_EQ(result.log[2].foldCount, 1u);
+  EXPECT_EQ(result.log[2].trianglesAfter, result.log[0].trianglesAfter);
+  EXPECT_EQ(result.log[3].kind, FoldLogKind::Undo);
+  // The final design holds the folds in the fixed sheet, not the undone ones.
+  EXPECT_TRUE(result.design.folds.empty());
+  EXPECT_EQ(result.sheet.triangleCount(), result.log[0].trianglesBefore);
+
+  // Undo and redo pressed in one frame: two entries, the sheet in between rebuilt.
+  std::vector<InputFrame> together = squareFoldFrames();
+  last = together.back();
+  last.time += 0.1;
+  last.buttons =
+      static_cast<std::uint32_t>(Button::Undo) | static_cast<std::uint32_t>(Button::Redo);
+  together.push_back(last);
+  const ReplayResult both = replayRecording(squareRecording(together));
+  ASSERT_EQ(both.log.size(), 3u);
+  EXPECT_EQ(both.log[1].trianglesAfter, both.log[0].trianglesBefore);
+  EXPECT_EQ(both.log[2].trianglesAfter, both.log[0].trianglesAfter);
+  EXPECT_EQ(both.design.folds.size(), 1u);
+}
+
+TEST(Player, ARecordingThatStopsInsideADragKeepsOnlyCommittedFolds) {
+  std::vector<InputFrame> frames = squareFoldFrames();
+  frames.pop_back();  // never released
+  const ReplayResult result = replayRecording(squareRecording(frames));
+  EXPECT_TRUE(result.endedWhileDragging);
+  EXPECT_TRUE(result.design.folds.empty());
+  EXPECT_TRUE(identical(result.sheet, makeSurface("square", {{"resolution", 10}})));
+}
+
+TEST(Player, StepsFrameByFrame) {
+  const Recording recording = squareRecording();
+  Player player(recording);
+  std::size_t steps = 0;
+  while (!player.done()) {
+    player.step();
+    ++steps;
+    if (steps == 8) {
+      EXPECT_EQ(player.core().state(), InteractionState::Dragging);
+    }
+  }
+  EXPECT_EQ(steps, recording.frames.size());
+  EXPECT_EQ(player.design().folds.size(), 1u);
+}
+
+TEST(Player, RealTimeTakesTheRecordedTime) {
+  std::vector<InputFrame> frames = squareFoldFrames();
+  for (InputFrame& frame : frames) frame.time = 100.0 + frame.time / 4.0;  // 0.3 s, late start
+  ReplayOptions options;
+  options.realtime = true;
+  const auto start = std::chrono::steady_clock::now();
+  const ReplayResult result = replayRecording(squareRecording(frames), options);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(elapsed, 0.3);
+  EXPECT_LT(elapsed, 2.0);
+  EXPECT_EQ(result.design.folds.size(), 1u);
+}
+
+TEST(Player, FoldLogLineIsJson) {
+  FoldLogEntry entry;
+  entry.kind = FoldLogKind::Redo;
+  entry.time = 0.25;
+  entry.fold = 3;
+  entry.foldCount = 3;
+  entry.plane = {{0.5, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+  entry.trianglesBefore = 10;
+  entry.trianglesAfter = 12;
+  entry.maxEdgeLengthError = 1e-17;
+  EXPECT_EQ(foldLogLine(entry),
+            R"({"event":"redo","t":0.25,"fold":3,"folds":3,"plane":{"point":[0.5,0.0,0.0],)"
+            R"("normal":[1.0,0.0,0.0]},"triangles_before":10,"triangles_after":12,)"
+            R"("max_edge_length_error":1e-17})");
+}
+
+}  // namespace
+}  // namespace curvefold
