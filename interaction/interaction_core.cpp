@@ -22,7 +22,7 @@ std::optional<ReflectionPlane> InteractionCore::plane() const {
 
 const std::vector<TriangleIndex>& InteractionCore::reflectedTriangles() const {
   if (state_ == InteractionState::Dragging && session_.hasPlane())
-    return session_.lastChanges().reflectedTriangles;
+    return session_.reflectedTriangles();
   return kNoTriangles;
 }
 

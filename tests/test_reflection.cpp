@@ -73,7 +73,7 @@ TEST(Reflection, SplitsSquareThroughTwoEdgesByHand) {
     EXPECT_NEAR(crease.foldAngle, 90.0, 1e-9);
     EXPECT_EQ(crease.assignment, Assignment::Valley);
   }
-  EXPECT_EQ(result.changes.reflectedTriangles.size(), 3u);
+  EXPECT_EQ(result.reflectedTriangles.size(), 3u);
   EXPECT_TRUE(result.changes.splitAny);
 }
 
@@ -97,7 +97,7 @@ TEST(Reflection, NoTriangleCrossedMirrorsTheWholePart) {
   EXPECT_EQ(result.sheet.vertexCount(), grid.vertexCount());
   EXPECT_EQ(result.sheet.triangleCount(), grid.triangleCount());
   EXPECT_FALSE(result.changes.splitAny);
-  EXPECT_EQ(result.changes.reflectedTriangles.size(), grid.triangleCount());
+  EXPECT_EQ(result.reflectedTriangles.size(), grid.triangleCount());
   EXPECT_TRUE(result.sheet.tags.empty());
   for (VertexIndex v = 0; v < grid.vertexCount(); ++v)
     EXPECT_NEAR(result.sheet.positions[v].z, 0.2, 1e-15);
@@ -158,7 +158,7 @@ TEST(Reflection, SeedOnThePlaneLeavesTheSheetAlone) {
   ReflectionPlane plane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};  // vertex 0 lies on it
   const ReflectionResult result = reflect(grid, 0, plane);
   EXPECT_TRUE(identical(result.sheet, grid));
-  EXPECT_TRUE(result.changes.reflectedTriangles.empty());
+  EXPECT_TRUE(result.reflectedTriangles.empty());
 }
 
 TEST(Reflection, CreaseSplitByALaterFoldStaysACrease) {
@@ -214,7 +214,7 @@ TEST(Reflection, RandomFoldsKeepEveryInvariant) {
 // The in-place workspace (restore, then apply) gives exactly what a fresh reflect() gives.
 TEST(ReflectionWorkspace, IncrementalUpdatesMatchFreshReflection) {
   const Sheet grid = flatGrid(12, 9, 0.02);
-  const VertexTriangles adjacency = buildVertexTriangles(grid);
+  const SheetAdjacency adjacency = buildAdjacency(grid);
   const double epsilon = sheetEpsilon(grid);
   ReflectionWorkspace workspace;
   Sheet temporal = grid;

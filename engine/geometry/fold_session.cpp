@@ -31,7 +31,7 @@ FoldSession::FoldSession(Sheet initial)
 
 void FoldSession::setFixed(Sheet sheet) {
   fixed_ = std::move(sheet);
-  fixedAdjacency_ = buildVertexTriangles(fixed_);
+  fixedAdjacency_ = buildAdjacency(fixed_);
   ++fixedRevision_;
 }
 
@@ -49,7 +49,7 @@ glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
   // Grabbing an existing vertex leaves the topology as it is.
   const bool inserted = grab.sheet.vertexCount() != fixed_.vertexCount();
   grabSheet_ = std::move(grab.sheet);
-  grabAdjacency_ = inserted ? buildVertexTriangles(grabSheet_) : fixedAdjacency_;
+  grabAdjacency_ = inserted ? buildAdjacency(grabSheet_) : fixedAdjacency_;
   grabVertex_ = grab.vertex;
   grabSeed_ = seed;
   grabbed_ = grabSheet_.positions[grabVertex_];
@@ -75,6 +75,12 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   plane_ = bisectorPlane(grabbed_, target);
   workspace_.apply(grabSheet_, grabAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
   return workspace_.changes();
+}
+
+const std::vector<TriangleIndex>& FoldSession::reflectedTriangles() const {
+  static const std::vector<TriangleIndex> none;
+  if (!dragging_ || !folded_) return none;
+  return workspace_.reflectedTriangles(grabAdjacency_);
 }
 
 bool FoldSession::commit() {

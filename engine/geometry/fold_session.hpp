@@ -69,6 +69,9 @@ class FoldSession {
   const ReflectionPlane& plane() const { return plane_; }
   VertexIndex grabbedVertex() const { return grabVertex_; }
   const ReflectionChanges& lastChanges() const { return workspace_.changes(); }
+  // Triangles of current() in the reflected part (empty unless a drag folds the sheet); derived
+  // on the first call after each update.
+  const std::vector<TriangleIndex>& reflectedTriangles() const;
 
   // --- History ------------------------------------------------------------------------------
   const std::vector<FoldRecord>& folds() const { return history_; }
@@ -85,21 +88,21 @@ class FoldSession {
   std::shared_ptr<const Sheet> initial_;
   double epsilon_ = 0.0;
   Sheet fixed_;
-  VertexTriangles fixedAdjacency_;
+  SheetAdjacency fixedAdjacency_;
   std::uint64_t fixedRevision_ = 0;
 
   // Drag state: grabSheet_ is fixed_ with the grabbed point made a vertex.
   bool dragging_ = false;
   bool folded_ = false;
   Sheet grabSheet_;
-  VertexTriangles grabAdjacency_;
+  SheetAdjacency grabAdjacency_;
   VertexIndex grabVertex_ = kNoIndex;
   glm::dvec2 grabSeed_{0.0};
   glm::dvec3 grabbed_{0.0};
   glm::dvec3 target_{0.0};
   ReflectionPlane plane_;
   Sheet temporal_;
-  ReflectionWorkspace workspace_;
+  mutable ReflectionWorkspace workspace_;  // its reflected-triangle list is a cache
 
   // Committed folds; the first applied_ are in fixed_, the rest can be redone. Keyframes every
   // kKeyframeInterval folds bound the cost of undo to a few replayed folds.

@@ -48,82 +48,122 @@ int sideOf(double d, double epsilon) {
 
 void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCount) {
   if (vertices_.size() < vertexCount) vertices_.resize(vertexCount);
-  if (triangleReached_.size() < triangleCount) triangleReached_.resize(triangleCount, 0);
+  if (triangleSeen_.size() < triangleCount) {
+    triangleSeen_.resize(triangleCount, 0);
+    triangleCrossed_.resize(triangleCount, 0);
+  }
   if (++stamp_ == 0) {  // wrapped: old stamps could alias the new one
     std::fill(vertices_.begin(), vertices_.end(), VertexState{});
-    std::fill(triangleReached_.begin(), triangleReached_.end(), 0);
+    std::fill(triangleSeen_.begin(), triangleSeen_.end(), 0);
+    std::fill(triangleCrossed_.begin(), triangleCrossed_.end(), 0);
     stamp_ = 1;
   }
 }
 
-double ReflectionWorkspace::distanceOf(const Sheet& sheet, const ReflectionPlane& plane,
-                                       VertexIndex v) {
-  VertexState& state = vertices_[v];
-  if (state.distanceStamp != stamp_) {
-    state.distanceStamp = stamp_;
-    state.distance = plane.signedDistance(sheet.positions[v]);
-  }
-  return state.distance;
-}
-
-// Flood fill from the seed through strictly-negative vertices [MI 3.3]: a triangle is reached when
-// it touches a reached vertex, and every strictly-negative vertex of a reached triangle is reached.
-// Reached vertices are reflected into `out` as they are found (their data is in cache then), and
-// each reached triangle is classified: wholly reflected, crossed (to split), or hinged on an edge
-// lying in the plane (a crease candidate).
-void ReflectionWorkspace::fill(const Sheet& sheet, const VertexTriangles& adjacency,
+// Flood fill from the seed through strictly-negative vertices [MI 3.3]. Two strictly-negative
+// vertices of one triangle always share an edge, so flooding over edges reaches exactly the
+// vertices that the paper's triangle-to-triangle fill reaches. Reached vertices are reflected into
+// `out` as they are found; the neighbours that stop the flood (on or beyond the plane) are kept,
+// since every triangle to split or hinge touches one of them.
+void ReflectionWorkspace::fill(const Sheet& sheet, const SheetAdjacency& adjacency,
                                VertexIndex seed, const ReflectionPlane& plane, double epsilon,
                                Sheet& out) {
   reachedVertices_.clear();
-  crossedTriangles_.clear();
-  hingeTriangles_.clear();
-  vertices_[seed].reachedStamp = stamp_;
+  boundaryVertices_.clear();
   reachedVertices_.push_back(seed);
   out.positions[seed] = plane.reflect(sheet.positions[seed]);
   for (std::size_t next = 0; next < reachedVertices_.size(); ++next) {
-    for (TriangleIndex t : adjacency.of(reachedVertices_[next])) {
-      if (triangleReached_[t] == stamp_) continue;
-      triangleReached_[t] = stamp_;
-      int positive = 0, onPlane = 0;
-      for (VertexIndex w : sheet.triangles[t]) {
-        const double d = distanceOf(sheet, plane, w);
-        if (d < -epsilon) {
-          if (vertices_[w].reachedStamp != stamp_) {
-            vertices_[w].reachedStamp = stamp_;
-            reachedVertices_.push_back(w);
-            out.positions[w] = plane.reflect(sheet.positions[w]);
-          }
-        } else if (d > epsilon) {
-          ++positive;
-        } else {
-          ++onPlane;
-        }
-      }
-      if (positive > 0) {
-        crossedTriangles_.push_back(t);
+    for (VertexIndex w : adjacency.neighbors.of(reachedVertices_[next])) {
+      VertexState& state = vertices_[w];
+      if (state.visited == stamp_) continue;
+      state.visited = stamp_;
+      state.distance = plane.signedDistance(sheet.positions[w]);
+      if (state.distance < -epsilon) {
+        reachedVertices_.push_back(w);
+        out.positions[w] = plane.reflect(sheet.positions[w]);
       } else {
-        changes_.reflectedTriangles.push_back(t);
-        if (onPlane == 2) hingeTriangles_.push_back(t);
+        boundaryVertices_.push_back(w);
       }
     }
   }
 }
 
+// The reached triangles that need more than reflecting touch a boundary vertex: crossed ones (a
+// vertex beyond the plane) are split; hinged ones (an edge in the plane) may gain a crease.
+void ReflectionWorkspace::classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency,
+                                           double epsilon) {
+  crossedTriangles_.clear();
+  hingeTriangles_.clear();
+  for (VertexIndex w : boundaryVertices_) {
+    for (TriangleIndex t : adjacency.triangles.of(w)) {
+      if (triangleSeen_[t] == stamp_) continue;
+      triangleSeen_[t] = stamp_;
+      // Every vertex of a triangle with a reached vertex was visited, so its distance is known.
+      const Triangle& tri = sheet.triangles[t];
+      if (!reached(tri[0], epsilon) && !reached(tri[1], epsilon) && !reached(tri[2], epsilon))
+        continue;
+      int positive = 0, onPlane = 0;
+      for (VertexIndex v : tri) {
+        const int side = sideOf(vertices_[v].distance, epsilon);
+        positive += side > 0;
+        onPlane += side == 0;
+      }
+      if (positive > 0) {
+        crossedTriangles_.push_back(t);
+        triangleCrossed_[t] = stamp_;
+      } else if (onPlane == 2) {
+        hingeTriangles_.push_back(t);
+      }
+    }
+  }
+}
+
+const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
+    const SheetAdjacency& adjacency) {
+  if (reflectedReady_) return reflected_;
+  reflectedReady_ = true;
+  reflected_.clear();
+  if (triangleListed_.size() < changes_.firstNewTriangle)
+    triangleListed_.resize(changes_.firstNewTriangle, 0);
+  if (++listStamp_ == 0) {
+    std::fill(triangleListed_.begin(), triangleListed_.end(), 0);
+    listStamp_ = 1;
+  }
+  // Triangles around reached vertices are reflected whole, unless they were split: then only
+  // their pieces on the reflected side are.
+  for (VertexIndex v : reachedVertices_) {
+    for (TriangleIndex t : adjacency.triangles.of(v)) {
+      if (triangleListed_[t] == listStamp_) continue;
+      triangleListed_[t] = listStamp_;
+      if (triangleCrossed_[t] != stamp_) reflected_.push_back(t);
+    }
+  }
+  reflected_.insert(reflected_.end(), reflectedPieces_.begin(), reflectedPieces_.end());
+  return reflected_;
+}
+
 void ReflectionWorkspace::clear() {
   changes_ = ReflectionChanges{};
   splitEdges_.clear();
+  reachedVertices_.clear();
+  reflectedPieces_.clear();
+  reflectedReady_ = false;
 }
 
-void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjacency,
+void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjacency,
                                 VertexIndex seed, const ReflectionPlane& plane, double epsilon,
                                 Sheet& out) {
   clear();
   changes_.firstNewVertex = sheet.vertexCount();
   changes_.firstNewTriangle = sheet.triangleCount();
   resize(sheet.vertexCount(), sheet.triangleCount());
-  if (!(distanceOf(sheet, plane, seed) < -epsilon)) return;  // nothing on the seed's side
+  VertexState& seedState = vertices_[seed];
+  seedState.visited = stamp_;
+  seedState.distance = plane.signedDistance(sheet.positions[seed]);
+  if (!(seedState.distance < -epsilon)) return;  // nothing on the seed's side
 
   fill(sheet, adjacency, seed, plane, epsilon, out);
+  classifyBoundary(sheet, adjacency, epsilon);
   changes_.movedVertices = reachedVertices_;
 
   cuts_.clear();
@@ -164,7 +204,7 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
       out.triangles.push_back({a, b, c});
       changes_.triangleOrigin.push_back(original);
     }
-    if (reflected) changes_.reflectedTriangles.push_back(index);
+    if (reflected) reflectedPieces_.push_back(index);
   };
   // A convex polygon of 3 or 4 vertices in the original's order, as 1 or 2 triangles; a quad takes
   // the diagonal that gives the better-shaped pair.
@@ -191,14 +231,14 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const VertexTriangles& adjac
   for (TriangleIndex t : hingeTriangles_) {
     const Triangle& tri = sheet.triangles[t];
     int i = 0;
-    while (sideOf(vertices_[tri[i]].distance, epsilon) == 0 ||
-           sideOf(vertices_[tri[(i + 1) % 3]].distance, epsilon) != 0)
-      i = (i + 1) % 3;
+    while (sideOf(vertices_[tri[i]].distance, epsilon) == 0) ++i;  // the one vertex off the plane
     const VertexIndex u = tri[(i + 1) % 3], w = tri[(i + 2) % 3];
-    for (TriangleIndex other : adjacency.of(u)) {
-      if (other == t || triangleReached_[other] == stamp_) continue;
+    for (TriangleIndex other : adjacency.triangles.of(u)) {
+      if (other == t) continue;
       const Triangle& o = sheet.triangles[other];
-      if (o[0] == w || o[1] == w || o[2] == w) newTags_.push_back({Edge::of(u, w)});
+      if (o[0] != w && o[1] != w && o[2] != w) continue;
+      if (!reached(o[0], epsilon) && !reached(o[1], epsilon) && !reached(o[2], epsilon))
+        newTags_.push_back({Edge::of(u, w)});
     }
   }
 
@@ -262,17 +302,18 @@ void ReflectionWorkspace::restore(const Sheet& sheet, Sheet& out) const {
   out.tags = sheet.tags;
 }
 
-ReflectionResult reflect(const Sheet& sheet, const VertexTriangles& adjacency, VertexIndex seed,
+ReflectionResult reflect(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
                          const ReflectionPlane& plane, double epsilon) {
   ReflectionWorkspace workspace;
-  ReflectionResult result{sheet, {}};
+  ReflectionResult result{sheet, {}, {}};
   workspace.apply(sheet, adjacency, seed, plane, epsilon, result.sheet);
   result.changes = workspace.changes();
+  result.reflectedTriangles = workspace.reflectedTriangles(adjacency);
   return result;
 }
 
 ReflectionResult reflect(const Sheet& sheet, VertexIndex seed, const ReflectionPlane& plane) {
-  return reflect(sheet, buildVertexTriangles(sheet), seed, plane, sheetEpsilon(sheet));
+  return reflect(sheet, buildAdjacency(sheet), seed, plane, sheetEpsilon(sheet));
 }
 
 }  // namespace curvefold

@@ -37,7 +37,6 @@ struct ReflectionChanges {
   std::vector<TriangleIndex> rewrittenTriangles;  // existing triangles replaced by a sub-triangle
   std::size_t firstNewVertex = 0;                 // == input vertex count
   std::size_t firstNewTriangle = 0;               // == input triangle count
-  std::vector<TriangleIndex> reflectedTriangles;  // every triangle of the reflected part
   std::vector<TriangleIndex> triangleOrigin;      // new triangles: the input triangle split
   std::size_t newCreaseCount = 0;
   bool splitAny = false;  // false: the whole reached part was mirrored without a cut
@@ -46,10 +45,15 @@ struct ReflectionChanges {
 // Reusable buffers and the in-place form used while dragging: `out` must equal `sheet` except for
 // what the previous call changed, which restore() puts back first. Results are identical to
 // reflect() bit for bit.
+//
+// The fill floods vertices, not triangles: only triangles around the boundary of the reached part
+// are looked at (to split or hinge them), so the cost of an update is a few memory touches per
+// reflected vertex. The list of reflected triangles, which only a renderer needs, is derived on
+// request.
 class ReflectionWorkspace {
  public:
   // Applies the fold to `out` (which equals `sheet`) and records the changes.
-  void apply(const Sheet& sheet, const VertexTriangles& adjacency, VertexIndex seed,
+  void apply(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
              const ReflectionPlane& plane, double epsilon, Sheet& out);
   // Puts `out` back to `sheet` by undoing the last apply() (cost proportional to what changed).
   void restore(const Sheet& sheet, Sheet& out) const;
@@ -57,27 +61,42 @@ class ReflectionWorkspace {
   void clear();
 
   const ReflectionChanges& changes() const { return changes_; }
+  // Every triangle of the last apply()'s result that lies in the reflected part (computed on the
+  // first call after an apply; `adjacency` must be the one given to it).
+  const std::vector<TriangleIndex>& reflectedTriangles(const SheetAdjacency& adjacency);
 
  private:
   // Per-vertex scratch in one record so the fill touches one cache line per vertex.
   struct VertexState {
-    double distance = 0.0;  // signed distance, valid when distanceStamp == stamp_
-    std::uint32_t distanceStamp = 0;
-    std::uint32_t reachedStamp = 0;  // == stamp_: a strictly-negative vertex of the fill
+    double distance = 0.0;  // signed distance, valid when visited == stamp_
+    std::uint32_t visited =
+        0;  // == stamp_: distance known (the seed or a neighbour of a reached vertex)
+    std::uint32_t unused = 0;
   };
 
   void resize(std::size_t vertexCount, std::size_t triangleCount);
-  void fill(const Sheet& sheet, const VertexTriangles& adjacency, VertexIndex seed,
+  void fill(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
             const ReflectionPlane& plane, double epsilon, Sheet& out);
-  double distanceOf(const Sheet& sheet, const ReflectionPlane& plane, VertexIndex v);
+  void classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
+  bool reached(VertexIndex v, double epsilon) const {
+    return vertices_[v].visited == stamp_ && vertices_[v].distance < -epsilon;
+  }
 
   ReflectionChanges changes_;
+  double epsilon_ = 0.0;
   std::uint32_t stamp_ = 0;
   std::vector<VertexState> vertices_;
-  std::vector<std::uint32_t> triangleReached_;  // == stamp_: triangle in the reached part
+  std::vector<std::uint32_t> triangleSeen_;     // == stamp_: classified by classifyBoundary
+  std::vector<std::uint32_t> triangleCrossed_;  // == stamp_: split by the plane
+  std::vector<std::uint32_t> triangleListed_;   // == listStamp_: in reflected_
   std::vector<VertexIndex> reachedVertices_;
+  std::vector<VertexIndex> boundaryVertices_;    // visited, not reached: on or beyond the plane
   std::vector<TriangleIndex> crossedTriangles_;  // reached, with vertices on both sides
   std::vector<TriangleIndex> hingeTriangles_;    // reached, not crossed, with an edge in the plane
+  std::vector<TriangleIndex> reflectedPieces_;   // sub-triangles on the reflected side
+  std::vector<TriangleIndex> reflected_;
+  std::uint32_t listStamp_ = 0;
+  bool reflectedReady_ = false;
   std::unordered_map<std::uint64_t, VertexIndex> cuts_;  // cut vertex of each split edge
   std::vector<Edge> splitEdges_;
   std::vector<TaggedEdge> newTags_;
@@ -87,12 +106,13 @@ class ReflectionWorkspace {
 struct ReflectionResult {
   Sheet sheet;
   ReflectionChanges changes;
+  std::vector<TriangleIndex> reflectedTriangles;  // every triangle of the reflected part
 };
 
 // Reflects the part containing `seed` through `plane`. epsilon: distances with |d| <= epsilon
 // count as on the plane (sheetEpsilon(sheet) by default). If the seed itself is not strictly on the
 // negative side, nothing is reflected and the sheet is returned unchanged.
-ReflectionResult reflect(const Sheet& sheet, const VertexTriangles& adjacency, VertexIndex seed,
+ReflectionResult reflect(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
                          const ReflectionPlane& plane, double epsilon);
 ReflectionResult reflect(const Sheet& sheet, VertexIndex seed, const ReflectionPlane& plane);
 

@@ -20,6 +20,26 @@ VertexTriangles buildVertexTriangles(const Sheet& sheet) {
   return result;
 }
 
+SheetAdjacency buildAdjacency(const Sheet& sheet) {
+  SheetAdjacency result{buildVertexTriangles(sheet), {}};
+  VertexNeighbors& neighbors = result.neighbors;
+  const std::size_t vertexCount = sheet.vertexCount();
+  neighbors.offsets.assign(vertexCount + 1, 0);
+  neighbors.vertices.reserve(result.triangles.triangles.size() + vertexCount);
+  std::vector<VertexIndex> row;
+  for (VertexIndex v = 0; v < vertexCount; ++v) {
+    row.clear();
+    for (TriangleIndex t : result.triangles.of(v))
+      for (VertexIndex w : sheet.triangles[t])
+        if (w != v) row.push_back(w);
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    neighbors.vertices.insert(neighbors.vertices.end(), row.begin(), row.end());
+    neighbors.offsets[v + 1] = static_cast<std::uint32_t>(neighbors.vertices.size());
+  }
+  return result;
+}
+
 std::uint32_t EdgeTopology::find(Edge edge) const {
   auto it = std::lower_bound(edges.begin(), edges.end(), edge,
                              [](const EdgeSides& s, const Edge& e) { return s.edge < e; });

@@ -22,6 +22,24 @@ struct VertexTriangles {
 
 VertexTriangles buildVertexTriangles(const Sheet& sheet);
 
+// Vertices sharing an edge with each vertex, as compressed rows, sorted within each row.
+struct VertexNeighbors {
+  std::vector<std::uint32_t> offsets;
+  std::vector<VertexIndex> vertices;
+
+  std::span<const VertexIndex> of(VertexIndex v) const {
+    return {vertices.data() + offsets[v], vertices.data() + offsets[v + 1]};
+  }
+};
+
+// Both neighbourhoods of every vertex: what a flood fill over the sheet needs.
+struct SheetAdjacency {
+  VertexTriangles triangles;
+  VertexNeighbors neighbors;
+};
+
+SheetAdjacency buildAdjacency(const Sheet& sheet);
+
 // Every edge once, sorted; left is the triangle that runs a->b, right the one that runs b->a
 // (kNoIndex when absent). A consistently oriented manifold has at most one of each.
 struct EdgeTopology {
