@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
-# The main job: installs what is needed, builds, and makes the gallery of the paper's Figure 5
-# initial surfaces, each folded several times with the command line, checked, and exported.
+# The main job: installs what is needed, builds, and replays the bundled example recordings
+# (two-handed sessions on the paper's Figure 5 surfaces, and a desktop one) headlessly into a
+# gallery: per example the design, FOLD, SVG crease pattern, OBJ and the per-fold log.
 # Usage: scripts/main.sh [OUT]   (default out/gallery)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-out/gallery}"
 scripts/setup.sh
 scripts/build.sh
-exec scripts/gallery.sh build/app/curvefold "$out"
+mkdir -p "$out"
+for recording in examples/recordings/*.jsonl; do
+  name="$(basename "$recording" .jsonl)"
+  build/app/curvefold replay "$recording" --out "$out/$name"
+  build/app/curvefold check "$out/$name/$name.curvefold.json" >"$out/$name/check.txt" ||
+    { cat "$out/$name/check.txt" >&2; exit 1; }
+done
+echo "gallery written to $out"
