@@ -94,6 +94,20 @@ void GestureRecorder::moveSheet(const glm::dvec3& by, double seconds) {
   step();
 }
 
+void GestureRecorder::moveSheetHand(const Pose& to, double seconds, bool clutch) {
+  frame_.sheetHand.clutch = clutch ? 1.0 : 0.0;
+  step();
+  const Pose start = frame_.sheetHand.pose;
+  for (int i = 1, n = stepsFor(seconds, recording_.header.rate); i <= n; ++i) {
+    const double fraction = smoothstep(double(i) / n);
+    frame_.sheetHand.pose.position = start.position + (to.position - start.position) * fraction;
+    frame_.sheetHand.pose.orientation = glm::slerp(start.orientation, to.orientation, fraction);
+    step();
+  }
+  frame_.sheetHand.clutch = 0.0;
+  step();
+}
+
 void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dvec3>& path,
                            double seconds, const std::optional<SheetTurn>& turnDuring) {
   const Sheet& fixed = session_->fixed();
@@ -279,6 +293,14 @@ Recording recordGestureScript(const std::filesystem::path& script) {
         recorder.turnSheet(reader.turn(value, at), reader.duration(value, at, 0.5));
       } else if (kind == "move_sheet") {
         recorder.moveSheet(reader.vector(value, "by", at), reader.duration(value, at, 0.5));
+      } else if (kind == "sheet_hand") {
+        if (!value.is_object() || !value.contains("to")) reader.fail(at, "missing \"to\"");
+        const auto clutch = value.find("clutch");
+        if (clutch != value.end() && !clutch->is_boolean())
+          reader.fail(at, "\"clutch\" must be true or false");
+        recorder.moveSheetHand(reader.pose(value["to"], at + ".to"),
+                               reader.duration(value, at, 0.5),
+                               clutch != value.end() && clutch->get<bool>());
       } else if (kind == "drag") {
         if (!value.is_object()) reader.fail(at, "must be an object");
         std::vector<glm::dvec3> path;

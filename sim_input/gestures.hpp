@@ -14,6 +14,8 @@
 //      {"wait":0.3},                                           // seconds, hands still
 //      {"turn_sheet":{"axis":[0,1,0],"degrees":30,"duration":0.5}},
 //      {"move_sheet":{"by":[x,y,z],"duration":0.5}},           // world metres
+//      {"sheet_hand":{"to":{"position":[x,y,z],"orientation":[w,x,y,z]},"duration":0.5,
+//                     "clutch":true}},                         // world pose; clutch optional
 //      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
 //               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional
 //      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}}]}
@@ -54,6 +56,9 @@ class GestureRecorder {
   void turnSheet(const SheetTurn& turn, double seconds);
   // Clutch, move the sheet by a world offset, release.
   void moveSheet(const glm::dvec3& by, double seconds);
+  // Move the non-dominant hand to a world pose over `seconds` (position interpolated, orientation
+  // slerped), the sheet following when `clutch` is squeezed: "clutch at pose A, move to pose B".
+  void moveSheetHand(const Pose& to, double seconds, bool clutch);
   // Approach the surface point nearest `grabNear` (sheet coordinates), pull the trigger, drag it
   // through `path` (sheet coordinates of the frame at the start) over `seconds`, optionally
   // turning the sheet with the other hand meanwhile, and release. Throws GestureError when the

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "engine/geometry/validate.hpp"
 #include "sheet_fixtures.hpp"
@@ -81,6 +82,21 @@ TEST(Gestures, TurningTheSheetDuringADragChangesTheFold) {
   ASSERT_EQ(still.session().foldCount(), 1u);
   ASSERT_EQ(turning.session().foldCount(), 1u);
   EXPECT_NE(still.session().folds()[0].target, turning.session().folds()[0].target);
+}
+
+TEST(Gestures, ClutchAtPoseAMoveToPoseB) {
+  GestureRecorder recorder(squareHeader());
+  const Pose a{{-0.2, 1.0, -0.3}, glm::dquat(1, 0, 0, 0)};
+  const Pose b{{-0.1, 1.2, -0.35}, glm::angleAxis(0.5, glm::dvec3(0, 1, 0))};
+  const Pose sheetBefore = recorder.core().worldFromSheet();
+  recorder.moveSheetHand(a, 0.3, false);  // reposition the hand: the sheet stays
+  EXPECT_EQ(recorder.core().worldFromSheet(), sheetBefore);
+  recorder.moveSheetHand(b, 0.5, true);  // clutched: the sheet follows rigidly
+  const Pose expected = b * a.inverse() * sheetBefore;
+  const Pose& now = recorder.core().worldFromSheet();
+  EXPECT_NEAR(glm::distance(now.position, expected.position), 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(glm::dot(now.orientation, expected.orientation)), 1.0, 1e-12);
+  EXPECT_FALSE(recorder.core().clutched());
 }
 
 TEST(Gestures, AFarGrabPointGrabsTheNearestEdge) {
