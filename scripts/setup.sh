@@ -9,6 +9,10 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
+  # renderer and desktop window: Vulkan with Mesa's lavapipe and the Khronos validation layer,
+  # GLSL compiler, GLFW, Dear ImGui; Xvfb and xdotool for the window tests
+  libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
+  libglfw3-dev libimgui-dev xvfb xauth xdotool
 )
 
 missing=()

@@ -46,10 +46,10 @@ using detail::failParameter;
 using detail::formatNumber;
 using std::numbers::pi;
 
-// Lengths from 0.1 mm to 100 m: below, triangles approach the degeneracy threshold; above, a
-// value is a mistake rather than a sheet of paper.
+// Lengths from 0.1 mm to 10 km: below, triangles approach the degeneracy threshold; above, a
+// value is a mistake rather than a sheet (architecture-sized sheets of 1 km are tested).
 constexpr double kMinLength = 1e-4;
-constexpr double kMaxLength = 100.0;
+constexpr double kMaxLength = 1e4;
 constexpr int kMaxResolution = 2000;
 // CGAL's mesher makes about 5 triangles per maxEdge^2 of area (measured); 6 leaves a margin.
 constexpr double kMeshTrianglesPerArea = 6.0;
