@@ -282,7 +282,9 @@ Recording recordGestureScript(const std::filesystem::path& script) {
     const std::string where = "gesture " + std::to_string(i + 1);
     if (!gesture.is_object() || gesture.size() != 1)
       reader.fail(where, "must be an object with one key (the gesture's name)");
-    const auto& [kind, value] = *gesture.items().begin();
+    // One key: the gesture's name. (Binding to items() would outlive its proxy.)
+    const std::string kind = gesture.begin().key();
+    const nlohmann::json& value = gesture.begin().value();
     const std::string at = where + " (" + kind + ")";
     try {
       if (kind == "wait") {

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Builds with AddressSanitizer + UndefinedBehaviorSanitizer (the "asan" CMake preset, into
+# build-asan/) and runs the whole test suite under them.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j"${CURVEFOLD_JOBS:-2}"
+ctest --preset asan -j"${CURVEFOLD_JOBS:-2}"
