@@ -55,12 +55,13 @@ bool soak(const std::string& name, const Options& options) {
   double worstError = 0.0;
 
   for (int step = 0; step < options.steps; ++step) {
-    const double action = unit(random);
+    // Redo only exists right after undos, so it is likelier there.
+    const double action = unit(random), redoChance = session.canRedo() ? 0.4 : 0.0;
     std::string what;
     if (action < 0.06) {
       what = "undo";
       undos += session.undo();
-    } else if (action < 0.10) {
+    } else if (action < 0.06 + redoChance) {
       what = "redo";
       redos += session.redo();
     } else {
