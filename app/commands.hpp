@@ -2,7 +2,14 @@
 // errors are thrown as exceptions and reported by main() as one line with a non-zero exit.
 #pragma once
 
+#include <memory>
+#include <string>
+
 #include <CLI/CLI.hpp>
+
+namespace curvefold {
+struct Recording;
+}
 
 namespace curvefold::cli {
 
@@ -20,5 +27,12 @@ void addCheckCommand(CLI::App& app);
 // replay_commands.cpp: recorded input.
 void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);
+// render_commands.cpp: headless Vulkan renders.
+void addRenderCommand(CLI::App& app);
+// `replay --frames`: made before the replay so a missing Vulkan device fails before any output.
+class ReplayFrameWriter;
+std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir, std::size_t every,
+                                                         const std::string& size, bool panel);
+std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& recording);
 
 }  // namespace curvefold::cli

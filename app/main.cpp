@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   curvefold::cli::addCheckCommand(app);
   curvefold::cli::addReplayCommand(app);
   curvefold::cli::addRecordScriptCommand(app);
+  curvefold::cli::addRenderCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -145,6 +145,9 @@ void addReplayCommand(CLI::App& app) {
     std::string recording, out;
     bool realtime = false;
     bool allowTruncated = false;
+    std::string frames, framesSize = "1280x720";
+    std::size_t every = 1;
+    bool panel = false;
   };
   auto options = std::make_shared<Options>();
   command->add_option("REC", options->recording, "Recording (JSON Lines, *.jsonl)")->required();
@@ -154,7 +157,18 @@ void addReplayCommand(CLI::App& app) {
   command->add_flag("--realtime", options->realtime, "Replay at the recorded pace");
   command->add_flag("--allow-truncated", options->allowTruncated,
                     "Replay a cut-off recording up to its last whole frame (with a warning)");
+  command->add_option("--frames", options->frames,
+                      "Also render the session to DIR/frame_NNNNNN.png (headless Vulkan)");
+  command->add_option("--every", options->every, "With --frames: one PNG every N frames");
+  command->add_option("--size", options->framesSize, "With --frames: image size WxH");
+  command->add_flag("--crease-pattern-panel", options->panel,
+                    "With --frames: show the 2D crease pattern at the right");
   command->callback([options] {
+    // The renderer comes first: without Vulkan, fail before writing anything.
+    std::shared_ptr<ReplayFrameWriter> frameWriter;
+    if (!options->frames.empty())
+      frameWriter = makeReplayFrameWriter(options->frames, options->every, options->framesSize,
+                                          options->panel);
     const fs::path recordingPath = options->recording;
     const Recording recording = readRecording(recordingPath, {options->allowTruncated});
     const std::string name = recordingPath.stem().string();
@@ -196,6 +210,10 @@ void addReplayCommand(CLI::App& app) {
               << result.sheet.triangleCount() << " triangles, in " << seconds(elapsed)
               << (result.endedWhileDragging ? " (a drag left unfinished)" : "") << "; wrote "
               << (dir / (name + ".*")).string() << "\n";
+    if (frameWriter) {
+      const std::size_t written = writeReplayFrames(*frameWriter, recording);
+      std::cout << "wrote " << written << " frames to " << options->frames << "\n";
+    }
   });
 }
 

@@ -61,8 +61,8 @@ void BM_Replay(benchmark::State& state) {
   state.counters["frames"] = static_cast<double>(recording.frames.size());
   state.counters["seconds_recorded"] = recording.frames.back().time;
   state.counters["folds"] = static_cast<double>(folds);
-  state.counters["triangles_at_start"] = static_cast<double>(
-      initialSheet(Design{recording.header.surface, {}}).triangleCount());
+  state.counters["triangles_at_start"] =
+      static_cast<double>(initialSheet(Design{recording.header.surface, {}}).triangleCount());
 }
 
 void BM_ParseAndReplay(benchmark::State& state) {

@@ -271,6 +271,9 @@ TEST(Surfaces, BadParametersAreRefusedByName) {
       {"cylinder", {{"radius", nan}}, {"cylinder", "radius", "nan"}},
       {"cone", {{"height", inf}}, {"cone", "height", "inf"}},
       {"rectangle", {{"width", 1e30}}, {"rectangle", "width", "1e+30"}},
+      // Found by fuzz_fold: a hole or top ring far below a real length made degenerate triangles.
+      {"square", {{"hole_radius", 5.4e-20}}, {"square", "hole_radius", "must be 0 (none)"}},
+      {"cone", {{"top_radius", 1e-9}}, {"cone", "top_radius", "must be 0 (none)"}},
       {"disk", {{"resolution", 10.5}}, {"disk", "resolution", "10.5"}},
       {"square", {{"resolution", 0}}, {"square", "resolution"}},
       {"star", {{"points", 2}}, {"star", "points", "2"}},

@@ -83,7 +83,6 @@ class ReflectionWorkspace {
   }
 
   ReflectionChanges changes_;
-  double epsilon_ = 0.0;
   std::uint32_t stamp_ = 0;
   std::vector<VertexState> vertices_;
   std::vector<std::uint32_t> triangleSeen_;     // == stamp_: classified by classifyBoundary

@@ -101,11 +101,21 @@ std::vector<glm::dvec2> circle(double radius, double maxEdge) {
   return points;
 }
 
+// A length where 0 means "none" (no hole, no truncation) but anything else must be a real length:
+// a hole or a top ring of 1e-20 m would only make degenerate triangles.
+double zeroOrLength(const std::string& surface, const SurfaceParameters& p, const char* name) {
+  const double value = p.at(name);
+  if (value != 0.0 && value < kMinLength)
+    failParameter(surface, name, value,
+                  "must be 0 (none) or at least " + detail::formatApprox(kMinLength) + " m");
+  return value;
+}
+
 // A flat outline with an optional central hole; inradius bounds the hole.
 Sheet flatWithHole(const std::string& surface, const SurfaceParameters& p,
                    std::vector<glm::dvec2> outline, double longer, double inradius) {
   const double maxEdge = longer / integer(p, "resolution");
-  const double hole = p.at("hole_radius");
+  const double hole = zeroOrLength(surface, p, "hole_radius");
   std::vector<std::vector<glm::dvec2>> holes;
   if (hole > 0.0) {
     if (!(hole < kHoleMargin * inradius))
@@ -208,8 +218,9 @@ const std::vector<CatalogEntry>& entries() {
            angle(360.0),
            resolution(64)}},
          [](const SurfaceParameters& p) {
-           return detail::makeCone("cone", p.at("base_radius"), p.at("height"), p.at("top_radius"),
-                                   p.at("angle"), integer(p, "resolution"));
+           return detail::makeCone("cone", p.at("base_radius"), p.at("height"),
+                                   zeroOrLength("cone", p, "top_radius"), p.at("angle"),
+                                   integer(p, "resolution"));
          }});
     list.push_back({{"swept_curve",
                      "sine curve z = amplitude sin(2 pi x / wavelength) swept along y",
@@ -265,7 +276,8 @@ Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
     throw SurfaceError("unknown surface '" + name + "' (known: " + known + ")");
   }
   const SurfaceInfo& info = entry->info;
-  for (const auto& [key, value] : overrides) {
+  for (const auto& override : overrides) {
+    const std::string& key = override.first;  // a plain name: lambdas cannot capture bindings
     if (std::none_of(info.parameters.begin(), info.parameters.end(),
                      [&](const SurfaceParameter& p) { return p.name == key; })) {
       std::string known;

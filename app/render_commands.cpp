@@ -1,0 +1,230 @@
+// `render` and `replay --frames`: headless Vulkan renders to PNG (DESIGN.md 7). The renderer takes
+// a plain Scene; the interaction state of a replayed frame (hands, hover, grab, plane) is turned
+// into markers and a plane disk here, so the render library knows nothing of interaction.
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "app/commands.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/render/sheet_tracker.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::cli {
+
+namespace fs = std::filesystem;
+
+struct RenderSize {
+  std::uint32_t width = 1280;
+  std::uint32_t height = 720;
+};
+
+namespace {
+
+constexpr std::uint32_t kMaxRenderSide = 16384;
+
+// "WxH" with whole numbers from 1 to kMaxRenderSide.
+RenderSize parseSize(const std::string& text) {
+  const auto fail = [&]() -> RenderSize {
+    throw UsageError("--size: expected WxH with whole numbers from 1 to " +
+                     std::to_string(kMaxRenderSide) + ", got '" + text + "'");
+  };
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos) return fail();
+  RenderSize size;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  auto [wEnd, wError] = std::from_chars(begin, begin + x, size.width);
+  auto [hEnd, hError] = std::from_chars(begin + x + 1, end, size.height);
+  if (wError != std::errc() || hError != std::errc() || wEnd != begin + x || hEnd != end ||
+      size.width == 0 || size.height == 0 || size.width > kMaxRenderSide ||
+      size.height > kMaxRenderSide)
+    return fail();
+  return size;
+}
+
+ViewPreset parseView(const std::string& text) {
+  const std::optional<ViewPreset> view = parseViewPreset(text);
+  if (!view)
+    throw UsageError("--view: unknown view '" + text + "' (one of " +
+                     std::string(kViewPresetNames) + ")");
+  return *view;
+}
+
+// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
+// catch them too.
+void checkValidation(const VulkanContext& context) {
+  if (context.validationMessageCount() == 0) return;
+  std::string first = context.validationMessages().front();
+  first = first.substr(0, first.find('\n'));
+  throw VulkanError(std::to_string(context.validationMessageCount()) +
+                    " Vulkan validation messages, the first: " + first);
+}
+
+void writePng(const fs::path& path, const RgbaImage& image) {
+  writeFileAtomically(path, encodePng(image));
+}
+
+glm::mat4 matrixOf(const Pose& pose) {
+  return glm::translate(glm::mat4(1.0f), glm::vec3(pose.position)) *
+         glm::mat4_cast(glm::quat(pose.orientation));
+}
+
+// Everything a replayed frame shows: the temporal sheet in the world, the grabbed handle and its
+// start, the plane while a drag folds, the reflected part tinted, the hover point and both hands.
+Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
+                          const Camera& camera, const Ground& ground, bool panel) {
+  const FoldSession& session = core.session();
+  const Sheet& sheet = session.current();
+  const Pose& worldFromSheet = core.worldFromSheet();
+  const glm::mat4 model = matrixOf(worldFromSheet);
+  Scene scene;
+  scene.camera = camera;
+  scene.ground = ground;
+  scene.sheet.sheet = &sheet;
+  scene.sheet.worldFromSheet = model;
+  scene.sheet.reflectedTriangles = core.reflectedTriangles();
+  scene.creases = creaseLines(sheet, model, scene.colors);
+  if (panel) scene.panel = creasePatternPanel(sheet, scene.colors);
+  const float size = static_cast<float>(sheetSize(session.initial()));
+  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
+
+  if (core.state() == InteractionState::Dragging) {
+    scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});
+    scene.markers.push_back({world(core.grabTarget()), 0.018f * size, {0.95f, 0.45f, 0.1f, 1}});
+    if (const std::optional<ReflectionPlane> plane = core.plane())
+      scene.plane =
+          PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
+                    0.35f * size, scene.colors.plane};
+  } else if (const std::optional<HoverPoint>& hover = core.hover()) {
+    scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
+  }
+  if (input.pointHand.tracked)
+    scene.markers.push_back(
+        {glm::vec3(input.pointHand.position), 0.01f * size, {0.2f, 0.2f, 0.25f, 1}});
+  if (input.sheetHand.tracked)
+    scene.markers.push_back(
+        {glm::vec3(input.sheetHand.pose.position), 0.03f * size,
+         core.clutched() ? glm::vec4(0.6f, 0.3f, 0.8f, 1) : glm::vec4(0.45f, 0.4f, 0.55f, 1)});
+  const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
+  scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
+  return scene;
+}
+
+}  // namespace
+
+// Replays a recording and writes frame_NNNNNN.png every N frames. The renderer is made first, so
+// a machine without Vulkan fails before anything is written.
+class ReplayFrameWriter {
+ public:
+  ReplayFrameWriter(fs::path dir, std::size_t every, RenderSize size, bool panel)
+      : dir_(std::move(dir)), every_(every), panel_(panel) {
+    if (every_ == 0) throw UsageError("--every: must be at least 1");
+    HeadlessOptions options;
+    options.width = size.width;
+    options.height = size.height;
+    renderer_ = std::make_unique<HeadlessRenderer>(options);
+    aspect_ = float(size.width) / float(size.height);
+  }
+
+  std::size_t write(const Recording& recording) {
+    std::error_code error;
+    fs::create_directories(dir_, error);
+    if (error) throw FileError("cannot create " + dir_.string() + ": " + error.message());
+    Player player(recording);
+    // One camera for the whole replay, framing the sheet where it starts and every hand position.
+    Bounds bounds = worldBounds(player.session().current(), matrixOf(recording.header.sheetFrame));
+    for (const InputFrame& frame : recording.frames) {
+      if (frame.pointHand.tracked) bounds.add(glm::vec3(frame.pointHand.position));
+      if (frame.sheetHand.tracked) bounds.add(glm::vec3(frame.sheetHand.pose.position));
+    }
+    const Camera camera = frameBounds(bounds, ViewPreset::Iso, panel_ ? aspect_ * 0.66f : aspect_);
+    const Ground ground = groundBelow(bounds);
+    SessionSheetTracker tracker;
+    std::size_t written = 0;
+    while (!player.done()) {
+      const std::size_t index = player.nextFrame();
+      const InputFrame& input = player.step();
+      if (index % every_ != 0 && !player.done()) continue;
+      tracker.update(player.session(), renderer_->sceneRenderer());
+      const Scene scene = sceneForInteraction(player.core(), input, camera, ground, panel_);
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%06zu.png", index);
+      const RgbaImage image = renderer_->render(scene);
+      checkValidation(renderer_->context());
+      writePng(dir_ / name, image);
+      ++written;
+    }
+    return written;
+  }
+
+ private:
+  fs::path dir_;
+  std::size_t every_;
+  bool panel_;
+  float aspect_ = 1.0f;
+  std::unique_ptr<HeadlessRenderer> renderer_;
+};
+
+std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir, std::size_t every,
+                                                         const std::string& size, bool panel) {
+  return std::make_shared<ReplayFrameWriter>(dir, every, parseSize(size), panel);
+}
+
+std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& recording) {
+  return writer.write(recording);
+}
+
+void addRenderCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "render", "Render a design or a recording's result to PNG (headless Vulkan)");
+  struct Options {
+    std::string input, png, size = "1280x720", view = "iso";
+    bool panel = false;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("INPUT", options->input, "Design (*.curvefold.json) or recording (*.jsonl)")
+      ->required();
+  command->add_option("--png", options->png, "PNG file to write")->required();
+  command->add_option("--size", options->size, "Image size WxH (default 1280x720)");
+  command->add_option("--view", options->view,
+                      "Camera: " + std::string(kViewPresetNames) + " (default iso)");
+  command->add_flag("--crease-pattern-panel", options->panel,
+                    "Show the 2D crease pattern in a panel at the right");
+  command->callback([options] {
+    const RenderSize size = parseSize(options->size);
+    const ViewPreset view = parseView(options->view);
+    const fs::path input = options->input;
+    Sheet sheet;
+    if (input.extension() == ".jsonl") {
+      sheet = replayRecording(readRecording(input)).sheet;
+    } else {
+      sheet = buildSheet(loadDesign(input), input.string());
+    }
+    HeadlessOptions renderOptions;
+    renderOptions.width = size.width;
+    renderOptions.height = size.height;
+    HeadlessRenderer renderer(renderOptions);
+    const Scene scene =
+        sceneForSheet(sheet, view, float(size.width) / float(size.height), options->panel);
+    const RgbaImage image = renderer.render(scene);
+    checkValidation(renderer.context());
+    writePng(options->png, image);
+    std::cout << "wrote " << options->png << " (" << size.width << "x" << size.height << ", "
+              << sheet.triangleCount() << " triangles, " << renderer.context().deviceName()
+              << ")\n";
+  });
+}
+
+}  // namespace curvefold::cli

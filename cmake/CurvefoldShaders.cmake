@@ -1,0 +1,31 @@
+# Compiles GLSL to SPIR-V at build time and embeds it: each shader becomes a header
+# <build>/shaders/<name>.h holding `const uint32_t <symbol>[]`, so the binary never loads a shader
+# from a path. The symbol is the file name with '.' replaced by '_' plus "_spv"
+# (sheet.frag -> sheet_frag_spv).
+#
+#   curvefold_add_shaders(TARGET curvefold_render SOURCES shaders/sheet.vert shaders/sheet.frag)
+find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+
+function(curvefold_add_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  set(out_dir ${PROJECT_BINARY_DIR}/shaders)
+  file(MAKE_DIRECTORY ${out_dir})
+  set(headers)
+  foreach(source ${ARG_SOURCES})
+    get_filename_component(source_abs ${source} ABSOLUTE BASE_DIR ${PROJECT_SOURCE_DIR})
+    get_filename_component(name ${source} NAME)
+    string(REPLACE "." "_" symbol "${name}_spv")
+    set(header ${out_dir}/${name}.h)
+    add_custom_command(
+      OUTPUT ${header}
+      COMMAND ${GLSLANG_VALIDATOR} -V --quiet --target-env vulkan1.1 --vn ${symbol} -o ${header}
+              ${source_abs}
+      DEPENDS ${source_abs}
+      COMMENT "glslangValidator ${name}"
+      VERBATIM)
+    list(APPEND headers ${header})
+  endforeach()
+  target_sources(${ARG_TARGET} PRIVATE ${headers})
+  # Included as "shaders/sheet.frag.h".
+  target_include_directories(${ARG_TARGET} PRIVATE ${PROJECT_BINARY_DIR})
+endfunction()

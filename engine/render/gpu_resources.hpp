@@ -1,0 +1,62 @@
+// Buffers and images with their memory, destroyed with their owner (move-only RAII).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/render/vulkan_context.hpp"
+
+namespace curvefold {
+
+// A host-visible, host-coherent buffer, mapped for its whole life: the CPU writes it directly and
+// the writes are visible to the GPU at the next queue submission.
+class HostBuffer {
+ public:
+  HostBuffer() = default;
+  HostBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage);
+  ~HostBuffer() { reset(); }
+  HostBuffer(HostBuffer&& other) noexcept { *this = std::move(other); }
+  HostBuffer& operator=(HostBuffer&& other) noexcept;
+  HostBuffer(const HostBuffer&) = delete;
+  HostBuffer& operator=(const HostBuffer&) = delete;
+
+  void reset();
+  VkBuffer buffer() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  std::byte* data() const { return mapped_; }
+  explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+  std::byte* mapped_ = nullptr;
+};
+
+// A 2D image in device memory (preferably device-local) with one view.
+class GpuImage {
+ public:
+  GpuImage() = default;
+  GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat format,
+           VkSampleCountFlagBits samples, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+  ~GpuImage() { reset(); }
+  GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
+  GpuImage& operator=(GpuImage&& other) noexcept;
+  GpuImage(const GpuImage&) = delete;
+  GpuImage& operator=(const GpuImage&) = delete;
+
+  void reset();
+  VkImage image() const { return image_; }
+  VkImageView view() const { return view_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+};
+
+}  // namespace curvefold

@@ -1,0 +1,32 @@
+#include "engine/render/headless_renderer.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace curvefold {
+
+HeadlessRenderer::HeadlessRenderer(const HeadlessOptions& options) {
+  ContextOptions contextOptions;
+  const char* env = std::getenv("CURVEFOLD_VK_VALIDATION");
+  contextOptions.instance.validation = options.validation || (env && std::strcmp(env, "1") == 0);
+  context_ = std::make_unique<VulkanContext>(contextOptions);
+  target_ = std::make_unique<OffscreenTarget>(*context_, VkExtent2D{options.width, options.height},
+                                              options.samples);
+  frames_ = std::make_unique<FrameRing>(*context_);
+  renderer_ = std::make_unique<SceneRenderer>(*context_, *target_, frames_->count());
+}
+
+RgbaImage HeadlessRenderer::render(const Scene& scene) {
+  target_->setReadback(true);
+  Frame* frame = drawFrame(*frames_, *target_, *renderer_, scene);
+  frames_->wait(*frame);
+  return target_->readback(*frame);
+}
+
+void HeadlessRenderer::draw(const Scene& scene, bool wait) {
+  target_->setReadback(false);
+  Frame* frame = drawFrame(*frames_, *target_, *renderer_, scene);
+  if (wait) frames_->wait(*frame);
+}
+
+}  // namespace curvefold

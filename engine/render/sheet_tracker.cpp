@@ -1,0 +1,37 @@
+#include "engine/render/sheet_tracker.hpp"
+
+namespace curvefold {
+namespace {
+
+bool sameChanges(const ReflectionChanges& a, const ReflectionChanges& b) {
+  return a.firstNewVertex == b.firstNewVertex && a.firstNewTriangle == b.firstNewTriangle &&
+         a.movedVertices == b.movedVertices && a.rewrittenTriangles == b.rewrittenTriangles;
+}
+
+}  // namespace
+
+void SessionSheetTracker::update(const FoldSession& session, SceneRenderer& renderer) {
+  const bool dragging = session.dragging();
+  const bool sameBase =
+      seen_ && dragging == dragging_ && session.fixedRevision() == fixedRevision_ &&
+      (!dragging ||
+       (session.grabbedPoint() == grabbed_ && session.grabbedVertex() == grabbedVertex_));
+  if (!sameBase) {
+    renderer.markSheetReplaced();
+    seen_ = true;
+    dragging_ = dragging;
+    fixedRevision_ = session.fixedRevision();
+    grabbed_ = session.grabbedPoint();
+    grabbedVertex_ = session.grabbedVertex();
+    last_ = dragging ? session.lastChanges() : ReflectionChanges{};
+    return;
+  }
+  if (!dragging) return;  // the fixed sheet has not changed
+  const ReflectionChanges& now = session.lastChanges();
+  if (sameChanges(now, last_)) return;
+  renderer.markSheetChanged(last_);  // put back what the previous update changed
+  renderer.markSheetChanged(now);
+  last_ = now;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Runs every fuzzer for a bounded time (default 30 s each) from its seed corpus; CI runs this.
+# Usage: scripts/fuzz.sh [SECONDS]   (build first: scripts/test-sanitized.sh builds the fuzzers)
+# New corpus entries go to a scratch folder; a crash leaves its input in fuzz-artifacts/ and fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-30}"
+build=build-asan
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p fuzz-artifacts
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+run() {
+  local fuzzer="$1"
+  shift
+  mkdir -p "$scratch/$fuzzer"
+  echo "== $fuzzer (${seconds} s)"
+  local status=0
+  "$build/fuzz/$fuzzer" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
+    -artifact_prefix="fuzz-artifacts/$fuzzer-" -print_final_stats=1 "$scratch/$fuzzer" "$@" \
+    >"$scratch/$fuzzer.log" 2>&1 || status=$?
+  grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|SUMMARY|ERROR|invariant)" \
+    "$scratch/$fuzzer.log" || true
+  if [ "$status" -ne 0 ]; then
+    tail -40 "$scratch/$fuzzer.log" >&2
+    echo "$fuzzer failed; its input is in fuzz-artifacts/" >&2
+    exit 1
+  fi
+}
+
+run fuzz_fold fuzz/corpus/fold
+run fuzz_writers fuzz/corpus/writers
+run fuzz_obj_reader tests/data/obj
+run fuzz_design_reader fuzz/corpus/design
+run fuzz_recording_reader tests/data/recordings
+echo "fuzzers: no crash in ${seconds} s each"

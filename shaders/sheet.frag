@@ -1,0 +1,41 @@
+#version 450
+// Two-sided paper: front and back colours by facing, flat shading from the screen-space
+// derivatives of the position (so creases stay sharp), the reflected part tinted: a triangle with
+// any vertex that only reflected triangles share interpolates a positive flag everywhere inside.
+// (A per-triangle flag through gl_PrimitiveID costs lavapipe twice the frame time.)
+// Per-frame values; must match FrameUniforms in engine/render/scene_renderer.cpp.
+layout(set = 0, binding = 0) uniform Frame {
+  mat4 viewProj;
+  mat4 view;
+  mat4 proj;
+  mat4 model;      // world_from_sheet
+  mat4 panelProj;  // development -> panel clip space
+  vec4 eye;        // world
+  vec4 lightDir;   // world, towards the light; w = ambient
+  vec4 frontColor;
+  vec4 backColor;
+  vec4 tintColor;  // rgb; a = how much of it the reflected part takes
+  vec4 viewport;   // width, height in pixels
+} u;
+
+layout(location = 0) in vec3 worldPosition;
+layout(location = 1) in float reflected;
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  vec3 normal = normalize(cross(dFdx(worldPosition), dFdy(worldPosition)));
+  vec3 toEye = normalize(u.eye.xyz - worldPosition);
+  if (dot(normal, toEye) < 0.0) normal = -normal;
+
+  vec3 base = gl_FrontFacing ? u.frontColor.rgb : u.backColor.rgb;
+  if (reflected > 1e-4)
+    base = mix(base, u.tintColor.rgb, u.tintColor.a);
+
+  vec3 light = normalize(u.lightDir.xyz);
+  float key = max(dot(normal, light), 0.0);
+  // A weak headlight keeps faces turned away from the key light readable.
+  float head = max(dot(normal, toEye), 0.0);
+  float ambient = u.lightDir.w;
+  float shade = ambient + (1.0 - ambient) * (0.75 * key + 0.25 * head);
+  outColor = vec4(base * shade, 1.0);
+}

@@ -1,0 +1,241 @@
+// The renderer, headless on whatever Vulkan device the loader finds (lavapipe on a machine
+// without a GPU) with the Khronos validation layer on: any validation message fails the test.
+#include <algorithm>
+#include <memory>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/geometry/creases.hpp"
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/reflection.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/render/sheet_tracker.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "tests/sheet_fixtures.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr std::uint32_t kSize = 256;
+
+std::size_t countPixels(const RgbaImage& image, const auto& predicate) {
+  std::size_t count = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    for (std::uint32_t x = 0; x < image.width; ++x)
+      if (predicate(image.at(x, y))) ++count;
+  return count;
+}
+
+bool isBlue(const std::uint8_t* p) {
+  return p[2] > 150 && p[0] < 100 && p[1] < 130;
+}
+bool isRed(const std::uint8_t* p) {
+  return p[0] > 150 && p[1] < 100 && p[2] < 100;
+}
+
+// One renderer for the whole suite (instance creation with validation takes a while); every test
+// checks that no validation message arrived during it.
+class Render : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    HeadlessOptions options;
+    options.width = kSize;
+    options.height = kSize;
+    options.validation = true;
+    renderer_ = std::make_unique<HeadlessRenderer>(options);
+  }
+  static void TearDownTestSuite() { renderer_.reset(); }
+
+  void SetUp() override {
+    messagesBefore_ = renderer_->context().validationMessageCount();
+    renderer_->sceneRenderer().markSheetReplaced();
+  }
+  void TearDown() override {
+    const VulkanContext& context = renderer_->context();
+    EXPECT_EQ(context.validationMessageCount(), messagesBefore_) << [&] {
+      std::string all;
+      for (const std::string& m : context.validationMessages()) all += m + "\n";
+      return all;
+    }();
+  }
+
+  static std::unique_ptr<HeadlessRenderer> renderer_;
+  std::size_t messagesBefore_ = 0;
+};
+std::unique_ptr<HeadlessRenderer> Render::renderer_;
+
+// A 0.2 m square of 4x4 cells in z = 0, front facing +z.
+Sheet square() {
+  return testing::flatGrid(4, 4, 0.05);
+}
+
+// The square with its right half folded up toward the front (a valley along x = 0.1).
+Sheet foldedSquare() {
+  const Sheet flat = square();
+  const VertexIndex seed = 4 + 2 * 5;  // (0.2, 0.1)
+  const ReflectionPlane plane = bisectorPlane({0.2, 0.1, 0.0}, {0.1, 0.1, 0.1});
+  return reflect(flat, seed, plane).sheet;
+}
+
+TEST_F(Render, FlatSquareFromTheFrontFillsItsProjectedBox) {
+  const Sheet sheet = square();
+  Scene scene = sceneForSheet(sheet, ViewPreset::Front, 1.0f, false);
+  scene.ground.enabled = false;
+  const RgbaImage image = renderer_->render(scene);
+  ASSERT_EQ(image.width, kSize);
+
+  // Where the corners land, by the scene's own matrices.
+  const glm::mat4 clip = scene.camera.projection(1.0f) * scene.camera.view();
+  float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+  for (glm::vec3 corner :
+       {glm::vec3(0, 0, 0), glm::vec3(0.2, 0, 0), glm::vec3(0, 0.2, 0), glm::vec3(0.2, 0.2, 0)}) {
+    const glm::vec4 c = clip * glm::vec4(corner, 1.0f);
+    const float px = (c.x / c.w * 0.5f + 0.5f) * kSize, py = (c.y / c.w * 0.5f + 0.5f) * kSize;
+    x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
+  }
+  ASSERT_GT(x1 - x0, kSize * 0.5f);  // the camera frames the sheet
+  const std::uint8_t* background = image.at(1, 1);
+  std::size_t inside = 0, paperInside = 0, paperOutside = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y)
+    for (std::uint32_t x = 0; x < kSize; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      const bool paper = !std::equal(p, p + 3, background);
+      const float cx = x + 0.5f, cy = y + 0.5f;
+      if (cx > x0 + 1 && cx < x1 - 1 && cy > y0 + 1 && cy < y1 - 1) {
+        ++inside;
+        paperInside += paper;
+      } else if (cx < x0 - 1 || cx > x1 + 1 || cy < y0 - 1 || cy > y1 + 1) {
+        paperOutside += paper;
+      }
+    }
+  EXPECT_EQ(paperInside, inside);
+  EXPECT_EQ(paperOutside, 0u);
+  // The front is paper white (shaded), not the back's orange.
+  const std::uint8_t* centre = image.at(kSize / 2, kSize / 2);
+  EXPECT_GT(centre[0], 150);
+  EXPECT_LT(std::abs(int(centre[0]) - int(centre[2])), 30);
+}
+
+TEST_F(Render, BackColourShowsWhenTheSheetIsTurned) {
+  const Sheet sheet = square();
+  Scene scene = sceneForSheet(sheet, ViewPreset::Back, 1.0f, false);
+  const RgbaImage back = renderer_->render(scene);
+  const std::uint8_t* centre = back.at(kSize / 2, kSize / 2);
+  EXPECT_GT(int(centre[0]) - int(centre[2]), 60) << int(centre[0]) << "," << int(centre[2]);
+}
+
+TEST_F(Render, CreasePixelsAppearExactlyWhenThereAreCreases) {
+  const Sheet flat = square();
+  const RgbaImage unfolded = renderer_->render(sceneForSheet(flat, ViewPreset::Iso, 1.0f, false));
+  EXPECT_EQ(countPixels(unfolded, isBlue), 0u);
+  EXPECT_EQ(countPixels(unfolded, isRed), 0u);
+
+  const Sheet folded = foldedSquare();
+  const std::vector<CreaseEdge> creases = creaseEdges(folded, buildEdgeTopology(folded));
+  ASSERT_FALSE(creases.empty());
+  for (const CreaseEdge& c : creases) ASSERT_EQ(c.assignment, Assignment::Valley);
+  renderer_->sceneRenderer().markSheetReplaced();
+  const RgbaImage image = renderer_->render(sceneForSheet(folded, ViewPreset::Iso, 1.0f, false));
+  EXPECT_GT(countPixels(image, isBlue), 100u);  // a 0.2 m crease, 3 px wide
+  EXPECT_EQ(countPixels(image, isRed), 0u);
+}
+
+TEST_F(Render, CreasePatternPanelShowsTheCreases) {
+  const Sheet folded = foldedSquare();
+  Scene scene = sceneForSheet(folded, ViewPreset::Front, 1.0f, true);
+  scene.creases.clear();  // only the panel's lines
+  const RgbaImage image = renderer_->render(scene);
+  std::size_t panelBlue = 0, viewBlue = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y)
+    for (std::uint32_t x = 0; x < kSize; ++x)
+      (x > kSize * 0.7f ? panelBlue : viewBlue) += isBlue(image.at(x, y));
+  EXPECT_GT(panelBlue, 20u);
+  EXPECT_EQ(viewBlue, 0u);
+}
+
+TEST_F(Render, MarkersAndPlaneDiskAreDrawn) {
+  const Sheet sheet = square();
+  Scene scene = sceneForSheet(sheet, ViewPreset::Front, 1.0f, false);
+  const RgbaImage plain = renderer_->render(scene);
+  scene.markers.push_back({{0.1f, 0.1f, 0.0f}, 0.01f, {0.1f, 0.8f, 0.1f, 1.0f}});
+  scene.plane = PlaneDisk{{0.05f, 0.05f, 0.0f}, {1.0f, 0.0f, 1.0f}, 0.05f};
+  const RgbaImage marked = renderer_->render(scene);
+  const std::uint8_t* centre = marked.at(kSize / 2, kSize / 2);
+  EXPECT_GT(centre[1], centre[0] + 50);  // green marker over the middle
+  EXPECT_NE(plain.pixels, marked.pixels);
+}
+
+TEST_F(Render, SameDesignRendersBitIdenticallyTwice) {
+  const Sheet folded = foldedSquare();
+  const Scene scene = sceneForSheet(folded, ViewPreset::Iso, 1.0f, true);
+  const RgbaImage first = renderer_->render(scene);
+  renderer_->sceneRenderer().markSheetReplaced();
+  const RgbaImage second = renderer_->render(scene);
+  EXPECT_EQ(first.pixels, second.pixels);
+}
+
+// A drag rendered frame by frame with incremental upload gives the images of a full upload every
+// frame, while writing fewer bytes.
+TEST_F(Render, IncrementalUploadMatchesFullUpload) {
+  HeadlessOptions options;
+  options.width = options.height = kSize;
+  options.validation = true;
+  HeadlessRenderer full(options);
+
+  FoldSession session(makeSurface("cylinder", {{"resolution", 24}}));
+  SessionSheetTracker tracker;
+  std::size_t incrementalBytes = 0, fullBytes = 0;
+  auto frame = [&] {
+    tracker.update(session, renderer_->sceneRenderer());
+    full.sceneRenderer().markSheetReplaced();
+    Scene scene = sceneForSheet(session.current(), ViewPreset::Iso, 1.0f, false);
+    scene.camera = frameBounds(worldBounds(session.initial()), ViewPreset::Iso, 1.0f);
+    scene.sheet.reflectedTriangles = session.reflectedTriangles();
+    const RgbaImage a = renderer_->render(scene);
+    incrementalBytes += renderer_->sceneRenderer().lastUpload().sheetBytes;
+    const RgbaImage b = full.render(scene);
+    fullBytes += full.sceneRenderer().lastUpload().sheetBytes;
+    return a.pixels == b.pixels;
+  };
+  EXPECT_TRUE(frame());
+  session.beginDragNear({0.03, 0.105, 0.03});
+  EXPECT_TRUE(frame());
+  const std::size_t bytesBeforeDrag = incrementalBytes;
+  const std::size_t fullBeforeDrag = fullBytes;
+  for (int step = 1; step <= 8; ++step) {
+    session.updateDrag({0.03 - 0.002 * step, 0.105 - 0.006 * step, 0.03 + 0.001 * step});
+    // Two updates between some frames: the tracker must still catch up.
+    if (step % 3 == 0)
+      session.updateDrag({0.03 - 0.002 * step, 0.104 - 0.006 * step, 0.03 + 0.001 * step});
+    EXPECT_TRUE(frame()) << "step " << step;
+  }
+  EXPECT_LT(incrementalBytes - bytesBeforeDrag, (fullBytes - fullBeforeDrag) / 2);
+  session.commit();
+  EXPECT_TRUE(frame());
+  session.undo();
+  EXPECT_TRUE(frame());
+  EXPECT_EQ(full.context().validationMessageCount(), 0u);
+}
+
+TEST(DirtyRanges, JoinsNearbyRunsAndClips) {
+  DirtyRanges ranges;
+  const std::uint32_t indices[] = {9, 3, 4, 5, 40};
+  ranges.addIndices(indices);
+  ranges.add(100, 200);
+  const auto runs = ranges.runs(150, 4);
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[0], std::make_pair(3u, 10u));
+  EXPECT_EQ(runs[1], std::make_pair(40u, 41u));
+  EXPECT_EQ(runs[2], std::make_pair(100u, 150u));
+}
+
+TEST(ViewPresets, ParseKnownNamesOnly) {
+  EXPECT_EQ(parseViewPreset("iso"), ViewPreset::Iso);
+  EXPECT_EQ(parseViewPreset("top"), ViewPreset::Top);
+  EXPECT_FALSE(parseViewPreset("diagonal"));
+}
+
+}  // namespace
+}  // namespace curvefold

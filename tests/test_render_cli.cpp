@@ -1,0 +1,129 @@
+// `curvefold render` and `curvefold replay --frames`, run as a user runs them: PNG files of the
+// asked size, one-line errors and no file for bad input or a machine without Vulkan.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kRecordings = fs::path(CURVEFOLD_TEST_DATA) / "recordings";
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Width and height from a PNG's IHDR chunk, or {0, 0} when it is not a PNG.
+std::pair<std::uint32_t, std::uint32_t> pngSize(const fs::path& path) {
+  const std::string bytes = slurp(path);
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
+  auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(bytes[at])) << 24) |
+           (std::uint32_t(std::uint8_t(bytes[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(bytes[at + 2])) << 8) | std::uint8_t(bytes[at + 3]);
+  };
+  return {be32(16), be32(20)};
+}
+
+class RenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("curvefold-render-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  CommandResult run(const std::string& arguments, const std::string& environment = "") const {
+    const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
+    // Validation on: any message makes the command fail.
+    const std::string command = "CURVEFOLD_VK_VALIDATION=1 " + environment + " " +
+                                std::string(CURVEFOLD_BINARY) + " " + arguments + " >" +
+                                out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    CommandResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = slurp(out);
+    result.err = slurp(err);
+    return result;
+  }
+
+  void expectFailure(const std::string& arguments, const std::string& fragment,
+                     const std::string& environment = "") const {
+    const CommandResult r = run(arguments, environment);
+    EXPECT_NE(r.exitCode, 0) << arguments;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+    for (const auto& entry : fs::recursive_directory_iterator(dir_)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_TRUE(name == ".stdout" || name == ".stderr") << "left behind: " << name;
+    }
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const CommandResult r = run("render " + recording + " --png " + path("fold.png").string() +
+                              " --size 320x200 --view top --crease-pattern-panel");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote"), std::string::npos);
+  EXPECT_EQ(pngSize(path("fold.png")), std::make_pair(320u, 200u));
+}
+
+TEST_F(RenderCli, RenderRefusesBadInputWithOneLine) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const std::string png = " --png " + path("out.png").string();
+  expectFailure("render " + recording + png + " --view sideways", "unknown view 'sideways'");
+  expectFailure("render " + recording + png + " --size 0x0", "--size");
+  expectFailure("render " + recording + png + " --size 640", "--size");
+  expectFailure("render " + path("missing.curvefold.json").string() + png, "missing");
+}
+
+TEST_F(RenderCli, WithoutAVulkanDriverFailsWithOneLineAndNoPng) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const std::string noDriver = "VK_ICD_FILENAMES=" + path("none.json").string() +
+                               " VK_DRIVER_FILES=" + path("none.json").string();
+  expectFailure("render " + recording + " --png " + path("out.png").string(), "Vulkan", noDriver);
+  expectFailure("replay " + recording + " --out " + path("out").string() + " --frames " +
+                    path("frames").string(),
+                "Vulkan", noDriver);
+}
+
+TEST_F(RenderCli, ReplayWritesAFrameEveryNFrames) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const CommandResult r = run("replay " + recording + " --out " + path("out").string() +
+                              " --frames " + path("frames").string() + " --every 2 --size 96x64");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(path("frames")))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  ASSERT_GE(names.size(), 2u);
+  EXPECT_EQ(names.front(), "frame_000000.png");
+  EXPECT_EQ(names[1], "frame_000002.png");
+  EXPECT_EQ(pngSize(path("frames") / names.back()), std::make_pair(96u, 64u));
+}
+
+}  // namespace
