@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerates the README's gallery: each example recording replayed and rendered (iso view with
+# the crease-pattern panel) into docs/gallery/<name>.png.
+#   scripts/make-gallery-images.sh [CURVEFOLD]   (default build/app/curvefold)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+curvefold="${1:-build/app/curvefold}"
+mkdir -p docs/gallery
+for recording in examples/recordings/*.jsonl; do
+  name="$(basename "$recording" .jsonl)"
+  "$curvefold" render "$recording" --png "docs/gallery/$name.png" --size 800x450 --view iso \
+    --crease-pattern-panel
+done
