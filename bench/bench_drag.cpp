@@ -66,6 +66,12 @@ void BM_DragUpdate(benchmark::State& state) {
     moved = changes.movedVertices.size();
     benchmark::DoNotOptimize(session.current().positions.data());
   }
+  // Memory while dragging, in sheets (the arrays of one temporal sheet).
+  const SessionMemory memory = session.memoryUse();
+  const double sheet = static_cast<double>(sheetBytes(session.current()));
+  state.counters["pair_in_sheets"] = (memory.fixed + memory.temporal) / sheet;
+  state.counters["all_in_sheets"] =
+      (memory.fixed + memory.temporal + memory.adjacency + memory.workspace) / sheet;
   session.cancel();
   state.counters["triangles"] = static_cast<double>(session.fixed().triangleCount());
   state.counters["moved_vertices"] = static_cast<double>(moved);

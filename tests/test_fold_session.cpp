@@ -107,6 +107,21 @@ TEST(FoldSession, UndoRedoAcrossKeyframes) {
   EXPECT_EQ(session.folds()[0].seed, all[0].seed);
 }
 
+// DESIGN.md 8: the fixed + temporal pair stays below three sheets while dragging.
+TEST(FoldSession, FixedAndTemporalStayBelowThreeSheets) {
+  FoldSession session(flatGrid(100, 100, 0.002));
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec3 corner{0.2 * (i % 2), 0.2 * (i / 2), 0.0};
+    session.beginDragNear(corner);
+    session.updateDrag(corner + glm::dvec3(0.05 - 0.1 * (i % 2), 0.03, 0.04));
+    const SessionMemory memory = session.memoryUse();
+    const std::size_t oneSheet = sheetBytes(session.current());
+    // The budget is 3; two sheets and the temporal's spare capacity stay well inside it.
+    EXPECT_LT(memory.fixed + memory.temporal, 2.5 * oneSheet);
+    ASSERT_TRUE(session.commit());
+  }
+}
+
 TEST(FoldSession, UpdateReportsWhatChanged) {
   FoldSession session(flatGrid(20, 20, 0.01));
   session.beginDragNear({0.0, 0.0, 0.0});

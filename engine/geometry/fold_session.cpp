@@ -31,6 +31,10 @@ FoldSession::FoldSession(Sheet initial)
 
 void FoldSession::setFixed(Sheet sheet) {
   fixed_ = std::move(sheet);
+  fixedChanged();
+}
+
+void FoldSession::fixedChanged() {
   fixedAdjacency_ = buildAdjacency(fixed_);
   ++fixedRevision_;
 }
@@ -43,18 +47,17 @@ glm::dvec3 FoldSession::beginDragNear(const glm::dvec3& p) {
   return beginDrag(closestSurfacePoint(fixed_, p));
 }
 
+// The grabbed point is inserted into the fixed sheet itself (taken back exactly on cancel), so a
+// drag holds two sheets, fixed and temporal, not three.
 glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
   cancel();
-  VertexInsertion grab = insertVertexAt(fixed_, seed);
-  // Grabbing an existing vertex leaves the topology as it is.
-  const bool inserted = grab.sheet.vertexCount() != fixed_.vertexCount();
-  grabSheet_ = std::move(grab.sheet);
-  grabAdjacency_ = inserted ? buildAdjacency(grabSheet_) : fixedAdjacency_;
-  grabVertex_ = grab.vertex;
+  grabVertex_ = insertVertexInPlace(fixed_, seed, &grabUndo_);
+  grabInserted_ = fixed_.vertexCount() != grabUndo_.vertexCount;
+  if (grabInserted_) fixedChanged();
   grabSeed_ = seed;
-  grabbed_ = grabSheet_.positions[grabVertex_];
+  grabbed_ = fixed_.positions[grabVertex_];
   target_ = grabbed_;
-  temporal_ = grabSheet_;
+  temporal_ = fixed_;  // reuses temporal_'s storage from the last drag
   workspace_.clear();
   dragging_ = true;
   folded_ = false;
@@ -63,7 +66,7 @@ glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
 
 const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   if (!dragging_) throw std::logic_error("updateDrag without a drag in progress");
-  workspace_.restore(grabSheet_, temporal_);
+  workspace_.restore(fixed_, temporal_);
   target_ = target;
   // The seed sits at distance -|target - grabbed|/2 from the bisector; closer than epsilon to the
   // plane means no fold at all (a target equal to the grabbed point is a no-op, not an error).
@@ -73,20 +76,23 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
     return workspace_.changes();
   }
   plane_ = bisectorPlane(grabbed_, target);
-  workspace_.apply(grabSheet_, grabAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
+  workspace_.apply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
   return workspace_.changes();
 }
 
 const std::vector<TriangleIndex>& FoldSession::reflectedTriangles() const {
   static const std::vector<TriangleIndex> none;
   if (!dragging_ || !folded_) return none;
-  return workspace_.reflectedTriangles(grabAdjacency_);
+  return workspace_.reflectedTriangles(fixedAdjacency_);
 }
 
 bool FoldSession::commit() {
   if (!dragging_) return false;
+  if (!folded_) {
+    cancel();
+    return false;
+  }
   dragging_ = false;
-  if (!folded_) return false;
   folded_ = false;
   history_.resize(applied_);
   // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
@@ -94,16 +100,28 @@ bool FoldSession::commit() {
     keyframes_.resize(applied_ / kKeyframeInterval + 1);
   history_.push_back({grabSeed_, plane_, grabbed_, target_});
   ++applied_;
-  setFixed(std::move(temporal_));
-  temporal_ = Sheet{};
+  std::swap(fixed_, temporal_);  // temporal_ keeps the old storage for the next drag
+  fixedChanged();
   if (applied_ % kKeyframeInterval == 0)
     keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
   return true;
 }
 
 void FoldSession::cancel() {
+  if (dragging_ && grabInserted_) {
+    undoInsertion(fixed_, grabUndo_);
+    fixedChanged();
+  }
   dragging_ = false;
   folded_ = false;
+  grabInserted_ = false;
+}
+
+SessionMemory FoldSession::memoryUse() const {
+  SessionMemory memory{sheetBytes(fixed_), sheetBytes(temporal_), adjacencyBytes(fixedAdjacency_),
+                       workspace_.memoryBytes(), 0};
+  for (std::size_t k = 1; k < keyframes_.size(); ++k) memory.history += sheetBytes(*keyframes_[k]);
+  return memory;
 }
 
 Sheet FoldSession::sheetAfter(std::size_t foldCount) const {

@@ -34,11 +34,21 @@ Sheet applyFold(const Sheet& sheet, const FoldRecord& fold);
 // Applies folds in order to an initial sheet.
 Sheet replayFolds(Sheet initial, const std::vector<FoldRecord>& folds);
 
+// Bytes a session holds, for the memory budget of DESIGN.md (fixed + temporal below 3 sheets).
+struct SessionMemory {
+  std::size_t fixed = 0;      // the fixed sheet's arrays
+  std::size_t temporal = 0;   // the temporal sheet's arrays
+  std::size_t adjacency = 0;  // the fixed sheet's vertex rows
+  std::size_t workspace = 0;  // the reflection's scratch
+  std::size_t history = 0;    // undo keyframes (the initial sheet is shared with the caller's)
+};
+
 class FoldSession {
  public:
   explicit FoldSession(Sheet initial);
 
   const Sheet& initial() const { return *initial_; }
+  // The committed sheet; during a drag it also holds the grabbed point as a vertex.
   const Sheet& fixed() const { return fixed_; }
   // What to show: the temporal sheet while dragging, else the fixed one.
   const Sheet& current() const { return dragging_ ? temporal_ : fixed_; }
@@ -73,6 +83,8 @@ class FoldSession {
   // on the first call after each update.
   const std::vector<TriangleIndex>& reflectedTriangles() const;
 
+  SessionMemory memoryUse() const;
+
   // --- History ------------------------------------------------------------------------------
   const std::vector<FoldRecord>& folds() const { return history_; }
   std::size_t foldCount() const { return applied_; }  // folds in the fixed sheet
@@ -83,6 +95,7 @@ class FoldSession {
 
  private:
   void setFixed(Sheet sheet);
+  void fixedChanged();  // after fixed_ changed: its adjacency and revision
   Sheet sheetAfter(std::size_t foldCount) const;
 
   std::shared_ptr<const Sheet> initial_;
@@ -91,11 +104,12 @@ class FoldSession {
   SheetAdjacency fixedAdjacency_;
   std::uint64_t fixedRevision_ = 0;
 
-  // Drag state: grabSheet_ is fixed_ with the grabbed point made a vertex.
+  // Drag state: while dragging, fixed_ holds the grabbed point as a vertex (grabUndo_ takes it
+  // back on cancel) and temporal_ is fixed_ with the reflection applied.
   bool dragging_ = false;
   bool folded_ = false;
-  Sheet grabSheet_;
-  SheetAdjacency grabAdjacency_;
+  InsertionUndo grabUndo_;
+  bool grabInserted_ = false;
   VertexIndex grabVertex_ = kNoIndex;
   glm::dvec2 grabSeed_{0.0};
   glm::dvec3 grabbed_{0.0};

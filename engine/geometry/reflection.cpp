@@ -142,6 +142,15 @@ const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
   return reflected_;
 }
 
+std::size_t ReflectionWorkspace::memoryBytes() const {
+  const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return bytes(vertices_) + bytes(triangleSeen_) + bytes(triangleCrossed_) +
+         bytes(triangleListed_) + bytes(reachedVertices_) + bytes(boundaryVertices_) +
+         bytes(crossedTriangles_) + bytes(hingeTriangles_) + bytes(reflectedPieces_) +
+         bytes(reflected_) + bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
+         bytes(changes_.triangleOrigin);
+}
+
 void ReflectionWorkspace::clear() {
   changes_ = ReflectionChanges{};
   splitEdges_.clear();

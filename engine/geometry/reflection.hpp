@@ -61,6 +61,7 @@ class ReflectionWorkspace {
   void clear();
 
   const ReflectionChanges& changes() const { return changes_; }
+  std::size_t memoryBytes() const;
   // Every triangle of the last apply()'s result that lies in the reflected part (computed on the
   // first call after an apply; `adjacency` must be the one given to it).
   const std::vector<TriangleIndex>& reflectedTriangles(const SheetAdjacency& adjacency);

@@ -37,6 +37,12 @@ bool identical(const Sheet& a, const Sheet& b) {
          sameBytes(a.triangles, b.triangles) && a.tags == b.tags;
 }
 
+std::size_t sheetBytes(const Sheet& sheet) {
+  return sheet.positions.capacity() * sizeof(glm::dvec3) +
+         sheet.development.capacity() * sizeof(glm::dvec2) +
+         sheet.triangles.capacity() * sizeof(Triangle) + sheet.tags.capacity() * sizeof(TaggedEdge);
+}
+
 double sheetSize(const Sheet& sheet) {
   if (sheet.development.empty()) return 0.0;
   glm::dvec2 lo(std::numeric_limits<double>::infinity());

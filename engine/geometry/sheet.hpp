@@ -61,6 +61,9 @@ struct Sheet {
 // Bit-for-bit equality of every array (positions compared by their bytes, so -0.0 != 0.0).
 bool identical(const Sheet& a, const Sheet& b);
 
+// Bytes the sheet's arrays hold (their capacity), for memory accounting.
+std::size_t sheetBytes(const Sheet& sheet);
+
 // Diagonal of the development's bounding box: the sheet's size, invariant under folding.
 double sheetSize(const Sheet& sheet);
 

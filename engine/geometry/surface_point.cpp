@@ -126,12 +126,13 @@ std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm
   return best;
 }
 
-VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
+VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo) {
   const double snap = kRelativeGrabSnap * sheetSize(sheet);
   const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
   if (!located) throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
   const TriangleIndex t = located->triangle;
   const Triangle tri = sheet.triangles[t];
+  if (undo) *undo = {sheet.vertexCount(), sheet.triangleCount(), {}, {}, false};
 
   // An existing vertex within snap distance.
   VertexIndex nearest = kNoIndex;
@@ -143,37 +144,46 @@ VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
       nearest = v;
     }
   }
-  if (nearest != kNoIndex) return {sheet, nearest};
+  if (nearest != kNoIndex) return nearest;
 
-  VertexInsertion result{sheet, static_cast<VertexIndex>(sheet.vertexCount())};
-  Sheet& out = result.sheet;
-  const VertexIndex m = result.vertex;
+  const auto m = static_cast<VertexIndex>(sheet.vertexCount());
+  auto rewrite = [&](TriangleIndex k, const Triangle& replacement) {
+    if (undo) undo->rewritten.emplace_back(k, sheet.triangles[k]);
+    sheet.triangles[k] = replacement;
+  };
 
   // An edge within snap distance: split it and both of its triangles.
   for (int i = 0; i < 3; ++i) {
     const VertexIndex u = tri[i], w = tri[(i + 1) % 3];
     const auto [distance, s] = segmentDistance(q, sheet.development[u], sheet.development[w]);
     if (distance > snap) continue;
-    out.positions.push_back(sheet.positions[u] + s * (sheet.positions[w] - sheet.positions[u]));
-    out.development.push_back(sheet.development[u] +
-                              s * (sheet.development[w] - sheet.development[u]));
+    const glm::dvec3 position = sheet.positions[u] + s * (sheet.positions[w] - sheet.positions[u]);
+    const glm::dvec2 flat =
+        sheet.development[u] + s * (sheet.development[w] - sheet.development[u]);
+    sheet.positions.push_back(position);
+    sheet.development.push_back(flat);
     // Each triangle holding the edge (u, w) in either direction becomes two.
-    for (TriangleIndex k = 0; k < sheet.triangleCount(); ++k) {
-      const Triangle& o = sheet.triangles[k];
+    const std::size_t triangleCount = sheet.triangleCount();
+    for (TriangleIndex k = 0; k < triangleCount; ++k) {
+      const Triangle o = sheet.triangles[k];  // a copy: the array grows below
       for (int j = 0; j < 3; ++j) {
         const VertexIndex from = o[j], to = o[(j + 1) % 3], apex = o[(j + 2) % 3];
         if (Edge::of(from, to) != Edge::of(u, w)) continue;
-        out.triangles[k] = {from, m, apex};
-        out.triangles.push_back({m, to, apex});
+        rewrite(k, {from, m, apex});
+        sheet.triangles.push_back({m, to, apex});
       }
     }
     if (const std::optional<EdgeKind> kind = sheet.edgeKind(Edge::of(u, w))) {
-      std::erase_if(out.tags, [&](const TaggedEdge& tag) { return tag.edge == Edge::of(u, w); });
-      out.tags.push_back({Edge::of(u, m), *kind});
-      out.tags.push_back({Edge::of(m, w), *kind});
-      out.normalizeTags();
+      if (undo) {
+        undo->tags = sheet.tags;
+        undo->tagsChanged = true;
+      }
+      std::erase_if(sheet.tags, [&](const TaggedEdge& tag) { return tag.edge == Edge::of(u, w); });
+      sheet.tags.push_back({Edge::of(u, m), *kind});
+      sheet.tags.push_back({Edge::of(m, w), *kind});
+      sheet.normalizeTags();
     }
-    return result;
+    return m;
   }
 
   // Inside the triangle: three triangles around the new vertex, with barycentric coordinates from
@@ -184,12 +194,27 @@ VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
   const double wb = ((q - a).x * (c - a).y - (q - a).y * (c - a).x) / area;
   const double wc = ((b - a).x * (q - a).y - (b - a).y * (q - a).x) / area;
   const double wa = 1.0 - wb - wc;
-  out.positions.push_back(wa * sheet.positions[tri[0]] + wb * sheet.positions[tri[1]] +
-                          wc * sheet.positions[tri[2]]);
-  out.development.push_back(q);
-  out.triangles[t] = {tri[0], tri[1], m};
-  out.triangles.push_back({tri[1], tri[2], m});
-  out.triangles.push_back({tri[2], tri[0], m});
+  sheet.positions.push_back(wa * sheet.positions[tri[0]] + wb * sheet.positions[tri[1]] +
+                            wc * sheet.positions[tri[2]]);
+  sheet.development.push_back(q);
+  rewrite(t, {tri[0], tri[1], m});
+  sheet.triangles.push_back({tri[1], tri[2], m});
+  sheet.triangles.push_back({tri[2], tri[0], m});
+  return m;
+}
+
+void undoInsertion(Sheet& sheet, const InsertionUndo& undo) {
+  for (auto it = undo.rewritten.rbegin(); it != undo.rewritten.rend(); ++it)
+    sheet.triangles[it->first] = it->second;
+  sheet.positions.resize(undo.vertexCount);
+  sheet.development.resize(undo.vertexCount);
+  sheet.triangles.resize(undo.triangleCount);
+  if (undo.tagsChanged) sheet.tags = undo.tags;
+}
+
+VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
+  VertexInsertion result{sheet, kNoIndex};
+  result.vertex = insertVertexInPlace(result.sheet, q, nullptr);
   return result;
 }
 

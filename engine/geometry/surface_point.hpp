@@ -3,6 +3,8 @@
 #pragma once
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -48,5 +50,19 @@ struct VertexInsertion {
 // coordinates, so it is exact. Throws InvalidSheet when q lies outside the development. Live grabs
 // and replays go through this one function, so both give the same sheet bit for bit.
 VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q);
+
+// What an in-place insertion changed, so it can be taken back exactly.
+struct InsertionUndo {
+  std::size_t vertexCount = 0;  // before
+  std::size_t triangleCount = 0;
+  std::vector<std::pair<TriangleIndex, Triangle>> rewritten;  // old values, in rewrite order
+  std::vector<TaggedEdge> tags;                               // old tags, when tagsChanged
+  bool tagsChanged = false;
+};
+
+// insertVertexAt on the sheet itself (the same result bit for bit, without copying the sheet);
+// `undo`, when given, records how to take it back with undoInsertion.
+VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo);
+void undoInsertion(Sheet& sheet, const InsertionUndo& undo);
 
 }  // namespace curvefold

@@ -40,6 +40,12 @@ SheetAdjacency buildAdjacency(const Sheet& sheet) {
   return result;
 }
 
+std::size_t adjacencyBytes(const SheetAdjacency& adjacency) {
+  return sizeof(std::uint32_t) *
+         (adjacency.triangles.offsets.capacity() + adjacency.triangles.triangles.capacity() +
+          adjacency.neighbors.offsets.capacity() + adjacency.neighbors.vertices.capacity());
+}
+
 std::uint32_t EdgeTopology::find(Edge edge) const {
   auto it = std::lower_bound(edges.begin(), edges.end(), edge,
                              [](const EdgeSides& s, const Edge& e) { return s.edge < e; });

@@ -39,6 +39,7 @@ struct SheetAdjacency {
 };
 
 SheetAdjacency buildAdjacency(const Sheet& sheet);
+std::size_t adjacencyBytes(const SheetAdjacency& adjacency);
 
 // Every edge once, sorted; left is the triangle that runs a->b, right the one that runs b->a
 // (kNoIndex when absent). A consistently oriented manifold has at most one of each.
