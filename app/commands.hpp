@@ -29,6 +29,9 @@ void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);
 // render_commands.cpp: headless Vulkan renders.
 void addRenderCommand(CLI::App& app);
+// desktop/designer.cpp: the desktop designer window; runDefaultDesigner() is plain `curvefold`.
+void addDesignCommand(CLI::App& app);
+void runDefaultDesigner();
 // `replay --frames`: made before the replay so a missing Vulkan device fails before any output.
 class ReplayFrameWriter;
 std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir, std::size_t every,

@@ -9,7 +9,9 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
-  app.require_subcommand(1);
+  // No subcommand: the designer window (or, without a display, a one-line pointer to
+  // replay/render).
+  app.require_subcommand(0, 1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return "curvefold: error: " + std::string(e.what()) + " (see --help)\n";
   });
@@ -21,8 +23,10 @@ int main(int argc, char** argv) {
   curvefold::cli::addReplayCommand(app);
   curvefold::cli::addRecordScriptCommand(app);
   curvefold::cli::addRenderCommand(app);
+  curvefold::cli::addDesignCommand(app);
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty()) curvefold::cli::runDefaultDesigner();
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

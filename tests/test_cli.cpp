@@ -10,48 +10,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_test_support.hpp"
+
 namespace fs = std::filesystem;
+using curvefold::testing::CommandResult;
+using curvefold::testing::slurp;
 
 namespace {
 
-struct CommandResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public curvefold::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("curvefold-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
-  CommandResult run(const std::string& arguments) const {
-    const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
-    const std::string command = std::string(CURVEFOLD_BINARY) + " " + arguments + " >" +
-                                out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    CommandResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = slurp(out);
-    result.err = slurp(err);
-    return result;
-  }
-
   // A failed command: non-zero exit, exactly one line on stderr naming the problem, and no file
   // at `output` (nor a temporary next to it).
   void expectFailure(const std::string& arguments, const std::string& fragment,
@@ -73,8 +41,6 @@ class Cli : public ::testing::Test {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return path(name).string();
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Cli, SurfacesListsEveryInitialSurface) {

@@ -10,24 +10,15 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_test_support.hpp"
+
 namespace fs = std::filesystem;
+using curvefold::testing::CommandResult;
+using curvefold::testing::slurp;
 
 namespace {
 
 const fs::path kRecordings = fs::path(CURVEFOLD_TEST_DATA) / "recordings";
-
-struct CommandResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // Width and height from a PNG's IHDR chunk, or {0, 0} when it is not a PNG.
 std::pair<std::uint32_t, std::uint32_t> pngSize(const fs::path& path) {
@@ -41,31 +32,11 @@ std::pair<std::uint32_t, std::uint32_t> pngSize(const fs::path& path) {
   return {be32(16), be32(20)};
 }
 
-class RenderCli : public ::testing::Test {
+class RenderCli : public curvefold::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("curvefold-render-cli-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
+  // Validation on: any message makes the command fail.
   CommandResult run(const std::string& arguments, const std::string& environment = "") const {
-    const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
-    // Validation on: any message makes the command fail.
-    const std::string command = "CURVEFOLD_VK_VALIDATION=1 " + environment + " " +
-                                std::string(CURVEFOLD_BINARY) + " " + arguments + " >" +
-                                out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    CommandResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = slurp(out);
-    result.err = slurp(err);
-    return result;
+    return CliTest::run(arguments, "CURVEFOLD_VK_VALIDATION=1 " + environment);
   }
 
   void expectFailure(const std::string& arguments, const std::string& fragment,
@@ -79,8 +50,6 @@ class RenderCli : public ::testing::Test {
       EXPECT_TRUE(name == ".stdout" || name == ".stderr") << "left behind: " << name;
     }
   }
-
-  fs::path dir_;
 };
 
 TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {

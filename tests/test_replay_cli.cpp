@@ -11,54 +11,23 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_test_support.hpp"
+
 namespace fs = std::filesystem;
+using curvefold::testing::CommandResult;
+using curvefold::testing::slurp;
 
 namespace {
 
 const fs::path kRecordings = fs::path(CURVEFOLD_TEST_DATA) / "recordings";
 const char* const kOutputs[] = {".curvefold.json", ".fold", ".svg", ".obj", ".folds.jsonl"};
 
-struct CommandResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 std::size_t lineCount(const std::string& text) {
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
-class ReplayCli : public ::testing::Test {
+class ReplayCli : public curvefold::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("curvefold-replay-" + std::string(info->name()) + "-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  // Runs in dir_, so that the default output folder lands there.
-  CommandResult run(const std::string& arguments) const {
-    const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
-    const std::string command = "cd " + dir_.string() + " && " + CURVEFOLD_BINARY + " " +
-                                arguments + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    CommandResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = slurp(out);
-    result.err = slurp(err);
-    return result;
-  }
-
   // Nothing but the captured streams: no output folder, no file, no temporary.
   void expectNothingWritten() const {
     for (const auto& entry : fs::directory_iterator(dir_)) {
@@ -74,8 +43,6 @@ class ReplayCli : public ::testing::Test {
       EXPECT_NE(entry.path().filename().string().front(), '.')
           << "temporary left behind: " << entry.path();
   }
-
-  fs::path dir_;
 };
 
 TEST_F(ReplayCli, WritesAllFiveOutputs) {

@@ -1,0 +1,551 @@
+// `curvefold design` and plain `curvefold`: the desktop designer (DESIGN.md 5 and 7). A GLFW
+// window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
+// feeding the one InteractionCore; recorded with --record, autosaved after every committed fold.
+// GLFW declares glfwCreateWindowSurface only with Vulkan's header.
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/desktop/desktop_input.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/fold_format.hpp"
+#include "engine/io/gltf_writer.hpp"
+#include "engine/io/obj_writer.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
+#include "engine/render/image.hpp"
+#include "engine/render/offscreen_target.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/render/sheet_tracker.hpp"
+#include "engine/render/swapchain_target.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recorder.hpp"
+
+namespace curvefold::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kNoDisplay =
+    "no display for the designer window; use `curvefold replay` or `curvefold render` instead";
+constexpr const char* kDefaultSurface = "square";
+
+struct DesignerOptions {
+  std::string input;  // design file, surface name, or empty for the default surface
+  std::string record, autosave, screenshotOnExit, size = "1280x720";
+  bool resume = false;
+  bool validation = false;
+};
+
+glm::mat4 matrixOf(const Pose& pose) {
+  glm::mat4 m = glm::mat4_cast(glm::quat(pose.orientation));
+  m[3] = glm::vec4(glm::vec3(pose.position), 1.0f);
+  return m;
+}
+
+// GLFW's window, created and destroyed with glfwInit/glfwTerminate around it.
+struct Glfw {
+  Glfw() {
+    if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr)
+      throw std::runtime_error(kNoDisplay);
+    glfwSetErrorCallback([](int, const char*) {});  // glfwInit's failure is reported below
+    if (!glfwInit()) throw std::runtime_error(kNoDisplay);
+    if (!glfwVulkanSupported()) {
+      glfwTerminate();
+      throw std::runtime_error("no Vulkan loader usable with the window system");
+    }
+  }
+  ~Glfw() {
+    if (window) glfwDestroyWindow(window);
+    glfwTerminate();
+  }
+  GLFWwindow* window = nullptr;
+};
+
+// The design being edited: its initial surface (for saving and the recording header) and the
+// session and core over it.
+struct Document {
+  InitialSurface surface;
+  std::unique_ptr<FoldSession> session;
+  std::unique_ptr<InteractionCore> core;
+
+  Design design() const {
+    const auto& history = session->folds();
+    return {surface, std::vector<FoldRecord>(
+                         history.begin(), history.begin() + std::ptrdiff_t(session->foldCount()))};
+  }
+};
+
+// A document from a design (its folds remade live, so they can be undone) and a sheet frame.
+Document makeDocument(const Design& design, const std::string& name) {
+  Document doc;
+  doc.surface = design.surface;
+  doc.session = std::make_unique<FoldSession>(initialSheet(design, name));
+  for (const FoldRecord& fold : design.folds) {
+    doc.session->beginDragAtDevelopment(fold.seed);
+    doc.session->updateDrag(fold.target);
+    doc.session->commit();
+  }
+  doc.core = std::make_unique<InteractionCore>(*doc.session, Pose{});
+  return doc;
+}
+
+Design designFor(const std::string& input) {
+  if (input.empty()) return {GeneratedSurface{kDefaultSurface, {}}, {}};
+  if (fs::exists(input)) return loadDesign(input);
+  for (const SurfaceInfo& info : surfaceCatalog())
+    if (info.name == input) return {GeneratedSurface{input, {}}, {}};
+  throw UsageError("'" + input + "' is neither a design file nor a surface name");
+}
+
+std::string defaultAutosave(const std::string& input) {
+  std::string name = input.empty() ? kDefaultSurface : fs::path(input).filename().string();
+  for (const char* suffix : {".json", ".curvefold"})
+    if (name.size() > std::strlen(suffix) && name.ends_with(suffix))
+      name.resize(name.size() - std::strlen(suffix));
+  return name + ".autosave.curvefold.json";
+}
+
+Scene sceneFor(const InteractionCore& core, const InputFrame& input, const Camera& camera,
+               const Ground& ground) {
+  const FoldSession& session = core.session();
+  const Sheet& sheet = session.current();
+  const Pose& worldFromSheet = core.worldFromSheet();
+  Scene scene;
+  scene.camera = camera;
+  scene.ground = ground;
+  scene.sheet.sheet = &sheet;
+  scene.sheet.worldFromSheet = matrixOf(worldFromSheet);
+  scene.sheet.reflectedTriangles = core.reflectedTriangles();
+  scene.creases = creaseLines(sheet, scene.sheet.worldFromSheet, scene.colors);
+  const float size = static_cast<float>(sheetSize(session.initial()));
+  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
+  if (core.state() == InteractionState::Dragging) {
+    scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});
+    scene.markers.push_back({world(core.grabTarget()), 0.018f * size, {0.95f, 0.45f, 0.1f, 1}});
+    if (const std::optional<ReflectionPlane> plane = core.plane())
+      scene.plane =
+          PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
+                    0.35f * size, scene.colors.plane};
+  } else if (const std::optional<HoverPoint>& hover = core.hover()) {
+    scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
+  }
+  (void)input;
+  const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
+  scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
+  return scene;
+}
+
+// One frame into a target like drawFrame(), with ImGui's draw data recorded in the same pass.
+void drawWithOverlay(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
+                     const Scene& scene, ImDrawData* overlay) {
+  Frame& frame = frames.begin();
+  const VkFramebuffer framebuffer = target.acquire(frame);
+  if (framebuffer == VK_NULL_HANDLE) {
+    frames.submit(frame);
+    return;
+  }
+  const VkExtent2D extent = target.extent();
+  renderer.prepare(frame, scene, extent);
+  VkClearValue clears[3]{};
+  clears[0].color = SceneRenderer::clearColor(scene);
+  clears[1].depthStencil = {1.0f, 0};
+  clears[2].color = clears[0].color;
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = target.renderPass();
+  begin.framebuffer = framebuffer;
+  begin.renderArea = {{0, 0}, extent};
+  begin.clearValueCount = target.format().samples == VK_SAMPLE_COUNT_1_BIT ? 2 : 3;
+  begin.pClearValues = clears;
+  vkCmdBeginRenderPass(frame.commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  renderer.record(frame, scene, extent);
+  if (overlay) ImGui_ImplVulkan_RenderDrawData(overlay, frame.commands);
+  vkCmdEndRenderPass(frame.commands);
+  frames.submit(frame, target.acquireSemaphore(frame),
+                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, target.presentSemaphore(frame));
+  target.present(frame);
+}
+
+// PNG of a scene through the offscreen path, on the window's device.
+void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
+               const fs::path& path) {
+  OffscreenTarget target(context, extent);
+  FrameRing frames(context);
+  SceneRenderer renderer(context, target);
+  renderer.markSheetReplaced();
+  Frame* frame = drawFrame(frames, target, renderer, scene);
+  if (!frame) throw VulkanError("offscreen frame was not drawn");
+  frames.wait(*frame);
+  writeFileAtomically(path, encodePng(target.readback(*frame)));
+}
+
+void runDesigner(const DesignerOptions& options) {
+  unsigned width = 1280, height = 720;
+  if (std::sscanf(options.size.c_str(), "%ux%u", &width, &height) != 2 || width < 64 ||
+      height < 64 || width > 8192 || height > 8192)
+    throw UsageError("--size: expected WxH from 64 to 8192, got '" + options.size + "'");
+  const std::string autosavePath =
+      options.autosave.empty() ? defaultAutosave(options.input) : options.autosave;
+  Design design;
+  if (options.resume) {
+    if (!fs::exists(autosavePath)) throw UsageError("--resume: no autosave at " + autosavePath);
+    design = loadDesign(autosavePath);
+  } else {
+    design = designFor(options.input);
+  }
+  Document doc = makeDocument(design, options.resume ? autosavePath : options.input);
+  std::unique_ptr<Recorder> recorder;
+  if (!options.record.empty()) {
+    if (doc.session->foldCount() > 0) {
+      // A recording starts from its header's surface: the resumed folds become that surface.
+      Sheet resumed = doc.session->fixed();
+      doc.core.reset();
+      doc.surface = resumed;
+      doc.session = std::make_unique<FoldSession>(std::move(resumed));
+      doc.core = std::make_unique<InteractionCore>(*doc.session, Pose{});
+    }
+    RecordingHeader header;
+    header.source = "desktop";
+    header.surface = doc.surface;
+    header.rate = 60.0;
+    recorder = std::make_unique<Recorder>(options.record, header);
+  }
+
+  Glfw glfw;
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  glfw.window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
+  if (!glfw.window) throw std::runtime_error(kNoDisplay);
+  GLFWwindow* window = glfw.window;
+
+  ContextOptions contextOptions;
+  std::uint32_t extensionCount = 0;
+  const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
+  for (std::uint32_t i = 0; i < extensionCount; ++i)
+    contextOptions.instance.extensions.push_back(extensions[i]);
+  contextOptions.instance.validation =
+      options.validation || (std::getenv("CURVEFOLD_VK_VALIDATION") &&
+                             std::string(std::getenv("CURVEFOLD_VK_VALIDATION")) == "1");
+  contextOptions.device.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  contextOptions.createSurface = [window](VkInstance instance) {
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    vkCheck(glfwCreateWindowSurface(instance, window, nullptr, &surface),
+            "glfwCreateWindowSurface");
+    return surface;
+  };
+  VulkanContext context(contextOptions);
+  SwapchainTarget target(context, [window] {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    return VkExtent2D{std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
+  });
+  FrameRing frames(context);
+  SceneRenderer renderer(context, target);
+  SessionSheetTracker tracker;
+
+  // ImGui, drawn in the scene pass (its MSAA sample count).
+  VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+  poolInfo.maxSets = 16;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &poolSize;
+  VkDescriptorPool imguiPool = VK_NULL_HANDLE;
+  vkCheck(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &imguiPool),
+          "vkCreateDescriptorPool");
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
+  ImGui::StyleColorsLight();
+
+  // Input state shared with the GLFW callbacks.
+  struct State {
+    OrbitCamera camera;
+    DesktopInput input;
+    Document* doc = nullptr;
+    glm::dvec2 mouse{0.0};
+    bool orbiting = false, panning = false, quit = false;
+    double pendingWheel = 0.0;
+  } state;
+  state.doc = &doc;
+  state.camera = OrbitCamera::framing(doc.session->fixed(), Pose{}, float(width) / float(height));
+  state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
+  glfwSetWindowUserPointer(window, &state);
+  auto windowSize = [](GLFWwindow* w) {
+    int x = 0, y = 0;
+    glfwGetWindowSize(w, &x, &y);
+    return glm::dvec2(std::max(x, 1), std::max(y, 1));
+  };
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    if (action == GLFW_PRESS && ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)
+      return;
+    int x = 0, y = 0;
+    glfwGetWindowSize(w, &x, &y);
+    const Ray ray = s.camera.ray(s.mouse, std::max(x, 1), std::max(y, 1));
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+      if (action == GLFW_PRESS)
+        s.input.press(ray, s.doc->session->current(), s.doc->core->worldFromSheet(),
+                      s.camera.forward());
+      else
+        s.input.release();
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+      s.orbiting = action == GLFW_PRESS;
+    } else if (button == GLFW_MOUSE_BUTTON_MIDDLE) {
+      s.panning = action == GLFW_PRESS;
+    }
+  });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    const glm::dvec2 delta = glm::dvec2(x, y) - s.mouse;
+    s.mouse = {x, y};
+    int width = 0, height = 0;
+    glfwGetWindowSize(w, &width, &height);
+    if (s.orbiting) s.camera.orbit(delta.x, delta.y);
+    if (s.panning) s.camera.pan(delta.x, delta.y, height);
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
+    if (s.input.dragging())
+      s.input.wheel(-dy);  // wheel towards the user brings the point nearer
+    else
+      s.camera.zoom(dy);
+  });
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    if (action != GLFW_PRESS) return;
+    if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
+    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (key == GLFW_KEY_ESCAPE) s.input.pulse(Button::Cancel);
+    if (ctrl && key == GLFW_KEY_Z)
+      s.input.pulse((mods & GLFW_MOD_SHIFT) ? Button::Redo : Button::Undo);
+    if (ctrl && key == GLFW_KEY_Q) s.quit = true;
+  });
+  // Installed after ours, so ImGui chains to them.
+  ImGui_ImplGlfw_InitForVulkan(window, true);
+  ImGui_ImplVulkan_InitInfo imguiInfo{};
+  imguiInfo.Instance = context.instance();
+  imguiInfo.PhysicalDevice = context.physicalDevice();
+  imguiInfo.Device = context.device();
+  imguiInfo.QueueFamily = context.graphicsFamily();
+  imguiInfo.Queue = context.graphicsQueue();
+  imguiInfo.DescriptorPool = imguiPool;
+  imguiInfo.MinImageCount = std::max(2u, target.minImageCount());
+  imguiInfo.ImageCount = std::max(imguiInfo.MinImageCount, target.imageCount());
+  imguiInfo.MSAASamples = target.format().samples;
+  ImGui_ImplVulkan_Init(&imguiInfo, target.renderPass());
+  {
+    // The font atlas, uploaded once with a one-off command buffer.
+    Frame& frame = frames.begin();
+    ImGui_ImplVulkan_CreateFontsTexture(frame.commands);
+    frames.submit(frame);
+    frames.wait(frame);
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+  }
+
+  // Panel state.
+  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
+  int surfaceIndex = 0;
+  std::vector<float> parameterValues;
+  auto resetParameters = [&] {
+    parameterValues.clear();
+    for (const SurfaceParameter& p : catalog[surfaceIndex].parameters)
+      parameterValues.push_back(float(p.defaultValue));
+  };
+  resetParameters();
+  char savePath[512] = "design.curvefold.json";
+  char openPath[512] = "";
+  char exportBase[512] = "design";
+  std::string message;
+  double maxError = maxEdgeLengthError(doc.session->fixed());
+  std::uint64_t statsRevision = doc.session->fixedRevision();
+  double dragUpdateMs = 0.0, frameMs = 0.0;
+  Ground ground = groundBelow(worldBounds(doc.session->fixed()));
+  Scene lastScene;
+
+  auto replaceDocument = [&](Design next, const std::string& name) {
+    Document fresh = makeDocument(next, name);
+    doc.core.reset();
+    doc = std::move(fresh);
+    renderer.markSheetReplaced();
+    tracker = SessionSheetTracker();
+    state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
+    state.camera = OrbitCamera::framing(doc.session->fixed(), Pose{}, float(width) / float(height));
+    ground = groundBelow(worldBounds(doc.session->fixed()));
+    statsRevision = ~std::uint64_t{0};
+  };
+  auto guarded = [&](const std::string& done, auto&& action) {
+    try {
+      action();
+      message = done;
+    } catch (const std::exception& e) {
+      message = e.what();
+    }
+  };
+
+  const Clock::time_point start = Clock::now();
+  double lastTime = 0.0;
+  Clock::time_point lastFrame = Clock::now();
+  while (!glfwWindowShouldClose(window) && !state.quit) {
+    glfwPollEvents();
+    {
+      const glm::dvec2 size = windowSize(window);
+      state.input.mouseRay(state.camera.ray(state.mouse, size.x, size.y), doc.session->current(),
+                           doc.core->worldFromSheet());
+    }
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("curvefold");
+    if (ImGui::CollapsingHeader("New sheet", recorder ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+      if (recorder) {
+        ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
+      } else {
+        if (ImGui::BeginCombo("surface", catalog[surfaceIndex].name.c_str())) {
+          for (int i = 0; i < int(catalog.size()); ++i)
+            if (ImGui::Selectable(catalog[i].name.c_str(), i == surfaceIndex)) {
+              surfaceIndex = i;
+              resetParameters();
+            }
+          ImGui::EndCombo();
+        }
+        const auto& parameters = catalog[surfaceIndex].parameters;
+        for (std::size_t i = 0; i < parameters.size(); ++i)
+          ImGui::SliderFloat(parameters[i].name.c_str(), &parameterValues[i],
+                             float(parameters[i].min), float(parameters[i].max), "%.4g");
+        if (ImGui::Button("Create")) {
+          GeneratedSurface surface{catalog[surfaceIndex].name, {}};
+          for (std::size_t i = 0; i < parameters.size(); ++i)
+            surface.parameters[parameters[i].name] =
+                parameters[i].integer ? std::round(parameterValues[i]) : parameterValues[i];
+          guarded("new " + surface.generator, [&] {
+            replaceDocument({surface, {}}, surface.generator);
+          });
+        }
+      }
+    }
+    if (ImGui::Button("Undo")) state.input.pulse(Button::Undo);
+    ImGui::SameLine();
+    if (ImGui::Button("Redo")) state.input.pulse(Button::Redo);
+    ImGui::InputText("save as", savePath, sizeof savePath);
+    if (ImGui::Button("Save"))
+      guarded(std::string("saved ") + savePath, [&] { saveDesign(doc.design(), savePath); });
+    if (!recorder) {
+      ImGui::InputText("open", openPath, sizeof openPath);
+      if (ImGui::Button("Open"))
+        guarded(std::string("opened ") + openPath,
+                [&] { replaceDocument(loadDesign(openPath), openPath); });
+    }
+    ImGui::InputText("export to", exportBase, sizeof exportBase);
+    const std::string base = exportBase;
+    if (ImGui::Button("FOLD"))
+      guarded("wrote " + base + ".fold", [&] { writeFold(doc.session->fixed(), base + ".fold"); });
+    ImGui::SameLine();
+    if (ImGui::Button("SVG"))
+      guarded("wrote " + base + ".svg",
+              [&] { writeSvgCreasePattern(doc.session->fixed(), base + ".svg"); });
+    ImGui::SameLine();
+    if (ImGui::Button("OBJ"))
+      guarded("wrote " + base + ".obj", [&] { writeObj(doc.session->fixed(), base + ".obj"); });
+    ImGui::SameLine();
+    if (ImGui::Button("glTF"))
+      guarded("wrote " + base + ".glb", [&] { writeGlb(doc.session->fixed(), base + ".glb"); });
+    ImGui::SameLine();
+    if (ImGui::Button("PNG"))
+      guarded("wrote " + base + ".png",
+              [&] { exportPng(context, lastScene, target.extent(), base + ".png"); });
+    if (!message.empty()) ImGui::TextWrapped("%s", message.c_str());
+    ImGui::Separator();
+    if (statsRevision != doc.session->fixedRevision()) {
+      statsRevision = doc.session->fixedRevision();
+      maxError = maxEdgeLengthError(doc.session->fixed());
+    }
+    ImGui::Text("triangles %zu, folds %zu", doc.session->current().triangleCount(),
+                doc.session->foldCount());
+    ImGui::Text("max edge-length error %.3g m", maxError);
+    ImGui::Text("drag update %.2f ms, frame %.2f ms", dragUpdateMs, frameMs);
+    ImGui::TextWrapped(
+        "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc cancels, "
+        "Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
+    ImGui::End();
+    ImGui::Render();
+
+    // Input into the core; time never goes backwards.
+    const double time =
+        std::max(lastTime, std::chrono::duration<double>(Clock::now() - start).count());
+    lastTime = time;
+    const InputFrame input = state.input.frame(time);
+    const Clock::time_point processStart = Clock::now();
+    doc.core->process(input);
+    if (doc.session->dragging())
+      dragUpdateMs = std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
+    if (recorder) recorder->append(input);
+    if (isCommitPoint(doc.core->events())) {
+      if (recorder) recorder->commitPoint();
+      saveDesign(doc.design(), autosavePath);
+    }
+
+    tracker.update(*doc.session, renderer);
+    lastScene = sceneFor(*doc.core, input, state.camera.camera(), ground);
+    drawWithOverlay(frames, target, renderer, lastScene, ImGui::GetDrawData());
+    const Clock::time_point now = Clock::now();
+    frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
+    lastFrame = now;
+  }
+  frames.waitAll();
+  if (!options.screenshotOnExit.empty())
+    exportPng(context, lastScene, target.extent(), options.screenshotOnExit);
+  if (recorder) recorder->close();
+  ImGui_ImplVulkan_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  vkDestroyDescriptorPool(context.device(), imguiPool, nullptr);
+  if (context.validationMessageCount() > 0)
+    throw VulkanError(std::to_string(context.validationMessageCount()) +
+                      " Vulkan validation messages, the first: " +
+                      context.validationMessages().front().substr(
+                          0, context.validationMessages().front().find('\n')));
+}
+
+}  // namespace
+
+void addDesignCommand(CLI::App& app) {
+  CLI::App* command =
+      app.add_subcommand("design", "Open the desktop designer window (needs a display)");
+  auto options = std::make_shared<DesignerOptions>();
+  command->add_option("INPUT", options->input,
+                      "Design file (*.curvefold.json) or surface name (default: square)");
+  command->add_option("--record", options->record, "Record the session's input (*.jsonl)");
+  command->add_option("--autosave", options->autosave,
+                      "Design saved after every committed fold (default: "
+                      "<name>.autosave.curvefold.json)");
+  command->add_flag("--resume", options->resume, "Start from the autosaved design");
+  command->add_option("--size", options->size, "Window size WxH (default 1280x720)");
+  command->add_option("--screenshot-on-exit", options->screenshotOnExit,
+                      "Write the last frame's scene to this PNG when the window closes");
+  command->callback([options] { runDesigner(*options); });
+}
+
+void runDefaultDesigner() {
+  runDesigner(DesignerOptions{});
+}
+
+}  // namespace curvefold::cli
