@@ -13,6 +13,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands.hpp"
+#include "app/interaction_scene.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/render/headless_renderer.hpp"
@@ -76,52 +77,6 @@ void writePng(const fs::path& path, const RgbaImage& image) {
   writeFileAtomically(path, encodePng(image));
 }
 
-glm::mat4 matrixOf(const Pose& pose) {
-  return glm::translate(glm::mat4(1.0f), glm::vec3(pose.position)) *
-         glm::mat4_cast(glm::quat(pose.orientation));
-}
-
-// Everything a replayed frame shows: the temporal sheet in the world, the grabbed handle and its
-// start, the plane while a drag folds, the reflected part tinted, the hover point and both hands.
-Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
-                          const Camera& camera, const Ground& ground, bool panel) {
-  const FoldSession& session = core.session();
-  const Sheet& sheet = session.current();
-  const Pose& worldFromSheet = core.worldFromSheet();
-  const glm::mat4 model = matrixOf(worldFromSheet);
-  Scene scene;
-  scene.camera = camera;
-  scene.ground = ground;
-  scene.sheet.sheet = &sheet;
-  scene.sheet.worldFromSheet = model;
-  scene.sheet.reflectedTriangles = core.reflectedTriangles();
-  scene.creases = creaseLines(sheet, model, scene.colors);
-  if (panel) scene.panel = creasePatternPanel(sheet, scene.colors);
-  const float size = static_cast<float>(sheetSize(session.initial()));
-  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
-
-  if (core.state() == InteractionState::Dragging) {
-    scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});
-    scene.markers.push_back({world(core.grabTarget()), 0.018f * size, {0.95f, 0.45f, 0.1f, 1}});
-    if (const std::optional<ReflectionPlane> plane = core.plane())
-      scene.plane =
-          PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
-                    0.35f * size, scene.colors.plane};
-  } else if (const std::optional<HoverPoint>& hover = core.hover()) {
-    scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
-  }
-  if (input.pointHand.tracked)
-    scene.markers.push_back(
-        {glm::vec3(input.pointHand.position), 0.01f * size, {0.2f, 0.2f, 0.25f, 1}});
-  if (input.sheetHand.tracked)
-    scene.markers.push_back(
-        {glm::vec3(input.sheetHand.pose.position), 0.03f * size,
-         core.clutched() ? glm::vec4(0.6f, 0.3f, 0.8f, 1) : glm::vec4(0.45f, 0.4f, 0.55f, 1)});
-  const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
-  scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
-  return scene;
-}
-
 }  // namespace
 
 // Replays a recording and writes frame_NNNNNN.png every N frames. The renderer is made first, so
@@ -158,7 +113,8 @@ class ReplayFrameWriter {
       const InputFrame& input = player.step();
       if (index % every_ != 0 && !player.done()) continue;
       tracker.update(player.session(), renderer_->sceneRenderer());
-      const Scene scene = sceneForInteraction(player.core(), input, camera, ground, panel_);
+      const Scene scene =
+          sceneForInteraction(player.core(), input, camera, ground, {panel_, /*handMarkers=*/true});
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
       const RgbaImage image = renderer_->render(scene);

@@ -20,6 +20,7 @@
 
 #include "app/commands.hpp"
 #include "app/desktop/desktop_input.hpp"
+#include "app/interaction_scene.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -52,12 +53,6 @@ struct DesignerOptions {
   bool resume = false;
   bool validation = false;
 };
-
-glm::mat4 matrixOf(const Pose& pose) {
-  glm::mat4 m = glm::mat4_cast(glm::quat(pose.orientation));
-  m[3] = glm::vec4(glm::vec3(pose.position), 1.0f);
-  return m;
-}
 
 // GLFW's window, created and destroyed with glfwInit/glfwTerminate around it.
 struct Glfw {
@@ -120,66 +115,6 @@ std::string defaultAutosave(const std::string& input) {
     if (name.size() > std::strlen(suffix) && name.ends_with(suffix))
       name.resize(name.size() - std::strlen(suffix));
   return name + ".autosave.curvefold.json";
-}
-
-Scene sceneFor(const InteractionCore& core, const InputFrame& input, const Camera& camera,
-               const Ground& ground) {
-  const FoldSession& session = core.session();
-  const Sheet& sheet = session.current();
-  const Pose& worldFromSheet = core.worldFromSheet();
-  Scene scene;
-  scene.camera = camera;
-  scene.ground = ground;
-  scene.sheet.sheet = &sheet;
-  scene.sheet.worldFromSheet = matrixOf(worldFromSheet);
-  scene.sheet.reflectedTriangles = core.reflectedTriangles();
-  scene.creases = creaseLines(sheet, scene.sheet.worldFromSheet, scene.colors);
-  const float size = static_cast<float>(sheetSize(session.initial()));
-  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
-  if (core.state() == InteractionState::Dragging) {
-    scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});
-    scene.markers.push_back({world(core.grabTarget()), 0.018f * size, {0.95f, 0.45f, 0.1f, 1}});
-    if (const std::optional<ReflectionPlane> plane = core.plane())
-      scene.plane =
-          PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
-                    0.35f * size, scene.colors.plane};
-  } else if (const std::optional<HoverPoint>& hover = core.hover()) {
-    scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
-  }
-  (void)input;
-  const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
-  scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
-  return scene;
-}
-
-// One frame into a target like drawFrame(), with ImGui's draw data recorded in the same pass.
-void drawWithOverlay(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
-                     const Scene& scene, ImDrawData* overlay) {
-  Frame& frame = frames.begin();
-  const VkFramebuffer framebuffer = target.acquire(frame);
-  if (framebuffer == VK_NULL_HANDLE) {
-    frames.submit(frame);
-    return;
-  }
-  const VkExtent2D extent = target.extent();
-  renderer.prepare(frame, scene, extent);
-  VkClearValue clears[3]{};
-  clears[0].color = SceneRenderer::clearColor(scene);
-  clears[1].depthStencil = {1.0f, 0};
-  clears[2].color = clears[0].color;
-  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = target.renderPass();
-  begin.framebuffer = framebuffer;
-  begin.renderArea = {{0, 0}, extent};
-  begin.clearValueCount = target.format().samples == VK_SAMPLE_COUNT_1_BIT ? 2 : 3;
-  begin.pClearValues = clears;
-  vkCmdBeginRenderPass(frame.commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  renderer.record(frame, scene, extent);
-  if (overlay) ImGui_ImplVulkan_RenderDrawData(overlay, frame.commands);
-  vkCmdEndRenderPass(frame.commands);
-  frames.submit(frame, target.acquireSemaphore(frame),
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, target.presentSemaphore(frame));
-  target.present(frame);
 }
 
 // PNG of a scene through the offscreen path, on the window's device.
@@ -504,8 +439,11 @@ void runDesigner(const DesignerOptions& options) {
     }
 
     tracker.update(*doc.session, renderer);
-    lastScene = sceneFor(*doc.core, input, state.camera.camera(), ground);
-    drawWithOverlay(frames, target, renderer, lastScene, ImGui::GetDrawData());
+    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground);
+    ImDrawData* panel = ImGui::GetDrawData();
+    drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {
+      ImGui_ImplVulkan_RenderDrawData(panel, commands);
+    });
     const Clock::time_point now = Clock::now();
     frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
     lastFrame = now;

@@ -664,7 +664,7 @@ VkClearColorValue SceneRenderer::clearColor(const Scene& scene) {
 }
 
 Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
-                 const Scene& scene) {
+                 const Scene& scene, const PassOverlay& overlay) {
   Frame& frame = frames.begin();
   const VkFramebuffer framebuffer = target.acquire(frame);
   if (framebuffer == VK_NULL_HANDLE) {
@@ -686,6 +686,7 @@ Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& rendere
   begin.pClearValues = clears;
   vkCmdBeginRenderPass(frame.commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
   renderer.record(frame, scene, extent);
+  if (overlay) overlay(frame.commands);
   vkCmdEndRenderPass(frame.commands);
   target.recordAfterPass(frame);
   frames.submit(frame, target.acquireSemaphore(frame),

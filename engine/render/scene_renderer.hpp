@@ -15,6 +15,8 @@
 // (sheet_tracker.hpp) turns a FoldSession's state into these calls.
 #pragma once
 
+#include <functional>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -111,10 +113,13 @@ class SceneRenderer {
   UploadStats stats_;
 };
 
-// One frame of `scene` into `target`: begin the next slot, prepare, render pass, submit, present.
-// Returns the frame (wait on it before reading a readback), or nullptr when the target had no
-// image this time.
+// Records extra drawing into the scene's render pass after the scene (a GUI panel, say).
+using PassOverlay = std::function<void(VkCommandBuffer)>;
+
+// One frame of `scene` into `target`: begin the next slot, prepare, render pass (with `overlay`
+// last, when given), submit, present. Returns the frame (wait on it before reading a readback),
+// or nullptr when the target had no image this time.
 Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
-                 const Scene& scene);
+                 const Scene& scene, const PassOverlay& overlay = {});
 
 }  // namespace curvefold

@@ -1,0 +1,56 @@
+#include "app/interaction_scene.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/render/scene_builder.hpp"
+
+namespace curvefold {
+
+glm::mat4 matrixOf(const Pose& pose) {
+  return glm::translate(glm::mat4(1.0f), glm::vec3(pose.position)) *
+         glm::mat4_cast(glm::quat(pose.orientation));
+}
+
+Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
+                          const Camera& camera, const Ground& ground,
+                          const InteractionSceneOptions& options) {
+  const FoldSession& session = core.session();
+  const Sheet& sheet = session.current();
+  const Pose& worldFromSheet = core.worldFromSheet();
+  const glm::mat4 model = matrixOf(worldFromSheet);
+  Scene scene;
+  scene.camera = camera;
+  scene.ground = ground;
+  scene.sheet.sheet = &sheet;
+  scene.sheet.worldFromSheet = model;
+  scene.sheet.reflectedTriangles = core.reflectedTriangles();
+  scene.creases = creaseLines(sheet, model, scene.colors);
+  if (options.creasePatternPanel) scene.panel = creasePatternPanel(sheet, scene.colors);
+  const float size = static_cast<float>(sheetSize(session.initial()));
+  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
+
+  if (core.state() == InteractionState::Dragging) {
+    scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});
+    scene.markers.push_back({world(core.grabTarget()), 0.018f * size, {0.95f, 0.45f, 0.1f, 1}});
+    if (const std::optional<ReflectionPlane> plane = core.plane())
+      scene.plane =
+          PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
+                    0.35f * size, scene.colors.plane};
+  } else if (const std::optional<HoverPoint>& hover = core.hover()) {
+    scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
+  }
+  if (options.handMarkers && input.pointHand.tracked)
+    scene.markers.push_back(
+        {glm::vec3(input.pointHand.position), 0.01f * size, {0.2f, 0.2f, 0.25f, 1}});
+  if (options.handMarkers && input.sheetHand.tracked)
+    scene.markers.push_back(
+        {glm::vec3(input.sheetHand.pose.position), 0.03f * size,
+         core.clutched() ? glm::vec4(0.6f, 0.3f, 0.8f, 1) : glm::vec4(0.45f, 0.4f, 0.55f, 1)});
+  const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
+  scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
+  return scene;
+}
+
+}  // namespace curvefold
