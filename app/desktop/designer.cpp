@@ -52,6 +52,7 @@ struct DesignerOptions {
   std::string record, autosave, screenshotOnExit, size = "1280x720";
   bool resume = false;
   bool validation = false;
+  bool creasePatternPanel = false;
 };
 
 // GLFW's window, created and destroyed with glfwInit/glfwTerminate around it.
@@ -207,6 +208,9 @@ void runDesigner(const DesignerOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsLight();
+
+  // The 2D crease pattern as a side view on the right (DESIGN.md 7), toggled in the panel.
+  bool creasePatternPanel = options.creasePatternPanel;
 
   // Input state shared with the GLFW callbacks.
   struct State {
@@ -380,6 +384,8 @@ void runDesigner(const DesignerOptions& options) {
     if (ImGui::Button("Undo")) state.input.pulse(Button::Undo);
     ImGui::SameLine();
     if (ImGui::Button("Redo")) state.input.pulse(Button::Redo);
+    ImGui::SameLine();
+    ImGui::Checkbox("crease pattern", &creasePatternPanel);
     ImGui::InputText("save as", savePath, sizeof savePath);
     if (ImGui::Button("Save"))
       guarded(std::string("saved ") + savePath, [&] { saveDesign(doc.design(), savePath); });
@@ -439,7 +445,8 @@ void runDesigner(const DesignerOptions& options) {
     }
 
     tracker.update(*doc.session, renderer);
-    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground);
+    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
+                                    {creasePatternPanel, /*handMarkers=*/false});
     ImDrawData* panel = ImGui::GetDrawData();
     drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {
       ImGui_ImplVulkan_RenderDrawData(panel, commands);
@@ -476,6 +483,8 @@ void addDesignCommand(CLI::App& app) {
                       "Design saved after every committed fold (default: "
                       "<name>.autosave.curvefold.json)");
   command->add_flag("--resume", options->resume, "Start from the autosaved design");
+  command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
+                    "Show the crease pattern as a side view (also a checkbox in the panel)");
   command->add_option("--size", options->size, "Window size WxH (default 1280x720)");
   command->add_option("--screenshot-on-exit", options->screenshotOnExit,
                       "Write the last frame's scene to this PNG when the window closes");
