@@ -68,18 +68,19 @@ void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCo
 void ReflectionWorkspace::fill(const Sheet& sheet, const SheetAdjacency& adjacency,
                                VertexIndex seed, const ReflectionPlane& plane, double epsilon,
                                Sheet& out) {
-  reachedVertices_.clear();
+  std::vector<VertexIndex>& reached = changes_.movedVertices;
+  reached.clear();
   boundaryVertices_.clear();
-  reachedVertices_.push_back(seed);
+  reached.push_back(seed);
   out.positions[seed] = plane.reflect(sheet.positions[seed]);
-  for (std::size_t next = 0; next < reachedVertices_.size(); ++next) {
-    for (VertexIndex w : adjacency.neighbors.of(reachedVertices_[next])) {
+  for (std::size_t next = 0; next < reached.size(); ++next) {
+    for (VertexIndex w : adjacency.neighbors.of(reached[next])) {
       VertexState& state = vertices_[w];
       if (state.visited == stamp_) continue;
       state.visited = stamp_;
       state.distance = plane.signedDistance(sheet.positions[w]);
       if (state.distance < -epsilon) {
-        reachedVertices_.push_back(w);
+        reached.push_back(w);
         out.positions[w] = plane.reflect(sheet.positions[w]);
       } else {
         boundaryVertices_.push_back(w);
@@ -131,7 +132,7 @@ const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
   }
   // Triangles around reached vertices are reflected whole, unless they were split: then only
   // their pieces on the reflected side are.
-  for (VertexIndex v : reachedVertices_) {
+  for (VertexIndex v : changes_.movedVertices) {
     for (TriangleIndex t : adjacency.triangles.of(v)) {
       if (triangleListed_[t] == listStamp_) continue;
       triangleListed_[t] = listStamp_;
@@ -145,18 +146,39 @@ const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
 std::size_t ReflectionWorkspace::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(vertices_) + bytes(triangleSeen_) + bytes(triangleCrossed_) +
-         bytes(triangleListed_) + bytes(reachedVertices_) + bytes(boundaryVertices_) +
+         bytes(triangleListed_) + bytes(stale_) + bytes(boundaryVertices_) +
          bytes(crossedTriangles_) + bytes(hingeTriangles_) + bytes(reflectedPieces_) +
          bytes(reflected_) + bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
          bytes(changes_.triangleOrigin);
 }
 
+// Empties every list but keeps its storage: a drag reuses it frame after frame.
 void ReflectionWorkspace::clear() {
-  changes_ = ReflectionChanges{};
+  changes_.movedVertices.clear();
+  changes_.rewrittenTriangles.clear();
+  changes_.triangleOrigin.clear();
+  changes_.firstNewVertex = changes_.firstNewTriangle = changes_.newCreaseCount = 0;
+  changes_.splitAny = false;
   splitEdges_.clear();
-  reachedVertices_.clear();
   reflectedPieces_.clear();
   reflectedReady_ = false;
+}
+
+void ReflectionWorkspace::reapply(const Sheet& sheet, const SheetAdjacency& adjacency,
+                                  VertexIndex seed, const ReflectionPlane& plane, double epsilon,
+                                  Sheet& out) {
+  // Put back what the last apply() changed except the moved positions: most of those are reached
+  // again and overwritten by the fill, so only the ones left behind are restored afterwards.
+  for (TriangleIndex t : changes_.rewrittenTriangles) out.triangles[t] = sheet.triangles[t];
+  out.positions.resize(sheet.vertexCount());
+  out.development.resize(sheet.vertexCount());
+  out.triangles.resize(sheet.triangleCount());
+  out.tags = sheet.tags;
+  std::swap(stale_, changes_.movedVertices);
+  apply(sheet, adjacency, seed, plane, epsilon, out);
+  for (VertexIndex v : stale_)
+    if (!reached(v, epsilon)) out.positions[v] = sheet.positions[v];
+  stale_.clear();
 }
 
 void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjacency,
@@ -173,7 +195,6 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
 
   fill(sheet, adjacency, seed, plane, epsilon, out);
   classifyBoundary(sheet, adjacency, epsilon);
-  changes_.movedVertices = reachedVertices_;
 
   cuts_.clear();
   newTags_.clear();
