@@ -22,20 +22,9 @@ OffscreenTarget::OffscreenTarget(const VulkanContext& context, VkExtent2D extent
   const VkDevice device = context.device();
   try {
     renderPass_ = createScenePass(device, format_);
-    // Transient: MSAA samples and depth live only inside the render pass.
-    if (msaa)
-      multisampled_ =
-          GpuImage(context, extent, format_.color, format_.samples,
-                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                   VK_IMAGE_ASPECT_COLOR_BIT);
-    const VkImageAspectFlags depthAspect =
-        format_.depth == VK_FORMAT_D24_UNORM_S8_UINT
-            ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
-            : VK_IMAGE_ASPECT_DEPTH_BIT;
-    depth_ = GpuImage(
-        context, extent, format_.depth, format_.samples,
-        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-        depthAspect);
+    TransientAttachments transient = createTransientAttachments(context, extent, format_);
+    multisampled_ = std::move(transient.multisampled);
+    depth_ = std::move(transient.depth);
     resolved_ = GpuImage(context, extent, format_.color, VK_SAMPLE_COUNT_1_BIT,
                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                          VK_IMAGE_ASPECT_COLOR_BIT);

@@ -4,6 +4,25 @@
 
 namespace curvefold {
 
+TransientAttachments createTransientAttachments(const VulkanContext& context, VkExtent2D extent,
+                                                const PassFormat& format) {
+  TransientAttachments result;
+  if (format.samples != VK_SAMPLE_COUNT_1_BIT)
+    result.multisampled =
+        GpuImage(context, extent, format.color, format.samples,
+                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                 VK_IMAGE_ASPECT_COLOR_BIT);
+  const VkImageAspectFlags depthAspect =
+      format.depth == VK_FORMAT_D24_UNORM_S8_UINT
+          ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
+          : VK_IMAGE_ASPECT_DEPTH_BIT;
+  result.depth = GpuImage(
+      context, extent, format.depth, format.samples,
+      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+      depthAspect);
+  return result;
+}
+
 VkRenderPass createScenePass(VkDevice device, const PassFormat& format) {
   const bool msaa = format.samples != VK_SAMPLE_COUNT_1_BIT;
   std::vector<VkAttachmentDescription> attachments(msaa ? 3 : 2);

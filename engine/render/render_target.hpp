@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 
 #include "engine/render/frames.hpp"
+#include "engine/render/gpu_resources.hpp"
 #include "engine/render/vulkan_context.hpp"
 
 namespace curvefold {
@@ -25,6 +26,15 @@ struct PassFormat {
 
 // Attachments: 0 = colour (MSAA when samples > 1), 1 = depth, 2 = resolve (only when samples > 1).
 VkRenderPass createScenePass(VkDevice device, const PassFormat& format);
+// The pass's transient attachments: the MSAA colour image (absent without MSAA) and the depth
+// image, which live only inside the render pass.
+struct TransientAttachments {
+  GpuImage multisampled;
+  GpuImage depth;
+};
+TransientAttachments createTransientAttachments(const VulkanContext& context, VkExtent2D extent,
+                                                const PassFormat& format);
+
 // A depth format the device can use as a depth attachment (D32, else D24S8, else D16).
 VkFormat chooseDepthFormat(const VulkanContext& context);
 

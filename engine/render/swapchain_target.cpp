@@ -121,19 +121,9 @@ void SwapchainTarget::create(VkExtent2D wanted) {
           "vkGetSwapchainImagesKHR");
 
   const bool msaa = format_.samples != VK_SAMPLE_COUNT_1_BIT;
-  if (msaa)
-    multisampled_ =
-        GpuImage(context_, extent, format_.color, format_.samples,
-                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                 VK_IMAGE_ASPECT_COLOR_BIT);
-  const VkImageAspectFlags depthAspect =
-      format_.depth == VK_FORMAT_D24_UNORM_S8_UINT
-          ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
-          : VK_IMAGE_ASPECT_DEPTH_BIT;
-  depth_ = GpuImage(
-      context_, extent, format_.depth, format_.samples,
-      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-      depthAspect);
+  TransientAttachments transient = createTransientAttachments(context_, extent, format_);
+  multisampled_ = std::move(transient.multisampled);
+  depth_ = std::move(transient.depth);
   for (VkImage image : images_) {
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = image;
