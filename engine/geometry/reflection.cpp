@@ -146,9 +146,9 @@ const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
 std::size_t ReflectionWorkspace::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(vertices_) + bytes(triangleSeen_) + bytes(triangleCrossed_) +
-         bytes(triangleListed_) + bytes(stale_) + bytes(boundaryVertices_) +
-         bytes(crossedTriangles_) + bytes(hingeTriangles_) + bytes(reflectedPieces_) +
-         bytes(reflected_) + bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
+         bytes(triangleListed_) + bytes(boundaryVertices_) + bytes(crossedTriangles_) +
+         bytes(hingeTriangles_) + bytes(reflectedPieces_) + bytes(reflected_) +
+         bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
          bytes(changes_.triangleOrigin);
 }
 
@@ -162,23 +162,6 @@ void ReflectionWorkspace::clear() {
   splitEdges_.clear();
   reflectedPieces_.clear();
   reflectedReady_ = false;
-}
-
-void ReflectionWorkspace::reapply(const Sheet& sheet, const SheetAdjacency& adjacency,
-                                  VertexIndex seed, const ReflectionPlane& plane, double epsilon,
-                                  Sheet& out) {
-  // Put back what the last apply() changed except the moved positions: most of those are reached
-  // again and overwritten by the fill, so only the ones left behind are restored afterwards.
-  for (TriangleIndex t : changes_.rewrittenTriangles) out.triangles[t] = sheet.triangles[t];
-  out.positions.resize(sheet.vertexCount());
-  out.development.resize(sheet.vertexCount());
-  out.triangles.resize(sheet.triangleCount());
-  out.tags = sheet.tags;
-  std::swap(stale_, changes_.movedVertices);
-  apply(sheet, adjacency, seed, plane, epsilon, out);
-  for (VertexIndex v : stale_)
-    if (!reached(v, epsilon)) out.positions[v] = sheet.positions[v];
-  stale_.clear();
 }
 
 void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjacency,

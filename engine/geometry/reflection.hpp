@@ -59,10 +59,6 @@ class ReflectionWorkspace {
   void restore(const Sheet& sheet, Sheet& out) const;
   // Forgets the last apply(), for when `out` has been reset to `sheet` by other means.
   void clear();
-  // restore() then apply() in one, without writing twice the positions both touch: what a drag
-  // does on every update. The result is the same bit for bit.
-  void reapply(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-               const ReflectionPlane& plane, double epsilon, Sheet& out);
 
   const ReflectionChanges& changes() const { return changes_; }
   std::size_t memoryBytes() const;
@@ -93,7 +89,6 @@ class ReflectionWorkspace {
   std::vector<std::uint32_t> triangleSeen_;      // == stamp_: classified by classifyBoundary
   std::vector<std::uint32_t> triangleCrossed_;   // == stamp_: split by the plane
   std::vector<std::uint32_t> triangleListed_;    // == listStamp_: in reflected_
-  std::vector<VertexIndex> stale_;               // reapply(): vertices the previous apply() moved
   std::vector<VertexIndex> boundaryVertices_;    // visited, not reached: on or beyond the plane
   std::vector<TriangleIndex> crossedTriangles_;  // reached, with vertices on both sides
   std::vector<TriangleIndex> hingeTriangles_;    // reached, not crossed, with an edge in the plane
