@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs what is needed, builds, and replays the bundled example recordings
 # (two-handed sessions on the paper's Figure 5 surfaces, and a desktop one) headlessly into a
-# gallery: per example the design, FOLD, SVG crease pattern, OBJ and the per-fold log.
+# gallery: per example the design, FOLD, SVG crease pattern, OBJ, the per-fold log, the checked
+# invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU).
 # Usage: scripts/main.sh [OUT]   (default out/gallery)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,5 +15,7 @@ for recording in examples/recordings/*.jsonl; do
   build/app/curvefold replay "$recording" --out "$out/$name"
   build/app/curvefold check "$out/$name/$name.curvefold.json" >"$out/$name/check.txt" ||
     { cat "$out/$name/check.txt" >&2; exit 1; }
+  build/app/curvefold render "$out/$name/$name.curvefold.json" --png "$out/$name/$name.png" \
+    --size 1280x720 --view iso --crease-pattern-panel
 done
 echo "gallery written to $out"
