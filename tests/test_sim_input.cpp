@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_test_support.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "recording_fixtures.hpp"
@@ -92,12 +93,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using curvefold::testing::slurp;
 
 class TempDir : public ::testing::Test {
  protected:

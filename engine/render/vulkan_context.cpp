@@ -257,13 +257,7 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
     vkCheck(vkCreateDevice(choice_.device, &info, nullptr, &device_), "vkCreateDevice");
     vkGetDeviceQueue(device_, choice_.graphicsFamily, 0, &queue_);
   } catch (...) {
-    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
-    if (messenger_) {
-      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-      if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    vkDestroyInstance(instance_, nullptr);
+    destroyInstance();
     throw;
   }
 }
@@ -273,6 +267,11 @@ VulkanContext::~VulkanContext() {
     vkDeviceWaitIdle(device_);
     vkDestroyDevice(device_, nullptr);
   }
+  destroyInstance();
+}
+
+// The surface, the debug messenger and the instance: what exists before the device.
+void VulkanContext::destroyInstance() {
   if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(

@@ -106,6 +106,8 @@ class VulkanContext {
   void waitIdle() const;
 
  private:
+  void destroyInstance();
+
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   std::shared_ptr<ValidationLog> log_;
