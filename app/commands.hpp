@@ -29,9 +29,17 @@ void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);
 // render_commands.cpp: headless Vulkan renders.
 void addRenderCommand(CLI::App& app);
-// desktop/designer.cpp: the desktop designer window; runDefaultDesigner() is plain `curvefold`.
+// desktop/designer.cpp: the desktop designer window.
+class NoDisplayError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 void addDesignCommand(CLI::App& app);
-void runDefaultDesigner();
+void runDefaultDesigner();  // throws NoDisplayError without a display
+// xr/xr_command.cpp: `curvefold xr`, and plain `curvefold`: XR when a runtime has a headset, else
+// the desktop window, else one line saying what each needs.
+void addXrCommand(CLI::App& app);
+void runDefault();
 // `replay --frames`: made before the replay so a missing Vulkan device fails before any output.
 class ReplayFrameWriter;
 std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir, std::size_t every,

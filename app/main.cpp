@@ -9,8 +9,8 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
-  // No subcommand: the designer window (or, without a display, a one-line pointer to
-  // replay/render).
+  // No subcommand: XR with a headset, else the designer window, else a one-line pointer to
+  // replay/render.
   app.require_subcommand(0, 1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return "curvefold: error: " + std::string(e.what()) + " (see --help)\n";
@@ -24,9 +24,10 @@ int main(int argc, char** argv) {
   curvefold::cli::addRecordScriptCommand(app);
   curvefold::cli::addRenderCommand(app);
   curvefold::cli::addDesignCommand(app);
+  curvefold::cli::addXrCommand(app);
   try {
     app.parse(argc, argv);
-    if (app.get_subcommands().empty()) curvefold::cli::runDefaultDesigner();
+    if (app.get_subcommands().empty()) curvefold::cli::runDefault();
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

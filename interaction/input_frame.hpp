@@ -28,6 +28,13 @@ struct Pose {
   bool operator==(const Pose&) const = default;
 };
 
+// Where a sheet starts in a room-scale (stage) space, metres: level, 1.1 m up (a table's height
+// for a standing user), 45 cm ahead of the origin along -Z. Gesture scripts and `curvefold xr`
+// start there, so a script's recording drives the XR app over the same sheet.
+inline Pose defaultSheetFrame() {
+  return {{0.0, 1.1, -0.45}, glm::dquat(1.0, 0.0, 0.0, 0.0)};
+}
+
 // Buttons as a bit mask of what is held this frame; the core reacts to presses (rising edges).
 enum class Button : std::uint32_t {
   Cancel = 1u << 0,

@@ -15,6 +15,8 @@ packages=(
   # GLSL compiler, GLFW, Dear ImGui; Xvfb and xdotool for the window tests
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libglfw3-dev libimgui-dev xvfb xauth xdotool
+  # OpenXR: the Khronos loader and headers (the simulated runtime in sim_input/ serves tests)
+  libopenxr-dev libopenxr-loader1
 )
 
 missing=()

@@ -263,7 +263,7 @@ Recording recordGestureScript(const std::filesystem::path& script) {
   }
   // By default the sheet is held at chest height half a metre in front of the user (OpenXR's
   // stage space: y up, -z forward), facing them.
-  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
+  header.sheetFrame = defaultSheetFrame();
   if (document.contains("sheet_frame"))
     header.sheetFrame = reader.pose(document["sheet_frame"], "sheet_frame");
 

@@ -20,6 +20,7 @@
 
 #include "app/commands.hpp"
 #include "app/desktop/desktop_input.hpp"
+#include "app/document.hpp"
 #include "app/interaction_scene.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -59,9 +60,9 @@ struct DesignerOptions {
 struct Glfw {
   Glfw() {
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr)
-      throw std::runtime_error(kNoDisplay);
+      throw NoDisplayError(kNoDisplay);
     glfwSetErrorCallback([](int, const char*) {});  // glfwInit's failure is reported below
-    if (!glfwInit()) throw std::runtime_error(kNoDisplay);
+    if (!glfwInit()) throw NoDisplayError(kNoDisplay);
     if (!glfwVulkanSupported()) {
       glfwTerminate();
       throw std::runtime_error("no Vulkan loader usable with the window system");
@@ -73,50 +74,6 @@ struct Glfw {
   }
   GLFWwindow* window = nullptr;
 };
-
-// The design being edited: its initial surface (for saving and the recording header) and the
-// session and core over it.
-struct Document {
-  InitialSurface surface;
-  std::unique_ptr<FoldSession> session;
-  std::unique_ptr<InteractionCore> core;
-
-  Design design() const {
-    const auto& history = session->folds();
-    return {surface, std::vector<FoldRecord>(
-                         history.begin(), history.begin() + std::ptrdiff_t(session->foldCount()))};
-  }
-};
-
-// A document from a design (its folds remade live, so they can be undone) and a sheet frame.
-Document makeDocument(const Design& design, const std::string& name) {
-  Document doc;
-  doc.surface = design.surface;
-  doc.session = std::make_unique<FoldSession>(initialSheet(design, name));
-  for (const FoldRecord& fold : design.folds) {
-    doc.session->beginDragAtDevelopment(fold.seed);
-    doc.session->updateDrag(fold.target);
-    doc.session->commit();
-  }
-  doc.core = std::make_unique<InteractionCore>(*doc.session, Pose{});
-  return doc;
-}
-
-Design designFor(const std::string& input) {
-  if (input.empty()) return {GeneratedSurface{kDefaultSurface, {}}, {}};
-  if (fs::exists(input)) return loadDesign(input);
-  for (const SurfaceInfo& info : surfaceCatalog())
-    if (info.name == input) return {GeneratedSurface{input, {}}, {}};
-  throw UsageError("'" + input + "' is neither a design file nor a surface name");
-}
-
-std::string defaultAutosave(const std::string& input) {
-  std::string name = input.empty() ? kDefaultSurface : fs::path(input).filename().string();
-  for (const char* suffix : {".json", ".curvefold"})
-    if (name.size() > std::strlen(suffix) && name.ends_with(suffix))
-      name.resize(name.size() - std::strlen(suffix));
-  return name + ".autosave.curvefold.json";
-}
 
 // PNG of a scene through the offscreen path, on the window's device.
 void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
@@ -137,13 +94,13 @@ void runDesigner(const DesignerOptions& options) {
       height < 64 || width > 8192 || height > 8192)
     throw UsageError("--size: expected WxH from 64 to 8192, got '" + options.size + "'");
   const std::string autosavePath =
-      options.autosave.empty() ? defaultAutosave(options.input) : options.autosave;
+      options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
   Design design;
   if (options.resume) {
     if (!fs::exists(autosavePath)) throw UsageError("--resume: no autosave at " + autosavePath);
     design = loadDesign(autosavePath);
   } else {
-    design = designFor(options.input);
+    design = designFor(options.input, kDefaultSurface);
   }
   Document doc = makeDocument(design, options.resume ? autosavePath : options.input);
   std::unique_ptr<Recorder> recorder;
@@ -166,7 +123,7 @@ void runDesigner(const DesignerOptions& options) {
   Glfw glfw;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfw.window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
-  if (!glfw.window) throw std::runtime_error(kNoDisplay);
+  if (!glfw.window) throw NoDisplayError(kNoDisplay);
   GLFWwindow* window = glfw.window;
 
   ContextOptions contextOptions;

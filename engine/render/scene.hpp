@@ -23,6 +23,10 @@ struct Camera {
   float fovYDegrees = 35.0f;
   float nearPlane = 0.01f;
   float farPlane = 100.0f;
+  // An XR eye gives its own matrices (a pose and an asymmetric frustum); eye and target still
+  // say where it is and looks, for lighting.
+  std::optional<glm::mat4> viewMatrix;
+  std::optional<glm::mat4> projectionMatrix;
 
   glm::mat4 view() const;
   // Vulkan clip space: y down, depth 0 (near) to 1 (far).

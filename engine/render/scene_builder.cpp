@@ -12,10 +12,12 @@
 namespace curvefold {
 
 glm::mat4 Camera::view() const {
+  if (viewMatrix) return *viewMatrix;
   return glm::lookAtRH(eye, target, up);
 }
 
 glm::mat4 Camera::projection(float aspect) const {
+  if (projectionMatrix) return *projectionMatrix;
   glm::mat4 p = glm::perspectiveRH_ZO(glm::radians(fovYDegrees), aspect, nearPlane, farPlane);
   p[1][1] *= -1.0f;  // Vulkan's clip space has y down
   return p;

@@ -176,11 +176,15 @@ InstanceBuilder::Result InstanceBuilder::build() const {
   info.ppEnabledExtensionNames = extensions.data();
   if (options_.validation) info.pNext = &debugInfo;  // also reports instance creation itself
 
-  const VkResult created = vkCreateInstance(&info, nullptr, &result.instance);
-  if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
-    throw VulkanError(
-        "no Vulkan driver found (Debian: mesa-vulkan-drivers provides lavapipe, a CPU driver)");
-  vkCheck(created, "vkCreateInstance");
+  if (options_.createInstance) {
+    result.instance = options_.createInstance(info);
+  } else {
+    const VkResult created = vkCreateInstance(&info, nullptr, &result.instance);
+    if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
+      throw VulkanError(
+          "no Vulkan driver found (Debian: mesa-vulkan-drivers provides lavapipe, a CPU driver)");
+    vkCheck(created, "vkCreateInstance");
+  }
 
   if (options_.validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -208,6 +212,7 @@ PhysicalDeviceChoice selectPhysicalDevice(VkInstance instance, const DeviceRequi
   int bestRank = -1;
   std::string seen;
   for (VkPhysicalDevice device : devices) {
+    if (needs.required != VK_NULL_HANDLE && device != needs.required) continue;
     PhysicalDeviceChoice candidate{device, 0, {}};
     vkGetPhysicalDeviceProperties(device, &candidate.properties);
     const std::string name = candidate.properties.deviceName;
@@ -237,6 +242,7 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
       surface_ = options.createSurface(instance_);
       needs.presentSurface = surface_;
     }
+    if (options.requiredPhysicalDevice) needs.required = options.requiredPhysicalDevice(instance_);
     choice_ = selectPhysicalDevice(instance_, needs);
     vkGetPhysicalDeviceMemoryProperties(choice_.device, &memory_);
 
@@ -254,7 +260,10 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
     info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     info.pEnabledFeatures = &features;
-    vkCheck(vkCreateDevice(choice_.device, &info, nullptr, &device_), "vkCreateDevice");
+    if (options.createDevice)
+      device_ = options.createDevice(choice_.device, info);
+    else
+      vkCheck(vkCreateDevice(choice_.device, &info, nullptr, &device_), "vkCreateDevice");
     vkGetDeviceQueue(device_, choice_.graphicsFamily, 0, &queue_);
   } catch (...) {
     destroyInstance();

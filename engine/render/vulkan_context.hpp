@@ -32,6 +32,9 @@ struct InstanceOptions {
   std::string applicationName = "curvefold";
   bool validation = false;              // throws VulkanError when the layer is missing
   std::vector<std::string> extensions;  // e.g. glfwGetRequiredInstanceExtensions()
+  // Creates the instance from the create info when given (OpenXR's xrCreateVulkanInstanceKHR,
+  // which adds what the runtime needs); vkCreateInstance otherwise. Throws on failure.
+  std::function<VkInstance(const VkInstanceCreateInfo&)> createInstance;
 };
 
 // Creates the instance (and the debug messenger when validating). Throws VulkanError when no
@@ -53,6 +56,7 @@ class InstanceBuilder {
 struct DeviceRequirements {
   std::vector<std::string> extensions;           // e.g. VK_KHR_swapchain for a window
   VkSurfaceKHR presentSurface = VK_NULL_HANDLE;  // the graphics queue must present to it
+  VkPhysicalDevice required = VK_NULL_HANDLE;    // the only candidate (an XR runtime's device)
 };
 
 struct PhysicalDeviceChoice {
@@ -73,6 +77,10 @@ struct ContextOptions {
   // For a window: creates the surface from the instance (e.g. glfwCreateWindowSurface); the
   // context owns and destroys it.
   std::function<VkSurfaceKHR(VkInstance)> createSurface;
+  // For OpenXR (XR_KHR_vulkan_enable2): the device the runtime renders with, and the runtime's
+  // xrCreateVulkanDeviceKHR in place of vkCreateDevice. Both throw on failure.
+  std::function<VkPhysicalDevice(VkInstance)> requiredPhysicalDevice;
+  std::function<VkDevice(VkPhysicalDevice, const VkDeviceCreateInfo&)> createDevice;
 };
 
 // Owns the instance, optional surface, device and graphics queue. Not copyable or movable.

@@ -1,0 +1,49 @@
+#include "app/document.hpp"
+
+#include <cstring>
+#include <filesystem>
+
+#include "app/commands.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold::cli {
+
+namespace fs = std::filesystem;
+
+Design Document::design() const {
+  const auto& history = session->folds();
+  return {surface, std::vector<FoldRecord>(history.begin(),
+                                           history.begin() + std::ptrdiff_t(session->foldCount()))};
+}
+
+Document makeDocument(const Design& design, const std::string& name, const Pose& worldFromSheet,
+                      Handedness handedness) {
+  Document doc;
+  doc.surface = design.surface;
+  doc.session = std::make_unique<FoldSession>(initialSheet(design, name));
+  for (const FoldRecord& fold : design.folds) {
+    doc.session->beginDragAtDevelopment(fold.seed);
+    doc.session->updateDrag(fold.target);
+    doc.session->commit();
+  }
+  doc.core = std::make_unique<InteractionCore>(*doc.session, worldFromSheet, handedness);
+  return doc;
+}
+
+Design designFor(const std::string& input, const std::string& fallbackSurface) {
+  if (input.empty()) return {GeneratedSurface{fallbackSurface, {}}, {}};
+  if (fs::exists(input)) return loadDesign(input);
+  for (const SurfaceInfo& info : surfaceCatalog())
+    if (info.name == input) return {GeneratedSurface{input, {}}, {}};
+  throw UsageError("'" + input + "' is neither a design file nor a surface name");
+}
+
+std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface) {
+  std::string name = input.empty() ? fallbackSurface : fs::path(input).filename().string();
+  for (const char* suffix : {".json", ".curvefold", ".jsonl"})
+    if (name.size() > std::strlen(suffix) && name.ends_with(suffix))
+      name.resize(name.size() - std::strlen(suffix));
+  return name + ".autosave.curvefold.json";
+}
+
+}  // namespace curvefold::cli

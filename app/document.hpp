@@ -1,0 +1,36 @@
+// The design a live session edits (the desktop designer, `curvefold xr`): its initial surface
+// and the fold session and interaction core over it, made from a design file or a surface name,
+// with the autosave that follows every committed fold.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "engine/geometry/fold_session.hpp"
+#include "engine/io/design_document.hpp"
+#include "interaction/interaction_core.hpp"
+
+namespace curvefold::cli {
+
+struct Document {
+  InitialSurface surface;
+  std::unique_ptr<FoldSession> session;
+  std::unique_ptr<InteractionCore> core;
+
+  // The initial surface and the folds committed so far (a drag in progress is not one).
+  Design design() const;
+};
+
+// A document from a design (its folds remade live, so they can be undone), with the sheet at
+// `worldFromSheet`.
+Document makeDocument(const Design& design, const std::string& name,
+                      const Pose& worldFromSheet = {}, Handedness handedness = Handedness::Right);
+
+// The design a command line INPUT names: a design file, a surface name (default parameters), or
+// empty for `fallbackSurface`. Throws UsageError for anything else.
+Design designFor(const std::string& input, const std::string& fallbackSurface);
+
+// "<name>.autosave.curvefold.json" beside the working directory, <name> from INPUT.
+std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface);
+
+}  // namespace curvefold::cli

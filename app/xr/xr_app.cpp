@@ -1,0 +1,233 @@
+#include "app/xr/xr_app.hpp"
+
+#include <chrono>
+#include <thread>
+
+#include "app/commands.hpp"
+#include "app/interaction_scene.hpp"
+#include "app/xr/xr_vulkan_graphics.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/render/sheet_tracker.hpp"
+#include "interaction/xr/xr_check.hpp"
+#include "interaction/xr/xr_input.hpp"
+#include "sim_input/recorder.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::cli {
+
+namespace {
+
+constexpr const char* kDefaultSurface = "square";
+
+// The crease pattern on a card held beside the non-dominant hand, outside it so it never covers
+// the sheet: 16 cm across, in the plane of the hand's x and y axes.
+void addHeldPanel(Scene& scene, const CreasePatternPanel& panel, const Pose& hand,
+                  XrHandSide side) {
+  constexpr double kWidth = 0.16;
+  const glm::dvec2 low(panel.min), high(panel.max);
+  const glm::dvec2 span = glm::max(high - low, glm::dvec2(1e-9));
+  const double scale = kWidth / std::max(span.x, span.y);
+  const glm::dvec2 centre = 0.5 * (low + high);
+  const double outward = side == XrHandSide::Left ? -1.0 : 1.0;
+  const glm::dvec3 origin(outward * (0.06 + 0.5 * kWidth), 0.05, 0.0);
+  auto world = [&](const glm::dvec2& p) {
+    return glm::vec3(hand.apply(origin + glm::dvec3((p - centre) * scale, 0.0)));
+  };
+  for (const LineSegment& line : panel.lines)
+    scene.lines.push_back({world(glm::dvec2(line.a)), world(glm::dvec2(line.b)), line.color});
+  // The card's edge, a little outside the pattern.
+  const glm::dvec2 half = 0.5 * span * 1.08;
+  const glm::dvec2 corners[4] = {
+      centre + glm::dvec2(-half.x, -half.y), centre + glm::dvec2(half.x, -half.y),
+      centre + glm::dvec2(half.x, half.y), centre + glm::dvec2(-half.x, half.y)};
+  for (int i = 0; i < 4; ++i)
+    scene.lines.push_back(
+        {world(corners[i]), world(corners[(i + 1) % 4]), {0.35f, 0.35f, 0.38f, 1.0f}});
+}
+
+}  // namespace
+
+XrApp::XrApp(const XrAppOptions& options) : options_(options) {
+  Design design;
+  Pose sheetFrame = defaultSheetFrame();
+  Handedness handedness = options.leftHanded ? Handedness::Left : Handedness::Right;
+  if (options.input.ends_with(".jsonl")) {
+    // A recording: its surface, sheet frame and hands, to watch it through the XR path.
+    const Recording recording = readRecording(options.input, {.allowTruncated = true});
+    design = {recording.header.surface, {}};
+    sheetFrame = recording.header.sheetFrame;
+    if (!options.leftHanded) handedness = recording.header.handedness;
+  } else {
+    design = designFor(options.input, kDefaultSurface);
+  }
+  doc_ = makeDocument(design, options.input, sheetFrame, handedness);
+  autosave_ =
+      options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
+  if (!options.record.empty()) {
+    if (doc_.session->foldCount() > 0) {
+      // A recording starts from its header's surface: the opened folds become that surface.
+      Sheet folded = doc_.session->fixed();
+      doc_.core.reset();
+      doc_.surface = folded;
+      doc_.session = std::make_unique<FoldSession>(std::move(folded));
+      doc_.core = std::make_unique<InteractionCore>(*doc_.session, sheetFrame, handedness);
+    }
+    RecordingHeader header;
+    header.source = "openxr";
+    header.handedness = handedness;
+    header.sheetFrame = sheetFrame;
+    header.surface = doc_.surface;
+    header.rate = 90.0;  // nominal; the frames carry the runtime's display times
+    recorder_ = std::make_unique<Recorder>(options.record, header);
+  }
+
+  if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
+  program_ = std::make_unique<XrProgram>(XrProgramOptions{}, graphics_.get());
+  input_ = std::make_unique<XrInput>(program_->instance());
+  tracker_ = std::make_unique<SessionSheetTracker>();
+  if (graphics_)
+    graphics_->setEyeScene([this](const XrEyeView&, const Camera& camera) -> const Scene& {
+      return eyeScene(camera);
+    });
+  // The stage's floor, under the sheet.
+  ground_.height = 0.0f;
+  ground_.centre = {float(sheetFrame.position.x), float(sheetFrame.position.z)};
+  ground_.spacing = 0.25f;
+  ground_.halfCount = 8;
+  summary_.runtime = program_->runtimeName();
+  summary_.autosave = autosave_;
+}
+
+XrApp::~XrApp() = default;
+
+bool XrApp::startSession() {
+  if (!program_->findSystem()) return false;
+  program_->createSession();
+  input_->attach(program_->session());
+  ++summary_.sessions;
+  return true;
+}
+
+bool XrApp::sessionRunning() const {
+  return program_->running();
+}
+
+bool XrApp::pollEvents() {
+  const XrPollResult result = program_->pollEvents();
+  if (result.profilesChanged) summary_.profiles = input_->currentProfiles();
+  if (result.instanceLost) summary_.instanceLost = true;
+  restart_ = result.restartSession;
+  return !result.exitLoop;
+}
+
+void XrApp::processInput(XrTime displayTime) {
+  if (!haveFirstTime_) {
+    firstTime_ = displayTime;
+    haveFirstTime_ = true;
+  }
+  // Seconds since the first focused frame, on the runtime's clock, never going back.
+  const double seconds = std::max(lastSeconds_, double(displayTime - firstTime_) * 1e-9);
+  lastSeconds_ = seconds;
+  InputFrame input;
+  if (!input_->poll(program_->baseSpace(), displayTime, doc_.core->handedness(), seconds, input))
+    return;
+  const Handedness handedness = doc_.core->handedness();
+  doc_.core->process(input);
+  lastInput_ = input;
+  ++summary_.framesProcessed;
+  input_->applyHaptics(doc_.core->haptics(), handedness);
+  if (recorder_) recorder_->append(input);
+  if (isCommitPoint(doc_.core->events())) commitPoint();
+}
+
+void XrApp::commitPoint() {
+  if (recorder_) recorder_->commitPoint();
+  saveDesign(doc_.design(), autosave_);
+}
+
+void XrApp::buildScene() {
+  if (SceneRenderer* renderer = graphics_->renderer()) tracker_->update(*doc_.session, *renderer);
+  scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
+                               {/*creasePatternPanel=*/false, /*handMarkers=*/true});
+  scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
+  if (lastInput_.sheetHand.tracked) {
+    if (panelRevision_ != doc_.session->fixedRevision()) {
+      panel_ = creasePatternPanel(doc_.session->fixed(), scene_.colors);
+      panelRevision_ = doc_.session->fixedRevision();
+    }
+    addHeldPanel(scene_, panel_, lastInput_.sheetHand.pose, sheetHandSide(doc_.core->handedness()));
+  }
+}
+
+const Scene& XrApp::eyeScene(const Camera& camera) {
+  scene_.camera = camera;
+  return scene_;
+}
+
+void XrApp::frame() {
+  const XrFrameTiming timing = program_->beginFrame();
+  if (program_->focused()) processInput(timing.displayTime);
+  const bool render = timing.shouldRender && graphics_;
+  if (render) buildScene();
+  program_->endFrame(timing);
+  if (render) ++summary_.framesRendered;
+}
+
+XrAppSummary XrApp::run(const std::atomic<bool>& interrupt) {
+  using namespace std::chrono_literals;
+  if (!startSession())
+    throw XrError(
+        "the OpenXR runtime (" + program_->runtimeName() +
+            ") has no headset connected; `curvefold design` opens the desktop window instead",
+        XR_ERROR_FORM_FACTOR_UNAVAILABLE);
+  for (;;) {
+    bool exitAsked = false;
+    restart_ = false;
+    try {
+      while (pollEvents()) {
+        if (interrupt && !exitAsked) {
+          summary_.interrupted = true;
+          exitAsked = true;
+          if (!program_->running()) break;
+          program_->requestExit();
+        }
+        if (!program_->running()) {
+          std::this_thread::sleep_for(5ms);  // the runtime has not started the session yet
+          continue;
+        }
+        frame();
+      }
+    } catch (const XrError& e) {
+      if (e.result() == XR_ERROR_SESSION_LOST)
+        restart_ = true;
+      else if (e.result() == XR_ERROR_INSTANCE_LOST)
+        summary_.instanceLost = true;
+      else
+        throw;
+    }
+    // A drag in progress survives a lost session: the core holds it while the hands are
+    // untracked and re-anchors them when the next session locates them.
+    if (!summary_.instanceLost) {
+      input_->detach();
+      program_->destroySession();
+    }
+    if (!restart_ || summary_.instanceLost || interrupt) break;
+    // LOSS_PENDING: wait for the headset to come back, then a new session.
+    while (!interrupt && !startSession()) std::this_thread::sleep_for(50ms);
+    if (interrupt) break;
+  }
+  if (recorder_) recorder_->close();
+  saveDesign(doc_.design(), autosave_);
+  for (XrSessionState state : program_->stateHistory())
+    summary_.states.push_back(xrSessionStateName(state));
+  summary_.folds = doc_.session->foldCount();
+  if (graphics_ && graphics_->context() && graphics_->context()->validationMessageCount() > 0) {
+    const std::string first = graphics_->context()->validationMessages().front();
+    throw VulkanError(
+        std::to_string(graphics_->context()->validationMessageCount()) +
+        " Vulkan validation messages, the first: " + first.substr(0, first.find('\n')));
+  }
+  return summary_;
+}
+
+}  // namespace curvefold::cli

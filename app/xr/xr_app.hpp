@@ -1,0 +1,99 @@
+// `curvefold xr`: folding with tracked controllers (DESIGN.md 5-7). The XR program (instance,
+// session state machine, frame loop), the XR input source feeding the one InteractionCore, the
+// recorder and the autosave, and the Vulkan plugin drawing each eye. A lost session (LOSS_PENDING)
+// is destroyed and made again when the runtime has a headset again; the fold session lives
+// outside it, so no committed fold is lost. Ctrl+C asks the runtime to end the session and the
+// state machine winds it down like any other exit.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/document.hpp"
+#include "engine/render/scene.hpp"
+#include "interaction/input_frame.hpp"
+#include "interaction/xr/xr_program.hpp"
+
+namespace curvefold {
+class Recorder;
+class XrInput;
+class XrVulkanGraphics;
+class SessionSheetTracker;
+}  // namespace curvefold
+
+namespace curvefold::cli {
+
+struct XrAppOptions {
+  std::string input;     // design file, surface name, recording (its surface) or empty
+  std::string record;    // recording of this session's input frames (*.jsonl)
+  std::string autosave;  // design written after every committed fold and at the end
+  bool leftHanded = false;
+  bool headless = false;  // XR_MND_headless: input only, nothing drawn
+  bool validation = false;
+};
+
+struct XrAppSummary {
+  std::string runtime;
+  std::size_t framesProcessed = 0;  // focused frames fed to the interaction core
+  std::size_t framesRendered = 0;
+  std::size_t sessions = 0;  // more than one after a session loss
+  std::size_t folds = 0;
+  std::vector<std::string> states;      // every session state, in order
+  std::array<std::string, 2> profiles;  // the last interaction profile of each hand
+  bool instanceLost = false;
+  bool interrupted = false;  // ended by requestExit (Ctrl+C)
+  std::string autosave;
+};
+
+class XrApp {
+ public:
+  explicit XrApp(const XrAppOptions& options);
+  ~XrApp();
+  XrApp(const XrApp&) = delete;
+  XrApp& operator=(const XrApp&) = delete;
+
+  // Runs until the runtime ends the session (or the instance is lost). `interrupt` is polled
+  // every frame; once set, the app asks the runtime to exit.
+  XrAppSummary run(const std::atomic<bool>& interrupt);
+
+  // One frame of a running session: wait, input, fold, record, draw, end. For the benchmark.
+  void frame();
+  // The session's state machine, once (events); false when the loop should stop.
+  bool pollEvents();
+  bool sessionRunning() const;
+  bool startSession();  // finds the system and creates the session; false without a headset
+
+  const Document& document() const { return doc_; }
+  const std::string& runtimeName() const { return summary_.runtime; }
+
+ private:
+  void processInput(XrTime displayTime);
+  void commitPoint();
+  const Scene& eyeScene(const Camera& camera);
+  void buildScene();
+
+  XrAppOptions options_;
+  Document doc_;
+  std::unique_ptr<XrVulkanGraphics> graphics_;
+  std::unique_ptr<XrProgram> program_;
+  std::unique_ptr<XrInput> input_;
+  std::unique_ptr<Recorder> recorder_;
+  std::unique_ptr<SessionSheetTracker> tracker_;
+  std::string autosave_;
+  InputFrame lastInput_;
+  bool haveFirstTime_ = false;
+  XrTime firstTime_ = 0;
+  double lastSeconds_ = 0.0;
+  Scene scene_;
+  Ground ground_;
+  std::uint64_t panelRevision_ = ~std::uint64_t{0};
+  CreasePatternPanel panel_;
+  bool restart_ = false;
+  XrAppSummary summary_;
+};
+
+}  // namespace curvefold::cli

@@ -1,0 +1,105 @@
+// `curvefold xr [DESIGN|SURFACE|RECORDING] [--record REC] [--left-handed]`, and plain `curvefold`
+// choosing XR, the desktop window, or a line saying what is missing.
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/xr/xr_app.hpp"
+#include "interaction/xr/xr_check.hpp"
+
+namespace curvefold::cli {
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int) {
+  interrupted = true;  // lock-free: safe in a signal handler
+}
+
+// Ctrl+C and SIGTERM end the session through the runtime instead of killing the process.
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previousInt_);
+    sigaction(SIGTERM, &action, &previousTerm_);
+  }
+  ~InterruptGuard() {
+    sigaction(SIGINT, &previousInt_, nullptr);
+    sigaction(SIGTERM, &previousTerm_, nullptr);
+  }
+
+ private:
+  struct sigaction previousInt_ {};
+  struct sigaction previousTerm_ {};
+};
+
+void runXr(const XrAppOptions& options) {
+  interrupted = false;
+  XrApp app(options);
+  InterruptGuard guard;
+  std::cout << "xr: running on " << (options.headless ? "a headless session of " : "")
+            << "the OpenXR runtime \"" << app.runtimeName() << "\"" << std::flush;
+  const XrAppSummary summary = app.run(interrupted);
+  std::cout << "\nxr: " << summary.framesProcessed << " input frames, " << summary.framesRendered
+            << " frames drawn, " << summary.sessions << " session(s), " << summary.folds
+            << " folds; design saved to " << summary.autosave << "\n";
+  std::cout << "xr: session states:";
+  for (const std::string& state : summary.states) std::cout << ' ' << state;
+  std::cout << "\nxr: interaction profiles: left "
+            << (summary.profiles[0].empty() ? "none" : summary.profiles[0]) << ", right "
+            << (summary.profiles[1].empty() ? "none" : summary.profiles[1]) << "\n";
+  if (summary.interrupted) std::cout << "xr: interrupted; the session was ended cleanly\n";
+  if (summary.instanceLost)
+    throw XrError("the OpenXR runtime was lost (instance loss); every committed fold is saved in " +
+                      summary.autosave,
+                  XR_ERROR_INSTANCE_LOST);
+}
+
+}  // namespace
+
+void addXrCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "xr", "Fold with tracked controllers in an OpenXR headset (needs an OpenXR runtime)");
+  auto options = std::make_shared<XrAppOptions>();
+  command->add_option("INPUT", options->input,
+                      "Design file, surface name (default: square), or a recording (*.jsonl) "
+                      "whose surface and sheet frame to start from");
+  command->add_option("--record", options->record, "Record the session's input (*.jsonl)");
+  command->add_option("--autosave", options->autosave,
+                      "Design saved after every committed fold and at the end (default: "
+                      "<name>.autosave.curvefold.json)");
+  command->add_flag("--left-handed", options->leftHanded,
+                    "The left hand folds and the right holds the sheet");
+  command->add_flag("--headless", options->headless, "Input only, nothing drawn (XR_MND_headless)");
+  command->add_flag("--validation", options->validation,
+                    "Enable the Vulkan validation layer; any message fails the run");
+  command->callback([options] {
+    XrAppOptions run = *options;
+    if (const char* v = std::getenv("CURVEFOLD_VK_VALIDATION"); v && std::string(v) == "1")
+      run.validation = true;
+    runXr(run);
+  });
+}
+
+void runDefault() {
+  std::string why;
+  if (xrHeadsetAvailable(why)) {
+    runXr(XrAppOptions{});
+    return;
+  }
+  try {
+    runDefaultDesigner();
+  } catch (const NoDisplayError&) {
+    throw NoDisplayError("no headset for `curvefold xr` (" + why +
+                         ") and no display for the designer window; use `curvefold replay` or "
+                         "`curvefold render` instead");
+  }
+}
+
+}  // namespace curvefold::cli

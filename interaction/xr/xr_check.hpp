@@ -1,0 +1,31 @@
+// OpenXR error handling in the style of hello_xr: CHECK_XR(call) throws XrError with the call's
+// text, the result's name and file:line, so a failure deep in the XR path reads as one line.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <openxr/openxr.h>
+
+namespace curvefold {
+
+class XrError : public std::runtime_error {
+ public:
+  XrError(const std::string& message, XrResult result)
+      : std::runtime_error(message), result_(result) {}
+  XrResult result() const { return result_; }
+
+ private:
+  XrResult result_;
+};
+
+// "XR_ERROR_SESSION_LOST", or the number for a result this header version does not know. Needs
+// no instance (xrResultToString does), so it works before and after one exists.
+std::string xrResultName(XrResult result);
+
+// Throws XrError for a failed result; returns success codes (XR_SESSION_LOSS_PENDING, ...).
+XrResult xrCheck(XrResult result, const char* call, const char* file, int line);
+
+}  // namespace curvefold
+
+#define CHECK_XR(call) ::curvefold::xrCheck((call), #call, __FILE__, __LINE__)

@@ -1,0 +1,117 @@
+#include "sim_input/xr_runtime/sim_user.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "interaction/xr_controls.hpp"
+#include "sim_input/gestures.hpp"
+
+namespace curvefold::simxr {
+
+namespace {
+
+std::string env(const char* name) {
+  const char* value = std::getenv(name);
+  return value ? value : "";
+}
+
+}  // namespace
+
+SimConfig SimConfig::fromEnvironment() {
+  SimConfig config;
+  const std::string input = env("CURVEFOLD_SIM_INPUT");
+  if (!input.empty()) {
+    if (input.ends_with(".gesture.json"))
+      config.input = recordGestureScript(input);
+    else
+      config.input = readRecording(input, {.allowTruncated = true});
+  }
+  config.forcedProfile = env("CURVEFOLD_SIM_PROFILE");
+  config.saveViews = env("CURVEFOLD_SIM_SAVE_VIEWS");
+  config.logPath = env("CURVEFOLD_SIM_LOG");
+  config.hold = env("CURVEFOLD_SIM_HOLD") == "1";
+  config.realtime = env("CURVEFOLD_SIM_REALTIME") == "1";
+  config.noHmd = env("CURVEFOLD_SIM_NO_HMD") == "1";
+  if (const std::string size = env("CURVEFOLD_SIM_VIEW_SIZE"); !size.empty()) {
+    unsigned w = 0, h = 0;
+    if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w < 16 || h < 16 || w > 4096 || h > 4096)
+      throw std::runtime_error("CURVEFOLD_SIM_VIEW_SIZE: expected WxH from 16 to 4096, got '" +
+                               size + "'");
+    config.viewWidth = w;
+    config.viewHeight = h;
+  }
+  std::stringstream events(env("CURVEFOLD_SIM_EVENTS"));
+  for (std::string item; std::getline(events, item, ',');) {
+    const auto colon = item.find(':');
+    std::size_t frame = 0;
+    if (colon == std::string::npos || std::sscanf(item.c_str(), "%zu", &frame) != 1)
+      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: expected FRAME:EVENT, got '" + item + "'");
+    const std::string event = item.substr(colon + 1);
+    if (event != "loss_pending" && event != "instance_loss" && event != "exit" &&
+        !event.starts_with("profile=/interaction_profiles/"))
+      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: unknown event '" + event + "'");
+    config.events[frame].push_back(event);
+  }
+  return config;
+}
+
+std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
+                                                 std::string_view profile) {
+  const int sheet = handedness_ == Handedness::Right ? 0 : 1;
+  const int point = 1 - sheet;
+  std::array<HandState, 2> hands;
+  hands[sheet].tracked = frame.sheetHand.tracked;
+  hands[sheet].pose = frame.sheetHand.pose;
+  hands[point].tracked = frame.pointHand.tracked;
+  // Aim straight ahead (-Z), so the tip kXrTipOffset ahead of the aim pose is the recorded point.
+  hands[point].pose = {frame.pointHand.position + glm::dvec3(0.0, 0.0, kXrTipOffset),
+                       glm::dquat(1.0, 0.0, 0.0, 0.0)};
+
+  const XrProfileControls* controls = nullptr;
+  for (const XrProfileControls& p : xrProfileControls())
+    if (p.profile == profile) controls = &p;
+  if (controls) {
+    auto press = [&](XrControl control, int hand, double value) {
+      const std::string_view side = hand == 0 ? "left" : "right";
+      bool pressed = false;
+      for (const XrControlBinding& binding : controls->bindings)
+        if (binding.control == control && binding.hand == side) {
+          // A click is all or nothing.
+          const float v = binding.input.ends_with("/click") ? (value >= 0.5 ? 1.0f : 0.0f)
+                                                            : static_cast<float>(value);
+          float& slot = hands[hand].inputs[std::string(binding.input)];
+          slot = std::max(slot, v);
+          pressed = true;
+        }
+      return pressed;
+    };
+    press(XrControl::Clutch, sheet, frame.sheetHand.clutch);
+    press(XrControl::Select, point, frame.pointHand.select);
+    press(XrControl::Cancel, point, frame.held(Button::Cancel) ? 1.0 : 0.0);
+    press(XrControl::Undo, sheet, frame.held(Button::Undo) ? 1.0 : 0.0);
+    press(XrControl::Redo, sheet, frame.held(Button::Redo) ? 1.0 : 0.0);
+    const double switching = frame.held(Button::SwitchHands) ? 1.0 : 0.0;
+    if (!press(XrControl::SwitchHands, point, switching))
+      press(XrControl::SwitchHands, sheet, switching);
+  }
+  const auto switchBit = static_cast<std::uint32_t>(Button::SwitchHands);
+  if ((frame.buttons & switchBit) && !(lastButtons_ & switchBit))
+    handedness_ = handedness_ == Handedness::Right ? Handedness::Left : Handedness::Right;
+  lastButtons_ = frame.buttons;
+  return hands;
+}
+
+Pose headPoseFor(const Pose& sheetFrame) {
+  const glm::dvec3 head = sheetFrame.position + glm::dvec3(0.0, 0.2, 0.35);
+  // lookAt gives view_from_world; the head's pose is its inverse.
+  const glm::dmat4 view = glm::lookAtRH(head, sheetFrame.position, glm::dvec3(0.0, 1.0, 0.0));
+  const glm::dquat orientation = glm::normalize(glm::conjugate(glm::quat_cast(glm::dmat3(view))));
+  return {head, orientation};
+}
+
+}  // namespace curvefold::simxr

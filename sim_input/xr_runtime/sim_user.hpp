@@ -1,0 +1,67 @@
+// What the simulated runtime serves (configured by environment variables, since the loader, not
+// the application, loads it) and the simulated user: controller states made from recorded input
+// frames by pressing what the controls table (interaction/xr_controls.hpp) says.
+//
+//   CURVEFOLD_SIM_INPUT       a recording (*.jsonl) or gesture script (*.gesture.json) to serve
+//   CURVEFOLD_SIM_PROFILE     the interaction profile to use (default: the first of oculus/touch,
+//                             valve/index, htc/vive, microsoft/motion, khr/simple suggested)
+//   CURVEFOLD_SIM_EVENTS      FRAME:EVENT,... with EVENT loss_pending, instance_loss, exit or
+//                             profile=/interaction_profiles/..., when that frame is served
+//   CURVEFOLD_SIM_HOLD=1      after the last frame, keep serving it instead of asking to exit
+//   CURVEFOLD_SIM_REALTIME=1  xrWaitFrame keeps the recording's pace
+//   CURVEFOLD_SIM_NO_HMD=1    no headset connected (xrGetSystem fails)
+//   CURVEFOLD_SIM_VIEW_SIZE   WxH of each view (default 512x512)
+//   CURVEFOLD_SIM_SAVE_VIEWS  a folder: each view's last image is written there as view<i>.png
+//   CURVEFOLD_SIM_LOG         a file: one line per state change, served frame, profile, haptic
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interaction/input_frame.hpp"
+#include "interaction/interaction_core.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::simxr {
+
+struct SimConfig {
+  std::optional<Recording> input;
+  std::string forcedProfile, saveViews, logPath;
+  std::map<std::size_t, std::vector<std::string>> events;  // by frame index
+  bool hold = false, realtime = false, noHmd = false;
+  std::uint32_t viewWidth = 512, viewHeight = 512;
+
+  // Throws std::runtime_error naming the variable and the problem.
+  static SimConfig fromEnvironment();
+};
+
+struct HandState {
+  bool tracked = false;
+  Pose pose;                                         // grip and aim alike
+  std::map<std::string, float, std::less<>> inputs;  // component ("/input/x/click") -> value
+};
+
+class SimUser {
+ public:
+  explicit SimUser(Handedness handedness) : handedness_(handedness) {}
+  // Both controllers (0 left, 1 right) for a frame, pressing the controls of `profile`; then
+  // switches hands when the frame newly presses SwitchHands, as the interaction core does.
+  std::array<HandState, 2> controllersFor(const InputFrame& frame, std::string_view profile);
+  Handedness handedness() const { return handedness_; }
+
+ private:
+  Handedness handedness_;
+  std::uint32_t lastButtons_ = 0;
+};
+
+// The head: 0.2 m above and 0.35 m behind the sheet frame's position, looking at it (paper
+// held at about 40 cm from the eyes).
+Pose headPoseFor(const Pose& sheetFrame);
+inline constexpr double kSimEyeSeparation = 0.063;
+
+}  // namespace curvefold::simxr

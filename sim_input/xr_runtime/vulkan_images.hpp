@@ -1,0 +1,51 @@
+// The simulated runtime's side of XR_KHR_vulkan_enable2: swapchain images made on the
+// application's device, handed over in the attachment layout the extension promises, and read
+// back to PNG (the runtime's "display").
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace curvefold::simxr {
+
+struct VulkanBinding {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  std::uint32_t queueFamily = 0;
+  std::uint32_t queueIndex = 0;
+};
+
+class SwapchainImages {
+ public:
+  SwapchainImages(const VulkanBinding& binding, VkFormat format, std::uint32_t width,
+                  std::uint32_t height, VkImageUsageFlags usage, std::uint32_t count);
+  ~SwapchainImages();
+  SwapchainImages(const SwapchainImages&) = delete;
+  SwapchainImages& operator=(const SwapchainImages&) = delete;
+
+  const std::vector<VkImage>& images() const { return images_; }
+  bool depth() const { return depth_; }
+  // Copies an image (in its attachment layout) to host memory and writes it as a PNG.
+  void savePng(std::uint32_t index, const std::filesystem::path& path) const;
+
+ private:
+  void release();
+  template <typename Record>
+  void submitOnce(Record record) const;
+
+  VulkanBinding binding_;
+  VkFormat format_;
+  std::uint32_t width_, height_;
+  bool depth_;
+  std::vector<VkImage> images_;
+  std::vector<VkDeviceMemory> memory_;
+};
+
+// Vulkan formats the runtime offers for swapchains on this device (colour, then depth).
+std::vector<std::int64_t> swapchainFormats(VkPhysicalDevice device);
+
+}  // namespace curvefold::simxr

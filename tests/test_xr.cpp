@@ -1,0 +1,320 @@
+// `curvefold xr` end to end through the real Khronos loader and the simulated runtime
+// (sim_input/openxr_runtime), which plays recorded hands through the controls table: the XR
+// session makes the folds a replay makes, its own recording replays to its design bit for bit,
+// both eyes see the sheet and its creases from their own positions, every profile's bindings
+// work, and the session lifecycle (exit, loss, instance loss, Ctrl+C, no runtime, no headset)
+// ends cleanly with nothing committed lost.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_test_support.hpp"
+#include "interaction/xr/xr_check.hpp"
+#include "interaction/xr/xr_input.hpp"
+#include "interaction/xr/xr_program.hpp"
+
+namespace curvefold {
+namespace {
+
+using namespace curvefold::testing;
+using nlohmann::json;
+
+const std::string kExamples = std::string(CURVEFOLD_SOURCE_DIR) + "/examples/recordings/";
+
+class XrApp : public CliTest {
+ protected:
+  // The environment that makes the loader use the simulated runtime serving `input`.
+  std::string simulated(const std::string& input, const std::string& more = "") const {
+    return "XR_RUNTIME_JSON=" + std::string(CURVEFOLD_SIM_RUNTIME_JSON) +
+           " CURVEFOLD_SIM_INPUT=" + input + " CURVEFOLD_SIM_LOG=" + path("sim.log").string() +
+           " " + more;
+  }
+  json load(const std::string& name) const { return json::parse(slurp(path(name))); }
+  // The folds `curvefold replay` makes of a recording.
+  json replayed(const std::string& recording, const std::string& name) const {
+    const CommandResult result = run("replay " + recording + " --out " + path(name).string());
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    const std::string stem = fs::path(recording).stem().string();
+    return json::parse(slurp(path(name) / (stem + ".curvefold.json")));
+  }
+};
+
+// Every number of two JSON values within `tolerance` (float poses from the runtime against the
+// recording's doubles), and the same shape.
+void expectClose(const json& a, const json& b, double tolerance, const std::string& where = "") {
+  ASSERT_EQ(a.type(), b.type()) << where;
+  if (a.is_number()) {
+    EXPECT_NEAR(a.get<double>(), b.get<double>(), tolerance) << where;
+  } else if (a.is_array()) {
+    ASSERT_EQ(a.size(), b.size()) << where;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      expectClose(a[i], b[i], tolerance, where + "[" + std::to_string(i) + "]");
+  } else if (a.is_object()) {
+    ASSERT_EQ(a.size(), b.size()) << where;
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      ASSERT_TRUE(b.contains(it.key())) << where << "." << it.key();
+      expectClose(it.value(), b[it.key()], tolerance, where + "." + it.key());
+    }
+  } else {
+    EXPECT_EQ(a, b) << where;
+  }
+}
+
+TEST_F(XrApp, RecordedSessionFoldsLikeTheReplayAndItsRecordingReplaysExactly) {
+  const std::string input = kExamples + "half_cylinder.jsonl";
+  const CommandResult result =
+      run("xr " + input + " --headless --record xr.jsonl --autosave xr.curvefold.json",
+          simulated(input));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  const json design = load("xr.curvefold.json");
+  const json reference = replayed(input, "reference");
+  ASSERT_GT(reference["folds"].size(), 0u);
+  // The runtime hands over poses as floats: the same folds, to float precision.
+  expectClose(design["folds"], reference["folds"], 1e-5, "folds");
+  EXPECT_EQ(design["surface"], reference["surface"]);
+  // What the XR source fed the core, recorded, replays to the very same design.
+  const json again = replayed(path("xr.jsonl").string(), "again");
+  EXPECT_EQ(again["folds"], design["folds"]);
+  EXPECT_NE(slurp(path("xr.jsonl")).find("\"source\":\"openxr\""), std::string::npos);
+  EXPECT_NE(
+      result.out.find(
+          "IDLE READY SYNCHRONIZED VISIBLE FOCUSED VISIBLE SYNCHRONIZED STOPPING IDLE EXITING"),
+      std::string::npos)
+      << result.out;
+  // Grab and commit ask the runtime for haptic pulses on the point hand.
+  EXPECT_NE(slurp(path("sim.log")).find("haptic /user/hand/right"), std::string::npos);
+}
+
+TEST_F(XrApp, BothEyesSeeTheSheetAndCreasesFromTheirOwnPositions) {
+  const std::string input = kExamples + "cone.jsonl";
+  const CommandResult result =
+      run("xr " + input + " --validation --autosave cone.curvefold.json",
+          simulated(input,
+                    "CURVEFOLD_SIM_VIEW_SIZE=320x288 CURVEFOLD_SIM_SAVE_VIEWS=" + dir_.string()));
+  ASSERT_EQ(result.exitCode, 0) << result.err << result.out;
+  EXPECT_GT(load("cone.curvefold.json")["folds"].size(), 0u);
+  struct Coverage {
+    int sheet = 0, red = 0, blue = 0;
+    double sheetX = 0.0;  // mean column of sheet pixels
+  } eyes[2];
+  std::vector<unsigned char> images[2];
+  for (int eye = 0; eye < 2; ++eye) {
+    const std::string file = path("view" + std::to_string(eye) + ".png").string();
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(pixels, nullptr) << file << "\n" << slurp(path("sim.log"));
+    EXPECT_EQ(w, 320);
+    EXPECT_EQ(h, 288);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const unsigned char* p = pixels + (std::size_t(y) * w + x) * 4;
+        const bool paper = p[0] > 200 && p[1] > 200 && p[2] > 185 && p[0] >= p[2];
+        const bool back = p[0] > 200 && p[1] > 100 && p[1] < 180 && p[2] < 110;
+        if (paper || back) {
+          ++eyes[eye].sheet;
+          eyes[eye].sheetX += x;
+        }
+        eyes[eye].red += p[0] > 170 && p[1] < 70 && p[2] < 70;
+        eyes[eye].blue += p[2] > 170 && p[0] < 70 && p[1] < 110;
+      }
+    images[eye].assign(pixels, pixels + std::size_t(w) * h * 4);
+    stbi_image_free(pixels);
+    eyes[eye].sheetX /= std::max(eyes[eye].sheet, 1);
+  }
+  for (const Coverage& eye : eyes) {
+    EXPECT_GT(eye.sheet, 320 * 288 / 200);  // the cone, 40 cm away in a 100-degree view
+    EXPECT_GT(eye.red + eye.blue, 20);      // the cone's folds left creases
+  }
+  EXPECT_NE(images[0], images[1]);
+  // The sheet lies ahead: the left eye sees it further right than the right eye does, by a few
+  // per cent of the width (eyes 6.3 cm apart, the sheet about 40 cm away).
+  const double disparity = eyes[0].sheetX - eyes[1].sheetX;
+  EXPECT_GT(disparity, 2.0);
+  EXPECT_LT(disparity, 80.0);
+}
+
+TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {
+  const std::string input = kExamples + "half_cylinder.jsonl";  // folds, undo and redo
+  const json reference = replayed(input, "reference");
+  for (const char* profile : {"oculus/touch_controller", "valve/index_controller",
+                              "htc/vive_controller", "microsoft/motion_controller"}) {
+    SCOPED_TRACE(profile);
+    const std::string design = std::string(profile).substr(0, std::string(profile).find('/'));
+    const CommandResult result = run(
+        "xr " + input + " --headless --autosave " + design + ".json",
+        simulated(input, "CURVEFOLD_SIM_PROFILE=/interaction_profiles/" + std::string(profile)));
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_NE(result.out.find(profile), std::string::npos) << result.out;
+    expectClose(load(design + ".json")["folds"], reference["folds"], 1e-5, "folds");
+  }
+  // The simple controller has no redo button: the cone (no buttons) folds the same.
+  const std::string cone = kExamples + "cone.jsonl";
+  const CommandResult simple =
+      run("xr " + cone + " --headless --autosave simple.json",
+          simulated(cone, "CURVEFOLD_SIM_PROFILE=/interaction_profiles/khr/simple_controller"));
+  ASSERT_EQ(simple.exitCode, 0) << simple.err;
+  expectClose(load("simple.json")["folds"], replayed(cone, "cone")["folds"], 1e-5, "folds");
+}
+
+TEST_F(XrApp, AProfileChangeMidSessionKeepsFolding) {
+  const std::string input = kExamples + "half_cylinder.jsonl";
+  const CommandResult result = run(
+      "xr " + input + " --headless --autosave changed.json",
+      simulated(input,
+                "CURVEFOLD_SIM_EVENTS=150:profile=/interaction_profiles/valve/index_controller"));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("valve/index_controller"), std::string::npos) << result.out;
+  expectClose(load("changed.json")["folds"], replayed(input, "reference")["folds"], 1e-5, "folds");
+}
+
+TEST_F(XrApp, ALostSessionIsRecreatedWithoutLosingFolds) {
+  const std::string input = kExamples + "star.jsonl";
+  const CommandResult result =
+      run("xr " + input + " --headless --record lost.jsonl --autosave lost.json",
+          simulated(input, "CURVEFOLD_SIM_EVENTS=170:loss_pending"));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("2 session(s)"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("LOSS_PENDING"), std::string::npos) << result.out;
+  const json design = load("lost.json");
+  expectClose(design["folds"], replayed(input, "reference")["folds"], 1e-5, "folds");
+  EXPECT_EQ(replayed(path("lost.jsonl").string(), "again")["folds"], design["folds"]);
+}
+
+TEST_F(XrApp, InstanceLossSavesCommittedFoldsAndSaysSo) {
+  const std::string input = kExamples + "star.jsonl";
+  const CommandResult result = run("xr " + input + " --headless --autosave lost.json",
+                                   simulated(input, "CURVEFOLD_SIM_EVENTS=250:instance_loss"));
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("instance loss"), std::string::npos) << result.err;
+  const json design = load("lost.json");
+  EXPECT_GT(design["folds"].size(), 0u);
+  EXPECT_LT(design["folds"].size(), replayed(input, "reference")["folds"].size());
+}
+
+TEST_F(XrApp, CtrlCEndsTheSessionCleanly) {
+  const std::string input = kExamples + "cone.jsonl";
+  const std::string command = "cd " + dir_.string() + " && exec env " +
+                              simulated(input, "CURVEFOLD_SIM_HOLD=1 CURVEFOLD_SIM_REALTIME=1") +
+                              " " + CURVEFOLD_BINARY + " xr " + input +
+                              " --headless --record held.jsonl --autosave held.json >" +
+                              path("out").string() + " 2>" + path("err").string();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until the session is focused and serving frames.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (slurp(path("sim.log")).find("frame 30") == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_NE(slurp(path("sim.log")).find("frame 30"), std::string::npos) << slurp(path("err"));
+  ASSERT_EQ(kill(child, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(path("err"));
+  const std::string out = slurp(path("out"));
+  EXPECT_NE(out.find("interrupted"), std::string::npos) << out;
+  EXPECT_NE(out.find("STOPPING IDLE EXITING"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists(path("held.json")));
+  // The recording was closed whole: it replays.
+  const CommandResult replay = run("replay held.jsonl --out again");
+  EXPECT_EQ(replay.exitCode, 0) << replay.err;
+}
+
+// The runtime checks suggested bindings against the specification's paths, as a real one does:
+// every profile's suggestions are accepted, and a path or type the profile lacks is refused.
+TEST(XrBindings, EveryListedProfileIsAcceptedAndAWrongPathIsNot) {
+  setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
+  unsetenv("CURVEFOLD_SIM_INPUT");
+  XrProgram program(XrProgramOptions{}, nullptr);
+  XrInput input(program.instance());
+  ASSERT_EQ(input.suggestions().size(), 5u);
+  for (const XrBindingSuggestion& suggestion : input.suggestions())
+    EXPECT_EQ(suggestion.result, XR_SUCCESS) << suggestion.profile;
+
+  auto path = [&](const char* text) {
+    XrPath result = XR_NULL_PATH;
+    CHECK_XR(xrStringToPath(program.instance(), text, &result));
+    return result;
+  };
+  XrActionSetCreateInfo setInfo{XR_TYPE_ACTION_SET_CREATE_INFO};
+  std::strcpy(setInfo.actionSetName, "probe");
+  std::strcpy(setInfo.localizedActionSetName, "Probe");
+  XrActionSet set = XR_NULL_HANDLE;
+  CHECK_XR(xrCreateActionSet(program.instance(), &setInfo, &set));
+  auto makeAction = [&](const char* name, XrActionType type) {
+    XrActionCreateInfo info{XR_TYPE_ACTION_CREATE_INFO};
+    info.actionType = type;
+    std::strcpy(info.actionName, name);
+    std::strcpy(info.localizedActionName, name);
+    XrAction action = XR_NULL_HANDLE;
+    CHECK_XR(xrCreateAction(set, &info, &action));
+    return action;
+  };
+  const XrAction button = makeAction("button", XR_ACTION_TYPE_BOOLEAN_INPUT);
+  const XrAction pose = makeAction("pose", XR_ACTION_TYPE_POSE_INPUT);
+  auto suggest = [&](const char* profile, XrAction action, const char* binding) {
+    const XrActionSuggestedBinding one{action, path(binding)};
+    XrInteractionProfileSuggestedBinding suggested{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
+    suggested.interactionProfile = path(profile);
+    suggested.countSuggestedBindings = 1;
+    suggested.suggestedBindings = &one;
+    return xrSuggestInteractionProfileBindings(program.instance(), &suggested);
+  };
+  const char* touch = "/interaction_profiles/oculus/touch_controller";
+  EXPECT_EQ(suggest(touch, button, "/user/hand/left/input/x/click"), XR_SUCCESS);
+  EXPECT_EQ(suggest(touch, button, "/user/hand/right/input/x/click"), XR_ERROR_PATH_UNSUPPORTED);
+  EXPECT_EQ(suggest(touch, pose, "/user/hand/left/input/trigger/value"), XR_ERROR_PATH_UNSUPPORTED);
+  EXPECT_EQ(suggest(touch, button, "/user/hand/left/input/grip/pose"), XR_ERROR_PATH_UNSUPPORTED);
+  EXPECT_EQ(suggest("/interaction_profiles/acme/wand", button, "/user/hand/left/input/x/click"),
+            XR_ERROR_PATH_UNSUPPORTED);
+  xrDestroyActionSet(set);
+}
+
+TEST_F(XrApp, NoRuntimeIsOneLineNamingXrRuntimeJson) {
+  const CommandResult result = run("xr", "XR_RUNTIME_JSON=" + path("missing.json").string());
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("XR_RUNTIME_JSON"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("curvefold design"), std::string::npos) << result.err;
+}
+
+TEST_F(XrApp, NoHeadsetIsOneLine) {
+  const CommandResult result =
+      run("xr --headless", simulated(kExamples + "cone.jsonl", "CURVEFOLD_SIM_NO_HMD=1"));
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("no headset"), std::string::npos) << result.err;
+}
+
+TEST_F(XrApp, PlainCurvefoldChoosesXrWhenAHeadsetIsThere) {
+  const std::string input = kExamples + "cone.jsonl";
+  // No display either way: with a headset it runs XR; without, one line naming both needs.
+  const CommandResult xr = run(
+      "", "env -u DISPLAY -u WAYLAND_DISPLAY " + simulated(input, "CURVEFOLD_SIM_EVENTS=5:exit"));
+  EXPECT_EQ(xr.exitCode, 0) << xr.err;
+  EXPECT_NE(xr.out.find("xr: "), std::string::npos) << xr.out;
+  const CommandResult none =
+      run("", "env -u DISPLAY -u WAYLAND_DISPLAY " + simulated(input, "CURVEFOLD_SIM_NO_HMD=1"));
+  EXPECT_EQ(none.exitCode, 1);
+  EXPECT_EQ(std::count(none.err.begin(), none.err.end(), '\n'), 1) << none.err;
+  EXPECT_NE(none.err.find("no headset"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("curvefold replay"), std::string::npos) << none.err;
+}
+
+}  // namespace
+}  // namespace curvefold
