@@ -2,7 +2,9 @@
 # The main job: installs what is needed, builds, and replays the bundled example recordings
 # (two-handed sessions on the paper's Figure 5 surfaces, and a desktop one) headlessly into a
 # gallery: per example the design, FOLD, SVG crease pattern, OBJ, the per-fold log, the checked
-# invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU).
+# invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
+# again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
+# last images.
 # Usage: scripts/main.sh [OUT]   (default out/gallery)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,4 +20,11 @@ for recording in examples/recordings/*.jsonl; do
   build/app/curvefold render "$out/$name/$name.curvefold.json" --png "$out/$name/$name.png" \
     --size 1280x720 --view iso --crease-pattern-panel
 done
+xr="$out/star-xr"
+mkdir -p "$xr"
+rm -f "$xr/star-xr.jsonl"  # a recording is never overwritten
+XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json \
+  CURVEFOLD_SIM_INPUT=examples/recordings/star.jsonl CURVEFOLD_SIM_SAVE_VIEWS="$xr" \
+  build/app/curvefold xr examples/recordings/star.jsonl --record "$xr/star-xr.jsonl" \
+  --autosave "$xr/star-xr.curvefold.json" >"$xr/xr.txt"
 echo "gallery written to $out"
