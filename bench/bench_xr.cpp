@@ -17,39 +17,13 @@
 #include <benchmark/benchmark.h>
 
 #include "app/xr/xr_app.hpp"
-#include "sim_input/gestures.hpp"
+#include "bench/dragging_session.hpp"
 #include "sim_input/recording.hpp"
 
 namespace curvefold {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Twelve drags of 4.7 s around the rim of the cylinder, every other one while the other hand
-// turns the sheet (as bench_replay, at 100k triangles).
-Recording sixtySecondsOfDragging() {
-  RecordingHeader header;
-  header.surface = GeneratedSurface{"cylinder", {{"resolution", 259}}};
-  header.sheetFrame = defaultSheetFrame();
-  header.rate = 90.0;
-  GestureRecorder recorder(header);
-  const double r = 0.045, top = 0.105;
-  for (int i = 0; i < 12; ++i) {
-    const double angle = i * 2.0 * std::numbers::pi / 12.0 + 0.1;
-    const double end = (i % 2 == 0) ? top : -top;
-    const glm::dvec3 grab{r * std::sin(angle), end, r * std::cos(angle)};
-    const glm::dvec3 inward{-0.5 * grab.x, -0.5 * end, -0.5 * grab.z};
-    std::vector<glm::dvec3> path;
-    for (int k = 1; k <= 6; ++k) {
-      const double s = k / 6.0;
-      path.push_back(grab + s * inward + glm::dvec3(0.01 * std::sin(3 * s), 0.0, 0.01 * s));
-    }
-    std::optional<SheetTurn> turn;
-    if (i % 2 == 1) turn = SheetTurn{{0.0, 1.0, 0.0}, 20.0};
-    recorder.drag(grab, path, 4.7, turn);
-  }
-  return recorder.recording();
-}
 
 struct XrLoop {
   fs::path dir;
@@ -60,7 +34,7 @@ struct XrLoop {
     fs::remove_all(dir);
     fs::create_directories(dir);
     const fs::path input = dir / "drag.jsonl";
-    writeRecording(sixtySecondsOfDragging(), input);
+    writeRecording(sixtySecondsOfDragging(259), input);  // ~100k triangles
     setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
     setenv("CURVEFOLD_SIM_INPUT", input.c_str(), 1);
     setenv("CURVEFOLD_SIM_HOLD", "1", 1);  // never ends: the benchmark decides

@@ -469,6 +469,12 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProperties(XrInstance handle,
   });
 }
 
+// A name into a fixed-size, always terminated buffer.
+void writeName(const std::string& name, char* buffer, std::size_t size) {
+  std::strncpy(buffer, name.c_str(), size - 1);
+  buffer[size - 1] = '\0';
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL resultToString(XrInstance handle, XrResult value,
                                               char buffer[XR_MAX_RESULT_STRING_SIZE]) {
   return guard([&] {
@@ -483,9 +489,8 @@ XRAPI_ATTR XrResult XRAPI_CALL resultToString(XrInstance handle, XrResult value,
 #undef CURVEFOLD_SIM_RESULT
           default : break;
     }
-    const std::string text = name ? name : "XR_UNKNOWN_" + std::to_string(int(value));
-    std::strncpy(buffer, text.c_str(), XR_MAX_RESULT_STRING_SIZE - 1);
-    buffer[XR_MAX_RESULT_STRING_SIZE - 1] = '\0';
+    writeName(name ? name : "XR_UNKNOWN_" + std::to_string(int(value)), buffer,
+              XR_MAX_RESULT_STRING_SIZE);
     return XR_SUCCESS;
   });
 }
@@ -504,10 +509,8 @@ XRAPI_ATTR XrResult XRAPI_CALL structureTypeToString(XrInstance handle, XrStruct
 #undef CURVEFOLD_SIM_TYPE
           default : break;
     }
-    const std::string text =
-        name ? name : "XR_UNKNOWN_STRUCTURE_TYPE_" + std::to_string(int(value));
-    std::strncpy(buffer, text.c_str(), XR_MAX_STRUCTURE_NAME_SIZE - 1);
-    buffer[XR_MAX_STRUCTURE_NAME_SIZE - 1] = '\0';
+    writeName(name ? name : "XR_UNKNOWN_STRUCTURE_TYPE_" + std::to_string(int(value)), buffer,
+              XR_MAX_STRUCTURE_NAME_SIZE);
     return XR_SUCCESS;
   });
 }
