@@ -18,23 +18,24 @@ layout(set = 0, binding = 0) uniform Frame {
   vec4 viewport;   // width, height in pixels
 } u;
 
-layout(location = 0) in vec3 worldPosition;
-layout(location = 1) in float reflected;
+layout(location = 0) noperspective in vec4 worldAndReflected;  // xyz: world position; w: reflected flag
 layout(location = 0) out vec4 outColor;
 
 void main() {
-  vec3 normal = normalize(cross(dFdx(worldPosition), dFdy(worldPosition)));
-  vec3 toEye = normalize(u.eye.xyz - worldPosition);
-  if (dot(normal, toEye) < 0.0) normal = -normal;
+  // The screen-space derivatives span the triangle's plane; with Vulkan's y-down framebuffer
+  // their cross product points away from the eye on either side of the paper, so its negation
+  // is the normal of the side seen.
+  vec3 normal = -normalize(cross(dFdx(worldAndReflected.xyz), dFdy(worldAndReflected.xyz)));
 
   vec3 base = gl_FrontFacing ? u.frontColor.rgb : u.backColor.rgb;
-  if (reflected > 1e-4)
+  if (worldAndReflected.w > 1e-4)
     base = mix(base, u.tintColor.rgb, u.tintColor.a);
 
-  vec3 light = normalize(u.lightDir.xyz);
-  float key = max(dot(normal, light), 0.0);
-  // A weak headlight keeps faces turned away from the key light readable.
-  float head = max(dot(normal, toEye), 0.0);
+  float key = max(dot(normal, u.lightDir.xyz), 0.0);  // lightDir comes normalized
+  // A weak headlight (along the view axis, the view matrix's third row) keeps faces turned away
+  // from the key light readable.
+  vec3 towardViewer = vec3(u.view[0][2], u.view[1][2], u.view[2][2]);
+  float head = max(dot(normal, towardViewer), 0.0);
   float ambient = u.lightDir.w;
   float shade = ambient + (1.0 - ambient) * (0.75 * key + 0.25 * head);
   outColor = vec4(base * shade, 1.0);

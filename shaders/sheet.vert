@@ -17,12 +17,11 @@ layout(set = 0, binding = 0) uniform Frame {
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in float inReflected;  // 1 for a vertex only reflected triangles share
-layout(location = 0) out vec3 worldPosition;
-layout(location = 1) out float reflected;
+// One varying slot: lavapipe sets up interpolation per slot per triangle.
+layout(location = 0) noperspective out vec4 worldAndReflected;
 
 void main() {
   vec4 world = u.model * vec4(inPosition, 1.0);
-  worldPosition = world.xyz;
-  reflected = inReflected;
+  worldAndReflected = vec4(world.xyz, inReflected);
   gl_Position = u.viewProj * world;
 }

@@ -115,6 +115,13 @@ TEST_F(Cli, BadSurfaceParametersAreRefused) {
   expectFailure("new star --resolution 2.5" + o, "resolution", out);
 }
 
+TEST_F(Cli, BadDesignerOptionsAreRefusedBeforeAWindowOpens) {
+  const fs::path autosave = path("w.autosave.curvefold.json");
+  const std::string a = " --autosave " + autosave.string();
+  expectFailure("design square --msaa 3" + a, "--msaa", autosave);
+  expectFailure("design square --msaa four" + a, "--msaa", autosave);
+}
+
 TEST_F(Cli, BadPointsAreRefused) {
   const std::string design = newDesign("square", "a.curvefold.json");
   const fs::path out = path("b.curvefold.json");

@@ -54,6 +54,7 @@ struct DesignerOptions {
   bool resume = false;
   bool validation = false;
   bool creasePatternPanel = false;
+  int msaa = 0;  // samples per pixel; 0: the device's interactive default
 };
 
 // GLFW's window, created and destroyed with glfwInit/glfwTerminate around it.
@@ -142,11 +143,17 @@ void runDesigner(const DesignerOptions& options) {
     return surface;
   };
   VulkanContext context(contextOptions);
-  SwapchainTarget target(context, [window] {
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
-    return VkExtent2D{std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
-  });
+  const VkSampleCountFlagBits samples =
+      options.msaa > 0 ? context.sampleCountUpTo(static_cast<VkSampleCountFlagBits>(options.msaa))
+                       : context.interactiveSampleCount();
+  SwapchainTarget target(
+      context,
+      [window] {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window, &w, &h);
+        return VkExtent2D{std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
+      },
+      samples);
   FrameRing frames(context);
   SceneRenderer renderer(context, target);
   SessionSheetTracker tracker;
@@ -443,6 +450,10 @@ void addDesignCommand(CLI::App& app) {
   command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
                     "Show the crease pattern as a side view (also a checkbox in the panel)");
   command->add_option("--size", options->size, "Window size WxH (default 1280x720)");
+  command
+      ->add_option("--msaa", options->msaa,
+                   "Samples per pixel (default: 4 on a GPU, 1 on a CPU driver such as lavapipe)")
+      ->check(CLI::IsMember({1, 2, 4, 8}));
   command->add_option("--screenshot-on-exit", options->screenshotOnExit,
                       "Write the last frame's scene to this PNG when the window closes");
   command->callback([options] { runDesigner(*options); });

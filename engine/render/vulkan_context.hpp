@@ -100,8 +100,13 @@ class VulkanContext {
   const VkPhysicalDeviceProperties& properties() const { return choice_.properties; }
   std::string deviceName() const { return choice_.properties.deviceName; }
 
+  // A driver that rasterizes on the CPU (lavapipe).
+  bool cpuDevice() const { return choice_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   // Largest sample count usable for both colour and depth framebuffers, at most `wanted`.
   VkSampleCountFlagBits sampleCountUpTo(VkSampleCountFlagBits wanted) const;
+  // The sample count for interactive views (window, headset): 4x MSAA on a GPU, none on a CPU
+  // device, where 4x costs lavapipe about 20 ms a frame at 1280x720 (README, Performance).
+  VkSampleCountFlagBits interactiveSampleCount() const;
   // A memory type among typeBits with all the flags; throws VulkanError when there is none.
   std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags flags) const;
   // Prefers `preferred`, falls back to any type in typeBits.
