@@ -230,6 +230,30 @@ TEST(ReflectionWorkspace, IncrementalUpdatesMatchFreshReflection) {
   EXPECT_TRUE(identical(temporal, grid));
 }
 
+// reapply() skips writing back what the new fold moves again; the result must not show it. The
+// targets alternate between large and small reflected parts, and one plane reflects nothing.
+TEST(ReflectionWorkspace, ReapplyMatchesRestoreThenApply) {
+  const Sheet grid = flatGrid(12, 9, 0.02);
+  const SheetAdjacency adjacency = buildAdjacency(grid);
+  const double epsilon = sheetEpsilon(grid);
+  ReflectionWorkspace workspace;
+  Sheet temporal = grid;
+  const glm::dvec3 start = grid.positions[5];
+  const ReflectionPlane throughSeed{start, {1.0, 0.0, 0.0}};
+  const std::vector<ReflectionPlane> planes = {
+      bisectorPlane(start, {0.2, 0.0, 0.0}),    bisectorPlane(start, {0.02, 0.01, 0.03}),
+      bisectorPlane(start, {0.1, 0.05, 0.05}),  throughSeed,
+      bisectorPlane(start, {0.05, 0.1, -0.02}), bisectorPlane(start, {0.2, 0.0, 0.0}),
+      bisectorPlane(start, {0.02, 0.01, 0.03})};
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    workspace.reapply(grid, adjacency, 5, planes[i], epsilon, temporal);
+    const Sheet fresh = reflect(grid, adjacency, 5, planes[i], epsilon).sheet;
+    EXPECT_TRUE(identical(temporal, fresh)) << "plane " << i;
+  }
+  workspace.restore(grid, temporal);
+  EXPECT_TRUE(identical(temporal, grid));
+}
+
 TEST(SurfacePoint, InsertingAPointKeepsTheSheetValid) {
   const Sheet grid = flatGrid(3, 3, 0.1);
   // Inside a triangle: one vertex, two more triangles.

@@ -66,17 +66,17 @@ glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
 
 const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   if (!dragging_) throw std::logic_error("updateDrag without a drag in progress");
-  workspace_.restore(fixed_, temporal_);
   target_ = target;
   // The seed sits at distance -|target - grabbed|/2 from the bisector; closer than epsilon to the
   // plane means no fold at all (a target equal to the grabbed point is a no-op, not an error).
   folded_ = glm::distance(target, grabbed_) > 2.0 * epsilon_;
   if (!folded_) {
+    workspace_.restore(fixed_, temporal_);
     workspace_.clear();
     return workspace_.changes();
   }
   plane_ = bisectorPlane(grabbed_, target);
-  workspace_.apply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
+  workspace_.reapply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
   return workspace_.changes();
 }
 

@@ -39,21 +39,28 @@ double quality(const std::vector<glm::dvec2>& dev, VertexIndex a, VertexIndex b,
   return cross2(ab, dev[c] - dev[a]) / longest;
 }
 
-// Side of a vertex: -1 strictly behind the plane (the seed's side), 0 on it, +1 in front.
-int sideOf(double d, double epsilon) {
+// Side of a distance: -1 strictly behind the plane (the seed's side), 0 on it, +1 in front.
+int sideOfDistance(double d, double epsilon) {
   return d < -epsilon ? -1 : (d > epsilon ? 1 : 0);
 }
 
 }  // namespace
 
+int ReflectionWorkspace::sideOf(VertexIndex v, double epsilon) const {
+  return reached(v) ? -1 : sideOfDistance(distances_[v], epsilon);
+}
+
 void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCount) {
-  if (vertices_.size() < vertexCount) vertices_.resize(vertexCount);
+  if (vertexMarks_.size() < vertexCount) {
+    vertexMarks_.resize(vertexCount, 0);
+    distances_.resize(vertexCount, 0.0);
+  }
   if (triangleSeen_.size() < triangleCount) {
     triangleSeen_.resize(triangleCount, 0);
     triangleCrossed_.resize(triangleCount, 0);
   }
-  if (++stamp_ == 0) {  // wrapped: old stamps could alias the new one
-    std::fill(vertices_.begin(), vertices_.end(), VertexState{});
+  if (++stamp_ == 0x80000000u) {  // vertex marks would wrap: old marks could alias new ones
+    std::fill(vertexMarks_.begin(), vertexMarks_.end(), 0);
     std::fill(triangleSeen_.begin(), triangleSeen_.end(), 0);
     std::fill(triangleCrossed_.begin(), triangleCrossed_.end(), 0);
     stamp_ = 1;
@@ -73,16 +80,39 @@ void ReflectionWorkspace::fill(const Sheet& sheet, const SheetAdjacency& adjacen
   boundaryVertices_.clear();
   reached.push_back(seed);
   out.positions[seed] = plane.reflect(sheet.positions[seed]);
+  // Raw pointers: the compiler cannot tell that the writes below leave the vectors alone.
+  std::uint32_t* const marks = vertexMarks_.data();
+  double* const distances = distances_.data();
+  const glm::dvec3* const positions = sheet.positions.data();
+  glm::dvec3* const moved = out.positions.data();
+  const std::uint32_t* const rowStart = adjacency.neighbors.offsets.data();
+  const VertexIndex* const neighbors = adjacency.neighbors.vertices.data();
+  const std::uint32_t visitedMark = this->visitedMark(), reachedMark = this->reachedMark();
+  // On a big sheet every step waits on memory; the queue says which vertices come next, so their
+  // rows and their neighbours' records are fetched a few steps ahead.
+  constexpr std::size_t kRowsAhead = 32, kNeighborsAhead = 16;
   for (std::size_t next = 0; next < reached.size(); ++next) {
-    for (VertexIndex w : adjacency.neighbors.of(reached[next])) {
-      VertexState& state = vertices_[w];
-      if (state.visited == stamp_) continue;
-      state.visited = stamp_;
-      state.distance = plane.signedDistance(sheet.positions[w]);
-      if (state.distance < -epsilon) {
+    if (next + kRowsAhead < reached.size())
+      __builtin_prefetch(neighbors + rowStart[reached[next + kRowsAhead]]);
+    if (next + kNeighborsAhead < reached.size()) {
+      const VertexIndex ahead = reached[next + kNeighborsAhead];
+      for (std::uint32_t i = rowStart[ahead]; i < rowStart[ahead + 1]; ++i) {
+        __builtin_prefetch(marks + neighbors[i]);
+        __builtin_prefetch(positions + neighbors[i]);
+      }
+    }
+    const VertexIndex v = reached[next];
+    for (std::uint32_t i = rowStart[v]; i < rowStart[v + 1]; ++i) {
+      const VertexIndex w = neighbors[i];
+      if (marks[w] >= visitedMark) continue;
+      const double distance = plane.signedDistance(positions[w]);
+      if (distance < -epsilon) {
+        marks[w] = reachedMark;
         reached.push_back(w);
-        out.positions[w] = plane.reflect(sheet.positions[w]);
+        moved[w] = plane.reflect(positions[w]);
       } else {
+        marks[w] = visitedMark;
+        distances[w] = distance;
         boundaryVertices_.push_back(w);
       }
     }
@@ -101,11 +131,10 @@ void ReflectionWorkspace::classifyBoundary(const Sheet& sheet, const SheetAdjace
       triangleSeen_[t] = stamp_;
       // Every vertex of a triangle with a reached vertex was visited, so its distance is known.
       const Triangle& tri = sheet.triangles[t];
-      if (!reached(tri[0], epsilon) && !reached(tri[1], epsilon) && !reached(tri[2], epsilon))
-        continue;
+      if (!reached(tri[0]) && !reached(tri[1]) && !reached(tri[2])) continue;
       int positive = 0, onPlane = 0;
       for (VertexIndex v : tri) {
-        const int side = sideOf(vertices_[v].distance, epsilon);
+        const int side = sideOf(v, epsilon);
         positive += side > 0;
         onPlane += side == 0;
       }
@@ -145,10 +174,10 @@ const std::vector<TriangleIndex>& ReflectionWorkspace::reflectedTriangles(
 
 std::size_t ReflectionWorkspace::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(vertices_) + bytes(triangleSeen_) + bytes(triangleCrossed_) +
-         bytes(triangleListed_) + bytes(boundaryVertices_) + bytes(crossedTriangles_) +
-         bytes(hingeTriangles_) + bytes(reflectedPieces_) + bytes(reflected_) +
-         bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
+  return bytes(vertexMarks_) + bytes(distances_) + bytes(previousMoved_) + bytes(triangleSeen_) +
+         bytes(triangleCrossed_) + bytes(triangleListed_) + bytes(boundaryVertices_) +
+         bytes(crossedTriangles_) + bytes(hingeTriangles_) + bytes(reflectedPieces_) +
+         bytes(reflected_) + bytes(changes_.movedVertices) + bytes(changes_.rewrittenTriangles) +
          bytes(changes_.triangleOrigin);
 }
 
@@ -171,10 +200,12 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
   changes_.firstNewVertex = sheet.vertexCount();
   changes_.firstNewTriangle = sheet.triangleCount();
   resize(sheet.vertexCount(), sheet.triangleCount());
-  VertexState& seedState = vertices_[seed];
-  seedState.visited = stamp_;
-  seedState.distance = plane.signedDistance(sheet.positions[seed]);
-  if (!(seedState.distance < -epsilon)) return;  // nothing on the seed's side
+  const double seedDistance = plane.signedDistance(sheet.positions[seed]);
+  if (!(seedDistance < -epsilon)) {  // nothing on the seed's side
+    vertexMarks_[seed] = visitedMark();
+    return;
+  }
+  vertexMarks_[seed] = reachedMark();
 
   fill(sheet, adjacency, seed, plane, epsilon, out);
   classifyBoundary(sheet, adjacency, epsilon);
@@ -189,7 +220,11 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
     auto [it, inserted] =
         cuts_.try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
     if (inserted) {
-      const double da = vertices_[e.a].distance, db = vertices_[e.b].distance;
+      // A reached vertex's distance was not kept; the same expression gives the same bits.
+      auto distanceOf = [&](VertexIndex v) {
+        return reached(v) ? plane.signedDistance(sheet.positions[v]) : distances_[v];
+      };
+      const double da = distanceOf(e.a), db = distanceOf(e.b);
       const double t = da / (da - db);
       out.positions.push_back(sheet.positions[e.a] +
                               t * (sheet.positions[e.b] - sheet.positions[e.a]));
@@ -244,21 +279,20 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
   for (TriangleIndex t : hingeTriangles_) {
     const Triangle& tri = sheet.triangles[t];
     int i = 0;
-    while (sideOf(vertices_[tri[i]].distance, epsilon) == 0) ++i;  // the one vertex off the plane
+    while (sideOf(tri[i], epsilon) == 0) ++i;  // the one vertex off the plane
     const VertexIndex u = tri[(i + 1) % 3], w = tri[(i + 2) % 3];
     for (TriangleIndex other : adjacency.triangles.of(u)) {
       if (other == t) continue;
       const Triangle& o = sheet.triangles[other];
       if (o[0] != w && o[1] != w && o[2] != w) continue;
-      if (!reached(o[0], epsilon) && !reached(o[1], epsilon) && !reached(o[2], epsilon))
-        newTags_.push_back({Edge::of(u, w)});
+      if (!reached(o[0]) && !reached(o[1]) && !reached(o[2])) newTags_.push_back({Edge::of(u, w)});
     }
   }
 
   for (TriangleIndex t : crossedTriangles_) {
     const Triangle tri = sheet.triangles[t];
     std::array<int, 3> side;
-    for (int i = 0; i < 3; ++i) side[i] = sideOf(vertices_[tri[i]].distance, epsilon);
+    for (int i = 0; i < 3; ++i) side[i] = sideOf(tri[i], epsilon);
     // Clip the triangle by the plane, keeping the vertex order (so the development stays CCW).
     std::array<VertexIndex, 4> negative{}, positive{};
     int negativeCount = 0, positiveCount = 0;
@@ -313,6 +347,20 @@ void ReflectionWorkspace::restore(const Sheet& sheet, Sheet& out) const {
   out.development.resize(sheet.vertexCount());
   out.triangles.resize(sheet.triangleCount());
   out.tags = sheet.tags;
+}
+
+void ReflectionWorkspace::reapply(const Sheet& sheet, const SheetAdjacency& adjacency,
+                                  VertexIndex seed, const ReflectionPlane& plane, double epsilon,
+                                  Sheet& out) {
+  for (TriangleIndex t : changes_.rewrittenTriangles) out.triangles[t] = sheet.triangles[t];
+  out.positions.resize(sheet.vertexCount());
+  out.development.resize(sheet.vertexCount());
+  out.triangles.resize(sheet.triangleCount());
+  previousMoved_.swap(changes_.movedVertices);
+  apply(sheet, adjacency, seed, plane, epsilon, out);
+  for (VertexIndex v : previousMoved_)
+    if (!reached(v)) out.positions[v] = sheet.positions[v];
+  if (!reached(seed)) out.tags = sheet.tags;  // apply() rebuilt them otherwise
 }
 
 ReflectionResult reflect(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,

@@ -57,6 +57,10 @@ class ReflectionWorkspace {
              const ReflectionPlane& plane, double epsilon, Sheet& out);
   // Puts `out` back to `sheet` by undoing the last apply() (cost proportional to what changed).
   void restore(const Sheet& sheet, Sheet& out) const;
+  // restore() then apply(), except that positions the new fold moves again are not first written
+  // back: a drag moves mostly the same vertices frame after frame.
+  void reapply(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
+               const ReflectionPlane& plane, double epsilon, Sheet& out);
   // Forgets the last apply(), for when `out` has been reset to `sheet` by other means.
   void clear();
 
@@ -67,25 +71,29 @@ class ReflectionWorkspace {
   const std::vector<TriangleIndex>& reflectedTriangles(const SheetAdjacency& adjacency);
 
  private:
-  // Per-vertex scratch in one record so the fill touches one cache line per vertex.
-  struct VertexState {
-    double distance = 0.0;  // signed distance, valid when visited == stamp_
-    std::uint32_t visited =
-        0;  // == stamp_: distance known (the seed or a neighbour of a reached vertex)
-    std::uint32_t unused = 0;
-  };
-
   void resize(std::size_t vertexCount, std::size_t triangleCount);
   void fill(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
             const ReflectionPlane& plane, double epsilon, Sheet& out);
   void classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
-  bool reached(VertexIndex v, double epsilon) const {
-    return vertices_[v].visited == stamp_ && vertices_[v].distance < -epsilon;
-  }
+  // Marks of the current apply(): every visited vertex has at least visitedMark(); reached ones
+  // (strictly on the seed's side, reflected) have reachedMark().
+  std::uint32_t visitedMark() const { return 2 * stamp_; }
+  std::uint32_t reachedMark() const { return 2 * stamp_ + 1; }
+  bool reached(VertexIndex v) const { return vertexMarks_[v] == reachedMark(); }
+  // Of a visited vertex: -1 reached (strictly on the seed's side), 0 on the plane, +1 beyond.
+  int sideOf(VertexIndex v, double epsilon) const;
 
   ReflectionChanges changes_;
+  std::vector<VertexIndex> previousMoved_;  // reapply(): what the last apply() moved
   std::uint32_t stamp_ = 0;
-  std::vector<VertexState> vertices_;
+  // Per vertex, visitedMark() or more when its distance is known (the seed or a neighbour of a
+  // reached vertex). Apart from the distances because the fill checks every neighbour of every
+  // reached vertex but computes a distance once: a dense array of marks keeps those checks, and
+  // the later "was it reached?" ones, in cache.
+  std::vector<std::uint32_t> vertexMarks_;
+  // Signed distance to the plane of each visited vertex that was not reached (only a cut needs a
+  // reached vertex's distance, and recomputes it).
+  std::vector<double> distances_;
   std::vector<std::uint32_t> triangleSeen_;      // == stamp_: classified by classifyBoundary
   std::vector<std::uint32_t> triangleCrossed_;   // == stamp_: split by the plane
   std::vector<std::uint32_t> triangleListed_;    // == listStamp_: in reflected_
