@@ -89,12 +89,16 @@ void ReflectionWorkspace::fill(const Sheet& sheet, const SheetAdjacency& adjacen
   const VertexIndex* const neighbors = adjacency.neighbors.vertices.data();
   const std::uint32_t visitedMark = this->visitedMark(), reachedMark = this->reachedMark();
   // On a big sheet every step waits on memory; the queue says which vertices come next, so their
-  // rows and their neighbours' records are fetched a few steps ahead.
+  // rows and their neighbours' records are fetched a few steps ahead. A sheet whose per-vertex
+  // arrays (about 90 bytes a vertex) fit in the caches only pays for the extra work (bench_drag:
+  // about 10% slower at 50k vertices, 20% faster at 500k).
   constexpr std::size_t kRowsAhead = 32, kNeighborsAhead = 16;
+  constexpr std::size_t kPrefetchFromVertices = 150'000;
+  const bool prefetch = sheet.vertexCount() >= kPrefetchFromVertices;
   for (std::size_t next = 0; next < reached.size(); ++next) {
-    if (next + kRowsAhead < reached.size())
+    if (prefetch && next + kRowsAhead < reached.size())
       __builtin_prefetch(neighbors + rowStart[reached[next + kRowsAhead]]);
-    if (next + kNeighborsAhead < reached.size()) {
+    if (prefetch && next + kNeighborsAhead < reached.size()) {
       const VertexIndex ahead = reached[next + kNeighborsAhead];
       for (std::uint32_t i = rowStart[ahead]; i < rowStart[ahead + 1]; ++i) {
         __builtin_prefetch(marks + neighbors[i]);
