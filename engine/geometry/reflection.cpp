@@ -214,7 +214,9 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
   fill(sheet, adjacency, seed, plane, epsilon, out);
   classifyBoundary(sheet, adjacency, epsilon);
 
-  cuts_.clear();
+  cuts_.reset();
+  cutMemory_.release();
+  cuts_.emplace(2 * crossedTriangles_.size(), &cutMemory_);
   newTags_.clear();
   // The vertex where the plane cuts edge e, shared by both triangles of the edge. Interpolated
   // from the lower-numbered end so either triangle computes the same point; 3D and development
@@ -222,7 +224,7 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
   auto cutVertex = [&](VertexIndex u, VertexIndex w) {
     const Edge e = Edge::of(u, w);
     auto [it, inserted] =
-        cuts_.try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
+        cuts_->try_emplace(edgeKey(e), static_cast<VertexIndex>(out.vertexCount()));
     if (inserted) {
       // A reached vertex's distance was not kept; the same expression gives the same bits.
       auto distanceOf = [&](VertexIndex v) {

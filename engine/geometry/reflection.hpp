@@ -7,6 +7,8 @@
 // cut edge. Triangles the plane crosses but the fill never reaches are left alone [Fig. 3].
 #pragma once
 
+#include <memory_resource>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -43,8 +45,8 @@ struct ReflectionChanges {
 };
 
 // Reusable buffers and the in-place form used while dragging: `out` must equal `sheet` except for
-// what the previous call changed, which restore() puts back first. Results are identical to
-// reflect() bit for bit.
+// what the previous call changed, which restore() puts back first (or reapply() as it goes).
+// Results are identical to reflect() bit for bit.
 //
 // The fill floods vertices, not triangles: only triangles around the boundary of the reached part
 // are looked at (to split or hinge them), so the cost of an update is a few memory touches per
@@ -104,7 +106,10 @@ class ReflectionWorkspace {
   std::vector<TriangleIndex> reflected_;
   std::uint32_t listStamp_ = 0;
   bool reflectedReady_ = false;
-  std::unordered_map<std::uint64_t, VertexIndex> cuts_;  // cut vertex of each split edge
+  // Cut vertex of each split edge. Its nodes come from a buffer that is released, not freed node
+  // by node, before each apply(): a drag makes hundreds of cuts a frame.
+  std::pmr::monotonic_buffer_resource cutMemory_;
+  std::optional<std::pmr::unordered_map<std::uint64_t, VertexIndex>> cuts_;
   std::vector<Edge> splitEdges_;
   std::vector<TaggedEdge> newTags_;
   std::vector<TaggedEdge> keptTags_;
