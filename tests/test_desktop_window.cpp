@@ -86,6 +86,63 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   EXPECT_EQ(replayed["surface"], saved["surface"]);
 }
 
+// Resizing the window: the swapchain follows it (the exit screenshot has the new size and shows
+// the sheet) and the mouse picks through the new size. The view keeps its camera, so a vertex
+// appears where that camera projects it into the larger window.
+TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
+  if (!have("Xvfb") || !have("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+  ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
+  constexpr int kNewWidth = 900, kNewHeight = 560;
+  const Sheet sheet = makeSurface("square");
+  const OrbitCamera camera = OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
+  const glm::dvec3 aim(0.07, 0.05, 0.0);  // right of the panel, above the middle
+  std::size_t vertex = 0;
+  for (std::size_t i = 0; i < sheet.positions.size(); ++i)
+    if (glm::length(sheet.positions[i] - aim) < glm::length(sheet.positions[vertex] - aim))
+      vertex = i;
+  const glm::dvec2 from = camera.project(sheet.positions[vertex], kNewWidth, kNewHeight);
+  const glm::dvec2 to = camera.project({0.0, 0.05, 0.0}, kNewWidth, kNewHeight);
+  // Where the same pixel would land if the designer still used the old size: far from it.
+  ASSERT_GT(glm::length(from - camera.project(sheet.positions[vertex], kWidth, kHeight)), 50.0);
+
+  const fs::path autosave = dir() / "auto.curvefold.json", screenshot = dir() / "shot.png",
+                 log = dir() / "designer.log";
+  const std::string window = startDesigner(
+      "square --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --autosave " +
+          autosave.string() + " --screenshot-on-exit " + screenshot.string(),
+      log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  ASSERT_EQ(shell("sleep 1 && " + env() + "xdotool windowsize " + window + " " +
+                  std::to_string(kNewWidth) + " " + std::to_string(kNewHeight) + " && sleep 1 && " +
+                  drag(from, to) + key("ctrl+q")),
+            0);
+  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+  EXPECT_EQ(slurp(log), "");
+
+  // One fold, grabbed at the vertex under the pointer (within a few pixels' worth of paper).
+  ASSERT_TRUE(fs::exists(autosave)) << slurp(log);
+  const nlohmann::json folds = nlohmann::json::parse(slurp(autosave))["folds"];
+  ASSERT_EQ(folds.size(), 1u);
+  const glm::dvec3 grabbed(folds[0]["grabbed"][0].get<double>(),
+                           folds[0]["grabbed"][1].get<double>(),
+                           folds[0]["grabbed"][2].get<double>());
+  EXPECT_LT(glm::length(grabbed - sheet.positions[vertex]), 0.003)
+      << "grabbed " << grabbed.x << ", " << grabbed.y;
+
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(screenshot.c_str(), &w, &h, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(w, kNewWidth);
+  EXPECT_EQ(h, kNewHeight);
+  int paper = 0;
+  for (int i = 0; i < w * h; ++i) {
+    const unsigned char* p = pixels + std::size_t(i) * 4;
+    paper += p[0] > 200 && p[1] > 200 && p[2] > 190 && p[0] >= p[2];
+  }
+  EXPECT_GT(paper, w * h / 20);
+  stbi_image_free(pixels);
+}
+
 TEST_F(DesktopWindow, NoDisplayIsOneLineAndNonZero) {
   const fs::path err = dir() / "err";
   const int code = shell("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(CURVEFOLD_BINARY) +
