@@ -346,22 +346,24 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
       out.tags.end());
 }
 
-void ReflectionWorkspace::restore(const Sheet& sheet, Sheet& out) const {
-  for (VertexIndex v : changes_.movedVertices) out.positions[v] = sheet.positions[v];
+// What restore() and reapply() both put back: the rewritten triangles and the arrays' lengths.
+void ReflectionWorkspace::restoreTopology(const Sheet& sheet, Sheet& out) const {
   for (TriangleIndex t : changes_.rewrittenTriangles) out.triangles[t] = sheet.triangles[t];
   out.positions.resize(sheet.vertexCount());
   out.development.resize(sheet.vertexCount());
   out.triangles.resize(sheet.triangleCount());
+}
+
+void ReflectionWorkspace::restore(const Sheet& sheet, Sheet& out) const {
+  for (VertexIndex v : changes_.movedVertices) out.positions[v] = sheet.positions[v];
+  restoreTopology(sheet, out);
   out.tags = sheet.tags;
 }
 
 void ReflectionWorkspace::reapply(const Sheet& sheet, const SheetAdjacency& adjacency,
                                   VertexIndex seed, const ReflectionPlane& plane, double epsilon,
                                   Sheet& out) {
-  for (TriangleIndex t : changes_.rewrittenTriangles) out.triangles[t] = sheet.triangles[t];
-  out.positions.resize(sheet.vertexCount());
-  out.development.resize(sheet.vertexCount());
-  out.triangles.resize(sheet.triangleCount());
+  restoreTopology(sheet, out);
   previousMoved_.swap(changes_.movedVertices);
   apply(sheet, adjacency, seed, plane, epsilon, out);
   for (VertexIndex v : previousMoved_)

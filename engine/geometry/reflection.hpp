@@ -77,6 +77,7 @@ class ReflectionWorkspace {
   void fill(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
             const ReflectionPlane& plane, double epsilon, Sheet& out);
   void classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
+  void restoreTopology(const Sheet& sheet, Sheet& out) const;
   // Marks of the current apply(): every visited vertex has at least visitedMark(); reached ones
   // (strictly on the seed's side, reflected) have reachedMark().
   std::uint32_t visitedMark() const { return 2 * stamp_; }
