@@ -230,6 +230,7 @@ void XrVulkanGraphics::initializeDevice(XrInstance instance, XrSystemId system) 
     return vulkan;
   };
   context_ = std::make_unique<VulkanContext>(options);
+  binding_.type = XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR;
   binding_.instance = context_->instance();
   binding_.physicalDevice = context_->physicalDevice();
   binding_.device = context_->device();

@@ -87,7 +87,7 @@ class XrVulkanGraphics : public XrGraphics {
   bool validation_;
   XrInstance instance_ = XR_NULL_HANDLE;
   std::unique_ptr<VulkanContext> context_;
-  XrGraphicsBindingVulkan2KHR binding_{XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR};
+  XrGraphicsBindingVulkan2KHR binding_{};
   std::vector<std::unique_ptr<XrEyeTarget>> targets_;
   std::unique_ptr<FrameRing> frames_;
   std::unique_ptr<SceneRenderer> renderer_;
