@@ -115,7 +115,8 @@ bool soak(const std::string& name, const Options& options) {
 
 int main(int argc, char** argv) {
   curvefold::Options options;
-  for (int i = 1; i < argc; ++i) {
+  // Options come in pairs: --name value.
+  for (int i = 1; i < argc; i += 2) {
     const std::string arg = argv[i];
     const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
     if (!value) {
@@ -134,7 +135,6 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "curvefold_soak: unknown option %s\n", arg.c_str());
       return 2;
     }
-    ++i;
   }
   bool ok = true;
   for (const curvefold::SurfaceInfo& surface : curvefold::surfaceCatalog())

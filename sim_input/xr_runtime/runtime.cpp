@@ -183,7 +183,7 @@ const char* stateName(XrSessionState state) {
   switch (state) {
 #define CURVEFOLD_SIM_STATE(name, value) \
   case name:                             \
-    return #name + 17;  // after "XR_SESSION_STATE_"
+    return &#name[17];  // after "XR_SESSION_STATE_"
     XR_LIST_ENUM_XrSessionState(CURVEFOLD_SIM_STATE)
 #undef CURVEFOLD_SIM_STATE
         default : return "?";
