@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 
@@ -83,6 +82,12 @@ class DesktopTest : public ::testing::Test {
   // window and returns the window id, or "" when none appeared. The pid is designer().
   std::string startDesigner(const std::string& arguments, const fs::path& log) {
     const fs::path pidFile = dir_ / "designer.pid", windowFile = dir_ / "window";
+    // The window of an earlier designer (killed, say) can outlive its process for a moment in the
+    // X server, and the next client may even get the same window id: wait until it is gone.
+    for (int i = 0; i < 100 && !window_.empty(); ++i) {
+      if (shell(env() + "xdotool search --name '^curvefold$' >/dev/null 2>&1") != 0) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
     shell(env() + "timeout 120 " + CURVEFOLD_BINARY + " design " + arguments + " >" + log.string() +
           " 2>&1 & echo $! >" + pidFile.string());
     designer_ = std::atoi(slurp(pidFile).c_str());
