@@ -211,47 +211,49 @@ TEST(Reflection, RandomFoldsKeepEveryInvariant) {
   }
 }
 
-// The in-place workspace (restore, then apply) gives exactly what a fresh reflect() gives.
-TEST(ReflectionWorkspace, IncrementalUpdatesMatchFreshReflection) {
+// The in-place workspace must give exactly what a fresh reflect() gives, update after update. The
+// planes alternate between large and small reflected parts, and one reflects nothing.
+class ReflectionWorkspaceUpdates : public ::testing::Test {
+ protected:
   const Sheet grid = flatGrid(12, 9, 0.02);
   const SheetAdjacency adjacency = buildAdjacency(grid);
   const double epsilon = sheetEpsilon(grid);
-  ReflectionWorkspace workspace;
-  Sheet temporal = grid;
-  const glm::dvec3 start = grid.positions[5];
-  for (const glm::dvec3 target : {glm::dvec3{0.1, 0.05, 0.05}, glm::dvec3{0.05, 0.1, -0.02},
-                                  glm::dvec3{0.2, 0.0, 0.0}, glm::dvec3{0.1, 0.05, 0.05}}) {
-    workspace.restore(grid, temporal);
-    workspace.apply(grid, adjacency, 5, bisectorPlane(start, target), epsilon, temporal);
-    const Sheet fresh = reflect(grid, adjacency, 5, bisectorPlane(start, target), epsilon).sheet;
-    EXPECT_TRUE(identical(temporal, fresh));
-  }
-  workspace.restore(grid, temporal);
-  EXPECT_TRUE(identical(temporal, grid));
-}
-
-// reapply() skips writing back what the new fold moves again; the result must not show it. The
-// targets alternate between large and small reflected parts, and one plane reflects nothing.
-TEST(ReflectionWorkspace, ReapplyMatchesRestoreThenApply) {
-  const Sheet grid = flatGrid(12, 9, 0.02);
-  const SheetAdjacency adjacency = buildAdjacency(grid);
-  const double epsilon = sheetEpsilon(grid);
-  ReflectionWorkspace workspace;
-  Sheet temporal = grid;
-  const glm::dvec3 start = grid.positions[5];
-  const ReflectionPlane throughSeed{start, {1.0, 0.0, 0.0}};
+  const VertexIndex seed = 5;
+  const glm::dvec3 start = grid.positions[seed];
   const std::vector<ReflectionPlane> planes = {
       bisectorPlane(start, {0.2, 0.0, 0.0}),    bisectorPlane(start, {0.02, 0.01, 0.03}),
-      bisectorPlane(start, {0.1, 0.05, 0.05}),  throughSeed,
+      bisectorPlane(start, {0.1, 0.05, 0.05}),  ReflectionPlane{start, {1.0, 0.0, 0.0}},
       bisectorPlane(start, {0.05, 0.1, -0.02}), bisectorPlane(start, {0.2, 0.0, 0.0}),
       bisectorPlane(start, {0.02, 0.01, 0.03})};
-  for (std::size_t i = 0; i < planes.size(); ++i) {
-    workspace.reapply(grid, adjacency, 5, planes[i], epsilon, temporal);
-    const Sheet fresh = reflect(grid, adjacency, 5, planes[i], epsilon).sheet;
-    EXPECT_TRUE(identical(temporal, fresh)) << "plane " << i;
+
+  // Runs `update` for each plane on one temporal sheet, comparing with a fresh reflection; then
+  // restore() must give the grid back.
+  template <typename Update>
+  void expectFreshResults(Update update) {
+    ReflectionWorkspace workspace;
+    Sheet temporal = grid;
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      update(workspace, planes[i], temporal);
+      const Sheet fresh = reflect(grid, adjacency, seed, planes[i], epsilon).sheet;
+      EXPECT_TRUE(identical(temporal, fresh)) << "plane " << i;
+    }
+    workspace.restore(grid, temporal);
+    EXPECT_TRUE(identical(temporal, grid));
   }
-  workspace.restore(grid, temporal);
-  EXPECT_TRUE(identical(temporal, grid));
+};
+
+TEST_F(ReflectionWorkspaceUpdates, RestoreThenApplyMatchesFreshReflection) {
+  expectFreshResults([&](ReflectionWorkspace& w, const ReflectionPlane& plane, Sheet& temporal) {
+    w.restore(grid, temporal);
+    w.apply(grid, adjacency, seed, plane, epsilon, temporal);
+  });
+}
+
+// reapply() skips writing back what the new fold moves again; the result must not show it.
+TEST_F(ReflectionWorkspaceUpdates, ReapplyMatchesFreshReflection) {
+  expectFreshResults([&](ReflectionWorkspace& w, const ReflectionPlane& plane, Sheet& temporal) {
+    w.reapply(grid, adjacency, seed, plane, epsilon, temporal);
+  });
 }
 
 TEST(SurfacePoint, InsertingAPointKeepsTheSheetValid) {
