@@ -122,7 +122,7 @@ TEST_F(CrashSafety, KillMidDragKeepsCommittedFoldsAndResumes) {
   ASSERT_FALSE(
       startDesigner("--resume --autosave " + autosave.string() + size(), resumeLog).empty())
       << slurp(resumeLog);
-  ASSERT_EQ(shell("sleep 1 && " + drag(from4, to4, true, kSteps, kPause) + key("ctrl+q")), 0);
+  ASSERT_EQ(shell("sleep 1 && " + drag(from4, to4, true, kSteps, kPause) + quit()), 0);
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(resumeLog), "");
   const nlohmann::json resumedFolds = foldsOf(autosave);

@@ -48,7 +48,7 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
                     log);
   ASSERT_FALSE(window.empty()) << slurp(log);
   // Hover, press, drag in steps, a wheel step for depth, release, quit.
-  ASSERT_EQ(shell("sleep 1 && " + drag(from, to) + key("ctrl+q")), 0);
+  ASSERT_EQ(shell("sleep 1 && " + drag(from, to) + quit()), 0);
   // The designer exits by itself after ctrl+q.
   const bool exited = waitForDesignerExit();
   ASSERT_TRUE(exited) << "the designer did not close";
@@ -114,7 +114,7 @@ TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
   ASSERT_FALSE(window.empty()) << slurp(log);
   ASSERT_EQ(shell("sleep 1 && " + env() + "xdotool windowsize " + window + " " +
                   std::to_string(kNewWidth) + " " + std::to_string(kNewHeight) + " && sleep 1 && " +
-                  drag(from, to) + key("ctrl+q")),
+                  drag(from, to) + quit()),
             0);
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(log), "");
