@@ -18,7 +18,8 @@ layout(set = 0, binding = 0) uniform Frame {
   vec4 viewport;   // width, height in pixels
 } u;
 
-layout(location = 0) noperspective in vec4 worldAndReflected;  // xyz: world position; w: reflected flag
+// xyz: world position, w: reflected flag; screen-linear (see sheet.vert).
+layout(location = 0) noperspective in vec4 worldAndReflected;
 layout(location = 0) out vec4 outColor;
 
 void main() {

@@ -17,7 +17,9 @@ layout(set = 0, binding = 0) uniform Frame {
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in float inReflected;  // 1 for a vertex only reflected triangles share
-// One varying slot: lavapipe sets up interpolation per slot per triangle.
+// One varying slot: lavapipe sets up interpolation per slot per triangle. Screen-linear
+// (noperspective) is enough: the fragment shader uses only its derivatives, which span the
+// triangle's plane either way, and the flag's sign.
 layout(location = 0) noperspective out vec4 worldAndReflected;
 
 void main() {
