@@ -140,23 +140,10 @@ VkFramebuffer XrEyeTarget::acquire(Frame&) {
     throw VulkanError("XR eye: swapchain image index out of range");
   const std::pair key{color_, swapchainDepth ? *depth_ : 0u};
   if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second;
-  // Attachments as createScenePass numbers them: colour (MSAA or final), depth, resolve.
   const VkImageView depth = swapchainDepth ? depthViews_[key.second] : transient_.depth.view();
-  std::vector<VkImageView> attachments;
-  if (format_.samples != VK_SAMPLE_COUNT_1_BIT)
-    attachments = {transient_.multisampled.view(), depth, colorViews_[key.first]};
-  else
-    attachments = {colorViews_[key.first], depth};
-  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-  info.renderPass = renderPass_;
-  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
-  info.pAttachments = attachments.data();
-  info.width = extent_.width;
-  info.height = extent_.height;
-  info.layers = 1;
-  VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  vkCheck(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer),
-          "vkCreateFramebuffer");
+  const VkFramebuffer framebuffer =
+      createSceneFramebuffer(context_.device(), renderPass_, format_, extent_,
+                             colorViews_[key.first], depth, transient_.multisampled.view());
   framebuffers_[key] = framebuffer;
   return framebuffer;
 }

@@ -18,7 +18,6 @@ OffscreenTarget::OffscreenTarget(const VulkanContext& context, VkExtent2D extent
   format_.depth = chooseDepthFormat(context);
   format_.samples = context.sampleCountUpTo(samples);
   format_.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  const bool msaa = format_.samples != VK_SAMPLE_COUNT_1_BIT;
   const VkDevice device = context.device();
   try {
     renderPass_ = createScenePass(device, format_);
@@ -28,19 +27,8 @@ OffscreenTarget::OffscreenTarget(const VulkanContext& context, VkExtent2D extent
     resolved_ = GpuImage(context, extent, format_.color, VK_SAMPLE_COUNT_1_BIT,
                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                          VK_IMAGE_ASPECT_COLOR_BIT);
-    std::vector<VkImageView> views;
-    if (msaa)
-      views = {multisampled_.view(), depth_.view(), resolved_.view()};
-    else
-      views = {resolved_.view(), depth_.view()};
-    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    info.renderPass = renderPass_;
-    info.attachmentCount = static_cast<std::uint32_t>(views.size());
-    info.pAttachments = views.data();
-    info.width = extent.width;
-    info.height = extent.height;
-    info.layers = 1;
-    vkCheck(vkCreateFramebuffer(device, &info, nullptr, &framebuffer_), "vkCreateFramebuffer");
+    framebuffer_ = createSceneFramebuffer(device, renderPass_, format_, extent, resolved_.view(),
+                                          depth_.view(), multisampled_.view());
     const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
     for (std::uint32_t i = 0; i < framesInFlight; ++i)
       readbacks_.emplace_back(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);

@@ -100,6 +100,26 @@ VkRenderPass createScenePass(VkDevice device, const PassFormat& format) {
   return pass;
 }
 
+VkFramebuffer createSceneFramebuffer(VkDevice device, VkRenderPass pass, const PassFormat& format,
+                                     VkExtent2D extent, VkImageView image, VkImageView depth,
+                                     VkImageView multisampled) {
+  std::vector<VkImageView> attachments;
+  if (format.samples != VK_SAMPLE_COUNT_1_BIT)
+    attachments = {multisampled, depth, image};
+  else
+    attachments = {image, depth};
+  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  info.renderPass = pass;
+  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.width = extent.width;
+  info.height = extent.height;
+  info.layers = 1;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  vkCheck(vkCreateFramebuffer(device, &info, nullptr, &framebuffer), "vkCreateFramebuffer");
+  return framebuffer;
+}
+
 VkFormat chooseDepthFormat(const VulkanContext& context) {
   for (VkFormat format : {VK_FORMAT_D32_SFLOAT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D16_UNORM}) {
     VkFormatProperties properties;

@@ -35,6 +35,13 @@ struct TransientAttachments {
 TransientAttachments createTransientAttachments(const VulkanContext& context, VkExtent2D extent,
                                                 const PassFormat& format);
 
+// A framebuffer of createScenePass(): `image` is the final single-sample colour image, `depth` the
+// depth view, `multisampled` the MSAA colour view (ignored without MSAA); the attachments are put
+// in the pass's order here, so no target has to know it.
+VkFramebuffer createSceneFramebuffer(VkDevice device, VkRenderPass pass, const PassFormat& format,
+                                     VkExtent2D extent, VkImageView image, VkImageView depth,
+                                     VkImageView multisampled);
+
 // A depth format the device can use as a depth attachment (D32, else D24S8, else D16).
 VkFormat chooseDepthFormat(const VulkanContext& context);
 

@@ -120,7 +120,6 @@ void SwapchainTarget::create(VkExtent2D wanted) {
   vkCheck(vkGetSwapchainImagesKHR(device, swapchain_, &count, images_.data()),
           "vkGetSwapchainImagesKHR");
 
-  const bool msaa = format_.samples != VK_SAMPLE_COUNT_1_BIT;
   TransientAttachments transient = createTransientAttachments(context_, extent, format_);
   multisampled_ = std::move(transient.multisampled);
   depth_ = std::move(transient.depth);
@@ -133,20 +132,8 @@ void SwapchainTarget::create(VkExtent2D wanted) {
     VkImageView view = VK_NULL_HANDLE;
     vkCheck(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
     views_.push_back(view);
-    std::vector<VkImageView> attachments;
-    if (msaa)
-      attachments = {multisampled_.view(), depth_.view(), view};
-    else
-      attachments = {view, depth_.view()};
-    VkFramebufferCreateInfo fbInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-    fbInfo.renderPass = renderPass_;
-    fbInfo.attachmentCount = static_cast<std::uint32_t>(attachments.size());
-    fbInfo.pAttachments = attachments.data();
-    fbInfo.width = extent.width;
-    fbInfo.height = extent.height;
-    fbInfo.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    vkCheck(vkCreateFramebuffer(device, &fbInfo, nullptr, &framebuffer), "vkCreateFramebuffer");
+    const VkFramebuffer framebuffer = createSceneFramebuffer(
+        device, renderPass_, format_, extent, view, depth_.view(), multisampled_.view());
     framebuffers_.push_back(framebuffer);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore semaphore = VK_NULL_HANDLE;
