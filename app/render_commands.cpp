@@ -113,8 +113,9 @@ class ReplayFrameWriter {
       const InputFrame& input = player.step();
       if (index % every_ != 0 && !player.done()) continue;
       tracker.update(player.session(), renderer_->sceneRenderer());
-      const Scene scene =
+      Scene scene =
           sceneForInteraction(player.core(), input, camera, ground, {panel_, /*handMarkers=*/true});
+      tracker.describe(scene.sheet);
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
       const RgbaImage image = renderer_->render(scene);

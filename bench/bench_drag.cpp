@@ -1,5 +1,7 @@
 // Drag update (fixed sheet + target -> temporal sheet) against a plain copy of the mesh arrays,
-// on cylinders of about 10k, 100k and 1M triangles with 5 prior folds (DESIGN.md 8).
+// on cylinders of about 10k, 100k and 1M triangles with 5 prior folds (DESIGN.md 8); and the
+// planar simplification that the display session makes after an undo, redo or open, on the
+// folded cylinders and on a flat square of about 100k triangles (an unstructured mesh).
 //
 //   build/bench/bench_drag --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <map>
@@ -8,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/planar_simplification.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -90,6 +93,24 @@ void BM_CopyMeshArrays(benchmark::State& state) {
   state.counters["triangles"] = static_cast<double>(fixed.triangleCount());
 }
 
+void BM_SimplifyPlanar(benchmark::State& state) {
+  const Sheet& fixed = cylinder(state.range(0)).session.fixed();
+  std::size_t drawn = 0;
+  for (auto _ : state) drawn = simplifyPlanar(fixed).sheet.triangleCount();
+  state.counters["triangles"] = double(fixed.triangleCount());
+  state.counters["simplified"] = double(drawn);
+}
+
+void BM_SimplifyPlanarFlatSquare(benchmark::State& state) {
+  const Sheet square = makeSurface("square", {{"resolution", 150}});
+  std::size_t drawn = 0;
+  for (auto _ : state) drawn = simplifyPlanar(square).sheet.triangleCount();
+  state.counters["triangles"] = double(square.triangleCount());
+  state.counters["simplified"] = double(drawn);
+}
+
+BENCHMARK(BM_SimplifyPlanar)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SimplifyPlanarFlatSquare)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DragUpdate)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CopyMeshArrays)
     ->Arg(10'000)

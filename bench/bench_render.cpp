@@ -1,11 +1,13 @@
 // Rendering on whatever Vulkan device the loader finds (lavapipe on a machine without a GPU),
 // 1280x720 (DESIGN.md 8); the second argument is the sample count: 1 (what the designer window
 // uses on a CPU device) or 4 (4x MSAA, the GPU default and the PNG renders):
-// - BM_Frame: one frame of a static ~100k-triangle cylinder, submit to fence; no readback.
+// - BM_Frame: one frame of a static ~100k-triangle cylinder, submit to fence; no readback. The
+//   third argument: 0 draws every triangle of the sheet (the renderer's cost per triangle), 1
+//   draws it as the designer, replay and XR do (its DisplaySession: planar regions merged).
 // - BM_FrameWithReadback: the same plus the copy to host memory and the pixels' memcpy.
 // - BM_DragFrame: drag update + scene (creases, reflected part) + incremental upload + frame, end
-//   to end, at ~10k and ~100k triangles; counters: sheet bytes uploaded per update and the whole
-//   mesh's bytes.
+//   to end, at ~10k and ~100k triangles, drawing every triangle (third argument 0) or the display
+//   session (1); counters: sheet bytes uploaded per update and the bytes of the whole mesh drawn.
 //
 //   build-render/bench/bench_render --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
@@ -48,10 +50,17 @@ void labelDevice(benchmark::State& state, HeadlessRenderer& r) {
 }
 
 void staticFrame(benchmark::State& state, bool readback) {
-  const Sheet sheet = makeSurface("cylinder", {{"resolution", resolutionFor(state.range(0))}});
-  const Scene scene = sceneForSheet(sheet, ViewPreset::Iso, 1280.0f / 720.0f, false);
+  const FoldSession session(
+      makeSurface("cylinder", {{"resolution", resolutionFor(state.range(0))}}));
+  const Sheet& sheet = session.current();
+  Scene scene = sceneForSheet(sheet, ViewPreset::Iso, 1280.0f / 720.0f, false);
   HeadlessRenderer& r = renderer(state.range(1));
   r.sceneRenderer().markSheetReplaced();
+  SessionSheetTracker tracker;
+  if (state.range(2) == 1) {
+    tracker.update(session, r.sceneRenderer());
+    tracker.describe(scene.sheet);
+  }
   r.draw(scene);
   r.draw(scene);  // both frame slots hold the sheet
   for (auto _ : state) {
@@ -61,6 +70,7 @@ void staticFrame(benchmark::State& state, bool readback) {
       r.draw(scene);
   }
   state.counters["triangles"] = double(sheet.triangleCount());
+  state.counters["drawn"] = double(scene.sheet.sheet->triangleCount());
   labelDevice(state, r);
 }
 
@@ -68,19 +78,22 @@ void BM_Frame(benchmark::State& state) {
   staticFrame(state, false);
 }
 BENCHMARK(BM_Frame)
-    ->ArgsProduct({{10'000, 100'000}, {1, 4}})
+    ->ArgsProduct({{10'000, 100'000}, {1, 4}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 void BM_FrameWithReadback(benchmark::State& state) {
   staticFrame(state, true);
 }
-BENCHMARK(BM_FrameWithReadback)->Args({100'000, 4})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FrameWithReadback)
+    ->Args({100'000, 4, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_DragFrame(benchmark::State& state) {
   FoldSession session(makeSurface("cylinder", {{"resolution", resolutionFor(state.range(0))}}));
   HeadlessRenderer& r = renderer(state.range(1));
-  SessionSheetTracker tracker;
+  SessionSheetTracker tracker(/*simplify=*/state.range(2) == 1);
   const Camera camera =
       frameBounds(worldBounds(session.initial()), ViewPreset::Iso, 1280.0f / 720.0f);
   const Ground ground = groundBelow(worldBounds(session.initial()));
@@ -93,8 +106,7 @@ void BM_DragFrame(benchmark::State& state) {
     Scene scene;
     scene.camera = camera;
     scene.ground = ground;
-    scene.sheet.sheet = &session.current();
-    scene.sheet.reflectedTriangles = session.reflectedTriangles();
+    tracker.describe(scene.sheet);
     scene.creases = creaseLines(session.current(), glm::mat4(1.0f), scene.colors);
     r.draw(scene);
   };
@@ -108,13 +120,14 @@ void BM_DragFrame(benchmark::State& state) {
     full = double(r.sceneRenderer().lastUpload().fullSheetBytes);
   }
   state.counters["triangles"] = double(session.current().triangleCount());
+  state.counters["drawn"] = double(tracker.display().sheet().triangleCount());
   state.counters["upload_bytes"] = benchmark::Counter(bytes, benchmark::Counter::kAvgIterations);
   state.counters["mesh_bytes"] = full;
   labelDevice(state, r);
   session.cancel();
 }
 BENCHMARK(BM_DragFrame)
-    ->ArgsProduct({{10'000, 100'000}, {1, 4}})
+    ->ArgsProduct({{10'000, 100'000}, {1, 4}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

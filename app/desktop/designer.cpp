@@ -279,6 +279,7 @@ void runDesigner(const DesignerOptions& options) {
   double maxError = maxEdgeLengthError(doc.session->fixed());
   std::uint64_t statsRevision = doc.session->fixedRevision();
   double dragUpdateMs = 0.0, frameMs = 0.0;
+  std::size_t drawnTriangles = 0;  // of the display session's coarse sheet
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;
 
@@ -383,8 +384,8 @@ void runDesigner(const DesignerOptions& options) {
       statsRevision = doc.session->fixedRevision();
       maxError = maxEdgeLengthError(doc.session->fixed());
     }
-    ImGui::Text("triangles %zu, folds %zu", doc.session->current().triangleCount(),
-                doc.session->foldCount());
+    ImGui::Text("triangles %zu (drawn %zu), folds %zu", doc.session->current().triangleCount(),
+                drawnTriangles, doc.session->foldCount());
     ImGui::Text("max edge-length error %.3g m", maxError);
     ImGui::Text("drag update %.2f ms, frame %.2f ms", dragUpdateMs, frameMs);
     ImGui::TextWrapped(
@@ -411,6 +412,8 @@ void runDesigner(const DesignerOptions& options) {
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
                                     {creasePatternPanel, /*handMarkers=*/false});
+    tracker.describe(lastScene.sheet);
+    drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
     drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {
       ImGui_ImplVulkan_RenderDrawData(panel, commands);

@@ -149,6 +149,7 @@ void XrApp::buildScene() {
   if (SceneRenderer* renderer = graphics_->renderer()) tracker_->update(*doc_.session, *renderer);
   scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
                                {/*creasePatternPanel=*/false, /*handMarkers=*/true});
+  tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   if (lastInput_.sheetHand.tracked) {
     if (panelRevision_ != doc_.session->fixedRevision()) {

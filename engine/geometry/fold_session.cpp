@@ -100,6 +100,7 @@ bool FoldSession::commit() {
     keyframes_.resize(applied_ / kKeyframeInterval + 1);
   history_.push_back({grabSeed_, plane_, grabbed_, target_});
   ++applied_;
+  ++designRevision_;
   std::swap(fixed_, temporal_);  // temporal_ keeps the old storage for the next drag
   fixedChanged();
   if (applied_ % kKeyframeInterval == 0)
@@ -136,6 +137,7 @@ bool FoldSession::undo() {
   cancel();
   if (!canUndo()) return false;
   --applied_;
+  ++designRevision_;
   setFixed(sheetAfter(applied_));
   return true;
 }
@@ -145,6 +147,7 @@ bool FoldSession::redo() {
   if (!canRedo()) return false;
   setFixed(applyFold(fixed_, history_[applied_]));
   ++applied_;
+  ++designRevision_;
   if (applied_ % kKeyframeInterval == 0 && keyframes_.size() == applied_ / kKeyframeInterval)
     keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
   return true;

@@ -55,6 +55,9 @@ class FoldSession {
   double epsilon() const { return epsilon_; }
   // Changes whenever the fixed sheet does (commit, undo, redo), for caches built on it.
   std::uint64_t fixedRevision() const { return fixedRevision_; }
+  // Changes when the committed design does (commit of a fold, undo, redo), not when a grab makes
+  // a vertex: followers that replay the drags themselves (DisplaySession) watch this one.
+  std::uint64_t designRevision() const { return designRevision_; }
 
   // --- Dragging -----------------------------------------------------------------------------
   bool dragging() const { return dragging_; }
@@ -74,6 +77,7 @@ class FoldSession {
   void cancel();
 
   const glm::dvec3& grabbedPoint() const { return grabbed_; }
+  const glm::dvec2& grabbedSeed() const { return grabSeed_; }  // the grab in the development
   const glm::dvec3& dragTarget() const { return target_; }
   bool hasPlane() const { return folded_; }
   const ReflectionPlane& plane() const { return plane_; }
@@ -103,6 +107,7 @@ class FoldSession {
   Sheet fixed_;
   SheetAdjacency fixedAdjacency_;
   std::uint64_t fixedRevision_ = 0;
+  std::uint64_t designRevision_ = 0;
 
   // Drag state: while dragging, fixed_ holds the grabbed point as a vertex (grabUndo_ takes it
   // back on cancel) and temporal_ is fixed_ with the reflection applied.

@@ -10,15 +10,18 @@ bool sameChanges(const ReflectionChanges& a, const ReflectionChanges& b) {
 
 }  // namespace
 
-void SessionSheetTracker::update(const FoldSession& session, SceneRenderer& renderer) {
+void SessionSheetTracker::update(const FoldSession& source, SceneRenderer& renderer) {
+  display_.follow(source);
+  const FoldSession& session = display_.shownSession();
   const bool dragging = session.dragging();
-  const bool sameBase =
-      seen_ && dragging == dragging_ && session.fixedRevision() == fixedRevision_ &&
-      (!dragging ||
-       (session.grabbedPoint() == grabbed_ && session.grabbedVertex() == grabbedVertex_));
+  const bool sameBase = seen_ && display_.generation() == generation_ && dragging == dragging_ &&
+                        session.fixedRevision() == fixedRevision_ &&
+                        (!dragging || (session.grabbedPoint() == grabbed_ &&
+                                       session.grabbedVertex() == grabbedVertex_));
   if (!sameBase) {
     renderer.markSheetReplaced();
     seen_ = true;
+    generation_ = display_.generation();
     dragging_ = dragging;
     fixedRevision_ = session.fixedRevision();
     grabbed_ = session.grabbedPoint();
@@ -32,6 +35,12 @@ void SessionSheetTracker::update(const FoldSession& session, SceneRenderer& rend
   renderer.markSheetChanged(last_);  // put back what the previous update changed
   renderer.markSheetChanged(now);
   last_ = now;
+}
+
+void SessionSheetTracker::describe(SceneSheet& sheet) const {
+  if (!seen_) return;
+  sheet.sheet = &display_.sheet();
+  sheet.reflectedTriangles = display_.reflectedTriangles();
 }
 
 }  // namespace curvefold
