@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <string_view>
 
 #include <glm/geometric.hpp>
 
@@ -17,6 +18,7 @@
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
+#include "engine/io/output_set.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -41,6 +43,14 @@ std::string formatPoint(const glm::dvec3& p) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "%.6g,%.6g,%.6g", p.x, p.y, p.z);
   return buffer;
+}
+
+// Where the "wrote ..." line goes: standard error when a file is written to standard output
+// ("-"), so that the output stays the file alone.
+std::ostream& statusFor(std::initializer_list<std::string_view> outputs) {
+  for (std::string_view output : outputs)
+    if (output == "-") return std::cerr;
+  return std::cout;
 }
 
 std::string describeSurface(const Design& design) {
@@ -111,8 +121,8 @@ void addNewCommand(CLI::App& app) {
     }
     saveDesign(design, options->output);
     const Sheet sheet = initialSheet(design, options->output);
-    std::cout << "wrote " << options->output << " (" << describeSurface(design) << ", "
-              << sheet.triangleCount() << " triangles)\n";
+    statusFor({options->output}) << "wrote " << options->output << " (" << describeSurface(design)
+                                 << ", " << sheet.triangleCount() << " triangles)\n";
   });
 }
 
@@ -143,13 +153,16 @@ void addFoldCommand(CLI::App& app) {
           lengthTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
       validate(sheet, tolerance);
       saveDesign(design, options->output);
-      std::cout << "fold " << design.folds.size() << ": grabbed " << formatPoint(grabbed) << " -> "
-                << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
-                << options->output << "\n";
+      statusFor({options->output})
+          << "fold " << design.folds.size() << ": grabbed " << formatPoint(grabbed) << " -> "
+          << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
+          << options->output << "\n";
     } else {
       saveDesign(design, options->output);
-      std::cout << "target equals the grabbed point " << formatPoint(grabbed)
-                << ": no fold added; wrote " << options->output << "\n";
+      statusFor({options->output})
+          << "target lies within " << session.minimumDrag() << " m of the grabbed point "
+          << formatPoint(grabbed) << " (the shortest drag that folds): no fold added; wrote "
+          << options->output << "\n";
     }
   });
 }
@@ -171,12 +184,18 @@ void addExportCommand(CLI::App& app) {
     if (fold->count() + svg->count() + obj->count() + gltf->count() == 0)
       throw UsageError("export: name at least one of --fold, --svg, --obj, --gltf");
     const Sheet sheet = buildSheet(loadDesign(options->design), options->design);
-    if (fold->count()) writeFold(sheet, options->fold);
-    if (svg->count()) writeSvgCreasePattern(sheet, options->svg);
-    if (obj->count()) writeObj(sheet, options->obj);
-    if (gltf->count()) writeGlb(sheet, options->gltf);
+    // All named files or none: a failing OBJ leaves the SVG as it was.
+    OutputSet outputs;
+    if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });
+    if (svg->count())
+      outputs.add(options->svg, [&](const auto& at) { writeSvgCreasePattern(sheet, at); });
+    if (obj->count()) outputs.add(options->obj, [&](const auto& at) { writeObj(sheet, at); });
+    if (gltf->count()) outputs.add(options->gltf, [&](const auto& at) { writeGlb(sheet, at); });
+    outputs.write();
     for (const std::string* path : {&options->fold, &options->svg, &options->obj, &options->gltf})
-      if (!path->empty()) std::cout << "wrote " << *path << "\n";
+      if (!path->empty())
+        statusFor({options->fold, options->svg, options->obj, options->gltf})
+            << "wrote " << *path << "\n";
   });
 }
 

@@ -44,6 +44,8 @@ void runDefault();
 class ReplayFrameWriter;
 std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir, std::size_t every,
                                                          const std::string& size, bool panel);
+// Renders the frames into a staging folder; commitReplayFrames moves them into DIR.
 std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& recording);
+void commitReplayFrames(ReplayFrameWriter& writer);
 
 }  // namespace curvefold::cli

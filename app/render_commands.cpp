@@ -1,6 +1,8 @@
 // `render` and `replay --frames`: headless Vulkan renders to PNG (DESIGN.md 7). The renderer takes
 // a plain Scene; the interaction state of a replayed frame (hands, hover, grab, plane) is turned
 // into markers and a plane disk here, so the render library knows nothing of interaction.
+#include <unistd.h>
+
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -80,11 +82,17 @@ void writePng(const fs::path& path, const RgbaImage& image) {
 }  // namespace
 
 // Replays a recording and writes frame_NNNNNN.png every N frames. The renderer is made first, so
-// a machine without Vulkan fails before anything is written.
+// a machine without Vulkan fails before anything is written; the frames are rendered into a hidden
+// staging folder next to DIR and moved into DIR only by commit(), after the replay's other
+// outputs have been written, so a failure anywhere leaves DIR and the outputs as they were.
 class ReplayFrameWriter {
  public:
   ReplayFrameWriter(fs::path dir, std::size_t every, RenderSize size, bool panel)
       : dir_(std::move(dir)), every_(every), panel_(panel) {
+    if (dir_.empty()) throw UsageError("--frames: needs a folder");
+    stage_ = dir_.filename().empty() ? dir_.parent_path() : dir_;
+    stage_.replace_filename("." + stage_.filename().string() + ".staged-" +
+                            std::to_string(::getpid()));
     if (every_ == 0) throw UsageError("--every: must be at least 1");
     HeadlessOptions options;
     options.width = size.width;
@@ -93,10 +101,18 @@ class ReplayFrameWriter {
     aspect_ = float(size.width) / float(size.height);
   }
 
+  ~ReplayFrameWriter() {
+    std::error_code ignored;
+    if (staged_) fs::remove_all(stage_, ignored);
+  }
+
   std::size_t write(const Recording& recording) {
     std::error_code error;
-    fs::create_directories(dir_, error);
+    if (!stage_.parent_path().empty()) fs::create_directories(stage_.parent_path(), error);
+    fs::remove_all(stage_, error);
+    if (!error) fs::create_directory(stage_, error);
     if (error) throw FileError("cannot create " + dir_.string() + ": " + error.message());
+    staged_ = true;
     Player player(recording);
     // One camera for the whole replay, framing the sheet where it starts and every hand position.
     Bounds bounds = worldBounds(player.session().current(), matrixOf(recording.header.sheetFrame));
@@ -120,14 +136,41 @@ class ReplayFrameWriter {
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
       const RgbaImage image = renderer_->render(scene);
       checkValidation(renderer_->context());
-      writePng(dir_ / name, image);
+      try {
+        writePng(stage_ / name, image);
+      } catch (const FileError& e) {
+        throw FileError("cannot write " + (dir_ / name).string() + ": " +
+                        std::string(e.what()).substr(std::string(e.what()).rfind(": ") + 2));
+      }
       ++written;
     }
     return written;
   }
 
+  // Moves the rendered frames into DIR (made when missing; other files in it are kept).
+  void commit() {
+    std::error_code error;
+    if (!fs::exists(dir_, error)) {
+      fs::rename(stage_, dir_, error);
+      if (!error) {
+        staged_ = false;
+        return;
+      }
+    }
+    fs::create_directories(dir_, error);
+    if (error) throw FileError("cannot create " + dir_.string() + ": " + error.message());
+    for (const fs::directory_entry& entry : fs::directory_iterator(stage_)) {
+      fs::rename(entry.path(), dir_ / entry.path().filename(), error);
+      if (error)
+        throw FileError("cannot write " + (dir_ / entry.path().filename()).string() + ": " +
+                        error.message());
+    }
+  }
+
  private:
   fs::path dir_;
+  fs::path stage_;  // .DIR.staged-PID next to DIR
+  bool staged_ = false;
   std::size_t every_;
   bool panel_;
   float aspect_ = 1.0f;
@@ -141,6 +184,10 @@ std::shared_ptr<ReplayFrameWriter> makeReplayFrameWriter(const std::string& dir,
 
 std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& recording) {
   return writer.write(recording);
+}
+
+void commitReplayFrames(ReplayFrameWriter& writer) {
+  writer.commit();
 }
 
 void addRenderCommand(CLI::App& app) {

@@ -15,6 +15,7 @@
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/obj_writer.hpp"
+#include "engine/io/output_set.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/player.hpp"
@@ -75,65 +76,6 @@ class ProgressBar {
   bool shown_ = false;
   Clock::time_point start_;
   Clock::time_point lastDraw_{};
-};
-
-// Files that appear together or not at all: each is written (atomically) to a hidden staging
-// name next to its target, and only when all have been written are they renamed into place.
-class OutputSet {
- public:
-  void add(const fs::path& path, std::function<void(const fs::path&)> writer) {
-    outputs_.push_back({path, std::move(writer)});
-  }
-
-  void write(const fs::path& dir) {
-    bool created = false;
-    if (!dir.empty() && !fs::is_directory(dir)) {
-      std::error_code error;
-      fs::create_directories(dir, error);
-      if (error) throw FileError("cannot create " + dir.string() + ": " + error.message());
-      created = true;
-    }
-    std::vector<fs::path> staged;
-    auto discard = [&] {
-      std::error_code ignored;
-      for (const fs::path& path : staged) fs::remove(path, ignored);
-      if (created) fs::remove(dir, ignored);  // only if still empty
-    };
-    try {
-      for (const Output& output : outputs_) {
-        fs::path stage = output.path;
-        stage.replace_filename("." + output.path.filename().string() + ".staged-" +
-                               std::to_string(::getpid()));
-        staged.push_back(stage);
-        try {
-          output.writer(stage);
-        } catch (const std::exception& e) {
-          // The writers name the staging file; the user knows the target.
-          std::string message = e.what();
-          for (auto at = message.find(stage.string()); at != std::string::npos;
-               at = message.find(stage.string()))
-            message.replace(at, stage.string().size(), output.path.string());
-          throw FileError(message);
-        }
-      }
-      for (std::size_t i = 0; i < outputs_.size(); ++i) {
-        std::error_code error;
-        fs::rename(staged[i], outputs_[i].path, error);
-        if (error)
-          throw FileError("cannot write " + outputs_[i].path.string() + ": " + error.message());
-      }
-    } catch (...) {
-      discard();
-      throw;
-    }
-  }
-
- private:
-  struct Output {
-    fs::path path;
-    std::function<void(const fs::path&)> writer;
-  };
-  std::vector<Output> outputs_;
 };
 
 }  // namespace
@@ -198,7 +140,11 @@ void addReplayCommand(CLI::App& app) {
     outputs.add(dir / (name + ".obj"), [&](const fs::path& path) { writeObj(result.sheet, path); });
     outputs.add(dir / (name + ".folds.jsonl"),
                 [&](const fs::path& path) { writeFileAtomically(path, log); });
+    // The frames first, into their staging folder: if they fail, no output has changed.
+    std::size_t framesWritten = 0;
+    if (frameWriter) framesWritten = writeReplayFrames(*frameWriter, recording);
     outputs.write(dir);
+    if (frameWriter) commitReplayFrames(*frameWriter);
 
     if (recording.truncated)
       std::cerr << "curvefold: warning: " << recordingPath.string() << ": truncated at line "
@@ -210,10 +156,8 @@ void addReplayCommand(CLI::App& app) {
               << result.sheet.triangleCount() << " triangles, in " << seconds(elapsed)
               << (result.endedWhileDragging ? " (a drag left unfinished)" : "") << "; wrote "
               << (dir / (name + ".*")).string() << "\n";
-    if (frameWriter) {
-      const std::size_t written = writeReplayFrames(*frameWriter, recording);
-      std::cout << "wrote " << written << " frames to " << options->frames << "\n";
-    }
+    if (frameWriter)
+      std::cout << "wrote " << framesWritten << " frames to " << options->frames << "\n";
   });
 }
 

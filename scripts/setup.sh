@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  # compiler cache: CI's fresh clones on one machine reuse each other's object files
+  ccache
   libglm-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -9,16 +9,14 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/io/json_reader.hpp"
+
 namespace curvefold {
 namespace {
 
 // Eases in and out, so hands start and stop smoothly as people's do.
 double smoothstep(double t) {
   return t * t * (3.0 - 2.0 * t);
-}
-
-int stepsFor(double seconds, double rate) {
-  return std::max(1, static_cast<int>(std::lround(seconds * rate)));
 }
 
 // Where a hand rests: a quarter metre in front of the sheet's centre, out of hover range.
@@ -29,8 +27,9 @@ constexpr double kApproachSeconds = 0.25;
 
 GestureRecorder::GestureRecorder(RecordingHeader header) {
   recording_.header = std::move(header);
-  if (!(recording_.header.rate > 0.0) || !std::isfinite(recording_.header.rate))
-    throw GestureError("rate must be a positive number of frames per second");
+  if (!(recording_.header.rate > 0.0) || !(recording_.header.rate <= kMaxGestureRate))
+    throw GestureError("rate must lie in (0, " + std::to_string(int(kMaxGestureRate)) +
+                       "] frames per second");
   dt_ = 1.0 / recording_.header.rate;
   session_ = std::make_unique<FoldSession>(
       initialSheet(Design{recording_.header.surface, {}}, "gesture script"));
@@ -51,6 +50,17 @@ GestureRecorder::GestureRecorder(RecordingHeader header) {
   step();
 }
 
+int GestureRecorder::stepsFor(double seconds) const {
+  // Refused before any frame is made, so that a script's cost is bounded by its limits.
+  const double steps = std::max(1.0, std::round(seconds * recording_.header.rate));
+  if (static_cast<double>(recording_.frames.size()) + steps + 2.0 >
+      static_cast<double>(kMaxGestureFrames))
+    throw GestureError("the script makes more than " + std::to_string(kMaxGestureFrames) +
+                       " frames (" + std::to_string(kMaxGestureFrames / 90 / 60) +
+                       " minutes at 90 Hz); split it or lower its rate");
+  return static_cast<int>(steps);
+}
+
 void GestureRecorder::step() {
   recording_.frames.push_back(frame_);
   core_->process(frame_);
@@ -58,7 +68,7 @@ void GestureRecorder::step() {
 }
 
 void GestureRecorder::wait(double seconds) {
-  for (int i = 0, n = stepsFor(seconds, recording_.header.rate); i < n; ++i) step();
+  for (int i = 0, n = stepsFor(seconds); i < n; ++i) step();
 }
 
 Pose GestureRecorder::turnedHand(const Pose& start, const Pose& sheetAtStart, const SheetTurn& turn,
@@ -74,7 +84,7 @@ void GestureRecorder::turnSheet(const SheetTurn& turn, double seconds) {
   frame_.sheetHand.clutch = 1.0;
   step();
   const Pose start = frame_.sheetHand.pose, sheet = core_->worldFromSheet();
-  for (int i = 1, n = stepsFor(seconds, recording_.header.rate); i <= n; ++i) {
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
     frame_.sheetHand.pose = turnedHand(start, sheet, turn, smoothstep(double(i) / n));
     step();
   }
@@ -86,7 +96,7 @@ void GestureRecorder::moveSheet(const glm::dvec3& by, double seconds) {
   frame_.sheetHand.clutch = 1.0;
   step();
   const Pose start = frame_.sheetHand.pose;
-  for (int i = 1, n = stepsFor(seconds, recording_.header.rate); i <= n; ++i) {
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
     frame_.sheetHand.pose.position = start.position + by * smoothstep(double(i) / n);
     step();
   }
@@ -98,7 +108,7 @@ void GestureRecorder::moveSheetHand(const Pose& to, double seconds, bool clutch)
   frame_.sheetHand.clutch = clutch ? 1.0 : 0.0;
   step();
   const Pose start = frame_.sheetHand.pose;
-  for (int i = 1, n = stepsFor(seconds, recording_.header.rate); i <= n; ++i) {
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
     const double fraction = smoothstep(double(i) / n);
     frame_.sheetHand.pose.position = start.position + (to.position - start.position) * fraction;
     frame_.sheetHand.pose.orientation = glm::slerp(start.orientation, to.orientation, fraction);
@@ -116,7 +126,7 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
 
   // Approach the point with the trigger released, then pull it.
   const glm::dvec3 from = frame_.pointHand.position, to = sheet.apply(grabbed);
-  for (int i = 1, n = stepsFor(kApproachSeconds, recording_.header.rate); i <= n; ++i) {
+  for (int i = 1, n = stepsFor(kApproachSeconds); i <= n; ++i) {
     frame_.pointHand.position = from + (to - from) * smoothstep(double(i) / n);
     step();
   }
@@ -133,7 +143,7 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   for (std::size_t i = 1; i < points.size(); ++i)
     length.push_back(length.back() + glm::distance(points[i - 1], points[i]));
   const Pose handStart = frame_.sheetHand.pose;
-  for (int i = 1, n = stepsFor(seconds, recording_.header.rate); i <= n; ++i) {
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
     const double fraction = smoothstep(double(i) / n);
     const double s = fraction * length.back();
     std::size_t k = 1;
@@ -158,62 +168,41 @@ void GestureRecorder::press(Button button) {
 
 namespace {
 
-class ScriptReader {
+class ScriptReader : public JsonReader {
  public:
-  explicit ScriptReader(std::string name) : name_(std::move(name)) {}
+  using JsonReader::JsonReader;
 
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw GestureError(name_ + ": " + (where.empty() ? "" : where + ": ") + problem);
-  }
   double number(const nlohmann::json& object, const char* key, const std::string& where,
                 std::optional<double> fallback = std::nullopt) const {
-    const auto it = object.find(key);
-    if (it == object.end()) {
+    const nlohmann::json* value = optionalMember(object, key, where);
+    if (!value) {
       if (fallback) return *fallback;
       fail(where, std::string("missing \"") + key + "\"");
     }
-    if (!it->is_number() || !std::isfinite(it->get<double>()))
-      fail(where, std::string("\"") + key + "\" must be a finite number");
-    return it->get<double>();
+    return JsonReader::number(*value, join(where, key));
   }
   double duration(const nlohmann::json& object, const std::string& where, double fallback) const {
     const double seconds = number(object, "duration", where, fallback);
-    if (!(seconds > 0.0) || seconds > 600.0)
+    if (!(seconds > 0.0) || seconds > kMaxGestureSeconds)
       fail(where, "\"duration\" must lie in (0, 600] seconds");
     return seconds;
   }
-  glm::dvec3 vector(const nlohmann::json& value, const std::string& where) const {
-    if (!value.is_array() || value.size() != 3) fail(where, "must be [x, y, z]");
-    glm::dvec3 v;
-    for (int i = 0; i < 3; ++i) {
-      if (!value[i].is_number() || !std::isfinite(value[i].get<double>()))
-        fail(where, "must hold finite numbers");
-      v[i] = value[i].get<double>();
-    }
-    return v;
-  }
   glm::dvec3 vector(const nlohmann::json& object, const char* key, const std::string& where) const {
-    const auto it = object.find(key);
-    if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
-    return vector(*it, where + "." + key);
+    return vector3(member(object, key, where), join(where, key));
   }
   SheetTurn turn(const nlohmann::json& value, const std::string& where) const {
-    if (!value.is_object()) fail(where, "must be an object");
+    object(value, where);
     SheetTurn turn{vector(value, "axis", where), number(value, "degrees", where)};
     if (glm::length(turn.axis) == 0.0) fail(where, "axis must not be zero");
     return turn;
   }
   Pose pose(const nlohmann::json& value, const std::string& where) const {
-    if (!value.is_object()) fail(where, "must be an object");
+    object(value, where);
     Pose pose;
     pose.position = vector(value, "position", where);
-    if (const auto it = value.find("orientation"); it != value.end()) {
-      if (!it->is_array() || it->size() != 4) fail(where, "orientation must be [w, x, y, z]");
+    if (const nlohmann::json* orientation = optionalMember(value, "orientation", where)) {
       double c[4];
-      for (int i = 0; i < 4; ++i) {
-        if (!(*it)[i].is_number()) fail(where, "orientation must hold numbers");
-        c[i] = (*it)[i].get<double>();
-      }
+      numbers(*orientation, 4, c, join(where, "orientation"));
       const glm::dquat q(c[0], c[1], c[2], c[3]);  // w, x, y, z
       if (std::abs(glm::length(q) - 1.0) > kQuaternionUnitTolerance)
         fail(where, "orientation must be a unit quaternion");
@@ -221,51 +210,50 @@ class ScriptReader {
     }
     return pose;
   }
-
- private:
-  std::string name_;
+  std::string text(const nlohmann::json& document, const char* key, const char* fallback) const {
+    const nlohmann::json* value = optionalMember(document, key, "");
+    return value ? string(*value, key) : fallback;
+  }
 };
 
-}  // namespace
-
-Recording recordGestureScript(const std::filesystem::path& script) {
+Recording runGestureScript(const std::filesystem::path& script) {
   const std::string name = script.string();
   std::ifstream in(script, std::ios::binary);
   if (!in) throw GestureError("cannot read " + name);
+  in.seekg(0, std::ios::end);
+  if (const std::streamoff size = in.tellg(); size > kMaxGestureScriptBytes)
+    throw GestureError(name + ": " + std::to_string(size) +
+                       " bytes, larger than a gesture script " + "may be (" +
+                       std::to_string(kMaxGestureScriptBytes >> 20) + " MiB)");
+  in.seekg(0);
   std::stringstream text;
   text << in.rdbuf();
-  ScriptReader reader(name);
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    reader.fail("", std::string("not JSON: ") + e.what());
-  }
-  if (!document.is_object() || document.value("format", "") != "curvefold-gesture-script")
-    reader.fail("", "not a curvefold gesture script (format must be \"curvefold-gesture-script\")");
-  if (document.value("version", 0) != 1)
-    reader.fail("", "unsupported version (this build reads 1)");
+  const ScriptReader reader(name);
+  const nlohmann::json document = parseJsonText(text.str(), name);
+  reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
 
   RecordingHeader header;
-  header.source = document.value("source", "script");
+  header.source = reader.text(document, "source", "script");
   if (header.source != "script" && header.source != "desktop" && header.source != "synthetic")
     reader.fail("source", "must be \"script\", \"desktop\" or \"synthetic\"");
   header.rate = reader.number(document, "rate", "", 90.0);
-  const std::string handedness = document.value("handedness", "right");
+  if (!(header.rate > 0.0) || header.rate > kMaxGestureRate)
+    reader.fail("rate", "must lie in (0, " + std::to_string(int(kMaxGestureRate)) +
+                            "] frames per second, got " + jsonExcerpt(document["rate"]));
+  const std::string handedness = reader.text(document, "handedness", "right");
   if (handedness != "right" && handedness != "left")
     reader.fail("handedness", "must be \"right\" or \"left\"");
   header.handedness = handedness == "left" ? Handedness::Left : Handedness::Right;
-  if (!document.contains("surface")) reader.fail("", "missing \"surface\"");
   try {
-    header.surface = parseInitialSurface(document["surface"], name);
+    header.surface = parseInitialSurface(reader.member(document, "surface", ""), name);
   } catch (const DesignError& e) {
     throw GestureError(e.what());
   }
   // By default the sheet is held at chest height half a metre in front of the user (OpenXR's
   // stage space: y up, -z forward), facing them.
   header.sheetFrame = defaultSheetFrame();
-  if (document.contains("sheet_frame"))
-    header.sheetFrame = reader.pose(document["sheet_frame"], "sheet_frame");
+  if (const nlohmann::json* frame = reader.optionalMember(document, "sheet_frame", ""))
+    header.sheetFrame = reader.pose(*frame, "sheet_frame");
 
   std::optional<GestureRecorder> made;
   try {
@@ -274,9 +262,8 @@ Recording recordGestureScript(const std::filesystem::path& script) {
     throw GestureError(e.what());
   }
   GestureRecorder& recorder = *made;
-  const auto gestures = document.find("gestures");
-  if (gestures == document.end() || !gestures->is_array())
-    reader.fail("", "\"gestures\" must be an array");
+  const nlohmann::json* gestures =
+      &reader.array(reader.member(document, "gestures", ""), "gestures");
   for (std::size_t i = 0; i < gestures->size(); ++i) {
     const nlohmann::json& gesture = (*gestures)[i];
     const std::string where = "gesture " + std::to_string(i + 1);
@@ -285,10 +272,12 @@ Recording recordGestureScript(const std::filesystem::path& script) {
     // One key: the gesture's name. (Binding to items() would outlive its proxy.)
     const std::string kind = gesture.begin().key();
     const nlohmann::json& value = gesture.begin().value();
-    const std::string at = where + " (" + kind + ")";
+    const std::string at =
+        where + " (" + (kind.size() <= kJsonExcerptLength ? kind : quotedExcerpt(kind)) + ")";
     try {
       if (kind == "wait") {
-        if (!value.is_number() || !(value.get<double>() >= 0.0) || value.get<double>() > 600.0)
+        if (!value.is_number() || !(value.get<double>() >= 0.0) ||
+            value.get<double>() > kMaxGestureSeconds)
           reader.fail(at, "must be a number of seconds in [0, 600]");
         recorder.wait(value.get<double>());
       } else if (kind == "turn_sheet") {
@@ -296,24 +285,22 @@ Recording recordGestureScript(const std::filesystem::path& script) {
       } else if (kind == "move_sheet") {
         recorder.moveSheet(reader.vector(value, "by", at), reader.duration(value, at, 0.5));
       } else if (kind == "sheet_hand") {
-        if (!value.is_object() || !value.contains("to")) reader.fail(at, "missing \"to\"");
-        const auto clutch = value.find("clutch");
-        if (clutch != value.end() && !clutch->is_boolean())
-          reader.fail(at, "\"clutch\" must be true or false");
-        recorder.moveSheetHand(reader.pose(value["to"], at + ".to"),
+        const nlohmann::json* clutch = reader.optionalMember(value, "clutch", at);
+        recorder.moveSheetHand(reader.pose(reader.member(value, "to", at), at + ".to"),
                                reader.duration(value, at, 0.5),
-                               clutch != value.end() && clutch->get<bool>());
+                               clutch && reader.boolean(*clutch, at + ".clutch"));
       } else if (kind == "drag") {
-        if (!value.is_object()) reader.fail(at, "must be an object");
+        reader.object(value, at);
         std::vector<glm::dvec3> path;
-        if (const auto via = value.find("via"); via != value.end()) {
-          if (!via->is_array()) reader.fail(at, "\"via\" must be an array of points");
-          for (const auto& p : *via) path.push_back(reader.vector(p, at + ".via"));
+        if (const nlohmann::json* via = reader.optionalMember(value, "via", at)) {
+          reader.array(*via, at + ".via");
+          for (std::size_t k = 0; k < via->size(); ++k)
+            path.push_back(reader.vector3((*via)[k], JsonReader::item(at + ".via", k)));
         }
         path.push_back(reader.vector(value, "to", at));
         std::optional<SheetTurn> turn;
-        if (value.contains("turn_sheet"))
-          turn = reader.turn(value["turn_sheet"], at + ".turn_sheet");
+        if (const nlohmann::json* during = reader.optionalMember(value, "turn_sheet", at))
+          turn = reader.turn(*during, at + ".turn_sheet");
         recorder.drag(reader.vector(value, "grab", at), path, reader.duration(value, at, 1.0),
                       turn);
       } else if (kind == "undo") {
@@ -332,10 +319,22 @@ Recording recordGestureScript(const std::filesystem::path& script) {
     } catch (const GestureError& e) {
       if (std::string(e.what()).rfind(name, 0) == 0) throw;
       reader.fail(at, e.what());
+    } catch (const InvalidSheet& e) {
+      reader.fail(at, e.what());  // a grab or drag point out of reach
     }
   }
   recorder.wait(0.1);  // a moment of rest after the last gesture
   return recorder.recording();
+}
+
+}  // namespace
+
+Recording recordGestureScript(const std::filesystem::path& script) {
+  try {
+    return runGestureScript(script);
+  } catch (const JsonReadError& e) {
+    throw GestureError(e.what());
+  }
 }
 
 }  // namespace curvefold

@@ -25,6 +25,8 @@
 // so the fold follows both hands. Turns pivot about the sheet's centre.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -36,6 +38,12 @@
 #include "sim_input/recording.hpp"
 
 namespace curvefold {
+
+// Limits that bound what a script may cost (far above what a test or an example needs).
+inline constexpr double kMaxGestureRate = 1000.0;            // frames per second
+inline constexpr double kMaxGestureSeconds = 600.0;          // one gesture's duration, one wait
+inline constexpr std::size_t kMaxGestureFrames = 1'000'000;  // a whole script
+inline constexpr std::int64_t kMaxGestureScriptBytes = 16 << 20;
 
 class GestureError : public std::runtime_error {
  public:
@@ -72,6 +80,9 @@ class GestureRecorder {
   const InteractionCore& core() const { return *core_; }
 
  private:
+  // The frames `seconds` takes at the header's rate (at least 1); throws GestureError when they
+  // would take the recording past kMaxGestureFrames.
+  int stepsFor(double seconds) const;
   // Appends one frame and runs the core on it.
   void step();
   // The sheet hand pose that turns the sheet by `turn` (scaled by `fraction`) about its centre.

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/json_reader.hpp"
 
 namespace curvefold {
 namespace {
@@ -26,87 +27,47 @@ std::string format(double value) {
   return std::string(buffer, end);
 }
 
-bool blank(const std::string& line) {
-  return line.find_first_not_of(" \t\r") == std::string::npos;
-}
-
-// nlohmann's message reads "[json.exception.parse_error.101] parse error at line 1, column 7:
-// problem"; keep the column and the problem.
-std::string jsonProblem(const json::exception& e) {
-  std::string message = e.what();
-  if (const auto start = message.find("] "); start != std::string::npos)
-    message.erase(0, start + 2);
+// "parse error at line 1, column 7: problem" without the line, which the message names already.
+std::string jsonLineProblem(const json::exception& e) {
+  std::string message = jsonParseProblem(e);
   if (const auto at = message.find("parse error at line 1, "); at != std::string::npos)
     message.erase(at, 23);
   return message;
 }
 
-// Reads one line's JSON value, with messages that start with `prefix` (file and line).
-class LineReader {
+bool blank(const std::string& line) {
+  return line.find_first_not_of(" \t\r") == std::string::npos;
+}
+
+// Reads one line's JSON value, with messages that start with the file and line.
+class LineReader : public JsonReader {
  public:
-  LineReader(std::string prefix, std::size_t line) : prefix_(std::move(prefix)), line_(line) {}
+  LineReader(std::string prefix, std::size_t line) : JsonReader(std::move(prefix)), line_(line) {}
 
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw RecordingError(prefix_ + ": " + (where.empty() ? "" : where + ": ") + problem, line_);
+  [[noreturn]] void refuse(const std::string& where, const std::string& problem) const {
+    throw RecordingError(prefix() + ": " + (where.empty() ? "" : where + ": ") + problem, line_);
   }
 
-  const std::string& prefix() const { return prefix_; }
-
-  const json& member(const json& object, const char* key, const std::string& where) const {
-    if (!object.is_object())
-      fail(where, "must be an object, got " + std::string(object.type_name()));
-    const auto it = object.find(key);
-    if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
-    return *it;
+  RecordingHeader header(const json& value) const {
+    try {
+      return readHeader(value);
+    } catch (const JsonReadError& e) {
+      throw RecordingError(e.what(), line_);
+    }
   }
 
-  static std::string join(const std::string& where, const char* key) {
-    return where.empty() ? std::string(key) : where + "." + key;
+  InputFrame frame(const json& value) const {
+    try {
+      return readFrame(value);
+    } catch (const JsonReadError& e) {
+      throw RecordingError(e.what(), line_);
+    }
   }
 
-  double number(const json& value, const std::string& where) const {
-    // JSON has no NaN or infinity: nlohmann writes them as null, and huge literals do not parse.
-    if (!value.is_number())
-      fail(where, "must be a finite number, got " + std::string(value.type_name()));
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(where, "must be a finite number");
-    return x;
-  }
-
-  double unitInterval(const json& value, const std::string& where) const {
-    const double x = number(value, where);
-    if (x < 0.0 || x > 1.0) fail(where, "must lie in [0, 1], got " + format(x));
-    return x;
-  }
-
-  bool boolean(const json& value, const std::string& where) const {
-    if (!value.is_boolean())
-      fail(where, "must be true or false, got " + std::string(value.type_name()));
-    return value.get<bool>();
-  }
-
-  const std::string& string(const json& value, const std::string& where) const {
-    if (!value.is_string()) fail(where, "must be a string, got " + std::string(value.type_name()));
-    return value.get_ref<const std::string&>();
-  }
-
-  template <std::size_t N>
-  std::array<double, N> numbers(const json& value, const std::string& where) const {
-    if (!value.is_array() || value.size() != N)
-      fail(where, "must be an array of " + std::to_string(N) + " numbers");
-    std::array<double, N> result;
-    for (std::size_t i = 0; i < N; ++i)
-      result[i] = number(value[i], where + "[" + std::to_string(i) + "]");
-    return result;
-  }
-
-  glm::dvec3 position(const json& value, const std::string& where) const {
-    const auto p = numbers<3>(value, where);
-    return {p[0], p[1], p[2]};
-  }
-
+ private:
   glm::dquat orientation(const json& value, const std::string& where) const {
-    const auto q = numbers<4>(value, where);
+    double q[4];
+    numbers(value, 4, q, where);
     const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (std::abs(length - 1.0) > kQuaternionUnitTolerance)
       fail(where, "is not a unit quaternion [w, x, y, z] (length " + format(length) + ")");
@@ -115,56 +76,45 @@ class LineReader {
 
   Pose pose(const json& value, const std::string& where) const {
     Pose pose;
-    pose.position = position(member(value, "position", where), join(where, "position"));
+    pose.position = vector3(member(value, "position", where), join(where, "position"));
     pose.orientation = orientation(member(value, "orientation", where), join(where, "orientation"));
     return pose;
   }
 
-  RecordingHeader header(const json& value) const {
-    if (!value.is_object())
-      fail("", "not a curvefold recording (the header is a JSON " + std::string(value.type_name()) +
-                   ", not an object)");
-    const auto formatName = value.find("format");
-    if (formatName == value.end()) fail("", "not a curvefold recording (no \"format\")");
-    if (!formatName->is_string() || formatName->get_ref<const std::string&>() != kRecordingFormat)
-      fail("", "not a curvefold recording (format " + formatName->dump() + ", expected \"" +
-                   std::string(kRecordingFormat) + "\")");
-    const json& version = member(value, "version", "");
-    if (!version.is_number_integer() || version.get<std::int64_t>() != kRecordingVersion)
-      fail("", "unsupported version " + version.dump() + " (this build reads version " +
-                   std::to_string(kRecordingVersion) + ")");
+  RecordingHeader readHeader(const json& value) const {
+    formatAndVersion(value, kRecordingFormat, kRecordingVersion, "curvefold recording");
 
     RecordingHeader header;
     header.source = string(member(value, "source", ""), "source");
     bool known = false;
     for (std::string_view source : kRecordingSources) known = known || source == header.source;
     if (!known)
-      fail("source", "unknown source \"" + header.source +
-                         "\" (expected synthetic, script, desktop or openxr)");
+      fail("source", "unknown source " + quotedExcerpt(header.source) +
+                         " (expected synthetic, script, desktop or openxr)");
     const std::string& hand = string(member(value, "handedness", ""), "handedness");
     if (hand == "right")
       header.handedness = Handedness::Right;
     else if (hand == "left")
       header.handedness = Handedness::Left;
     else
-      fail("handedness", "unknown handedness \"" + hand + "\" (expected right or left)");
+      fail("handedness", "unknown handedness " + quotedExcerpt(hand) + " (expected right or left)");
     const std::string& units = string(member(value, "units", ""), "units");
-    if (units != "m") fail("units", "must be \"m\" (metres), got \"" + units + "\"");
+    if (units != "m") fail("units", "must be \"m\" (metres), got " + quotedExcerpt(units));
     header.rate = number(member(value, "rate", ""), "rate");
     if (header.rate <= 0.0) fail("rate", "must be positive, got " + format(header.rate));
     header.sheetFrame = pose(member(value, "sheet_frame", ""), "sheet_frame");
 
     const json& surface = member(value, "surface", "");
     try {
-      header.surface = parseInitialSurface(surface, prefix_);
-      initialSheet(Design{header.surface, {}}, prefix_);  // the engine builds it, or refuses here
+      header.surface = parseInitialSurface(surface, prefix());
+      initialSheet(Design{header.surface, {}}, prefix());  // the engine builds it, or refuses here
     } catch (const DesignError& e) {
       throw RecordingError(e.what(), line_);
     }
     return header;
   }
 
-  InputFrame frame(const json& value) const {
+  InputFrame readFrame(const json& value) const {
     if (!value.is_object())
       fail("", "a frame must be a JSON object, got " + std::string(value.type_name()));
     InputFrame frame;
@@ -176,14 +126,14 @@ class LineReader {
     frame.sheetHand.clutch = unitInterval(member(sheet, "clutch", "sheet"), "sheet.clutch");
 
     const json& point = member(value, "point", "");
-    frame.pointHand.position = position(member(point, "position", "point"), "point.position");
+    frame.pointHand.position = vector3(member(point, "position", "point"), "point.position");
     frame.pointHand.tracked = boolean(member(point, "tracked", "point"), "point.tracked");
     frame.pointHand.select = unitInterval(member(point, "select", "point"), "point.select");
 
-    if (const auto buttons = value.find("buttons"); buttons != value.end()) {
+    if (const json* buttons = optionalMember(value, "buttons", "")) {
       if (!buttons->is_array()) fail("buttons", "must be an array of button names");
       for (std::size_t i = 0; i < buttons->size(); ++i) {
-        const std::string where = "buttons[" + std::to_string(i) + "]";
+        const std::string where = item("buttons", i);
         const std::string& name = string((*buttons)[i], where);
         bool known = false;
         for (Button button : kButtons) {
@@ -192,15 +142,13 @@ class LineReader {
           known = true;
         }
         if (!known)
-          fail(where,
-               "unknown button \"" + name + "\" (expected cancel, undo, redo or switch_hands)");
+          fail(where, "unknown button " + quotedExcerpt(name) +
+                          " (expected cancel, undo, redo or switch_hands)");
       }
     }
     return frame;
   }
 
- private:
-  std::string prefix_;
   std::size_t line_;
 };
 
@@ -277,18 +225,20 @@ std::string frameLine(const InputFrame& frame) {
 }
 
 void writeRecording(const Recording& recording, const std::filesystem::path& path) {
-  // Every line is made (and checked) before the file is touched.
-  std::string text = headerLine(recording.header) + "\n";
-  double lastTime = -std::numeric_limits<double>::infinity();
-  for (const InputFrame& frame : recording.frames) {
-    if (frame.time < lastTime)
-      throw RecordingError("cannot record frame at t=" + format(frame.time) +
-                           ": time goes backwards (after t=" + format(lastTime) + ")");
-    lastTime = frame.time;
-    text += frameLine(frame);
-    text += '\n';
-  }
-  writeFileAtomically(path, text);
+  // Streamed line by line: a line the reader would refuse throws inside the writer, which leaves
+  // the target untouched, without the whole text held in memory.
+  const std::string header = headerLine(recording.header);
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out << header << '\n';
+    double lastTime = -std::numeric_limits<double>::infinity();
+    for (const InputFrame& frame : recording.frames) {
+      if (frame.time < lastTime)
+        throw RecordingError("cannot record frame at t=" + format(frame.time) +
+                             ": time goes backwards (after t=" + format(lastTime) + ")");
+      lastTime = frame.time;
+      out << frameLine(frame) << '\n';
+    }
+  });
 }
 
 Recording readRecording(const std::filesystem::path& path, const ReadOptions& options) {
@@ -321,7 +271,7 @@ Recording parseRecording(std::istream& in, std::string_view nameForErrors,
     try {
       value = json::parse(line);
     } catch (const json::exception& e) {
-      if (complete) reader.fail("", "not valid JSON: " + jsonProblem(e));
+      if (complete) reader.refuse("", "not valid JSON: " + jsonLineProblem(e));
       if (!options.allowTruncated || !haveHeader)
         throw RecordingError(
             name + ": truncated at line " + std::to_string(number) +
@@ -336,7 +286,7 @@ Recording parseRecording(std::istream& in, std::string_view nameForErrors,
     } else {
       InputFrame frame = reader.frame(value);
       if (frame.time < lastTime)
-        reader.fail(
+        reader.refuse(
             "t", "time goes backwards (" + format(frame.time) + " after " + format(lastTime) + ")");
       lastTime = frame.time;
       recording.frames.push_back(frame);

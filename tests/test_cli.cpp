@@ -1,5 +1,7 @@
 // The `curvefold` command line, run as a user runs it: exit codes, one-line errors, and no file
 // left behind by a failed command.
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -129,6 +131,27 @@ TEST_F(Cli, BadPointsAreRefused) {
                 "--vertex-near", out);
   expectFailure("fold " + design + " --vertex-near 0,0,0 --to 0,nan,1 -o " + out.string(), "--to",
                 out);
+  // Issue 13, A3: a point so far away that its squared distance overflows crashed the nearest-point
+  // search (exit 139); a target that far made a zero plane normal. Both are refused, named.
+  expectFailure("fold " + design + " --vertex-near 1e155,0,0 --to 0,0,0.05 -o " + out.string(),
+                "point (1e+155, 0, 0) lies too far from the sheet", out);
+  expectFailure("fold " + design + " --vertex-near 0,0,0 --to 1e300,0,0 -o " + out.string(),
+                "drag target (1e+300, 0, 0) lies too far from the sheet", out);
+  expectFailure("fold " + design + " --vertex-near 0,0,0 --to 0,1e200,0 -o " + out.string(),
+                "drag target", out);
+}
+
+// Issue 13, D14: a drag of 1e-10 to 1e-9 m off a flat star put its bisector within the on-plane
+// tolerance of the whole sheet and creased it everywhere. A drag below the shortest fold is none.
+TEST_F(Cli, SubToleranceDragAddsNoFold) {
+  const std::string design = newDesign("star", "a.curvefold.json");
+  for (const char* to : {"0,0.1,1e-10", "0,0.1,1e-9", "0,0.09999999,1e-8"}) {
+    const CommandResult r = run("fold " + design + " --vertex-near 0,0.1,0 --to " + to + " -o " +
+                                path("b.curvefold.json").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("no fold added"), std::string::npos) << to << ": " << r.out;
+    EXPECT_EQ(nlohmann::json::parse(slurp(path("b.curvefold.json")))["folds"].size(), 0u) << to;
+  }
 }
 
 TEST_F(Cli, BadDesignFilesAreRefused) {
@@ -164,6 +187,42 @@ TEST_F(Cli, UnwritableOutputIsRefused) {
                 "/nonexistent-dir/x.svg");
   expectFailure("new square -o /nonexistent-dir/x.curvefold.json", "/nonexistent-dir",
                 "/nonexistent-dir/x.curvefold.json");
+}
+
+// Issue 13, B6: `export --svg a.svg --obj a.obj` failing on the OBJ had already replaced a.svg.
+TEST_F(Cli, ExportWritesEveryFileOrNone) {
+  const std::string design = newDesign("square", "a.curvefold.json");
+  std::ofstream(path("a.svg")) << "earlier";
+  expectFailure("export " + design + " --svg " + path("a.svg").string() + " --obj " +
+                    path("missing/a.obj").string(),
+                "missing/a.obj", path("missing/a.obj"));
+  EXPECT_EQ(slurp(path("a.svg")), "earlier");
+  const CommandResult r = run("export " + design + " --svg " + path("a.svg").string() + " --obj " +
+                              path("a.obj").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(slurp(path("a.svg")), "earlier");
+  EXPECT_TRUE(fs::exists(path("a.obj")));
+}
+
+// Issue 13, B5: "-" is standard output (the report goes to stderr), and a device is written in
+// place: as root, `new square -o /dev/null` had replaced the device with a regular file.
+TEST_F(Cli, OutputToStandardOutputOrADevice) {
+  CommandResult r = run("new square -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["format"], "curvefold-design");
+  EXPECT_NE(r.err.find("wrote -"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("-")));
+  const fs::path null = path("null"), full = path("full");
+  if (::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
+      ::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+    GTEST_SKIP() << "mknod needs root";
+  r = run("new square -o " + null.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::is_character_file(null));
+  r = run("new square -o " + full.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_character_file(full));
 }
 
 TEST_F(Cli, BadObjFilesAreRefused) {

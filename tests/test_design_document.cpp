@@ -14,6 +14,7 @@
 #include "engine/geometry/reflection.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/io/json_reader.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
 
@@ -184,6 +185,23 @@ TEST(DesignErrors, NumberTooLargeForADouble) {
             std::string::npos);
 }
 
+// Issue 13, A1: a "format" nested 100,000 deep overflowed the stack when the message dumped it.
+// Messages quote at most about 60 characters of any value, keys included.
+TEST(DesignErrors, DeepOrHugeValuesAreQuotedByAShortExcerpt) {
+  const std::string deep = std::string(100'000, '[') + std::string(100'000, ']');
+  const std::string message = errorOf(R"({"format":)" + deep + "}");
+  EXPECT_EQ(message, std::string(kName) + ": not a curvefold design (format " +
+                         std::string(57, '[') + "..., expected \"curvefold-design\")");
+  const std::string longKey(100'000, 'k');
+  const std::string keyMessage = errorAfter(validDocument(), [&](json& d) {
+    d["surface"] = {{"generator", "square"}, {"parameters", {{longKey, "x"}}}};
+  });
+  EXPECT_LT(keyMessage.size(), 200u) << keyMessage.substr(0, 300);
+  EXPECT_NE(keyMessage.find("must be a finite number"), std::string::npos) << keyMessage;
+  EXPECT_EQ(jsonExcerpt(json::parse(R"({"a":[1,2,{"b":"c"}]})")), R"({"a":[1,2,{"b":"c"}]})");
+  EXPECT_EQ(jsonExcerpt(json(std::string(100, 'x'))).size(), kJsonExcerptLength);
+}
+
 TEST(DesignErrors, FormatAndVersion) {
   EXPECT_NE(errorOf(json::array()).find("not a curvefold design"), std::string::npos);
   EXPECT_NE(errorAfter(validDocument(), [](json& d) { d.erase("format"); })
@@ -195,7 +213,7 @@ TEST(DesignErrors, FormatAndVersion) {
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = 2; }),
             std::string(kName) + ": unsupported version 2 (this build reads version 1)");
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = "1"; }),
-            std::string(kName) + ": version: must be an integer");
+            std::string(kName) + ": unsupported version \"1\" (this build reads version 1)");
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d.erase("version"); }),
             std::string(kName) + ": missing \"version\"");
 }
@@ -260,7 +278,7 @@ TEST(DesignErrors, Folds) {
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["folds"][0].erase("seed"); }),
             std::string(kName) + ": fold 1: missing \"seed\"");
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["folds"][0]["seed"].push_back(0.0); }),
-            std::string(kName) + ": fold 1: seed: must hold 2 numbers, got 3");
+            std::string(kName) + ": fold 1: seed: must be an array of 2 numbers, got 3 values");
   // NaN is written as null by JSON writers.
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["folds"][0]["seed"][1] = nullptr; }),
             std::string(kName) + ": fold 1: seed[1]: must be a finite number, got null");
@@ -286,7 +304,7 @@ TEST(DesignErrors, Folds) {
                        [](json& d) {
                          d["folds"][0]["target"] = {1.0, 2.0};
                        }),
-            std::string(kName) + ": fold 1: target: must hold 3 numbers, got 2");
+            std::string(kName) + ": fold 1: target: must be an array of 3 numbers, got 2 values");
 }
 
 TEST(DesignErrors, UnknownGenerator) {

@@ -72,6 +72,36 @@ TEST(FoldSession, TargetAtTheGrabbedPointIsANoOp) {
   EXPECT_TRUE(identical(session.fixed(), session.initial()));
 }
 
+// Issue 13, D14: shorter than minimumDrag() is no fold, however the plane would cut the sheet.
+TEST(FoldSession, DragShorterThanTheMinimumIsNoFold) {
+  FoldSession session(flatGrid(4, 4, 0.05));
+  const glm::dvec3 grabbed = session.beginDragNear({0.2, 0.2, 0.0});
+  for (double length : {1e-12, 1e-10, 1e-9, 0.5 * session.minimumDrag()}) {
+    session.updateDrag(grabbed + glm::dvec3(0.0, 0.0, length));
+    EXPECT_FALSE(session.hasPlane()) << length;
+    EXPECT_TRUE(session.current().tags.empty()) << length;
+  }
+  EXPECT_FALSE(session.commit());
+  EXPECT_TRUE(identical(session.fixed(), session.initial()));
+  session.beginDragNear({0.2, 0.2, 0.0});
+  session.updateDrag(grabbed + glm::dvec3(0.0, 0.0, 2.0 * session.minimumDrag()));
+  EXPECT_TRUE(session.hasPlane());
+}
+
+// Issue 13, A3: points whose squared distance would overflow are refused, never turned into a
+// default (invalid) surface point.
+TEST(FoldSession, PointsAbsurdlyFarFromTheSheetAreRefused) {
+  const Sheet sheet = flatGrid(4, 4, 0.05);
+  EXPECT_THROW(closestSurfacePoint(sheet, {1e155, 0.0, 0.0}), InvalidSheet);
+  EXPECT_THROW(closestSurfacePoint(sheet, {0.0, -1e300, 0.0}), InvalidSheet);
+  EXPECT_NO_THROW(closestSurfacePoint(sheet, {1e4, 0.0, 0.0}));  // far, but within reach
+  FoldSession session(sheet);
+  session.beginDragNear({0.1, 0.1, 0.0});
+  EXPECT_THROW(session.updateDrag({1e300, 0.0, 0.0}), InvalidSheet);
+  EXPECT_NO_THROW(session.updateDrag({0.1, 0.1, 0.05}));
+  EXPECT_TRUE(session.commit());
+}
+
 TEST(FoldSession, UndoRedoAcrossKeyframes) {
   FoldSession session(flatGrid(10, 10, 0.02));
   std::mt19937_64 random(11);

@@ -144,7 +144,7 @@ TEST(Gestures, BadScriptsNameTheProblem) {
   };
   const std::string head =
       R"({"format":"curvefold-gesture-script","version":1,"surface":{"generator":"square"},)";
-  expectError("{", "not JSON");
+  expectError("{", "not valid JSON");
   expectError(R"({"format":"x","version":1})", "not a curvefold gesture script");
   expectError(head + R"("gestures":[{"fly":{}}]})", "gesture 1 (fly): unknown gesture");
   expectError(head + R"("gestures":[{"wait":0.1},{"drag":{"grab":[0,0,0]}}]})",
@@ -154,6 +154,19 @@ TEST(Gestures, BadScriptsNameTheProblem) {
   expectError(
       R"({"format":"curvefold-gesture-script","version":1,"surface":{"generator":"blob"},"gestures":[]})",
       "blob");
+  // Bounds that keep a script's cost within its limits (issue 13, A4): a rate of 1e9 frames per
+  // second, and 200 ten-minute waits (each within its own limit), are refused before they run.
+  expectError(head + R"("rate":1e9,"gestures":[]})", "rate: must lie in (0, 1000]");
+  std::string waits = head + R"("rate":60,"gestures":[)";
+  for (int i = 0; i < 200; ++i) waits += (i ? "," : "") + std::string(R"({"wait":600})");
+  expectError(waits + "]}", "gesture 28 (wait): the script makes more than 1000000 frames");
+  // A grab absurdly far from the sheet (A3) is one line naming the point, not a crash.
+  expectError(head + R"("gestures":[{"drag":{"grab":[1e155,0,0],"to":[0,0,0.05]}}]})",
+              "gesture 1 (drag): point (1e+155, 0, 0) lies too far from the sheet");
+  // A value nested a million deep is quoted by an excerpt, not dumped recursively (A1).
+  std::string deep = R"({"format":)";
+  deep.append(1'000'000, '[').append(1'000'000, ']').append("}");
+  expectError(deep, "(format [[[[[[[[");
   fs::remove_all(dir);
 }
 

@@ -95,4 +95,23 @@ TEST_F(RenderCli, ReplayWritesAFrameEveryNFrames) {
   EXPECT_EQ(pngSize(path("frames") / names.back()), std::make_pair(96u, 64u));
 }
 
+// Issue 13, B7: frames that cannot be written left the replay's five outputs already replaced. The
+// frames are rendered into a staging folder first, and the outputs are written only after them.
+TEST_F(RenderCli, FailingFramesLeaveTheOutputsAsTheyWere) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const fs::path design = path("out") / "square_one_fold.curvefold.json";
+  ASSERT_EQ(run("replay " + recording + " --out " + path("out").string()).exitCode, 0);
+  std::ofstream(design) << "earlier";
+  std::ofstream(path("file.txt")) << "a file, not a folder";
+  const CommandResult r = run("replay " + recording + " --out " + path("out").string() +
+                              " --frames " + (path("file.txt") / "frames").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("frames"), std::string::npos) << r.err;
+  std::ifstream in(design);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "earlier");
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find("staged"), std::string::npos) << entry.path();
+}
+
 }  // namespace

@@ -294,6 +294,28 @@ TEST(Recording, EmptyOrHeaderlessInputIsRefused) {
   }
 }
 
+// Issue 13, A1: a header whose "format" or "version" is nested a million deep was dumped into the
+// message recursively and overflowed the stack. The message quotes an excerpt of at most 60
+// characters.
+TEST(Recording, DeeplyNestedHeaderValuesAreQuotedByAnExcerpt) {
+  const std::string deep = std::string(1'000'000, '[') + std::string(1'000'000, ']');
+  for (const auto& [text, fragment] :
+       {std::pair{R"({"format":)" + deep + "}\n", std::string("line 1: not a curvefold recording "
+                                                              "(format [[[[")},
+        std::pair{R"({"format":"curvefold-recording","version":)" + deep + "}\n",
+                  std::string("line 1: unsupported version [[[[")}}) {
+    try {
+      parse(text);
+      ADD_FAILURE() << "accepted";
+    } catch (const RecordingError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(fragment), std::string::npos) << message.substr(0, 200);
+      EXPECT_LT(message.size(), 200u);
+      EXPECT_EQ(message.find('\n'), std::string::npos);
+    }
+  }
+}
+
 TEST(Recording, BlankLinesAndAMissingFinalNewlineAreFine) {
   std::string text = recordingText(squareRecordingHeader(), squareFoldFrames());
   EXPECT_EQ(parse(text + "\n\n").frames.size(), squareFoldFrames().size());

@@ -66,10 +66,12 @@ glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
 
 const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   if (!dragging_) throw std::logic_error("updateDrag without a drag in progress");
+  checkWithinReach(target, grabbed_, epsilon_ / kRelativeEpsilon, "drag target");
   target_ = target;
-  // The seed sits at distance -|target - grabbed|/2 from the bisector; closer than epsilon to the
-  // plane means no fold at all (a target equal to the grabbed point is a no-op, not an error).
-  folded_ = glm::distance(target, grabbed_) > 2.0 * epsilon_;
+  // A drag shorter than the smallest feature is no fold: its bisector would lie within the
+  // on-plane tolerance of much of the sheet and crease it everywhere (a target equal to the
+  // grabbed point is a no-op, not an error).
+  folded_ = glm::distance(target, grabbed_) > minimumDrag();
   if (!folded_) {
     workspace_.restore(fixed_, temporal_);
     workspace_.clear();

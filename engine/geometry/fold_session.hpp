@@ -19,6 +19,11 @@ namespace curvefold {
 
 // One committed fold: the grabbed point as a development point, and the plane it was reflected
 // through. grabbed/target are the 3D drag (informative; the plane is what replays).
+// The shortest drag that folds, relative to the sheet's size (20 nm on a 20 cm sheet). Its bisector
+// lies at least half of it from the grabbed point, 500 times the on-plane tolerance, so a
+// micro-drag off a flat sheet cannot put the whole sheet "on the plane" and crease it everywhere.
+inline constexpr double kRelativeMinimumDrag = 1e-7;
+
 struct FoldRecord {
   glm::dvec2 seed{0.0};
   ReflectionPlane plane;
@@ -53,6 +58,9 @@ class FoldSession {
   // What to show: the temporal sheet while dragging, else the fixed one.
   const Sheet& current() const { return dragging_ ? temporal_ : fixed_; }
   double epsilon() const { return epsilon_; }
+  // The shortest drag that folds (kRelativeMinimumDrag of the sheet's size); shorter ones show
+  // the unfolded sheet and commit nothing.
+  double minimumDrag() const { return kRelativeMinimumDrag * epsilon_ / kRelativeEpsilon; }
   // Changes whenever the fixed sheet does (commit, undo, redo), for caches built on it.
   std::uint64_t fixedRevision() const { return fixedRevision_; }
   // Changes when the committed design does (commit of a fold, undo, redo), not when a grab makes

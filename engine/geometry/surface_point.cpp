@@ -84,7 +84,24 @@ SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
                                        sheet.positions[tri[2]])};
 }
 
+void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
+                      const char* what) {
+  // Each coordinate first, so that no squared distance can overflow.
+  const double reach = kRelativeMaxReach * sheetSize;
+  const glm::dvec3 offset = glm::abs(p - from);
+  if (std::max({offset.x, offset.y, offset.z}) <= reach / 2.0 && glm::length(p - from) <= reach)
+    return;
+  std::ostringstream message;
+  message.precision(6);
+  message << what << " (" << p.x << ", " << p.y << ", " << p.z
+          << ") lies too far from the sheet (more than " << reach
+          << " m, a million times the sheet's size)";
+  throw InvalidSheet(message.str());
+}
+
 SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p) {
+  if (sheet.triangles.empty()) throw InvalidSheet("the sheet has no triangles to grab");
+  checkWithinReach(p, sheet.positions[sheet.triangles[0][0]], sheetSize(sheet), "point");
   SurfacePoint best;
   double bestDistance = std::numeric_limits<double>::infinity();
   for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
@@ -99,6 +116,8 @@ SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p) {
       best = candidate;
     }
   }
+  if (best.triangle == kNoIndex)
+    throw InvalidSheet("no surface point is nearest (a NaN position?)");
   return best;
 }
 

@@ -26,8 +26,18 @@ glm::dvec2 developmentOf(const Sheet& sheet, const SurfacePoint& point);
 SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
                                     const glm::dvec3& p);
 
+// How far from the sheet a point handed to a search or a drag may lie, in sheet sizes: far beyond
+// any reach of a hand or a command, and far inside where squared distances overflow.
+inline constexpr double kRelativeMaxReach = 1e6;
+
+// Throws InvalidSheet "<what> (x, y, z) lies too far from the sheet ..." when p is farther than
+// kRelativeMaxReach sheet sizes from `from` (a point of the sheet).
+void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
+                      const char* what);
+
 // The surface point nearest to p in 3D (brute force over the triangles; ties go to the lowest
-// triangle index, so the answer is deterministic). The sheet must not be empty.
+// triangle index, so the answer is deterministic). Never returns an invalid point: throws
+// InvalidSheet for an empty sheet or a p farther than kRelativeMaxReach sheet sizes from it.
 SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p);
 
 // The triangle whose development contains q (within tolerance metres), choosing the most interior

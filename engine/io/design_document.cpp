@@ -14,6 +14,7 @@
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/json_reader.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -33,45 +34,9 @@ std::string format(double value) {
 }
 
 // Reads a JSON value into a design, with messages that name where the problem is.
-class Reader {
+class Reader : public JsonReader {
  public:
-  explicit Reader(std::string_view name) : name_(name) {}
-
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw DesignError(name_ + ": " + (where.empty() ? "" : where + ": ") + problem);
-  }
-
-  const json& member(const json& object, const char* key, const std::string& where) const {
-    if (!object.is_object())
-      fail(where, "must be an object, got " + std::string(object.type_name()));
-    const auto it = object.find(key);
-    if (it == object.end()) fail(where, std::string("missing \"") + key + "\"");
-    return *it;
-  }
-
-  const json& array(const json& value, const std::string& where) const {
-    if (!value.is_array()) fail(where, "must be an array, got " + std::string(value.type_name()));
-    return value;
-  }
-
-  double number(const json& value, const std::string& where) const {
-    // JSON has no NaN or infinity; nlohmann writes them as null, and huge literals overflow.
-    if (!value.is_number())
-      fail(where, "must be a finite number, got " + std::string(value.type_name()));
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(where, "must be a finite number");
-    return x;
-  }
-
-  template <int N>
-  glm::vec<N, double> vector(const json& value, const std::string& where) const {
-    if (array(value, where).size() != N)
-      fail(where,
-           "must hold " + std::to_string(N) + " numbers, got " + std::to_string(value.size()));
-    glm::vec<N, double> result;
-    for (int i = 0; i < N; ++i) result[i] = number(value[i], where + "[" + std::to_string(i) + "]");
-    return result;
-  }
+  using JsonReader::JsonReader;
 
   VertexIndex index(const json& value, std::size_t vertexCount, const std::string& where) const {
     if (!value.is_number_unsigned()) fail(where, "must be a vertex index (a non-negative integer)");
@@ -88,8 +53,7 @@ class Reader {
     if (array(value, where).size() != N)
       fail(where, "must hold " + std::to_string(N) + " vertex indices");
     std::array<VertexIndex, N> result;
-    for (std::size_t i = 0; i < N; ++i)
-      result[i] = index(value[i], vertexCount, where + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < N; ++i) result[i] = index(value[i], vertexCount, item(where, i));
     return result;
   }
 
@@ -97,30 +61,30 @@ class Reader {
     const std::string where = "surface.mesh";
     Sheet sheet;
     const json& positions = array(member(value, "positions", where), where + ".positions");
+    sheet.positions.reserve(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
-      sheet.positions.push_back(
-          vector<3>(positions[i], where + ".positions[" + std::to_string(i) + "]"));
+      sheet.positions.push_back(vector3(positions[i], item(where + ".positions", i)));
     const json& development = array(member(value, "development", where), where + ".development");
+    sheet.development.reserve(development.size());
     for (std::size_t i = 0; i < development.size(); ++i)
-      sheet.development.push_back(
-          vector<2>(development[i], where + ".development[" + std::to_string(i) + "]"));
+      sheet.development.push_back(vector2(development[i], item(where + ".development", i)));
     if (sheet.development.size() != sheet.positions.size())
       fail(where, std::to_string(sheet.positions.size()) + " positions but " +
                       std::to_string(sheet.development.size()) + " development points");
     const std::size_t n = sheet.positions.size();
     const json& triangles = array(member(value, "triangles", where), where + ".triangles");
+    sheet.triangles.reserve(triangles.size());
     for (std::size_t i = 0; i < triangles.size(); ++i)
-      sheet.triangles.push_back(
-          indices<3>(triangles[i], n, where + ".triangles[" + std::to_string(i) + "]"));
+      sheet.triangles.push_back(indices<3>(triangles[i], n, item(where + ".triangles", i)));
     auto readTags = [&](const char* key, EdgeKind kind) {
-      const auto it = value.find(key);
-      if (it == value.end()) return;
+      const json* tags = optionalMember(value, key, where);
+      if (!tags) return;
       const std::string list = where + "." + key;
-      array(*it, list);
-      for (std::size_t i = 0; i < it->size(); ++i) {
-        const std::string item = list + "[" + std::to_string(i) + "]";
-        const auto [a, b] = indices<2>((*it)[i], n, item);
-        if (a == b) fail(item, "an edge needs two different vertices");
+      array(*tags, list);
+      for (std::size_t i = 0; i < tags->size(); ++i) {
+        const std::string at = item(list, i);
+        const auto [a, b] = indices<2>((*tags)[i], n, at);
+        if (a == b) fail(at, "an edge needs two different vertices");
         sheet.tags.push_back({Edge::of(a, b), kind});
       }
     };
@@ -137,7 +101,7 @@ class Reader {
 
   InitialSurface surface(const json& value) const {
     const std::string where = "surface";
-    if (!value.is_object()) fail(where, "must be an object, got " + std::string(value.type_name()));
+    object(value, where);
     const bool generated = value.contains("generator");
     if (generated == value.contains("mesh"))
       fail(where, "must hold either \"generator\" or \"mesh\"");
@@ -147,58 +111,44 @@ class Reader {
     if (!generator.is_string() || generator.get_ref<const std::string&>().empty())
       fail(where + ".generator", "must be a surface name");
     surface.generator = generator.get<std::string>();
-    if (const auto it = value.find("parameters"); it != value.end()) {
-      if (!it->is_object())
-        fail(where + ".parameters", "must be an object, got " + std::string(it->type_name()));
-      for (const auto& [key, parameter] : it->items())
-        surface.parameters[key] = number(parameter, where + ".parameters." + key);
+    if (const json* parameters = optionalMember(value, "parameters", where)) {
+      object(*parameters, where + ".parameters");
+      for (const auto& [key, parameter] : parameters->items())
+        surface.parameters[key] = number(parameter, join(where + ".parameters", key));
     }
     return surface;
   }
 
   FoldRecord fold(const json& value, std::size_t number) const {
     const std::string where = "fold " + std::to_string(number);
-    if (!value.is_object()) fail(where, "must be an object, got " + std::string(value.type_name()));
+    object(value, where);
     FoldRecord fold;
-    fold.seed = vector<2>(member(value, "seed", where), where + ": seed");
+    fold.seed = vector2(member(value, "seed", where), where + ": seed");
     const json& plane = member(value, "plane", where);
-    fold.plane.point =
-        vector<3>(member(plane, "point", where + ": plane"), where + ": plane.point");
+    fold.plane.point = vector3(member(plane, "point", where + ": plane"), where + ": plane.point");
     fold.plane.normal =
-        vector<3>(member(plane, "normal", where + ": plane"), where + ": plane.normal");
+        vector3(member(plane, "normal", where + ": plane"), where + ": plane.normal");
     const double length = glm::length(fold.plane.normal);
     if (length == 0.0) fail(where, "plane.normal is zero");
     if (std::abs(length - 1.0) > kUnitTolerance)
       fail(where, "plane.normal is not a unit vector (length " + format(length) + ")");
     // grabbed and target only describe the drag; the plane is what replays.
-    if (value.contains("grabbed")) fold.grabbed = vector<3>(value["grabbed"], where + ": grabbed");
-    if (value.contains("target")) fold.target = vector<3>(value["target"], where + ": target");
+    if (const json* grabbed = optionalMember(value, "grabbed", where))
+      fold.grabbed = vector3(*grabbed, where + ": grabbed");
+    if (const json* target = optionalMember(value, "target", where))
+      fold.target = vector3(*target, where + ": target");
     return fold;
   }
 
   Design design(const json& document) const {
-    if (!document.is_object())
-      fail("", "not a curvefold design (a JSON " + std::string(document.type_name()) +
-                   ", not an object)");
-    const auto format = document.find("format");
-    if (format == document.end()) fail("", "not a curvefold design (no \"format\")");
-    if (!format->is_string() || format->get_ref<const std::string&>() != kDesignFormat)
-      fail("", "not a curvefold design (format " + format->dump() + ", expected \"" +
-                   std::string(kDesignFormat) + "\")");
-    const json& version = member(document, "version", "");
-    if (!version.is_number_integer()) fail("version", "must be an integer");
-    if (version.get<std::int64_t>() != kDesignVersion)
-      fail("", "unsupported version " + version.dump() + " (this build reads version " +
-                   std::to_string(kDesignVersion) + ")");
+    formatAndVersion(document, kDesignFormat, kDesignVersion, "curvefold design");
     Design design;
     design.surface = surface(member(document, "surface", ""));
     const json& folds = array(member(document, "folds", ""), "folds");
+    design.folds.reserve(folds.size());
     for (std::size_t i = 0; i < folds.size(); ++i) design.folds.push_back(fold(folds[i], i + 1));
     return design;
   }
-
- private:
-  std::string name_;
 };
 
 ordered_json vectorJson(const glm::dvec2& v) {
@@ -240,31 +190,11 @@ ordered_json foldJson(const FoldRecord& fold) {
 }
 
 Design parseText(const std::string& text, std::string_view name) {
-  json document;
   try {
-    document = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L, column C:
-    // problem"; keep the place and the problem.
-    std::string message = e.what();
-    std::string place;
-    if (const auto at = message.find("parse error at "); at != std::string::npos) {
-      message.erase(0, at + 15);
-      if (const auto colon = message.find(": "); colon != std::string::npos) {
-        place = " (" + message.substr(0, colon) + ")";
-        message.erase(0, colon + 2);
-      }
-    }
-    throw DesignError(std::string(name) + ": not valid JSON at byte " + std::to_string(e.byte) +
-                      place + ": " + message);
-  } catch (const json::exception& e) {
-    // A number too large for a double, for instance.
-    std::string message = e.what();
-    if (const auto start = message.find("] "); start != std::string::npos)
-      message.erase(0, start + 2);
-    throw DesignError(std::string(name) + ": not valid JSON: " + message);
+    return Reader(std::string(name)).design(parseJsonText(text, name));
+  } catch (const JsonReadError& e) {
+    throw DesignError(e.what());
   }
-  return Reader(name).design(document);
 }
 
 }  // namespace
@@ -274,7 +204,11 @@ nlohmann::ordered_json initialSurfaceJson(const InitialSurface& surface) {
 }
 
 InitialSurface parseInitialSurface(const nlohmann::json& value, std::string_view nameForErrors) {
-  return Reader(nameForErrors).surface(value);
+  try {
+    return Reader(std::string(nameForErrors)).surface(value);
+  } catch (const JsonReadError& e) {
+    throw DesignError(e.what());
+  }
 }
 
 Sheet initialSheet(const Design& design, std::string_view nameForErrors) {

@@ -1,0 +1,80 @@
+#include "engine/io/output_set.hpp"
+
+#include <exception>
+#include <string>
+#include <system_error>
+
+#include "engine/io/atomic_file.hpp"
+
+namespace curvefold {
+
+namespace fs = std::filesystem;
+
+void OutputSet::add(const fs::path& path, std::function<void(const fs::path&)> writer) {
+  outputs_.push_back({path, std::move(writer)});
+}
+
+void OutputSet::write(const fs::path& folder) {
+  bool created = false;
+  if (!folder.empty() && !fs::is_directory(folder)) {
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error) throw FileError("cannot create " + folder.string() + ": " + error.message());
+    created = true;
+  }
+  struct Staged {
+    const Output* output;
+    fs::path target;  // symbolic links followed
+    fs::path stage;   // empty once renamed
+    bool inPlace;     // a device, a FIFO, standard output: written last
+  };
+  std::vector<Staged> staged;
+  auto discard = [&] {
+    std::error_code ignored;
+    for (const Staged& entry : staged)
+      if (!entry.stage.empty()) fs::remove(entry.stage, ignored);
+    if (created) fs::remove(folder, ignored);  // only if still empty
+  };
+  auto run = [](const Output& output, const fs::path& at) {
+    try {
+      output.writer(at);
+    } catch (const std::exception& e) {
+      // The writers name the staging file; the user knows the target.
+      std::string message = e.what();
+      const std::string stage = at.string();
+      if (stage != output.path.string())
+        for (auto found = message.find(stage); found != std::string::npos;
+             found = message.find(stage, found + output.path.string().size()))
+          message.replace(found, stage.size(), output.path.string());
+      throw FileError(message);
+    }
+  };
+  try {
+    for (const Output& output : outputs_) {
+      const fs::path target = resolveOutputPath(output.path);
+      if (writesInPlace(target)) {
+        staged.push_back({&output, target, {}, true});
+        continue;
+      }
+      removeStaleTemporaries(target);
+      staged.push_back({&output, target, stagingPathFor(target), false});
+      run(output, staged.back().stage);
+    }
+    for (Staged& entry : staged) {
+      if (entry.inPlace) continue;
+      keepPermissions(entry.target, entry.stage);
+      std::error_code error;
+      fs::rename(entry.stage, entry.target, error);
+      if (error)
+        throw FileError("cannot write " + entry.output->path.string() + ": " + error.message());
+      entry.stage.clear();
+    }
+  } catch (...) {
+    discard();
+    throw;
+  }
+  for (const Staged& entry : staged)
+    if (entry.inPlace) run(*entry.output, entry.target);
+}
+
+}  // namespace curvefold

@@ -1,0 +1,33 @@
+// Files a command writes together, all or none (README: "no output file is touched" on failure):
+// each regular file is first written whole to a hidden staging name next to its target, and only
+// when every one has been written are they renamed into place. Outputs written in place (a
+// device, a FIFO, standard output; see atomic_file.hpp) go last, once the staging has succeeded.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+namespace curvefold {
+
+class OutputSet {
+ public:
+  // writer writes the whole file at the path it is given (atomically, with writeFileAtomically or
+  // a writer built on it); it is handed the staging path, or the target itself when written in
+  // place.
+  void add(const std::filesystem::path& path,
+           std::function<void(const std::filesystem::path&)> writer);
+
+  // Creates `folder` first when it is given and missing (and removes it again on failure). Throws
+  // FileError naming the target, never the staging name; on failure no target has changed.
+  void write(const std::filesystem::path& folder = {});
+
+ private:
+  struct Output {
+    std::filesystem::path path;
+    std::function<void(const std::filesystem::path&)> writer;
+  };
+  std::vector<Output> outputs_;
+};
+
+}  // namespace curvefold
