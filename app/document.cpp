@@ -12,8 +12,26 @@ namespace fs = std::filesystem;
 
 Design Document::design() const {
   const auto& history = session->folds();
-  return {surface, std::vector<FoldRecord>(history.begin(),
-                                           history.begin() + std::ptrdiff_t(session->foldCount()))};
+  Design design{surface, baseFolds};
+  design.folds.insert(design.folds.end(), history.begin(),
+                      history.begin() + std::ptrdiff_t(session->foldCount()));
+  return design;
+}
+
+InitialSurface Document::recordingSurface() const {
+  if (baseFolds.empty()) return surface;
+  return session->initial();
+}
+
+void startFromCommittedFolds(Document& doc) {
+  if (doc.session->foldCount() == 0) return;
+  doc.baseFolds = doc.design().folds;
+  const Pose worldFromSheet = doc.core->worldFromSheet();
+  const Handedness handedness = doc.core->handedness();
+  Sheet folded = doc.session->fixed();
+  doc.core.reset();
+  doc.session = std::make_unique<FoldSession>(std::move(folded));
+  doc.core = std::make_unique<InteractionCore>(*doc.session, worldFromSheet, handedness);
 }
 
 Document makeDocument(const Design& design, const std::string& name, const Pose& worldFromSheet,

@@ -14,12 +14,24 @@ namespace curvefold::cli {
 
 struct Document {
   InitialSurface surface;
+  // Folds baked into the session's initial sheet (a recorded session starts from the folds it
+  // opened with, since a recording starts from its header's surface): kept so the design stays
+  // whole, its generator and history included.
+  std::vector<FoldRecord> baseFolds;
   std::unique_ptr<FoldSession> session;
   std::unique_ptr<InteractionCore> core;
 
-  // The initial surface and the folds committed so far (a drag in progress is not one).
+  // The initial surface, the base folds and the folds committed so far (a drag in progress is
+  // not one).
   Design design() const;
+  // The surface a recording of this session starts from: the design's surface, or the folded
+  // sheet when there are base folds.
+  InitialSurface recordingSurface() const;
 };
+
+// Bakes the folds committed so far into a new session's initial sheet (they move to baseFolds;
+// the sheet's pose and handedness are kept), so that a recording can start here.
+void startFromCommittedFolds(Document& doc);
 
 // A document from a design (its folds remade live, so they can be undone), with the sheet at
 // `worldFromSheet`.

@@ -44,6 +44,14 @@ void InteractionCore::emit(InteractionEventKind kind, double time) {
 void InteractionCore::process(const InputFrame& frame) {
   events_.clear();
   haptics_.clear();
+  // A trigger released in the same frame as a button press (a runtime pacing at 20 Hz sees both
+  // at once) was released first: the drag commits, then the button acts (undo undoes this fold,
+  // not the one before it).
+  if (state_ == InteractionState::Dragging && frame.pointHand.tracked && selectHeld_ &&
+      frame.pointHand.select <= thresholds_.selectRelease && (frame.buttons & ~buttonsHeld_) != 0) {
+    selectHeld_ = false;
+    endDrag(true, frame.time);
+  }
   handleButtons(frame);
   handleSheetHand(frame.sheetHand);
   handlePointHand(frame);

@@ -90,7 +90,16 @@ void Recorder::writeAll(const std::string& text) {
 void Recorder::flush() {
   if (fd_ < 0) return;
   if (!pending_.empty()) {
-    writeAll(pending_);
+    try {
+      writeAll(pending_);
+    } catch (const FileError&) {
+      // A full disk may take half of the pending lines: cut the file back to its last whole line,
+      // so that it stays a recording that replays every frame it holds.
+      if (::ftruncate(fd_, static_cast<off_t>(bytesWritten_)) == 0)
+        ::lseek(fd_, static_cast<off_t>(bytesWritten_), SEEK_SET);
+      throw;
+    }
+    bytesWritten_ += pending_.size();
     pending_.clear();
     pendingFrames_ = 0;
   }

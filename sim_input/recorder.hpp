@@ -36,7 +36,8 @@ class Recorder {
   void append(const InputFrame& frame);
 
   // Writes and fsyncs every pending frame. Call it after a frame that committed, undid or redid a
-  // fold (see isCommitPoint), so a crash never loses committed work. Throws FileError.
+  // fold (see isCommitPoint), so a crash never loses committed work. Throws FileError; a write
+  // that fails part way (a full disk) is cut back, so the file ends with a whole line.
   void commitPoint() { flush(); }
   void flush();
   // Flushes and closes the file; later appends throw. Throws FileError.
@@ -52,6 +53,7 @@ class Recorder {
   std::filesystem::path path_;
   int fd_ = -1;
   std::string pending_;
+  std::size_t bytesWritten_ = 0;  // whole lines on disk
   std::size_t pendingFrames_ = 0;
   std::size_t frameCount_ = 0;
   double lastTime_;

@@ -194,6 +194,35 @@ TEST_F(Interaction, UndoAndRedoButtons) {
   EXPECT_TRUE(identical(session_.fixed(), afterTwo));
 }
 
+// Issue 13, C13: a trigger release and an undo press in the same frame (a runtime pacing at 20 Hz)
+// cancelled the drag and undid the fold before it. The release comes first: commit, then undo.
+TEST_F(Interaction, ReleaseAndUndoInOneFrameCommitThenUndo) {
+  fold({0.1, 0.1, 0.0}, {-0.02, -0.03, 0.06});
+  ASSERT_EQ(session_.foldCount(), 1u);
+  const Sheet afterOne = session_.fixed();
+  const glm::dvec3 start = world({-0.1, 0.1, 0.0});
+  pointAt(start, 0.0);
+  pointAt(start, 1.0);
+  for (int i = 1; i <= 5; ++i) pointAt(start + glm::dvec3(0.03, -0.02, 0.05) * (i / 5.0), 1.0);
+  frame_.buttons = static_cast<std::uint32_t>(Button::Undo);
+  pointAt(start + glm::dvec3(0.03, -0.02, 0.05), 0.0);  // release and undo together
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Undo));
+  EXPECT_FALSE(sawEvent(InteractionEventKind::Cancel));
+  EXPECT_EQ(session_.foldCount(), 1u);  // the second fold committed, then undone
+  EXPECT_TRUE(session_.canRedo());
+  EXPECT_TRUE(identical(session_.fixed(), afterOne));
+  // A button pressed while the trigger is still held cancels the drag, as before.
+  frame_.buttons = 0;
+  pointAt(start, 0.0);
+  pointAt(start, 1.0);
+  for (int i = 1; i <= 5; ++i) pointAt(start + glm::dvec3(0.03, -0.02, 0.05) * (i / 5.0), 1.0);
+  frame_.buttons = static_cast<std::uint32_t>(Button::Cancel);
+  pointAt(start + glm::dvec3(0.03, -0.02, 0.05), 1.0);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Cancel));
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
 TEST_F(Interaction, SwitchingHandsEndsTheDragAndSwapsRoles) {
   const glm::dvec3 corner = world({0.1, 0.1, 0.0});
   pointAt(corner, 0.0);

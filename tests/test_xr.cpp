@@ -86,6 +86,11 @@ TEST_F(XrApp, RecordedSessionFoldsLikeTheReplayAndItsRecordingReplaysExactly) {
   const json again = replayed(path("xr.jsonl").string(), "again");
   EXPECT_EQ(again["folds"], design["folds"]);
   EXPECT_NE(slurp(path("xr.jsonl")).find("\"source\":\"openxr\""), std::string::npos);
+  // Issue 13, C13: the header's rate is the runtime's pace (the simulated runtime paces at the
+  // input's 60 Hz), not a nominal 90.
+  const std::string recorded = slurp(path("xr.jsonl"));
+  EXPECT_NEAR(json::parse(recorded.substr(0, recorded.find('\n')))["rate"].get<double>(), 60.0,
+              1e-3);
   EXPECT_NE(
       result.out.find(
           "IDLE READY SYNCHRONIZED VISIBLE FOCUSED VISIBLE SYNCHRONIZED STOPPING IDLE EXITING"),
@@ -314,6 +319,22 @@ TEST_F(XrApp, PlainCurvefoldChoosesXrWhenAHeadsetIsThere) {
   EXPECT_EQ(std::count(none.err.begin(), none.err.end(), '\n'), 1) << none.err;
   EXPECT_NE(none.err.find("no headset"), std::string::npos) << none.err;
   EXPECT_NE(none.err.find("curvefold replay"), std::string::npos) << none.err;
+}
+
+// Issue 13, B8: a session that cannot start (no OpenXR runtime; no display for the designer) left
+// a header-only recording, and the retry was refused with "file exists". Nothing is created.
+TEST_F(XrApp, ASessionThatCannotStartCreatesNoRecording) {
+  CommandResult r = run("xr square --record r.jsonl --autosave a.json",
+                        "XR_RUNTIME_JSON=" + path("no-runtime.json").string());
+  EXPECT_EQ(r.exitCode, 1) << r.out;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(path("r.jsonl")));
+  EXPECT_FALSE(fs::exists(path("a.json")));
+  r = run("design square --record r.jsonl --autosave a.json", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(r.exitCode, 1) << r.out;
+  EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("r.jsonl")));
+  EXPECT_FALSE(fs::exists(path("a.json")));
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "app/desktop/desktop_input.hpp"
 #include "app/document.hpp"
 #include "app/interaction_scene.hpp"
+#include "app/session_outputs.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -35,7 +36,6 @@
 #include "engine/render/swapchain_target.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sim_input/player.hpp"
-#include "sim_input/recorder.hpp"
 
 namespace curvefold::cli {
 
@@ -104,22 +104,9 @@ void runDesigner(const DesignerOptions& options) {
     design = designFor(options.input, kDefaultSurface);
   }
   Document doc = makeDocument(design, options.resume ? autosavePath : options.input);
-  std::unique_ptr<Recorder> recorder;
-  if (!options.record.empty()) {
-    if (doc.session->foldCount() > 0) {
-      // A recording starts from its header's surface: the resumed folds become that surface.
-      Sheet resumed = doc.session->fixed();
-      doc.core.reset();
-      doc.surface = resumed;
-      doc.session = std::make_unique<FoldSession>(std::move(resumed));
-      doc.core = std::make_unique<InteractionCore>(*doc.session, Pose{});
-    }
-    RecordingHeader header;
-    header.source = "desktop";
-    header.surface = doc.surface;
-    header.rate = 60.0;
-    recorder = std::make_unique<Recorder>(options.record, header);
-  }
+  // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
+  SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); });
+  if (outputs.wantsRecording()) startFromCommittedFolds(doc);
 
   Glfw glfw;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
@@ -303,6 +290,17 @@ void runDesigner(const DesignerOptions& options) {
     }
   };
 
+  // The window and the device exist: now the recording may be created (B8 of issue 13).
+  if (outputs.wantsRecording()) {
+    RecordingHeader header;
+    header.source = "desktop";
+    header.surface = doc.recordingSurface();
+    // The display's refresh rate paces the frames (informative; each frame carries its time).
+    const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+    header.rate = mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
+    outputs.startRecording(header);
+  }
+
   const Clock::time_point start = Clock::now();
   double lastTime = 0.0;
   Clock::time_point lastFrame = Clock::now();
@@ -319,8 +317,9 @@ void runDesigner(const DesignerOptions& options) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("curvefold");
-    if (ImGui::CollapsingHeader("New sheet", recorder ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
-      if (recorder) {
+    if (ImGui::CollapsingHeader("New sheet",
+                                outputs.wantsRecording() ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+      if (outputs.wantsRecording()) {
         ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
       } else {
         if (ImGui::BeginCombo("surface", catalog[surfaceIndex].name.c_str())) {
@@ -354,7 +353,7 @@ void runDesigner(const DesignerOptions& options) {
     ImGui::InputText("save as", savePath, sizeof savePath);
     if (ImGui::Button("Save"))
       guarded(std::string("saved ") + savePath, [&] { saveDesign(doc.design(), savePath); });
-    if (!recorder) {
+    if (!outputs.wantsRecording()) {
       ImGui::InputText("open", openPath, sizeof openPath);
       if (ImGui::Button("Open"))
         guarded(std::string("opened ") + openPath,
@@ -403,11 +402,8 @@ void runDesigner(const DesignerOptions& options) {
     doc.core->process(input);
     if (doc.session->dragging())
       dragUpdateMs = std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
-    if (recorder) recorder->append(input);
-    if (isCommitPoint(doc.core->events())) {
-      if (recorder) recorder->commitPoint();
-      saveDesign(doc.design(), autosavePath);
-    }
+    outputs.frame(input, doc.core->events());
+    for (const std::string& problem : outputs.takeNewProblems()) message = problem;
 
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
@@ -425,11 +421,11 @@ void runDesigner(const DesignerOptions& options) {
   frames.waitAll();
   if (!options.screenshotOnExit.empty())
     exportPng(context, lastScene, target.extent(), options.screenshotOnExit);
-  if (recorder) recorder->close();
   ImGui_ImplVulkan_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   vkDestroyDescriptorPool(context.device(), imguiPool, nullptr);
+  if (!outputs.finish()) throw FileError(outputs.problems().back());
   if (context.validationMessageCount() > 0)
     throw VulkanError(std::to_string(context.validationMessageCount()) +
                       " Vulkan validation messages, the first: " +

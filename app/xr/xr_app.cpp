@@ -1,11 +1,13 @@
 #include "app/xr/xr_app.hpp"
 
 #include <chrono>
+#include <iostream>
 #include <thread>
 
 #include "app/commands.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "interaction/xr/xr_check.hpp"
@@ -63,22 +65,16 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   doc_ = makeDocument(design, options.input, sheetFrame, handedness);
   autosave_ =
       options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
-  if (!options.record.empty()) {
-    if (doc_.session->foldCount() > 0) {
-      // A recording starts from its header's surface: the opened folds become that surface.
-      Sheet folded = doc_.session->fixed();
-      doc_.core.reset();
-      doc_.surface = folded;
-      doc_.session = std::make_unique<FoldSession>(std::move(folded));
-      doc_.core = std::make_unique<InteractionCore>(*doc_.session, sheetFrame, handedness);
-    }
-    RecordingHeader header;
-    header.source = "openxr";
-    header.handedness = handedness;
-    header.sheetFrame = sheetFrame;
-    header.surface = doc_.surface;
-    header.rate = 90.0;  // nominal; the frames carry the runtime's display times
-    recorder_ = std::make_unique<Recorder>(options.record, header);
+  outputs_ =
+      std::make_unique<SessionOutputs>(autosave_, options.record, [this] { return doc_.design(); });
+  if (outputs_->wantsRecording()) {
+    // A recording starts from its header's surface: the opened folds become that surface, and
+    // stay in the design (baseFolds).
+    startFromCommittedFolds(doc_);
+    recordingHeader_.source = "openxr";
+    recordingHeader_.handedness = handedness;
+    recordingHeader_.sheetFrame = sheetFrame;
+    recordingHeader_.surface = doc_.recordingSurface();
   }
 
   if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
@@ -136,13 +132,17 @@ void XrApp::processInput(XrTime displayTime) {
   lastInput_ = input;
   ++summary_.framesProcessed;
   input_->applyHaptics(doc_.core->haptics(), handedness);
-  if (recorder_) recorder_->append(input);
-  if (isCommitPoint(doc_.core->events())) commitPoint();
+  outputs_->frame(input, doc_.core->events());
+  for (const std::string& problem : outputs_->takeNewProblems())
+    std::cerr << "\ncurvefold: warning: " << problem << std::flush;
 }
 
-void XrApp::commitPoint() {
-  if (recorder_) recorder_->commitPoint();
-  saveDesign(doc_.design(), autosave_);
+// The file is made once the runtime paces frames, so a session that never starts leaves none,
+// and the header's rate is the runtime's (not a nominal 90 Hz).
+void XrApp::startRecording(XrDuration period) {
+  if (!outputs_->wantsRecording() || outputs_->recording()) return;
+  recordingHeader_.rate = period > 0 ? 1e9 / double(period) : 90.0;
+  outputs_->startRecording(recordingHeader_);
 }
 
 void XrApp::buildScene() {
@@ -167,6 +167,7 @@ const Scene& XrApp::eyeScene(const Camera& camera) {
 
 void XrApp::frame() {
   const XrFrameTiming timing = program_->beginFrame();
+  startRecording(timing.period);
   if (program_->focused()) processInput(timing.displayTime);
   const bool render = timing.shouldRender && graphics_;
   if (render) buildScene();
@@ -175,6 +176,17 @@ void XrApp::frame() {
 }
 
 XrAppSummary XrApp::run(const std::atomic<bool>& interrupt) {
+  try {
+    return runSessions(interrupt);
+  } catch (...) {
+    // Every way out saves first: an error the loop did not expect still leaves the design
+    // saved and the recording closed before it is reported.
+    outputs_->finish(/*saveAlways=*/true);
+    throw;
+  }
+}
+
+XrAppSummary XrApp::runSessions(const std::atomic<bool>& interrupt) {
   using namespace std::chrono_literals;
   if (!startSession())
     throw XrError(
@@ -217,8 +229,7 @@ XrAppSummary XrApp::run(const std::atomic<bool>& interrupt) {
     while (!interrupt && !startSession()) std::this_thread::sleep_for(50ms);
     if (interrupt) break;
   }
-  if (recorder_) recorder_->close();
-  saveDesign(doc_.design(), autosave_);
+  if (!outputs_->finish(/*saveAlways=*/true)) throw FileError(outputs_->problems().back());
   for (XrSessionState state : program_->stateHistory())
     summary_.states.push_back(xrSessionStateName(state));
   summary_.folds = doc_.session->foldCount();

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "app/document.hpp"
+#include "app/session_outputs.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/xr/xr_program.hpp"
 
 namespace curvefold {
-class Recorder;
 class XrInput;
 class XrVulkanGraphics;
 class SessionSheetTracker;
@@ -71,8 +71,9 @@ class XrApp {
   const std::string& runtimeName() const { return summary_.runtime; }
 
  private:
+  XrAppSummary runSessions(const std::atomic<bool>& interrupt);
   void processInput(XrTime displayTime);
-  void commitPoint();
+  void startRecording(XrDuration period);
   const Scene& eyeScene(const Camera& camera);
   void buildScene();
 
@@ -81,9 +82,10 @@ class XrApp {
   std::unique_ptr<XrVulkanGraphics> graphics_;
   std::unique_ptr<XrProgram> program_;
   std::unique_ptr<XrInput> input_;
-  std::unique_ptr<Recorder> recorder_;
   std::unique_ptr<SessionSheetTracker> tracker_;
   std::string autosave_;
+  RecordingHeader recordingHeader_;          // its rate is set from the runtime's frame period
+  std::unique_ptr<SessionOutputs> outputs_;  // after doc_: finishes (saves) before doc_ goes
   InputFrame lastInput_;
   bool haveFirstTime_ = false;
   XrTime firstTime_ = 0;

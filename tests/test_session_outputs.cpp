@@ -1,0 +1,156 @@
+// The files a live session keeps (issue 13, B8, C10, C12): created only once the session starts;
+// a recording that fills its disk stops with whole lines while the autosave keeps every fold; a
+// resumed, recorded session appends to the design it resumed, generator and history kept; every
+// way out saves.
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "app/document.hpp"
+#include "app/session_outputs.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "io_test_support.hpp"
+#include "sim_input/gestures.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using SessionOutputsTest = curvefold::testing::ScratchDirectory;
+
+RecordingHeader squareHeader() {
+  RecordingHeader header;
+  header.surface = GeneratedSurface{"square", {{"resolution", 12}}};
+  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
+  header.rate = 60;
+  return header;
+}
+
+// Hand motion making `folds` folds on the square, one after another.
+Recording foldingFrames(int folds) {
+  GestureRecorder recorder(squareHeader());
+  for (int i = 0; i < folds; ++i) {
+    const double x = 0.1 - 0.02 * i;
+    recorder.drag({x, 0.1, 0.0}, {{x - 0.03, 0.06, 0.04 + 0.002 * i}}, 0.3);
+  }
+  return recorder.recording();
+}
+
+// Runs frames through a document's core and the outputs, as the designer's loop does.
+void runSession(Document& doc, SessionOutputs& outputs, const Recording& input) {
+  for (const InputFrame& frame : input.frames) {
+    doc.core->process(frame);
+    outputs.frame(frame, doc.core->events());
+  }
+}
+
+TEST_F(SessionOutputsTest, NothingIsCreatedBeforeTheSessionStarts) {
+  const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
+  {
+    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
+    // The window or the OpenXR instance fails here: the session never starts.
+  }
+  EXPECT_TRUE(entries().empty());
+  // The retry is not refused; an existing recording is refused before anything starts.
+  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
+  outputs.startRecording(squareHeader());
+  EXPECT_TRUE(fs::exists(record));
+  EXPECT_THROW(SessionOutputs(autosave.string(), record.string(), [&] { return doc.design(); }),
+               FileError);
+}
+
+// C10: the recording's disk fills at a commit (here: a file-size limit). The design is saved
+// first, the recording stops with whole lines only and says so, and the session goes on folding
+// into the autosave. Run in a child process, which alone gets the limit.
+TEST_F(SessionOutputsTest, AFullRecordingDiskStopsTheRecordingNotTheSession) {
+  const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
+  const Recording input = foldingFrames(4);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);  // writes past the limit fail with EFBIG instead
+    const rlimit limit{24 * 1024, 24 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
+    outputs.startRecording(input.header);
+    runSession(doc, outputs, input);
+    const bool finished = outputs.finish();
+    const bool stopped = !outputs.problems().empty() &&
+                         outputs.problems().front().find("stopped recording") != std::string::npos;
+    ::_exit(finished && stopped && doc.session->foldCount() == 4 ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the session did not go on past the full disk";
+  EXPECT_EQ(loadDesign(autosave).folds.size(), 4u);
+  // Whole lines only: it reads without allowing a truncated last line, and holds fewer frames.
+  const Recording recorded = readRecording(record);
+  EXPECT_LT(recorded.frames.size(), input.frames.size());
+  EXPECT_LE(fs::file_size(record), 24u * 1024u);
+}
+
+// C12: `design --resume --record` rewrote the autosave as a flat mesh plus the new fold only. The
+// recording starts from the folded sheet; the design keeps its generator and every fold.
+TEST_F(SessionOutputsTest, AResumedRecordedSessionAppendsToTheDesign) {
+  const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
+  const Recording first = foldingFrames(2);
+  Document earlier =
+      makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  for (const InputFrame& frame : first.frames) earlier.core->process(frame);
+  ASSERT_EQ(earlier.session->foldCount(), 2u);
+  const Design resumed = earlier.design();
+
+  Document doc = makeDocument(resumed, "resumed", first.header.sheetFrame);
+  SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
+  startFromCommittedFolds(doc);
+  RecordingHeader header = first.header;
+  header.surface = doc.recordingSurface();
+  EXPECT_TRUE(std::holds_alternative<Sheet>(header.surface));
+  outputs.startRecording(header);
+  GestureRecorder more(header);
+  more.drag({-0.1, -0.1, 0.0}, {{-0.06, -0.05, 0.05}}, 0.3);
+  runSession(doc, outputs, more.recording());
+  ASSERT_TRUE(outputs.finish());
+
+  const Design saved = loadDesign(autosave);
+  ASSERT_TRUE(std::holds_alternative<GeneratedSurface>(saved.surface));
+  EXPECT_EQ(std::get<GeneratedSurface>(saved.surface).generator, "square");
+  ASSERT_EQ(saved.folds.size(), 3u);
+  // The saved design rebuilds the very sheet the session shows.
+  EXPECT_TRUE(identical(buildSheet(saved), doc.session->fixed()));
+  // And the recording replays the new fold from its header's surface.
+  EXPECT_EQ(readRecording(record).frames.size(), more.recording().frames.size());
+}
+
+// C11: an error the loop did not expect still leaves the design saved: the destructor finishes
+// while the exception unwinds, retrying an autosave that failed at the commit.
+TEST_F(SessionOutputsTest, AnUnexpectedErrorStillSaves) {
+  const fs::path autosave = dir() / "later" / "a.autosave.curvefold.json";
+  const Recording input = foldingFrames(1);
+  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  try {
+    SessionOutputs outputs(autosave.string(), "", [&] { return doc.design(); });
+    runSession(doc, outputs, input);  // the commit's save fails: its folder is missing
+    ASSERT_EQ(doc.session->foldCount(), 1u);
+    ASSERT_EQ(outputs.problems().size(), 1u);
+    EXPECT_NE(outputs.problems()[0].find("autosave failed"), std::string::npos);
+    fs::create_directory(dir() / "later");
+    throw std::runtime_error("XR_ERROR_CALL_ORDER_INVALID");
+  } catch (const std::runtime_error&) {
+  }
+  ASSERT_TRUE(fs::exists(autosave));
+  EXPECT_EQ(loadDesign(autosave).folds.size(), 1u);
+}
+
+}  // namespace
+}  // namespace curvefold::cli
