@@ -17,6 +17,8 @@ packages=(
   # GLSL compiler, GLFW, Dear ImGui; Xvfb and xdotool for the window tests
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libglfw3-dev libimgui-dev xvfb xauth xdotool
+  # pgrep, for the crash-safety test
+  procps
   # OpenXR: the Khronos loader and headers (the simulated runtime in sim_input/ serves tests)
   libopenxr-dev libopenxr-loader1
 )

@@ -36,6 +36,34 @@ inline bool have(const char* program) {
   return shell(std::string("command -v ") + program + " >/dev/null 2>&1") == 0;
 }
 
+// The first of `programs` that is not installed, or "" when all are.
+inline std::string missingProgram(std::initializer_list<const char*> programs) {
+  for (const char* program : programs)
+    if (!have(program)) return program;
+  return "";
+}
+
+// Under CI (CI=true) a test that cannot run fails: a missing tool must not pass as a skip.
+inline bool underCi() {
+  const char* ci = std::getenv("CI");
+  return ci != nullptr && std::string(ci) == "true";
+}
+
+}  // namespace curvefold::testing
+
+// Skips the test when a program it drives is missing (a developer's machine), fails it under CI.
+#define CURVEFOLD_REQUIRE_PROGRAMS(...)                                                      \
+  do {                                                                                       \
+    const std::string missing = ::curvefold::testing::missingProgram({__VA_ARGS__});         \
+    if (!missing.empty()) {                                                                  \
+      if (::curvefold::testing::underCi())                                                   \
+        FAIL() << missing << " is not installed, and CI=true: scripts/setup.sh installs it"; \
+      GTEST_SKIP() << missing << " is not installed";                                        \
+    }                                                                                        \
+  } while (false)
+
+namespace curvefold::testing {
+
 class DesktopTest : public ::testing::Test {
  protected:
   void SetUp() override {

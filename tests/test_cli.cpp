@@ -115,6 +115,14 @@ TEST_F(Cli, BadSurfaceParametersAreRefused) {
   expectFailure("new cylinder --resolution 0" + o, "resolution", out);
   expectFailure("new cylinder --resolution 1e9" + o, "resolution", out);
   expectFailure("new star --resolution 2.5" + o, "resolution", out);
+  // Issue 13, D18: 2000 waves on 48 strips aliased silently; the smallest resolution is named.
+  expectFailure("new swept_curve --wavelength 0.0001" + o,
+                "under-samples the curve: its 2000 waves need 4 samples each; the smallest "
+                "resolution that works is 8000, above the limit",
+                out);
+  expectFailure("new swept_curve --wavelength 0.01" + o, "the smallest resolution that works is 80",
+                out);
+  EXPECT_EQ(run("new swept_curve --wavelength 0.01 --resolution 80" + o).exitCode, 0);
 }
 
 TEST_F(Cli, BadDesignerOptionsAreRefusedBeforeAWindowOpens) {

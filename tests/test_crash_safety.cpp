@@ -67,8 +67,7 @@ class CrashSafety : public DesktopTest {
 };
 
 TEST_F(CrashSafety, KillMidDragKeepsCommittedFoldsAndResumes) {
-  if (!have("Xvfb") || !have("xdotool") || !have("pgrep"))
-    GTEST_SKIP() << "Xvfb, xdotool or pgrep is not installed";
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool", "pgrep");
   ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
   const auto [from1, to1] = cornerFold({1.0, -1.0});
   const auto [from2, to2] = cornerFold({1.0, 1.0});

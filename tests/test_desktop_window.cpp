@@ -23,7 +23,7 @@ constexpr int kWidth = 640, kHeight = 480;
 using DesktopWindow = DesktopTest;
 
 TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
-  if (!have("Xvfb") || !have("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
   const std::string display = startXvfb();
   ASSERT_FALSE(display.empty()) << "Xvfb did not start";
 
@@ -90,7 +90,7 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
 // the sheet) and the mouse picks through the new size. The view keeps its camera, so a vertex
 // appears where that camera projects it into the larger window.
 TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
-  if (!have("Xvfb") || !have("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
   ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
   constexpr int kNewWidth = 900, kNewHeight = 560;
   const Sheet sheet = makeSurface("square");

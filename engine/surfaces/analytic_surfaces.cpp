@@ -178,6 +178,20 @@ Sheet makeSweptSine(const std::string& surface, double amplitude, double wavelen
                     double curveWidth, double length, int resolution) {
   const double k = 2.0 * pi / wavelength;
   auto curve = [&](double x) { return glm::dvec2(x, amplitude * std::sin(k * x)); };
+  // Fewer than kSamplesPerWave samples along each wave alias it into a zig-zag of the wrong
+  // amplitude. The samples along the curve number at least resolution * min(1, width / length).
+  if (amplitude > 0.0) {
+    const double waves = curveWidth / wavelength;
+    const double needed =
+        std::ceil(kSweptSamplesPerWave * waves / std::min(1.0, curveWidth / length));
+    if (resolution < needed)
+      failParameter(
+          surface, "resolution", resolution,
+          "under-samples the curve: its " + formatApprox(waves) + " waves need " +
+              std::to_string(int(kSweptSamplesPerWave)) +
+              " samples each; the smallest resolution that works is " + formatApprox(needed) +
+              (needed > kMaxResolution ? ", above the limit: lengthen the wavelength" : ""));
+  }
   // Arc length from a dense polyline, to space the samples evenly along the curve.
   const int dense = 4096 + 64 * resolution;
   std::vector<double> arc(dense + 1, 0.0);

@@ -15,6 +15,13 @@ namespace curvefold::detail {
 std::string formatNumber(double value);
 std::string formatApprox(double value);
 
+// The largest "resolution" a generator accepts.
+inline constexpr int kMaxResolution = 2000;
+
+// The fewest samples per wave of the swept sine that still show its shape (4: a sine sampled at
+// its peaks and zeros); fewer alias it into a zig-zag of the wrong amplitude.
+inline constexpr double kSweptSamplesPerWave = 4.0;
+
 // Segments along the longer and shorter of two development lengths (see surfaces.hpp).
 struct Segments {
   int alongFirst = 1;

@@ -50,7 +50,7 @@ using std::numbers::pi;
 // value is a mistake rather than a sheet (architecture-sized sheets of 1 km are tested).
 constexpr double kMinLength = 1e-4;
 constexpr double kMaxLength = 1e4;
-constexpr int kMaxResolution = 2000;
+using detail::kMaxResolution;
 // CGAL's mesher makes about 5 triangles per maxEdge^2 of area (measured); 6 leaves a margin.
 constexpr double kMeshTrianglesPerArea = 6.0;
 // A hole may use at most this fraction of the distance from the centre to the outline.
