@@ -191,6 +191,37 @@ TEST(Reflection, CreaseSplitByALaterFoldStaysACrease) {
 }
 
 // Many random folds on a flat grid: every invariant holds after every one.
+// Issue 13, D17: `check` flagged numerically straight 4-vertex crease chains (planarity error
+// 6.45e-10 m against a limit of 2.8e-10) because the plane's normal came from the cross product
+// of nearly parallel vectors. Planar chains that stray up to 1e-9 m from their line, in any
+// orientation, must measure as planar to rounding; a real bend must still measure.
+TEST(CreasePlanarity, NearlyStraightPlanarChainsMeasureAsPlanar) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto direction = [&] {
+    return glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)));
+  };
+  for (int trial = 0; trial < 2000; ++trial) {
+    const glm::dvec3 origin = 0.1 * glm::dvec3(unit(random), unit(random), unit(random));
+    const glm::dvec3 along = direction();
+    const glm::dvec3 across = glm::normalize(glm::cross(along, direction()));
+    const glm::dvec3 normal = glm::cross(along, across);
+    const double stray = std::pow(10.0, -9.0 - 4.0 * std::abs(unit(random)));  // 1e-13 .. 1e-9
+    std::vector<glm::dvec3> chain;
+    for (double s : {0.0, 0.09, 0.19, 0.28})
+      chain.push_back(origin + s * along + stray * unit(random) * across);
+    EXPECT_LT(planarityError(chain), 1e-15) << "trial " << trial << ", stray " << stray;
+    // Move the inner points off the line in two directions: a real twist, measured within the
+    // fit's slack (the best plane is about lift / sqrt(2) from them).
+    const double lift = 1e-7;
+    chain[1] += lift * normal;
+    chain[2] += lift * across;
+    EXPECT_GT(planarityError(chain), 0.2 * lift) << "trial " << trial;
+    EXPECT_LE(planarityError(chain), lift * 1.000001) << "trial " << trial;
+  }
+  EXPECT_EQ(planarityError(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}), 0.0);
+}
+
 TEST(Reflection, RandomFoldsKeepEveryInvariant) {
   const Sheet grid = flatGrid(10, 10, 0.02);
   Sheet sheet = grid;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -23,32 +24,41 @@ double distanceToLine(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3
   return glm::distance(p, a + t * direction);
 }
 
-double planarityError(const Sheet& sheet, const std::vector<VertexIndex>& chain) {
-  // Plane through three well-spread points of the chain; a straight chain is planar.
-  const glm::dvec3 p0 = sheet.positions[chain.front()];
+}  // namespace
+
+double planarityError(std::span<const glm::dvec3> points) {
+  if (points.empty()) return 0.0;
+  // Plane through three well-spread points: p0, p1 farthest from it, p2 farthest from their line.
+  const glm::dvec3 p0 = points.front();
   glm::dvec3 p1 = p0;
-  for (VertexIndex v : chain)
-    if (glm::distance(sheet.positions[v], p0) > glm::distance(p1, p0)) p1 = sheet.positions[v];
+  for (const glm::dvec3& p : points)
+    if (glm::distance(p, p0) > glm::distance(p1, p0)) p1 = p;
   glm::dvec3 p2 = p0;
-  double farthest = 0.0;
-  for (VertexIndex v : chain) {
-    const double d = distanceToLine(sheet.positions[v], p0, p1);
-    if (d > farthest) {
-      farthest = d;
-      p2 = sheet.positions[v];
+  double lineError = 0.0;  // the largest distance from the line p0 p1
+  for (const glm::dvec3& p : points) {
+    const double d = distanceToLine(p, p0, p1);
+    if (d > lineError) {
+      lineError = d;
+      p2 = p;
     }
   }
-  const glm::dvec3 normal = glm::cross(p1 - p0, p2 - p0);
-  const double scale = glm::distance(p0, p1);
-  if (farthest <= 1e-12 * scale || glm::length(normal) == 0.0) return farthest;
+  // Every plane through the line is within lineError of the points: a straight chain is planar.
+  const glm::dvec3 along = p1 - p0;
+  if (lineError == 0.0 || glm::dot(along, along) == 0.0) return lineError;
+  // The normal from along and the part of p2 - p0 across it (Gram-Schmidt), not from p2 - p0
+  // itself: for a nearly straight chain the cross product with p2 - p0 is mostly rounding, and
+  // its tilt put rounding-sized chains 1e-9 m off their own plane.
+  glm::dvec3 across = p2 - p0;
+  across -= along * (glm::dot(across, along) / glm::dot(along, along));
+  const glm::dvec3 normal = glm::cross(along, across);
+  if (glm::dot(normal, normal) == 0.0) return lineError;
   const glm::dvec3 unit = glm::normalize(normal);
-  double error = 0.0;
-  for (VertexIndex v : chain)
-    error = std::max(error, std::abs(glm::dot(sheet.positions[v] - p0, unit)));
-  return error;
+  double planeError = 0.0;
+  for (const glm::dvec3& p : points)
+    planeError = std::max(planeError, std::abs(glm::dot(p - p0, unit)));
+  // Both bound the distance to the best plane from above; the smaller is the tighter.
+  return std::min(lineError, planeError);
 }
-
-}  // namespace
 
 double foldAngleDegrees(const Sheet& sheet, const EdgeTopology::EdgeSides& sides) {
   if (sides.left == kNoIndex || sides.right == kNoIndex) return 0.0;
@@ -109,7 +119,10 @@ std::vector<CreaseCurve> creaseCurves(const Sheet& sheet, const EdgeTopology& ed
       e = next;
     }
     curve.closed = curve.vertices.front() == curve.vertices.back();
-    curve.planarityError = planarityError(sheet, curve.vertices);
+    std::vector<glm::dvec3> points;
+    points.reserve(curve.vertices.size());
+    for (VertexIndex v : curve.vertices) points.push_back(sheet.positions[v]);
+    curve.planarityError = planarityError(points);
     return curve;
   };
   std::vector<CreaseCurve> curves;

@@ -2,6 +2,7 @@
 // assignment, and the crease curves (chains of crease edges between junctions).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "engine/geometry/sheet.hpp"
@@ -45,5 +46,10 @@ struct CreaseCurve {
 };
 
 std::vector<CreaseCurve> creaseCurves(const Sheet& sheet, const EdgeTopology& edges);
+
+// Largest distance of the points from a plane fitted through them (an upper bound on the best
+// plane's, tight for the chains folds make). A straight chain is planar, and a nearly straight
+// one is measured without the rounding of a cross product of nearly parallel vectors.
+double planarityError(std::span<const glm::dvec3> points);
 
 }  // namespace curvefold
