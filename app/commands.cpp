@@ -13,6 +13,7 @@
 
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -121,8 +122,13 @@ void addNewCommand(CLI::App& app) {
     }
     saveDesign(design, options->output);
     const Sheet sheet = initialSheet(design, options->output);
+    // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
+    // paper, laid side by side in the development and printed on one crease pattern.
+    const std::size_t pieces = connectedComponentCount(sheet, buildEdgeTopology(sheet));
     statusFor({options->output}) << "wrote " << options->output << " (" << describeSurface(design)
-                                 << ", " << sheet.triangleCount() << " triangles)\n";
+                                 << ", " << sheet.triangleCount() << " triangles"
+                                 << (pieces > 1 ? ", " + std::to_string(pieces) + " pieces" : "")
+                                 << ")\n";
   });
 }
 

@@ -233,6 +233,17 @@ TEST_F(Cli, OutputToStandardOutputOrADevice) {
   EXPECT_TRUE(fs::is_character_file(full));
 }
 
+// Issue 13, E20: a sheet may have several pieces; `new` says how many.
+TEST_F(Cli, AnObjOfSeparatePiecesSaysSo) {
+  std::ofstream(path("two.obj")) << "v 0 0 0\nv 0.01 0 0\nv 0 0.01 0\n"
+                                    "v 0.1 0 0\nv 0.11 0 0\nv 0.1 0.01 0\nf 1 2 3\nf 4 5 6\n";
+  const CommandResult r =
+      run("new " + path("two.obj").string() + " -o " + path("two.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("2 triangles, 2 pieces"), std::string::npos) << r.out;
+  EXPECT_EQ(run("check " + path("two.json").string()).exitCode, 0);
+}
+
 TEST_F(Cli, BadObjFilesAreRefused) {
   const fs::path out = path("x.curvefold.json");
   auto write = [&](const std::string& name, const std::string& text) {

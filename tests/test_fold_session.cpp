@@ -88,6 +88,29 @@ TEST(FoldSession, DragShorterThanTheMinimumIsNoFold) {
   EXPECT_TRUE(session.hasPlane());
 }
 
+// Issue 13, E22: a grab uses the picked triangle and the session's adjacency instead of scanning
+// every triangle; the sheet it makes is the scan's, bit for bit, inside a triangle, on an edge and
+// at a vertex.
+TEST(FoldSession, AGrabWithHintsMakesTheScansSheet) {
+  const Sheet sheet = flatGrid(6, 6, 0.04);
+  int edgeSplits = 0;
+  // Inside, on a grid line, on either diagonal, at a vertex, on the boundary.
+  for (const glm::dvec3 near :
+       {glm::dvec3(0.101, 0.093, 0.0), glm::dvec3(0.08, 0.093, 0.0), glm::dvec3(0.1, 0.1, 0.0),
+        glm::dvec3(0.1, 0.14, 0.0), glm::dvec3(0.12, 0.12, 0.0), glm::dvec3(0.0, 0.05, 0.0)}) {
+    FoldSession session(sheet);
+    const SurfacePoint point = closestSurfacePoint(sheet, near);
+    session.beginDrag(point);
+    const VertexInsertion scanned = insertVertexAt(sheet, developmentOf(sheet, point));
+    edgeSplits += scanned.sheet.triangleCount() == sheet.triangleCount() + 2;
+    EXPECT_TRUE(identical(session.fixed(), scanned.sheet)) << near.x << ", " << near.y;
+    EXPECT_EQ(session.grabbedVertex(), scanned.vertex);
+    session.cancel();
+    EXPECT_TRUE(identical(session.fixed(), sheet));
+  }
+  EXPECT_GE(edgeSplits, 2);  // the adjacency path was taken
+}
+
 // Issue 13, A3: points whose squared distance would overflow are refused, never turned into a
 // default (invalid) surface point.
 TEST(FoldSession, PointsAbsurdlyFarFromTheSheetAreRefused) {

@@ -40,7 +40,7 @@ void FoldSession::fixedChanged() {
 }
 
 glm::dvec3 FoldSession::beginDrag(const SurfacePoint& point) {
-  return beginDragAtDevelopment(developmentOf(fixed_, point));
+  return beginDragAtDevelopment(developmentOf(fixed_, point), point.triangle);
 }
 
 glm::dvec3 FoldSession::beginDragNear(const glm::dvec3& p) {
@@ -49,11 +49,17 @@ glm::dvec3 FoldSession::beginDragNear(const glm::dvec3& p) {
 
 // The grabbed point is inserted into the fixed sheet itself (taken back exactly on cancel), so a
 // drag holds two sheets, fixed and temporal, not three.
-glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed) {
+glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed, TriangleIndex triangle) {
   cancel();
-  grabVertex_ = insertVertexInPlace(fixed_, seed, &grabUndo_);
+  // What the session knows spares the insertion its scans of every triangle (the same result).
+  const InsertionHints hints{epsilon_ / kRelativeEpsilon, triangle, &fixedAdjacency_.triangles};
+  grabVertex_ = insertVertexInPlace(fixed_, seed, &grabUndo_, hints);
   grabInserted_ = fixed_.vertexCount() != grabUndo_.vertexCount;
-  if (grabInserted_) fixedChanged();
+  if (grabInserted_) {
+    // Kept for a cancel, which takes the insertion back exactly: no second rebuild.
+    std::swap(fixedAdjacency_, adjacencyBeforeGrab_);
+    fixedChanged();
+  }
   grabSeed_ = seed;
   grabbed_ = fixed_.positions[grabVertex_];
   target_ = grabbed_;
@@ -113,7 +119,8 @@ bool FoldSession::commit() {
 void FoldSession::cancel() {
   if (dragging_ && grabInserted_) {
     undoInsertion(fixed_, grabUndo_);
-    fixedChanged();
+    std::swap(fixedAdjacency_, adjacencyBeforeGrab_);
+    ++fixedRevision_;
   }
   dragging_ = false;
   folded_ = false;
@@ -121,7 +128,8 @@ void FoldSession::cancel() {
 }
 
 SessionMemory FoldSession::memoryUse() const {
-  SessionMemory memory{sheetBytes(fixed_), sheetBytes(temporal_), adjacencyBytes(fixedAdjacency_),
+  SessionMemory memory{sheetBytes(fixed_), sheetBytes(temporal_),
+                       adjacencyBytes(fixedAdjacency_) + adjacencyBytes(adjacencyBeforeGrab_),
                        workspace_.memoryBytes(), 0};
   for (std::size_t k = 1; k < keyframes_.size(); ++k) memory.history += sheetBytes(*keyframes_[k]);
   return memory;

@@ -72,7 +72,8 @@ class FoldSession {
   // Grabs a surface point (it becomes a vertex of the temporal sheet). Ends any drag in progress
   // by cancelling it. Returns the grabbed 3D position.
   glm::dvec3 beginDrag(const SurfacePoint& point);
-  glm::dvec3 beginDragAtDevelopment(const glm::dvec2& seed);
+  // `triangle`, when known, holds the seed (a picked point's): it spares a scan for it.
+  glm::dvec3 beginDragAtDevelopment(const glm::dvec2& seed, TriangleIndex triangle = kNoIndex);
   glm::dvec3 beginDragNear(const glm::dvec3& p);
   // Moves the grabbed point to `target` (sheet coordinates); the temporal sheet is the fixed one
   // with the part containing the point reflected through the bisector plane. A target within
@@ -114,6 +115,7 @@ class FoldSession {
   double epsilon_ = 0.0;
   Sheet fixed_;
   SheetAdjacency fixedAdjacency_;
+  SheetAdjacency adjacencyBeforeGrab_;  // fixed_'s before the grab's insertion, for a cancel
   std::uint64_t fixedRevision_ = 0;
   std::uint64_t designRevision_ = 0;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 #include <glm/geometric.hpp>
@@ -145,11 +146,37 @@ std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm
   return best;
 }
 
-VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo) {
-  const double snap = kRelativeGrabSnap * sheetSize(sheet);
-  const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
-  if (!located) throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
-  const TriangleIndex t = located->triangle;
+namespace {
+
+// Whether q lies inside triangle t farther than `margin` from each of its edges.
+bool deepInside(const Sheet& sheet, TriangleIndex t, const glm::dvec2& q, double margin) {
+  if (t >= sheet.triangleCount()) return false;
+  const Triangle& tri = sheet.triangles[t];
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec2 u = sheet.development[tri[i]], w = sheet.development[tri[(i + 1) % 3]];
+    const glm::dvec2 d = w - u;
+    const double length = glm::length(d);
+    // Counter-clockwise: the inside is on the left of each edge.
+    if (length == 0.0 || (d.x * (q - u).y - d.y * (q - u).x) / length <= margin) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo,
+                                const InsertionHints& hints) {
+  const double snap =
+      kRelativeGrabSnap * (hints.sheetSize > 0.0 ? hints.sheetSize : sheetSize(sheet));
+  TriangleIndex t = kNoIndex;
+  if (deepInside(sheet, hints.triangle, q, snap)) {
+    t = hints.triangle;
+  } else {
+    const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
+    if (!located)
+      throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
+    t = located->triangle;
+  }
   const Triangle tri = sheet.triangles[t];
   if (undo) *undo = {sheet.vertexCount(), sheet.triangleCount(), {}, {}, false};
 
@@ -181,9 +208,18 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
         sheet.development[u] + s * (sheet.development[w] - sheet.development[u]);
     sheet.positions.push_back(position);
     sheet.development.push_back(flat);
-    // Each triangle holding the edge (u, w) in either direction becomes two.
+    // Each triangle holding the edge (u, w) in either direction becomes two: the triangles around
+    // u when known (ascending, as the scan would meet them), else every triangle.
     const std::size_t triangleCount = sheet.triangleCount();
-    for (TriangleIndex k = 0; k < triangleCount; ++k) {
+    std::vector<TriangleIndex> candidates;
+    if (hints.around) {
+      const auto aroundU = hints.around->of(u);
+      candidates.assign(aroundU.begin(), aroundU.end());
+    } else {
+      candidates.resize(triangleCount);
+      std::iota(candidates.begin(), candidates.end(), TriangleIndex{0});
+    }
+    for (TriangleIndex k : candidates) {
       const Triangle o = sheet.triangles[k];  // a copy: the array grows below
       for (int j = 0; j < 3; ++j) {
         const VertexIndex from = o[j], to = o[(j + 1) % 3], apex = o[(j + 2) % 3];

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "engine/geometry/sheet.hpp"
+#include "engine/geometry/topology.hpp"
 
 namespace curvefold {
 
@@ -70,9 +71,19 @@ struct InsertionUndo {
   bool tagsChanged = false;
 };
 
+// What a caller already knows, so a grab need not scan every triangle (all optional). The result
+// is the same bit for bit with or without them: a triangle hint is used only when q lies inside it
+// farther than the snap distance from its edges, where the scan would find that same triangle.
+struct InsertionHints {
+  double sheetSize = 0.0;                   // sheetSize(sheet); 0: measured
+  TriangleIndex triangle = kNoIndex;        // a triangle holding q (a picked surface point's)
+  const VertexTriangles* around = nullptr;  // the sheet's triangles per vertex, before insertion
+};
+
 // insertVertexAt on the sheet itself (the same result bit for bit, without copying the sheet);
 // `undo`, when given, records how to take it back with undoInsertion.
-VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo);
+VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo,
+                                const InsertionHints& hints = {});
 void undoInsertion(Sheet& sheet, const InsertionUndo& undo);
 
 }  // namespace curvefold

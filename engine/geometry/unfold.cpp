@@ -119,6 +119,8 @@ std::vector<glm::dvec2> unfoldDevelopment(const std::vector<glm::dvec3>& positio
   std::vector<bool> reached(triangles.size(), false);
   std::deque<TriangleIndex> queue;
   double componentOffset = 0.0;  // components are laid side by side along x
+  // Measured once: per component it made separate pieces cost O(pieces x vertices).
+  const double size = boundingDiagonal(positions);
   auto dist = [&](VertexIndex a, VertexIndex b) {
     return glm::distance(positions[a], positions[b]);
   };
@@ -157,12 +159,12 @@ std::vector<glm::dvec2> unfoldDevelopment(const std::vector<glm::dvec3>& positio
         queue.push_back(n);
       }
     }
-    componentOffset = rightmost + 0.1 * boundingDiagonal(positions);
+    componentOffset = rightmost + 0.1 * size;
   }
 
   // Every edge and orientation must agree; closing a loop around a curved vertex or a tube does
   // not.
-  const double tolerance = relativeTolerance * boundingDiagonal(positions);
+  const double tolerance = relativeTolerance * size;
   for (TriangleIndex t = 0; t < triangles.size(); ++t) {
     const Triangle& tri = triangles[t];
     const double area = cross2(development[tri[1]] - development[tri[0]],

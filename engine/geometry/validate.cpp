@@ -90,12 +90,15 @@ void checkEdges(const Sheet& sheet, const EdgeTopology& edges) {
     throw InvalidSheet("edge tags are not sorted");
 }
 
-// The triangles around each vertex must form a single fan (no pinched "bow-tie" vertices).
+// The triangles around each vertex must form a single fan (no pinched "bow-tie" vertices). Each
+// triangle is joined to its neighbours across its two edges through the vertex (found in the
+// edge table), so the cost is O(corners log E), not the square of a vertex's valence. Runs after
+// checkEdges: every edge has at most two triangles.
 void checkVertexFans(const Sheet& sheet, const EdgeTopology& edges) {
   const VertexTriangles around = buildVertexTriangles(sheet);
   std::vector<std::uint32_t> parent;
   for (VertexIndex v = 0; v < sheet.vertexCount(); ++v) {
-    const auto fan = around.of(v);
+    const auto fan = around.of(v);  // ascending triangle indices
     parent.resize(fan.size());
     std::iota(parent.begin(), parent.end(), 0u);
     auto root = [&](std::uint32_t x) {
@@ -103,15 +106,19 @@ void checkVertexFans(const Sheet& sheet, const EdgeTopology& edges) {
       return x;
     };
     std::size_t groups = fan.size();
-    for (std::size_t i = 0; i < fan.size(); ++i) {
-      for (std::size_t j = i + 1; j < fan.size(); ++j) {
-        // Triangles i and j share an edge through v when they share a second vertex.
-        const Triangle& ti = sheet.triangles[fan[i]];
-        const Triangle& tj = sheet.triangles[fan[j]];
-        int shared = 0;
-        for (VertexIndex a : ti)
-          for (VertexIndex b : tj) shared += a == b;
-        if (shared >= 2 && root(i) != root(j)) {
+    for (std::uint32_t i = 0; i < fan.size(); ++i) {
+      const Triangle& tri = sheet.triangles[fan[i]];
+      const int corner = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      for (int step : {1, 2}) {
+        const std::uint32_t e = edges.find(Edge::of(v, tri[(corner + step) % 3]));
+        if (e == kNoIndex) continue;
+        const EdgeTopology::EdgeSides& sides = edges.edges[e];
+        const TriangleIndex other = sides.left == fan[i] ? sides.right : sides.left;
+        if (other == kNoIndex || other == fan[i]) continue;
+        const auto at = std::lower_bound(fan.begin(), fan.end(), other);
+        if (at == fan.end() || *at != other) continue;
+        const std::uint32_t j = static_cast<std::uint32_t>(at - fan.begin());
+        if (root(i) != root(j)) {
           parent[root(i)] = root(j);
           --groups;
         }
@@ -121,7 +128,6 @@ void checkVertexFans(const Sheet& sheet, const EdgeTopology& edges) {
       throw InvalidSheet("vertex " + std::to_string(v) + " is not manifold: its triangles form " +
                          std::to_string(groups) + " separate fans");
   }
-  (void)edges;
 }
 
 void checkTriangles(const Sheet& sheet, double minHeight) {
