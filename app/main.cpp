@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -30,6 +32,13 @@ int main(int argc, char** argv) {
     if (app.get_subcommands().empty()) curvefold::cli::runDefault();
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const std::bad_alloc&) {
+    // A reader that knows its input names it; this is the last resort, naming the command.
+    std::string command;
+    for (int i = 1; i < argc && command.size() < 120; ++i) command += std::string(" ") + argv[i];
+    if (command.size() > 120) command = command.substr(0, 117) + "...";
+    std::cerr << "curvefold: error: out of memory running `curvefold" << command << "`\n";
+    return 1;
   } catch (const std::exception& e) {
     // Every failure is one line naming the problem; nothing half-written is left behind because
     // every file is written to a temporary and renamed.

@@ -9,6 +9,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
 
 namespace curvefold {
@@ -218,18 +220,14 @@ class ScriptReader : public JsonReader {
 
 Recording runGestureScript(const std::filesystem::path& script) {
   const std::string name = script.string();
-  std::ifstream in(script, std::ios::binary);
-  if (!in) throw GestureError("cannot read " + name);
-  in.seekg(0, std::ios::end);
-  if (const std::streamoff size = in.tellg(); size > kMaxGestureScriptBytes)
-    throw GestureError(name + ": " + std::to_string(size) +
-                       " bytes, larger than a gesture script " + "may be (" +
-                       std::to_string(kMaxGestureScriptBytes >> 20) + " MiB)");
-  in.seekg(0);
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text;
+  try {
+    text = readWholeFile(script, kMaxGestureScriptBytes, "gesture script");
+  } catch (const FileError& e) {
+    throw GestureError(e.what());
+  }
   const ScriptReader reader(name);
-  const nlohmann::json document = parseJsonText(text.str(), name);
+  const nlohmann::json document = parseJsonText(text, name);
   reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
 
   RecordingHeader header;

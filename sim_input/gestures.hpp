@@ -43,7 +43,7 @@ namespace curvefold {
 inline constexpr double kMaxGestureRate = 1000.0;            // frames per second
 inline constexpr double kMaxGestureSeconds = 600.0;          // one gesture's duration, one wait
 inline constexpr std::size_t kMaxGestureFrames = 1'000'000;  // a whole script
-inline constexpr std::int64_t kMaxGestureScriptBytes = 16 << 20;
+inline constexpr std::uint64_t kMaxGestureScriptBytes = 16ull << 20;
 
 class GestureError : public std::runtime_error {
  public:

@@ -6,10 +6,12 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <new>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
 
 namespace curvefold {
@@ -250,18 +252,57 @@ Recording readRecording(const std::filesystem::path& path, const ReadOptions& op
   return parseRecording(in, path.string(), options);
 }
 
-Recording parseRecording(std::istream& in, std::string_view nameForErrors,
-                         const ReadOptions& options) {
-  const std::string name(nameForErrors);
+namespace {
+
+// std::getline that stops after maxBytes: a line longer than that is refused before it is held.
+// Returns false at the end of input; `complete` says whether the line ended in a newline.
+bool readBoundedLine(std::istream& in, std::string& line, std::size_t maxBytes, bool& complete,
+                     bool& tooLong) {
+  line.clear();
+  complete = false;
+  tooLong = false;
+  std::streambuf* buffer = in.rdbuf();
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n') {
+      complete = true;
+      return true;
+    }
+    if (line.size() == maxBytes) {
+      tooLong = true;
+      return true;
+    }
+    line.push_back(static_cast<char>(c));
+  }
+}
+
+Recording parseRecordingLines(std::istream& in, const std::string& name,
+                              const ReadOptions& options) {
   Recording recording;
   bool haveHeader = false;
   double lastTime = -std::numeric_limits<double>::infinity();
   std::string line;
   std::size_t number = 0;
-  while (std::getline(in, line)) {
+  std::uint64_t bytes = 0;
+  bool complete = false, tooLong = false;
+  while (readBoundedLine(in, line, haveHeader ? kMaxRecordingFrameBytes : kMaxRecordingHeaderBytes,
+                         complete, tooLong)) {
     ++number;
-    // getline stops at end of file without a newline: the writer may have been cut off mid-line.
-    const bool complete = !in.eof();
+    bytes += line.size() + 1;
+    if (tooLong)
+      throw RecordingError(
+          name + ": line " + std::to_string(number) + ": longer than a " +
+              (haveHeader ? std::string("frame line may be (") +
+                                std::to_string(kMaxRecordingFrameBytes >> 10) + " KiB)"
+                          : std::string("header may be (") +
+                                std::to_string(kMaxRecordingHeaderBytes >> 20) + " MiB)"),
+          number);
+    if (bytes > kMaxRecordingBytes)
+      throw RecordingError(tooLarge(name, 0, kMaxRecordingBytes, "recording"), number);
     if (blank(line)) {
       if (complete) recording.lineCount = number;
       continue;
@@ -296,6 +337,18 @@ Recording parseRecording(std::istream& in, std::string_view nameForErrors,
   if (in.bad()) throw RecordingError("cannot read " + name + ": read error");
   if (!haveHeader) throw RecordingError(name + ": empty, not a curvefold recording");
   return recording;
+}
+
+}  // namespace
+
+Recording parseRecording(std::istream& in, std::string_view nameForErrors,
+                         const ReadOptions& options) {
+  const std::string name(nameForErrors);
+  try {
+    return parseRecordingLines(in, name, options);
+  } catch (const std::bad_alloc&) {
+    throw RecordingError(name + ": out of memory reading it");
+  }
 }
 
 }  // namespace curvefold

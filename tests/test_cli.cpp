@@ -197,6 +197,62 @@ TEST_F(Cli, UnwritableOutputIsRefused) {
                 "/nonexistent-dir/x.curvefold.json");
 }
 
+// Issue 13, A2 (and the rule behind A1, A4): under `ulimit -v` of 1 GB, large inputs end in one
+// line naming the input and the limit, never an abort; members a design does not have are skipped
+// as they are parsed, so a 40 MB unknown array costs nothing. Sanitizers reserve terabytes of
+// address space, so their build runs the same inputs without the ulimit.
+TEST_F(Cli, LargeInputsAreRefusedInOneLineWithinAGigabyte) {
+#if defined(__SANITIZE_ADDRESS__)
+  const std::string limit;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  const std::string limit;
+#else
+  const std::string limit = "ulimit -v 1048576 &&";
+#endif
+#else
+  const std::string limit = "ulimit -v 1048576 &&";
+#endif
+  const std::string design = newDesign("square --resolution 8", "a.curvefold.json");
+  const std::string text = slurp(design);
+  auto withJunk = [&](const std::string& name, std::size_t elements) {
+    std::ofstream out(path(name));
+    out << text.substr(0, text.rfind('}')) << ",\"junk\":[0";
+    const std::string chunk(",0,0,0,0,0,0,0,0,0,0");  // ten elements
+    for (std::size_t i = 1; i < elements / 10; ++i) out << chunk;
+    out << "]}\n";
+    return path(name).string();
+  };
+  auto oneLine = [&](const std::string& arguments, const std::string& fragment) {
+    const CommandResult r = run(arguments, limit);
+    EXPECT_EQ(r.exitCode, 1) << arguments << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+  };
+  // Over the design limit (64 MiB): refused before it is read.
+  oneLine("check " + withJunk("huge.curvefold.json", 34'000'000), "huge.curvefold.json: 68000");
+  // Within it, a 40 MB unknown member is skipped while parsing: the design checks.
+  const CommandResult r = run("check " + withJunk("junk.curvefold.json", 20'000'000), limit);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  // A recording whose header line is longer than a header may be, and one whose frame line is.
+  std::ofstream(path("long-header.jsonl")) << std::string(65 << 20, ' ') << "{}\n";
+  oneLine("replay " + path("long-header.jsonl").string(), "line 1: longer than a header may be");
+  const std::string example =
+      slurp(fs::path(CURVEFOLD_SOURCE_DIR) / "examples/recordings/star.jsonl");
+  std::ofstream(path("long-frame.jsonl"))
+      << example.substr(0, example.find('\n') + 1) << std::string(100 << 10, ' ') << "{}\n";
+  oneLine("replay " + path("long-frame.jsonl").string(),
+          "line 2: longer than a frame line may be (64 KiB)");
+  // An OBJ line of more than 1 MiB.
+  std::ofstream(path("long.obj")) << "v " << std::string(2 << 20, '1') << " 0 0\n";
+  oneLine("new " + path("long.obj").string() + " -o " + path("o.json").string(),
+          "line longer than an OBJ line may be");
+  // A gesture script over its 16 MiB.
+  std::ofstream(path("big.gesture.json")) << std::string(17 << 20, ' ') << "{}";
+  oneLine("record-script " + path("big.gesture.json").string() + " -o " + path("g.jsonl").string(),
+          "more than a gesture script may hold (16 MiB)");
+}
+
 // Issue 13, B6: `export --svg a.svg --obj a.obj` failing on the OBJ had already replaced a.svg.
 TEST_F(Cli, ExportWritesEveryFileOrNone) {
   const std::string design = newDesign("square", "a.curvefold.json");

@@ -1,11 +1,14 @@
 #include "engine/io/design_document.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <new>
 #include <sstream>
 
 #include <glm/geometric.hpp>
@@ -14,6 +17,7 @@
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
@@ -190,10 +194,21 @@ ordered_json foldJson(const FoldRecord& fold) {
 }
 
 Design parseText(const std::string& text, std::string_view name) {
+  if (text.size() > kMaxDesignBytes)
+    throw DesignError(tooLarge(name, text.size(), kMaxDesignBytes, "design"));
   try {
-    return Reader(std::string(name)).design(parseJsonText(text, name));
+    // Members a design does not have are skipped while parsing, never built: an unknown array of
+    // millions of elements costs no memory (and cannot exhaust it while being destroyed).
+    static const std::array<std::string_view, 4> kKnown = {"format", "version", "surface", "folds"};
+    return Reader(std::string(name))
+        .design(parseJsonText(text, name, [](int depth, std::string_view key) {
+          return depth != 1 || std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end();
+        }));
   } catch (const JsonReadError& e) {
     throw DesignError(e.what());
+  } catch (const std::bad_alloc&) {
+    throw DesignError(std::string(name) + ": out of memory reading it (" +
+                      std::to_string(text.size()) + " bytes)");
   }
 }
 
@@ -265,13 +280,17 @@ void saveDesign(const Design& design, const std::filesystem::path& path) {
 }
 
 Design loadDesign(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError("cannot read " + path.string() + ": " + std::strerror(errno));
-  return parseDesign(in, path.string());
+  return parseText(readWholeFile(path, kMaxDesignBytes, "design"), path.string());
 }
 
 Design parseDesign(std::istream& in, std::string_view nameForErrors) {
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxDesignBytes)
+      throw DesignError(tooLarge(nameForErrors, 0, kMaxDesignBytes, "design"));
+  }
   if (in.bad()) throw FileError("cannot read " + std::string(nameForErrors));
   return parseText(text, nameForErrors);
 }

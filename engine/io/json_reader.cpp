@@ -82,9 +82,12 @@ std::string jsonParseProblem(const json::exception& error) {
   return message;
 }
 
-json parseJsonText(std::string_view text, std::string_view name) {
+json parseJsonText(std::string_view text, std::string_view name, const JsonMemberFilter& keep) {
   try {
-    return json::parse(text);
+    if (!keep) return json::parse(text);
+    return json::parse(text, [&](int depth, json::parse_event_t event, json& parsed) {
+      return event != json::parse_event_t::key || keep(depth, parsed.get_ref<const std::string&>());
+    });
   } catch (const json::parse_error& e) {
     // "parse error at line L, column C: problem": keep the place and the problem.
     std::string message = jsonParseProblem(e);

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -33,8 +34,13 @@ std::string jsonExcerpt(const nlohmann::json& value, std::size_t maxLength = kJs
 // A string (an object key, a name read from a file) quoted and cut the same way.
 std::string quotedExcerpt(std::string_view text, std::size_t maxLength = kJsonExcerptLength);
 
+// Which object members to keep while parsing: keep(depth, key), depth 1 for the document's own
+// members. A member not kept is skipped as it is parsed, never built.
+using JsonMemberFilter = std::function<bool(int depth, std::string_view key)>;
+
 // Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem".
-nlohmann::json parseJsonText(std::string_view text, std::string_view name);
+nlohmann::json parseJsonText(std::string_view text, std::string_view name,
+                             const JsonMemberFilter& keep = {});
 // nlohmann's message without its "[json.exception...]" tag, for a parse inside a larger report.
 std::string jsonParseProblem(const nlohmann::json::exception& error);
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <new>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -54,7 +55,7 @@ class Parser {
     ObjData data;
     std::string text;
     std::optional<bool> facesHaveVt;
-    while (std::getline(in, text)) {
+    while (readLine(in, text)) {
       ++line_;
       if (auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
       const std::vector<std::string_view> tokens = split(text);
@@ -62,10 +63,12 @@ class Parser {
       const std::string_view keyword = tokens[0];
       if (keyword == "v") {
         if (tokens.size() < 4) fail("a vertex needs 3 coordinates");
+        if (data.v.size() == kMaxObjElements) fail(tooMany("vertices"));
         data.v.emplace_back(number(tokens[1]), number(tokens[2]), number(tokens[3]));
         data.vLine.push_back(line_);
       } else if (keyword == "vt") {
         if (tokens.size() < 3) fail("a texture coordinate needs 2 coordinates");
+        if (data.vt.size() == kMaxObjElements) fail(tooMany("texture coordinates"));
         data.vt.emplace_back(number(tokens[1]), number(tokens[2]));
       } else if (keyword == "f") {
         if (tokens.size() < 4) fail("a face needs at least 3 vertices");
@@ -80,6 +83,8 @@ class Parser {
           fail("faces with and without texture coordinates are mixed");
         facesHaveVt = hasVt;
         // Convex polygons become a fan from their first corner.
+        if (data.triangles.size() + corners.size() - 2 > kMaxObjElements)
+          fail(tooMany("triangles"));
         for (std::size_t k = 1; k + 1 < corners.size(); ++k)
           data.triangles.push_back({{corners[0], corners[k], corners[k + 1]}, line_});
       }
@@ -91,6 +96,30 @@ class Parser {
   }
 
  private:
+  static std::string tooMany(const char* what) {
+    return std::string("more ") + what + " than an OBJ may hold (" +
+           std::to_string(kMaxObjElements) + ")";
+  }
+
+  // std::getline that refuses a line longer than kMaxObjLineBytes before holding it.
+  bool readLine(std::istream& in, std::string& text) {
+    text.clear();
+    std::streambuf* buffer = in.rdbuf();
+    for (;;) {
+      const int c = buffer->sbumpc();
+      if (c == std::char_traits<char>::eof()) {
+        in.setstate(std::ios::eofbit);
+        return !text.empty();
+      }
+      if (c == '\n') return true;
+      if (text.size() == kMaxObjLineBytes) {
+        ++line_;
+        fail("line longer than an OBJ line may be (1 MiB)");
+      }
+      text.push_back(static_cast<char>(c));
+    }
+  }
+
   static std::vector<std::string_view> split(std::string_view text) {
     std::vector<std::string_view> tokens;
     std::size_t i = 0;
@@ -304,7 +333,11 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
 Sheet readObjSurface(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ObjError(path + ": cannot open: " + std::strerror(errno));
-  return parseObjSurface(in, path);
+  try {
+    return parseObjSurface(in, path);
+  } catch (const std::bad_alloc&) {
+    throw ObjError(path + ": out of memory reading it");
+  }
 }
 
 }  // namespace curvefold

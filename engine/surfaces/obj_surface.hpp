@@ -4,6 +4,7 @@
 // with its largest angle defect.
 #pragma once
 
+#include <cstddef>
 #include <istream>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,11 @@ class ObjError : public std::runtime_error {
 // development within 1e-6 of its size (not the 1e-9 of generated sheets); the result passes
 // validate() with ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance}.
 inline constexpr double kObjRelativeTolerance = 1e-5;
+
+// What an OBJ may hold, checked as it is read (before it is held): the generators' triangle limit,
+// as many vertices and texture coordinates, and lines of at most 1 MiB.
+inline constexpr std::size_t kMaxObjElements = 4'000'000;
+inline constexpr std::size_t kMaxObjLineBytes = 1 << 20;
 
 // With `vt`: each distinct (v, vt) pair is a vertex; vt may be in any unit (one uniform scale
 // factor is fitted) and mirrored (it is flipped when faces run clockwise in it). Without `vt`:
