@@ -34,5 +34,6 @@ run fuzz_fold fuzz/corpus/fold
 run fuzz_writers fuzz/corpus/writers
 run fuzz_obj_reader tests/data/obj
 run fuzz_design_reader fuzz/corpus/design
-run fuzz_recording_reader tests/data/recordings
+run fuzz_recording_reader tests/data/recordings fuzz/corpus/recording
+run fuzz_gesture_script examples/scripts fuzz/corpus/gesture
 echo "fuzzers: no crash in ${seconds} s each"

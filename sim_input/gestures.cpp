@@ -27,7 +27,8 @@ constexpr double kApproachSeconds = 0.25;
 
 }  // namespace
 
-GestureRecorder::GestureRecorder(RecordingHeader header) {
+GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames)
+    : maxFrames_(maxFrames) {
   recording_.header = std::move(header);
   if (!(recording_.header.rate > 0.0) || !(recording_.header.rate <= kMaxGestureRate))
     throw GestureError("rate must lie in (0, " + std::to_string(int(kMaxGestureRate)) +
@@ -55,10 +56,9 @@ GestureRecorder::GestureRecorder(RecordingHeader header) {
 int GestureRecorder::stepsFor(double seconds) const {
   // Refused before any frame is made, so that a script's cost is bounded by its limits.
   const double steps = std::max(1.0, std::round(seconds * recording_.header.rate));
-  if (static_cast<double>(recording_.frames.size()) + steps + 2.0 >
-      static_cast<double>(kMaxGestureFrames))
-    throw GestureError("the script makes more than " + std::to_string(kMaxGestureFrames) +
-                       " frames (" + std::to_string(kMaxGestureFrames / 90 / 60) +
+  if (static_cast<double>(recording_.frames.size()) + steps + 2.0 > static_cast<double>(maxFrames_))
+    throw GestureError("the script makes more than " + std::to_string(maxFrames_) + " frames (" +
+                       std::to_string(maxFrames_ / 90 / 60) +
                        " minutes at 90 Hz); split it or lower its rate");
   return static_cast<int>(steps);
 }
@@ -218,14 +218,7 @@ class ScriptReader : public JsonReader {
   }
 };
 
-Recording runGestureScript(const std::filesystem::path& script) {
-  const std::string name = script.string();
-  std::string text;
-  try {
-    text = readWholeFile(script, kMaxGestureScriptBytes, "gesture script");
-  } catch (const FileError& e) {
-    throw GestureError(e.what());
-  }
+Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames) {
   const ScriptReader reader(name);
   const nlohmann::json document = parseJsonText(text, name);
   reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
@@ -255,7 +248,7 @@ Recording runGestureScript(const std::filesystem::path& script) {
 
   std::optional<GestureRecorder> made;
   try {
-    made.emplace(header);
+    made.emplace(header, maxFrames);
   } catch (const DesignError& e) {
     throw GestureError(e.what());
   }
@@ -327,12 +320,25 @@ Recording runGestureScript(const std::filesystem::path& script) {
 
 }  // namespace
 
-Recording recordGestureScript(const std::filesystem::path& script) {
+Recording recordGestureScriptText(std::string_view text, std::string_view name,
+                                  std::size_t maxFrames) {
+  if (text.size() > kMaxGestureScriptBytes)
+    throw GestureError(tooLarge(name, text.size(), kMaxGestureScriptBytes, "gesture script"));
   try {
-    return runGestureScript(script);
+    return runGestureScript(text, std::string(name), maxFrames);
   } catch (const JsonReadError& e) {
     throw GestureError(e.what());
   }
+}
+
+Recording recordGestureScript(const std::filesystem::path& script) {
+  std::string text;
+  try {
+    text = readWholeFile(script, kMaxGestureScriptBytes, "gesture script");
+  } catch (const FileError& e) {
+    throw GestureError(e.what());
+  }
+  return recordGestureScriptText(text, script.string());
 }
 
 }  // namespace curvefold

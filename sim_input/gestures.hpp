@@ -31,6 +31,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 #include "engine/geometry/fold_session.hpp"
@@ -57,7 +58,8 @@ struct SheetTurn {
 
 class GestureRecorder {
  public:
-  explicit GestureRecorder(RecordingHeader header);
+  // maxFrames bounds the recording (a fuzzer bounds it lower).
+  explicit GestureRecorder(RecordingHeader header, std::size_t maxFrames = kMaxGestureFrames);
 
   void wait(double seconds);
   // Clutch, turn the sheet about its centre (world axis), release.
@@ -95,10 +97,14 @@ class GestureRecorder {
   InputFrame frame_;
   glm::dvec3 sheetCentre_{0.0};  // sheet coordinates
   double dt_ = 1.0 / 90.0;
+  std::size_t maxFrames_;
 };
 
 // Runs a gesture script (the format above) into a recording. Throws GestureError naming the file
 // and the gesture for anything wrong with the script.
 Recording recordGestureScript(const std::filesystem::path& script);
+// The same from the script's text (nameForErrors starts every message), with at most maxFrames.
+Recording recordGestureScriptText(std::string_view text, std::string_view nameForErrors,
+                                  std::size_t maxFrames = kMaxGestureFrames);
 
 }  // namespace curvefold
