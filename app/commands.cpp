@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/creases.hpp"
+#include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
@@ -265,6 +266,14 @@ void addCheckCommand(CLI::App& app) {
          "components " + std::to_string(now.componentCount) + " (initial " +
              std::to_string(before.componentCount) + ")");
     line(now.manifold, now.manifold ? "manifold" : "not manifold");
+    // Folds never change the development, but a design may embed one that overlaps itself.
+    if (const std::optional<EdgeCrossing> crossing = findDevelopmentCrossing(sheet))
+      line(false, "development overlaps itself: edges (" + std::to_string(crossing->first.a) +
+                      ", " + std::to_string(crossing->first.b) + ") and (" +
+                      std::to_string(crossing->second.a) + ", " +
+                      std::to_string(crossing->second.b) + ") cross");
+    else
+      line(true, "development: no edges cross");
     line(now.consistentlyOriented && now.developmentCounterClockwise,
          now.consistentlyOriented && now.developmentCounterClockwise
              ? "consistently oriented (development counter-clockwise)"

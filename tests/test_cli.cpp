@@ -5,8 +5,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -298,6 +300,73 @@ TEST_F(Cli, AnObjOfSeparatePiecesSaysSo) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 triangles, 2 pieces"), std::string::npos) << r.out;
   EXPECT_EQ(run("check " + path("two.json").string()).exitCode, 0);
+}
+
+// Issue 13, D16: `check` tests that the development does not overlap itself (here two pieces laid
+// on top of each other, each valid on its own).
+TEST_F(Cli, CheckRefusesADevelopmentThatOverlapsItself) {
+  nlohmann::json design = {
+      {"format", "curvefold-design"},
+      {"version", 1},
+      {"surface",
+       {{"mesh",
+         {{"positions",
+           {{0, 0, 0},
+            {0.1, 0, 0},
+            {0, 0.1, 0},
+            {0.05, 0.02, 1},
+            {0.15, 0.02, 1},
+            {0.05, 0.12, 1}}},
+          {"development", {{0, 0}, {0.1, 0}, {0, 0.1}, {0.05, 0.02}, {0.15, 0.02}, {0.05, 0.12}}},
+          {"triangles", {{0, 1, 2}, {3, 4, 5}}}}}}},
+      {"folds", nlohmann::json::array()}};
+  std::ofstream(path("overlap.curvefold.json")) << design.dump();
+  CommandResult r = run("check " + path("overlap.curvefold.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.out.find("FAIL  development overlaps itself: edges ("), std::string::npos) << r.out;
+  // Moved apart, the same two pieces pass.
+  design["surface"]["mesh"]["development"][3] = {0.3, 0.02};
+  design["surface"]["mesh"]["development"][4] = {0.4, 0.02};
+  design["surface"]["mesh"]["development"][5] = {0.3, 0.12};
+  design["surface"]["mesh"]["positions"][3] = {0.3, 0.02, 1};
+  design["surface"]["mesh"]["positions"][4] = {0.4, 0.02, 1};
+  design["surface"]["mesh"]["positions"][5] = {0.3, 0.12, 1};
+  std::ofstream(path("apart.curvefold.json")) << design.dump();
+  r = run("check " + path("apart.curvefold.json").string());
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("ok    development: no edges cross"), std::string::npos) << r.out;
+}
+
+// Issue 13, D19: an OBJ with vt written to 6 decimals, as exporters write it, imported and then
+// failed to save (the design reader held embedded meshes to 1e-9, the import to 1e-5). One
+// tolerance: it saves, folds, checks and exports.
+TEST_F(Cli, AnObjWrittenToSixDecimalsSavesFoldsAndChecks) {
+  {
+    std::ofstream out(path("half_tube.obj"));
+    out << std::fixed << std::setprecision(6);
+    const int n = 24, m = 6;
+    const double r = 0.05, pi = 3.14159265358979323846;
+    for (int j = 0; j <= m; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double a = pi * i / n, y = 0.2 * j / m - 0.1;
+        out << "v " << r * std::cos(a) << ' ' << y << ' ' << r * std::sin(a) << '\n';
+        out << "vt " << i * 2.0 * r * std::sin(pi / (2.0 * n)) << ' ' << y << '\n';  // chords
+      }
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 2, d = a + n + 1;
+        out << "f " << a << '/' << a << ' ' << b << '/' << b << ' ' << c << '/' << c << '\n';
+        out << "f " << a << '/' << a << ' ' << c << '/' << c << ' ' << d << '/' << d << '\n';
+      }
+  }
+  const std::string design = path("tube.curvefold.json").string();
+  CommandResult r = run("new " + path("half_tube.obj").string() + " -o " + design);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = run("fold " + design + " --vertex-near 0.05,0.1,0 --to 0.02,0.06,0.04 -o " + design);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = run("check " + design);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_EQ(run("export " + design + " --svg " + path("tube.svg").string()).exitCode, 0);
 }
 
 TEST_F(Cli, BadObjFilesAreRefused) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
@@ -53,6 +54,56 @@ std::string refusal(const std::string& file) {
 Sheet parse(const std::string& text) {
   std::istringstream in(text);
   return parseObjSurface(in, "inline.obj");
+}
+
+// A wavy cone strip (rays from an apex through a wavy curve: developable, each quad planar) that
+// sweeps `turns` times around its axis, as OBJ text without vt, optionally moved by `offset`.
+std::string wavyCone(double turns, int steps, const glm::dvec3& offset = glm::dvec3(0.0)) {
+  std::ostringstream out;
+  out.precision(17);
+  for (int i = 0; i <= steps; ++i) {
+    const double a = 2.0 * std::numbers::pi * turns * i / steps;
+    const glm::dvec3 ray =
+        glm::normalize(glm::dvec3(std::cos(a) * (1.0 + 0.15 * std::sin(3.0 * a)), -0.6,
+                                  std::sin(a) * (1.0 + 0.15 * std::sin(3.0 * a))));
+    for (double t : {0.05, 0.12}) {
+      const glm::dvec3 p = offset + t * ray;
+      out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    }
+  }
+  for (int i = 0; i < steps; ++i) {
+    const int a = 2 * i + 1, b = a + 1, c = a + 2, d = a + 3;
+    out << "f " << a << ' ' << c << ' ' << d << "\nf " << a << ' ' << d << ' ' << b << '\n';
+  }
+  return out.str();
+}
+
+// Issue 13, D16: a cone sweeping about twice around unfolds piece by piece, but its development
+// overlaps itself; it imported, folded and passed `check` while its crease pattern crossed itself.
+TEST(ObjSurface, ADevelopmentThatOverlapsItselfIsRefused) {
+  EXPECT_NO_THROW(parse(wavyCone(0.9, 180)));
+  try {
+    parse(wavyCone(2.0, 360));
+    ADD_FAILURE() << "an overlapping development was accepted";
+  } catch (const ObjError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("the development overlaps itself: the edge between vertices"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+}
+
+// Issue 13, D16: an OBJ 1e9 m from the origin imported, then every fold failed to round-off.
+// It is recentred on import, and a fold on it keeps every invariant.
+TEST(ObjSurface, AMeshFarFromTheOriginIsRecentred) {
+  const Sheet sheet = parse(wavyCone(0.9, 180, glm::dvec3(1e9, -2e9, 5e8)));
+  for (const glm::dvec3& p : sheet.positions) EXPECT_LT(glm::length(p), 1.0);
+  FoldSession session(sheet);
+  session.beginDragNear(sheet.positions[10]);
+  session.updateDrag(sheet.positions[10] + glm::dvec3(0.0, 0.03, 0.02));
+  ASSERT_TRUE(session.commit());
+  EXPECT_NO_THROW(validate(session.fixed(), kObjOptions));
 }
 
 TEST(ObjSurface, FoldedStripWithoutVtUnfoldsFlat) {

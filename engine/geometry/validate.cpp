@@ -169,11 +169,17 @@ void validate(const Sheet& sheet, const ValidationOptions& options) {
   checkTriangles(sheet, options.relativeDegenerateHeight * size);
   Edge worst;
   const double error = maxEdgeLengthError(sheet, edges, &worst);
-  if (error > options.relativeLengthTolerance * size)
-    throw InvalidSheet("edge (" + std::to_string(worst.a) + ", " + std::to_string(worst.b) +
-                       ") is not isometric: 3D " + describe(sheet.positions[worst.a]) + "-" +
-                       describe(sheet.positions[worst.b]) + " differs from its development by " +
-                       std::to_string(error) + " m");
+  if (error > options.relativeLengthTolerance * size) {
+    // Lengths with three significant digits: "0.000001 m" said nothing about 1.4e-7 m.
+    std::ostringstream out;
+    out.precision(3);
+    out << "edge (" << worst.a << ", " << worst.b << ") is not isometric: its length in 3D "
+        << "differs from its development's by " << error << " m (the limit is "
+        << options.relativeLengthTolerance * size << " m, " << options.relativeLengthTolerance
+        << " of the size): the mesh is not developable to that tolerance; 3D "
+        << describe(sheet.positions[worst.a]) << "-" << describe(sheet.positions[worst.b]);
+    throw InvalidSheet(out.str());
+  }
 }
 
 SheetReport measure(const Sheet& sheet, const ValidationOptions& options) {

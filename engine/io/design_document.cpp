@@ -19,6 +19,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
+#include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -96,7 +97,9 @@ class Reader : public JsonReader {
     readTags("creases", EdgeKind::Crease);
     sheet.normalizeTags();
     try {
-      validate(sheet);
+      // One tolerance for an embedded mesh, the one it was imported with (an OBJ's six digits
+      // leave edge errors near 1e-7 of its size); folds are then held to what it brought.
+      validate(sheet, ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance});
     } catch (const InvalidSheet& e) {
       fail(where, e.what());
     }

@@ -18,6 +18,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
@@ -259,6 +260,18 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
   }
 
   if (!(boundingDiagonal(sheet.positions) > 0.0)) throw ObjError(name + ": all vertices coincide");
+  {
+    // A mesh far from the origin (a survey's coordinates, 1e9 m out) keeps only a few digits of
+    // its size in each coordinate, and every reflection there rounds at that scale: recentre it.
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& p : sheet.positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    if (glm::length(centre) > kObjRecentreDistance * glm::length(hi - lo))
+      for (glm::dvec3& p : sheet.positions) p -= centre;
+  }
   if (withVt) {
     // Fit one scale factor from texture units to metres, and mirror clockwise texture layouts.
     double length3 = 0.0, length2 = 0.0, area = 0.0;
@@ -327,6 +340,13 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
   } catch (const InvalidSheet& error) {
     throw ObjError(name + ": " + error.what());
   }
+  // Developable piece by piece is not enough: the pieces must lie flat without overlapping, or
+  // the crease pattern crosses itself and cannot be cut from one sheet.
+  if (const std::optional<EdgeCrossing> crossing = findDevelopmentCrossing(sheet))
+    throw ObjError(name + ": the development overlaps itself: the " +
+                   edgeText(crossing->first.a, crossing->first.b) + " crosses the " +
+                   edgeText(crossing->second.a, crossing->second.b) +
+                   " (cut the mesh open where it wraps over itself)");
   return sheet;
 }
 

@@ -24,6 +24,10 @@ class ObjError : public std::runtime_error {
 // validate() with ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance}.
 inline constexpr double kObjRelativeTolerance = 1e-5;
 
+// A mesh whose centre lies farther from the origin than this many times its size is moved to the
+// origin on import (its coordinates would leave too few digits for the folds otherwise).
+inline constexpr double kObjRecentreDistance = 1000.0;
+
 // What an OBJ may hold, checked as it is read (before it is held): the generators' triangle limit,
 // as many vertices and texture coordinates, and lines of at most 1 MiB.
 inline constexpr std::size_t kMaxObjElements = 4'000'000;
@@ -33,7 +37,8 @@ inline constexpr std::size_t kMaxObjLineBytes = 1 << 20;
 // factor is fitted) and mirrored (it is flipped when faces run clockwise in it). Without `vt`:
 // each used `v` is a vertex and the development is unfolded. Either way, boundary edges that
 // coincide in 3D with another boundary edge (a seam cut open) are tagged EdgeKind::Slit.
-// Throws ObjError naming the file, the line and the problem.
+// A development that overlaps itself (a cone wrapping twice around) is refused, naming two
+// crossing edges. Throws ObjError naming the file, the line and the problem.
 Sheet parseObjSurface(std::istream& in, const std::string& nameForErrors);
 Sheet readObjSurface(const std::string& path);
 
