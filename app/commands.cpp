@@ -21,6 +21,7 @@
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
+#include "engine/io/sheet_cache.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -149,7 +150,8 @@ void addFoldCommand(CLI::App& app) {
     const glm::dvec3 near = parsePoint(options->near, "--vertex-near");
     const glm::dvec3 to = parsePoint(options->to, "--to");
     Design design = loadDesign(options->design);
-    FoldSession session(buildSheet(design, options->design));
+    // The folded sheet from the cache when this history was folded before: one fold per call.
+    FoldSession session(buildSheetCached(design, options->design));
     const glm::dvec3 grabbed = session.beginDragNear(near);
     session.updateDrag(to);
     if (session.commit()) {
@@ -160,6 +162,7 @@ void addFoldCommand(CLI::App& app) {
           lengthTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
       validate(sheet, tolerance);
       saveDesign(design, options->output);
+      storeCachedSheet(design, sheet);
       statusFor({options->output})
           << "fold " << design.folds.size() << ": grabbed " << formatPoint(grabbed) << " -> "
           << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
@@ -190,7 +193,7 @@ void addExportCommand(CLI::App& app) {
   command->callback([options, fold, svg, obj, gltf] {
     if (fold->count() + svg->count() + obj->count() + gltf->count() == 0)
       throw UsageError("export: name at least one of --fold, --svg, --obj, --gltf");
-    const Sheet sheet = buildSheet(loadDesign(options->design), options->design);
+    const Sheet sheet = buildSheetCached(loadDesign(options->design), options->design);
     // All named files or none: a failing OBJ leaves the SVG as it was.
     OutputSet outputs;
     if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });

@@ -1,18 +1,26 @@
 // Costs that grew the wrong way (issue 13, E20-E23), each with the case that showed it:
 //   unfolding an OBJ of separate pieces (was O(pieces x vertices)) against a connected grid;
 //   validate() on a vertex with a huge fan (was O(valence^2));
-//   a grab on a folded cylinder (was three scans of every triangle).
+//   a grab on a folded cylinder (was three scans of every triangle);
+//   the folded sheet a command-line fold starts from: the history replayed, or the cache's entry.
 //
 //   build/bench/bench_costs --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <numbers>
+#include <random>
 
 #include <benchmark/benchmark.h>
 
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/sheet_cache.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -83,7 +91,52 @@ void BM_Grab(benchmark::State& state) {
 }
 BENCHMARK(BM_Grab)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
+// A design of `folds` folds on a cylinder of about 100k triangles, and what a command-line fold
+// pays to get its folded sheet: the replay of the whole history, or the cache's entry.
+const Design& cylinderDesign(int folds) {
+  static std::map<int, Design> designs;
+  Design& design = designs[folds];
+  if (!design.folds.empty()) return design;
+  const GeneratedSurface surface{"cylinder", {{"resolution", 259}}};
+  FoldSession session(makeSurface(surface.generator, surface.parameters));
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  while (session.foldCount() < std::size_t(folds)) {
+    const double a = 2.0 * std::numbers::pi * unit(random), y = 0.2 * unit(random) - 0.1;
+    const glm::dvec3 grabbed = session.beginDragNear({0.045 * std::cos(a), y, 0.045 * std::sin(a)});
+    session.updateDrag(
+        grabbed + 0.03 * glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5));
+    session.commit();
+  }
+  design = Design{surface, session.folds()};
+  return design;
+}
+
+void BM_FoldCommandReplay(benchmark::State& state) {
+  const Design& design = cylinderDesign(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(buildSheet(design));
+  state.counters["folds"] = double(design.folds.size());
+}
+BENCHMARK(BM_FoldCommandReplay)->Arg(10)->Arg(40)->Unit(benchmark::kMillisecond);
+
+void BM_FoldCommandCached(benchmark::State& state) {
+  const Design& design = cylinderDesign(static_cast<int>(state.range(0)));
+  storeCachedSheet(design, buildSheet(design));
+  for (auto _ : state) benchmark::DoNotOptimize(loadCachedSheet(design));
+  state.counters["folds"] = double(design.folds.size());
+}
+BENCHMARK(BM_FoldCommandCached)->Arg(10)->Arg(40)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace curvefold
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  // The cache's entries go to a scratch folder, not the user's.
+  const std::string cache = "/tmp/curvefold-bench-cache-" + std::to_string(::getpid());
+  ::setenv("CURVEFOLD_CACHE_DIR", cache.c_str(), 1);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  std::filesystem::remove_all(cache);
+  return 0;
+}

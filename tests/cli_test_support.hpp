@@ -39,7 +39,13 @@ class CliTest : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override {
+    fs::remove_all(dir_);
+    fs::remove_all(cacheDir());
+  }
+
+  // The folded-sheet cache of this test's commands, beside (not in) the scratch folder.
+  fs::path cacheDir() const { return fs::path(dir_.string() + "-cache"); }
 
   fs::path path(const std::string& name) const { return dir_ / name; }
 
@@ -47,9 +53,10 @@ class CliTest : public ::testing::Test {
   // `environment` ("NAME=value ...") in front.
   CommandResult run(const std::string& arguments, const std::string& environment = "") const {
     const fs::path out = dir_ / ".stdout", err = dir_ / ".stderr";
-    const std::string command = "cd " + dir_.string() + " && " + environment + " " +
-                                CURVEFOLD_BINARY + " " + arguments + " >" + out.string() + " 2>" +
-                                err.string();
+    const std::string command = "cd " + dir_.string() +
+                                " && export CURVEFOLD_CACHE_DIR=" + cacheDir().string() + " && " +
+                                environment + " " + CURVEFOLD_BINARY + " " + arguments + " >" +
+                                out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     CommandResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

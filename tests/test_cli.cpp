@@ -151,6 +151,40 @@ TEST_F(Cli, BadPointsAreRefused) {
                 "drag target", out);
 }
 
+// Issue 13, E23: `fold` re-applied the whole history on every call. The folded sheet is cached by
+// the history's content; a cached fold gives the very design a replay gives, and an edited or
+// stale entry is never trusted.
+TEST_F(Cli, FoldsThroughTheSheetCacheMatchTheReplay) {
+  const std::string design = newDesign("half_cylinder --resolution 24", "a.curvefold.json");
+  const std::vector<std::string> folds = {"--vertex-near 0.05,0.1,0 --to 0.02,0.06,0.05",
+                                          "--vertex-near -0.05,-0.1,0 --to -0.02,-0.05,0.06",
+                                          "--vertex-near 0,0.1,0.05 --to 0.01,0.07,0.02"};
+  auto foldAll = [&](const std::string& name, const std::string& environment) {
+    fs::copy_file(design, path(name), fs::copy_options::overwrite_existing);
+    for (const std::string& fold : folds) {
+      const CommandResult r = run(
+          "fold " + path(name).string() + " " + fold + " -o " + path(name).string(), environment);
+      EXPECT_EQ(r.exitCode, 0) << r.err;
+    }
+    return slurp(path(name));
+  };
+  const std::string cached = foldAll("cached.json", "");
+  std::size_t entries = 0;
+  for (const auto& entry : fs::directory_iterator(cacheDir()))
+    entries += entry.path().extension() == ".sheet";
+  EXPECT_EQ(entries, folds.size() + 1);  // one per history met: the first, and each fold
+  const std::string replayed = foldAll("replayed.json", "CURVEFOLD_CACHE_DIR=/dev/null/none");
+  EXPECT_EQ(cached, replayed);
+  // Every entry edited: each is refused by its checksum, and the folds replay to the same design.
+  for (const auto& entry : fs::directory_iterator(cacheDir())) {
+    std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+    file.seekp(8 + 32 + 24 + 24 * 5 + 7);  // the top byte of vertex 5's x
+    file.put('\x7f');
+  }
+  EXPECT_EQ(foldAll("edited.json", ""), replayed);
+  EXPECT_EQ(run("check " + path("edited.json").string()).exitCode, 0);
+}
+
 // Issue 13, D14: a drag of 1e-10 to 1e-9 m off a flat star put its bisector within the on-plane
 // tolerance of the whole sheet and creased it everywhere. A drag below the shortest fold is none.
 TEST_F(Cli, SubToleranceDragAddsNoFold) {

@@ -259,8 +259,7 @@ Sheet buildSheet(const Design& design, std::string_view nameForErrors) {
   return sheet;
 }
 
-void saveDesign(const Design& design, const std::filesystem::path& path) {
-  const std::string name = path.string();
+std::string designText(const Design& design) {
   const ordered_json surface = surfaceJsonOf(design.surface);
   std::vector<ordered_json> folds;
   for (const FoldRecord& fold : design.folds) folds.push_back(foldJson(fold));
@@ -272,7 +271,12 @@ void saveDesign(const Design& design, const std::filesystem::path& path) {
   for (std::size_t i = 0; i < folds.size(); ++i)
     text += (i == 0 ? "\n    " : ",\n    ") + folds[i].dump();
   text += folds.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return text;
+}
 
+void saveDesign(const Design& design, const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const std::string text = designText(design);
   // Refuse what could not be loaded back (nlohmann writes NaN as null) before touching the file.
   try {
     parseText(text, name);

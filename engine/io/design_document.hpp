@@ -56,6 +56,8 @@ Sheet buildSheet(const Design& design, std::string_view nameForErrors = "design"
 // (a number that is not finite, a plane normal that is not a unit vector, an invalid embedded
 // mesh), FileError when the file cannot be written.
 void saveDesign(const Design& design, const std::filesystem::path& path);
+// The text saveDesign writes (the design's canonical form).
+std::string designText(const Design& design);
 
 // Reads and checks a design (everything but the replay, which buildSheet does). Throws FileError
 // when the file cannot be read, DesignError for anything wrong with its content.
