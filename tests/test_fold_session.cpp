@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/validate.hpp"
 #include "sheet_fixtures.hpp"
 
 namespace curvefold {
@@ -109,6 +110,47 @@ TEST(FoldSession, AGrabWithHintsMakesTheScansSheet) {
     EXPECT_TRUE(identical(session.fixed(), sheet));
   }
   EXPECT_GE(edgeSplits, 2);  // the adjacency path was taken
+}
+
+// Issue 13, D15: a plane just outside the on-plane tolerance through a thin triangle (made by
+// grabbing near an edge) left a triangle of height 5e-13 that validate() rejects, and the session
+// committed it without validating. Planes at 1.001 to 3 times the tolerance from a thin
+// triangle's sharp corner: every committed sheet validates, and a refused one says why.
+TEST(FoldSession, PlanesJustOutsideTheToleranceNeverCommitASliver) {
+  const double cell = 0.05;
+  const Sheet grid = flatGrid(4, 4, cell);
+  std::mt19937 random(15);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int refused = 0, committed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    FoldSession session(grid);
+    // Just off the diagonal of the cell at (1, 1): a vertex that makes two thin triangles.
+    const double along = 0.3 + 0.4 * std::abs(unit(random));
+    const double off = 2e-4 * cell * (1.0 + std::abs(unit(random)));
+    const glm::dvec2 seed =
+        glm::dvec2(cell, cell) + along * glm::dvec2(cell, cell) + off * glm::dvec2(0.7071, -0.7071);
+    const glm::dvec3 grabbed = session.beginDragAtDevelopment(seed);
+    const glm::dvec3 corner =
+        trial % 2 ? glm::dvec3(cell, cell, 0.0) : glm::dvec3(2 * cell, 2 * cell, 0.0);
+    // The corner just on the far side of the plane, the grabbed vertex on the near (reflected)
+    // side: the plane cuts the thin triangles next to their sharp corner.
+    glm::dvec3 normal = glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)));
+    if (glm::dot(grabbed - corner, normal) > 0.0) normal = -normal;
+    const double offset = session.epsilon() * (1.001 + 2.0 * std::abs(unit(random)));
+    const glm::dvec3 point = corner - offset * normal;
+    const glm::dvec3 target = grabbed - 2.0 * glm::dot(grabbed - point, normal) * normal;
+    session.updateDrag(target);
+    if (session.commit()) {
+      ++committed;
+      EXPECT_NO_THROW(validate(session.fixed())) << "trial " << trial;
+    } else if (!session.refusal().empty()) {
+      ++refused;
+      EXPECT_NE(session.refusal().find("degenerate"), std::string::npos) << session.refusal();
+      EXPECT_TRUE(identical(session.fixed(), grid));
+    }
+  }
+  EXPECT_GT(committed, 0);
+  RecordProperty("refused", refused);
 }
 
 // Issue 13, A3: points whose squared distance would overflow are refused, never turned into a

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "engine/geometry/validate.hpp"
+
 #include <glm/geometric.hpp>
 
 namespace curvefold {
@@ -95,8 +97,25 @@ const std::vector<TriangleIndex>& FoldSession::reflectedTriangles() const {
 }
 
 bool FoldSession::commit() {
+  refusal_.clear();
   if (!dragging_) return false;
   if (!folded_) {
+    cancel();
+    return false;
+  }
+  // What the grab and the fold made must pass validate()'s triangle rules before it is kept: a
+  // plane just outside the on-plane tolerance through a thin triangle can leave a sliver.
+  std::vector<TriangleIndex> made = workspace_.changes().rewrittenTriangles;
+  for (const auto& [t, old] : grabUndo_.rewritten) made.push_back(t);
+  const std::size_t firstMade = grabInserted_ ? grabUndo_.triangleCount : temporal_.triangleCount();
+  for (std::size_t t = std::min(firstMade, workspace_.changes().firstNewTriangle);
+       t < temporal_.triangleCount(); ++t)
+    made.push_back(static_cast<TriangleIndex>(t));
+  try {
+    validateTriangles(temporal_, made, epsilon_ / kRelativeEpsilon);
+  } catch (const InvalidSheet& e) {
+    refusal_ = std::string("the fold was not kept: ") + e.what() +
+               "; a target a little away gives a sound fold";
     cancel();
     return false;
   }

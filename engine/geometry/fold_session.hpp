@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -81,8 +82,10 @@ class FoldSession {
   // update, for incremental upload.
   const ReflectionChanges& updateDrag(const glm::dvec3& target);
   // Commits the temporal sheet as the new fixed sheet (a drag that never left its start adds no
-  // fold). Returns true if a fold was added.
+  // fold). Returns true if a fold was added. A fold whose new triangles fail validate()'s rules
+  // (a sliver) is not kept: the drag is cancelled and refusal() says why.
   bool commit();
+  const std::string& refusal() const { return refusal_; }
   void cancel();
 
   const glm::dvec3& grabbedPoint() const { return grabbed_; }
@@ -130,6 +133,7 @@ class FoldSession {
   glm::dvec3 grabbed_{0.0};
   glm::dvec3 target_{0.0};
   ReflectionPlane plane_;
+  std::string refusal_;
   Sheet temporal_;
   mutable ReflectionWorkspace workspace_;  // its reflected-triangle list is a cache
 

@@ -130,17 +130,23 @@ void checkVertexFans(const Sheet& sheet, const EdgeTopology& edges) {
   }
 }
 
-void checkTriangles(const Sheet& sheet, double minHeight) {
-  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
-    const Triangle& tri = sheet.triangles[t];
-    if (doubledArea(sheet, tri) <= 0.0)
-      throw InvalidSheet("triangle " + std::to_string(t) +
-                         " is not counter-clockwise in the development");
-    const double height = smallestHeight(sheet, tri);
-    if (height < minHeight)
-      throw InvalidSheet("triangle " + std::to_string(t) + " is degenerate: height " +
-                         std::to_string(height) + " m");
+void checkTriangle(const Sheet& sheet, TriangleIndex t, double minHeight) {
+  const Triangle& tri = sheet.triangles[t];
+  if (doubledArea(sheet, tri) <= 0.0)
+    throw InvalidSheet("triangle " + std::to_string(t) +
+                       " is not counter-clockwise in the development");
+  const double height = smallestHeight(sheet, tri);
+  if (height < minHeight) {
+    std::ostringstream out;
+    out.precision(3);
+    out << "triangle " << t << " is degenerate: height " << height << " m (the floor is "
+        << minHeight << " m)";
+    throw InvalidSheet(out.str());
   }
+}
+
+void checkTriangles(const Sheet& sheet, double minHeight) {
+  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) checkTriangle(sheet, t, minHeight);
 }
 
 double maxEdgeLengthError(const Sheet& sheet, const EdgeTopology& edges, Edge* worst) {
@@ -180,6 +186,12 @@ void validate(const Sheet& sheet, const ValidationOptions& options) {
         << describe(sheet.positions[worst.a]) << "-" << describe(sheet.positions[worst.b]);
     throw InvalidSheet(out.str());
   }
+}
+
+void validateTriangles(const Sheet& sheet, std::span<const TriangleIndex> triangles,
+                       double sheetSize, const ValidationOptions& options) {
+  for (TriangleIndex t : triangles)
+    checkTriangle(sheet, t, options.relativeDegenerateHeight * sheetSize);
 }
 
 SheetReport measure(const Sheet& sheet, const ValidationOptions& options) {

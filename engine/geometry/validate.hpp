@@ -3,6 +3,8 @@
 // and congruent to it in 3D.
 #pragma once
 
+#include <span>
+
 #include <cstddef>
 #include <string>
 
@@ -21,6 +23,11 @@ struct ValidationOptions {
 // Throws InvalidSheet naming the first problem found (the vertex, edge or triangle and by how
 // much).
 void validate(const Sheet& sheet, const ValidationOptions& options = {});
+
+// validate()'s triangle rules (counter-clockwise, not degenerate) on some triangles only: what a
+// fold made, checked before it is committed, at the cost of those triangles.
+void validateTriangles(const Sheet& sheet, std::span<const TriangleIndex> triangles,
+                       double sheetSize, const ValidationOptions& options = {});
 
 // The invariants as numbers, for `curvefold check` and for tests that compare with a reference.
 struct SheetReport {
