@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 #include "fuzz/fuzz_support.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/player.hpp"
@@ -11,6 +13,17 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(bytes), size);
+  // Small sheets only, as in the recording fuzzer: a resolution of 2000 is valid but makes each
+  // input take seconds, which hides everything else.
+  const nlohmann::json peek = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (peek.is_object() && peek.contains("surface") && peek["surface"].is_object()) {
+    const nlohmann::json& surface = peek["surface"];
+    if (surface.contains("parameters") && surface["parameters"].is_object() &&
+        surface["parameters"].contains("resolution")) {
+      const nlohmann::json& resolution = surface["parameters"]["resolution"];
+      if (!resolution.is_number() || !(resolution.get<double>() <= 40.0)) return 0;
+    }
+  }
   curvefold::Recording recording;
   try {
     recording = curvefold::recordGestureScriptText(text, "fuzz.gesture.json", 20'000);

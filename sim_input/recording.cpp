@@ -12,6 +12,7 @@
 
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
+#include "engine/text/bounded_line.hpp"
 #include "engine/io/json_reader.hpp"
 
 namespace curvefold {
@@ -254,32 +255,6 @@ Recording readRecording(const std::filesystem::path& path, const ReadOptions& op
 
 namespace {
 
-// std::getline that stops after maxBytes: a line longer than that is refused before it is held.
-// Returns false at the end of input; `complete` says whether the line ended in a newline.
-bool readBoundedLine(std::istream& in, std::string& line, std::size_t maxBytes, bool& complete,
-                     bool& tooLong) {
-  line.clear();
-  complete = false;
-  tooLong = false;
-  std::streambuf* buffer = in.rdbuf();
-  for (;;) {
-    const int c = buffer->sbumpc();
-    if (c == std::char_traits<char>::eof()) {
-      in.setstate(std::ios::eofbit);
-      return !line.empty();
-    }
-    if (c == '\n') {
-      complete = true;
-      return true;
-    }
-    if (line.size() == maxBytes) {
-      tooLong = true;
-      return true;
-    }
-    line.push_back(static_cast<char>(c));
-  }
-}
-
 Recording parseRecordingLines(std::istream& in, const std::string& name,
                               const ReadOptions& options) {
   Recording recording;
@@ -288,9 +263,11 @@ Recording parseRecordingLines(std::istream& in, const std::string& name,
   std::string line;
   std::size_t number = 0;
   std::uint64_t bytes = 0;
-  bool complete = false, tooLong = false;
-  while (readBoundedLine(in, line, haveHeader ? kMaxRecordingFrameBytes : kMaxRecordingHeaderBytes,
-                         complete, tooLong)) {
+  for (;;) {
+    const LineRead read = readBoundedLine(
+        in, line, haveHeader ? kMaxRecordingFrameBytes : kMaxRecordingHeaderBytes);
+    if (read == LineRead::End) break;
+    const bool complete = read == LineRead::Line, tooLong = read == LineRead::TooLong;
     ++number;
     bytes += line.size() + 1;
     if (tooLong)

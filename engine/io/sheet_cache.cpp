@@ -59,6 +59,7 @@ std::string keyOf(const Design& design) {
 
 template <typename T>
 void put(std::string& out, const T* data, std::size_t count) {
+  if (count == 0) return;  // an empty vector's data() may be null
   out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
 }
 
@@ -66,6 +67,7 @@ template <typename T>
 bool take(std::string_view& in, T* data, std::size_t count) {
   const std::size_t bytes = count * sizeof(T);
   if (in.size() < bytes) return false;
+  if (count == 0) return true;  // an empty vector's data() may be null
   std::memcpy(static_cast<void*>(data), in.data(), bytes);
   in.remove_prefix(bytes);
   return true;

@@ -22,6 +22,7 @@
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/text/bounded_line.hpp"
 
 namespace curvefold {
 namespace {
@@ -56,8 +57,9 @@ class Parser {
     ObjData data;
     std::string text;
     std::optional<bool> facesHaveVt;
-    while (readLine(in, text)) {
+    for (LineRead read; (read = readBoundedLine(in, text, kMaxObjLineBytes)) != LineRead::End;) {
       ++line_;
+      if (read == LineRead::TooLong) fail("line longer than an OBJ line may be (1 MiB)");
       if (auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
       const std::vector<std::string_view> tokens = split(text);
       if (tokens.empty()) continue;
@@ -100,25 +102,6 @@ class Parser {
   static std::string tooMany(const char* what) {
     return std::string("more ") + what + " than an OBJ may hold (" +
            std::to_string(kMaxObjElements) + ")";
-  }
-
-  // std::getline that refuses a line longer than kMaxObjLineBytes before holding it.
-  bool readLine(std::istream& in, std::string& text) {
-    text.clear();
-    std::streambuf* buffer = in.rdbuf();
-    for (;;) {
-      const int c = buffer->sbumpc();
-      if (c == std::char_traits<char>::eof()) {
-        in.setstate(std::ios::eofbit);
-        return !text.empty();
-      }
-      if (c == '\n') return true;
-      if (text.size() == kMaxObjLineBytes) {
-        ++line_;
-        fail("line longer than an OBJ line may be (1 MiB)");
-      }
-      text.push_back(static_cast<char>(c));
-    }
   }
 
   static std::vector<std::string_view> split(std::string_view text) {
