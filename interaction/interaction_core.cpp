@@ -142,6 +142,9 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
       pointAnchored_ = true;
     }
     const glm::dvec3 target = tip + grabOffset_;
+    // A tracking glitch far out of reach (or NaN) moves nothing: the drag waits where it was.
+    if (!withinReach(target, session_.grabbedPoint(), session_.epsilon() / kRelativeEpsilon))
+      return;
     if (!dragMoved_ &&
         glm::distance(target, session_.grabbedPoint()) >= thresholds_.minimumDragDistance)
       dragMoved_ = true;

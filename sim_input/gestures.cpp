@@ -138,7 +138,10 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   if (core_->state() != InteractionState::Dragging)
     throw GestureError("drag: could not grab the sheet near the given point");
 
-  // Along the polyline grabbed -> path..., by arc length, in the sheet frame of the start.
+  // Along the polyline grabbed -> path..., by arc length, in the sheet frame of the start. Points
+  // out of reach are refused first: their distances would overflow.
+  const double size = sheetSize(fixed);
+  for (const glm::dvec3& p : path) checkWithinReach(p, grabbed, size, "drag point");
   std::vector<glm::dvec3> points{grabbed};
   points.insert(points.end(), path.begin(), path.end());
   std::vector<double> length{0.0};

@@ -158,11 +158,16 @@ TEST(Gestures, BadScriptsNameTheProblem) {
   // second, and 200 ten-minute waits (each within its own limit), are refused before they run.
   expectError(head + R"("rate":1e9,"gestures":[]})", "rate: must lie in (0, 1000]");
   std::string waits = head + R"("rate":60,"gestures":[)";
-  for (int i = 0; i < 200; ++i) waits += (i ? "," : "") + std::string(R"({"wait":600})");
+  for (int i = 0; i < 200; ++i) {
+    if (i > 0) waits += ',';
+    waits += R"({"wait":600})";  // appended piece by piece: GCC 12's -Wrestrict on "," + string
+  }
   expectError(waits + "]}", "gesture 28 (wait): the script makes more than 1000000 frames");
   // A grab absurdly far from the sheet (A3) is one line naming the point, not a crash.
   expectError(head + R"("gestures":[{"drag":{"grab":[1e155,0,0],"to":[0,0,0.05]}}]})",
               "gesture 1 (drag): point (1e+155, 0, 0) lies too far from the sheet");
+  expectError(head + R"("gestures":[{"drag":{"grab":[0,0,0],"to":[1e300,0,0]}}]})",
+              "gesture 1 (drag): drag point (1e+300, 0, 0) lies too far from the sheet");
   // A value nested a million deep is quoted by an excerpt, not dumped recursively (A1).
   std::string deep = R"({"format":)";
   deep.append(1'000'000, '[').append(1'000'000, ']').append("}");

@@ -223,6 +223,22 @@ TEST_F(Interaction, ReleaseAndUndoInOneFrameCommitThenUndo) {
   EXPECT_EQ(session_.foldCount(), 1u);
 }
 
+// Issue 13, A3 in a live session: a tracking glitch that puts the point hand absurdly far away
+// during a drag moves nothing (and throws nothing); the drag goes on from where it was.
+TEST_F(Interaction, AHandGlitchFarOutOfReachMovesNothing) {
+  const glm::dvec3 start = world({0.1, 0.1, 0.0});
+  pointAt(start, 0.0);
+  pointAt(start, 1.0);
+  pointAt(start + glm::dvec3(-0.02, -0.03, 0.06), 1.0);
+  const Sheet before = session_.current();
+  EXPECT_NO_THROW(pointAt({1e300, 0.0, 0.0}, 1.0));
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+  EXPECT_TRUE(identical(session_.current(), before));
+  pointAt(start + glm::dvec3(-0.02, -0.03, 0.06), 0.0);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
 TEST_F(Interaction, SwitchingHandsEndsTheDragAndSwapsRoles) {
   const glm::dvec3 corner = world({0.1, 0.1, 0.0});
   pointAt(corner, 0.0);

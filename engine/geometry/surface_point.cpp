@@ -85,13 +85,17 @@ SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
                                        sheet.positions[tri[2]])};
 }
 
-void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
-                      const char* what) {
-  // Each coordinate first, so that no squared distance can overflow.
+bool withinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize) {
+  // Each coordinate first, so that no squared distance can overflow (NaN is out of reach too).
   const double reach = kRelativeMaxReach * sheetSize;
   const glm::dvec3 offset = glm::abs(p - from);
-  if (std::max({offset.x, offset.y, offset.z}) <= reach / 2.0 && glm::length(p - from) <= reach)
-    return;
+  return std::max({offset.x, offset.y, offset.z}) <= reach / 2.0 && glm::length(p - from) <= reach;
+}
+
+void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
+                      const char* what) {
+  const double reach = kRelativeMaxReach * sheetSize;
+  if (withinReach(p, from, sheetSize)) return;
   std::ostringstream message;
   message.precision(6);
   message << what << " (" << p.x << ", " << p.y << ", " << p.z

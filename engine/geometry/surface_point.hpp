@@ -31,8 +31,9 @@ SurfacePoint closestPointOnTriangle(const Sheet& sheet, TriangleIndex triangle,
 // any reach of a hand or a command, and far inside where squared distances overflow.
 inline constexpr double kRelativeMaxReach = 1e6;
 
-// Throws InvalidSheet "<what> (x, y, z) lies too far from the sheet ..." when p is farther than
-// kRelativeMaxReach sheet sizes from `from` (a point of the sheet).
+// Whether p (finite) lies within kRelativeMaxReach sheet sizes of `from` (a point of the sheet).
+bool withinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize);
+// Throws InvalidSheet "<what> (x, y, z) lies too far from the sheet ..." when it does not.
 void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
                       const char* what);
 
