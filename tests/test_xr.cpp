@@ -299,11 +299,14 @@ TEST_F(XrApp, NoRuntimeIsOneLineNamingXrRuntimeJson) {
 }
 
 TEST_F(XrApp, NoHeadsetIsOneLine) {
-  const CommandResult result =
-      run("xr --headless", simulated(kExamples + "cone.jsonl", "CURVEFOLD_SIM_NO_HMD=1"));
+  const CommandResult result = run("xr --headless --record r.jsonl --autosave a.json",
+                                   simulated(kExamples + "cone.jsonl", "CURVEFOLD_SIM_NO_HMD=1"));
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
   EXPECT_NE(result.err.find("no headset"), std::string::npos) << result.err;
+  // The session never started: no recording, no autosave (issue 13, B8).
+  EXPECT_FALSE(fs::exists(path("r.jsonl")));
+  EXPECT_FALSE(fs::exists(path("a.json")));
 }
 
 TEST_F(XrApp, PlainCurvefoldChoosesXrWhenAHeadsetIsThere) {

@@ -180,8 +180,9 @@ XrAppSummary XrApp::run(const std::atomic<bool>& interrupt) {
     return runSessions(interrupt);
   } catch (...) {
     // Every way out saves first: an error the loop did not expect still leaves the design
-    // saved and the recording closed before it is reported.
-    outputs_->finish(/*saveAlways=*/true);
+    // saved and the recording closed before it is reported (a session that never started
+    // leaves no file).
+    outputs_->finish(/*saveAlways=*/summary_.sessions > 0);
     throw;
   }
 }
