@@ -12,8 +12,8 @@
 
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
-#include "engine/text/bounded_line.hpp"
 #include "engine/io/json_reader.hpp"
+#include "engine/text/bounded_line.hpp"
 
 namespace curvefold {
 namespace {
@@ -264,8 +264,8 @@ Recording parseRecordingLines(std::istream& in, const std::string& name,
   std::size_t number = 0;
   std::uint64_t bytes = 0;
   for (;;) {
-    const LineRead read = readBoundedLine(
-        in, line, haveHeader ? kMaxRecordingFrameBytes : kMaxRecordingHeaderBytes);
+    const LineRead read =
+        readBoundedLine(in, line, haveHeader ? kMaxRecordingFrameBytes : kMaxRecordingHeaderBytes);
     if (read == LineRead::End) break;
     const bool complete = read == LineRead::Line, tooLong = read == LineRead::TooLong;
     ++number;

@@ -63,13 +63,16 @@ class Interaction : public ::testing::Test {
       if (e.kind == kind) return true;
     return false;
   }
+  // Grab the world point `start` on the sheet and drag it by `by` in steps, trigger held.
+  void dragBy(const glm::dvec3& start, const glm::dvec3& by) {
+    pointAt(start, 0.0);
+    pointAt(start, 1.0);
+    for (int i = 1; i <= 5; ++i) pointAt(start + by * (i / 5.0), 1.0);
+  }
   // Grab the sheet point p, drag it by `by` (world) in steps, release.
   void fold(const glm::dvec3& p, const glm::dvec3& by) {
-    pointAt(world(p), 0.0);
-    pointAt(world(p), 1.0);
-    const glm::dvec3 start = world(p);
-    for (int i = 1; i <= 5; ++i) pointAt(start + by * (i / 5.0), 1.0);
-    pointAt(start + by, 0.0);
+    dragBy(world(p), by);
+    pointAt(world(p) + by, 0.0);
   }
 
   const Pose sheetFrame_{{0.0, 1.2, -0.4}, rotation(30, {1, 0, 0})};
@@ -201,9 +204,7 @@ TEST_F(Interaction, ReleaseAndUndoInOneFrameCommitThenUndo) {
   ASSERT_EQ(session_.foldCount(), 1u);
   const Sheet afterOne = session_.fixed();
   const glm::dvec3 start = world({-0.1, 0.1, 0.0});
-  pointAt(start, 0.0);
-  pointAt(start, 1.0);
-  for (int i = 1; i <= 5; ++i) pointAt(start + glm::dvec3(0.03, -0.02, 0.05) * (i / 5.0), 1.0);
+  dragBy(start, {0.03, -0.02, 0.05});
   frame_.buttons = static_cast<std::uint32_t>(Button::Undo);
   pointAt(start + glm::dvec3(0.03, -0.02, 0.05), 0.0);  // release and undo together
   EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
@@ -214,9 +215,7 @@ TEST_F(Interaction, ReleaseAndUndoInOneFrameCommitThenUndo) {
   EXPECT_TRUE(identical(session_.fixed(), afterOne));
   // A button pressed while the trigger is still held cancels the drag, as before.
   frame_.buttons = 0;
-  pointAt(start, 0.0);
-  pointAt(start, 1.0);
-  for (int i = 1; i <= 5; ++i) pointAt(start + glm::dvec3(0.03, -0.02, 0.05) * (i / 5.0), 1.0);
+  dragBy(start, {0.03, -0.02, 0.05});
   frame_.buttons = static_cast<std::uint32_t>(Button::Cancel);
   pointAt(start + glm::dvec3(0.03, -0.02, 0.05), 1.0);
   EXPECT_TRUE(sawEvent(InteractionEventKind::Cancel));
@@ -227,9 +226,7 @@ TEST_F(Interaction, ReleaseAndUndoInOneFrameCommitThenUndo) {
 // during a drag moves nothing (and throws nothing); the drag goes on from where it was.
 TEST_F(Interaction, AHandGlitchFarOutOfReachMovesNothing) {
   const glm::dvec3 start = world({0.1, 0.1, 0.0});
-  pointAt(start, 0.0);
-  pointAt(start, 1.0);
-  pointAt(start + glm::dvec3(-0.02, -0.03, 0.06), 1.0);
+  dragBy(start, {-0.02, -0.03, 0.06});
   const Sheet before = session_.current();
   EXPECT_NO_THROW(pointAt({1e300, 0.0, 0.0}, 1.0));
   EXPECT_EQ(core_.state(), InteractionState::Dragging);
