@@ -48,14 +48,6 @@ std::string formatPoint(const glm::dvec3& p) {
   return buffer;
 }
 
-// Where the "wrote ..." line goes: standard error when a file is written to standard output
-// ("-"), so that the output stays the file alone.
-std::ostream& statusFor(std::initializer_list<std::string_view> outputs) {
-  for (std::string_view output : outputs)
-    if (output == "-") return std::cerr;
-  return std::cout;
-}
-
 std::string describeSurface(const Design& design) {
   if (const auto* generated = std::get_if<GeneratedSurface>(&design.surface))
     return generated->generator;
@@ -71,6 +63,12 @@ double lengthTolerance(const Sheet& initial) {
 }
 
 }  // namespace
+
+std::ostream& statusFor(std::initializer_list<std::string_view> outputs) {
+  for (std::string_view output : outputs)
+    if (output == "-") return std::cerr;
+  return std::cout;
+}
 
 void addSurfacesCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("surfaces", "List the initial surfaces and parameters");

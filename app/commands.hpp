@@ -2,8 +2,11 @@
 // errors are thrown as exceptions and reported by main() as one line with a non-zero exit.
 #pragma once
 
+#include <initializer_list>
 #include <memory>
+#include <ostream>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +21,10 @@ class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// Where a command's "wrote ..." line goes: standard error when one of its outputs is standard
+// output ("-"), so that what is piped is the file alone; else standard output.
+std::ostream& statusFor(std::initializer_list<std::string_view> outputs);
 
 void addSurfacesCommand(CLI::App& app);
 void addNewCommand(CLI::App& app);

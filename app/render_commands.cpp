@@ -225,9 +225,9 @@ void addRenderCommand(CLI::App& app) {
     const RgbaImage image = renderer.render(scene);
     checkValidation(renderer.context());
     writePng(options->png, image);
-    std::cout << "wrote " << options->png << " (" << size.width << "x" << size.height << ", "
-              << sheet.triangleCount() << " triangles, " << renderer.context().deviceName()
-              << ")\n";
+    statusFor({options->png}) << "wrote " << options->png << " (" << size.width << "x"
+                              << size.height << ", " << sheet.triangleCount() << " triangles, "
+                              << renderer.context().deviceName() << ")\n";
   });
 }
 

@@ -175,8 +175,8 @@ void addRecordScriptCommand(CLI::App& app) {
     const double duration = recording.frames.empty()
                                 ? 0.0
                                 : recording.frames.back().time - recording.frames.front().time;
-    std::cout << "wrote " << options->output << " (" << recording.frames.size() << " frames, "
-              << seconds(duration) << ")\n";
+    statusFor({options->output}) << "wrote " << options->output << " (" << recording.frames.size()
+                                 << " frames, " << seconds(duration) << ")\n";
   });
 }
 

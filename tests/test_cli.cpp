@@ -312,6 +312,11 @@ TEST_F(Cli, OutputToStandardOutputOrADevice) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["format"], "curvefold-design");
   EXPECT_NE(r.err.find("wrote -"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("-")));
+  r = run("record-script " + std::string(CURVEFOLD_SOURCE_DIR) +
+          "/examples/scripts/star.gesture.json -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{\"format\":\"curvefold-recording\"", 0), 0u) << r.out.substr(0, 80);
+  EXPECT_NE(r.err.find("wrote -"), std::string::npos) << r.err;
   const fs::path null = path("null"), full = path("full");
   if (::mknod(null.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
       ::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0)

@@ -61,6 +61,15 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
   EXPECT_EQ(pngSize(path("fold.png")), std::make_pair(320u, 200u));
 }
 
+// `--png -` is standard output: the PNG alone, the report on stderr (issue 13, B5).
+TEST_F(RenderCli, RenderToStandardOutputIsThePngAlone) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const CommandResult r = run("render " + recording + " --png - --size 64x48");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_NE(r.err.find("wrote -"), std::string::npos) << r.err;
+}
+
 TEST_F(RenderCli, RenderRefusesBadInputWithOneLine) {
   const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
   const std::string png = " --png " + path("out.png").string();
