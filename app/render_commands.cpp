@@ -90,9 +90,7 @@ class ReplayFrameWriter {
   ReplayFrameWriter(fs::path dir, std::size_t every, RenderSize size, bool panel)
       : dir_(std::move(dir)), every_(every), panel_(panel) {
     if (dir_.empty()) throw UsageError("--frames: needs a folder");
-    stage_ = dir_.filename().empty() ? dir_.parent_path() : dir_;
-    stage_.replace_filename("." + stage_.filename().string() + ".staged-" +
-                            std::to_string(::getpid()));
+    stage_ = stagingPathFor(dir_.filename().empty() ? dir_.parent_path() : dir_);
     if (every_ == 0) throw UsageError("--every: must be at least 1");
     HeadlessOptions options;
     options.width = size.width;

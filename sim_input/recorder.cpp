@@ -9,19 +9,13 @@
 #include <limits>
 
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/json_reader.hpp"
 
 namespace curvefold {
 namespace {
 
 std::string failure(const std::string& verb, const std::filesystem::path& path, int error) {
   return "cannot " + verb + " " + path.string() + ": " + std::strerror(error);
-}
-
-// The shortest text that reads back as the same double, for messages.
-std::string format(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
 }
 
 }  // namespace
@@ -63,8 +57,8 @@ Recorder::~Recorder() {
 void Recorder::append(const InputFrame& frame) {
   if (fd_ < 0) throw FileError("cannot write " + path_.string() + ": the recording is closed");
   if (frame.time < lastTime_)
-    throw RecordingError("cannot record frame at t=" + format(frame.time) +
-                         ": time goes backwards (after t=" + format(lastTime_) + ")");
+    throw RecordingError("cannot record frame at t=" + shortestDouble(frame.time) +
+                         ": time goes backwards (after t=" + shortestDouble(lastTime_) + ")");
   std::string line = frameLine(frame);
   pending_ += line;
   pending_ += '\n';

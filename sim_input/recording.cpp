@@ -23,13 +23,6 @@ using nlohmann::ordered_json;
 
 constexpr Button kButtons[] = {Button::Cancel, Button::Undo, Button::Redo, Button::SwitchHands};
 
-// The shortest text that reads back as the same double, for messages.
-std::string format(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
 // "parse error at line 1, column 7: problem" without the line, which the message names already.
 std::string jsonLineProblem(const json::exception& e) {
   std::string message = jsonParseProblem(e);
@@ -73,7 +66,7 @@ class LineReader : public JsonReader {
     numbers(value, 4, q, where);
     const double length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (std::abs(length - 1.0) > kQuaternionUnitTolerance)
-      fail(where, "is not a unit quaternion [w, x, y, z] (length " + format(length) + ")");
+      fail(where, "is not a unit quaternion [w, x, y, z] (length " + shortestDouble(length) + ")");
     return glm::dquat(q[0], q[1], q[2], q[3]);  // w, x, y, z
   }
 
@@ -104,7 +97,7 @@ class LineReader : public JsonReader {
     const std::string& units = string(member(value, "units", ""), "units");
     if (units != "m") fail("units", "must be \"m\" (metres), got " + quotedExcerpt(units));
     header.rate = number(member(value, "rate", ""), "rate");
-    if (header.rate <= 0.0) fail("rate", "must be positive, got " + format(header.rate));
+    if (header.rate <= 0.0) fail("rate", "must be positive, got " + shortestDouble(header.rate));
     header.sheetFrame = pose(member(value, "sheet_frame", ""), "sheet_frame");
 
     const json& surface = member(value, "surface", "");
@@ -205,7 +198,7 @@ std::string frameLine(const InputFrame& frame) {
   std::uint32_t known = 0;
   for (Button button : kButtons) known |= static_cast<std::uint32_t>(button);
   if ((frame.buttons & ~known) != 0)
-    throw RecordingError("cannot record frame at t=" + format(frame.time) +
+    throw RecordingError("cannot record frame at t=" + shortestDouble(frame.time) +
                          ": unknown button bits " + std::to_string(frame.buttons & ~known));
 
   ordered_json sheet = poseJson(frame.sheetHand.pose);
@@ -223,7 +216,7 @@ std::string frameLine(const InputFrame& frame) {
       if (frame.held(button)) buttons.push_back(buttonName(button));
   }
   std::string line = value.dump();
-  LineReader("cannot record frame at t=" + format(frame.time), 0).frame(json::parse(line));
+  LineReader("cannot record frame at t=" + shortestDouble(frame.time), 0).frame(json::parse(line));
   return line;
 }
 
@@ -236,8 +229,8 @@ void writeRecording(const Recording& recording, const std::filesystem::path& pat
     double lastTime = -std::numeric_limits<double>::infinity();
     for (const InputFrame& frame : recording.frames) {
       if (frame.time < lastTime)
-        throw RecordingError("cannot record frame at t=" + format(frame.time) +
-                             ": time goes backwards (after t=" + format(lastTime) + ")");
+        throw RecordingError("cannot record frame at t=" + shortestDouble(frame.time) +
+                             ": time goes backwards (after t=" + shortestDouble(lastTime) + ")");
       lastTime = frame.time;
       out << frameLine(frame) << '\n';
     }
@@ -304,8 +297,8 @@ Recording parseRecordingLines(std::istream& in, const std::string& name,
     } else {
       InputFrame frame = reader.frame(value);
       if (frame.time < lastTime)
-        reader.refuse(
-            "t", "time goes backwards (" + format(frame.time) + " after " + format(lastTime) + ")");
+        reader.refuse("t", "time goes backwards (" + shortestDouble(frame.time) + " after " +
+                               shortestDouble(lastTime) + ")");
       lastTime = frame.time;
       recording.frames.push_back(frame);
     }

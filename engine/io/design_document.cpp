@@ -31,13 +31,6 @@ using nlohmann::ordered_json;
 // A bisector plane's normal is normalised in double precision: a few ulps off unit length.
 constexpr double kUnitTolerance = 1e-9;
 
-std::string format(double value) {
-  std::ostringstream out;
-  out.precision(std::numeric_limits<double>::max_digits10);
-  out << value;
-  return out.str();
-}
-
 // Reads a JSON value into a design, with messages that name where the problem is.
 class Reader : public JsonReader {
  public:
@@ -138,7 +131,7 @@ class Reader : public JsonReader {
     const double length = glm::length(fold.plane.normal);
     if (length == 0.0) fail(where, "plane.normal is zero");
     if (std::abs(length - 1.0) > kUnitTolerance)
-      fail(where, "plane.normal is not a unit vector (length " + format(length) + ")");
+      fail(where, "plane.normal is not a unit vector (length " + shortestDouble(length) + ")");
     // grabbed and target only describe the drag; the plane is what replays.
     if (const json* grabbed = optionalMember(value, "grabbed", where))
       fold.grabbed = vector3(*grabbed, where + ": grabbed");
@@ -251,8 +244,8 @@ Sheet buildSheet(const Design& design, std::string_view nameForErrors) {
       // Same snap distance as a grab, so a seed on the outline still counts as inside.
       const double tolerance = kRelativeGrabSnap * sheetSize(sheet);
       if (!locateDevelopmentPoint(sheet, fold.seed, tolerance))
-        throw DesignError(where + ": seed (" + format(fold.seed.x) + ", " + format(fold.seed.y) +
-                          ") lies outside the sheet");
+        throw DesignError(where + ": seed (" + shortestDouble(fold.seed.x) + ", " +
+                          shortestDouble(fold.seed.y) + ") lies outside the sheet");
       throw DesignError(where + ": " + e.what());
     }
   }

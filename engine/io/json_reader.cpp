@@ -8,13 +8,6 @@ namespace {
 
 using nlohmann::json;
 
-// The shortest text that reads back as the same double.
-std::string shortest(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
 // Appends value to out until out holds more than limit characters. Each level of nesting adds a
 // bracket, so the recursion is at most limit deep whatever the value's depth.
 void appendExcerpt(const json& value, std::string& out, std::size_t limit) {
@@ -61,6 +54,12 @@ std::string cut(std::string text, std::size_t maxLength) {
 }
 
 }  // namespace
+
+std::string shortestDouble(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
 
 std::string jsonExcerpt(const json& value, std::size_t maxLength) {
   std::string out;
@@ -154,7 +153,7 @@ double JsonReader::number(const json& value, const std::string& where) const {
 
 double JsonReader::unitInterval(const json& value, const std::string& where) const {
   const double x = number(value, where);
-  if (x < 0.0 || x > 1.0) fail(where, "must lie in [0, 1], got " + shortest(x));
+  if (x < 0.0 || x > 1.0) fail(where, "must lie in [0, 1], got " + shortestDouble(x));
   return x;
 }
 

@@ -38,6 +38,9 @@ std::string quotedExcerpt(std::string_view text, std::size_t maxLength = kJsonEx
 // members. A member not kept is skipped as it is parsed, never built.
 using JsonMemberFilter = std::function<bool(int depth, std::string_view key)>;
 
+// The shortest text that reads back as the same double, for messages and lines.
+std::string shortestDouble(double value);
+
 // Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem".
 nlohmann::json parseJsonText(std::string_view text, std::string_view name,
                              const JsonMemberFilter& keep = {});
