@@ -52,7 +52,8 @@ bool soak(const std::string& name, const Options& options) {
   std::mt19937_64 random(options.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int folds = 0, cancels = 0, undos = 0, redos = 0;
-  double worstError = 0.0;
+  double worstError = 0.0, thinnest = before.minRelativeHeight;
+  int refused = 0;
 
   for (int step = 0; step < options.steps; ++step) {
     // Redo only exists right after undos, so it is likelier there.
@@ -81,12 +82,15 @@ bool soak(const std::string& name, const Options& options) {
         ++cancels;
       } else {
         what = "fold";
-        folds += session.commit();
+        const bool kept = session.commit();
+        folds += kept;
+        refused += !kept && !session.refusal().empty();
       }
     }
     const Sheet& sheet = session.current();
     const SheetReport now = measure(sheet);
     worstError = std::max(worstError, now.maxEdgeLengthError);
+    thinnest = std::min(thinnest, now.minRelativeHeight);
     std::string problem = now.firstProblem;
     if (problem.empty() && now.eulerCharacteristic != before.eulerCharacteristic)
       problem = "Euler characteristic changed";
@@ -103,10 +107,11 @@ bool soak(const std::string& name, const Options& options) {
   const std::size_t grown = session.fixed().triangleCount() - initial.triangleCount();
   std::printf(
       "%-14s %7zu -> %7zu triangles, %4zu folds kept (%d committed, %d cancelled, %d undone, %d "
-      "redone), %.1f triangles per kept fold, worst edge error %.2g of the size\n",
+      "redone, %d refused), %.1f triangles per kept fold, worst edge error %.2g and thinnest "
+      "triangle %.2g of the size\n",
       name.c_str(), initial.triangleCount(), session.fixed().triangleCount(), session.foldCount(),
-      folds, cancels, undos, redos, session.foldCount() ? double(grown) / session.foldCount() : 0.0,
-      worstError / size);
+      folds, cancels, undos, redos, refused,
+      session.foldCount() ? double(grown) / session.foldCount() : 0.0, worstError / size, thinnest);
   return true;
 }
 

@@ -98,6 +98,24 @@ TEST(Validate, RejectsDegenerateTriangle) {
   expectInvalid(sheet, "degenerate");
 }
 
+// Issue 13, D15: the floor is the minimum feature size (it was 1e-12 of the size, which accepted
+// sides of 4.5e-11 m): a sliver just below it is refused, one just above it passes.
+TEST(Validate, TheDegeneracyFloorIsTheMinimumFeatureSize) {
+  for (const double factor : {0.9, 1.1}) {
+    Sheet sheet = unitSquare();  // vertex 3 at (0, 1): move it next to the diagonal (0,0)-(1,1)
+    const double height = factor * kRelativeFeatureSize * sheetSize(unitSquare());
+    const glm::dvec2 q =
+        glm::dvec2(0.5, 0.5) + height * glm::dvec2(-0.7071067811865476, 0.7071067811865476);
+    sheet.development[3] = q;
+    sheet.positions[3] = {q.x, q.y, 0.0};
+    if (factor < 1.0) {
+      expectInvalid(sheet, "degenerate");
+    } else {
+      EXPECT_NO_THROW(validate(sheet));
+    }
+  }
+}
+
 TEST(Validate, RejectsStretchedEdge) {
   Sheet sheet = unitSquare();
   sheet.positions[2].z = 1e-3;  // lifts a corner without moving its development

@@ -4,8 +4,11 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 #include <glm/geometric.hpp>
+
+#include "engine/geometry/validate.hpp"
 
 namespace curvefold {
 
@@ -192,6 +195,9 @@ void ReflectionWorkspace::clear() {
   changes_.triangleOrigin.clear();
   changes_.firstNewVertex = changes_.firstNewTriangle = changes_.newCreaseCount = 0;
   changes_.splitAny = false;
+  changes_.planeShift = 0.0;
+  changes_.thinnestCut = std::numeric_limits<double>::infinity();
+  sliverSources_.clear();
   splitEdges_.clear();
   reflectedPieces_.clear();
   reflectedReady_ = false;
@@ -200,6 +206,57 @@ void ReflectionWorkspace::clear() {
 void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjacency,
                                 VertexIndex seed, const ReflectionPlane& plane, double epsilon,
                                 Sheet& out) {
+  // Both tolerances follow the sheet's size, which epsilon carries.
+  const double feature = epsilon * (kRelativeCutFeatureSize / kRelativeEpsilon);
+  const double maxShift = epsilon * (kRelativeMaxPlaneShift / kRelativeEpsilon);
+  applyThrough(sheet, adjacency, seed, plane, epsilon, feature, out);
+  if (sliverSources_.empty()) return;
+
+  // Planes through the vertices of the triangles cut too thin, nearest first; the seed must stay
+  // strictly on its side. Each try may find other thin cuts, whose vertices join the candidates.
+  const double seedDistance = plane.signedDistance(sheet.positions[seed]);
+  auto shifted = [&](double shift) {
+    return ReflectionPlane{plane.point + shift * plane.normal, plane.normal};
+  };
+  triedShifts_.assign(1, 0.0);
+  double bestShift = 0.0, bestThinnest = changes_.thinnestCut;
+  std::vector<double> candidates;
+  for (int attempt = 1; attempt < kMaxPlaneShiftTries; ++attempt) {
+    for (TriangleIndex t : sliverSources_)
+      for (VertexIndex v : sheet.triangles[t]) {
+        const double d = plane.signedDistance(sheet.positions[v]);
+        if (std::abs(d) > maxShift || !(d > seedDistance + epsilon)) continue;
+        if (std::find(triedShifts_.begin(), triedShifts_.end(), d) != triedShifts_.end()) continue;
+        if (std::find(candidates.begin(), candidates.end(), d) == candidates.end())
+          candidates.push_back(d);
+      }
+    if (candidates.empty()) break;
+    const auto nearest =
+        std::min_element(candidates.begin(), candidates.end(), [](double x, double y) {
+          return std::abs(x) < std::abs(y) || (std::abs(x) == std::abs(y) && x < y);
+        });
+    const double shift = *nearest;
+    candidates.erase(nearest);
+    triedShifts_.push_back(shift);
+    restore(sheet, out);
+    applyThrough(sheet, adjacency, seed, shifted(shift), epsilon, feature, out);
+    changes_.planeShift = shift;
+    if (sliverSources_.empty()) return;
+    if (changes_.thinnestCut > bestThinnest) {
+      bestThinnest = changes_.thinnestCut;
+      bestShift = shift;
+    }
+  }
+  if (changes_.planeShift != bestShift) {
+    restore(sheet, out);
+    applyThrough(sheet, adjacency, seed, shifted(bestShift), epsilon, feature, out);
+    changes_.planeShift = bestShift;
+  }
+}
+
+void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency& adjacency,
+                                       VertexIndex seed, const ReflectionPlane& plane,
+                                       double epsilon, double feature, Sheet& out) {
   clear();
   changes_.firstNewVertex = sheet.vertexCount();
   changes_.firstNewTriangle = sheet.triangleCount();
@@ -259,6 +316,11 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
       changes_.triangleOrigin.push_back(original);
     }
     if (reflected) reflectedPieces_.push_back(index);
+    const double height =
+        smallestHeight(out.development[a], out.development[b], out.development[c]);
+    changes_.thinnestCut = std::min(changes_.thinnestCut, height);
+    if (height < feature && (sliverSources_.empty() || sliverSources_.back() != original))
+      sliverSources_.push_back(original);
   };
   // A convex polygon of 3 or 4 vertices in the original's order, as 1 or 2 triangles; a quad takes
   // the diagonal that gives the better-shaped pair.

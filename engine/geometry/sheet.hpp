@@ -75,6 +75,13 @@ inline double sheetEpsilon(const Sheet& sheet) {
   return kRelativeEpsilon * sheetSize(sheet);
 }
 
+// The minimum feature size, relative to the sheet's size (0.3 nm on a 30 cm sheet): validate()
+// refuses a triangle thinner than this (its smallest height in the development), so no edge is
+// shorter either. Ten times the on-plane tolerance, far below anything printable, and far above
+// rounding (a normal computed from such a triangle is good to 1e-7). Folds keep ten times clear of
+// it (kRelativeCutFeatureSize, reflection.hpp), so later cuts through a thin piece stay above it.
+inline constexpr double kRelativeFeatureSize = 1e-9;
+
 // Thrown by validate() and by every operation handed an impossible sheet.
 class InvalidSheet : public std::runtime_error {
  public:

@@ -29,12 +29,8 @@ double doubledArea(const Sheet& sheet, const Triangle& t) {
   return cross2(sheet.development[t[1]] - a, sheet.development[t[2]] - a);
 }
 
-double smallestHeight(const Sheet& sheet, const Triangle& t) {
-  double longest = 0.0;
-  for (int i = 0; i < 3; ++i)
-    longest = std::max(longest,
-                       glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]));
-  return longest > 0.0 ? std::abs(doubledArea(sheet, t)) / longest : 0.0;
+double smallestHeightOf(const Sheet& sheet, const Triangle& t) {
+  return smallestHeight(sheet.development[t[0]], sheet.development[t[1]], sheet.development[t[2]]);
 }
 
 void checkArrays(const Sheet& sheet) {
@@ -135,7 +131,7 @@ void checkTriangle(const Sheet& sheet, TriangleIndex t, double minHeight) {
   if (doubledArea(sheet, tri) <= 0.0)
     throw InvalidSheet("triangle " + std::to_string(t) +
                        " is not counter-clockwise in the development");
-  const double height = smallestHeight(sheet, tri);
+  const double height = smallestHeightOf(sheet, tri);
   if (height < minHeight) {
     std::ostringstream out;
     out.precision(3);
@@ -164,6 +160,11 @@ double maxEdgeLengthError(const Sheet& sheet, const EdgeTopology& edges, Edge* w
 }
 
 }  // namespace
+
+double smallestHeight(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+  const double longest = std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
+  return longest > 0.0 ? std::abs(cross2(b - a, c - a)) / longest : 0.0;
+}
 
 void validate(const Sheet& sheet, const ValidationOptions& options) {
   checkArrays(sheet);
@@ -226,7 +227,7 @@ SheetReport measure(const Sheet& sheet, const ValidationOptions& options) {
   for (const Triangle& t : sheet.triangles) {
     report.developmentCounterClockwise &= doubledArea(sheet, t) > 0.0;
     report.minRelativeHeight =
-        std::min(report.minRelativeHeight, smallestHeight(sheet, t) / report.size);
+        std::min(report.minRelativeHeight, smallestHeightOf(sheet, t) / report.size);
   }
   report.maxEdgeLengthError = maxEdgeLengthError(sheet, edges, nullptr);
   report.componentCount = connectedComponentCount(sheet, edges);

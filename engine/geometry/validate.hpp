@@ -16,9 +16,12 @@ struct ValidationOptions {
   // Largest allowed |3D edge length - 2D edge length|, relative to the sheet's size.
   double relativeLengthTolerance = 1e-9;
   // A triangle whose smallest height (in the development) is below this, relative to the sheet's
-  // size, is degenerate.
-  double relativeDegenerateHeight = 1e-12;
+  // size, is degenerate: the minimum feature size.
+  double relativeDegenerateHeight = kRelativeFeatureSize;
 };
+
+// Smallest height of the triangle abc (twice its area over its longest side); 0 for a point.
+double smallestHeight(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c);
 
 // Throws InvalidSheet naming the first problem found (the vertex, edge or triangle and by how
 // much).
