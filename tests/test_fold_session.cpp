@@ -7,6 +7,7 @@
 
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/surfaces/surfaces.hpp"
 #include "sheet_fixtures.hpp"
 
 namespace curvefold {
@@ -110,6 +111,66 @@ TEST(FoldSession, AGrabWithHintsMakesTheScansSheet) {
     EXPECT_TRUE(identical(session.fixed(), sheet));
   }
   EXPECT_GE(edgeSplits, 2);  // the adjacency path was taken
+}
+
+bool sameAdjacency(const SheetAdjacency& a, const SheetAdjacency& b) {
+  return a.triangles.offsets == b.triangles.offsets &&
+         a.triangles.triangles == b.triangles.triangles &&
+         a.neighbors.offsets == b.neighbors.offsets && a.neighbors.vertices == b.neighbors.vertices;
+}
+
+// Issue 13, E22: the grab's adjacency is patched where the insertion touched it (equal to a full
+// rebuild, row for row), and the temporal sheet stays equal to the fixed one between drags
+// (through grabs inside triangles, on edges and at vertices; commits, refused drags, cancels,
+// undos and redos), so a grab copies no sheet.
+TEST(FoldSession, AGrabPatchesTheAdjacencyAndKeepsTheTemporalSheetInStep) {
+  FoldSession session(makeSurface("cylinder", {{"resolution", 12}}));
+  std::mt19937 random(22);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int inserted = 0;
+  for (int step = 0; step < 60; ++step) {
+    const Sheet before = session.fixed();
+    const Sheet& fixed = session.fixed();
+    const auto t = static_cast<TriangleIndex>(random() % fixed.triangleCount());
+    // Some grabs at a corner or on an edge (a vertex snap, an edge split), most inside.
+    double a = unit(random), b = unit(random);
+    if (step % 5 == 1) b = 0.0;
+    if (step % 5 == 2) a = b = 0.0;
+    if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
+    const glm::dvec3 grabbed = session.beginDrag({t, {1.0 - a - b, a, b}});
+    ASSERT_TRUE(identical(session.current(), session.fixed())) << "step " << step;
+    InsertionUndo undo;
+    Sheet after = before;
+    insertVertexInPlace(after, developmentOf(before, {t, {1.0 - a - b, a, b}}), &undo);
+    ASSERT_TRUE(identical(after, session.fixed())) << "step " << step;
+    if (after.vertexCount() != before.vertexCount()) {
+      ++inserted;
+      SheetAdjacency patched;
+      adjacencyAfterInsertion(buildAdjacency(before), after, undo, patched);
+      EXPECT_TRUE(sameAdjacency(patched, buildAdjacency(after))) << "step " << step;
+    }
+    session.updateDrag(
+        grabbed + 0.04 * glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5));
+    switch (step % 4) {
+      case 0:
+        session.cancel();
+        break;
+      case 1:
+        session.commit();
+        break;
+      case 2:  // back to the start: a grab without a fold, which commits nothing
+        session.updateDrag(grabbed);
+        EXPECT_FALSE(session.commit());
+        break;
+      default:
+        session.commit();
+        session.undo();
+        if (step % 8 == 3) session.redo();
+    }
+  }
+  EXPECT_GT(inserted, 30);
+  session.beginDragNear(session.fixed().positions[0]);
+  EXPECT_TRUE(identical(session.current(), session.fixed()));
 }
 
 // Issue 13, D15: a plane just outside the on-plane tolerance through a thin triangle (made by

@@ -33,6 +33,7 @@ FoldSession::FoldSession(Sheet initial)
 
 void FoldSession::setFixed(Sheet sheet) {
   fixed_ = std::move(sheet);
+  temporal_ = fixed_;
   fixedChanged();
 }
 
@@ -58,14 +59,27 @@ glm::dvec3 FoldSession::beginDragAtDevelopment(const glm::dvec2& seed, TriangleI
   grabVertex_ = insertVertexInPlace(fixed_, seed, &grabUndo_, hints);
   grabInserted_ = fixed_.vertexCount() != grabUndo_.vertexCount;
   if (grabInserted_) {
-    // Kept for a cancel, which takes the insertion back exactly: no second rebuild.
+    // The adjacency before is kept for a cancel, which takes the insertion back exactly; the one
+    // after is patched where the insertion touched it. temporal_, equal to fixed_ between drags,
+    // takes the same few changes: a grab costs no scan and no copy of the sheet.
     std::swap(fixedAdjacency_, adjacencyBeforeGrab_);
-    fixedChanged();
+    adjacencyAfterInsertion(adjacencyBeforeGrab_, fixed_, grabUndo_, fixedAdjacency_);
+    ++fixedRevision_;
+    for (const auto& [t, old] : grabUndo_.rewritten) temporal_.triangles[t] = fixed_.triangles[t];
+    temporal_.positions.insert(temporal_.positions.end(),
+                               fixed_.positions.begin() + grabUndo_.vertexCount,
+                               fixed_.positions.end());
+    temporal_.development.insert(temporal_.development.end(),
+                                 fixed_.development.begin() + grabUndo_.vertexCount,
+                                 fixed_.development.end());
+    temporal_.triangles.insert(temporal_.triangles.end(),
+                               fixed_.triangles.begin() + grabUndo_.triangleCount,
+                               fixed_.triangles.end());
+    if (grabUndo_.tagsChanged) temporal_.tags = fixed_.tags;
   }
   grabSeed_ = seed;
   grabbed_ = fixed_.positions[grabVertex_];
   target_ = grabbed_;
-  temporal_ = fixed_;  // reuses temporal_'s storage from the last drag
   workspace_.clear();
   dragging_ = true;
   folded_ = false;
@@ -128,7 +142,8 @@ bool FoldSession::commit() {
   history_.push_back({grabSeed_, plane_, grabbed_, target_});
   ++applied_;
   ++designRevision_;
-  std::swap(fixed_, temporal_);  // temporal_ keeps the old storage for the next drag
+  std::swap(fixed_, temporal_);
+  temporal_ = fixed_;  // reuses the old storage; a commit pays for the sheet anyway (adjacency)
   fixedChanged();
   if (applied_ % kKeyframeInterval == 0)
     keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
@@ -136,7 +151,11 @@ bool FoldSession::commit() {
 }
 
 void FoldSession::cancel() {
+  // temporal_ back to fixed_ as it was before the grab, at the cost of what the drag changed.
+  if (dragging_) workspace_.restore(fixed_, temporal_);
+  workspace_.clear();
   if (dragging_ && grabInserted_) {
+    undoInsertion(temporal_, grabUndo_);
     undoInsertion(fixed_, grabUndo_);
     std::swap(fixedAdjacency_, adjacencyBeforeGrab_);
     ++fixedRevision_;

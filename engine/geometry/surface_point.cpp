@@ -271,6 +271,84 @@ void undoInsertion(Sheet& sheet, const InsertionUndo& undo) {
   if (undo.tagsChanged) sheet.tags = undo.tags;
 }
 
+namespace {
+
+// Compressed rows from `old` with some rows replaced (`rows`, ascending by vertex; every vertex
+// at or past the old row count among them): unchanged runs are copied whole, their offsets moved.
+void patchRows(const std::vector<std::uint32_t>& oldOffsets,
+               const std::vector<std::uint32_t>& oldValues, std::size_t rowCount,
+               const std::vector<std::pair<VertexIndex, std::vector<std::uint32_t>>>& rows,
+               std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& values) {
+  offsets.resize(rowCount + 1);
+  offsets[0] = 0;
+  values.clear();
+  values.reserve(oldValues.size() + 16 * rows.size());
+  auto copyRun = [&](VertexIndex from, VertexIndex to) {  // rows [from, to), all old ones
+    if (from >= to) return;
+    const std::uint32_t start = oldOffsets[from];
+    const std::int64_t shift = static_cast<std::int64_t>(values.size()) - start;
+    values.insert(values.end(), oldValues.begin() + start, oldValues.begin() + oldOffsets[to]);
+    for (VertexIndex v = from; v < to; ++v)
+      offsets[v + 1] = static_cast<std::uint32_t>(oldOffsets[v + 1] + shift);
+  };
+  VertexIndex next = 0;
+  for (const auto& [v, row] : rows) {
+    copyRun(next, v);
+    values.insert(values.end(), row.begin(), row.end());
+    offsets[v + 1] = static_cast<std::uint32_t>(values.size());
+    next = v + 1;
+  }
+  copyRun(next, static_cast<VertexIndex>(rowCount));
+}
+
+}  // namespace
+
+void adjacencyAfterInsertion(const SheetAdjacency& before, const Sheet& sheet,
+                             const InsertionUndo& undo, SheetAdjacency& out) {
+  // Touched: every corner of a rewritten triangle, before and after, and of a new triangle.
+  std::vector<VertexIndex> touched;
+  std::vector<TriangleIndex> changed;
+  for (const auto& [t, old] : undo.rewritten) {
+    changed.push_back(t);
+    touched.insert(touched.end(), old.begin(), old.end());
+    touched.insert(touched.end(), sheet.triangles[t].begin(), sheet.triangles[t].end());
+  }
+  for (std::size_t t = undo.triangleCount; t < sheet.triangleCount(); ++t) {
+    changed.push_back(static_cast<TriangleIndex>(t));
+    touched.insert(touched.end(), sheet.triangles[t].begin(), sheet.triangles[t].end());
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+
+  std::vector<std::pair<VertexIndex, std::vector<std::uint32_t>>> triangleRows, neighborRows;
+  for (VertexIndex v : touched) {
+    std::vector<TriangleIndex> row;
+    if (v < undo.vertexCount) {
+      const auto old = before.triangles.of(v);
+      row.assign(old.begin(), old.end());
+    }
+    row.insert(row.end(), changed.begin(), changed.end());
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    std::erase_if(row, [&](TriangleIndex t) {
+      const Triangle& tri = sheet.triangles[t];
+      return tri[0] != v && tri[1] != v && tri[2] != v;
+    });
+    std::vector<VertexIndex> neighbors;
+    for (TriangleIndex t : row)
+      for (VertexIndex w : sheet.triangles[t])
+        if (w != v) neighbors.push_back(w);
+    std::sort(neighbors.begin(), neighbors.end());
+    neighbors.erase(std::unique(neighbors.begin(), neighbors.end()), neighbors.end());
+    triangleRows.emplace_back(v, std::move(row));
+    neighborRows.emplace_back(v, std::move(neighbors));
+  }
+  patchRows(before.triangles.offsets, before.triangles.triangles, sheet.vertexCount(), triangleRows,
+            out.triangles.offsets, out.triangles.triangles);
+  patchRows(before.neighbors.offsets, before.neighbors.vertices, sheet.vertexCount(), neighborRows,
+            out.neighbors.offsets, out.neighbors.vertices);
+}
+
 VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q) {
   VertexInsertion result{sheet, kNoIndex};
   result.vertex = insertVertexInPlace(result.sheet, q, nullptr);

@@ -87,4 +87,10 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
                                 const InsertionHints& hints = {});
 void undoInsertion(Sheet& sheet, const InsertionUndo& undo);
 
+// The adjacency of `sheet` after an insertion, from the one before it: the rows of the few
+// vertices the insertion touched are rebuilt, the others copied in blocks. Equal to
+// buildAdjacency(sheet) (rows in the same order), which scans every triangle.
+void adjacencyAfterInsertion(const SheetAdjacency& before, const Sheet& sheet,
+                             const InsertionUndo& undo, SheetAdjacency& out);
+
 }  // namespace curvefold
