@@ -170,13 +170,21 @@ void addRecordScriptCommand(CLI::App& app) {
   command->add_option("SCRIPT", options->script, "Gesture script (JSON)")->required();
   command->add_option("-o,--output", options->output, "Recording to write (*.jsonl)")->required();
   command->callback([options] {
-    const Recording recording = recordGestureScript(options->script);
-    writeRecording(recording, options->output);
-    const double duration = recording.frames.empty()
-                                ? 0.0
-                                : recording.frames.back().time - recording.frames.front().time;
-    statusFor({options->output}) << "wrote " << options->output << " (" << recording.frames.size()
-                                 << " frames, " << seconds(duration) << ")\n";
+    // Streamed: each frame is written as the script makes it, into the staged file, which
+    // replaces the output only once the whole script has run. Standard output or a device has
+    // no staged file: the script is run once with nothing written, so a bad one writes nothing.
+    GestureStream stream;
+    if (writesInPlace(resolveOutputPath(options->output)))
+      streamGestureScript(
+          options->script, [](const RecordingHeader&) {}, [](const InputFrame&) {});
+    writeFileAtomically(options->output, [&](std::ostream& out) {
+      stream = streamGestureScript(
+          options->script,
+          [&](const RecordingHeader& header) { out << headerLine(header) << '\n'; },
+          [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; });
+    });
+    statusFor({options->output}) << "wrote " << options->output << " (" << stream.frames
+                                 << " frames, " << seconds(stream.seconds) << ")\n";
   });
 }
 

@@ -27,8 +27,8 @@ constexpr double kApproachSeconds = 0.25;
 
 }  // namespace
 
-GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames)
-    : maxFrames_(maxFrames) {
+GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames, FrameSink sink)
+    : sink_(std::move(sink)), maxFrames_(maxFrames) {
   recording_.header = std::move(header);
   if (!(recording_.header.rate > 0.0) || !(recording_.header.rate <= kMaxGestureRate))
     throw GestureError("rate must lie in (0, " + std::to_string(int(kMaxGestureRate)) +
@@ -56,7 +56,7 @@ GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames)
 int GestureRecorder::stepsFor(double seconds) const {
   // Refused before any frame is made, so that a script's cost is bounded by its limits.
   const double steps = std::max(1.0, std::round(seconds * recording_.header.rate));
-  if (static_cast<double>(recording_.frames.size()) + steps + 2.0 > static_cast<double>(maxFrames_))
+  if (static_cast<double>(frameCount_) + steps + 2.0 > static_cast<double>(maxFrames_))
     throw GestureError("the script makes more than " + std::to_string(maxFrames_) + " frames (" +
                        std::to_string(maxFrames_ / 90 / 60) +
                        " minutes at 90 Hz); split it or lower its rate");
@@ -64,9 +64,12 @@ int GestureRecorder::stepsFor(double seconds) const {
 }
 
 void GestureRecorder::step() {
-  recording_.frames.push_back(frame_);
+  if (sink_)
+    sink_(frame_);
+  else
+    recording_.frames.push_back(frame_);
   core_->process(frame_);
-  frame_.time = static_cast<double>(recording_.frames.size()) * dt_;
+  frame_.time = static_cast<double>(++frameCount_) * dt_;
 }
 
 void GestureRecorder::wait(double seconds) {
@@ -221,7 +224,12 @@ class ScriptReader : public JsonReader {
   }
 };
 
-Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames) {
+// Runs the script; with a sink the frames stream out (`onHeader` first) and the returned
+// recording holds none.
+Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames,
+                           const std::function<void(const RecordingHeader&)>& onHeader = nullptr,
+                           const GestureRecorder::FrameSink& sink = nullptr,
+                           GestureStream* stream = nullptr) {
   const ScriptReader reader(name);
   const nlohmann::json document = parseJsonText(text, name);
   reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
@@ -249,9 +257,10 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
   if (const nlohmann::json* frame = reader.optionalMember(document, "sheet_frame", ""))
     header.sheetFrame = reader.pose(*frame, "sheet_frame");
 
+  if (onHeader) onHeader(header);
   std::optional<GestureRecorder> made;
   try {
-    made.emplace(header, maxFrames);
+    made.emplace(header, maxFrames, sink);
   } catch (const DesignError& e) {
     throw GestureError(e.what());
   }
@@ -318,6 +327,7 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
     }
   }
   recorder.wait(0.1);  // a moment of rest after the last gesture
+  if (stream) *stream = {recorder.frameCount(), recorder.duration()};
   return recorder.recording();
 }
 
@@ -334,14 +344,33 @@ Recording recordGestureScriptText(std::string_view text, std::string_view name,
   }
 }
 
-Recording recordGestureScript(const std::filesystem::path& script) {
-  std::string text;
+namespace {
+
+std::string readGestureScript(const std::filesystem::path& script) {
   try {
-    text = readWholeFile(script, kMaxGestureScriptBytes, "gesture script");
+    return readWholeFile(script, kMaxGestureScriptBytes, "gesture script");
   } catch (const FileError& e) {
     throw GestureError(e.what());
   }
-  return recordGestureScriptText(text, script.string());
+}
+
+}  // namespace
+
+Recording recordGestureScript(const std::filesystem::path& script) {
+  return recordGestureScriptText(readGestureScript(script), script.string());
+}
+
+GestureStream streamGestureScript(const std::filesystem::path& script,
+                                  const std::function<void(const RecordingHeader&)>& header,
+                                  const GestureRecorder::FrameSink& frame) {
+  const std::string text = readGestureScript(script);
+  GestureStream stream;
+  try {
+    runGestureScript(text, script.string(), kMaxGestureFrames, header, frame, &stream);
+  } catch (const JsonReadError& e) {
+    throw GestureError(e.what());
+  }
+  return stream;
 }
 
 }  // namespace curvefold

@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -58,8 +59,13 @@ struct SheetTurn {
 
 class GestureRecorder {
  public:
+  // Where frames go as they are made instead of into recording().frames (a script streamed to a
+  // file holds no frames in memory).
+  using FrameSink = std::function<void(const InputFrame&)>;
+
   // maxFrames bounds the recording (a fuzzer bounds it lower).
-  explicit GestureRecorder(RecordingHeader header, std::size_t maxFrames = kMaxGestureFrames);
+  explicit GestureRecorder(RecordingHeader header, std::size_t maxFrames = kMaxGestureFrames,
+                           FrameSink sink = nullptr);
 
   void wait(double seconds);
   // Clutch, turn the sheet about its centre (world axis), release.
@@ -77,7 +83,11 @@ class GestureRecorder {
             const std::optional<SheetTurn>& turnDuring = std::nullopt);
   void press(Button button);
 
+  // The header and, without a sink, the frames.
   const Recording& recording() const { return recording_; }
+  std::size_t frameCount() const { return frameCount_; }
+  // Seconds from the first frame to the last.
+  double duration() const { return frameCount_ > 1 ? double(frameCount_ - 1) * dt_ : 0.0; }
   const FoldSession& session() const { return *session_; }
   const InteractionCore& core() const { return *core_; }
 
@@ -92,6 +102,8 @@ class GestureRecorder {
                   double fraction) const;
 
   Recording recording_;
+  FrameSink sink_;
+  std::size_t frameCount_ = 0;
   std::unique_ptr<FoldSession> session_;
   std::unique_ptr<InteractionCore> core_;
   InputFrame frame_;
@@ -106,5 +118,15 @@ Recording recordGestureScript(const std::filesystem::path& script);
 // The same from the script's text (nameForErrors starts every message), with at most maxFrames.
 Recording recordGestureScriptText(std::string_view text, std::string_view nameForErrors,
                                   std::size_t maxFrames = kMaxGestureFrames);
+
+// Streams a script's recording: `header` once the script's header is read, then every frame as
+// it is made, none held in memory. Returns the frame count and their duration in seconds.
+struct GestureStream {
+  std::size_t frames = 0;
+  double seconds = 0.0;
+};
+GestureStream streamGestureScript(const std::filesystem::path& script,
+                                  const std::function<void(const RecordingHeader&)>& header,
+                                  const GestureRecorder::FrameSink& frame);
 
 }  // namespace curvefold
