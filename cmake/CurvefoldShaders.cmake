@@ -3,14 +3,22 @@
 # from a path. The symbol is the file name with '.' replaced by '_' plus "_spv"
 # (sheet.frag -> sheet_frag_spv).
 #
-#   curvefold_add_shaders(TARGET curvefold_render SOURCES shaders/sheet.vert shaders/sheet.frag)
+#   curvefold_add_shaders(TARGET curvefold_render SOURCES shaders/sheet.vert shaders/sheet.frag
+#                         INCLUDES shaders/common.glsl)
+#
+# INCLUDES are files the shaders #include (GL_GOOGLE_include_directive): a change rebuilds them.
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 function(curvefold_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDES" ${ARGN})
   set(out_dir ${PROJECT_BINARY_DIR}/shaders)
   file(MAKE_DIRECTORY ${out_dir})
   set(headers)
+  set(includes)
+  foreach(include ${ARG_INCLUDES})
+    get_filename_component(include_abs ${include} ABSOLUTE BASE_DIR ${PROJECT_SOURCE_DIR})
+    list(APPEND includes ${include_abs})
+  endforeach()
   foreach(source ${ARG_SOURCES})
     get_filename_component(source_abs ${source} ABSOLUTE BASE_DIR ${PROJECT_SOURCE_DIR})
     get_filename_component(name ${source} NAME)
@@ -20,7 +28,7 @@ function(curvefold_add_shaders)
       OUTPUT ${header}
       COMMAND ${GLSLANG_VALIDATOR} -V --quiet --target-env vulkan1.1 --vn ${symbol} -o ${header}
               ${source_abs}
-      DEPENDS ${source_abs}
+      DEPENDS ${source_abs} ${includes}
       COMMENT "glslangValidator ${name}"
       VERBATIM)
     list(APPEND headers ${header})

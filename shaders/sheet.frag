@@ -1,4 +1,6 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "target_color.glsl"
 // Two-sided paper: front and back colours by facing, flat shading from the screen-space
 // derivatives of the position (so creases stay sharp), the reflected part tinted: a triangle with
 // any vertex that only reflected triangles share interpolates a positive flag everywhere inside.
@@ -39,5 +41,5 @@ void main() {
   float head = max(dot(normal, towardViewer), 0.0);
   float ambient = u.lightDir.w;
   float shade = ambient + (1.0 - ambient) * (0.75 * key + 0.25 * head);
-  outColor = vec4(base * shade, 1.0);
+  outColor = targetColor(vec4(base * shade, 1.0));
 }

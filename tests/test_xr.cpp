@@ -146,6 +146,14 @@ TEST_F(XrApp, BothEyesSeeTheSheetAndCreasesFromTheirOwnPositions) {
   const double disparity = eyes[0].sheetX - eyes[1].sheetX;
   EXPECT_GT(disparity, 2.0);
   EXPECT_LT(disparity, 80.0);
+  // Issue 14, 4: the runtime offers sRGB and UNORM; the sRGB format is chosen (the pixels above,
+  // read back as the compositor shows them, have the desktop's colours), and every rendered frame
+  // comes with its depth (XR_KHR_composition_layer_depth).
+  const std::string log = slurp(path("sim.log"));
+  EXPECT_NE(log.find("swapchain R8G8B8A8_SRGB 320x288"), std::string::npos) << log;
+  EXPECT_EQ(log.find("swapchain R8G8B8A8_UNORM"), std::string::npos);
+  EXPECT_NE(log.find("end_frame layers=1 views=2 depth=2"), std::string::npos);
+  EXPECT_EQ(log.find("views=2 depth=0"), std::string::npos);
 }
 
 TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {

@@ -226,9 +226,10 @@ void XrVulkanGraphics::initializeDevice(XrInstance instance, XrSystemId system) 
 }
 
 std::int64_t XrVulkanGraphics::chooseColorFormat(std::span<const std::int64_t> offered) const {
-  // Our shaders write display-ready colours, as for the desktop window's UNORM swapchain.
-  for (VkFormat wanted : {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM,
-                          VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB})
+  // sRGB first, as compositors expect (hello_xr's order): given linear colour, it shows what a
+  // UNORM target shows of sRGB-encoded colour, where a compositor would encode UNORM a second time.
+  for (VkFormat wanted : {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB,
+                          VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM})
     if (std::find(offered.begin(), offered.end(), wanted) != offered.end()) return wanted;
   throw XrError("the OpenXR runtime offers no 8-bit RGBA swapchain format",
                 XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED);
@@ -270,7 +271,7 @@ void XrVulkanGraphics::swapchainsDestroyed() {
 void XrVulkanGraphics::renderEye(const XrEyeView& eye) {
   XrEyeTarget& target = *targets_.at(eye.index);
   target.use(eye.colorImage, eye.depthImage);
-  const Scene& scene = eyeScene_(eye, eyeCamera(eye.pose, eye.fov, 0.01f, 100.0f));
+  const Scene& scene = eyeScene_(eye, eyeCamera(eye.pose, eye.fov, nearPlane(), farPlane()));
   if (!drawFrame(*frames_, target, *renderer_, scene))
     throw VulkanError("XR eye " + std::to_string(eye.index) + " was not drawn");
 }

@@ -76,6 +76,8 @@ class XrVulkanGraphics : public XrGraphics {
   void swapchainsCreated(std::uint32_t view, const XrViewSwapchains& swapchains) override;
   void swapchainsDestroyed() override;
   void renderEye(const XrEyeView& eye) override;
+  float nearPlane() const override { return 0.01f; }
+  float farPlane() const override { return 100.0f; }
 
   void setEyeScene(EyeScene eyeScene) { eyeScene_ = std::move(eyeScene); }
   // Null before initializeDevice.

@@ -11,7 +11,7 @@ HeadlessRenderer::HeadlessRenderer(const HeadlessOptions& options) {
   contextOptions.instance.validation = options.validation || (env && std::strcmp(env, "1") == 0);
   context_ = std::make_unique<VulkanContext>(contextOptions);
   target_ = std::make_unique<OffscreenTarget>(*context_, VkExtent2D{options.width, options.height},
-                                              options.samples);
+                                              options.samples, kFramesInFlight, options.color);
   frames_ = std::make_unique<FrameRing>(*context_);
   renderer_ = std::make_unique<SceneRenderer>(*context_, *target_, frames_->count());
 }

@@ -17,6 +17,7 @@ struct HeadlessOptions {
   std::uint32_t height = 720;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;  // lowered to what the device has
   bool validation = false;                                // also on when CURVEFOLD_VK_VALIDATION=1
+  VkFormat color = VK_FORMAT_R8G8B8A8_UNORM;              // or R8G8B8A8_SRGB
 };
 
 class HeadlessRenderer {

@@ -5,8 +5,11 @@
 namespace curvefold {
 
 OffscreenTarget::OffscreenTarget(const VulkanContext& context, VkExtent2D extent,
-                                 VkSampleCountFlagBits samples, std::uint32_t framesInFlight)
+                                 VkSampleCountFlagBits samples, std::uint32_t framesInFlight,
+                                 VkFormat color)
     : context_(context), extent_(extent) {
+  if (color != VK_FORMAT_R8G8B8A8_UNORM && color != VK_FORMAT_R8G8B8A8_SRGB)
+    throw VulkanError("an offscreen target is R8G8B8A8, UNORM or SRGB");
   if (extent.width == 0 || extent.height == 0) throw VulkanError("render size must not be zero");
   const auto& limits = context.properties().limits;
   if (extent.width > limits.maxFramebufferWidth || extent.height > limits.maxFramebufferHeight)
@@ -14,7 +17,7 @@ OffscreenTarget::OffscreenTarget(const VulkanContext& context, VkExtent2D extent
                       std::to_string(extent.height) + " exceeds the device's limit of " +
                       std::to_string(limits.maxFramebufferWidth) + "x" +
                       std::to_string(limits.maxFramebufferHeight));
-  format_.color = VK_FORMAT_R8G8B8A8_UNORM;
+  format_.color = color;
   format_.depth = chooseDepthFormat(context);
   format_.samples = context.sampleCountUpTo(samples);
   format_.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;

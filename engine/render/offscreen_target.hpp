@@ -13,10 +13,12 @@ namespace curvefold {
 
 class OffscreenTarget : public RenderTarget {
  public:
-  // samples: wanted MSAA (4x by default), lowered to what the device supports.
+  // samples: wanted MSAA (4x by default), lowered to what the device supports. color: an 8-bit
+  // RGBA format, UNORM or SRGB (its bytes read back the same way).
   OffscreenTarget(const VulkanContext& context, VkExtent2D extent,
                   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT,
-                  std::uint32_t framesInFlight = kFramesInFlight);
+                  std::uint32_t framesInFlight = kFramesInFlight,
+                  VkFormat color = VK_FORMAT_R8G8B8A8_UNORM);
   ~OffscreenTarget() override;
 
   VkRenderPass renderPass() const override { return renderPass_; }

@@ -1,8 +1,33 @@
 #include "engine/render/render_target.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace curvefold {
+
+bool isSrgbFormat(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+    case VK_FORMAT_R8G8B8_SRGB:
+    case VK_FORMAT_B8G8R8_SRGB:
+      return true;
+    default:
+      return false;
+  }
+}
+
+glm::vec4 targetColor(const glm::vec4& srgbEncoded, const PassFormat& format) {
+  if (!isSrgbFormat(format.color)) return srgbEncoded;
+  // The sRGB transfer function's inverse, as shaders/target_color.glsl applies it.
+  auto linear = [](float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+  };
+  return {linear(srgbEncoded.r), linear(srgbEncoded.g), linear(srgbEncoded.b), srgbEncoded.a};
+}
 
 TransientAttachments createTransientAttachments(const VulkanContext& context, VkExtent2D extent,
                                                 const PassFormat& format) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <vulkan/vulkan.h>
+#include <glm/vec4.hpp>
 
 #include "engine/render/frames.hpp"
 #include "engine/render/gpu_resources.hpp"
@@ -23,6 +24,12 @@ struct PassFormat {
   // Layout the resolved image ends in: TRANSFER_SRC for a readback, PRESENT_SRC for a swapchain.
   VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
 };
+
+// Whether the format encodes linear values as sRGB on write (the *_SRGB formats).
+bool isSrgbFormat(VkFormat format);
+// A colour chosen as sRGB-encoded values, as the target must be given it: as is for a UNORM
+// target, decoded to linear for an sRGB one (which encodes it again), so both show the same.
+glm::vec4 targetColor(const glm::vec4& srgbEncoded, const PassFormat& format);
 
 // Attachments: 0 = colour (MSAA when samples > 1), 1 = depth, 2 = resolve (only when samples > 1).
 VkRenderPass createScenePass(VkDevice device, const PassFormat& format);

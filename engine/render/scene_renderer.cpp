@@ -81,6 +81,7 @@ struct PipelineBuilder {
   std::vector<VkVertexInputAttributeDescription> attributes;
   bool depthWrite = true;
   bool blend = false;
+  VkBool32 srgbTarget = VK_FALSE;  // shaders/target_color.glsl's constant 0
 
   VkPipeline build() const {
     VkShaderModule vertex = shaderModule(device, vertexCode.data(), vertexCode.size_bytes());
@@ -99,6 +100,9 @@ struct PipelineBuilder {
     stages[1] = stages[0];
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragment;
+    const VkSpecializationMapEntry entry{0, 0, sizeof(VkBool32)};
+    const VkSpecializationInfo specialization{1, &entry, sizeof(VkBool32), &srgbTarget};
+    stages[1].pSpecializationInfo = &specialization;
 
     VkPipelineVertexInputStateCreateInfo input{
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
@@ -303,6 +307,7 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
                             format_.samples,
                             code(sheet_vert_spv),
                             code(sheet_frag_spv)};
+    builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
     builder.bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX},
                         {1, 1, VK_VERTEX_INPUT_RATE_VERTEX}};
     builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8_UNORM, 0}};
@@ -645,8 +650,8 @@ void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D ex
     VkClearAttachment clears[2]{};
     clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
     clears[0].colorAttachment = 0;
-    const glm::vec3 bg = scene.colors.panelBackground;
-    clears[0].clearValue.color = {{bg.r, bg.g, bg.b, 1.0f}};
+    const glm::vec4 bg = targetColor(glm::vec4(scene.colors.panelBackground, 1.0f), format_);
+    clears[0].clearValue.color = {{bg.r, bg.g, bg.b, bg.a}};
     clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     clears[1].clearValue.depthStencil = {1.0f, 0};
     VkClearRect rect{layout.panel, 0, 1};
@@ -658,9 +663,9 @@ void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D ex
   }
 }
 
-VkClearColorValue SceneRenderer::clearColor(const Scene& scene) {
-  const glm::vec3 c = scene.colors.background;
-  return {{c.r, c.g, c.b, 1.0f}};
+VkClearColorValue SceneRenderer::clearColor(const Scene& scene, const PassFormat& format) {
+  const glm::vec4 c = targetColor(glm::vec4(scene.colors.background, 1.0f), format);
+  return {{c.r, c.g, c.b, c.a}};
 }
 
 Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
@@ -675,7 +680,7 @@ Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& rendere
   const VkExtent2D extent = target.extent();
   renderer.prepare(frame, scene, extent);
   VkClearValue clears[3]{};
-  clears[0].color = SceneRenderer::clearColor(scene);
+  clears[0].color = SceneRenderer::clearColor(scene, target.format());
   clears[1].depthStencil = {1.0f, 0};
   clears[2].color = clears[0].color;
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};

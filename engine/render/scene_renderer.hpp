@@ -84,8 +84,8 @@ class SceneRenderer {
   void record(const Frame& frame, const Scene& scene, VkExtent2D extent) const;
 
   const UploadStats& lastUpload() const { return stats_; }
-  // The clear colour of the scene (the render pass clears with it).
-  static VkClearColorValue clearColor(const Scene& scene);
+  // The clear colour of the scene for a target of that format (the render pass clears with it).
+  static VkClearColorValue clearColor(const Scene& scene, const PassFormat& format);
 
  private:
   struct Slot;

@@ -97,6 +97,12 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics) : gr
           XR_ERROR_EXTENSION_NOT_PRESENT);
     names.push_back(name.c_str());
   }
+  // Depth for the compositor's reprojection, where the runtime takes it.
+  const char* const depthLayer = XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME;
+  if (graphics_ && std::find(offered.begin(), offered.end(), depthLayer) != offered.end()) {
+    names.push_back(depthLayer);
+    depthExtension_ = true;
+  }
 
   XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
   std::strncpy(info.applicationInfo.applicationName, options.applicationName.c_str(),
@@ -295,6 +301,7 @@ XrFrameTiming XrProgram::beginFrame() {
 
 void XrProgram::endFrame(const XrFrameTiming& timing) {
   std::vector<XrCompositionLayerProjectionView> projectionViews;
+  std::vector<XrCompositionLayerDepthInfoKHR> depthInfos;
   XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
   const XrCompositionLayerBaseHeader* layers[] = {
       reinterpret_cast<const XrCompositionLayerBaseHeader*>(&layer)};
@@ -314,6 +321,7 @@ void XrProgram::endFrame(const XrFrameTiming& timing) {
                   count == swapchains_.size();
     if (submitLayer) {
       projectionViews.resize(count);
+      depthInfos.resize(count);
       for (std::uint32_t i = 0; i < count; ++i) {
         const XrViewSwapchains& chains = swapchains_[i];
         XrEyeView eye;
@@ -343,6 +351,17 @@ void XrProgram::endFrame(const XrFrameTiming& timing) {
         view.fov = views_[i].fov;
         view.subImage.swapchain = chains.color;
         view.subImage.imageRect = {{0, 0}, chains.extent};
+        if (depthExtension_ && chains.depth != XR_NULL_HANDLE) {
+          XrCompositionLayerDepthInfoKHR& depth = depthInfos[i];
+          depth = {XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR};
+          depth.subImage.swapchain = chains.depth;
+          depth.subImage.imageRect = {{0, 0}, chains.extent};
+          depth.minDepth = 0.0f;
+          depth.maxDepth = 1.0f;
+          depth.nearZ = graphics_->nearPlane();
+          depth.farZ = graphics_->farPlane();
+          view.next = &depth;
+        }
       }
       layer.space = baseSpace_;
       layer.viewCount = count;

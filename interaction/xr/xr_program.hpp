@@ -56,6 +56,10 @@ class XrGraphics {
   virtual void swapchainsDestroyed() = 0;
   // Draws one eye into its acquired images; its commands are submitted on return.
   virtual void renderEye(const XrEyeView& eye) = 0;
+  // The near and far planes the eyes are drawn with (depth 0 at near, 1 at far), for the depth
+  // submitted with XR_KHR_composition_layer_depth.
+  virtual float nearPlane() const = 0;
+  virtual float farPlane() const = 0;
 };
 
 struct XrProgramOptions {
@@ -89,6 +93,11 @@ class XrProgram {
   XrProgram& operator=(const XrProgram&) = delete;
 
   XrInstance instance() const { return instance_; }
+  // Whether the depth images are submitted with the frame (the runtime has
+  // XR_KHR_composition_layer_depth and the plugin made depth swapchains).
+  bool submitsDepth() const {
+    return depthExtension_ && !swapchains_.empty() && swapchains_[0].depth != XR_NULL_HANDLE;
+  }
   const std::string& runtimeName() const { return runtimeName_; }
 
   // xrGetSystem for a head-mounted display: false while none is available (not connected, or
@@ -137,6 +146,7 @@ class XrProgram {
   std::vector<XrSessionState> history_;
   bool running_ = false;
   bool exitRequested_ = false;
+  bool depthExtension_ = false;  // XR_KHR_composition_layer_depth enabled
   std::vector<XrViewConfigurationView> viewConfigs_;
   std::vector<XrViewSwapchains> swapchains_;
   std::vector<XrView> views_;

@@ -3,7 +3,10 @@
 // from a recording, frame-locked (one recorded frame per focused xrWaitFrame), runs the session
 // state machine a real runtime runs, resolves actions through the application's suggested
 // bindings for the current interaction profile, and makes XR_KHR_vulkan_enable2 swapchains on the
-// application's device (XR_MND_headless sessions have none). sim_user.hpp lists its settings.
+// application's device (XR_MND_headless sessions have none) in sRGB and UNORM colour formats and
+// the device's depth formats, and takes depth images with XR_KHR_composition_layer_depth. Its log
+// names each swapchain's format and, per frame, how many views came with depth. sim_user.hpp lists
+// its settings.
 //
 // One instance at a time; every entry point validates its handles and structure types and
 // catches exceptions at the C boundary.
@@ -382,7 +385,8 @@ XrResult guard(Body body) {
   }
 }
 
-const char* const kExtensions[] = {"XR_KHR_vulkan_enable2", "XR_MND_headless"};
+const char* const kExtensions[] = {"XR_KHR_vulkan_enable2", "XR_MND_headless",
+                                   "XR_KHR_composition_layer_depth"};
 
 XRAPI_ATTR XrResult XRAPI_CALL enumerateInstanceExtensionProperties(const char* layer,
                                                                     std::uint32_t capacity,
@@ -943,7 +947,7 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession handle, const XrFrameEndInfo* 
     if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE)
       return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     if (info->layerCount > 0 && !info->layers) return XR_ERROR_VALIDATION_FAILURE;
-    std::uint32_t viewCount = 0;
+    std::uint32_t viewCount = 0, depthCount = 0;
     for (std::uint32_t i = 0; i < info->layerCount; ++i) {
       const XrCompositionLayerBaseHeader* layer = info->layers[i];
       if (!layer || layer->type != XR_TYPE_COMPOSITION_LAYER_PROJECTION)
@@ -961,11 +965,30 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession handle, const XrFrameEndInfo* 
           return XR_ERROR_SWAPCHAIN_RECT_INVALID;
         session.lastViewSwapchain[v] = swapchain;
         ++viewCount;
+        // XR_KHR_composition_layer_depth: a depth image for the view, checked as its spec says.
+        for (auto* next = static_cast<const XrBaseInStructure*>(projection->views[v].next); next;
+             next = next->next) {
+          if (next->type != XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR) continue;
+          if (!gInstance || !gInstance->extensions.count("XR_KHR_composition_layer_depth"))
+            return XR_ERROR_VALIDATION_FAILURE;  // a structure of an extension not enabled
+          const auto* depth = reinterpret_cast<const XrCompositionLayerDepthInfoKHR*>(next);
+          Swapchain* images = objectOf<Swapchain>(depth->subImage.swapchain);
+          if (!images || images->session != &session) return XR_ERROR_HANDLE_INVALID;
+          if (!images->images->depth() || images->lastReleased < 0) return XR_ERROR_LAYER_INVALID;
+          if (depth->subImage.imageRect.extent.width <= 0 ||
+              depth->subImage.imageRect.extent.height <= 0)
+            return XR_ERROR_SWAPCHAIN_RECT_INVALID;
+          if (!(depth->minDepth >= 0.0f && depth->minDepth <= 1.0f && depth->maxDepth >= 0.0f &&
+                depth->maxDepth <= 1.0f && depth->minDepth < depth->maxDepth) ||
+              !(depth->nearZ > 0.0f) || !(depth->farZ > 0.0f) || depth->nearZ == depth->farZ)
+            return XR_ERROR_VALIDATION_FAILURE;
+          ++depthCount;
+        }
       }
     }
     session.begun = false;
     log("end_frame layers=" + std::to_string(info->layerCount) +
-        " views=" + std::to_string(viewCount));
+        " views=" + std::to_string(viewCount) + " depth=" + std::to_string(depthCount));
     if (!session.focusedOnce && session.state == XR_SESSION_STATE_SYNCHRONIZED) {
       session.focusedOnce = true;
       setState(session, XR_SESSION_STATE_VISIBLE);
@@ -1294,6 +1317,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createSwapchain(XrSession handle, const XrSwapcha
     swapchain->session = &session;
     swapchain->images = std::make_unique<SwapchainImages>(*session.vulkan, VkFormat(info->format),
                                                           info->width, info->height, usage, 3);
+    log("swapchain " + swapchainFormatName(info->format) + " " + std::to_string(info->width) + "x" +
+        std::to_string(info->height));
     Swapchain* created = swapchain.release();
     session.swapchains.insert(created);
     *out = handleOf<XrSwapchain>(created);

@@ -12,7 +12,9 @@
 //   CURVEFOLD_SIM_NO_HMD=1    no headset connected (xrGetSystem fails)
 //   CURVEFOLD_SIM_VIEW_SIZE   WxH of each view (default 512x512)
 //   CURVEFOLD_SIM_SAVE_VIEWS  a folder: each view's last image is written there as view<i>.png
-//   CURVEFOLD_SIM_LOG         a file: one line per state change, served frame, profile, haptic
+//   CURVEFOLD_SIM_LOG         a file: one line per state change, served frame, profile, haptic,
+//                             swapchain (its format) and ended frame (its views, and how many
+//                             came with depth)
 #pragma once
 
 #include <array>

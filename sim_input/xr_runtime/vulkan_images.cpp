@@ -39,6 +39,27 @@ VkImageAspectFlags aspectOf(VkFormat format) {
 
 }  // namespace
 
+std::string swapchainFormatName(std::int64_t format) {
+  switch (static_cast<VkFormat>(format)) {
+    case VK_FORMAT_R8G8B8A8_SRGB:
+      return "R8G8B8A8_SRGB";
+    case VK_FORMAT_B8G8R8A8_SRGB:
+      return "B8G8R8A8_SRGB";
+    case VK_FORMAT_R8G8B8A8_UNORM:
+      return "R8G8B8A8_UNORM";
+    case VK_FORMAT_B8G8R8A8_UNORM:
+      return "B8G8R8A8_UNORM";
+    case VK_FORMAT_D32_SFLOAT:
+      return "D32_SFLOAT";
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+      return "D24_UNORM_S8_UINT";
+    case VK_FORMAT_D16_UNORM:
+      return "D16_UNORM";
+    default:
+      return std::to_string(format);
+  }
+}
+
 std::vector<std::int64_t> swapchainFormats(VkPhysicalDevice device) {
   std::vector<std::int64_t> formats = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB,
                                        VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM};

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -46,6 +47,8 @@ class SwapchainImages {
 };
 
 // Vulkan formats the runtime offers for swapchains on this device (colour, then depth).
+// The format's Vulkan name without "VK_FORMAT_" ("R8G8B8A8_SRGB"), for the log.
+std::string swapchainFormatName(std::int64_t format);
 std::vector<std::int64_t> swapchainFormats(VkPhysicalDevice device);
 
 }  // namespace curvefold::simxr
