@@ -13,6 +13,19 @@ glm::mat4 matrixOf(const Pose& pose) {
          glm::mat4_cast(glm::quat(pose.orientation));
 }
 
+const CreasePatternPanel& CreasePatternCache::panelFor(const FoldSession& session,
+                                                       const SceneColors& colors) {
+  if (builds_ == 0 || session_ != &session || initial_ != &session.initial() ||
+      revision_ != session.designRevision()) {
+    panel_ = creasePatternPanel(session.fixed(), colors);
+    session_ = &session;
+    initial_ = &session.initial();
+    revision_ = session.designRevision();
+    ++builds_;
+  }
+  return panel_;
+}
+
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,
                           const InteractionSceneOptions& options) {
@@ -27,7 +40,9 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
   scene.sheet.worldFromSheet = model;
   scene.sheet.reflectedTriangles = core.reflectedTriangles();
   scene.creases = creaseLines(sheet, model, scene.colors);
-  if (options.creasePatternPanel) scene.panel = creasePatternPanel(sheet, scene.colors);
+  if (options.creasePatternPanel)
+    scene.panel = options.panelCache ? options.panelCache->panelFor(session, scene.colors)
+                                     : creasePatternPanel(sheet, scene.colors);
   const float size = static_cast<float>(sheetSize(session.initial()));
   auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
 

@@ -2,7 +2,9 @@
 //   unfolding an OBJ of separate pieces (was O(pieces x vertices)) against a connected grid;
 //   validate() on a vertex with a huge fan (was O(valence^2));
 //   a grab on a folded cylinder (was three scans of every triangle);
-//   the folded sheet a command-line fold starts from: the history replayed, or the cache's entry.
+//   the folded sheet a command-line fold starts from: the history replayed, or the cache's entry;
+//   the crease pattern panel of a frame: built from the sheet (what the desktop did every frame)
+//   or from the cache shared by the desktop and the headset.
 //
 //   build/bench/bench_costs --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <unistd.h>
@@ -16,11 +18,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include "app/interaction_scene.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/sheet_cache.hpp"
+#include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -90,6 +94,27 @@ void BM_Grab(benchmark::State& state) {
   state.counters["triangles"] = double(session->fixed().triangleCount());
 }
 BENCHMARK(BM_Grab)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
+
+// A frame's crease pattern panel on a 100k-triangle cylinder with a fold: built from the sheet
+// (argument 0) or taken from the cache (argument 1).
+void BM_CreasePatternPanelPerFrame(benchmark::State& state) {
+  FoldSession session(makeSurface("cylinder", {{"resolution", 259}}));
+  session.beginDragNear({0.0, 0.105, 0.045});
+  session.updateDrag({0.0, 0.065, 0.0});
+  session.commit();
+  const SceneColors colors;
+  CreasePatternCache cache;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      benchmark::DoNotOptimize(creasePatternPanel(session.fixed(), colors));
+    } else {
+      const CreasePatternPanel copy = cache.panelFor(session, colors);  // as a scene holds it
+      benchmark::DoNotOptimize(copy);
+    }
+  }
+  state.counters["triangles"] = double(session.fixed().triangleCount());
+}
+BENCHMARK(BM_CreasePatternPanelPerFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // A design of `folds` folds on a cylinder of about 100k triangles, and what a command-line fold
 // pays to get its folded sheet: the replay of the whole history, or the cache's entry.

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "app/desktop/desktop_input.hpp"
+#include "app/interaction_scene.hpp"
+#include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
 
@@ -70,6 +72,39 @@ TEST(DesktopInput, PressOffTheSheetDoesNothing) {
   const Ray ray = camera.ray({1.0, 1.0}, kWidth, kHeight);
   EXPECT_FALSE(input.press(ray, sheet, Pose{}, camera.forward()));
   EXPECT_FALSE(input.frame(0.0).pointHand.tracked);
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+// Issue 14, 5: the crease pattern panel is built once per design change (commit, undo, redo, a new
+// session), not every frame nor on a grab, and it is the committed design's pattern.
+TEST(CreasePatternCache, BuildsOncePerDesignChange) {
+  FoldSession session(makeSurface("square", {{"resolution", 16}}));
+  CreasePatternCache cache;
+  const SceneColors colors;
+  EXPECT_TRUE(cache.panelFor(session, colors).lines.size() > 0);  // the outline
+  cache.panelFor(session, colors);
+  EXPECT_EQ(cache.builds(), 1u);
+  const glm::dvec3 grabbed = session.beginDragNear({0.08, 0.08, 0.0});
+  session.updateDrag(grabbed + glm::dvec3(-0.02, 0.0, 0.05));
+  cache.panelFor(session, colors);
+  EXPECT_EQ(cache.builds(), 1u);  // a grab and a drag change no committed crease
+  ASSERT_TRUE(session.commit());
+  const CreasePatternPanel& folded = cache.panelFor(session, colors);
+  EXPECT_EQ(cache.builds(), 2u);
+  EXPECT_EQ(folded.lines.size(), creasePatternPanel(session.fixed(), colors).lines.size());
+  EXPECT_GT(folded.lines.size(), creasePatternPanel(session.initial(), colors).lines.size());
+  session.undo();
+  EXPECT_EQ(cache.panelFor(session, colors).lines.size(),
+            creasePatternPanel(session.initial(), colors).lines.size());
+  EXPECT_EQ(cache.builds(), 3u);
+  FoldSession other(makeSurface("disk", {{"resolution", 8}}));
+  cache.panelFor(other, colors);
+  EXPECT_EQ(cache.builds(), 4u);
 }
 
 }  // namespace

@@ -162,6 +162,7 @@ void runDesigner(const DesignerOptions& options) {
 
   // The 2D crease pattern as a side view on the right (DESIGN.md 7), toggled in the panel.
   bool creasePatternPanel = options.creasePatternPanel;
+  CreasePatternCache panelCache;
 
   // Input state shared with the GLFW callbacks.
   struct State {
@@ -407,7 +408,7 @@ void runDesigner(const DesignerOptions& options) {
 
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
-                                    {creasePatternPanel, /*handMarkers=*/false});
+                                    {creasePatternPanel, /*handMarkers=*/false, &panelCache});
     tracker.describe(lastScene.sheet);
     drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();

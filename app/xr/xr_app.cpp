@@ -152,11 +152,8 @@ void XrApp::buildScene() {
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   if (lastInput_.sheetHand.tracked) {
-    if (panelRevision_ != doc_.session->fixedRevision()) {
-      panel_ = creasePatternPanel(doc_.session->fixed(), scene_.colors);
-      panelRevision_ = doc_.session->fixedRevision();
-    }
-    addHeldPanel(scene_, panel_, lastInput_.sheetHand.pose, sheetHandSide(doc_.core->handedness()));
+    addHeldPanel(scene_, panelCache_.panelFor(*doc_.session, scene_.colors),
+                 lastInput_.sheetHand.pose, sheetHandSide(doc_.core->handedness()));
   }
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/document.hpp"
+#include "app/interaction_scene.hpp"
 #include "app/session_outputs.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"
@@ -92,8 +93,7 @@ class XrApp {
   double lastSeconds_ = 0.0;
   Scene scene_;
   Ground ground_;
-  std::uint64_t panelRevision_ = ~std::uint64_t{0};
-  CreasePatternPanel panel_;
+  CreasePatternCache panelCache_;
   bool restart_ = false;
   XrAppSummary summary_;
 };
