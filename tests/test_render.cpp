@@ -128,7 +128,8 @@ TEST_F(Render, AnSrgbTargetShowsWhatAUnormTargetShows) {
   options.validation = true;
   options.color = VK_FORMAT_R8G8B8A8_SRGB;
   HeadlessRenderer srgb(options);
-  Scene scene = sceneForSheet(foldedSquare(), ViewPreset::Iso, 1.0f, true);
+  const Sheet sheet = foldedSquare();  // the scene points at it
+  Scene scene = sceneForSheet(sheet, ViewPreset::Iso, 1.0f, true);
   scene.markers.push_back({{0.1f, 0.1f, 0.05f}, 0.01f, {0.9f, 0.3f, 0.2f, 1.0f}});
   const RgbaImage unorm = renderer_->render(scene);
   const RgbaImage linear = srgb.render(scene);
