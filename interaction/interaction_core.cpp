@@ -64,6 +64,7 @@ void InteractionCore::endDrag(bool commit, double time) {
   emit(committed ? InteractionEventKind::Commit : InteractionEventKind::Cancel, time);
   state_ = InteractionState::Idle;
   hover_.reset();
+  quietHover_ = true;  // the tip is on the paper it just released: no hover tick for that
 }
 
 // Buttons act on presses, not on being held.
@@ -153,11 +154,16 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
     return;
   }
 
+  const bool wasHovering = hover_.has_value();
   hover_.reset();
   if (const std::optional<SurfacePoint> nearest = picker().nearest(tip, thresholds_.hoverRadius)) {
     const glm::dvec3 position = positionOf(session_.fixed(), *nearest);
     hover_ = HoverPoint{*nearest, position, glm::distance(position, tip)};
   }
+  // A faint tick as the tip comes within reach of the paper (not as a drag ends over it: the
+  // commit's pulse says enough).
+  if (hover_ && !wasHovering && !quietHover_) haptics_.push_back(kHoverEnterPulse);
+  quietHover_ = false;
   state_ = hover_ ? InteractionState::Hover : InteractionState::Idle;
 
   // A grab needs a fresh press while hovering: sweeping a held trigger onto the sheet grabs

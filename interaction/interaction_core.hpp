@@ -50,6 +50,10 @@ struct HapticPulse {
   double duration = 0.02;  // seconds
 };
 
+// What the hands feel: a faint tick entering hover, a firmer one on a grab, the strongest on a
+// commit.
+inline constexpr HapticPulse kHoverEnterPulse{HapticHand::Point, 0.15, 0.01};
+
 struct HoverPoint {
   SurfacePoint point;           // on the fixed sheet
   glm::dvec3 sheetPosition{0};  // sheet coordinates
@@ -112,6 +116,7 @@ class InteractionCore {
   bool selectHeld_ = false;
   std::uint32_t buttonsHeld_ = 0;
   std::optional<HoverPoint> hover_;
+  bool quietHover_ = false;  // a drag just ended: the hover that follows does not tick
   glm::dvec3 grabOffset_{
       0.0};  // sheet coordinates: target = inverse(worldFromSheet) * tip + offset
   bool pointAnchored_ = false;  // false while the point hand is lost during a drag

@@ -120,6 +120,28 @@ TEST_F(Interaction, HoverPicksTheNearestPointWithinTheRadius) {
   EXPECT_EQ(core_.state(), InteractionState::Idle);
 }
 
+// Issue 14, 3: a faint pulse as the tip comes within reach of the paper, once per entry; none
+// while it stays, none as a drag ends over the paper (the commit pulses), one again on re-entry.
+TEST_F(Interaction, EnteringHoverPulsesOnce) {
+  const glm::dvec3 onSheet{0.031, -0.047, 0.0};
+  auto pulses = [&] { return core_.haptics().size(); };
+  pointAt(world(onSheet + glm::dvec3(0, 0, 0.01)), 0.0);
+  ASSERT_EQ(pulses(), 1u);
+  EXPECT_EQ(core_.haptics()[0].amplitude, kHoverEnterPulse.amplitude);
+  pointAt(world(onSheet + glm::dvec3(0, 0, 0.008)), 0.0);
+  EXPECT_EQ(pulses(), 0u);
+  pointAt(world(onSheet + glm::dvec3(0, 0, 0.2)), 0.0);  // away
+  EXPECT_EQ(pulses(), 0u);
+  pointAt(world(onSheet + glm::dvec3(0, 0, 0.01)), 0.0);  // back
+  EXPECT_EQ(pulses(), 1u);
+  fold({0.08, 0.08, 0.0}, {0.0, 0.0, 0.05});  // ends with a release over the paper
+  ASSERT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_EQ(pulses(), 1u);  // the commit's alone
+  EXPECT_GT(core_.haptics()[0].amplitude, kHoverEnterPulse.amplitude);
+  pointAt(frame_.pointHand.position, 0.0);
+  EXPECT_EQ(pulses(), 0u);
+}
+
 TEST_F(Interaction, TargetFollowsTheTipWithTheGrabOffset) {
   const glm::dvec3 onSheet{0.08, 0.08, 0.0};
   const glm::dvec3 above = onSheet + glm::dvec3(0, 0, 0.012);
