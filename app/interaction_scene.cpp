@@ -32,7 +32,8 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
   const FoldSession& session = core.session();
   const Sheet& sheet = session.current();
   const Pose& worldFromSheet = core.worldFromSheet();
-  const glm::mat4 model = matrixOf(worldFromSheet);
+  const glm::mat4 model =
+      matrixOf(worldFromSheet) * glm::scale(glm::mat4(1.0f), glm::vec3(float(core.viewScale())));
   Scene scene;
   scene.camera = camera;
   scene.ground = ground;
@@ -43,8 +44,9 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
   if (options.creasePatternPanel)
     scene.panel = options.panelCache ? options.panelCache->panelFor(session, scene.colors)
                                      : creasePatternPanel(sheet, scene.colors);
-  const float size = static_cast<float>(sheetSize(session.initial()));
-  auto world = [&](const glm::dvec3& p) { return glm::vec3(worldFromSheet.apply(p)); };
+  // Markers keep their size relative to the sheet as it is seen (at the view scale).
+  const float size = static_cast<float>(sheetSize(session.initial()) * core.viewScale());
+  auto world = [&](const glm::dvec3& p) { return glm::vec3(core.worldOf(p)); };
 
   if (core.state() == InteractionState::Dragging) {
     scene.markers.push_back({world(core.grabStart()), 0.012f * size, {0.35f, 0.75f, 0.35f, 1}});

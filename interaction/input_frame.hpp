@@ -58,6 +58,9 @@ struct InputFrame {
     glm::dvec3 position{0.0};
     bool tracked = false;
     double select = 0.0;  // trigger, 0 (released) to 1 (pulled)
+    // Squeeze, 0 to 1: with the sheet hand's clutch (and the trigger released) both hands hold
+    // the sheet, which moves, turns and scales between them.
+    double grip = 0.0;
   } pointHand;
 
   std::uint32_t buttons = 0;  // Button bits held

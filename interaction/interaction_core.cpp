@@ -1,5 +1,7 @@
 #include "interaction/interaction_core.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 namespace curvefold {
@@ -13,7 +15,16 @@ InteractionCore::InteractionCore(FoldSession& session, const Pose& worldFromShee
     : session_(session),
       thresholds_(thresholds),
       handedness_(handedness),
+      initialWorldFromSheet_(worldFromSheet),
       worldFromSheet_(worldFromSheet) {}
+
+void InteractionCore::resetView() {
+  worldFromSheet_ = initialWorldFromSheet_;
+  viewScale_ = 1.0;
+  clutchAnchored_ = false;  // a held clutch takes the sheet from here
+  twoHanded_ = false;
+  pointAnchored_ = false;
+}
 
 std::optional<ReflectionPlane> InteractionCore::plane() const {
   if (state_ == InteractionState::Dragging && session_.hasPlane()) return session_.plane();
@@ -53,7 +64,7 @@ void InteractionCore::process(const InputFrame& frame) {
     endDrag(true, frame.time);
   }
   handleButtons(frame);
-  handleSheetHand(frame.sheetHand);
+  handleSheetHand(frame);
   handlePointHand(frame);
 }
 
@@ -93,17 +104,74 @@ void InteractionCore::handleButtons(const InputFrame& frame) {
   }
 }
 
-// world_from_sheet = hand_now * inverse(hand_at_clutch) * world_from_sheet_at_clutch.
-void InteractionCore::handleSheetHand(const InputFrame::SheetHand& hand) {
-  if (clutched_ && hand.clutch <= thresholds_.clutchRelease && hand.tracked) clutched_ = false;
-  if (!clutched_) {
-    if (hand.tracked && hand.clutch >= thresholds_.clutchPress) {
-      clutched_ = true;
-      clutchAnchored_ = false;
-    } else {
-      return;
-    }
+namespace {
+
+// The shortest rotation taking unit vector u to unit vector v (any half turn when opposite).
+glm::dquat rotationBetween(const glm::dvec3& u, const glm::dvec3& v) {
+  const double cosine = glm::dot(u, v);
+  if (cosine < -1.0 + 1e-12) {
+    glm::dvec3 axis = glm::cross(glm::dvec3(1, 0, 0), u);
+    if (glm::dot(axis, axis) < 1e-12) axis = glm::cross(glm::dvec3(0, 1, 0), u);
+    return glm::angleAxis(3.14159265358979323846, glm::normalize(axis));
   }
+  const glm::dvec3 axis = glm::cross(u, v);
+  return glm::normalize(glm::dquat(1.0 + cosine, axis.x, axis.y, axis.z));
+}
+
+}  // namespace
+
+// The sheet between two hands: the segment from the sheet hand to the point hand at the start
+// maps onto the segment now (its midpoint, direction and length), and the sheet with it.
+bool InteractionCore::handleTwoHands(const InputFrame& frame) {
+  const InputFrame::PointHand& point = frame.pointHand;
+  if (gripHeld_ && point.grip <= thresholds_.clutchRelease) gripHeld_ = false;
+  if (!gripHeld_ && point.grip >= thresholds_.clutchPress) gripHeld_ = true;
+  // The trigger released: on a controller whose squeeze is its trigger (khr/simple_controller)
+  // both read the same, and that is a grab, not two hands.
+  const bool holding =
+      clutched_ && gripHeld_ && !selectHeld_ && point.select < thresholds_.selectPress &&
+      state_ != InteractionState::Dragging && frame.sheetHand.tracked && point.tracked;
+  if (!holding) {
+    if (twoHanded_) {
+      twoHanded_ = false;
+      clutchAnchored_ = false;  // one hand goes on from where the two left the sheet
+    }
+    return false;
+  }
+  const glm::dvec3 a = frame.sheetHand.pose.position, b = point.position;
+  if (!twoHanded_) {
+    twoHanded_ = true;
+    sheetHandAtTwoHands_ = a;
+    pointHandAtTwoHands_ = b;
+    sheetAtTwoHands_ = worldFromSheet_;
+    scaleAtTwoHands_ = viewScale_;
+    hover_.reset();
+  }
+  const glm::dvec3 from = pointHandAtTwoHands_ - sheetHandAtTwoHands_, to = b - a;
+  const double spanFrom = glm::length(from), spanTo = glm::length(to);
+  if (spanFrom < thresholds_.minimumHandSpan || spanTo < thresholds_.minimumHandSpan) return true;
+  const double scale = std::clamp(scaleAtTwoHands_ * spanTo / spanFrom,
+                                  thresholds_.minimumViewScale, thresholds_.maximumViewScale);
+  const double factor = scale / scaleAtTwoHands_;
+  const glm::dquat turn = rotationBetween(from / spanFrom, to / spanTo);
+  const glm::dvec3 midFrom = 0.5 * (sheetHandAtTwoHands_ + pointHandAtTwoHands_);
+  const glm::dvec3 midTo = 0.5 * (a + b);
+  // world' = midTo + factor * turn * (world - midFrom), applied to world = pose(scale * x).
+  worldFromSheet_.position = midTo + factor * (turn * (sheetAtTwoHands_.position - midFrom));
+  worldFromSheet_.orientation = glm::normalize(turn * sheetAtTwoHands_.orientation);
+  viewScale_ = scale;
+  return true;
+}
+
+// world_from_sheet = hand_now * inverse(hand_at_clutch) * world_from_sheet_at_clutch.
+void InteractionCore::handleSheetHand(const InputFrame& frame) {
+  const InputFrame::SheetHand& hand = frame.sheetHand;
+  if (clutched_ && hand.clutch <= thresholds_.clutchRelease && hand.tracked) clutched_ = false;
+  if (!clutched_ && hand.tracked && hand.clutch >= thresholds_.clutchPress) {
+    clutched_ = true;
+    clutchAnchored_ = false;
+  }
+  if (handleTwoHands(frame) || !clutched_) return;
   // A lost hand freezes the sheet; when it comes back the clutch re-anchors there, so the sheet
   // never jumps to where the hand reappeared.
   if (!hand.tracked) {
@@ -131,7 +199,7 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
   const bool wasHeld = selectHeld_;
   if (selectHeld_ && hand.select <= thresholds_.selectRelease) selectHeld_ = false;
   if (!selectHeld_ && hand.select >= thresholds_.selectPress) selectHeld_ = true;
-  const glm::dvec3 tip = worldFromSheet_.inverse().apply(hand.position);
+  const glm::dvec3 tip = sheetOf(hand.position);
 
   if (state_ == InteractionState::Dragging) {
     if (!selectHeld_) {
@@ -146,8 +214,8 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
     // A tracking glitch far out of reach (or NaN) moves nothing: the drag waits where it was.
     if (!withinReach(target, session_.grabbedPoint(), session_.epsilon() / kRelativeEpsilon))
       return;
-    if (!dragMoved_ &&
-        glm::distance(target, session_.grabbedPoint()) >= thresholds_.minimumDragDistance)
+    if (!dragMoved_ && glm::distance(target, session_.grabbedPoint()) >=
+                           thresholds_.minimumDragDistance / viewScale_)
       dragMoved_ = true;
     if (dragMoved_ && target != lastTarget_) session_.updateDrag(target);
     lastTarget_ = target;
@@ -156,9 +224,11 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
 
   const bool wasHovering = hover_.has_value();
   hover_.reset();
-  if (const std::optional<SurfacePoint> nearest = picker().nearest(tip, thresholds_.hoverRadius)) {
+  // The hover radius is the hand's (world metres); the sheet is seen at the view scale.
+  if (const std::optional<SurfacePoint> nearest =
+          twoHanded_ ? std::nullopt : picker().nearest(tip, thresholds_.hoverRadius / viewScale_)) {
     const glm::dvec3 position = positionOf(session_.fixed(), *nearest);
-    hover_ = HoverPoint{*nearest, position, glm::distance(position, tip)};
+    hover_ = HoverPoint{*nearest, position, viewScale_ * glm::distance(position, tip)};
   }
   // A faint tick as the tip comes within reach of the paper (not as a drag ends over it: the
   // commit's pulse says enough).

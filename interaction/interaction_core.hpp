@@ -1,7 +1,9 @@
 // The two-handed interaction core (DESIGN.md 5): consumes input frames and drives a FoldSession.
 // The non-dominant hand holds the sheet frame while its clutch is squeezed; the dominant hand's
 // point hovers, grabs a surface point with the trigger and drags it, and release commits. Moving
-// either hand during a drag folds, since the target is taken in sheet coordinates.
+// either hand during a drag folds, since the target is taken in sheet coordinates. With both
+// squeezes held (and no drag), the sheet moves, turns and scales uniformly between the hands, as
+// in Open Brush and Gravity Sketch: the scale is a view scale, the design stays in metres.
 #pragma once
 
 #include <memory>
@@ -19,6 +21,10 @@ struct InteractionThresholds {
   // The point hovers the nearest surface point within this distance (metres): about the size of a
   // controller's tip, so a point can be picked without touching the paper exactly.
   double hoverRadius = 0.03;
+  // The view scale two hands can reach, and the hand span below which they hold it still.
+  double minimumViewScale = 0.05;
+  double maximumViewScale = 20.0;
+  double minimumHandSpan = 0.02;
   // Trigger and grip hysteresis: pressed at or above `press`, released at or below `release`, so a
   // noisy value near one threshold does not start and stop drags or clutches.
   double selectPress = 0.75;
@@ -71,8 +77,20 @@ class InteractionCore {
 
   // --- What a renderer shows ----------------------------------------------------------------
   InteractionState state() const { return state_; }
+  // world = worldFromSheet().apply(viewScale() * sheet point).
   const Pose& worldFromSheet() const { return worldFromSheet_; }
+  double viewScale() const { return viewScale_; }
+  glm::dvec3 worldOf(const glm::dvec3& sheetPoint) const {
+    return worldFromSheet_.apply(viewScale_ * sheetPoint);
+  }
+  glm::dvec3 sheetOf(const glm::dvec3& worldPoint) const {
+    return worldFromSheet_.inverse().apply(worldPoint) / viewScale_;
+  }
   bool clutched() const { return clutched_; }
+  // Both hands hold the sheet (moving, turning and scaling it).
+  bool twoHanded() const { return twoHanded_; }
+  // Puts the sheet back where the session started it, at scale 1 (the panel's "reset view").
+  void resetView();
   Handedness handedness() const { return handedness_; }
   const std::optional<HoverPoint>& hover() const { return hover_; }
   // While dragging: the grabbed point's start and its current target, in sheet coordinates.
@@ -92,7 +110,9 @@ class InteractionCore {
 
  private:
   void handleButtons(const InputFrame& frame);
-  void handleSheetHand(const InputFrame::SheetHand& hand);
+  void handleSheetHand(const InputFrame& frame);
+  // Both hands on the sheet: true while they hold it (the one-hand clutch then waits).
+  bool handleTwoHands(const InputFrame& frame);
   void handlePointHand(const InputFrame& frame);
   void endDrag(bool commit, double time);
   void emit(InteractionEventKind kind, double time);
@@ -106,11 +126,20 @@ class InteractionCore {
   std::vector<HapticPulse> haptics_;
 
   // Sheet hand.
+  Pose initialWorldFromSheet_;
   Pose worldFromSheet_;
+  double viewScale_ = 1.0;
   bool clutched_ = false;
   bool clutchAnchored_ = false;  // false while the hand is lost during a clutch
   Pose handAtClutch_;
   Pose sheetAtClutch_;
+
+  // Both hands: where they were when they took the sheet, and the sheet then.
+  bool gripHeld_ = false;  // the point hand's squeeze
+  bool twoHanded_ = false;
+  glm::dvec3 sheetHandAtTwoHands_{0.0}, pointHandAtTwoHands_{0.0};
+  Pose sheetAtTwoHands_;
+  double scaleAtTwoHands_ = 1.0;
 
   // Point hand.
   bool selectHeld_ = false;

@@ -128,9 +128,10 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   const Sheet& fixed = session_->fixed();
   const glm::dvec3 grabbed = positionOf(fixed, closestSurfacePoint(fixed, grabNear));
   const Pose sheet = core_->worldFromSheet();
+  const double scale = core_->viewScale();
 
   // Approach the point with the trigger released, then pull it.
-  const glm::dvec3 from = frame_.pointHand.position, to = sheet.apply(grabbed);
+  const glm::dvec3 from = frame_.pointHand.position, to = core_->worldOf(grabbed);
   for (int i = 1, n = stepsFor(kApproachSeconds); i <= n; ++i) {
     frame_.pointHand.position = from + (to - from) * smoothstep(double(i) / n);
     step();
@@ -158,7 +159,8 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
     while (k + 1 < points.size() && length[k] < s) ++k;
     const double span = length[k] - length[k - 1];
     const double u = span > 0.0 ? (s - length[k - 1]) / span : 1.0;
-    frame_.pointHand.position = sheet.apply(points[k - 1] + (points[k] - points[k - 1]) * u);
+    frame_.pointHand.position =
+        sheet.apply(scale * (points[k - 1] + (points[k] - points[k - 1]) * u));
     if (turnDuring) frame_.sheetHand.pose = turnedHand(handStart, sheet, *turnDuring, fraction);
     step();
   }

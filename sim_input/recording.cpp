@@ -1,5 +1,7 @@
 #include "sim_input/recording.hpp"
 
+#include <bit>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -125,6 +127,9 @@ class LineReader : public JsonReader {
     frame.pointHand.position = vector3(member(point, "position", "point"), "point.position");
     frame.pointHand.tracked = boolean(member(point, "tracked", "point"), "point.tracked");
     frame.pointHand.select = unitInterval(member(point, "select", "point"), "point.select");
+    // Written only when squeezed, so recordings from before it read the same.
+    if (const json* grip = optionalMember(point, "grip", "point"))
+      frame.pointHand.grip = unitInterval(*grip, "point.grip");
 
     if (const json* buttons = optionalMember(value, "buttons", "")) {
       if (!buttons->is_array()) fail("buttons", "must be an array of button names");
@@ -210,6 +215,9 @@ std::string frameLine(const InputFrame& frame) {
   value["point"] = {{"position", positionJson(frame.pointHand.position)},
                     {"tracked", frame.pointHand.tracked},
                     {"select", frame.pointHand.select}};
+  // Any grip but +0 (even -0, so every value reads back bit for bit).
+  if (std::bit_cast<std::uint64_t>(frame.pointHand.grip) != 0)
+    value["point"]["grip"] = frame.pointHand.grip;
   if (frame.buttons != 0) {
     ordered_json& buttons = value["buttons"] = ordered_json::array();
     for (Button button : kButtons)

@@ -50,9 +50,7 @@ class Interaction : public ::testing::Test {
     expectInvariants(session_.current(), session_.initial());
   }
   // The world position of a sheet point under the current sheet frame.
-  glm::dvec3 world(const glm::dvec3& sheetPoint) const {
-    return core_.worldFromSheet().apply(sheetPoint);
-  }
+  glm::dvec3 world(const glm::dvec3& sheetPoint) const { return core_.worldOf(sheetPoint); }
   void pointAt(const glm::dvec3& worldPosition, double select) {
     frame_.pointHand.position = worldPosition;
     frame_.pointHand.select = select;
@@ -103,6 +101,84 @@ TEST_F(Interaction, ClutchMovesTheSheetRigidly) {
   frame_.sheetHand.pose = {{0.5, 0.5, 0.5}, rotation(90, {0, 0, 1})};
   send();
   EXPECT_EQ(core_.worldFromSheet(), held);
+}
+
+// Issue 14, 2: with both squeezes held the sheet moves, turns and scales between the hands (a
+// view scale: the design stays in metres); letting one go hands the sheet to the other without a
+// jump; folding at scale 2 takes the tip's motion at half in sheet metres; reset puts it back.
+TEST_F(Interaction, TwoHandsMoveTurnAndScaleTheSheet) {
+  const glm::dvec3 a0 = frame_.sheetHand.pose.position;
+  frame_.pointHand.position = a0 + glm::dvec3(0.3, 0.0, 0.0);
+  const glm::dvec3 b0 = frame_.pointHand.position;
+  const glm::dvec3 corner{0.1, 0.1, 0.0};  // a sheet point
+  const glm::dvec3 before = world(corner);
+  frame_.sheetHand.clutch = 1.0;
+  frame_.pointHand.grip = 1.0;
+  send();
+  ASSERT_TRUE(core_.twoHanded());
+  EXPECT_EQ(core_.viewScale(), 1.0);
+  expectNear(world(corner), before);  // taking hold moves nothing
+  // The point hand swings a quarter turn about the vertical and the span doubles: the world is
+  // turned and doubled about the hands' midpoint.
+  const glm::dquat quarter = rotation(90, {0, 1, 0});
+  const glm::dvec3 a1 = a0 + glm::dvec3(0.0, 0.05, 0.0);
+  const glm::dvec3 b1 = a1 + quarter * ((b0 - a0) * 2.0);
+  frame_.sheetHand.pose.position = a1;
+  frame_.pointHand.position = b1;
+  send();
+  EXPECT_NEAR(core_.viewScale(), 2.0, 1e-12);
+  const glm::dvec3 expected = 0.5 * (a1 + b1) + 2.0 * (quarter * (before - 0.5 * (a0 + b0)));
+  {
+    SCOPED_TRACE("turned and doubled");
+    expectNear(world(corner), expected);
+  }
+  EXPECT_TRUE(identical(session_.current(), session_.initial()));  // the design is untouched
+  // Hands pulled far apart: the scale stops at the maximum.
+  frame_.pointHand.position = a1 + quarter * ((b0 - a0) * 100.0);
+  send();
+  EXPECT_EQ(core_.viewScale(), core_.thresholds().maximumViewScale);
+  frame_.pointHand.position = b1;
+  send();
+  // Letting go of the point hand's squeeze: the sheet hand alone holds it from there.
+  frame_.pointHand.grip = 0.0;
+  send();
+  EXPECT_FALSE(core_.twoHanded());
+  const glm::dvec3 held = world(corner);
+  {
+    SCOPED_TRACE("one hand takes over");
+    expectNear(held, expected);
+  }
+  frame_.sheetHand.pose.position += glm::dvec3(0.0, 0.0, 0.1);
+  send();
+  expectNear(world(corner), held + glm::dvec3(0.0, 0.0, 0.1));
+  frame_.sheetHand.clutch = 0.0;
+  send();
+  // A fold at scale 2: the tip moves 4 cm (world), the grabbed point 2 cm (sheet metres).
+  const glm::dvec3 onSheet{0.05, 0.05, 0.0};
+  pointAt(world(onSheet), 0.0);
+  pointAt(world(onSheet), 1.0);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  const glm::dvec3 up = core_.worldFromSheet().applyToDirection({0.0, 0.0, 1.0});
+  pointAt(world(onSheet) + 0.04 * up, 1.0);
+  EXPECT_NEAR(glm::distance(core_.grabTarget(), core_.grabStart()), 0.02, 1e-9);
+  pointAt(frame_.pointHand.position, 0.0);
+  EXPECT_EQ(session_.foldCount(), 1u);
+  // A squeeze that is also the trigger (khr/simple_controller: both read select/click) grabs in
+  // the frame it is pulled, never takes two hands, even with the sheet clutched.
+  pointAt(world(session_.fixed().positions[0]), 0.0);  // a vertex: on the sheet, folded or not
+  ASSERT_EQ(core_.state(), InteractionState::Hover);
+  frame_.sheetHand.clutch = 1.0;
+  frame_.pointHand.grip = 1.0;
+  frame_.pointHand.select = 1.0;
+  send();
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+  send();
+  EXPECT_FALSE(core_.twoHanded());
+  frame_.sheetHand.clutch = frame_.pointHand.grip = frame_.pointHand.select = 0.0;
+  send();
+  core_.resetView();
+  EXPECT_EQ(core_.viewScale(), 1.0);
+  EXPECT_EQ(core_.worldFromSheet(), sheetFrame_);
 }
 
 TEST_F(Interaction, HoverPicksTheNearestPointWithinTheRadius) {

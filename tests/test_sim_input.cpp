@@ -59,6 +59,7 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
   expectSameBits(a.pointHand.position, b.pointHand.position, what + " point");
   EXPECT_EQ(a.pointHand.tracked, b.pointHand.tracked) << what;
   EXPECT_TRUE(sameBits(a.pointHand.select, b.pointHand.select)) << what;
+  EXPECT_TRUE(sameBits(a.pointHand.grip, b.pointHand.grip)) << what;
   EXPECT_EQ(a.buttons, b.buttons) << what;
 }
 
@@ -142,6 +143,8 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
     frame.pointHand.position = {a, any(random), any(random)};
     frame.pointHand.tracked = i % 4 != 0;
     frame.pointHand.select = i % 7 == 0 ? 0.0 : unit(random);
+    // The point hand's squeeze (issue 14): absent from the line at +0, any other value kept.
+    frame.pointHand.grip = i % 3 == 0 ? 0.0 : (i % 11 == 0 ? -0.0 : unit(random));
     frame.buttons = static_cast<std::uint32_t>(i % 16);
     frames.push_back(frame);
   }

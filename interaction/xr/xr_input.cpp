@@ -181,6 +181,7 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
     frame.pointHand.position = aim.apply({0.0, 0.0, -kXrTipOffset});
   }
   frame.pointHand.select = floatState(XrControl::Select, point);
+  frame.pointHand.grip = floatState(XrControl::Clutch, point);
 
   auto press = [&](Button button, bool held) {
     if (held) frame.buttons |= static_cast<std::uint32_t>(button);

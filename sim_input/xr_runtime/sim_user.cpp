@@ -92,6 +92,7 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
     };
     press(XrControl::Clutch, sheet, frame.sheetHand.clutch);
     press(XrControl::Select, point, frame.pointHand.select);
+    press(XrControl::Clutch, point, frame.pointHand.grip);  // both hands on the sheet
     press(XrControl::Cancel, point, frame.held(Button::Cancel) ? 1.0 : 0.0);
     press(XrControl::Undo, sheet, frame.held(Button::Undo) ? 1.0 : 0.0);
     press(XrControl::Redo, sheet, frame.held(Button::Redo) ? 1.0 : 0.0);
