@@ -78,7 +78,7 @@ void GestureRecorder::wait(double seconds) {
 
 Pose GestureRecorder::turnedHand(const Pose& start, const Pose& sheetAtStart, const SheetTurn& turn,
                                  double fraction) const {
-  const glm::dvec3 pivot = sheetAtStart.apply(sheetCentre_);
+  const glm::dvec3 pivot = sheetAtStart.apply(core_->viewScale() * sheetCentre_);
   const glm::dquat rotation =
       glm::angleAxis(turn.degrees * fraction * std::numbers::pi / 180.0, glm::normalize(turn.axis));
   const Pose aboutPivot{pivot - rotation * pivot, rotation};
@@ -106,6 +106,33 @@ void GestureRecorder::moveSheet(const glm::dvec3& by, double seconds) {
     step();
   }
   frame_.sheetHand.clutch = 0.0;
+  step();
+}
+
+void GestureRecorder::scaleSheet(double factor, double seconds) {
+  const InteractionThresholds& limits = core_->thresholds();
+  const double target = core_->viewScale() * factor;
+  if (!(target >= limits.minimumViewScale && target <= limits.maximumViewScale))
+    throw GestureError("scale_sheet: the view scale would leave [" +
+                       shortestDouble(limits.minimumViewScale) + ", " +
+                       shortestDouble(limits.maximumViewScale) + "]");
+  // The point hand to 20 cm beside the sheet hand (trigger released), then both squeeze.
+  const glm::dvec3 anchor = frame_.sheetHand.pose.position;
+  const glm::dvec3 from = frame_.pointHand.position, beside = anchor + glm::dvec3(0.2, 0.0, 0.0);
+  for (int i = 1, n = stepsFor(kApproachSeconds); i <= n; ++i) {
+    frame_.pointHand.position = from + (beside - from) * smoothstep(double(i) / n);
+    step();
+  }
+  frame_.sheetHand.clutch = 1.0;
+  frame_.pointHand.grip = 1.0;
+  step();
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
+    const double span = 0.2 * (1.0 + (factor - 1.0) * smoothstep(double(i) / n));
+    frame_.pointHand.position = anchor + glm::dvec3(span, 0.0, 0.0);
+    step();
+  }
+  frame_.sheetHand.clutch = 0.0;
+  frame_.pointHand.grip = 0.0;
   step();
 }
 
@@ -289,6 +316,8 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
         recorder.turnSheet(reader.turn(value, at), reader.duration(value, at, 0.5));
       } else if (kind == "move_sheet") {
         recorder.moveSheet(reader.vector(value, "by", at), reader.duration(value, at, 0.5));
+      } else if (kind == "scale_sheet") {
+        recorder.scaleSheet(reader.number(value, "by", at), reader.duration(value, at, 0.8));
       } else if (kind == "sheet_hand") {
         const nlohmann::json* clutch = reader.optionalMember(value, "clutch", at);
         recorder.moveSheetHand(reader.pose(reader.member(value, "to", at), at + ".to"),
@@ -318,8 +347,8 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
         recorder.press(Button::SwitchHands);
       } else {
         reader.fail(at,
-                    "unknown gesture (wait, turn_sheet, move_sheet, drag, undo, redo, "
-                    "cancel, switch_hands)");
+                    "unknown gesture (wait, turn_sheet, move_sheet, scale_sheet, sheet_hand, "
+                    "drag, undo, redo, cancel, switch_hands)");
       }
     } catch (const GestureError& e) {
       if (std::string(e.what()).rfind(name, 0) == 0) throw;

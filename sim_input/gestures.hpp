@@ -14,6 +14,7 @@
 //      {"wait":0.3},                                           // seconds, hands still
 //      {"turn_sheet":{"axis":[0,1,0],"degrees":30,"duration":0.5}},
 //      {"move_sheet":{"by":[x,y,z],"duration":0.5}},           // world metres
+//      {"scale_sheet":{"by":1.5,"duration":0.8}},               // both hands; view scale
 //      {"sheet_hand":{"to":{"position":[x,y,z],"orientation":[w,x,y,z]},"duration":0.5,
 //                     "clutch":true}},                         // world pose; clutch optional
 //      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
@@ -72,6 +73,9 @@ class GestureRecorder {
   void turnSheet(const SheetTurn& turn, double seconds);
   // Clutch, move the sheet by a world offset, release.
   void moveSheet(const glm::dvec3& by, double seconds);
+  // Both hands take the sheet (the point hand beside the sheet hand, both squeezes), spread or
+  // close until the view scale is `factor` times what it was, and let go.
+  void scaleSheet(double factor, double seconds);
   // Move the non-dominant hand to a world pose over `seconds` (position interpolated, orientation
   // slerped), the sheet following when `clutch` is squeezed: "clutch at pose A, move to pose B".
   void moveSheetHand(const Pose& to, double seconds, bool clutch);

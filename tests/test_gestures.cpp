@@ -143,6 +143,27 @@ constexpr bool kSanitized = false;
 constexpr bool kSanitized = false;
 #endif
 
+// Issue 14, 2: "scale_sheet" takes the sheet with both hands and spreads them: the recording
+// holds the point hand's squeeze, a replay of it reaches the same view scale, and a drag after it
+// still grabs where the script says (its points are sheet coordinates) and folds once.
+TEST(Gestures, ScaleSheetTakesTheSheetWithBothHands) {
+  GestureRecorder recorder(squareHeader());
+  recorder.scaleSheet(1.5, 0.5);
+  EXPECT_NEAR(recorder.core().viewScale(), 1.5, 1e-9);
+  recorder.drag({0.05, 0.05, 0.0}, {{0.05, 0.05, 0.04}}, 0.5);
+  EXPECT_EQ(recorder.session().foldCount(), 1u);
+  const Recording& made = recorder.recording();
+  std::size_t squeezed = 0;
+  for (const InputFrame& frame : made.frames) squeezed += frame.pointHand.grip > 0.5;
+  EXPECT_GT(squeezed, 10u);
+  const Replayed again = replay(made);
+  EXPECT_EQ(again.commits, 1u);
+  EXPECT_TRUE(identical(again.session->fixed(), recorder.session().fixed()));
+  // Beyond the view scale's range: refused by name.
+  GestureRecorder far(squareHeader());
+  EXPECT_THROW(far.scaleSheet(100.0, 0.5), GestureError);
+}
+
 long peakResidentKilobytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

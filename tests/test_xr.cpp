@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -154,6 +155,27 @@ TEST_F(XrApp, BothEyesSeeTheSheetAndCreasesFromTheirOwnPositions) {
   EXPECT_EQ(log.find("swapchain R8G8B8A8_UNORM"), std::string::npos);
   EXPECT_NE(log.find("end_frame layers=1 views=2 depth=2"), std::string::npos);
   EXPECT_EQ(log.find("views=2 depth=0"), std::string::npos);
+}
+
+// Issue 14, 2: the point hand's squeeze goes through the runtime like every other input: a
+// script that scales the sheet with both hands, then folds, folds the same in the headset as in
+// the replay, and the headset's own recording holds the squeeze.
+TEST_F(XrApp, TwoHandedScaleGoesThroughTheRuntime) {
+  std::ofstream(path("scale.gesture.json")) << R"({"format": "curvefold-gesture-script",
+    "version": 1, "rate": 60, "surface": {"generator": "square", "parameters": {"resolution": 12}},
+    "gestures": [{"wait": 0.2}, {"scale_sheet": {"by": 1.6, "duration": 0.6}},
+                 {"drag": {"grab": [0.05, 0.05, 0], "to": [0.05, 0.02, 0.05]}}]})";
+  const std::string script = path("scale.jsonl").string();
+  ASSERT_EQ(run("record-script " + path("scale.gesture.json").string() + " -o " + script).exitCode,
+            0);
+  const CommandResult result =
+      run("xr " + script + " --headless --record xr.jsonl --autosave xr.curvefold.json",
+          simulated(script));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const json reference = replayed(script, "reference");
+  ASSERT_EQ(reference["folds"].size(), 1u);
+  expectClose(load("xr.curvefold.json")["folds"], reference["folds"], 1e-5, "folds");
+  EXPECT_NE(slurp(path("xr.jsonl")).find("\"grip\":1"), std::string::npos);
 }
 
 TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {
