@@ -239,6 +239,14 @@ TEST(Gestures, BadScriptsNameTheProblem) {
     waits += R"({"wait":600})";  // appended piece by piece: GCC 12's -Wrestrict on "," + string
   }
   expectError(waits + "]}", "gesture 28 (wait): the script makes more than 1000000 frames");
+  // Two hands scaling the sheet (issue 14): a factor that is not a number or leaves the view
+  // scale's range is named.
+  expectError(head + R"("gestures":[{"scale_sheet":{"by":"big"}}]})",
+              "gesture 1 (scale_sheet).by: must be a finite number");
+  expectError(head + R"("gestures":[{"scale_sheet":{}}]})",
+              "gesture 1 (scale_sheet): missing \"by\"");
+  expectError(head + R"("gestures":[{"scale_sheet":{"by":0}}]})",
+              "gesture 1 (scale_sheet): scale_sheet: the view scale would leave [0.05, 20]");
   // A grab absurdly far from the sheet (A3) is one line naming the point, not a crash.
   expectError(head + R"("gestures":[{"drag":{"grab":[1e155,0,0],"to":[0,0,0.05]}}]})",
               "gesture 1 (drag): point (1e+155, 0, 0) lies too far from the sheet");
