@@ -26,6 +26,38 @@ const CreasePatternPanel& CreasePatternCache::panelFor(const FoldSession& sessio
   return panel_;
 }
 
+namespace {
+
+// The twelve edges of a box with these half extents in the pose's frame, centred at `centre`.
+void addBox(std::vector<LineSegment>& lines, const Pose& pose, const glm::dvec3& centre,
+            const glm::dvec3& half, const glm::vec4& color) {
+  auto corner = [&](int i) {
+    const glm::dvec3 sign((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0);
+    return glm::vec3(pose.apply(centre + sign * half));
+  };
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if (!(i & bit)) lines.push_back({corner(i), corner(i | bit), color});
+}
+
+}  // namespace
+
+void addControllerModels(Scene& scene, const InteractionCore& core, const InputFrame& input,
+                         const std::optional<Pose>& pointAim) {
+  const glm::vec4 idle(0.35f, 0.35f, 0.42f, 1.0f), squeezed(0.6f, 0.3f, 0.8f, 1.0f);
+  // OpenXR grip space: the controller's handle runs along -Z; aim space points along -Z.
+  if (input.sheetHand.tracked)
+    addBox(scene.lines, input.sheetHand.pose, {0.0, 0.0, 0.01}, {0.018, 0.022, 0.055},
+           core.clutched() ? squeezed : idle);
+  if (!input.pointHand.tracked) return;
+  const glm::vec3 tip(input.pointHand.position);
+  scene.markers.push_back({tip, 0.006f, {0.95f, 0.95f, 0.98f, 1.0f}});
+  if (!pointAim) return;
+  addBox(scene.lines, *pointAim, {0.0, -0.01, 0.06}, {0.018, 0.022, 0.055},
+         core.twoHanded() ? squeezed : idle);
+  scene.lines.push_back({glm::vec3(pointAim->position), tip, {0.9f, 0.9f, 0.95f, 0.8f}});
+}
+
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,
                           const InteractionSceneOptions& options) {

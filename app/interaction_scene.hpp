@@ -3,6 +3,8 @@
 // plane disk while a drag folds, the hover highlight, and optionally both hands.
 #pragma once
 
+#include <optional>
+
 #include <glm/mat4x4.hpp>
 
 #include "engine/render/scene.hpp"
@@ -35,6 +37,13 @@ struct InteractionSceneOptions {
   bool handMarkers = false;  // both hands as markers (replays); the desktop's mouse needs none
   CreasePatternCache* panelCache = nullptr;  // null: the panel is built from the shown sheet
 };
+
+// Both controllers as simple generic models (no vendor meshes), for the headset: the sheet hand
+// a grip body at its grip pose, the point hand a body behind its aim pose with a pointer to the
+// tip and the tip itself as a small sphere (when its aim pose is known; else a sphere at the tip).
+// Bodies are lines; a squeeze lights the body that squeezes.
+void addControllerModels(Scene& scene, const InteractionCore& core, const InputFrame& input,
+                         const std::optional<Pose>& pointAim);
 
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,

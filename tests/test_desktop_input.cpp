@@ -109,3 +109,44 @@ TEST(CreasePatternCache, BuildsOncePerDesignChange) {
 
 }  // namespace
 }  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+// Issue 14, 3: the headset draws the controllers as simple generic models: a grip body at the
+// sheet hand (lit while it holds the sheet), and for the point hand a body behind its aim pose, a
+// pointer to the tip and the tip itself.
+TEST(ControllerModels, GripBodyPointerAndTip) {
+  FoldSession session(makeSurface("square", {{"resolution", 4}}));
+  InteractionCore core(session, defaultSheetFrame());
+  InputFrame input;
+  input.sheetHand.tracked = true;
+  input.sheetHand.pose = {{-0.2, 1.0, -0.3}, glm::dquat(1, 0, 0, 0)};
+  input.pointHand.tracked = true;
+  const Pose aim{{0.2, 1.0, -0.3}, glm::angleAxis(0.3, glm::dvec3(0, 1, 0))};
+  input.pointHand.position = aim.apply({0.0, 0.0, -0.05});
+  core.process(input);
+
+  Scene scene;
+  addControllerModels(scene, core, input, aim);
+  ASSERT_EQ(scene.lines.size(), 12u + 12u + 1u);  // two boxes and the pointer
+  ASSERT_EQ(scene.markers.size(), 1u);
+  EXPECT_LT(glm::distance(glm::dvec3(scene.markers[0].position), input.pointHand.position), 1e-6);
+  const LineSegment& pointer = scene.lines.back();
+  EXPECT_LT(glm::distance(glm::dvec3(pointer.a), aim.position), 1e-6);
+  EXPECT_LT(glm::distance(glm::dvec3(pointer.b), input.pointHand.position), 1e-6);
+  // The sheet hand's body sits around its grip pose, about a hand's size.
+  for (int i = 0; i < 12; ++i)
+    EXPECT_LT(glm::distance(glm::dvec3(scene.lines[i].a), input.sheetHand.pose.position), 0.1);
+  const glm::vec4 idle = scene.lines[0].color;
+  input.sheetHand.clutch = 1.0;
+  core.process(input);
+  Scene held;
+  addControllerModels(held, core, input, std::nullopt);  // no aim pose: body, tip, no pointer
+  ASSERT_EQ(held.lines.size(), 12u);
+  EXPECT_NE(held.lines[0].color, idle);
+  EXPECT_EQ(held.markers.size(), 1u);
+}
+
+}  // namespace
+}  // namespace curvefold

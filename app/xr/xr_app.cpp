@@ -148,7 +148,8 @@ void XrApp::startRecording(XrDuration period) {
 void XrApp::buildScene() {
   if (SceneRenderer* renderer = graphics_->renderer()) tracker_->update(*doc_.session, *renderer);
   scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
-                               {/*creasePatternPanel=*/false, /*handMarkers=*/true});
+                               {/*creasePatternPanel=*/false, /*handMarkers=*/false});
+  addControllerModels(scene_, *doc_.core, lastInput_, input_->pointAim());
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   if (lastInput_.sheetHand.tracked) {

@@ -157,6 +157,7 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
                    InputFrame& frame) {
   frame = InputFrame{};
   frame.time = seconds;
+  pointAim_.reset();
   const XrActiveActionSet active{actionSet_, XR_NULL_PATH};
   XrActionsSyncInfo sync{XR_TYPE_ACTIONS_SYNC_INFO};
   sync.countActiveActionSets = 1;
@@ -177,6 +178,7 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
   CHECK_XR(xrLocateSpace(aimSpaces_[std::size_t(point)], base, time, &location));
   if (located(location)) {
     const Pose aim = poseOf(location.pose);
+    pointAim_ = aim;
     frame.pointHand.tracked = true;
     frame.pointHand.position = aim.apply({0.0, 0.0, -kXrTipOffset});
   }

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -54,6 +55,9 @@ class XrInput {
   // caller). Hands that are not located are untracked. Returns false, with an empty frame, when
   // the session is not focused (input then belongs to another application).
   bool poll(XrSpace base, XrTime time, Handedness handedness, double seconds, InputFrame& frame);
+  // The point hand's aim pose at the last poll (none when not located): the frame carries only its
+  // tip, the headset draws the controller along it.
+  const std::optional<Pose>& pointAim() const { return pointAim_; }
   // Haptic pulses on the hands in their roles.
   void applyHaptics(std::span<const HapticPulse> pulses, Handedness handedness);
 
@@ -66,6 +70,7 @@ class XrInput {
   XrPath path(const std::string& text) const;
   XrAction action(XrControl control) const { return actions_.at(control); }
   float floatState(XrControl control, XrHandSide hand) const;
+  std::optional<Pose> pointAim_;
   bool booleanState(XrControl control, XrPath subaction) const;
 
   XrInstance instance_ = XR_NULL_HANDLE;
