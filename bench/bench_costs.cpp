@@ -116,6 +116,19 @@ void BM_CreasePatternPanelPerFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_CreasePatternPanelPerFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// A frame's crease lines (the 3D view's creases) on the same sheet.
+void BM_CreaseLinesPerFrame(benchmark::State& state) {
+  FoldSession session(makeSurface("cylinder", {{"resolution", 259}}));
+  session.beginDragNear({0.0, 0.105, 0.045});
+  session.updateDrag({0.0, 0.065, 0.0});
+  session.commit();
+  const SceneColors colors;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(creaseLines(session.fixed(), glm::mat4(1.0f), colors));
+  state.counters["triangles"] = double(session.fixed().triangleCount());
+}
+BENCHMARK(BM_CreaseLinesPerFrame)->Unit(benchmark::kMillisecond);
+
 // A design of `folds` folds on a cylinder of about 100k triangles, and what a command-line fold
 // pays to get its folded sheet: the replay of the whole history, or the cache's entry.
 const Design& cylinderDesign(int folds) {
