@@ -23,6 +23,7 @@
 #include "app/document.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/session_outputs.hpp"
+#include "app/studio_panel.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -250,24 +251,11 @@ void runDesigner(const DesignerOptions& options) {
     ImGui_ImplVulkan_DestroyFontUploadObjects();
   }
 
-  // Panel state.
-  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
-  int surfaceIndex = 0;
-  std::vector<float> parameterValues;
-  auto resetParameters = [&] {
-    parameterValues.clear();
-    for (const SurfaceParameter& p : catalog[surfaceIndex].parameters)
-      parameterValues.push_back(float(p.defaultValue));
-  };
-  resetParameters();
-  char savePath[512] = "design.curvefold.json";
-  char openPath[512] = "";
-  char exportBase[512] = "design";
-  std::string message;
-  double maxError = maxEdgeLengthError(doc.session->fixed());
-  std::uint64_t statsRevision = doc.session->fixedRevision();
-  double dragUpdateMs = 0.0, frameMs = 0.0;
-  std::size_t drawnTriangles = 0;  // of the display session's coarse sheet
+  // The panel (shared with the headset) and what the window measures for it.
+  StudioPanel panel(outputs.wantsRecording(),
+                    "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
+                    "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
+  StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;
 
@@ -280,15 +268,6 @@ void runDesigner(const DesignerOptions& options) {
     state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
     state.camera = OrbitCamera::framing(doc.session->fixed(), Pose{}, float(width) / float(height));
     ground = groundBelow(worldBounds(doc.session->fixed()));
-    statsRevision = ~std::uint64_t{0};
-  };
-  auto guarded = [&](const std::string& done, auto&& action) {
-    try {
-      action();
-      message = done;
-    } catch (const std::exception& e) {
-      message = e.what();
-    }
   };
 
   // The window and the device exist: now the recording may be created (B8 of issue 13).
@@ -315,83 +294,11 @@ void runDesigner(const DesignerOptions& options) {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("curvefold");
-    if (ImGui::CollapsingHeader("New sheet",
-                                outputs.wantsRecording() ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
-      if (outputs.wantsRecording()) {
-        ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
-      } else {
-        if (ImGui::BeginCombo("surface", catalog[surfaceIndex].name.c_str())) {
-          for (int i = 0; i < int(catalog.size()); ++i)
-            if (ImGui::Selectable(catalog[i].name.c_str(), i == surfaceIndex)) {
-              surfaceIndex = i;
-              resetParameters();
-            }
-          ImGui::EndCombo();
-        }
-        const auto& parameters = catalog[surfaceIndex].parameters;
-        for (std::size_t i = 0; i < parameters.size(); ++i)
-          ImGui::SliderFloat(parameters[i].name.c_str(), &parameterValues[i],
-                             float(parameters[i].min), float(parameters[i].max), "%.4g");
-        if (ImGui::Button("Create")) {
-          GeneratedSurface surface{catalog[surfaceIndex].name, {}};
-          for (std::size_t i = 0; i < parameters.size(); ++i)
-            surface.parameters[parameters[i].name] =
-                parameters[i].integer ? std::round(parameterValues[i]) : parameterValues[i];
-          guarded("new " + surface.generator, [&] {
-            replaceDocument({surface, {}}, surface.generator);
-          });
-        }
-      }
-    }
-    if (ImGui::Button("Undo")) state.input.pulse(Button::Undo);
-    ImGui::SameLine();
-    if (ImGui::Button("Redo")) state.input.pulse(Button::Redo);
-    ImGui::SameLine();
-    ImGui::Checkbox("crease pattern", &creasePatternPanel);
-    ImGui::InputText("save as", savePath, sizeof savePath);
-    if (ImGui::Button("Save"))
-      guarded(std::string("saved ") + savePath, [&] { saveDesign(doc.design(), savePath); });
-    if (!outputs.wantsRecording()) {
-      ImGui::InputText("open", openPath, sizeof openPath);
-      if (ImGui::Button("Open"))
-        guarded(std::string("opened ") + openPath,
-                [&] { replaceDocument(loadDesign(openPath), openPath); });
-    }
-    ImGui::InputText("export to", exportBase, sizeof exportBase);
-    const std::string base = exportBase;
-    if (ImGui::Button("FOLD"))
-      guarded("wrote " + base + ".fold", [&] { writeFold(doc.session->fixed(), base + ".fold"); });
-    ImGui::SameLine();
-    if (ImGui::Button("SVG"))
-      guarded("wrote " + base + ".svg",
-              [&] { writeSvgCreasePattern(doc.session->fixed(), base + ".svg"); });
-    ImGui::SameLine();
-    if (ImGui::Button("OBJ"))
-      guarded("wrote " + base + ".obj", [&] { writeObj(doc.session->fixed(), base + ".obj"); });
-    ImGui::SameLine();
-    if (ImGui::Button("glTF"))
-      guarded("wrote " + base + ".glb", [&] { writeGlb(doc.session->fixed(), base + ".glb"); });
-    ImGui::SameLine();
-    if (ImGui::Button("PNG"))
-      guarded("wrote " + base + ".png",
-              [&] { exportPng(context, lastScene, target.extent(), base + ".png"); });
-    if (!message.empty()) ImGui::TextWrapped("%s", message.c_str());
-    ImGui::Separator();
-    if (statsRevision != doc.session->fixedRevision()) {
-      statsRevision = doc.session->fixedRevision();
-      maxError = maxEdgeLengthError(doc.session->fixed());
-    }
-    ImGui::Text("triangles %zu (drawn %zu), folds %zu", doc.session->current().triangleCount(),
-                drawnTriangles, doc.session->foldCount());
-    ImGui::Text("max edge-length error %.3g m", maxError);
-    ImGui::Text("drag update %.2f ms, frame %.2f ms", dragUpdateMs, frameMs);
-    ImGui::TextWrapped(
-        "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc cancels, "
-        "Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
-    ImGui::End();
+    const StudioActions actions{
+        [&](const Design& next, const std::string& name) { replaceDocument(next, name); },
+        [&](Button button) { state.input.pulse(button); },
+        [&](const std::string& path) { exportPng(context, lastScene, target.extent(), path); }};
+    panel.draw(doc, actions, stats, creasePatternPanel);
     ImGui::Render();
 
     // Input into the core; time never goes backwards.
@@ -402,21 +309,22 @@ void runDesigner(const DesignerOptions& options) {
     const Clock::time_point processStart = Clock::now();
     doc.core->process(input);
     if (doc.session->dragging())
-      dragUpdateMs = std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
+      stats.dragUpdateMs =
+          std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
     outputs.frame(input, doc.core->events());
-    for (const std::string& problem : outputs.takeNewProblems()) message = problem;
+    for (const std::string& problem : outputs.takeNewProblems()) panel.setMessage(problem);
 
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
                                     {creasePatternPanel, /*handMarkers=*/false, &panelCache});
     tracker.describe(lastScene.sheet);
-    drawnTriangles = lastScene.sheet.sheet->triangleCount();
+    stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
     drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {
       ImGui_ImplVulkan_RenderDrawData(panel, commands);
     });
     const Clock::time_point now = Clock::now();
-    frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
+    stats.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
     lastFrame = now;
   }
   frames.waitAll();

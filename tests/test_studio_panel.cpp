@@ -1,0 +1,119 @@
+// The studio panel (issue 14, 1), headless: Dear ImGui runs without a renderer, the test clicks
+// items by their label (where the panel says it drew them) and checks what the panel asked of its
+// host or wrote. The same panel serves the desktop window and the headset.
+#include <unistd.h>
+
+#include <filesystem>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include "app/document.hpp"
+#include "app/studio_panel.hpp"
+#include "engine/io/design_document.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+class StudioPanelTest : public ::testing::Test {
+ protected:
+  StudioPanelTest() {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(900, 700);
+    io.IniFilename = nullptr;
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // the atlas a frame needs
+    dir_ = fs::path(::testing::TempDir()) / ("panel-" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+    doc_ = makeDocument(Design{GeneratedSurface{"square", {{"resolution", 8}}}, {}}, "square");
+    actions_.replaceDocument = [this](const Design& design, const std::string& name) {
+      replaced_.push_back(name);
+      doc_ = makeDocument(design, name);
+    };
+    actions_.press = [this](Button button) { pressed_.push_back(button); };
+    actions_.exportPng = [](const std::string&) { throw std::runtime_error("no renderer here"); };
+  }
+  ~StudioPanelTest() override {
+    ImGui::DestroyContext();
+    fs::remove_all(dir_);
+  }
+
+  void frame() {
+    ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+    ImGui::NewFrame();
+    panel_.draw(doc_, actions_, stats_, creasePattern_);
+    ImGui::Render();
+  }
+  // Press and release the mouse on the item with this label, as a hand's ray would.
+  void click(const std::string& label) {
+    frame();
+    const std::optional<glm::vec2> at = panel_.itemCentre(label);
+    ASSERT_TRUE(at) << "no item \"" << label << "\"";
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(at->x, at->y);
+    frame();
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+  }
+
+  fs::path dir_;
+  Document doc_;
+  StudioActions actions_;
+  StudioStats stats_;
+  bool creasePattern_ = false;
+  StudioPanel panel_{false, "help"};
+  std::vector<std::string> replaced_;
+  std::vector<Button> pressed_;
+};
+
+TEST_F(StudioPanelTest, ButtonsAskTheHostByLabel) {
+  click("Undo");
+  click("Redo");
+  click("Cancel");
+  click("Switch hands");
+  EXPECT_EQ(pressed_,
+            (std::vector<Button>{Button::Undo, Button::Redo, Button::Cancel, Button::SwitchHands}));
+  click("crease pattern");
+  EXPECT_TRUE(creasePattern_);
+  EXPECT_FALSE(panel_.itemCentre("no such item"));
+}
+
+TEST_F(StudioPanelTest, CreateMakesANewSheetFromTheCatalog) {
+  click("Create");
+  ASSERT_EQ(replaced_.size(), 1u);
+  EXPECT_EQ(replaced_[0], "square");  // the catalog's first surface, at its defaults
+  EXPECT_EQ(panel_.message(), "new square");
+}
+
+TEST_F(StudioPanelTest, ExportsWriteBesideTheExportBaseAndFailuresAreShown) {
+  const std::string base = (dir_ / "made").string();
+  StudioPanel panel(false, "help", base);
+  panel_ = std::move(panel);
+  click("SVG");
+  EXPECT_TRUE(fs::exists(base + ".svg")) << panel_.message();
+  click("FOLD");
+  EXPECT_TRUE(fs::exists(base + ".fold")) << panel_.message();
+  EXPECT_EQ(panel_.message(), "wrote " + base + ".fold");
+  click("PNG");  // the host cannot: its message is shown, nothing is written
+  EXPECT_EQ(panel_.message(), "no renderer here");
+  EXPECT_FALSE(fs::exists(base + ".png"));
+}
+
+TEST_F(StudioPanelTest, ARecordedSessionOffersNoNewSheetOrOpen) {
+  StudioPanel recording(true, "help");
+  panel_ = std::move(recording);
+  frame();
+  EXPECT_FALSE(panel_.itemCentre("Create"));
+  EXPECT_FALSE(panel_.itemCentre("Open"));
+  EXPECT_TRUE(panel_.itemCentre("Save"));
+}
+
+}  // namespace
+}  // namespace curvefold::cli
