@@ -113,6 +113,27 @@ TEST(FoldSession, AGrabWithHintsMakesTheScansSheet) {
   EXPECT_GE(edgeSplits, 2);  // the adjacency path was taken
 }
 
+// Issue 13, D15 (found by fuzz_fold; its input is in fuzz/corpus/fold): a grab inside a thin
+// triangle, next to a sharp corner but farther than the grab snap, made a piece thinner than the
+// floor. Grabs near the corners of thin triangles make nothing thinner than the cut floor.
+TEST(FoldSession, AGrabInAThinTriangleMakesNoSliver) {
+  Sheet sheet = flatGrid(1, 1, 0.2);
+  for (glm::dvec3& p : sheet.positions) p.y *= 1e-5;  // 20 cm by 2 micrometres: thin triangles
+  for (glm::dvec2& q : sheet.development) q.y *= 1e-5;
+  ASSERT_NO_THROW(validate(sheet));
+  const double floor = kRelativeCutFeatureSize * sheetSize(sheet);
+  for (const glm::dvec3 weights : {glm::dvec3(6.6e-6, 0.99998, 1.4e-5),
+                                   glm::dvec3(1e-5, 1e-5, 1.0 - 2e-5), glm::dvec3(0.3, 0.3, 0.4)}) {
+    FoldSession session(sheet);
+    session.beginDrag({0, {weights.x, weights.y, weights.z}});
+    EXPECT_GE(measure(session.fixed()).minRelativeHeight * sheetSize(sheet), floor)
+        << weights.x << ", " << weights.y;
+  }
+  FoldSession middle(sheet);  // well inside: a new vertex
+  middle.beginDrag({0, {0.3, 0.3, 0.4}});
+  EXPECT_EQ(middle.fixed().vertexCount(), sheet.vertexCount() + 1);
+}
+
 bool sameAdjacency(const SheetAdjacency& a, const SheetAdjacency& b) {
   return a.triangles.offsets == b.triangles.offsets &&
          a.triangles.triangles == b.triangles.triangles &&

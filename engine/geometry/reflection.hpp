@@ -49,9 +49,6 @@ struct ReflectionChanges {
   double thinnestCut = 0.0;
 };
 
-// A cut piece thinner than this, relative to the sheet's size, makes the plane move (below).
-inline constexpr double kRelativeCutFeatureSize = 10 * kRelativeFeatureSize;
-
 // How far a fold's plane may move to pass through a vertex instead of cutting a sliver next to
 // it, relative to the sheet's size (3 micrometres on a 30 cm sheet: below what a hand or a mouse
 // places), and how many planes are tried.

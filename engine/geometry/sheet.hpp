@@ -81,6 +81,9 @@ inline double sheetEpsilon(const Sheet& sheet) {
 // rounding (a normal computed from such a triangle is good to 1e-7). Folds keep ten times clear of
 // it (kRelativeCutFeatureSize, reflection.hpp), so later cuts through a thin piece stay above it.
 inline constexpr double kRelativeFeatureSize = 1e-9;
+// What an edit makes keeps ten times clear of the floor: a cut piece thinner than this moves the
+// fold's plane (reflection.hpp), a grab that would make one snaps to a vertex (surface_point.hpp).
+inline constexpr double kRelativeCutFeatureSize = 10 * kRelativeFeatureSize;
 
 // Thrown by validate() and by every operation handed an impossible sheet.
 class InvalidSheet : public std::runtime_error {

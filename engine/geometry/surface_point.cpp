@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/validate.hpp"
+
 namespace curvefold {
 namespace {
 
@@ -170,8 +172,11 @@ bool deepInside(const Sheet& sheet, TriangleIndex t, const glm::dvec2& q, double
 
 VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo,
                                 const InsertionHints& hints) {
-  const double snap =
-      kRelativeGrabSnap * (hints.sheetSize > 0.0 ? hints.sheetSize : sheetSize(sheet));
+  const double size = hints.sheetSize > 0.0 ? hints.sheetSize : sheetSize(sheet);
+  const double snap = kRelativeGrabSnap * size;
+  // Nothing thinner than this is made: a point that would make it grabs the triangle's nearest
+  // corner instead (a point inside a thin triangle, next to one of its sharp corners).
+  const double thinnest = kRelativeCutFeatureSize * size;
   TriangleIndex t = kNoIndex;
   if (deepInside(sheet, hints.triangle, q, snap)) {
     t = hints.triangle;
@@ -195,6 +200,13 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
     }
   }
   if (nearest != kNoIndex) return nearest;
+  auto nearestCorner = [&] {
+    VertexIndex best = tri[0];
+    for (VertexIndex v : tri)
+      if (glm::distance(sheet.development[v], q) < glm::distance(sheet.development[best], q))
+        best = v;
+    return best;
+  };
 
   const auto m = static_cast<VertexIndex>(sheet.vertexCount());
   auto rewrite = [&](TriangleIndex k, const Triangle& replacement) {
@@ -210,27 +222,39 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
     const glm::dvec3 position = sheet.positions[u] + s * (sheet.positions[w] - sheet.positions[u]);
     const glm::dvec2 flat =
         sheet.development[u] + s * (sheet.development[w] - sheet.development[u]);
-    sheet.positions.push_back(position);
-    sheet.development.push_back(flat);
     // Each triangle holding the edge (u, w) in either direction becomes two: the triangles around
     // u when known (ascending, as the scan would meet them), else every triangle.
-    const std::size_t triangleCount = sheet.triangleCount();
     std::vector<TriangleIndex> candidates;
     if (hints.around) {
       const auto aroundU = hints.around->of(u);
       candidates.assign(aroundU.begin(), aroundU.end());
     } else {
-      candidates.resize(triangleCount);
+      candidates.resize(sheet.triangleCount());
       std::iota(candidates.begin(), candidates.end(), TriangleIndex{0});
     }
+    struct Split {
+      TriangleIndex triangle;
+      VertexIndex from, to, apex;
+    };
+    std::vector<Split> splits;
     for (TriangleIndex k : candidates) {
-      const Triangle o = sheet.triangles[k];  // a copy: the array grows below
-      for (int j = 0; j < 3; ++j) {
-        const VertexIndex from = o[j], to = o[(j + 1) % 3], apex = o[(j + 2) % 3];
-        if (Edge::of(from, to) != Edge::of(u, w)) continue;
-        rewrite(k, {from, m, apex});
-        sheet.triangles.push_back({m, to, apex});
-      }
+      const Triangle& o = sheet.triangles[k];
+      for (int j = 0; j < 3; ++j)
+        if (Edge::of(o[j], o[(j + 1) % 3]) == Edge::of(u, w))
+          splits.push_back({k, o[j], o[(j + 1) % 3], o[(j + 2) % 3]});
+    }
+    for (const Split& split : splits) {
+      const glm::dvec2 apex = sheet.development[split.apex];
+      if (smallestHeight(sheet.development[split.from], flat, apex) < thinnest ||
+          smallestHeight(flat, sheet.development[split.to], apex) < thinnest)
+        return glm::distance(q, sheet.development[u]) <= glm::distance(q, sheet.development[w]) ? u
+                                                                                                : w;
+    }
+    sheet.positions.push_back(position);
+    sheet.development.push_back(flat);
+    for (const Split& split : splits) {
+      rewrite(split.triangle, {split.from, m, split.apex});
+      sheet.triangles.push_back({m, split.to, split.apex});
     }
     if (const std::optional<EdgeKind> kind = sheet.edgeKind(Edge::of(u, w))) {
       if (undo) {
@@ -249,6 +273,9 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
   // the development so the 3D point is the same point of the paper.
   const glm::dvec2 a = sheet.development[tri[0]], b = sheet.development[tri[1]],
                    c = sheet.development[tri[2]];
+  if (smallestHeight(a, b, q) < thinnest || smallestHeight(b, c, q) < thinnest ||
+      smallestHeight(c, a, q) < thinnest)
+    return nearestCorner();
   const double area = (b - a).x * (c - a).y - (b - a).y * (c - a).x;
   const double wb = ((q - a).x * (c - a).y - (q - a).y * (c - a).x) / area;
   const double wc = ((b - a).x * (q - a).y - (b - a).y * (q - a).x) / area;

@@ -58,9 +58,11 @@ struct VertexInsertion {
 
 // Makes the development point q a vertex: an existing vertex within snap distance, else a new
 // vertex splitting the edge within snap distance (both of its triangles), else one splitting the
-// triangle containing q into three. The 3D position is interpolated with the same barycentric
-// coordinates, so it is exact. Throws InvalidSheet when q lies outside the development. Live grabs
-// and replays go through this one function, so both give the same sheet bit for bit.
+// triangle containing q into three. What it would make is never thinner than
+// kRelativeCutFeatureSize: such a split takes the nearest vertex instead. The 3D position is
+// interpolated with the same barycentric coordinates, so it is exact. Throws InvalidSheet when q
+// lies outside the development. Live grabs and replays go through this one function, so both give
+// the same sheet bit for bit.
 VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q);
 
 // What an in-place insertion changed, so it can be taken back exactly.
