@@ -74,18 +74,22 @@ void BM_ValidateFan(benchmark::State& state) {
 }
 BENCHMARK(BM_ValidateFan)->Arg(20'000)->Arg(40'000)->Unit(benchmark::kMillisecond);
 
+// A cylinder of about 10k (resolution 82) or 100k (259) triangles with one fold on it.
+std::unique_ptr<FoldSession> foldedCylinder(int resolution) {
+  auto session =
+      std::make_unique<FoldSession>(makeSurface("cylinder", {{"resolution", resolution}}));
+  session->beginDragNear({0.0, 0.105, 0.045});
+  session->updateDrag({0.0, 0.065, 0.0});
+  session->commit();
+  return session;
+}
+
 // Grab (and let go of) a point of a cylinder with a fold on it, picked as the interaction core
 // picks it (its tree gives the surface point; here it is found once, outside the loop).
 void BM_Grab(benchmark::State& state) {
   static std::map<long, std::unique_ptr<FoldSession>> sessions;
   auto& session = sessions[state.range(0)];
-  if (!session) {
-    const int resolution = state.range(0) == 10'000 ? 82 : 259;
-    session = std::make_unique<FoldSession>(makeSurface("cylinder", {{"resolution", resolution}}));
-    session->beginDragNear({0.0, 0.105, 0.045});
-    session->updateDrag({0.0, 0.065, 0.0});
-    session->commit();
-  }
+  if (!session) session = foldedCylinder(state.range(0) == 10'000 ? 82 : 259);
   const SurfacePoint point = closestSurfacePoint(session->fixed(), {0.031, -0.05, 0.031});
   for (auto _ : state) {
     benchmark::DoNotOptimize(session->beginDrag(point));
@@ -98,10 +102,8 @@ BENCHMARK(BM_Grab)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 // A frame's crease pattern panel on a 100k-triangle cylinder with a fold: built from the sheet
 // (argument 0) or taken from the cache (argument 1).
 void BM_CreasePatternPanelPerFrame(benchmark::State& state) {
-  FoldSession session(makeSurface("cylinder", {{"resolution", 259}}));
-  session.beginDragNear({0.0, 0.105, 0.045});
-  session.updateDrag({0.0, 0.065, 0.0});
-  session.commit();
+  const std::unique_ptr<FoldSession> folded = foldedCylinder(259);
+  const FoldSession& session = *folded;
   const SceneColors colors;
   CreasePatternCache cache;
   for (auto _ : state) {
@@ -118,10 +120,8 @@ BENCHMARK(BM_CreasePatternPanelPerFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMilli
 
 // A frame's crease lines (the 3D view's creases) on the same sheet.
 void BM_CreaseLinesPerFrame(benchmark::State& state) {
-  FoldSession session(makeSurface("cylinder", {{"resolution", 259}}));
-  session.beginDragNear({0.0, 0.105, 0.045});
-  session.updateDrag({0.0, 0.065, 0.0});
-  session.commit();
+  const std::unique_ptr<FoldSession> folded = foldedCylinder(259);
+  const FoldSession& session = *folded;
   const SceneColors colors;
   for (auto _ : state)
     benchmark::DoNotOptimize(creaseLines(session.fixed(), glm::mat4(1.0f), colors));
