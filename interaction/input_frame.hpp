@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
@@ -41,6 +42,7 @@ enum class Button : std::uint32_t {
   Undo = 1u << 1,
   Redo = 1u << 2,
   SwitchHands = 1u << 3,
+  Panel = 1u << 4,  // shows or hides the headset's panel
 };
 
 struct InputFrame {
@@ -61,6 +63,16 @@ struct InputFrame {
     // Squeeze, 0 to 1: with the sheet hand's clutch (and the trigger released) both hands hold
     // the sheet, which moves, turns and scales between them.
     double grip = 0.0;
+    // Where the hand points (a headset's aim pose): the ray from `position` along this
+    // orientation's -Z reaches the panel. None from sources without one (the mouse).
+    std::optional<glm::dquat> aim;
+    // Thumbstick or trackpad, -1 (down) to 1 (up): scrolls the panel under the ray.
+    double scroll = 0.0;
+
+    // The aim ray's direction (world).
+    glm::dvec3 aimDirection() const {
+      return aim ? *aim * glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0);
+    }
   } pointHand;
 
   std::uint32_t buttons = 0;  // Button bits held

@@ -52,7 +52,7 @@ void InteractionCore::emit(InteractionEventKind kind, double time) {
                         kind == InteractionEventKind::Commit ? 0.04 : 0.015});
 }
 
-void InteractionCore::process(const InputFrame& frame) {
+void InteractionCore::process(const InputFrame& frame, PointTarget target) {
   events_.clear();
   haptics_.clear();
   // A trigger released in the same frame as a button press (a runtime pacing at 20 Hz sees both
@@ -65,7 +65,7 @@ void InteractionCore::process(const InputFrame& frame) {
   }
   handleButtons(frame);
   handleSheetHand(frame);
-  handlePointHand(frame);
+  handlePointHand(frame, target);
 }
 
 void InteractionCore::endDrag(bool commit, double time) {
@@ -186,7 +186,7 @@ void InteractionCore::handleSheetHand(const InputFrame& frame) {
   worldFromSheet_ = hand.pose * handAtClutch_.inverse() * sheetAtClutch_;
 }
 
-void InteractionCore::handlePointHand(const InputFrame& frame) {
+void InteractionCore::handlePointHand(const InputFrame& frame, PointTarget target) {
   const InputFrame::PointHand& hand = frame.pointHand;
   if (!hand.tracked) {
     // Nothing is known about the point: keep the drag as it is and re-anchor when it returns.
@@ -224,6 +224,12 @@ void InteractionCore::handlePointHand(const InputFrame& frame) {
 
   const bool wasHovering = hover_.has_value();
   hover_.reset();
+  if (target == PointTarget::Panel) {
+    // The trigger's state is kept, so a press that began on the panel grabs nothing after it.
+    quietHover_ = false;
+    state_ = InteractionState::Idle;
+    return;
+  }
   // The hover radius is the hand's (world metres); the sheet is seen at the view scale.
   if (const std::optional<SurfacePoint> nearest =
           twoHanded_ ? std::nullopt : picker().nearest(tip, thresholds_.hoverRadius / viewScale_)) {

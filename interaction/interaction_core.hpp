@@ -38,6 +38,11 @@ struct InteractionThresholds {
 
 enum class InteractionState { Idle, Hover, Dragging };
 
+// What the point hand serves this frame: the sheet, or a panel its ray is on. On a panel the tip
+// neither hovers nor grabs (a drag already under way goes on), so pointing at a button over the
+// sheet does not fold it.
+enum class PointTarget { Sheet, Panel };
+
 // Which hand is dominant (holds the point). The source maps controllers to roles by it.
 enum class Handedness { Right, Left };
 
@@ -73,7 +78,7 @@ class InteractionCore {
                   const InteractionThresholds& thresholds = {});
 
   // Consumes one frame. Frames must come in time order.
-  void process(const InputFrame& frame);
+  void process(const InputFrame& frame, PointTarget target = PointTarget::Sheet);
 
   // --- What a renderer shows ----------------------------------------------------------------
   InteractionState state() const { return state_; }
@@ -113,7 +118,7 @@ class InteractionCore {
   void handleSheetHand(const InputFrame& frame);
   // Both hands on the sheet: true while they hold it (the one-hand clutch then waits).
   bool handleTwoHands(const InputFrame& frame);
-  void handlePointHand(const InputFrame& frame);
+  void handlePointHand(const InputFrame& frame, PointTarget target);
   void endDrag(bool commit, double time);
   void emit(InteractionEventKind kind, double time);
   const SurfacePicker& picker();

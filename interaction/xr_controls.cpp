@@ -37,6 +37,8 @@ constexpr std::array kOculusTouch{
     XrControlBinding{C::Redo, "right", "/input/b/click"},
     CURVEFOLD_BOTH(C::Cancel, "/input/thumbstick/click"),
     XrControlBinding{C::SwitchHands, "left", "/input/menu/click"},  // the right has no menu
+    CURVEFOLD_BOTH(C::Panel, "/input/thumbstick/click"),  // the sheet hand's; cancel the point's
+    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
     CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
 };
 
@@ -49,6 +51,8 @@ constexpr std::array kValveIndex{
     CURVEFOLD_BOTH(C::Redo, "/input/b/click"),
     CURVEFOLD_BOTH(C::Cancel, "/input/thumbstick/click"),
     CURVEFOLD_BOTH(C::SwitchHands, "/input/trackpad/force"),
+    CURVEFOLD_BOTH(C::Panel, "/input/thumbstick/click"),
+    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
     CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
 };
 
@@ -60,6 +64,8 @@ constexpr std::array kHtcVive{
     CURVEFOLD_BOTH(C::Undo, "/input/menu/click"),
     CURVEFOLD_BOTH(C::Cancel, "/input/menu/click"),
     CURVEFOLD_BOTH(C::Redo, "/input/trackpad/click"),
+    CURVEFOLD_BOTH(C::Panel, "/input/trigger/click"),  // the sheet hand's trigger is free
+    CURVEFOLD_BOTH(C::Scroll, "/input/trackpad/y"),
     CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
 };
 
@@ -72,6 +78,8 @@ constexpr std::array kMicrosoftMotion{
     CURVEFOLD_BOTH(C::Cancel, "/input/menu/click"),
     CURVEFOLD_BOTH(C::Redo, "/input/trackpad/click"),
     CURVEFOLD_BOTH(C::SwitchHands, "/input/thumbstick/click"),
+    CURVEFOLD_BOTH(C::Panel, "/input/trigger/value"),  // the sheet hand's trigger is free
+    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
     CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
 };
 
@@ -92,9 +100,11 @@ XrControlRole roleOf(XrControl control) {
     case C::Clutch:
     case C::Undo:
     case C::Redo:
+    case C::Panel:
       return XrControlRole::Sheet;
     case C::Select:
     case C::Cancel:
+    case C::Scroll:
       return XrControlRole::Point;
     case C::SwitchHands:
       return XrControlRole::Either;

@@ -23,6 +23,8 @@ enum class XrControl {
   Undo,         // boolean
   Redo,         // boolean
   SwitchHands,  // boolean
+  Panel,        // boolean: shows or hides the panel (the sheet hand's)
+  Scroll,       // float -1..1: scrolls the panel (the point hand's thumbstick or trackpad)
   Haptic,       // vibration output
 };
 

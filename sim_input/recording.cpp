@@ -23,7 +23,8 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-constexpr Button kButtons[] = {Button::Cancel, Button::Undo, Button::Redo, Button::SwitchHands};
+constexpr Button kButtons[] = {Button::Cancel, Button::Undo, Button::Redo, Button::SwitchHands,
+                               Button::Panel};
 
 // "parse error at line 1, column 7: problem" without the line, which the message names already.
 std::string jsonLineProblem(const json::exception& e) {
@@ -102,6 +103,17 @@ class LineReader : public JsonReader {
     if (header.rate <= 0.0) fail("rate", "must be positive, got " + shortestDouble(header.rate));
     header.sheetFrame = pose(member(value, "sheet_frame", ""), "sheet_frame");
 
+    if (const json* studio = optionalMember(value, "studio", "")) {
+      header.studio.emplace();
+      if (!studio->is_object()) fail("studio", "must be an object");
+      if (const json* recent = optionalMember(*studio, "recent", "studio")) {
+        if (!recent->is_array() || recent->size() > kMaxRecentDesigns)
+          fail("studio.recent",
+               "must be an array of at most " + std::to_string(kMaxRecentDesigns) + " paths");
+        for (std::size_t i = 0; i < recent->size(); ++i)
+          header.studio->recent.push_back(string((*recent)[i], item("studio.recent", i)));
+      }
+    }
     const json& surface = member(value, "surface", "");
     try {
       header.surface = parseInitialSurface(surface, prefix());
@@ -130,6 +142,14 @@ class LineReader : public JsonReader {
     // Written only when squeezed, so recordings from before it read the same.
     if (const json* grip = optionalMember(point, "grip", "point"))
       frame.pointHand.grip = unitInterval(*grip, "point.grip");
+    // A headset's aim and thumbstick, written only when there are (the panel's ray and scroll).
+    if (const json* aim = optionalMember(point, "aim", "point"))
+      frame.pointHand.aim = orientation(*aim, "point.aim");
+    if (const json* scroll = optionalMember(point, "scroll", "point")) {
+      frame.pointHand.scroll = number(*scroll, "point.scroll");
+      if (!(frame.pointHand.scroll >= -1.0 && frame.pointHand.scroll <= 1.0))
+        fail("point.scroll", "must lie in [-1, 1], got " + shortestDouble(frame.pointHand.scroll));
+    }
 
     if (const json* buttons = optionalMember(value, "buttons", "")) {
       if (!buttons->is_array()) fail("buttons", "must be an array of button names");
@@ -144,7 +164,7 @@ class LineReader : public JsonReader {
         }
         if (!known)
           fail(where, "unknown button " + quotedExcerpt(name) +
-                          " (expected cancel, undo, redo or switch_hands)");
+                          " (expected cancel, undo, redo, switch_hands or panel)");
       }
     }
     return frame;
@@ -175,6 +195,8 @@ std::string_view buttonName(Button button) {
       return "redo";
     case Button::SwitchHands:
       return "switch_hands";
+    case Button::Panel:
+      return "panel";
   }
   return "unknown";
 }
@@ -193,6 +215,7 @@ std::string headerLine(const RecordingHeader& header) {
   value["rate"] = header.rate;
   value["sheet_frame"] = poseJson(header.sheetFrame);
   value["surface"] = initialSurfaceJson(header.surface);
+  if (header.studio) value["studio"] = {{"recent", header.studio->recent}};
   std::string line = value.dump();
   // Refuse what could not be read back (nlohmann writes NaN as null) before anyone writes it.
   LineReader("cannot record header", 1).header(json::parse(line));
@@ -218,6 +241,12 @@ std::string frameLine(const InputFrame& frame) {
   // Any grip but +0 (even -0, so every value reads back bit for bit).
   if (std::bit_cast<std::uint64_t>(frame.pointHand.grip) != 0)
     value["point"]["grip"] = frame.pointHand.grip;
+  if (frame.pointHand.aim) {
+    const glm::dquat& q = *frame.pointHand.aim;
+    value["point"]["aim"] = ordered_json::array({q.w, q.x, q.y, q.z});
+  }
+  if (std::bit_cast<std::uint64_t>(frame.pointHand.scroll) != 0)
+    value["point"]["scroll"] = frame.pointHand.scroll;
   if (frame.buttons != 0) {
     ordered_json& buttons = value["buttons"] = ordered_json::array();
     for (Button button : kButtons)

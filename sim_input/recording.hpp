@@ -8,6 +8,10 @@
 // then one frame per line:
 //   {"t":0.011,"sheet":{"position":[x,y,z],"orientation":[w,x,y,z],"tracked":true,"clutch":0.0},
 //    "point":{"position":[x,y,z],"tracked":true,"select":0.0},"buttons":["undo"]}
+// "point" may also hold "grip" (0..1, the squeeze), "aim" ([w,x,y,z]: the ray the point hand
+// casts at the headset's panel, from the tip along the orientation's -Z) and "scroll" (-1..1, the
+// thumbstick); each is written only when there is one. A header with "studio" is a headset session
+// with its panel ({"recent":[paths]}: the recent designs it listed), replayed with the panel.
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
 // shortest exact form, so parsing a line gives back the very bits that were written.
 #pragma once
@@ -15,6 +19,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <istream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -32,6 +37,9 @@ inline constexpr int kRecordingVersion = 1;
 // A quaternion whose length is further than this from 1 is refused rather than normalised, so
 // that replay sees exactly the recorded bits. OpenXR's float poses stay well within it.
 inline constexpr double kQuaternionUnitTolerance = 1e-6;
+
+// The most recent designs a studio session lists.
+inline constexpr std::size_t kMaxRecentDesigns = 8;
 
 // One line naming the file and the line, e.g. "a.jsonl: line 7: sheet.clutch: must lie in [0, 1]".
 // line() is 0 for a problem that is not on a line (a file that cannot be read).
@@ -55,6 +63,14 @@ struct RecordingHeader {
   Pose sheetFrame;  // the initial world_from_sheet
   InitialSurface surface;
   double rate = 90.0;  // nominal frames per second (informative)
+  // A headset session with its panel: replayed with the panel running (without drawing), so the
+  // panel's actions (a new sheet, undo, ...) replay too. `recent` is the panel's list of recent
+  // designs when the session started, so the replay lists the same ones.
+  struct Studio {
+    std::vector<std::string> recent;
+    bool operator==(const Studio&) const = default;
+  };
+  std::optional<Studio> studio;
 };
 
 struct Recording {

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "interaction/interaction_core.hpp"
+#include "interaction/panel_pointer.hpp"
 #include "sheet_fixtures.hpp"
 
 namespace curvefold {
@@ -425,6 +426,93 @@ TEST_F(Interaction, AClickWithoutMotionAddsNoFold) {
   EXPECT_TRUE(sawEvent(InteractionEventKind::Cancel));
   EXPECT_EQ(session_.foldCount(), 0u);
   EXPECT_TRUE(identical(session_.fixed(), session_.initial()));
+}
+
+// Issue 14, 1: while the ray is on the panel the tip neither hovers nor grabs; a press that
+// began there grabs nothing when the tip then reaches the paper; a drag under way goes on.
+TEST_F(Interaction, OnThePanelTheTipDoesNotGrab) {
+  const glm::dvec3 p = world({0.02, 0.03, 0.0});
+  frame_.pointHand.position = p;
+  frame_.time += 1.0 / 90.0;
+  core_.process(frame_, PointTarget::Panel);
+  EXPECT_EQ(core_.state(), InteractionState::Idle);
+  EXPECT_FALSE(core_.hover().has_value());
+  frame_.pointHand.select = 1.0;
+  frame_.time += 1.0 / 90.0;
+  core_.process(frame_, PointTarget::Panel);
+  EXPECT_NE(core_.state(), InteractionState::Dragging);
+  // Off the panel with the trigger still held: no grab (it needs a fresh press).
+  pointAt(p + glm::dvec3(0.0, 0.0, 0.001), 1.0);
+  EXPECT_NE(core_.state(), InteractionState::Dragging);
+  pointAt(p, 0.0);
+  EXPECT_EQ(core_.state(), InteractionState::Hover);
+  // A drag under way goes on when the ray crosses the panel.
+  pointAt(p, 1.0);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  frame_.pointHand.position = p + glm::dvec3(0.03, 0.0, 0.02);
+  frame_.time += 1.0 / 90.0;
+  core_.process(frame_, PointTarget::Panel);
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+  pointAt(frame_.pointHand.position, 0.0);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
+TEST(PanelRay, HitsFromTheFrontWithUvFromTheTopLeft) {
+  const Pose worldFromPanel{{1.0, 2.0, 3.0}, rotation(90, {0, 1, 0})};  // faces +X
+  const glm::dvec2 size{0.2, 0.4};
+  // From 0.5 m in front, at the panel's centre: uv (0.5, 0.5).
+  auto hit = rayOnPanel(worldFromPanel, size, {1.5, 2.0, 3.0}, {-1.0, 0.0, 0.0});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->uv.x, 0.5, 1e-12);
+  EXPECT_NEAR(hit->uv.y, 0.5, 1e-12);
+  EXPECT_NEAR(hit->distance, 0.5, 1e-12);
+  EXPECT_TRUE(hit->onPanel());
+  // The panel's +x is world -Z here; its top is +Y: the top-left corner is at uv (0, 0).
+  hit = rayOnPanel(worldFromPanel, size, {1.5, 2.2, 3.1}, {-1.0, 0.0, 0.0});
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->uv.x, 0.0, 1e-12);
+  EXPECT_NEAR(hit->uv.y, 0.0, 1e-12);
+  // Off the panel: a hit on its plane, outside [0, 1].
+  hit = rayOnPanel(worldFromPanel, size, {1.5, 2.5, 3.0}, {-1.0, 0.0, 0.0});
+  ASSERT_TRUE(hit);
+  EXPECT_FALSE(hit->onPanel());
+  // From behind, pointing away, parallel, or too far: none.
+  EXPECT_FALSE(rayOnPanel(worldFromPanel, size, {0.5, 2.0, 3.0}, {1.0, 0.0, 0.0}));
+  EXPECT_FALSE(rayOnPanel(worldFromPanel, size, {1.5, 2.0, 3.0}, {1.0, 0.0, 0.0}));
+  EXPECT_FALSE(rayOnPanel(worldFromPanel, size, {1.5, 2.0, 3.0}, {0.0, 1.0, 0.0}));
+  EXPECT_FALSE(rayOnPanel(worldFromPanel, size, {9.5, 2.0, 3.0}, {-1.0, 0.0, 0.0}, 3.0));
+}
+
+TEST(PanelPointerTest, ThePanelKeepsAPressThatBeganOnIt) {
+  PanelPointer pointer;
+  InputFrame frame;
+  frame.pointHand.tracked = true;
+  const PanelRayHit on{{0.5, 0.5}, 0.3}, off{{1.5, 0.5}, 0.3};
+  EXPECT_EQ(pointer.update(frame, off, false), PointTarget::Sheet);
+  EXPECT_EQ(pointer.update(frame, on, false), PointTarget::Panel);
+  EXPECT_FALSE(pointer.buttonDown());
+  frame.pointHand.select = 1.0;
+  EXPECT_EQ(pointer.update(frame, on, false), PointTarget::Panel);
+  EXPECT_TRUE(pointer.buttonDown());
+  // Dragged past the edge (a slider): still the panel's, button still down.
+  EXPECT_EQ(pointer.update(frame, off, false), PointTarget::Panel);
+  EXPECT_TRUE(pointer.buttonDown());
+  frame.pointHand.select = 0.0;
+  EXPECT_EQ(pointer.update(frame, off, false), PointTarget::Sheet);
+  EXPECT_FALSE(pointer.buttonDown());
+  // A press off the panel that sweeps onto it: the panel has the ray but not the button.
+  frame.pointHand.select = 1.0;
+  EXPECT_EQ(pointer.update(frame, off, false), PointTarget::Sheet);
+  EXPECT_EQ(pointer.update(frame, on, false), PointTarget::Panel);
+  EXPECT_FALSE(pointer.buttonDown());
+  // A drag of the sheet keeps the point hand whatever the ray crosses.
+  EXPECT_EQ(pointer.update(frame, on, true), PointTarget::Sheet);
+  frame.pointHand.select = 0.0;
+  // No aim, or an untracked hand: the sheet's.
+  EXPECT_EQ(pointer.update(frame, std::nullopt, false), PointTarget::Sheet);
+  frame.pointHand.tracked = false;
+  EXPECT_EQ(pointer.update(frame, on, false), PointTarget::Sheet);
 }
 
 }  // namespace

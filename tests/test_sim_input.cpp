@@ -60,6 +60,11 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
   EXPECT_EQ(a.pointHand.tracked, b.pointHand.tracked) << what;
   EXPECT_TRUE(sameBits(a.pointHand.select, b.pointHand.select)) << what;
   EXPECT_TRUE(sameBits(a.pointHand.grip, b.pointHand.grip)) << what;
+  ASSERT_EQ(a.pointHand.aim.has_value(), b.pointHand.aim.has_value()) << what;
+  if (a.pointHand.aim)
+    for (int i = 0; i < 4; ++i)
+      EXPECT_TRUE(sameBits((*a.pointHand.aim)[i], (*b.pointHand.aim)[i])) << what << " aim";
+  EXPECT_TRUE(sameBits(a.pointHand.scroll, b.pointHand.scroll)) << what;
   EXPECT_EQ(a.buttons, b.buttons) << what;
 }
 
@@ -145,9 +150,15 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
     frame.pointHand.select = i % 7 == 0 ? 0.0 : unit(random);
     // The point hand's squeeze (issue 14): absent from the line at +0, any other value kept.
     frame.pointHand.grip = i % 3 == 0 ? 0.0 : (i % 11 == 0 ? -0.0 : unit(random));
-    frame.buttons = static_cast<std::uint32_t>(i % 16);
+    // The headset's aim and thumbstick (the panel's ray and scroll): absent or kept exactly.
+    if (i % 2 == 0)
+      frame.pointHand.aim =
+          glm::normalize(glm::dquat(any(random), any(random), any(random), any(random)));
+    frame.pointHand.scroll = i % 5 == 0 ? 0.0 : (i % 13 == 0 ? -0.0 : 2.0 * unit(random) - 1.0);
+    frame.buttons = static_cast<std::uint32_t>(i % 32);
     frames.push_back(frame);
   }
+  header.studio = RecordingHeader::Studio{{"a.curvefold.json", "designs/b c.curvefold.json"}};
 
   const Recording read = parse(recordingText(header, frames));
   EXPECT_FALSE(read.truncated);
@@ -159,6 +170,7 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
   const auto& surface = std::get<GeneratedSurface>(read.header.surface);
   EXPECT_EQ(surface.generator, "cylinder");
   EXPECT_TRUE(sameBits(surface.parameters.at("radius"), 0.1 / 3.0));
+  EXPECT_EQ(read.header.studio, header.studio);
   ASSERT_EQ(read.frames.size(), frames.size());
   for (std::size_t i = 0; i < frames.size(); ++i) expectSameFrame(read.frames[i], frames[i], i);
   // Writing what was read gives the same text again.
@@ -223,6 +235,14 @@ TEST(Recording, BadInputNamesFileAndLine) {
        "point.grip: must lie in [0, 1]"},
       {"grip not a number", 2, "\"select\":0.0", "\"select\":0.0,\"grip\":true",
        "point.grip: must be a finite number"},
+      {"aim not unit", 2, "\"select\":0.0", "\"select\":0.0,\"aim\":[1.0,0.5,0.0,0.0]",
+       "point.aim: is not a unit quaternion"},
+      {"scroll beyond 1", 2, "\"select\":0.0", "\"select\":0.0,\"scroll\":-1.5",
+       "point.scroll: must lie in [-1, 1]"},
+      {"studio not an object", 1, "\"units\"", "\"studio\":[],\"units\"",
+       "studio: must be an object"},
+      {"studio recent not paths", 1, "\"units\"", "\"studio\":{\"recent\":[1]},\"units\"",
+       "studio.recent[0]"},
       {"time backwards", 11, "\"t\":0.9", "\"t\":0.75", "time goes backwards"},
       {"unknown button", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":[\"jump\"]",
        "unknown button \"jump\""},

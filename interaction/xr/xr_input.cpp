@@ -1,5 +1,6 @@
 #include "interaction/xr/xr_input.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/quaternion.hpp>
@@ -26,6 +27,8 @@ constexpr ActionInfo kActions[] = {
     {XrControl::Undo, "undo", "Undo", XR_ACTION_TYPE_BOOLEAN_INPUT},
     {XrControl::Redo, "redo", "Redo", XR_ACTION_TYPE_BOOLEAN_INPUT},
     {XrControl::SwitchHands, "switch_hands", "Switch hands", XR_ACTION_TYPE_BOOLEAN_INPUT},
+    {XrControl::Panel, "panel", "Show or hide the panel", XR_ACTION_TYPE_BOOLEAN_INPUT},
+    {XrControl::Scroll, "scroll", "Scroll the panel", XR_ACTION_TYPE_FLOAT_INPUT},
     {XrControl::Haptic, "haptic", "Vibrate", XR_ACTION_TYPE_VIBRATION_OUTPUT},
 };
 
@@ -181,9 +184,11 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
     pointAim_ = aim;
     frame.pointHand.tracked = true;
     frame.pointHand.position = aim.apply({0.0, 0.0, -kXrTipOffset});
+    frame.pointHand.aim = aim.orientation;
   }
   frame.pointHand.select = floatState(XrControl::Select, point);
   frame.pointHand.grip = floatState(XrControl::Clutch, point);
+  frame.pointHand.scroll = std::clamp(double(floatState(XrControl::Scroll, point)), -1.0, 1.0);
 
   auto press = [&](Button button, bool held) {
     if (held) frame.buttons |= static_cast<std::uint32_t>(button);
@@ -192,6 +197,7 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
   press(Button::Undo, booleanState(XrControl::Undo, handPaths_[std::size_t(sheet)]));
   press(Button::Redo, booleanState(XrControl::Redo, handPaths_[std::size_t(sheet)]));
   press(Button::SwitchHands, booleanState(XrControl::SwitchHands, XR_NULL_PATH));
+  press(Button::Panel, booleanState(XrControl::Panel, handPaths_[std::size_t(sheet)]));
   return true;
 }
 

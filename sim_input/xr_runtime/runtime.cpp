@@ -234,12 +234,14 @@ std::optional<float> resolve(Instance& instance, const Action& action, int hand)
     std::string component;
     if (handOf(path, &component) != hand) continue;
     const auto& inputs = instance.hands[hand].inputs;
+    // Several sources of one action: the largest magnitude wins (an axis may be negative).
+    auto larger = [](float a, float b) { return std::abs(b) > std::abs(a) ? b : a; };
     float v = 0.0f;
     for (const std::string& key :
          {component, component + "/value", component + "/click", component + "/force"})
-      if (auto it = inputs.find(key); it != inputs.end()) v = std::max(v, it->second);
+      if (auto it = inputs.find(key); it != inputs.end()) v = larger(v, it->second);
     if (action.type == XR_ACTION_TYPE_BOOLEAN_INPUT) v = v >= 0.5f ? 1.0f : 0.0f;
-    value = std::max(value.value_or(0.0f), v);
+    value = larger(value.value_or(0.0f), v);
   }
   return value;
 }

@@ -68,9 +68,10 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
   hands[sheet].tracked = frame.sheetHand.tracked;
   hands[sheet].pose = frame.sheetHand.pose;
   hands[point].tracked = frame.pointHand.tracked;
-  // Aim straight ahead (-Z), so the tip kXrTipOffset ahead of the aim pose is the recorded point.
-  hands[point].pose = {frame.pointHand.position + glm::dvec3(0.0, 0.0, kXrTipOffset),
-                       glm::dquat(1.0, 0.0, 0.0, 0.0)};
+  // The recorded aim, or straight ahead (-Z); the tip kXrTipOffset ahead of the aim pose is the
+  // recorded point.
+  const glm::dquat aim = frame.pointHand.aim.value_or(glm::dquat(1.0, 0.0, 0.0, 0.0));
+  hands[point].pose = {frame.pointHand.position + aim * glm::dvec3(0.0, 0.0, kXrTipOffset), aim};
 
   const XrProfileControls* controls = nullptr;
   for (const XrProfileControls& p : xrProfileControls())
@@ -96,6 +97,12 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
     press(XrControl::Cancel, point, frame.held(Button::Cancel) ? 1.0 : 0.0);
     press(XrControl::Undo, sheet, frame.held(Button::Undo) ? 1.0 : 0.0);
     press(XrControl::Redo, sheet, frame.held(Button::Redo) ? 1.0 : 0.0);
+    press(XrControl::Panel, sheet, frame.held(Button::Panel) ? 1.0 : 0.0);
+    // An axis is set, not raised: it may be negative.
+    for (const XrControlBinding& binding : controls->bindings)
+      if (binding.control == XrControl::Scroll && binding.hand == (point == 0 ? "left" : "right"))
+        hands[point].inputs[std::string(binding.input)] =
+            static_cast<float>(frame.pointHand.scroll);
     const double switching = frame.held(Button::SwitchHands) ? 1.0 : 0.0;
     if (!press(XrControl::SwitchHands, point, switching))
       press(XrControl::SwitchHands, sheet, switching);
