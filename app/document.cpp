@@ -64,4 +64,16 @@ std::string defaultAutosave(const std::string& input, const std::string& fallbac
   return name + ".autosave.curvefold.json";
 }
 
+std::string nextAutosave(const std::string& current, const std::string& name) {
+  const fs::path dir = fs::path(current).parent_path();
+  std::string stem = defaultAutosave(name, name);
+  stem.resize(stem.size() - std::strlen(".autosave.curvefold.json"));
+  for (int i = 1;; ++i) {
+    const fs::path candidate =
+        dir / (stem + (i == 1 ? "" : "-" + std::to_string(i)) + ".autosave.curvefold.json");
+    std::error_code error;
+    if (!fs::exists(candidate, error) && candidate.string() != current) return candidate.string();
+  }
+}
+
 }  // namespace curvefold::cli

@@ -45,4 +45,9 @@ Design designFor(const std::string& input, const std::string& fallbackSurface);
 // "<name>.autosave.curvefold.json" beside the working directory, <name> from INPUT.
 std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface);
 
+// The autosave for a design named `name` (a surface, a file's stem) that a session switches to,
+// beside `current`: <name>.autosave.curvefold.json, or <name>-2..., whichever does not exist yet,
+// so no earlier design's autosave is overwritten.
+std::string nextAutosave(const std::string& current, const std::string& name);
+
 }  // namespace curvefold::cli

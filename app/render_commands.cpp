@@ -15,6 +15,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands.hpp"
+#include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -111,6 +112,10 @@ class ReplayFrameWriter {
     if (!error) fs::create_directory(stage_, error);
     if (error) throw FileError("cannot create " + dir_.string() + ": " + error.message());
     staged_ = true;
+    if (recording.header.studio)
+      throw UsageError(
+          "--frames cannot yet draw a studio recording (a headset session with its panel); "
+          "replay it without --frames, or watch it with `curvefold xr`");
     Player player(recording);
     // One camera for the whole replay, framing the sheet where it starts and every hand position.
     Bounds bounds = worldBounds(player.session().current(), matrixOf(recording.header.sheetFrame));
@@ -211,7 +216,7 @@ void addRenderCommand(CLI::App& app) {
     const fs::path input = options->input;
     Sheet sheet;
     if (input.extension() == ".jsonl") {
-      sheet = replayRecording(readRecording(input)).sheet;
+      sheet = replayAnyRecording(readRecording(input)).sheet;
     } else {
       sheet = buildSheet(loadDesign(input), input.string());
     }

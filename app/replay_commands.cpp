@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/headset_studio.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -124,7 +125,7 @@ void addReplayCommand(CLI::App& app) {
     ProgressBar bar(options->realtime, duration);
     replayOptions.onFrame = [&bar](const ReplayProgress& progress) { bar.update(progress); };
     const Clock::time_point start = Clock::now();
-    const ReplayResult result = replayRecording(recording, replayOptions);
+    const ReplayResult result = replayAnyRecording(recording, replayOptions);
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     bar.clear();
 
@@ -176,12 +177,13 @@ void addRecordScriptCommand(CLI::App& app) {
     GestureStream stream;
     if (writesInPlace(resolveOutputPath(options->output)))
       streamGestureScript(
-          options->script, [](const RecordingHeader&) {}, [](const InputFrame&) {});
+          options->script, [](const RecordingHeader&) {}, [](const InputFrame&) {},
+          studioGestureWorld());
     writeFileAtomically(options->output, [&](std::ostream& out) {
       stream = streamGestureScript(
           options->script,
           [&](const RecordingHeader& header) { out << headerLine(header) << '\n'; },
-          [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; });
+          [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; }, studioGestureWorld());
     });
     statusFor({options->output}) << "wrote " << options->output << " (" << stream.frames
                                  << " frames, " << seconds(stream.seconds) << ")\n";

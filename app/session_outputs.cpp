@@ -64,6 +64,13 @@ bool SessionOutputs::save() noexcept {
   }
 }
 
+void SessionOutputs::switchAutosave(std::string path) noexcept {
+  if (finished_) return;
+  if (unsaved_) save();
+  unsaved_ = false;
+  autosavePath_ = std::move(path);
+}
+
 void SessionOutputs::stopRecording(const std::string& why) noexcept {
   try {
     recorder_->close();

@@ -50,6 +50,11 @@ class SessionOutputs {
   // kept in problems() (and a failing recording stops).
   void frame(const InputFrame& input, const std::vector<InteractionEvent>& events);
 
+  // The session moves to another design (a new sheet, an opened file): the one it leaves stays in
+  // its autosave (saved now if its last save failed), and the next is autosaved at `path`.
+  // Call it before the design changes. Never throws.
+  void switchAutosave(std::string path) noexcept;
+
   // Saves the design (when a commit point happened since the last good save, or always when
   // saveAlways) and closes the recording. Runs once; never throws. Returns false when the design
   // could not be saved (problems() says why).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <utility>
 
 #include "engine/io/design_document.hpp"
@@ -21,6 +22,41 @@ StudioPanel::StudioPanel(bool recording, std::string help, std::string exportBas
     : recording_(recording), help_(std::move(help)) {
   std::strncpy(exportBase_, exportBase.c_str(), sizeof exportBase_ - 1);
   resetParameters();
+}
+
+void StudioPanel::setExportBase(const std::string& base) {
+  std::strncpy(exportBase_, base.c_str(), sizeof exportBase_ - 1);
+  exportBase_[sizeof exportBase_ - 1] = '\0';
+}
+
+void StudioPanel::setSavePath(const std::string& path) {
+  std::strncpy(savePath_, path.c_str(), sizeof savePath_ - 1);
+  savePath_[sizeof savePath_ - 1] = '\0';
+}
+
+void StudioPanel::setRecent(std::vector<std::string> recent) {
+  if (recent.size() > kMaxRecentDesigns) recent.resize(kMaxRecentDesigns);
+  recent_ = std::move(recent);
+}
+
+// The design at `designPath` goes to the top of the recent list.
+void StudioPanel::remember(const std::string& designPath, const StudioActions& actions) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(designPath, error);
+  const std::string full = error ? designPath : absolute.lexically_normal().string();
+  std::vector<std::string> recent{full};
+  for (const std::string& path : recent_)
+    if (path != full) recent.push_back(path);
+  setRecent(std::move(recent));
+  if (actions.recentChanged) actions.recentChanged(recent_);
+}
+
+void StudioPanel::writeThrough(const StudioActions& actions, const std::string& path,
+                               const std::function<void(const std::string&)>& write) {
+  if (actions.writeFile)
+    actions.writeFile(path, write);
+  else
+    write(path);
 }
 
 void StudioPanel::resetParameters() {
@@ -53,9 +89,16 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
                        bool& creasePattern) {
   items_.clear();
   const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("curvefold");
+  ImGuiWindowFlags flags = 0;
+  if (fillsDisplay_) {
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize);
+    flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+  } else {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+  }
+  ImGui::Begin("curvefold", nullptr, flags);
   if (ImGui::CollapsingHeader("New sheet", recording_ ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
     if (recording_) {
       ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
@@ -105,34 +148,61 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   if (button("Switch hands")) actions.press(Button::SwitchHands);
   ImGui::Checkbox("crease pattern", &creasePattern);
   item("crease pattern");
+  if (actions.resetView) {
+    ImGui::SameLine();
+    if (button("Reset view")) actions.resetView();
+  }
   ImGui::InputText("save as", savePath_, sizeof savePath_);
   item("save as");
-  if (button("Save"))
-    guarded(std::string("saved ") + savePath_, [&] { saveDesign(doc.design(), savePath_); });
+  if (button("Save")) {
+    const std::string path = savePath_;
+    guarded("saved " + path, [&] {
+      writeThrough(actions, path, [&](const std::string& to) { saveDesign(doc.design(), to); });
+      remember(path, actions);
+    });
+  }
   if (!recording_) {
     ImGui::InputText("open", openPath_, sizeof openPath_);
     item("open");
-    if (button("Open"))
-      guarded(std::string("opened ") + openPath_,
-              [&] { actions.replaceDocument(loadDesign(openPath_), openPath_); });
+    auto open = [&](const std::string& path) {
+      guarded("opened " + path, [&] {
+        actions.replaceDocument(loadDesign(path), path);
+        remember(path, actions);
+      });
+    };
+    if (button("Open")) open(openPath_);
+    const bool showRecent = !recent_.empty() && ImGui::CollapsingHeader("Recent designs");
+    if (!recent_.empty()) item("Recent designs");
+    if (showRecent) {
+      // Copied: opening one reorders the list.
+      const std::vector<std::string> recent = recent_;
+      for (std::size_t i = 0; i < recent.size(); ++i) {
+        const std::string name = std::filesystem::path(recent[i]).filename().string();
+        const bool chosen = ImGui::Selectable((name + "##recent" + std::to_string(i)).c_str());
+        if (!items_.count(name)) item(name.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent[i].c_str());
+        if (chosen) open(recent[i]);
+      }
+    }
   }
   ImGui::InputText("export to", exportBase_, sizeof exportBase_);
   item("export to");
   const std::string base = exportBase_;
-  if (button("FOLD"))
-    guarded("wrote " + base + ".fold", [&] { writeFold(doc.session->fixed(), base + ".fold"); });
+  const Sheet& fixed = doc.session->fixed();
+  auto exportAs = [&](const std::string& extension,
+                      const std::function<void(const std::string&)>& write) {
+    guarded("wrote " + base + extension, [&] { writeThrough(actions, base + extension, write); });
+  };
+  if (button("FOLD")) exportAs(".fold", [&](const std::string& to) { writeFold(fixed, to); });
   ImGui::SameLine();
   if (button("SVG"))
-    guarded("wrote " + base + ".svg",
-            [&] { writeSvgCreasePattern(doc.session->fixed(), base + ".svg"); });
+    exportAs(".svg", [&](const std::string& to) { writeSvgCreasePattern(fixed, to); });
   ImGui::SameLine();
-  if (button("OBJ"))
-    guarded("wrote " + base + ".obj", [&] { writeObj(doc.session->fixed(), base + ".obj"); });
+  if (button("OBJ")) exportAs(".obj", [&](const std::string& to) { writeObj(fixed, to); });
   ImGui::SameLine();
-  if (button("glTF"))
-    guarded("wrote " + base + ".glb", [&] { writeGlb(doc.session->fixed(), base + ".glb"); });
+  if (button("glTF")) exportAs(".glb", [&](const std::string& to) { writeGlb(fixed, to); });
   ImGui::SameLine();
-  if (button("PNG")) guarded("wrote " + base + ".png", [&] { actions.exportPng(base + ".png"); });
+  if (button("PNG")) exportAs(".png", [&](const std::string& to) { actions.exportPng(to); });
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::Separator();
   // The isometry error walks every edge: measured again only when the committed sheet changes.

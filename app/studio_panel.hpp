@@ -27,6 +27,15 @@ struct StudioActions {
   std::function<void(const Design& design, const std::string& name)> replaceDocument;
   std::function<void(Button button)> press;  // undo, redo, cancel, switch hands
   std::function<void(const std::string& path)> exportPng;
+  // Optional: puts the sheet back where it started, at scale 1 (the headset's two-hand scale).
+  std::function<void()> resetView;
+  // Optional: writes a file the panel asked for by calling `write(path)`; a replay, which must
+  // not touch the disk, leaves it out and the panel writes nothing, saying what it would have.
+  // Without it (null), the panel writes.
+  std::function<void(const std::string& path, const std::function<void(const std::string&)>& write)>
+      writeFile;
+  // Optional: the recent designs changed (a design was saved or opened): the host keeps the list.
+  std::function<void(const std::vector<std::string>& recent)> recentChanged;
 };
 
 // What the panel shows that the host measures.
@@ -47,6 +56,15 @@ class StudioPanel {
   void draw(Document& doc, const StudioActions& actions, const StudioStats& stats,
             bool& creasePattern);
 
+  // Where exports go (a path without its extension) and where Save writes.
+  void setExportBase(const std::string& base);
+  void setSavePath(const std::string& path);
+  // The recent designs, newest first (at most kMaxRecentDesigns).
+  void setRecent(std::vector<std::string> recent);
+  const std::vector<std::string>& recent() const { return recent_; }
+  // The window fills the ImGui display (a headset's panel texture) instead of floating.
+  void setFillsDisplay(bool fills) { fillsDisplay_ = fills; }
+
   const std::string& message() const { return message_; }
   void setMessage(std::string message) { message_ = std::move(message); }
   // Where the item with this label was drawn last frame (screen pixels), if it was.
@@ -56,6 +74,9 @@ class StudioPanel {
   void item(const char* label);  // records the last item's rectangle under its label
   void guarded(const std::string& done, const std::function<void()>& action);
   void resetParameters();
+  void remember(const std::string& designPath, const StudioActions& actions);
+  void writeThrough(const StudioActions& actions, const std::string& path,
+                    const std::function<void(const std::string&)>& write);
 
   bool recording_;
   std::string help_;
@@ -69,6 +90,8 @@ class StudioPanel {
   const void* statsSession_ = nullptr;
   std::uint64_t statsRevision_ = ~std::uint64_t{0};
   std::map<std::string, glm::vec2> items_;
+  std::vector<std::string> recent_;
+  bool fillsDisplay_ = false;
 };
 
 }  // namespace curvefold::cli

@@ -4,7 +4,7 @@
 # gallery: per example the design, FOLD, SVG crease pattern, OBJ, the per-fold log, the checked
 # invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
 # again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
-# last images.
+# last images, and the headset studio session (xr_studio) with its panel's exports.
 # Usage: scripts/main.sh [OUT]   (default out/gallery)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,4 +27,13 @@ XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json \
   CURVEFOLD_SIM_INPUT=examples/recordings/star.jsonl CURVEFOLD_SIM_SAVE_VIEWS="$xr" \
   build/app/curvefold xr examples/recordings/star.jsonl --record "$xr/star-xr.jsonl" \
   --autosave "$xr/star-xr.curvefold.json" >"$xr/xr.txt"
+# A whole design made in the headset through its panel (a new cone, folds, a two-handed scale,
+# FOLD and SVG exported from the panel), played through the simulated runtime.
+studio="$out/xr_studio-xr"
+rm -rf "$studio"  # its autosaves are numbered, not overwritten: start clean
+mkdir -p "$studio"
+XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json \
+  CURVEFOLD_SIM_INPUT=examples/recordings/xr_studio.jsonl CURVEFOLD_SIM_SAVE_VIEWS="$studio/views" \
+  build/app/curvefold xr examples/recordings/xr_studio.jsonl --export-dir "$studio/exports" \
+  --autosave "$studio/xr_studio.curvefold.json" >"$studio/xr.txt"
 echo "gallery written to $out"

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -27,30 +29,72 @@ constexpr double kApproachSeconds = 0.25;
 
 }  // namespace
 
-GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames, FrameSink sink)
+namespace {
+
+// The interaction core over a fold session: what a script without a panel acts on.
+class CoreWorld : public GestureWorld {
+ public:
+  explicit CoreWorld(const RecordingHeader& header)
+      : session_(initialSheet(Design{header.surface, {}}, "gesture script")),
+        core_(session_, header.sheetFrame, header.handedness) {}
+  void process(const InputFrame& frame) override { core_.process(frame); }
+  const InteractionCore& core() const override { return core_; }
+
+ private:
+  FoldSession session_;
+  InteractionCore core_;
+};
+
+// Straight down (world -Y): the pointing direction, -Z, turned a quarter about +X.
+const glm::dquat kAimDown = glm::angleAxis(-0.5 * std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
+
+// Where a hand points at a panel item from.
+constexpr double kPointingDistance = 0.2;
+
+}  // namespace
+
+GestureRecorder::GestureRecorder(RecordingHeader header, std::size_t maxFrames, FrameSink sink,
+                                 const GestureWorldFactory& world)
     : sink_(std::move(sink)), maxFrames_(maxFrames) {
   recording_.header = std::move(header);
   if (!(recording_.header.rate > 0.0) || !(recording_.header.rate <= kMaxGestureRate))
     throw GestureError("rate must lie in (0, " + std::to_string(int(kMaxGestureRate)) +
                        "] frames per second");
   dt_ = 1.0 / recording_.header.rate;
-  session_ = std::make_unique<FoldSession>(
-      initialSheet(Design{recording_.header.surface, {}}, "gesture script"));
-  core_ = std::make_unique<InteractionCore>(*session_, recording_.header.sheetFrame,
-                                            recording_.header.handedness);
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const glm::dvec3& p : session_->fixed().positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  sheetCentre_ = 0.5 * (lo + hi);
+  if (recording_.header.studio && !world)
+    throw GestureError(
+        "a studio script (\"studio\") runs the headset's panel: make its recording with "
+        "`curvefold record-script`");
+  if (recording_.header.studio)
+    world_ = world(recording_.header);
+  else
+    world_ = std::make_unique<CoreWorld>(recording_.header);
+  const glm::dvec3 centre = sheetCentre();
   const Pose& sheet = recording_.header.sheetFrame;
   frame_.time = 0.0;
-  frame_.sheetHand.pose = sheet * Pose{sheetCentre_, glm::dquat(1, 0, 0, 0)};
+  frame_.sheetHand.pose = sheet * Pose{centre, glm::dquat(1, 0, 0, 0)};
   frame_.sheetHand.tracked = true;
-  frame_.pointHand.position = sheet.apply(sheetCentre_ + glm::dvec3(0.0, 0.0, kRestDistance));
+  frame_.pointHand.position = sheet.apply(centre + glm::dvec3(0.0, 0.0, kRestDistance));
   frame_.pointHand.tracked = true;
+  if (recording_.header.studio) frame_.pointHand.aim = kAimDown;
   step();
+}
+
+glm::dvec3 GestureRecorder::sheetCentre() {
+  if (centreOf_ != &session()) {
+    centreOf_ = &session();
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& p : session().fixed().positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    sheetCentre_ = 0.5 * (lo + hi);
+  }
+  return sheetCentre_;
+}
+
+void GestureRecorder::aimAtPaper() {
+  if (frame_.pointHand.aim) frame_.pointHand.aim = kAimDown;
 }
 
 int GestureRecorder::stepsFor(double seconds) const {
@@ -68,7 +112,7 @@ void GestureRecorder::step() {
     sink_(frame_);
   else
     recording_.frames.push_back(frame_);
-  core_->process(frame_);
+  world_->process(frame_);
   frame_.time = static_cast<double>(++frameCount_) * dt_;
 }
 
@@ -78,7 +122,7 @@ void GestureRecorder::wait(double seconds) {
 
 Pose GestureRecorder::turnedHand(const Pose& start, const Pose& sheetAtStart, const SheetTurn& turn,
                                  double fraction) const {
-  const glm::dvec3 pivot = sheetAtStart.apply(core_->viewScale() * sheetCentre_);
+  const glm::dvec3 pivot = sheetAtStart.apply(core().viewScale() * sheetCentre_);
   const glm::dquat rotation =
       glm::angleAxis(turn.degrees * fraction * std::numbers::pi / 180.0, glm::normalize(turn.axis));
   const Pose aboutPivot{pivot - rotation * pivot, rotation};
@@ -86,9 +130,10 @@ Pose GestureRecorder::turnedHand(const Pose& start, const Pose& sheetAtStart, co
 }
 
 void GestureRecorder::turnSheet(const SheetTurn& turn, double seconds) {
+  sheetCentre();  // of the sheet now, for turnedHand
   frame_.sheetHand.clutch = 1.0;
   step();
-  const Pose start = frame_.sheetHand.pose, sheet = core_->worldFromSheet();
+  const Pose start = frame_.sheetHand.pose, sheet = core().worldFromSheet();
   for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
     frame_.sheetHand.pose = turnedHand(start, sheet, turn, smoothstep(double(i) / n));
     step();
@@ -110,8 +155,9 @@ void GestureRecorder::moveSheet(const glm::dvec3& by, double seconds) {
 }
 
 void GestureRecorder::scaleSheet(double factor, double seconds) {
-  const InteractionThresholds& limits = core_->thresholds();
-  const double target = core_->viewScale() * factor;
+  aimAtPaper();
+  const InteractionThresholds& limits = core().thresholds();
+  const double target = core().viewScale() * factor;
   if (!(target >= limits.minimumViewScale && target <= limits.maximumViewScale))
     throw GestureError("scale_sheet: the view scale would leave [" +
                        shortestDouble(limits.minimumViewScale) + ", " +
@@ -152,13 +198,15 @@ void GestureRecorder::moveSheetHand(const Pose& to, double seconds, bool clutch)
 
 void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dvec3>& path,
                            double seconds, const std::optional<SheetTurn>& turnDuring) {
-  const Sheet& fixed = session_->fixed();
+  sheetCentre();  // of the sheet now, for turnedHand
+  aimAtPaper();
+  const Sheet& fixed = session().fixed();
   const glm::dvec3 grabbed = positionOf(fixed, closestSurfacePoint(fixed, grabNear));
-  const Pose sheet = core_->worldFromSheet();
-  const double scale = core_->viewScale();
+  const Pose sheet = core().worldFromSheet();
+  const double scale = core().viewScale();
 
   // Approach the point with the trigger released, then pull it.
-  const glm::dvec3 from = frame_.pointHand.position, to = core_->worldOf(grabbed);
+  const glm::dvec3 from = frame_.pointHand.position, to = core().worldOf(grabbed);
   for (int i = 1, n = stepsFor(kApproachSeconds); i <= n; ++i) {
     frame_.pointHand.position = from + (to - from) * smoothstep(double(i) / n);
     step();
@@ -166,7 +214,7 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   frame_.pointHand.select = 1.0;
   if (turnDuring) frame_.sheetHand.clutch = 1.0;
   step();
-  if (core_->state() != InteractionState::Dragging)
+  if (core().state() != InteractionState::Dragging)
     throw GestureError("drag: could not grab the sheet near the given point");
 
   // Along the polyline grabbed -> path..., by arc length, in the sheet frame of the start. Points
@@ -200,6 +248,33 @@ void GestureRecorder::press(Button button) {
   frame_.buttons = static_cast<std::uint32_t>(button);
   step();
   frame_.buttons = 0;
+  step();
+}
+
+void GestureRecorder::pointAt(const std::string& label, double seconds, bool click) {
+  std::optional<glm::dvec3> item = world_->panelItem(label);
+  const std::optional<glm::dvec3> facing = world_->panelFacing();
+  if (!item || !facing) throw GestureError("point_at: the panel shows no item \"" + label + "\"");
+  const glm::dvec3 from = frame_.pointHand.position;
+  const glm::dquat aimFrom = frame_.pointHand.aim.value_or(kAimDown);
+  for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {
+    // Where the item is now: a popup settles its place a frame after it opens.
+    if (const std::optional<glm::dvec3> now = world_->panelItem(label)) item = now;
+    const glm::dvec3 to = *item + kPointingDistance * glm::normalize(*facing);
+    // The aim that turns the pointing direction (-Z) towards the item.
+    const glm::dquat aimTo =
+        glm::normalize(glm::dquat(glm::dvec3(0.0, 0.0, -1.0), glm::normalize(*item - to)));
+    const double fraction = smoothstep(double(i) / n);
+    frame_.pointHand.position = from + (to - from) * fraction;
+    frame_.pointHand.aim = glm::normalize(glm::slerp(aimFrom, aimTo, fraction));
+    step();
+  }
+  if (!click) return;
+  // Press for two frames and release, as a finger does; the panel clicks on the release.
+  frame_.pointHand.select = 1.0;
+  step();
+  step();
+  frame_.pointHand.select = 0.0;
   step();
 }
 
@@ -258,7 +333,8 @@ class ScriptReader : public JsonReader {
 Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames,
                            const std::function<void(const RecordingHeader&)>& onHeader = nullptr,
                            const GestureRecorder::FrameSink& sink = nullptr,
-                           GestureStream* stream = nullptr) {
+                           GestureStream* stream = nullptr,
+                           const GestureWorldFactory& world = nullptr) {
   const ScriptReader reader(name);
   const nlohmann::json document = parseJsonText(text, name);
   reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
@@ -286,10 +362,23 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
   if (const nlohmann::json* frame = reader.optionalMember(document, "sheet_frame", ""))
     header.sheetFrame = reader.pose(*frame, "sheet_frame");
 
+  if (const nlohmann::json* studio = reader.optionalMember(document, "studio", "")) {
+    reader.object(*studio, "studio");
+    header.studio.emplace();
+    if (const nlohmann::json* recent = reader.optionalMember(*studio, "recent", "studio")) {
+      reader.array(*recent, "studio.recent");
+      if (recent->size() > kMaxRecentDesigns)
+        reader.fail("studio.recent", "lists more than " + std::to_string(kMaxRecentDesigns));
+      for (std::size_t k = 0; k < recent->size(); ++k)
+        header.studio->recent.push_back(
+            reader.string((*recent)[k], JsonReader::item("studio.recent", k)));
+    }
+  }
+
   if (onHeader) onHeader(header);
   std::optional<GestureRecorder> made;
   try {
-    made.emplace(header, maxFrames, sink);
+    made.emplace(header, maxFrames, sink, world);
   } catch (const DesignError& e) {
     throw GestureError(e.what());
   }
@@ -345,10 +434,20 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
         recorder.press(Button::Cancel);
       } else if (kind == "switch_hands") {
         recorder.press(Button::SwitchHands);
+      } else if (kind == "toggle_panel" && header.studio) {
+        recorder.press(Button::Panel);
+      } else if (kind == "point_at" && header.studio) {
+        reader.object(value, at);
+        const nlohmann::json* click = reader.optionalMember(value, "click", at);
+        recorder.pointAt(reader.string(reader.member(value, "item", at), at + ".item"),
+                         reader.duration(value, at, 0.5),
+                         !click || reader.boolean(*click, at + ".click"));
+      } else if (kind == "toggle_panel" || kind == "point_at") {
+        reader.fail(at, "needs a studio script (\"studio\":{} in its header)");
       } else {
         reader.fail(at,
                     "unknown gesture (wait, turn_sheet, move_sheet, scale_sheet, sheet_hand, "
-                    "drag, undo, redo, cancel, switch_hands)");
+                    "drag, undo, redo, cancel, switch_hands, point_at, toggle_panel)");
       }
     } catch (const GestureError& e) {
       if (std::string(e.what()).rfind(name, 0) == 0) throw;
@@ -365,11 +464,11 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
 }  // namespace
 
 Recording recordGestureScriptText(std::string_view text, std::string_view name,
-                                  std::size_t maxFrames) {
+                                  std::size_t maxFrames, const GestureWorldFactory& world) {
   if (text.size() > kMaxGestureScriptBytes)
     throw GestureError(tooLarge(name, text.size(), kMaxGestureScriptBytes, "gesture script"));
   try {
-    return runGestureScript(text, std::string(name), maxFrames);
+    return runGestureScript(text, std::string(name), maxFrames, nullptr, nullptr, nullptr, world);
   } catch (const JsonReadError& e) {
     throw GestureError(e.what());
   }
@@ -387,17 +486,20 @@ std::string readGestureScript(const std::filesystem::path& script) {
 
 }  // namespace
 
-Recording recordGestureScript(const std::filesystem::path& script) {
-  return recordGestureScriptText(readGestureScript(script), script.string());
+Recording recordGestureScript(const std::filesystem::path& script,
+                              const GestureWorldFactory& world) {
+  return recordGestureScriptText(readGestureScript(script), script.string(), kMaxGestureFrames,
+                                 world);
 }
 
 GestureStream streamGestureScript(const std::filesystem::path& script,
                                   const std::function<void(const RecordingHeader&)>& header,
-                                  const GestureRecorder::FrameSink& frame) {
+                                  const GestureRecorder::FrameSink& frame,
+                                  const GestureWorldFactory& world) {
   const std::string text = readGestureScript(script);
   GestureStream stream;
   try {
-    runGestureScript(text, script.string(), kMaxGestureFrames, header, frame, &stream);
+    runGestureScript(text, script.string(), kMaxGestureFrames, header, frame, &stream, world);
   } catch (const JsonReadError& e) {
     throw GestureError(e.what());
   }

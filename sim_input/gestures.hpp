@@ -19,7 +19,12 @@
 //                     "clutch":true}},                         // world pose; clutch optional
 //      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
 //               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional
-//      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}}]}
+//      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}},
+//      {"point_at":{"item":"Create","click":true,"duration":0.5}},  // studio: a panel item
+//      {"toggle_panel":{}}]}                                          // studio: show or hide it
+// A script with "studio":{} (optionally {"recent":[paths]}) is a headset session with its panel:
+// the point hand then has an aim (its ray), and point_at points it at a panel item by the item's
+// label, so a script survives a change of the panel's layout.
 // "grab" is a point near the sheet in sheet coordinates: the nearest surface point is grabbed.
 // "to" and "via" are where that point is dragged, in sheet coordinates of the sheet frame at the
 // start of the drag; a "turn_sheet" inside a drag turns the sheet with the other hand meanwhile,
@@ -58,6 +63,25 @@ struct SheetTurn {
   double degrees = 0.0;
 };
 
+// What a script's frames act on: by default the interaction core over a fold session; a studio
+// script (its header has "studio") acts on the headset's studio, whose panel a gesture can point
+// at by an item's label. The app provides that one (it needs Dear ImGui).
+class GestureWorld {
+ public:
+  virtual ~GestureWorld() = default;
+  virtual void process(const InputFrame& frame) = 0;
+  // The core now (a panel's new sheet replaces it).
+  virtual const InteractionCore& core() const = 0;
+  // The world position of the panel item with this label, when the panel shows it.
+  virtual std::optional<glm::dvec3> panelItem(const std::string& label) const {
+    (void)label;
+    return std::nullopt;
+  }
+  // The panel's front (world), for a hand to point at it from there.
+  virtual std::optional<glm::dvec3> panelFacing() const { return std::nullopt; }
+};
+using GestureWorldFactory = std::function<std::unique_ptr<GestureWorld>(const RecordingHeader&)>;
+
 class GestureRecorder {
  public:
   // Where frames go as they are made instead of into recording().frames (a script streamed to a
@@ -65,8 +89,10 @@ class GestureRecorder {
   using FrameSink = std::function<void(const InputFrame&)>;
 
   // maxFrames bounds the recording (a fuzzer bounds it lower).
+  // world: makes what a studio script's frames act on (a script without "studio" acts on the core
+  // over a fold session); a studio header needs one.
   explicit GestureRecorder(RecordingHeader header, std::size_t maxFrames = kMaxGestureFrames,
-                           FrameSink sink = nullptr);
+                           FrameSink sink = nullptr, const GestureWorldFactory& world = nullptr);
 
   void wait(double seconds);
   // Clutch, turn the sheet about its centre (world axis), release.
@@ -86,14 +112,18 @@ class GestureRecorder {
   void drag(const glm::dvec3& grabNear, const std::vector<glm::dvec3>& path, double seconds,
             const std::optional<SheetTurn>& turnDuring = std::nullopt);
   void press(Button button);
+  // Studio: point the dominant hand's ray at the panel item with this label (from 20 cm in front
+  // of the panel) over `seconds`, and click it with the trigger when `click`. Throws GestureError
+  // when no such item is shown.
+  void pointAt(const std::string& label, double seconds, bool click);
 
   // The header and, without a sink, the frames.
   const Recording& recording() const { return recording_; }
   std::size_t frameCount() const { return frameCount_; }
   // Seconds from the first frame to the last.
   double duration() const { return frameCount_ > 1 ? double(frameCount_ - 1) * dt_ : 0.0; }
-  const FoldSession& session() const { return *session_; }
-  const InteractionCore& core() const { return *core_; }
+  const FoldSession& session() const { return world_->core().session(); }
+  const InteractionCore& core() const { return world_->core(); }
 
  private:
   // The frames `seconds` takes at the header's rate (at least 1); throws GestureError when they
@@ -105,23 +135,31 @@ class GestureRecorder {
   Pose turnedHand(const Pose& start, const Pose& sheetAtStart, const SheetTurn& turn,
                   double fraction) const;
 
+  // The centre of the sheet's bounding box (sheet coordinates), of the session now.
+  glm::dvec3 sheetCentre();
+  // A headset's point hand aims down at the paper between panel gestures, its ray clear of the
+  // panel (a script without a panel records no aim).
+  void aimAtPaper();
+
   Recording recording_;
   FrameSink sink_;
   std::size_t frameCount_ = 0;
-  std::unique_ptr<FoldSession> session_;
-  std::unique_ptr<InteractionCore> core_;
+  std::unique_ptr<GestureWorld> world_;
   InputFrame frame_;
-  glm::dvec3 sheetCentre_{0.0};  // sheet coordinates
+  const FoldSession* centreOf_ = nullptr;
+  glm::dvec3 sheetCentre_{0.0};
   double dt_ = 1.0 / 90.0;
   std::size_t maxFrames_;
 };
 
 // Runs a gesture script (the format above) into a recording. Throws GestureError naming the file
 // and the gesture for anything wrong with the script.
-Recording recordGestureScript(const std::filesystem::path& script);
+Recording recordGestureScript(const std::filesystem::path& script,
+                              const GestureWorldFactory& world = nullptr);
 // The same from the script's text (nameForErrors starts every message), with at most maxFrames.
 Recording recordGestureScriptText(std::string_view text, std::string_view nameForErrors,
-                                  std::size_t maxFrames = kMaxGestureFrames);
+                                  std::size_t maxFrames = kMaxGestureFrames,
+                                  const GestureWorldFactory& world = nullptr);
 
 // Streams a script's recording: `header` once the script's header is read, then every frame as
 // it is made, none held in memory. Returns the frame count and their duration in seconds.
@@ -131,6 +169,7 @@ struct GestureStream {
 };
 GestureStream streamGestureScript(const std::filesystem::path& script,
                                   const std::function<void(const RecordingHeader&)>& header,
-                                  const GestureRecorder::FrameSink& frame);
+                                  const GestureRecorder::FrameSink& frame,
+                                  const GestureWorldFactory& world = nullptr);
 
 }  // namespace curvefold

@@ -65,13 +65,15 @@ const InputFrame& Player::step() {
   const std::size_t foldsBefore = session_.foldCount();
   const std::size_t trianglesBefore = session_.fixed().triangleCount();
   core_.process(frame);
-  logEvents(frame.time, foldsBefore, trianglesBefore);
+  appendFoldLog(log_, session_, core_.events(), frame.time, foldsBefore, trianglesBefore);
   return frame;
 }
 
-void Player::logEvents(double time, std::size_t foldsBefore, std::size_t trianglesBefore) {
+void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
+                   const std::vector<InteractionEvent>& events, double time,
+                   std::size_t foldsBefore, std::size_t trianglesBefore) {
   std::vector<FoldLogKind> kinds;
-  for (const InteractionEvent& event : core_.events()) {
+  for (const InteractionEvent& event : events) {
     if (event.kind == InteractionEventKind::Commit) kinds.push_back(FoldLogKind::Commit);
     if (event.kind == InteractionEventKind::Undo) kinds.push_back(FoldLogKind::Undo);
     if (event.kind == InteractionEventKind::Redo) kinds.push_back(FoldLogKind::Redo);
@@ -79,7 +81,7 @@ void Player::logEvents(double time, std::size_t foldsBefore, std::size_t triangl
   // The core emits these only when the fixed sheet changed, one fold each way. A frame with
   // several (undo and redo pressed together) rebuilds the sheets in between from the history,
   // whose prefix none of them rewrites.
-  const std::vector<FoldRecord>& history = session_.folds();
+  const std::vector<FoldRecord>& history = session.folds();
   std::size_t count = foldsBefore;
   std::size_t triangles = trianglesBefore;
   for (std::size_t i = 0; i < kinds.size(); ++i) {
@@ -93,18 +95,18 @@ void Player::logEvents(double time, std::size_t foldsBefore, std::size_t triangl
       entry.plane = history[entry.fold - 1].plane;
     entry.trianglesBefore = triangles;
     if (i + 1 == kinds.size()) {
-      entry.trianglesAfter = session_.fixed().triangleCount();
-      entry.maxEdgeLengthError = maxEdgeLengthError(session_.fixed());
+      entry.trianglesAfter = session.fixed().triangleCount();
+      entry.maxEdgeLengthError = maxEdgeLengthError(session.fixed());
     } else {
       const Sheet between =
-          replayFolds(session_.initial(),
+          replayFolds(session.initial(),
                       std::vector<FoldRecord>(
                           history.begin(), history.begin() + static_cast<std::ptrdiff_t>(count)));
       entry.trianglesAfter = between.triangleCount();
       entry.maxEdgeLengthError = maxEdgeLengthError(between);
     }
     triangles = entry.trianglesAfter;
-    log_.push_back(entry);
+    log.push_back(entry);
   }
 }
 

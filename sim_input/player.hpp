@@ -38,6 +38,12 @@ std::string foldLogLine(const FoldLogEntry& entry);
 // cheaper than measure() and enough for the log.
 double maxEdgeLengthError(const Sheet& sheet);
 
+// Appends the commits, undos and redos among one frame's `events` to `log`, with the session as
+// it is after that frame (foldsBefore and trianglesBefore: as it was before).
+void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
+                   const std::vector<InteractionEvent>& events, double time,
+                   std::size_t foldsBefore, std::size_t trianglesBefore);
+
 // Steps through a recording frame by frame (a renderer's loop, or replayRecording). Holds a
 // reference to the recording, which must outlive it.
 class Player {
@@ -60,8 +66,6 @@ class Player {
   Design design() const;
 
  private:
-  void logEvents(double time, std::size_t foldsBefore, std::size_t trianglesBefore);
-
   const Recording& recording_;
   FoldSession session_;
   InteractionCore core_;

@@ -114,6 +114,8 @@ TEST(Gestures, ExampleRecordingsAreCurrentAndValid) {
   for (const auto& entry : fs::directory_iterator(kExamples / "scripts")) {
     const std::string name = entry.path().stem().stem().string();  // x.gesture.json -> x
     SCOPED_TRACE(name);
+    // A headset studio script runs the panel (Dear ImGui): test_headset_studio checks it.
+    if (readRecording(kExamples / "recordings" / (name + ".jsonl")).header.studio) continue;
     ++examples;
     const Recording made = recordGestureScript(entry.path());
     const Recording stored = readRecording(kExamples / "recordings" / (name + ".jsonl"));

@@ -115,5 +115,37 @@ TEST_F(StudioPanelTest, ARecordedSessionOffersNoNewSheetOrOpen) {
   EXPECT_TRUE(panel_.itemCentre("Save"));
 }
 
+// Saving puts the design at the top of the recent list (the host keeps it); the list opens it
+// again, by its file name; a replay's host (writeFile set) writes nothing.
+TEST_F(StudioPanelTest, SavedDesignsAreRecentAndOpenFromTheList) {
+  std::vector<std::vector<std::string>> kept;
+  actions_.recentChanged = [&kept](const std::vector<std::string>& recent) {
+    kept.push_back(recent);
+  };
+  const std::string saved = (dir_ / "bowl.curvefold.json").string();
+  panel_.setSavePath(saved);
+  panel_.setRecent({"/elsewhere/old.curvefold.json"});
+  click("Save");
+  ASSERT_TRUE(fs::exists(saved)) << panel_.message();
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0], (std::vector<std::string>{saved, "/elsewhere/old.curvefold.json"}));
+  EXPECT_EQ(panel_.recent(), kept[0]);
+  click("Recent designs");
+  click("bowl.curvefold.json");
+  ASSERT_EQ(replaced_.size(), 1u);
+  EXPECT_EQ(replaced_[0], saved);
+  EXPECT_EQ(panel_.message(), "opened " + saved);
+
+  std::vector<std::string> asked;
+  actions_.writeFile = [&asked](const std::string& path,
+                                const std::function<void(const std::string&)>&) {
+    asked.push_back(path);
+  };
+  fs::remove(saved);
+  click("Save");
+  EXPECT_EQ(asked, (std::vector<std::string>{saved}));
+  EXPECT_FALSE(fs::exists(saved));
+}
+
 }  // namespace
 }  // namespace curvefold::cli

@@ -178,6 +178,78 @@ TEST_F(XrApp, TwoHandedScaleGoesThroughTheRuntime) {
   EXPECT_NE(slurp(path("xr.jsonl")).find("\"grip\":1"), std::string::npos);
 }
 
+// A FOLD file's folded form is isometric to its crease pattern (every face edge the same length
+// in 3D as in 2D), with no degenerate face, and has creases.
+void expectFoldInvariants(const json& fold) {
+  const json& flat = fold["vertices_coords"];
+  const json& folded = fold["file_frames"][0]["vertices_coords"];
+  ASSERT_EQ(flat.size(), folded.size());
+  ASSERT_GT(fold["faces_vertices"].size(), 0u);
+  double worst = 0.0, smallestArea = 1e9;
+  for (const json& face : fold["faces_vertices"]) {
+    ASSERT_EQ(face.size(), 3u);
+    double p[3][3], q[3][2];
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t v = face[i].get<std::size_t>();
+      for (int k = 0; k < 3; ++k) p[i][k] = folded[v][k].get<double>();
+      for (int k = 0; k < 2; ++k) q[i][k] = flat[v][k].get<double>();
+    }
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      const double l3 = std::hypot(p[i][0] - p[j][0], p[i][1] - p[j][1], p[i][2] - p[j][2]);
+      const double l2 = std::hypot(q[i][0] - q[j][0], q[i][1] - q[j][1]);
+      worst = std::max(worst, std::abs(l3 - l2));
+    }
+    smallestArea = std::min(smallestArea, std::abs((q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) -
+                                                   (q[2][0] - q[0][0]) * (q[1][1] - q[0][1])));
+  }
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(smallestArea, 0.0);
+  const std::string assignments = fold["edges_assignment"].dump();
+  EXPECT_TRUE(assignments.find("\"M\"") != std::string::npos ||
+              assignments.find("\"V\"") != std::string::npos);
+}
+
+// Issue 14, 6: a whole design made in the headset through its panel alone (a new cone from the
+// panel, three folds, a two-handed scale, FOLD and SVG exported from the panel) goes through the
+// runtime as the replay has it: the exports land in --export-dir and hold the folded cone, the
+// views show the panel, and the session's own recording replays, panel and all, to its design.
+TEST_F(XrApp, AStudioSessionMakesAndExportsADesignFromThePanel) {
+  const std::string input = kExamples + "xr_studio.jsonl";
+  const fs::path views = path("views"), exports = path("exports");
+  const CommandResult result =
+      run("xr " + input + " --validation --export-dir " + exports.string() +
+              " --record xr.jsonl --autosave " + path("studio.curvefold.json").string(),
+          simulated(input,
+                    "CURVEFOLD_SIM_VIEW_SIZE=320x320 CURVEFOLD_SIM_SAVE_VIEWS=" + views.string()));
+  ASSERT_EQ(result.exitCode, 0) << result.err << result.out;
+  // The new sheet got its own autosave; the square it replaced kept its own.
+  EXPECT_NE(result.out.find("cone.autosave.curvefold.json"), std::string::npos) << result.out;
+  const json design = load("cone.autosave.curvefold.json");
+  EXPECT_EQ(design["surface"]["generator"], "cone");
+  EXPECT_GE(design["folds"].size(), 3u);
+  const json reference = replayed(input, "reference");
+  expectClose(design["folds"], reference["folds"], 1e-5, "folds");
+
+  ASSERT_TRUE(fs::exists(exports / "cone.fold"));
+  ASSERT_TRUE(fs::exists(exports / "cone.svg"));
+  const json fold = json::parse(slurp(exports / "cone.fold"));
+  expectFoldInvariants(fold);
+  const std::string svg = slurp(exports / "cone.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_TRUE(fs::exists(views / "view0.png"));
+  EXPECT_TRUE(fs::exists(views / "view1.png"));
+
+  // The session's recording is a studio one and replays to the very design.
+  const std::string recorded = slurp(path("xr.jsonl"));
+  EXPECT_NE(recorded.substr(0, recorded.find('\n')).find("\"studio\""), std::string::npos);
+  const CommandResult again =
+      run("replay " + path("xr.jsonl").string() + " --out " + path("again").string());
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_EQ(json::parse(slurp(path("again") / "xr.curvefold.json"))["folds"], design["folds"]);
+}
+
 TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {
   const std::string input = kExamples + "half_cylinder.jsonl";  // folds, undo and redo
   const json reference = replayed(input, "reference");

@@ -22,6 +22,7 @@
 #include "app/desktop/desktop_input.hpp"
 #include "app/document.hpp"
 #include "app/interaction_scene.hpp"
+#include "app/recent_designs.hpp"
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -255,6 +256,7 @@ void runDesigner(const DesignerOptions& options) {
   StudioPanel panel(outputs.wantsRecording(),
                     "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
                     "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
+  panel.setRecent(loadRecentDesigns());
   StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;
@@ -294,10 +296,17 @@ void runDesigner(const DesignerOptions& options) {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    const StudioActions actions{
+    StudioActions actions{
         [&](const Design& next, const std::string& name) { replaceDocument(next, name); },
         [&](Button button) { state.input.pulse(button); },
         [&](const std::string& path) { exportPng(context, lastScene, target.extent(), path); }};
+    actions.recentChanged = [&panel](const std::vector<std::string>& recent) {
+      try {
+        saveRecentDesigns(recent);
+      } catch (const std::exception& e) {
+        panel.setMessage(std::string("recent designs not kept: ") + e.what());
+      }
+    };
     panel.draw(doc, actions, stats, creasePatternPanel);
     ImGui::Render();
 

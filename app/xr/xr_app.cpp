@@ -1,11 +1,14 @@
 #include "app/xr/xr_app.hpp"
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
+#include "app/recent_designs.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/render/scene_builder.hpp"
@@ -16,6 +19,8 @@
 #include "sim_input/recording.hpp"
 
 namespace curvefold::cli {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -77,6 +82,10 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     recordingHeader_.surface = doc_.recordingSurface();
   }
 
+  makeStudio(sheetFrame);
+  if (outputs_->wantsRecording())
+    recordingHeader_.studio = RecordingHeader::Studio{studio_->panel().recent()};
+
   if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
   program_ = std::make_unique<XrProgram>(XrProgramOptions{}, graphics_.get());
   input_ = std::make_unique<XrInput>(program_->instance());
@@ -95,6 +104,44 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
 }
 
 XrApp::~XrApp() = default;
+
+void XrApp::makeStudio(const Pose& sheetFrame) {
+  HeadsetStudioOptions options;
+  options.exportDir = options_.exportDir;
+  if (options.exportDir.empty()) {
+    options.exportDir = fs::path(autosave_).parent_path().string();
+    if (options.exportDir.empty()) options.exportDir = ".";
+  }
+  options.name = options_.input.empty() ? kDefaultSurface : options_.input;
+  options.recent = loadRecentDesigns();
+  options.sheetFrame = sheetFrame;
+  HeadsetStudioHost host;
+  host.documentReplacing = [this](const std::string& name) {
+    // The design left behind keeps its autosave; the next gets its own.
+    outputs_->switchAutosave(nextAutosave(outputs_->autosavePath(), name));
+  };
+  host.documentReplaced = [this] {
+    if (graphics_ && graphics_->renderer()) graphics_->renderer()->markSheetReplaced();
+    tracker_ = std::make_unique<SessionSheetTracker>();
+    summary_.autosave = outputs_->autosavePath();
+  };
+  host.writeFile = [](const std::string& path,
+                      const std::function<void(const std::string&)>& write) {
+    const fs::path parent = fs::path(path).parent_path();
+    std::error_code error;
+    if (!parent.empty()) fs::create_directories(parent, error);
+    if (error) throw FileError("cannot create " + parent.string() + ": " + error.message());
+    write(path);
+  };
+  host.recentChanged = [](const std::vector<std::string>& recent) {
+    try {
+      saveRecentDesigns(recent);
+    } catch (const std::exception& e) {
+      std::cerr << "\ncurvefold: warning: recent designs not kept: " << e.what() << std::flush;
+    }
+  };
+  studio_ = std::make_unique<HeadsetStudio>(doc_, std::move(options), std::move(host));
+}
 
 bool XrApp::startSession() {
   if (!program_->findSystem()) return false;
@@ -128,7 +175,7 @@ void XrApp::processInput(XrTime displayTime) {
   if (!input_->poll(program_->baseSpace(), displayTime, doc_.core->handedness(), seconds, input))
     return;
   const Handedness handedness = doc_.core->handedness();
-  doc_.core->process(input);
+  studio_->process(input, stats_);
   lastInput_ = input;
   ++summary_.framesProcessed;
   input_->applyHaptics(doc_.core->haptics(), handedness);
@@ -152,7 +199,7 @@ void XrApp::buildScene() {
   addControllerModels(scene_, *doc_.core, lastInput_, input_->pointAim());
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
-  if (lastInput_.sheetHand.tracked) {
+  if (lastInput_.sheetHand.tracked && studio_->creasePattern()) {
     addHeldPanel(scene_, panelCache_.panelFor(*doc_.session, scene_.colors),
                  lastInput_.sheetHand.pose, sheetHandSide(doc_.core->handedness()));
   }

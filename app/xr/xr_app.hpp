@@ -16,6 +16,7 @@
 #include "app/document.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/session_outputs.hpp"
+#include "app/studio_panel.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/xr/xr_program.hpp"
@@ -28,10 +29,13 @@ class SessionSheetTracker;
 
 namespace curvefold::cli {
 
+class HeadsetStudio;
+
 struct XrAppOptions {
-  std::string input;     // design file, surface name, recording (its surface) or empty
-  std::string record;    // recording of this session's input frames (*.jsonl)
-  std::string autosave;  // design written after every committed fold and at the end
+  std::string input;      // design file, surface name, recording (its surface) or empty
+  std::string record;     // recording of this session's input frames (*.jsonl)
+  std::string autosave;   // design written after every committed fold and at the end
+  std::string exportDir;  // where the panel's exports go (default: beside the design)
   bool leftHanded = false;
   bool headless = false;  // XR_MND_headless: input only, nothing drawn
   bool validation = false;
@@ -47,7 +51,7 @@ struct XrAppSummary {
   std::array<std::string, 2> profiles;  // the last interaction profile of each hand
   bool instanceLost = false;
   bool interrupted = false;  // ended by requestExit (Ctrl+C)
-  std::string autosave;
+  std::string autosave;      // the last design's (a new sheet from the panel starts another)
 };
 
 class XrApp {
@@ -69,6 +73,7 @@ class XrApp {
   bool startSession();  // finds the system and creates the session; false without a headset
 
   const Document& document() const { return doc_; }
+  const HeadsetStudio& studio() const { return *studio_; }
   const std::string& runtimeName() const { return summary_.runtime; }
 
  private:
@@ -76,6 +81,7 @@ class XrApp {
   void processInput(XrTime displayTime);
   void startRecording(XrDuration period);
   const Scene& eyeScene(const Camera& camera);
+  void makeStudio(const Pose& sheetFrame);
   void buildScene();
 
   XrAppOptions options_;
@@ -87,6 +93,7 @@ class XrApp {
   std::string autosave_;
   RecordingHeader recordingHeader_;          // its rate is set from the runtime's frame period
   std::unique_ptr<SessionOutputs> outputs_;  // after doc_: finishes (saves) before doc_ goes
+  std::unique_ptr<HeadsetStudio> studio_;    // after doc_, which it edits
   InputFrame lastInput_;
   bool haveFirstTime_ = false;
   XrTime firstTime_ = 0;
@@ -94,6 +101,7 @@ class XrApp {
   Scene scene_;
   Ground ground_;
   CreasePatternCache panelCache_;
+  StudioStats stats_;
   bool restart_ = false;
   XrAppSummary summary_;
 };

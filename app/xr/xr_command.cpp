@@ -74,6 +74,9 @@ void addXrCommand(CLI::App& app) {
   command->add_option("--autosave", options->autosave,
                       "Design saved after every committed fold and at the end (default: "
                       "<name>.autosave.curvefold.json)");
+  command->add_option("--export-dir", options->exportDir,
+                      "Folder for the panel's exports (FOLD, SVG, OBJ, glTF, PNG) and saves "
+                      "(default: beside the design's autosave)");
   command->add_flag("--left-handed", options->leftHanded,
                     "The left hand folds and the right holds the sheet");
   command->add_flag("--headless", options->headless, "Input only, nothing drawn (XR_MND_headless)");

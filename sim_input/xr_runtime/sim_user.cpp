@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,6 +34,14 @@ SimConfig SimConfig::fromEnvironment() {
   }
   config.forcedProfile = env("CURVEFOLD_SIM_PROFILE");
   config.saveViews = env("CURVEFOLD_SIM_SAVE_VIEWS");
+  if (!config.saveViews.empty()) {
+    // The folder is made as a camera's would be: the views are what was asked for.
+    std::error_code error;
+    std::filesystem::create_directories(config.saveViews, error);
+    if (error)
+      throw std::runtime_error("CURVEFOLD_SIM_SAVE_VIEWS: cannot create " + config.saveViews +
+                               ": " + error.message());
+  }
   config.logPath = env("CURVEFOLD_SIM_LOG");
   config.hold = env("CURVEFOLD_SIM_HOLD") == "1";
   config.realtime = env("CURVEFOLD_SIM_REALTIME") == "1";

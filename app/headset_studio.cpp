@@ -1,0 +1,271 @@
+#include "app/headset_studio.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+namespace curvefold::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Makes a context current for a scope and puts the previous one back (the desktop window may
+// have its own).
+class ContextScope {
+ public:
+  explicit ContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
+    ImGui::SetCurrentContext(context);
+  }
+  ~ContextScope() { ImGui::SetCurrentContext(previous_); }
+
+ private:
+  ImGuiContext* previous_;
+};
+
+// "cone" for a surface, "bowl" for "designs/bowl.curvefold.json".
+std::string designName(const std::string& name) {
+  std::string stem = fs::path(name).filename().string();
+  for (const char* suffix : {".json", ".curvefold", ".autosave", ".jsonl"})
+    if (stem.size() > std::string_view(suffix).size() && stem.ends_with(suffix))
+      stem.resize(stem.size() - std::string_view(suffix).size());
+  return stem.empty() ? "design" : stem;
+}
+
+// The thumbstick scrolls this many wheel steps a second when pushed all the way.
+constexpr double kScrollStepsPerSecond = 10.0;
+
+}  // namespace
+
+HeadsetStudio::HeadsetStudio(Document& doc, HeadsetStudioOptions options, HeadsetStudioHost host)
+    : doc_(doc),
+      options_(std::move(options)),
+      host_(std::move(host)),
+      panel_(false,
+             "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
+             "at the tip: fold. Panel button: show or hide this panel.") {
+  context_ = ImGui::CreateContext();
+  ContextScope scope(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini: the layout is the code's, the same in every replay
+  io.LogFilename = nullptr;
+  io.DisplaySize = ImVec2(float(options_.pixels.x), float(options_.pixels.y));
+  unsigned char* pixels = nullptr;
+  int width = 0, height = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // a frame needs the atlas built
+  panel_.setFillsDisplay(true);
+  panel_.setRecent(options_.recent);
+  nameDesign(options_.name);
+}
+
+HeadsetStudio::~HeadsetStudio() {
+  ImGuiContext* previous = ImGui::GetCurrentContext();
+  ImGui::DestroyContext(context_);
+  if (previous != context_) ImGui::SetCurrentContext(previous);
+}
+
+void HeadsetStudio::nameDesign(const std::string& name) {
+  const std::string base = (fs::path(options_.exportDir) / designName(name)).string();
+  panel_.setExportBase(base);
+  panel_.setSavePath(base + ".curvefold.json");
+}
+
+void HeadsetStudio::replace(const Design& design, const std::string& name) {
+  const Handedness handedness = doc_.core->handedness();
+  Document fresh = makeDocument(design, name, options_.sheetFrame, handedness);
+  if (host_.documentReplacing) host_.documentReplacing(name);
+  doc_.core.reset();
+  doc_ = std::move(fresh);
+  nameDesign(name);
+  if (host_.documentReplaced) host_.documentReplaced();
+}
+
+glm::dvec3 HeadsetStudio::panelPoint(const glm::dvec2& pixel) const {
+  const glm::dvec2 size = options_.placement.size;
+  const glm::dvec2 uv = pixel / glm::dvec2(options_.pixels);
+  return worldFromPanel_->apply({(uv.x - 0.5) * size.x, (0.5 - uv.y) * size.y, 0.0});
+}
+
+std::optional<glm::dvec3> HeadsetStudio::itemWorld(const std::string& label) const {
+  if (!shown_ || !worldFromPanel_) return std::nullopt;
+  const std::optional<glm::vec2> at = panel_.itemCentre(label);
+  if (!at) return std::nullopt;
+  return panelPoint(glm::dvec2(*at));
+}
+
+std::optional<glm::dvec3> HeadsetStudio::facing() const {
+  if (!worldFromPanel_) return std::nullopt;
+  return worldFromPanel_->applyToDirection({0.0, 0.0, 1.0});
+}
+
+std::optional<PanelRayHit> HeadsetStudio::ray() const {
+  if (pointer_.target() != PointTarget::Panel) return std::nullopt;
+  return hit_;
+}
+
+ImDrawData* HeadsetStudio::drawData() const {
+  if (!shown_ || !drawn_) return nullptr;
+  ContextScope scope(context_);
+  return ImGui::GetDrawData();
+}
+
+void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
+  // The panel button shows and hides the panel (on its press).
+  const std::uint32_t pressed = frame.buttons & ~buttonsHeld_;
+  buttonsHeld_ = frame.buttons;
+  if (pressed & static_cast<std::uint32_t>(Button::Panel)) {
+    shown_ = !shown_;
+    pointer_.reset();
+  }
+  if (frame.sheetHand.tracked)
+    worldFromPanel_ = frame.sheetHand.pose * options_.placement.handFromPanel;
+
+  hit_.reset();
+  const InputFrame::PointHand& point = frame.pointHand;
+  if (shown_ && worldFromPanel_ && point.tracked && point.aim)
+    hit_ =
+        rayOnPanel(*worldFromPanel_, options_.placement.size, point.position, point.aimDirection());
+  const bool dragging = doc_.core->state() == InteractionState::Dragging;
+  const PointTarget target = pointer_.update(frame, shown_ ? hit_ : std::nullopt, dragging);
+
+  pressedByPanel_ = 0;
+  if (shown_) {
+    ContextScope scope(context_);
+    ImGuiIO& io = ImGui::GetIO();
+    const double dt = std::max(frame.time - lastTime_, 1e-4);
+    io.DeltaTime = float(dt);
+    io.MousePos =
+        hit_ && target == PointTarget::Panel
+            ? ImVec2(float(hit_->uv.x * options_.pixels.x), float(hit_->uv.y * options_.pixels.y))
+            : ImVec2(-FLT_MAX, -FLT_MAX);
+    io.MouseDown[0] = pointer_.buttonDown();
+    io.MouseWheel =
+        target == PointTarget::Panel ? float(point.scroll * kScrollStepsPerSecond * dt) : 0.0f;
+    StudioActions actions;
+    actions.replaceDocument = [this](const Design& design, const std::string& name) {
+      replace(design, name);
+    };
+    actions.press = [this](Button button) {
+      pressedByPanel_ |= static_cast<std::uint32_t>(button);
+    };
+    actions.exportPng = [this](const std::string& path) {
+      if (!host_.exportPng) throw std::runtime_error("no renderer to write " + path);
+      host_.exportPng(path);
+    };
+    actions.resetView = [this] { doc_.core->resetView(); };
+    actions.writeFile = host_.writeFile;
+    actions.recentChanged = host_.recentChanged;
+    ImGui::NewFrame();
+    panel_.draw(doc_, actions, stats, creasePattern_);
+    ImGui::Render();
+    drawn_ = true;
+  }
+  lastTime_ = std::max(lastTime_, frame.time);
+
+  // The buttons the panel pressed reach the core in this frame, as presses (a frame later they
+  // are released).
+  InputFrame input = frame;
+  input.buttons |= pressedByPanel_;
+  doc_.core->process(input, target);
+}
+
+ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options) {
+  if (!recording.header.studio)
+    throw std::invalid_argument("replayStudioRecording: the recording has no studio");
+  Document doc = makeDocument(Design{recording.header.surface, {}}, "recording",
+                              recording.header.sheetFrame, recording.header.handedness);
+  HeadsetStudioOptions studioOptions;
+  studioOptions.recent = recording.header.studio->recent;
+  studioOptions.sheetFrame = recording.header.sheetFrame;
+  studioOptions.name = "recording";
+  HeadsetStudioHost host;
+  // A replay makes the design, not the session's files.
+  host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};
+  HeadsetStudio studio(doc, studioOptions, host);
+
+  ReplayResult result;
+  const std::vector<InputFrame>& frames = recording.frames;
+  const double start = frames.empty() ? 0.0 : frames.front().time;
+  ReplayProgress progress;
+  progress.frameCount = frames.size();
+  progress.duration = frames.empty() ? 0.0 : frames.back().time - start;
+  const auto clockStart = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const double time = frames[i].time - start;
+    if (options.realtime)
+      std::this_thread::sleep_until(clockStart +
+                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(time)));
+    const FoldSession* before = doc.session.get();
+    const std::size_t foldsBefore = doc.session->foldCount();
+    const std::size_t trianglesBefore = doc.session->fixed().triangleCount();
+    studio.process(frames[i]);
+    // A new sheet starts its fold count again; its events are logged against it.
+    appendFoldLog(
+        result.log, *doc.session, doc.core->events(), frames[i].time,
+        doc.session.get() == before ? foldsBefore : 0,
+        doc.session.get() == before ? trianglesBefore : doc.session->initial().triangleCount());
+    progress.frame = i + 1;
+    progress.time = time;
+    if (options.onFrame) options.onFrame(progress);
+  }
+  result.design = doc.design();
+  result.sheet = doc.session->fixed();
+  result.frameCount = frames.size();
+  result.duration = progress.duration;
+  result.endedWhileDragging = doc.session->dragging();
+  return result;
+}
+
+ReplayResult replayAnyRecording(const Recording& recording, const ReplayOptions& options) {
+  return recording.header.studio ? replayStudioRecording(recording, options)
+                                 : replayRecording(recording, options);
+}
+
+namespace {
+
+class StudioGestureWorld : public GestureWorld {
+ public:
+  explicit StudioGestureWorld(const RecordingHeader& header)
+      : doc_(makeDocument(Design{header.surface, {}}, "script", header.sheetFrame,
+                          header.handedness)),
+        studio_(doc_, optionsFor(header), hostWritingNothing()) {}
+
+  void process(const InputFrame& frame) override { studio_.process(frame); }
+  const InteractionCore& core() const override { return *doc_.core; }
+  std::optional<glm::dvec3> panelItem(const std::string& label) const override {
+    return studio_.itemWorld(label);
+  }
+  std::optional<glm::dvec3> panelFacing() const override { return studio_.facing(); }
+
+ private:
+  static HeadsetStudioOptions optionsFor(const RecordingHeader& header) {
+    HeadsetStudioOptions options;
+    options.recent = header.studio ? header.studio->recent : std::vector<std::string>{};
+    options.sheetFrame = header.sheetFrame;
+    options.name = "script";
+    return options;
+  }
+  static HeadsetStudioHost hostWritingNothing() {
+    HeadsetStudioHost host;
+    host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};
+    return host;
+  }
+
+  Document doc_;
+  HeadsetStudio studio_;
+};
+
+}  // namespace
+
+GestureWorldFactory studioGestureWorld() {
+  return [](const RecordingHeader& header) -> std::unique_ptr<GestureWorld> {
+    return std::make_unique<StudioGestureWorld>(header);
+  };
+}
+
+}  // namespace curvefold::cli

@@ -1,0 +1,123 @@
+// The studio in the headset (issue 14): the studio panel (app/studio_panel.hpp) on a card held
+// by the non-dominant hand and worked by the dominant hand's aim ray, the trigger as its button
+// and the thumbstick as its wheel; the panel button (Button::Panel) shows and hides it, and it is
+// shown at start. Each input frame goes to the panel first, then to the interaction core, which
+// then gets the buttons the panel pressed (undo, redo, ...) and is told whether the point hand is
+// on the panel (so the tip does not grab through it).
+//
+// The studio runs the same with or without drawing: the headset draws its draw data into a
+// texture, while a replay or a gesture script only runs it. Since the panel's actions come from
+// the recorded hands like everything else, a studio recording replays to the same design.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "app/document.hpp"
+#include "app/studio_panel.hpp"
+#include "interaction/panel_pointer.hpp"
+#include "sim_input/gestures.hpp"
+#include "sim_input/player.hpp"
+
+struct ImGuiContext;
+struct ImDrawData;
+
+namespace curvefold::cli {
+
+// What the studio asks of the program it runs in.
+struct HeadsetStudioHost {
+  // Renders the design to a PNG; null: PNG export says there is no renderer.
+  std::function<void(const std::string& path)> exportPng;
+  // The document is about to be replaced (the old one is still there).
+  std::function<void(const std::string& name)> documentReplacing;
+  // The document was replaced (a new sheet, an opened design): drop what was made from the old.
+  std::function<void()> documentReplaced;
+  // See StudioActions: a replay sets one that writes nothing; null writes.
+  std::function<void(const std::string& path, const std::function<void(const std::string&)>& write)>
+      writeFile;
+  std::function<void(const std::vector<std::string>& recent)> recentChanged;
+};
+
+struct HeadsetStudioOptions {
+  std::string exportDir = ".";  // exports go to <exportDir>/<design name>.<extension>
+  std::string name;             // the design's name ("cone", a file's stem)
+  std::vector<std::string> recent;
+  Pose sheetFrame;  // where a new sheet starts
+  glm::ivec2 pixels{480, 600};
+  PanelPlacement placement = heldPanelPlacement();
+};
+
+class HeadsetStudio {
+ public:
+  HeadsetStudio(Document& doc, HeadsetStudioOptions options, HeadsetStudioHost host = {});
+  ~HeadsetStudio();
+  HeadsetStudio(const HeadsetStudio&) = delete;
+  HeadsetStudio& operator=(const HeadsetStudio&) = delete;
+
+  // One input frame (its time never going back): the panel button, the ray, the panel (whose
+  // actions act now), then the core.
+  void process(const InputFrame& frame, const StudioStats& stats = {});
+
+  bool shown() const { return shown_; }
+  // Where the panel is (world), once its hand has been seen; it stays where it was while the hand
+  // is lost.
+  const std::optional<Pose>& worldFromPanel() const { return worldFromPanel_; }
+  // This frame's ray on the panel's plane while the panel has the point hand (the ray is drawn
+  // only then).
+  std::optional<PanelRayHit> ray() const;
+  PointTarget target() const { return pointer_.target(); }
+  const PanelPlacement& placement() const { return options_.placement; }
+  glm::ivec2 pixels() const { return options_.pixels; }
+  bool creasePattern() const { return creasePattern_; }
+
+  // The world position of the panel item with this label, when the panel shows it.
+  std::optional<glm::dvec3> itemWorld(const std::string& label) const;
+  // The panel's front (world), for a hand to point at it.
+  std::optional<glm::dvec3> facing() const;
+
+  // The last frame's draw data (none before the first frame or while hidden), and the context
+  // it belongs to, for a renderer.
+  ImDrawData* drawData() const;
+  ImGuiContext* context() const { return context_; }
+  const StudioPanel& panel() const { return panel_; }
+  StudioPanel& panel() { return panel_; }
+
+ private:
+  void replace(const Design& design, const std::string& name);
+  void nameDesign(const std::string& name);
+  glm::dvec3 panelPoint(const glm::dvec2& pixel) const;
+
+  Document& doc_;
+  HeadsetStudioOptions options_;
+  HeadsetStudioHost host_;
+  ImGuiContext* context_ = nullptr;
+  StudioPanel panel_;
+  PanelPointer pointer_;
+  bool shown_ = true;
+  bool creasePattern_ = true;
+  std::uint32_t buttonsHeld_ = 0;
+  std::optional<Pose> worldFromPanel_;
+  std::optional<PanelRayHit> hit_;
+  std::uint32_t pressedByPanel_ = 0;
+  double lastTime_ = 0.0;
+  bool drawn_ = false;
+};
+
+// Replays a studio recording (its header has "studio"): the panel runs without drawing and writes
+// no file, so the design comes out as the session made it. The log lists folds, undos and redos
+// as replayRecording's does, across new sheets.
+ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options = {});
+
+// Any recording: a studio one with its panel, any other as replayRecording does.
+ReplayResult replayAnyRecording(const Recording& recording, const ReplayOptions& options = {});
+
+// What a studio gesture script acts on: a studio over the script's surface, which writes no file,
+// so `point_at` can find the panel's items by label.
+GestureWorldFactory studioGestureWorld();
+
+}  // namespace curvefold::cli

@@ -1,0 +1,228 @@
+// The studio in the headset (issue 14, 1 and 6), headless: the panel on the non-dominant hand,
+// worked by the dominant hand's ray, in a studio recording made from a gesture script that points
+// at panel items by their label. The same studio runs in `curvefold xr` (test_xr drives it through
+// the runtime) and in `curvefold replay`.
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/quaternion.hpp>
+
+#include "app/headset_studio.hpp"
+#include "sheet_fixtures.hpp"
+#include "sim_input/gestures.hpp"
+#include "sim_input/recording.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kExamples = fs::path(CURVEFOLD_SOURCE_DIR) / "examples";
+
+// What a studio asked its host to write, and how often it replaced the document.
+struct HostLog {
+  std::vector<std::string> written;
+  int replaced = 0;
+};
+
+HeadsetStudioHost loggingHost(HostLog& log) {
+  HeadsetStudioHost host;
+  host.writeFile = [&log](const std::string& path, const std::function<void(const std::string&)>&) {
+    log.written.push_back(path);
+  };
+  host.documentReplaced = [&log] { ++log.replaced; };
+  return host;
+}
+
+HeadsetStudioOptions optionsFor(const RecordingHeader& header) {
+  HeadsetStudioOptions options;
+  options.exportDir = "exports";
+  options.name = "recording";
+  options.sheetFrame = header.sheetFrame;
+  return options;
+}
+
+// The example studio session: its script records to exactly the checked-in recording, which,
+// through the panel alone, makes a new cone, folds it at least three times, scales it with both
+// hands, and exports FOLD and SVG; every fold keeps the invariants, and the replay command's
+// studio replay makes the same design.
+TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
+  const Recording made =
+      recordGestureScript(kExamples / "scripts" / "xr_studio.gesture.json", studioGestureWorld());
+  const Recording stored = readRecording(kExamples / "recordings" / "xr_studio.jsonl");
+  ASSERT_TRUE(stored.header.studio);
+  ASSERT_EQ(stored.frames.size(), made.frames.size()) << "regenerate: scripts/make-examples.sh";
+  for (std::size_t i = 0; i < made.frames.size(); ++i)
+    ASSERT_EQ(frameLine(stored.frames[i]), frameLine(made.frames[i])) << "frame " << i;
+  // Only the headset: no button is pressed but through the panel, the tip and the grips.
+  for (const InputFrame& frame : stored.frames) {
+    EXPECT_FALSE(frame.held(Button::Undo) || frame.held(Button::Redo));
+    EXPECT_TRUE(frame.pointHand.aim.has_value());
+  }
+
+  Document doc = makeDocument(Design{stored.header.surface, {}}, "recording",
+                              stored.header.sheetFrame, stored.header.handedness);
+  HostLog log;
+  HeadsetStudio studio(doc, optionsFor(stored.header), loggingHost(log));
+  double largestScale = 1.0;
+  std::size_t foldsSeen = 0;
+  for (const InputFrame& frame : stored.frames) {
+    studio.process(frame);
+    largestScale = std::max(largestScale, doc.core->viewScale());
+    if (doc.session->foldCount() != foldsSeen) {
+      foldsSeen = doc.session->foldCount();
+      testing::expectInvariants(doc.session->fixed(), doc.session->initial());
+    }
+  }
+  const Design design = doc.design();
+  ASSERT_TRUE(std::holds_alternative<GeneratedSurface>(design.surface));
+  EXPECT_EQ(std::get<GeneratedSurface>(design.surface).generator, "cone");
+  EXPECT_EQ(log.replaced, 1);
+  EXPECT_GE(design.folds.size(), 3u);
+  EXPECT_GT(largestScale, 1.3);  // the script spreads the hands to 1.5
+  EXPECT_EQ(log.written, (std::vector<std::string>{"exports/cone.fold", "exports/cone.svg"}));
+
+  const ReplayResult replayed = replayStudioRecording(stored);
+  EXPECT_EQ(designText(replayed.design), designText(design));
+  EXPECT_EQ(replayed.log.size(), design.folds.size());
+}
+
+// A studio script needs the panel: without the app's world it is refused with a line saying so.
+TEST(HeadsetStudio, AStudioScriptWithoutThePanelIsRefused) {
+  try {
+    recordGestureScript(kExamples / "scripts" / "xr_studio.gesture.json");
+    FAIL() << "no error";
+  } catch (const GestureError& e) {
+    EXPECT_NE(std::string(e.what()).find("curvefold record-script"), std::string::npos) << e.what();
+  }
+}
+
+class HeldPanel : public ::testing::Test {
+ protected:
+  HeldPanel()
+      : doc_(makeDocument(Design{GeneratedSurface{"square", {{"resolution", 10}}}, {}}, "square",
+                          defaultSheetFrame())),
+        studio_(doc_, optionsFor(RecordingHeader{}), loggingHost(log_)) {
+    // The sheet hand to the left of the sheet and behind it, not holding it; the panel above it.
+    frame_.sheetHand.tracked = true;
+    frame_.sheetHand.pose.position = {-0.25, 1.0, -0.6};  // the panel behind the sheet
+    frame_.pointHand.tracked = true;
+    frame_.pointHand.aim = kDown;
+    frame_.pointHand.position = {0.2, 1.3, -0.2};
+    send();
+  }
+  void send() {
+    frame_.time += 1.0 / 60.0;
+    studio_.process(frame_);
+  }
+  // The tip on the sheet's centre, aiming at the panel item with this label.
+  void tipOnSheetAimingAt(const std::string& label) {
+    frame_.pointHand.position = doc_.core->worldOf({0.0, 0.0, 0.0});
+    const std::optional<glm::dvec3> item = studio_.itemWorld(label);
+    ASSERT_TRUE(item) << label;
+    frame_.pointHand.aim = glm::normalize(
+        glm::dquat(glm::dvec3(0.0, 0.0, -1.0), glm::normalize(*item - frame_.pointHand.position)));
+  }
+
+  const glm::dquat kDown = glm::angleAxis(-0.5 * std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
+  Document doc_;
+  HostLog log_;
+  HeadsetStudio studio_;
+  InputFrame frame_;
+};
+
+// While the ray is on the panel, the trigger works the panel, not the sheet under the tip.
+TEST_F(HeldPanel, OnThePanelTheTriggerClicksAndTheTipDoesNotGrab) {
+  ASSERT_TRUE(studio_.shown());  // shown at start
+  tipOnSheetAimingAt("FOLD");
+  send();
+  ASSERT_TRUE(studio_.ray().has_value());  // the ray is drawn: it is on the panel
+  EXPECT_EQ(studio_.target(), PointTarget::Panel);
+  EXPECT_FALSE(doc_.core->hover().has_value());
+  frame_.pointHand.select = 1.0;
+  send();
+  send();
+  EXPECT_NE(doc_.core->state(), InteractionState::Dragging);
+  frame_.pointHand.select = 0.0;
+  send();
+  EXPECT_EQ(log_.written, (std::vector<std::string>{"exports/recording.fold"}));
+  // Aiming down at the paper: the ray leaves the panel (and is not drawn) and the tip grabs.
+  frame_.pointHand.aim = kDown;
+  send();
+  EXPECT_FALSE(studio_.ray().has_value());
+  EXPECT_EQ(doc_.core->state(), InteractionState::Hover);
+  frame_.pointHand.select = 1.0;
+  send();
+  EXPECT_EQ(doc_.core->state(), InteractionState::Dragging);
+}
+
+// The panel button hides the panel (the ray then passes through where it was, and the tip grabs)
+// and shows it again.
+TEST_F(HeldPanel, ThePanelButtonHidesAndShowsIt) {
+  tipOnSheetAimingAt("Undo");
+  frame_.buttons = static_cast<std::uint32_t>(Button::Panel);
+  send();
+  frame_.buttons = 0;
+  send();
+  EXPECT_FALSE(studio_.shown());
+  EXPECT_FALSE(studio_.ray().has_value());
+  EXPECT_EQ(studio_.drawData(), nullptr);
+  EXPECT_FALSE(studio_.itemWorld("Undo").has_value());
+  frame_.pointHand.select = 1.0;
+  send();
+  EXPECT_EQ(doc_.core->state(), InteractionState::Dragging);
+  frame_.pointHand.select = 0.0;
+  send();
+  frame_.buttons = static_cast<std::uint32_t>(Button::Panel);
+  send();
+  frame_.buttons = 0;
+  send();
+  EXPECT_TRUE(studio_.shown());
+  EXPECT_NE(studio_.drawData(), nullptr);
+}
+
+// The panel's undo reaches the core as a press; "Reset view" puts a moved sheet back.
+TEST_F(HeldPanel, PanelButtonsActOnTheCore) {
+  // A fold to undo, made with the tip.
+  frame_.pointHand.aim = kDown;
+  frame_.pointHand.position = doc_.core->worldOf({0.05, 0.05, 0.0});
+  send();
+  frame_.pointHand.select = 1.0;
+  send();
+  for (int i = 1; i <= 5; ++i) {
+    frame_.pointHand.position += glm::dvec3(0.0, 0.01, 0.0);
+    send();
+  }
+  frame_.pointHand.select = 0.0;
+  send();
+  ASSERT_EQ(doc_.session->foldCount(), 1u);
+  auto click = [&](const std::string& label) {
+    tipOnSheetAimingAt(label);
+    send();
+    frame_.pointHand.select = 1.0;
+    send();
+    frame_.pointHand.select = 0.0;
+    send();
+  };
+  click("Undo");
+  EXPECT_EQ(doc_.session->foldCount(), 0u);
+  click("Redo");
+  EXPECT_EQ(doc_.session->foldCount(), 1u);
+  // Move the sheet with the clutch, then reset the view from the panel.
+  const Pose start = doc_.core->worldFromSheet();
+  frame_.sheetHand.clutch = 1.0;
+  send();
+  frame_.sheetHand.pose.position += glm::dvec3(0.1, 0.0, 0.0);
+  send();
+  frame_.sheetHand.clutch = 0.0;
+  send();
+  EXPECT_NE(doc_.core->worldFromSheet(), start);
+  click("Reset view");
+  EXPECT_EQ(doc_.core->worldFromSheet(), start);
+}
+
+}  // namespace
+}  // namespace curvefold::cli
