@@ -8,8 +8,9 @@ namespace curvefold {
 
 PanelPlacement heldPanelPlacement() {
   PanelPlacement placement;
-  // Its lower edge 5 cm above the hand, so the hand and the crease card stay clear of it.
-  placement.handFromPanel.position = {0.0, 0.05 + 0.5 * placement.size.y, 0.0};
+  // Its lower edge 15 cm above the hand, over the crease-pattern card beside the hand (which
+  // reaches about 13 cm up), so neither covers the other.
+  placement.handFromPanel.position = {0.0, 0.15 + 0.5 * placement.size.y, 0.0};
   return placement;
 }
 

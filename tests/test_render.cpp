@@ -9,6 +9,7 @@
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/reflection.hpp"
+#include "engine/render/gpu_resources.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
@@ -204,6 +205,87 @@ TEST_F(Render, MarkersAndPlaneDiskAreDrawn) {
   const std::uint8_t* centre = marked.at(kSize / 2, kSize / 2);
   EXPECT_GT(centre[1], centre[0] + 50);  // green marker over the middle
   EXPECT_NE(plain.pixels, marked.pixels);
+}
+
+// Issue 14: a picture on a quad in the world (the headset's panel) shows its texture and hides
+// what is behind it, lines included, while lines in front of it stay visible.
+TEST_F(Render, AWorldPanelShowsItsPictureAndHidesWhatIsBehindIt) {
+  const VulkanContext& context = renderer_->context();
+  GpuImage picture(context, {8, 8}, VK_FORMAT_R8G8B8A8_UNORM, VK_SAMPLE_COUNT_1_BIT,
+                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                   VK_IMAGE_ASPECT_COLOR_BIT);
+  {
+    // Solid green, left ready to sample.
+    FrameRing once(context, 1);
+    Frame& frame = once.begin();
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = picture.image();
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    const VkClearColorValue green{{0.1f, 0.8f, 0.2f, 1.0f}};
+    vkCmdClearColorImage(frame.commands, picture.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         &green, 1, &barrier.subresourceRange);
+    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                         &barrier);
+    once.submit(frame);
+    once.wait(frame);
+  }
+  VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_NEAREST;
+  VkSampler sampler = VK_NULL_HANDLE;
+  ASSERT_EQ(vkCreateSampler(context.device(), &samplerInfo, nullptr, &sampler), VK_SUCCESS);
+  renderer_->sceneRenderer().setWorldPanelTexture(picture.view(), sampler);
+
+  const Sheet sheet = square();  // 0.2 m, z = 0, seen from the front
+  Scene scene = sceneForSheet(sheet, ViewPreset::Front, 1.0f, false);
+  scene.ground.enabled = false;
+  // The panel over the left half, a little in front of the sheet; a red line behind it and a
+  // blue one in front of it, both across the whole sheet.
+  WorldPanel panel;
+  panel.corners[0] = {0.0f, 0.2f, 0.02f};
+  panel.corners[1] = {0.1f, 0.2f, 0.02f};
+  panel.corners[2] = {0.1f, 0.0f, 0.02f};
+  panel.corners[3] = {0.0f, 0.0f, 0.02f};
+  scene.worldPanel = panel;
+  scene.lines.push_back({{-0.05f, 0.08f, -0.03f}, {0.25f, 0.08f, -0.03f}, {0.9f, 0.05f, 0.05f, 1}});
+  scene.lines.push_back({{-0.05f, 0.12f, 0.05f}, {0.25f, 0.12f, 0.05f}, {0.05f, 0.1f, 0.9f, 1}});
+  const RgbaImage image = renderer_->render(scene);
+  vkDestroySampler(context.device(), sampler, nullptr);
+
+  // Where the panel and the sheet are on screen: project their corners.
+  const glm::mat4 viewProj = scene.camera.projection(1.0f) * scene.camera.view();
+  auto pixel = [&](const glm::vec3& p) {
+    const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+    return glm::vec2((clip.x / clip.w * 0.5f + 0.5f) * kSize,
+                     (clip.y / clip.w * 0.5f + 0.5f) * kSize);
+  };
+  const glm::vec2 panelLow = pixel(panel.corners[0]), panelHigh = pixel(panel.corners[2]);
+  auto insidePanel = [&](std::uint32_t x, std::uint32_t y) {
+    return x > panelLow.x + 2 && x < panelHigh.x - 2 && y > panelLow.y + 2 && y < panelHigh.y - 2;
+  };
+  std::size_t green = 0, redInside = 0, redOutside = 0, blueInside = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y)
+    for (std::uint32_t x = 0; x < kSize; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      const bool inside = insidePanel(x, y);
+      if (inside && p[1] > 150 && p[0] < 80 && p[2] < 100) ++green;
+      if (isRed(p)) ++(inside ? redInside : redOutside);
+      if (inside && isBlue(p)) ++blueInside;
+    }
+  EXPECT_GT(green, 1000u);
+  EXPECT_EQ(redInside, 0u);    // behind the panel: hidden
+  EXPECT_GT(redOutside, 50u);  // beside it: seen
+  EXPECT_GT(blueInside, 50u);  // in front of it: seen
 }
 
 TEST_F(Render, SameDesignRendersBitIdenticallyTwice) {

@@ -31,6 +31,7 @@
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
+#include "engine/render/headless_renderer.hpp"
 #include "engine/render/image.hpp"
 #include "engine/render/offscreen_target.hpp"
 #include "engine/render/scene_builder.hpp"
@@ -81,14 +82,7 @@ struct Glfw {
 // PNG of a scene through the offscreen path, on the window's device.
 void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
                const fs::path& path) {
-  OffscreenTarget target(context, extent);
-  FrameRing frames(context);
-  SceneRenderer renderer(context, target);
-  renderer.markSheetReplaced();
-  Frame* frame = drawFrame(frames, target, renderer, scene);
-  if (!frame) throw VulkanError("offscreen frame was not drawn");
-  frames.wait(*frame);
-  writeFileAtomically(path, encodePng(target.readback(*frame)));
+  writeFileAtomically(path, encodePng(renderSceneOnce(context, scene, extent)));
 }
 
 void runDesigner(const DesignerOptions& options) {

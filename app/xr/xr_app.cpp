@@ -9,8 +9,11 @@
 #include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/recent_designs.hpp"
+#include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/image.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "interaction/xr/xr_check.hpp"
@@ -82,14 +85,20 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     recordingHeader_.surface = doc_.recordingSurface();
   }
 
+  if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
   makeStudio(sheetFrame);
   if (outputs_->wantsRecording())
     recordingHeader_.studio = RecordingHeader::Studio{studio_->panel().recent()};
 
-  if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
   program_ = std::make_unique<XrProgram>(XrProgramOptions{}, graphics_.get());
   input_ = std::make_unique<XrInput>(program_->instance());
   tracker_ = std::make_unique<SessionSheetTracker>();
+  if (graphics_) {
+    graphics_->setBeforeEyes([this](VkCommandBuffer commands) {
+      if (panelTexture_ && studio_->drawData())
+        panelTexture_->record(commands, studio_->drawData());
+    });
+  }
   if (graphics_)
     graphics_->setEyeScene([this](const XrEyeView&, const Camera& camera) -> const Scene& {
       return eyeScene(camera);
@@ -133,6 +142,15 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
     if (error) throw FileError("cannot create " + parent.string() + ": " + error.message());
     write(path);
   };
+  if (graphics_)
+    host.exportPng = [this](const std::string& path) {
+      // The design as a picture (iso view with its crease pattern), on the headset's device.
+      if (!graphics_->context()) throw VulkanError("no Vulkan device yet for " + path);
+      const Scene picture = sceneForSheet(doc_.session->fixed(), ViewPreset::Iso, 16.0f / 9.0f,
+                                          /*creasePatternPanel=*/true);
+      writeFileAtomically(path,
+                          encodePng(renderSceneOnce(*graphics_->context(), picture, {1280, 720})));
+    };
   host.recentChanged = [](const std::vector<std::string>& recent) {
     try {
       saveRecentDesigns(recent);
@@ -193,15 +211,50 @@ void XrApp::startRecording(XrDuration period) {
 }
 
 void XrApp::buildScene() {
-  if (SceneRenderer* renderer = graphics_->renderer()) tracker_->update(*doc_.session, *renderer);
+  if (SceneRenderer* renderer = graphics_->renderer()) {
+    tracker_->update(*doc_.session, *renderer);
+    if (!panelTexture_) {
+      const glm::ivec2 pixels = studio_->pixels();
+      panelTexture_ = std::make_unique<PanelTexture>(
+          *graphics_->context(), studio_->context(),
+          VkExtent2D{std::uint32_t(pixels.x), std::uint32_t(pixels.y)});
+    }
+    // A new renderer (after a lost session) is given the panel's picture before its first frame.
+    if (texturedRenderer_ != graphics_->rendererGeneration()) {
+      renderer->setWorldPanelTexture(panelTexture_->view(), panelTexture_->sampler());
+      texturedRenderer_ = graphics_->rendererGeneration();
+    }
+  }
   scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
                                {/*creasePatternPanel=*/false, /*handMarkers=*/false});
   addControllerModels(scene_, *doc_.core, lastInput_, input_->pointAim());
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
+  addStudio(scene_);
   if (lastInput_.sheetHand.tracked && studio_->creasePattern()) {
     addHeldPanel(scene_, panelCache_.panelFor(*doc_.session, scene_.colors),
                  lastInput_.sheetHand.pose, sheetHandSide(doc_.core->handedness()));
+  }
+}
+
+// The panel on its card, and the ray while it points at the panel (only then).
+void XrApp::addStudio(Scene& scene) {
+  const std::optional<Pose>& panel = studio_->worldFromPanel();
+  if (panel && studio_->drawData() && panelTexture_) {
+    const glm::dvec2 half = 0.5 * studio_->placement().size;
+    WorldPanel quad;
+    const glm::dvec2 corners[4] = {
+        {-half.x, half.y}, {half.x, half.y}, {half.x, -half.y}, {-half.x, -half.y}};
+    for (int i = 0; i < 4; ++i)
+      quad.corners[i] = glm::vec3(panel->apply(glm::dvec3(corners[i], 0.0)));
+    scene.worldPanel = quad;
+  }
+  if (const std::optional<PanelRayHit> hit = studio_->ray()) {
+    const glm::dvec3 from = lastInput_.pointHand.position;
+    const glm::dvec3 to = from + lastInput_.pointHand.aimDirection() * hit->distance;
+    const glm::vec4 rayColor{0.25f, 0.75f, 1.0f, 0.9f};
+    scene.lines.push_back({glm::vec3(from), glm::vec3(to), rayColor});
+    scene.markers.push_back({glm::vec3(to), 0.003f, rayColor});
   }
 }
 
@@ -211,6 +264,11 @@ const Scene& XrApp::eyeScene(const Camera& camera) {
 }
 
 void XrApp::frame() {
+  const auto now = std::chrono::steady_clock::now();
+  if (lastFrame_.time_since_epoch().count() != 0)
+    stats_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
+  lastFrame_ = now;
+  stats_.drawnTriangles = doc_.session->current().triangleCount();
   const XrFrameTiming timing = program_->beginFrame();
   startRecording(timing.period);
   if (program_->focused()) processInput(timing.displayTime);

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -30,6 +31,7 @@ class SessionSheetTracker;
 namespace curvefold::cli {
 
 class HeadsetStudio;
+class PanelTexture;
 
 struct XrAppOptions {
   std::string input;      // design file, surface name, recording (its surface) or empty
@@ -82,6 +84,7 @@ class XrApp {
   void startRecording(XrDuration period);
   const Scene& eyeScene(const Camera& camera);
   void makeStudio(const Pose& sheetFrame);
+  void addStudio(Scene& scene);
   void buildScene();
 
   XrAppOptions options_;
@@ -91,9 +94,12 @@ class XrApp {
   std::unique_ptr<XrInput> input_;
   std::unique_ptr<SessionSheetTracker> tracker_;
   std::string autosave_;
-  RecordingHeader recordingHeader_;          // its rate is set from the runtime's frame period
-  std::unique_ptr<SessionOutputs> outputs_;  // after doc_: finishes (saves) before doc_ goes
-  std::unique_ptr<HeadsetStudio> studio_;    // after doc_, which it edits
+  RecordingHeader recordingHeader_;             // its rate is set from the runtime's frame period
+  std::unique_ptr<SessionOutputs> outputs_;     // after doc_: finishes (saves) before doc_ goes
+  std::unique_ptr<HeadsetStudio> studio_;       // after doc_, which it edits
+  std::unique_ptr<PanelTexture> panelTexture_;  // after studio_, whose ImGui context it uses
+  std::uint64_t texturedRenderer_ = 0;          // the renderer (generation) given its texture
+  std::chrono::steady_clock::time_point lastFrame_{};
   InputFrame lastInput_;
   bool haveFirstTime_ = false;
   XrTime firstTime_ = 0;

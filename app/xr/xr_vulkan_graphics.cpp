@@ -258,6 +258,7 @@ void XrVulkanGraphics::swapchainsCreated(std::uint32_t view, const XrViewSwapcha
     frames_ = std::make_unique<FrameRing>(*context_, 2 * kFramesInFlight);
     renderer_ = std::make_unique<SceneRenderer>(*context_, *targets_[view], 2 * kFramesInFlight);
     renderer_->markSheetReplaced();
+    ++rendererGeneration_;
   }
 }
 
@@ -272,7 +273,8 @@ void XrVulkanGraphics::renderEye(const XrEyeView& eye) {
   XrEyeTarget& target = *targets_.at(eye.index);
   target.use(eye.colorImage, eye.depthImage);
   const Scene& scene = eyeScene_(eye, eyeCamera(eye.pose, eye.fov, nearPlane(), farPlane()));
-  if (!drawFrame(*frames_, target, *renderer_, scene))
+  const PassOverlay& before = eye.index == 0 ? beforeEyes_ : PassOverlay{};
+  if (!drawFrame(*frames_, target, *renderer_, scene, {}, before))
     throw VulkanError("XR eye " + std::to_string(eye.index) + " was not drawn");
 }
 

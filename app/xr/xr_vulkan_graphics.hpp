@@ -80,10 +80,15 @@ class XrVulkanGraphics : public XrGraphics {
   float farPlane() const override { return 100.0f; }
 
   void setEyeScene(EyeScene eyeScene) { eyeScene_ = std::move(eyeScene); }
+  // Commands recorded once a frame before the first eye's pass, in its command buffer (drawing
+  // the panel's picture that both eyes then sample).
+  void setBeforeEyes(PassOverlay beforeEyes) { beforeEyes_ = std::move(beforeEyes); }
   // Null before initializeDevice.
   const VulkanContext* context() const { return context_.get(); }
   // Null while there are no swapchains.
   SceneRenderer* renderer() { return renderer_.get(); }
+  // Counts the renderers made (a new one after a lost session needs what the last was given).
+  std::uint64_t rendererGeneration() const { return rendererGeneration_; }
 
  private:
   bool validation_;
@@ -94,6 +99,8 @@ class XrVulkanGraphics : public XrGraphics {
   std::unique_ptr<FrameRing> frames_;
   std::unique_ptr<SceneRenderer> renderer_;
   EyeScene eyeScene_;
+  PassOverlay beforeEyes_;
+  std::uint64_t rendererGeneration_ = 0;
 };
 
 // The camera of an eye: its pose as the view and its four half-angles as an off-centre Vulkan

@@ -29,4 +29,15 @@ void HeadlessRenderer::draw(const Scene& scene, bool wait) {
   if (wait) frames_->wait(*frame);
 }
 
+RgbaImage renderSceneOnce(const VulkanContext& context, const Scene& scene, VkExtent2D extent) {
+  OffscreenTarget target(context, extent);
+  FrameRing frames(context);
+  SceneRenderer renderer(context, target);
+  renderer.markSheetReplaced();
+  Frame* frame = drawFrame(frames, target, renderer, scene);
+  if (!frame) throw VulkanError("offscreen frame was not drawn");
+  frames.wait(*frame);
+  return target.readback(*frame);
+}
+
 }  // namespace curvefold

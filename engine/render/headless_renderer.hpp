@@ -42,4 +42,8 @@ class HeadlessRenderer {
   std::unique_ptr<SceneRenderer> renderer_;
 };
 
+// One scene's pixels on an existing device (a window's, a headset's), through a target, frames and
+// renderer made for it and gone after: a PNG export from a live session.
+RgbaImage renderSceneOnce(const VulkanContext& context, const Scene& scene, VkExtent2D extent);
+
 }  // namespace curvefold

@@ -98,6 +98,13 @@ struct CreasePatternPanel {
   std::vector<LineSegment> lines;  // development coordinates in a and b (z = 0)
 };
 
+// A picture on a quad in the world (the headset's panel), drawn from the texture the renderer
+// was given (SceneRenderer::setWorldPanelTexture); corners top-left, top-right, bottom-right,
+// bottom-left, the picture's top-left at the first.
+struct WorldPanel {
+  glm::vec3 corners[4]{};
+};
+
 struct Scene {
   Camera camera;
   Light light;
@@ -109,6 +116,7 @@ struct Scene {
   std::optional<PlaneDisk> plane;
   Ground ground;
   CreasePatternPanel panel;
+  std::optional<WorldPanel> worldPanel;
   float creaseWidthPixels = 3.0f;
   float lineWidthPixels = 1.5f;
 };

@@ -11,6 +11,8 @@
 #include "shaders/line.vert.h"
 #include "shaders/marker.frag.h"
 #include "shaders/marker.vert.h"
+#include "shaders/panel.frag.h"
+#include "shaders/panel.vert.h"
 #include "shaders/sheet.frag.h"
 #include "shaders/sheet.vert.h"
 #include "shaders/translucent.frag.h"
@@ -272,7 +274,10 @@ struct SceneRenderer::Slot {
 
 SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& target,
                              std::uint32_t framesInFlight)
-    : context_(context), format_(target.format()), slots_(framesInFlight) {
+    : context_(context),
+      format_(target.format()),
+      renderPass_(target.renderPass()),
+      slots_(framesInFlight) {
   const VkDevice device = context.device();
   try {
     VkDescriptorSetLayoutBinding bindings[1]{};
@@ -368,10 +373,68 @@ SceneRenderer::~SceneRenderer() {
   destroy();
 }
 
+void SceneRenderer::setWorldPanelTexture(VkImageView view, VkSampler sampler) {
+  const VkDevice device = context_.device();
+  if (!panelPipeline_) {
+    VkDescriptorSetLayoutBinding binding{};
+    binding.binding = 0;
+    binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    binding.descriptorCount = 1;
+    binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = 1;
+    setInfo.pBindings = &binding;
+    vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &panelSetLayout_),
+            "vkCreateDescriptorSetLayout");
+    const VkDescriptorSetLayout sets[2] = {setLayout_, panelSetLayout_};
+    const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 4 * sizeof(glm::vec4)};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 2;
+    layoutInfo.pSetLayouts = sets;
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &push;
+    vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &panelLayout_),
+            "vkCreatePipelineLayout");
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &size;
+    vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &panelPool_),
+            "vkCreateDescriptorPool");
+    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocate.descriptorPool = panelPool_;
+    allocate.descriptorSetCount = 1;
+    allocate.pSetLayouts = &panelSetLayout_;
+    vkCheck(vkAllocateDescriptorSets(device, &allocate, &panelSet_), "vkAllocateDescriptorSets");
+    PipelineBuilder builder{device,          panelLayout_,         renderPass_,
+                            format_.samples, code(panel_vert_spv), code(panel_frag_spv)};
+    builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
+    panelPipeline_ = builder.build();
+  }
+  VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = panelSet_;
+  write.dstBinding = 0;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &image;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
 void SceneRenderer::destroy() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   slots_.clear();
+  if (panelPipeline_) vkDestroyPipeline(device, panelPipeline_, nullptr);
+  if (panelPool_) vkDestroyDescriptorPool(device, panelPool_, nullptr);
+  if (panelLayout_) vkDestroyPipelineLayout(device, panelLayout_, nullptr);
+  if (panelSetLayout_) vkDestroyDescriptorSetLayout(device, panelSetLayout_, nullptr);
+  panelPipeline_ = VK_NULL_HANDLE;
+  panelPool_ = VK_NULL_HANDLE;
+  panelLayout_ = VK_NULL_HANDLE;
+  panelSetLayout_ = VK_NULL_HANDLE;
+  panelSet_ = VK_NULL_HANDLE;
   for (VkPipeline pipeline : {sheetPipeline_, linePipeline_, markerPipeline_, translucentPipeline_})
     if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
   sheetPipeline_ = linePipeline_ = markerPipeline_ = translucentPipeline_ = VK_NULL_HANDLE;
@@ -627,6 +690,20 @@ void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D ex
     vkCmdBindVertexBuffers(commands, 0, 1, &stream, &slot.markerOffset);
     vkCmdDraw(commands, 6, slot.markerCount, 0, 0);
   }
+  if (scene.worldPanel && panelPipeline_) {
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, panelPipeline_);
+    const VkDescriptorSet sets[2] = {slot.set, panelSet_};
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, panelLayout_, 0, 2, sets, 0,
+                            nullptr);
+    glm::vec4 corners[4];
+    for (int i = 0; i < 4; ++i) corners[i] = glm::vec4(scene.worldPanel->corners[i], 1.0f);
+    vkCmdPushConstants(commands, panelLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof corners,
+                       corners);
+    vkCmdDraw(commands, 6, 1, 0, 0);
+    // The lines after it use the scene's layout again.
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &slot.set, 0,
+                            nullptr);
+  }
   const glm::vec2 viewSize(float(layout.view.extent.width), float(layout.view.extent.height));
   auto drawLines = [&](std::uint32_t first, std::uint32_t count, const LinePush& push) {
     if (count == 0) return;
@@ -669,7 +746,7 @@ VkClearColorValue SceneRenderer::clearColor(const Scene& scene, const PassFormat
 }
 
 Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
-                 const Scene& scene, const PassOverlay& overlay) {
+                 const Scene& scene, const PassOverlay& overlay, const PassOverlay& beforePass) {
   Frame& frame = frames.begin();
   const VkFramebuffer framebuffer = target.acquire(frame);
   if (framebuffer == VK_NULL_HANDLE) {
@@ -679,6 +756,7 @@ Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& rendere
   }
   const VkExtent2D extent = target.extent();
   renderer.prepare(frame, scene, extent);
+  if (beforePass) beforePass(frame.commands);
   VkClearValue clears[3]{};
   clears[0].color = SceneRenderer::clearColor(scene, target.format());
   clears[1].depthStencil = {1.0f, 0};

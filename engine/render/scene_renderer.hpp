@@ -83,6 +83,12 @@ class SceneRenderer {
   // Inside the render pass begun on the target's framebuffer.
   void record(const Frame& frame, const Scene& scene, VkExtent2D extent) const;
 
+  // The picture a scene's worldPanel shows: a sampled image view in SHADER_READ_ONLY_OPTIMAL
+  // when drawn, and its sampler (both the caller's, outliving the renderer's use). Set it before
+  // the first frame that shows a world panel, or with no frame in flight, while the target the
+  // renderer was made for exists (its render pass makes the panel's pipeline).
+  void setWorldPanelTexture(VkImageView view, VkSampler sampler);
+
   const UploadStats& lastUpload() const { return stats_; }
   // The clear colour of the scene for a target of that format (the render pass clears with it).
   static VkClearColorValue clearColor(const Scene& scene, const PassFormat& format);
@@ -97,6 +103,7 @@ class SceneRenderer {
 
   const VulkanContext& context_;
   PassFormat format_;
+  VkRenderPass renderPass_;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
@@ -105,6 +112,12 @@ class SceneRenderer {
   VkPipeline markerPipeline_ = VK_NULL_HANDLE;
   VkPipeline translucentPipeline_ = VK_NULL_HANDLE;
   std::vector<Slot> slots_;
+  // The world panel's picture: its own set (set 1) and pipeline, made when first given.
+  VkDescriptorSetLayout panelSetLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout panelLayout_ = VK_NULL_HANDLE;
+  VkDescriptorPool panelPool_ = VK_NULL_HANDLE;
+  VkDescriptorSet panelSet_ = VK_NULL_HANDLE;
+  VkPipeline panelPipeline_ = VK_NULL_HANDLE;
 
   // The per-vertex tint bytes as last seen, the list they came from, and scratch.
   std::vector<std::uint8_t> flags_;
@@ -116,10 +129,12 @@ class SceneRenderer {
 // Records extra drawing into the scene's render pass after the scene (a GUI panel, say).
 using PassOverlay = std::function<void(VkCommandBuffer)>;
 
-// One frame of `scene` into `target`: begin the next slot, prepare, render pass (with `overlay`
-// last, when given), submit, present. Returns the frame (wait on it before reading a readback),
-// or nullptr when the target had no image this time.
+// One frame of `scene` into `target`: begin the next slot, prepare, `beforePass` (when given:
+// commands outside the render pass, such as drawing a world panel's picture), render pass (with
+// `overlay` last, when given), submit, present. Returns the frame (wait on it before reading a
+// readback), or nullptr when the target had no image this time.
 Frame* drawFrame(FrameRing& frames, RenderTarget& target, SceneRenderer& renderer,
-                 const Scene& scene, const PassOverlay& overlay = {});
+                 const Scene& scene, const PassOverlay& overlay = {},
+                 const PassOverlay& beforePass = {});
 
 }  // namespace curvefold
