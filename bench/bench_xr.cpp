@@ -14,8 +14,11 @@
 #include <memory>
 #include <numbers>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <benchmark/benchmark.h>
 
+#include "app/headset_studio.hpp"
 #include "app/xr/xr_app.hpp"
 #include "bench/dragging_session.hpp"
 #include "sim_input/recording.hpp"
@@ -71,6 +74,79 @@ void BM_XrFrameWithoutRendering(benchmark::State& state) {
 }
 // 300 frames a repetition: 5 repetitions stay inside the 60 s (5,400 frames) of dragging.
 BENCHMARK(BM_XrFrameWithoutRendering)->Iterations(300)->Unit(benchmark::kMillisecond);
+
+// Issue 14, 5: one stereo frame drawn, both eyes at 1440x1600 (a Quest 2's or an Index's panel
+// per eye) with the 100k-triangle cylinder being dragged, in two passes (arg 0) or one multiview
+// pass into an array swapchain (arg 1): everything `curvefold xr` does in a frame, through the
+// loader and the simulated runtime (which does no compositing).
+void BM_XrStereoFrame(benchmark::State& state) {
+  const bool multiview = state.range(0) == 1;
+  const fs::path dir =
+      fs::temp_directory_path() / ("curvefold-bench-stereo-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path input = dir / "drag.jsonl";
+  writeRecording(sixtySecondsOfDragging(259), input);  // ~100k triangles
+  setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
+  setenv("CURVEFOLD_SIM_INPUT", input.c_str(), 1);
+  setenv("CURVEFOLD_SIM_HOLD", "1", 1);
+  setenv("CURVEFOLD_SIM_VIEW_SIZE", "1440x1600", 1);
+  {
+    cli::XrAppOptions options;
+    options.input = input.string();
+    options.autosave = (dir / "xr.curvefold.json").string();
+    options.multiview = multiview ? XrMultiview::On : XrMultiview::Off;
+    cli::XrApp app(options);
+    if (!app.startSession()) throw std::runtime_error("the simulated runtime has no headset");
+    for (int i = 0; i < 60; ++i) {  // up to FOCUSED and into the drag
+      app.pollEvents();
+      if (app.sessionRunning()) app.frame();
+    }
+    for (auto _ : state) {
+      app.pollEvents();
+      app.frame();
+    }
+    state.counters["triangles"] = double(app.document().session->current().triangleCount());
+  }
+  unsetenv("CURVEFOLD_SIM_VIEW_SIZE");
+  fs::remove_all(dir);
+}
+BENCHMARK(BM_XrStereoFrame)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("multiview")
+    ->Iterations(20)
+    ->Unit(benchmark::kMillisecond);
+
+// Issue 14, 5: the headset panel's CPU time per frame (target <= 1 ms): the studio's frame with
+// the ray on the panel (ImGui's frame: input, the whole panel's widgets, its draw lists), the
+// core told the point is on the panel, on a small sheet so the panel is what is measured.
+void BM_PanelCpuPerFrame(benchmark::State& state) {
+  cli::Document doc = cli::makeDocument(
+      Design{GeneratedSurface{"square", {{"resolution", 10}}}, {}}, "square", defaultSheetFrame());
+  cli::HeadsetStudioOptions options;
+  options.sheetFrame = defaultSheetFrame();
+  cli::HeadsetStudio studio(doc, options);
+  InputFrame frame;
+  frame.sheetHand.tracked = true;
+  frame.sheetHand.pose.position = {-0.25, 1.0, -0.6};
+  frame.pointHand.tracked = true;
+  frame.pointHand.position = {0.0, 1.1, -0.3};
+  frame.pointHand.aim = glm::dquat(1.0, 0.0, 0.0, 0.0);
+  studio.process(frame);
+  const glm::dvec3 item = studio.itemWorld("Undo").value();
+  frame.pointHand.aim = glm::normalize(
+      glm::dquat(glm::dvec3(0.0, 0.0, -1.0), glm::normalize(item - frame.pointHand.position)));
+  std::size_t onPanel = 0, frames = 0;
+  for (auto _ : state) {
+    frame.time += 1.0 / 90.0;
+    studio.process(frame);
+    onPanel += studio.target() == PointTarget::Panel;
+    ++frames;
+  }
+  state.counters["on_panel"] = double(onPanel) / double(std::max<std::size_t>(frames, 1));
+}
+BENCHMARK(BM_PanelCpuPerFrame)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace curvefold

@@ -7,10 +7,12 @@
 #                         INCLUDES shaders/common.glsl)
 #
 # INCLUDES are files the shaders #include (GL_GOOGLE_include_directive): a change rebuilds them.
+# MULTIVIEW also compiles each with CURVEFOLD_MULTIVIEW defined, for a multiview pass, into
+# <name>.multiview.h (symbol <name>_multiview_spv).
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 function(curvefold_add_shaders)
-  cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDES" ${ARGN})
+  cmake_parse_arguments(ARG "MULTIVIEW" "TARGET" "SOURCES;INCLUDES" ${ARGN})
   set(out_dir ${PROJECT_BINARY_DIR}/shaders)
   file(MAKE_DIRECTORY ${out_dir})
   set(headers)
@@ -32,6 +34,18 @@ function(curvefold_add_shaders)
       COMMENT "glslangValidator ${name}"
       VERBATIM)
     list(APPEND headers ${header})
+    if(ARG_MULTIVIEW)
+      string(REPLACE "." "_" multiview_symbol "${name}_multiview_spv")
+      set(multiview_header ${out_dir}/${name}.multiview.h)
+      add_custom_command(
+        OUTPUT ${multiview_header}
+        COMMAND ${GLSLANG_VALIDATOR} -V --quiet --target-env vulkan1.1 -DCURVEFOLD_MULTIVIEW
+                --vn ${multiview_symbol} -o ${multiview_header} ${source_abs}
+        DEPENDS ${source_abs} ${includes}
+        COMMENT "glslangValidator ${name} (multiview)"
+        VERBATIM)
+      list(APPEND headers ${multiview_header})
+    endif()
   endforeach()
   target_sources(${ARG_TARGET} PRIVATE ${headers})
   # Included as "shaders/sheet.frag.h".

@@ -1,21 +1,9 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "frame.glsl"
 // Lines as screen-space ribbons: one instance per segment, six vertices expanded to a quad
 // widthPixels wide (with square caps), so lines keep their width at any distance. World lines are
 // pulled a little toward the eye so the surface they lie on does not hide them.
-// Per-frame values; must match FrameUniforms in engine/render/scene_renderer.cpp.
-layout(set = 0, binding = 0) uniform Frame {
-  mat4 viewProj;
-  mat4 view;
-  mat4 proj;
-  mat4 model;      // world_from_sheet
-  mat4 panelProj;  // development -> panel clip space
-  vec4 eye;        // world
-  vec4 lightDir;   // world, towards the light; w = ambient
-  vec4 frontColor;
-  vec4 backColor;
-  vec4 tintColor;  // rgb; a = how much of it the reflected part takes
-  vec4 viewport;   // width, height in pixels
-} u;
 
 layout(push_constant) uniform Push {
   vec2 viewportSize;  // pixels of the viewport drawn into
@@ -34,8 +22,8 @@ const vec2 corners[6] = vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1)
 
 vec4 project(vec3 p) {
   if (pc.space == 1u) return u.panelProj * vec4(p, 1.0);
-  p += (u.eye.xyz - p) * pc.towardEye;
-  vec4 clip = u.viewProj * vec4(p, 1.0);
+  p += (u.eye[VIEW].xyz - p) * pc.towardEye;
+  vec4 clip = u.viewProj[VIEW] * vec4(p, 1.0);
   clip.w = max(clip.w, 1e-6);  // a segment through the eye degenerates instead of flipping
   return clip;
 }

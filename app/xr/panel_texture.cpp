@@ -10,10 +10,6 @@ namespace curvefold::cli {
 
 namespace {
 
-// ImGui's backend keeps vertex buffers per frame it may have in flight: the headset draws the
-// panel once a frame, with at most kFramesInFlight frames in flight; one more for margin.
-constexpr std::uint32_t kPanelFramesInFlight = kFramesInFlight + 1;
-
 class ContextScope {
  public:
   explicit ContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
@@ -31,7 +27,8 @@ void checkImGuiVulkan(VkResult result) {
 
 }  // namespace
 
-PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, VkExtent2D extent)
+PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, VkExtent2D extent,
+                           std::uint32_t framesInFlight)
     : context_(context), imgui_(imgui), extent_(extent) {
   const VkDevice device = context.device();
   try {
@@ -114,8 +111,10 @@ PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, Vk
     info.QueueFamily = context.graphicsFamily();
     info.Queue = context.graphicsQueue();
     info.DescriptorPool = pool_;
-    info.MinImageCount = kPanelFramesInFlight;
-    info.ImageCount = kPanelFramesInFlight;
+    // ImGui rewrites a frame's vertex buffers ImageCount draws later: one more than can be in
+    // flight, so it never rewrites one the GPU still reads.
+    info.MinImageCount = framesInFlight + 1;
+    info.ImageCount = framesInFlight + 1;
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     info.CheckVkResultFn = checkImGuiVulkan;
     if (!ImGui_ImplVulkan_Init(&info, renderPass_))

@@ -16,8 +16,10 @@ namespace curvefold::cli {
 
 class PanelTexture {
  public:
-  // Uploads the context's font atlas (waits for it). Throws VulkanError.
-  PanelTexture(const VulkanContext& context, ImGuiContext* imgui, VkExtent2D extent);
+  // Uploads the context's font atlas (waits for it). framesInFlight: how many of the host's
+  // frames may be on the GPU at once (ImGui keeps vertex buffers per frame). Throws VulkanError.
+  PanelTexture(const VulkanContext& context, ImGuiContext* imgui, VkExtent2D extent,
+               std::uint32_t framesInFlight);
   ~PanelTexture();
   PanelTexture(const PanelTexture&) = delete;
   PanelTexture& operator=(const PanelTexture&) = delete;

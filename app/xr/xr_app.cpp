@@ -85,7 +85,8 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     recordingHeader_.surface = doc_.recordingSurface();
   }
 
-  if (!options.headless) graphics_ = std::make_unique<XrVulkanGraphics>(options.validation);
+  if (!options.headless)
+    graphics_ = std::make_unique<XrVulkanGraphics>(options.validation, options.multiview);
   makeStudio(sheetFrame);
   if (outputs_->wantsRecording())
     recordingHeader_.studio = RecordingHeader::Studio{studio_->panel().recent()};
@@ -100,9 +101,8 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     });
   }
   if (graphics_)
-    graphics_->setEyeScene([this](const XrEyeView&, const Camera& camera) -> const Scene& {
-      return eyeScene(camera);
-    });
+    graphics_->setEyeScene(
+        [this](std::span<const Camera> cameras) -> const Scene& { return eyeScene(cameras); });
   // The stage's floor, under the sheet.
   ground_.height = 0.0f;
   ground_.centre = {float(sheetFrame.position.x), float(sheetFrame.position.z)};
@@ -217,7 +217,8 @@ void XrApp::buildScene() {
       const glm::ivec2 pixels = studio_->pixels();
       panelTexture_ = std::make_unique<PanelTexture>(
           *graphics_->context(), studio_->context(),
-          VkExtent2D{std::uint32_t(pixels.x), std::uint32_t(pixels.y)});
+          VkExtent2D{std::uint32_t(pixels.x), std::uint32_t(pixels.y)},
+          graphics_->framesInFlight());
     }
     // A new renderer (after a lost session) is given the panel's picture before its first frame.
     if (texturedRenderer_ != graphics_->rendererGeneration()) {
@@ -258,8 +259,10 @@ void XrApp::addStudio(Scene& scene) {
   }
 }
 
-const Scene& XrApp::eyeScene(const Camera& camera) {
-  scene_.camera = camera;
+const Scene& XrApp::eyeScene(std::span<const Camera> cameras) {
+  scene_.camera = cameras[0];
+  scene_.secondView.reset();
+  if (cameras.size() > 1) scene_.secondView = cameras[1];
   return scene_;
 }
 

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstddef>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "app/interaction_scene.hpp"
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
+#include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/xr/xr_program.hpp"
@@ -41,6 +43,7 @@ struct XrAppOptions {
   bool leftHanded = false;
   bool headless = false;  // XR_MND_headless: input only, nothing drawn
   bool validation = false;
+  XrMultiview multiview = XrMultiview::Auto;  // both eyes in one pass (xr_vulkan_graphics.hpp)
 };
 
 struct XrAppSummary {
@@ -82,7 +85,7 @@ class XrApp {
   XrAppSummary runSessions(const std::atomic<bool>& interrupt);
   void processInput(XrTime displayTime);
   void startRecording(XrDuration period);
-  const Scene& eyeScene(const Camera& camera);
+  const Scene& eyeScene(std::span<const Camera> cameras);
   void makeStudio(const Pose& sheetFrame);
   void addStudio(Scene& scene);
   void buildScene();

@@ -79,6 +79,12 @@ void addXrCommand(CLI::App& app) {
                       "(default: beside the design's autosave)");
   command->add_flag("--left-handed", options->leftHanded,
                     "The left hand folds and the right holds the sheet");
+  command->add_flag(
+      "--multiview", [options](std::int64_t) { options->multiview = XrMultiview::On; },
+      "Draw both eyes in one pass (VK_KHR_multiview) even on a CPU device such as lavapipe");
+  command->add_flag(
+      "--no-multiview", [options](std::int64_t) { options->multiview = XrMultiview::Off; },
+      "Draw each eye in its own pass (default: one multiview pass on a GPU that has it)");
   command->add_flag("--headless", options->headless, "Input only, nothing drawn (XR_MND_headless)");
   command->add_flag("--validation", options->validation,
                     "Enable the Vulkan validation layer; any message fails the run");

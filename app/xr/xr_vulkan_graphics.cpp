@@ -25,17 +25,18 @@ bool isDepthFormat(VkFormat format) {
          format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
-VkImageView createView(VkDevice device, VkImage image, VkFormat format) {
+// A view of a swapchain image: all its layers (an array view for a multiview pass).
+VkImageView createView(VkDevice device, VkImage image, VkFormat format, std::uint32_t layers) {
   VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   info.image = image;
-  info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  info.viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   info.format = format;
   info.subresourceRange.aspectMask =
       isDepthFormat(format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   if (format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT)
     info.subresourceRange.aspectMask |= VK_IMAGE_ASPECT_STENCIL_BIT;
   info.subresourceRange.levelCount = 1;
-  info.subresourceRange.layerCount = 1;
+  info.subresourceRange.layerCount = layers;
   VkImageView view = VK_NULL_HANDLE;
   vkCheck(vkCreateImageView(device, &info, nullptr, &view), "vkCreateImageView");
   return view;
@@ -97,14 +98,16 @@ XrEyeTarget::XrEyeTarget(const VulkanContext& context, const XrViewSwapchains& s
                                               : chooseDepthFormat(context);
   // The runtime takes the image back in the layout it gave it (XR_KHR_vulkan_enable2).
   format_.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  // An array swapchain holds every view: one multiview pass draws them all.
+  format_.views = swapchains.arraySize;
   renderPass_ = createScenePass(context.device(), format_);
   try {
     transient_ = createTransientAttachments(context, extent_, format_);
     if (!depthImages.empty()) transient_.depth = GpuImage();  // the swapchain's depth serves
     for (VkImage image : colorImages)
-      colorViews_.push_back(createView(context.device(), image, format_.color));
+      colorViews_.push_back(createView(context.device(), image, format_.color, format_.views));
     for (VkImage image : depthImages)
-      depthViews_.push_back(createView(context.device(), image, format_.depth));
+      depthViews_.push_back(createView(context.device(), image, format_.depth, format_.views));
   } catch (...) {
     destroy();
     throw;
@@ -148,7 +151,14 @@ VkFramebuffer XrEyeTarget::acquire(Frame&) {
   return framebuffer;
 }
 
-XrVulkanGraphics::XrVulkanGraphics(bool validation) : validation_(validation) {}
+XrVulkanGraphics::XrVulkanGraphics(bool validation, XrMultiview multiview)
+    : validation_(validation), multiview_(multiview) {}
+
+std::uint32_t XrVulkanGraphics::viewsPerSwapchain() const {
+  if (!context_ || !context_->multiview() || multiview_ == XrMultiview::Off) return 1;
+  if (multiview_ == XrMultiview::Auto && context_->cpuDevice()) return 1;
+  return 2;
+}
 
 XrVulkanGraphics::~XrVulkanGraphics() {
   swapchainsDestroyed();
@@ -255,8 +265,8 @@ void XrVulkanGraphics::swapchainsCreated(std::uint32_t view, const XrViewSwapcha
   targets_[view] = std::make_unique<XrEyeTarget>(
       *context_, swapchains, swapchainImages(swapchains.color), swapchainImages(swapchains.depth));
   if (!renderer_) {
-    frames_ = std::make_unique<FrameRing>(*context_, 2 * kFramesInFlight);
-    renderer_ = std::make_unique<SceneRenderer>(*context_, *targets_[view], 2 * kFramesInFlight);
+    frames_ = std::make_unique<FrameRing>(*context_, framesInFlight());
+    renderer_ = std::make_unique<SceneRenderer>(*context_, *targets_[view], framesInFlight());
     renderer_->markSheetReplaced();
     ++rendererGeneration_;
   }
@@ -269,10 +279,27 @@ void XrVulkanGraphics::swapchainsDestroyed() {
   targets_.clear();
 }
 
+void XrVulkanGraphics::renderViews(std::span<const XrEyeView> eyes) {
+  if (targets_.empty() || targets_[0]->format().views < 2) {
+    XrGraphics::renderViews(eyes);  // an eye at a time
+    return;
+  }
+  // One multiview pass: both eyes' cameras, one frame slot, one submission.
+  XrEyeTarget& target = *targets_[0];
+  target.use(eyes[0].colorImage, eyes[0].depthImage);
+  std::vector<Camera> cameras;
+  for (const XrEyeView& eye : eyes)
+    cameras.push_back(eyeCamera(eye.pose, eye.fov, nearPlane(), farPlane()));
+  const Scene& scene = eyeScene_(cameras);
+  if (!drawFrame(*frames_, target, *renderer_, scene, {}, beforeEyes_))
+    throw VulkanError("XR views were not drawn");
+}
+
 void XrVulkanGraphics::renderEye(const XrEyeView& eye) {
   XrEyeTarget& target = *targets_.at(eye.index);
   target.use(eye.colorImage, eye.depthImage);
-  const Scene& scene = eyeScene_(eye, eyeCamera(eye.pose, eye.fov, nearPlane(), farPlane()));
+  const Camera camera = eyeCamera(eye.pose, eye.fov, nearPlane(), farPlane());
+  const Scene& scene = eyeScene_(std::span<const Camera>(&camera, 1));
   const PassOverlay& before = eye.index == 0 ? beforeEyes_ : PassOverlay{};
   if (!drawFrame(*frames_, target, *renderer_, scene, {}, before))
     throw VulkanError("XR eye " + std::to_string(eye.index) + " was not drawn");

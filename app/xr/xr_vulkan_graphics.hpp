@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -29,6 +30,13 @@
 #include "interaction/xr/xr_program.hpp"
 
 namespace curvefold {
+
+// How the eyes are drawn. On: both in one pass into an array swapchain (VK_KHR_multiview) where
+// the device has multiview. Off: a pass per eye. Auto: On, except on a CPU device: Debian 12's
+// lavapipe (Mesa 22.3) draws triangles that the view's edge clips into the first eye's layer in a
+// multiview pass, so a panel crossing the edge of sight vanishes from the right eye and shows
+// twice in the left (seen in `curvefold xr` with the simulated runtime; README, Performance).
+enum class XrMultiview { Auto, On, Off };
 
 // One view's swapchain images as a render target; use() picks the acquired images.
 class XrEyeTarget : public RenderTarget {
@@ -61,9 +69,10 @@ class XrEyeTarget : public RenderTarget {
 
 class XrVulkanGraphics : public XrGraphics {
  public:
-  // The scene of an eye (its camera set from the eye's pose and frustum by the caller).
-  using EyeScene = std::function<const Scene&(const XrEyeView&, const Camera&)>;
-  explicit XrVulkanGraphics(bool validation);
+  // The scene seen by these cameras (one eye's, or both eyes' for a multiview pass: the scene's
+  // camera and secondView).
+  using EyeScene = std::function<const Scene&(std::span<const Camera> cameras)>;
+  explicit XrVulkanGraphics(bool validation, XrMultiview multiview = XrMultiview::Auto);
   ~XrVulkanGraphics() override;
 
   std::vector<std::string> instanceExtensions() const override;
@@ -76,6 +85,8 @@ class XrVulkanGraphics : public XrGraphics {
   void swapchainsCreated(std::uint32_t view, const XrViewSwapchains& swapchains) override;
   void swapchainsDestroyed() override;
   void renderEye(const XrEyeView& eye) override;
+  std::uint32_t viewsPerSwapchain() const override;
+  void renderViews(std::span<const XrEyeView> eyes) override;
   float nearPlane() const override { return 0.01f; }
   float farPlane() const override { return 100.0f; }
 
@@ -87,11 +98,14 @@ class XrVulkanGraphics : public XrGraphics {
   const VulkanContext* context() const { return context_.get(); }
   // Null while there are no swapchains.
   SceneRenderer* renderer() { return renderer_.get(); }
+  // Frames that may be on the GPU at once (the ring's slots).
+  std::uint32_t framesInFlight() const { return 2 * kFramesInFlight; }
   // Counts the renderers made (a new one after a lost session needs what the last was given).
   std::uint64_t rendererGeneration() const { return rendererGeneration_; }
 
  private:
   bool validation_;
+  XrMultiview multiview_;
   XrInstance instance_ = XR_NULL_HANDLE;
   std::unique_ptr<VulkanContext> context_;
   XrGraphicsBindingVulkan2KHR binding_{};

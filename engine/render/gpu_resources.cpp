@@ -53,14 +53,14 @@ void HostBuffer::reset() {
 
 GpuImage::GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat format,
                    VkSampleCountFlagBits samples, VkImageUsageFlags usage,
-                   VkImageAspectFlags aspect)
+                   VkImageAspectFlags aspect, std::uint32_t layers)
     : device_(context.device()) {
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {extent.width, extent.height, 1};
   info.mipLevels = 1;
-  info.arrayLayers = 1;
+  info.arrayLayers = layers;
   info.samples = samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
@@ -78,9 +78,9 @@ GpuImage::GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat for
     vkCheck(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = image_;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    view.subresourceRange = {aspect, 0, 1, 0, layers};
     vkCheck(vkCreateImageView(device_, &view, nullptr, &view_), "vkCreateImageView");
   } catch (...) {
     reset();

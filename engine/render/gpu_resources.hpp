@@ -36,12 +36,14 @@ class HostBuffer {
   std::byte* mapped_ = nullptr;
 };
 
-// A 2D image in device memory (preferably device-local) with one view.
+// A 2D image in device memory (preferably device-local) with one view; with layers > 1 an array
+// (a multiview pass's, one layer per view) and an array view.
 class GpuImage {
  public:
   GpuImage() = default;
   GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat format,
-           VkSampleCountFlagBits samples, VkImageUsageFlags usage, VkImageAspectFlags aspect);
+           VkSampleCountFlagBits samples, VkImageUsageFlags usage, VkImageAspectFlags aspect,
+           std::uint32_t layers = 1);
   ~GpuImage() { reset(); }
   GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
   GpuImage& operator=(GpuImage&& other) noexcept;

@@ -36,7 +36,7 @@ TransientAttachments createTransientAttachments(const VulkanContext& context, Vk
     result.multisampled =
         GpuImage(context, extent, format.color, format.samples,
                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                 VK_IMAGE_ASPECT_COLOR_BIT);
+                 VK_IMAGE_ASPECT_COLOR_BIT, format.views);
   const VkImageAspectFlags depthAspect =
       format.depth == VK_FORMAT_D24_UNORM_S8_UINT
           ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
@@ -44,7 +44,7 @@ TransientAttachments createTransientAttachments(const VulkanContext& context, Vk
   result.depth = GpuImage(
       context, extent, format.depth, format.samples,
       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-      depthAspect);
+      depthAspect, format.views);
   return result;
 }
 
@@ -120,6 +120,15 @@ VkRenderPass createScenePass(VkDevice device, const PassFormat& format) {
   info.pSubpasses = &subpass;
   info.dependencyCount = 2;
   info.pDependencies = dependencies;
+  // Multiview: every view drawn by each draw, into its own layer; the views are correlated (the
+  // eyes see nearly the same), which lets an implementation share work between them.
+  const std::uint32_t viewMask = (1u << format.views) - 1u;
+  VkRenderPassMultiviewCreateInfo multiview{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
+  multiview.subpassCount = 1;
+  multiview.pViewMasks = &viewMask;
+  multiview.correlationMaskCount = 1;
+  multiview.pCorrelationMasks = &viewMask;
+  if (format.views > 1) info.pNext = &multiview;
   VkRenderPass pass = VK_NULL_HANDLE;
   vkCheck(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass");
   return pass;

@@ -23,6 +23,9 @@ struct PassFormat {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
   // Layout the resolved image ends in: TRANSFER_SRC for a readback, PRESENT_SRC for a swapchain.
   VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  // Views drawn at once (VK_KHR_multiview, core in Vulkan 1.1): 2 for both eyes in one pass into
+  // two-layer images, layer i seen from view i. 1: an ordinary pass.
+  std::uint32_t views = 1;
 };
 
 // Whether the format encodes linear values as sRGB on write (the *_SRGB formats).

@@ -107,6 +107,8 @@ struct WorldPanel {
 
 struct Scene {
   Camera camera;
+  // A multiview pass's second view (the right eye; the first is `camera`).
+  std::optional<Camera> secondView;
   Light light;
   SceneColors colors;
   SceneSheet sheet;

@@ -8,27 +8,38 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "shaders/line.frag.h"
+#include "shaders/line.frag.multiview.h"
 #include "shaders/line.vert.h"
+#include "shaders/line.vert.multiview.h"
 #include "shaders/marker.frag.h"
+#include "shaders/marker.frag.multiview.h"
 #include "shaders/marker.vert.h"
+#include "shaders/marker.vert.multiview.h"
 #include "shaders/panel.frag.h"
+#include "shaders/panel.frag.multiview.h"
 #include "shaders/panel.vert.h"
+#include "shaders/panel.vert.multiview.h"
 #include "shaders/sheet.frag.h"
+#include "shaders/sheet.frag.multiview.h"
 #include "shaders/sheet.vert.h"
+#include "shaders/sheet.vert.multiview.h"
 #include "shaders/translucent.frag.h"
+#include "shaders/translucent.frag.multiview.h"
 #include "shaders/translucent.vert.h"
+#include "shaders/translucent.vert.multiview.h"
 
 namespace curvefold {
 namespace {
 
 // std140 mirror of the shaders' Frame block.
+// Two views: a multiview pass's eyes (an ordinary pass uses the first).
 struct FrameUniforms {
-  glm::mat4 viewProj;
-  glm::mat4 view;
-  glm::mat4 proj;
+  glm::mat4 viewProj[2];
+  glm::mat4 view[2];
+  glm::mat4 proj[2];
   glm::mat4 model;
   glm::mat4 panelProj;
-  glm::vec4 eye;
+  glm::vec4 eye[2];
   glm::vec4 lightDir;
   glm::vec4 frontColor;
   glm::vec4 backColor;
@@ -54,6 +65,10 @@ struct MarkerInstance {
 struct ColoredVertex {
   glm::vec3 position;
   glm::vec4 color;
+};
+struct PanelVertex {
+  glm::vec3 position;
+  glm::vec2 uv;
 };
 
 constexpr std::uint32_t kDiskSegments = 72;
@@ -180,8 +195,11 @@ struct PipelineBuilder {
   }
 };
 
-template <std::size_t N>
-std::span<const std::uint32_t> code(const std::uint32_t (&words)[N]) {
+// A shader's SPIR-V: its multiview variant for a multiview pass.
+template <std::size_t N, std::size_t M>
+std::span<const std::uint32_t> code(bool multiview, const std::uint32_t (&words)[N],
+                                    const std::uint32_t (&multiviewWords)[M]) {
+  if (multiview) return {multiviewWords, M};
   return {words, N};
 }
 
@@ -267,8 +285,8 @@ struct SceneRenderer::Slot {
   HostBuffer stream;
   std::uint32_t gridFirst = 0, gridCount = 0, creaseFirst = 0, creaseCount = 0, lineFirst = 0,
                 lineCount = 0, panelFirst = 0, panelCount = 0;
-  VkDeviceSize markerOffset = 0, diskOffset = 0;
-  std::uint32_t markerCount = 0, diskVertexCount = 0;
+  VkDeviceSize markerOffset = 0, diskOffset = 0, panelOffset = 0;
+  std::uint32_t markerCount = 0, diskVertexCount = 0, panelVertexCount = 0;
   std::uint32_t drawTriangles = 0;
 };
 
@@ -306,20 +324,21 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
     poolInfo.pPoolSizes = sizes;
     vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
 
+    const bool multiview = format_.views > 1;
     PipelineBuilder builder{device,
                             layout_,
                             target.renderPass(),
                             format_.samples,
-                            code(sheet_vert_spv),
-                            code(sheet_frag_spv)};
+                            code(multiview, sheet_vert_spv, sheet_vert_multiview_spv),
+                            code(multiview, sheet_frag_spv, sheet_frag_multiview_spv)};
     builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
     builder.bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX},
                         {1, 1, VK_VERTEX_INPUT_RATE_VERTEX}};
     builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8_UNORM, 0}};
     sheetPipeline_ = builder.build();
 
-    builder.vertexCode = code(line_vert_spv);
-    builder.fragmentCode = code(line_frag_spv);
+    builder.vertexCode = code(multiview, line_vert_spv, line_vert_multiview_spv);
+    builder.fragmentCode = code(multiview, line_frag_spv, line_frag_multiview_spv);
     builder.bindings = {{0, sizeof(LineInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
     builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, a)},
                           {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, b)},
@@ -328,8 +347,8 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
     builder.blend = true;
     linePipeline_ = builder.build();
 
-    builder.vertexCode = code(marker_vert_spv);
-    builder.fragmentCode = code(marker_frag_spv);
+    builder.vertexCode = code(multiview, marker_vert_spv, marker_vert_multiview_spv);
+    builder.fragmentCode = code(multiview, marker_frag_spv, marker_frag_multiview_spv);
     builder.bindings = {{0, sizeof(MarkerInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
     builder.attributes = {
         {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MarkerInstance, centreRadius)},
@@ -338,8 +357,8 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
     builder.blend = false;
     markerPipeline_ = builder.build();
 
-    builder.vertexCode = code(translucent_vert_spv);
-    builder.fragmentCode = code(translucent_frag_spv);
+    builder.vertexCode = code(multiview, translucent_vert_spv, translucent_vert_multiview_spv);
+    builder.fragmentCode = code(multiview, translucent_frag_spv, translucent_frag_multiview_spv);
     builder.bindings = {{0, sizeof(ColoredVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ColoredVertex, position)},
                           {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(ColoredVertex, color)}};
@@ -373,45 +392,57 @@ SceneRenderer::~SceneRenderer() {
   destroy();
 }
 
+void SceneRenderer::createPanelPipeline() {
+  const VkDevice device = context_.device();
+  VkDescriptorSetLayoutBinding binding{};
+  binding.binding = 0;
+  binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  binding.descriptorCount = 1;
+  binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = 1;
+  setInfo.pBindings = &binding;
+  vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &panelSetLayout_),
+          "vkCreateDescriptorSetLayout");
+  const VkDescriptorSetLayout sets[2] = {setLayout_, panelSetLayout_};
+  // The push constants as the scene's layout has them, so binding set 1 keeps set 0 bound.
+  const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(LinePush)};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 2;
+  layoutInfo.pSetLayouts = sets;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &panelLayout_),
+          "vkCreatePipelineLayout");
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &panelPool_),
+          "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocate.descriptorPool = panelPool_;
+  allocate.descriptorSetCount = 1;
+  allocate.pSetLayouts = &panelSetLayout_;
+  vkCheck(vkAllocateDescriptorSets(device, &allocate, &panelSet_), "vkAllocateDescriptorSets");
+  const bool multiview = format_.views > 1;
+  PipelineBuilder builder{device,
+                          panelLayout_,
+                          renderPass_,
+                          format_.samples,
+                          code(multiview, panel_vert_spv, panel_vert_multiview_spv),
+                          code(multiview, panel_frag_spv, panel_frag_multiview_spv)};
+  builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
+  builder.bindings = {{0, sizeof(PanelVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(PanelVertex, position)},
+                        {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(PanelVertex, uv)}};
+  panelPipeline_ = builder.build();
+}
+
 void SceneRenderer::setWorldPanelTexture(VkImageView view, VkSampler sampler) {
   const VkDevice device = context_.device();
-  if (!panelPipeline_) {
-    VkDescriptorSetLayoutBinding binding{};
-    binding.binding = 0;
-    binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    binding.descriptorCount = 1;
-    binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 1;
-    setInfo.pBindings = &binding;
-    vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &panelSetLayout_),
-            "vkCreateDescriptorSetLayout");
-    const VkDescriptorSetLayout sets[2] = {setLayout_, panelSetLayout_};
-    const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, 4 * sizeof(glm::vec4)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 2;
-    layoutInfo.pSetLayouts = sets;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &push;
-    vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &panelLayout_),
-            "vkCreatePipelineLayout");
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &size;
-    vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &panelPool_),
-            "vkCreateDescriptorPool");
-    VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocate.descriptorPool = panelPool_;
-    allocate.descriptorSetCount = 1;
-    allocate.pSetLayouts = &panelSetLayout_;
-    vkCheck(vkAllocateDescriptorSets(device, &allocate, &panelSet_), "vkAllocateDescriptorSets");
-    PipelineBuilder builder{device,          panelLayout_,         renderPass_,
-                            format_.samples, code(panel_vert_spv), code(panel_frag_spv)};
-    builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
-    panelPipeline_ = builder.build();
-  }
+  if (!panelPipeline_) createPanelPipeline();
   VkDescriptorImageInfo image{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = panelSet_;
@@ -585,12 +616,15 @@ void SceneRenderer::prepare(const Frame& frame, const Scene& scene, VkExtent2D e
   const float aspect =
       float(layout.view.extent.width) / float(std::max(layout.view.extent.height, 1u));
   FrameUniforms u{};
-  u.view = scene.camera.view();
-  u.proj = scene.camera.projection(aspect);
-  u.viewProj = u.proj * u.view;
+  for (int view = 0; view < 2; ++view) {
+    const Camera& camera = view == 1 && scene.secondView ? *scene.secondView : scene.camera;
+    u.view[view] = camera.view();
+    u.proj[view] = camera.projection(aspect);
+    u.viewProj[view] = u.proj[view] * u.view[view];
+    u.eye[view] = glm::vec4(camera.eye, 1.0f);
+  }
   u.model = scene.sheet.worldFromSheet;
   u.panelProj = panelProjection(scene.panel, layout.panel.extent);
-  u.eye = glm::vec4(scene.camera.eye, 1.0f);
   u.lightDir = glm::vec4(glm::normalize(scene.light.direction), scene.light.ambient);
   u.frontColor = glm::vec4(scene.colors.front, 1.0f);
   u.backColor = glm::vec4(scene.colors.back, 1.0f);
@@ -654,18 +688,29 @@ void SceneRenderer::prepare(const Frame& frame, const Scene& scene, VkExtent2D e
   const VkDeviceSize lineBytes = lines.size() * sizeof(LineInstance);
   const VkDeviceSize markerBytes = markers.size() * sizeof(MarkerInstance);
   const VkDeviceSize diskBytes = disk.size() * sizeof(ColoredVertex);
+  // The world panel's two triangles.
+  std::vector<PanelVertex> panel;
+  if (scene.worldPanel) {
+    const glm::vec3* c = scene.worldPanel->corners;
+    const glm::vec2 uv[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    for (int corner : {0, 1, 2, 0, 2, 3}) panel.push_back({c[corner], uv[corner]});
+  }
+  const VkDeviceSize panelBytes = panel.size() * sizeof(PanelVertex);
   slot.markerOffset = (lineBytes + 15) / 16 * 16;
   slot.diskOffset = (slot.markerOffset + markerBytes + 15) / 16 * 16;
-  const VkDeviceSize total = std::max<VkDeviceSize>(slot.diskOffset + diskBytes, 64);
+  slot.panelOffset = (slot.diskOffset + diskBytes + 15) / 16 * 16;
+  const VkDeviceSize total = std::max<VkDeviceSize>(slot.panelOffset + panelBytes, 64);
   if (slot.stream.size() < total)
     slot.stream = HostBuffer(context_, std::max(total, slot.stream.size() * 3 / 2),
                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   if (lineBytes) std::memcpy(slot.stream.data(), lines.data(), lineBytes);
   if (markerBytes) std::memcpy(slot.stream.data() + slot.markerOffset, markers.data(), markerBytes);
   if (diskBytes) std::memcpy(slot.stream.data() + slot.diskOffset, disk.data(), diskBytes);
+  if (panelBytes) std::memcpy(slot.stream.data() + slot.panelOffset, panel.data(), panelBytes);
+  slot.panelVertexCount = static_cast<std::uint32_t>(panel.size());
   slot.markerCount = static_cast<std::uint32_t>(markers.size());
   slot.diskVertexCount = static_cast<std::uint32_t>(disk.size());
-  stats_.dynamicBytes += lineBytes + markerBytes + diskBytes;
+  stats_.dynamicBytes += lineBytes + markerBytes + diskBytes + panelBytes;
 }
 
 void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D extent) const {
@@ -690,19 +735,14 @@ void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D ex
     vkCmdBindVertexBuffers(commands, 0, 1, &stream, &slot.markerOffset);
     vkCmdDraw(commands, 6, slot.markerCount, 0, 0);
   }
-  if (scene.worldPanel && panelPipeline_) {
+  // The world panel: opaque, before the lines (which do not write depth) so those in front of it
+  // stay seen.
+  if (slot.panelVertexCount > 0 && panelPipeline_) {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, panelPipeline_);
-    const VkDescriptorSet sets[2] = {slot.set, panelSet_};
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, panelLayout_, 0, 2, sets, 0,
-                            nullptr);
-    glm::vec4 corners[4];
-    for (int i = 0; i < 4; ++i) corners[i] = glm::vec4(scene.worldPanel->corners[i], 1.0f);
-    vkCmdPushConstants(commands, panelLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof corners,
-                       corners);
-    vkCmdDraw(commands, 6, 1, 0, 0);
-    // The lines after it use the scene's layout again.
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &slot.set, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, panelLayout_, 1, 1,
+                            &panelSet_, 0, nullptr);
+    vkCmdBindVertexBuffers(commands, 0, 1, &stream, &slot.panelOffset);
+    vkCmdDraw(commands, slot.panelVertexCount, 1, 0, 0);
   }
   const glm::vec2 viewSize(float(layout.view.extent.width), float(layout.view.extent.height));
   auto drawLines = [&](std::uint32_t first, std::uint32_t count, const LinePush& push) {

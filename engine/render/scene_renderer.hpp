@@ -99,6 +99,7 @@ class SceneRenderer {
   void uploadSheet(Slot& slot, const Scene& scene);
   void updateFlags(const Sheet& sheet, std::span<const TriangleIndex> reflected);
   void writeDescriptors(Slot& slot);
+  void createPanelPipeline();
   void destroy();
 
   const VulkanContext& context_;

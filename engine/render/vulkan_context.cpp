@@ -267,6 +267,16 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
     VkPhysicalDeviceFeatures features{};  // none beyond the core
+    // Multiview (both eyes in one pass) where the device has it.
+    VkPhysicalDeviceMultiviewFeatures multiviewFeatures{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
+    VkPhysicalDeviceFeatures2 available{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    available.pNext = &multiviewFeatures;
+    vkGetPhysicalDeviceFeatures2(choice_.device, &available);
+    multiview_ = multiviewFeatures.multiview == VK_TRUE;
+    VkPhysicalDeviceMultiviewFeatures enabledMultiview{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
+    enabledMultiview.multiview = multiview_ ? VK_TRUE : VK_FALSE;
     std::vector<const char*> extensions;
     for (const std::string& e : needs.extensions) extensions.push_back(e.c_str());
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
@@ -275,6 +285,7 @@ VulkanContext::VulkanContext(const ContextOptions& options) {
     info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     info.pEnabledFeatures = &features;
+    info.pNext = &enabledMultiview;
     if (options.createDevice)
       device_ = options.createDevice(choice_.device, info);
     else

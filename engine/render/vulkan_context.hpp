@@ -102,6 +102,8 @@ class VulkanContext {
 
   // A driver that rasterizes on the CPU (lavapipe).
   bool cpuDevice() const { return choice_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+  // The device draws several views in one pass (VK_KHR_multiview's feature, enabled when there).
+  bool multiview() const { return multiview_; }
   // Largest sample count usable for both colour and depth framebuffers, at most `wanted`.
   VkSampleCountFlagBits sampleCountUpTo(VkSampleCountFlagBits wanted) const;
   // The sample count for interactive views (window, headset): 4x MSAA on a GPU, none on a CPU
@@ -129,6 +131,7 @@ class VulkanContext {
   VkPhysicalDeviceMemoryProperties memory_{};
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
+  bool multiview_ = false;
 };
 
 }  // namespace curvefold

@@ -178,16 +178,25 @@ void XrProgram::createSwapchains() {
   CHECK_XR(xrEnumerateSwapchainFormats(session_, 0, &count, nullptr));
   std::vector<std::int64_t> formats(count);
   CHECK_XR(xrEnumerateSwapchainFormats(session_, count, &count, formats.data()));
-  for (std::uint32_t i = 0; i < viewConfigs_.size(); ++i) {
+  // One array swapchain for all views when the plugin draws them at once and they share a size.
+  const std::uint32_t viewCount = std::uint32_t(viewConfigs_.size());
+  bool shared = viewCount > 1 && graphics_->viewsPerSwapchain() >= viewCount;
+  for (const XrViewConfigurationView& config : viewConfigs_)
+    shared =
+        shared && config.recommendedImageRectWidth == viewConfigs_[0].recommendedImageRectWidth &&
+        config.recommendedImageRectHeight == viewConfigs_[0].recommendedImageRectHeight &&
+        config.recommendedSwapchainSampleCount == viewConfigs_[0].recommendedSwapchainSampleCount;
+  for (std::uint32_t i = 0; i < (shared ? 1u : viewCount); ++i) {
     const XrViewConfigurationView& config = viewConfigs_[i];
     XrViewSwapchains chains;
+    chains.arraySize = shared ? viewCount : 1;
     chains.samples = graphics_->chooseSampleCount(config);
     chains.extent = {std::int32_t(config.recommendedImageRectWidth),
                      std::int32_t(config.recommendedImageRectHeight)};
     chains.colorFormat = graphics_->chooseColorFormat(formats);
     chains.depthFormat = graphics_->chooseDepthFormat(formats, chains.samples);
     XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
-    info.arraySize = 1;
+    info.arraySize = chains.arraySize;
     info.faceCount = 1;
     info.mipCount = 1;
     info.sampleCount = 1;  // MSAA, when used, resolves into these
@@ -316,46 +325,66 @@ void XrProgram::endFrame(const XrFrameTiming& timing) {
     CHECK_XR(xrLocateViews(session_, &locate, &viewState, std::uint32_t(views_.size()), &count,
                            views_.data()));
     // No head pose, no picture: a frame with no layers keeps the session going.
+    const std::uint32_t viewCount = std::uint32_t(viewConfigs_.size());
     submitLayer = (viewState.viewStateFlags & XR_VIEW_STATE_POSITION_VALID_BIT) &&
                   (viewState.viewStateFlags & XR_VIEW_STATE_ORIENTATION_VALID_BIT) &&
-                  count == swapchains_.size();
+                  count == viewCount;
     if (submitLayer) {
-      projectionViews.resize(count);
-      depthInfos.resize(count);
-      for (std::uint32_t i = 0; i < count; ++i) {
-        const XrViewSwapchains& chains = swapchains_[i];
-        XrEyeView eye;
-        eye.index = i;
-        eye.pose = views_[i].pose;
-        eye.fov = views_[i].fov;
-        eye.extent = chains.extent;
-        XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-        XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-        wait.timeout = XR_INFINITE_DURATION;
-        CHECK_XR(xrAcquireSwapchainImage(chains.color, &acquire, &eye.colorImage));
+      // Each swapchain's image once (a shared array swapchain serves every view), the views drawn
+      // (at once, when the plugin can), then the images released.
+      std::vector<std::uint32_t> colorImages(swapchains_.size());
+      std::vector<std::optional<std::uint32_t>> depthImages(swapchains_.size());
+      XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+      XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+      wait.timeout = XR_INFINITE_DURATION;
+      for (std::size_t k = 0; k < swapchains_.size(); ++k) {
+        const XrViewSwapchains& chains = swapchains_[k];
+        CHECK_XR(xrAcquireSwapchainImage(chains.color, &acquire, &colorImages[k]));
         CHECK_XR(xrWaitSwapchainImage(chains.color, &wait));
         if (chains.depth != XR_NULL_HANDLE) {
           std::uint32_t depthImage = 0;
           CHECK_XR(xrAcquireSwapchainImage(chains.depth, &acquire, &depthImage));
           CHECK_XR(xrWaitSwapchainImage(chains.depth, &wait));
-          eye.depthImage = depthImage;
+          depthImages[k] = depthImage;
         }
-        graphics_->renderEye(eye);
+      }
+      const bool shared = sharesSwapchain();
+      std::vector<XrEyeView> eyes(count);
+      for (std::uint32_t i = 0; i < count; ++i) {
+        const std::size_t k = shared ? 0 : i;
+        XrEyeView& eye = eyes[i];
+        eye.index = i;
+        eye.pose = views_[i].pose;
+        eye.fov = views_[i].fov;
+        eye.extent = swapchains_[k].extent;
+        eye.colorImage = colorImages[k];
+        eye.depthImage = depthImages[k];
+        eye.arrayIndex = shared ? i : 0;
+      }
+      graphics_->renderViews(eyes);
+      for (const XrViewSwapchains& chains : swapchains_) {
         XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
         CHECK_XR(xrReleaseSwapchainImage(chains.color, &release));
         if (chains.depth != XR_NULL_HANDLE)
           CHECK_XR(xrReleaseSwapchainImage(chains.depth, &release));
+      }
+      projectionViews.resize(count);
+      depthInfos.resize(count);
+      for (std::uint32_t i = 0; i < count; ++i) {
+        const XrViewSwapchains& chains = swapchains_[shared ? 0 : i];
         XrCompositionLayerProjectionView& view = projectionViews[i];
         view = {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW};
         view.pose = views_[i].pose;
         view.fov = views_[i].fov;
         view.subImage.swapchain = chains.color;
         view.subImage.imageRect = {{0, 0}, chains.extent};
+        view.subImage.imageArrayIndex = eyes[i].arrayIndex;
         if (depthExtension_ && chains.depth != XR_NULL_HANDLE) {
           XrCompositionLayerDepthInfoKHR& depth = depthInfos[i];
           depth = {XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR};
           depth.subImage.swapchain = chains.depth;
           depth.subImage.imageRect = {{0, 0}, chains.extent};
+          depth.subImage.imageArrayIndex = eyes[i].arrayIndex;
           depth.minDepth = 0.0f;
           depth.maxDepth = 1.0f;
           depth.nearZ = graphics_->nearPlane();

@@ -25,6 +25,7 @@ struct XrEyeView {
   XrExtent2Di extent{};
   std::uint32_t colorImage = 0;             // acquired image of the view's colour swapchain
   std::optional<std::uint32_t> depthImage;  // of its depth swapchain, when it has one
+  std::uint32_t arrayIndex = 0;             // its layer of an array swapchain (0 otherwise)
 };
 
 struct XrViewSwapchains {
@@ -34,6 +35,7 @@ struct XrViewSwapchains {
   std::int64_t depthFormat = 0;
   XrExtent2Di extent{};
   std::uint32_t samples = 1;
+  std::uint32_t arraySize = 1;  // layers: one per view when the views share one swapchain
 };
 
 // The graphics half of the program (hello_xr's IGraphicsPlugin).
@@ -56,6 +58,13 @@ class XrGraphics {
   virtual void swapchainsDestroyed() = 0;
   // Draws one eye into its acquired images; its commands are submitted on return.
   virtual void renderEye(const XrEyeView& eye) = 0;
+  // How many views the plugin draws at once, into one array swapchain (layer i for view i), when
+  // the views share a size: 2 for a multiview pass; 1, a swapchain per view.
+  virtual std::uint32_t viewsPerSwapchain() const { return 1; }
+  // Draws every view of a frame (their images acquired); by default each eye on its own.
+  virtual void renderViews(std::span<const XrEyeView> eyes) {
+    for (const XrEyeView& eye : eyes) renderEye(eye);
+  }
   // The near and far planes the eyes are drawn with (depth 0 at near, 1 at far), for the depth
   // submitted with XR_KHR_composition_layer_depth.
   virtual float nearPlane() const = 0;
@@ -98,6 +107,8 @@ class XrProgram {
   bool submitsDepth() const {
     return depthExtension_ && !swapchains_.empty() && swapchains_[0].depth != XR_NULL_HANDLE;
   }
+  // The views share one array swapchain (drawn in one multiview pass).
+  bool sharesSwapchain() const { return !swapchains_.empty() && swapchains_[0].arraySize > 1; }
   const std::string& runtimeName() const { return runtimeName_; }
 
   // xrGetSystem for a head-mounted display: false while none is available (not connected, or

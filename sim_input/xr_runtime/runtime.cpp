@@ -41,6 +41,8 @@ namespace curvefold::simxr {
 namespace {
 
 constexpr XrSystemId kSystemId = 1;
+// Layers a swapchain may have (arraySize): enough for a multiview app's two eyes and more.
+constexpr std::uint32_t kMaxSwapchainLayers = 16;
 constexpr const char* kProfilePreference[] = {"/interaction_profiles/oculus/touch_controller",
                                               "/interaction_profiles/valve/index_controller",
                                               "/interaction_profiles/htc/vive_controller",
@@ -91,7 +93,11 @@ struct Session {
   bool waited = false, begun = false;
   std::set<Space*> spaces;
   std::set<Swapchain*> swapchains;
-  std::map<std::uint32_t, Swapchain*> lastViewSwapchain;  // view -> last submitted
+  struct ViewImage {
+    Swapchain* swapchain = nullptr;
+    std::uint32_t layer = 0;  // imageArrayIndex
+  };
+  std::map<std::uint32_t, ViewImage> lastViewSwapchain;  // view -> last submitted
   bool syncedFocused = false;
   bool attached = false;  // action sets attached (once per session)
 };
@@ -332,20 +338,25 @@ Pose fromXr(const XrPosef& p) {
 
 void saveViews(Session& session, Swapchain* only = nullptr) {
   if (!gInstance || gInstance->config.saveViews.empty()) return;
-  for (auto& [view, swapchain] : session.lastViewSwapchain) {
+  // Views may share an array swapchain (a layer each): every view is saved before any image is
+  // marked as saved.
+  std::vector<Swapchain*> saved;
+  for (auto& [view, image] : session.lastViewSwapchain) {
+    Swapchain* swapchain = image.swapchain;
     if (!swapchain || (only && swapchain != only) || swapchain->lastReleased < 0) continue;
     const std::string name = "view" + std::to_string(view) + ".png";
-    swapchain->images->savePng(std::uint32_t(swapchain->lastReleased),
+    swapchain->images->savePng(std::uint32_t(swapchain->lastReleased), image.layer,
                                std::filesystem::path(gInstance->config.saveViews) / name);
     log("saved " + name);
-    swapchain->lastReleased = -1;
+    saved.push_back(swapchain);
   }
+  for (Swapchain* swapchain : saved) swapchain->lastReleased = -1;
 }
 
 void destroySwapchain(Swapchain* swapchain) {
   saveViews(*swapchain->session, swapchain);
   for (auto& [view, last] : swapchain->session->lastViewSwapchain)
-    if (last == swapchain) last = nullptr;
+    if (last.swapchain == swapchain) last.swapchain = nullptr;
   swapchain->session->swapchains.erase(swapchain);
   gHandles.erase(swapchain);
   delete swapchain;
@@ -965,7 +976,8 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession handle, const XrFrameEndInfo* 
         if (sub.imageRect.offset.x < 0 || sub.imageRect.offset.y < 0 ||
             sub.imageRect.extent.width <= 0 || sub.imageRect.extent.height <= 0)
           return XR_ERROR_SWAPCHAIN_RECT_INVALID;
-        session.lastViewSwapchain[v] = swapchain;
+        if (sub.imageArrayIndex >= swapchain->images->layers()) return XR_ERROR_VALIDATION_FAILURE;
+        session.lastViewSwapchain[v] = {swapchain, sub.imageArrayIndex};
         ++viewCount;
         // XR_KHR_composition_layer_depth: a depth image for the view, checked as its spec says.
         for (auto* next = static_cast<const XrBaseInStructure*>(projection->views[v].next); next;
@@ -977,6 +989,8 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession handle, const XrFrameEndInfo* 
           Swapchain* images = objectOf<Swapchain>(depth->subImage.swapchain);
           if (!images || images->session != &session) return XR_ERROR_HANDLE_INVALID;
           if (!images->images->depth() || images->lastReleased < 0) return XR_ERROR_LAYER_INVALID;
+          if (depth->subImage.imageArrayIndex >= images->images->layers())
+            return XR_ERROR_VALIDATION_FAILURE;
           if (depth->subImage.imageRect.extent.width <= 0 ||
               depth->subImage.imageRect.extent.height <= 0)
             return XR_ERROR_SWAPCHAIN_RECT_INVALID;
@@ -1300,8 +1314,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createSwapchain(XrSession handle, const XrSwapcha
     if (std::find(formats.begin(), formats.end(), info->format) == formats.end())
       return XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED;
     if (info->width == 0 || info->height == 0 || info->width > 4096 || info->height > 4096 ||
-        info->sampleCount != 1 || info->faceCount != 1 || info->arraySize != 1 ||
-        info->mipCount != 1)
+        info->sampleCount != 1 || info->faceCount != 1 || info->arraySize == 0 ||
+        info->arraySize > kMaxSwapchainLayers || info->mipCount != 1)
       return XR_ERROR_VALIDATION_FAILURE;
     VkImageUsageFlags usage = 0;
     if (info->usageFlags & XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT)
@@ -1317,10 +1331,12 @@ XRAPI_ATTR XrResult XRAPI_CALL createSwapchain(XrSession handle, const XrSwapcha
       usage |= VK_IMAGE_USAGE_STORAGE_BIT;
     auto swapchain = std::make_unique<Swapchain>();
     swapchain->session = &session;
-    swapchain->images = std::make_unique<SwapchainImages>(*session.vulkan, VkFormat(info->format),
-                                                          info->width, info->height, usage, 3);
+    swapchain->images =
+        std::make_unique<SwapchainImages>(*session.vulkan, VkFormat(info->format), info->width,
+                                          info->height, usage, 3, info->arraySize);
     log("swapchain " + swapchainFormatName(info->format) + " " + std::to_string(info->width) + "x" +
-        std::to_string(info->height));
+        std::to_string(info->height) +
+        (info->arraySize > 1 ? " layers=" + std::to_string(info->arraySize) : ""));
     Swapchain* created = swapchain.release();
     session.swapchains.insert(created);
     *out = handleOf<XrSwapchain>(created);

@@ -73,8 +73,14 @@ std::vector<std::int64_t> swapchainFormats(VkPhysicalDevice device) {
 }
 
 SwapchainImages::SwapchainImages(const VulkanBinding& binding, VkFormat format, std::uint32_t width,
-                                 std::uint32_t height, VkImageUsageFlags usage, std::uint32_t count)
-    : binding_(binding), format_(format), width_(width), height_(height), depth_(isDepth(format)) {
+                                 std::uint32_t height, VkImageUsageFlags usage, std::uint32_t count,
+                                 std::uint32_t layers)
+    : binding_(binding),
+      format_(format),
+      width_(width),
+      height_(height),
+      layers_(layers),
+      depth_(isDepth(format)) {
   try {
     for (std::uint32_t i = 0; i < count; ++i) {
       VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -82,7 +88,7 @@ SwapchainImages::SwapchainImages(const VulkanBinding& binding, VkFormat format, 
       info.format = format;
       info.extent = {width, height, 1};
       info.mipLevels = 1;
-      info.arrayLayers = 1;
+      info.arrayLayers = layers;
       info.samples = VK_SAMPLE_COUNT_1_BIT;
       info.tiling = VK_IMAGE_TILING_OPTIMAL;
       info.usage = usage | (depth_ ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
@@ -111,7 +117,7 @@ SwapchainImages::SwapchainImages(const VulkanBinding& binding, VkFormat format, 
         barrier.newLayout = layout;
         barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         barrier.image = image;
-        barrier.subresourceRange = {aspectOf(format), 0, 1, 0, 1};
+        barrier.subresourceRange = {aspectOf(format), 0, 1, 0, layers};
         barrier.dstAccessMask = depth_ ? VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
                                        : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
         vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
@@ -166,8 +172,9 @@ void SwapchainImages::submitOnce(Record record) const {
   check(result, "a simulated runtime's submission");
 }
 
-void SwapchainImages::savePng(std::uint32_t index, const std::filesystem::path& path) const {
-  if (depth_ || index >= images_.size()) return;
+void SwapchainImages::savePng(std::uint32_t index, std::uint32_t layer,
+                              const std::filesystem::path& path) const {
+  if (depth_ || index >= images_.size() || layer >= layers_) return;
   const VkDeviceSize size = VkDeviceSize(width_) * height_ * 4;
   VkBufferCreateInfo bufferInfo{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   bufferInfo.size = size;
@@ -193,11 +200,11 @@ void SwapchainImages::savePng(std::uint32_t index, const std::filesystem::path& 
     barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers_};
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                          VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
     VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
     region.imageExtent = {width_, height_, 1};
     vkCmdCopyImageToBuffer(commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1,
                            &region);

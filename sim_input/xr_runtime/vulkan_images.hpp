@@ -22,16 +22,19 @@ struct VulkanBinding {
 
 class SwapchainImages {
  public:
+  // layers: the swapchain's arraySize (one layer per view for a multiview app).
   SwapchainImages(const VulkanBinding& binding, VkFormat format, std::uint32_t width,
-                  std::uint32_t height, VkImageUsageFlags usage, std::uint32_t count);
+                  std::uint32_t height, VkImageUsageFlags usage, std::uint32_t count,
+                  std::uint32_t layers = 1);
   ~SwapchainImages();
   SwapchainImages(const SwapchainImages&) = delete;
   SwapchainImages& operator=(const SwapchainImages&) = delete;
 
   const std::vector<VkImage>& images() const { return images_; }
   bool depth() const { return depth_; }
-  // Copies an image (in its attachment layout) to host memory and writes it as a PNG.
-  void savePng(std::uint32_t index, const std::filesystem::path& path) const;
+  std::uint32_t layers() const { return layers_; }
+  // Copies a layer of an image (in its attachment layout) to host memory and writes it as a PNG.
+  void savePng(std::uint32_t index, std::uint32_t layer, const std::filesystem::path& path) const;
 
  private:
   void release();
@@ -41,6 +44,7 @@ class SwapchainImages {
   VulkanBinding binding_;
   VkFormat format_;
   std::uint32_t width_, height_;
+  std::uint32_t layers_;
   bool depth_;
   std::vector<VkImage> images_;
   std::vector<VkDeviceMemory> memory_;
