@@ -100,6 +100,32 @@ TEST(HeadsetStudio, AStudioScriptWithoutThePanelIsRefused) {
   }
 }
 
+// A point_at naming no panel item, or a panel gesture in a script without the panel, is one line
+// naming the gesture.
+TEST(HeadsetStudio, ABadPanelGestureNamesTheGesture) {
+  const std::string head =
+      R"({"format":"curvefold-gesture-script","version":1,"surface":{"generator":"square",)"
+      R"("parameters":{}},)";
+  try {
+    recordGestureScriptText(head + R"("studio":{},"gestures":[{"point_at":{"item":"Nope"}}]})",
+                            "bad.gesture.json", kMaxGestureFrames, studioGestureWorld());
+    FAIL() << "no error";
+  } catch (const GestureError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("bad.gesture.json"), std::string::npos) << what;
+    EXPECT_NE(what.find("gesture 1 (point_at)"), std::string::npos) << what;
+    EXPECT_NE(what.find("\"Nope\""), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  try {
+    recordGestureScriptText(head + R"("gestures":[{"toggle_panel":{}}]})", "plain.gesture.json",
+                            kMaxGestureFrames, studioGestureWorld());
+    FAIL() << "no error";
+  } catch (const GestureError& e) {
+    EXPECT_NE(std::string(e.what()).find("needs a studio script"), std::string::npos) << e.what();
+  }
+}
+
 class HeldPanel : public ::testing::Test {
  protected:
   HeldPanel()

@@ -471,6 +471,19 @@ TEST_F(XrApp, NoRuntimeIsOneLineNamingXrRuntimeJson) {
   EXPECT_NE(result.err.find("curvefold design"), std::string::npos) << result.err;
 }
 
+TEST_F(XrApp, AnExportDirThatIsAFileIsOneLine) {
+  std::ofstream(path("taken")) << "a file";
+  const std::string input = kExamples + "star.jsonl";
+  const CommandResult result =
+      run("xr " + input + " --export-dir " + path("taken").string() + " --autosave a.json",
+          simulated(input));
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("--export-dir"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(path("a.json")));
+  EXPECT_EQ(slurp(path("taken")), "a file");
+}
+
 TEST_F(XrApp, NoHeadsetIsOneLine) {
   const CommandResult result = run("xr --headless --record r.jsonl --autosave a.json",
                                    simulated(kExamples + "cone.jsonl", "CURVEFOLD_SIM_NO_HMD=1"));

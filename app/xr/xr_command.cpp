@@ -2,6 +2,7 @@
 // choosing XR, the desktop window, or a line saying what is missing.
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -90,6 +91,10 @@ void addXrCommand(CLI::App& app) {
                     "Enable the Vulkan validation layer; any message fails the run");
   command->callback([options] {
     XrAppOptions run = *options;
+    // Refused before any runtime or file is touched: exports need a folder there (or none yet).
+    if (!run.exportDir.empty() && std::filesystem::exists(run.exportDir) &&
+        !std::filesystem::is_directory(run.exportDir))
+      throw UsageError("--export-dir " + run.exportDir + ": exists and is not a folder");
     if (const char* v = std::getenv("CURVEFOLD_VK_VALIDATION"); v && std::string(v) == "1")
       run.validation = true;
     runXr(run);
