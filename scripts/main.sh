@@ -28,7 +28,7 @@ XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json \
   build/app/curvefold xr examples/recordings/star.jsonl --record "$xr/star-xr.jsonl" \
   --autosave "$xr/star-xr.curvefold.json" >"$xr/xr.txt"
 # A whole design made in the headset through its panel (a new cone, folds, a two-handed scale,
-# FOLD and SVG exported from the panel), played through the simulated runtime.
+# FOLD, SVG and PNG exported from the panel), played through the simulated runtime.
 studio="$out/xr_studio-xr"
 rm -rf "$studio"  # its autosaves are numbered, not overwritten: start clean
 mkdir -p "$studio"

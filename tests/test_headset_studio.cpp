@@ -83,7 +83,8 @@ TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
   EXPECT_EQ(log.replaced, 1);
   EXPECT_GE(design.folds.size(), 3u);
   EXPECT_GT(largestScale, 1.3);  // the script spreads the hands to 1.5
-  EXPECT_EQ(log.written, (std::vector<std::string>{"exports/cone.fold", "exports/cone.svg"}));
+  EXPECT_EQ(log.written, (std::vector<std::string>{"exports/cone.fold", "exports/cone.svg",
+                                                   "exports/cone.png"}));
 
   const ReplayResult replayed = replayStudioRecording(stored);
   EXPECT_EQ(designText(replayed.design), designText(design));

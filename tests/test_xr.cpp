@@ -292,6 +292,15 @@ TEST_F(XrApp, AStudioSessionMakesAndExportsADesignFromThePanel) {
 
   ASSERT_TRUE(fs::exists(exports / "cone.fold"));
   ASSERT_TRUE(fs::exists(exports / "cone.svg"));
+  {
+    // The PNG export renders the design on the headset's device.
+    int w = 0, h = 0, channels = 0;
+    unsigned char* png = stbi_load((exports / "cone.png").c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(png, nullptr);
+    stbi_image_free(png);
+    EXPECT_EQ(w, 1280);
+    EXPECT_EQ(h, 720);
+  }
   const json fold = json::parse(slurp(exports / "cone.fold"));
   expectFoldInvariants(fold);
   const std::string svg = slurp(exports / "cone.svg");
