@@ -104,7 +104,13 @@ TEST(Gestures, AFarGrabPointGrabsTheNearestEdge) {
   GestureRecorder recorder(squareHeader());
   // The grabbed point is the nearest surface point, so a point off the sheet grabs its edge.
   EXPECT_NO_THROW(recorder.drag({1.0, 0.0, 0.0}, {{0.05, 0.0, 0.05}}, 0.3));
-  EXPECT_EQ(recorder.session().foldCount(), 1u);
+  ASSERT_EQ(recorder.session().foldCount(), 1u);
+  // The grabbed point is on the square's right edge (x = 0.1, its half size), level with the
+  // far point (y = 0): the nearest point of the sheet to (1, 0, 0).
+  const glm::dvec3 grabbed = recorder.session().folds()[0].grabbed;
+  EXPECT_NEAR(grabbed.x, 0.1, 1e-9);
+  EXPECT_NEAR(grabbed.y, 0.0, 1e-9);
+  EXPECT_NEAR(grabbed.z, 0.0, 1e-9);
 }
 
 // Every example script records to exactly the checked-in recording, which replays with every

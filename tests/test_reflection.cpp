@@ -153,6 +153,28 @@ TEST(Reflection, PlaneThroughVerticesSnapsInsteadOfMakingSlivers) {
   }
 }
 
+// Planes just outside the on-plane tolerance of a row of vertices (1.001 to 1000 times it, on
+// either side): the row is not on the plane, and cutting beside it would leave slivers far
+// thinner than the cut floor, so the plane moves through the row instead (by at most
+// kRelativeMaxPlaneShift of the size); every invariant holds and nothing is thinner than the floor.
+TEST(Reflection, PlanesJustOutsideTheOnPlaneToleranceCutNoSliver) {
+  const Sheet grid = flatGrid(4, 4, 0.05);
+  const double epsilon = sheetEpsilon(grid), size = sheetSize(grid);
+  int moved = 0;
+  for (double factor : {1.001, 1.01, 1.5, 3.0, 10.0, 100.0, 1000.0})
+    for (double side : {1.0, -1.0}) {
+      const double line = 0.1 + side * factor * epsilon;
+      const ReflectionResult result = reflect(grid, 0, bisectorPlane({0, 0, 0}, {0, 2 * line, 0}));
+      SCOPED_TRACE(::testing::Message() << "offset " << side * factor << " epsilon");
+      expectInvariants(result.sheet, grid);
+      EXPECT_GE(measure(result.sheet).minRelativeHeight, kRelativeFeatureSize);
+      EXPECT_LE(std::abs(result.changes.planeShift), kRelativeMaxPlaneShift * size);
+      moved += result.changes.planeShift != 0.0;
+      EXPECT_FALSE(creasesOf(result.sheet).empty());  // it did fold
+    }
+  EXPECT_GT(moved, 0);
+}
+
 TEST(Reflection, SeedOnThePlaneLeavesTheSheetAlone) {
   const Sheet grid = flatGrid(3, 3, 0.1);
   ReflectionPlane plane{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};  // vertex 0 lies on it

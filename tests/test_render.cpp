@@ -1,6 +1,7 @@
 // The renderer, headless on whatever Vulkan device the loader finds (lavapipe on a machine
 // without a GPU) with the Khronos validation layer on: any validation message fails the test.
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -34,6 +35,37 @@ bool isBlue(const std::uint8_t* p) {
 }
 bool isRed(const std::uint8_t* p) {
   return p[0] > 150 && p[1] < 100 && p[2] < 100;
+}
+
+// What any picture of a scene must show, derived from the scene: its background colour in the
+// top-left corner (the view is framed around the sheet), the sheet's own pixels (where the same
+// scene drawn without its sheet and creases differs) over a good part of the picture, and, when
+// the sheet has creases, crease-coloured pixels. A black, empty or sheetless picture fails.
+// `renderer` draws the comparison (its sheet is marked replaced afterwards).
+void expectSceneDrawn(HeadlessRenderer& renderer, const RgbaImage& image, const Scene& scene,
+                      bool creases) {
+  const std::uint8_t* corner = image.at(1, 1);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(corner[c], std::lround(scene.colors.background[c] * 255.0f), 2) << "channel " << c;
+  Scene without = scene;
+  without.sheet.sheet = nullptr;
+  without.creases.clear();
+  renderer.sceneRenderer().markSheetReplaced();
+  const RgbaImage empty = renderer.render(without);
+  renderer.sceneRenderer().markSheetReplaced();
+  std::size_t sheet = 0;
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    for (std::uint32_t x = 0; x < image.width; ++x) {
+      const std::uint8_t *a = image.at(x, y), *b = empty.at(x, y);
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(a[c]) - int(b[c])) > 30) {
+          ++sheet;
+          break;
+        }
+    }
+  EXPECT_GT(sheet, std::size_t(image.width) * image.height / 50);  // over 2% of the picture
+  if (creases)
+    EXPECT_GT(countPixels(image, [](const std::uint8_t* p) { return isRed(p) || isBlue(p); }), 10u);
 }
 
 // One renderer for the whole suite (instance creation with validation takes a while); every test
@@ -295,6 +327,7 @@ TEST_F(Render, SameDesignRendersBitIdenticallyTwice) {
   renderer_->sceneRenderer().markSheetReplaced();
   const RgbaImage second = renderer_->render(scene);
   EXPECT_EQ(first.pixels, second.pixels);
+  expectSceneDrawn(*renderer_, first, scene, /*creases=*/true);
 }
 
 // A drag rendered frame by frame with incremental upload gives the images of a full upload every
@@ -320,6 +353,7 @@ void expectIncrementalUploadMatchesFullUpload(HeadlessRenderer& renderer, bool s
     incrementalBytes += renderer.sceneRenderer().lastUpload().sheetBytes;
     const RgbaImage b = full.render(scene);
     fullBytes += full.sceneRenderer().lastUpload().sheetBytes;
+    expectSceneDrawn(full, b, scene, /*creases=*/false);
     return a.pixels == b.pixels;
   };
   EXPECT_TRUE(frame());

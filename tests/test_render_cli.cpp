@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <stb/stb_image.h>
 
 #include "cli_test_support.hpp"
 
@@ -30,6 +31,28 @@ std::pair<std::uint32_t, std::uint32_t> pngSize(const fs::path& path) {
            (std::uint32_t(std::uint8_t(bytes[at + 2])) << 8) | std::uint8_t(bytes[at + 3]);
   };
   return {be32(16), be32(20)};
+}
+
+// A rendered picture shows the scene: the background colour (SceneColors' default, as sRGB bytes
+// 219, 224, 232) in the top-left corner, the sheet over a good part of it, and, for a folded
+// sheet, crease pixels (mountain red or valley blue). A black, blank or garbled PNG fails.
+void expectPictureOfAFoldedSheet(const fs::path& file, bool creases) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
+  ASSERT_NE(pixels, nullptr) << file;
+  const int background[3] = {219, 224, 232};
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixels[4 + c], background[c], 2) << file;
+  std::size_t sheet = 0, crease = 0;
+  for (int i = 0; i < w * h; ++i) {
+    const unsigned char* p = pixels + std::size_t(i) * 4;
+    bool differs = false;
+    for (int c = 0; c < 3; ++c) differs = differs || std::abs(int(p[c]) - background[c]) > 30;
+    sheet += differs;
+    crease += (p[0] > 150 && p[1] < 100 && p[2] < 100) || (p[2] > 150 && p[0] < 100 && p[1] < 130);
+  }
+  stbi_image_free(pixels);
+  EXPECT_GT(sheet, std::size_t(w) * h / 50) << file;
+  if (creases) EXPECT_GT(crease, 5u) << file;
 }
 
 class RenderCli : public curvefold::testing::CliTest {
@@ -59,6 +82,7 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("wrote"), std::string::npos);
   EXPECT_EQ(pngSize(path("fold.png")), std::make_pair(320u, 200u));
+  expectPictureOfAFoldedSheet(path("fold.png"), /*creases=*/true);
 }
 
 // `--png -` is standard output: the PNG alone, the report on stderr (issue 13, B5).
@@ -102,6 +126,7 @@ TEST_F(RenderCli, ReplayWritesAFrameEveryNFrames) {
   EXPECT_EQ(names.front(), "frame_000000.png");
   EXPECT_EQ(names[1], "frame_000002.png");
   EXPECT_EQ(pngSize(path("frames") / names.back()), std::make_pair(96u, 64u));
+  expectPictureOfAFoldedSheet(path("frames") / names.back(), /*creases=*/false);
 }
 
 // Issue 13, B7: frames that cannot be written left the replay's five outputs already replaced. The

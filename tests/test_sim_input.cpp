@@ -676,8 +676,9 @@ TEST(Player, RealTimeTakesTheRecordedTime) {
   const ReplayResult result = replayRecording(squareRecording(frames), options);
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // At least the recorded 0.3 s (a real-time replay never runs ahead of its frames); no upper
+  // bound: a busy machine may take longer, and speed is a benchmark's business.
   EXPECT_GE(elapsed, 0.3);
-  EXPECT_LT(elapsed, 2.0);
   EXPECT_EQ(result.design.folds.size(), 1u);
 }
 

@@ -14,6 +14,7 @@ using testing::flatGrid;
 using testing::unitSquare;
 
 void expectInvalid(const Sheet& sheet, const std::string& fragment) {
+  ASSERT_FALSE(fragment.empty()) << "name the problem the sheet must be refused for";
   try {
     validate(sheet);
     FAIL() << "validate accepted a sheet that should fail with '" << fragment << "'";
@@ -59,8 +60,8 @@ TEST(Validate, RejectsNonFiniteCoordinates) {
 TEST(Validate, RejectsInconsistentOrientation) {
   Sheet sheet = flatGrid(2, 1, 1.0);
   std::swap(sheet.triangles[2][1], sheet.triangles[2][2]);
-  expectInvalid(sheet, "");
-  EXPECT_FALSE(measure(sheet).firstProblem.empty());
+  expectInvalid(sheet, "is inconsistently oriented");
+  EXPECT_NE(measure(sheet).firstProblem.find("inconsistently oriented"), std::string::npos);
 }
 
 TEST(Validate, RejectsNonManifoldEdge) {
