@@ -1,6 +1,6 @@
-// What the renderer shows of an interaction (DESIGN.md 7), for every live or replayed view: the
-// displayed sheet in the world, the reflected part tinted, the grabbed handle and its start, the
-// plane disk while a drag folds, the hover highlight, and optionally both hands.
+// What the renderer shows of an interaction (docs/design.md 7), for every live or replayed view:
+// the displayed sheet in the world, the reflected part tinted, the grabbed handle and its start,
+// the plane disk while a drag folds, the hover highlight, and optionally both hands.
 #pragma once
 
 #include <optional>

@@ -1,6 +1,6 @@
-// `render` and `replay --frames`: headless Vulkan renders to PNG (DESIGN.md 7). The renderer takes
-// a plain Scene; the interaction state of a replayed frame (hands, hover, grab, plane) is turned
-// into markers and a plane disk here, so the render library knows nothing of interaction.
+// `render` and `replay --frames`: headless Vulkan renders to PNG (docs/design.md 7). The renderer
+// takes a plain Scene; the interaction state of a replayed frame (hands, hover, grab, plane) is
+// turned into markers and a plane disk here, so the render library knows nothing of interaction.
 #include <unistd.h>
 
 #include <charconv>

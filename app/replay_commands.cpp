@@ -1,4 +1,4 @@
-// `replay` and `record-script`: recorded input (DESIGN.md 6) on the command line.
+// `replay` and `record-script`: recorded input (docs/design.md 6) on the command line.
 #include <unistd.h>
 
 #include <chrono>

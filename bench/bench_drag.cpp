@@ -1,5 +1,5 @@
 // Drag update (fixed sheet + target -> temporal sheet) against a plain copy of the mesh arrays,
-// on cylinders of about 10k, 100k and 1M triangles with 5 prior folds (DESIGN.md 8); and the
+// on cylinders of about 10k, 100k and 1M triangles with 5 prior folds (docs/design.md 8); and the
 // planar simplification that the display session makes after an undo, redo or open, on the
 // folded cylinders and on a flat square of about 100k triangles (an unstructured mesh).
 //

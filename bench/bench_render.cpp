@@ -1,5 +1,5 @@
 // Rendering on whatever Vulkan device the loader finds (lavapipe on a machine without a GPU),
-// 1280x720 (DESIGN.md 8); the second argument is the sample count: 1 (what the designer window
+// 1280x720 (docs/design.md 8); the second argument is the sample count: 1 (what the designer window
 // uses on a CPU device) or 4 (4x MSAA, the GPU default and the PNG renders):
 // - BM_Frame: one frame of a static ~100k-triangle cylinder, submit to fence; no readback. The
 //   third argument: 0 draws every triangle of the sheet (the renderer's cost per triangle), 1

@@ -1,5 +1,5 @@
 // Replay of a 60 s, 90 Hz recording of continuous two-handed dragging on a 20k-triangle sheet,
-// without rendering (DESIGN.md 8: < 1 s), with and without parsing the JSON Lines text.
+// without rendering (docs/design.md 8: < 1 s), with and without parsing the JSON Lines text.
 //
 //   build/bench/bench_replay --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <cmath>

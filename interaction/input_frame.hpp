@@ -1,6 +1,6 @@
 // The one input type every source produces (OpenXR controllers, the desktop mouse, a recording, a
-// gesture script): a snapshot of both hands in their roles (DESIGN.md 5). No OpenXR or GLFW types,
-// so the interaction core, the recorder and the player are shared by all sources.
+// gesture script): a snapshot of both hands in their roles (docs/design.md 5). No OpenXR or GLFW
+// types, so the interaction core, the recorder and the player are shared by all sources.
 #pragma once
 
 #include <cstdint>

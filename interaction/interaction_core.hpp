@@ -1,9 +1,10 @@
-// The two-handed interaction core (DESIGN.md 5): consumes input frames and drives a FoldSession.
-// The non-dominant hand holds the sheet frame while its clutch is squeezed; the dominant hand's
-// point hovers, grabs a surface point with the trigger and drags it, and release commits. Moving
-// either hand during a drag folds, since the target is taken in sheet coordinates. With both
-// squeezes held (and no drag), the sheet moves, turns and scales uniformly between the hands, as
-// in Open Brush and Gravity Sketch: the scale is a view scale, the design stays in metres.
+// The two-handed interaction core (docs/design.md 5): consumes input frames and drives a
+// FoldSession. The non-dominant hand holds the sheet frame while its clutch is squeezed; the
+// dominant hand's point hovers, grabs a surface point with the trigger and drags it, and release
+// commits. Moving either hand during a drag folds, since the target is taken in sheet coordinates.
+// With both squeezes held (and no drag), the sheet moves, turns and scales uniformly between the
+// hands, as in Open Brush and Gravity Sketch: the scale is a view scale, the design stays in
+// metres.
 #pragma once
 
 #include <memory>

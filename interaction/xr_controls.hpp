@@ -1,5 +1,5 @@
-// Which controller input does what in curvefold's OpenXR interface (DESIGN.md 5), as plain data
-// with no OpenXR types: the XR input source suggests exactly these bindings, and the simulated
+// Which controller input does what in curvefold's OpenXR interface (docs/design.md 5), as plain
+// data with no OpenXR types: the XR input source suggests exactly these bindings, and the simulated
 // runtime (sim_input/openxr_runtime) plays a user who presses exactly these controls, so a
 // recording drives the app through the real action system.
 //

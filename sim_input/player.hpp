@@ -1,4 +1,4 @@
-// Replays a recording (DESIGN.md 6): its frames go into the same interaction core as a live
+// Replays a recording (docs/design.md 6): its frames go into the same interaction core as a live
 // source's, over a fold session built from the header's initial surface and sheet frame, so a
 // replay makes the very folds of the recorded session, bit for bit.
 #pragma once

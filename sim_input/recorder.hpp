@@ -1,4 +1,4 @@
-// Records a live session (DESIGN.md 6): the header, then every input frame as it comes. A
+// Records a live session (docs/design.md 6): the header, then every input frame as it comes. A
 // recording is a journal, written in place and never rewritten: lines are kept in memory and
 // written, flushed and fsynced at each commit point, so a process killed at any moment leaves a
 // file that replays every fold committed before it (at most the drag in progress is lost).

@@ -1,4 +1,4 @@
-// Recorded input (DESIGN.md 6): a session's input frames as JSON Lines, so that any session (a
+// Recorded input (docs/design.md 6): a session's input frames as JSON Lines, so that any session (a
 // headset, the desktop, a gesture script) can be replayed bit for bit without its source.
 //
 // Line 1 is the header:

@@ -1,5 +1,5 @@
 // Soak: many random folds in a row on every initial surface, with random cancels, undos and redos
-// among them; every invariant is checked after every step (DESIGN.md 8). ctest runs it small;
+// among them; every invariant is checked after every step (docs/design.md 8). ctest runs it small;
 // scripts/soak.sh runs 1,000 steps on 20k-triangle sheets.
 //
 //   curvefold_soak [--steps N] [--triangles T] [--seed S] [--surface NAME]

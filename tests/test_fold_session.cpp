@@ -287,7 +287,7 @@ TEST(FoldSession, UndoRedoAcrossKeyframes) {
   EXPECT_EQ(session.folds()[0].seed, all[0].seed);
 }
 
-// DESIGN.md 8: the fixed + temporal pair stays below three sheets while dragging.
+// docs/design.md 8: the fixed + temporal pair stays below three sheets while dragging.
 TEST(FoldSession, FixedAndTemporalStayBelowThreeSheets) {
   FoldSession session(flatGrid(100, 100, 0.002));
   for (int i = 0; i < 3; ++i) {

@@ -1,4 +1,4 @@
-// Each interaction rule of DESIGN.md 5, driven by synthetic frames on a flat square sheet
+// Each interaction rule of docs/design.md 5, driven by synthetic frames on a flat square sheet
 // (z = 0, centred on the origin, front +z).
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-// `curvefold design` and plain `curvefold`: the desktop designer (DESIGN.md 5 and 7). A GLFW
+// `curvefold design` and plain `curvefold`: the desktop designer (docs/design.md 5 and 7). A GLFW
 // window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
 // feeding the one InteractionCore; recorded with --record, autosaved after every committed fold.
 // GLFW declares glfwCreateWindowSurface only with Vulkan's header.
@@ -156,7 +156,7 @@ void runDesigner(const DesignerOptions& options) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
   ImGui::StyleColorsLight();
 
-  // The 2D crease pattern as a side view on the right (DESIGN.md 7), toggled in the panel.
+  // The 2D crease pattern as a side view on the right (docs/design.md 7), toggled in the panel.
   bool creasePatternPanel = options.creasePatternPanel;
   CreasePatternCache panelCache;
 

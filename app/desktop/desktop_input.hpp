@@ -1,5 +1,5 @@
-// The desktop source (DESIGN.md 5, desktop fallback): mouse and keyboard become InputFrames for
-// the same InteractionCore as VR, so a desktop session records and replays like any other.
+// The desktop source (docs/design.md 5, desktop fallback): mouse and keyboard become InputFrames
+// for the same InteractionCore as VR, so a desktop session records and replays like any other.
 //
 // Mapping. The sheet hand is not used (untracked): the sheet keeps the recording's initial frame,
 // and orbit/pan/zoom move only the camera, which is a view and never part of the input. The point

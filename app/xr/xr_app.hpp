@@ -1,4 +1,4 @@
-// `curvefold xr`: folding with tracked controllers (DESIGN.md 5-7). The XR program (instance,
+// `curvefold xr`: folding with tracked controllers (docs/design.md 5-7). The XR program (instance,
 // session state machine, frame loop), the XR input source feeding the one InteractionCore, the
 // recorder and the autosave, and the Vulkan plugin drawing each eye. A lost session (LOSS_PENDING)
 // is destroyed and made again when the runtime has a headset again; the fold session lives

@@ -1,4 +1,4 @@
-// Creases: the tracked edges made by folds (DESIGN.md 3), their signed fold angles and their
+// Creases: the tracked edges made by folds (docs/design.md 3), their signed fold angles and their
 // assignment, and the crease curves (chains of crease edges between junctions).
 #pragma once
 

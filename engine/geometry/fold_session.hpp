@@ -1,6 +1,6 @@
 // The fixed and temporal sheets of [Mitani & Igarashi 2011, Sec. 3.3] with grab, drag, commit,
-// cancel, undo and redo (DESIGN.md 2). Folds are recorded as a plane and a 2D development seed, so
-// a design replays independent of vertex numbering.
+// cancel, undo and redo (docs/design.md 2). Folds are recorded as a plane and a 2D development
+// seed, so a design replays independent of vertex numbering.
 #pragma once
 
 #include <cstddef>
@@ -40,7 +40,8 @@ Sheet applyFold(const Sheet& sheet, const FoldRecord& fold);
 // Applies folds in order to an initial sheet.
 Sheet replayFolds(Sheet initial, const std::vector<FoldRecord>& folds);
 
-// Bytes a session holds, for the memory budget of DESIGN.md (fixed + temporal below 3 sheets).
+// Bytes a session holds, for the memory budget of docs/design.md 8 (fixed + temporal below 3
+// sheets).
 struct SessionMemory {
   std::size_t fixed = 0;      // the fixed sheet's arrays
   std::size_t temporal = 0;   // the temporal sheet's arrays

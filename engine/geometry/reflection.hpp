@@ -1,5 +1,5 @@
 // One reflection fold: Mitani & Igarashi, "Interactive Design of Planar Curved Folding by
-// Reflection", Pacific Graphics 2011, Sec. 3.3 (DESIGN.md 2).
+// Reflection", Pacific Graphics 2011, Sec. 3.3 (docs/design.md 2).
 //
 // The part of the sheet that contains the seed vertex, found by a flood fill that passes between
 // triangles only through vertices strictly on the seed's side of the plane, is reflected through

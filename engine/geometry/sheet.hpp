@@ -1,6 +1,6 @@
 // The sheet: a triangle mesh of paper with a 3D position and a 2D development position per
-// vertex (DESIGN.md 1). Flat index arrays, as in geometry-central; everything derived from them
-// (vertex-to-triangle references, edges, boundary loops) lives in topology.hpp.
+// vertex (docs/design.md 1). Flat index arrays, as in geometry-central; everything derived from
+// them (vertex-to-triangle references, edges, boundary loops) lives in topology.hpp.
 #pragma once
 
 #include <array>
@@ -69,7 +69,8 @@ double sheetSize(const Sheet& sheet);
 
 // Tolerance below which a signed distance counts as zero, relative to the sheet's size. A vertex
 // snapped onto a plane stays where it is, which costs up to 2*epsilon of edge length in the
-// reflected part, so the snap sits an order below the 1e-9 isometry tolerance (DESIGN.md 2, 8).
+// reflected part, so the snap sits an order below the 1e-9 isometry tolerance (docs/design.md 2,
+// 8).
 inline constexpr double kRelativeEpsilon = 1e-10;
 inline double sheetEpsilon(const Sheet& sheet) {
   return kRelativeEpsilon * sheetSize(sheet);

@@ -1,4 +1,4 @@
-// Grabbing any point of the surface, not only a vertex (DESIGN.md 1): finding the point, and
+// Grabbing any point of the surface, not only a vertex (docs/design.md 1): finding the point, and
 // making it a vertex by splitting the triangle or edge it lies on.
 #pragma once
 

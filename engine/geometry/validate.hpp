@@ -1,4 +1,4 @@
-// The geometry contract of every sheet (DESIGN.md 1-2): a manifold, consistently oriented disk
+// The geometry contract of every sheet (docs/design.md 1-2): a manifold, consistently oriented disk
 // (possibly with holes) whose triangles are non-degenerate, counter-clockwise in the development
 // and congruent to it in 3D.
 #pragma once

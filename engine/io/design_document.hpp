@@ -1,4 +1,4 @@
-// The design document, `*.curvefold.json` (DESIGN.md 4): the initial surface and the ordered
+// The design document, `*.curvefold.json` (docs/design.md 4): the initial surface and the ordered
 // committed folds. Folds are stored as a plane and a development seed, so loading replays them
 // independent of vertex numbering. Doubles are written in their shortest exact form, so a saved
 // design rebuilds bit for bit.

@@ -1,5 +1,6 @@
-// FOLD 1.2 export (DESIGN.md 4), the origami ecosystem's format (Origami Simulator, Rabbit Ear,
-// ORIPA): the key frame is the crease pattern in the development, file_frames[0] the folded form.
+// FOLD 1.2 export (docs/design.md 4), the origami ecosystem's format (Origami Simulator, Rabbit
+// Ear, ORIPA): the key frame is the crease pattern in the development, file_frames[0] the folded
+// form.
 #pragma once
 
 #include <filesystem>

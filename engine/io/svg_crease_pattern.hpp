@@ -1,4 +1,4 @@
-// The crease pattern as SVG for printing at real size (DESIGN.md 4), in the colours Origami
+// The crease pattern as SVG for printing at real size (docs/design.md 4), in the colours Origami
 // Simulator imports: boundary black, mountain red, valley blue, slit/cut green; bending edges are
 // not drawn.
 #pragma once

@@ -1,5 +1,5 @@
-// A plain description of what to draw (DESIGN.md 7): no interaction, XR or Vulkan types, so the
-// desktop designer, the replay frames and the XR eyes all fill the same struct. World units are
+// A plain description of what to draw (docs/design.md 7): no interaction, XR or Vulkan types, so
+// the desktop designer, the replay frames and the XR eyes all fill the same struct. World units are
 // metres; the sheet is given in sheet coordinates with its world_from_sheet matrix.
 #pragma once
 

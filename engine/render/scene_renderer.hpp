@@ -1,5 +1,5 @@
 // Draws a Scene into any RenderTarget's render pass: the two-sided sheet, crease ribbons, ground
-// grid, markers, the translucent plane disk and the crease-pattern panel (DESIGN.md 7).
+// grid, markers, the translucent plane disk and the crease-pattern panel (docs/design.md 7).
 //
 // Incremental upload. The sheet lives in host-visible buffers, one set per frame in flight
 // (positions as float3 and a tint byte per vertex, triangles as uint32x3). A slot

@@ -1,5 +1,5 @@
-// The OpenXR input source (DESIGN.md 5), in the manner of hello_xr: one action set with an action
-// per XrControl (interaction/xr_controls.hpp), each on both hands' subaction paths, bindings
+// The OpenXR input source (docs/design.md 5), in the manner of hello_xr: one action set with an
+// action per XrControl (interaction/xr_controls.hpp), each on both hands' subaction paths, bindings
 // suggested once for every profile in the controls table, the action set attached to each
 // session, and everything polled once a frame into the InputFrame every other source produces.
 //

@@ -1,7 +1,7 @@
-// The simulated OpenXR runtime (DESIGN.md 6): a shared library the Khronos loader loads through
-// XR_RUNTIME_JSON (the manifest is generated beside it). It serves a head and two controllers
-// from a recording, frame-locked (one recorded frame per focused xrWaitFrame), runs the session
-// state machine a real runtime runs, resolves actions through the application's suggested
+// The simulated OpenXR runtime (docs/design.md 6): a shared library the Khronos loader loads
+// through XR_RUNTIME_JSON (the manifest is generated beside it). It serves a head and two
+// controllers from a recording, frame-locked (one recorded frame per focused xrWaitFrame), runs the
+// session state machine a real runtime runs, resolves actions through the application's suggested
 // bindings for the current interaction profile, and makes XR_KHR_vulkan_enable2 swapchains on the
 // application's device (XR_MND_headless sessions have none) in sRGB and UNORM colour formats and
 // the device's depth formats, and takes depth images with XR_KHR_composition_layer_depth. Its log
