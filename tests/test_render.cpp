@@ -12,6 +12,7 @@
 #include "engine/geometry/reflection.hpp"
 #include "engine/render/gpu_resources.hpp"
 #include "engine/render/headless_renderer.hpp"
+#include "engine/render/image_barrier.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -250,25 +251,16 @@ TEST_F(Render, AWorldPanelShowsItsPictureAndHidesWhatIsBehindIt) {
     // Solid green, left ready to sample.
     FrameRing once(context, 1);
     Frame& frame = once.begin();
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = picture.image();
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    barrier.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const ImageUse transfer{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                            VK_ACCESS_TRANSFER_WRITE_BIT};
+    imageBarrier(frame.commands, picture.image(), VK_IMAGE_ASPECT_COLOR_BIT, {}, transfer);
     const VkClearColorValue green{{0.1f, 0.8f, 0.2f, 1.0f}};
     vkCmdClearColorImage(frame.commands, picture.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         &green, 1, &barrier.subresourceRange);
-    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    barrier.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                         &barrier);
+                         &green, 1, &all);
+    imageBarrier(frame.commands, picture.image(), VK_IMAGE_ASPECT_COLOR_BIT, transfer,
+                 {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT});
     once.submit(frame);
     once.wait(frame);
   }

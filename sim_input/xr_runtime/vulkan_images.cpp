@@ -6,6 +6,7 @@
 
 #include "engine/io/atomic_file.hpp"
 #include "engine/render/image.hpp"
+#include "engine/render/image_barrier.hpp"
 
 namespace curvefold::simxr {
 
@@ -112,17 +113,10 @@ SwapchainImages::SwapchainImages(const VulkanBinding& binding, VkFormat format, 
                                         : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     submitOnce([&](VkCommandBuffer commands) {
       for (VkImage image : images_) {
-        VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-        barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        barrier.newLayout = layout;
-        barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        barrier.image = image;
-        barrier.subresourceRange = {aspectOf(format), 0, 1, 0, layers};
-        barrier.dstAccessMask = depth_ ? VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
-                                       : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                             VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                             &barrier);
+        const VkAccessFlags write = depth_ ? VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
+                                           : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        imageBarrier(commands, image, aspectOf(format), {},
+                     {layout, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, write}, layers);
       }
     });
   } catch (...) {
@@ -193,28 +187,19 @@ void SwapchainImages::savePng(std::uint32_t index, std::uint32_t layer,
   vkBindBufferMemory(binding_.device, buffer, memory, 0);
   const VkImage image = images_[index];
   submitOnce([&](VkCommandBuffer commands) {
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    barrier.oldLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    barrier.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    barrier.srcQueueFamilyIndex = barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers_};
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+    // The attachment layout the app renders in, to a copy's, and back after the copy.
+    const ImageUse attachment{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                              VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                              VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT};
+    const ImageUse copy{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                        VK_ACCESS_TRANSFER_READ_BIT};
+    imageBarrier(commands, image, VK_IMAGE_ASPECT_COLOR_BIT, attachment, copy, layers_);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
     region.imageExtent = {width_, height_, 1};
     vkCmdCopyImageToBuffer(commands, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1,
                            &region);
-    barrier.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    barrier.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    barrier.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    barrier.newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, 0, nullptr, 0, nullptr,
-                         1, &barrier);
+    imageBarrier(commands, image, VK_IMAGE_ASPECT_COLOR_BIT, copy, attachment, layers_);
     VkBufferMemoryBarrier host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
     host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
