@@ -957,6 +957,8 @@ XRAPI_ATTR XrResult XRAPI_CALL endFrame(XrSession handle, const XrFrameEndInfo* 
     checkType(info, XR_TYPE_FRAME_END_INFO);
     if (!session.running) return XR_ERROR_SESSION_NOT_RUNNING;
     if (!session.begun) return XR_ERROR_CALL_ORDER_INVALID;
+    // No xrWaitFrame predicts a time at or before the epoch.
+    if (info->displayTime <= 0) return XR_ERROR_TIME_INVALID;
     if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE)
       return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     if (info->layerCount > 0 && !info->layers) return XR_ERROR_VALIDATION_FAILURE;
