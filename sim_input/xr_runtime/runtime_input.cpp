@@ -1,4 +1,4 @@
-// The simulated OpenXR runtime: Spaces and actions (the specification's "Spaces" and "Input"
+// The simulated OpenXR runtime: spaces and actions (the specification's "Spaces" and "Input"
 // chapters): reference and action spaces located from the served hands, action sets, suggested
 // bindings checked per profile, syncing, action states and haptics.
 #include "sim_input/xr_runtime/runtime_state.hpp"

@@ -1,4 +1,4 @@
-// The simulated OpenXR runtime: Swapchains and XR_KHR_vulkan_enable2 (the specification's
+// The simulated OpenXR runtime: swapchains and XR_KHR_vulkan_enable2 (the specification's
 // "Swapchain" chapter and the extension): formats, images on the application's device, acquire,
 // wait and release.
 #include "sim_input/xr_runtime/runtime_state.hpp"
