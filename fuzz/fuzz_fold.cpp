@@ -23,8 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
         break;
       default: {
         const Sheet& fixed = session.fixed();
-        const auto t = data.ConsumeIntegralInRange<TriangleIndex>(
-            0, static_cast<TriangleIndex>(fixed.triangleCount() - 1));
+        const TriangleIndex t = data.ConsumeIntegralInRange<std::uint32_t>(
+            0, static_cast<std::uint32_t>(fixed.triangleCount() - 1));
         double a = data.ConsumeProbability<double>(), b = data.ConsumeProbability<double>();
         if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
         session.beginDrag({t, {1.0 - a - b, a, b}});

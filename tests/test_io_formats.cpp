@@ -125,7 +125,8 @@ TEST_F(FoldFormat, KeyFrameIsTheCreasePatternAndFrameZeroTheFoldedForm) {
   const auto& faces = fold["faces_vertices"];
   ASSERT_EQ(faces.size(), sheet.triangleCount());
   for (std::size_t t = 0; t < faces.size(); ++t) {
-    const Triangle tri{faces[t][0], faces[t][1], faces[t][2]};
+    const Triangle tri{faces[t][0].get<std::uint32_t>(), faces[t][1].get<std::uint32_t>(),
+                       faces[t][2].get<std::uint32_t>()};
     EXPECT_EQ(tri, sheet.triangles[t]);
     glm::dvec2 p[3];
     for (int k = 0; k < 3; ++k) p[k] = {coords[tri[k]][0], coords[tri[k]][1]};
@@ -143,7 +144,7 @@ TEST_F(FoldFormat, KeyFrameIsTheCreasePatternAndFrameZeroTheFoldedForm) {
   std::map<Edge, std::size_t> edgeIndex;
   std::map<std::string, int> counts;
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    edgeIndex[Edge::of(edges[e][0], edges[e][1])] = e;
+    edgeIndex[Edge::of(edges[e][0].get<std::uint32_t>(), edges[e][1].get<std::uint32_t>())] = e;
     ++counts[assignments[e].get<std::string>()];
     if (assignments[e] != "M" && assignments[e] != "V") {
       EXPECT_EQ(angles[e], 0.0);

@@ -65,8 +65,9 @@ void expectSceneDrawn(HeadlessRenderer& renderer, const RgbaImage& image, const 
         }
     }
   EXPECT_GT(sheet, std::size_t(image.width) * image.height / 50);  // over 2% of the picture
-  if (creases)
+  if (creases) {
     EXPECT_GT(countPixels(image, [](const std::uint8_t* p) { return isRed(p) || isBlue(p); }), 10u);
+  }
 }
 
 // One renderer for the whole suite (instance creation with validation takes a while); every test
@@ -264,7 +265,8 @@ TEST_F(Render, AWorldPanelShowsItsPictureAndHidesWhatIsBehindIt) {
     once.submit(frame);
     once.wait(frame);
   }
-  VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  VkSamplerCreateInfo samplerInfo{};
+  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_NEAREST;
   VkSampler sampler = VK_NULL_HANDLE;
   ASSERT_EQ(vkCreateSampler(context.device(), &samplerInfo, nullptr, &sampler), VK_SUCCESS);

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <type_traits>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -22,6 +23,14 @@ void expectInvalid(const Sheet& sheet, const std::string& fragment) {
     EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << error.what();
   }
 }
+
+// Issue 15, 4: a triangle index is not a vertex index, nor the other way round; mixing them up
+// does not compile (an integer still makes either).
+static_assert(!std::is_convertible_v<TriangleIndex, VertexIndex>);
+static_assert(!std::is_convertible_v<VertexIndex, TriangleIndex>);
+static_assert(!std::is_invocable_v<Edge (*)(VertexIndex, VertexIndex), TriangleIndex, VertexIndex>);
+static_assert(std::is_convertible_v<std::uint32_t, VertexIndex>);
+static_assert(std::is_convertible_v<TriangleIndex, std::uint32_t>);
 
 TEST(Validate, AcceptsFlatGridAndMeasuresIt) {
   const Sheet grid = flatGrid(4, 3, 0.05);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -16,9 +17,45 @@
 
 namespace curvefold {
 
-using VertexIndex = std::uint32_t;
-using TriangleIndex = std::uint32_t;
 inline constexpr std::uint32_t kNoIndex = 0xffffffffu;
+
+// An index into one kind of element, as geometry-central's element handles are: a vertex index
+// and a triangle index are different types, so passing one where the other is meant does not
+// compile (that would take two user conversions, index to integer to index, and C++ allows one).
+// It is made from an integer and read as one implicitly (to index the flat arrays, to count), and
+// stepped with ++ and -- in loops.
+template <typename Tag>
+struct ElementIndex {
+  std::uint32_t value = 0;
+
+  constexpr ElementIndex() = default;
+  constexpr ElementIndex(std::uint32_t index) : value(index) {}
+  constexpr operator std::uint32_t() const { return value; }
+  constexpr ElementIndex& operator++() {
+    ++value;
+    return *this;
+  }
+  constexpr ElementIndex operator++(int) { return ElementIndex(value++); }
+  constexpr ElementIndex& operator--() {
+    --value;
+    return *this;
+  }
+  constexpr ElementIndex& operator+=(std::uint32_t step) {
+    value += step;
+    return *this;
+  }
+  constexpr ElementIndex& operator-=(std::uint32_t step) {
+    value -= step;
+    return *this;
+  }
+  // Compared as the integers they are (kNoIndex included).
+};
+// Comparing a vertex with a triangle is a mistake, not a comparison.
+template <typename A, typename B>
+requires(!std::is_same_v<A, B>) bool operator==(ElementIndex<A>, ElementIndex<B>) = delete;
+
+using VertexIndex = ElementIndex<struct VertexTag>;
+using TriangleIndex = ElementIndex<struct TriangleTag>;
 
 // Three vertex indices, counter-clockwise in the development: that order defines the front side.
 using Triangle = std::array<VertexIndex, 3>;

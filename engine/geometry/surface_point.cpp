@@ -302,10 +302,11 @@ namespace {
 
 // Compressed rows from `old` with some rows replaced (`rows`, ascending by vertex; every vertex
 // at or past the old row count among them): unchanged runs are copied whole, their offsets moved.
-void patchRows(const std::vector<std::uint32_t>& oldOffsets,
-               const std::vector<std::uint32_t>& oldValues, std::size_t rowCount,
-               const std::vector<std::pair<VertexIndex, std::vector<std::uint32_t>>>& rows,
-               std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& values) {
+template <typename Value>
+void patchRows(const std::vector<std::uint32_t>& oldOffsets, const std::vector<Value>& oldValues,
+               std::size_t rowCount,
+               const std::vector<std::pair<VertexIndex, std::vector<Value>>>& rows,
+               std::vector<std::uint32_t>& offsets, std::vector<Value>& values) {
   offsets.resize(rowCount + 1);
   offsets[0] = 0;
   values.clear();
@@ -347,7 +348,8 @@ void adjacencyAfterInsertion(const SheetAdjacency& before, const Sheet& sheet,
   std::sort(touched.begin(), touched.end());
   touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
 
-  std::vector<std::pair<VertexIndex, std::vector<std::uint32_t>>> triangleRows, neighborRows;
+  std::vector<std::pair<VertexIndex, std::vector<TriangleIndex>>> triangleRows;
+  std::vector<std::pair<VertexIndex, std::vector<VertexIndex>>> neighborRows;
   for (VertexIndex v : touched) {
     std::vector<TriangleIndex> row;
     if (v < undo.vertexCount) {

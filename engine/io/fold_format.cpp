@@ -1,4 +1,5 @@
 #include "engine/io/fold_format.hpp"
+#include "engine/io/json_reader.hpp"
 
 #include <nlohmann/json.hpp>
 

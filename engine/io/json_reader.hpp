@@ -17,7 +17,20 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/geometry/sheet.hpp"
+
 namespace curvefold {
+
+// Vertex and triangle indices read and written as the integers they are (nlohmann finds these by
+// argument-dependent lookup).
+template <typename Json, typename Tag>
+void to_json(Json& json, ElementIndex<Tag> index) {
+  json = index.value;
+}
+template <typename Json, typename Tag>
+void from_json(const Json& json, ElementIndex<Tag>& index) {
+  index.value = json.template get<std::uint32_t>();
+}
 
 // "<prefix>: <where>: <problem>", one line. Each format's reader turns it into its own error type.
 class JsonReadError : public std::runtime_error {

@@ -40,8 +40,13 @@ class DirtyRanges {
   void add(std::uint32_t begin, std::uint32_t end) {
     if (begin < end) ranges_.emplace_back(begin, end);
   }
-  void addIndices(std::span<const std::uint32_t> indices) {
-    for (std::uint32_t i : indices) ranges_.emplace_back(i, i + 1);
+  // Any range of indices (vertex, triangle or plain integers).
+  template <typename Range>
+  void addIndices(const Range& indices) {
+    for (const auto index : indices) {
+      const std::uint32_t i = index;
+      ranges_.emplace_back(i, i + 1);
+    }
   }
   void clear() { ranges_.clear(); }
   bool empty() const { return ranges_.empty(); }
