@@ -3,13 +3,16 @@
 // call order, the frame's time, and suggested-binding paths. A misreading of the specification
 // shared by the program and the runtime would pass test_xr; it cannot pass these, which state the
 // specification's rules directly (OpenXR 1.0, chapters "Session", "Rendering" and "Input").
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <openxr/openxr.h>
+#include <vulkan/vulkan.h>
+
+#include "app/xr/xr_vulkan_graphics.hpp"
 
 namespace {
 
@@ -176,6 +179,142 @@ TEST_F(SimRuntimeSpec, SuggestedBindingsAreCheckedAgainstTheProfile) {
   EXPECT_EQ(suggest(touch, "/user/hand/right/input/squeeze/value"),
             XR_ERROR_ACTIONSETS_ALREADY_ATTACHED);
   EXPECT_EQ(xrAttachSessionActionSets(session_, &attach), XR_ERROR_ACTIONSETS_ALREADY_ATTACHED);
+}
+
+// "Swapchain Image Management" with XR_KHR_vulkan_enable2: the runtime offers its formats in
+// order of preference, sRGB first (the specification asks runtimes to prefer sRGB), each colour
+// format also as UNORM, and depth formats; it refuses a format it did not offer, an empty array,
+// and acquiring more images than it has; images come out in acquire order and are released in it;
+// and a layer that names an array layer the swapchain does not have is a validation failure. The
+// app's Vulkan plugin only makes the device here (through the runtime, as the extension says).
+TEST(SimRuntimeSwapchains, FormatsArraysAndImageOrderFollowTheSpecification) {
+  setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
+  setenv("CURVEFOLD_SIM_HOLD", "1", 1);
+  unsetenv("CURVEFOLD_SIM_INPUT");
+  curvefold::XrVulkanGraphics graphics(/*validation=*/false);
+  const std::vector<std::string> wanted = graphics.instanceExtensions();
+  std::vector<const char*> extensions;
+  for (const std::string& e : wanted) extensions.push_back(e.c_str());
+  XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
+  std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "spec");
+  info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
+  info.enabledExtensionCount = std::uint32_t(extensions.size());
+  info.enabledExtensionNames = extensions.data();
+  XrInstance instance = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateInstance(&info, &instance), XR_SUCCESS);
+  XrSystemGetInfo systemInfo{XR_TYPE_SYSTEM_GET_INFO};
+  systemInfo.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
+  XrSystemId system = XR_NULL_SYSTEM_ID;
+  ASSERT_EQ(xrGetSystem(instance, &systemInfo, &system), XR_SUCCESS);
+  graphics.initializeDevice(instance, system);
+  XrSessionCreateInfo sessionInfo{XR_TYPE_SESSION_CREATE_INFO};
+  sessionInfo.next = graphics.sessionBinding();
+  sessionInfo.systemId = system;
+  XrSession session = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateSession(instance, &sessionInfo, &session), XR_SUCCESS);
+
+  std::uint32_t count = 0;
+  ASSERT_EQ(xrEnumerateSwapchainFormats(session, 0, &count, nullptr), XR_SUCCESS);
+  std::vector<std::int64_t> formats(count);
+  std::uint32_t tooFew = 0;
+  EXPECT_EQ(xrEnumerateSwapchainFormats(session, 1, &tooFew, formats.data()),
+            XR_ERROR_SIZE_INSUFFICIENT);
+  ASSERT_EQ(xrEnumerateSwapchainFormats(session, count, &count, formats.data()), XR_SUCCESS);
+  ASSERT_GE(formats.size(), 4u);
+  EXPECT_EQ(formats[0], VK_FORMAT_R8G8B8A8_SRGB);  // preferred first
+  auto offered = [&](VkFormat f) {
+    return std::find(formats.begin(), formats.end(), std::int64_t(f)) != formats.end();
+  };
+  EXPECT_TRUE(offered(VK_FORMAT_R8G8B8A8_UNORM));
+  EXPECT_TRUE(offered(VK_FORMAT_B8G8R8A8_SRGB));
+  EXPECT_TRUE(offered(VK_FORMAT_D32_SFLOAT) || offered(VK_FORMAT_D24_UNORM_S8_UINT) ||
+              offered(VK_FORMAT_D16_UNORM));
+
+  XrSwapchainCreateInfo create{XR_TYPE_SWAPCHAIN_CREATE_INFO};
+  create.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT;
+  create.format = VK_FORMAT_R8G8B8A8_SRGB;
+  create.sampleCount = 1;
+  create.width = 64;
+  create.height = 48;
+  create.faceCount = 1;
+  create.mipCount = 1;
+  create.arraySize = 2;
+  XrSwapchain swapchain = XR_NULL_HANDLE, refused = XR_NULL_HANDLE;
+  XrSwapchainCreateInfo bad = create;
+  bad.format = VK_FORMAT_R16G16B16A16_SFLOAT;  // not offered
+  EXPECT_EQ(xrCreateSwapchain(session, &bad, &refused), XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED);
+  bad = create;
+  bad.arraySize = 0;
+  EXPECT_EQ(xrCreateSwapchain(session, &bad, &refused), XR_ERROR_VALIDATION_FAILURE);
+  ASSERT_EQ(xrCreateSwapchain(session, &create, &swapchain), XR_SUCCESS);
+  std::uint32_t images = 0;
+  ASSERT_EQ(xrEnumerateSwapchainImages(swapchain, 0, &images, nullptr), XR_SUCCESS);
+  ASSERT_GE(images, 2u);
+
+  // Running, one frame, every image acquired in turn: the next acquire has none left.
+  XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER};
+  while (xrPollEvent(instance, &event) == XR_SUCCESS) event = {XR_TYPE_EVENT_DATA_BUFFER};
+  XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
+  begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+  ASSERT_EQ(xrBeginSession(session, &begin), XR_SUCCESS);
+  XrFrameState frame{XR_TYPE_FRAME_STATE};
+  ASSERT_EQ(xrWaitFrame(session, nullptr, &frame), XR_SUCCESS);
+  ASSERT_EQ(xrBeginFrame(session, nullptr), XR_SUCCESS);
+  XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+  XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+  wait.timeout = XR_INFINITE_DURATION;
+  XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
+  EXPECT_EQ(xrReleaseSwapchainImage(swapchain, &release), XR_ERROR_CALL_ORDER_INVALID);
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t i = 0; i < images; ++i) {
+    std::uint32_t index = 0;
+    ASSERT_EQ(xrAcquireSwapchainImage(swapchain, &acquire, &index), XR_SUCCESS);
+    order.push_back(index);
+  }
+  std::uint32_t extra = 0;
+  EXPECT_EQ(xrAcquireSwapchainImage(swapchain, &acquire, &extra), XR_ERROR_CALL_ORDER_INVALID);
+  for (std::uint32_t i = 0; i < images; ++i) {
+    ASSERT_EQ(xrWaitSwapchainImage(swapchain, &wait), XR_SUCCESS);
+    ASSERT_EQ(xrReleaseSwapchainImage(swapchain, &release), XR_SUCCESS);
+  }
+  for (std::uint32_t i = 0; i < images; ++i) EXPECT_EQ(order[i], i);  // round robin from 0
+
+  // A projection layer naming layer 2 of a 2-layer swapchain.
+  XrReferenceSpaceCreateInfo spaceInfo{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+  spaceInfo.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+  spaceInfo.poseInReferenceSpace.orientation.w = 1.0f;
+  XrSpace space = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateReferenceSpace(session, &spaceInfo, &space), XR_SUCCESS);
+  XrCompositionLayerProjectionView views[2] = {{XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW},
+                                               {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW}};
+  for (std::uint32_t v = 0; v < 2; ++v) {
+    views[v].pose.orientation.w = 1.0f;
+    views[v].fov = {-0.8f, 0.8f, 0.8f, -0.8f};
+    views[v].subImage.swapchain = swapchain;
+    views[v].subImage.imageRect = {{0, 0}, {64, 48}};
+    views[v].subImage.imageArrayIndex = v == 0 ? 0 : 2;
+  }
+  XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
+  layer.space = space;
+  layer.viewCount = 2;
+  layer.views = views;
+  const XrCompositionLayerBaseHeader* layers[] = {
+      reinterpret_cast<const XrCompositionLayerBaseHeader*>(&layer)};
+  XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
+  end.displayTime = frame.predictedDisplayTime;
+  end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+  end.layerCount = 1;
+  end.layers = layers;
+  EXPECT_EQ(xrEndFrame(session, &end), XR_ERROR_VALIDATION_FAILURE);
+  views[1].subImage.imageArrayIndex = 1;
+  EXPECT_EQ(xrEndFrame(session, &end), XR_SUCCESS);
+
+  xrDestroySpace(space);
+  xrDestroySwapchain(swapchain);
+  graphics.swapchainsDestroyed();
+  xrDestroySession(session);
+  xrDestroyInstance(instance);
+  unsetenv("CURVEFOLD_SIM_HOLD");
 }
 
 }  // namespace
