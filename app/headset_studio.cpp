@@ -3,29 +3,16 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <stdexcept>
-#include <thread>
+
+#include "app/imgui_context_scope.hpp"
 
 namespace curvefold::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// Makes a context current for a scope and puts the previous one back (the desktop window may
-// have its own).
-class ContextScope {
- public:
-  explicit ContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
-    ImGui::SetCurrentContext(context);
-  }
-  ~ContextScope() { ImGui::SetCurrentContext(previous_); }
-
- private:
-  ImGuiContext* previous_;
-};
 
 // "cone" for a surface, "bowl" for "designs/bowl.curvefold.json".
 std::string designName(const std::string& name) {
@@ -49,7 +36,7 @@ HeadsetStudio::HeadsetStudio(Document& doc, HeadsetStudioOptions options, Headse
              "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
              "at the tip: fold. Panel button: show or hide this panel.") {
   context_ = ImGui::CreateContext();
-  ContextScope scope(context_);
+  ImGuiContextScope scope(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini: the layout is the code's, the same in every replay
   io.LogFilename = nullptr;
@@ -109,7 +96,7 @@ std::optional<PanelRayHit> HeadsetStudio::ray() const {
 
 ImDrawData* HeadsetStudio::drawData() const {
   if (!shown_ || !drawn_) return nullptr;
-  ContextScope scope(context_);
+  ImGuiContextScope scope(context_);
   return ImGui::GetDrawData();
 }
 
@@ -134,7 +121,7 @@ void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
 
   pressedByPanel_ = 0;
   if (shown_) {
-    ContextScope scope(context_);
+    ImGuiContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
     const double dt = std::max(frame.time - lastTime_, 1e-4);
     io.DeltaTime = float(dt);
@@ -188,35 +175,20 @@ ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptio
   HeadsetStudio studio(doc, studioOptions, host);
 
   ReplayResult result;
-  const std::vector<InputFrame>& frames = recording.frames;
-  const double start = frames.empty() ? 0.0 : frames.front().time;
-  ReplayProgress progress;
-  progress.frameCount = frames.size();
-  progress.duration = frames.empty() ? 0.0 : frames.back().time - start;
-  const auto clockStart = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const double time = frames[i].time - start;
-    if (options.realtime)
-      std::this_thread::sleep_until(clockStart +
-                                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                        std::chrono::duration<double>(time)));
+  result.duration = replayFrames(recording, options, [&](const InputFrame& frame) {
     const FoldSession* before = doc.session.get();
     const std::size_t foldsBefore = doc.session->foldCount();
     const std::size_t trianglesBefore = doc.session->fixed().triangleCount();
-    studio.process(frames[i]);
+    studio.process(frame);
     // A new sheet starts its fold count again; its events are logged against it.
     appendFoldLog(
-        result.log, *doc.session, doc.core->events(), frames[i].time,
+        result.log, *doc.session, doc.core->events(), frame.time,
         doc.session.get() == before ? foldsBefore : 0,
         doc.session.get() == before ? trianglesBefore : doc.session->initial().triangleCount());
-    progress.frame = i + 1;
-    progress.time = time;
-    if (options.onFrame) options.onFrame(progress);
-  }
+  });
   result.design = doc.design();
   result.sheet = doc.session->fixed();
-  result.frameCount = frames.size();
-  result.duration = progress.duration;
+  result.frameCount = recording.frames.size();
   result.endedWhileDragging = doc.session->dragging();
   return result;
 }

@@ -118,32 +118,36 @@ Design Player::design() const {
                               history.begin() + static_cast<std::ptrdiff_t>(session_.foldCount()))};
 }
 
-ReplayResult replayRecording(const Recording& recording, const ReplayOptions& options) {
-  Player player(recording, options.thresholds);
+double replayFrames(const Recording& recording, const ReplayOptions& options,
+                    const std::function<void(const InputFrame&)>& step) {
   const std::vector<InputFrame>& frames = recording.frames;
   const double start = frames.empty() ? 0.0 : frames.front().time;
   ReplayProgress progress;
   progress.frameCount = frames.size();
   progress.duration = frames.empty() ? 0.0 : frames.back().time - start;
   const auto clockStart = std::chrono::steady_clock::now();
-  while (!player.done()) {
-    const double time = frames[player.nextFrame()].time - start;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const double time = frames[i].time - start;
     if (options.realtime)
       std::this_thread::sleep_until(clockStart +
                                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                         std::chrono::duration<double>(time)));
-    player.step();
-    progress.frame = player.nextFrame();
+    step(frames[i]);
+    progress.frame = i + 1;
     progress.time = time;
     if (options.onFrame) options.onFrame(progress);
   }
+  return progress.duration;
+}
 
+ReplayResult replayRecording(const Recording& recording, const ReplayOptions& options) {
+  Player player(recording, options.thresholds);
   ReplayResult result;
+  result.duration = replayFrames(recording, options, [&](const InputFrame&) { player.step(); });
   result.design = player.design();
   result.sheet = player.session().fixed();
   result.log = player.log();
-  result.frameCount = frames.size();
-  result.duration = progress.duration;
+  result.frameCount = recording.frames.size();
   result.endedWhileDragging = player.session().dragging();
   return result;
 }

@@ -99,4 +99,10 @@ struct ReplayResult {
 
 ReplayResult replayRecording(const Recording& recording, const ReplayOptions& options = {});
 
+// The pace of a replay, for any replayer: calls step(frame) for each of the recording's frames in
+// order (sleeping until its recorded time when options.realtime) and options.onFrame after each.
+// Returns the recording's duration in seconds.
+double replayFrames(const Recording& recording, const ReplayOptions& options,
+                    const std::function<void(const InputFrame&)>& step);
+
 }  // namespace curvefold

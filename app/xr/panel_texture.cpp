@@ -3,23 +3,13 @@
 #include <imgui.h>
 #include <imgui_impl_vulkan.h>
 
+#include "app/imgui_context_scope.hpp"
 #include "engine/render/frames.hpp"
 #include "engine/render/vulkan_error.hpp"
 
 namespace curvefold::cli {
 
 namespace {
-
-class ContextScope {
- public:
-  explicit ContextScope(ImGuiContext* context) : previous_(ImGui::GetCurrentContext()) {
-    ImGui::SetCurrentContext(context);
-  }
-  ~ContextScope() { ImGui::SetCurrentContext(previous_); }
-
- private:
-  ImGuiContext* previous_;
-};
 
 void checkImGuiVulkan(VkResult result) {
   if (result != VK_SUCCESS) vkCheck(result, "Dear ImGui's Vulkan backend");
@@ -103,7 +93,7 @@ PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, Vk
     poolInfo.pPoolSizes = &poolSize;
     vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
 
-    ContextScope scope(imgui_);
+    ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = context.instance();
     info.PhysicalDevice = context.physicalDevice();
@@ -140,7 +130,7 @@ void PanelTexture::destroy() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   if (backend_) {
-    ContextScope scope(imgui_);
+    ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_Shutdown();
     backend_ = false;
   }
@@ -166,7 +156,7 @@ void PanelTexture::record(VkCommandBuffer commands, ImDrawData* drawData) {
   begin.pClearValues = &clear;
   vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
   if (drawData) {
-    ContextScope scope(imgui_);
+    ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_RenderDrawData(drawData, commands);
   }
   vkCmdEndRenderPass(commands);
