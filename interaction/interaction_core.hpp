@@ -35,6 +35,18 @@ struct InteractionThresholds {
   // A drag folds only once the target has moved this far (metres) from the grabbed point, so a
   // click without intent adds no fold; a release before that cancels.
   double minimumDragDistance = 0.002;
+  // Bare hands (interaction/hand_input.hpp): a pinch starts when the thumb and index tips come this
+  // close and ends when they part this far; a hand is closed (the clutch) when its fingertips come
+  // this close to the palm on average, and open again this far. The gaps between press and release
+  // are wider than tracking jitter, so jitter neither starts nor drops a fold.
+  double pinchPress = 0.015;
+  double pinchRelease = 0.035;
+  double grabPress = 0.055;
+  double grabRelease = 0.08;
+  // The pinch point's One Euro filter (Casiez et al., CHI 2012): cutoff at rest (Hz) and how fast
+  // the cutoff rises with speed (per m/s).
+  double pinchFilterMinCutoff = 1.5;
+  double pinchFilterBeta = 8.0;
 };
 
 enum class InteractionState { Idle, Hover, Dragging };
