@@ -10,6 +10,7 @@
 
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/surfaces/surface_builders.hpp"
 
 namespace curvefold {
 namespace {
@@ -226,6 +227,18 @@ TEST(Surfaces, TruncatedAndPartialConesAreValid) {
   expectGoodSheet(makeSurface("cone", {{"angle", 200}, {"resolution", 8}}), {1, 1}, "partial cone");
   expectGoodSheet(makeSurface("cone", {{"resolution", 1}}), {1, 1}, "coarsest cone");
   EXPECT_TRUE(makeSurface("cone", {{"angle", 120}}).tags.empty());
+  // Nearly a cylinder: the least taper still develops exactly; less is refused by name (fuzz_fold
+  // found a cone with radii 3e-15 apart whose development was 1.3 mm off).
+  const double base = 0.08;
+  expectGoodSheet(makeSurface("cone", {{"top_radius", base * (1.0 - 2.0 * detail::kMinConeTaper)},
+                                       {"resolution", 4}}),
+                  {1, 1}, "least tapered cone");
+  try {
+    makeSurface("cone", {{"base_radius", 1.0}, {"top_radius", 1.0 - 3.3e-15}, {"resolution", 1}});
+    ADD_FAILURE() << "a cone with radii 3e-15 apart was built";
+  } catch (const SurfaceError& error) {
+    EXPECT_NE(std::string(error.what()).find("top_radius"), std::string::npos) << error.what();
+  }
 }
 
 TEST(Surfaces, SweptCurveFollowsTheSineAndFacesUp) {

@@ -127,6 +127,12 @@ Sheet makeCone(const std::string& surface, double baseRadius, double height, dou
   if (topRadius >= baseRadius)
     failParameter(surface, "top_radius", topRadius,
                   "must be less than base_radius = " + formatNumber(baseRadius));
+  // Radii this close put the apex so far away (slant / size ~ base_radius / difference) that the
+  // development's coordinates lose the digits the 1e-9 isometry needs: that is a cylinder.
+  if (baseRadius - topRadius < kMinConeTaper * baseRadius)
+    failParameter(surface, "top_radius", topRadius,
+                  "is within " + formatNumber(kMinConeTaper) +
+                      " of base_radius: the apex is too far to develop exactly; use a cylinder");
   const double angle = angleDegrees * pi / 180.0;
   const double apexHeight = height * baseRadius / (baseRadius - topRadius);  // above the base
   const double slant = std::hypot(baseRadius, apexHeight);                   // apex to base

@@ -17,6 +17,9 @@ std::string formatApprox(double value);
 
 // The largest "resolution" a generator accepts.
 inline constexpr int kMaxResolution = 2000;
+// The least taper a truncated cone may have, (base_radius - top_radius) / base_radius: closer
+// radii would put its apex beyond the digits its development needs (found by fuzz_fold).
+inline constexpr double kMinConeTaper = 1e-3;
 
 // The fewest samples per wave of the swept sine that still show its shape (4: a sine sampled at
 // its peaks and zeros); fewer alias it into a zig-zag of the wrong amplitude.
