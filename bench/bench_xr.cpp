@@ -28,19 +28,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A fresh folder holding 60 s of two-handed dragging on a ~100k-triangle cylinder, served by the
+// simulated runtime, which never ends the session (the benchmark decides). Returns the recording.
+fs::path serveDragging(const fs::path& dir) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path input = dir / "drag.jsonl";
+  writeRecording(sixtySecondsOfDragging(259), input);
+  setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
+  setenv("CURVEFOLD_SIM_INPUT", input.c_str(), 1);
+  setenv("CURVEFOLD_SIM_HOLD", "1", 1);
+  return input;
+}
+
 struct XrLoop {
   fs::path dir;
   std::unique_ptr<cli::XrApp> app;
 
   XrLoop() {
     dir = fs::temp_directory_path() / ("curvefold-bench-xr-" + std::to_string(getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const fs::path input = dir / "drag.jsonl";
-    writeRecording(sixtySecondsOfDragging(259), input);  // ~100k triangles
-    setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
-    setenv("CURVEFOLD_SIM_INPUT", input.c_str(), 1);
-    setenv("CURVEFOLD_SIM_HOLD", "1", 1);  // never ends: the benchmark decides
+    const fs::path input = serveDragging(dir);
     cli::XrAppOptions options;
     options.input = input.string();
     options.headless = true;
@@ -83,13 +90,7 @@ void BM_XrStereoFrame(benchmark::State& state) {
   const bool multiview = state.range(0) == 1;
   const fs::path dir =
       fs::temp_directory_path() / ("curvefold-bench-stereo-" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const fs::path input = dir / "drag.jsonl";
-  writeRecording(sixtySecondsOfDragging(259), input);  // ~100k triangles
-  setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
-  setenv("CURVEFOLD_SIM_INPUT", input.c_str(), 1);
-  setenv("CURVEFOLD_SIM_HOLD", "1", 1);
+  const fs::path input = serveDragging(dir);
   setenv("CURVEFOLD_SIM_VIEW_SIZE", "1440x1600", 1);
   {
     cli::XrAppOptions options;
