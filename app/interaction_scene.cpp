@@ -1,5 +1,7 @@
 #include "app/interaction_scene.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -56,6 +58,38 @@ void addControllerModels(Scene& scene, const InteractionCore& core, const InputF
   addBox(scene.lines, *pointAim, {0.0, -0.01, 0.06}, {0.018, 0.022, 0.055},
          core.twoHanded() ? squeezed : idle);
   scene.lines.push_back({glm::vec3(pointAim->position), tip, {0.9f, 0.9f, 0.95f, 0.8f}});
+}
+
+void addHandModel(Scene& scene, const HandJoints& hand, const glm::vec4& color) {
+  if (!hand.tracked) return;
+  auto at = [&](HandJoint joint) { return glm::vec3(hand[joint].position); };
+  for (int i = static_cast<int>(HandJoint::Wrist); i < kHandJointCount; ++i) {
+    const auto joint = static_cast<HandJoint>(i);
+    const bool tip = joint == HandJoint::ThumbTip || joint == HandJoint::IndexTip ||
+                     joint == HandJoint::MiddleTip || joint == HandJoint::RingTip ||
+                     joint == HandJoint::LittleTip;
+    scene.markers.push_back({at(joint), tip ? 0.005f : 0.007f, color});
+  }
+  // Each finger's chain from the wrist: metacarpal to tip (the thumb has no intermediate).
+  for (HandJoint first :
+       {HandJoint::ThumbMetacarpal, HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
+        HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
+    const int count = first == HandJoint::ThumbMetacarpal ? 4 : 5;
+    glm::vec3 from = at(HandJoint::Wrist);
+    for (int k = 0; k < count; ++k) {
+      const glm::vec3 to = at(static_cast<HandJoint>(static_cast<int>(first) + k));
+      scene.lines.push_back({from, to, color});
+      from = to;
+    }
+  }
+}
+
+void addPinchPoint(Scene& scene, const glm::dvec3& point, bool pinched, double openness) {
+  const glm::vec4 apart(0.95f, 0.95f, 0.98f, 1.0f), closing(1.0f, 0.8f, 0.1f, 1.0f),
+      held(0.2f, 0.85f, 0.35f, 1.0f);
+  const float t = float(std::clamp(openness, 0.0, 1.0));
+  scene.markers.push_back(
+      {glm::vec3(point), pinched ? 0.009f : 0.006f, pinched ? held : glm::mix(closing, apart, t)});
 }
 
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,

@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "engine/render/scene.hpp"
+#include "interaction/hand_input.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
 
@@ -44,6 +45,12 @@ struct InteractionSceneOptions {
 // Bodies are lines; a squeeze lights the body that squeezes.
 void addControllerModels(Scene& scene, const InteractionCore& core, const InputFrame& input,
                          const std::optional<Pose>& pointAim);
+
+// A tracked bare hand (issue 16) as its 26 joints (small spheres) and bones (lines), in `color`.
+void addHandModel(Scene& scene, const HandJoints& hand, const glm::vec4& color);
+// The pinch point and its state: white while the tips are apart, warming to yellow as they close,
+// green and larger while pinched (`openness`: HandInput::pinchOpenness).
+void addPinchPoint(Scene& scene, const glm::dvec3& point, bool pinched, double openness);
 
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,

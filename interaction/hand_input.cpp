@@ -1,5 +1,6 @@
 #include "interaction/hand_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,6 +36,25 @@ glm::dvec3 OneEuroFilter::filter(const glm::dvec3& sample, double time) {
   return *last_;
 }
 
+glm::dquat OneEuroRotationFilter::filter(const glm::dquat& sample, double time) {
+  if (!last_) {
+    last_ = sample;
+    lastSpeed_ = 0.0;
+    lastTime_ = time;
+    return sample;
+  }
+  const double dt = time - lastTime_;
+  if (!(dt > 0.0)) return *last_;
+  lastTime_ = time;
+  // The shorter way round: q and -q are one orientation.
+  const glm::dquat target = glm::dot(*last_, sample) < 0.0 ? -sample : sample;
+  const double turned = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(*last_, target))));
+  lastSpeed_ += smoothing(derivativeCutoff_, dt) * (turned / dt - lastSpeed_);
+  const double cutoff = minCutoff_ + beta_ * lastSpeed_;
+  *last_ = glm::normalize(glm::slerp(*last_, target, smoothing(cutoff, dt)));
+  return *last_;
+}
+
 glm::dvec3 pinchPoint(const HandJoints& hand) {
   return 0.5 * (hand[HandJoint::ThumbTip].position + hand[HandJoint::IndexTip].position);
 }
@@ -52,39 +72,136 @@ double fingertipsToPalm(const HandJoints& hand) {
   return sum / 4.0;
 }
 
+glm::dvec3 rigidCentre(const HandJoints& hand) {
+  glm::dvec3 sum = hand[HandJoint::Palm].position + hand[HandJoint::Wrist].position;
+  for (HandJoint metacarpal : {HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
+                               HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
+    sum += hand[metacarpal].position;
+    sum += hand[static_cast<HandJoint>(static_cast<int>(metacarpal) + 1)].position;
+  }
+  return sum / 10.0;
+}
+
+glm::dvec3 handPointingDirection(const HandJoints& hand) {
+  // From the back of the hand (wrist and metacarpal bases) to the knuckles: nine joints a pinch
+  // does not move, averaged so one joint's jitter turns the ray less.
+  glm::dvec3 back = hand[HandJoint::Wrist].position, knuckles(0.0);
+  for (HandJoint metacarpal : {HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
+                               HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
+    back += hand[metacarpal].position;
+    knuckles += hand[static_cast<HandJoint>(static_cast<int>(metacarpal) + 1)].position;
+  }
+  const glm::dvec3 along = 0.25 * knuckles - 0.2 * back;
+  const double length = glm::length(along);
+  return length > 1e-6 ? along / length : glm::dvec3(0.0);
+}
+
 HandInput::HandInput(const InteractionThresholds& thresholds)
     : thresholds_(thresholds),
-      pinchFilter_(thresholds.pinchFilterMinCutoff, thresholds.pinchFilterBeta) {}
+      pinchFilter_(thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
+                   thresholds_.handFilterDerivativeCutoff),
+      palmFilter_(thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
+                  thresholds_.handFilterDerivativeCutoff),
+      aimFilter_(thresholds_.handAimFilterMinCutoff, thresholds_.handAimFilterBeta,
+                 thresholds_.handFilterDerivativeCutoff),
+      palmRotationFilter_(thresholds_.handRotationFilterMinCutoff,
+                          thresholds_.handRotationFilterBeta,
+                          thresholds_.handFilterDerivativeCutoff) {}
 
-void HandInput::update(const HandJoints& pointHand, const HandJoints& sheetHand,
-                       InputFrame& frame) {
-  // Point hand: the filtered pinch point, select while pinched, aim along the index finger.
-  frame.pointHand.tracked = pointHand.tracked;
-  if (pointHand.tracked) {
-    const double distance = pinchDistance(pointHand);
-    if (pinched_ && distance >= thresholds_.pinchRelease) pinched_ = false;
-    if (!pinched_ && distance <= thresholds_.pinchPress) pinched_ = true;
-    frame.pointHand.position = pinchFilter_.filter(pinchPoint(pointHand), frame.time);
-    frame.pointHand.select = pinched_ ? 1.0 : 0.0;
-    const glm::dvec3 along =
-        pointHand[HandJoint::IndexTip].position - pointHand[HandJoint::IndexProximal].position;
-    if (glm::length(along) > 1e-6)
-      frame.pointHand.aim =
-          glm::normalize(glm::dquat(glm::dvec3(0.0, 0.0, -1.0), glm::normalize(along)));
-  } else {
-    // A lost hand keeps its pinch state (as a controller's trigger would be unknown): the core
-    // holds a drag while its hand is untracked. The filter starts again where the hand returns.
+void HandInput::updateClosed(const HandJoints& hand, Gestures& gestures) const {
+  const double curl = fingertipsToPalm(hand);
+  if (gestures.closed && curl >= thresholds_.grabRelease) gestures.closed = false;
+  if (!gestures.closed && curl <= thresholds_.grabPress) gestures.closed = true;
+}
+
+template <std::size_t N>
+void HandInput::updateTaps(const HandJoints& hand, const HandTap (&taps)[N], Gestures& gestures,
+                           std::uint32_t& buttons) const {
+  static_assert(N <= std::tuple_size_v<decltype(gestures.taps)>);
+  const glm::dvec3 thumb = hand[HandJoint::ThumbTip].position;
+  // A closed hand's thumb lies on its fingers: no taps then, and those held end.
+  std::optional<std::size_t> nearest;
+  double nearestDistance = 0.0;
+  for (std::size_t i = 0; i < N; ++i) {
+    const double distance = glm::distance(thumb, hand[taps[i].fingertip].position);
+    if (gestures.taps[i] && (distance >= thresholds_.pinchRelease || gestures.closed))
+      gestures.taps[i] = false;
+    if (!nearest || distance < nearestDistance) {
+      nearest = i;
+      nearestDistance = distance;
+    }
+  }
+  // Only the fingertip nearest the thumb starts a tap, and only with no tap held.
+  const bool anyHeld =
+      std::find(gestures.taps.begin(), gestures.taps.end(), true) != gestures.taps.end();
+  if (nearest && !anyHeld && !gestures.closed && nearestDistance <= thresholds_.pinchPress)
+    gestures.taps[*nearest] = true;
+  for (std::size_t i = 0; i < N; ++i)
+    if (gestures.taps[i]) buttons |= static_cast<std::uint32_t>(taps[i].button);
+}
+
+void HandInput::updatePointHand(const HandJoints& hand, InputFrame& frame) {
+  frame.pointHand.tracked = hand.tracked;
+  if (!hand.tracked) {
+    // A lost hand keeps its pinch (as a controller's trigger would be unknown): the core holds a
+    // drag while its hand is untracked. The filters start again where the hand returns.
     pinchFilter_.reset();
+    aimFilter_.reset();
+    frame.pointHand.select = point_.pinched ? 1.0 : 0.0;
+    return;
   }
-  // Sheet hand: the palm's pose, the clutch while the hand is closed.
-  frame.sheetHand.tracked = sheetHand.tracked;
-  if (sheetHand.tracked) {
-    const double curl = fingertipsToPalm(sheetHand);
-    if (grabbed_ && curl >= thresholds_.grabRelease) grabbed_ = false;
-    if (!grabbed_ && curl <= thresholds_.grabPress) grabbed_ = true;
-    frame.sheetHand.pose = sheetHand[HandJoint::Palm];
-    frame.sheetHand.clutch = grabbed_ ? 1.0 : 0.0;
+  updateClosed(hand, point_);
+  const double distance = pinchDistance(hand);
+  if (point_.pinched && distance >= thresholds_.pinchRelease) point_.pinched = false;
+  // A fist is not a pinch: a pinch starts from a hand that is not closed (and, once started,
+  // holds if the other fingers curl).
+  if (!point_.pinched && !point_.closed && distance <= thresholds_.pinchPress)
+    point_.pinched = true;
+  pinchOpenness_ = std::clamp(
+      (distance - thresholds_.pinchPress) / (thresholds_.pinchRelease - thresholds_.pinchPress),
+      0.0, 1.0);
+  frame.pointHand.position = pinchFilter_.filter(pinchPoint(hand), frame.time);
+  frame.pointHand.select = point_.pinched ? 1.0 : 0.0;
+  frame.pointHand.grip = point_.closed && !point_.pinched ? 1.0 : 0.0;
+  const glm::dvec3 pointing = handPointingDirection(hand);
+  if (pointing != glm::dvec3(0.0))
+    frame.pointHand.aim = aimFilter_.filter(
+        glm::normalize(glm::dquat(glm::dvec3(0.0, 0.0, -1.0), pointing)), frame.time);
+  if (point_.pinched) {
+    point_.taps.fill(false);  // the thumb is busy
+  } else {
+    updateTaps(hand, kPointHandTaps, point_, frame.buttons);
   }
+}
+
+void HandInput::updateSheetHand(const HandJoints& hand, InputFrame& frame) {
+  frame.sheetHand.tracked = hand.tracked;
+  if (!hand.tracked) {
+    palmFilter_.reset();
+    palmRotationFilter_.reset();
+    sheet_.taps.fill(false);
+    frame.sheetHand.clutch = sheet_.closed ? 1.0 : 0.0;
+    return;
+  }
+  updateClosed(hand, sheet_);
+  frame.sheetHand.pose = {
+      palmFilter_.filter(rigidCentre(hand), frame.time),
+      palmRotationFilter_.filter(hand[HandJoint::Palm].orientation, frame.time)};
+  frame.sheetHand.clutch = sheet_.closed ? 1.0 : 0.0;
+  updateTaps(hand, kSheetHandTaps, sheet_, frame.buttons);
+}
+
+void HandInput::resetPointHand() {
+  point_ = {};
+  pinchFilter_.reset();
+  aimFilter_.reset();
+  pinchOpenness_ = 1.0;
+}
+
+void HandInput::resetSheetHand() {
+  sheet_ = {};
+  palmFilter_.reset();
+  palmRotationFilter_.reset();
 }
 
 }  // namespace curvefold

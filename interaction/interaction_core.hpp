@@ -38,15 +38,25 @@ struct InteractionThresholds {
   // Bare hands (interaction/hand_input.hpp): a pinch starts when the thumb and index tips come this
   // close and ends when they part this far; a hand is closed (the clutch) when its fingertips come
   // this close to the palm on average, and open again this far. The gaps between press and release
-  // are wider than tracking jitter, so jitter neither starts nor drops a fold.
+  // are wider than tracking jitter, so jitter neither starts nor drops a fold. A tap (the thumb on
+  // another fingertip) uses the pinch distances.
   double pinchPress = 0.015;
   double pinchRelease = 0.035;
   double grabPress = 0.055;
   double grabRelease = 0.08;
-  // The pinch point's One Euro filter (Casiez et al., CHI 2012): cutoff at rest (Hz) and how fast
-  // the cutoff rises with speed (per m/s).
-  double pinchFilterMinCutoff = 1.5;
-  double pinchFilterBeta = 8.0;
+  // The One Euro filters (Casiez et al., CHI 2012) on a hand's pinch point and palm: cutoff at
+  // rest (Hz), how fast it rises with speed (per m/s), and the cutoff of the speed estimate (Hz).
+  // Tuned on the example recordings with 2 mm of jitter (docs/design.md 5b): the point is steady
+  // at rest and within about a millimetre where a pinch starts or ends.
+  double handFilterMinCutoff = 1.0;
+  double handFilterBeta = 50.0;
+  double handFilterDerivativeCutoff = 2.0;
+  // The same for the palm's orientation, rising per rad/s: quick, since the sheet turns with it.
+  double handRotationFilterMinCutoff = 1.0;
+  double handRotationFilterBeta = 10.0;
+  // ... and for the aim's direction (the panel ray, levered out to the panel): slow.
+  double handAimFilterMinCutoff = 2.0;
+  double handAimFilterBeta = 2.0;
 };
 
 enum class InteractionState { Idle, Hover, Dragging };

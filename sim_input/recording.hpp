@@ -12,6 +12,8 @@
 // casts at the headset's panel, from the tip along the orientation's -Z) and "scroll" (-1..1, the
 // thumbstick); each is written only when there is one. A header with "studio" is a headset session
 // with its panel ({"recent":[paths]}: the recent designs it listed), replayed with the panel.
+// "source" says where the frames came from: "openxr" (controllers), "hands" (an OpenXR session
+// bare hands began), "desktop", "script" or "synthetic"; the frames are the same either way.
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
 // shortest exact form, so parsing a line gives back the very bits that were written.
 #pragma once
@@ -54,8 +56,8 @@ class RecordingError : public std::runtime_error {
 };
 
 // Where the frames came from; informative, but only these are written and read.
-inline constexpr std::string_view kRecordingSources[] = {"synthetic", "script", "desktop",
-                                                         "openxr"};
+inline constexpr std::string_view kRecordingSources[] = {"synthetic", "script", "desktop", "openxr",
+                                                         "hands"};
 
 struct RecordingHeader {
   std::string source = "synthetic";

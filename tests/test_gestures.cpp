@@ -202,7 +202,9 @@ TEST(Gestures, ALongScriptStreamsItsFrames) {
   EXPECT_EQ(stream.frames, streamed);
   EXPECT_GT(streamed, 400'000u);
   EXPECT_NEAR(stream.seconds, (streamed - 1) / 1000.0, 1e-6);
-  if (!kSanitized) EXPECT_LT(grown, 16 * 1024) << "kilobytes";
+  if (!kSanitized) {
+    EXPECT_LT(grown, 16 * 1024) << "kilobytes";
+  }
   // The same frames as the in-memory recording of the same script (the first 3000: the drag).
   const Recording held = recordGestureScript(script);
   ASSERT_EQ(held.frames.size(), streamed);

@@ -61,9 +61,10 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
   EXPECT_TRUE(sameBits(a.pointHand.select, b.pointHand.select)) << what;
   EXPECT_TRUE(sameBits(a.pointHand.grip, b.pointHand.grip)) << what;
   ASSERT_EQ(a.pointHand.aim.has_value(), b.pointHand.aim.has_value()) << what;
-  if (a.pointHand.aim)
+  if (a.pointHand.aim) {
     for (int i = 0; i < 4; ++i)
       EXPECT_TRUE(sameBits((*a.pointHand.aim)[i], (*b.pointHand.aim)[i])) << what << " aim";
+  }
   EXPECT_TRUE(sameBits(a.pointHand.scroll, b.pointHand.scroll)) << what;
   EXPECT_EQ(a.buttons, b.buttons) << what;
 }

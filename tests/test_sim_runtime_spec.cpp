@@ -2,8 +2,10 @@
 // loader and raw OpenXR calls, without curvefold's XR program: the session's state machine, frame
 // call order, the frame's time, and suggested-binding paths. A misreading of the specification
 // shared by the program and the runtime would pass test_xr; it cannot pass these, which state the
-// specification's rules directly (OpenXR 1.0, chapters "Session", "Rendering" and "Input").
+// specification's rules directly (OpenXR 1.0, chapters "Session", "Rendering" and "Input", and
+// the XR_EXT_hand_tracking extension).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -24,12 +26,13 @@ class SimRuntimeSpec : public ::testing::Test {
     setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
     setenv("CURVEFOLD_SIM_HOLD", "1", 1);
     unsetenv("CURVEFOLD_SIM_INPUT");
-    const char* extensions[] = {"XR_MND_headless"};
+    prepare();
+    const std::vector<const char*> extensions = this->extensions();
     XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
     std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE, "spec");
     info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
-    info.enabledExtensionCount = 1;
-    info.enabledExtensionNames = extensions;
+    info.enabledExtensionCount = std::uint32_t(extensions.size());
+    info.enabledExtensionNames = extensions.data();
     ASSERT_EQ(xrCreateInstance(&info, &instance_), XR_SUCCESS);
     XrSystemGetInfo system{XR_TYPE_SYSTEM_GET_INFO};
     system.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
@@ -39,7 +42,12 @@ class SimRuntimeSpec : public ::testing::Test {
     if (session_ != XR_NULL_HANDLE) xrDestroySession(session_);
     if (instance_ != XR_NULL_HANDLE) xrDestroyInstance(instance_);
     unsetenv("CURVEFOLD_SIM_HOLD");
+    unsetenv("CURVEFOLD_SIM_HANDS");
+    unsetenv("CURVEFOLD_SIM_INPUT");
   }
+  // Before the instance: the environment and extensions a fixture needs.
+  virtual void prepare() {}
+  virtual std::vector<const char*> extensions() const { return {"XR_MND_headless"}; }
 
   void createSession() {
     XrSessionCreateInfo info{XR_TYPE_SESSION_CREATE_INFO};
@@ -315,6 +323,132 @@ TEST(SimRuntimeSwapchains, FormatsArraysAndImageOrderFollowTheSpecification) {
   xrDestroySession(session);
   xrDestroyInstance(instance);
   unsetenv("CURVEFOLD_SIM_HOLD");
+}
+
+}  // namespace
+
+namespace {
+
+// XR_EXT_hand_tracking, enabled, with hands served from a recording (CURVEFOLD_SIM_HANDS=1).
+class SimRuntimeHands : public SimRuntimeSpec {
+ protected:
+  void prepare() override {
+    setenv("CURVEFOLD_SIM_HANDS", "1", 1);
+    setenv("CURVEFOLD_SIM_INPUT", CURVEFOLD_SOURCE_DIR "/examples/recordings/cone.jsonl", 1);
+  }
+  std::vector<const char*> extensions() const override {
+    return {"XR_MND_headless", XR_EXT_HAND_TRACKING_EXTENSION_NAME};
+  }
+  template <typename Function>
+  Function function(const char* name) {
+    PFN_xrVoidFunction found = nullptr;
+    EXPECT_EQ(xrGetInstanceProcAddr(instance_, name, &found), XR_SUCCESS) << name;
+    return reinterpret_cast<Function>(found);
+  }
+};
+
+// Chapter "XR_EXT_hand_tracking": the system says it tracks hands; a tracker needs a valid hand
+// and joint set; xrLocateHandJointsEXT needs the joint set's count and a valid time, and returns
+// either an active hand with every joint's position and orientation valid or an inactive one
+// with none (here: until the session is focused); velocities may be chained; the trackers die
+// with their session.
+TEST_F(SimRuntimeHands, HandTrackingFollowsTheExtension) {
+  XrSystemHandTrackingPropertiesEXT hands{XR_TYPE_SYSTEM_HAND_TRACKING_PROPERTIES_EXT};
+  XrSystemProperties properties{XR_TYPE_SYSTEM_PROPERTIES};
+  properties.next = &hands;
+  ASSERT_EQ(xrGetSystemProperties(instance_, system_, &properties), XR_SUCCESS);
+  EXPECT_EQ(hands.supportsHandTracking, XR_TRUE);
+
+  auto create = function<PFN_xrCreateHandTrackerEXT>("xrCreateHandTrackerEXT");
+  auto destroy = function<PFN_xrDestroyHandTrackerEXT>("xrDestroyHandTrackerEXT");
+  auto locate = function<PFN_xrLocateHandJointsEXT>("xrLocateHandJointsEXT");
+  ASSERT_TRUE(create && destroy && locate);
+  createSession();
+  XrHandTrackerCreateInfoEXT info{XR_TYPE_HAND_TRACKER_CREATE_INFO_EXT};
+  info.handJointSet = XR_HAND_JOINT_SET_DEFAULT_EXT;
+  XrHandTrackerEXT left = XR_NULL_HANDLE, right = XR_NULL_HANDLE, spare = XR_NULL_HANDLE;
+  info.hand = static_cast<XrHandEXT>(3);
+  EXPECT_EQ(create(session_, &info, &spare), XR_ERROR_VALIDATION_FAILURE);
+  info.hand = XR_HAND_LEFT_EXT;
+  info.handJointSet = static_cast<XrHandJointSetEXT>(7);
+  EXPECT_EQ(create(session_, &info, &spare), XR_ERROR_VALIDATION_FAILURE);
+  info.handJointSet = XR_HAND_JOINT_SET_DEFAULT_EXT;
+  ASSERT_EQ(create(session_, &info, &left), XR_SUCCESS);
+  info.hand = XR_HAND_RIGHT_EXT;
+  ASSERT_EQ(create(session_, &info, &right), XR_SUCCESS);
+
+  XrSpace local = XR_NULL_HANDLE;
+  XrReferenceSpaceCreateInfo spaceInfo{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+  spaceInfo.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+  spaceInfo.poseInReferenceSpace.orientation.w = 1.0f;
+  ASSERT_EQ(xrCreateReferenceSpace(session_, &spaceInfo, &local), XR_SUCCESS);
+  XrHandJointLocationEXT joints[XR_HAND_JOINT_COUNT_EXT];
+  XrHandJointVelocityEXT speeds[XR_HAND_JOINT_COUNT_EXT];
+  XrHandJointVelocitiesEXT velocities{XR_TYPE_HAND_JOINT_VELOCITIES_EXT};
+  velocities.jointCount = XR_HAND_JOINT_COUNT_EXT;
+  velocities.jointVelocities = speeds;
+  XrHandJointLocationsEXT locations{XR_TYPE_HAND_JOINT_LOCATIONS_EXT};
+  locations.jointCount = XR_HAND_JOINT_COUNT_EXT;
+  locations.jointLocations = joints;
+  XrHandJointsLocateInfoEXT where{XR_TYPE_HAND_JOINTS_LOCATE_INFO_EXT};
+  where.baseSpace = local;
+  where.time = 1;
+  auto countValid = [&] {
+    int valid = 0;
+    for (const XrHandJointLocationEXT& joint : joints)
+      valid += (joint.locationFlags & XR_SPACE_LOCATION_POSITION_VALID_BIT) &&
+               (joint.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT);
+    return valid;
+  };
+  // Not focused yet: inactive, nothing valid.
+  ASSERT_EQ(locate(right, &where, &locations), XR_SUCCESS);
+  EXPECT_EQ(locations.isActive, XR_FALSE);
+  EXPECT_EQ(countValid(), 0);
+
+  ASSERT_EQ(begin(), XR_SUCCESS);
+  XrFrameState frame;
+  for (int i = 0; i < 4; ++i) {  // to FOCUSED, then a frame served while focused
+    ASSERT_EQ(wait(frame), XR_SUCCESS);
+    ASSERT_EQ(beginFrame(), XR_SUCCESS);
+    ASSERT_EQ(endFrame(frame.predictedDisplayTime), XR_SUCCESS);
+  }
+  where.time = frame.predictedDisplayTime;
+  locations.jointCount = XR_HAND_JOINT_COUNT_EXT - 1;
+  EXPECT_EQ(locate(right, &where, &locations), XR_ERROR_VALIDATION_FAILURE);
+  locations.jointCount = XR_HAND_JOINT_COUNT_EXT;
+  where.time = 0;
+  EXPECT_EQ(locate(right, &where, &locations), XR_ERROR_TIME_INVALID);
+  where.time = frame.predictedDisplayTime;
+  locations.next = &velocities;
+  ASSERT_EQ(locate(right, &where, &locations), XR_SUCCESS);
+  EXPECT_EQ(locations.isActive, XR_TRUE);
+  EXPECT_EQ(countValid(), XR_HAND_JOINT_COUNT_EXT);
+  EXPECT_EQ(speeds[XR_HAND_JOINT_PALM_EXT].velocityFlags, 0u);
+  // A hand's size: wrist to middle fingertip.
+  const XrVector3f a = joints[XR_HAND_JOINT_WRIST_EXT].pose.position;
+  const XrVector3f b = joints[XR_HAND_JOINT_MIDDLE_TIP_EXT].pose.position;
+  const float length =
+      std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+  EXPECT_GT(length, 0.12f);
+  EXPECT_LT(length, 0.25f);
+  // The left hand holds the sheet; both are served.
+  ASSERT_EQ(locate(left, &where, &locations), XR_SUCCESS);
+  EXPECT_EQ(locations.isActive, XR_TRUE);
+  EXPECT_EQ(destroy(left), XR_SUCCESS);
+  EXPECT_EQ(locate(left, &where, &locations), XR_ERROR_HANDLE_INVALID);
+  // The session's trackers go with it.
+  xrDestroySpace(local);
+  ASSERT_EQ(xrDestroySession(session_), XR_SUCCESS);
+  session_ = XR_NULL_HANDLE;
+  EXPECT_EQ(locate(right, &where, &locations), XR_ERROR_HANDLE_INVALID);
+}
+
+// An extension's functions exist only for an instance that enabled it.
+TEST_F(SimRuntimeSpec, HandTrackingFunctionsNeedTheExtension) {
+  PFN_xrVoidFunction found = nullptr;
+  EXPECT_EQ(xrGetInstanceProcAddr(instance_, "xrLocateHandJointsEXT", &found),
+            XR_ERROR_FUNCTION_UNSUPPORTED);
+  EXPECT_EQ(found, nullptr);
 }
 
 }  // namespace

@@ -91,8 +91,12 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   if (outputs_->wantsRecording())
     recordingHeader_.studio = RecordingHeader::Studio{studio_->panel().recent()};
 
-  program_ = std::make_unique<XrProgram>(XrProgramOptions{}, graphics_.get());
-  input_ = std::make_unique<XrInput>(program_->instance());
+  XrProgramOptions programOptions;
+  programOptions.handTracking =
+      options.hands ? XrHandTrackingUse::Required : XrHandTrackingUse::Auto;
+  program_ = std::make_unique<XrProgram>(programOptions, graphics_.get());
+  input_ = std::make_unique<XrInput>(program_->instance(), program_->handTrackingEnabled(),
+                                     options.hands);
   tracker_ = std::make_unique<SessionSheetTracker>();
   if (graphics_) {
     graphics_->setBeforeEyes([this](VkCommandBuffer commands) {
@@ -164,7 +168,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
 bool XrApp::startSession() {
   if (!program_->findSystem()) return false;
   program_->createSession();
-  input_->attach(program_->session());
+  input_->attach(program_->session(), program_->tracksHands());
   ++summary_.sessions;
   return true;
 }
@@ -193,20 +197,24 @@ void XrApp::processInput(XrTime displayTime) {
   if (!input_->poll(program_->baseSpace(), displayTime, doc_.core->handedness(), seconds, input))
     return;
   const Handedness handedness = doc_.core->handedness();
+  startRecording();
   studio_->process(input, stats_);
   lastInput_ = input;
   ++summary_.framesProcessed;
+  if (input_->usesHands()) ++summary_.handFrames;
   input_->applyHaptics(doc_.core->haptics(), handedness);
   outputs_->frame(input, doc_.core->events());
   for (const std::string& problem : outputs_->takeNewProblems())
     std::cerr << "\ncurvefold: warning: " << problem << std::flush;
 }
 
-// The file is made once the runtime paces frames, so a session that never starts leaves none,
-// and the header's rate is the runtime's (not a nominal 90 Hz).
-void XrApp::startRecording(XrDuration period) {
+// The file is made with the first focused frame, so a session that never starts leaves none, the
+// header's rate is the runtime's (not a nominal 90 Hz), and its source says whether bare hands
+// began it.
+void XrApp::startRecording() {
   if (!outputs_->wantsRecording() || outputs_->recording()) return;
-  recordingHeader_.rate = period > 0 ? 1e9 / double(period) : 90.0;
+  recordingHeader_.rate = period_ > 0 ? 1e9 / double(period_) : 90.0;
+  recordingHeader_.source = options_.hands || input_->usesHands() ? "hands" : "openxr";
   outputs_->startRecording(recordingHeader_);
 }
 
@@ -228,7 +236,21 @@ void XrApp::buildScene() {
   }
   scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
                                {/*creasePatternPanel=*/false, /*handMarkers=*/false});
-  addControllerModels(scene_, *doc_.core, lastInput_, input_->pointAim());
+  // Controllers are drawn for the roles they drive, bare hands for the others.
+  const bool sheetByHand = input_->sheetSource() == XrHandSource::Hand;
+  const bool pointByHand = input_->pointSource() == XrHandSource::Hand;
+  InputFrame controllers = lastInput_;
+  if (sheetByHand) controllers.sheetHand.tracked = false;
+  if (pointByHand) controllers.pointHand.tracked = false;
+  addControllerModels(scene_, *doc_.core, controllers, input_->pointAim());
+  const glm::vec4 handColor(0.55f, 0.5f, 0.6f, 1.0f), closedColor(0.6f, 0.3f, 0.8f, 1.0f);
+  if (sheetByHand)
+    addHandModel(scene_, input_->sheetJoints(), doc_.core->clutched() ? closedColor : handColor);
+  if (pointByHand && input_->pointJoints().tracked) {
+    addHandModel(scene_, input_->pointJoints(), doc_.core->twoHanded() ? closedColor : handColor);
+    addPinchPoint(scene_, lastInput_.pointHand.position, input_->handInput().pinched(),
+                  input_->handInput().pinchOpenness());
+  }
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   addStudio(scene_);
@@ -273,7 +295,7 @@ void XrApp::frame() {
   lastFrame_ = now;
   stats_.drawnTriangles = doc_.session->current().triangleCount();
   const XrFrameTiming timing = program_->beginFrame();
-  startRecording(timing.period);
+  period_ = timing.period;
   if (program_->focused()) processInput(timing.displayTime);
   const bool render = timing.shouldRender && graphics_;
   if (render) buildScene();

@@ -41,6 +41,7 @@ struct XrAppOptions {
   std::string autosave;   // design written after every committed fold and at the end
   std::string exportDir;  // where the panel's exports go (default: beside the design)
   bool leftHanded = false;
+  bool hands = false;     // bare hands only (XR_EXT_hand_tracking), controllers ignored
   bool headless = false;  // XR_MND_headless: input only, nothing drawn
   bool validation = false;
   XrMultiview multiview = XrMultiview::Auto;  // both eyes in one pass (xr_vulkan_graphics.hpp)
@@ -49,6 +50,7 @@ struct XrAppOptions {
 struct XrAppSummary {
   std::string runtime;
   std::size_t framesProcessed = 0;  // focused frames fed to the interaction core
+  std::size_t handFrames = 0;       // of those, frames a bare hand drove a role in
   std::size_t framesRendered = 0;
   std::size_t sessions = 0;  // more than one after a session loss
   std::size_t folds = 0;
@@ -84,7 +86,7 @@ class XrApp {
  private:
   XrAppSummary runSessions(const std::atomic<bool>& interrupt);
   void processInput(XrTime displayTime);
-  void startRecording(XrDuration period);
+  void startRecording();
   const Scene& eyeScene(std::span<const Camera> cameras);
   void makeStudio(const Pose& sheetFrame);
   void addStudio(Scene& scene);
@@ -106,6 +108,7 @@ class XrApp {
   InputFrame lastInput_;
   bool haveFirstTime_ = false;
   XrTime firstTime_ = 0;
+  XrDuration period_ = 0;  // the runtime's frame period, for the recording's rate
   double lastSeconds_ = 0.0;
   Scene scene_;
   Ground ground_;

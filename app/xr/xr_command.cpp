@@ -1,5 +1,5 @@
-// `curvefold xr [DESIGN|SURFACE|RECORDING] [--record REC] [--left-handed]`, and plain `curvefold`
-// choosing XR, the desktop window, or a line saying what is missing.
+// `curvefold xr [DESIGN|SURFACE|RECORDING] [--record REC] [--hands] [--left-handed]`, and plain
+// `curvefold` choosing XR, the desktop window, or a line saying what is missing.
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -55,6 +55,9 @@ void runXr(const XrAppOptions& options) {
   std::cout << "\nxr: interaction profiles: left "
             << (summary.profiles[0].empty() ? "none" : summary.profiles[0]) << ", right "
             << (summary.profiles[1].empty() ? "none" : summary.profiles[1]) << "\n";
+  if (summary.handFrames > 0)
+    std::cout << "xr: bare hands drove " << summary.handFrames << " of " << summary.framesProcessed
+              << " input frames\n";
   if (summary.interrupted) std::cout << "xr: interrupted; the session was ended cleanly\n";
   if (summary.instanceLost)
     throw XrError("the OpenXR runtime was lost (instance loss); every committed fold is saved in " +
@@ -66,7 +69,9 @@ void runXr(const XrAppOptions& options) {
 
 void addXrCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
-      "xr", "Fold with tracked controllers in an OpenXR headset (needs an OpenXR runtime)");
+      "xr",
+      "Fold with tracked controllers or bare hands in an OpenXR headset (needs an OpenXR "
+      "runtime)");
   auto options = std::make_shared<XrAppOptions>();
   command->add_option("INPUT", options->input,
                       "Design file, surface name (default: square), or a recording (*.jsonl) "
@@ -78,6 +83,9 @@ void addXrCommand(CLI::App& app) {
   command->add_option("--export-dir", options->exportDir,
                       "Folder for the panel's exports (FOLD, SVG, OBJ, glTF, PNG) and saves "
                       "(default: beside the design's autosave)");
+  command->add_flag("--hands", options->hands,
+                    "Fold with bare hands only (XR_EXT_hand_tracking), ignoring controllers; "
+                    "without it, a hand holding no controller folds too");
   command->add_flag("--left-handed", options->leftHanded,
                     "The left hand folds and the right holds the sheet");
   command->add_flag(

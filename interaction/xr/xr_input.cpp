@@ -66,7 +66,10 @@ XrPath XrInput::path(const std::string& text) const {
   return result;
 }
 
-XrInput::XrInput(XrInstance instance) : instance_(instance) {
+XrInput::XrInput(XrInstance instance, bool handTracking, bool handsOnly,
+                 const InteractionThresholds& thresholds)
+    : instance_(instance), handsOnly_(handsOnly), hands_(thresholds) {
+  if (handTracking) handTracking_ = std::make_unique<XrHandTracking>(instance_);
   handPaths_ = {path(std::string(kXrLeftHand)), path(std::string(kXrRightHand))};
 
   XrActionSetCreateInfo setInfo{XR_TYPE_ACTION_SET_CREATE_INFO};
@@ -112,8 +115,10 @@ XrInput::~XrInput() {
   if (actionSet_ != XR_NULL_HANDLE) xrDestroyActionSet(actionSet_);  // destroys its actions
 }
 
-void XrInput::attach(XrSession session) {
+void XrInput::attach(XrSession session, bool tracksHands) {
   session_ = session;
+  tracksHands_ = tracksHands && handTracking_;
+  if (tracksHands_) handTracking_->attach(session_);
   XrSessionActionSetsAttachInfo attach{XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
   attach.countActionSets = 1;
   attach.actionSets = &actionSet_;
@@ -130,6 +135,8 @@ void XrInput::attach(XrSession session) {
 }
 
 void XrInput::detach() {
+  if (handTracking_) handTracking_->detach();
+  tracksHands_ = false;
   for (auto* spaces : {&gripSpaces_, &aimSpaces_})
     for (XrSpace& space : *spaces) {
       if (space != XR_NULL_HANDLE) xrDestroySpace(space);
@@ -169,26 +176,64 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
 
   const XrHandSide sheet = sheetHandSide(handedness);
   const XrHandSide point = pointHandSide(handedness);
+  if (handedness != handedness_) {
+    // The hands swapped roles: what each role's hand was doing belongs to the other now.
+    hands_.resetPointHand();
+    hands_.resetSheetHand();
+    handedness_ = handedness;
+  }
+  sheetJoints_ = tracksHands_ ? handTracking_->locate(sheet, base, time) : HandJoints{};
+  pointJoints_ = tracksHands_ ? handTracking_->locate(point, base, time) : HandJoints{};
+  // A located controller drives its role (unless --hands), else a tracked hand; with neither,
+  // whichever drove it last keeps it (a hand out of view holds its pinch).
+  auto sourceFor = [&](bool controllerLocated, const HandJoints& joints, XrHandSource last) {
+    if (handsOnly_) return XrHandSource::Hand;
+    if (controllerLocated) return XrHandSource::Controller;
+    if (joints.tracked) return XrHandSource::Hand;
+    return tracksHands_ ? last : XrHandSource::Controller;
+  };
+
   XrSpaceLocation location{XR_TYPE_SPACE_LOCATION};
   CHECK_XR(xrLocateSpace(gripSpaces_[std::size_t(sheet)], base, time, &location));
-  if (located(location)) {
-    frame.sheetHand.tracked = true;
-    frame.sheetHand.pose = poseOf(location.pose);
+  const XrHandSource sheetSource = sourceFor(located(location), sheetJoints_, sheetSource_);
+  const bool sheetSwitched = sheetSource != sheetSource_;
+  if (sheetSwitched && sheetSource_ == XrHandSource::Hand) hands_.resetSheetHand();
+  sheetSource_ = sheetSource;
+  if (sheetSource_ == XrHandSource::Hand) {
+    hands_.updateSheetHand(sheetJoints_, frame);
+  } else {
+    if (located(location)) {
+      frame.sheetHand.tracked = true;
+      frame.sheetHand.pose = poseOf(location.pose);
+    }
+    frame.sheetHand.clutch = floatState(XrControl::Clutch, sheet);
   }
-  frame.sheetHand.clutch = floatState(XrControl::Clutch, sheet);
 
   location = XrSpaceLocation{XR_TYPE_SPACE_LOCATION};
   CHECK_XR(xrLocateSpace(aimSpaces_[std::size_t(point)], base, time, &location));
-  if (located(location)) {
-    const Pose aim = poseOf(location.pose);
-    pointAim_ = aim;
-    frame.pointHand.tracked = true;
-    frame.pointHand.position = aim.apply({0.0, 0.0, -kXrTipOffset});
-    frame.pointHand.aim = aim.orientation;
+  const XrHandSource pointSource = sourceFor(located(location), pointJoints_, pointSource_);
+  const bool pointSwitched = pointSource != pointSource_;
+  if (pointSwitched && pointSource_ == XrHandSource::Hand) hands_.resetPointHand();
+  pointSource_ = pointSource;
+  if (pointSource_ == XrHandSource::Hand) {
+    hands_.updatePointHand(pointJoints_, frame);
+  } else {
+    if (located(location)) {
+      const Pose aim = poseOf(location.pose);
+      pointAim_ = aim;
+      frame.pointHand.tracked = true;
+      frame.pointHand.position = aim.apply({0.0, 0.0, -kXrTipOffset});
+      frame.pointHand.aim = aim.orientation;
+    }
+    frame.pointHand.select = floatState(XrControl::Select, point);
+    frame.pointHand.grip = floatState(XrControl::Clutch, point);
+    frame.pointHand.scroll = std::clamp(double(floatState(XrControl::Scroll, point)), -1.0, 1.0);
   }
-  frame.pointHand.select = floatState(XrControl::Select, point);
-  frame.pointHand.grip = floatState(XrControl::Clutch, point);
-  frame.pointHand.scroll = std::clamp(double(floatState(XrControl::Scroll, point)), -1.0, 1.0);
+  // A controller's grip or tip and a hand's palm or pinch are not the same place: the frame a
+  // role changes source, it reads as lost, so the core re-anchors a held sheet or drag instead of
+  // jumping by the difference.
+  if (sheetSwitched) frame.sheetHand.tracked = false;
+  if (pointSwitched) frame.pointHand.tracked = false;
 
   auto press = [&](Button button, bool held) {
     if (held) frame.buttons |= static_cast<std::uint32_t>(button);

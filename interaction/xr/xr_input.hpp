@@ -7,10 +7,15 @@
 // squeeze hold the sheet; the dominant hand's tip (kXrTipOffset ahead of its aim pose) and trigger
 // fold; undo and redo are read on the non-dominant hand, cancel on the dominant one, switching
 // hands on either. Poses are located at the frame's predicted display time.
+//
+// Bare hands (XR_EXT_hand_tracking, docs/design.md 5b): a role whose hand holds no located
+// controller is driven by that hand's joints through HandInput (with `--hands`, always), so the
+// controllers can be put down and picked up again mid-session.
 #pragma once
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -18,13 +23,16 @@
 
 #include <openxr/openxr.h>
 
+#include "interaction/hand_input.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
+#include "interaction/xr/xr_hand_tracking.hpp"
 #include "interaction/xr_controls.hpp"
 
 namespace curvefold {
 
-enum class XrHandSide { Left = 0, Right = 1 };
+// What drives a role: a controller's actions or a bare hand's joints.
+enum class XrHandSource { Controller, Hand };
 
 // The hand that has the role for `handedness`.
 XrHandSide sheetHandSide(Handedness handedness);
@@ -39,15 +47,18 @@ struct XrBindingSuggestion {
 
 class XrInput {
  public:
-  // Creates the action set and its actions and suggests the bindings of every profile. Throws
-  // XrError.
-  explicit XrInput(XrInstance instance);
+  // Creates the action set and its actions and suggests the bindings of every profile; with
+  // `handTracking` (the instance enabled XR_EXT_hand_tracking) loads its functions, and with
+  // `handsOnly` drives both roles by hands. Throws XrError.
+  explicit XrInput(XrInstance instance, bool handTracking = false, bool handsOnly = false,
+                   const InteractionThresholds& thresholds = {});
   ~XrInput();
   XrInput(const XrInput&) = delete;
   XrInput& operator=(const XrInput&) = delete;
 
-  // Per session: attaches the action set and creates the hands' action spaces.
-  void attach(XrSession session);
+  // Per session: attaches the action set and creates the hands' action spaces, and the hand
+  // trackers when the system tracks hands.
+  void attach(XrSession session, bool tracksHands = false);
   // Before the session is destroyed: drops its action spaces.
   void detach();
 
@@ -66,6 +77,16 @@ class XrInput {
   std::array<std::string, 2> currentProfiles() const;
   const std::vector<XrBindingSuggestion>& suggestions() const { return suggestions_; }
 
+  // At the last poll: what drove each role, and the hands' joints as located (untracked when not).
+  XrHandSource sheetSource() const { return sheetSource_; }
+  XrHandSource pointSource() const { return pointSource_; }
+  bool usesHands() const {
+    return sheetSource_ == XrHandSource::Hand || pointSource_ == XrHandSource::Hand;
+  }
+  const HandJoints& sheetJoints() const { return sheetJoints_; }
+  const HandJoints& pointJoints() const { return pointJoints_; }
+  const HandInput& handInput() const { return hands_; }
+
  private:
   XrPath path(const std::string& text) const;
   XrAction action(XrControl control) const { return actions_.at(control); }
@@ -81,6 +102,14 @@ class XrInput {
   std::array<XrSpace, 2> gripSpaces_{XR_NULL_HANDLE, XR_NULL_HANDLE};
   std::array<XrSpace, 2> aimSpaces_{XR_NULL_HANDLE, XR_NULL_HANDLE};
   std::vector<XrBindingSuggestion> suggestions_;
+
+  std::unique_ptr<XrHandTracking> handTracking_;  // none without the extension
+  bool tracksHands_ = false;
+  bool handsOnly_ = false;
+  HandInput hands_;
+  Handedness handedness_ = Handedness::Right;
+  XrHandSource sheetSource_ = XrHandSource::Controller, pointSource_ = XrHandSource::Controller;
+  HandJoints sheetJoints_, pointJoints_;
 };
 
 }  // namespace curvefold

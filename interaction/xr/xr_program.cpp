@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "interaction/xr/xr_check.hpp"
+#include "interaction/xr/xr_hand_tracking.hpp"
 
 namespace curvefold {
 
@@ -76,7 +77,8 @@ const char* xrSessionStateName(XrSessionState state) {
   }
 }
 
-XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics) : graphics_(graphics) {
+XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics)
+    : graphics_(graphics), handTracking_(options.handTracking) {
   // The loader prints its own errors to stderr; ours say what to do in one line.
   setenv("XR_LOADER_DEBUG", "none", 0);
   std::vector<std::string> offered;
@@ -102,6 +104,16 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics) : gr
   if (graphics_ && std::find(offered.begin(), offered.end(), depthLayer) != offered.end()) {
     names.push_back(depthLayer);
     depthExtension_ = true;
+  }
+  const char* const hands = XR_EXT_HAND_TRACKING_EXTENSION_NAME;
+  if (handTracking_ != XrHandTrackingUse::Off) {
+    if (std::find(offered.begin(), offered.end(), hands) != offered.end()) {
+      names.push_back(hands);
+      handTrackingExtension_ = true;
+    } else if (handTracking_ == XrHandTrackingUse::Required) {
+      throw XrError(std::string("the OpenXR runtime lacks ") + hands + " (needed for --hands)",
+                    XR_ERROR_EXTENSION_NOT_PRESENT);
+    }
   }
 
   XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
@@ -144,6 +156,10 @@ bool XrProgram::findSystem() {
   if (modes.empty())
     throw XrError("the OpenXR runtime offers no blend mode", XR_ERROR_RUNTIME_FAILURE);
   blendMode_ = modes.front();  // the runtime's preference
+  tracksHands_ = handTrackingExtension_ && xrSystemTracksHands(instance_, system_);
+  if (handTracking_ == XrHandTrackingUse::Required && !tracksHands_)
+    throw XrError("the headset does not track hands (needed for --hands)",
+                  XR_ERROR_FEATURE_UNSUPPORTED);
   if (graphics_) graphics_->initializeDevice(instance_, system_);
   return true;
 }

@@ -71,8 +71,13 @@ class XrGraphics {
   virtual float farPlane() const = 0;
 };
 
+// Bare hands (XR_EXT_hand_tracking): used where the runtime offers them, required (`--hands`, an
+// error without), or not asked for.
+enum class XrHandTrackingUse { Auto, Required, Off };
+
 struct XrProgramOptions {
   std::string applicationName = "curvefold";
+  XrHandTrackingUse handTracking = XrHandTrackingUse::Auto;
 };
 
 // What pollEvents() saw.
@@ -110,6 +115,10 @@ class XrProgram {
   // The views share one array swapchain (drawn in one multiview pass).
   bool sharesSwapchain() const { return !swapchains_.empty() && swapchains_[0].arraySize > 1; }
   const std::string& runtimeName() const { return runtimeName_; }
+  // XR_EXT_hand_tracking enabled on the instance.
+  bool handTrackingEnabled() const { return handTrackingExtension_; }
+  // ... and the system found tracks hands.
+  bool tracksHands() const { return tracksHands_; }
 
   // xrGetSystem for a head-mounted display: false while none is available (not connected, or
   // after a loss). The graphics plugin's device is initialised for the system found.
@@ -158,6 +167,9 @@ class XrProgram {
   bool running_ = false;
   bool exitRequested_ = false;
   bool depthExtension_ = false;  // XR_KHR_composition_layer_depth enabled
+  XrHandTrackingUse handTracking_ = XrHandTrackingUse::Auto;
+  bool handTrackingExtension_ = false;
+  bool tracksHands_ = false;
   std::vector<XrViewConfigurationView> viewConfigs_;
   std::vector<XrViewSwapchains> swapchains_;
   std::vector<XrView> views_;

@@ -216,17 +216,7 @@ XRAPI_ATTR XrResult XRAPI_CALL attachActionSets(XrSession handle,
     session.attached = true;
     for (std::uint32_t i = 0; i < info->countActionSets; ++i)
       objectOf<ActionSet>(info->actionSets[i])->attached = true;
-    instance.profile.clear();
-    if (!instance.config.forcedProfile.empty()) {
-      if (instance.bindings.count(instance.config.forcedProfile))
-        instance.profile = instance.config.forcedProfile;
-    } else {
-      for (const char* profile : kProfilePreference)
-        if (instance.bindings.count(profile)) {
-          instance.profile = profile;
-          break;
-        }
-    }
+    instance.profile = chosenProfile(instance);
     if (!instance.profile.empty()) profileChanged(instance, session);
     return XR_SUCCESS;
   });

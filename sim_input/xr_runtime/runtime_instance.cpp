@@ -6,7 +6,19 @@
 namespace curvefold::simxr {
 
 const char* const kExtensions[] = {"XR_KHR_vulkan_enable2", "XR_MND_headless",
-                                   "XR_KHR_composition_layer_depth"};
+                                   "XR_KHR_composition_layer_depth", "XR_EXT_hand_tracking"};
+
+// What the runtime offers: every extension, less hand tracking for a runtime set to be without
+// it (CURVEFOLD_SIM_NO_HAND_TRACKING=1), read before any instance exists.
+std::vector<std::string> offeredExtensions() {
+  const char* noHands = std::getenv("CURVEFOLD_SIM_NO_HAND_TRACKING");
+  std::vector<std::string> offered;
+  for (const char* name : kExtensions)
+    if (!(noHands && std::string(noHands) == "1" &&
+          std::string(name) == XR_EXT_HAND_TRACKING_EXTENSION_NAME))
+      offered.emplace_back(name);
+  return offered;
+}
 
 XRAPI_ATTR XrResult XRAPI_CALL enumerateInstanceExtensionProperties(const char* layer,
                                                                     std::uint32_t capacity,
@@ -15,9 +27,9 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateInstanceExtensionProperties(const char* 
   return guard([&] {
     if (layer) return XR_ERROR_API_LAYER_NOT_PRESENT;
     std::vector<XrExtensionProperties> all;
-    for (const char* name : kExtensions) {
+    for (const std::string& name : offeredExtensions()) {
       XrExtensionProperties p{XR_TYPE_EXTENSION_PROPERTIES};
-      std::strncpy(p.extensionName, name, XR_MAX_EXTENSION_NAME_SIZE - 1);
+      std::strncpy(p.extensionName, name.c_str(), XR_MAX_EXTENSION_NAME_SIZE - 1);
       p.extensionVersion = 1;
       all.push_back(p);
     }
@@ -40,9 +52,10 @@ XRAPI_ATTR XrResult XRAPI_CALL createInstance(const XrInstanceCreateInfo* info, 
     if (!out) return XR_ERROR_VALIDATION_FAILURE;
     if (gInstance) return XR_ERROR_LIMIT_REACHED;
     auto instance = std::make_unique<Instance>();
+    const std::vector<std::string> offered = offeredExtensions();
     for (std::uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
       const std::string name = info->enabledExtensionNames[i];
-      if (std::find(std::begin(kExtensions), std::end(kExtensions), name) == std::end(kExtensions))
+      if (std::find(offered.begin(), offered.end(), name) == offered.end())
         return XR_ERROR_EXTENSION_NOT_PRESENT;
       instance->extensions.insert(name);
     }
@@ -54,6 +67,8 @@ XRAPI_ATTR XrResult XRAPI_CALL createInstance(const XrInstanceCreateInfo* info, 
     }
     if (!instance->config.logPath.empty())
       instance->log.open(instance->config.logPath, std::ios::app);
+    instance->servingHands = instance->config.hands;
+    instance->random.seed(instance->config.seed);
     if (instance->config.input)
       instance->user.emplace(instance->config.input->header.handedness);
     else
@@ -216,7 +231,7 @@ void checkSystem(XrSystemId system) {
 XRAPI_ATTR XrResult XRAPI_CALL getSystemProperties(XrInstance handle, XrSystemId system,
                                                    XrSystemProperties* properties) {
   return guard([&] {
-    instanceOf(handle);
+    Instance& instance = instanceOf(handle);
     checkSystem(system);
     checkType(properties, XR_TYPE_SYSTEM_PROPERTIES);
     properties->systemId = system;
@@ -228,6 +243,12 @@ XRAPI_ATTR XrResult XRAPI_CALL getSystemProperties(XrInstance handle, XrSystemId
     properties->graphicsProperties.maxSwapchainImageHeight = 4096;
     properties->trackingProperties.orientationTracking = XR_TRUE;
     properties->trackingProperties.positionTracking = XR_TRUE;
+    // Hands are tracked, whether or not they are served now: the user may put the controllers
+    // down at any time. The structure is only valid with the extension enabled.
+    for (auto* next = static_cast<XrBaseOutStructure*>(properties->next); next; next = next->next)
+      if (next->type == XR_TYPE_SYSTEM_HAND_TRACKING_PROPERTIES_EXT &&
+          instance.extensions.count(XR_EXT_HAND_TRACKING_EXTENSION_NAME))
+        reinterpret_cast<XrSystemHandTrackingPropertiesEXT*>(next)->supportsHandTracking = XR_TRUE;
     return XR_SUCCESS;
   });
 }
@@ -364,7 +385,16 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const ch
       CURVEFOLD_SIM_FN("xrCreateVulkanInstanceKHR", createVulkanInstance),
       CURVEFOLD_SIM_FN("xrGetVulkanGraphicsDevice2KHR", getVulkanGraphicsDevice2),
       CURVEFOLD_SIM_FN("xrCreateVulkanDeviceKHR", createVulkanDevice),
+      CURVEFOLD_SIM_FN("xrCreateHandTrackerEXT", createHandTracker),
+      CURVEFOLD_SIM_FN("xrDestroyHandTrackerEXT", destroyHandTrackerEntry),
+      CURVEFOLD_SIM_FN("xrLocateHandJointsEXT", locateHandJoints),
 #undef CURVEFOLD_SIM_FN
+  };
+  // An extension's functions exist only for an instance that enabled it.
+  static const std::map<std::string, std::string, std::less<>> extensionOf = {
+      {"xrCreateHandTrackerEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
+      {"xrDestroyHandTrackerEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
+      {"xrLocateHandJointsEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
   };
   *function = nullptr;
   const auto found = table.find(std::string_view(name));
@@ -373,6 +403,11 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const ch
   const bool global = found->first == "xrEnumerateInstanceExtensionProperties" ||
                       found->first == "xrCreateInstance" || found->first == "xrGetInstanceProcAddr";
   if (instance == XR_NULL_HANDLE && !global) return XR_ERROR_HANDLE_INVALID;
+  if (const auto extension = extensionOf.find(found->first); extension != extensionOf.end()) {
+    Instance* object = objectOf<Instance>(instance);
+    if (!object || !object->extensions.count(extension->second))
+      return XR_ERROR_FUNCTION_UNSUPPORTED;
+  }
   *function = found->second;
   return XR_SUCCESS;
 }

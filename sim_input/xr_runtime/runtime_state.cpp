@@ -1,12 +1,12 @@
 // The simulated OpenXR runtime (docs/design.md 6): a shared library the Khronos loader loads
 // through XR_RUNTIME_JSON (the manifest is generated beside it). It serves a head and two
-// controllers from a recording, frame-locked (one recorded frame per focused xrWaitFrame), runs the
-// session state machine a real runtime runs, resolves actions through the application's suggested
-// bindings for the current interaction profile, and makes XR_KHR_vulkan_enable2 swapchains on the
-// application's device (XR_MND_headless sessions have none) in sRGB and UNORM colour formats and
-// the device's depth formats, and takes depth images with XR_KHR_composition_layer_depth. Its log
-// names each swapchain's format and, per frame, how many views came with depth. sim_user.hpp lists
-// its settings.
+// controllers (or, with XR_EXT_hand_tracking, two bare hands) from a recording, frame-locked (one
+// recorded frame per focused xrWaitFrame), runs the session state machine a real runtime runs,
+// resolves actions through the application's suggested bindings for the current interaction
+// profile, and makes XR_KHR_vulkan_enable2 swapchains on the application's device (XR_MND_headless
+// sessions have none) in sRGB and UNORM colour formats and the device's depth formats, and takes
+// depth images with XR_KHR_composition_layer_depth. Its log names each swapchain's format and, per
+// frame, how many views came with depth. sim_user.hpp lists its settings.
 //
 // One instance at a time; every entry point validates its handles and structure types and
 // catches exceptions at the C boundary.
@@ -94,6 +94,16 @@ void profileChanged(Instance& instance, Session& session) {
   log("profile " + instance.profile);
 }
 
+std::string chosenProfile(const Instance& instance) {
+  if (instance.servingHands) return "";  // the controllers are down
+  if (!instance.config.forcedProfile.empty())
+    return instance.bindings.count(instance.config.forcedProfile) ? instance.config.forcedProfile
+                                                                  : "";
+  for (const char* profile : kProfilePreference)
+    if (instance.bindings.count(profile)) return profile;
+  return "";
+}
+
 // The value of an action on a hand through the current profile's bindings.
 std::optional<float> resolve(Instance& instance, const Action& action, int hand) {
   const auto found = instance.bindings.find(instance.profile);
@@ -147,11 +157,19 @@ void serveFrame(Instance& instance, Session& session) {
         1, XrDuration((frames[index].time - frames[*instance.served].time) * 1e9));
   instance.served = index;
   instance.time += step;
-  instance.hands = instance.user->controllersFor(frames[index], instance.profile);
   log("frame " + std::to_string(index));
   if (auto events = config.events.find(index); events != config.events.end())
     for (const std::string& event : events->second) {
       log("event " + event);
+      if (event == "hands" || event == "controllers") {
+        // Controllers put down or picked up: the interaction profile goes or comes back.
+        instance.servingHands = event == "hands";
+        const std::string profile = chosenProfile(instance);
+        if (profile != instance.profile) {
+          instance.profile = profile;
+          profileChanged(instance, session);
+        }
+      }
       if (event == "loss_pending") {
         // The session works until the application has seen the event, then it is lost.
         setState(session, XR_SESSION_STATE_LOSS_PENDING);
@@ -169,6 +187,16 @@ void serveFrame(Instance& instance, Session& session) {
         profileChanged(instance, session);
       }
     }
+  // The user's hands for the frame: holding controllers, or bare and tracked.
+  if (instance.servingHands) {
+    instance.hands = {};
+    instance.handJoints = instance.user->handsFor(frames[index]);
+    for (HandJoints& hand : instance.handJoints)
+      if (hand.tracked) jitterJoints(hand, config.jitter, instance.random);
+  } else {
+    instance.handJoints = {};
+    instance.hands = instance.user->controllersFor(frames[index], instance.profile);
+  }
 }
 
 Pose locate(Instance& instance, const Space& space, bool& valid) {
@@ -237,6 +265,8 @@ void destroySession(Session* session) {
   });
   for (Swapchain* swapchain : std::set<Swapchain*>(session->swapchains))
     destroySwapchain(swapchain);
+  for (HandTracker* tracker : std::set<HandTracker*>(session->handTrackers))
+    destroyHandTracker(tracker);
   for (Space* space : session->spaces) {
     gHandles.erase(space);
     delete space;

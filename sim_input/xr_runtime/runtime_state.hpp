@@ -15,6 +15,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <random>
 #include <set>
 #include <string>
 #include <thread>
@@ -28,6 +29,7 @@
 #include <openxr/openxr_reflection.h>
 
 #include "interaction/xr_controls.hpp"
+#include "sim_input/simulated_hand.hpp"
 #include "sim_input/xr_runtime/loader_negotiation.hpp"
 #include "sim_input/xr_runtime/profile_paths.hpp"
 #include "sim_input/xr_runtime/sim_user.hpp"
@@ -72,6 +74,12 @@ struct Space {
   Pose offset;
 };
 
+// An XR_EXT_hand_tracking tracker: one hand of one session.
+struct HandTracker {
+  Session* session = nullptr;
+  int hand = 0;  // 0 left, 1 right
+};
+
 struct Swapchain {
   Session* session = nullptr;
   std::unique_ptr<SwapchainImages> images;
@@ -88,6 +96,7 @@ struct Session {
   bool waited = false, begun = false;
   std::set<Space*> spaces;
   std::set<Swapchain*> swapchains;
+  std::set<HandTracker*> handTrackers;
   struct ViewImage {
     Swapchain* swapchain = nullptr;
     std::uint32_t layer = 0;  // imageArrayIndex
@@ -114,6 +123,11 @@ struct Instance {
   std::optional<std::size_t> served;
   std::optional<SimUser> user;
   std::array<HandState, 2> hands;
+  // Hands tracked instead of controllers (CURVEFOLD_SIM_HANDS, the hands and controllers events)
+  // and their joints this frame, jittered once when the frame is served.
+  bool servingHands = false;
+  std::array<HandJoints, 2> handJoints;
+  std::mt19937_64 random{1};
   XrTime time = 1'000'000'000;
   std::chrono::steady_clock::time_point wallStart;
   std::ofstream log;
@@ -167,6 +181,9 @@ void setState(Session& session, XrSessionState state);
 // Runtime-requested or app-requested end: down through the states to STOPPING.
 void stop(Session& session);
 void profileChanged(Instance& instance, Session& session);
+// The profile the user's controllers show: the forced one or the first suggested of the
+// preference order; none while hands are served.
+std::string chosenProfile(const Instance& instance);
 // The value of an action on a hand through the current profile's bindings.
 std::optional<float> resolve(Instance& instance, const Action& action, int hand);
 int handIndex(Instance& instance, XrPath path);
@@ -176,6 +193,7 @@ XrPosef toXr(const Pose& pose);
 Pose fromXr(const XrPosef& p);
 void saveViews(Session& session, Swapchain* only = nullptr);
 void destroySwapchain(Swapchain* swapchain);
+void destroyHandTracker(HandTracker* tracker);
 void destroySession(Session* session);
 void checkSystem(XrSystemId system);
 
@@ -308,6 +326,13 @@ XRAPI_ATTR XrResult XRAPI_CALL waitSwapchainImage(XrSwapchain handle,
                                                   const XrSwapchainImageWaitInfo* info);
 XRAPI_ATTR XrResult XRAPI_CALL releaseSwapchainImage(XrSwapchain handle,
                                                      const XrSwapchainImageReleaseInfo*);
+XRAPI_ATTR XrResult XRAPI_CALL createHandTracker(XrSession handle,
+                                                 const XrHandTrackerCreateInfoEXT* info,
+                                                 XrHandTrackerEXT* out);
+XRAPI_ATTR XrResult XRAPI_CALL destroyHandTrackerEntry(XrHandTrackerEXT handle);
+XRAPI_ATTR XrResult XRAPI_CALL locateHandJoints(XrHandTrackerEXT handle,
+                                                const XrHandJointsLocateInfoEXT* info,
+                                                XrHandJointLocationsEXT* locations);
 XRAPI_ATTR XrResult XRAPI_CALL getVulkanGraphicsRequirements2(
     XrInstance handle, XrSystemId system, XrGraphicsRequirementsVulkanKHR* requirements);
 XRAPI_ATTR XrResult XRAPI_CALL createVulkanInstance(XrInstance handle,

@@ -11,6 +11,7 @@
 
 #include "interaction/xr_controls.hpp"
 #include "sim_input/gestures.hpp"
+#include "sim_input/simulated_hand.hpp"
 
 namespace curvefold::simxr {
 
@@ -46,6 +47,22 @@ SimConfig SimConfig::fromEnvironment() {
   config.hold = env("CURVEFOLD_SIM_HOLD") == "1";
   config.realtime = env("CURVEFOLD_SIM_REALTIME") == "1";
   config.noHmd = env("CURVEFOLD_SIM_NO_HMD") == "1";
+  config.hands = env("CURVEFOLD_SIM_HANDS") == "1";
+  if (const std::string jitter = env("CURVEFOLD_SIM_JITTER"); !jitter.empty()) {
+    double mm = -1.0;
+    char extra = 0;
+    if (std::sscanf(jitter.c_str(), "%lf%c", &mm, &extra) != 1 || !(mm >= 0.0 && mm <= 50.0))
+      throw std::runtime_error("CURVEFOLD_SIM_JITTER: expected millimetres from 0 to 50, got '" +
+                               jitter + "'");
+    config.jitter = mm * 1e-3;
+  }
+  if (const std::string seed = env("CURVEFOLD_SIM_SEED"); !seed.empty()) {
+    unsigned long long value = 0;
+    char extra = 0;
+    if (std::sscanf(seed.c_str(), "%llu%c", &value, &extra) != 1)
+      throw std::runtime_error("CURVEFOLD_SIM_SEED: expected a whole number, got '" + seed + "'");
+    config.seed = value;
+  }
   if (const std::string size = env("CURVEFOLD_SIM_VIEW_SIZE"); !size.empty()) {
     unsigned w = 0, h = 0;
     if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w < 16 || h < 16 || w > 4096 || h > 4096)
@@ -62,6 +79,7 @@ SimConfig SimConfig::fromEnvironment() {
       throw std::runtime_error("CURVEFOLD_SIM_EVENTS: expected FRAME:EVENT, got '" + item + "'");
     const std::string event = item.substr(colon + 1);
     if (event != "loss_pending" && event != "instance_loss" && event != "exit" &&
+        event != "hands" && event != "controllers" &&
         !event.starts_with("profile=/interaction_profiles/"))
       throw std::runtime_error("CURVEFOLD_SIM_EVENTS: unknown event '" + event + "'");
     config.events[frame].push_back(event);
@@ -116,11 +134,30 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
     if (!press(XrControl::SwitchHands, point, switching))
       press(XrControl::SwitchHands, sheet, switching);
   }
+  afterFrame(frame);
+  return hands;
+}
+
+std::array<HandJoints, 2> SimUser::handsFor(const InputFrame& frame) {
+  const int sheet = handedness_ == Handedness::Right ? 0 : 1;
+  const int point = 1 - sheet;
+  auto side = [](int hand) { return hand == 0 ? HandSide::Left : HandSide::Right; };
+  std::array<HandJoints, 2> hands;
+  if (frame.sheetHand.tracked)
+    hands[sheet] = simulatedHand(frame.sheetHand.pose, side(sheet), sheetHandPosture(frame));
+  if (frame.pointHand.tracked)
+    hands[point] = simulatedPointingHand(
+        frame.pointHand.position, frame.pointHand.aim.value_or(glm::dquat(1.0, 0.0, 0.0, 0.0)),
+        side(point), pointHandPosture(frame));
+  afterFrame(frame);
+  return hands;
+}
+
+void SimUser::afterFrame(const InputFrame& frame) {
   const auto switchBit = static_cast<std::uint32_t>(Button::SwitchHands);
   if ((frame.buttons & switchBit) && !(lastButtons_ & switchBit))
     handedness_ = handedness_ == Handedness::Right ? Handedness::Left : Handedness::Right;
   lastButtons_ = frame.buttons;
-  return hands;
 }
 
 Pose headPoseFor(const Pose& sheetFrame) {

@@ -5,8 +5,17 @@
 //   CURVEFOLD_SIM_INPUT       a recording (*.jsonl) or gesture script (*.gesture.json) to serve
 //   CURVEFOLD_SIM_PROFILE     the interaction profile to use (default: the first of oculus/touch,
 //                             valve/index, htc/vive, microsoft/motion, khr/simple suggested)
-//   CURVEFOLD_SIM_EVENTS      FRAME:EVENT,... with EVENT loss_pending, instance_loss, exit or
-//                             profile=/interaction_profiles/..., when that frame is served
+//   CURVEFOLD_SIM_HANDS=1     serve tracked hands (XR_EXT_hand_tracking) and no controllers: the
+//                             26 joints of each hand made from each frame (pinching while select
+//                             is held, closed while the clutch is, taps for buttons:
+//                             sim_input/simulated_hand.hpp)
+//   CURVEFOLD_SIM_NO_HAND_TRACKING=1  a runtime without XR_EXT_hand_tracking
+//   CURVEFOLD_SIM_JITTER      MM: every served hand joint moved by up to that many millimetres at
+//                             random (seeded by CURVEFOLD_SIM_SEED, default 1, so runs repeat)
+//   CURVEFOLD_SIM_EVENTS      FRAME:EVENT,... with EVENT loss_pending, instance_loss, exit,
+//                             profile=/interaction_profiles/..., hands (the controllers put down:
+//                             hands served from then on) or controllers (picked up again), when
+//                             that frame is served
 //   CURVEFOLD_SIM_HOLD=1      after the last frame, keep serving it instead of asking to exit
 //   CURVEFOLD_SIM_REALTIME=1  xrWaitFrame keeps the recording's pace
 //   CURVEFOLD_SIM_NO_HMD=1    no headset connected (xrGetSystem fails)
@@ -25,6 +34,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interaction/hand_input.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
 #include "sim_input/recording.hpp"
@@ -36,6 +46,9 @@ struct SimConfig {
   std::string forcedProfile, saveViews, logPath;
   std::map<std::size_t, std::vector<std::string>> events;  // by frame index
   bool hold = false, realtime = false, noHmd = false;
+  bool hands = false;   // hands, not controllers, from the start
+  double jitter = 0.0;  // metres
+  std::uint64_t seed = 1;
   std::uint32_t viewWidth = 512, viewHeight = 512;
 
   // Throws std::runtime_error naming the variable and the problem.
@@ -54,9 +67,15 @@ class SimUser {
   // Both controllers (0 left, 1 right) for a frame, pressing the controls of `profile`; then
   // switches hands when the frame newly presses SwitchHands, as the interaction core does.
   std::array<HandState, 2> controllersFor(const InputFrame& frame, std::string_view profile);
+  // Both hands' joints (0 left, 1 right) for a frame, in the postures that give its state
+  // (simulated_hand.hpp); switches hands as controllersFor does.
+  std::array<HandJoints, 2> handsFor(const InputFrame& frame);
   Handedness handedness() const { return handedness_; }
 
  private:
+  // Follows a newly pressed SwitchHands, as the interaction core does.
+  void afterFrame(const InputFrame& frame);
+
   Handedness handedness_;
   std::uint32_t lastButtons_ = 0;
 };
