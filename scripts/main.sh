@@ -4,7 +4,8 @@
 # gallery: per example the design, FOLD, SVG crease pattern, OBJ, the per-fold log, the checked
 # invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
 # again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
-# last images, and the headset studio session (xr_studio) with its panel's exports.
+# last images, and the headset studio session (xr_studio) with its panel's exports, with
+# controllers and with bare hands.
 # Usage: scripts/main.sh [OUT]   (default out/gallery)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,4 +37,15 @@ XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json \
   CURVEFOLD_SIM_INPUT=examples/recordings/xr_studio.jsonl CURVEFOLD_SIM_SAVE_VIEWS="$studio/views" \
   build/app/curvefold xr examples/recordings/xr_studio.jsonl --export-dir "$studio/exports" \
   --autosave "$studio/xr_studio.curvefold.json" >"$studio/xr.txt"
+# The same session with bare hands and no controllers (XR_EXT_hand_tracking, 2 mm of jitter on
+# every joint), recorded: the views show the hands drawn as joints and bones.
+hands="$out/xr_studio-hands"
+rm -rf "$hands"
+mkdir -p "$hands"
+XR_RUNTIME_JSON=build/sim_input/xr_runtime/curvefold_sim_openxr.json CURVEFOLD_SIM_HANDS=1 \
+  CURVEFOLD_SIM_JITTER=2 CURVEFOLD_SIM_INPUT=examples/recordings/xr_studio.jsonl \
+  CURVEFOLD_SIM_SAVE_VIEWS="$hands/views" \
+  build/app/curvefold xr examples/recordings/xr_studio.jsonl --export-dir "$hands/exports" \
+  --record "$hands/xr_studio-hands.jsonl" --autosave "$hands/xr_studio.curvefold.json" \
+  >"$hands/xr.txt"
 echo "gallery written to $out"

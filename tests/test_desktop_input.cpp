@@ -8,6 +8,7 @@
 #include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
+#include "sim_input/simulated_hand.hpp"
 
 namespace curvefold {
 namespace {
@@ -146,6 +147,39 @@ TEST(ControllerModels, GripBodyPointerAndTip) {
   ASSERT_EQ(held.lines.size(), 12u);
   EXPECT_NE(held.lines[0].color, idle);
   EXPECT_EQ(held.markers.size(), 1u);
+}
+
+// Issue 16, 2: a tracked bare hand is drawn as its joints (a sphere each, tips smaller) and bones
+// (a line from the wrist down each finger); an untracked one not at all. The pinch point shows
+// its state: white apart, yellow closing, green and larger pinched.
+TEST(HandModels, JointsBonesAndThePinchState) {
+  const HandJoints hand =
+      simulatedHand(Pose{{0.0, 1.0, -0.3}, glm::dquat(1, 0, 0, 0)}, HandSide::Right, {});
+  const glm::vec4 color(0.5f, 0.5f, 0.6f, 1.0f);
+  Scene scene;
+  addHandModel(scene, hand, color);
+  ASSERT_EQ(scene.markers.size(), 25u);  // every joint but the palm
+  ASSERT_EQ(scene.lines.size(), 24u);    // thumb 4 bones, fingers 5 each
+  for (std::size_t i = 0; i < scene.markers.size(); ++i) {
+    EXPECT_LT(glm::distance(glm::dvec3(scene.markers[i].position), hand.joints[i + 1].position),
+              1e-6);
+    EXPECT_EQ(scene.markers[i].color, color);
+  }
+  // Every bone ends on a joint and is shorter than a hand.
+  for (const LineSegment& bone : scene.lines) EXPECT_LT(glm::distance(bone.a, bone.b), 0.1f);
+  Scene none;
+  addHandModel(none, HandJoints{}, color);
+  EXPECT_TRUE(none.markers.empty() && none.lines.empty());
+
+  Scene apart, closing, pinched;
+  addPinchPoint(apart, {0, 1, 0}, false, 1.0);
+  addPinchPoint(closing, {0, 1, 0}, false, 0.0);
+  addPinchPoint(pinched, {0, 1, 0}, true, 0.0);
+  ASSERT_EQ(apart.markers.size(), 1u);
+  EXPECT_GT(apart.markers[0].color.b, 0.9f);                          // white
+  EXPECT_LT(closing.markers[0].color.b, 0.2f);                        // yellow
+  EXPECT_GT(pinched.markers[0].color.g, pinched.markers[0].color.r);  // green
+  EXPECT_GT(pinched.markers[0].radius, apart.markers[0].radius);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // What the simulated runtime serves (configured by environment variables, since the loader, not
 // the application, loads it) and the simulated user: controller states made from recorded input
-// frames by pressing what the controls table (interaction/xr_controls.hpp) says.
+// frames by pressing what the controls table (interaction/xr_controls.hpp) says, or bare hands in
+// the postures that give the frame through the hand gesture table (interaction/hand_input.hpp).
 //
 //   CURVEFOLD_SIM_INPUT       a recording (*.jsonl) or gesture script (*.gesture.json) to serve
 //   CURVEFOLD_SIM_PROFILE     the interaction profile to use (default: the first of oculus/touch,
