@@ -14,6 +14,7 @@
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
@@ -211,8 +212,11 @@ void addCheckCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("check", "Print the geometry invariants; exit non-zero if one fails");
   auto design = std::make_shared<std::string>();
+  auto allowSelfIntersection = std::make_shared<bool>(false);
   command->add_option("DESIGN", *design, "Design file")->required();
-  command->callback([design] {
+  command->add_flag("--allow-self-intersection", *allowSelfIntersection,
+                    "Report a folded form that passes through itself without failing");
+  command->callback([design, allowSelfIntersection] {
     const Design loaded = loadDesign(*design);
     const Sheet initial = initialSheet(loaded, *design);
     const Sheet sheet = buildSheet(loaded, *design);
@@ -275,6 +279,22 @@ void addCheckCommand(CLI::App& app) {
                       std::to_string(crossing->second.b) + ") cross");
     else
       line(true, "development: no edges cross");
+    // Paper cannot pass through itself (issue 17); layers that only touch are contact.
+    const SelfIntersectionReport crossings = findSelfIntersections(sheet);
+    if (crossings.intersections.empty()) {
+      line(true, "self-intersection: none");
+    } else {
+      const auto [s, t] = crossings.intersections.front();
+      std::snprintf(buffer, sizeof buffer,
+                    "self-intersection: %zu triangle pairs (first: triangles %u and %u, at "
+                    "(%.6g, %.6g, %.6g))%s",
+                    crossings.intersections.size(), s.value, t.value, crossings.firstPoint.x,
+                    crossings.firstPoint.y, crossings.firstPoint.z,
+                    *allowSelfIntersection ? ", allowed" : "");
+      line(*allowSelfIntersection, buffer);
+    }
+    std::cout << "  ok    contact: " << crossings.contacts.size()
+              << " triangle pairs (layers that touch, allowed)\n";
     line(now.consistentlyOriented && now.developmentCounterClockwise,
          now.consistentlyOriented && now.developmentCounterClockwise
              ? "consistently oriented (development counter-clockwise)"

@@ -121,6 +121,14 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
       scene.plane =
           PlaneDisk{world(plane->point), glm::vec3(worldFromSheet.applyToDirection(plane->normal)),
                     0.35f * size, scene.colors.plane};
+    // Triangles the fold passes through the sheet in, outlined (issue 17).
+    const glm::vec4 crossing(0.95f, 0.1f, 0.75f, 1.0f);
+    for (TriangleIndex t : core.intersectingTriangles()) {
+      const Triangle& tri = sheet.triangles[t];
+      for (int k = 0; k < 3; ++k)
+        scene.lines.push_back(
+            {world(sheet.positions[tri[k]]), world(sheet.positions[tri[(k + 1) % 3]]), crossing});
+    }
   } else if (const std::optional<HoverPoint>& hover = core.hover()) {
     scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
   }

@@ -214,6 +214,16 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   ImGui::Text("triangles %zu (drawn %zu), folds %zu", doc.session->current().triangleCount(),
               stats.drawnTriangles, doc.session->foldCount());
   ImGui::Text("max edge-length error %.3g m", maxError_);
+  // Paper cannot pass through itself: say so while the fold does, and after (issue 17).
+  if (doc.core->session().dragging() && doc.core->intersectionPairs() > 0)
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.8f, 1.0f), "self-intersection: %zu triangle pairs",
+                       doc.core->intersectionPairs());
+  else if (doc.core->lastCommitIntersections() > 0)
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.8f, 1.0f),
+                       "the last fold passes through the sheet (%zu triangle pairs)",
+                       doc.core->lastCommitIntersections());
+  else
+    ImGui::Text("self-intersection: none");
   ImGui::Text("drag update %.2f ms, frame %.2f ms", stats.dragUpdateMs, stats.frameMs);
   ImGui::TextWrapped("%s", help_.c_str());
   ImGui::End();

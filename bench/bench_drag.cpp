@@ -9,8 +9,13 @@
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/planar_simplification.hpp"
+#include "engine/geometry/self_intersection.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -80,6 +85,86 @@ void BM_DragUpdate(benchmark::State& state) {
   state.counters["moved_vertices"] = static_cast<double>(moved);
 }
 
+// Issue 17: the same drag with the live self-intersection test after each update (the
+// reflected part against a tree of the sheet built at the grab), and the tree's build at the grab.
+void BM_DragUpdateWithIntersectionWatch(benchmark::State& state) {
+  FoldSession& session = cylinder(state.range(0)).session;
+  const glm::dvec3 grabbed = session.beginDragNear({0.03, 0.105, 0.03});
+  DragIntersectionWatch watch;
+  watch.begin(session.fixed());
+  const glm::dvec3 targets[2] = {grabbed + glm::dvec3{0.0, -0.07, 0.01},
+                                 grabbed + glm::dvec3{0.001, -0.071, 0.012}};
+  std::size_t iteration = 0;
+  // Arg 1 = 0: the same without the watch, but with the reflected triangles listed (what a
+  // renderer asks for anyway): the difference is the watch's cost.
+  const bool watching = state.range(1) == 1;
+  for (auto _ : state) {
+    session.updateDrag(targets[iteration++ & 1]);
+    const std::vector<TriangleIndex>& reflected = session.reflectedTriangles();
+    if (watching)
+      watch.update(session.current(), session.lastChanges(), session.plane(), reflected);
+    benchmark::DoNotOptimize(watch.pairCount());
+  }
+  state.counters["pairs"] = static_cast<double>(watch.pairCount());
+  state.counters["node_pairs"] = static_cast<double>(watch.nodePairsVisited());
+  state.counters["tested"] = static_cast<double>(watch.trianglePairsTested());
+  state.counters["reflected"] = static_cast<double>(session.reflectedTriangles().size());
+  session.cancel();
+}
+
+void BM_IntersectionWatchBegin(benchmark::State& state) {
+  FoldSession& session = cylinder(state.range(0)).session;
+  session.beginDragNear({0.03, 0.105, 0.03});
+  for (auto _ : state) {
+    DragIntersectionWatch watch;
+    watch.begin(session.fixed());
+    benchmark::DoNotOptimize(&watch);
+  }
+  session.cancel();
+}
+
+// The whole sheet checked (`curvefold check`), and CGAL's does_self_intersect on the same mesh
+// (exact predicates, no contact tolerance) for the ratio.
+void BM_SelfIntersectionCheck(benchmark::State& state) {
+  const Sheet& sheet = cylinder(state.range(0)).session.fixed();
+  std::size_t pairs = 0, contacts = 0;
+  for (auto _ : state) {
+    const SelfIntersectionReport report = findSelfIntersections(sheet);
+    pairs = report.intersections.size();
+    contacts = report.contacts.size();
+  }
+  state.counters["triangles"] = static_cast<double>(sheet.triangleCount());
+  state.counters["pairs"] = static_cast<double>(pairs);
+  state.counters["contacts"] = static_cast<double>(contacts);
+}
+
+void BM_CgalDoesSelfIntersect(benchmark::State& state) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  const Sheet& sheet = cylinder(state.range(0)).session.fixed();
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (const glm::dvec3& p : sheet.positions) vertices.push_back(mesh.add_vertex({p.x, p.y, p.z}));
+  for (const Triangle& t : sheet.triangles)
+    mesh.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+  // Arg 1 = 0: does_self_intersect (stops at the first pair); 1: self_intersections (every pair,
+  // the work `check` does).
+  bool intersects = false;
+  std::size_t pairs = 0;
+  for (auto _ : state) {
+    if (state.range(1) == 0) {
+      intersects = CGAL::Polygon_mesh_processing::does_self_intersect(mesh);
+    } else {
+      std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> found;
+      CGAL::Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(found));
+      pairs = found.size();
+      intersects = pairs > 0;
+    }
+  }
+  state.counters["intersects"] = intersects ? 1.0 : 0.0;
+  state.counters["pairs"] = static_cast<double>(pairs);
+}
+
 void BM_CopyMeshArrays(benchmark::State& state) {
   const Sheet& fixed = cylinder(state.range(0)).session.fixed();
   Sheet copy;
@@ -112,6 +197,21 @@ void BM_SimplifyPlanarFlatSquare(benchmark::State& state) {
 BENCHMARK(BM_SimplifyPlanar)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SimplifyPlanarFlatSquare)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DragUpdate)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DragUpdateWithIntersectionWatch)
+    ->ArgsProduct({{10'000, 100'000}, {0, 1}})
+    ->ArgNames({"triangles", "watch"})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IntersectionWatchBegin)->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SelfIntersectionCheck)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK(BM_CgalDoesSelfIntersect)
+    ->ArgsProduct({{100'000, 1'000'000}, {0, 1}})
+    ->ArgNames({"triangles", "all_pairs"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 BENCHMARK(BM_CopyMeshArrays)
     ->Arg(10'000)
     ->Arg(100'000)

@@ -70,8 +70,11 @@ void InteractionCore::process(const InputFrame& frame, PointTarget target) {
 
 void InteractionCore::endDrag(bool commit, double time) {
   if (state_ != InteractionState::Dragging) return;
+  const std::size_t crossings = watch_.pairCount();
   const bool committed = commit && dragMoved_ && session_.commit();
   if (!committed) session_.cancel();
+  if (committed) lastCommitIntersections_ = crossings;
+  watch_.end();
   emit(committed ? InteractionEventKind::Commit : InteractionEventKind::Cancel, time);
   state_ = InteractionState::Idle;
   hover_.reset();
@@ -96,11 +99,17 @@ void InteractionCore::handleButtons(const InputFrame& frame) {
   if (wasPressed(Button::Cancel)) endDrag(false, frame.time);
   if (wasPressed(Button::Undo)) {
     endDrag(false, frame.time);
-    if (session_.undo()) emit(InteractionEventKind::Undo, frame.time);
+    if (session_.undo()) {
+      lastCommitIntersections_ = 0;  // about a fold no longer last
+      emit(InteractionEventKind::Undo, frame.time);
+    }
   }
   if (wasPressed(Button::Redo)) {
     endDrag(false, frame.time);
-    if (session_.redo()) emit(InteractionEventKind::Redo, frame.time);
+    if (session_.redo()) {
+      lastCommitIntersections_ = 0;
+      emit(InteractionEventKind::Redo, frame.time);
+    }
   }
 }
 
@@ -217,7 +226,14 @@ void InteractionCore::handlePointHand(const InputFrame& frame, PointTarget targe
     if (!dragMoved_ && glm::distance(target, session_.grabbedPoint()) >=
                            thresholds_.minimumDragDistance / viewScale_)
       dragMoved_ = true;
-    if (dragMoved_ && target != lastTarget_) session_.updateDrag(target);
+    if (dragMoved_ && target != lastTarget_) {
+      session_.updateDrag(target);
+      const std::size_t before = watch_.pairCount();
+      watch_.update(session_.current(), session_.lastChanges(), session_.plane(),
+                    reflectedTriangles());
+      // A short pulse as the fold starts to pass through the sheet.
+      if (before == 0 && watch_.pairCount() > 0) haptics_.push_back(kIntersectionPulse);
+    }
     lastTarget_ = target;
     return;
   }
@@ -246,6 +262,7 @@ void InteractionCore::handlePointHand(const InputFrame& frame, PointTarget targe
   // nothing.
   if (hover_ && selectHeld_ && !wasHeld) {
     const glm::dvec3 grabbed = session_.beginDrag(hover_->point);
+    watch_.begin(session_.fixed());
     grabOffset_ = grabbed - tip;  // keeps the tip-to-point offset: nothing jumps
     lastTarget_ = grabbed;
     pointAnchored_ = true;

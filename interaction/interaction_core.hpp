@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/self_intersection.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/surface_picker.hpp"
 
@@ -87,6 +88,8 @@ struct HapticPulse {
 // What the hands feel: a faint tick entering hover, a firmer one on a grab, the strongest on a
 // commit.
 inline constexpr HapticPulse kHoverEnterPulse{HapticHand::Point, 0.15, 0.01};
+// A drag starts to pass the sheet through itself: short and distinct from the grab's.
+inline constexpr HapticPulse kIntersectionPulse{HapticHand::Point, 0.6, 0.01};
 
 struct HoverPoint {
   SurfacePoint point;           // on the fixed sheet
@@ -128,6 +131,12 @@ class InteractionCore {
   std::optional<ReflectionPlane> plane() const;
   // Triangles of the displayed sheet that lie in the reflected part (empty unless folding).
   const std::vector<TriangleIndex>& reflectedTriangles() const;
+  // While dragging: how many triangle pairs the reflected part crosses the rest in, and their
+  // triangles (of the displayed sheet); both empty otherwise (engine/geometry/self_intersection).
+  std::size_t intersectionPairs() const { return watch_.pairCount(); }
+  const std::vector<TriangleIndex>& intersectingTriangles() const { return watch_.triangles(); }
+  // The pairs the last committed fold crossed in, as the drag ended.
+  std::size_t lastCommitIntersections() const { return lastCommitIntersections_; }
   const FoldSession& session() const { return session_; }
 
   // What happened in the last processed frame, and the haptic pulses it asks for.
@@ -182,6 +191,10 @@ class InteractionCore {
 
   std::unique_ptr<SurfacePicker> picker_;
   std::uint64_t pickerRevision_ = ~std::uint64_t{0};
+
+  // The drag's self-intersections, on a tree of the sheet built at the grab.
+  DragIntersectionWatch watch_;
+  std::size_t lastCommitIntersections_ = 0;
 };
 
 }  // namespace curvefold

@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/geometry/self_intersection.hpp"
+
 namespace curvefold {
 namespace {
 
@@ -52,6 +54,7 @@ std::string foldLogLine(const FoldLogEntry& entry) {
   value["triangles_before"] = entry.trianglesBefore;
   value["triangles_after"] = entry.trianglesAfter;
   value["max_edge_length_error"] = entry.maxEdgeLengthError;
+  value["self_intersections"] = entry.selfIntersections;
   return value.dump();
 }
 
@@ -97,6 +100,7 @@ void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
     if (i + 1 == kinds.size()) {
       entry.trianglesAfter = session.fixed().triangleCount();
       entry.maxEdgeLengthError = maxEdgeLengthError(session.fixed());
+      entry.selfIntersections = findSelfIntersections(session.fixed()).intersections.size();
     } else {
       const Sheet between =
           replayFolds(session.initial(),
@@ -104,6 +108,7 @@ void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
                           history.begin(), history.begin() + static_cast<std::ptrdiff_t>(count)));
       entry.trianglesAfter = between.triangleCount();
       entry.maxEdgeLengthError = maxEdgeLengthError(between);
+      entry.selfIntersections = findSelfIntersections(between).intersections.size();
     }
     triangles = entry.trianglesAfter;
     log.push_back(entry);

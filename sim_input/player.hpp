@@ -26,12 +26,13 @@ struct FoldLogEntry {
   ReflectionPlane plane;      // that fold's plane, sheet coordinates
   std::size_t trianglesBefore = 0;
   std::size_t trianglesAfter = 0;
-  double maxEdgeLengthError = 0.0;  // of the fixed sheet afterwards: max |3D - 2D edge length|, m
+  double maxEdgeLengthError = 0.0;    // of the fixed sheet afterwards: max |3D - 2D edge length|, m
+  std::size_t selfIntersections = 0;  // triangle pairs of the fixed sheet afterwards that cross
 };
 
 // The log entry as one JSON line (no newline): {"event":"commit","t":..,"fold":..,"folds":..,
 // "plane":{"point":[..],"normal":[..]},"triangles_before":..,"triangles_after":..,
-// "max_edge_length_error":..}.
+// "max_edge_length_error":..,"self_intersections":..}.
 std::string foldLogLine(const FoldLogEntry& entry);
 
 // Largest |3D length - development length| over the sheet's edges: one pass over the triangles,

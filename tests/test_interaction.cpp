@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
 #include "interaction/panel_pointer.hpp"
 #include "sheet_fixtures.hpp"
@@ -513,6 +514,62 @@ TEST(PanelPointerTest, ThePanelKeepsAPressThatBeganOnIt) {
   EXPECT_EQ(pointer.update(frame, std::nullopt, false), PointTarget::Sheet);
   frame.pointHand.tracked = false;
   EXPECT_EQ(pointer.update(frame, on, false), PointTarget::Sheet);
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+// Issue 17, 1: while a drag passes the paper through itself the core says how many triangle pairs
+// and which triangles, pulses once as it starts, and after the commit remembers the count of that
+// fold (until an undo).
+TEST(InteractionSelfIntersection, ADragThroughTheSheetIsWatchedAndPulsesOnce) {
+  FoldSession session(makeSurface("cylinder", {{"resolution", 16}}));
+  const Pose frame{};  // world = sheet
+  InteractionCore core(session, frame);
+  InputFrame input;
+  input.sheetHand.tracked = true;
+  input.pointHand.tracked = true;
+  auto send = [&](const glm::dvec3& at, double select) {
+    input.time += 1.0 / 90.0;
+    input.pointHand.position = at;
+    input.pointHand.select = select;
+    core.process(input);
+  };
+  // The tube's top folded down through a slanted plane, out through the far wall (as in
+  // test_self_intersection.cpp), in steps.
+  const glm::dvec3 grab(0.045, 0.1, 0.0), normal = glm::normalize(glm::dvec3(-1, -1, 0));
+  const glm::dvec3 through(0.0, 0.025, 0.0);
+  const glm::dvec3 target = grab - 2.0 * glm::dot(grab - through, normal) * normal;
+  send(grab, 0.0);
+  send(grab, 1.0);
+  ASSERT_EQ(core.state(), InteractionState::Dragging);
+  int pulses = 0;
+  bool crossed = false;
+  for (int i = 1; i <= 20; ++i) {
+    send(grab + (target - grab) * (i / 20.0), 1.0);
+    for (const HapticPulse& pulse : core.haptics())
+      pulses += pulse.amplitude == kIntersectionPulse.amplitude &&
+                pulse.duration == kIntersectionPulse.duration;
+    if (core.intersectionPairs() > 0) {
+      crossed = true;
+      EXPECT_FALSE(core.intersectingTriangles().empty());
+    }
+  }
+  EXPECT_TRUE(crossed);
+  EXPECT_GE(pulses, 1);
+  const std::size_t pairs = core.intersectionPairs();
+  EXPECT_GT(pairs, 0u);
+  send(target, 0.0);  // release: committed
+  EXPECT_EQ(session.foldCount(), 1u);
+  EXPECT_EQ(core.intersectionPairs(), 0u);
+  EXPECT_TRUE(core.intersectingTriangles().empty());
+  EXPECT_EQ(core.lastCommitIntersections(), pairs);
+  input.buttons = std::uint32_t(Button::Undo);
+  send(target, 0.0);
+  EXPECT_EQ(core.lastCommitIntersections(), 0u);
 }
 
 }  // namespace

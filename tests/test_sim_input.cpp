@@ -696,7 +696,7 @@ TEST(Player, FoldLogLineIsJson) {
   EXPECT_EQ(foldLogLine(entry),
             R"({"event":"redo","t":0.25,"fold":3,"folds":3,"plane":{"point":[0.5,0.0,0.0],)"
             R"("normal":[1.0,0.0,0.0]},"triangles_before":10,"triangles_after":12,)"
-            R"("max_edge_length_error":1e-17})");
+            R"("max_edge_length_error":1e-17,"self_intersections":0})");
 }
 
 }  // namespace
