@@ -274,6 +274,13 @@ SelfIntersectionReport findSelfIntersectionsBruteForce(const Sheet& sheet) {
 void DragIntersectionWatch::begin(const Sheet& fixed) {
   tree_ = buildTriangleTree(fixed);
   tolerance_ = kRelativeContactTolerance * sheetSize(fixed);
+  leafOf_.assign(fixed.triangleCount(), 0);
+  for (std::uint32_t k = 0; k < tree_.nodes.size(); ++k)
+    for (std::uint32_t i = tree_.nodes[k].first;
+         tree_.nodes[k].count > 0 && i < tree_.nodes[k].first + tree_.nodes[k].count; ++i)
+      leafOf_[tree_.order[i]] = k;
+  splitStamp_.assign(fixed.triangleCount(), 0);
+  stamp_ = 0;
   active_ = true;
   pairCount_ = 0;
   triangles_.clear();
@@ -295,39 +302,46 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
   moved_.assign(folded.triangleCount(), 0);
   for (TriangleIndex t : reflected) moved_[t] = 1;
   // The folded triangles each fixed one became: itself (kept or rewritten as a piece) and the
-  // pieces a cut appended, found through their origin.
+  // pieces a cut appended, found through their origin. A cut triangle has pieces on both sides.
+  ++stamp_;
   std::vector<std::pair<TriangleIndex, TriangleIndex>> extra;
-  for (std::size_t k = 0; k < changes.triangleOrigin.size(); ++k)
+  for (std::size_t k = 0; k < changes.triangleOrigin.size(); ++k) {
     extra.emplace_back(changes.triangleOrigin[k],
                        TriangleIndex(std::uint32_t(changes.firstNewTriangle + k)));
+    splitStamp_[changes.triangleOrigin[k]] = stamp_;
+  }
   std::sort(extra.begin(), extra.end());
-  // Per fixed triangle: 1 its piece is reflected, 2 a piece stays, 4 the cut made more pieces.
-  const std::size_t fixedCount = changes.firstNewTriangle;
-  kinds_.resize(fixedCount);
-  for (std::size_t t = 0; t < fixedCount; ++t) kinds_[t] = moved_[t] ? 1 : 2;
-  for (const auto& [origin, piece] : extra) kinds_[origin] |= (moved_[piece] ? 1 : 2) | 4;
   auto forPieces = [&](TriangleIndex t, auto&& visit) {
     visit(t);
-    if (!(kinds_[t] & 4)) return;
+    if (splitStamp_[t] != stamp_) return;
     auto it = std::lower_bound(extra.begin(), extra.end(), std::make_pair(t, TriangleIndex(0)));
     for (; it != extra.end() && it->first == t; ++it) visit(it->second);
   };
   // Per node of the tree, whether it holds a triangle with a reflected piece, and one with a piece
-  // left in place: children follow their parents in the array, so one backward pass fills both.
+  // left in place, from the reflected triangles alone (a leaf keeps a piece in place unless every
+  // triangle of it was reflected whole); children follow their parents in the array, so one
+  // backward pass fills the inner nodes.
   hasMoved_.assign(tree_.nodes.size(), 0);
   hasRest_.assign(tree_.nodes.size(), 0);
+  movedWhole_.assign(tree_.nodes.size(), 0);
+  for (TriangleIndex t : reflected) {
+    const TriangleIndex origin =
+        t < changes.firstNewTriangle ? t : changes.triangleOrigin[t - changes.firstNewTriangle];
+    const std::uint32_t leaf = leafOf_[origin];
+    hasMoved_[leaf] = 1;
+    if (splitStamp_[origin] == stamp_ || t >= changes.firstNewTriangle)
+      hasRest_[leaf] = 1;
+    else
+      ++movedWhole_[leaf];
+  }
   for (std::size_t k = tree_.nodes.size(); k-- > 0;) {
     const TriangleTree::Node& node = tree_.nodes[k];
-    if (node.count == 0) {
-      hasMoved_[k] = hasMoved_[node.first] | hasMoved_[node.first + 1];
-      hasRest_[k] = hasRest_[node.first] | hasRest_[node.first + 1];
+    if (node.count > 0) {
+      hasRest_[k] |= movedWhole_[k] < node.count;
       continue;
     }
-    for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-      const std::uint8_t kind = kinds_[tree_.order[i]];
-      hasMoved_[k] |= kind & 1;
-      hasRest_[k] |= (kind >> 1) & 1;
-    }
+    hasMoved_[k] = hasMoved_[node.first] | hasMoved_[node.first + 1];
+    hasRest_[k] = hasRest_[node.first] | hasRest_[node.first + 1];
   }
   // Per node, once: whether it can hold a reflected piece (some moved triangle, and a box that
   // reaches the seed's side, d < 0, where the reflected part was) or a piece of the rest that can

@@ -92,7 +92,10 @@ class DragIntersectionWatch {
   std::vector<std::uint8_t> moved_;               // per folded triangle: in the reflected part
   std::vector<std::uint8_t> hasMoved_, hasRest_;  // per tree node
   std::vector<glm::dvec3> reflectedLow_, reflectedHigh_;  // per tree node: its mirror's box
-  std::vector<std::uint8_t> kinds_;                       // per fixed triangle: what its pieces do
+  std::vector<std::uint32_t> leafOf_;                     // per fixed triangle: its leaf
+  std::vector<std::uint32_t> splitStamp_;  // per fixed triangle: == stamp_ when cut in pieces
+  std::vector<std::uint32_t> movedWhole_;  // per leaf: its triangles reflected whole
+  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace curvefold
