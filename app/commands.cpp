@@ -15,6 +15,7 @@
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
@@ -80,6 +81,11 @@ void addSurfacesCommand(CLI::App& app) {
         std::cout << "  --" << p.name << " (default " << p.defaultValue << ", " << p.min << " to "
                   << p.max << (p.integer ? ", whole number" : "") << "): " << p.description << "\n";
       }
+      // What `new --symmetry` takes, at the default parameters (a rotation's order: any divisor).
+      std::string symmetries;
+      for (const std::string& name : symmetriesOf(makeSurface(surface.name)))
+        symmetries += (symmetries.empty() ? "" : ", ") + name;
+      std::cout << "  symmetries: " << (symmetries.empty() ? "none" : symmetries) << "\n";
     }
     std::cout << "any .obj file: a developable triangle mesh (with vt as its development, or "
                  "unfolded when it has none)\n";
@@ -92,11 +98,15 @@ void addNewCommand(CLI::App& app) {
   struct Options {
     std::string surface;
     std::string output;
+    std::string symmetry;
     std::map<std::string, double> values;
   };
   auto options = std::make_shared<Options>();
   command->add_option("SURFACE", options->surface, "Surface name (see `surfaces`) or an .obj file")
       ->required();
+  command->add_option("--symmetry", options->symmetry,
+                      "mirror:x|y|z or rotational:N[:x|y|z] through the surface's centre: every "
+                      "fold is followed by its images (see `surfaces`)");
   command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
       ->required();
   // Every parameter of every surface is an option; makeSurface refuses one the chosen surface
@@ -121,13 +131,21 @@ void addNewCommand(CLI::App& app) {
       makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
       design.surface = generated;
     }
-    saveDesign(design, options->output);
     const Sheet sheet = initialSheet(design, options->output);
+    if (!options->symmetry.empty()) {
+      try {
+        design.symmetry = parseSymmetry(options->symmetry, sheet).name();
+      } catch (const InvalidSymmetry& e) {
+        throw UsageError(e.what());
+      }
+    }
+    saveDesign(design, options->output);
     // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
     // paper, laid side by side in the development and printed on one crease pattern.
     const std::size_t pieces = connectedComponentCount(sheet, buildEdgeTopology(sheet));
     statusFor({options->output}) << "wrote " << options->output << " (" << describeSurface(design)
-                                 << ", " << sheet.triangleCount() << " triangles"
+                                 << (design.symmetry.empty() ? "" : ", " + design.symmetry) << ", "
+                                 << sheet.triangleCount() << " triangles"
                                  << (pieces > 1 ? ", " + std::to_string(pieces) + " pieces" : "")
                                  << ")\n";
   });
@@ -150,12 +168,35 @@ void addFoldCommand(CLI::App& app) {
     const glm::dvec3 to = parsePoint(options->to, "--to");
     Design design = loadDesign(options->design);
     // The folded sheet from the cache when this history was folded before: one fold per call.
-    FoldSession session(buildSheetCached(design, options->design));
+    const Sheet before = buildSheetCached(design, options->design);
+    FoldSession session(before);
     const glm::dvec3 grabbed = session.beginDragNear(near);
     session.updateDrag(to);
     if (session.commit()) {
-      design.folds.push_back(session.folds().back());
-      const Sheet& sheet = session.fixed();
+      const std::size_t number = design.folds.size() + 1;
+      FoldRecord fold = session.folds().back();
+      Sheet sheet = session.fixed();
+      std::string images;
+      if (!design.symmetry.empty()) {
+        // The fold's images under the design's symmetry follow it, one group.
+        const Sheet initial = initialSheet(design, options->design);
+        const SymmetricFolder folder(initial, parseSymmetry(design.symmetry, initial));
+        const SymmetricFolder::Result result = folder.applyImages(before, sheet, fold);
+        std::uint32_t group = 0;
+        for (const FoldRecord& earlier : design.folds) group = std::max(group, earlier.group);
+        fold.group = group + 1;
+        design.folds.push_back(fold);
+        for (FoldRecord image : result.applied) {
+          image.group = fold.group;
+          design.folds.push_back(image);
+        }
+        images = " and " + std::to_string(result.applied.size()) + " images" +
+                 (result.skipped > 0 ? " (" + std::to_string(result.skipped) +
+                                           " skipped: their seeds lie in a part this fold moved)"
+                                     : "");
+      } else {
+        design.folds.push_back(fold);
+      }
       ValidationOptions tolerance;
       tolerance.relativeLengthTolerance =
           lengthTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
@@ -163,7 +204,7 @@ void addFoldCommand(CLI::App& app) {
       saveDesign(design, options->output);
       storeCachedSheet(design, sheet);
       statusFor({options->output})
-          << "fold " << design.folds.size() << ": grabbed " << formatPoint(grabbed) << " -> "
+          << "fold " << number << images << ": grabbed " << formatPoint(grabbed) << " -> "
           << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
           << options->output << "\n";
     } else {

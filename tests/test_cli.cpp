@@ -160,6 +160,41 @@ TEST_F(Cli, BadPointsAreRefused) {
                 "drag target", out);
 }
 
+// Issue 17, 2: a design with a symmetry folds each fold's images with it, as one group; the file
+// keeps the symmetry and the groups, and replays them as plain folds; a symmetry the surface lacks
+// is one line, and `surfaces` lists what each has.
+TEST_F(Cli, ASymmetricDesignFoldsTheImagesOfEachFold) {
+  CommandResult r = run("new cylinder --symmetry rotational:6 -o " + path("s.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("rotational:6:y"), std::string::npos) << r.out;
+  r = run("fold " + path("s.json").string() + " --vertex-near 0.045,0.105,0 --to 0.036,0.1,0 -o " +
+          path("s.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("fold 1 and 5 images"), std::string::npos) << r.out;
+  r = run("fold " + path("s.json").string() +
+          " --vertex-near 0.045,-0.105,0 --to 0.036,-0.1,0 -o " + path("s.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("fold 7 and 5 images"), std::string::npos) << r.out;
+  const nlohmann::json design = nlohmann::json::parse(slurp(path("s.json")));
+  EXPECT_EQ(design["symmetry"], "rotational:6:y");
+  ASSERT_EQ(design["folds"].size(), 12u);
+  for (std::size_t i = 0; i < 12; ++i) EXPECT_EQ(design["folds"][i]["group"], i / 6 + 1) << i;
+  r = run("check " + path("s.json").string());
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("self-intersection: none"), std::string::npos) << r.out;
+
+  r = run("new square --symmetry mirror:x -o " + path("q.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("mirror:x"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("q.json")));
+  r = run("surfaces");
+  EXPECT_NE(r.out.find("symmetries: mirror:x, mirror:y, mirror:z, rotational:2:x, "
+                       "rotational:12:y"),
+            std::string::npos)
+      << r.out;
+}
+
 // Issue 13, E23: `fold` re-applied the whole history on every call. The folded sheet is cached by
 // the history's content; a cached fold gives the very design a replay gives, and an edited or
 // stale entry is never trusted.

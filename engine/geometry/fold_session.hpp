@@ -30,6 +30,9 @@ struct FoldRecord {
   ReflectionPlane plane;
   glm::dvec3 grabbed{0.0};
   glm::dvec3 target{0.0};
+  // In a symmetric design, the group of a fold and its images (from 1; 0: no group). Replay does
+  // not need it; undo takes a group at once.
+  std::uint32_t group = 0;
 };
 
 // Applies one recorded fold: the seed becomes a vertex (insertVertexAt), then the part containing

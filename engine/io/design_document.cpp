@@ -137,6 +137,11 @@ class Reader : public JsonReader {
       fold.grabbed = vector3(*grabbed, where + ": grabbed");
     if (const json* target = optionalMember(value, "target", where))
       fold.target = vector3(*target, where + ": target");
+    if (const json* group = optionalMember(value, "group", where)) {
+      const std::uint64_t g = unsignedInteger(*group, where + ": group");
+      if (g < 1 || g > 0xffffffffu) fail(where, "group must be a whole number from 1");
+      fold.group = static_cast<std::uint32_t>(g);
+    }
     return fold;
   }
 
@@ -147,6 +152,8 @@ class Reader : public JsonReader {
     const json& folds = array(member(document, "folds", ""), "folds");
     design.folds.reserve(folds.size());
     for (std::size_t i = 0; i < folds.size(); ++i) design.folds.push_back(fold(folds[i], i + 1));
+    if (const json* symmetry = optionalMember(document, "symmetry", ""))
+      design.symmetry = string(*symmetry, "symmetry");
     return design;
   }
 };
@@ -182,11 +189,14 @@ ordered_json surfaceJsonOf(const InitialSurface& surface) {
 }
 
 ordered_json foldJson(const FoldRecord& fold) {
-  return {{"seed", vectorJson(fold.seed)},
-          {"plane",
-           {{"point", vectorJson(fold.plane.point)}, {"normal", vectorJson(fold.plane.normal)}}},
-          {"grabbed", vectorJson(fold.grabbed)},
-          {"target", vectorJson(fold.target)}};
+  ordered_json value = {
+      {"seed", vectorJson(fold.seed)},
+      {"plane",
+       {{"point", vectorJson(fold.plane.point)}, {"normal", vectorJson(fold.plane.normal)}}},
+      {"grabbed", vectorJson(fold.grabbed)},
+      {"target", vectorJson(fold.target)}};
+  if (fold.group != 0) value["group"] = fold.group;
+  return value;
 }
 
 Design parseText(const std::string& text, std::string_view name) {
@@ -195,7 +205,8 @@ Design parseText(const std::string& text, std::string_view name) {
   try {
     // Members a design does not have are skipped while parsing, never built: an unknown array of
     // millions of elements costs no memory (and cannot exhaust it while being destroyed).
-    static const std::array<std::string_view, 4> kKnown = {"format", "version", "surface", "folds"};
+    static const std::array<std::string_view, 5> kKnown = {"format", "version", "surface", "folds",
+                                                           "symmetry"};
     return Reader(std::string(name))
         .design(parseJsonText(text, name, [](int depth, std::string_view key) {
           return depth != 1 || std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end();
@@ -258,9 +269,13 @@ std::string designText(const Design& design) {
   for (const FoldRecord& fold : design.folds) folds.push_back(foldJson(fold));
 
   // One fold per line keeps the document readable and its diffs small.
-  std::string text = "{\n  \"format\": " + json(kDesignFormat).dump() +
-                     ",\n  \"version\": " + std::to_string(kDesignVersion) +
-                     ",\n  \"surface\": " + surface.dump() + ",\n  \"folds\": [";
+  std::string text =
+      "{\n  \"format\": " + json(kDesignFormat).dump() +
+      ",\n  \"version\": " + std::to_string(kDesignVersion) +
+      ",\n  \"surface\": " + surface.dump() +
+      (design.symmetry.empty() ? std::string()
+                               : ",\n  \"symmetry\": " + json(design.symmetry).dump()) +
+      ",\n  \"folds\": [";
   for (std::size_t i = 0; i < folds.size(); ++i)
     text += (i == 0 ? "\n    " : ",\n    ") + folds[i].dump();
   text += folds.empty() ? "]\n}\n" : "\n  ]\n}\n";

@@ -40,8 +40,15 @@ struct GeneratedSurface {
 using InitialSurface = std::variant<GeneratedSurface, Sheet>;
 
 struct Design {
+  Design() = default;
+  Design(InitialSurface surface, std::vector<FoldRecord> folds, std::string symmetry = {})
+      : surface(std::move(surface)), folds(std::move(folds)), symmetry(std::move(symmetry)) {}
+
   InitialSurface surface;
   std::vector<FoldRecord> folds;
+  // A symmetry of the initial surface every fold is followed by the images of
+  // (engine/geometry/symmetry.hpp: "rotational:6:y", "mirror:x"); empty: none.
+  std::string symmetry;
 };
 
 // The sheet before any fold: makeSurface's result or the embedded mesh. Throws DesignError when

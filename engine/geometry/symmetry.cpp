@@ -1,0 +1,265 @@
+#include "engine/geometry/symmetry.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/geometry/surface_point.hpp"
+
+namespace curvefold {
+
+namespace {
+
+constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+
+glm::dvec3 unitAxis(int axis) {
+  glm::dvec3 v(0.0);
+  v[axis] = 1.0;
+  return v;
+}
+
+Isometry about(const glm::dmat3& linear, const glm::dvec3& centre) {
+  return {linear, centre - linear * centre};
+}
+
+Isometry mirror(int axis, const glm::dvec3& centre) {
+  const glm::dvec3 n = unitAxis(axis);
+  return about(glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n), centre);
+}
+
+Isometry rotation(int axis, double radians, const glm::dvec3& centre) {
+  return about(glm::dmat3(glm::rotate(glm::dmat4(1.0), radians, unitAxis(axis))), centre);
+}
+
+// Vertices by their position on a grid of the tolerance, for lookups of images.
+class VertexGrid {
+ public:
+  VertexGrid(const Sheet& sheet, double tolerance) : sheet_(sheet), cell_(4.0 * tolerance) {
+    for (VertexIndex v = 0; v < sheet.vertexCount(); ++v)
+      cells_[key(sheet.positions[v])].push_back(v);
+  }
+  std::optional<VertexIndex> find(const glm::dvec3& p, double tolerance) const {
+    const std::array<long long, 3> k = key(p);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells_.find({k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == cells_.end()) continue;
+          for (VertexIndex v : it->second)
+            if (glm::distance(sheet_.positions[v], p) <= tolerance) return v;
+        }
+    return std::nullopt;
+  }
+
+ private:
+  std::array<long long, 3> key(const glm::dvec3& p) const {
+    return {std::llround(std::floor(p.x / cell_)), std::llround(std::floor(p.y / cell_)),
+            std::llround(std::floor(p.z / cell_))};
+  }
+  const Sheet& sheet_;
+  double cell_;
+  std::map<std::array<long long, 3>, std::vector<VertexIndex>> cells_;
+};
+
+std::array<VertexIndex, 3> sorted(std::array<VertexIndex, 3> t) {
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+}  // namespace
+
+std::vector<Isometry> Symmetry::images() const {
+  std::vector<Isometry> result;
+  if (kind == Kind::Mirror) result.push_back(mirror(axis, centre));
+  if (kind == Kind::Rotational)
+    for (int k = 1; k < order; ++k)
+      result.push_back(rotation(axis, 2.0 * std::numbers::pi * k / order, centre));
+  return result;
+}
+
+std::string Symmetry::name() const {
+  switch (kind) {
+    case Kind::Mirror:
+      return std::string("mirror:") + kAxisNames[axis];
+    case Kind::Rotational:
+      return "rotational:" + std::to_string(order) + ":" + kAxisNames[axis];
+    default:
+      return "none";
+  }
+}
+
+glm::dvec3 surfaceCentre(const Sheet& initial) {
+  glm::dvec3 low(INFINITY), high(-INFINITY);
+  for (const glm::dvec3& p : initial.positions) low = glm::min(low, p), high = glm::max(high, p);
+  return initial.positions.empty() ? glm::dvec3(0.0) : 0.5 * (low + high);
+}
+
+std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, const Isometry& g) {
+  const double tolerance = kRelativeContactTolerance * sheetSize(initial);
+  const VertexGrid grid(initial, tolerance);
+  // Vertices at one place (the two sides of a slit) are one place: triangles are matched by the
+  // places of their corners, then each corner by its place.
+  std::vector<VertexIndex> place(initial.vertexCount());
+  for (VertexIndex v = 0; v < initial.vertexCount(); ++v)
+    place[v] = *grid.find(initial.positions[v], tolerance);
+  std::map<std::array<VertexIndex, 3>, TriangleIndex> byPlaces;
+  for (TriangleIndex t = 0; t < initial.triangleCount(); ++t) {
+    const Triangle& tri = initial.triangles[t];
+    byPlaces.emplace(sorted({place[tri[0]], place[tri[1]], place[tri[2]]}), t);
+  }
+  std::vector<Triangle> image(initial.triangleCount());
+  for (TriangleIndex t = 0; t < initial.triangleCount(); ++t) {
+    const Triangle& tri = initial.triangles[t];
+    std::array<VertexIndex, 3> places{};
+    for (int i = 0; i < 3; ++i) {
+      const std::optional<VertexIndex> found =
+          grid.find(g.apply(initial.positions[tri[i]]), tolerance);
+      if (!found) return std::nullopt;
+      places[i] = place[*found];
+    }
+    const auto match = byPlaces.find(sorted(places));
+    if (match == byPlaces.end()) return std::nullopt;
+    const Triangle& other = initial.triangles[match->second];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (place[other[j]] == places[i]) image[t][i] = other[j];
+  }
+  return image;
+}
+
+namespace {
+
+bool has(const Sheet& initial, const Symmetry& symmetry) {
+  const std::vector<Isometry> images = symmetry.images();
+  // A mirror that fixes every vertex (a flat sheet's own plane) is no symmetry to fold by.
+  if (symmetry.kind == Symmetry::Kind::Mirror) {
+    const double tolerance = kRelativeContactTolerance * sheetSize(initial);
+    bool moves = false;
+    for (const glm::dvec3& p : initial.positions)
+      moves = moves || glm::distance(images[0].apply(p), p) > tolerance;
+    if (!moves) return false;
+  }
+  for (const Isometry& g : images)
+    if (!trianglePermutation(initial, g)) return false;
+  return true;
+}
+
+}  // namespace
+
+Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
+  Symmetry symmetry;
+  symmetry.centre = surfaceCentre(initial);
+  auto axisOf = [&](const std::string& name) {
+    for (int a = 0; a < 3; ++a)
+      if (name == kAxisNames[a]) return a;
+    throw InvalidSymmetry("--symmetry " + text + ": the axis must be x, y or z, not '" + name +
+                          "'");
+  };
+  const auto colon = text.find(':');
+  const std::string kind = text.substr(0, colon);
+  const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+  if (kind == "mirror") {
+    symmetry.kind = Symmetry::Kind::Mirror;
+    symmetry.order = 2;
+    symmetry.axis = axisOf(rest);
+  } else if (kind == "rotational") {
+    symmetry.kind = Symmetry::Kind::Rotational;
+    const auto second = rest.find(':');
+    const std::string order = rest.substr(0, second);
+    std::size_t used = 0;
+    int n = 0;
+    try {
+      n = std::stoi(order, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != order.size() || n < 2 || n > 64)
+      throw InvalidSymmetry("--symmetry " + text +
+                            ": the order must be a whole number from 2 to 64");
+    symmetry.order = n;
+    if (second != std::string::npos) {
+      symmetry.axis = axisOf(rest.substr(second + 1));
+    } else {
+      for (symmetry.axis = 0; symmetry.axis < 3; ++symmetry.axis)
+        if (has(initial, symmetry)) return symmetry;
+      throw InvalidSymmetry("--symmetry " + text + ": the surface has no " + std::to_string(n) +
+                            "-fold rotational symmetry about x, y or z through its centre (see "
+                            "`curvefold surfaces`)");
+    }
+  } else {
+    throw InvalidSymmetry("--symmetry " + text + ": expected mirror:x|y|z or rotational:N[:x|y|z]");
+  }
+  if (!has(initial, symmetry))
+    throw InvalidSymmetry("--symmetry " + text + ": the surface does not have " + symmetry.name() +
+                          " through its centre (see `curvefold surfaces`)");
+  return symmetry;
+}
+
+std::vector<std::string> symmetriesOf(const Sheet& initial) {
+  std::vector<std::string> found;
+  const glm::dvec3 centre = surfaceCentre(initial);
+  for (int axis = 0; axis < 3; ++axis) {
+    Symmetry mirrored{Symmetry::Kind::Mirror, 2, axis, centre};
+    if (has(initial, mirrored)) found.push_back(mirrored.name());
+  }
+  for (int axis = 0; axis < 3; ++axis)
+    for (int n = 12; n >= 2; --n) {
+      Symmetry turned{Symmetry::Kind::Rotational, n, axis, centre};
+      if (has(initial, turned)) {
+        found.push_back(turned.name());
+        break;
+      }
+    }
+  return found;
+}
+
+SymmetricFolder::SymmetricFolder(const Sheet& initial, const Symmetry& symmetry)
+    : initial_(initial), symmetry_(symmetry), images_(symmetry.images()) {
+  for (const Isometry& g : images_) {
+    std::optional<std::vector<Triangle>> permutation = trianglePermutation(initial, g);
+    if (!permutation)
+      throw InvalidSymmetry("the surface does not have " + symmetry.name() + " through its centre");
+    permutations_.push_back(std::move(*permutation));
+  }
+}
+
+SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet& sheet,
+                                                     const FoldRecord& fold) const {
+  Result result;
+  const double size = sheetSize(initial_);
+  const double tolerance = kRelativeContactTolerance * size;
+  const std::optional<SurfacePoint> seed =
+      locateDevelopmentPoint(initial_, fold.seed, kRelativeEpsilon * size);
+  if (!seed) return result;
+  for (std::size_t k = 0; k < images_.size(); ++k) {
+    const Isometry& g = images_[k];
+    glm::dvec2 imageSeed(0.0);
+    for (int i = 0; i < 3; ++i)
+      imageSeed += seed->barycentric[i] * initial_.development[permutations_[k][seed->triangle][i]];
+    // The image seed must still be where the symmetric sheet had it: a fold of this group that
+    // already moved it (its part overlaps this image's) leaves the image out.
+    const std::optional<SurfacePoint> now = locateDevelopmentPoint(sheet, imageSeed, tolerance);
+    const std::optional<SurfacePoint> then = locateDevelopmentPoint(before, imageSeed, tolerance);
+    if (!now || !then ||
+        glm::distance(positionOf(sheet, *now), positionOf(before, *then)) > 1e-6 * size) {
+      ++result.skipped;
+      continue;
+    }
+    FoldRecord image;
+    image.seed = imageSeed;
+    image.plane.point = g.apply(fold.plane.point);
+    image.plane.normal = glm::normalize(g.linear * fold.plane.normal);
+    image.grabbed = g.apply(fold.grabbed);
+    image.target = g.apply(fold.target);
+    sheet = applyFold(sheet, image);
+    result.applied.push_back(image);
+  }
+  return result;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,87 @@
+// Symmetric folding (issue 17, docs/design.md 7b): a mirror plane or an n-fold rotation of the
+// initial surface, through its centre, and the images of a fold under it. Each image is a
+// reflection fold of its own, through the image of the fold's plane and seeded at the image of the
+// grabbed point in the development, so the closure of Mitani & Igarashi's Sec. 3.3 holds for each
+// and each passes the same invariants. A symmetry is one the initial mesh has: every vertex and
+// every triangle maps onto one (within 1e-9 of the size), which also finds the image of a
+// development point exactly (through the triangle it lies in).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+class InvalidSymmetry : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// x -> linear * x + offset, with linear orthogonal.
+struct Isometry {
+  glm::dmat3 linear{1.0};
+  glm::dvec3 offset{0.0};
+  glm::dvec3 apply(const glm::dvec3& p) const { return linear * p + offset; }
+};
+
+struct Symmetry {
+  enum class Kind { None, Mirror, Rotational };
+  Kind kind = Kind::None;
+  int order = 1;  // a rotation's n; 2 for a mirror
+  int axis = 0;   // 0 x, 1 y, 2 z: the mirror's normal or the rotation's axis
+  glm::dvec3 centre{0.0};
+
+  // The isometries of the group other than the identity (a mirror: one; n-fold: n - 1).
+  std::vector<Isometry> images() const;
+  // "mirror:x", "rotational:6:y", "none".
+  std::string name() const;
+};
+
+// The centre symmetries go through: the middle of the initial surface's bounding box.
+glm::dvec3 surfaceCentre(const Sheet& initial);
+
+// "mirror:x|y|z" or "rotational:N[:x|y|z]" (N from 2 to 64; without an axis, the first of x, y, z
+// the surface has it about). Throws InvalidSymmetry with one line naming what is wrong, also when
+// the surface lacks the symmetry.
+Symmetry parseSymmetry(const std::string& text, const Sheet& initial);
+
+// Each triangle's image under g, corner by corner (the triangle whose corners lie where g puts
+// its corners), when every triangle maps onto one; vertices at one place (a slit's two sides) are
+// told apart by the triangle they belong to.
+std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, const Isometry& g);
+
+// The symmetries the sheet has, among mirrors normal to x, y, z and rotations of order 2 to 12
+// about them (each rotation by its largest order, then its divisors are implied).
+std::vector<std::string> symmetriesOf(const Sheet& initial);
+
+// Applies the images of a fold. Made once per design from its initial sheet and symmetry.
+class SymmetricFolder {
+ public:
+  SymmetricFolder(const Sheet& initial, const Symmetry& symmetry);
+  const Symmetry& symmetry() const { return symmetry_; }
+
+  struct Result {
+    std::vector<FoldRecord> applied;  // the images folded, in order
+    std::size_t skipped = 0;          // images whose seed an earlier fold of the group had moved
+  };
+  // `before`: the sheet the fold was made on; `sheet`: with the fold applied, to which the images
+  // are applied in turn.
+  Result applyImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold) const;
+
+ private:
+  const Sheet& initial_;
+  Symmetry symmetry_;
+  std::vector<Isometry> images_;
+  std::vector<std::vector<Triangle>> permutations_;
+};
+
+}  // namespace curvefold
