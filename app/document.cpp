@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/commands.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold::cli {
@@ -12,10 +13,21 @@ namespace fs = std::filesystem;
 
 Design Document::design() const {
   const auto& history = session->folds();
-  Design design{surface, baseFolds};
+  Design design{surface, baseFolds, symmetry};
   design.folds.insert(design.folds.end(), history.begin(),
                       history.begin() + std::ptrdiff_t(session->foldCount()));
   return design;
+}
+
+std::string Document::recordingSymmetry() const {
+  if (!session->symmetry()) return "";
+  const std::string name = session->symmetry()->name();
+  try {
+    parseSymmetry(name, initialSheet(Design{recordingSurface(), {}}, "recording"));
+    return name;
+  } catch (const InvalidSymmetry&) {
+    return "";
+  }
 }
 
 InitialSurface Document::recordingSurface() const {
@@ -31,6 +43,13 @@ void startFromCommittedFolds(Document& doc) {
   Sheet folded = doc.session->fixed();
   doc.core.reset();
   doc.session = std::make_unique<FoldSession>(std::move(folded));
+  // The folded sheet keeps the symmetry when every image was made (none was skipped).
+  if (!doc.symmetry.empty()) {
+    try {
+      doc.session->setSymmetry(parseSymmetry(doc.symmetry, doc.session->initial()));
+    } catch (const InvalidSymmetry&) {
+    }
+  }
   doc.core = std::make_unique<InteractionCore>(*doc.session, worldFromSheet, handedness);
 }
 
@@ -39,11 +58,11 @@ Document makeDocument(const Design& design, const std::string& name, const Pose&
   Document doc;
   doc.surface = design.surface;
   doc.session = std::make_unique<FoldSession>(initialSheet(design, name));
-  for (const FoldRecord& fold : design.folds) {
-    doc.session->beginDragAtDevelopment(fold.seed);
-    doc.session->updateDrag(fold.target);
-    doc.session->commit();
-  }
+  doc.session->applyRecords(design.folds);
+  // Folds from here on bring their images (the ones above already hold theirs).
+  doc.symmetry = design.symmetry;
+  if (!design.symmetry.empty())
+    doc.session->setSymmetry(parseSymmetry(design.symmetry, doc.session->initial()));
   doc.core = std::make_unique<InteractionCore>(*doc.session, worldFromSheet, handedness);
   return doc;
 }

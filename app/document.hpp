@@ -18,6 +18,7 @@ struct Document {
   // opened with, since a recording starts from its header's surface): kept so the design stays
   // whole, its generator and history included.
   std::vector<FoldRecord> baseFolds;
+  std::string symmetry;  // the design's ("" none); the session folds images while its sheet has it
   std::unique_ptr<FoldSession> session;
   std::unique_ptr<InteractionCore> core;
 
@@ -27,6 +28,9 @@ struct Document {
   // The surface a recording of this session starts from: the design's surface, or the folded
   // sheet when there are base folds.
   InitialSurface recordingSurface() const;
+  // The symmetry a recording of this session carries: the session's, when its recording surface
+  // has it (folds baked into the surface may have left images out); else none.
+  std::string recordingSymmetry() const;
 };
 
 // Bakes the folds committed so far into a new session's initial sheet (they move to baseFolds;

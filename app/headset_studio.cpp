@@ -163,8 +163,9 @@ void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
 ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options) {
   if (!recording.header.studio)
     throw std::invalid_argument("replayStudioRecording: the recording has no studio");
-  Document doc = makeDocument(Design{recording.header.surface, {}}, "recording",
-                              recording.header.sheetFrame, recording.header.handedness);
+  Document doc =
+      makeDocument(Design{recording.header.surface, {}, recording.header.symmetry}, "recording",
+                   recording.header.sheetFrame, recording.header.handedness);
   HeadsetStudioOptions studioOptions;
   studioOptions.recent = recording.header.studio->recent;
   studioOptions.sheetFrame = recording.header.sheetFrame;

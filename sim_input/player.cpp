@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 
 namespace curvefold {
 namespace {
@@ -61,7 +62,10 @@ std::string foldLogLine(const FoldLogEntry& entry) {
 Player::Player(const Recording& recording, const InteractionThresholds& thresholds)
     : recording_(recording),
       session_(initialSheet(Design{recording.header.surface, {}}, "recording")),
-      core_(session_, recording.header.sheetFrame, recording.header.handedness, thresholds) {}
+      core_(session_, recording.header.sheetFrame, recording.header.handedness, thresholds) {
+  if (!recording.header.symmetry.empty())
+    session_.setSymmetry(parseSymmetry(recording.header.symmetry, session_.initial()));
+}
 
 const InputFrame& Player::step() {
   const InputFrame& frame = recording_.frames.at(next_++);

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
@@ -114,12 +115,18 @@ class LineReader : public JsonReader {
           header.studio->recent.push_back(string((*recent)[i], item("studio.recent", i)));
       }
     }
+    if (const json* symmetry = optionalMember(value, "symmetry", ""))
+      header.symmetry = string(*symmetry, "symmetry");
     const json& surface = member(value, "surface", "");
     try {
       header.surface = parseInitialSurface(surface, prefix());
-      initialSheet(Design{header.surface, {}}, prefix());  // the engine builds it, or refuses here
+      // The engine builds it, or refuses here; so with a symmetry it lacks.
+      const Sheet sheet = initialSheet(Design{header.surface, {}}, prefix());
+      if (!header.symmetry.empty()) parseSymmetry(header.symmetry, sheet);
     } catch (const DesignError& e) {
       throw RecordingError(e.what(), line_);
+    } catch (const InvalidSymmetry& e) {
+      fail("symmetry", e.what());
     }
     return header;
   }
@@ -216,6 +223,7 @@ std::string headerLine(const RecordingHeader& header) {
   value["sheet_frame"] = poseJson(header.sheetFrame);
   value["surface"] = initialSurfaceJson(header.surface);
   if (header.studio) value["studio"] = {{"recent", header.studio->recent}};
+  if (!header.symmetry.empty()) value["symmetry"] = header.symmetry;
   std::string line = value.dump();
   // Refuse what could not be read back (nlohmann writes NaN as null) before anyone writes it.
   LineReader("cannot record header", 1).header(json::parse(line));

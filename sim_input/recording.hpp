@@ -12,6 +12,7 @@
 // casts at the headset's panel, from the tip along the orientation's -Z) and "scroll" (-1..1, the
 // thumbstick); each is written only when there is one. A header with "studio" is a headset session
 // with its panel ({"recent":[paths]}: the recent designs it listed), replayed with the panel.
+// "symmetry" ("rotational:6:y", "mirror:x"): every fold brings its images, in the replay too.
 // "source" says where the frames came from: "openxr" (controllers), "hands" (an OpenXR session
 // bare hands began), "desktop", "script" or "synthetic"; the frames are the same either way.
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
@@ -73,6 +74,9 @@ struct RecordingHeader {
     bool operator==(const Studio&) const = default;
   };
   std::optional<Studio> studio;
+  // The design's symmetry (engine/geometry/symmetry.hpp), so a replay folds the images too;
+  // empty: none.
+  std::string symmetry;
 };
 
 struct Recording {

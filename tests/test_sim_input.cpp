@@ -699,5 +699,47 @@ TEST(Player, FoldLogLineIsJson) {
             R"("max_edge_length_error":1e-17,"self_intersections":0})");
 }
 
+// Issue 17, 2: a recording keeps its design's symmetry, and its replay folds the images too (one
+// drag on a 6-fold cylinder gives six folds in one group); a symmetry the surface lacks is refused
+// by name.
+TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
+  Recording recording;
+  recording.header.source = "desktop";
+  recording.header.surface = GeneratedSurface{"cylinder", {}};
+  recording.header.sheetFrame = Pose{};  // world = sheet
+  recording.header.symmetry = "rotational:6:y";
+  const glm::dvec3 grab(0.045, 0.105, 0.0), to(0.036, 0.1, 0.0);
+  auto frame = [&](double t, const glm::dvec3& at, double select) {
+    InputFrame f;
+    f.time = t;
+    f.sheetHand.tracked = true;
+    f.pointHand = {at, true, select};
+    recording.frames.push_back(f);
+  };
+  frame(0.0, grab, 0.0);
+  frame(0.1, grab, 1.0);
+  for (int i = 1; i <= 5; ++i) frame(0.1 + 0.1 * i, grab + (to - grab) * (i / 5.0), 1.0);
+  frame(0.7, to, 0.0);
+  std::stringstream text;
+  text << headerLine(recording.header) << "\n";
+  std::istringstream in(text.str());
+  EXPECT_EQ(parseRecording(in, "s.jsonl").header.symmetry, "rotational:6:y");
+
+  Player player(recording);
+  while (!player.done()) player.step();
+  const Design design = player.design();
+  ASSERT_EQ(design.folds.size(), 6u);
+  for (const FoldRecord& fold : design.folds) EXPECT_EQ(fold.group, 1u);
+
+  RecordingHeader wrong = recording.header;
+  wrong.symmetry = "rotational:5";
+  try {
+    headerLine(wrong);
+    ADD_FAILURE() << "a symmetry the cylinder lacks was written";
+  } catch (const RecordingError& e) {
+    EXPECT_NE(std::string(e.what()).find("rotational:5"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace curvefold

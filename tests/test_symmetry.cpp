@@ -103,5 +103,41 @@ TEST(Symmetry, AFoldsImagesKeepTheDesignSymmetric) {
   }
 }
 
+// A session with a symmetry (the desktop's, the headset's, a replay's): each commit brings the
+// images, undo and redo take a group at once (across a keyframe), and a design opened again keeps
+// its groups.
+TEST(Symmetry, ASessionCommitsUndoesAndRedoesWholeGroups) {
+  const Sheet initial = makeSurface("cylinder");
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:6", initial));
+  const std::pair<glm::dvec3, glm::dvec3> drags[] = {{{0.045, 0.105, 0.0}, {0.036, 0.1, 0.0}},
+                                                     {{0.045, -0.105, 0.0}, {0.036, -0.1, 0.0}}};
+  for (const auto& [grab, to] : drags) {
+    session.beginDragNear(grab);
+    session.updateDrag(to);
+    ASSERT_TRUE(session.commit());
+  }
+  ASSERT_EQ(session.foldCount(), 12u);  // past the keyframe at 8
+  EXPECT_EQ(session.folds()[5].group, 1u);
+  EXPECT_EQ(session.folds()[6].group, 2u);
+  const Sheet both = session.fixed();
+  EXPECT_TRUE(identical(replayFolds(initial, session.folds()), both));
+  ASSERT_TRUE(session.undo());
+  EXPECT_EQ(session.foldCount(), 6u);
+  ASSERT_TRUE(session.undo());
+  EXPECT_EQ(session.foldCount(), 0u);
+  EXPECT_TRUE(identical(session.fixed(), initial));
+  ASSERT_TRUE(session.redo());
+  EXPECT_EQ(session.foldCount(), 6u);
+  ASSERT_TRUE(session.redo());
+  EXPECT_TRUE(identical(session.fixed(), both));
+  // Opened again from its records: the same sheet, and undo still takes the group.
+  FoldSession reopened(initial);
+  reopened.applyRecords(session.folds());
+  EXPECT_TRUE(identical(reopened.fixed(), both));
+  ASSERT_TRUE(reopened.undo());
+  EXPECT_EQ(reopened.foldCount(), 6u);
+}
+
 }  // namespace
 }  // namespace curvefold

@@ -271,6 +271,7 @@ void runDesigner(const DesignerOptions& options) {
     RecordingHeader header;
     header.source = "desktop";
     header.surface = doc.recordingSurface();
+    header.symmetry = doc.recordingSymmetry();
     // The display's refresh rate paces the frames (informative; each frame carries its time).
     const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
     header.rate = mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;

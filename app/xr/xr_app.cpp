@@ -83,6 +83,7 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     recordingHeader_.handedness = handedness;
     recordingHeader_.sheetFrame = sheetFrame;
     recordingHeader_.surface = doc_.recordingSurface();
+    recordingHeader_.symmetry = doc_.recordingSymmetry();
   }
 
   if (!options.headless)

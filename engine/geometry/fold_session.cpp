@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 
 #include <glm/geometric.hpp>
@@ -142,12 +143,65 @@ bool FoldSession::commit() {
   history_.push_back({grabSeed_, plane_, grabbed_, target_});
   ++applied_;
   ++designRevision_;
-  std::swap(fixed_, temporal_);
+  lastSkipped_ = 0;
+  if (symmetric_) {
+    // The images follow, through the sheet as it was before the fold.
+    const Sheet before = fixed_;
+    std::swap(fixed_, temporal_);
+    const SymmetricFolder::Result images = symmetric_->applyImages(before, fixed_, history_.back());
+    std::uint32_t group = 0;
+    for (std::size_t i = 0; i + 1 < history_.size(); ++i)
+      group = std::max(group, history_[i].group);
+    history_.back().group = group + 1;
+    for (FoldRecord image : images.applied) {
+      image.group = group + 1;
+      history_.push_back(image);
+      ++applied_;
+    }
+    lastSkipped_ = images.skipped;
+  } else {
+    std::swap(fixed_, temporal_);
+  }
   temporal_ = fixed_;  // reuses the old storage; a commit pays for the sheet anyway (adjacency)
   fixedChanged();
-  if (applied_ % kKeyframeInterval == 0)
-    keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
+  addKeyframes();
   return true;
+}
+
+void FoldSession::addKeyframes() {
+  // Keyframe k is the sheet after k * interval folds; a group of images may step past one.
+  while (keyframes_.size() * kKeyframeInterval <= applied_)
+    keyframes_.push_back(
+        std::make_shared<const Sheet>(keyframes_.size() * kKeyframeInterval == applied_
+                                          ? fixed_
+                                          : sheetAfter(keyframes_.size() * kKeyframeInterval)));
+}
+
+void FoldSession::applyRecords(const std::vector<FoldRecord>& folds) {
+  cancel();
+  if (folds.empty()) return;
+  history_.resize(applied_);
+  if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
+    keyframes_.resize(applied_ / kKeyframeInterval + 1);
+  Sheet sheet = fixed_;
+  for (const FoldRecord& fold : folds) {
+    sheet = applyFold(sheet, fold);
+    history_.push_back(fold);
+  }
+  applied_ = history_.size();
+  ++designRevision_;
+  setFixed(std::move(sheet));
+  addKeyframes();
+}
+
+void FoldSession::setSymmetry(const Symmetry& symmetry) {
+  symmetric_ = symmetry.kind == Symmetry::Kind::None
+                   ? nullptr
+                   : std::make_shared<const SymmetricFolder>(*initial_, symmetry);
+}
+
+const Symmetry* FoldSession::symmetry() const {
+  return symmetric_ ? &symmetric_->symmetry() : nullptr;
 }
 
 void FoldSession::cancel() {
@@ -184,7 +238,9 @@ Sheet FoldSession::sheetAfter(std::size_t foldCount) const {
 bool FoldSession::undo() {
   cancel();
   if (!canUndo()) return false;
+  const std::uint32_t group = history_[applied_ - 1].group;
   --applied_;
+  while (group != 0 && applied_ > 0 && history_[applied_ - 1].group == group) --applied_;
   ++designRevision_;
   setFixed(sheetAfter(applied_));
   return true;
@@ -193,11 +249,13 @@ bool FoldSession::undo() {
 bool FoldSession::redo() {
   cancel();
   if (!canRedo()) return false;
-  setFixed(applyFold(fixed_, history_[applied_]));
-  ++applied_;
+  const std::uint32_t group = history_[applied_].group;
+  Sheet sheet = applyFold(fixed_, history_[applied_++]);
+  while (group != 0 && applied_ < history_.size() && history_[applied_].group == group)
+    sheet = applyFold(sheet, history_[applied_++]);
+  setFixed(std::move(sheet));
   ++designRevision_;
-  if (applied_ % kKeyframeInterval == 0 && keyframes_.size() == applied_ / kKeyframeInterval)
-    keyframes_.push_back(std::make_shared<const Sheet>(fixed_));
+  addKeyframes();
   return true;
 }
 

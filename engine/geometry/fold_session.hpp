@@ -18,6 +18,9 @@
 
 namespace curvefold {
 
+class SymmetricFolder;
+struct Symmetry;
+
 // One committed fold: the grabbed point as a development point, and the plane it was reflected
 // through. grabbed/target are the 3D drag (informative; the plane is what replays).
 // The shortest drag that folds, relative to the sheet's size (20 nm on a 20 cm sheet). Its bisector
@@ -110,12 +113,24 @@ class FoldSession {
   std::size_t foldCount() const { return applied_; }  // folds in the fixed sheet
   bool canUndo() const { return applied_ > 0; }
   bool canRedo() const { return applied_ < history_.size(); }
+  // Applies recorded folds as committed (a design opened), groups as recorded; drops any redo.
+  void applyRecords(const std::vector<FoldRecord>& folds);
+  // Undo and redo take a symmetric fold's group (the fold and its images) at once.
   bool undo();
   bool redo();
+
+  // --- Symmetry -----------------------------------------------------------------------------
+  // From now on every commit is followed by the fold's images under `symmetry` (which the initial
+  // sheet must have: throws InvalidSymmetry), as one group (engine/geometry/symmetry.hpp).
+  void setSymmetry(const Symmetry& symmetry);
+  const Symmetry* symmetry() const;
+  // Images the last commit left out (their seed lay in a part the fold moved).
+  std::size_t lastSkippedImages() const { return lastSkipped_; }
 
  private:
   void setFixed(Sheet sheet);
   void fixedChanged();  // after fixed_ changed: its adjacency and revision
+  void addKeyframes();  // up to the folds applied
   Sheet sheetAfter(std::size_t foldCount) const;
 
   std::shared_ptr<const Sheet> initial_;
@@ -147,6 +162,9 @@ class FoldSession {
   std::vector<FoldRecord> history_;
   std::size_t applied_ = 0;
   std::vector<std::shared_ptr<const Sheet>> keyframes_;  // keyframes_[k]: after k*interval folds
+
+  std::shared_ptr<const SymmetricFolder> symmetric_;  // none: folds have no images
+  std::size_t lastSkipped_ = 0;
 };
 
 }  // namespace curvefold
