@@ -13,13 +13,6 @@ namespace curvefold {
 
 namespace {
 
-template <typename Function>
-Function xrFunction(XrInstance instance, const char* name) {
-  PFN_xrVoidFunction function = nullptr;
-  xrCheck(xrGetInstanceProcAddr(instance, name, &function), name, __FILE__, __LINE__);
-  return reinterpret_cast<Function>(function);
-}
-
 bool isDepthFormat(VkFormat format) {
   return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
          format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D32_SFLOAT_S8_UINT;

@@ -26,6 +26,15 @@ std::string xrResultName(XrResult result);
 // Throws XrError for a failed result; returns success codes (XR_SESSION_LOSS_PENDING, ...).
 XrResult xrCheck(XrResult result, const char* call, const char* file, int line);
 
+// An instance's function (an extension's), through xrGetInstanceProcAddr; throws XrError when
+// the runtime has none.
+template <typename Function>
+Function xrFunction(XrInstance instance, const char* name) {
+  PFN_xrVoidFunction function = nullptr;
+  xrCheck(xrGetInstanceProcAddr(instance, name, &function), name, __FILE__, __LINE__);
+  return reinterpret_cast<Function>(function);
+}
+
 }  // namespace curvefold
 
 #define CHECK_XR(call) ::curvefold::xrCheck((call), #call, __FILE__, __LINE__)

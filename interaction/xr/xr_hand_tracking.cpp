@@ -6,21 +6,10 @@
 
 namespace curvefold {
 
-namespace {
-
-template <typename Function>
-Function load(XrInstance instance, const char* name) {
-  PFN_xrVoidFunction function = nullptr;
-  xrCheck(xrGetInstanceProcAddr(instance, name, &function), name, __FILE__, __LINE__);
-  return reinterpret_cast<Function>(function);
-}
-
-}  // namespace
-
 XrHandTracking::XrHandTracking(XrInstance instance)
-    : createTracker_(load<PFN_xrCreateHandTrackerEXT>(instance, "xrCreateHandTrackerEXT")),
-      destroyTracker_(load<PFN_xrDestroyHandTrackerEXT>(instance, "xrDestroyHandTrackerEXT")),
-      locateJoints_(load<PFN_xrLocateHandJointsEXT>(instance, "xrLocateHandJointsEXT")) {}
+    : createTracker_(xrFunction<PFN_xrCreateHandTrackerEXT>(instance, "xrCreateHandTrackerEXT")),
+      destroyTracker_(xrFunction<PFN_xrDestroyHandTrackerEXT>(instance, "xrDestroyHandTrackerEXT")),
+      locateJoints_(xrFunction<PFN_xrLocateHandJointsEXT>(instance, "xrLocateHandJointsEXT")) {}
 
 XrHandTracking::~XrHandTracking() {
   detach();
