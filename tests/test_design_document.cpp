@@ -268,6 +268,22 @@ TEST(DesignErrors, EmbeddedMesh) {
   EXPECT_EQ(invalid.rfind(std::string(kName) + ": surface.mesh: ", 0), 0u) << invalid;
 }
 
+// Issue 17: a fold's symmetric group is a whole number from 1, and the symmetry a string (whether
+// the surface has it is for the fold command to say).
+TEST(DesignErrors, GroupsAndSymmetry) {
+  const std::string group0 =
+      errorAfter(validDocument(), [](json& d) { d["folds"][0]["group"] = 0; });
+  EXPECT_NE(group0.find("fold 1"), std::string::npos) << group0;
+  EXPECT_NE(group0.find("group"), std::string::npos) << group0;
+  const std::string half =
+      errorAfter(validDocument(), [](json& d) { d["folds"][0]["group"] = 1.5; });
+  EXPECT_NE(half.find("group"), std::string::npos) << half;
+  const std::string symmetry = errorAfter(validDocument(), [](json& d) { d["symmetry"] = 6; });
+  EXPECT_NE(symmetry.find("symmetry"), std::string::npos) << symmetry;
+  for (const std::string* e : {&group0, &half, &symmetry})
+    EXPECT_EQ(e->find('\n'), std::string::npos) << *e;
+}
+
 TEST(DesignErrors, Folds) {
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d.erase("folds"); }),
             std::string(kName) + ": missing \"folds\"");

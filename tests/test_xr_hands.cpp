@@ -177,6 +177,18 @@ TEST_F(XrHands, HandsFlagUsesHandsOnlyAndNeedsHandTracking) {
   EXPECT_NE(none.err.find("XR_EXT_hand_tracking"), std::string::npos) << none.err;
   EXPECT_FALSE(fs::exists(path("r.jsonl")));
   EXPECT_FALSE(fs::exists(path("n.json")));
+  // A jitter or seed the runtime cannot read: one line from the runtime's refusal, nothing made.
+  for (const char* bad :
+       {"CURVEFOLD_SIM_JITTER=2mm", "CURVEFOLD_SIM_JITTER=-1", "CURVEFOLD_SIM_SEED=seven"}) {
+    const CommandResult refused =
+        run("xr " + input + " --headless --record b.jsonl --autosave b.json",
+            simulated(input, std::string("CURVEFOLD_SIM_HANDS=1 ") + bad));
+    EXPECT_EQ(refused.exitCode, 1) << bad;
+    EXPECT_FALSE(fs::exists(path("b.jsonl"))) << bad;
+    EXPECT_FALSE(fs::exists(path("b.json"))) << bad;
+    const std::string last = refused.err.substr(refused.err.rfind("curvefold:"));
+    EXPECT_EQ(std::count(last.begin(), last.end(), '\n'), 1) << refused.err;
+  }
   // Without --hands, the same runtime folds with its controllers.
   const CommandResult plain = run("xr " + input + " --headless --autosave p.json",
                                   simulated(input, "CURVEFOLD_SIM_NO_HAND_TRACKING=1"));
