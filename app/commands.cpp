@@ -191,9 +191,7 @@ void addFoldCommand(CLI::App& app) {
           design.folds.push_back(image);
         }
         images = " and " + std::to_string(result.applied.size()) + " images" +
-                 (result.skipped > 0 ? " (" + std::to_string(result.skipped) +
-                                           " skipped: their seeds lie in a part this fold moved)"
-                                     : "");
+                 imageNotes(result.skipped, result.overlapping);
       } else {
         design.folds.push_back(fold);
       }

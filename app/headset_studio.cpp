@@ -204,7 +204,7 @@ namespace {
 class StudioGestureWorld : public GestureWorld {
  public:
   explicit StudioGestureWorld(const RecordingHeader& header)
-      : doc_(makeDocument(Design{header.surface, {}}, "script", header.sheetFrame,
+      : doc_(makeDocument(Design{header.surface, {}, header.symmetry}, "script", header.sheetFrame,
                           header.handedness)),
         studio_(doc_, optionsFor(header), hostWritingNothing()) {}
 

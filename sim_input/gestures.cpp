@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
@@ -36,7 +37,10 @@ class CoreWorld : public GestureWorld {
  public:
   explicit CoreWorld(const RecordingHeader& header)
       : session_(initialSheet(Design{header.surface, {}}, "gesture script")),
-        core_(session_, header.sheetFrame, header.handedness) {}
+        core_(session_, header.sheetFrame, header.handedness) {
+    if (!header.symmetry.empty())
+      session_.setSymmetry(parseSymmetry(header.symmetry, session_.initial()));
+  }
   void process(const InputFrame& frame) override { core_.process(frame); }
   const InteractionCore& core() const override { return core_; }
 
@@ -355,6 +359,14 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
     header.surface = parseInitialSurface(reader.member(document, "surface", ""), name);
   } catch (const DesignError& e) {
     throw GestureError(e.what());
+  }
+  if (reader.optionalMember(document, "symmetry", "")) {
+    header.symmetry = reader.text(document, "symmetry", "");
+    try {
+      parseSymmetry(header.symmetry, initialSheet(Design{header.surface, {}}, name));
+    } catch (const InvalidSymmetry& e) {
+      reader.fail("symmetry", e.what());
+    }
   }
   // By default the sheet is held at chest height half a metre in front of the user (OpenXR's
   // stage space: y up, -z forward), facing them.

@@ -9,6 +9,7 @@
 //    "rate":60,                         // frames per second (optional, default 90)
 //    "handedness":"right",              // optional
 //    "surface":{...as in a design document...},
+//    "symmetry":"rotational:6:y",       // optional: every fold brings its images (symmetry.hpp)
 //    "sheet_frame":{"position":[x,y,z],"orientation":[w,x,y,z]},  // optional
 //    "gestures":[
 //      {"wait":0.3},                                           // seconds, hands still

@@ -56,6 +56,12 @@ std::string foldLogLine(const FoldLogEntry& entry) {
   value["triangles_after"] = entry.trianglesAfter;
   value["max_edge_length_error"] = entry.maxEdgeLengthError;
   value["self_intersections"] = entry.selfIntersections;
+  // A symmetric design's group: the images that followed the fold, and what was left out.
+  if (entry.images > 0 || entry.skippedImages > 0) {
+    value["images"] = entry.images;
+    value["skipped_images"] = entry.skippedImages;
+  }
+  if (entry.overlappingImages > 0) value["overlapping_images"] = entry.overlappingImages;
   return value.dump();
 }
 
@@ -85,21 +91,45 @@ void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
     if (event.kind == InteractionEventKind::Undo) kinds.push_back(FoldLogKind::Undo);
     if (event.kind == InteractionEventKind::Redo) kinds.push_back(FoldLogKind::Redo);
   }
-  // The core emits these only when the fixed sheet changed, one fold each way. A frame with
-  // several (undo and redo pressed together) rebuilds the sheets in between from the history,
-  // whose prefix none of them rewrites.
+  // The core emits these only when the fixed sheet changed, one fold (or one symmetric fold's
+  // group) each way. A frame with several (undo and redo pressed together) rebuilds the sheets in
+  // between from the history, whose prefix none of them rewrites.
   const std::vector<FoldRecord>& history = session.folds();
+  // The end of the group starting at fold `from` (0-based), and the start of the one ending at
+  // `to`: a fold without a group is a group of its own.
+  auto groupEnd = [&](std::size_t from) {
+    std::size_t end = from + 1;
+    while (history[from].group != 0 && end < history.size() &&
+           history[end].group == history[from].group)
+      ++end;
+    return end;
+  };
+  auto groupStart = [&](std::size_t to) {
+    std::size_t start = to - 1;
+    while (history[to - 1].group != 0 && start > 0 &&
+           history[start - 1].group == history[to - 1].group)
+      --start;
+    return start;
+  };
   std::size_t count = foldsBefore;
   std::size_t triangles = trianglesBefore;
   for (std::size_t i = 0; i < kinds.size(); ++i) {
     FoldLogEntry entry;
     entry.kind = kinds[i];
     entry.time = time;
-    entry.fold = kinds[i] == FoldLogKind::Undo ? count : count + 1;
-    count = kinds[i] == FoldLogKind::Undo ? count - 1 : count + 1;
+    const bool forward = kinds[i] != FoldLogKind::Undo;
+    if (forward ? count >= history.size() : count == 0) continue;  // nothing the history shows
+    const std::size_t first = forward ? count : groupStart(count);
+    const std::size_t end = forward ? groupEnd(count) : count;
+    entry.fold = first + 1;
+    entry.images = end - first - 1;
+    count = forward ? end : first;
     entry.foldCount = count;
-    if (entry.fold >= 1 && entry.fold <= history.size())
-      entry.plane = history[entry.fold - 1].plane;
+    entry.plane = history[first].plane;
+    if (kinds[i] == FoldLogKind::Commit && i + 1 == kinds.size()) {
+      entry.skippedImages = session.lastSkippedImages();
+      entry.overlappingImages = session.lastOverlappingImages();
+    }
     entry.trianglesBefore = triangles;
     if (i + 1 == kinds.size()) {
       entry.trianglesAfter = session.fixed().triangleCount();
@@ -124,7 +154,8 @@ Design Player::design() const {
   return Design{
       recording_.header.surface,
       std::vector<FoldRecord>(history.begin(),
-                              history.begin() + static_cast<std::ptrdiff_t>(session_.foldCount()))};
+                              history.begin() + static_cast<std::ptrdiff_t>(session_.foldCount())),
+      recording_.header.symmetry};
 }
 
 double replayFrames(const Recording& recording, const ReplayOptions& options,

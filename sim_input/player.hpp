@@ -28,11 +28,18 @@ struct FoldLogEntry {
   std::size_t trianglesAfter = 0;
   double maxEdgeLengthError = 0.0;    // of the fixed sheet afterwards: max |3D - 2D edge length|, m
   std::size_t selfIntersections = 0;  // triangle pairs of the fixed sheet afterwards that cross
+  // In a symmetric design (engine/geometry/symmetry.hpp): the fold's images made with it (fold is
+  // then the group's first), and for a commit those left out (their seed lay in a part this fold
+  // moved) and those whose part overlapped an earlier fold's of the group.
+  std::size_t images = 0;
+  std::size_t skippedImages = 0;
+  std::size_t overlappingImages = 0;
 };
 
 // The log entry as one JSON line (no newline): {"event":"commit","t":..,"fold":..,"folds":..,
 // "plane":{"point":[..],"normal":[..]},"triangles_before":..,"triangles_after":..,
-// "max_edge_length_error":..,"self_intersections":..}.
+// "max_edge_length_error":..,"self_intersections":..}, and in a symmetric design
+// "images":..,"skipped_images":.. (and "overlapping_images":.. when any).
 std::string foldLogLine(const FoldLogEntry& entry);
 
 // Largest |3D length - development length| over the sheet's edges: one pass over the triangles,

@@ -17,6 +17,7 @@
 #include "engine/io/json_reader.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
+#include "symmetry_test_support.hpp"
 
 namespace curvefold {
 namespace {
@@ -26,9 +27,12 @@ using testing::ScratchDirectory;
 
 bool sameBits(const FoldRecord& a, const FoldRecord& b) {
   auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  bool seeds = a.moreSeeds.size() == b.moreSeeds.size();
+  for (std::size_t i = 0; seeds && i < a.moreSeeds.size(); ++i)
+    seeds = same(a.moreSeeds[i], b.moreSeeds[i]);
   return same(a.seed, b.seed) && same(a.plane.point, b.plane.point) &&
          same(a.plane.normal, b.plane.normal) && same(a.grabbed, b.grabbed) &&
-         same(a.target, b.target);
+         same(a.target, b.target) && a.group == b.group && seeds;
 }
 
 const SurfaceParameters kSquare = {{"size", 0.2}, {"resolution", 6}};
@@ -69,6 +73,26 @@ TEST_F(DesignDocument, GeneratedSurfaceRoundTripRebuildsBitForBit) {
   EXPECT_TRUE(identical(rebuilt, session.fixed()));
   EXPECT_TRUE(identical(rebuilt, replayFolds(makeSurface("square", kSquare), session.folds())));
   EXPECT_FALSE(identical(rebuilt, initialSheet(loaded)));
+}
+
+// Issue 17: a symmetric design keeps its symmetry, its groups and an image's more seeds (the
+// image of a cap across the cylinder's slit), and rebuilds bit for bit without the symmetry.
+TEST_F(DesignDocument, SymmetricGroupsAndMoreSeedsRoundTrip) {
+  FoldSession session(makeSurface("cylinder"));
+  ASSERT_NO_FATAL_FAILURE(testing::foldCapWhoseImageCrossesTheSlit(session));
+  const Design design{GeneratedSurface{"cylinder", {}}, session.folds(), "rotational:6:y"};
+  const auto path = dir() / "cylinder.curvefold.json";
+  saveDesign(design, path);
+  const Design loaded = loadDesign(path);
+  EXPECT_EQ(loaded.symmetry, "rotational:6:y");
+  ASSERT_EQ(loaded.folds.size(), 6u);
+  std::size_t moreSeeds = 0;
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_TRUE(sameBits(loaded.folds[i], session.folds()[i])) << i;
+    moreSeeds += loaded.folds[i].moreSeeds.size();
+  }
+  EXPECT_EQ(moreSeeds, 1u);
+  EXPECT_TRUE(identical(buildSheet(loaded, path.string()), session.fixed()));
 }
 
 TEST_F(DesignDocument, EmbeddedMeshRoundTripKeepsEveryBitAndTag) {
@@ -280,7 +304,21 @@ TEST(DesignErrors, GroupsAndSymmetry) {
   EXPECT_NE(half.find("group"), std::string::npos) << half;
   const std::string symmetry = errorAfter(validDocument(), [](json& d) { d["symmetry"] = 6; });
   EXPECT_NE(symmetry.find("symmetry"), std::string::npos) << symmetry;
-  for (const std::string* e : {&group0, &half, &symmetry})
+  // more_seeds: development points, a handful.
+  const std::string seedsNotArray =
+      errorAfter(validDocument(), [](json& d) { d["folds"][0]["more_seeds"] = 1; });
+  EXPECT_NE(seedsNotArray.find("more_seeds"), std::string::npos) << seedsNotArray;
+  const std::string seedNotPoint = errorAfter(validDocument(), [](json& d) {
+    d["folds"][0]["more_seeds"] = json::array({json::array({1})});
+  });
+  EXPECT_NE(seedNotPoint.find("more_seeds"), std::string::npos) << seedNotPoint;
+  const std::string tooMany = errorAfter(validDocument(), [](json& d) {
+    d["folds"][0]["more_seeds"] = json::array();
+    for (std::size_t i = 0; i <= kMaxMoreSeeds; ++i)
+      d["folds"][0]["more_seeds"].push_back(json::array({0.0, 0.0}));
+  });
+  EXPECT_NE(tooMany.find("more than 64"), std::string::npos) << tooMany;
+  for (const std::string* e : {&group0, &half, &symmetry, &seedsNotArray, &seedNotPoint, &tooMany})
     EXPECT_EQ(e->find('\n'), std::string::npos) << *e;
 }
 

@@ -8,10 +8,13 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
+#include "symmetry_test_support.hpp"
 
 namespace curvefold {
 namespace {
@@ -31,6 +34,9 @@ Replayed replay(const Recording& recording) {
   Replayed result;
   result.session =
       std::make_unique<FoldSession>(initialSheet(Design{recording.header.surface, {}}));
+  if (!recording.header.symmetry.empty())
+    result.session->setSymmetry(
+        parseSymmetry(recording.header.symmetry, result.session->initial()));
   InteractionCore core(*result.session, recording.header.sheetFrame, recording.header.handedness);
   bool turnedDuringDrag = false;
   for (const InputFrame& frame : recording.frames) {
@@ -114,9 +120,11 @@ TEST(Gestures, AFarGrabPointGrabsTheNearestEdge) {
 }
 
 // Every example script records to exactly the checked-in recording, which replays with every
-// invariant after every fold, at least four folds, and the sheet turned during a drag.
+// invariant after every fold, at least four folds, and the sheet turned during a drag. The
+// symmetric examples (issue 17, 3) have 8 folds or more, do not pass through themselves, and map
+// onto themselves under their symmetry.
 TEST(Gestures, ExampleRecordingsAreCurrentAndValid) {
-  std::size_t examples = 0;
+  std::size_t examples = 0, symmetric = 0;
   for (const auto& entry : fs::directory_iterator(kExamples / "scripts")) {
     const std::string name = entry.path().stem().stem().string();  // x.gesture.json -> x
     SCOPED_TRACE(name);
@@ -133,8 +141,17 @@ TEST(Gestures, ExampleRecordingsAreCurrentAndValid) {
     if (stored.header.source != "desktop") {
       EXPECT_GE(result.commitsWhileTurning, 1u);
     }
+    if (stored.header.symmetry.empty()) continue;
+    ++symmetric;
+    const Sheet& folded = result.session->fixed();
+    EXPECT_GE(result.session->foldCount(), 8u);
+    EXPECT_EQ(findSelfIntersections(folded).intersections.size(), 0u);
+    const Symmetry symmetry = parseSymmetry(stored.header.symmetry, result.session->initial());
+    for (const Isometry& g : symmetry.images())
+      testing::expectMapsOntoItself(folded, g, 1e-9 * sheetSize(result.session->initial()));
   }
-  EXPECT_EQ(examples, 6u);
+  EXPECT_EQ(examples, 8u);
+  EXPECT_EQ(symmetric, 2u);
 }
 
 // The address sanitizer keeps freed memory in quarantine: the process grows with every frame

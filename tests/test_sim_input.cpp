@@ -700,8 +700,8 @@ TEST(Player, FoldLogLineIsJson) {
 }
 
 // Issue 17, 2: a recording keeps its design's symmetry, and its replay folds the images too (one
-// drag on a 6-fold cylinder gives six folds in one group); a symmetry the surface lacks is refused
-// by name.
+// drag on a 6-fold cylinder gives six folds in one group, which undo and redo take whole, and the
+// fold log counts); a symmetry the surface lacks is refused by name.
 TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
   Recording recording;
   recording.header.source = "desktop";
@@ -720,6 +720,16 @@ TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
   frame(0.1, grab, 1.0);
   for (int i = 1; i <= 5; ++i) frame(0.1 + 0.1 * i, grab + (to - grab) * (i / 5.0), 1.0);
   frame(0.7, to, 0.0);
+  // Undo and redo take the group whole, and the log says so.
+  for (Button button : {Button::Undo, Button::Redo}) {
+    InputFrame f = recording.frames.back();
+    f.time += 0.1;
+    f.buttons = static_cast<std::uint32_t>(button);
+    recording.frames.push_back(f);
+    f.time += 0.1;
+    f.buttons = 0;
+    recording.frames.push_back(f);
+  }
   std::stringstream text;
   text << headerLine(recording.header) << "\n";
   std::istringstream in(text.str());
@@ -730,6 +740,18 @@ TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
   const Design design = player.design();
   ASSERT_EQ(design.folds.size(), 6u);
   for (const FoldRecord& fold : design.folds) EXPECT_EQ(fold.group, 1u);
+  EXPECT_EQ(design.symmetry, "rotational:6:y");  // the replay's design keeps it
+  const std::vector<FoldLogEntry>& log = player.log();
+  ASSERT_EQ(log.size(), 3u);
+  const std::size_t counts[] = {6, 0, 6};
+  for (std::size_t i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(log[i].fold, 1u);
+    EXPECT_EQ(log[i].foldCount, counts[i]);
+    EXPECT_EQ(log[i].images, 5u);
+    EXPECT_EQ(log[i].skippedImages, 0u);
+  }
+  EXPECT_NE(foldLogLine(log[0]).find(R"("images":5,"skipped_images":0)"), std::string::npos);
 
   RecordingHeader wrong = recording.header;
   wrong.symmetry = "rotational:5";

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "engine/geometry/creases.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "symmetry_test_support.hpp"
 
 namespace curvefold {
 namespace {
@@ -45,28 +45,7 @@ TEST(Symmetry, WhatASurfaceLacksIsRefusedInOneLine) {
   }
 }
 
-// Every vertex of `sheet` maps onto a vertex under g, and every crease edge onto a crease edge,
-// within the tolerance.
-void expectMapsOntoItself(const Sheet& sheet, const Isometry& g, double tolerance) {
-  auto near = [&](const glm::dvec3& p) {
-    for (const glm::dvec3& q : sheet.positions)
-      if (glm::distance(p, q) <= tolerance) return true;
-    return false;
-  };
-  for (const glm::dvec3& p : sheet.positions) ASSERT_TRUE(near(g.apply(p)));
-  const std::vector<CreaseEdge> creases = creaseEdges(sheet, buildEdgeTopology(sheet));
-  ASSERT_FALSE(creases.empty());
-  for (const CreaseEdge& c : creases) {
-    const glm::dvec3 a = g.apply(sheet.positions[c.edge.a]), b = g.apply(sheet.positions[c.edge.b]);
-    bool found = false;
-    for (const CreaseEdge& d : creases) {
-      const glm::dvec3 p = sheet.positions[d.edge.a], q = sheet.positions[d.edge.b];
-      found = found || (glm::distance(a, p) <= tolerance && glm::distance(b, q) <= tolerance) ||
-              (glm::distance(a, q) <= tolerance && glm::distance(b, p) <= tolerance);
-    }
-    ASSERT_TRUE(found);
-  }
-}
+using testing::expectMapsOntoItself;
 
 // A fold on a 6-fold cylinder and a mirrored cone: the images follow, each an exact reflection
 // fold, and the folded mesh and its creases map onto themselves under every element.
@@ -92,6 +71,7 @@ TEST(Symmetry, AFoldsImagesKeepTheDesignSymmetric) {
         folder.applyImages(initial, sheet, session.folds().back());
     EXPECT_EQ(result.applied.size(), c.images);
     EXPECT_EQ(result.skipped, 0u);
+    EXPECT_EQ(result.overlapping, 0u);
     ValidationOptions options;
     validate(sheet, options);
     const double tolerance = 1e-9 * sheetSize(initial);
@@ -137,6 +117,48 @@ TEST(Symmetry, ASessionCommitsUndoesAndRedoesWholeGroups) {
   EXPECT_TRUE(identical(reopened.fixed(), both));
   ASSERT_TRUE(reopened.undo());
   EXPECT_EQ(reopened.foldCount(), 6u);
+}
+
+// The cylinder's slit (at -z) is not where a rotation puts it: the image of a whole part can lie
+// across it, in two pieces. The image grows over both (one more seed, recorded), so the design
+// stays symmetric, and its records replay to the same sheet without the symmetry.
+TEST(Symmetry, AnImageAcrossTheSlitFoldsBothPieces) {
+  const Sheet initial = makeSurface("cylinder");
+  const Symmetry symmetry = parseSymmetry("rotational:6", initial);
+  FoldSession session(initial);
+  ASSERT_NO_FATAL_FAILURE(testing::foldCapWhoseImageCrossesTheSlit(session));
+  EXPECT_EQ(session.lastSkippedImages(), 0u);
+  EXPECT_EQ(session.lastOverlappingImages(), 0u);
+  std::size_t across = 0;
+  for (const FoldRecord& fold : session.folds()) across += fold.moreSeeds.size();
+  EXPECT_EQ(across, 1u);
+  const Sheet& sheet = session.fixed();
+  ValidationOptions options;
+  validate(sheet, options);
+  for (const Isometry& g : symmetry.images())
+    expectMapsOntoItself(sheet, g, 1e-9 * sheetSize(initial));
+  EXPECT_TRUE(identical(replayFolds(initial, session.folds()), sheet));
+  // Without its second seed the image folds one piece only: the sheet is another one.
+  std::vector<FoldRecord> onePiece = session.folds();
+  for (FoldRecord& fold : onePiece) fold.moreSeeds.clear();
+  EXPECT_FALSE(identical(replayFolds(initial, onePiece), sheet));
+}
+
+// Images whose parts overlap (a wide cap at the rim reaches past the next cap's edge) are made,
+// in order, and counted: the later one moves what the earlier moved, so the design is not exactly
+// symmetric there, and the fold says so.
+TEST(Symmetry, ImagesWhosePartsOverlapAreCounted) {
+  const Sheet initial = makeSurface("cylinder");
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:6", initial));
+  session.beginDragNear({0.045, 0.105, 0.0});
+  session.updateDrag({0.03, 0.085, 0.0});
+  ASSERT_TRUE(session.commit());
+  EXPECT_GT(session.lastOverlappingImages(), 0u);
+  EXPECT_EQ(session.foldCount(), 1u + 5u - session.lastSkippedImages());
+  EXPECT_NE(imageNotes(0, session.lastOverlappingImages()).find("not exactly symmetric"),
+            std::string::npos);
+  EXPECT_EQ(imageNotes(0, 0), "");
 }
 
 }  // namespace

@@ -98,7 +98,7 @@ TEST_F(XrHands, EveryExampleRecordingServedAsHandsFoldsLikeItsReplay) {
     worst.offset = std::max(worst.offset, d.offset);
     worst.degrees = std::max(worst.degrees, d.degrees);
   }
-  EXPECT_EQ(recordings, 7);
+  EXPECT_EQ(recordings, 9);
   RecordProperty("worst_plane_offset_mm", std::to_string(1000.0 * worst.offset));
   RecordProperty("worst_plane_degrees", std::to_string(worst.degrees));
 }

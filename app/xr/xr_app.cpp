@@ -64,7 +64,7 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   if (options.input.ends_with(".jsonl")) {
     // A recording: its surface, sheet frame and hands, to watch it through the XR path.
     const Recording recording = readRecording(options.input, {.allowTruncated = true});
-    design = {recording.header.surface, {}};
+    design = {recording.header.surface, {}, recording.header.symmetry};
     sheetFrame = recording.header.sheetFrame;
     if (!options.leftHanded) handedness = recording.header.handedness;
   } else {

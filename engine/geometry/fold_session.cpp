@@ -11,7 +11,11 @@ namespace curvefold {
 
 Sheet applyFold(const Sheet& sheet, const FoldRecord& fold) {
   VertexInsertion grab = insertVertexAt(sheet, fold.seed);
-  return reflect(grab.sheet, grab.vertex, fold.plane).sheet;
+  if (fold.moreSeeds.empty()) return reflect(grab.sheet, grab.vertex, fold.plane).sheet;
+  const std::vector<VertexIndex> more = verticesAtDevelopment(grab.sheet, fold.moreSeeds);
+  return reflect(grab.sheet, buildAdjacency(grab.sheet), grab.vertex, fold.plane,
+                 sheetEpsilon(grab.sheet), more)
+      .sheet;
 }
 
 Sheet replayFolds(Sheet initial, const std::vector<FoldRecord>& folds) {
@@ -143,7 +147,7 @@ bool FoldSession::commit() {
   history_.push_back({grabSeed_, plane_, grabbed_, target_});
   ++applied_;
   ++designRevision_;
-  lastSkipped_ = 0;
+  lastSkipped_ = lastOverlapping_ = 0;
   if (symmetric_) {
     // The images follow, through the sheet as it was before the fold.
     const Sheet before = fixed_;
@@ -159,6 +163,7 @@ bool FoldSession::commit() {
       ++applied_;
     }
     lastSkipped_ = images.skipped;
+    lastOverlapping_ = images.overlapping;
   } else {
     std::swap(fixed_, temporal_);
   }
@@ -197,7 +202,7 @@ void FoldSession::applyRecords(const std::vector<FoldRecord>& folds) {
 void FoldSession::setSymmetry(const Symmetry& symmetry) {
   symmetric_ = symmetry.kind == Symmetry::Kind::None
                    ? nullptr
-                   : std::make_shared<const SymmetricFolder>(*initial_, symmetry);
+                   : std::make_shared<const SymmetricFolder>(initial_, symmetry);
 }
 
 const Symmetry* FoldSession::symmetry() const {

@@ -36,11 +36,14 @@ struct FoldRecord {
   // In a symmetric design, the group of a fold and its images (from 1; 0: no group). Replay does
   // not need it; undo takes a group at once.
   std::uint32_t group = 0;
+  // Development points of vertices the reflected part also grows from (usually none): an image
+  // whose part a slit cuts in pieces, though the fold's own part was whole (symmetry.hpp).
+  std::vector<glm::dvec2> moreSeeds;
 };
 
 // Applies one recorded fold: the seed becomes a vertex (insertVertexAt), then the part containing
-// it is reflected. Throws InvalidSheet when the seed lies outside the sheet. Bit-identical to the
-// same fold made live through FoldSession.
+// it (and any of its moreSeeds) is reflected. Throws InvalidSheet when the seed lies outside the
+// sheet. Bit-identical to the same fold made live through FoldSession.
 Sheet applyFold(const Sheet& sheet, const FoldRecord& fold);
 
 // Applies folds in order to an initial sheet.
@@ -126,6 +129,8 @@ class FoldSession {
   const Symmetry* symmetry() const;
   // Images the last commit left out (their seed lay in a part the fold moved).
   std::size_t lastSkippedImages() const { return lastSkipped_; }
+  // Images the last commit made whose part overlapped an earlier fold's of its group.
+  std::size_t lastOverlappingImages() const { return lastOverlapping_; }
 
  private:
   void setFixed(Sheet sheet);
@@ -165,6 +170,7 @@ class FoldSession {
 
   std::shared_ptr<const SymmetricFolder> symmetric_;  // none: folds have no images
   std::size_t lastSkipped_ = 0;
+  std::size_t lastOverlapping_ = 0;
 };
 
 }  // namespace curvefold

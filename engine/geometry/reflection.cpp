@@ -77,12 +77,19 @@ void ReflectionWorkspace::resize(std::size_t vertexCount, std::size_t triangleCo
 // since every triangle to split or hinge touches one of them.
 void ReflectionWorkspace::fill(const Sheet& sheet, const SheetAdjacency& adjacency,
                                VertexIndex seed, const ReflectionPlane& plane, double epsilon,
-                               Sheet& out) {
+                               Sheet& out, std::span<const VertexIndex> moreSeeds) {
   std::vector<VertexIndex>& reached = changes_.movedVertices;
   reached.clear();
   boundaryVertices_.clear();
   reached.push_back(seed);
   out.positions[seed] = plane.reflect(sheet.positions[seed]);
+  for (VertexIndex s : moreSeeds) {
+    if (vertexMarks_[s] >= visitedMark() || !(plane.signedDistance(sheet.positions[s]) < -epsilon))
+      continue;
+    vertexMarks_[s] = reachedMark();
+    reached.push_back(s);
+    out.positions[s] = plane.reflect(sheet.positions[s]);
+  }
   // Raw pointers: the compiler cannot tell that the writes below leave the vectors alone.
   std::uint32_t* const marks = vertexMarks_.data();
   double* const distances = distances_.data();
@@ -205,11 +212,11 @@ void ReflectionWorkspace::clear() {
 
 void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjacency,
                                 VertexIndex seed, const ReflectionPlane& plane, double epsilon,
-                                Sheet& out) {
+                                Sheet& out, std::span<const VertexIndex> moreSeeds) {
   // Both tolerances follow the sheet's size, which epsilon carries.
   const double feature = epsilon * (kRelativeCutFeatureSize / kRelativeEpsilon);
   const double maxShift = epsilon * (kRelativeMaxPlaneShift / kRelativeEpsilon);
-  applyThrough(sheet, adjacency, seed, plane, epsilon, feature, out);
+  applyThrough(sheet, adjacency, seed, plane, epsilon, feature, out, moreSeeds);
   if (sliverSources_.empty()) return;
 
   // Planes through the vertices of the triangles cut too thin, nearest first; the seed must stay
@@ -239,7 +246,7 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
     candidates.erase(nearest);
     triedShifts_.push_back(shift);
     restore(sheet, out);
-    applyThrough(sheet, adjacency, seed, shifted(shift), epsilon, feature, out);
+    applyThrough(sheet, adjacency, seed, shifted(shift), epsilon, feature, out, moreSeeds);
     changes_.planeShift = shift;
     if (sliverSources_.empty()) return;
     if (changes_.thinnestCut > bestThinnest) {
@@ -249,14 +256,15 @@ void ReflectionWorkspace::apply(const Sheet& sheet, const SheetAdjacency& adjace
   }
   if (changes_.planeShift != bestShift) {
     restore(sheet, out);
-    applyThrough(sheet, adjacency, seed, shifted(bestShift), epsilon, feature, out);
+    applyThrough(sheet, adjacency, seed, shifted(bestShift), epsilon, feature, out, moreSeeds);
     changes_.planeShift = bestShift;
   }
 }
 
 void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency& adjacency,
                                        VertexIndex seed, const ReflectionPlane& plane,
-                                       double epsilon, double feature, Sheet& out) {
+                                       double epsilon, double feature, Sheet& out,
+                                       std::span<const VertexIndex> moreSeeds) {
   clear();
   changes_.firstNewVertex = sheet.vertexCount();
   changes_.firstNewTriangle = sheet.triangleCount();
@@ -268,7 +276,7 @@ void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency&
   }
   vertexMarks_[seed] = reachedMark();
 
-  fill(sheet, adjacency, seed, plane, epsilon, out);
+  fill(sheet, adjacency, seed, plane, epsilon, out, moreSeeds);
   classifyBoundary(sheet, adjacency, epsilon);
 
   cuts_.reset();
@@ -434,10 +442,11 @@ void ReflectionWorkspace::reapply(const Sheet& sheet, const SheetAdjacency& adja
 }
 
 ReflectionResult reflect(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-                         const ReflectionPlane& plane, double epsilon) {
+                         const ReflectionPlane& plane, double epsilon,
+                         std::span<const VertexIndex> moreSeeds) {
   ReflectionWorkspace workspace;
   ReflectionResult result{sheet, {}, {}};
-  workspace.apply(sheet, adjacency, seed, plane, epsilon, result.sheet);
+  workspace.apply(sheet, adjacency, seed, plane, epsilon, result.sheet, moreSeeds);
   result.changes = workspace.changes();
   result.reflectedTriangles = workspace.reflectedTriangles(adjacency);
   return result;

@@ -9,6 +9,7 @@
 
 #include <memory_resource>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -73,9 +74,12 @@ inline constexpr int kMaxPlaneShiftTries = 8;
 // request.
 class ReflectionWorkspace {
  public:
-  // Applies the fold to `out` (which equals `sheet`) and records the changes.
+  // Applies the fold to `out` (which equals `sheet`) and records the changes. The part also grows
+  // from each of `moreSeeds` strictly on the seed's side: a symmetric fold's image whose part the
+  // sheet's slit cuts in pieces (symmetry.hpp).
   void apply(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-             const ReflectionPlane& plane, double epsilon, Sheet& out);
+             const ReflectionPlane& plane, double epsilon, Sheet& out,
+             std::span<const VertexIndex> moreSeeds = {});
   // Puts `out` back to `sheet` by undoing the last apply() (cost proportional to what changed).
   void restore(const Sheet& sheet, Sheet& out) const;
   // restore() then apply(), except that positions the new fold moves again are not first written
@@ -94,10 +98,12 @@ class ReflectionWorkspace {
  private:
   // One reflection through `plane`, no snapping; records the pieces thinner than `feature`.
   void applyThrough(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-                    const ReflectionPlane& plane, double epsilon, double feature, Sheet& out);
+                    const ReflectionPlane& plane, double epsilon, double feature, Sheet& out,
+                    std::span<const VertexIndex> moreSeeds);
   void resize(std::size_t vertexCount, std::size_t triangleCount);
   void fill(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-            const ReflectionPlane& plane, double epsilon, Sheet& out);
+            const ReflectionPlane& plane, double epsilon, Sheet& out,
+            std::span<const VertexIndex> moreSeeds);
   void classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
   void restoreTopology(const Sheet& sheet, Sheet& out) const;
   // Marks of the current apply(): every visited vertex has at least visitedMark(); reached ones
@@ -150,7 +156,8 @@ struct ReflectionResult {
 // count as on the plane (sheetEpsilon(sheet) by default). If the seed itself is not strictly on the
 // negative side, nothing is reflected and the sheet is returned unchanged.
 ReflectionResult reflect(const Sheet& sheet, const SheetAdjacency& adjacency, VertexIndex seed,
-                         const ReflectionPlane& plane, double epsilon);
+                         const ReflectionPlane& plane, double epsilon,
+                         std::span<const VertexIndex> moreSeeds = {});
 ReflectionResult reflect(const Sheet& sheet, VertexIndex seed, const ReflectionPlane& plane);
 
 }  // namespace curvefold

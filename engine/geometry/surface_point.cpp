@@ -152,6 +152,29 @@ std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm
   return best;
 }
 
+std::vector<VertexIndex> verticesAtDevelopment(const Sheet& sheet,
+                                               const std::vector<glm::dvec2>& points) {
+  const double snap = kRelativeGrabSnap * sheetSize(sheet);
+  std::vector<VertexIndex> found;
+  for (const glm::dvec2& q : points) {
+    VertexIndex nearest = kNoIndex;
+    if (const std::optional<SurfacePoint> at = locateDevelopmentPoint(sheet, q, snap)) {
+      double nearestDistance = snap;
+      for (VertexIndex v : sheet.triangles[at->triangle]) {
+        const double d = glm::distance(sheet.development[v], q);
+        if (d <= nearestDistance) {
+          nearest = v;
+          nearestDistance = d;
+        }
+      }
+    }
+    if (nearest == kNoIndex)
+      throw InvalidSheet("development point " + describe(q) + " is no vertex of the sheet");
+    found.push_back(nearest);
+  }
+  return found;
+}
+
 namespace {
 
 // Whether q lies inside triangle t farther than `margin` from each of its edges.

@@ -65,6 +65,11 @@ struct VertexInsertion {
 // the same sheet bit for bit.
 VertexInsertion insertVertexAt(const Sheet& sheet, const glm::dvec2& q);
 
+// The vertex at each development point (within kRelativeGrabSnap of the size). Throws InvalidSheet
+// naming a point where the sheet has no vertex.
+std::vector<VertexIndex> verticesAtDevelopment(const Sheet& sheet,
+                                               const std::vector<glm::dvec2>& points);
+
 // What an in-place insertion changed, so it can be taken back exactly.
 struct InsertionUndo {
   std::size_t vertexCount = 0;  // before

@@ -218,29 +218,94 @@ std::vector<std::string> symmetriesOf(const Sheet& initial) {
   return found;
 }
 
+std::string imageNotes(std::size_t skipped, std::size_t overlapping) {
+  std::string notes;
+  if (skipped > 0)
+    notes += std::to_string(skipped) + " skipped: their seeds lie in a part this fold moved";
+  if (overlapping > 0)
+    notes += (notes.empty() ? "" : "; ") + std::to_string(overlapping) +
+             " overlap the part of an earlier fold of the group: not exactly symmetric there";
+  return notes.empty() ? notes : " (" + notes + ")";
+}
+
 SymmetricFolder::SymmetricFolder(const Sheet& initial, const Symmetry& symmetry)
-    : initial_(initial), symmetry_(symmetry), images_(symmetry.images()) {
+    : SymmetricFolder(std::make_shared<const Sheet>(initial), symmetry) {}
+
+SymmetricFolder::SymmetricFolder(std::shared_ptr<const Sheet> initial, const Symmetry& symmetry)
+    : initial_(std::move(initial)), symmetry_(symmetry), images_(symmetry.images()) {
   for (const Isometry& g : images_) {
-    std::optional<std::vector<Triangle>> permutation = trianglePermutation(initial, g);
+    std::optional<std::vector<Triangle>> permutation = trianglePermutation(*initial_, g);
     if (!permutation)
       throw InvalidSymmetry("the surface does not have " + symmetry.name() + " through its centre");
+    std::vector<VertexIndex> vertexImage(initial_->vertexCount(), kNoIndex);
+    for (std::size_t t = 0; t < initial_->triangleCount(); ++t)
+      for (int i = 0; i < 3; ++i) vertexImage[initial_->triangles[t][i]] = (*permutation)[t][i];
     permutations_.push_back(std::move(*permutation));
+    vertexImages_.push_back(std::move(vertexImage));
   }
+}
+
+std::vector<VertexIndex> SymmetricFolder::verticesMoved(const Sheet& before,
+                                                        const FoldRecord& fold) {
+  const VertexInsertion grab = insertVertexAt(before, fold.seed);
+  const std::vector<VertexIndex> more = verticesAtDevelopment(grab.sheet, fold.moreSeeds);
+  ReflectionWorkspace workspace;
+  Sheet out = grab.sheet;
+  workspace.apply(grab.sheet, buildAdjacency(grab.sheet), grab.vertex, fold.plane,
+                  sheetEpsilon(grab.sheet), out, more);
+  return workspace.changes().movedVertices;
+}
+
+SymmetricFolder::Pieces SymmetricFolder::piecesOf(const Sheet& sheet, const FoldRecord& image,
+                                                  const std::vector<VertexIndex>& wanted) {
+  const VertexInsertion grab = insertVertexAt(sheet, image.seed);
+  const SheetAdjacency adjacency = buildAdjacency(grab.sheet);
+  const double epsilon = sheetEpsilon(grab.sheet);
+  ReflectionWorkspace workspace;
+  Sheet out = grab.sheet;
+  std::vector<VertexIndex> more;
+  std::vector<char> reached(grab.sheet.vertexCount());
+  // One reflection per piece: each round adds a wanted vertex the part does not reach yet.
+  for (std::size_t round = 0; round <= wanted.size(); ++round) {
+    if (round > 0) workspace.restore(grab.sheet, out);
+    workspace.apply(grab.sheet, adjacency, grab.vertex, image.plane, epsilon, out, more);
+    const ReflectionChanges& changes = workspace.changes();
+    const ReflectionPlane plane{image.plane.point + changes.planeShift * image.plane.normal,
+                                image.plane.normal};
+    std::fill(reached.begin(), reached.end(), 0);
+    for (VertexIndex v : changes.movedVertices) reached[v] = 1;
+    const auto missing = std::find_if(wanted.begin(), wanted.end(), [&](VertexIndex v) {
+      return !reached[v] && plane.signedDistance(grab.sheet.positions[v]) < -epsilon;
+    });
+    if (missing == wanted.end()) break;
+    more.push_back(*missing);
+  }
+  Pieces pieces;
+  for (VertexIndex v : more) pieces.moreSeeds.push_back(grab.sheet.development[v]);
+  pieces.moved = workspace.changes().movedVertices;
+  return pieces;
 }
 
 SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet& sheet,
                                                      const FoldRecord& fold) const {
   Result result;
-  const double size = sheetSize(initial_);
+  const Sheet& initial = *initial_;
+  const double size = sheetSize(initial);
   const double tolerance = kRelativeContactTolerance * size;
   const std::optional<SurfacePoint> seed =
-      locateDevelopmentPoint(initial_, fold.seed, kRelativeEpsilon * size);
+      locateDevelopmentPoint(initial, fold.seed, kRelativeEpsilon * size);
   if (!seed) return result;
+  // The fold's part: its vertices of the initial sheet, whose images each image's part must hold
+  // (folds only append vertices, so those keep their numbers in every sheet folded from it), and
+  // all of them, to tell an image whose part overlaps it.
+  const std::vector<VertexIndex> part = verticesMoved(before, fold);
+  std::vector<char> movedByGroup(sheet.vertexCount());
+  for (VertexIndex v : part) movedByGroup[v] = 1;
   for (std::size_t k = 0; k < images_.size(); ++k) {
     const Isometry& g = images_[k];
     glm::dvec2 imageSeed(0.0);
     for (int i = 0; i < 3; ++i)
-      imageSeed += seed->barycentric[i] * initial_.development[permutations_[k][seed->triangle][i]];
+      imageSeed += seed->barycentric[i] * initial.development[permutations_[k][seed->triangle][i]];
     // The image seed must still be where the symmetric sheet had it: a fold of this group that
     // already moved it (its part overlaps this image's) leaves the image out.
     const std::optional<SurfacePoint> now = locateDevelopmentPoint(sheet, imageSeed, tolerance);
@@ -256,7 +321,22 @@ SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet&
     image.plane.normal = glm::normalize(g.linear * fold.plane.normal);
     image.grabbed = g.apply(fold.grabbed);
     image.target = g.apply(fold.target);
+    std::vector<VertexIndex> wanted;
+    for (VertexIndex v : part)
+      if (v < initial.vertexCount()) wanted.push_back(vertexImages_[k][v]);
+    Pieces pieces = piecesOf(sheet, image, wanted);
+    image.moreSeeds = std::move(pieces.moreSeeds);
     sheet = applyFold(sheet, image);
+    // Overlapping: the image of the fold's part holds a vertex a fold of the group already moved
+    // (away, perhaps, so this image's plane no longer reaches it), or this image moves one again.
+    bool overlaps = std::any_of(wanted.begin(), wanted.end(),
+                                [&](VertexIndex v) { return movedByGroup[v] != 0; });
+    movedByGroup.resize(sheet.vertexCount());
+    for (VertexIndex v : pieces.moved) {
+      overlaps = overlaps || movedByGroup[v];
+      movedByGroup[v] = 1;
+    }
+    result.overlapping += overlaps;
     result.applied.push_back(image);
   }
   return result;

@@ -7,6 +7,7 @@
 // development point exactly (through the triangle it lies in).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -63,25 +64,51 @@ std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, c
 // about them (each rotation by its largest order, then its divisors are implied).
 std::vector<std::string> symmetriesOf(const Sheet& initial);
 
+// What a group's images left out or overlapped, for a message: "" when nothing, else
+// " (1 skipped: ...; 2 overlap ...)".
+std::string imageNotes(std::size_t skipped, std::size_t overlapping);
+
 // Applies the images of a fold. Made once per design from its initial sheet and symmetry.
+//
+// An image's part is the image of the fold's part. Grown from the image of the seed alone it can
+// fall short: the slit of a tube or a cone is not where the rotation puts it, so the image of a
+// whole part may lie across the slit, in two pieces. So each image also grows from the images of
+// the fold's reflected vertices, and records one more seed per extra piece (FoldRecord::moreSeeds,
+// so a replay needs no symmetry). A fold whose own part ends at the slit has images that reach
+// across it: they are not its mirror images there (the check's symmetry line says so).
 class SymmetricFolder {
  public:
   SymmetricFolder(const Sheet& initial, const Symmetry& symmetry);
+  SymmetricFolder(std::shared_ptr<const Sheet> initial, const Symmetry& symmetry);
   const Symmetry& symmetry() const { return symmetry_; }
 
   struct Result {
     std::vector<FoldRecord> applied;  // the images folded, in order
     std::size_t skipped = 0;          // images whose seed an earlier fold of the group had moved
+    // Images made whose part shares vertices with the part of an earlier fold of the group: the
+    // later one moves them again, so the design is not exactly symmetric there.
+    std::size_t overlapping = 0;
   };
   // `before`: the sheet the fold was made on; `sheet`: with the fold applied, to which the images
   // are applied in turn.
   Result applyImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold) const;
 
  private:
-  const Sheet& initial_;
+  // The vertices the fold reflects on `before`.
+  static std::vector<VertexIndex> verticesMoved(const Sheet& before, const FoldRecord& fold);
+  struct Pieces {
+    std::vector<glm::dvec2> moreSeeds;  // beyond the image's seed
+    std::vector<VertexIndex> moved;     // the vertices the image reflects
+  };
+  // The seeds that grow an image's part over every piece holding one of `wanted`.
+  static Pieces piecesOf(const Sheet& sheet, const FoldRecord& image,
+                         const std::vector<VertexIndex>& wanted);
+
+  std::shared_ptr<const Sheet> initial_;
   Symmetry symmetry_;
   std::vector<Isometry> images_;
   std::vector<std::vector<Triangle>> permutations_;
+  std::vector<std::vector<VertexIndex>> vertexImages_;  // per image, each initial vertex's image
 };
 
 }  // namespace curvefold

@@ -142,6 +142,14 @@ class Reader : public JsonReader {
       if (g < 1 || g > 0xffffffffu) fail(where, "group must be a whole number from 1");
       fold.group = static_cast<std::uint32_t>(g);
     }
+    if (const json* more = optionalMember(value, "more_seeds", where)) {
+      array(*more, where + ": more_seeds");
+      // One per piece a slit cuts an image's part into: a handful at most.
+      if (more->size() > kMaxMoreSeeds)
+        fail(where, "more_seeds lists more than " + std::to_string(kMaxMoreSeeds) + " points");
+      for (std::size_t k = 0; k < more->size(); ++k)
+        fold.moreSeeds.push_back(vector2((*more)[k], item(where + ": more_seeds", k)));
+    }
     return fold;
   }
 
@@ -196,6 +204,11 @@ ordered_json foldJson(const FoldRecord& fold) {
       {"grabbed", vectorJson(fold.grabbed)},
       {"target", vectorJson(fold.target)}};
   if (fold.group != 0) value["group"] = fold.group;
+  if (!fold.moreSeeds.empty()) {
+    ordered_json more = ordered_json::array();
+    for (const glm::dvec2& p : fold.moreSeeds) more.push_back(vectorJson(p));
+    value["more_seeds"] = std::move(more);
+  }
   return value;
 }
 
