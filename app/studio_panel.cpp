@@ -2,12 +2,14 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <utility>
 
+#include "engine/geometry/symmetry.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
@@ -65,6 +67,31 @@ void StudioPanel::resetParameters() {
     parameterValues_.push_back(float(p.defaultValue));
 }
 
+GeneratedSurface StudioPanel::chosenSurface() const {
+  const SurfaceInfo& info = surfaceCatalog()[surfaceIndex_];
+  GeneratedSurface surface{info.name, {}};
+  for (std::size_t i = 0; i < info.parameters.size(); ++i)
+    surface.parameters[info.parameters[i].name] =
+        info.parameters[i].integer ? std::round(parameterValues_[i]) : parameterValues_[i];
+  return surface;
+}
+
+void StudioPanel::refreshSymmetries() {
+  const GeneratedSurface surface = chosenSurface();
+  if (symmetriesFor_ && *symmetriesFor_ == surface) return;
+  symmetriesFor_ = surface;
+  symmetryChoices_ = {kNoSymmetry};
+  try {
+    for (std::string& choice : symmetryChoices(makeSurface(surface.generator, surface.parameters)))
+      symmetryChoices_.push_back(std::move(choice));
+  } catch (const std::exception&) {
+    // Parameters the surface refuses: Create says why.
+  }
+  if (std::find(symmetryChoices_.begin(), symmetryChoices_.end(), symmetry_) ==
+      symmetryChoices_.end())
+    symmetry_ = kNoSymmetry;
+}
+
 void StudioPanel::item(const char* label) {
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   items_[label] = {0.5f * (low.x + high.x), 0.5f * (low.y + high.y)};
@@ -108,6 +135,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
           if (ImGui::Selectable(catalog[i].name.c_str(), i == surfaceIndex_)) {
             surfaceIndex_ = i;
             resetParameters();
+            symmetry_ = kNoSymmetry;
           }
           item(catalog[i].name.c_str());
         }
@@ -121,15 +149,25 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
                            float(parameters[i].min), float(parameters[i].max), "%.4g");
         item(parameters[i].name.c_str());
       }
+      // The symmetries the new sheet has, listed when the list opens (building the sheet to find
+      // them takes tens of milliseconds, too long for every frame of a slider's drag).
+      const bool listing = ImGui::BeginCombo("symmetry", symmetry_.c_str());
+      if (listing) {
+        refreshSymmetries();
+        for (const std::string& choice : symmetryChoices_) {
+          if (ImGui::Selectable(choice.c_str(), choice == symmetry_)) symmetry_ = choice;
+          item(choice.c_str());
+        }
+        ImGui::EndCombo();
+      }
+      item("symmetry");
       const bool create = ImGui::Button("Create");
       item("Create");
       if (create) {
-        GeneratedSurface surface{catalog[surfaceIndex_].name, {}};
-        for (std::size_t i = 0; i < parameters.size(); ++i)
-          surface.parameters[parameters[i].name] =
-              parameters[i].integer ? std::round(parameterValues_[i]) : parameterValues_[i];
-        guarded("new " + surface.generator, [&] {
-          actions.replaceDocument({surface, {}}, surface.generator);
+        const GeneratedSurface surface = chosenSurface();
+        const std::string symmetry = symmetry_ == kNoSymmetry ? "" : symmetry_;
+        guarded("new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry), [&] {
+          actions.replaceDocument({surface, {}, symmetry}, surface.generator);
         });
       }
     }

@@ -1,8 +1,8 @@
-// The studio panel (Dear ImGui): a new sheet from the catalog, save, open, export, undo, redo, the
-// crease pattern, and live stats. One panel, two hosts: the desktop window draws it in its own
-// ImGui frame, the headset will draw it onto a card held by the non-dominant hand (issue 14). The
-// panel only builds widgets and says what was asked; the host does it (StudioActions), so each
-// host keeps its own devices and files.
+// The studio panel (Dear ImGui): a new sheet from the catalog (with a symmetry), save, open,
+// export, undo, redo, the crease pattern, and live stats. One panel, two hosts: the desktop window
+// draws it in its own ImGui frame, the headset will draw it onto a card held by the non-dominant
+// hand (issue 14). The panel only builds widgets and says what was asked; the host does it
+// (StudioActions), so each host keeps its own devices and files.
 //
 // Items are addressed by their label: the panel records where each one was last drawn
 // (itemCentre), so a test or a gesture script can point at "Undo" rather than at coordinates.
@@ -74,6 +74,10 @@ class StudioPanel {
   void item(const char* label);  // records the last item's rectangle under its label
   void guarded(const std::string& done, const std::function<void()>& action);
   void resetParameters();
+  // The catalog surface with the sliders' parameters.
+  GeneratedSurface chosenSurface() const;
+  // Lists the symmetries of chosenSurface() (once per surface and parameters).
+  void refreshSymmetries();
   void remember(const std::string& designPath, const StudioActions& actions);
   void writeThrough(const StudioActions& actions, const std::string& path,
                     const std::function<void(const std::string&)>& write);
@@ -82,6 +86,10 @@ class StudioPanel {
   std::string help_;
   int surfaceIndex_ = 0;
   std::vector<float> parameterValues_;
+  static constexpr const char* kNoSymmetry = "none";
+  std::string symmetry_ = kNoSymmetry;  // of the new sheet
+  std::vector<std::string> symmetryChoices_;
+  std::optional<GeneratedSurface> symmetriesFor_;  // the surface symmetryChoices_ are of
   char savePath_[512] = "design.curvefold.json";
   char openPath_[512] = "";
   char exportBase_[512] = "";

@@ -12,6 +12,7 @@
 #include "engine/geometry/display_session.hpp"
 #include "engine/geometry/planar_simplification.hpp"
 #include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -178,6 +179,35 @@ TEST(DisplaySession, FollowsDragsCommitsCancelsUndoAndRedo) {
   ASSERT_TRUE(session.redo());
   display.follow(session);
   expectFollows(display, session);
+}
+
+// Issue 17: in a symmetric design the drawn (coarse) sheet previews a drag's images, and is the
+// same surface as what the commit then makes; a session without the symmetry previews nothing.
+TEST(DisplaySession, PreviewsASymmetricDragsImages) {
+  const Sheet initial = makeSurface("cylinder");
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:6", initial));
+  DisplaySession display;
+  display.follow(session);
+  session.beginDragNear({0.045, 0.105, 0.0});
+  session.updateDrag({0.036, 0.1, 0.0});
+  display.follow(session);
+  ASSERT_TRUE(display.shownSession().previewingImages());
+  EXPECT_FALSE(session.previewingImages());  // the fine sheet is not remade at every update
+  EXPECT_LT(display.sheet().triangleCount() * 3, session.current().triangleCount());
+  EXPECT_FALSE(display.reflectedTriangles().empty());
+  const Sheet previewed = display.sheet();
+  ASSERT_TRUE(session.commit());
+  ASSERT_EQ(session.foldCount(), 6u);
+  expectSameSurface(previewed, session.fixed());
+
+  FoldSession plain(initial);
+  DisplaySession plainDisplay;
+  plainDisplay.follow(plain);
+  plain.beginDragNear({0.045, 0.105, 0.0});
+  plain.updateDrag({0.036, 0.1, 0.0});
+  plainDisplay.follow(plain);
+  EXPECT_FALSE(plainDisplay.shownSession().previewingImages());
 }
 
 TEST(DisplaySession, CatchesUpWithSeveralOperationsBetweenFrames) {

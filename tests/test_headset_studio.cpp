@@ -91,6 +91,31 @@ TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
   EXPECT_EQ(replayed.log.size(), design.folds.size());
 }
 
+// Issue 17, 2: the panel sets the symmetry of a new sheet (the list holds the surface's own, each
+// rotation with its divisors): a 6-fold cylinder made from the panel folds each drag with its five
+// images, in the studio and in its replay; the symmetry goes into the recording's design.
+TEST(HeadsetStudio, ThePanelMakesASymmetricSheet) {
+  const std::string script =
+      R"({"format":"curvefold-gesture-script","version":1,"rate":60,)"
+      R"("surface":{"generator":"square","parameters":{}},"studio":{},"gestures":[)"
+      R"({"sheet_hand":{"to":{"position":[-0.22,0.92,-0.42]},"duration":0.5}},)"
+      R"({"point_at":{"item":"surface","duration":0.4}},)"
+      R"({"point_at":{"item":"cylinder","duration":0.3}},)"
+      R"({"point_at":{"item":"symmetry","duration":0.4}},)"
+      R"({"point_at":{"item":"rotational:6:y","duration":0.3}},)"
+      R"({"point_at":{"item":"Create","duration":0.4}},)"
+      R"({"wait":0.2},)"
+      R"({"drag":{"grab":[0.045,0.105,0],"to":[0.036,0.1,0],"duration":0.8}}]})";
+  const Recording made = recordGestureScriptText(script, "symmetric.gesture.json",
+                                                 kMaxGestureFrames, studioGestureWorld());
+  const ReplayResult replayed = replayStudioRecording(made);
+  ASSERT_TRUE(std::holds_alternative<GeneratedSurface>(replayed.design.surface));
+  EXPECT_EQ(std::get<GeneratedSurface>(replayed.design.surface).generator, "cylinder");
+  EXPECT_EQ(replayed.design.symmetry, "rotational:6:y");
+  ASSERT_EQ(replayed.design.folds.size(), 6u);
+  for (const FoldRecord& fold : replayed.design.folds) EXPECT_EQ(fold.group, 1u);
+}
+
 // A studio script needs the panel: without the app's world it is refused with a line saying so.
 TEST(HeadsetStudio, AStudioScriptWithoutThePanelIsRefused) {
   try {

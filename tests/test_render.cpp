@@ -10,6 +10,7 @@
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/reflection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/render/gpu_resources.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image_barrier.hpp"
@@ -327,14 +328,17 @@ TEST_F(Render, SameDesignRendersBitIdenticallyTwice) {
 // A drag rendered frame by frame with incremental upload gives the images of a full upload every
 // frame, while writing fewer bytes; drawn with every triangle (simplify false) or as the designer
 // draws it (the display session's merged planar regions, a few dozen triangles here, so most of
-// it changes with every update and no bytes are saved).
-void expectIncrementalUploadMatchesFullUpload(HeadlessRenderer& renderer, bool simplify) {
+// it changes with every update and no bytes are saved). In a symmetric design the display sheet
+// previews the images, remade whole at every update.
+void expectIncrementalUploadMatchesFullUpload(HeadlessRenderer& renderer, bool simplify,
+                                              bool symmetric = false) {
   HeadlessOptions options;
   options.width = options.height = kSize;
   options.validation = true;
   HeadlessRenderer full(options);
 
   FoldSession session(makeSurface("cylinder", {{"resolution", 24}}));
+  if (symmetric) session.setSymmetry(parseSymmetry("rotational:6", session.initial()));
   SessionSheetTracker tracker(simplify);
   std::size_t incrementalBytes = 0, fullBytes = 0;
   auto frame = [&] {
@@ -365,6 +369,7 @@ void expectIncrementalUploadMatchesFullUpload(HeadlessRenderer& renderer, bool s
   if (!simplify) {
     EXPECT_LT(incrementalBytes - bytesBeforeDrag, (fullBytes - fullBeforeDrag) / 2);
   }
+  EXPECT_EQ(tracker.display().shownSession().previewingImages(), symmetric);
   session.commit();
   EXPECT_TRUE(frame());
   session.undo();
@@ -379,6 +384,10 @@ TEST_F(Render, IncrementalUploadMatchesFullUpload) {
 
 TEST_F(Render, IncrementalUploadOfTheDisplaySheetMatchesFullUpload) {
   expectIncrementalUploadMatchesFullUpload(*renderer_, true);
+}
+
+TEST_F(Render, IncrementalUploadOfASymmetricPreviewMatchesFullUpload) {
+  expectIncrementalUploadMatchesFullUpload(*renderer_, true, true);
 }
 
 TEST(DirtyRanges, JoinsNearbyRunsAndClips) {

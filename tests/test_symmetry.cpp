@@ -23,6 +23,11 @@ TEST(Symmetry, EachSurfaceSaysWhichItHas) {
   EXPECT_EQ(symmetriesOf(makeSurface("cylinder")),
             (std::vector<std::string>{"mirror:x", "mirror:y", "mirror:z", "rotational:2:x",
                                       "rotational:12:y", "rotational:2:z"}));
+  // To choose from: each rotation with every order that divides it.
+  EXPECT_EQ(symmetryChoices(makeSurface("cylinder")),
+            (std::vector<std::string>{"mirror:x", "mirror:y", "mirror:z", "rotational:2:x",
+                                      "rotational:12:y", "rotational:6:y", "rotational:4:y",
+                                      "rotational:3:y", "rotational:2:y", "rotational:2:z"}));
   // A flat sheet's own plane fixes it: no symmetry to fold by (the mesher's triangles are not
   // symmetric either).
   EXPECT_TRUE(symmetriesOf(makeSurface("square")).empty());
@@ -159,6 +164,44 @@ TEST(Symmetry, ImagesWhosePartsOverlapAreCounted) {
   EXPECT_NE(imageNotes(0, session.lastOverlappingImages()).find("not exactly symmetric"),
             std::string::npos);
   EXPECT_EQ(imageNotes(0, 0), "");
+}
+
+// A drag in a symmetric design may preview its images (the display's coarse sheet does): what it
+// shows is what the commit then makes, bit for bit, with the images' reflected triangles; a drag
+// back to its start shows nothing folded, and a cancel ends the preview.
+TEST(Symmetry, ADragPreviewsItsImagesAsTheCommitMakesThem) {
+  const Sheet initial = makeSurface("cylinder");
+  const glm::dvec3 grab(0.045, 0.105, 0.0), to(0.036, 0.1, 0.0);
+  FoldSession plain(initial);
+  plain.beginDragNear(grab);
+  plain.updateDrag(to);
+  const std::size_t alone = plain.reflectedTriangles().size();
+  ASSERT_GT(alone, 0u);
+
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:6", initial));
+  session.setImagePreview(session.symmetricFolder());
+  session.beginDragNear(grab);
+  EXPECT_FALSE(session.previewingImages());
+  const std::uint64_t before = session.previewRevision();
+  session.updateDrag(to);
+  ASSERT_TRUE(session.previewingImages());
+  EXPECT_NE(session.previewRevision(), before);
+  EXPECT_EQ(session.reflectedTriangles().size(), 6 * alone);
+  const Sheet previewed = session.current();
+  ASSERT_TRUE(session.commit());
+  EXPECT_FALSE(session.previewingImages());
+  EXPECT_TRUE(identical(previewed, session.fixed()));
+
+  session.beginDragNear(grab);
+  session.updateDrag(session.grabbedPoint());
+  EXPECT_FALSE(session.previewingImages());
+  EXPECT_TRUE(session.reflectedTriangles().empty());
+  session.updateDrag(session.grabbedPoint() + glm::dvec3(0.0, -0.01, 0.0));
+  EXPECT_TRUE(session.previewingImages());
+  session.cancel();
+  EXPECT_FALSE(session.previewingImages());
+  EXPECT_EQ(session.foldCount(), 6u);
 }
 
 }  // namespace

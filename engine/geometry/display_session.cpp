@@ -14,6 +14,8 @@ void DisplaySession::rebuild(const FoldSession& source) {
   if (!simplify_) return;
   try {
     coarse_ = std::make_unique<FoldSession>(simplifyPlanar(source.fixed()).sheet);
+    // A symmetric session's drag shows its images, made on the coarse sheet (cheap there).
+    coarse_->setImagePreview(source.symmetricFolder());
   } catch (const std::exception&) {
     coarse_.reset();  // draw the source's own sheet
   }

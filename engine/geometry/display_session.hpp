@@ -7,7 +7,8 @@
 // development point and reflected through the same plane, stays a triangulation of the session's
 // sheet, and a drag update costs what the coarse sheet costs (a 100k-triangle cylinder is ~500
 // triangles). Only a design that changes otherwise (undo, redo, open, a new session) is simplified
-// afresh.
+// afresh. In a symmetric design the coarse drag also previews the fold's images
+// (FoldSession::setImagePreview); a symmetric commit, which adds a group, is simplified afresh.
 #pragma once
 
 #include <cstdint>

@@ -99,6 +99,8 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   // on-plane tolerance of much of the sheet and crease it everywhere (a target equal to the
   // grabbed point is a no-op, not an error).
   folded_ = glm::distance(target, grabbed_) > minimumDrag();
+  if (previewing_) ++previewRevision_;
+  previewing_ = false;
   if (!folded_) {
     workspace_.restore(fixed_, temporal_);
     workspace_.clear();
@@ -106,12 +108,25 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   }
   plane_ = bisectorPlane(grabbed_, target);
   workspace_.reapply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
+  if (previewFolder_) {
+    preview_ = temporal_;
+    previewReflected_ = workspace_.reflectedTriangles(fixedAdjacency_);
+    try {
+      previewFolder_->previewImages(
+          fixed_, preview_, FoldRecord{grabSeed_, plane_, grabbed_, target_}, previewReflected_);
+      previewing_ = true;
+    } catch (const InvalidSheet&) {
+      previewing_ = false;  // an image this sheet cannot make: the commit will say
+    }
+    ++previewRevision_;
+  }
   return workspace_.changes();
 }
 
 const std::vector<TriangleIndex>& FoldSession::reflectedTriangles() const {
   static const std::vector<TriangleIndex> none;
   if (!dragging_ || !folded_) return none;
+  if (previewing_) return previewReflected_;
   return workspace_.reflectedTriangles(fixedAdjacency_);
 }
 
@@ -140,6 +155,7 @@ bool FoldSession::commit() {
   }
   dragging_ = false;
   folded_ = false;
+  previewing_ = false;
   history_.resize(applied_);
   // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
   if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
@@ -209,7 +225,14 @@ const Symmetry* FoldSession::symmetry() const {
   return symmetric_ ? &symmetric_->symmetry() : nullptr;
 }
 
+void FoldSession::setImagePreview(std::shared_ptr<const SymmetricFolder> folder) {
+  previewFolder_ = std::move(folder);
+  if (previewing_) ++previewRevision_;
+  previewing_ = false;  // from the next update
+}
+
 void FoldSession::cancel() {
+  previewing_ = false;
   // temporal_ back to fixed_ as it was before the grab, at the cost of what the drag changed.
   if (dragging_) workspace_.restore(fixed_, temporal_);
   workspace_.clear();

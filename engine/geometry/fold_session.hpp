@@ -66,8 +66,9 @@ class FoldSession {
   const Sheet& initial() const { return *initial_; }
   // The committed sheet; during a drag it also holds the grabbed point as a vertex.
   const Sheet& fixed() const { return fixed_; }
-  // What to show: the temporal sheet while dragging, else the fixed one.
-  const Sheet& current() const { return dragging_ ? temporal_ : fixed_; }
+  // What to show: the temporal sheet while dragging (with the images, when previewed), else the
+  // fixed one.
+  const Sheet& current() const { return dragging_ ? (previewing_ ? preview_ : temporal_) : fixed_; }
   double epsilon() const { return epsilon_; }
   // The shortest drag that folds (kRelativeMinimumDrag of the sheet's size); shorter ones show
   // the unfolded sheet and commit nothing.
@@ -105,8 +106,8 @@ class FoldSession {
   const ReflectionPlane& plane() const { return plane_; }
   VertexIndex grabbedVertex() const { return grabVertex_; }
   const ReflectionChanges& lastChanges() const { return workspace_.changes(); }
-  // Triangles of current() in the reflected part (empty unless a drag folds the sheet); derived
-  // on the first call after each update.
+  // Triangles of current() in the reflected part (empty unless a drag folds the sheet), with the
+  // images' while they are previewed; derived on the first call after each update.
   const std::vector<TriangleIndex>& reflectedTriangles() const;
 
   SessionMemory memoryUse() const;
@@ -127,6 +128,15 @@ class FoldSession {
   // sheet must have: throws InvalidSymmetry), as one group (engine/geometry/symmetry.hpp).
   void setSymmetry(const Symmetry& symmetry);
   const Symmetry* symmetry() const;
+  const std::shared_ptr<const SymmetricFolder>& symmetricFolder() const { return symmetric_; }
+  // While a drag folds the sheet, current() also shows the fold's images as `folder` makes them
+  // (SymmetricFolder::previewImages), remade at every update: for a small sheet only, such as a
+  // display's coarse one following a session that has the symmetry (DisplaySession). Null: none.
+  void setImagePreview(std::shared_ptr<const SymmetricFolder> folder);
+  // Whether current() holds previewed images now, and a number that changes whenever it is
+  // remade (its changes are not recorded: a renderer uploads it whole).
+  bool previewingImages() const { return dragging_ && previewing_; }
+  std::uint64_t previewRevision() const { return previewRevision_; }
   // Images the last commit left out (their seed lay in a part the fold moved).
   std::size_t lastSkippedImages() const { return lastSkipped_; }
   // Images the last commit made whose part overlapped an earlier fold's of its group.
@@ -169,6 +179,11 @@ class FoldSession {
   std::vector<std::shared_ptr<const Sheet>> keyframes_;  // keyframes_[k]: after k*interval folds
 
   std::shared_ptr<const SymmetricFolder> symmetric_;  // none: folds have no images
+  std::shared_ptr<const SymmetricFolder> previewFolder_;
+  bool previewing_ = false;  // preview_ holds temporal_ with the images
+  Sheet preview_;
+  std::vector<TriangleIndex> previewReflected_;
+  std::uint64_t previewRevision_ = 0;
   std::size_t lastSkipped_ = 0;
   std::size_t lastOverlapping_ = 0;
 };

@@ -218,6 +218,22 @@ std::vector<std::string> symmetriesOf(const Sheet& initial) {
   return found;
 }
 
+std::vector<std::string> symmetryChoices(const Sheet& initial) {
+  std::vector<std::string> choices;
+  for (const std::string& name : symmetriesOf(initial)) {
+    const std::string rotational = "rotational:";
+    if (!name.starts_with(rotational)) {
+      choices.push_back(name);
+      continue;
+    }
+    const std::size_t colon = name.rfind(':');
+    const int order = std::stoi(name.substr(rotational.size(), colon - rotational.size()));
+    for (int n = order; n >= 2; --n)
+      if (order % n == 0) choices.push_back(rotational + std::to_string(n) + name.substr(colon));
+  }
+  return choices;
+}
+
 std::string imageNotes(std::size_t skipped, std::size_t overlapping) {
   std::string notes;
   if (skipped > 0)
@@ -286,15 +302,37 @@ SymmetricFolder::Pieces SymmetricFolder::piecesOf(const Sheet& sheet, const Fold
   return pieces;
 }
 
+std::optional<FoldRecord> SymmetricFolder::imageOf(const Sheet& before, const Sheet& sheet,
+                                                   const FoldRecord& fold, std::size_t k) const {
+  const Sheet& initial = *initial_;
+  const double size = sheetSize(initial);
+  const std::optional<SurfacePoint> seed =
+      locateDevelopmentPoint(initial, fold.seed, kRelativeEpsilon * size);
+  if (!seed) return std::nullopt;
+  const Isometry& g = images_[k];
+  glm::dvec2 imageSeed(0.0);
+  for (int i = 0; i < 3; ++i)
+    imageSeed += seed->barycentric[i] * initial.development[permutations_[k][seed->triangle][i]];
+  // The image seed must still be where the symmetric sheet had it: a fold of this group that
+  // already moved it (its part overlaps this image's) leaves the image out.
+  const double tolerance = kRelativeContactTolerance * size;
+  const std::optional<SurfacePoint> now = locateDevelopmentPoint(sheet, imageSeed, tolerance);
+  const std::optional<SurfacePoint> then = locateDevelopmentPoint(before, imageSeed, tolerance);
+  if (!now || !then ||
+      glm::distance(positionOf(sheet, *now), positionOf(before, *then)) > 1e-6 * size)
+    return std::nullopt;
+  FoldRecord image;
+  image.seed = imageSeed;
+  image.plane.point = g.apply(fold.plane.point);
+  image.plane.normal = glm::normalize(g.linear * fold.plane.normal);
+  image.grabbed = g.apply(fold.grabbed);
+  image.target = g.apply(fold.target);
+  return image;
+}
+
 SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet& sheet,
                                                      const FoldRecord& fold) const {
   Result result;
-  const Sheet& initial = *initial_;
-  const double size = sheetSize(initial);
-  const double tolerance = kRelativeContactTolerance * size;
-  const std::optional<SurfacePoint> seed =
-      locateDevelopmentPoint(initial, fold.seed, kRelativeEpsilon * size);
-  if (!seed) return result;
   // The fold's part: its vertices of the initial sheet, whose images each image's part must hold
   // (folds only append vertices, so those keep their numbers in every sheet folded from it), and
   // all of them, to tell an image whose part overlaps it.
@@ -302,31 +340,17 @@ SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet&
   std::vector<char> movedByGroup(sheet.vertexCount());
   for (VertexIndex v : part) movedByGroup[v] = 1;
   for (std::size_t k = 0; k < images_.size(); ++k) {
-    const Isometry& g = images_[k];
-    glm::dvec2 imageSeed(0.0);
-    for (int i = 0; i < 3; ++i)
-      imageSeed += seed->barycentric[i] * initial.development[permutations_[k][seed->triangle][i]];
-    // The image seed must still be where the symmetric sheet had it: a fold of this group that
-    // already moved it (its part overlaps this image's) leaves the image out.
-    const std::optional<SurfacePoint> now = locateDevelopmentPoint(sheet, imageSeed, tolerance);
-    const std::optional<SurfacePoint> then = locateDevelopmentPoint(before, imageSeed, tolerance);
-    if (!now || !then ||
-        glm::distance(positionOf(sheet, *now), positionOf(before, *then)) > 1e-6 * size) {
+    std::optional<FoldRecord> image = imageOf(before, sheet, fold, k);
+    if (!image) {
       ++result.skipped;
       continue;
     }
-    FoldRecord image;
-    image.seed = imageSeed;
-    image.plane.point = g.apply(fold.plane.point);
-    image.plane.normal = glm::normalize(g.linear * fold.plane.normal);
-    image.grabbed = g.apply(fold.grabbed);
-    image.target = g.apply(fold.target);
     std::vector<VertexIndex> wanted;
     for (VertexIndex v : part)
-      if (v < initial.vertexCount()) wanted.push_back(vertexImages_[k][v]);
-    Pieces pieces = piecesOf(sheet, image, wanted);
-    image.moreSeeds = std::move(pieces.moreSeeds);
-    sheet = applyFold(sheet, image);
+      if (v < initial_->vertexCount()) wanted.push_back(vertexImages_[k][v]);
+    Pieces pieces = piecesOf(sheet, *image, wanted);
+    image->moreSeeds = std::move(pieces.moreSeeds);
+    sheet = applyFold(sheet, *image);
     // Overlapping: the image of the fold's part holds a vertex a fold of the group already moved
     // (away, perhaps, so this image's plane no longer reaches it), or this image moves one again.
     bool overlaps = std::any_of(wanted.begin(), wanted.end(),
@@ -337,9 +361,22 @@ SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet&
       movedByGroup[v] = 1;
     }
     result.overlapping += overlaps;
-    result.applied.push_back(image);
+    result.applied.push_back(std::move(*image));
   }
   return result;
+}
+
+void SymmetricFolder::previewImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold,
+                                    std::vector<TriangleIndex>& reflected) const {
+  for (std::size_t k = 0; k < images_.size(); ++k) {
+    const std::optional<FoldRecord> image = imageOf(before, sheet, fold, k);
+    if (!image) continue;
+    const VertexInsertion grab = insertVertexAt(sheet, image->seed);
+    ReflectionResult result = reflect(grab.sheet, grab.vertex, image->plane);
+    reflected.insert(reflected.end(), result.reflectedTriangles.begin(),
+                     result.reflectedTriangles.end());
+    sheet = std::move(result.sheet);
+  }
 }
 
 }  // namespace curvefold

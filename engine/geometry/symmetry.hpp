@@ -64,6 +64,10 @@ std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, c
 // about them (each rotation by its largest order, then its divisors are implied).
 std::vector<std::string> symmetriesOf(const Sheet& initial);
 
+// Every symmetry a design on the sheet may take, for a list to choose from: the mirrors, and each
+// rotation with every order that divides it ("rotational:12:y", "rotational:6:y", ...).
+std::vector<std::string> symmetryChoices(const Sheet& initial);
+
 // What a group's images left out or overlapped, for a message: "" when nothing, else
 // " (1 skipped: ...; 2 overlap ...)".
 std::string imageNotes(std::size_t skipped, std::size_t overlapping);
@@ -75,7 +79,7 @@ std::string imageNotes(std::size_t skipped, std::size_t overlapping);
 // whole part may lie across the slit, in two pieces. So each image also grows from the images of
 // the fold's reflected vertices, and records one more seed per extra piece (FoldRecord::moreSeeds,
 // so a replay needs no symmetry). A fold whose own part ends at the slit has images that reach
-// across it: they are not its mirror images there (the check's symmetry line says so).
+// on where the paper goes on: they are not its exact images there (not detected).
 class SymmetricFolder {
  public:
   SymmetricFolder(const Sheet& initial, const Symmetry& symmetry);
@@ -92,8 +96,18 @@ class SymmetricFolder {
   // `before`: the sheet the fold was made on; `sheet`: with the fold applied, to which the images
   // are applied in turn.
   Result applyImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold) const;
+  // What a drag shows of the images before its commit, on any triangulation of the same surface
+  // (a display's coarse sheet): each image seeded and reflected as applyImages does, skipped by
+  // the same rule, without the extra pieces across a slit. Adds each image's reflected triangles
+  // to `reflected`.
+  void previewImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold,
+                     std::vector<TriangleIndex>& reflected) const;
 
  private:
+  // The image of the fold under images_[k] (seed, plane and drag), or nothing when `sheet` (the
+  // fold and the images before it made) no longer has its seed where `before` had it.
+  std::optional<FoldRecord> imageOf(const Sheet& before, const Sheet& sheet, const FoldRecord& fold,
+                                    std::size_t k) const;
   // The vertices the fold reflects on `before`.
   static std::vector<VertexIndex> verticesMoved(const Sheet& before, const FoldRecord& fold);
   struct Pieces {

@@ -36,6 +36,7 @@ class DesignError : public std::runtime_error {
 struct GeneratedSurface {
   std::string generator;
   std::map<std::string, double> parameters;
+  bool operator==(const GeneratedSurface&) const = default;
 };
 
 // Either a generator with its parameters or an embedded mesh (its crease and slit tags kept).

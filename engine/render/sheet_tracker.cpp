@@ -27,9 +27,17 @@ void SessionSheetTracker::update(const FoldSession& source, SceneRenderer& rende
     grabbed_ = session.grabbedPoint();
     grabbedVertex_ = session.grabbedVertex();
     last_ = dragging ? session.lastChanges() : ReflectionChanges{};
+    previewRevision_ = session.previewRevision();
     return;
   }
   if (!dragging) return;  // the fixed sheet has not changed
+  if (session.previewingImages() || previewRevision_ != session.previewRevision()) {
+    // A drag's previewed images are remade whole at each update (on a coarse sheet).
+    if (previewRevision_ != session.previewRevision()) renderer.markSheetReplaced();
+    previewRevision_ = session.previewRevision();
+    last_ = session.lastChanges();
+    return;
+  }
   const ReflectionChanges& now = session.lastChanges();
   if (sameChanges(now, last_)) return;
   renderer.markSheetChanged(last_);  // put back what the previous update changed

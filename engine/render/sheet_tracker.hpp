@@ -38,6 +38,7 @@ class SessionSheetTracker {
   glm::dvec3 grabbed_{0.0};
   VertexIndex grabbedVertex_ = kNoIndex;
   ReflectionChanges last_;
+  std::uint64_t previewRevision_ = 0;
 };
 
 }  // namespace curvefold
