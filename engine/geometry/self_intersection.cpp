@@ -280,6 +280,7 @@ void DragIntersectionWatch::begin(const Sheet& fixed) {
          tree_.nodes[k].count > 0 && i < tree_.nodes[k].first + tree_.nodes[k].count; ++i)
       leafOf_[tree_.order[i]] = k;
   splitStamp_.assign(fixed.triangleCount(), 0);
+  nodeStamp_.assign(tree_.nodes.size(), 0);
   stamp_ = 0;
   active_ = true;
   pairCount_ = 0;
@@ -343,28 +344,32 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
     hasMoved_[k] = hasMoved_[node.first] | hasMoved_[node.first + 1];
     hasRest_[k] = hasRest_[node.first] | hasRest_[node.first + 1];
   }
-  // Per node, once: whether it can hold a reflected piece (some moved triangle, and a box that
-  // reaches the seed's side, d < 0, where the reflected part was) or a piece of the rest that can
-  // be met (some staying triangle, and a box that reaches beyond the plane, where the reflected
-  // part is now); and the box of its reflection (the reflection's linear part on its half-size).
+  // Per node, when the walk first meets it (a few thousand of a 100k-triangle tree's nodes):
+  // whether it can hold a reflected piece (some moved triangle, and a box that reaches the seed's
+  // side, d < 0, where the reflected part was) or a piece of the rest that can be met (some
+  // staying triangle, and a box that reaches beyond the plane, where the reflected part is now);
+  // and the box of its reflection (the reflection's linear part on its half-size).
   const glm::dvec3 n = plane.normal, absN = glm::abs(n);
   const glm::dmat3 linear = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
   reflectedLow_.resize(tree_.nodes.size());
   reflectedHigh_.resize(tree_.nodes.size());
-  for (std::size_t k = 0; k < tree_.nodes.size(); ++k) {
+  auto meet = [&](std::uint32_t k) {
+    if (nodeStamp_[k] == stamp_) return;
+    nodeStamp_[k] = stamp_;
     const TriangleTree::Node& node = tree_.nodes[k];
     const glm::dvec3 centre = 0.5 * (node.low + node.high), half = 0.5 * (node.high - node.low);
     const double d = plane.signedDistance(centre), reach = glm::dot(absN, half);
     hasMoved_[k] &= d - reach <= tolerance_;
     hasRest_[k] &= d + reach >= -tolerance_;
-    if (!hasMoved_[k]) continue;
+    if (!hasMoved_[k]) return;
     glm::dvec3 halfReflected(0.0);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) halfReflected[i] += std::abs(linear[j][i]) * half[j];
     const glm::dvec3 centreReflected = plane.reflect(centre);
     reflectedLow_[k] = centreReflected - halfReflected;
     reflectedHigh_[k] = centreReflected + halfReflected;
-  }
+  };
+  meet(0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
   while (!stack.empty()) {
     const auto [a, b] = stack.back();
@@ -399,6 +404,8 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
       // Both sides split where they can, a child pair kept only if it can meet.
       const std::uint32_t as[2] = {A.count > 0 ? a : A.first, A.count > 0 ? a : A.first + 1};
       const std::uint32_t bs[2] = {B.count > 0 ? b : B.first, B.count > 0 ? b : B.first + 1};
+      for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i) meet(as[i]);
+      for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j) meet(bs[j]);
       for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i)
         for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j)
           if (hasMoved_[as[i]] && hasRest_[bs[j]] &&

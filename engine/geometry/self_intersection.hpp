@@ -95,6 +95,7 @@ class DragIntersectionWatch {
   std::vector<std::uint32_t> leafOf_;                     // per fixed triangle: its leaf
   std::vector<std::uint32_t> splitStamp_;  // per fixed triangle: == stamp_ when cut in pieces
   std::vector<std::uint32_t> movedWhole_;  // per leaf: its triangles reflected whole
+  std::vector<std::uint32_t> nodeStamp_;   // per node: == stamp_ when the walk has met it
   std::uint32_t stamp_ = 0;
 };
 
