@@ -1,7 +1,9 @@
 #include "app/commands.hpp"
+#include "app/document.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -25,10 +27,13 @@
 #include "engine/io/output_set.hpp"
 #include "engine/io/sheet_cache.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
+#include "engine/print/crease_pattern_pdf.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold::cli {
+
+namespace fs = std::filesystem;
 namespace {
 
 // "X,Y,Z" with three finite numbers.
@@ -50,10 +55,14 @@ std::string formatPoint(const glm::dvec3& p) {
   return buffer;
 }
 
-std::string describeSurface(const Design& design) {
-  if (const auto* generated = std::get_if<GeneratedSurface>(&design.surface))
-    return generated->generator;
-  return "embedded mesh";
+// The local date, YYYY-MM-DD, for a printed page.
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &local);
+  return text;
 }
 
 // The isometry tolerance for a design: 1e-9 of the size, or what an imported mesh brought with it
@@ -143,7 +152,7 @@ void addNewCommand(CLI::App& app) {
     // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
     // paper, laid side by side in the development and printed on one crease pattern.
     const std::size_t pieces = connectedComponentCount(sheet, buildEdgeTopology(sheet));
-    statusFor({options->output}) << "wrote " << options->output << " (" << describeSurface(design)
+    statusFor({options->output}) << "wrote " << options->output << " (" << surfaceName(design)
                                  << (design.symmetry.empty() ? "" : ", " + design.symmetry) << ", "
                                  << sheet.triangleCount() << " triangles"
                                  << (pieces > 1 ? ", " + std::to_string(pieces) + " pieces" : "")
@@ -217,32 +226,56 @@ void addFoldCommand(CLI::App& app) {
 
 void addExportCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
-      "export", "Write the folded design as FOLD, SVG crease pattern, OBJ and/or glTF");
+      "export", "Write the folded design as FOLD, SVG crease pattern, PDF, OBJ and/or glTF");
   struct Options {
-    std::string design, fold, svg, obj, gltf;
+    std::string design, fold, svg, pdf, paper = "a4", obj, gltf;
+    bool angles = false;
   };
   auto options = std::make_shared<Options>();
   command->add_option("DESIGN", options->design, "Design file")->required();
   CLI::Option* fold = command->add_option("--fold", options->fold, "FOLD 1.2 file (.fold)");
   CLI::Option* svg =
       command->add_option("--svg", options->svg, "SVG crease pattern at real size (.svg)");
+  CLI::Option* pdf = command->add_option(
+      "--pdf", options->pdf,
+      "PDF to print: the crease pattern at real size, tiled across pages, after a cover page");
+  command
+      ->add_option("--paper", options->paper,
+                   "With --pdf: a4, letter or a3 (tiled at real size), or fit (one A4 page)")
+      ->check(CLI::IsMember({"a4", "letter", "a3", "fit"}));
+  command->add_flag("--angles", options->angles, "With --pdf: label each crease with its angle");
   CLI::Option* obj = command->add_option("--obj", options->obj, "OBJ with the development as vt");
   CLI::Option* gltf = command->add_option("--gltf", options->gltf, "glTF 2.0 binary (.glb)");
-  command->callback([options, fold, svg, obj, gltf] {
-    if (fold->count() + svg->count() + obj->count() + gltf->count() == 0)
-      throw UsageError("export: name at least one of --fold, --svg, --obj, --gltf");
-    const Sheet sheet = buildSheetCached(loadDesign(options->design), options->design);
+  command->callback([options, fold, svg, pdf, obj, gltf] {
+    if (fold->count() + svg->count() + pdf->count() + obj->count() + gltf->count() == 0)
+      throw UsageError("export: name at least one of --fold, --svg, --pdf, --obj, --gltf");
+    const Design design = loadDesign(options->design);
+    const Sheet sheet = buildSheetCached(design, options->design);
+    PdfOptions print;
+    if (pdf->count()) {
+      print.paper = *parsePaper(options->paper);
+      print.angles = options->angles;
+      print.title = fs::path(options->design).filename().string();
+      print.facts = {"surface: " + surfaceName(design) +
+                         (design.symmetry.empty() ? "" : ", " + design.symmetry),
+                     "folds: " + std::to_string(design.folds.size()), "date: " + today()};
+      PdfPicture picture;
+      if (renderFoldedForm(sheet, picture)) print.picture = std::move(picture);
+    }
     // All named files or none: a failing OBJ leaves the SVG as it was.
     OutputSet outputs;
     if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });
     if (svg->count())
       outputs.add(options->svg, [&](const auto& at) { writeSvgCreasePattern(sheet, at); });
+    if (pdf->count())
+      outputs.add(options->pdf, [&](const auto& at) { writeCreasePatternPdf(sheet, at, print); });
     if (obj->count()) outputs.add(options->obj, [&](const auto& at) { writeObj(sheet, at); });
     if (gltf->count()) outputs.add(options->gltf, [&](const auto& at) { writeGlb(sheet, at); });
     outputs.write();
-    for (const std::string* path : {&options->fold, &options->svg, &options->obj, &options->gltf})
+    for (const std::string* path :
+         {&options->fold, &options->svg, &options->pdf, &options->obj, &options->gltf})
       if (!path->empty())
-        statusFor({options->fold, options->svg, options->obj, options->gltf})
+        statusFor({options->fold, options->svg, options->pdf, options->obj, options->gltf})
             << "wrote " << *path << "\n";
   });
 }
@@ -274,9 +307,8 @@ void addCheckCommand(CLI::App& app) {
       if (!ok) failures.push_back(text);
     };
     char buffer[256];
-    std::cout << *design << ": " << describeSurface(loaded) << ", " << loaded.folds.size()
-              << " folds, " << now.vertexCount << " vertices, " << now.triangleCount
-              << " triangles\n";
+    std::cout << *design << ": " << surfaceName(loaded) << ", " << loaded.folds.size() << " folds, "
+              << now.vertexCount << " vertices, " << now.triangleCount << " triangles\n";
     std::snprintf(buffer, sizeof buffer,
                   "isometry: max edge-length error %.3g m (%.3g of the size; limit %.3g m)",
                   now.maxEdgeLengthError, now.maxEdgeLengthError / now.size, tolerance);

@@ -12,7 +12,9 @@
 
 namespace curvefold {
 struct Recording;
-}
+struct Sheet;
+struct PdfPicture;
+}  // namespace curvefold
 
 namespace curvefold::cli {
 
@@ -36,6 +38,9 @@ void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);
 // render_commands.cpp: headless Vulkan renders.
 void addRenderCommand(CLI::App& app);
+// The folded form, iso view, for a printed page's cover: false (the reason on standard error)
+// when there is no Vulkan device to render it with.
+bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture);
 // desktop/designer.cpp: the desktop designer window.
 class NoDisplayError : public std::runtime_error {
  public:

@@ -67,6 +67,12 @@ Document makeDocument(const Design& design, const std::string& name, const Pose&
   return doc;
 }
 
+std::string surfaceName(const Design& design) {
+  if (const auto* generated = std::get_if<GeneratedSurface>(&design.surface))
+    return generated->generator;
+  return "embedded mesh";
+}
+
 Design designFor(const std::string& input, const std::string& fallbackSurface) {
   if (input.empty()) return {GeneratedSurface{fallbackSurface, {}}, {}};
   if (fs::exists(input)) return loadDesign(input);

@@ -44,6 +44,9 @@ Document makeDocument(const Design& design, const std::string& name,
 
 // The design a command line INPUT names: a design file, a surface name (default parameters), or
 // empty for `fallbackSurface`. Throws UsageError for anything else.
+// The design's surface for a person: the generator's name, or "embedded mesh".
+std::string surfaceName(const Design& design);
+
 Design designFor(const std::string& input, const std::string& fallbackSurface);
 
 // "<name>.autosave.curvefold.json" beside the working directory, <name> from INPUT.

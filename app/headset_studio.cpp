@@ -143,6 +143,7 @@ void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
       if (!host_.exportPng) throw std::runtime_error("no renderer to write " + path);
       host_.exportPng(path);
     };
+    actions.foldedForm = host_.foldedForm;
     actions.resetView = [this] { doc_.core->resetView(); };
     actions.writeFile = host_.writeFile;
     actions.recentChanged = host_.recentChanged;

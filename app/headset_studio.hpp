@@ -33,6 +33,8 @@ namespace curvefold::cli {
 struct HeadsetStudioHost {
   // Renders the design to a PNG; null: PNG export says there is no renderer.
   std::function<void(const std::string& path)> exportPng;
+  // The folded form as a picture for the PDF's cover; null: the PDF goes without it.
+  std::function<std::optional<PdfPicture>()> foldedForm;
   // The document is about to be replaced (the old one is still there).
   std::function<void(const std::string& name)> documentReplacing;
   // The document was replaced (a new sheet, an opened design): drop what was made from the old.

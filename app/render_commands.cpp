@@ -19,6 +19,7 @@
 #include "app/interaction_scene.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/print/crease_pattern_pdf.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
@@ -192,6 +193,24 @@ std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& record
 
 void commitReplayFrames(ReplayFrameWriter& writer) {
   writer.commit();
+}
+
+bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture) {
+  try {
+    HeadlessOptions options;
+    options.width = 1200;
+    options.height = 800;
+    HeadlessRenderer renderer(options);
+    const RgbaImage image = renderer.render(
+        sceneForSheet(sheet, ViewPreset::Iso, float(options.width) / float(options.height), false));
+    checkValidation(renderer.context());
+    picture = {image.width, image.height, image.pixels};
+    return true;
+  } catch (const std::exception& e) {
+    std::cerr << "curvefold: the PDF goes without the picture of the folded form: " << e.what()
+              << "\n";
+    return false;
+  }
 }
 
 void addRenderCommand(CLI::App& app) {

@@ -241,6 +241,20 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   if (button("glTF")) exportAs(".glb", [&](const std::string& to) { writeGlb(fixed, to); });
   ImGui::SameLine();
   if (button("PNG")) exportAs(".png", [&](const std::string& to) { actions.exportPng(to); });
+  // On a line of its own: the headset's panel is no wider than the row above.
+  if (button("PDF")) {
+    // To print at real size on A4, after a cover with the folded form and the facts.
+    const Design design = doc.design();
+    PdfOptions print;
+    print.title = std::filesystem::path(base).filename().string();
+    print.facts = {
+        "surface: " + surfaceName(design) + (design.symmetry.empty() ? "" : ", " + design.symmetry),
+        "folds: " + std::to_string(design.folds.size())};
+    exportAs(".pdf", [&](const std::string& to) {
+      if (actions.foldedForm) print.picture = actions.foldedForm();
+      writeCreasePatternPdf(fixed, to, print);
+    });
+  }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::Separator();
   // The isometry error walks every edge: measured again only when the committed sheet changes.

@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/document.hpp"
+#include "engine/print/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
 namespace curvefold::cli {
@@ -34,6 +35,8 @@ struct StudioActions {
   // Without it (null), the panel writes.
   std::function<void(const std::string& path, const std::function<void(const std::string&)>& write)>
       writeFile;
+  // Optional: the folded form as a picture, for the cover of the PDF (without it, none there).
+  std::function<std::optional<PdfPicture>()> foldedForm;
   // Optional: the recent designs changed (a design was saved or opened): the host keeps the list.
   std::function<void(const std::vector<std::string>& recent)> recentChanged;
 };

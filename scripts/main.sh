@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The main job: installs what is needed, builds, and replays the bundled example recordings
-# (two-handed sessions on the paper's Figure 5 surfaces, and a desktop one) headlessly into a
-# gallery: per example the design, FOLD, SVG crease pattern, OBJ, the per-fold log, the checked
-# invariants and a rendered picture (the symmetric designs too: a 6-fold crown vessel and
-# mirrored wave pleats) (Vulkan, headless: lavapipe without a GPU). Then one example
+# (two-handed sessions on the paper's Figure 5 surfaces, a desktop one, and two symmetric designs:
+# a 6-fold crown vessel and mirrored wave pleats) headlessly into a gallery: per example the
+# design, FOLD, SVG crease pattern, the PDF to print, OBJ, the per-fold log, the checked
+# invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
 # again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
 # last images, and the headset studio session (xr_studio) with its panel's exports, with
 # controllers and with bare hands.
@@ -26,6 +26,8 @@ for recording in examples/recordings/*.jsonl; do
   build/app/curvefold check "$out/$name/$name.curvefold.json" "${allow[@]}" \
     >"$out/$name/check.txt" ||
     { cat "$out/$name/check.txt" >&2; exit 1; }
+  build/app/curvefold export "$out/$name/$name.curvefold.json" --pdf "$out/$name/$name.pdf" \
+    >/dev/null
   build/app/curvefold render "$out/$name/$name.curvefold.json" --png "$out/$name/$name.png" \
     --size 1280x720 --view iso --crease-pattern-panel
 done

@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
+  # the printable crease pattern (PDF)
+  libcairo2-dev
   # sanitizer build and fuzzers: clang with its runtime libraries (libFuzzer, ASan, UBSan)
   clang libclang-rt-14-dev
   # renderer and desktop window: Vulkan with Mesa's lavapipe and the Khronos validation layer,

@@ -103,6 +103,24 @@ TEST_F(Cli, NewFoldExportCheck) {
             0);
 }
 
+// Issue 18, 1: `export --pdf` prints the crease pattern: letter pages at real size (a 15 cm square
+// fits one: a cover and one tile), or fit; a paper size it does not know is refused in one line
+// and nothing is written.
+TEST_F(Cli, ExportWritesAPdfToPrint) {
+  const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
+  CommandResult r =
+      run("export " + design + " --pdf " + path("a.pdf").string() + " --paper letter --angles");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string pdf = slurp(path("a.pdf"));
+  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  EXPECT_NE(pdf.find("/MediaBox [ 0 0 612 792 ]"), std::string::npos);
+  EXPECT_NE(pdf.find("/Count 2"), std::string::npos);
+  r = run("export " + design + " --pdf " + path("b.pdf").string() + " --paper fit");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectFailure("export " + design + " --pdf " + path("c.pdf").string() + " --paper a5", "--paper",
+                path("c.pdf"));
+}
+
 TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {
   const std::string design = newDesign("square --resolution 8", "a.curvefold.json");
   // The square is centred on the origin in z = 0: its surface point nearest (0,0,1) is (0,0,0).

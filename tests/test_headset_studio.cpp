@@ -47,8 +47,8 @@ HeadsetStudioOptions optionsFor(const RecordingHeader& header) {
 
 // The example studio session: its script records to exactly the checked-in recording, which,
 // through the panel alone, makes a new cone, folds it at least three times, scales it with both
-// hands, and exports FOLD and SVG; every fold keeps the invariants, and the replay command's
-// studio replay makes the same design.
+// hands, and exports FOLD, SVG, PNG and the PDF to print; every fold keeps the invariants, and the
+// replay command's studio replay makes the same design.
 TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
   const Recording made =
       recordGestureScript(kExamples / "scripts" / "xr_studio.gesture.json", studioGestureWorld());
@@ -84,7 +84,7 @@ TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
   EXPECT_GE(design.folds.size(), 3u);
   EXPECT_GT(largestScale, 1.3);  // the script spreads the hands to 1.5
   EXPECT_EQ(log.written, (std::vector<std::string>{"exports/cone.fold", "exports/cone.svg",
-                                                   "exports/cone.png"}));
+                                                   "exports/cone.png", "exports/cone.pdf"}));
 
   const ReplayResult replayed = replayStudioRecording(stored);
   EXPECT_EQ(designText(replayed.design), designText(design));

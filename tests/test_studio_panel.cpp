@@ -104,6 +104,34 @@ TEST_F(StudioPanelTest, ExportsWriteBesideTheExportBaseAndFailuresAreShown) {
   click("PNG");  // the host cannot: its message is shown, nothing is written
   EXPECT_EQ(panel_.message(), "no renderer here");
   EXPECT_FALSE(fs::exists(base + ".png"));
+  // The PDF to print, with the host's picture of the folded form on its cover.
+  int pictures = 0;
+  actions_.foldedForm = [&pictures]() -> std::optional<PdfPicture> {
+    ++pictures;
+    return PdfPicture{2, 2, std::vector<std::uint8_t>(16, 128)};
+  };
+  click("PDF");
+  EXPECT_EQ(panel_.message(), "wrote " + base + ".pdf");
+  EXPECT_EQ(pictures, 1);
+  ASSERT_TRUE(fs::exists(base + ".pdf"));
+  EXPECT_GT(fs::file_size(base + ".pdf"), 1000u);
+}
+
+// The symmetry list holds what the chosen surface has (the square: none), and a new sheet takes
+// the one chosen.
+TEST_F(StudioPanelTest, TheSymmetryListHoldsTheSurfacesOwn) {
+  click("symmetry");
+  EXPECT_TRUE(panel_.itemCentre("none"));
+  EXPECT_FALSE(panel_.itemCentre("mirror:x"));  // the square's triangles are not symmetric
+  click("none");
+  click("surface");
+  click("cylinder");
+  click("symmetry");
+  EXPECT_TRUE(panel_.itemCentre("rotational:12:y"));
+  click("mirror:y");
+  click("Create");
+  ASSERT_EQ(replaced_.size(), 1u);
+  EXPECT_EQ(panel_.message(), "new cylinder, mirror:y");
 }
 
 TEST_F(StudioPanelTest, ARecordedSessionOffersNoNewSheetOrOpen) {

@@ -295,6 +295,13 @@ void runDesigner(const DesignerOptions& options) {
         [&](const Design& next, const std::string& name) { replaceDocument(next, name); },
         [&](Button button) { state.input.pulse(button); },
         [&](const std::string& path) { exportPng(context, lastScene, target.extent(), path); }};
+    actions.foldedForm = [&]() -> std::optional<PdfPicture> {
+      const RgbaImage image = renderSceneOnce(
+          context,
+          sceneForSheet(doc.session->fixed(), ViewPreset::Iso, 1.5f, /*creasePatternPanel=*/false),
+          {1200, 800});
+      return PdfPicture{image.width, image.height, image.pixels};
+    };
     actions.recentChanged = [&panel](const std::vector<std::string>& recent) {
       try {
         saveRecentDesigns(recent);

@@ -156,6 +156,15 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
       writeFileAtomically(path,
                           encodePng(renderSceneOnce(*graphics_->context(), picture, {1280, 720})));
     };
+  if (graphics_)
+    host.foldedForm = [this]() -> std::optional<PdfPicture> {
+      if (!graphics_->context()) return std::nullopt;
+      const RgbaImage image = renderSceneOnce(
+          *graphics_->context(),
+          sceneForSheet(doc_.session->fixed(), ViewPreset::Iso, 1.5f, /*creasePatternPanel=*/false),
+          {1200, 800});
+      return PdfPicture{image.width, image.height, image.pixels};
+    };
   host.recentChanged = [](const std::vector<std::string>& recent) {
     try {
       saveRecentDesigns(recent);
