@@ -20,6 +20,7 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/io/cutter_svg.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
@@ -226,9 +227,10 @@ void addFoldCommand(CLI::App& app) {
 
 void addExportCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
-      "export", "Write the folded design as FOLD, SVG crease pattern, PDF, OBJ and/or glTF");
+      "export",
+      "Write the folded design as FOLD, SVG crease pattern, cutter SVG, PDF, OBJ and/or glTF");
   struct Options {
-    std::string design, fold, svg, pdf, paper = "a4", obj, gltf;
+    std::string design, fold, svg, cutSvg, perforate, pdf, paper = "a4", obj, gltf;
     bool angles = false;
   };
   auto options = std::make_shared<Options>();
@@ -236,6 +238,13 @@ void addExportCommand(CLI::App& app) {
   CLI::Option* fold = command->add_option("--fold", options->fold, "FOLD 1.2 file (.fold)");
   CLI::Option* svg =
       command->add_option("--svg", options->svg, "SVG crease pattern at real size (.svg)");
+  CLI::Option* cutSvg = command->add_option(
+      "--cut-svg", options->cutSvg,
+      "SVG for laser cutters and cutting plotters: layers cut (red), mountain score (blue), "
+      "valley score (green), in mm");
+  command->add_option("--perforate", options->perforate,
+                      "With --cut-svg: CUT,GAP in mm: the scores become cuts of CUT with GAP "
+                      "between, to fold by hand");
   CLI::Option* pdf = command->add_option(
       "--pdf", options->pdf,
       "PDF to print: the crease pattern at real size, tiled across pages, after a cover page");
@@ -246,9 +255,23 @@ void addExportCommand(CLI::App& app) {
   command->add_flag("--angles", options->angles, "With --pdf: label each crease with its angle");
   CLI::Option* obj = command->add_option("--obj", options->obj, "OBJ with the development as vt");
   CLI::Option* gltf = command->add_option("--gltf", options->gltf, "glTF 2.0 binary (.glb)");
-  command->callback([options, fold, svg, pdf, obj, gltf] {
-    if (fold->count() + svg->count() + pdf->count() + obj->count() + gltf->count() == 0)
-      throw UsageError("export: name at least one of --fold, --svg, --pdf, --obj, --gltf");
+  command->callback([options, fold, svg, cutSvg, pdf, obj, gltf] {
+    if (fold->count() + svg->count() + cutSvg->count() + pdf->count() + obj->count() +
+            gltf->count() ==
+        0)
+      throw UsageError(
+          "export: name at least one of --fold, --svg, --cut-svg, --pdf, --obj, --gltf");
+    std::optional<Perforation> perforation;
+    if (!options->perforate.empty()) {
+      Perforation p;
+      char end = 0;
+      if (std::sscanf(options->perforate.c_str(), "%lf,%lf%c", &p.cutMm, &p.gapMm, &end) != 2 ||
+          !(p.cutMm > 0.0) || !(p.gapMm > 0.0) || !std::isfinite(p.cutMm) ||
+          !std::isfinite(p.gapMm))
+        throw UsageError("--perforate: expected CUT,GAP in millimetres, both positive, got '" +
+                         options->perforate + "'");
+      perforation = p;
+    }
     const Design design = loadDesign(options->design);
     const Sheet sheet = buildSheetCached(design, options->design);
     PdfOptions print;
@@ -267,15 +290,18 @@ void addExportCommand(CLI::App& app) {
     if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });
     if (svg->count())
       outputs.add(options->svg, [&](const auto& at) { writeSvgCreasePattern(sheet, at); });
+    if (cutSvg->count())
+      outputs.add(options->cutSvg, [&](const auto& at) { writeCutterSvg(sheet, at, perforation); });
     if (pdf->count())
       outputs.add(options->pdf, [&](const auto& at) { writeCreasePatternPdf(sheet, at, print); });
     if (obj->count()) outputs.add(options->obj, [&](const auto& at) { writeObj(sheet, at); });
     if (gltf->count()) outputs.add(options->gltf, [&](const auto& at) { writeGlb(sheet, at); });
     outputs.write();
-    for (const std::string* path :
-         {&options->fold, &options->svg, &options->pdf, &options->obj, &options->gltf})
+    for (const std::string* path : {&options->fold, &options->svg, &options->cutSvg, &options->pdf,
+                                    &options->obj, &options->gltf})
       if (!path->empty())
-        statusFor({options->fold, options->svg, options->pdf, options->obj, options->gltf})
+        statusFor({options->fold, options->svg, options->cutSvg, options->pdf, options->obj,
+                   options->gltf})
             << "wrote " << *path << "\n";
   });
 }

@@ -103,22 +103,26 @@ TEST_F(Cli, NewFoldExportCheck) {
             0);
 }
 
-// Issue 18, 1: `export --pdf` prints the crease pattern: letter pages at real size (a 15 cm square
-// fits one: a cover and one tile), or fit; a paper size it does not know is refused in one line
-// and nothing is written.
-TEST_F(Cli, ExportWritesAPdfToPrint) {
+// Issue 18, 1: a paper size `export --pdf` does not know is refused in one line and nothing is
+// written (test_render_cli writes PDFs: they render the folded form).
+TEST_F(Cli, ExportRefusesAnUnknownPaper) {
   const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
-  CommandResult r =
-      run("export " + design + " --pdf " + path("a.pdf").string() + " --paper letter --angles");
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string pdf = slurp(path("a.pdf"));
-  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
-  EXPECT_NE(pdf.find("/MediaBox [ 0 0 612 792 ]"), std::string::npos);
-  EXPECT_NE(pdf.find("/Count 2"), std::string::npos);
-  r = run("export " + design + " --pdf " + path("b.pdf").string() + " --paper fit");
-  ASSERT_EQ(r.exitCode, 0) << r.err;
   expectFailure("export " + design + " --pdf " + path("c.pdf").string() + " --paper a5", "--paper",
                 path("c.pdf"));
+}
+
+// Issue 18, 2: `export --cut-svg` writes the cutter's layers, perforated when asked; a perforation
+// that is not two positive lengths is refused in one line and nothing is written.
+TEST_F(Cli, ExportWritesACutterSvg) {
+  const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
+  CommandResult r =
+      run("export " + design + " --cut-svg " + path("cut.svg").string() + " --perforate 3,1.5");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(slurp(path("cut.svg")).find("inkscape:label=\"valley score\""), std::string::npos);
+  for (const char* wrong : {"3", "3,0", "a,b", "3,1.5,2", "-1,2"})
+    expectFailure(
+        "export " + design + " --cut-svg " + path("bad.svg").string() + " --perforate " + wrong,
+        "--perforate", path("bad.svg"));
 }
 
 TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {

@@ -113,6 +113,30 @@ TEST_F(RenderCli, WithoutAVulkanDriverFailsWithOneLineAndNoPng) {
                 "Vulkan", noDriver);
 }
 
+// Issue 18, 1: `export --pdf` prints the crease pattern after a cover with the folded form (a 15 cm
+// square fits one letter page at real size: two pages), or fit to one page; without a Vulkan
+// driver the PDF is still written, without the picture, and stderr says so in one line.
+TEST_F(RenderCli, ExportWritesAPdfToPrint) {
+  ASSERT_EQ(run("new square --size 0.15 -o " + path("a.curvefold.json").string()).exitCode, 0);
+  const std::string design = path("a.curvefold.json").string();
+  CommandResult r =
+      run("export " + design + " --pdf " + path("a.pdf").string() + " --paper letter --angles");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const std::string pdf = slurp(path("a.pdf"));
+  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  EXPECT_NE(pdf.find("/MediaBox [ 0 0 612 792 ]"), std::string::npos);
+  EXPECT_NE(pdf.find("/Count 2"), std::string::npos);
+  EXPECT_NE(pdf.find("/Subtype /Image"), std::string::npos);  // the folded form
+  const std::string noDriver = "VK_ICD_FILENAMES=" + path("none.json").string() +
+                               " VK_DRIVER_FILES=" + path("none.json").string();
+  r = run("export " + design + " --pdf " + path("b.pdf").string() + " --paper fit", noDriver);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("without the picture"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(path("b.pdf")).find("/Subtype /Image"), std::string::npos);
+}
+
 TEST_F(RenderCli, ReplayWritesAFrameEveryNFrames) {
   const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
   const CommandResult r = run("replay " + recording + " --out " + path("out").string() +

@@ -43,15 +43,20 @@ std::size_t sheetBytes(const Sheet& sheet) {
          sheet.triangles.capacity() * sizeof(Triangle) + sheet.tags.capacity() * sizeof(TaggedEdge);
 }
 
-double sheetSize(const Sheet& sheet) {
-  if (sheet.development.empty()) return 0.0;
-  glm::dvec2 lo(std::numeric_limits<double>::infinity());
-  glm::dvec2 hi(-std::numeric_limits<double>::infinity());
+DevelopmentBounds developmentBounds(const Sheet& sheet) {
+  if (sheet.development.empty()) return {};
+  DevelopmentBounds bounds{glm::dvec2(std::numeric_limits<double>::infinity()),
+                           glm::dvec2(-std::numeric_limits<double>::infinity())};
   for (const glm::dvec2& p : sheet.development) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+    bounds.low = glm::min(bounds.low, p);
+    bounds.high = glm::max(bounds.high, p);
   }
-  const glm::dvec2 extent = hi - lo;
+  return bounds;
+}
+
+double sheetSize(const Sheet& sheet) {
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  const glm::dvec2 extent = bounds.high - bounds.low;
   return std::sqrt(extent.x * extent.x + extent.y * extent.y);
 }
 

@@ -101,6 +101,12 @@ bool identical(const Sheet& a, const Sheet& b);
 // Bytes the sheet's arrays hold (their capacity), for memory accounting.
 std::size_t sheetBytes(const Sheet& sheet);
 
+// The development's bounding box (both corners 0 for an empty sheet).
+struct DevelopmentBounds {
+  glm::dvec2 low{0.0}, high{0.0};
+};
+DevelopmentBounds developmentBounds(const Sheet& sheet);
+
 // Diagonal of the development's bounding box: the sheet's size, invariant under folding.
 double sheetSize(const Sheet& sheet);
 

@@ -39,13 +39,8 @@ void writeSvgCreasePattern(const Sheet& sheet, const std::filesystem::path& path
   if (!(options.strokeWidthMm > 0.0))
     throw std::invalid_argument("SVG stroke width must be positive");
 
-  glm::dvec2 lo(std::numeric_limits<double>::infinity());
-  glm::dvec2 hi(-std::numeric_limits<double>::infinity());
-  for (const glm::dvec2& p : sheet.development) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  if (sheet.development.empty()) lo = hi = glm::dvec2(0.0);
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  const glm::dvec2 lo = bounds.low, hi = bounds.high;
   const double width = (hi.x - lo.x) * kMmPerMetre + 2.0 * options.marginMm;
   const double height = (hi.y - lo.y) * kMmPerMetre + 2.0 * options.marginMm;
   // SVG's y axis points down while the development's points up: flip y, or the print would be

@@ -46,12 +46,9 @@ Pattern patternOf(const Sheet& sheet, bool angles) {
   Pattern pattern;
   if (sheet.development.empty())
     throw std::invalid_argument("the sheet is empty: nothing to print");
-  pattern.low = glm::dvec2(std::numeric_limits<double>::infinity());
-  pattern.high = -pattern.low;
-  for (const glm::dvec2& p : sheet.development) {
-    pattern.low = glm::min(pattern.low, p);
-    pattern.high = glm::max(pattern.high, p);
-  }
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  pattern.low = bounds.low;
+  pattern.high = bounds.high;
   const EdgeTopology topology = buildEdgeTopology(sheet);
   for (const EdgeTopology::EdgeSides& sides : topology.edges) {
     const double angle = foldAngleDegrees(sheet, sides);

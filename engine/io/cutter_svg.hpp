@@ -1,0 +1,46 @@
+// The crease pattern for laser cutters and cutting plotters (issue 18, 2; docs/design.md 4): real
+// millimetres, hairline strokes, one Inkscape layer each for the cut (boundary, slits, holes), the
+// mountain scores and the valley scores, in a colour per layer that the machines' software maps
+// to an operation (LightBurn layers, Glowforge steps, a plotter's pens). Lines are joined into
+// polylines, so a machine follows a crease without lifting. Perforation turns the scores into
+// cuts of a given length with gaps between, for folding by hand without a scoring tool.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+struct Perforation {
+  double cutMm = 0.0;  // each cut
+  double gapMm = 0.0;  // paper left between cuts
+};
+
+// One layer: its name, its colour ("#rrggbb") and its polylines (millimetres, y down).
+struct CutterLayer {
+  std::string name;
+  std::string colour;
+  std::vector<std::vector<glm::dvec2>> polylines;
+};
+
+// The layers in order: "cut" red, "mountain score" blue, "valley score" green. With perforation
+// the two score layers hold the dashes (each a two-point polyline).
+std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
+                                      const std::optional<Perforation>& perforation = {});
+
+// Writes them as SVG, atomically. Throws std::invalid_argument for a perforation whose cut or gap
+// is not positive (and finite), FileError when the file cannot be written.
+void writeCutterSvg(const Sheet& sheet, const std::filesystem::path& path,
+                    const std::optional<Perforation>& perforation = {});
+
+// The stroke width: a hairline (0.01 mm), which cutters read as "follow this line" rather than
+// "engrave this area".
+inline constexpr double kHairlineMm = 0.01;
+
+}  // namespace curvefold
