@@ -168,6 +168,19 @@ TEST_F(FoldFormat, KeyFrameIsTheCreasePatternAndFrameZeroTheFoldedForm) {
 
   ASSERT_EQ(fold["file_frames"].size(), 1u);
   const auto& folded = fold["file_frames"][0];
+  // Issue 18, 4: the folded form keeps every edge's measured dihedral, bends included (the 10
+  // degree bend is F with fold angle 0 above), in the FOLD convention's sign.
+  const auto& bends = folded["curvefold:edges_bendAngle"];
+  ASSERT_EQ(bends.size(), edges.size());
+  for (const EdgeTopology::EdgeSides& sides : topology.edges) {
+    const std::size_t e = edgeIndex.at(sides.edge);
+    EXPECT_EQ(bends[e].get<double>(), foldAngleDegrees(sheet, sides));
+    if (assignments[e] == "M" || assignments[e] == "V") {
+      EXPECT_EQ(bends[e], angles[e]);
+    }
+  }
+  EXPECT_NEAR(std::abs(bends[edgeIndex.at(Edge::of(6, 7))].get<double>()), 10.0, 1e-9);
+  EXPECT_EQ(angles[edgeIndex.at(Edge::of(6, 7))].get<double>(), 0.0);
   EXPECT_EQ(folded["frame_classes"], nlohmann::json({"foldedForm"}));
   EXPECT_EQ(folded["frame_attributes"], nlohmann::json({"3D"}));
   EXPECT_EQ(folded["frame_parent"], 0);

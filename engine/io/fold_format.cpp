@@ -23,6 +23,7 @@ json foldJson(const Sheet& sheet) {
   json edgesVertices = json::array();
   json assignments = json::array();
   json foldAngles = json::array();
+  json bendAngles = json::array();
   for (const EdgeTopology::EdgeSides& sides : topology.edges) {
     edgesVertices.push_back({sides.edge.a, sides.edge.b});
     const double angle = foldAngleDegrees(sheet, sides);
@@ -31,6 +32,9 @@ json foldJson(const Sheet& sheet) {
     // FOLD: the angle is zero for flat, unassigned and boundary edges; bending shows in 3D only.
     const bool folded = assignment == Assignment::Mountain || assignment == Assignment::Valley;
     foldAngles.push_back(folded ? angle : 0.0);
+    // The measured dihedral of every edge in the folded form, bends included: what a consumer
+    // that folds from angles alone needs to reach this shape (README, "FOLD").
+    bendAngles.push_back(angle);
   }
 
   json faces = json::array();
@@ -46,7 +50,8 @@ json foldJson(const Sheet& sheet) {
                  {"frame_attributes", {"3D"}},
                  {"frame_parent", 0},
                  {"frame_inherit", true},
-                 {"vertices_coords", std::move(coords3d)}};
+                 {"vertices_coords", std::move(coords3d)},
+                 {"curvefold:edges_bendAngle", std::move(bendAngles)}};
 
   return {{"file_spec", 1.2},
           {"file_creator", "curvefold"},
