@@ -279,6 +279,9 @@ TEST(Gestures, BadScriptsNameTheProblem) {
               "gesture 1 (drag): point (1e+155, 0, 0) lies too far from the sheet");
   expectError(head + R"("gestures":[{"drag":{"grab":[0,0,0],"to":[1e300,0,0]}}]})",
               "gesture 1 (drag): drag point (1e+300, 0, 0) lies too far from the sheet");
+  // A symmetry the surface lacks, or one that is not a string (issue 17): named in one line.
+  expectError(head + R"("symmetry":"rotational:4","gestures":[]})", "symmetry");
+  expectError(head + R"("symmetry":6,"gestures":[]})", "symmetry");
   // A value nested a million deep is quoted by an excerpt, not dumped recursively (A1).
   std::string deep = R"({"format":)";
   deep.append(1'000'000, '[').append(1'000'000, ']').append("}");
