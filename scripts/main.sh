@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: installs what is needed, builds, and replays the bundled example recordings
 # (two-handed sessions on the paper's Figure 5 surfaces, a desktop one, and two symmetric designs:
-# a 6-fold crown vessel and mirrored wave pleats) headlessly into a gallery: per example the
+# a 6-fold crown vessel and mirrored wave pleats) and the showcase's nine rich designs headlessly
+# into a gallery: per example the
 # design, FOLD, SVG crease pattern, the PDF to print, OBJ, the per-fold log, the checked
 # invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
 # again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
@@ -15,7 +16,9 @@ scripts/setup.sh
 scripts/build.sh
 mkdir -p "$out"
 self_intersecting="cone half_cylinder helix_tangent swept_curve xr_studio"
-for recording in examples/recordings/*.jsonl; do
+# examples/showcase/: nine rich designs (8 folds or more each, every initial surface kind with
+# the symmetric examples), each must pass the whole check too.
+for recording in examples/recordings/*.jsonl examples/showcase/recordings/*.jsonl; do
   name="$(basename "$recording" .jsonl)"
   build/app/curvefold replay "$recording" --out "$out/$name"
   # The sessions recorded before self-intersections were checked pass the paper through itself

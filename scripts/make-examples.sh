@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Regenerates the example recordings from their gesture scripts:
+# Regenerates the example recordings (examples/recordings, and the showcase's in
+# examples/showcase/recordings) from their gesture scripts:
 #   scripts/make-examples.sh [CURVEFOLD]   (default build/app/curvefold)
-# A test checks that the recordings in examples/recordings match their scripts.
+# A test checks that the recordings match their scripts.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 curvefold="${1:-build/app/curvefold}"
-for script in examples/scripts/*.gesture.json; do
-  name="$(basename "$script" .gesture.json)"
-  "$curvefold" record-script "$script" -o "examples/recordings/$name.jsonl"
+for dir in examples examples/showcase; do
+  for script in "$dir"/scripts/*.gesture.json; do
+    name="$(basename "$script" .gesture.json)"
+    "$curvefold" record-script "$script" -o "$dir/recordings/$name.jsonl"
+  done
 done

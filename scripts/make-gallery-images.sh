@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates the README's gallery: each example recording replayed and rendered (iso view with
-# the crease-pattern panel) into docs/gallery/<name>.png.
+# the crease-pattern panel) into docs/gallery/<name>.png, the showcase's among them.
 #   scripts/make-gallery-images.sh [CURVEFOLD]   (default build/app/curvefold)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 curvefold="${1:-build/app/curvefold}"
 mkdir -p docs/gallery
-for recording in examples/recordings/*.jsonl; do
+for recording in examples/recordings/*.jsonl examples/showcase/recordings/*.jsonl; do
   name="$(basename "$recording" .jsonl)"
   "$curvefold" render "$recording" --png "docs/gallery/$name.png" --size 800x450 --view iso \
     --crease-pattern-panel
