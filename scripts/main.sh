@@ -34,6 +34,9 @@ for recording in examples/recordings/*.jsonl examples/showcase/recordings/*.json
   build/app/curvefold render "$out/$name/$name.curvefold.json" --png "$out/$name/$name.png" \
     --size 1280x720 --view iso --crease-pattern-panel
 done
+# One showcase session as an animated picture: folding happens before a line is read.
+scripts/make-animation.sh examples/showcase/recordings/wave_chevrons.jsonl \
+  "$out/wave_chevrons/wave_chevrons.gif"
 xr="$out/star-xr"
 mkdir -p "$xr"
 rm -f "$xr/star-xr.jsonl"  # a recording is never overwritten

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the README's gallery: each example recording replayed and rendered (iso view with
-# the crease-pattern panel) into docs/gallery/<name>.png, the showcase's among them.
+# the crease-pattern panel) into docs/gallery/<name>.png, the showcase's among them, and the
+# README's animated picture, docs/gallery/wave_chevrons.gif.
 #   scripts/make-gallery-images.sh [CURVEFOLD]   (default build/app/curvefold)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,3 +12,5 @@ for recording in examples/recordings/*.jsonl examples/showcase/recordings/*.json
   "$curvefold" render "$recording" --png "docs/gallery/$name.png" --size 800x450 --view iso \
     --crease-pattern-panel
 done
+scripts/make-animation.sh examples/showcase/recordings/wave_chevrons.jsonl \
+  docs/gallery/wave_chevrons.gif "$curvefold"

@@ -13,6 +13,8 @@ packages=(
   clang-format
   # the printable crease pattern (PDF)
   libcairo2-dev
+  # the main job's animated picture of a replay (GIF)
+  imagemagick
   # sanitizer build and fuzzers: clang with its runtime libraries (libFuzzer, ASan, UBSan)
   clang libclang-rt-14-dev
   # renderer and desktop window: Vulkan with Mesa's lavapipe and the Khronos validation layer,
