@@ -13,7 +13,12 @@ part="$(mktemp "$gif.XXXXXX")"  # beside the target, so that the rename is atomi
 trap 'rm -rf "$work" "$part"' EXIT
 "$curvefold" replay "$recording" --out "$work/design" --frames "$work/frames" --every 6 \
   --size 560x315 --crease-pattern-panel >/dev/null
-# By its package's name: a `convert` earlier in PATH may be something else.
-convert-im6.q16 -delay 10 -loop 0 "$work"/frames/frame_*.png -layers Optimize "GIF:$part"
+# Debian's by its package's name first: a `convert` earlier in PATH may be something else.
+encoder=""
+for candidate in convert-im6.q16 magick convert; do
+  if command -v "$candidate" >/dev/null; then encoder="$candidate"; break; fi
+done
+[ -n "$encoder" ] || { echo "make-animation: ImageMagick is not installed (scripts/setup.sh installs it)" >&2; exit 1; }
+"$encoder" -delay 10 -loop 0 "$work"/frames/frame_*.png -layers Optimize "GIF:$part"
 chmod a+r "$part"  # mktemp made it private
 mv "$part" "$gif"
