@@ -172,4 +172,74 @@ TEST_F(RenderCli, FailingFramesLeaveTheOutputsAsTheyWere) {
     EXPECT_EQ(entry.path().filename().string().find("staged"), std::string::npos) << entry.path();
 }
 
+// The number of images in a GIF and its logical screen size, read from its blocks; {0, 0, 0} when
+// it is not a whole GIF (no trailer).
+struct GifFacts {
+  std::size_t images = 0;
+  unsigned width = 0, height = 0;
+};
+GifFacts gifFacts(const std::string& bytes) {
+  if (bytes.size() < 13 || bytes.compare(0, 6, "GIF89a") != 0) return {};
+  auto u8 = [&](std::size_t at) { return at < bytes.size() ? std::uint8_t(bytes[at]) : 0u; };
+  auto le16 = [&](std::size_t at) { return unsigned(u8(at)) | unsigned(u8(at + 1)) << 8; };
+  auto colorTable = [&](std::uint8_t flags) {
+    return (flags & 0x80) ? std::size_t(3) << ((flags & 7) + 1) : std::size_t(0);
+  };
+  auto skipSubBlocks = [&](std::size_t at) {
+    while (at < bytes.size() && u8(at) != 0) at += u8(at) + 1;
+    return at + 1;
+  };
+  GifFacts facts{0, le16(6), le16(8)};
+  std::size_t at = 13 + colorTable(u8(10));
+  while (at < bytes.size()) {
+    const std::uint8_t block = u8(at);
+    if (block == 0x3b) return facts;  // the trailer: a whole file
+    if (block == 0x21) {
+      at = skipSubBlocks(at + 2);
+    } else if (block == 0x2c) {
+      ++facts.images;
+      at = skipSubBlocks(at + 10 + colorTable(u8(at + 9)) + 1);
+    } else {
+      break;
+    }
+  }
+  return {};
+}
+
+// Issue 18, 3: scripts/make-animation.sh makes the README's animated picture of a replay: a whole
+// GIF of 560 x 315 with one image per rendered frame (every 6th), encoded by ImageMagick; a bad
+// recording is one line and leaves nothing behind.
+TEST_F(RenderCli, MakeAnimationWritesAGifOfTheReplay) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  auto makeAnimation = [&](const std::string& input, const std::string& gif) {
+    const fs::path out = path(".stdout"), err = path(".stderr");
+    const std::string command = "cd " + dir_.string() + " && CURVEFOLD_VK_VALIDATION=1 bash " +
+                                CURVEFOLD_SOURCE_DIR + "/scripts/make-animation.sh " + input + " " +
+                                gif + " " + CURVEFOLD_BINARY + " >" + out.string() + " 2>" +
+                                err.string();
+    const int status = std::system(command.c_str());
+    return CommandResult{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  };
+  const CommandResult made = makeAnimation(recording, "session.gif");
+  ASSERT_EQ(made.exitCode, 0) << made.err;
+  ASSERT_EQ(run("replay " + recording + " --out " + path("design").string() + " --frames " +
+                path("frames").string() + " --every 6 --size 56x32")
+                .exitCode,
+            0);
+  const auto frames = std::distance(fs::directory_iterator(path("frames")), {});
+  const GifFacts gif = gifFacts(slurp(path("session.gif")));
+  EXPECT_EQ(gif.images, std::size_t(frames));
+  EXPECT_GE(gif.images, 2u);
+  EXPECT_EQ(gif.width, 560u);
+  EXPECT_EQ(gif.height, 315u);
+
+  const CommandResult bad = makeAnimation(path("missing.jsonl").string(), "bad.gif");
+  EXPECT_NE(bad.exitCode, 0);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_NE(bad.err.find("missing.jsonl"), std::string::npos) << bad.err;
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find("bad.gif"), std::string::npos)
+        << "left behind: " << entry.path();
+}
+
 }  // namespace
