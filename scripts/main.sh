@@ -2,9 +2,9 @@
 # The main job: installs what is needed, builds, and replays the bundled example recordings
 # (two-handed sessions on the paper's Figure 5 surfaces, a desktop one, and two symmetric designs:
 # a 6-fold crown vessel and mirrored wave pleats) and the showcase's nine rich designs headlessly
-# into a gallery: per example the
-# design, FOLD, SVG crease pattern, the PDF to print, OBJ, the per-fold log, the checked
-# invariants and a rendered picture (Vulkan, headless: lavapipe without a GPU). Then one example
+# into a gallery: per example the design, FOLD, SVG crease pattern, the PDF to print, OBJ, the
+# per-fold log, the checked invariants and a rendered picture (Vulkan, headless: lavapipe without
+# a GPU), and an animated GIF of one showcase session. Then one example
 # again through the OpenXR path (the Khronos loader and the simulated runtime), keeping both eyes'
 # last images, and the headset studio session (xr_studio) with its panel's exports, with
 # controllers and with bare hands.
