@@ -134,6 +134,37 @@ TEST(FoldSession, AGrabInAThinTriangleMakesNoSliver) {
   EXPECT_EQ(middle.fixed().vertexCount(), sheet.vertexCount() + 1);
 }
 
+// Found by fuzz_fold (its input is in fuzz/corpus/fold/narrow_strip_oblique_cut): a cylinder
+// strip 0.08 degrees around (66 micrometres wide, 21 cm long, six triangles), grabbed 10 nm from
+// its edge near a corner (a triangle 10 nm high and 21 cm long) and dragged far and obliquely, cut
+// that triangle 1.5 mm from its far corner into pieces 66 picometres high: under the degenerate
+// floor, and no plane shift within reach helps. The preview stays the unfolded sheet (never an
+// invalid one) and a commit there is refused with the reason.
+TEST(FoldSession, AnObliqueCutAcrossANarrowStripMakesNoSliver) {
+  const Sheet strip = makeSurface("cylinder", {{"angle", 0.083720748377963894}, {"resolution", 1}});
+  FoldSession session(strip);
+  session.beginDrag({1,
+                     {1.0 - 0.00045949875321976843 - 5.325616574754883e-06, 0.00045949875321976843,
+                      5.325616574754883e-06}});
+  const Sheet grabbed = session.fixed();
+  session.updateDrag({-0.16073013397838112, 0.10509449319014343, 0.17789703114591915});
+  const SheetReport report = measure(session.current());
+  EXPECT_EQ(report.firstProblem, "");
+  EXPECT_GE(report.minRelativeHeight, kRelativeFeatureSize);
+  EXPECT_TRUE(identical(session.current(), grabbed));
+  EXPECT_FALSE(session.hasPlane());
+  EXPECT_FALSE(session.commit());
+  EXPECT_NE(session.refusal().find("not kept"), std::string::npos) << session.refusal();
+  EXPECT_TRUE(identical(session.fixed(), strip));
+  // The same drag ending elsewhere folds as before.
+  session.beginDrag({1,
+                     {1.0 - 0.00045949875321976843 - 5.325616574754883e-06, 0.00045949875321976843,
+                      5.325616574754883e-06}});
+  session.updateDrag(session.grabbedPoint() + glm::dvec3(0.0, 0.05, 0.05));
+  EXPECT_TRUE(session.commit()) << session.refusal();
+  expectInvariants(session.fixed(), strip);
+}
+
 bool sameAdjacency(const SheetAdjacency& a, const SheetAdjacency& b) {
   return a.triangles.offsets == b.triangles.offsets &&
          a.triangles.triangles == b.triangles.triangles &&

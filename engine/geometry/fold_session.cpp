@@ -99,6 +99,7 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   // on-plane tolerance of much of the sheet and crease it everywhere (a target equal to the
   // grabbed point is a no-op, not an error).
   folded_ = glm::distance(target, grabbed_) > minimumDrag();
+  sliver_ = false;
   if (previewing_) ++previewRevision_;
   previewing_ = false;
   if (!folded_) {
@@ -108,6 +109,17 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   }
   plane_ = bisectorPlane(grabbed_, target);
   workspace_.reapply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
+  // A cut that leaves a piece under validate()'s floor even after the workspace's plane shifts (an
+  // oblique plane across a long, thin triangle, far from its corners) folds nothing at this
+  // target: the sheet stays as it is, never invalid, and a commit here is refused with the reason.
+  const double floor = ValidationOptions{}.relativeDegenerateHeight * (epsilon_ / kRelativeEpsilon);
+  if (workspace_.changes().thinnestCut < floor) {
+    folded_ = false;
+    sliver_ = true;
+    workspace_.restore(fixed_, temporal_);
+    workspace_.clear();
+    return workspace_.changes();
+  }
   if (previewFolder_) {
     preview_ = temporal_;
     previewReflected_ = workspace_.reflectedTriangles(fixedAdjacency_);
@@ -134,6 +146,10 @@ bool FoldSession::commit() {
   refusal_.clear();
   if (!dragging_) return false;
   if (!folded_) {
+    if (sliver_)
+      refusal_ =
+          "the fold was not kept: its plane cuts a piece thinner than the degenerate "
+          "floor from a thin triangle; a target a little away gives a sound fold";
     cancel();
     return false;
   }
@@ -244,6 +260,7 @@ void FoldSession::cancel() {
   }
   dragging_ = false;
   folded_ = false;
+  sliver_ = false;
   grabInserted_ = false;
 }
 

@@ -160,6 +160,7 @@ class FoldSession {
   // back on cancel) and temporal_ is fixed_ with the reflection applied.
   bool dragging_ = false;
   bool folded_ = false;
+  bool sliver_ = false;  // the last target's plane would cut a sliver: no fold there
   InsertionUndo grabUndo_;
   bool grabInserted_ = false;
   VertexIndex grabVertex_ = kNoIndex;
