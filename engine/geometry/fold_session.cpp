@@ -102,11 +102,14 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   sliver_ = false;
   if (previewing_) ++previewRevision_;
   previewing_ = false;
-  if (!folded_) {
+  // No fold at this target: the temporal sheet is the fixed one again.
+  auto unfolded = [&]() -> const ReflectionChanges& {
+    folded_ = false;
     workspace_.restore(fixed_, temporal_);
     workspace_.clear();
     return workspace_.changes();
-  }
+  };
+  if (!folded_) return unfolded();
   plane_ = bisectorPlane(grabbed_, target);
   workspace_.reapply(fixed_, fixedAdjacency_, grabVertex_, plane_, epsilon_, temporal_);
   // A cut that leaves a piece under validate()'s floor even after the workspace's plane shifts (an
@@ -114,11 +117,8 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
   // target: the sheet stays as it is, never invalid, and a commit here is refused with the reason.
   const double floor = ValidationOptions{}.relativeDegenerateHeight * (epsilon_ / kRelativeEpsilon);
   if (workspace_.changes().thinnestCut < floor) {
-    folded_ = false;
     sliver_ = true;
-    workspace_.restore(fixed_, temporal_);
-    workspace_.clear();
-    return workspace_.changes();
+    return unfolded();
   }
   if (previewFolder_) {
     preview_ = temporal_;
