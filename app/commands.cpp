@@ -102,53 +102,63 @@ void addSurfacesCommand(CLI::App& app) {
   });
 }
 
-void addNewCommand(CLI::App& app) {
-  CLI::App* command =
-      app.add_subcommand("new", "Start a design from an initial surface (or an OBJ file)");
-  struct Options {
-    std::string surface;
-    std::string output;
-    std::string symmetry;
-    std::map<std::string, double> values;
-  };
-  auto options = std::make_shared<Options>();
-  command->add_option("SURFACE", options->surface, "Surface name (see `surfaces`) or an .obj file")
-      ->required();
-  command->add_option("--symmetry", options->symmetry,
-                      "mirror:x|y|z or rotational:N[:x|y|z] through the surface's centre: every "
-                      "fold is followed by its images (see `surfaces`)");
-  command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
-      ->required();
+void addSurfaceOptions(CLI::App* command, SurfaceOptions& options) {
   // Every parameter of every surface is an option; makeSurface refuses one the chosen surface
   // does not have.
   std::map<std::string, std::string> help;
   for (const SurfaceInfo& surface : surfaceCatalog())
     for (const SurfaceParameter& p : surface.parameters) help.try_emplace(p.name, p.description);
   for (const auto& [name, description] : help)
-    command->add_option("--" + name, options->values[name], description);
+    command->add_option("--" + name, options.values[name], description);
+  command->add_option("--symmetry", options.symmetry,
+                      "mirror:x|y|z or rotational:N[:x|y|z] through the surface's centre: every "
+                      "fold is followed by its images (see `surfaces`)");
+}
+
+Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
+                                const std::string& nameForErrors) {
+  Design design;
+  if (std::filesystem::path(options.surface).extension() == ".obj") {
+    for (const auto& [name, value] : options.values)
+      if (command->get_option("--" + name)->count() > 0)
+        throw UsageError("--" + name + " does not apply to an OBJ surface");
+    design.surface = readObjSurface(options.surface);
+  } else {
+    GeneratedSurface generated{options.surface, {}};
+    for (const auto& [name, value] : options.values)
+      if (command->get_option("--" + name)->count() > 0) generated.parameters[name] = value;
+    makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
+    design.surface = generated;
+  }
+  if (!options.symmetry.empty()) {
+    try {
+      design.symmetry = parseSymmetry(options.symmetry, initialSheet(design, nameForErrors)).name();
+    } catch (const InvalidSymmetry& e) {
+      throw UsageError(e.what());
+    }
+  }
+  return design;
+}
+
+void addNewCommand(CLI::App& app) {
+  CLI::App* command =
+      app.add_subcommand("new", "Start a design from an initial surface (or an OBJ file)");
+  struct Options {
+    SurfaceOptions surface;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  command
+      ->add_option("SURFACE", options->surface.surface,
+                   "Surface name (see `surfaces`) or an .obj file")
+      ->required();
+  command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
+      ->required();
+  addSurfaceOptions(command, options->surface);
 
   command->callback([options, command] {
-    Design design;
-    if (std::filesystem::path(options->surface).extension() == ".obj") {
-      for (const auto& [name, value] : options->values)
-        if (command->get_option("--" + name)->count() > 0)
-          throw UsageError("--" + name + " does not apply to an OBJ surface");
-      design.surface = readObjSurface(options->surface);
-    } else {
-      GeneratedSurface generated{options->surface, {}};
-      for (const auto& [name, value] : options->values)
-        if (command->get_option("--" + name)->count() > 0) generated.parameters[name] = value;
-      makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
-      design.surface = generated;
-    }
+    const Design design = designFromSurfaceOptions(options->surface, command, options->output);
     const Sheet sheet = initialSheet(design, options->output);
-    if (!options->symmetry.empty()) {
-      try {
-        design.symmetry = parseSymmetry(options->symmetry, sheet).name();
-      } catch (const InvalidSymmetry& e) {
-        throw UsageError(e.what());
-      }
-    }
     saveDesign(design, options->output);
     // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
     // paper, laid side by side in the development and printed on one crease pattern.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 namespace curvefold {
+struct Design;
 struct Recording;
 struct Sheet;
 struct PdfPicture;
@@ -28,11 +30,26 @@ class UsageError : public std::runtime_error {
 // output ("-"), so that what is piped is the file alone; else standard output.
 std::ostream& statusFor(std::initializer_list<std::string_view> outputs);
 
+// A surface named on a command line: a catalog name or an .obj file, its parameters (every
+// surface's, as --NAME options) and a symmetry.
+struct SurfaceOptions {
+  std::string surface;
+  std::map<std::string, double> values;
+  std::string symmetry;
+};
+void addSurfaceOptions(CLI::App* command, SurfaceOptions& options);
+// The design the options make (no folds); throws UsageError or the surface's own error.
+Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
+                                const std::string& nameForErrors);
+
 void addSurfacesCommand(CLI::App& app);
 void addNewCommand(CLI::App& app);
 void addFoldCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
+// fit_commands.cpp: folding toward a target shape, and measuring how far apart two shapes lie.
+void addFitCommand(CLI::App& app);
+void addDistanceCommand(CLI::App& app);
 // replay_commands.cpp: recorded input.
 void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   curvefold::cli::addFoldCommand(app);
   curvefold::cli::addExportCommand(app);
   curvefold::cli::addCheckCommand(app);
+  curvefold::cli::addFitCommand(app);
+  curvefold::cli::addDistanceCommand(app);
   curvefold::cli::addReplayCommand(app);
   curvefold::cli::addRecordScriptCommand(app);
   curvefold::cli::addRenderCommand(app);

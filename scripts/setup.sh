@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinygltf-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-format
+  # folding toward a goal: both cores, the local search, nearest neighbours
+  libtbb-dev libnlopt-cxx-dev libnanoflann-dev
   # the printable crease pattern (PDF)
   libcairo2-dev
   # the main job's animated picture of a replay (GIF)

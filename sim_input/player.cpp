@@ -62,6 +62,12 @@ std::string foldLogLine(const FoldLogEntry& entry) {
     value["skipped_images"] = entry.skippedImages;
   }
   if (entry.overlappingImages > 0) value["overlapping_images"] = entry.overlappingImages;
+  if (entry.targetDiagonal > 0.0) {
+    value["hausdorff"] = entry.hausdorff;
+    value["chamfer"] = entry.chamfer;
+    value["hausdorff_relative"] = entry.hausdorff / entry.targetDiagonal;
+    value["chamfer_relative"] = entry.chamfer / entry.targetDiagonal;
+  }
   return value.dump();
 }
 

@@ -34,12 +34,16 @@ struct FoldLogEntry {
   std::size_t images = 0;
   std::size_t skippedImages = 0;
   std::size_t overlappingImages = 0;
+  // Folding toward a target (curvefold fit): the folded form's two-sided Hausdorff and Chamfer
+  // distances to it afterwards (engine/fit/surface_distance.hpp), and its diagonal; 0: none.
+  double hausdorff = 0.0, chamfer = 0.0, targetDiagonal = 0.0;
 };
 
 // The log entry as one JSON line (no newline): {"event":"commit","t":..,"fold":..,"folds":..,
 // "plane":{"point":[..],"normal":[..]},"triangles_before":..,"triangles_after":..,
 // "max_edge_length_error":..,"self_intersections":..}, and in a symmetric design
-// "images":..,"skipped_images":.. (and "overlapping_images":.. when any).
+// "images":..,"skipped_images":.. (and "overlapping_images":.. when any); toward a target,
+// "hausdorff", "chamfer" (m) and each relative to the target's diagonal.
 std::string foldLogLine(const FoldLogEntry& entry);
 
 // Largest |3D length - development length| over the sheet's edges: one pass over the triangles,

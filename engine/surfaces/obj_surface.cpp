@@ -159,7 +159,7 @@ class Parser {
   std::size_t line_ = 0;
 };
 
-double boundingDiagonal(const std::vector<glm::dvec3>& points) {
+double pointsDiagonal(const std::vector<glm::dvec3>& points) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (const glm::dvec3& p : points) {
     lo = glm::min(lo, p);
@@ -242,7 +242,7 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
     }
   }
 
-  if (!(boundingDiagonal(sheet.positions) > 0.0)) throw ObjError(name + ": all vertices coincide");
+  if (!(pointsDiagonal(sheet.positions) > 0.0)) throw ObjError(name + ": all vertices coincide");
   {
     // A mesh far from the origin (a survey's coordinates, 1e9 m out) keeps only a few digits of
     // its size in each coordinate, and every reflection there rounds at that scale: recentre it.
@@ -333,14 +333,39 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
   return sheet;
 }
 
-Sheet readObjSurface(const std::string& path) {
+namespace {
+
+template <typename Parse>
+auto readObjFile(const std::string& path, Parse parse) {
   std::ifstream in(path);
   if (!in) throw ObjError(path + ": cannot open: " + std::strerror(errno));
   try {
-    return parseObjSurface(in, path);
+    return parse(in, path);
   } catch (const std::bad_alloc&) {
     throw ObjError(path + ": out of memory reading it");
   }
+}
+
+}  // namespace
+
+Sheet readObjSurface(const std::string& path) {
+  return readObjFile(path, parseObjSurface);
+}
+
+TriangleMesh parseObjMesh(std::istream& in, const std::string& name) {
+  const ObjData data = Parser(name).parse(in);
+  TriangleMesh mesh;
+  mesh.positions = data.v;
+  mesh.triangles.reserve(data.triangles.size());
+  for (const ObjTriangle& t : data.triangles)
+    mesh.triangles.push_back({static_cast<std::uint32_t>(t.corners[0].v),
+                              static_cast<std::uint32_t>(t.corners[1].v),
+                              static_cast<std::uint32_t>(t.corners[2].v)});
+  return mesh;
+}
+
+TriangleMesh readObjMesh(const std::string& path) {
+  return readObjFile(path, parseObjMesh);
 }
 
 }  // namespace curvefold

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "engine/geometry/sheet.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
 
 namespace curvefold {
 
@@ -41,5 +42,12 @@ inline constexpr std::size_t kMaxObjLineBytes = 1 << 20;
 // crossing edges. Throws ObjError naming the file, the line and the problem.
 Sheet parseObjSurface(std::istream& in, const std::string& nameForErrors);
 Sheet readObjSurface(const std::string& path);
+
+// Any triangle mesh from an OBJ (a target shape: a scan, a surface of revolution), read by the
+// same parser with the same limits: `v` and `f` only (polygons fanned), in the file's own frame
+// (never recentred), with no check of manifoldness or developability. Throws ObjError naming the
+// file (and line): unreadable, malformed, or without faces.
+TriangleMesh parseObjMesh(std::istream& in, const std::string& nameForErrors);
+TriangleMesh readObjMesh(const std::string& path);
 
 }  // namespace curvefold

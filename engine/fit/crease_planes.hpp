@@ -1,0 +1,51 @@
+// The planes of a shape's creases (issue 27): where a target was folded by reflection, its creases
+// are planar curves [Mitani & Igarashi 2011, Sec. 3.3] and each lies in the plane of the fold that
+// made it (or that plane's image under a later fold), so a target's sharp edges name the folds'
+// planes exactly. Sharp edges are those whose faces meet at more than a threshold angle.
+//
+// Each plane is found by consensus among plane hypotheses: through three points of sharp edges
+// (a curved crease), and through each sharp edge at the bisectors of its two faces (a straight
+// crease, whose points alone leave the plane free to turn about it). The hypothesis that the
+// longest total of sharp edges lies in (within `tolerance`) is kept and its edges removed, and so
+// on. Deterministic for a seed.
+//
+// Known limits: a crease of a fold whose faces meet at less than the threshold is not seen; the
+// bisector hypotheses assume the surface ran on smoothly across the crease before it was folded.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "engine/geometry/reflection.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+
+namespace curvefold {
+
+struct CreasePlane {
+  ReflectionPlane plane;
+  double support = 0.0;  // total length of the sharp edges in it, metres
+};
+
+struct CreasePlaneOptions {
+  double minDihedralDegrees = 12.0;  // edges whose faces turn by more are sharp
+  double tolerance = 0.0;            // metres; 0: 1e-3 of the mesh's diagonal
+  double minSupport = 0.0;           // metres; 0: 3% of the mesh's diagonal
+  std::size_t maxPlanes = 16;
+  std::size_t hypotheses = 600;  // three-point hypotheses tried per plane
+  std::uint64_t seed = 1;
+};
+
+// The planes, most supported first.
+std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
+                                          const CreasePlaneOptions& options = {});
+
+// The largest angle, degrees, by which two faces of the mesh that share an edge turn: for a
+// smooth initial surface, how much its facets bend (a sharp-edge threshold must lie above it).
+double largestDihedralDegrees(const TriangleMesh& mesh);
+
+// The sharp-edge threshold for targets folded from `initialSheet`: half as much again as its
+// facets bend, two degrees more, and at least 12 degrees.
+double sharpEdgeThreshold(const TriangleMesh& initialSheet);
+
+}  // namespace curvefold

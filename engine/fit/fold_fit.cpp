@@ -1,0 +1,690 @@
+#include "engine/fit/fold_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+#include <nanoflann.hpp>
+#include <nlopt.hpp>
+
+#include "engine/fit/crease_planes.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/fit/target_unfolding.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/topology.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Seeds tried on each side of a crease plane: parts the plane leaves apart are each a fold.
+constexpr std::size_t kSeedsPerCreasePlane = 6;
+// Crease planes mirrored through each other: of the best this many (at most n(n-1) more planes).
+constexpr std::size_t kMirroredCreasePlanes = 6;
+// How much farther a fold through a crease plane may leave the sheet and still be offered: the
+// target's first fold, moved on by its later ones, can match little of it on its own.
+constexpr double kCreaseSlack = 1.1;
+// An unfolded target's folds that bring the sheet this close (Hausdorff, of the target's
+// diagonal) end the fit.
+constexpr double kUnfoldedCloseEnough = 1e-3;
+
+struct PointCloud {
+  std::vector<glm::dvec3> points;
+  std::size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t axis) const { return points[i][int(axis)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
+                                                   PointCloud, 3, std::uint32_t>;
+
+std::uint32_t nearest(const KdTree& tree, const glm::dvec3& p) {
+  const double query[3] = {p.x, p.y, p.z};
+  std::uint32_t index = 0;
+  double squared = 0.0;
+  tree.knnSearch(query, 1, &index, &squared);
+  return index;
+}
+
+// Distance from p to a surface that holds sample s (unit normal n), its samples about `radius`
+// apart: the normal part in full, the tangent part only beyond the radius, so a point on the
+// surface between samples is near zero.
+double nearSurface(const glm::dvec3& p, const glm::dvec3& s, const glm::dvec3& n, double radius) {
+  const glm::dvec3 d = p - s;
+  const double normal = glm::dot(d, n);
+  const double tangent = std::max(0.0, glm::length(d - normal * n) - radius);
+  return std::sqrt(normal * normal + tangent * tangent);
+}
+
+// The top 53 bits of one draw in [0, 1): the same on every standard library.
+double unit(std::mt19937_64& random) {
+  return static_cast<double>(random() >> 11) * 0x1.0p-53;
+}
+
+// An index drawn with probability proportional to its weight (cumulative: running sums).
+std::size_t draw(const std::vector<double>& cumulative, std::mt19937_64& random) {
+  const double at = unit(random) * cumulative.back();
+  return std::min<std::size_t>(
+      std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin(),
+      cumulative.size() - 1);
+}
+
+std::vector<double> cumulativeOf(const std::vector<double>& distances, double floor) {
+  std::vector<double> cumulative(distances.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < distances.size(); ++i) {
+    // Squared excess over the noise floor: the farthest points lead, and a sheet that already
+    // fits still proposes something.
+    const double excess = std::max(0.0, distances[i] - floor);
+    sum += excess * excess + 1e-30;
+    cumulative[i] = sum;
+  }
+  return cumulative;
+}
+
+// The sheet as the search reads it: samples made vertices, each with its normal.
+struct EvaluationCopy {
+  Sheet sheet;
+  SheetAdjacency adjacency;
+  double epsilon = 0.0;
+  double size = 0.0;
+  std::vector<VertexIndex> samples;
+  std::vector<glm::dvec3> normals;
+  double radius = 0.0;  // half the samples' spacing
+  std::uint64_t generation = 0;
+};
+
+EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::uint64_t seed,
+                                  std::uint64_t generation) {
+  // Area-uniform in the development is area-uniform on the surface (an isometry).
+  TriangleMesh flat;
+  flat.positions.reserve(sheet.vertexCount());
+  for (const glm::dvec2& p : sheet.development) flat.positions.emplace_back(p.x, p.y, 0.0);
+  flat.triangles = meshOf(sheet).triangles;
+  const std::vector<SurfaceSample> samples = sampleSurface(flat, count, seed);
+  EvaluationCopy copy;
+  copy.generation = generation;
+  copy.sheet = sheet;
+  copy.size = sheetSize(sheet);
+  for (const SurfaceSample& sample : samples) {
+    const Triangle& t = sheet.triangles[sample.triangle];
+    const glm::dvec3 n = glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
+                                    sheet.positions[t[2]] - sheet.positions[t[0]]);
+    try {
+      const VertexIndex v =
+          insertVertexInPlace(copy.sheet, glm::dvec2(sample.position), nullptr,
+                              InsertionHints{copy.size, sample.triangle, nullptr});
+      copy.samples.push_back(v);
+      copy.normals.push_back(glm::normalize(n));
+    } catch (const InvalidSheet&) {
+      // A sample on the development's very edge that rounding puts outside: one fewer.
+    }
+  }
+  copy.adjacency = buildAdjacency(copy.sheet);
+  copy.epsilon = sheetEpsilon(copy.sheet);
+  double area = 0.0;
+  for (const Triangle& t : sheet.triangles) {
+    const glm::dvec2 a = sheet.development[t[1]] - sheet.development[t[0]];
+    const glm::dvec2 b = sheet.development[t[2]] - sheet.development[t[0]];
+    area += 0.5 * std::abs(a.x * b.y - a.y * b.x);
+  }
+  copy.radius = 0.5 * std::sqrt(area / std::max<std::size_t>(1, copy.samples.size()));
+  return copy;
+}
+
+// A drag of the search: a sample of the evaluation copy dropped at a point.
+struct Drag {
+  std::uint32_t sample = 0;
+  glm::dvec3 drop{0.0};
+  double score = kInfinity;
+  // Through a plane of the target's creases: exact already, and left so (a refinement would
+  // trade the part it lays exactly for a compromise across parts a later fold completes).
+  bool crease = false;
+};
+
+// One thread's scratch: the copy's folded form and the sheet samples' tree.
+struct Worker {
+  std::uint64_t generation = 0;
+  Sheet out;
+  ReflectionWorkspace workspace;
+  DragIntersectionWatch watch;  // a drag that passes the sheet through itself scores nothing
+  Sheet withImages;             // a symmetric design's: `out` with the fold's images
+  std::vector<TriangleIndex> reflected;
+  PointCloud cloud;
+  std::vector<glm::dvec3> normals;
+};
+
+bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double size) {
+  return glm::dot(a.normal, b.normal) > std::cos(5.0 * 3.14159265358979 / 180.0) &&
+         std::abs(glm::dot(a.point - b.point, a.normal)) < 0.02 * size;
+}
+
+// The best `count` of candidates sorted best first, then the best `count` of the rest that are
+// through crease planes.
+template <typename Candidate>
+std::vector<Candidate> bestAndCrease(std::vector<Candidate> sorted, std::size_t count) {
+  std::vector<Candidate> kept;
+  std::size_t creases = 0;
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    if (i < count || (sorted[i].crease && creases++ < count)) kept.push_back(std::move(sorted[i]));
+  return kept;
+}
+
+}  // namespace
+
+Deadline Deadline::in(double seconds) {
+  Deadline deadline;
+  if (std::isfinite(seconds))
+    deadline.at = std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(std::max(0.0, seconds)));
+  return deadline;
+}
+
+struct FoldFitter::Target {
+  TriangleMesh mesh;
+  double diagonal = 0.0;
+  glm::dvec3 centre{0.0};
+  PointCloud dense;
+  std::vector<glm::dvec3> denseNormals;
+  double denseRadius = 0.0;
+  std::vector<SurfaceSample> queries;
+  std::unique_ptr<KdTree> tree;
+  double robust = kInfinity;  // metres: where a distance stops counting in full
+
+  // What the search lowers, for sheet samples (points, normals, spaced 2 * radius): the mean
+  // two-sided distance, each distance cut at `robust` and a tenth of it kept beyond, so a fold
+  // that lays part of the sheet exactly onto the target counts for more than one that brings
+  // all of it somewhat closer (the inlier count of RANSAC and robust ICP); each side's plain
+  // distances when asked for.
+  double score(const PointCloud& points, const std::vector<glm::dvec3>& normals, double radius,
+               std::vector<double>* fromSheet = nullptr,
+               std::vector<double>* fromTarget = nullptr) const {
+    if (points.points.empty()) return kInfinity;
+    auto cost = [&](double d) { return std::min(d, robust) + 0.1 * d; };
+    double sheetSum = 0.0, targetSum = 0.0;
+    if (fromSheet) fromSheet->resize(points.points.size());
+    for (std::size_t i = 0; i < points.points.size(); ++i) {
+      const std::uint32_t j = nearest(*tree, points.points[i]);
+      const double d = nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
+      sheetSum += cost(d);
+      if (fromSheet) (*fromSheet)[i] = d;
+    }
+    const KdTree sheetTree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    if (fromTarget) fromTarget->resize(queries.size());
+    for (std::size_t k = 0; k < queries.size(); ++k) {
+      const std::uint32_t i = nearest(sheetTree, queries[k].position);
+      const double d = nearSurface(queries[k].position, points.points[i], normals[i], radius);
+      targetSum += cost(d);
+      if (fromTarget) (*fromTarget)[k] = d;
+    }
+    return 0.5 * (sheetSum / static_cast<double>(points.points.size()) +
+                  targetSum / static_cast<double>(queries.size()));
+  }
+};
+
+FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
+    : target_(std::make_unique<Target>()), settings_(settings) {
+  Target& t = *target_;
+  t.mesh = std::move(target);
+  const double area = surfaceArea(t.mesh);
+  t.diagonal = boundingDiagonal(t.mesh);
+  if (t.mesh.triangles.empty()) throw InvalidTarget("the target has no triangles");
+  if (!(area > 1e-12 * t.diagonal * t.diagonal) || !std::isfinite(area))
+    throw InvalidTarget("the target is degenerate: its triangles have no area");
+  glm::dvec3 low(kInfinity), high(-kInfinity);
+  for (const auto& tri : t.mesh.triangles)
+    for (std::uint32_t v : tri) {
+      low = glm::min(low, t.mesh.positions[v]);
+      high = glm::max(high, t.mesh.positions[v]);
+    }
+  t.centre = 0.5 * (low + high);
+  for (const SurfaceSample& s : sampleSurface(t.mesh, settings.denseTargetSamples, settings.seed)) {
+    t.dense.points.push_back(s.position);
+    t.denseNormals.push_back(s.normal);
+  }
+  t.denseRadius = 0.5 * std::sqrt(area / static_cast<double>(t.dense.points.size()));
+  t.queries = sampleSurface(t.mesh, settings.targetSamples, settings.seed + 1);
+  t.tree = std::make_unique<KdTree>(3, t.dense, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  t.robust = settings.robustDistance * t.diagonal;
+}
+
+FoldFitter::~FoldFitter() = default;
+
+const TriangleMesh& FoldFitter::target() const {
+  return target_->mesh;
+}
+
+double FoldFitter::targetDiagonal() const {
+  return target_->diagonal;
+}
+
+void FoldFitter::checkAgainst(const Sheet& sheet) const {
+  const TriangleMesh mesh = meshOf(sheet);
+  const double size = boundingDiagonal(mesh);
+  glm::dvec3 low(kInfinity), high(-kInfinity);
+  for (const glm::dvec3& p : sheet.positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  const double apart = glm::distance(0.5 * (low + high), target_->centre);
+  const double ratio = target_->diagonal / size;
+  std::ostringstream text;
+  text.precision(3);
+  if (ratio > 100.0 || ratio < 0.01) {
+    text << "the target is " << ratio << " times the sheet's size (" << target_->diagonal
+         << " m across against " << size << " m): are its units metres?";
+    throw InvalidTarget(text.str());
+  }
+  if (apart > 10.0 * std::max(size, target_->diagonal)) {
+    text << "the target lies " << apart << " m from the sheet (centre to centre), far beyond both ("
+         << size << " m across): give it in the sheet's frame";
+    throw InvalidTarget(text.str());
+  }
+}
+
+const std::vector<ReflectionPlane>& FoldFitter::creasePlanesAbove(double degrees) const {
+  const std::lock_guard lock(creaseMutex_);
+  auto [it, added] = creasePlanes_.try_emplace(degrees);
+  if (added) {
+    CreasePlaneOptions options;
+    options.minDihedralDegrees = degrees;
+    options.seed = settings_.seed;
+    std::vector<ReflectionPlane>& planes = it->second;
+    for (const CreasePlane& found : findCreasePlanes(target_->mesh, options))
+      planes.push_back(found.plane);
+    // A crease a later fold moved lies in the image of its fold's plane under that fold: each
+    // plane mirrored through another names such a fold (of the best few, each once).
+    const std::size_t found = std::min<std::size_t>(planes.size(), kMirroredCreasePlanes);
+    for (std::size_t i = 0; i < found; ++i)
+      for (std::size_t j = 0; j < found; ++j) {
+        if (i == j) continue;
+        const ReflectionPlane& mirror = planes[i];
+        const glm::dvec3 n = planes[j].normal;
+        const ReflectionPlane image{mirror.reflect(planes[j].point),
+                                    n - 2.0 * glm::dot(n, mirror.normal) * mirror.normal};
+        auto same = [&](const ReflectionPlane& p) {
+          return std::abs(glm::dot(p.normal, image.normal)) >
+                     std::cos(2.0 * 3.14159265358979 / 180) &&
+                 std::abs(p.signedDistance(image.point)) < 1e-3 * target_->diagonal;
+        };
+        if (std::none_of(planes.begin(), planes.end(), same)) planes.push_back(image);
+      }
+  }
+  return it->second;
+}
+
+double FoldFitter::approximateDistance(const Sheet& sheet) const {
+  const TriangleMesh mesh = meshOf(sheet);
+  const std::vector<SurfaceSample> samples =
+      sampleSurface(mesh, settings_.sheetSamples, settings_.seed + 2);
+  PointCloud points;
+  std::vector<glm::dvec3> normals;
+  for (const SurfaceSample& s : samples) {
+    points.points.push_back(s.position);
+    normals.push_back(s.normal);
+  }
+  const double radius =
+      0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
+  return target_->score(points, normals, radius);
+}
+
+std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_t count,
+                                                const Deadline& deadline,
+                                                std::uint64_t step) const {
+  session.cancel();
+  std::vector<FoldSuggestion> suggestions;
+  if (count == 0) return suggestions;
+  const Target& target = *target_;
+  const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
+                                                 settings_.seed * 0x9e3779b97f4a7c15ull + step, 1);
+  if (copy.samples.empty()) return suggestions;
+
+  tbb::enumerable_thread_specific<Worker> workers;
+  const SymmetricFolder* symmetric = session.symmetricFolder().get();
+  // The copy folded by one drag, scored (infinity when the drag folds nothing).
+  auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
+    if (worker.generation != copy.generation) {
+      worker.out = copy.sheet;
+      worker.workspace.clear();
+      worker.generation = copy.generation;
+      worker.cloud.points.resize(copy.samples.size());
+      worker.normals.resize(copy.samples.size());
+      if (!settings_.allowSelfIntersection) worker.watch.begin(copy.sheet);
+    }
+    const VertexIndex seed = copy.samples[sample];
+    const glm::dvec3 grab = copy.sheet.positions[seed];
+    if (!(glm::distance(grab, drop) > session.minimumDrag())) return kInfinity;
+    const ReflectionPlane plane = bisectorPlane(grab, drop);
+    worker.workspace.apply(copy.sheet, copy.adjacency, seed, plane, copy.epsilon, worker.out);
+    if (!settings_.allowSelfIntersection) {
+      worker.watch.update(worker.out, worker.workspace.changes(), plane,
+                          worker.workspace.reflectedTriangles(copy.adjacency));
+      if (worker.watch.pairCount() > 0) {
+        worker.workspace.restore(copy.sheet, worker.out);
+        return kInfinity;
+      }
+    }
+    // A symmetric design's fold brings its images (previewed on the copy as a display previews
+    // them; a sample they move keeps its normal, near enough for the distance).
+    const Sheet* folded = &worker.out;
+    if (symmetric) {
+      worker.withImages = worker.out;
+      FoldRecord fold;
+      fold.seed = copy.sheet.development[seed];
+      fold.plane = plane;
+      fold.grabbed = grab;
+      fold.target = drop;
+      worker.reflected.clear();
+      symmetric->previewImages(copy.sheet, worker.withImages, fold, worker.reflected);
+      folded = &worker.withImages;
+    }
+    for (std::size_t i = 0; i < copy.samples.size(); ++i) {
+      const glm::dvec3& y = folded->positions[copy.samples[i]];
+      glm::dvec3 n = copy.normals[i];
+      if (worker.out.positions[copy.samples[i]] != copy.sheet.positions[copy.samples[i]])
+        n -= 2.0 * glm::dot(n, plane.normal) * plane.normal;
+      worker.cloud.points[i] = y;
+      worker.normals[i] = n;
+    }
+    worker.workspace.restore(copy.sheet, worker.out);
+    return target.score(worker.cloud, worker.normals, copy.radius);
+  };
+
+  // Where the sheet and the target are apart now.
+  std::vector<double> fromSheet, fromTarget;
+  double current = 0.0;
+  {
+    PointCloud points;
+    for (VertexIndex v : copy.samples) points.points.push_back(copy.sheet.positions[v]);
+    current = target.score(points, copy.normals, copy.radius, &fromSheet, &fromTarget);
+  }
+  const double floor = 2.0 * std::max(copy.radius, target.denseRadius);
+  const std::vector<double> grabWeights = cumulativeOf(fromSheet, floor);
+  const std::vector<double> dropWeights = cumulativeOf(fromTarget, floor);
+
+  // Proposals: the target's crease planes from samples on either side (the same plane folds
+  // different parts from different sides), then drags from far sheet samples to far target points.
+  std::mt19937_64 random(settings_.seed ^ (0xd1b54a32d192ed03ull * (step + 1)));
+  std::vector<Drag> drags;
+  const std::vector<ReflectionPlane> noPlanes;
+  for (const ReflectionPlane& crease :
+       settings_.useCreases ? creasePlanesAbove(sharpEdgeThreshold(meshOf(session.initial())))
+                            : noPlanes) {
+    for (const double side : {-1.0, 1.0}) {
+      const ReflectionPlane plane{crease.point, side * crease.normal};
+      std::vector<std::uint32_t> behind;
+      for (std::uint32_t i = 0; i < copy.samples.size(); ++i)
+        if (plane.signedDistance(copy.sheet.positions[copy.samples[i]]) < -0.01 * copy.size)
+          behind.push_back(i);
+      for (std::size_t k = 0; k < std::min<std::size_t>(kSeedsPerCreasePlane, behind.size()); ++k) {
+        const std::uint32_t i = behind[static_cast<std::size_t>(unit(random) * behind.size())];
+        drags.push_back({i, plane.reflect(copy.sheet.positions[copy.samples[i]]), kInfinity, true});
+      }
+    }
+  }
+  // Every other drag pulls its sample onto the nearest point of the target (a correspondence, as
+  // in a step of ICP): small folds that bend the sheet toward a near target.
+  for (std::size_t k = 0; k < settings_.proposals; ++k) {
+    const auto sample = static_cast<std::uint32_t>(draw(grabWeights, random));
+    const glm::dvec3& grab = copy.sheet.positions[copy.samples[sample]];
+    drags.push_back({sample, k % 2 ? target.dense.points[nearest(*target.tree, grab)]
+                                   : target.queries[draw(dropWeights, random)].position});
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, drags.size(), 8), [&](const auto& range) {
+    Worker& worker = workers.local();
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      if (!deadline.passed()) drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop);
+  });
+
+  // The best few with distinct planes, each refined: the best crease-plane drags first (a fold
+  // that lays one part exactly may score below one that brings all of it somewhat closer, and
+  // still be the one the next fold completes), then the best of all.
+  const std::size_t creaseDrags = drags.size() - settings_.proposals;
+  std::vector<std::size_t> order(drags.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return drags[a].score < drags[b].score; });
+  std::vector<Drag> finalists;
+  std::vector<ReflectionPlane> finalistPlanes;
+  auto choose = [&](std::size_t most, bool creaseOnly) {
+    for (std::size_t i : order) {
+      if (finalists.size() >= most) break;
+      if (creaseOnly && i >= creaseDrags) continue;
+      if (!(drags[i].score < (drags[i].crease ? kCreaseSlack : 1.0) * current)) continue;
+      const ReflectionPlane plane =
+          bisectorPlane(copy.sheet.positions[copy.samples[drags[i].sample]], drags[i].drop);
+      if (std::any_of(finalistPlanes.begin(), finalistPlanes.end(),
+                      [&](const auto& p) { return samePlane(p, plane, copy.size); }))
+        continue;
+      finalists.push_back(drags[i]);
+      finalistPlanes.push_back(plane);
+    }
+  };
+  choose(settings_.refined / 2, true);
+  choose(settings_.refined, false);
+  tbb::parallel_for(std::size_t(0), finalists.size(), [&](std::size_t k) {
+    Worker& worker = workers.local();
+    Drag& best = finalists[k];
+    if (best.crease) return;
+    const glm::dvec3 grab = copy.sheet.positions[copy.samples[best.sample]];
+    struct Objective {
+      Drag* best;
+      Worker* worker;
+      const Deadline* deadline;
+      const decltype(evaluate)* score;
+      nlopt::opt* optimizer;
+    };
+    nlopt::opt optimizer(nlopt::LN_SBPLX, 3);
+    Objective objective{&best, &worker, &deadline, &evaluate, &optimizer};
+    optimizer.set_min_objective(
+        [](const std::vector<double>& x, std::vector<double>&, void* data) {
+          auto& o = *static_cast<Objective*>(data);
+          if (o.deadline->passed()) o.optimizer->force_stop();
+          const glm::dvec3 drop(x[0], x[1], x[2]);
+          const double score = (*o.score)(*o.worker, o.best->sample, drop);
+          if (score < o.best->score) {
+            o.best->score = score;
+            o.best->drop = drop;
+          }
+          return std::isfinite(score) ? score : 1e30;
+        },
+        &objective);
+    const double stepLength = std::max(0.1 * glm::distance(grab, best.drop), 0.005 * copy.size);
+    optimizer.set_initial_step(stepLength);
+    optimizer.set_maxeval(static_cast<int>(settings_.refineEvaluations));
+    optimizer.set_xtol_abs(1e-6 * copy.size);
+    std::vector<double> x{best.drop.x, best.drop.y, best.drop.z};
+    double value = 0.0;
+    try {
+      optimizer.optimize(x, value);
+    } catch (const std::exception&) {
+      // A forced stop or a round-off limit: the best drag seen is kept either way.
+    }
+  });
+  std::stable_sort(finalists.begin(), finalists.end(),
+                   [](const Drag& a, const Drag& b) { return a.score < b.score; });
+
+  // Each refined drag made on the real sheet, as a designer's would be.
+  const double before = approximateDistance(session.fixed());
+  std::size_t crossingsBefore = 0;
+  if (!settings_.allowSelfIntersection)
+    crossingsBefore = findSelfIntersections(session.fixed()).intersections.size();
+  for (const Drag& drag : finalists) {
+    if (deadline.passed()) break;
+    const std::size_t foldsBefore = session.foldCount();
+    session.beginDragAtDevelopment(copy.sheet.development[copy.samples[drag.sample]]);
+    session.updateDrag(drag.drop);
+    if (!session.commit()) continue;
+    FoldSuggestion suggestion;
+    suggestion.folds.assign(
+        session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
+        session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+    const bool crosses =
+        !settings_.allowSelfIntersection &&
+        findSelfIntersections(session.fixed()).intersections.size() > crossingsBefore;
+    if (!crosses) {
+      suggestion.crease = drag.crease;
+      suggestion.sheet = session.fixed();
+      suggestion.before = before;
+      suggestion.after = approximateDistance(suggestion.sheet);
+    }
+    session.undo();
+    if (crosses || !(suggestion.after < (drag.crease ? kCreaseSlack : 1.0) * before)) continue;
+    suggestions.push_back(std::move(suggestion));
+  }
+  std::stable_sort(suggestions.begin(), suggestions.end(),
+                   [](const auto& a, const auto& b) { return a.after < b.after; });
+  return bestAndCrease(std::move(suggestions), count);
+}
+
+FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  // The search stops early enough for the exact measure of what it found.
+  const Deadline deadline = Deadline::in(0.9 * options.seconds);
+  fitter.checkAgainst(session.fixed());
+  session.cancel();
+  auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  auto measureNow = [&](std::size_t folds) {
+    const SurfaceDistance d =
+        surfaceDistance(meshOf(session.fixed()), fitter.target(), options.distanceSamples);
+    return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
+  };
+  FitResult result;
+  result.steps.push_back(measureNow(0));
+  if (options.progress) options.progress(result.steps.back());
+
+  // A beam over fold sequences: each state's best few next folds, the best few states kept.
+  struct State {
+    std::vector<FoldRecord> folds;    // beyond the session's own
+    std::vector<std::size_t> groups;  // folds per group (a fold and its images)
+    double score = 0.0;
+    bool crease = false;  // its last fold is through a crease plane
+  };
+  const std::vector<FoldRecord> base(
+      session.folds().begin(),
+      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+  auto sessionFor = [&](const State& state) {
+    auto branch = std::make_unique<FoldSession>(session.initial());
+    if (session.symmetry()) branch->setSymmetry(*session.symmetry());
+    std::vector<FoldRecord> folds = base;
+    folds.insert(folds.end(), state.folds.begin(), state.folds.end());
+    branch->applyRecords(folds);
+    return branch;
+  };
+  std::vector<State> beam{{{}, {}, fitter.approximateDistance(session.fixed())}};
+  State best = beam.front();
+  result.stopReason = "reached the most folds asked for";
+
+  bool unfolded = false;
+  // First the folds the target's own creases name, read by unfolding it (a symmetric design's
+  // folds bring images the unfolding does not know of: those are left to the search).
+  if (!session.symmetry() && fitter.settings().useCreases) {
+    const TargetUnfolding plan =
+        unfoldTarget(fitter.target(), meshOf(session.initial()),
+                     sharpEdgeThreshold(meshOf(session.initial())), options.maxFolds);
+    const std::unique_ptr<FoldSession> branch = sessionFor(best);
+    State planned;
+    for (const UnfoldedFold& fold : plan.folds) {
+      const std::size_t before = branch->foldCount();
+      const glm::dvec3 grabbed = branch->beginDragNear(fold.seedBefore);
+      branch->updateDrag(fold.plane.reflect(grabbed));
+      if (!branch->commit()) break;
+      planned.folds.insert(
+          planned.folds.end(), branch->folds().begin() + static_cast<std::ptrdiff_t>(before),
+          branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
+      planned.groups.push_back(branch->foldCount() - before);
+    }
+    const bool crosses = !fitter.settings().allowSelfIntersection &&
+                         !findSelfIntersections(branch->fixed()).intersections.empty();
+    if (!planned.groups.empty() && !crosses) {
+      planned.score = fitter.approximateDistance(branch->fixed());
+      if (planned.score < best.score) best = planned;
+      if (options.searching) options.searching(planned.groups.size(), planned.score, seconds());
+      // Close enough that a search could only polish it: the search is skipped.
+      unfolded = surfaceDistance(meshOf(branch->fixed()), fitter.target(), options.distanceSamples)
+                     .relativeHausdorff() <= kUnfoldedCloseEnough;
+    }
+  }
+  for (std::size_t depth = 0; depth < options.maxFolds && !unfolded; ++depth) {
+    std::vector<State> children;
+    for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {
+      const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
+      for (FoldSuggestion& next :
+           fitter.suggest(*branch, options.branching, deadline, 16 * (depth + 1) + k)) {
+        State child = beam[k];
+        child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
+        child.groups.push_back(next.folds.size());
+        child.score = next.after;
+        child.crease = next.crease;
+        children.push_back(std::move(child));
+      }
+    }
+    if (deadline.passed()) {
+      // A depth the deadline cut short is dropped whole: what is kept does not depend on speed.
+      result.timedOut = true;
+      result.stopReason = "reached the time limit";
+      break;
+    }
+    if (children.empty()) {
+      result.stopReason = "no fold found brings the sheet closer";
+      break;
+    }
+    std::stable_sort(children.begin(), children.end(),
+                     [](const State& a, const State& b) { return a.score < b.score; });
+    beam = bestAndCrease(std::move(children), options.beamWidth);
+    if (beam.size() > options.beamWidth + options.creaseWidth)
+      beam.resize(options.beamWidth + options.creaseWidth);
+    if (beam.front().score < best.score) best = beam.front();
+    if (options.searching) options.searching(depth + 1, beam.front().score, seconds());
+  }
+
+  // The best sequence found, measured exactly after each fold; kept up to where it comes
+  // closest, less any last folds that gain under minimumGain each (a fold on the way may gain
+  // little itself and still be what the next one needs).
+  std::vector<FitProgress> measured;
+  std::vector<std::size_t> foldCounts;  // the session's folds after each group
+  for (std::size_t g = 0, first = 0; g < best.groups.size(); first += best.groups[g++]) {
+    session.applyRecords(
+        {best.folds.begin() + static_cast<std::ptrdiff_t>(first),
+         best.folds.begin() + static_cast<std::ptrdiff_t>(first + best.groups[g])});
+    measured.push_back(measureNow(g + 1));
+    foldCounts.push_back(session.foldCount());
+    if (options.progress) options.progress(measured.back());
+  }
+  std::size_t keep = 0;
+  for (std::size_t g = 0; g < measured.size(); ++g)
+    if (measured[g].chamfer < (keep ? measured[keep - 1] : result.steps.front()).chamfer)
+      keep = g + 1;
+  auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
+    const double before = (g > 0 ? measured[g - 1] : result.steps.front()).chamfer;
+    return measured[g].chamfer < (1.0 - options.minimumGain) * before &&
+           before - measured[g].chamfer > options.minimumAbsoluteGain * measured[g].diagonal;
+  };
+  while (keep > 0 && !gains(keep - 1)) --keep;
+  if (keep < measured.size()) {
+    while (session.foldCount() > (keep ? foldCounts[keep - 1] : base.size())) session.undo();
+    result.stopReason = "the next fold found brings the sheet closer by less than " +
+                        std::to_string(int(std::round(options.minimumGain * 100))) + "%";
+  }
+  result.steps.insert(result.steps.end(), measured.begin(),
+                      measured.begin() + static_cast<std::ptrdiff_t>(keep));
+  result.folds.assign(session.folds().begin(),
+                      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+  return result;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,171 @@
+// Folding toward a goal (issue 27, docs/design.md 9): the reflection folds that bring a sheet
+// closest to a target shape. Mitani & Igarashi, "Interactive Design of Planar Curved Folding by
+// Reflection" (Pacific Graphics 2011), close on design by reflection being explorative, and hope
+// for "a more goal-oriented modeling process" (Sec. 6); this is one.
+//
+// A fold is a grabbed point of the sheet and where it is dropped (the plane is their bisector,
+// Sec. 3.3), so one fold is a point on the sheet and three numbers. One step of the search:
+//  1. An evaluation copy of the sheet: the same surface with area-uniform sample points made
+//     vertices. A fold is defined by the surface, not by its triangulation (display_session.hpp),
+//     so a candidate folds the copy and its folded form is read at the samples with no point
+//     location. Its distance to the target is approximated on both sides by nearest neighbours
+//     (nanoflann) among samples, corrected through each sample's normal: the mean two-sided
+//     distance (Chamfer), which the step lowers.
+//  2. Proposals: the planes of the target's creases (crease_planes.hpp: a target folded by
+//     reflection names its folds' planes there), each tried from samples on either side, and
+//     drags from a sample far from the target (drawn by how far) either to a target point far
+//     from the sheet or onto the target point nearest it (a correspondence, as in ICP), all
+//     scored on all cores; the best few, with distinct planes, refined
+//     by a derivative-free local search of the drop point (NLopt's Subplex), which moves the plane
+//     the way a correspondence step of ICP would, without needing its gradient.
+//  3. Each refined drag is made on a FoldSession over the real sheet (so a sliver is refused as a
+//     designer's drag is, and a symmetric design's images follow), checked for self-intersection,
+//     scored again on the real folded form, and taken back.
+//
+// Deterministic: proposals come from a seeded generator, every evaluation lands in its own slot
+// and ties go to the lower index, so the result does not depend on the threads' timing. The only
+// exception is a deadline that cuts a step short (the result says so).
+//
+// Known limits: each fold of a sequence must bring the sheet closer on its own; a target that
+// needs a fold that makes it worse before a later one makes it better is not reached.
+// A symmetric design's images are scored as a display previews them (without the pieces a slit
+// cuts off an image), and checked for self-intersection only when the drags are made.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/sheet.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+
+namespace curvefold {
+
+// A target that cannot be fitted: no area, or nowhere near the sheet. One line.
+class InvalidTarget : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// The moment a search stops; the default never comes.
+struct Deadline {
+  std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+  static Deadline in(double seconds);
+  bool passed() const { return std::chrono::steady_clock::now() >= at; }
+};
+
+struct FitSettings {
+  std::size_t sheetSamples = 1500;          // sample vertices of the evaluation copy
+  std::size_t targetSamples = 1500;         // target points measured to the sheet
+  std::size_t denseTargetSamples = 30'000;  // target points the sheet is measured to
+  std::size_t proposals = 384;              // drags scored per step
+  std::size_t refined = 6;                  // best distinct drags refined
+  std::size_t refineEvaluations = 90;       // per refined drag
+  // Distances count in full up to this fraction of the target's diagonal, a tenth beyond.
+  double robustDistance = 0.01;
+  bool allowSelfIntersection = false;
+  // Read folds from the target's creases (proposals through crease planes, and the unfolding
+  // fitFolds tries first); off: search alone.
+  bool useCreases = true;
+  std::uint64_t seed = 1;
+};
+
+// A fold the search proposes, as made on the real sheet.
+struct FoldSuggestion {
+  std::vector<FoldRecord> folds;  // the fold, then its symmetric images (one group)
+  Sheet sheet;                    // the sheet with them
+  double before = 0.0;            // the search's distance (approximate) before and after, metres
+  double after = 0.0;
+  bool crease = false;  // through a plane of the target's creases
+};
+
+class FoldFitter {
+ public:
+  // Samples the target once. Throws InvalidTarget for a target without area.
+  explicit FoldFitter(TriangleMesh target, const FitSettings& settings = {});
+  ~FoldFitter();
+  FoldFitter(const FoldFitter&) = delete;
+  FoldFitter& operator=(const FoldFitter&) = delete;
+
+  const TriangleMesh& target() const;
+  double targetDiagonal() const;
+  const FitSettings& settings() const { return settings_; }
+
+  // Throws InvalidTarget when the target lies nowhere near the sheet (centres farther apart than
+  // ten times the larger of the two) or differs from it in size a hundredfold (its units).
+  void checkAgainst(const Sheet& sheet) const;
+
+  // The approximate Chamfer distance of a folded form to the target (what the search lowers).
+  double approximateDistance(const Sheet& sheet) const;
+
+  // Up to `count` next folds for the design `session` holds (its symmetry, if any, makes each
+  // fold's images), best first, each bringing it closer to the target; none when no fold found
+  // does. Up to `count` more through the target's crease planes follow, when they are not among
+  // the best (a fold that lays one part exactly, which the next fold may complete; such a fold
+  // may leave the sheet up to 10% farther on its own). The session is dragged, committed and undone
+  // on, and left as it was (a drag in progress is cancelled). `step` varies the proposals (a fit's
+  // fold number).
+  std::vector<FoldSuggestion> suggest(FoldSession& session, std::size_t count,
+                                      const Deadline& deadline = {}, std::uint64_t step = 0) const;
+
+ private:
+  struct Target;
+  // The target's crease planes with sharp edges above a sheet's own bends (crease_planes.hpp),
+  // found once per threshold.
+  const std::vector<ReflectionPlane>& creasePlanesAbove(double degrees) const;
+
+  std::unique_ptr<Target> target_;
+  FitSettings settings_;
+  mutable std::mutex creaseMutex_;
+  mutable std::map<double, std::vector<ReflectionPlane>> creasePlanes_;
+};
+
+struct FitProgress {
+  std::size_t fold = 0;                                   // folds kept so far (0: the start)
+  double hausdorff = 0.0, chamfer = 0.0, diagonal = 0.0;  // exact, to the target
+  double seconds = 0.0;
+};
+
+struct FitOptions {
+  std::size_t maxFolds = 6;
+  double seconds = 60.0;
+  // Each fold kept must lower the exact Chamfer distance by this fraction at least.
+  double minimumGain = 0.01;
+  // and by this fraction of the target's diagonal (a fit already as close as the samples tell
+  // gains nothing from more folds).
+  double minimumAbsoluteGain = 1e-4;
+  std::size_t distanceSamples = 20'000;
+  std::size_t beamWidth = 3;    // fold sequences kept at each depth, the best
+  std::size_t creaseWidth = 3;  // and this many more whose last fold is through a crease plane
+  std::size_t branching = 3;    // next folds tried from each (and as many through crease planes)
+  // After the start, then after each fold of the best sequence found, with the session holding
+  // it (the steps of the result say how many are kept).
+  std::function<void(const FitProgress&)> progress;
+  // While searching, after each depth: folds so far, the best approximate distance, seconds.
+  std::function<void(std::size_t, double, double)> searching;
+};
+
+struct FitResult {
+  std::vector<FoldRecord> folds;   // every fold and image, groups numbered from 1 when symmetric
+  std::vector<FitProgress> steps;  // the start, then one per fold kept
+  std::string stopReason;          // why no further fold was added
+  bool timedOut = false;
+};
+
+// Folds `session`'s design toward the fitter's target: a beam search over fold sequences (the
+// best `beamWidth` sequences at each depth and the best `creaseWidth` that end on a crease
+// plane, each grown by its best `branching` next folds and as many through crease planes), at
+// most maxFolds deep, within `seconds`; then the best sequence found is committed on the session
+// fold by fold while each lowers the exact Chamfer distance by minimumGain.
+FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOptions& options);
+
+}  // namespace curvefold

@@ -1,0 +1,113 @@
+#include "engine/fit/surface_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "engine/fit/surface_samples.hpp"
+
+namespace curvefold {
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using CgalTriangle = Kernel::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<CgalTriangle>::const_iterator>;
+using CgalTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Kernel::Point_3 point(const glm::dvec3& p) {
+  return {p.x, p.y, p.z};
+}
+
+}  // namespace
+
+// The closest-point queries of one mesh: its triangles with area (CGAL's queries assume them).
+struct SurfaceDistanceQuery::Tree {
+  Tree(const TriangleMesh& mesh, const char* which) {
+    for (const auto& t : mesh.triangles) {
+      CgalTriangle triangle(point(mesh.positions[t[0]]), point(mesh.positions[t[1]]),
+                            point(mesh.positions[t[2]]));
+      if (!triangle.is_degenerate()) triangles_.push_back(triangle);
+    }
+    if (triangles_.empty())
+      throw DegenerateMesh(std::string("the ") + which + " surface has no triangle with area");
+    tree_.insert(triangles_.begin(), triangles_.end());
+    tree_.build();
+    tree_.accelerate_distance_queries();
+    // The search structure is made by the first query: make it here, before queries run in
+    // parallel.
+    distance(mesh.positions[mesh.triangles.front()[0]]);
+  }
+  double distance(const glm::dvec3& p) const { return std::sqrt(tree_.squared_distance(point(p))); }
+
+  std::vector<CgalTriangle> triangles_;
+  CgalTree tree_;
+};
+
+SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& mesh, const char* which)
+    : tree_(std::make_unique<Tree>(mesh, which)) {}
+SurfaceDistanceQuery::~SurfaceDistanceQuery() = default;
+double SurfaceDistanceQuery::distance(const glm::dvec3& p) const {
+  return tree_->distance(p);
+}
+
+namespace {
+
+struct OneSide {
+  double max = 0.0, mean = 0.0;
+};
+
+// Samples of `from` (and its used vertices, for the maximum) measured to `to`.
+OneSide measureSide(const TriangleMesh& from, const SurfaceDistanceQuery& to, std::size_t count,
+                    std::uint64_t seed) {
+  const std::vector<SurfaceSample> samples = sampleSurface(from, count, seed);
+  std::vector<char> used(from.positions.size(), 0);
+  for (const auto& t : from.triangles)
+    for (std::uint32_t v : t) used[v] = 1;
+  std::vector<glm::dvec3> vertices;
+  for (std::size_t v = 0; v < from.positions.size(); ++v)
+    if (used[v]) vertices.push_back(from.positions[v]);
+  std::vector<double> sampleDistance(samples.size()), vertexDistance(vertices.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      sampleDistance[i] = to.distance(samples[i].position);
+  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) vertexDistance[i] = to.distance(vertices[i]);
+  });
+  OneSide side;
+  double sum = 0.0;
+  for (double d : sampleDistance) {
+    sum += d;
+    side.max = std::max(side.max, d);
+  }
+  for (double d : vertexDistance) side.max = std::max(side.max, d);
+  side.mean = samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
+  return side;
+}
+
+}  // namespace
+
+SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, std::size_t samples,
+                                std::uint64_t seed) {
+  const SurfaceDistanceQuery toA(a, "first"), toB(b, "second");
+  const OneSide fromA = measureSide(a, toB, samples, seed);
+  const OneSide fromB = measureSide(b, toA, samples, seed + 1);
+  SurfaceDistance result;
+  result.fromAMax = fromA.max;
+  result.fromAMean = fromA.mean;
+  result.fromBMax = fromB.max;
+  result.fromBMean = fromB.mean;
+  result.hausdorff = std::max(fromA.max, fromB.max);
+  result.chamfer = 0.5 * (fromA.mean + fromB.mean);
+  result.diagonal = boundingDiagonal(b);
+  return result;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,49 @@
+// Unfolding a target that was folded by reflection (issue 27): working back from the target to
+// the sheet. The last fold's crease is never moved after it is made, so it lies whole in that
+// fold's plane [Mitani & Igarashi 2011, Sec. 3.3], and the part the fold reflected meets the rest
+// only along it: the target's vertices strictly on one side of the plane, grown from a vertex
+// next to the crease, are that part (or the rest). Reflecting it back through the plane makes the
+// crease smooth again, and the target is as it was before its last fold; repeated, the target
+// unfolds to the sheet it was folded from, and its folds, read backwards, fold the sheet onto it.
+//
+// Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
+// their creases, the one whose reflection leaves the least length of sharp edges; of the two
+// sides of a crease (either unfolds it, the two results one reflection apart), the one with
+// fewer vertices on the initial sheet moves (the part that never moved stays where the sheet
+// is). It stops when no reflection takes away a crease.
+//
+// Known limits: a target must carry its creases as mesh edges (a folded sheet written as a mesh
+// does; a remeshed scan does not); a crease whose faces meet at less than the sharp-edge
+// threshold is not seen; where every part of the sheet has moved, the unfolded target may be the
+// sheet mirrored, and the folds read from it do not fold the sheet onto the target (the fit then
+// finds its folds by search alone).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "engine/geometry/reflection.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+
+namespace curvefold {
+
+struct UnfoldedFold {
+  ReflectionPlane plane;
+  // A vertex of the target deep in the part the fold reflected, where it lay before the fold.
+  glm::dvec3 seedBefore{0.0};
+};
+
+struct TargetUnfolding {
+  std::vector<UnfoldedFold> folds;   // in folding order: the first fold first
+  std::vector<glm::dvec3> unfolded;  // the target's vertices before its first fold
+  double sharpLengthLeft = 0.0;      // sharp edges the unfolded target still has, metres
+};
+
+// `sheet`: the initial sheet the target was folded from (the part that stays is found on it);
+// `minDihedralDegrees`: the sharp-edge threshold (above the sheet's own bends).
+TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
+                             double minDihedralDegrees, std::size_t maxFolds);
+
+}  // namespace curvefold

@@ -1,0 +1,329 @@
+// Folding toward a goal (issue 27): distances between surfaces, the target's crease planes, its
+// unfolding, and the fold search, on targets made from known folds.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/crease_planes.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/random_fold_target.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/fit/target_unfolding.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "sheet_fixtures.hpp"
+
+namespace curvefold {
+namespace {
+
+// Small and quick, also under the sanitizers.
+FitSettings quickSettings() {
+  FitSettings settings;
+  settings.sheetSamples = 700;
+  settings.targetSamples = 700;
+  settings.denseTargetSamples = 8000;
+  settings.proposals = 160;
+  return settings;
+}
+
+FitOptions quickOptions(std::size_t folds) {
+  FitOptions options;
+  options.maxFolds = folds;
+  options.distanceSamples = 4000;
+  return options;
+}
+
+// The same plane, either way round.
+bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double tolerance) {
+  return std::abs(std::abs(glm::dot(a.normal, b.normal)) - 1.0) < tolerance &&
+         std::abs(a.signedDistance(b.point)) < tolerance;
+}
+
+// A fit's result: every fold kept brings the sheet closer, and the design holds every invariant.
+void expectSoundFit(const FitResult& result, const FoldSession& session) {
+  for (std::size_t k = 1; k < result.steps.size(); ++k)
+    EXPECT_LT(result.steps[k].chamfer, result.steps[k - 1].chamfer) << "fold " << k;
+  EXPECT_EQ(result.steps.size() - 1 + (result.folds.size() - (result.steps.size() - 1)),
+            result.folds.size());
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(identical(replayFolds(session.initial(), result.folds), session.fixed()));
+}
+
+TEST(SurfaceSamples, AreSpreadByAreaAndTheSameForASeed) {
+  // Two triangles, the second three times the first's area.
+  TriangleMesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 0, 0}, {0, 3, 0}};
+  mesh.triangles = {{0, 1, 2}, {1, 3, 4}};
+  // Triangle 1 (1,0)-(3,0)-(0,3) has area 3 - 0.5... measured, not assumed:
+  const double small = 0.5, large = surfaceArea(mesh) - small;
+  const std::vector<SurfaceSample> samples = sampleSurface(mesh, 1000, 7);
+  ASSERT_EQ(samples.size(), 1000u);
+  const auto inSmall = std::count_if(samples.begin(), samples.end(),
+                                     [](const SurfaceSample& s) { return s.triangle == 0; });
+  // Stratified: each slice of the area holds one sample, so the split is exact to one.
+  EXPECT_NEAR(static_cast<double>(inSmall), 1000.0 * small / (small + large), 1.0);
+  for (const SurfaceSample& s : samples) {
+    EXPECT_NEAR(s.position.z, 0.0, 1e-15);
+    EXPECT_NEAR(s.barycentric.x + s.barycentric.y + s.barycentric.z, 1.0, 1e-12);
+    EXPECT_GE(std::min({s.barycentric.x, s.barycentric.y, s.barycentric.z}), 0.0);
+  }
+  const std::vector<SurfaceSample> again = sampleSurface(mesh, 1000, 7);
+  const std::vector<SurfaceSample> other = sampleSurface(mesh, 1000, 8);
+  EXPECT_EQ(again.front().position, samples.front().position);
+  EXPECT_EQ(again.back().position, samples.back().position);
+  EXPECT_NE(other.front().position, samples.front().position);
+}
+
+TEST(SurfaceDistance, OfASquareAndItsShiftIsTheShift) {
+  const TriangleMesh square = meshOf(makeSurface("square", {{"resolution", 8}}));
+  const SurfaceDistance self = surfaceDistance(square, square, 2000);
+  EXPECT_LT(self.hausdorff, 1e-15);
+  EXPECT_LT(self.chamfer, 1e-15);
+  TriangleMesh shifted = square;
+  for (glm::dvec3& p : shifted.positions) p.z += 0.01;
+  const SurfaceDistance d = surfaceDistance(square, shifted, 2000);
+  EXPECT_NEAR(d.hausdorff, 0.01, 1e-12);
+  EXPECT_NEAR(d.chamfer, 0.01, 1e-12);
+  EXPECT_NEAR(d.diagonal, 0.2 * std::sqrt(2.0), 1e-12);
+  // A quarter of the square against the whole: nothing of the quarter is off the square, and the
+  // far corner of the square is the farthest point from the quarter (0.1 * sqrt(2) away).
+  TriangleMesh quarter = meshOf(makeSurface("square", {{"size", 0.1}, {"resolution", 4}}));
+  for (glm::dvec3& p : quarter.positions) p += glm::dvec3(-0.05, -0.05, 0.0);
+  const SurfaceDistance q = surfaceDistance(quarter, square, 20000);
+  EXPECT_LT(q.fromAMax, 1e-15);
+  EXPECT_NEAR(q.fromBMax, 0.1 * std::sqrt(2.0), 1e-12);  // a vertex: measured exactly
+  // Three quarters of the square lie off the quarter, on average a few centimetres.
+  EXPECT_GT(q.fromBMean, 0.02);
+  EXPECT_LT(q.fromBMean, 0.06);
+}
+
+TEST(SurfaceDistance, RefusesAMeshWithoutArea) {
+  TriangleMesh flat;
+  flat.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  flat.triangles = {{0, 1, 2}};
+  const TriangleMesh square = meshOf(makeSurface("square", {{"resolution", 2}}));
+  EXPECT_THROW(surfaceDistance(square, flat), DegenerateMesh);
+  EXPECT_THROW(FoldFitter{flat}, InvalidTarget);
+}
+
+TEST(CreasePlanes, AreThePlanesOfTheFoldsThatMadeTheCreases) {
+  for (const char* surface : {"square", "cylinder"}) {
+    const RandomFoldTarget target = makeRandomFoldTarget(surface, {{"resolution", 24}}, 2, 2004);
+    const double size = sheetSize(target.initial);
+    CreasePlaneOptions options;
+    options.minDihedralDegrees = sharpEdgeThreshold(meshOf(target.initial));
+    const std::vector<CreasePlane> planes = findCreasePlanes(meshOf(target.sheet), options);
+    ASSERT_FALSE(planes.empty()) << surface;
+    // The last fold's crease was never moved: its plane is found exactly.
+    const ReflectionPlane& last = target.folds.back().plane;
+    EXPECT_TRUE(std::any_of(planes.begin(), planes.end(), [&](const CreasePlane& c) {
+      return samePlane(c.plane, last, 1e-9 * size);
+    })) << surface;
+    // Every plane found is a fold's plane or the first fold's moved on by the second: none is the
+    // plane of a flat piece that holds two creases.
+    const ReflectionPlane& first = target.folds.front().plane;
+    const ReflectionPlane moved{
+        last.reflect(first.point),
+        first.normal - 2.0 * glm::dot(first.normal, last.normal) * last.normal};
+    for (const CreasePlane& c : planes)
+      EXPECT_TRUE(samePlane(c.plane, last, 1e-6 * size) || samePlane(c.plane, first, 1e-6 * size) ||
+                  samePlane(c.plane, moved, 1e-6 * size))
+          << surface << ": a plane with " << c.support << " m of creases is no fold's";
+  }
+}
+
+TEST(TargetUnfolding, UnfoldsAFoldedSheetBackToItAndNamesItsFolds) {
+  const RandomFoldTarget target =
+      makeRandomFoldTarget("half_cylinder", {{"resolution", 40}}, 3, 3003);
+  const TriangleMesh sheet = meshOf(target.initial);
+  const TargetUnfolding plan =
+      unfoldTarget(meshOf(target.sheet), sheet, sharpEdgeThreshold(sheet), 6);
+  ASSERT_EQ(plan.folds.size(), 3u);
+  EXPECT_LT(plan.sharpLengthLeft, 1e-9);
+  const double size = sheetSize(target.initial);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_TRUE(samePlane(plan.folds[k].plane, target.folds[k].plane, 1e-9 * size)) << k;
+  // Unfolded, every vertex of the target lies on the sheet again.
+  const SurfaceDistanceQuery onSheet(sheet);
+  for (const glm::dvec3& p : plan.unfolded) EXPECT_LT(onSheet.distance(p), 1e-9 * size);
+}
+
+// Targets one random fold away, on a flat, a curved and a conical sheet: reached within 1% of the
+// diagonal, by the crease-reading path and by the search alone.
+TEST(FoldFit, ReachesAOneFoldTargetWithAndWithoutItsCreases) {
+  for (const bool creases : {true, false})
+    for (const char* surface : {"square", "cylinder", "cone"}) {
+      const RandomFoldTarget target = makeRandomFoldTarget(surface, {{"resolution", 24}}, 1, 1005);
+      FitSettings settings = quickSettings();
+      settings.useCreases = creases;
+      const FoldFitter fitter(meshOf(target.sheet), settings);
+      FoldSession session(target.initial);
+      const FitResult result = fitFolds(session, fitter, quickOptions(3));
+      ASSERT_GE(result.steps.size(), 2u) << surface << " creases " << creases;
+      const FitProgress& last = result.steps.back();
+      EXPECT_LE(last.hausdorff, 0.01 * last.diagonal) << surface << " creases " << creases;
+      expectSoundFit(result, session);
+    }
+}
+
+// A target whose first fold leaves the sheet no closer on its own (its part is moved on by the
+// second): a greedy search takes a compromise; the unfolding finds both folds.
+TEST(FoldFit, ReachesATwoFoldTargetWhoseFirstFoldDoesNotHelpAlone) {
+  const RandomFoldTarget target =
+      makeRandomFoldTarget("swept_curve", {{"resolution", 40}}, 2, 2007);
+  const FoldFitter fitter(meshOf(target.sheet), quickSettings());
+  FoldSession first(target.initial);
+  first.applyRecords({target.folds.front()});
+  EXPECT_GE(fitter.approximateDistance(first.fixed()), fitter.approximateDistance(target.initial));
+  FoldSession session(target.initial);
+  const FitResult result = fitFolds(session, fitter, quickOptions(4));
+  const FitProgress& last = result.steps.back();
+  EXPECT_LE(last.hausdorff, 0.01 * last.diagonal);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
+TEST(FoldFit, IsTheSameForTheSameSeed) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 20}}, 2, 2002);
+  FitSettings settings = quickSettings();
+  settings.useCreases = false;  // the search itself, threads and all
+  const FoldFitter fitter(meshOf(target.sheet), settings);
+  FoldSession a(target.initial), b(target.initial);
+  const FitResult ra = fitFolds(a, fitter, quickOptions(2));
+  const FitResult rb = fitFolds(b, fitter, quickOptions(2));
+  ASSERT_FALSE(ra.folds.empty());
+  EXPECT_TRUE(identical(a.fixed(), b.fixed()));
+  ASSERT_EQ(ra.folds.size(), rb.folds.size());
+  for (std::size_t k = 0; k < ra.folds.size(); ++k) {
+    EXPECT_EQ(ra.folds[k].plane.point, rb.folds[k].plane.point);
+    EXPECT_EQ(ra.folds[k].plane.normal, rb.folds[k].plane.normal);
+  }
+}
+
+// A saddle no reflection sequence reaches from a square: each fold kept brings it closer.
+TEST(FoldFit, BringsASquareCloserToASaddleWithEveryFold) {
+  TriangleMesh saddle;
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = 0.2 * (double(i) / n - 0.5), y = 0.2 * (double(j) / n - 0.5);
+      saddle.positions.push_back({x, y, (x * x - y * y) / 0.3});
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = j * (n + 1) + i;
+      saddle.triangles.push_back({a, a + 1, a + n + 2});
+      saddle.triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(makeSurface("square", {{"resolution", 20}}));
+  const FitResult result = fitFolds(session, fitter, quickOptions(3));
+  ASSERT_GE(result.steps.size(), 2u);
+  expectSoundFit(result, session);
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
+// The target passes the tube through itself; the fit does not, unless allowed.
+TEST(FoldFit, NeverPassesTheSheetThroughItselfUnlessAllowed) {
+  const Sheet tube = makeSurface("cylinder", {{"resolution", 16}});
+  FoldSession made(tube);
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(-1.0, -1.0, 0.0));
+  const glm::dvec3 through(0.0, 0.025, 0.0);
+  const glm::dvec3 grabbed = made.beginDragNear({0.045, 0.1, 0.0});
+  made.updateDrag(grabbed - 2.0 * glm::dot(grabbed - through, normal) * normal);
+  ASSERT_TRUE(made.commit());
+  ASSERT_FALSE(findSelfIntersections(made.fixed()).intersections.empty());
+  for (const bool allow : {false, true}) {
+    FitSettings settings = quickSettings();
+    settings.allowSelfIntersection = allow;
+    const FoldFitter fitter(meshOf(made.fixed()), settings);
+    FoldSession session(tube);
+    const FitResult result = fitFolds(session, fitter, quickOptions(2));
+    const bool crosses = !findSelfIntersections(session.fixed()).intersections.empty();
+    if (allow) {
+      EXPECT_TRUE(crosses);
+      EXPECT_LE(result.steps.back().hausdorff, 0.01 * result.steps.back().diagonal);
+    } else {
+      EXPECT_FALSE(crosses);
+    }
+  }
+}
+
+TEST(FoldFit, StopsAtItsTimeLimit) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cone", {{"resolution", 24}}, 3, 3000);
+  FitSettings settings = quickSettings();
+  settings.useCreases = false;
+  const FoldFitter fitter(meshOf(target.sheet), settings);
+  FoldSession session(target.initial);
+  FitOptions options = quickOptions(6);
+  options.seconds = 0.2;
+  const auto start = std::chrono::steady_clock::now();
+  const FitResult result = fitFolds(session, fitter, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(result.timedOut);
+  EXPECT_EQ(result.stopReason, "reached the time limit");
+  // The step under way ends at its next check, and the folds found are measured: well within a
+  // few seconds even under the sanitizers.
+  EXPECT_LT(seconds, 10.0);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
+TEST(FoldFit, RefusesATargetFarAwayOrInOtherUnits) {
+  const Sheet sheet = makeSurface("square", {{"resolution", 4}});
+  TriangleMesh far = meshOf(sheet);
+  for (glm::dvec3& p : far.positions) p.x += 100.0;
+  EXPECT_THROW(FoldFitter(far).checkAgainst(sheet), InvalidTarget);
+  TriangleMesh millimetres = meshOf(sheet);
+  for (glm::dvec3& p : millimetres.positions) p *= 1000.0;
+  EXPECT_THROW(FoldFitter(millimetres).checkAgainst(sheet), InvalidTarget);
+  EXPECT_NO_THROW(FoldFitter(meshOf(sheet)).checkAgainst(sheet));
+}
+
+// A symmetric design's fit folds whole groups: the fold and its images, as a session makes them.
+TEST(FoldFit, ASymmetricFitFoldsGroups) {
+  const Sheet tube = makeSurface("cylinder", {{"resolution", 24}});
+  // The tube's top, front and back, tipped in: a cap and its image.
+  FoldSession made(tube);
+  made.setSymmetry(parseSymmetry("rotational:2:y", tube));
+  const glm::dvec3 grabbed = made.beginDragNear({0.0, 0.105, 0.045});
+  made.updateDrag(grabbed + glm::dvec3(0.0, -0.02, -0.02));
+  ASSERT_TRUE(made.commit());
+  ASSERT_EQ(made.foldCount(), 2u);
+  ASSERT_TRUE(findSelfIntersections(made.fixed()).intersections.empty());
+  const FoldFitter fitter(meshOf(made.fixed()), quickSettings());
+  FoldSession session(tube);
+  session.setSymmetry(parseSymmetry("rotational:2:y", tube));
+  const FitResult result = fitFolds(session, fitter, quickOptions(2));
+  ASSERT_GE(result.steps.size(), 2u);
+  EXPECT_EQ(result.folds.size(), 2 * (result.steps.size() - 1));  // each fold with its image
+  for (const FoldRecord& fold : result.folds) EXPECT_GT(fold.group, 0u);
+  EXPECT_LE(result.steps.back().hausdorff, 0.01 * result.steps.back().diagonal);
+}
+
+TEST(FoldFitter, SuggestsFoldsAndLeavesTheSessionAsItWas) {
+  const RandomFoldTarget target = makeRandomFoldTarget("rectangle", {{"resolution", 24}}, 1, 1000);
+  const FoldFitter fitter(meshOf(target.sheet), quickSettings());
+  FoldSession session(target.initial);
+  const Sheet before = session.fixed();
+  const std::vector<FoldSuggestion> suggestions = fitter.suggest(session, 3);
+  ASSERT_FALSE(suggestions.empty());
+  EXPECT_TRUE(identical(session.fixed(), before));
+  EXPECT_EQ(session.foldCount(), 0u);
+  for (std::size_t k = 1; k < suggestions.size(); ++k)
+    EXPECT_LE(suggestions[k - 1].after, suggestions[k].after);
+  for (const FoldSuggestion& s : suggestions) {
+    EXPECT_LT(s.after, s.before * 1.1);
+    EXPECT_TRUE(identical(applyFold(before, s.folds.front()), s.sheet));
+  }
+  // The best one is the target's fold.
+  EXPECT_TRUE(samePlane(suggestions.front().folds.front().plane, target.folds.front().plane,
+                        1e-3 * sheetSize(before)));
+}
+
+}  // namespace
+}  // namespace curvefold
