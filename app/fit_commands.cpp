@@ -26,15 +26,16 @@ namespace {
 namespace fs = std::filesystem;
 
 // "12.3 mm (4.1% of ...)"-style figures.
+// Three digits; what lies below a nanometre is rounding, and printed as 0.
 std::string millimetres(double metres) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g mm", metres * 1000.0);
+  std::snprintf(text, sizeof text, "%.3g mm", std::abs(metres) < 1e-9 ? 0.0 : metres * 1000.0);
   return text;
 }
 
 std::string percent(double fraction) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g%%", fraction * 100.0);
+  std::snprintf(text, sizeof text, "%.3g%%", std::abs(fraction) < 1e-9 ? 0.0 : fraction * 100.0);
   return text;
 }
 
@@ -84,7 +85,10 @@ void addFitCommand(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
       ->required();
   command->callback([options, command] {
-    // Everything that can be refused is refused before the search.
+    // Everything that can be refused is refused before the search (a NaN passes a range check).
+    if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
+      throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
+                       std::to_string(options->seconds));
     Design design = designFromSurfaceOptions(options->from, command, options->output);
     TriangleMesh target = readObjMesh(options->target);
     FitSettings settings;
@@ -145,7 +149,7 @@ void addFitCommand(CLI::App& app) {
     };
     fit.searching = [](std::size_t depth, double distance, double seconds) {
       char text[96];
-      std::snprintf(text, sizeof text, "searching: %zu folds deep, best %s (approximate), %.1f s",
+      std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s",
                     depth, millimetres(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };

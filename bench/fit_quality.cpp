@@ -168,8 +168,17 @@ int run(int argc, char** argv) {
     std::vector<double> distances, times;
     for (std::size_t k = 0; k < perCount; ++k) {
       const Case& c = cases()[(k + 3 * n) % cases().size()];
-      const std::uint64_t seed = 1000 * n + k;
-      const RandomFoldTarget target = makeRandomFoldTarget(c.surface, c.parameters, n, seed);
+      // A surface that takes no more such folds from one seed takes them from another.
+      std::uint64_t seed = 1000 * n + k;
+      RandomFoldTarget target;
+      for (int attempt = 0;; ++attempt, seed += 100) {
+        try {
+          target = makeRandomFoldTarget(c.surface, c.parameters, n, seed);
+          break;
+        } catch (const std::runtime_error&) {
+          if (attempt == 5) throw;
+        }
+      }
       const TriangleMesh mesh = meshOf(target.sheet);
       if (!writeTargets.empty())
         writeObj(mesh, std::filesystem::path(writeTargets) /

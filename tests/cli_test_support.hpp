@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -63,6 +64,22 @@ class CliTest : public ::testing::Test {
     result.out = slurp(out);
     result.err = slurp(err);
     return result;
+  }
+
+  // A failed command: non-zero exit, exactly one line on stderr naming the problem, and no file
+  // at `output` (nor a temporary next to it).
+  void expectFailure(const std::string& arguments, const std::string& fragment,
+                     const fs::path& output) const {
+    const CommandResult r = run(arguments);
+    EXPECT_NE(r.exitCode, 0) << arguments;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
+    EXPECT_FALSE(fs::exists(output)) << output;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_TRUE(name.front() == '.' || name.find(".tmp") == std::string::npos)
+          << "temporary left behind: " << name;
+    }
   }
 
   fs::path dir_;

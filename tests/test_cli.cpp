@@ -24,22 +24,6 @@ namespace {
 
 class Cli : public curvefold::testing::CliTest {
  protected:
-  // A failed command: non-zero exit, exactly one line on stderr naming the problem, and no file
-  // at `output` (nor a temporary next to it).
-  void expectFailure(const std::string& arguments, const std::string& fragment,
-                     const fs::path& output) const {
-    const CommandResult r = run(arguments);
-    EXPECT_NE(r.exitCode, 0) << arguments;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err;
-    EXPECT_FALSE(fs::exists(output)) << output;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      const std::string name = entry.path().filename().string();
-      EXPECT_TRUE(name.front() == '.' || name.find(".tmp") == std::string::npos)
-          << "temporary left behind: " << name;
-    }
-  }
-
   std::string newDesign(const std::string& arguments, const std::string& name) const {
     const CommandResult r = run("new " + arguments + " -o " + path(name).string());
     EXPECT_EQ(r.exitCode, 0) << r.err;

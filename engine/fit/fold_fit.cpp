@@ -102,11 +102,9 @@ struct EvaluationCopy {
   std::vector<VertexIndex> samples;
   std::vector<glm::dvec3> normals;
   double radius = 0.0;  // half the samples' spacing
-  std::uint64_t generation = 0;
 };
 
-EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::uint64_t seed,
-                                  std::uint64_t generation) {
+EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::uint64_t seed) {
   // Area-uniform in the development is area-uniform on the surface (an isometry).
   TriangleMesh flat;
   flat.positions.reserve(sheet.vertexCount());
@@ -114,7 +112,6 @@ EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::ui
   flat.triangles = meshOf(sheet).triangles;
   const std::vector<SurfaceSample> samples = sampleSurface(flat, count, seed);
   EvaluationCopy copy;
-  copy.generation = generation;
   copy.sheet = sheet;
   copy.size = sheetSize(sheet);
   for (const SurfaceSample& sample : samples) {
@@ -155,7 +152,7 @@ struct Drag {
 
 // One thread's scratch: the copy's folded form and the sheet samples' tree.
 struct Worker {
-  std::uint64_t generation = 0;
+  bool ready = false;  // `out` and `watch` are set up on the evaluation copy
   Sheet out;
   ReflectionWorkspace workspace;
   DragIntersectionWatch watch;  // a drag that passes the sheet through itself scores nothing
@@ -348,17 +345,17 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   if (count == 0) return suggestions;
   const Target& target = *target_;
   const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
-                                                 settings_.seed * 0x9e3779b97f4a7c15ull + step, 1);
+                                                 settings_.seed * 0x9e3779b97f4a7c15ull + step);
   if (copy.samples.empty()) return suggestions;
 
   tbb::enumerable_thread_specific<Worker> workers;
   const SymmetricFolder* symmetric = session.symmetricFolder().get();
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
   auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
-    if (worker.generation != copy.generation) {
+    if (!worker.ready) {
       worker.out = copy.sheet;
       worker.workspace.clear();
-      worker.generation = copy.generation;
+      worker.ready = true;
       worker.cloud.points.resize(copy.samples.size());
       worker.normals.resize(copy.samples.size());
       if (!settings_.allowSelfIntersection) worker.watch.begin(copy.sheet);
@@ -619,6 +616,7 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
                      .relativeHausdorff() <= kUnfoldedCloseEnough;
     }
   }
+  if (unfolded) result.stopReason = "the target unfolded: its creases named every fold";
   for (std::size_t depth = 0; depth < options.maxFolds && !unfolded; ++depth) {
     std::vector<State> children;
     for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {

@@ -150,7 +150,8 @@ struct FitOptions {
   // After the start, then after each fold of the best sequence found, with the session holding
   // it (the steps of the result say how many are kept).
   std::function<void(const FitProgress&)> progress;
-  // While searching, after each depth: folds so far, the best approximate distance, seconds.
+  // While searching, after the unfolding and after each depth of the beam: folds, the best
+  // approximate distance, seconds.
   std::function<void(std::size_t, double, double)> searching;
 };
 

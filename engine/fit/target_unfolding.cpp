@@ -5,6 +5,8 @@
 #include <map>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -65,7 +67,6 @@ struct Candidate {
   ReflectionPlane plane;
   std::vector<std::uint32_t> part;
   double sharpAfter = 0.0;
-  std::size_t anchored = 0;
 };
 
 }  // namespace
@@ -75,7 +76,7 @@ namespace {
 struct Unfolder {
   const TriangleMesh& target;
   const Connectivity connectivity;
-  const double diagonal, onPlane, onSheet, cosThreshold, minDihedralDegrees;
+  const double diagonal, onPlane, cosThreshold, minDihedralDegrees;
   const SurfaceDistanceQuery& sheetSurface;
   std::size_t maxFolds;
   std::size_t leaves = 0;  // unfoldings finished, to bound the branching
@@ -95,10 +96,6 @@ struct Unfolder {
     options.minDihedralDegrees = minDihedralDegrees;
     options.maxPlanes = 8;
     const std::vector<CreasePlane> planes = findCreasePlanes(current, options);
-    std::vector<char> anchored(positions.size());
-    for (std::size_t v = 0; v < positions.size(); ++v)
-      anchored[v] =
-          !connectivity.neighbours[v].empty() && sheetSurface.distance(positions[v]) <= onSheet;
     std::vector<Candidate> candidates;
     std::vector<int> component(positions.size());
     for (const CreasePlane& crease : planes) {
@@ -125,7 +122,6 @@ struct Unfolder {
               const std::uint32_t v = stack.back();
               stack.pop_back();
               candidate.part.push_back(v);
-              candidate.anchored += anchored[v];
               for (std::uint32_t w : connectivity.neighbours[v])
                 if (component[w] < 0 && std::abs(d[w]) > onPlane && (d[w] > 0.0) == positive) {
                   component[w] = 1;
@@ -142,66 +138,130 @@ struct Unfolder {
     return candidates;
   }
 
-  // Unfolds from `positions` (folds found so far in `backwards`); returns the best unfolding.
-  TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<UnfoldedFold> backwards,
-                         double sharp) {
+  // One unfolding step as made: the piece beside the crease reflected, and where the deepest
+  // vertex of the piece and of the rest lie after it.
+  struct Step {
+    ReflectionPlane plane;
+    glm::dvec3 seedPiece{0.0}, seedRest{0.0};
+  };
+
+  // x -> linear x + offset.
+  struct Motion {
+    glm::dmat3 linear{1.0};
+    glm::dvec3 offset{0.0};
+    glm::dvec3 operator()(const glm::dvec3& x) const { return linear * x + offset; }
+    Motion then(const ReflectionPlane& p) const {  // this after the reflection through p
+      const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
+      return {linear * mirror, linear * (2.0 * glm::dot(p.point, p.normal) * p.normal) + offset};
+    }
+  };
+
+  // Reflecting the piece or the rest of the target unfolds a crease alike, the two results one
+  // reflection of the whole apart, and only the right choices end on the sheet. Made with the
+  // piece each time, the unfolding with the rest reflected at a set of steps is the same one
+  // moved by those steps' reflections in order (each later step's plane moved by the earlier
+  // ones), so every choice is read off at the end: the one that ends on the sheet wins.
+  TargetUnfolding bestSides(const std::vector<Step>& steps, const std::vector<glm::dvec3>& unfolded,
+                            double sharp) const {
+    const std::size_t n = steps.size();
+    std::vector<glm::dvec3> probe;
+    for (std::size_t v = 0; v < unfolded.size(); v += 1 + unfolded.size() / 200)
+      if (!connectivity.neighbours[v].empty()) probe.push_back(unfolded[v]);
+    double bestOff = kInfinitySharp;
+    std::uint32_t bestRest = 0;
+    for (std::uint32_t rest = 0; rest < (1u << n); ++rest) {
+      Motion motion;
+      for (std::size_t u = 0; u < n; ++u)
+        if (rest >> u & 1u) motion = motion.then(steps[u].plane);
+      double off = 0.0;
+      for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
+      if (off < bestOff - 1e-12) {
+        bestOff = off;
+        bestRest = rest;
+      }
+    }
+    TargetUnfolding result;
+    Motion motion;
+    for (std::size_t u = 0; u < n; ++u) {
+      const bool rest = bestRest >> u & 1u;
+      UnfoldedFold fold;
+      fold.plane = {motion(steps[u].plane.point), motion.linear * steps[u].plane.normal};
+      if (rest) motion = motion.then(steps[u].plane);
+      fold.seedBefore = motion(rest ? steps[u].seedRest : steps[u].seedPiece);
+      result.folds.insert(result.folds.begin(), fold);  // unfolding runs backwards
+    }
+    for (const glm::dvec3& p : unfolded) result.unfolded.push_back(motion(p));
+    result.sharpLengthLeft = sharp;
+    return result;
+  }
+
+  // Unfolds from `positions` (the steps so far in `steps`); returns the best unfolding.
+  TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
     std::vector<Candidate> candidates;
-    if (backwards.size() < maxFolds) candidates = candidatesAt(positions);
+    if (steps.size() < maxFolds) candidates = candidatesAt(positions);
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
     if (candidates.empty() || !(least < sharp - 0.02 * diagonal)) {
       ++leaves;
-      TargetUnfolding result;
-      result.folds.assign(backwards.rbegin(), backwards.rend());
-      result.sharpLengthLeft = sharp;
-      result.unfolded = std::move(positions);
-      return result;
+      return bestSides(steps, positions, sharp);
     }
-    // The sides of the crease that unfold it alike, the one holding more of the sheet last (the
-    // side that never moved stays where the sheet is): both are followed, while fewer than
-    // kMaxUnfoldings have ended (their unfoldings differ by a reflection of the whole), and the
-    // one that ends on the sheet wins.
-    std::vector<const Candidate*> sides;
-    for (const Candidate& c : candidates)
-      if (c.sharpAfter <= least + 1e-6 * diagonal) sides.push_back(&c);
-    std::stable_sort(sides.begin(), sides.end(), [](const Candidate* a, const Candidate* b) {
-      return a->anchored != b->anchored ? a->anchored < b->anchored
-                                        : a->part.size() < b->part.size();
-    });
-    const std::size_t tries = leaves >= kMaxUnfoldings ? 1 : std::min<std::size_t>(2, sides.size());
+    // The pieces that take away the most crease: the best, and the best through another plane
+    // (a crease a later fold moved may be unfolded first, and lead nowhere), while fewer than
+    // kMaxUnfoldings unfoldings have ended.
+    std::vector<const Candidate*> choices;
+    for (int round = 0; round < 2; ++round) {
+      const Candidate* chosen = nullptr;
+      for (const Candidate& c : candidates) {
+        if (!choices.empty() &&
+            std::abs(std::abs(glm::dot(c.plane.normal, choices[0]->plane.normal)) - 1.0) < 1e-6 &&
+            std::abs(choices[0]->plane.signedDistance(c.plane.point)) < onPlane)
+          continue;
+        if (!(c.sharpAfter < sharp - 0.02 * diagonal)) continue;
+        if (!chosen || c.sharpAfter < chosen->sharpAfter - 1e-6 * diagonal ||
+            (c.sharpAfter <= chosen->sharpAfter + 1e-6 * diagonal &&
+             c.part.size() < chosen->part.size()))
+          chosen = &c;
+      }
+      if (chosen) choices.push_back(chosen);
+    }
     TargetUnfolding best;
     double bestOff = kInfinitySharp;
-    for (std::size_t k = 0; k < tries; ++k) {
-      const Candidate& chosen = *sides[k];
+    bool first = true;
+    for (const Candidate* chosen : choices) {
+      if (!first && leaves >= kMaxUnfoldings) break;
+      std::vector<char> inPiece(positions.size(), 0);
+      for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
-      UnfoldedFold fold;
-      fold.plane = chosen.plane;
-      double deepest = -1.0;
-      for (std::uint32_t v : chosen.part) {
-        next[v] = chosen.plane.reflect(next[v]);
-        const double depth = std::abs(chosen.plane.signedDistance(next[v]));
+      Step step{chosen->plane, {}, {}};
+      double deepestPiece = -1.0, deepestRest = -1.0;
+      for (std::size_t v = 0; v < positions.size(); ++v) {
+        if (connectivity.neighbours[v].empty()) continue;
+        if (inPiece[v]) next[v] = chosen->plane.reflect(next[v]);
+        const double depth = std::abs(chosen->plane.signedDistance(next[v]));
+        double& deepest = inPiece[v] ? deepestPiece : deepestRest;
         if (depth > deepest) {
           deepest = depth;
-          fold.seedBefore = next[v];
+          (inPiece[v] ? step.seedPiece : step.seedRest) = next[v];
         }
       }
-      std::vector<UnfoldedFold> more = backwards;
-      more.push_back(fold);
-      TargetUnfolding result = unfold(std::move(next), std::move(more), chosen.sharpAfter);
-      const double off = tries > 1 ? offSheet(result.unfolded) : 0.0;
+      std::vector<Step> more = steps;
+      more.push_back(step);
+      TargetUnfolding result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
+      const double off = offSheet(result.unfolded);
       // The unfolding that takes away more creases, then the one that ends on the sheet.
-      if (k == 0 || result.sharpLengthLeft < best.sharpLengthLeft - 0.02 * diagonal ||
+      if (first || result.sharpLengthLeft < best.sharpLengthLeft - 0.02 * diagonal ||
           (result.sharpLengthLeft <= best.sharpLengthLeft + 0.02 * diagonal && off < bestOff)) {
         best = std::move(result);
         bestOff = off;
       }
+      first = false;
     }
     return best;
   }
 
   static constexpr double kInfinitySharp = 1e300;
-  static constexpr std::size_t kMaxUnfoldings = 8;
+  static constexpr std::size_t kMaxUnfoldings = 16;
 };
 
 }  // namespace
@@ -214,7 +274,6 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                     connectivityOf(target),
                     diagonal,
                     1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
-                    1e-4 * diagonal,
                     std::cos(minDihedralDegrees * kPi / 180.0),
                     minDihedralDegrees,
                     sheetSurface,

@@ -7,16 +7,18 @@
 // unfolds to the sheet it was folded from, and its folds, read backwards, fold the sheet onto it.
 //
 // Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
-// their creases, the one whose reflection leaves the least length of sharp edges; of the two
-// sides of a crease (either unfolds it, the two results one reflection apart), the one with
-// fewer vertices on the initial sheet moves (the part that never moved stays where the sheet
-// is). It stops when no reflection takes away a crease.
+// their creases, the reflection that leaves the least length of sharp edges (and follows the
+// second best through another plane too, up to 16 unfoldings: a crease a later fold moved can be
+// unfolded first and lead nowhere). It stops when no reflection takes away a crease. Reflecting a
+// piece or the rest of the target unfolds its crease alike, one reflection of the whole apart; of
+// every such choice along an unfolding, the one whose result lies on the initial sheet is kept
+// (the part that never moved stays where the sheet is), and the unfolding that ends closest to
+// the sheet wins.
 //
 // Known limits: a target must carry its creases as mesh edges (a folded sheet written as a mesh
 // does; a remeshed scan does not); a crease whose faces meet at less than the sharp-edge
-// threshold is not seen; where every part of the sheet has moved, the unfolded target may be the
-// sheet mirrored, and the folds read from it do not fold the sheet onto the target (the fit then
-// finds its folds by search alone).
+// threshold is not seen; an unfolding that ends off the sheet names folds that do not fold the
+// sheet onto the target (the fit then finds its folds by search alone).
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,83 @@
+// Folding toward a goal (issue 27, 4): one suggestion on a 10k-triangle sheet (target 2 s on a
+// 2-core machine), a fit of 4 folds (target 60 s), and the distance a user checks.
+//
+//   build/bench/bench_fit --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+#include <map>
+
+#include <benchmark/benchmark.h>
+
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/random_fold_target.hpp"
+#include "engine/fit/surface_distance.hpp"
+
+namespace curvefold {
+namespace {
+
+// The default cylinder at resolution 82: 10k triangles (surfaces.hpp), folded at random.
+const RandomFoldTarget& cylinderTarget(std::size_t folds) {
+  static std::map<std::size_t, RandomFoldTarget> targets;
+  auto it = targets.find(folds);
+  if (it == targets.end())
+    it = targets
+             .emplace(folds,
+                      makeRandomFoldTarget("cylinder", {{"resolution", 82}}, folds, 4000 + folds))
+             .first;
+  return it->second;
+}
+
+// The next fold for an unfolded 10k sheet toward a 2-fold target, as the studio asks for it.
+void BM_SuggestFold(benchmark::State& state) {
+  const RandomFoldTarget& target = cylinderTarget(2);
+  const FoldFitter fitter(meshOf(target.sheet));
+  FoldSession session(target.initial);
+  std::size_t found = 0;
+  for (auto _ : state) found = fitter.suggest(session, 1).size();
+  state.counters["triangles"] = static_cast<double>(target.initial.triangleCount());
+  state.counters["suggestions"] = static_cast<double>(found);
+}
+BENCHMARK(BM_SuggestFold)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The same with the target's creases ignored: the search alone.
+void BM_SuggestFoldBySearchAlone(benchmark::State& state) {
+  const RandomFoldTarget& target = cylinderTarget(2);
+  FitSettings settings;
+  settings.useCreases = false;
+  const FoldFitter fitter(meshOf(target.sheet), settings);
+  FoldSession session(target.initial);
+  for (auto _ : state) benchmark::DoNotOptimize(fitter.suggest(session, 1));
+}
+BENCHMARK(BM_SuggestFoldBySearchAlone)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// A whole fit of a 4-fold target on the 10k sheet: by unfolding the target (arg 1), or by the
+// beam search alone (arg 0).
+void BM_FitFourFolds(benchmark::State& state) {
+  const RandomFoldTarget& target = cylinderTarget(4);
+  FitSettings settings;
+  settings.useCreases = state.range(0) != 0;
+  const FoldFitter fitter(meshOf(target.sheet), settings);
+  double hausdorff = 0.0, folds = 0.0;
+  for (auto _ : state) {
+    FoldSession session(target.initial);
+    FitOptions options;
+    options.maxFolds = 4;
+    const FitResult result = fitFolds(session, fitter, options);
+    hausdorff = result.steps.back().hausdorff / result.steps.back().diagonal;
+    folds = static_cast<double>(result.steps.size() - 1);
+  }
+  state.counters["relative_hausdorff"] = hausdorff;
+  state.counters["folds"] = folds;
+}
+BENCHMARK(BM_FitFourFolds)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// `curvefold distance` of the 10k sheets, 20k samples a side.
+void BM_Distance(benchmark::State& state) {
+  const RandomFoldTarget& target = cylinderTarget(2);
+  const TriangleMesh a = meshOf(target.initial), b = meshOf(target.sheet);
+  for (auto _ : state) benchmark::DoNotOptimize(surfaceDistance(a, b));
+}
+BENCHMARK(BM_Distance)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace curvefold
+
+BENCHMARK_MAIN();
