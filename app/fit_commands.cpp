@@ -149,8 +149,8 @@ void addFitCommand(CLI::App& app) {
     };
     fit.searching = [](std::size_t depth, double distance, double seconds) {
       char text[96];
-      std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s",
-                    depth, millimetres(distance).c_str(), seconds);
+      std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
+                    millimetres(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };
     const FitResult result = fitFolds(session, *fitter, fit);
