@@ -155,12 +155,6 @@ void addFitCommand(CLI::App& app) {
     };
     const FitResult result = fitFolds(session, *fitter, fit);
     design.folds = result.folds;
-    const std::size_t kept = result.steps.size() - 1;
-    if (log.size() > kept) {
-      std::cout << "kept the first " << kept << " of " << log.size()
-                << " folds (those after bring it closer by too little)\n";
-      log.resize(kept);
-    }
 
     OutputSet outputs;
     outputs.add(options->output, [&](const fs::path& at) { saveDesign(design, at); });

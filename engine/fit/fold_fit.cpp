@@ -569,7 +569,8 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
     std::vector<FoldRecord> folds;    // beyond the session's own
     std::vector<std::size_t> groups;  // folds per group (a fold and its images)
     double score = 0.0;
-    bool crease = false;  // its last fold is through a crease plane
+    bool crease = false;   // its last fold is through a crease plane
+    bool monotone = true;  // every fold brought the sheet closer (by the search's distance)
   };
   const std::vector<FoldRecord> base(
       session.folds().begin(),
@@ -584,6 +585,7 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
   };
   std::vector<State> beam{{{}, {}, fitter.approximateDistance(session.fixed())}};
   State best = beam.front();
+  State bestMonotone = best;  // the best whose every fold brings the sheet closer
   result.stopReason = "reached the most folds asked for";
 
   bool unfolded = false;
@@ -628,6 +630,7 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
         child.groups.push_back(next.folds.size());
         child.score = next.after;
         child.crease = next.crease;
+        child.monotone = beam[k].monotone && next.after < beam[k].score;
         children.push_back(std::move(child));
       }
     }
@@ -647,39 +650,69 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
     if (beam.size() > options.beamWidth + options.creaseWidth)
       beam.resize(options.beamWidth + options.creaseWidth);
     if (beam.front().score < best.score) best = beam.front();
+    for (const State& state : beam)
+      if (state.monotone && state.score < bestMonotone.score) bestMonotone = state;
     if (options.searching) options.searching(depth + 1, beam.front().score, seconds());
   }
 
-  // The best sequence found, measured exactly after each fold; kept up to where it comes
-  // closest, less any last folds that gain under minimumGain each (a fold on the way may gain
-  // little itself and still be what the next one needs).
-  std::vector<FitProgress> measured;
-  std::vector<std::size_t> foldCounts;  // the session's folds after each group
-  for (std::size_t g = 0, first = 0; g < best.groups.size(); first += best.groups[g++]) {
-    session.applyRecords(
-        {best.folds.begin() + static_cast<std::ptrdiff_t>(first),
-         best.folds.begin() + static_cast<std::ptrdiff_t>(first + best.groups[g])});
-    measured.push_back(measureNow(g + 1));
-    foldCounts.push_back(session.foldCount());
-    if (options.progress) options.progress(measured.back());
-  }
-  std::size_t keep = 0;
-  for (std::size_t g = 0; g < measured.size(); ++g)
-    if (measured[g].chamfer < (keep ? measured[keep - 1] : result.steps.front()).chamfer)
-      keep = g + 1;
-  auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
-    const double before = (g > 0 ? measured[g - 1] : result.steps.front()).chamfer;
-    return measured[g].chamfer < (1.0 - options.minimumGain) * before &&
-           before - measured[g].chamfer > options.minimumAbsoluteGain * measured[g].diagonal;
+  // A sequence measured exactly after each fold, and how many of its folds to keep: up to where
+  // it comes closest, less any last folds that gain under minimumGain each (a fold on the way may
+  // gain little itself, or lose, and still be what the next one needs); `strict`: only while
+  // every fold gains.
+  struct Measured {
+    std::vector<FitProgress> steps;
+    std::size_t keep = 0;
   };
-  while (keep > 0 && !gains(keep - 1)) --keep;
-  if (keep < measured.size()) {
-    while (session.foldCount() > (keep ? foldCounts[keep - 1] : base.size())) session.undo();
+  auto measureSequence = [&](const State& state, bool strict) {
+    Measured m;
+    for (std::size_t g = 0, first = 0; g < state.groups.size(); first += state.groups[g++]) {
+      session.applyRecords(
+          {state.folds.begin() + static_cast<std::ptrdiff_t>(first),
+           state.folds.begin() + static_cast<std::ptrdiff_t>(first + state.groups[g])});
+      m.steps.push_back(measureNow(g + 1));
+    }
+    while (session.foldCount() > base.size()) session.undo();
+    auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
+      const double before = (g > 0 ? m.steps[g - 1] : result.steps.front()).chamfer;
+      return m.steps[g].chamfer < (1.0 - options.minimumGain) * before &&
+             before - m.steps[g].chamfer > options.minimumAbsoluteGain * m.steps[g].diagonal;
+    };
+    if (strict) {
+      while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
+    } else {
+      for (std::size_t g = 0; g < m.steps.size(); ++g)
+        if (m.steps[g].chamfer < (m.keep ? m.steps[m.keep - 1] : result.steps.front()).chamfer)
+          m.keep = g + 1;
+      while (m.keep > 0 && !gains(m.keep - 1)) --m.keep;
+    }
+    return m;
+  };
+  // The best sequence found; where it does not reach the target (1% of the diagonal) and a fold
+  // on its way brought the sheet no closer, the best sequence whose every fold does instead: on a
+  // shape no sequence reaches, every fold kept brings the sheet closer.
+  const State* chosen = &best;
+  Measured measured = measureSequence(best, false);
+  const auto reaches = [&](const Measured& m) {
+    return m.keep > 0 && m.steps[m.keep - 1].hausdorff <= 0.01 * m.steps[m.keep - 1].diagonal;
+  };
+  bool falls = true;
+  for (std::size_t g = 0; g < measured.keep; ++g)
+    falls = falls && measured.steps[g].chamfer <
+                         (g > 0 ? measured.steps[g - 1] : result.steps.front()).chamfer;
+  if (!reaches(measured) && !falls) {
+    chosen = &bestMonotone;
+    measured = measureSequence(bestMonotone, true);
+  }
+  if (measured.keep < measured.steps.size())
     result.stopReason = "the next fold found brings the sheet closer by less than " +
                         std::to_string(int(std::round(options.minimumGain * 100))) + "%";
+  for (std::size_t g = 0, first = 0; g < measured.keep; first += chosen->groups[g++]) {
+    session.applyRecords(
+        {chosen->folds.begin() + static_cast<std::ptrdiff_t>(first),
+         chosen->folds.begin() + static_cast<std::ptrdiff_t>(first + chosen->groups[g])});
+    result.steps.push_back(measured.steps[g]);
+    if (options.progress) options.progress(measured.steps[g]);
   }
-  result.steps.insert(result.steps.end(), measured.begin(),
-                      measured.begin() + static_cast<std::ptrdiff_t>(keep));
   result.folds.assign(session.folds().begin(),
                       session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
   return result;

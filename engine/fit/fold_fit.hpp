@@ -147,8 +147,7 @@ struct FitOptions {
   std::size_t beamWidth = 3;    // fold sequences kept at each depth, the best
   std::size_t creaseWidth = 3;  // and this many more whose last fold is through a crease plane
   std::size_t branching = 3;    // next folds tried from each (and as many through crease planes)
-  // After the start, then after each fold of the best sequence found, with the session holding
-  // it (the steps of the result say how many are kept).
+  // After the start, then after each fold kept, with the session holding it.
   std::function<void(const FitProgress&)> progress;
   // While searching, after the unfolding and after each depth of the beam: folds, the best
   // approximate distance, seconds.
@@ -166,7 +165,9 @@ struct FitResult {
 // best `beamWidth` sequences at each depth and the best `creaseWidth` that end on a crease
 // plane, each grown by its best `branching` next folds and as many through crease planes), at
 // most maxFolds deep, within `seconds`; then the best sequence found is committed on the session
-// fold by fold while each lowers the exact Chamfer distance by minimumGain.
+// up to where it comes closest (exactly measured), less last folds that gain under minimumGain.
+// A fold on the way may bring the sheet no closer only when the sequence reaches the target
+// (within 1% of its diagonal); otherwise every fold kept brings it closer.
 FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOptions& options);
 
 }  // namespace curvefold
