@@ -1,5 +1,6 @@
 // `curvefold fit` and `curvefold distance` (issue 27): folding toward a target shape, and how far
 // two shapes lie apart.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -44,6 +45,16 @@ std::string distanceLine(double hausdorff, double chamfer, double diagonal) {
          "), Chamfer " + millimetres(chamfer) + " (" + percent(chamfer / diagonal) + ")";
 }
 
+// A seed: a whole number from 0 to 2^64 - 1, digits only.
+std::uint64_t parseSeed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size())
+    throw UsageError("--seed: expected a whole number from 0 to 18446744073709551615, got '" +
+                     text.substr(0, 40) + (text.size() > 40 ? "...'" : "'"));
+  return seed;
+}
+
 // A shape to measure: an OBJ, or a design's folded form.
 TriangleMesh shapeOf(const std::string& path) {
   if (fs::path(path).extension() == ".obj") return readObjMesh(path);
@@ -61,7 +72,7 @@ void addFitCommand(CLI::App& app) {
     SurfaceOptions from;
     std::size_t folds = 6;
     double seconds = 60.0;
-    std::uint64_t seed = 1;
+    std::string seed = "1";
     bool allowSelfIntersection = false;
   };
   auto options = std::make_shared<Options>();
@@ -92,7 +103,7 @@ void addFitCommand(CLI::App& app) {
     Design design = designFromSurfaceOptions(options->from, command, options->output);
     TriangleMesh target = readObjMesh(options->target);
     FitSettings settings;
-    settings.seed = options->seed;
+    settings.seed = parseSeed(options->seed);
     settings.allowSelfIntersection = options->allowSelfIntersection;
     std::unique_ptr<FoldFitter> fitter;
     try {
@@ -153,16 +164,19 @@ void addFitCommand(CLI::App& app) {
                     millimetres(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };
+    // The outputs, checked before the search: a path that cannot be written fails now.
+    OutputSet outputs;
+    outputs.add(options->output, [&](const fs::path& at) { saveDesign(design, at); });
+    if (!options->log.empty())
+      outputs.add(options->log, [&](const fs::path& at) {
+        std::string text;
+        for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
+        writeFileAtomically(at, text);
+      });
+    outputs.checkWritable();
     const FitResult result = fitFolds(session, *fitter, fit);
     design.folds = result.folds;
 
-    OutputSet outputs;
-    outputs.add(options->output, [&](const fs::path& at) { saveDesign(design, at); });
-    if (!options->log.empty()) {
-      std::string text;
-      for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
-      outputs.add(options->log, [text](const fs::path& at) { writeFileAtomically(at, text); });
-    }
     outputs.write();
     const FitProgress& last = result.steps.back();
     std::cout << "stopped: " << result.stopReason << "\n"
@@ -182,7 +196,7 @@ void addDistanceCommand(CLI::App& app) {
   struct Options {
     std::string a, b;
     std::size_t samples = kDefaultDistanceSamples;
-    std::uint64_t seed = 1;
+    std::string seed = "1";
   };
   auto options = std::make_shared<Options>();
   command->add_option("A", options->a, "A design (*.curvefold.json, its folded form) or an .obj")
@@ -193,11 +207,12 @@ void addDistanceCommand(CLI::App& app) {
       ->check(CLI::Range(100, 10'000'000));
   command->add_option("--seed", options->seed, "Seed of the samples");
   command->callback([options] {
+    parseSeed(options->seed);  // refused before the shapes are read
     const TriangleMesh a = shapeOf(options->a);
     const TriangleMesh b = shapeOf(options->b);
     SurfaceDistance d;
     try {
-      d = surfaceDistance(a, b, options->samples, options->seed);
+      d = surfaceDistance(a, b, options->samples, parseSeed(options->seed));
     } catch (const DegenerateMesh& e) {
       throw UsageError(
           std::string(e.what()) + " (" +

@@ -140,6 +140,17 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
   expectFailure("fit " + target + " --from cylinder --radius -1" + o, "radius", out);
   expectFailure("fit " + target + o, "--from", out);
   expectFailure("fit " + target + " --from cylinder --wobble 3" + o, "--wobble", out);
+  for (const char* seed : {"abc", "-1", "18446744073709551616", "0x10", "\"\""})
+    expectFailure("fit " + target + " --from cylinder --seed " + seed + o, "--seed", out);
+  // An output that cannot be written is refused before the search, and nothing is written.
+  const CommandResult log =
+      run("fit " + target + " --from cylinder --log " + path("none/x.jsonl").string() + o);
+  EXPECT_NE(log.exitCode, 0);
+  EXPECT_EQ(std::count(log.err.begin(), log.err.end(), '\n'), 1) << log.err;
+  EXPECT_NE(log.err.find("none/x.jsonl"), std::string::npos) << log.err;
+  EXPECT_EQ(log.out.find("start:"), std::string::npos) << "searched first: " << log.out;
+  EXPECT_FALSE(fs::exists(out));
+  expectFailure("fit " + target + " --from cylinder -o " + dir_.string(), "folder", dir_ / "x");
 }
 
 TEST_F(FitCli, DistanceMeasuresDesignsAndObjs) {

@@ -1,5 +1,9 @@
 #include "engine/io/output_set.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <system_error>
@@ -12,6 +16,21 @@ namespace fs = std::filesystem;
 
 void OutputSet::add(const fs::path& path, std::function<void(const fs::path&)> writer) {
   outputs_.push_back({path, std::move(writer)});
+}
+
+void OutputSet::checkWritable() const {
+  for (const Output& output : outputs_) {
+    if (output.path == "-") continue;
+    const fs::path target = resolveOutputPath(output.path);
+    if (fs::is_directory(target))
+      throw FileError("cannot write " + output.path.string() + ": it is a folder");
+    if (writesInPlace(target)) continue;
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    if (!fs::is_directory(folder))
+      throw FileError("cannot write " + output.path.string() + ": no folder " + folder.string());
+    if (::access(folder.c_str(), W_OK) != 0)
+      throw FileError("cannot write " + output.path.string() + ": " + std::strerror(errno));
+  }
 }
 
 void OutputSet::write(const fs::path& folder) {

@@ -18,6 +18,11 @@ class OutputSet {
   void add(const std::filesystem::path& path,
            std::function<void(const std::filesystem::path&)> writer);
 
+  // Before a long computation: throws FileError naming the first target whose folder is missing
+  // or cannot be written to, or that is a folder itself (write() may still fail later: a full
+  // disk).
+  void checkWritable() const;
+
   // Creates `folder` first when it is given and missing (and removes it again on failure). Throws
   // FileError naming the target, never the staging name; on failure no target has changed.
   void write(const std::filesystem::path& folder = {});
