@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -10,6 +11,7 @@
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/random_fold_target.hpp"
+#include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -323,6 +325,79 @@ TEST(FoldFitter, SuggestsFoldsAndLeavesTheSessionAsItWas) {
   // The best one is the target's fold.
   EXPECT_TRUE(samePlane(suggestions.front().folds.front().plane, target.folds.front().plane,
                         1e-3 * sheetSize(before)));
+}
+
+// Polls as a frame loop would, until an answer comes (or a minute passes).
+std::optional<SuggestionWorker::Answer> waitForAnswer(SuggestionWorker& worker) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::minutes(1)) {
+    if (std::optional<SuggestionWorker::Answer> answer = worker.take()) return answer;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return std::nullopt;
+}
+
+TEST(SuggestionWorker, AnswersOffTheCallersThreadWithTheSearchsSuggestions) {
+  const RandomFoldTarget target = makeRandomFoldTarget("rectangle", {{"resolution", 24}}, 1, 1000);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet), quickSettings());
+  SuggestionWorker worker(fitter);
+  const auto initial = std::make_shared<const Sheet>(target.initial);
+  const std::uint64_t number = worker.request({initial, {}, ""}, 2);
+  EXPECT_TRUE(worker.busy());  // the call did not wait for the search
+  const std::optional<SuggestionWorker::Answer> answer = waitForAnswer(worker);
+  ASSERT_TRUE(answer.has_value());
+  EXPECT_EQ(answer->request, number);
+  EXPECT_TRUE(answer->error.empty()) << answer->error;
+  EXPECT_FALSE(worker.busy());
+  EXPECT_FALSE(worker.take().has_value());  // taken once
+  // The same suggestions as the search run here.
+  FoldSession session(target.initial);
+  const std::vector<FoldSuggestion> direct = fitter->suggest(session, 2);
+  ASSERT_EQ(answer->suggestions.size(), direct.size());
+  ASSERT_FALSE(direct.empty());
+  for (std::size_t k = 0; k < direct.size(); ++k) {
+    EXPECT_EQ(answer->suggestions[k].folds.front().plane.normal,
+              direct[k].folds.front().plane.normal);
+    EXPECT_EQ(answer->suggestions[k].folds.front().seed, direct[k].folds.front().seed);
+  }
+}
+
+// The designer folds on while a suggestion is searched: the older request's answer never shows.
+TEST(SuggestionWorker, ANewerRequestAbandonsTheOlder) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 40}}, 2, 2002);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet), quickSettings());
+  SuggestionWorker worker(fitter);
+  const auto initial = std::make_shared<const Sheet>(target.initial);
+  const std::uint64_t older = worker.request({initial, {}, ""}, 2);
+  const std::uint64_t newer = worker.request({initial, {target.folds.front()}, ""}, 2);
+  EXPECT_GT(newer, older);
+  const std::optional<SuggestionWorker::Answer> answer = waitForAnswer(worker);
+  ASSERT_TRUE(answer.has_value());
+  EXPECT_EQ(answer->request, newer);
+  // Its suggestions are for the folded design: the target's second fold completes it.
+  ASSERT_FALSE(answer->suggestions.empty());
+  EXPECT_LT(answer->suggestions.front().after, 0.25 * answer->suggestions.front().before);
+}
+
+TEST(SuggestionWorker, EndsPromptlyWhileSearching) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 60}}, 2, 2002);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet));
+  const auto start = std::chrono::steady_clock::now();
+  {
+    SuggestionWorker worker(fitter);
+    worker.request({std::make_shared<const Sheet>(target.initial), {}, ""}, 3);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }  // abandoned and joined here
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // A search here takes seconds; abandoned, it ends at its next check (a fraction of that, also
+  // under the sanitizers).
+  FoldSession session(target.initial);
+  const auto full = std::chrono::steady_clock::now();
+  fitter->suggest(session, 3);
+  const double searched =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - full).count();
+  EXPECT_LT(seconds, 0.5 * searched);
 }
 
 }  // namespace

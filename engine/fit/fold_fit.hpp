@@ -32,6 +32,7 @@
 // cuts off an image), and checked for self-intersection only when the drags are made.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -56,11 +57,16 @@ class InvalidTarget : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// The moment a search stops; the default never comes.
+// The moment a search stops (the default never comes), or earlier when `cancelled` is set from
+// another thread.
 struct Deadline {
   std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+  const std::atomic<bool>* cancelled = nullptr;
   static Deadline in(double seconds);
-  bool passed() const { return std::chrono::steady_clock::now() >= at; }
+  bool passed() const {
+    return (cancelled && cancelled->load(std::memory_order_relaxed)) ||
+           std::chrono::steady_clock::now() >= at;
+  }
 };
 
 struct FitSettings {

@@ -1,0 +1,81 @@
+#include "engine/fit/suggestion_worker.hpp"
+
+#include <exception>
+
+#include "engine/geometry/symmetry.hpp"
+
+namespace curvefold {
+
+SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter)
+    : fitter_(std::move(fitter)), thread_([this] { run(); }) {}
+
+SuggestionWorker::~SuggestionWorker() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+    abandon_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+std::uint64_t SuggestionWorker::request(DesignSnapshot design, std::size_t count) {
+  std::uint64_t number = 0;
+  {
+    const std::lock_guard lock(mutex_);
+    number = ++latest_;
+    pending_.emplace(std::move(design), count);
+    answer_.reset();
+    if (working_ != 0) abandon_ = true;  // the search in flight is for an older design
+  }
+  wake_.notify_one();
+  return number;
+}
+
+bool SuggestionWorker::busy() const {
+  const std::lock_guard lock(mutex_);
+  return pending_.has_value() || working_ != 0;
+}
+
+std::optional<SuggestionWorker::Answer> SuggestionWorker::take() {
+  const std::lock_guard lock(mutex_);
+  std::optional<Answer> answer = std::move(answer_);
+  answer_.reset();
+  return answer;
+}
+
+void SuggestionWorker::run() {
+  while (true) {
+    std::pair<DesignSnapshot, std::size_t> job;
+    std::uint64_t number = 0;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || pending_.has_value(); });
+      if (stopping_) return;
+      job = std::move(*pending_);
+      pending_.reset();
+      number = working_ = latest_;
+      abandon_ = false;
+    }
+    Answer answer;
+    answer.request = number;
+    try {
+      // The search drags and commits on a session of its own, never on the studio's.
+      FoldSession session(*job.first.initial);
+      if (!job.first.symmetry.empty())
+        session.setSymmetry(parseSymmetry(job.first.symmetry, session.initial()));
+      session.applyRecords(job.first.folds);
+      Deadline deadline;
+      deadline.cancelled = &abandon_;
+      answer.suggestions = fitter_->suggest(session, job.second, deadline);
+    } catch (const std::exception& e) {
+      answer.error = e.what();
+    }
+    const std::lock_guard lock(mutex_);
+    // An abandoned search's result is of an older design: dropped.
+    if (!abandon_ && number == latest_) answer_ = std::move(answer);
+    working_ = 0;
+  }
+}
+
+}  // namespace curvefold

@@ -1,0 +1,64 @@
+// Suggestions off the frame (issue 27, 3): the studio asks for the next fold and goes on drawing;
+// a worker thread runs the search (FoldFitter::suggest, about a second at 10k triangles) on a
+// snapshot of the design and the frame picks the result up when it is there. A newer request
+// abandons the one in flight (its search stops at its next check and its result is dropped), and
+// so does the worker's end.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/fit/fold_fit.hpp"
+
+namespace curvefold {
+
+// What a design is, for a search of its own: the initial sheet, the folds, the symmetry's name.
+struct DesignSnapshot {
+  std::shared_ptr<const Sheet> initial;
+  std::vector<FoldRecord> folds;
+  std::string symmetry;  // "" none
+};
+
+class SuggestionWorker {
+ public:
+  explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter);
+  ~SuggestionWorker();  // abandons the request in flight and waits for the thread
+  SuggestionWorker(const SuggestionWorker&) = delete;
+  SuggestionWorker& operator=(const SuggestionWorker&) = delete;
+
+  // Starts the search for up to `count` next folds of `design` (never blocks on a search).
+  // Returns the request's number.
+  std::uint64_t request(DesignSnapshot design, std::size_t count);
+  // Whether the latest request is still being searched.
+  bool busy() const;
+  struct Answer {
+    std::uint64_t request = 0;
+    std::vector<FoldSuggestion> suggestions;  // best first; none: no fold brings it closer
+    std::string error;                        // the engine's refusal, when it refused
+  };
+  // The latest request's answer, once, when it is done.
+  std::optional<Answer> take();
+
+ private:
+  void run();
+
+  std::shared_ptr<const FoldFitter> fitter_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::optional<std::pair<DesignSnapshot, std::size_t>> pending_;
+  std::uint64_t latest_ = 0;   // the newest request's number
+  std::uint64_t working_ = 0;  // the number being searched (0: none)
+  std::optional<Answer> answer_;
+  std::atomic<bool> abandon_{false};
+  bool stopping_ = false;
+  std::thread thread_;  // last: started once everything above is ready
+};
+
+}  // namespace curvefold
