@@ -369,6 +369,7 @@ TEST(SuggestionWorker, ANewerRequestAbandonsTheOlder) {
   SuggestionWorker worker(fitter);
   const auto initial = std::make_shared<const Sheet>(target.initial);
   const std::uint64_t older = worker.request({initial, {}, ""}, 2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the older one is being searched
   const std::uint64_t newer = worker.request({initial, {target.folds.front()}, ""}, 2);
   EXPECT_GT(newer, older);
   const std::optional<SuggestionWorker::Answer> answer = waitForAnswer(worker);
