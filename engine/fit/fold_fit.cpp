@@ -546,57 +546,79 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   return bestAndCrease(std::move(suggestions), count);
 }
 
-FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  // The search stops early enough for the exact measure of what it found.
-  const Deadline deadline = Deadline::in(0.9 * options.seconds);
-  fitter.checkAgainst(session.fixed());
-  session.cancel();
-  auto seconds = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  auto measureNow = [&](std::size_t folds) {
-    const SurfaceDistance d =
-        surfaceDistance(meshOf(session.fixed()), fitter.target(), options.distanceSamples);
-    return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
-  };
-  FitResult result;
-  result.steps.push_back(measureNow(0));
-  if (options.progress) options.progress(result.steps.back());
+namespace {
 
-  // A beam over fold sequences: each state's best few next folds, the best few states kept.
-  struct State {
-    std::vector<FoldRecord> folds;    // beyond the session's own
-    std::vector<std::size_t> groups;  // folds per group (a fold and its images)
-    double score = 0.0;
-    bool crease = false;   // its last fold is through a crease plane
-    bool monotone = true;  // every fold brought the sheet closer (by the search's distance)
-  };
-  const std::vector<FoldRecord> base(
-      session.folds().begin(),
-      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
-  auto sessionFor = [&](const State& state) {
-    auto branch = std::make_unique<FoldSession>(session.initial());
-    if (session.symmetry()) branch->setSymmetry(*session.symmetry());
-    std::vector<FoldRecord> folds = base;
-    folds.insert(folds.end(), state.folds.begin(), state.folds.end());
+// A fold sequence of the beam, beyond the session's own folds.
+struct FoldSequence {
+  std::vector<FoldRecord> folds;
+  std::vector<std::size_t> groups;  // folds per group (a fold and its images)
+  double score = 0.0;               // the search's distance after it
+  bool crease = false;              // its last fold is through a crease plane
+  bool monotone = true;             // every fold brought the sheet closer (the search's distance)
+};
+
+// One fitFolds: the session it folds, the clock, and what it has measured.
+class FitRun {
+ public:
+  FitRun(FoldSession& session, const FoldFitter& fitter, const FitOptions& options)
+      : session_(session),
+        fitter_(fitter),
+        options_(options),
+        start_(std::chrono::steady_clock::now()),
+        // The search stops early enough for the exact measure of what it found.
+        deadline_(Deadline::in(0.9 * options.seconds)),
+        base_(session.folds().begin(),
+              session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount())) {}
+
+  FitResult run() {
+    result_.steps.push_back(measureNow(0));
+    if (options_.progress) options_.progress(result_.steps.back());
+    FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
+    best_ = bestMonotone_ = root;
+    result_.stopReason = "reached the most folds asked for";
+    if (unfoldTarget()) {
+      result_.stopReason = "the target unfolded: its creases named every fold";
+    } else {
+      beamSearch(root);
+    }
+    commitBest();
+    result_.folds.assign(
+        session_.folds().begin(),
+        session_.folds().begin() + static_cast<std::ptrdiff_t>(session_.foldCount()));
+    return std::move(result_);
+  }
+
+ private:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+  FitProgress measureNow(std::size_t folds) const {
+    const SurfaceDistance d =
+        surfaceDistance(meshOf(session_.fixed()), fitter_.target(), options_.distanceSamples);
+    return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
+  }
+
+  // A session of its own holding the session's folds and the sequence's.
+  std::unique_ptr<FoldSession> sessionFor(const FoldSequence& sequence) const {
+    auto branch = std::make_unique<FoldSession>(session_.initial());
+    if (session_.symmetry()) branch->setSymmetry(*session_.symmetry());
+    std::vector<FoldRecord> folds = base_;
+    folds.insert(folds.end(), sequence.folds.begin(), sequence.folds.end());
     branch->applyRecords(folds);
     return branch;
-  };
-  std::vector<State> beam{{{}, {}, fitter.approximateDistance(session.fixed())}};
-  State best = beam.front();
-  State bestMonotone = best;  // the best whose every fold brings the sheet closer
-  result.stopReason = "reached the most folds asked for";
+  }
 
-  bool unfolded = false;
-  // First the folds the target's own creases name, read by unfolding it (a symmetric design's
-  // folds bring images the unfolding does not know of: those are left to the search).
-  if (!session.symmetry() && fitter.settings().useCreases) {
+  // The folds the target's own creases name, read by unfolding it (a symmetric design's folds
+  // bring images the unfolding does not know of: those are left to the search). True when they
+  // reach the target (a search could only polish it).
+  bool unfoldTarget() {
+    if (session_.symmetry() || !fitter_.settings().useCreases) return false;
     const TargetUnfolding plan =
-        unfoldTarget(fitter.target(), meshOf(session.initial()),
-                     sharpEdgeThreshold(meshOf(session.initial())), options.maxFolds);
-    const std::unique_ptr<FoldSession> branch = sessionFor(best);
-    State planned;
+        curvefold::unfoldTarget(fitter_.target(), meshOf(session_.initial()),
+                                sharpEdgeThreshold(meshOf(session_.initial())), options_.maxFolds);
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    FoldSequence planned;
     for (const UnfoldedFold& fold : plan.folds) {
       const std::size_t before = branch->foldCount();
       const glm::dvec3 grabbed = branch->beginDragNear(fold.seedBefore);
@@ -607,115 +629,136 @@ FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOpti
           branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
       planned.groups.push_back(branch->foldCount() - before);
     }
-    const bool crosses = !fitter.settings().allowSelfIntersection &&
+    const bool crosses = !fitter_.settings().allowSelfIntersection &&
                          !findSelfIntersections(branch->fixed()).intersections.empty();
-    if (!planned.groups.empty() && !crosses) {
-      planned.score = fitter.approximateDistance(branch->fixed());
-      if (planned.score < best.score) best = planned;
-      if (options.searching) options.searching(planned.groups.size(), planned.score, seconds());
-      // Close enough that a search could only polish it: the search is skipped.
-      unfolded = surfaceDistance(meshOf(branch->fixed()), fitter.target(), options.distanceSamples)
-                     .relativeHausdorff() <= kUnfoldedCloseEnough;
-    }
-  }
-  if (unfolded) result.stopReason = "the target unfolded: its creases named every fold";
-  for (std::size_t depth = 0; depth < options.maxFolds && !unfolded; ++depth) {
-    std::vector<State> children;
-    for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {
-      const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
-      for (FoldSuggestion& next :
-           fitter.suggest(*branch, options.branching, deadline, 16 * (depth + 1) + k)) {
-        State child = beam[k];
-        child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
-        child.groups.push_back(next.folds.size());
-        child.score = next.after;
-        child.crease = next.crease;
-        child.monotone = beam[k].monotone && next.after < beam[k].score;
-        children.push_back(std::move(child));
-      }
-    }
-    if (deadline.passed()) {
-      // A depth the deadline cut short is dropped whole: what is kept does not depend on speed.
-      result.timedOut = true;
-      result.stopReason = "reached the time limit";
-      break;
-    }
-    if (children.empty()) {
-      result.stopReason = "no fold found brings the sheet closer";
-      break;
-    }
-    std::stable_sort(children.begin(), children.end(),
-                     [](const State& a, const State& b) { return a.score < b.score; });
-    beam = bestAndCrease(std::move(children), options.beamWidth);
-    if (beam.size() > options.beamWidth + options.creaseWidth)
-      beam.resize(options.beamWidth + options.creaseWidth);
-    if (beam.front().score < best.score) best = beam.front();
-    for (const State& state : beam)
-      if (state.monotone && state.score < bestMonotone.score) bestMonotone = state;
-    if (options.searching) options.searching(depth + 1, beam.front().score, seconds());
+    if (planned.groups.empty() || crosses) return false;
+    planned.score = fitter_.approximateDistance(branch->fixed());
+    if (planned.score < best_.score) best_ = planned;
+    if (options_.searching) options_.searching(planned.groups.size(), planned.score, seconds());
+    return surfaceDistance(meshOf(branch->fixed()), fitter_.target(), options_.distanceSamples)
+               .relativeHausdorff() <= kUnfoldedCloseEnough;
   }
 
-  // A sequence measured exactly after each fold, and how many of its folds to keep: up to where
-  // it comes closest, less any last folds that gain under minimumGain each (a fold on the way may
-  // gain little itself, or lose, and still be what the next one needs); `strict`: only while
-  // every fold gains.
+  // A beam over fold sequences: each kept sequence grown by its best few next folds, the best few
+  // sequences (and the best few ending on a crease plane) kept at each depth.
+  void beamSearch(const FoldSequence& root) {
+    std::vector<FoldSequence> beam{root};
+    for (std::size_t depth = 0; depth < options_.maxFolds; ++depth) {
+      std::vector<FoldSequence> children;
+      for (std::size_t k = 0; k < beam.size() && !deadline_.passed(); ++k) {
+        const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
+        for (FoldSuggestion& next :
+             fitter_.suggest(*branch, options_.branching, deadline_, 16 * (depth + 1) + k)) {
+          FoldSequence child = beam[k];
+          child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
+          child.groups.push_back(next.folds.size());
+          child.score = next.after;
+          child.crease = next.crease;
+          child.monotone = beam[k].monotone && next.after < beam[k].score;
+          children.push_back(std::move(child));
+        }
+      }
+      if (deadline_.passed()) {
+        // A depth the deadline cut short is dropped whole: what is kept does not depend on speed.
+        result_.timedOut = true;
+        result_.stopReason = "reached the time limit";
+        return;
+      }
+      if (children.empty()) {
+        result_.stopReason = "no fold found brings the sheet closer";
+        return;
+      }
+      std::stable_sort(children.begin(), children.end(),
+                       [](const auto& a, const auto& b) { return a.score < b.score; });
+      beam = bestAndCrease(std::move(children), options_.beamWidth);
+      if (beam.size() > options_.beamWidth + options_.creaseWidth)
+        beam.resize(options_.beamWidth + options_.creaseWidth);
+      if (beam.front().score < best_.score) best_ = beam.front();
+      for (const FoldSequence& sequence : beam)
+        if (sequence.monotone && sequence.score < bestMonotone_.score) bestMonotone_ = sequence;
+      if (options_.searching) options_.searching(depth + 1, beam.front().score, seconds());
+    }
+  }
+
+  // A sequence measured exactly after each fold, and how many of its folds to keep.
   struct Measured {
     std::vector<FitProgress> steps;
     std::size_t keep = 0;
   };
-  auto measureSequence = [&](const State& state, bool strict) {
+
+  // Up to where the sequence comes closest, less any last folds that gain under minimumGain each
+  // (a fold on the way may gain little itself, or lose, and still be what the next one needs);
+  // `strict`: only while every fold gains.
+  Measured measure(const FoldSequence& sequence, bool strict) {
     Measured m;
-    for (std::size_t g = 0, first = 0; g < state.groups.size(); first += state.groups[g++]) {
-      session.applyRecords(
-          {state.folds.begin() + static_cast<std::ptrdiff_t>(first),
-           state.folds.begin() + static_cast<std::ptrdiff_t>(first + state.groups[g])});
+    for (std::size_t g = 0, first = 0; g < sequence.groups.size(); first += sequence.groups[g++]) {
+      session_.applyRecords(
+          {sequence.folds.begin() + static_cast<std::ptrdiff_t>(first),
+           sequence.folds.begin() + static_cast<std::ptrdiff_t>(first + sequence.groups[g])});
       m.steps.push_back(measureNow(g + 1));
     }
-    while (session.foldCount() > base.size()) session.undo();
+    while (session_.foldCount() > base_.size()) session_.undo();
+    auto before = [&](std::size_t g) {
+      return (g > 0 ? m.steps[g - 1] : result_.steps.front()).chamfer;
+    };
     auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
-      const double before = (g > 0 ? m.steps[g - 1] : result.steps.front()).chamfer;
-      return m.steps[g].chamfer < (1.0 - options.minimumGain) * before &&
-             before - m.steps[g].chamfer > options.minimumAbsoluteGain * m.steps[g].diagonal;
+      return m.steps[g].chamfer < (1.0 - options_.minimumGain) * before(g) &&
+             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal;
     };
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
     } else {
       for (std::size_t g = 0; g < m.steps.size(); ++g)
-        if (m.steps[g].chamfer < (m.keep ? m.steps[m.keep - 1] : result.steps.front()).chamfer)
-          m.keep = g + 1;
+        if (m.steps[g].chamfer < before(m.keep)) m.keep = g + 1;
       while (m.keep > 0 && !gains(m.keep - 1)) --m.keep;
     }
     return m;
-  };
-  // The best sequence found; where it does not reach the target (1% of the diagonal) and a fold
-  // on its way brought the sheet no closer, the best sequence whose every fold does instead: on a
-  // shape no sequence reaches, every fold kept brings the sheet closer.
-  const State* chosen = &best;
-  Measured measured = measureSequence(best, false);
-  const auto reaches = [&](const Measured& m) {
-    return m.keep > 0 && m.steps[m.keep - 1].hausdorff <= 0.01 * m.steps[m.keep - 1].diagonal;
-  };
-  bool falls = true;
-  for (std::size_t g = 0; g < measured.keep; ++g)
-    falls = falls && measured.steps[g].chamfer <
-                         (g > 0 ? measured.steps[g - 1] : result.steps.front()).chamfer;
-  if (!reaches(measured) && !falls) {
-    chosen = &bestMonotone;
-    measured = measureSequence(bestMonotone, true);
   }
-  if (measured.keep < measured.steps.size())
-    result.stopReason = "the next fold found brings the sheet closer by less than " +
-                        std::to_string(int(std::round(options.minimumGain * 100))) + "%";
-  for (std::size_t g = 0, first = 0; g < measured.keep; first += chosen->groups[g++]) {
-    session.applyRecords(
-        {chosen->folds.begin() + static_cast<std::ptrdiff_t>(first),
-         chosen->folds.begin() + static_cast<std::ptrdiff_t>(first + chosen->groups[g])});
-    result.steps.push_back(measured.steps[g]);
-    if (options.progress) options.progress(measured.steps[g]);
+
+  // The best sequence found, committed; where it does not reach the target (1% of the diagonal)
+  // and a fold on its way brought the sheet no closer, the best sequence whose every fold does
+  // instead: on a shape no sequence reaches, every fold kept brings the sheet closer.
+  void commitBest() {
+    const FoldSequence* chosen = &best_;
+    Measured measured = measure(best_, false);
+    const bool reaches = measured.keep > 0 && measured.steps[measured.keep - 1].hausdorff <=
+                                                  0.01 * measured.steps[measured.keep - 1].diagonal;
+    bool falls = true;
+    for (std::size_t g = 0; g < measured.keep; ++g)
+      falls = falls && measured.steps[g].chamfer <
+                           (g > 0 ? measured.steps[g - 1] : result_.steps.front()).chamfer;
+    if (!reaches && !falls) {
+      chosen = &bestMonotone_;
+      measured = measure(bestMonotone_, true);
+    }
+    if (measured.keep < measured.steps.size())
+      result_.stopReason = "the next fold found brings the sheet closer by less than " +
+                           std::to_string(int(std::round(options_.minimumGain * 100))) + "%";
+    for (std::size_t g = 0, first = 0; g < measured.keep; first += chosen->groups[g++]) {
+      session_.applyRecords(
+          {chosen->folds.begin() + static_cast<std::ptrdiff_t>(first),
+           chosen->folds.begin() + static_cast<std::ptrdiff_t>(first + chosen->groups[g])});
+      result_.steps.push_back(measured.steps[g]);
+      if (options_.progress) options_.progress(measured.steps[g]);
+    }
   }
-  result.folds.assign(session.folds().begin(),
-                      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
-  return result;
+
+  FoldSession& session_;
+  const FoldFitter& fitter_;
+  const FitOptions& options_;
+  const std::chrono::steady_clock::time_point start_;
+  const Deadline deadline_;
+  const std::vector<FoldRecord> base_;  // the session's folds before the fit
+  FitResult result_;
+  FoldSequence best_, bestMonotone_;  // the best, and the best whose every fold gains
+};
+
+}  // namespace
+
+FitResult fitFolds(FoldSession& session, const FoldFitter& fitter, const FitOptions& options) {
+  fitter.checkAgainst(session.fixed());
+  session.cancel();
+  return FitRun(session, fitter, options).run();
 }
 
 }  // namespace curvefold
