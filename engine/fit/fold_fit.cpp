@@ -337,16 +337,135 @@ double FoldFitter::approximateDistance(const Sheet& sheet) const {
   return target_->score(points, normals, radius);
 }
 
+namespace {
+
+// The best few drags with distinct planes: the best crease-plane drags first (a fold that lays
+// one part exactly may score below one that brings all of it somewhat closer, and still be the
+// one the next fold completes), then the best of all. The first `creaseDrags` are through crease
+// planes; only drags scoring below `current` count (crease-plane ones: kCreaseSlack times it).
+std::vector<Drag> chooseFinalists(const std::vector<Drag>& drags, std::size_t creaseDrags,
+                                  double current, const EvaluationCopy& copy, std::size_t most) {
+  std::vector<std::size_t> order(drags.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return drags[a].score < drags[b].score; });
+  std::vector<Drag> finalists;
+  std::vector<ReflectionPlane> finalistPlanes;
+  auto choose = [&](std::size_t upTo, bool creaseOnly) {
+    for (std::size_t i : order) {
+      if (finalists.size() >= upTo) break;
+      if (creaseOnly && i >= creaseDrags) continue;
+      if (!(drags[i].score < (drags[i].crease ? kCreaseSlack : 1.0) * current)) continue;
+      const ReflectionPlane plane =
+          bisectorPlane(copy.sheet.positions[copy.samples[drags[i].sample]], drags[i].drop);
+      if (std::any_of(finalistPlanes.begin(), finalistPlanes.end(),
+                      [&](const auto& p) { return samePlane(p, plane, copy.size); }))
+        continue;
+      finalists.push_back(drags[i]);
+      finalistPlanes.push_back(plane);
+    }
+  };
+  choose(most / 2, true);
+  choose(most, false);
+  return finalists;
+}
+
+// Each drag's drop point refined by NLopt's Subplex (crease-plane drags are exact already, and
+// left so), on all cores; the finalists come back best first.
+template <typename Evaluate>
+void refineFinalists(std::vector<Drag>& finalists, tbb::enumerable_thread_specific<Worker>& workers,
+                     const Evaluate& evaluate, const Deadline& deadline, const EvaluationCopy& copy,
+                     std::size_t evaluations) {
+  tbb::parallel_for(std::size_t(0), finalists.size(), [&](std::size_t k) {
+    Worker& worker = workers.local();
+    Drag& best = finalists[k];
+    if (best.crease) return;
+    const glm::dvec3 grab = copy.sheet.positions[copy.samples[best.sample]];
+    struct Objective {
+      Drag* best;
+      Worker* worker;
+      const Deadline* deadline;
+      const Evaluate* score;
+      nlopt::opt* optimizer;
+    };
+    nlopt::opt optimizer(nlopt::LN_SBPLX, 3);
+    Objective objective{&best, &worker, &deadline, &evaluate, &optimizer};
+    optimizer.set_min_objective(
+        [](const std::vector<double>& x, std::vector<double>&, void* data) {
+          auto& o = *static_cast<Objective*>(data);
+          if (o.deadline->passed()) o.optimizer->force_stop();
+          const glm::dvec3 drop(x[0], x[1], x[2]);
+          const double score = (*o.score)(*o.worker, o.best->sample, drop);
+          if (score < o.best->score) {
+            o.best->score = score;
+            o.best->drop = drop;
+          }
+          return std::isfinite(score) ? score : 1e30;
+        },
+        &objective);
+    optimizer.set_initial_step(std::max(0.1 * glm::distance(grab, best.drop), 0.005 * copy.size));
+    optimizer.set_maxeval(static_cast<int>(evaluations));
+    optimizer.set_xtol_abs(1e-6 * copy.size);
+    std::vector<double> x{best.drop.x, best.drop.y, best.drop.z};
+    double value = 0.0;
+    try {
+      optimizer.optimize(x, value);
+    } catch (const std::exception&) {
+      // A forced stop or a round-off limit: the best drag seen is kept either way.
+    }
+  });
+  std::stable_sort(finalists.begin(), finalists.end(),
+                   [](const Drag& a, const Drag& b) { return a.score < b.score; });
+}
+
+// Each drag made on the real sheet, as a designer's would be (a sliver refused, a symmetric
+// design's images following), checked for self-intersection, scored again and taken back: the
+// ones that bring the sheet closer.
+std::vector<FoldSuggestion> makeSuggestions(FoldSession& session, const std::vector<Drag>& drags,
+                                            const EvaluationCopy& copy, const FoldFitter& fitter,
+                                            const Deadline& deadline) {
+  const bool allowCrossing = fitter.settings().allowSelfIntersection;
+  const double before = fitter.approximateDistance(session.fixed());
+  std::size_t crossingsBefore = 0;
+  if (!allowCrossing) crossingsBefore = findSelfIntersections(session.fixed()).intersections.size();
+  std::vector<FoldSuggestion> suggestions;
+  for (const Drag& drag : drags) {
+    if (deadline.passed()) break;
+    const std::size_t foldsBefore = session.foldCount();
+    session.beginDragAtDevelopment(copy.sheet.development[copy.samples[drag.sample]]);
+    session.updateDrag(drag.drop);
+    if (!session.commit()) continue;
+    FoldSuggestion suggestion;
+    suggestion.folds.assign(
+        session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
+        session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+    const bool crosses =
+        !allowCrossing &&
+        findSelfIntersections(session.fixed()).intersections.size() > crossingsBefore;
+    if (!crosses) {
+      suggestion.crease = drag.crease;
+      suggestion.sheet = session.fixed();
+      suggestion.before = before;
+      suggestion.after = fitter.approximateDistance(suggestion.sheet);
+    }
+    session.undo();
+    if (crosses || !(suggestion.after < (drag.crease ? kCreaseSlack : 1.0) * before)) continue;
+    suggestions.push_back(std::move(suggestion));
+  }
+  return suggestions;
+}
+
+}  // namespace
+
 std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_t count,
                                                 const Deadline& deadline,
                                                 std::uint64_t step) const {
   session.cancel();
-  std::vector<FoldSuggestion> suggestions;
-  if (count == 0) return suggestions;
+  if (count == 0) return {};
   const Target& target = *target_;
   const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
                                                  settings_.seed * 0x9e3779b97f4a7c15ull + step);
-  if (copy.samples.empty()) return suggestions;
+  if (copy.samples.empty()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
   const SymmetricFolder* symmetric = session.symmetricFolder().get();
@@ -445,102 +564,12 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       if (!deadline.passed()) drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop);
   });
 
-  // The best few with distinct planes, each refined: the best crease-plane drags first (a fold
-  // that lays one part exactly may score below one that brings all of it somewhat closer, and
-  // still be the one the next fold completes), then the best of all.
-  const std::size_t creaseDrags = drags.size() - settings_.proposals;
-  std::vector<std::size_t> order(drags.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return drags[a].score < drags[b].score; });
-  std::vector<Drag> finalists;
-  std::vector<ReflectionPlane> finalistPlanes;
-  auto choose = [&](std::size_t most, bool creaseOnly) {
-    for (std::size_t i : order) {
-      if (finalists.size() >= most) break;
-      if (creaseOnly && i >= creaseDrags) continue;
-      if (!(drags[i].score < (drags[i].crease ? kCreaseSlack : 1.0) * current)) continue;
-      const ReflectionPlane plane =
-          bisectorPlane(copy.sheet.positions[copy.samples[drags[i].sample]], drags[i].drop);
-      if (std::any_of(finalistPlanes.begin(), finalistPlanes.end(),
-                      [&](const auto& p) { return samePlane(p, plane, copy.size); }))
-        continue;
-      finalists.push_back(drags[i]);
-      finalistPlanes.push_back(plane);
-    }
-  };
-  choose(settings_.refined / 2, true);
-  choose(settings_.refined, false);
-  tbb::parallel_for(std::size_t(0), finalists.size(), [&](std::size_t k) {
-    Worker& worker = workers.local();
-    Drag& best = finalists[k];
-    if (best.crease) return;
-    const glm::dvec3 grab = copy.sheet.positions[copy.samples[best.sample]];
-    struct Objective {
-      Drag* best;
-      Worker* worker;
-      const Deadline* deadline;
-      const decltype(evaluate)* score;
-      nlopt::opt* optimizer;
-    };
-    nlopt::opt optimizer(nlopt::LN_SBPLX, 3);
-    Objective objective{&best, &worker, &deadline, &evaluate, &optimizer};
-    optimizer.set_min_objective(
-        [](const std::vector<double>& x, std::vector<double>&, void* data) {
-          auto& o = *static_cast<Objective*>(data);
-          if (o.deadline->passed()) o.optimizer->force_stop();
-          const glm::dvec3 drop(x[0], x[1], x[2]);
-          const double score = (*o.score)(*o.worker, o.best->sample, drop);
-          if (score < o.best->score) {
-            o.best->score = score;
-            o.best->drop = drop;
-          }
-          return std::isfinite(score) ? score : 1e30;
-        },
-        &objective);
-    const double stepLength = std::max(0.1 * glm::distance(grab, best.drop), 0.005 * copy.size);
-    optimizer.set_initial_step(stepLength);
-    optimizer.set_maxeval(static_cast<int>(settings_.refineEvaluations));
-    optimizer.set_xtol_abs(1e-6 * copy.size);
-    std::vector<double> x{best.drop.x, best.drop.y, best.drop.z};
-    double value = 0.0;
-    try {
-      optimizer.optimize(x, value);
-    } catch (const std::exception&) {
-      // A forced stop or a round-off limit: the best drag seen is kept either way.
-    }
-  });
-  std::stable_sort(finalists.begin(), finalists.end(),
-                   [](const Drag& a, const Drag& b) { return a.score < b.score; });
-
-  // Each refined drag made on the real sheet, as a designer's would be.
-  const double before = approximateDistance(session.fixed());
-  std::size_t crossingsBefore = 0;
-  if (!settings_.allowSelfIntersection)
-    crossingsBefore = findSelfIntersections(session.fixed()).intersections.size();
-  for (const Drag& drag : finalists) {
-    if (deadline.passed()) break;
-    const std::size_t foldsBefore = session.foldCount();
-    session.beginDragAtDevelopment(copy.sheet.development[copy.samples[drag.sample]]);
-    session.updateDrag(drag.drop);
-    if (!session.commit()) continue;
-    FoldSuggestion suggestion;
-    suggestion.folds.assign(
-        session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
-        session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
-    const bool crosses =
-        !settings_.allowSelfIntersection &&
-        findSelfIntersections(session.fixed()).intersections.size() > crossingsBefore;
-    if (!crosses) {
-      suggestion.crease = drag.crease;
-      suggestion.sheet = session.fixed();
-      suggestion.before = before;
-      suggestion.after = approximateDistance(suggestion.sheet);
-    }
-    session.undo();
-    if (crosses || !(suggestion.after < (drag.crease ? kCreaseSlack : 1.0) * before)) continue;
-    suggestions.push_back(std::move(suggestion));
-  }
+  // The best few with distinct planes, each refined, then made on the real sheet.
+  std::vector<Drag> finalists =
+      chooseFinalists(drags, drags.size() - settings_.proposals, current, copy, settings_.refined);
+  refineFinalists(finalists, workers, evaluate, deadline, copy, settings_.refineEvaluations);
+  std::vector<FoldSuggestion> suggestions =
+      makeSuggestions(session, finalists, copy, *this, deadline);
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
   return bestAndCrease(std::move(suggestions), count);
