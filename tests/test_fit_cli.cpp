@@ -168,6 +168,13 @@ TEST_F(FitCli, DistanceMeasuresDesignsAndObjs) {
   EXPECT_NE(bad.exitCode, 0);
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   EXPECT_NE(bad.err.find("missing.obj"), std::string::npos) << bad.err;
+  for (const char* seed : {"abc", "-1", "18446744073709551616"}) {
+    const CommandResult r = run("distance " + square + " " + square + " --seed " + seed);
+    EXPECT_NE(r.exitCode, 0) << seed;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("--seed"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
   const CommandResult few = run("distance " + square + " " + square + " --samples 3");
   EXPECT_NE(few.exitCode, 0);
   EXPECT_NE(few.err.find("--samples"), std::string::npos) << few.err;
