@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/document.hpp"
+#include "app/studio_target.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -25,25 +26,6 @@ namespace curvefold::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// "12.3 mm (4.1% of ...)"-style figures.
-// Three digits; what lies below a nanometre is rounding, and printed as 0.
-std::string millimetres(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g mm", std::abs(metres) < 1e-9 ? 0.0 : metres * 1000.0);
-  return text;
-}
-
-std::string percent(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g%%", std::abs(fraction) < 1e-9 ? 0.0 : fraction * 100.0);
-  return text;
-}
-
-std::string distanceLine(double hausdorff, double chamfer, double diagonal) {
-  return "Hausdorff " + millimetres(hausdorff) + " (" + percent(hausdorff / diagonal) +
-         "), Chamfer " + millimetres(chamfer) + " (" + percent(chamfer / diagonal) + ")";
-}
 
 // A seed: a whole number from 0 to 2^64 - 1, digits only.
 std::uint64_t parseSeed(const std::string& text) {
@@ -127,7 +109,7 @@ void addFitCommand(CLI::App& app) {
     fit.seconds = options->seconds;
     fit.progress = [&](const FitProgress& step) {
       if (step.fold == 0) {
-        std::cout << "start: " << distanceLine(step.hausdorff, step.chamfer, step.diagonal)
+        std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
                   << " of the target's " << step.diagonal << " m diagonal" << std::endl;
         return;
       }
@@ -155,13 +137,13 @@ void addFitCommand(CLI::App& app) {
       std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
       std::cout << "fold " << step.fold
                 << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
-                << seconds << ": " << distanceLine(step.hausdorff, step.chamfer, step.diagonal)
+                << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
                 << std::endl;
     };
     fit.searching = [](std::size_t depth, double distance, double seconds) {
       char text[96];
       std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
-                    millimetres(distance).c_str(), seconds);
+                    millimetresText(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };
     // The outputs, checked before the search: a path that cannot be written fails now.
@@ -184,7 +166,7 @@ void addFitCommand(CLI::App& app) {
               << (design.folds.size() > log.size()
                       ? ", " + std::to_string(design.folds.size()) + " with images"
                       : "")
-              << "; " << distanceLine(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+              << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
   });
 }
@@ -219,14 +201,14 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << millimetres(d.fromAMax) << ", mean " << millimetres(d.fromAMean)
+    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean " << millimetresText(d.fromAMean)
               << "\n"
-              << "B -> A: max " << millimetres(d.fromBMax) << ", mean " << millimetres(d.fromBMean)
+              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean " << millimetresText(d.fromBMean)
               << "\n"
-              << "Hausdorff (two-sided): " << millimetres(d.hausdorff) << " ("
-              << percent(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
-              << "Chamfer (mean two-sided): " << millimetres(d.chamfer) << " ("
-              << percent(d.relativeChamfer()) << ")\n";
+              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
+              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
+              << percentText(d.relativeChamfer()) << ")\n";
   });
 }
 

@@ -34,7 +34,8 @@ HeadsetStudio::HeadsetStudio(Document& doc, HeadsetStudioOptions options, Headse
       host_(std::move(host)),
       panel_(false,
              "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
-             "at the tip: fold. Panel button: show or hide this panel.") {
+             "at the tip: fold. Panel button: show or hide this panel."),
+      target_(options_.replaying) {
   context_ = ImGui::CreateContext();
   ImGuiContextScope scope(context_);
   ImGuiIO& io = ImGui::GetIO();
@@ -47,6 +48,10 @@ HeadsetStudio::HeadsetStudio(Document& doc, HeadsetStudioOptions options, Headse
   panel_.setFillsDisplay(true);
   panel_.setRecent(options_.recent);
   nameDesign(options_.name);
+  if (!options_.target.empty()) {
+    target_.load(options_.target, doc_);
+    panel_.setTargetPath(options_.target);
+  }
 }
 
 HeadsetStudio::~HeadsetStudio() {
@@ -67,6 +72,7 @@ void HeadsetStudio::replace(const Design& design, const std::string& name) {
   if (host_.documentReplacing) host_.documentReplacing(name);
   doc_.core.reset();
   doc_ = std::move(fresh);
+  target_.documentReplaced();
   nameDesign(name);
   if (host_.documentReplaced) host_.documentReplaced();
 }
@@ -100,7 +106,11 @@ ImDrawData* HeadsetStudio::drawData() const {
   return ImGui::GetDrawData();
 }
 
-void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
+void HeadsetStudio::process(InputFrame& frame, const StudioStats& measured) {
+  target_.poll(doc_, frame);
+  StudioStats stats = measured;
+  stats.targetLine = target_.distanceLine();
+  stats.suggestionLine = target_.suggestionLine(*doc_.core);
   // The panel button shows and hides the panel (on its press).
   const std::uint32_t pressed = frame.buttons & ~buttonsHeld_;
   buttonsHeld_ = frame.buttons;
@@ -147,6 +157,8 @@ void HeadsetStudio::process(const InputFrame& frame, const StudioStats& stats) {
     actions.resetView = [this] { doc_.core->resetView(); };
     actions.writeFile = host_.writeFile;
     actions.recentChanged = host_.recentChanged;
+    actions.loadTarget = [this](const std::string& path) { target_.load(path, doc_); };
+    actions.suggest = [this] { target_.suggest(doc_); };
     ImGui::NewFrame();
     panel_.draw(doc_, actions, stats, creasePattern_);
     ImGui::Render();
@@ -171,6 +183,7 @@ ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptio
   studioOptions.recent = recording.header.studio->recent;
   studioOptions.sheetFrame = recording.header.sheetFrame;
   studioOptions.name = "recording";
+  studioOptions.replaying = true;
   HeadsetStudioHost host;
   // A replay makes the design, not the session's files.
   host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};

@@ -20,6 +20,7 @@
 
 #include "app/document.hpp"
 #include "app/studio_panel.hpp"
+#include "app/studio_target.hpp"
 #include "interaction/panel_pointer.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/player.hpp"
@@ -52,6 +53,8 @@ struct HeadsetStudioOptions {
   Pose sheetFrame;  // where a new sheet starts
   glm::ivec2 pixels{480, 600};
   PanelPlacement placement = heldPanelPlacement();
+  std::string target;      // a target shape (OBJ) to fold toward, loaded at the start
+  bool replaying = false;  // a replay: suggestions come from the frames, nothing is searched
 };
 
 class HeadsetStudio {
@@ -61,9 +64,14 @@ class HeadsetStudio {
   HeadsetStudio(const HeadsetStudio&) = delete;
   HeadsetStudio& operator=(const HeadsetStudio&) = delete;
 
-  // One input frame (its time never going back): the panel button, the ray, the panel (whose
-  // actions act now), then the core.
-  void process(const InputFrame& frame, const StudioStats& stats = {});
+  // One input frame (its time never going back): the target (whose search may have finished: its
+  // folds join the frame, for the recorder), the panel button, the ray, the panel (whose actions
+  // act now), then the core.
+  void process(InputFrame& frame, const StudioStats& stats = {});
+  void process(const InputFrame& frame, const StudioStats& stats = {}) {
+    InputFrame copy = frame;
+    process(copy, stats);
+  }
 
   bool shown() const { return shown_; }
   // Where the panel is (world), once its hand has been seen; it stays where it was while the hand
@@ -87,6 +95,8 @@ class HeadsetStudio {
   ImDrawData* drawData() const;
   ImGuiContext* context() const { return context_; }
   const StudioPanel& panel() const { return panel_; }
+  // The target shape the studio folds toward, and its suggestions.
+  const StudioTarget& goal() const { return target_; }
   StudioPanel& panel() { return panel_; }
 
  private:
@@ -99,6 +109,7 @@ class HeadsetStudio {
   HeadsetStudioHost host_;
   ImGuiContext* context_ = nullptr;
   StudioPanel panel_;
+  StudioTarget target_;
   PanelPointer pointer_;
   bool shown_ = true;
   bool creasePattern_ = true;

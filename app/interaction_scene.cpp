@@ -92,6 +92,30 @@ void addPinchPoint(Scene& scene, const glm::dvec3& point, bool pinched, double o
       {glm::vec3(point), pinched ? 0.009f : 0.006f, pinched ? held : glm::mix(closing, apart, t)});
 }
 
+namespace {
+
+// Triangles (sheet coordinates) as translucent world triangles, each face shaded by its facing to
+// the light from either side, so the shape reads without depth writes.
+template <typename Triangles>
+void addTranslucentMesh(Scene& scene, const std::vector<glm::dvec3>& positions,
+                        const Triangles& triangles, const InteractionCore& core,
+                        const glm::vec4& color) {
+  const glm::dvec3 light = glm::dvec3(scene.light.direction);
+  scene.translucent.reserve(scene.translucent.size() + 3 * triangles.size());
+  for (const auto& t : triangles) {
+    const glm::dvec3 a = core.worldOf(positions[t[0]]), b = core.worldOf(positions[t[1]]),
+                     c = core.worldOf(positions[t[2]]);
+    const glm::dvec3 normal = glm::cross(b - a, c - a);
+    const double length = glm::length(normal);
+    const double facing = length > 0.0 ? std::abs(glm::dot(normal, light)) / length : 0.0;
+    const float shade = scene.light.ambient + (1.0f - scene.light.ambient) * float(facing);
+    const glm::vec4 shaded(glm::vec3(color) * shade, color.a);
+    for (const glm::dvec3& p : {a, b, c}) scene.translucent.push_back({glm::vec3(p), shaded});
+  }
+}
+
+}  // namespace
+
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,
                           const InteractionSceneOptions& options) {
@@ -141,6 +165,20 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
          core.clutched() ? glm::vec4(0.6f, 0.3f, 0.8f, 1) : glm::vec4(0.45f, 0.4f, 0.55f, 1)});
   const glm::vec3 toEye = glm::normalize(camera.eye - camera.target);
   scene.light.direction = glm::normalize(toEye + 0.6f * camera.up);
+
+  if (options.target)
+    addTranslucentMesh(scene, options.target->positions, options.target->triangles, core,
+                       {0.55f, 0.6f, 0.75f, 0.3f});
+  // The suggestion on offer: where to grab, where it goes, and what it makes.
+  if (const SuggestedFold* offer = core.offeredFold()) {
+    const glm::vec4 grabColor(0.1f, 0.75f, 0.55f, 1.0f), dropColor(0.95f, 0.45f, 0.1f, 1.0f);
+    scene.markers.push_back({world(offer->grab), 0.014f * size, grabColor});
+    scene.markers.push_back({world(offer->to), 0.014f * size, dropColor});
+    scene.lines.push_back({world(offer->grab), world(offer->to), grabColor});
+    if (options.offeredResult)
+      addTranslucentMesh(scene, options.offeredResult->positions, options.offeredResult->triangles,
+                         core, {0.2f, 0.8f, 0.55f, 0.35f});
+  }
   return scene;
 }
 

@@ -7,6 +7,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "engine/geometry/triangle_mesh.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/hand_input.hpp"
 #include "interaction/input_frame.hpp"
@@ -37,6 +38,11 @@ struct InteractionSceneOptions {
   bool creasePatternPanel = false;
   bool handMarkers = false;  // both hands as markers (replays); the desktop's mouse needs none
   CreasePatternCache* panelCache = nullptr;  // null: the panel is built from the shown sheet
+  // The studio's target shape (issue 27; sheet coordinates), drawn as a translucent ghost.
+  const TriangleMesh* target = nullptr;
+  // The folded result of the suggestion on offer (InteractionCore::offeredFold), drawn
+  // translucent beside its grab and drop points; null: the points alone.
+  const Sheet* offeredResult = nullptr;
 };
 
 // Both controllers as simple generic models (no vendor meshes), for the headset: the sheet hand

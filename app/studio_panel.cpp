@@ -36,6 +36,11 @@ void StudioPanel::setSavePath(const std::string& path) {
   savePath_[sizeof savePath_ - 1] = '\0';
 }
 
+void StudioPanel::setTargetPath(const std::string& path) {
+  std::strncpy(targetPath_, path.c_str(), sizeof targetPath_ - 1);
+  targetPath_[sizeof targetPath_ - 1] = '\0';
+}
+
 void StudioPanel::setRecent(std::vector<std::string> recent) {
   if (recent.size() > kMaxRecentDesigns) recent.resize(kMaxRecentDesigns);
   recent_ = std::move(recent);
@@ -254,6 +259,29 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       if (actions.foldedForm) print.picture = actions.foldedForm();
       writeCreasePatternPdf(fixed, to, print);
     });
+  }
+  if (actions.loadTarget && actions.suggest) {
+    // The same lines whatever they say (each a single line), so the items keep their places and
+    // a recorded session's pointing replays onto the same buttons.
+    ImGui::Separator();
+    ImGui::InputText("target", targetPath_, sizeof targetPath_);
+    item("target");
+    if (button("Load target")) {
+      const std::string path = targetPath_;
+      guarded("target " + path, [&] { actions.loadTarget(path); });
+    }
+    ImGui::SameLine();
+    if (button("Suggest")) guarded("", [&] { actions.suggest(); });
+    ImGui::TextUnformatted(stats.targetLine.c_str());
+    ImGui::TextUnformatted(stats.suggestionLine.c_str());
+    const bool offered = doc.core->offeredFold() != nullptr;
+    ImGui::BeginDisabled(!offered);
+    if (button("Take")) actions.press(Button::TakeSuggestion);
+    ImGui::SameLine();
+    if (button("Another")) actions.press(Button::NextSuggestion);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextUnformatted("or grab the marked point");
   }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::Separator();

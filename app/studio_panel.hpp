@@ -37,6 +37,10 @@ struct StudioActions {
       writeFile;
   // Optional: the folded form as a picture, for the cover of the PDF (without it, none there).
   std::function<std::optional<PdfPicture>()> foldedForm;
+  // Optional: a target shape to fold toward (issue 27): load it, and ask for the next fold. With
+  // them the panel has its "Target" section.
+  std::function<void(const std::string& path)> loadTarget;
+  std::function<void()> suggest;
   // Optional: the recent designs changed (a design was saved or opened): the host keeps the list.
   std::function<void(const std::vector<std::string>& recent)> recentChanged;
 };
@@ -46,6 +50,8 @@ struct StudioStats {
   std::size_t drawnTriangles = 0;
   double dragUpdateMs = 0.0;
   double frameMs = 0.0;
+  // The target section's two lines (StudioTarget::distanceLine and suggestionLine).
+  std::string targetLine, suggestionLine;
 };
 
 class StudioPanel {
@@ -62,6 +68,8 @@ class StudioPanel {
   // Where exports go (a path without its extension) and where Save writes.
   void setExportBase(const std::string& base);
   void setSavePath(const std::string& path);
+  // The target path field's text.
+  void setTargetPath(const std::string& path);
   // The recent designs, newest first (at most kMaxRecentDesigns).
   void setRecent(std::vector<std::string> recent);
   const std::vector<std::string>& recent() const { return recent_; }
@@ -96,6 +104,7 @@ class StudioPanel {
   char savePath_[512] = "design.curvefold.json";
   char openPath_[512] = "";
   char exportBase_[512] = "";
+  char targetPath_[512] = "";
   std::string message_;
   double maxError_ = 0.0;
   const void* statsSession_ = nullptr;

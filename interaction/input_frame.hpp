@@ -5,8 +5,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace curvefold {
@@ -43,6 +45,18 @@ enum class Button : std::uint32_t {
   Redo = 1u << 2,
   SwitchHands = 1u << 3,
   Panel = 1u << 4,  // shows or hides the headset's panel
+  // The studio's suggested fold (issue 27): make the one on offer; offer the next one.
+  TakeSuggestion = 1u << 5,
+  NextSuggestion = 1u << 6,
+};
+
+// A fold the studio suggests (docs/design.md 9): the sheet point whose development point is `seed`
+// (now at `grab`, sheet coordinates) dropped at `to` (sheet coordinates).
+struct SuggestedFold {
+  glm::dvec2 seed{0.0};
+  glm::dvec3 grab{0.0};
+  glm::dvec3 to{0.0};
+  bool operator==(const SuggestedFold&) const = default;
 };
 
 struct InputFrame {
@@ -76,6 +90,11 @@ struct InputFrame {
   } pointHand;
 
   std::uint32_t buttons = 0;  // Button bits held
+
+  // The studio's suggestions that arrived in this frame, best first (most frames have none). They
+  // are input like the hands: the core offers them until the design changes, and a recording
+  // keeps them, so a replay offers the same folds at the same moment without searching again.
+  std::vector<SuggestedFold> suggestions;
 
   bool held(Button button) const { return (buttons & static_cast<std::uint32_t>(button)) != 0; }
 };

@@ -45,6 +45,33 @@ const SurfacePicker& InteractionCore::picker() {
   return *picker_;
 }
 
+const SuggestedFold* InteractionCore::offeredFold() const {
+  if (offers_.empty() || state_ == InteractionState::Dragging ||
+      offerRevision_ != session_.designRevision())
+    return nullptr;
+  return &offers_[offerIndex_];
+}
+
+bool InteractionCore::dragOffered(double time) {
+  const SuggestedFold fold = offers_[offerIndex_];
+  try {
+    session_.beginDragAtDevelopment(fold.seed);
+  } catch (const InvalidSheet&) {
+    offers_.clear();
+    return false;
+  }
+  watch_.begin(session_.fixed());
+  state_ = InteractionState::Dragging;
+  hover_.reset();
+  emit(InteractionEventKind::Grab, time);
+  dragMoved_ = true;
+  session_.updateDrag(fold.to);
+  watch_.update(session_.current(), session_.lastChanges(), session_.plane(),
+                reflectedTriangles());
+  lastTarget_ = fold.to;
+  return true;
+}
+
 void InteractionCore::emit(InteractionEventKind kind, double time) {
   events_.push_back({kind, time});
   if (kind == InteractionEventKind::Grab || kind == InteractionEventKind::Commit)
@@ -55,6 +82,11 @@ void InteractionCore::emit(InteractionEventKind kind, double time) {
 void InteractionCore::process(const InputFrame& frame, PointTarget target) {
   events_.clear();
   haptics_.clear();
+  if (!frame.suggestions.empty()) {
+    offers_ = frame.suggestions;
+    offerIndex_ = 0;
+    offerRevision_ = session_.designRevision();
+  }
   // A trigger released in the same frame as a button press (a runtime pacing at 20 Hz sees both
   // at once) was released first: the drag commits, then the button acts (undo undoes this fold,
   // not the one before it).
@@ -109,6 +141,16 @@ void InteractionCore::handleButtons(const InputFrame& frame) {
     if (session_.redo()) {
       lastCommitIntersections_ = 0;
       emit(InteractionEventKind::Redo, frame.time);
+    }
+  }
+  if (wasPressed(Button::NextSuggestion) && offeredFold())
+    offerIndex_ = (offerIndex_ + 1) % offers_.size();
+  if (wasPressed(Button::TakeSuggestion)) {
+    endDrag(false, frame.time);
+    if (offeredFold() && dragOffered(frame.time)) {
+      // The hand's trigger has nothing to do with this fold: a later release must not end it.
+      pointAnchored_ = false;
+      endDrag(true, frame.time);
     }
   }
 }
@@ -261,6 +303,14 @@ void InteractionCore::handlePointHand(const InputFrame& frame, PointTarget targe
   // A grab needs a fresh press while hovering: sweeping a held trigger onto the sheet grabs
   // nothing.
   if (hover_ && selectHeld_ && !wasHeld) {
+    // A grab at the offered fold's point takes the fold as suggested, to adjust from there.
+    if (const SuggestedFold* offer = offeredFold();
+        offer && viewScale_ * glm::distance(offer->grab, tip) <= thresholds_.hoverRadius &&
+        dragOffered(frame.time)) {
+      grabOffset_ = lastTarget_ - tip;
+      pointAnchored_ = true;
+      return;
+    }
     const glm::dvec3 grabbed = session_.beginDrag(hover_->point);
     watch_.begin(session_.fixed());
     grabOffset_ = grabbed - tip;  // keeps the tip-to-point offset: nothing jumps

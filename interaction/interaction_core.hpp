@@ -137,6 +137,15 @@ class InteractionCore {
   const std::vector<TriangleIndex>& intersectingTriangles() const { return watch_.triangles(); }
   // The pairs the last committed fold crossed in, as the drag ended.
   std::size_t lastCommitIntersections() const { return lastCommitIntersections_; }
+  // The studio's suggested fold on offer (frames bring them, InputFrame::suggestions), while the
+  // design is the one they were made for and no drag is under way; null otherwise.
+  // Button::TakeSuggestion makes it, Button::NextSuggestion offers the next one (round), and a
+  // grab within the hover radius of its grabbed point takes that point with the fold already
+  // made, for the hand to adjust from there (the designer has the last word).
+  const SuggestedFold* offeredFold() const;
+  // Which of how many is on offer (0-based); 0 of 0 when none.
+  std::size_t offerIndex() const { return offeredFold() ? offerIndex_ : 0; }
+  std::size_t offerCount() const { return offeredFold() ? offers_.size() : 0; }
   const FoldSession& session() const { return session_; }
 
   // What happened in the last processed frame, and the haptic pulses it asks for.
@@ -152,6 +161,9 @@ class InteractionCore {
   bool handleTwoHands(const InputFrame& frame);
   void handlePointHand(const InputFrame& frame, PointTarget target);
   void endDrag(bool commit, double time);
+  // Starts a drag of the offered fold, already at its drop point. False (and the offer dropped)
+  // when its seed is not on the sheet (a recording's mistake).
+  bool dragOffered(double time);
   void emit(InteractionEventKind kind, double time);
   const SurfacePicker& picker();
 
@@ -195,6 +207,11 @@ class InteractionCore {
   // The drag's self-intersections, on a tree of the sheet built at the grab.
   DragIntersectionWatch watch_;
   std::size_t lastCommitIntersections_ = 0;
+
+  // Suggestions on offer, for the design at offerRevision_.
+  std::vector<SuggestedFold> offers_;
+  std::size_t offerIndex_ = 0;
+  std::uint64_t offerRevision_ = 0;
 };
 
 }  // namespace curvefold

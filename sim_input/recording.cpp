@@ -24,8 +24,13 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-constexpr Button kButtons[] = {Button::Cancel, Button::Undo, Button::Redo, Button::SwitchHands,
-                               Button::Panel};
+constexpr Button kButtons[] = {Button::Cancel,         Button::Undo,
+                               Button::Redo,           Button::SwitchHands,
+                               Button::Panel,          Button::TakeSuggestion,
+                               Button::NextSuggestion};
+
+// The most suggestions one frame brings (the studio asks for a few).
+constexpr std::size_t kMaxSuggestionsPerFrame = 16;
 
 // "parse error at line 1, column 7: problem" without the line, which the message names already.
 std::string jsonLineProblem(const json::exception& e) {
@@ -171,7 +176,22 @@ class LineReader : public JsonReader {
         }
         if (!known)
           fail(where, "unknown button " + quotedExcerpt(name) +
-                          " (expected cancel, undo, redo, switch_hands or panel)");
+                          " (expected cancel, undo, redo, switch_hands, panel, "
+                          "take_suggestion or next_suggestion)");
+      }
+    }
+    if (const json* suggestions = optionalMember(value, "suggestions", "")) {
+      if (!suggestions->is_array() || suggestions->empty() ||
+          suggestions->size() > kMaxSuggestionsPerFrame)
+        fail("suggestions", "must be an array of 1 to " + std::to_string(kMaxSuggestionsPerFrame) +
+                                " folds");
+      for (std::size_t i = 0; i < suggestions->size(); ++i) {
+        const std::string where = item("suggestions", i);
+        const json& fold = (*suggestions)[i];
+        if (!fold.is_object()) fail(where, "must be an object with seed, grab and to");
+        frame.suggestions.push_back({vector2(member(fold, "seed", where), where + ".seed"),
+                                     vector3(member(fold, "grab", where), where + ".grab"),
+                                     vector3(member(fold, "to", where), where + ".to")});
       }
     }
     return frame;
@@ -204,6 +224,10 @@ std::string_view buttonName(Button button) {
       return "switch_hands";
     case Button::Panel:
       return "panel";
+    case Button::TakeSuggestion:
+      return "take_suggestion";
+    case Button::NextSuggestion:
+      return "next_suggestion";
   }
   return "unknown";
 }
@@ -259,6 +283,13 @@ std::string frameLine(const InputFrame& frame) {
     ordered_json& buttons = value["buttons"] = ordered_json::array();
     for (Button button : kButtons)
       if (frame.held(button)) buttons.push_back(buttonName(button));
+  }
+  if (!frame.suggestions.empty()) {
+    ordered_json& suggestions = value["suggestions"] = ordered_json::array();
+    for (const SuggestedFold& fold : frame.suggestions)
+      suggestions.push_back({{"seed", ordered_json::array({fold.seed.x, fold.seed.y})},
+                             {"grab", positionJson(fold.grab)},
+                             {"to", positionJson(fold.to)}});
   }
   std::string line = value.dump();
   LineReader("cannot record frame at t=" + shortestDouble(frame.time), 0).frame(json::parse(line));

@@ -15,6 +15,8 @@
 // "symmetry" ("rotational:6:y", "mirror:x"): every fold brings its images, in the replay too.
 // "source" says where the frames came from: "openxr" (controllers), "hands" (an OpenXR session
 // bare hands began), "desktop", "script" or "synthetic"; the frames are the same either way.
+// "suggestions" ([{"seed":[u,v],"grab":[x,y,z],"to":[x,y,z]}], best first) are the studio's
+// suggested folds that arrived in that frame (docs/design.md 9), so a replay offers the same ones.
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
 // shortest exact form, so parsing a line gives back the very bits that were written.
 #pragma once
@@ -110,7 +112,8 @@ std::string frameLine(const InputFrame& frame);
 // the file cannot be written.
 void writeRecording(const Recording& recording, const std::filesystem::path& path);
 
-// The button names used in the file ("cancel", "undo", "redo", "switch_hands").
+// The button names used in the file ("cancel", "undo", "redo", "switch_hands", "panel",
+// "take_suggestion", "next_suggestion").
 std::string_view buttonName(Button button);
 
 std::string_view handednessName(Handedness handedness);

@@ -2,8 +2,12 @@
 // worked by the dominant hand's ray, in a studio recording made from a gesture script that points
 // at panel items by their label. The same studio runs in `curvefold xr` (test_xr drives it through
 // the runtime) and in `curvefold replay`.
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -11,6 +15,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/headset_studio.hpp"
+#include "engine/fit/random_fold_target.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
@@ -274,6 +281,99 @@ TEST_F(HeldPanel, PanelButtonsActOnTheCore) {
   EXPECT_NE(doc_.core->worldFromSheet(), start);
   click("Reset view");
   EXPECT_EQ(doc_.core->worldFromSheet(), start);
+}
+
+// The studio folding toward a target (issue 27, 3): a square folded once at random is the target;
+// the panel's Suggest searches on the worker while frames go on, its folds arrive in a frame (which
+// the recorder keeps), "Another" goes to the next and "Take" makes it, bringing the sheet closer;
+// the recorded frames replay, panel and all, to the same design without searching.
+TEST(StudioTarget, SuggestTakeAndTheRecordingReplaysToTheSameDesign) {
+  const GeneratedSurface square{"square", {{"resolution", 10}}};
+  const RandomFoldTarget folded = makeRandomFoldTarget("square", square.parameters, 1, 3);
+  const fs::path targetPath =
+      fs::temp_directory_path() / ("curvefold-studio-target-" + std::to_string(::getpid()) + ".obj");
+  {
+    std::ofstream out(targetPath);
+    for (const glm::dvec3& p : folded.sheet.positions)
+      out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    for (const Triangle& t : folded.sheet.triangles)
+      out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  }
+  RecordingHeader header;
+  header.source = "openxr";
+  header.sheetFrame = defaultSheetFrame();
+  header.surface = square;
+  header.studio = RecordingHeader::Studio{};
+  Document doc = makeDocument(Design{square, {}}, "square", header.sheetFrame);
+  HeadsetStudioOptions options = optionsFor(header);
+  options.target = targetPath.string();
+  HostLog log;
+  HeadsetStudio studio(doc, options, loggingHost(log));
+  fs::remove(targetPath);  // read once, at the start
+  ASSERT_TRUE(studio.goal().loaded());
+  ASSERT_NE(studio.goal().mesh(), nullptr);
+
+  // The hands as HeldPanel has them; every frame as the recorder would keep it.
+  std::vector<InputFrame> recorded;
+  InputFrame frame;
+  frame.sheetHand.tracked = true;
+  frame.sheetHand.pose.position = {-0.25, 1.0, -0.6};
+  frame.pointHand.tracked = true;
+  frame.pointHand.position = {0.2, 1.3, -0.2};
+  frame.pointHand.aim = glm::angleAxis(-0.5 * std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
+  auto send = [&] {
+    frame.time += 1.0 / 60.0;
+    studio.process(frame);
+    recorded.push_back(frame);
+    frame.suggestions.clear();
+  };
+  auto click = [&](const std::string& label) {
+    frame.pointHand.position = doc.core->worldOf({0.0, 0.0, 0.0});
+    const std::optional<glm::dvec3> item = studio.itemWorld(label);
+    ASSERT_TRUE(item) << label;
+    frame.pointHand.aim = glm::normalize(
+        glm::dquat(glm::dvec3(0.0, 0.0, -1.0), glm::normalize(*item - frame.pointHand.position)));
+    send();
+    frame.pointHand.select = 1.0;
+    send();
+    frame.pointHand.select = 0.0;
+    send();
+  };
+  send();
+  const TriangleMesh target = *studio.goal().mesh();
+  const double before = surfaceDistance(meshOf(doc.session->fixed()), target).chamfer;
+
+  click("Suggest");
+  EXPECT_TRUE(studio.goal().searching());
+  std::size_t arrived = 0;
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (arrived == 0 && std::chrono::steady_clock::now() < giveUp) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    send();  // frames go on while the worker searches
+    arrived = recorded.back().suggestions.size();
+  }
+  ASSERT_GE(arrived, 2u) << studio.goal().suggestionLine(*doc.core);
+  send();
+  ASSERT_NE(doc.core->offeredFold(), nullptr);
+  EXPECT_EQ(doc.session->foldCount(), 0u);  // offered, not made
+  click("Another");
+  EXPECT_EQ(doc.core->offerIndex(), 1u);
+  const SuggestedFold taken = *doc.core->offeredFold();
+  EXPECT_NE(studio.goal().offeredResult(*doc.core), nullptr);  // the preview's folded result
+  click("Take");
+  ASSERT_EQ(doc.session->foldCount(), 1u);
+  EXPECT_EQ(doc.session->folds()[0].seed, taken.seed);
+  EXPECT_EQ(doc.session->folds()[0].target, taken.to);
+  testing::expectInvariants(doc.session->fixed(), doc.session->initial());
+  const double after = surfaceDistance(meshOf(doc.session->fixed()), target).chamfer;
+  EXPECT_LT(after, before);
+
+  // Through the file's text, as `curvefold replay` reads it.
+  std::string text = headerLine(header) + "\n";
+  for (const InputFrame& each : recorded) text += frameLine(each) + "\n";
+  std::istringstream in(text);
+  const ReplayResult replayed = replayStudioRecording(parseRecording(in, "studio.jsonl"));
+  EXPECT_EQ(designText(replayed.design), designText(doc.design()));
 }
 
 }  // namespace

@@ -459,6 +459,117 @@ TEST_F(Interaction, OnThePanelTheTipDoesNotGrab) {
   EXPECT_EQ(session_.foldCount(), 1u);
 }
 
+// Suggested folds (issue 27, 3) reach the core in frames; these helpers send them and press.
+class Suggestions : public Interaction {
+ protected:
+  void offer(std::vector<SuggestedFold> folds) {
+    frame_.suggestions = std::move(folds);
+    send();
+    frame_.suggestions.clear();  // they come in one frame only
+  }
+  void press(Button button) {
+    frame_.buttons = static_cast<std::uint32_t>(button);
+    send();
+    frame_.buttons = 0;
+    send();
+  }
+  // The fold a FoldSession makes from the seed to the drop point, on the same sheet.
+  static Sheet foldedDirectly(const SuggestedFold& fold) {
+    FoldSession direct(square());
+    direct.beginDragAtDevelopment(fold.seed);
+    direct.updateDrag(fold.to);
+    EXPECT_TRUE(direct.commit());
+    return direct.fixed();
+  }
+
+  const SuggestedFold first_{{0.06, 0.06}, {0.06, 0.06, 0.0}, {0.03, 0.06, 0.03}};
+  const SuggestedFold second_{{-0.06, 0.06}, {-0.06, 0.06, 0.0}, {-0.06, 0.03, 0.03}};
+};
+
+// "Another" goes round the offers; "Take" makes exactly the fold on offer, bit for bit the one a
+// session dragging it makes, and then nothing is on offer (the design changed).
+TEST_F(Suggestions, TakeMakesTheOfferedFoldAndAnotherGoesRound) {
+  EXPECT_EQ(core_.offeredFold(), nullptr);
+  offer({first_, second_});
+  ASSERT_NE(core_.offeredFold(), nullptr);
+  EXPECT_EQ(*core_.offeredFold(), first_);
+  EXPECT_EQ(core_.offerCount(), 2u);
+  press(Button::NextSuggestion);
+  EXPECT_EQ(*core_.offeredFold(), second_);
+  EXPECT_EQ(core_.offerIndex(), 1u);
+  press(Button::NextSuggestion);
+  EXPECT_EQ(*core_.offeredFold(), first_);
+  press(Button::NextSuggestion);
+  frame_.buttons = static_cast<std::uint32_t>(Button::TakeSuggestion);
+  send();
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Grab));
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  frame_.buttons = 0;
+  send();
+  ASSERT_EQ(session_.foldCount(), 1u);
+  EXPECT_TRUE(identical(session_.fixed(), foldedDirectly(second_)));
+  EXPECT_EQ(core_.offeredFold(), nullptr);
+  press(Button::TakeSuggestion);  // nothing on offer: nothing made
+  EXPECT_EQ(session_.foldCount(), 1u);
+}
+
+// Offers are for the design they were made for: a fold by hand (or an undo) withdraws them.
+TEST_F(Suggestions, AnOfferLapsesWhenTheDesignChanges) {
+  offer({first_});
+  fold({-0.1, -0.1, 0.0}, {0.02, 0.03, 0.05});
+  ASSERT_EQ(session_.foldCount(), 1u);
+  EXPECT_EQ(core_.offeredFold(), nullptr);
+  press(Button::TakeSuggestion);
+  EXPECT_EQ(session_.foldCount(), 1u);
+  offer({first_});
+  press(Button::Undo);
+  EXPECT_EQ(core_.offeredFold(), nullptr);
+  press(Button::TakeSuggestion);
+  EXPECT_EQ(session_.foldCount(), 0u);
+}
+
+// Grabbing the offered point takes the fold as suggested, already at its drop point, and the hand
+// adjusts it from there; a grab elsewhere is an ordinary grab.
+TEST_F(Suggestions, GrabbingTheOfferedPointStartsFromTheSuggestion) {
+  offer({first_});
+  // Elsewhere: an ordinary grab, starting where it grabbed.
+  dragBy(world({-0.05, -0.05, 0.0}), {0.0, 0.0, 0.0});
+  EXPECT_EQ(core_.state(), InteractionState::Dragging);
+  expectNear(core_.grabTarget(), core_.grabStart(), 1e-12);
+  frame_.buttons = static_cast<std::uint32_t>(Button::Cancel);
+  send();
+  frame_.buttons = 0;
+  pointAt(frame_.pointHand.position, 0.0);
+  ASSERT_EQ(session_.foldCount(), 0u);
+  // At the offered point (the tip a few millimetres off it): the suggestion, held.
+  const glm::dvec3 near = world(first_.grab) + glm::dvec3(0.004, 0.0, 0.003);
+  pointAt(near, 0.0);
+  pointAt(near, 1.0);
+  ASSERT_EQ(core_.state(), InteractionState::Dragging);
+  expectNear(core_.grabStart(), first_.grab, 1e-12);
+  expectNear(core_.grabTarget(), first_.to, 1e-12);
+  // The hand moves 1 cm: the drop point moves with it.
+  const glm::dvec3 by = world({0.0, -0.01, 0.0}) - world({0.0, 0.0, 0.0});
+  pointAt(near + by, 1.0);
+  expectNear(core_.grabTarget(), first_.to + glm::dvec3(0.0, -0.01, 0.0), 1e-12);
+  pointAt(near + by, 0.0);
+  EXPECT_TRUE(sawEvent(InteractionEventKind::Commit));
+  ASSERT_EQ(session_.foldCount(), 1u);
+  EXPECT_FALSE(identical(session_.fixed(), foldedDirectly(first_)));
+  SuggestedFold adjusted = first_;
+  adjusted.to = session_.folds().back().target;
+  EXPECT_TRUE(identical(session_.fixed(), foldedDirectly(adjusted)));
+}
+
+// A recorded suggestion whose seed lies off the sheet (a hand-edited recording) is dropped.
+TEST_F(Suggestions, AnOfferOffTheSheetIsDropped) {
+  offer({{{5.0, 5.0}, {5.0, 5.0, 0.0}, {5.0, 5.0, 1.0}}});
+  press(Button::TakeSuggestion);
+  EXPECT_EQ(session_.foldCount(), 0u);
+  EXPECT_EQ(core_.offeredFold(), nullptr);
+  EXPECT_EQ(core_.state(), InteractionState::Idle);
+}
+
 TEST(PanelRay, HitsFromTheFrontWithUvFromTheTopLeft) {
   const Pose worldFromPanel{{1.0, 2.0, 3.0}, rotation(90, {0, 1, 0})};  // faces +X
   const glm::dvec2 size{0.2, 0.4};

@@ -67,6 +67,14 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
   }
   EXPECT_TRUE(sameBits(a.pointHand.scroll, b.pointHand.scroll)) << what;
   EXPECT_EQ(a.buttons, b.buttons) << what;
+  ASSERT_EQ(a.suggestions.size(), b.suggestions.size()) << what;
+  for (std::size_t i = 0; i < a.suggestions.size(); ++i) {
+    const std::string which = what + " suggestion " + std::to_string(i);
+    EXPECT_TRUE(sameBits(a.suggestions[i].seed.x, b.suggestions[i].seed.x)) << which;
+    EXPECT_TRUE(sameBits(a.suggestions[i].seed.y, b.suggestions[i].seed.y)) << which;
+    expectSameBits(a.suggestions[i].grab, b.suggestions[i].grab, which + " grab");
+    expectSameBits(a.suggestions[i].to, b.suggestions[i].to, which + " to");
+  }
 }
 
 std::string recordingText(const RecordingHeader& header, const std::vector<InputFrame>& frames) {
@@ -156,7 +164,13 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
       frame.pointHand.aim =
           glm::normalize(glm::dquat(any(random), any(random), any(random), any(random)));
     frame.pointHand.scroll = i % 5 == 0 ? 0.0 : (i % 13 == 0 ? -0.0 : 2.0 * unit(random) - 1.0);
-    frame.buttons = static_cast<std::uint32_t>(i % 32);
+    frame.buttons = static_cast<std::uint32_t>(i % 128);  // every button, take and next too
+    // The studio's suggestions (issue 27, 3): in a few frames, kept exactly.
+    if (i % 9 == 0)
+      for (int k = 0; k <= i % 4; ++k)
+        frame.suggestions.push_back({{a, any(random)},
+                                     {any(random), a, any(random)},
+                                     {any(random), any(random), a}});
     frames.push_back(frame);
   }
   header.studio = RecordingHeader::Studio{{"a.curvefold.json", "designs/b c.curvefold.json"}};
@@ -247,6 +261,16 @@ TEST(Recording, BadInputNamesFileAndLine) {
       {"time backwards", 11, "\"t\":0.9", "\"t\":0.75", "time goes backwards"},
       {"unknown button", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":[\"jump\"]",
        "unknown button \"jump\""},
+      {"suggestions not an array", 11, "\"select\":1.0}", "\"select\":1.0},\"suggestions\":{}",
+       "suggestions: must be an array of 1 to 16 folds"},
+      {"suggestions empty", 11, "\"select\":1.0}", "\"select\":1.0},\"suggestions\":[]",
+       "suggestions: must be an array of 1 to 16 folds"},
+      {"suggestion without to", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"suggestions\":[{\"seed\":[0,0],\"grab\":[0,0,0]}]",
+       "suggestions[0]: missing \"to\""},
+      {"suggestion seed NaN", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"suggestions\":[{\"seed\":[null,0],\"grab\":[0,0,0],\"to\":[0,0,1]}]",
+       "suggestions[0].seed"},
       {"buttons not an array", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":\"undo\"",
        "buttons"},
       {"unknown version", 1, "\"version\":1", "\"version\":2", "unsupported version 2"},
@@ -398,6 +422,13 @@ TEST(Recording, WritersRefuseWhatTheReaderWouldRefuse) {
   EXPECT_THROW(frameLine(bad), RecordingError);
   bad = frame;
   bad.time = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad = frame;  // more suggestions in a frame than the reader takes
+  bad.suggestions.assign(17, SuggestedFold{});
+  EXPECT_THROW(frameLine(bad), RecordingError);
+  bad.suggestions.resize(16);
+  EXPECT_NO_THROW(frameLine(bad));
+  bad.suggestions[3].to.z = std::numeric_limits<double>::infinity();
   EXPECT_THROW(frameLine(bad), RecordingError);
 
   RecordingHeader header = squareRecordingHeader();

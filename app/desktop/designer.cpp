@@ -25,6 +25,7 @@
 #include "app/recent_designs.hpp"
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
+#include "app/studio_target.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -54,6 +55,7 @@ constexpr const char* kDefaultSurface = "square";
 struct DesignerOptions {
   std::string input;  // design file, surface name, or empty for the default surface
   std::string record, autosave, screenshotOnExit, size = "1280x720";
+  std::string target;  // a target shape (OBJ) to fold toward
   bool resume = false;
   bool validation = false;
   bool creasePatternPanel = false;
@@ -100,6 +102,9 @@ void runDesigner(const DesignerOptions& options) {
     design = designFor(options.input, kDefaultSurface);
   }
   Document doc = makeDocument(design, options.resume ? autosavePath : options.input);
+  // Read and checked before any window or file: a bad target is one line and nothing else.
+  StudioTarget goal;
+  if (!options.target.empty()) goal.load(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
   SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); });
   if (outputs.wantsRecording()) startFromCommittedFolds(doc);
@@ -251,6 +256,7 @@ void runDesigner(const DesignerOptions& options) {
                     "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
                     "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
   panel.setRecent(loadRecentDesigns());
+  panel.setTargetPath(options.target);
   StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;
@@ -259,6 +265,7 @@ void runDesigner(const DesignerOptions& options) {
     Document fresh = makeDocument(next, name);
     doc.core.reset();
     doc = std::move(fresh);
+    goal.documentReplaced();
     renderer.markSheetReplaced();
     tracker = SessionSheetTracker();
     state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
@@ -302,6 +309,10 @@ void runDesigner(const DesignerOptions& options) {
           {1200, 800});
       return PdfPicture{image.width, image.height, image.pixels};
     };
+    actions.loadTarget = [&](const std::string& path) { goal.load(path, doc); };
+    actions.suggest = [&] { goal.suggest(doc); };
+    stats.targetLine = goal.distanceLine();
+    stats.suggestionLine = goal.suggestionLine(*doc.core);
     actions.recentChanged = [&panel](const std::vector<std::string>& recent) {
       try {
         saveRecentDesigns(recent);
@@ -316,7 +327,8 @@ void runDesigner(const DesignerOptions& options) {
     const double time =
         std::max(lastTime, std::chrono::duration<double>(Clock::now() - start).count());
     lastTime = time;
-    const InputFrame input = state.input.frame(time);
+    InputFrame input = state.input.frame(time);
+    goal.poll(doc, input);  // a finished search's folds join the frame, and its recording
     const Clock::time_point processStart = Clock::now();
     doc.core->process(input);
     if (doc.session->dragging())
@@ -326,8 +338,10 @@ void runDesigner(const DesignerOptions& options) {
     for (const std::string& problem : outputs.takeNewProblems()) panel.setMessage(problem);
 
     tracker.update(*doc.session, renderer);
-    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
-                                    {creasePatternPanel, /*handMarkers=*/false, &panelCache});
+    lastScene = sceneForInteraction(
+        *doc.core, input, state.camera.camera(), ground,
+        {creasePatternPanel, /*handMarkers=*/false, &panelCache, goal.mesh(),
+         goal.offeredResult(*doc.core)});
     tracker.describe(lastScene.sheet);
     stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
@@ -366,6 +380,9 @@ void addDesignCommand(CLI::App& app) {
                       "Design saved after every committed fold (default: "
                       "<name>.autosave.curvefold.json)");
   command->add_flag("--resume", options->resume, "Start from the autosaved design");
+  command->add_option("--target", options->target,
+                      "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
+                      "with its distance, and the panel's Suggest proposes the next fold");
   command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
                     "Show the crease pattern as a side view (also a checkbox in the panel)");
   command->add_option("--size", options->size, "Window size WxH (default 1280x720)");

@@ -128,6 +128,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
   }
   options.name = options_.input.empty() ? kDefaultSurface : options_.input;
   options.recent = loadRecentDesigns();
+  options.target = options_.target;
   options.sheetFrame = sheetFrame;
   HeadsetStudioHost host;
   host.documentReplacing = [this](const std::string& name) {
@@ -244,8 +245,10 @@ void XrApp::buildScene() {
       texturedRenderer_ = graphics_->rendererGeneration();
     }
   }
-  scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_,
-                               {/*creasePatternPanel=*/false, /*handMarkers=*/false});
+  InteractionSceneOptions sceneOptions;
+  sceneOptions.target = studio_->goal().mesh();
+  sceneOptions.offeredResult = studio_->goal().offeredResult(*doc_.core);
+  scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_, sceneOptions);
   // Controllers are drawn for the roles they drive, bare hands for the others.
   const bool sheetByHand = input_->sheetSource() == XrHandSource::Hand;
   const bool pointByHand = input_->pointSource() == XrHandSource::Hand;

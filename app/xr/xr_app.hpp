@@ -40,6 +40,7 @@ struct XrAppOptions {
   std::string record;     // recording of this session's input frames (*.jsonl)
   std::string autosave;   // design written after every committed fold and at the end
   std::string exportDir;  // where the panel's exports go (default: beside the design)
+  std::string target;     // a target shape (OBJ) to fold toward, shown and suggested in the panel
   bool leftHanded = false;
   bool hands = false;     // bare hands only (XR_EXT_hand_tracking), controllers ignored
   bool headless = false;  // XR_MND_headless: input only, nothing drawn

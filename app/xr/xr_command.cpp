@@ -83,6 +83,9 @@ void addXrCommand(CLI::App& app) {
   command->add_option("--export-dir", options->exportDir,
                       "Folder for the panel's exports (FOLD, SVG, OBJ, glTF, PNG) and saves "
                       "(default: beside the design's autosave)");
+  command->add_option("--target", options->target,
+                      "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
+                      "with its distance, and the panel's Suggest proposes the next fold");
   command->add_flag("--hands", options->hands,
                     "Fold with bare hands only (XR_EXT_hand_tracking), ignoring controllers; "
                     "without it, a hand holding no controller folds too");

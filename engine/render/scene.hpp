@@ -81,6 +81,12 @@ struct PlaneDisk {
   glm::vec4 color{0.35f, 0.65f, 1.0f, 0.25f};
 };
 
+// A corner of a translucent world triangle.
+struct TranslucentVertex {
+  glm::vec3 position{0.0f};
+  glm::vec4 color{1.0f};  // alpha: opacity
+};
+
 // A square grid of lines in the plane y = height, centred under the sheet.
 struct Ground {
   bool enabled = true;
@@ -116,6 +122,9 @@ struct Scene {
   std::vector<LineSegment> lines;    // other world lines (the plane's rim), thin
   std::vector<Marker> markers;
   std::optional<PlaneDisk> plane;
+  // Translucent world triangles, three corners each (a target shape's ghost, a suggested fold's
+  // result): drawn over the opaque scene, hiding nothing behind them.
+  std::vector<TranslucentVertex> translucent;
   Ground ground;
   CreasePatternPanel panel;
   std::optional<WorldPanel> worldPanel;

@@ -67,6 +67,7 @@ struct ColoredVertex {
   glm::vec3 position;
   glm::vec4 color;
 };
+static_assert(sizeof(ColoredVertex) == sizeof(TranslucentVertex));
 struct PanelVertex {
   glm::vec3 position;
   glm::vec2 uv;
@@ -560,6 +561,7 @@ void SceneRenderer::prepare(const Frame& frame, const Scene& scene, VkExtent2D e
       addLine({rim(i), rim(i + 1), rimColor});
     }
   }
+  for (const TranslucentVertex& v : scene.translucent) disk.push_back({v.position, v.color});
   slot.lineCount = static_cast<std::uint32_t>(lines.size()) - slot.lineFirst;
   slot.panelFirst = static_cast<std::uint32_t>(lines.size());
   if (scene.panel.enabled)

@@ -1,0 +1,181 @@
+#include "app/studio_target.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+#include "engine/surfaces/obj_surface.hpp"
+
+namespace curvefold::cli {
+
+namespace {
+
+// The studio measures on fewer samples than `curvefold distance` (a tenth of a second at 10k
+// triangles, off the frame); the command line is the one to quote.
+constexpr std::size_t kStudioDistanceSamples = 5'000;
+
+}  // namespace
+
+std::string millimetresText(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g mm", std::abs(metres) < 1e-9 ? 0.0 : metres * 1000.0);
+  return text;
+}
+
+std::string percentText(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g%%", std::abs(fraction) < 1e-9 ? 0.0 : fraction * 100.0);
+  return text;
+}
+
+std::string distanceText(double hausdorff, double chamfer, double diagonal) {
+  return "Hausdorff " + millimetresText(hausdorff) + " (" + percentText(hausdorff / diagonal) +
+         "), Chamfer " + millimetresText(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
+}
+
+StudioTarget::StudioTarget(bool replaying) : replaying_(replaying) {}
+
+StudioTarget::~StudioTarget() = default;
+
+void StudioTarget::load(const std::string& path, const Document& doc) {
+  std::shared_ptr<const FoldFitter> fitter;
+  try {
+    fitter = std::make_shared<const FoldFitter>(readObjMesh(path));
+    fitter->checkAgainst(doc.session->initial());
+  } catch (const InvalidTarget& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  // The old worker's search (if any) is abandoned with it.
+  worker_.reset();
+  if (measuring_.valid()) measuring_.wait();
+  measuring_ = {};
+  fitter_ = std::move(fitter);
+  path_ = path;
+  if (!replaying_) worker_ = std::make_unique<SuggestionWorker>(fitter_);
+  measured_.reset();
+  searching_ = false;
+  answerNote_.clear();
+  found_.clear();
+  offered_.clear();
+}
+
+const TriangleMesh* StudioTarget::mesh() const {
+  return fitter_ ? &fitter_->target() : nullptr;
+}
+
+void StudioTarget::suggest(const Document& doc) {
+  if (!fitter_) throw std::runtime_error("no target to suggest toward: load one first");
+  requestSession_ = doc.session.get();
+  requestRevision_ = doc.session->designRevision();
+  searching_ = true;
+  answerNote_.clear();
+  if (replaying_) return;  // the recording brings what was found
+  const FoldSession& session = *doc.session;
+  DesignSnapshot snapshot;
+  snapshot.initial = std::make_shared<const Sheet>(session.initial());
+  snapshot.folds.assign(session.folds().begin(), session.folds().begin() + session.foldCount());
+  snapshot.symmetry = session.symmetry() ? session.symmetry()->name() : "";
+  request_ = worker_->request(std::move(snapshot), kSuggestionsPerRequest);
+}
+
+void StudioTarget::poll(const Document& doc, InputFrame& frame) {
+  const bool sameDesign = requestSession_ == doc.session.get() &&
+                          requestRevision_ == doc.session->designRevision();
+  if (searching_ && !sameDesign) {
+    // Folded, undone or replaced while searching: what comes is for another design.
+    searching_ = false;
+    answerNote_ = "the design changed while searching: suggest again";
+  }
+  if (replaying_) {
+    if (!frame.suggestions.empty()) {
+      searching_ = false;
+      found_.clear();
+      offered_ = frame.suggestions;
+    }
+  } else if (worker_) {
+    std::optional<SuggestionWorker::Answer> answer = worker_->take();
+    if (answer && searching_ && answer->request == request_) {
+      searching_ = false;
+      if (!answer->error.empty())
+        answerNote_ = answer->error;
+      else if (answer->suggestions.empty())
+        answerNote_ = "no fold found brings it closer";
+      found_ = std::move(answer->suggestions);
+      offered_.clear();
+      for (const FoldSuggestion& suggestion : found_) {
+        const FoldRecord& fold = suggestion.folds.front();
+        offered_.push_back({fold.seed, fold.grabbed, fold.target});
+      }
+      frame.suggestions = offered_;
+    }
+  }
+
+  // The distance of the committed design, measured again when it changes.
+  if (replaying_ || !fitter_) return;
+  if (measuring_.valid() &&
+      measuring_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    measured_ = measuring_.get();
+  const bool current = measured_ && measured_->session == doc.session.get() &&
+                       measured_->revision == doc.session->designRevision();
+  if (!current && !measuring_.valid()) {
+    measuring_ = std::async(std::launch::async,
+                            [fitter = fitter_, mesh = meshOf(doc.session->fixed()),
+                             session = static_cast<const void*>(doc.session.get()),
+                             revision = doc.session->designRevision()] {
+                              return Measured{revision, session,
+                                              surfaceDistance(mesh, fitter->target(),
+                                                              kStudioDistanceSamples)};
+                            });
+  }
+  measuredCurrent_ = current;
+}
+
+const Sheet* StudioTarget::offeredResult(const InteractionCore& core) const {
+  const SuggestedFold* offer = core.offeredFold();
+  if (!offer) return nullptr;
+  for (std::size_t i = 0; i < offered_.size() && i < found_.size(); ++i)
+    if (offered_[i] == *offer) return &found_[i].sheet;
+  return nullptr;
+}
+
+std::string StudioTarget::distanceLine() const {
+  if (!fitter_) return "target: none";
+  if (replaying_) return "target: " + path_;
+  if (!measured_) return "measuring the distance to the target ...";
+  const SurfaceDistance& d = measured_->distance;
+  return (measuredCurrent_ ? "" : "(measuring) ") + distanceText(d.hausdorff, d.chamfer, d.diagonal);
+}
+
+std::string StudioTarget::suggestionLine(const InteractionCore& core) const {
+  if (searching_) return "searching for the next fold ...";
+  if (const SuggestedFold* offer = core.offeredFold()) {
+    std::string line = "suggestion " + std::to_string(core.offerIndex() + 1) + " of " +
+                       std::to_string(core.offerCount());
+    for (std::size_t i = 0; i < offered_.size() && i < found_.size(); ++i)
+      if (offered_[i] == *offer)
+        line += ": Chamfer about " + millimetresText(found_[i].before) + " -> " +
+                millimetresText(found_[i].after);
+    return line;
+  }
+  return answerNote_;
+}
+
+void StudioTarget::documentReplaced() {
+  if (worker_) worker_ = std::make_unique<SuggestionWorker>(fitter_);  // abandons the search
+  searching_ = false;
+  requestSession_ = nullptr;
+  answerNote_.clear();
+  found_.clear();
+  offered_.clear();
+  // A measure of the old design must not pass for one of the new (its session may share the
+  // address).
+  if (measuring_.valid()) measuring_.wait();
+  measuring_ = {};
+  measured_.reset();
+  measuredCurrent_ = false;
+}
+
+}  // namespace curvefold::cli

@@ -1,0 +1,97 @@
+// The studio's target shape (issue 27, docs/design.md 9): a mesh the designer folds toward, shown
+// as a ghost in the sheet's frame with its distance to the design, and the next folds toward it
+// suggested on request. The search runs on a worker thread (SuggestionWorker) and the distance is
+// measured off the frame too, so frames never wait for either. A suggestion reaches the
+// interaction core as input (InputFrame::suggestions), where it is recorded like the hands: a
+// replay offers the same folds at the same moment without searching, so it makes the same design.
+// The desktop window and the headset's panel share it.
+#pragma once
+
+#include <cstdint>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/document.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/suggestion_worker.hpp"
+#include "engine/fit/surface_distance.hpp"
+
+namespace curvefold::cli {
+
+// "12.3 mm" and "4.1%": three digits; what lies below a nanometre is rounding, printed as 0.
+std::string millimetresText(double metres);
+std::string percentText(double fraction);
+// "Hausdorff 4.2 mm (1.3%), Chamfer 1.1 mm (0.35%)": each also relative to the target's diagonal.
+std::string distanceText(double hausdorff, double chamfer, double diagonal);
+
+class StudioTarget {
+ public:
+  // How many suggestions one request asks for (the panel's "Another" goes round them).
+  static constexpr std::size_t kSuggestionsPerRequest = 3;
+
+  // replaying: suggestions come from the frames (a replay's), and nothing is searched or measured.
+  explicit StudioTarget(bool replaying = false);
+  ~StudioTarget();
+  StudioTarget(const StudioTarget&) = delete;
+  StudioTarget& operator=(const StudioTarget&) = delete;
+
+  // Reads the target (an OBJ in the sheet's frame) and checks it against the document's sheet.
+  // Throws a one-line error naming the file (unreadable, no area, far away or in other units),
+  // keeping the target it had.
+  void load(const std::string& path, const Document& doc);
+  bool loaded() const { return fitter_ != nullptr; }
+  // The target (sheet coordinates), for the ghost; null without one.
+  const TriangleMesh* mesh() const;
+  const std::string& path() const { return path_; }
+
+  // Starts the search for the next folds of the document's committed design (a drag in
+  // progress is not part of it). Throws when there is no target.
+  void suggest(const Document& doc);
+  bool searching() const { return searching_; }
+
+  // Once a frame, before the frame reaches the core and the recorder: a search that finished for
+  // the design as it still is puts its folds into frame.suggestions (a replay's frame brings its
+  // own). Also starts measuring the distance when the design changed.
+  void poll(const Document& doc, InputFrame& frame);
+
+  // The folded result of the suggestion the core offers, for the preview; null when unknown (a
+  // replay's suggestions come without their results).
+  const Sheet* offeredResult(const InteractionCore& core) const;
+
+  // One line each for the panel: the distance ("no target", "measuring ...") and the suggestion
+  // ("searching ...", "suggestion 1 of 3: 8.1 -> 5.2 mm", "no fold brings it closer", ...).
+  std::string distanceLine() const;
+  std::string suggestionLine(const InteractionCore& core) const;
+
+  // The document was replaced (a new sheet, an opened design): what was found for the old one
+  // goes; the target stays.
+  void documentReplaced();
+
+ private:
+  struct Measured {
+    std::uint64_t revision = 0;
+    const void* session = nullptr;
+    SurfaceDistance distance;
+  };
+
+  bool replaying_;
+  std::string path_;
+  std::shared_ptr<const FoldFitter> fitter_;
+  std::unique_ptr<SuggestionWorker> worker_;
+  bool searching_ = false;
+  std::uint64_t request_ = 0;
+  // The design a search or the offers are for: its session and revision.
+  const void* requestSession_ = nullptr;
+  std::uint64_t requestRevision_ = 0;
+  std::string answerNote_;  // why the last search offered nothing
+  std::vector<FoldSuggestion> found_;  // the last answer, best first (their results)
+  std::vector<SuggestedFold> offered_;  // what the last answer put into a frame
+  std::optional<Measured> measured_;
+  bool measuredCurrent_ = false;  // measured_ is of the design as it is
+  std::future<Measured> measuring_;
+};
+
+}  // namespace curvefold::cli
