@@ -138,6 +138,21 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
   expectFailure("fit " + target + " --from cylinder --symmetry rotational:7:x" + o, "rotational",
                 out);
   expectFailure("fit " + target + " --from cylinder --radius -1" + o, "radius", out);
+
+  // The studio's --target (design and xr) is read and checked first: one line, and no autosave,
+  // window or runtime.
+  const fs::path autosave = path("studio.curvefold.json");
+  const std::string a = " --autosave " + autosave.string();
+  for (const std::string command : {"design", "xr"}) {
+    expectFailure(command + " cylinder --target " + path("missing.obj").string() + a,
+                  "missing.obj", autosave);
+    expectFailure(command + " cylinder --target " + path("empty.obj").string() + a, "no faces",
+                  autosave);
+    expectFailure(command + " cylinder --target " + path("far.obj").string() + a, "sheet's frame",
+                  autosave);
+    expectFailure(command + " cylinder --target " + path("mm.obj").string() + a, "units",
+                  autosave);
+  }
   expectFailure("fit " + target + o, "--from", out);
   expectFailure("fit " + target + " --from cylinder --wobble 3" + o, "--wobble", out);
   for (const char* seed : {"abc", "-1", "18446744073709551616", "0x10", "\"\""})

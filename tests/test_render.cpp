@@ -242,6 +242,31 @@ TEST_F(Render, MarkersAndPlaneDiskAreDrawn) {
   EXPECT_NE(plain.pixels, marked.pixels);
 }
 
+// Issue 27: translucent triangles (a target's ghost, a suggestion's result) blend over the sheet in
+// front of it and are hidden behind it.
+TEST_F(Render, TranslucentTrianglesBlendInFrontAndHideBehind) {
+  const Sheet sheet = square();
+  Scene scene = sceneForSheet(sheet, ViewPreset::Front, 1.0f, false);
+  const RgbaImage plain = renderer_->render(scene);
+  auto triangleAt = [&](float z) {
+    scene.translucent.clear();
+    const glm::vec4 red(1.0f, 0.0f, 0.0f, 0.5f);
+    // Within the sheet's outline, over its middle.
+    for (const glm::vec3& p : {glm::vec3(0.05f, 0.05f, z), glm::vec3(0.15f, 0.05f, z),
+                               glm::vec3(0.1f, 0.15f, z)})
+      scene.translucent.push_back({p, red});
+  };
+  triangleAt(-0.01f);  // behind the sheet (the front view looks from +z)
+  EXPECT_EQ(renderer_->render(scene).pixels, plain.pixels);
+  triangleAt(0.01f);
+  const RgbaImage ghost = renderer_->render(scene);
+  const std::uint8_t* under = plain.at(kSize / 2, kSize / 2);
+  const std::uint8_t* over = ghost.at(kSize / 2, kSize / 2);
+  EXPECT_GT(int(over[0]), int(over[1]) + 60);  // reddened
+  EXPECT_GT(int(over[1]), 40);                 // the paper still shows through
+  EXPECT_LT(int(over[1]), int(under[1]) - 40);
+}
+
 // Issue 14: a picture on a quad in the world (the headset's panel) shows its texture and hides
 // what is behind it, lines included, while lines in front of it stay visible.
 TEST_F(Render, AWorldPanelShowsItsPictureAndHidesWhatIsBehindIt) {
