@@ -201,10 +201,10 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean " << millimetresText(d.fromAMean)
-              << "\n"
-              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean " << millimetresText(d.fromBMean)
-              << "\n"
+    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
+              << millimetresText(d.fromAMean) << "\n"
+              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
+              << millimetresText(d.fromBMean) << "\n"
               << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
               << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
               << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("

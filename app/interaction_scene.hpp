@@ -40,9 +40,9 @@ struct InteractionSceneOptions {
   CreasePatternCache* panelCache = nullptr;  // null: the panel is built from the shown sheet
   // The studio's target shape (issue 27; sheet coordinates), drawn as a translucent ghost.
   const TriangleMesh* target = nullptr;
-  // The folded result of the suggestion on offer (InteractionCore::offeredFold), drawn
-  // translucent beside its grab and drop points; null: the points alone.
-  const Sheet* offeredResult = nullptr;
+  // The part the suggestion on offer (InteractionCore::offeredFold) moves, where it goes (sheet
+  // coordinates), drawn translucent beside its grab and drop points; null: the points alone.
+  const TriangleMesh* offeredResult = nullptr;
 };
 
 // Both controllers as simple generic models (no vendor meshes), for the headset: the sheet hand

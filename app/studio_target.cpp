@@ -17,6 +17,23 @@ namespace {
 // triangles, off the frame); the command line is the one to quote.
 constexpr std::size_t kStudioDistanceSamples = 5'000;
 
+// The triangles of `folded` (a fold of `before`, whose vertices it keeps by index and appends to)
+// that the fold moved: those with a kept vertex that moved. The rest lie where the sheet is, and
+// a preview drawn over them would only veil it.
+TriangleMesh movedPart(const Sheet& before, const Sheet& folded) {
+  TriangleMesh part;
+  part.positions = folded.positions;
+  const std::size_t kept = std::min(before.vertexCount(), folded.vertexCount());
+  for (const Triangle& t : folded.triangles) {
+    bool moved = false;
+    for (const VertexIndex v : t)
+      moved = moved || (v < kept && folded.positions[v] != before.positions[v]);
+    if (moved)
+      part.triangles.push_back({std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])});
+  }
+  return part;
+}
+
 }  // namespace
 
 std::string millimetresText(double metres) {
@@ -59,6 +76,7 @@ void StudioTarget::load(const std::string& path, const Document& doc) {
   searching_ = false;
   answerNote_.clear();
   found_.clear();
+  moved_.clear();
   offered_.clear();
 }
 
@@ -82,8 +100,8 @@ void StudioTarget::suggest(const Document& doc) {
 }
 
 void StudioTarget::poll(const Document& doc, InputFrame& frame) {
-  const bool sameDesign = requestSession_ == doc.session.get() &&
-                          requestRevision_ == doc.session->designRevision();
+  const bool sameDesign =
+      requestSession_ == doc.session.get() && requestRevision_ == doc.session->designRevision();
   if (searching_ && !sameDesign) {
     // Folded, undone or replaced while searching: what comes is for another design.
     searching_ = false;
@@ -93,6 +111,7 @@ void StudioTarget::poll(const Document& doc, InputFrame& frame) {
     if (!frame.suggestions.empty()) {
       searching_ = false;
       found_.clear();
+      moved_.clear();
       offered_ = frame.suggestions;
     }
   } else if (worker_) {
@@ -105,6 +124,9 @@ void StudioTarget::poll(const Document& doc, InputFrame& frame) {
         answerNote_ = "no fold found brings it closer";
       found_ = std::move(answer->suggestions);
       offered_.clear();
+      moved_.clear();
+      for (const FoldSuggestion& suggestion : found_)
+        moved_.push_back(movedPart(doc.session->fixed(), suggestion.sheet));
       for (const FoldSuggestion& suggestion : found_) {
         const FoldRecord& fold = suggestion.folds.front();
         offered_.push_back({fold.seed, fold.grabbed, fold.target});
@@ -121,23 +143,22 @@ void StudioTarget::poll(const Document& doc, InputFrame& frame) {
   const bool current = measured_ && measured_->session == doc.session.get() &&
                        measured_->revision == doc.session->designRevision();
   if (!current && !measuring_.valid()) {
-    measuring_ = std::async(std::launch::async,
-                            [fitter = fitter_, mesh = meshOf(doc.session->fixed()),
-                             session = static_cast<const void*>(doc.session.get()),
-                             revision = doc.session->designRevision()] {
-                              return Measured{revision, session,
-                                              surfaceDistance(mesh, fitter->target(),
-                                                              kStudioDistanceSamples)};
-                            });
+    measuring_ =
+        std::async(std::launch::async, [fitter = fitter_, mesh = meshOf(doc.session->fixed()),
+                                        session = static_cast<const void*>(doc.session.get()),
+                                        revision = doc.session->designRevision()] {
+          return Measured{revision, session,
+                          surfaceDistance(mesh, fitter->target(), kStudioDistanceSamples)};
+        });
   }
   measuredCurrent_ = current;
 }
 
-const Sheet* StudioTarget::offeredResult(const InteractionCore& core) const {
+const TriangleMesh* StudioTarget::offeredResult(const InteractionCore& core) const {
   const SuggestedFold* offer = core.offeredFold();
   if (!offer) return nullptr;
-  for (std::size_t i = 0; i < offered_.size() && i < found_.size(); ++i)
-    if (offered_[i] == *offer) return &found_[i].sheet;
+  for (std::size_t i = 0; i < offered_.size() && i < moved_.size(); ++i)
+    if (offered_[i] == *offer) return &moved_[i];
   return nullptr;
 }
 
@@ -146,7 +167,8 @@ std::string StudioTarget::distanceLine() const {
   if (replaying_) return "target: " + path_;
   if (!measured_) return "measuring the distance to the target ...";
   const SurfaceDistance& d = measured_->distance;
-  return (measuredCurrent_ ? "" : "(measuring) ") + distanceText(d.hausdorff, d.chamfer, d.diagonal);
+  return (measuredCurrent_ ? "" : "(measuring) ") +
+         distanceText(d.hausdorff, d.chamfer, d.diagonal);
 }
 
 std::string StudioTarget::suggestionLine(const InteractionCore& core) const {
@@ -169,6 +191,7 @@ void StudioTarget::documentReplaced() {
   requestSession_ = nullptr;
   answerNote_.clear();
   found_.clear();
+  moved_.clear();
   offered_.clear();
   // A measure of the old design must not pass for one of the new (its session may share the
   // address).

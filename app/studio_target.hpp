@@ -57,9 +57,9 @@ class StudioTarget {
   // own). Also starts measuring the distance when the design changed.
   void poll(const Document& doc, InputFrame& frame);
 
-  // The folded result of the suggestion the core offers, for the preview; null when unknown (a
-  // replay's suggestions come without their results).
-  const Sheet* offeredResult(const InteractionCore& core) const;
+  // The part the suggestion the core offers moves, where it goes (sheet coordinates), for the
+  // preview; null when unknown (a replay's suggestions come without their results).
+  const TriangleMesh* offeredResult(const InteractionCore& core) const;
 
   // One line each for the panel: the distance ("no target", "measuring ...") and the suggestion
   // ("searching ...", "suggestion 1 of 3: 8.1 -> 5.2 mm", "no fold brings it closer", ...).
@@ -86,8 +86,9 @@ class StudioTarget {
   // The design a search or the offers are for: its session and revision.
   const void* requestSession_ = nullptr;
   std::uint64_t requestRevision_ = 0;
-  std::string answerNote_;  // why the last search offered nothing
-  std::vector<FoldSuggestion> found_;  // the last answer, best first (their results)
+  std::string answerNote_;              // why the last search offered nothing
+  std::vector<FoldSuggestion> found_;   // the last answer, best first
+  std::vector<TriangleMesh> moved_;     // each one's moved part, folded
   std::vector<SuggestedFold> offered_;  // what the last answer put into a frame
   std::optional<Measured> measured_;
   bool measuredCurrent_ = false;  // measured_ is of the design as it is

@@ -66,8 +66,7 @@ bool InteractionCore::dragOffered(double time) {
   emit(InteractionEventKind::Grab, time);
   dragMoved_ = true;
   session_.updateDrag(fold.to);
-  watch_.update(session_.current(), session_.lastChanges(), session_.plane(),
-                reflectedTriangles());
+  watch_.update(session_.current(), session_.lastChanges(), session_.plane(), reflectedTriangles());
   lastTarget_ = fold.to;
   return true;
 }

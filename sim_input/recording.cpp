@@ -24,9 +24,8 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-constexpr Button kButtons[] = {Button::Cancel,         Button::Undo,
-                               Button::Redo,           Button::SwitchHands,
-                               Button::Panel,          Button::TakeSuggestion,
+constexpr Button kButtons[] = {Button::Cancel,        Button::Undo,  Button::Redo,
+                               Button::SwitchHands,   Button::Panel, Button::TakeSuggestion,
                                Button::NextSuggestion};
 
 // The most suggestions one frame brings (the studio asks for a few).
@@ -183,8 +182,8 @@ class LineReader : public JsonReader {
     if (const json* suggestions = optionalMember(value, "suggestions", "")) {
       if (!suggestions->is_array() || suggestions->empty() ||
           suggestions->size() > kMaxSuggestionsPerFrame)
-        fail("suggestions", "must be an array of 1 to " + std::to_string(kMaxSuggestionsPerFrame) +
-                                " folds");
+        fail("suggestions",
+             "must be an array of 1 to " + std::to_string(kMaxSuggestionsPerFrame) + " folds");
       for (std::size_t i = 0; i < suggestions->size(); ++i) {
         const std::string where = item("suggestions", i);
         const json& fold = (*suggestions)[i];

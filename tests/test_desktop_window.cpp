@@ -86,6 +86,46 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   EXPECT_EQ(replayed["surface"], saved["surface"]);
 }
 
+// Issue 27, 3: with a target, S asks for a suggestion (searched on a worker while the window
+// draws), T takes it; the recording keeps the suggestion and the take, so it replays to the same
+// design.
+TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
+  const std::string display = startXvfb();
+  ASSERT_FALSE(display.empty()) << "Xvfb did not start";
+  const fs::path target =
+      fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj";
+  const fs::path recording = dir() / "session.jsonl", autosave = dir() / "auto.curvefold.json",
+                 log = dir() / "designer.log";
+  const std::string window =
+      startDesigner("cylinder --size 640x480 --target " + target.string() + " --record " +
+                        recording.string() + " --autosave " + autosave.string(),
+                    log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
+  // T takes nothing until the suggestion is there; the autosave says when a fold was made.
+  auto folds = [&] {
+    if (!fs::exists(autosave)) return std::size_t{0};
+    return nlohmann::json::parse(slurp(autosave))["folds"].size();
+  };
+  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+  shell(quit());
+  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+  EXPECT_EQ(slurp(log), "");
+  const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
+  ASSERT_EQ(saved["folds"].size(), 1u);
+  const std::string frames = slurp(recording);
+  EXPECT_NE(frames.find("\"suggestions\":[{\"seed\""), std::string::npos);
+  EXPECT_NE(frames.find("take_suggestion"), std::string::npos);
+
+  const fs::path out = dir() / "replayed";
+  ASSERT_EQ(shell(std::string(CURVEFOLD_BINARY) + " replay " + recording.string() + " --out " +
+                  out.string() + " >/dev/null"),
+            0);
+  const nlohmann::json replayed = nlohmann::json::parse(slurp(out / "session.curvefold.json"));
+  EXPECT_EQ(replayed["folds"], saved["folds"]);
+}
+
 // Resizing the window: the swapchain follows it (the exit screenshot has the new size and shows
 // the sheet) and the mouse picks through the new size. The view keeps its camera, so a vertex
 // appears where that camera projects it into the larger window.

@@ -144,14 +144,13 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
   const fs::path autosave = path("studio.curvefold.json");
   const std::string a = " --autosave " + autosave.string();
   for (const std::string command : {"design", "xr"}) {
-    expectFailure(command + " cylinder --target " + path("missing.obj").string() + a,
-                  "missing.obj", autosave);
+    expectFailure(command + " cylinder --target " + path("missing.obj").string() + a, "missing.obj",
+                  autosave);
     expectFailure(command + " cylinder --target " + path("empty.obj").string() + a, "no faces",
                   autosave);
     expectFailure(command + " cylinder --target " + path("far.obj").string() + a, "sheet's frame",
                   autosave);
-    expectFailure(command + " cylinder --target " + path("mm.obj").string() + a, "units",
-                  autosave);
+    expectFailure(command + " cylinder --target " + path("mm.obj").string() + a, "units", autosave);
   }
   expectFailure("fit " + target + o, "--from", out);
   expectFailure("fit " + target + " --from cylinder --wobble 3" + o, "--wobble", out);

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
-#include <thread>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -290,8 +290,8 @@ TEST_F(HeldPanel, PanelButtonsActOnTheCore) {
 TEST(StudioTarget, SuggestTakeAndTheRecordingReplaysToTheSameDesign) {
   const GeneratedSurface square{"square", {{"resolution", 10}}};
   const RandomFoldTarget folded = makeRandomFoldTarget("square", square.parameters, 1, 3);
-  const fs::path targetPath =
-      fs::temp_directory_path() / ("curvefold-studio-target-" + std::to_string(::getpid()) + ".obj");
+  const fs::path targetPath = fs::temp_directory_path() /
+                              ("curvefold-studio-target-" + std::to_string(::getpid()) + ".obj");
   {
     std::ofstream out(targetPath);
     for (const glm::dvec3& p : folded.sheet.positions)

@@ -252,8 +252,8 @@ TEST_F(Render, TranslucentTrianglesBlendInFrontAndHideBehind) {
     scene.translucent.clear();
     const glm::vec4 red(1.0f, 0.0f, 0.0f, 0.5f);
     // Within the sheet's outline, over its middle.
-    for (const glm::vec3& p : {glm::vec3(0.05f, 0.05f, z), glm::vec3(0.15f, 0.05f, z),
-                               glm::vec3(0.1f, 0.15f, z)})
+    for (const glm::vec3& p :
+         {glm::vec3(0.05f, 0.05f, z), glm::vec3(0.15f, 0.05f, z), glm::vec3(0.1f, 0.15f, z)})
       scene.translucent.push_back({p, red});
   };
   triangleAt(-0.01f);  // behind the sheet (the front view looks from +z)

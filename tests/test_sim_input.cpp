@@ -168,9 +168,8 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
     // The studio's suggestions (issue 27, 3): in a few frames, kept exactly.
     if (i % 9 == 0)
       for (int k = 0; k <= i % 4; ++k)
-        frame.suggestions.push_back({{a, any(random)},
-                                     {any(random), a, any(random)},
-                                     {any(random), any(random), a}});
+        frame.suggestions.push_back(
+            {{a, any(random)}, {any(random), a, any(random)}, {any(random), any(random), a}});
     frames.push_back(frame);
   }
   header.studio = RecordingHeader::Studio{{"a.curvefold.json", "designs/b c.curvefold.json"}};

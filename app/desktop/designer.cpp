@@ -172,6 +172,7 @@ void runDesigner(const DesignerOptions& options) {
     Document* doc = nullptr;
     glm::dvec2 mouse{0.0};
     bool orbiting = false, panning = false, quit = false;
+    bool suggest = false;  // S: the panel's Suggest
     double pendingWheel = 0.0;
   } state;
   state.doc = &doc;
@@ -228,6 +229,10 @@ void runDesigner(const DesignerOptions& options) {
     if (ctrl && key == GLFW_KEY_Z)
       s.input.pulse((mods & GLFW_MOD_SHIFT) ? Button::Redo : Button::Undo);
     if (ctrl && key == GLFW_KEY_Q) s.quit = true;
+    // The target's suggestions (issue 27): S asks, T takes the one on offer, N offers another.
+    if (!ctrl && key == GLFW_KEY_S) s.suggest = true;
+    if (!ctrl && key == GLFW_KEY_T) s.input.pulse(Button::TakeSuggestion);
+    if (!ctrl && key == GLFW_KEY_N) s.input.pulse(Button::NextSuggestion);
   });
   // Installed after ours, so ImGui chains to them.
   ImGui_ImplGlfw_InitForVulkan(window, true);
@@ -254,7 +259,8 @@ void runDesigner(const DesignerOptions& options) {
   // The panel (shared with the headset) and what the window measures for it.
   StudioPanel panel(outputs.wantsRecording(),
                     "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
-                    "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits.");
+                    "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
+                    "suggests a fold, T takes it, N offers another.");
   panel.setRecent(loadRecentDesigns());
   panel.setTargetPath(options.target);
   StudioStats stats;
@@ -327,6 +333,14 @@ void runDesigner(const DesignerOptions& options) {
     const double time =
         std::max(lastTime, std::chrono::duration<double>(Clock::now() - start).count());
     lastTime = time;
+    if (state.suggest) {
+      state.suggest = false;
+      try {
+        goal.suggest(doc);
+      } catch (const std::exception& e) {
+        panel.setMessage(e.what());
+      }
+    }
     InputFrame input = state.input.frame(time);
     goal.poll(doc, input);  // a finished search's folds join the frame, and its recording
     const Clock::time_point processStart = Clock::now();
@@ -338,10 +352,9 @@ void runDesigner(const DesignerOptions& options) {
     for (const std::string& problem : outputs.takeNewProblems()) panel.setMessage(problem);
 
     tracker.update(*doc.session, renderer);
-    lastScene = sceneForInteraction(
-        *doc.core, input, state.camera.camera(), ground,
-        {creasePatternPanel, /*handMarkers=*/false, &panelCache, goal.mesh(),
-         goal.offeredResult(*doc.core)});
+    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
+                                    {creasePatternPanel, /*handMarkers=*/false, &panelCache,
+                                     goal.mesh(), goal.offeredResult(*doc.core)});
     tracker.describe(lastScene.sheet);
     stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
