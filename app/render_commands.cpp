@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -23,6 +24,7 @@
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
+#include "engine/surfaces/obj_surface.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
 
@@ -69,6 +71,28 @@ ViewPreset parseView(const std::string& text) {
 
 // With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
 // catch them too.
+// A plain mesh (a target) as a sheet for the renderer: its own positions as the development,
+// which only a crease pattern would read.
+Sheet meshSheet(const TriangleMesh& mesh) {
+  Sheet sheet;
+  sheet.positions = mesh.positions;
+  for (const glm::dvec3& p : mesh.positions) sheet.development.push_back({p.x, p.y});
+  for (const auto& t : mesh.triangles)
+    sheet.triangles.push_back({VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2])});
+  return sheet;
+}
+
+// Two images of one height side by side.
+RgbaImage besideEachOther(const RgbaImage& left, const RgbaImage& right) {
+  RgbaImage image{left.width + right.width, left.height, {}};
+  image.pixels.reserve(std::size_t(image.width) * image.height * 4);
+  for (std::uint32_t y = 0; y < image.height; ++y) {
+    image.pixels.insert(image.pixels.end(), left.at(0, y), left.at(0, y) + left.width * 4);
+    image.pixels.insert(image.pixels.end(), right.at(0, y), right.at(0, y) + right.width * 4);
+  }
+  return image;
+}
+
 void checkValidation(const VulkanContext& context) {
   if (context.validationMessageCount() == 0) return;
   std::string first = context.validationMessages().front();
@@ -217,7 +241,7 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "Render a design or a recording's result to PNG (headless Vulkan)");
   struct Options {
-    std::string input, png, size = "1280x720", view = "iso";
+    std::string input, png, size = "1280x720", view = "iso", target;
     bool panel = false;
   };
   auto options = std::make_shared<Options>();
@@ -229,6 +253,9 @@ void addRenderCommand(CLI::App& app) {
                       "Camera: " + std::string(kViewPresetNames) + " (default iso)");
   command->add_flag("--crease-pattern-panel", options->panel,
                     "Show the 2D crease pattern in a panel at the right");
+  command->add_option("--target", options->target,
+                      "A target shape (OBJ) drawn in grey on the left half, the design on the "
+                      "right, both seen by one camera");
   command->callback([options] {
     const RenderSize size = parseSize(options->size);
     const ViewPreset view = parseView(options->view);
@@ -239,13 +266,41 @@ void addRenderCommand(CLI::App& app) {
     } else {
       sheet = buildSheet(loadDesign(input), input.string());
     }
+    std::optional<Sheet> target;
+    if (!options->target.empty()) {
+      if (options->panel)
+        throw UsageError("--target: not with --crease-pattern-panel (the halves are views)");
+      target = meshSheet(readObjMesh(options->target));
+    }
     HeadlessOptions renderOptions;
-    renderOptions.width = size.width;
+    renderOptions.width = target ? size.width / 2 : size.width;
     renderOptions.height = size.height;
     HeadlessRenderer renderer(renderOptions);
-    const Scene scene =
-        sceneForSheet(sheet, view, float(size.width) / float(size.height), options->panel);
-    const RgbaImage image = renderer.render(scene);
+    const float aspect = float(renderOptions.width) / float(size.height);
+    Scene scene = sceneForSheet(sheet, view, aspect, options->panel);
+    RgbaImage image;
+    if (target) {
+      // One camera and one ground for both halves, so sizes and places compare.
+      Bounds both = worldBounds(sheet);
+      const Bounds targetBounds = worldBounds(*target);
+      both.add(targetBounds.min);
+      both.add(targetBounds.max);
+      Scene targetScene = sceneForSheet(*target, view, aspect, false);
+      for (Scene* each : {&scene, &targetScene}) {
+        const Light light = each->light;
+        each->camera = frameBounds(both, view, aspect);
+        each->ground = groundBelow(both);
+        each->light = light;
+      }
+      targetScene.creases.clear();  // a target's edges are no creases
+      targetScene.colors.front = targetScene.colors.back = {0.62f, 0.66f, 0.74f};
+      const RgbaImage design = renderer.render(scene);
+      const RgbaImage left = renderSceneOnce(renderer.context(), targetScene,
+                                             {renderOptions.width, renderOptions.height});
+      image = besideEachOther(left, design);
+    } else {
+      image = renderer.render(scene);
+    }
     checkValidation(renderer.context());
     writePng(options->png, image);
     statusFor({options->png}) << "wrote " << options->png << " (" << size.width << "x"
