@@ -270,34 +270,35 @@ void addRenderCommand(CLI::App& app) {
     if (!options->target.empty()) {
       if (options->panel)
         throw UsageError("--target: not with --crease-pattern-panel (the halves are views)");
+      if (size.width < 2)
+        throw UsageError("--size: a target beside the design needs a width of 2 or more");
       target = meshSheet(readObjMesh(options->target));
     }
+    // With a target, the design takes the right half and the target the left.
+    const std::uint32_t left = target ? size.width / 2 : 0;
     HeadlessOptions renderOptions;
-    renderOptions.width = target ? size.width / 2 : size.width;
+    renderOptions.width = size.width - left;
     renderOptions.height = size.height;
     HeadlessRenderer renderer(renderOptions);
     const float aspect = float(renderOptions.width) / float(size.height);
     Scene scene = sceneForSheet(sheet, view, aspect, options->panel);
     RgbaImage image;
     if (target) {
-      // One camera and one ground for both halves, so sizes and places compare.
+      // One framing and one ground for both halves, so sizes and places compare.
       Bounds both = worldBounds(sheet);
       const Bounds targetBounds = worldBounds(*target);
       both.add(targetBounds.min);
       both.add(targetBounds.max);
-      Scene targetScene = sceneForSheet(*target, view, aspect, false);
-      for (Scene* each : {&scene, &targetScene}) {
-        const Light light = each->light;
-        each->camera = frameBounds(both, view, aspect);
-        each->ground = groundBelow(both);
-        each->light = light;
-      }
+      const float leftAspect = float(left) / float(size.height);
+      Scene targetScene = sceneForSheet(*target, view, leftAspect, false);
+      scene.camera = frameBounds(both, view, aspect);
+      targetScene.camera = frameBounds(both, view, leftAspect);
+      scene.ground = targetScene.ground = groundBelow(both);
       targetScene.creases.clear();  // a target's edges are no creases
       targetScene.colors.front = targetScene.colors.back = {0.62f, 0.66f, 0.74f};
       const RgbaImage design = renderer.render(scene);
-      const RgbaImage left = renderSceneOnce(renderer.context(), targetScene,
-                                             {renderOptions.width, renderOptions.height});
-      image = besideEachOther(left, design);
+      image = besideEachOther(
+          renderSceneOnce(renderer.context(), targetScene, {left, size.height}), design);
     } else {
       image = renderer.render(scene);
     }

@@ -85,6 +85,38 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
   expectPictureOfAFoldedSheet(path("fold.png"), /*creases=*/true);
 }
 
+// Issue 27, 5: a target (grey) on the left half and the design (paper) on the right, one camera;
+// an odd width splits with the extra column on the design's side.
+TEST_F(RenderCli, RenderWithATargetPutsItBesideTheDesign) {
+  ASSERT_EQ(run("new cylinder -o " + path("tube.curvefold.json").string()).exitCode, 0);
+  const std::string target = (fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" /
+                              "tube_tucked.obj").string();
+  const CommandResult r = run("render " + path("tube.curvefold.json").string() + " --target " +
+                              target + " --png " + path("both.png").string() + " --size 321x160");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(pngSize(path("both.png")), std::make_pair(321u, 160u));
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(path("both.png").c_str(), &w, &h, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  // Paper is warm (red at least blue), the target cool (blue well above red); the background
+  // (219, 224, 232) is neither, and the ground's bluish lines lie below the upper 40%.
+  std::size_t paper[2] = {0, 0}, ghost[2] = {0, 0};
+  for (int y = 0; y < h * 2 / 5; ++y)
+    for (int x = 0; x < w; ++x) {
+      const unsigned char* p = pixels + (std::size_t(y) * w + x) * 4;
+      const int half = x < w / 2 ? 0 : 1;
+      if (std::abs(p[0] - 219) + std::abs(p[1] - 224) + std::abs(p[2] - 232) < 12) continue;
+      paper[half] += p[0] >= p[2] && p[0] > 120;
+      ghost[half] += p[2] > p[0] + 15 && p[2] < 215;
+    }
+  stbi_image_free(pixels);
+  EXPECT_GT(ghost[0], std::size_t(w * h / 50));
+  EXPECT_GT(paper[1], std::size_t(w * h / 50));
+  EXPECT_LT(paper[0], ghost[0] / 20);
+  EXPECT_LT(ghost[1], paper[1] / 20);
+
+}
+
 // `--png -` is standard output: the PNG alone, the report on stderr (issue 13, B5).
 TEST_F(RenderCli, RenderToStandardOutputIsThePngAlone) {
   const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
@@ -101,6 +133,14 @@ TEST_F(RenderCli, RenderRefusesBadInputWithOneLine) {
   expectFailure("render " + recording + png + " --size 0x0", "--size");
   expectFailure("render " + recording + png + " --size 640", "--size");
   expectFailure("render " + path("missing.curvefold.json").string() + png, "missing");
+  // A target beside it (issue 27): unreadable, with the crease pattern's panel, no room.
+  const std::string target =
+      (fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj").string();
+  expectFailure("render " + recording + png + " --target " + path("missing.obj").string(),
+                "missing.obj");
+  expectFailure("render " + recording + png + " --target " + target + " --crease-pattern-panel",
+                "--crease-pattern-panel");
+  expectFailure("render " + recording + png + " --target " + target + " --size 1x50", "--size");
 }
 
 TEST_F(RenderCli, WithoutAVulkanDriverFailsWithOneLineAndNoPng) {
