@@ -35,22 +35,21 @@ for recording in examples/recordings/*.jsonl examples/showcase/recordings/*.json
   build/app/curvefold render "$out/$name/$name.curvefold.json" --png "$out/$name/$name.png" \
     --size 1280x720 --view iso --crease-pattern-panel
 done
-# Designs fitted to target shapes (issue 27): each fit's progress, the design, its check, its
-# distance to the target, and a picture of the target (grey, left) beside the result.
-fitted() {  # NAME TARGET VIEW FIT-ARGUMENTS...
-  local name="$1" target="$2" view="$3" dir="$out/fitted-$1"
-  shift 3
+# Designs fitted to target shapes (issue 27, listed in examples/targets/fitted.txt): each fit's
+# progress, the design, its check, its distance to the target, and a picture of the target (grey,
+# left) beside the result.
+grep -v '^#' examples/targets/fitted.txt | while read -r name target view arguments; do
+  dir="$out/fitted-$name"
   mkdir -p "$dir"
-  build/app/curvefold fit "$target" "$@" --time 120 -o "$dir/$name.curvefold.json" >"$dir/fit.txt"
+  # shellcheck disable=SC2086 # the fit's arguments are words
+  build/app/curvefold fit "$target" $arguments --time 120 -o "$dir/$name.curvefold.json" \
+    >"$dir/fit.txt"
   build/app/curvefold check "$dir/$name.curvefold.json" >"$dir/check.txt" ||
     { cat "$dir/check.txt" >&2; exit 1; }
   build/app/curvefold distance "$dir/$name.curvefold.json" "$target" >"$dir/distance.txt"
   build/app/curvefold render "$dir/$name.curvefold.json" --target "$target" --view "$view" \
     --png "$dir/$name.png" --size 1280x640 >/dev/null
-}
-fitted lampshade examples/targets/lampshade.obj iso --from cone --top_radius 0.03 --folds 3
-fitted tube_tucked examples/targets/tube_tucked.obj iso --from cylinder --folds 4
-fitted saddle examples/targets/saddle.obj iso --from square --folds 6
+done
 # One showcase session as an animated picture: folding happens before a line is read.
 scripts/make-animation.sh examples/showcase/recordings/wave_chevrons.jsonl \
   "$out/wave_chevrons/wave_chevrons.gif"
