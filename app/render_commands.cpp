@@ -297,8 +297,8 @@ void addRenderCommand(CLI::App& app) {
       targetScene.creases.clear();  // a target's edges are no creases
       targetScene.colors.front = targetScene.colors.back = {0.62f, 0.66f, 0.74f};
       const RgbaImage design = renderer.render(scene);
-      image = besideEachOther(
-          renderSceneOnce(renderer.context(), targetScene, {left, size.height}), design);
+      image = besideEachOther(renderSceneOnce(renderer.context(), targetScene, {left, size.height}),
+                              design);
     } else {
       image = renderer.render(scene);
     }

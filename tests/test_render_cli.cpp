@@ -89,8 +89,8 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
 // an odd width splits with the extra column on the design's side.
 TEST_F(RenderCli, RenderWithATargetPutsItBesideTheDesign) {
   ASSERT_EQ(run("new cylinder -o " + path("tube.curvefold.json").string()).exitCode, 0);
-  const std::string target = (fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" /
-                              "tube_tucked.obj").string();
+  const std::string target =
+      (fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj").string();
   const CommandResult r = run("render " + path("tube.curvefold.json").string() + " --target " +
                               target + " --png " + path("both.png").string() + " --size 321x160");
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -114,7 +114,6 @@ TEST_F(RenderCli, RenderWithATargetPutsItBesideTheDesign) {
   EXPECT_GT(paper[1], std::size_t(w * h / 50));
   EXPECT_LT(paper[0], ghost[0] / 20);
   EXPECT_LT(ghost[1], paper[1] / 20);
-
 }
 
 // `--png -` is standard output: the PNG alone, the report on stderr (issue 13, B5).
