@@ -289,6 +289,31 @@ TEST_F(XrApp, AStudioSessionMakesAndExportsADesignFromThePanel) {
   EXPECT_EQ(json::parse(slurp(path("again") / "xr.curvefold.json"))["folds"], design["folds"]);
 }
 
+// Issue 27, 3: `xr --target` draws the target as a translucent ghost in both eyes (with the
+// validation layer on) and changes nothing of the design.
+TEST_F(XrApp, ATargetIsAGhostInBothEyes) {
+  const std::string input = kExamples + "star.jsonl";
+  replayed(input, "star");
+  // The target: the star's own folded form, as a plain mesh.
+  ASSERT_EQ(run("export " + (path("star") / "star.curvefold.json").string() + " --obj " +
+                path("star.obj").string())
+                .exitCode,
+            0);
+  auto session = [&](const std::string& name, const std::string& target) {
+    const CommandResult result =
+        run("xr " + input + " --validation --autosave " + path(name + ".curvefold.json").string() +
+                target,
+            simulated(input, "CURVEFOLD_SIM_VIEW_SIZE=240x240 CURVEFOLD_SIM_SAVE_VIEWS=" +
+                                 path(name).string()));
+    EXPECT_EQ(result.exitCode, 0) << result.err << result.out;
+  };
+  session("plain", "");
+  session("ghost", " --target " + path("star.obj").string());
+  EXPECT_EQ(load("ghost.curvefold.json")["folds"], load("plain.curvefold.json")["folds"]);
+  for (const char* view : {"view0.png", "view1.png"})
+    EXPECT_NE(slurp(path("ghost") / view), slurp(path("plain") / view)) << view;
+}
+
 TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {
   const std::string input = kExamples + "half_cylinder.jsonl";  // folds, undo and redo
   const json reference = replayed(input, "reference");
