@@ -13,10 +13,6 @@ namespace curvefold::cli {
 
 namespace {
 
-// The studio measures on fewer samples than `curvefold distance` (a tenth of a second at 10k
-// triangles, off the frame); the command line is the one to quote.
-constexpr std::size_t kStudioDistanceSamples = 5'000;
-
 // The triangles of `folded` (a fold of `before`, whose vertices it keeps by index and appends to)
 // that the fold moved: those with a kept vertex that moved. The rest lie where the sheet is, and
 // a preview drawn over them would only veil it.
@@ -143,13 +139,13 @@ void StudioTarget::poll(const Document& doc, InputFrame& frame) {
   const bool current = measured_ && measured_->session == doc.session.get() &&
                        measured_->revision == doc.session->designRevision();
   if (!current && !measuring_.valid()) {
-    measuring_ =
-        std::async(std::launch::async, [fitter = fitter_, mesh = meshOf(doc.session->fixed()),
-                                        session = static_cast<const void*>(doc.session.get()),
-                                        revision = doc.session->designRevision()] {
-          return Measured{revision, session,
-                          surfaceDistance(mesh, fitter->target(), kStudioDistanceSamples)};
-        });
+    measuring_ = std::async(std::launch::async, [fitter = fitter_,
+                                                 mesh = meshOf(doc.session->fixed()),
+                                                 session =
+                                                     static_cast<const void*>(doc.session.get()),
+                                                 revision = doc.session->designRevision()] {
+      return Measured{revision, session, surfaceDistance(mesh, fitter->target(), kDistanceSamples)};
+    });
   }
   measuredCurrent_ = current;
 }

@@ -31,6 +31,9 @@ class StudioTarget {
  public:
   // How many suggestions one request asks for (the panel's "Another" goes round them).
   static constexpr std::size_t kSuggestionsPerRequest = 3;
+  // The samples the panel's distance is measured on (a tenth of a second at 10k triangles, off
+  // the frame); `curvefold distance` takes more and is the one to quote.
+  static constexpr std::size_t kDistanceSamples = 5'000;
 
   // replaying: suggestions come from the frames (a replay's), and nothing is searched or measured.
   explicit StudioTarget(bool replaying = false);

@@ -367,6 +367,19 @@ TEST(StudioTarget, SuggestTakeAndTheRecordingReplaysToTheSameDesign) {
   testing::expectInvariants(doc.session->fixed(), doc.session->initial());
   const double after = surfaceDistance(meshOf(doc.session->fixed()), target).chamfer;
   EXPECT_LT(after, before);
+  // The panel's distance line follows the design (measured off the frame).
+  const std::string expected =
+      "Chamfer " + millimetresText(surfaceDistance(meshOf(doc.session->fixed()), target,
+                                                   StudioTarget::kDistanceSamples)
+                                       .chamfer);
+  for (int i = 0; i < 500 && studio.goal().distanceLine().find(expected) == std::string::npos;
+       ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    send();
+  }
+  EXPECT_NE(studio.goal().distanceLine().find(expected), std::string::npos)
+      << studio.goal().distanceLine() << " (expected " << expected << ")";
+  EXPECT_EQ(studio.goal().distanceLine().find("measuring"), std::string::npos);
 
   // Through the file's text, as `curvefold replay` reads it.
   std::string text = headerLine(header) + "\n";
