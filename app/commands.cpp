@@ -1,4 +1,5 @@
 #include "app/commands.hpp"
+#include "app/design_check.hpp"
 #include "app/document.hpp"
 
 #include <cmath>
@@ -64,14 +65,6 @@ std::string today() {
   char text[16];
   std::strftime(text, sizeof text, "%Y-%m-%d", &local);
   return text;
-}
-
-// The isometry tolerance for a design: 1e-9 of the size, or what an imported mesh brought with it
-// (an OBJ carries about 6 digits, so its sheet starts with edge errors near 1e-7 that folds keep
-// but never grow).
-double lengthTolerance(const Sheet& initial) {
-  const SheetReport report = measure(initial);
-  return std::max(1e-9 * report.size, 1.5 * report.maxEdgeLengthError);
 }
 
 }  // namespace
@@ -217,7 +210,7 @@ void addFoldCommand(CLI::App& app) {
       }
       ValidationOptions tolerance;
       tolerance.relativeLengthTolerance =
-          lengthTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
+          isometryTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
       validate(sheet, tolerance);
       saveDesign(design, options->output);
       storeCachedSheet(design, sheet);
@@ -328,90 +321,11 @@ void addCheckCommand(CLI::App& app) {
     const Design loaded = loadDesign(*design);
     const Sheet initial = initialSheet(loaded, *design);
     const Sheet sheet = buildSheet(loaded, *design);
-    const double tolerance = lengthTolerance(initial);
-    ValidationOptions options;
-    options.relativeLengthTolerance = tolerance / sheetSize(sheet);
-    const SheetReport now = measure(sheet, options);
-    const SheetReport before = measure(initial, options);
-    const EdgeTopology edges = buildEdgeTopology(sheet);
-    const std::vector<CreaseEdge> creases = creaseEdges(sheet, edges);
-    const std::vector<CreaseCurve> curves = creaseCurves(sheet, edges);
-
-    std::vector<std::string> failures;
-    auto line = [&](bool ok, const std::string& text) {
-      std::cout << (ok ? "  ok    " : "  FAIL  ") << text << "\n";
-      if (!ok) failures.push_back(text);
-    };
-    char buffer[256];
-    std::cout << *design << ": " << surfaceName(loaded) << ", " << loaded.folds.size() << " folds, "
-              << now.vertexCount << " vertices, " << now.triangleCount << " triangles\n";
-    std::snprintf(buffer, sizeof buffer,
-                  "isometry: max edge-length error %.3g m (%.3g of the size; limit %.3g m)",
-                  now.maxEdgeLengthError, now.maxEdgeLengthError / now.size, tolerance);
-    line(now.maxEdgeLengthError <= tolerance, buffer);
-    double worstPlanarity = 0.0;
-    for (const CreaseCurve& curve : curves)
-      worstPlanarity = std::max(worstPlanarity, curve.planarityError);
-    std::size_t mountains = 0, valleys = 0;
-    for (const CreaseEdge& crease : creases) {
-      mountains += crease.assignment == Assignment::Mountain;
-      valleys += crease.assignment == Assignment::Valley;
-    }
-    std::snprintf(buffer, sizeof buffer,
-                  "creases: %zu curves, %zu edges (%zu mountain, %zu valley); max planarity "
-                  "error %.3g m",
-                  curves.size(), creases.size(), mountains, valleys, worstPlanarity);
-    line(worstPlanarity <= 1e-9 * now.size, buffer);
-    for (std::size_t i = 0; i < curves.size(); ++i) {
-      std::snprintf(buffer, sizeof buffer, "crease %zu: %zu vertices%s, planarity error %.3g m",
-                    i + 1, curves[i].vertices.size(), curves[i].closed ? " (closed)" : "",
-                    curves[i].planarityError);
-      line(curves[i].planarityError <= 1e-9 * now.size, buffer);
-    }
-    line(now.eulerCharacteristic == before.eulerCharacteristic,
-         "Euler characteristic " + std::to_string(now.eulerCharacteristic) + " (initial " +
-             std::to_string(before.eulerCharacteristic) + ")");
-    line(now.boundaryLoopCount == before.boundaryLoopCount,
-         "boundary loops " + std::to_string(now.boundaryLoopCount) + " (initial " +
-             std::to_string(before.boundaryLoopCount) + ")");
-    line(now.componentCount == before.componentCount,
-         "components " + std::to_string(now.componentCount) + " (initial " +
-             std::to_string(before.componentCount) + ")");
-    line(now.manifold, now.manifold ? "manifold" : "not manifold");
-    // Folds never change the development, but a design may embed one that overlaps itself.
-    if (const std::optional<EdgeCrossing> crossing = findDevelopmentCrossing(sheet))
-      line(false, "development overlaps itself: edges (" + std::to_string(crossing->first.a) +
-                      ", " + std::to_string(crossing->first.b) + ") and (" +
-                      std::to_string(crossing->second.a) + ", " +
-                      std::to_string(crossing->second.b) + ") cross");
-    else
-      line(true, "development: no edges cross");
-    // Paper cannot pass through itself (issue 17); layers that only touch are contact.
-    const SelfIntersectionReport crossings = findSelfIntersections(sheet);
-    if (crossings.intersections.empty()) {
-      line(true, "self-intersection: none");
-    } else {
-      const auto [s, t] = crossings.intersections.front();
-      std::snprintf(buffer, sizeof buffer,
-                    "self-intersection: %zu triangle pairs (first: triangles %u and %u, at "
-                    "(%.6g, %.6g, %.6g))%s",
-                    crossings.intersections.size(), s.value, t.value, crossings.firstPoint.x,
-                    crossings.firstPoint.y, crossings.firstPoint.z,
-                    *allowSelfIntersection ? ", allowed" : "");
-      line(*allowSelfIntersection, buffer);
-    }
-    std::cout << "  ok    contact: " << crossings.contacts.size()
-              << " triangle pairs (layers that touch, allowed)\n";
-    line(now.consistentlyOriented && now.developmentCounterClockwise,
-         now.consistentlyOriented && now.developmentCounterClockwise
-             ? "consistently oriented (development counter-clockwise)"
-             : "orientation is inconsistent");
-    std::snprintf(buffer, sizeof buffer, "smallest triangle height %.3g of the size",
-                  now.minRelativeHeight);
-    line(now.minRelativeHeight >= options.relativeDegenerateHeight, buffer);
-    line(now.firstProblem.empty(),
-         now.firstProblem.empty() ? "validate: passed" : "validate: " + now.firstProblem);
-    if (!failures.empty()) throw std::runtime_error("check failed: " + failures.front());
+    const DesignCheck check = checkDesign(loaded, *design, initial, sheet, *allowSelfIntersection);
+    std::cout << check.summary << "\n";
+    for (const CheckLine& line : check.lines)
+      std::cout << (line.ok ? "  ok    " : "  FAIL  ") << line.text << "\n";
+    if (!check.passed()) throw std::runtime_error("check failed: " + check.firstFailure());
   });
 }
 

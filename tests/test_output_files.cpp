@@ -119,6 +119,25 @@ TEST_F(OutputFiles, AFailingOutputLeavesEveryOtherAsItWas) {
   EXPECT_EQ(entries(), std::vector<std::string>{"a.svg"});  // nothing staged is left
 }
 
+// Issue 29, 2: an output that names a folder fails before any other is replaced (staging it
+// worked: only the rename would fail, after the outputs before it were renamed).
+TEST_F(OutputFiles, AnOutputThatIsAFolderLeavesEveryOtherAsItWas) {
+  put(dir() / "a.svg", "old svg");
+  fs::create_directory(dir() / "adir");
+  OutputSet outputs;
+  outputs.add(dir() / "a.svg", [](const fs::path& at) { writeFileAtomically(at, "new svg"); });
+  outputs.add(dir() / "adir", [](const fs::path& at) { writeFileAtomically(at, "new obj"); });
+  try {
+    outputs.write();
+    ADD_FAILURE() << "a write onto a folder succeeded";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("adir"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(contentOf(dir() / "a.svg"), "old svg");
+  EXPECT_TRUE(fs::is_directory(dir() / "adir"));
+  EXPECT_EQ(entries(), (std::vector<std::string>{"a.svg", "adir"}));
+}
+
 TEST_F(OutputFiles, StaleTemporariesOfTheTargetAreRemoved) {
   const std::string dead = std::to_string(deadProcessId());
   const std::string alive = std::to_string(::getpid());

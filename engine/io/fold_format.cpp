@@ -70,9 +70,12 @@ json foldJson(const Sheet& sheet) {
 
 }  // namespace
 
+std::string foldText(const Sheet& sheet) {
+  return foldJson(sheet).dump() + '\n';
+}
+
 void writeFold(const Sheet& sheet, const std::filesystem::path& path) {
-  const json document = foldJson(sheet);
-  writeFileAtomically(path, [&](std::ostream& out) { out << document.dump() << '\n'; });
+  writeFileAtomically(path, foldText(sheet));
 }
 
 }  // namespace curvefold

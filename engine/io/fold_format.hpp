@@ -4,10 +4,14 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "engine/geometry/sheet.hpp"
 
 namespace curvefold {
+
+// The FOLD file's text (one line of JSON and a newline), as writeFold writes it.
+std::string foldText(const Sheet& sheet);
 
 // Writes the sheet as a FOLD file, atomically. Throws FileError when the file cannot be written.
 void writeFold(const Sheet& sheet, const std::filesystem::path& path);

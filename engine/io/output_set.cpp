@@ -69,6 +69,9 @@ void OutputSet::write(const fs::path& folder) {
     }
   };
   try {
+    // A target that cannot be written (a folder, a folder missing) is found before any target is
+    // replaced: otherwise the renames below would commit the outputs before it.
+    checkWritable();
     for (const Output& output : outputs_) {
       const fs::path target = resolveOutputPath(output.path);
       if (writesInPlace(target)) {

@@ -23,8 +23,10 @@ class OutputSet {
   // disk).
   void checkWritable() const;
 
-  // Creates `folder` first when it is given and missing (and removes it again on failure). Throws
-  // FileError naming the target, never the staging name; on failure no target has changed.
+  // Creates `folder` first when it is given and missing (and removes it again on failure), checks
+  // every target (checkWritable), writes each to its staging name, then renames them all. Throws
+  // FileError naming the target, never the staging name; on failure no target has changed (but
+  // for a device written in place, which goes last).
   void write(const std::filesystem::path& folder = {});
 
  private:

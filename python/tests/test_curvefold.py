@@ -1,0 +1,244 @@
+"""The Python module (issue 30): every call, bad input included, against the command line."""
+
+import json
+import os
+import subprocess
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import curvefold
+
+CLI = os.environ.get("CURVEFOLD_BINARY", "build/app/curvefold")
+SOURCE = Path(os.environ.get("CURVEFOLD_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+RECORDINGS = SOURCE / "examples" / "recordings"
+
+
+def cli(*arguments, cwd=None):
+    return subprocess.run([CLI, *map(str, arguments)], cwd=cwd, capture_output=True, text=True,
+                          check=True)
+
+
+def folded_cylinder():
+    design = curvefold.Design.new("cylinder", radius=0.05, resolution=60)
+    design.fold(grab=(0.05, 0.1, 0.0), to=(0.03, 0.07, 0.02))
+    return design
+
+
+def test_surfaces_lists_the_catalogue_with_ranges_and_symmetries():
+    surfaces = curvefold.surfaces()
+    assert list(surfaces)[:4] == ["square", "rectangle", "disk", "star"]
+    radius = surfaces["cylinder"]["parameters"]["radius"]
+    assert radius["min"] < radius["default"] < radius["max"]
+    assert surfaces["cylinder"]["parameters"]["resolution"]["integer"] is True
+    assert "rotational:12:y" in surfaces["cylinder"]["symmetries"]
+
+
+def test_a_design_made_in_python_is_byte_identical_to_the_command_lines(tmp_path):
+    made = folded_cylinder()
+    made.save(tmp_path / "python.curvefold.json")
+    cli("new", "cylinder", "--radius", "0.05", "--resolution", "60", "-o", tmp_path / "cli.curvefold.json")
+    cli("fold", tmp_path / "cli.curvefold.json", "--vertex-near", "0.05,0.1,0", "--to", "0.03,0.07,0.02",
+        "-o", tmp_path / "cli.curvefold.json")
+    assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
+
+
+def test_a_symmetric_fold_brings_its_images_as_the_command_line_does(tmp_path):
+    design = curvefold.Design.new("cylinder", symmetry="rotational:4:y")
+    assert design.symmetry == "rotational:4:y"
+    result = design.fold(grab=(0.045, 0.1, 0.0), to=(0.03, 0.08, 0.0))
+    assert result.folded and result.images == 3
+    assert "overlap" in result.notes
+    assert [fold["group"] for fold in design.folds] == [1, 1, 1, 1]
+    design.save(tmp_path / "python.curvefold.json")
+    cli("new", "cylinder", "--symmetry", "rotational:4:y", "-o", tmp_path / "cli.curvefold.json")
+    cli("fold", tmp_path / "cli.curvefold.json", "--vertex-near", "0.045,0.1,0", "--to", "0.03,0.08,0",
+        "-o", tmp_path / "cli.curvefold.json")
+    assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
+    assert design.undo() and design.folds == []  # the group at once
+
+
+def test_fold_undo_redo_and_the_folds():
+    design = folded_cylinder()
+    (fold,) = design.folds
+    assert fold["group"] == 0
+    assert np.isclose(np.linalg.norm(fold["plane_normal"]), 1.0)
+    assert np.allclose(fold["target"], (0.03, 0.07, 0.02))
+    before = design.vertices.copy()
+    assert design.undo() is True
+    assert design.folds == [] and design.undo() is False
+    assert design.redo() is True and design.redo() is False
+    assert np.array_equal(design.vertices, before)
+    # A drop point on the grabbed point folds nothing.
+    result = design.fold(grab=(0.0, 0.0, 0.05), to=(0.0, 0.0, 0.05))
+    assert result.folded is False and len(design.folds) == 1
+
+
+def test_the_meshes_are_read_only_arrays_shared_without_copies():
+    design = folded_cylinder()
+    vertices, triangles, development = design.vertices, design.triangles, design.development
+    assert vertices.dtype == np.float64 and vertices.shape[1] == 3
+    assert triangles.dtype == np.uint32 and triangles.shape[1] == 3
+    assert development.shape == (vertices.shape[0], 2)
+    assert triangles.max() < vertices.shape[0]
+    assert not vertices.flags.writeable
+    with pytest.raises(ValueError):
+        vertices[0, 0] = 1.0
+    assert np.shares_memory(vertices, design.vertices)  # no copy per access
+    kept = vertices.copy()
+    design.fold(grab=(-0.05, -0.1, 0.0), to=(-0.03, -0.07, 0.02))
+    assert np.array_equal(vertices, kept)  # an array handed out stays valid and unchanged
+    assert design.vertices.shape[0] > vertices.shape[0]
+    # Isometric: every edge as long folded as flat.
+    a, b = triangles[:, 0], triangles[:, 1]
+    lengths3 = np.linalg.norm(vertices[a] - vertices[b], axis=1)
+    lengths2 = np.linalg.norm(development[a] - development[b], axis=1)
+    assert np.max(np.abs(lengths3 - lengths2)) < 1e-9
+
+
+def test_creases_carry_assignments_and_angles():
+    creases = folded_cylinder().creases()
+    count = len(creases["assignment"])
+    assert count > 10
+    assert creases["edges"].shape == (count, 2) and creases["angles"].shape == (count,)
+    assert set(creases["assignment"]) <= {"M", "V"}
+    assert np.all(np.abs(creases["angles"]) > 0)
+
+
+def test_check_returns_the_command_lines_invariants(tmp_path):
+    design = folded_cylinder()
+    result = design.check()
+    assert result["passed"] and result["failures"] == []
+    assert result["self_intersections"] == 0
+    assert result["max_edge_length_error"] <= result["length_tolerance"]
+    design.save(tmp_path / "a.curvefold.json")
+    printed = cli("check", tmp_path / "a.curvefold.json").stdout.splitlines()
+    assert [("  ok    " if ok else "  FAIL  ") + text for ok, text in result["lines"]] == printed[1:]
+    # A fold that passes the paper through itself fails, unless allowed.
+    crossing = curvefold.replay(str(RECORDINGS / "cone.jsonl")).check()
+    assert not crossing["passed"] and crossing["self_intersections"] > 0
+    assert crossing["failures"][0].startswith("self-intersection")
+    assert curvefold.replay(str(RECORDINGS / "cone.jsonl")).check(allow_self_intersection=True)["passed"]
+
+
+def test_to_fold_is_the_fold_files_content(tmp_path):
+    design = folded_cylinder()
+    design.save(tmp_path / "a.curvefold.json")
+    cli("export", tmp_path / "a.curvefold.json", "--fold", tmp_path / "a.fold")
+    assert design.to_fold() == json.loads((tmp_path / "a.fold").read_text())
+    assert design.to_fold()["edges_assignment"].count("M") > 0
+
+
+def test_export_writes_every_format_or_none(tmp_path):
+    design = folded_cylinder()
+    names = {key: tmp_path / f"a.{suffix}" for key, suffix in
+             [("fold", "fold"), ("svg", "svg"), ("obj", "obj"), ("gltf", "glb"), ("pdf", "pdf"),
+              ("cut_svg", "cut.svg")]}
+    design.export(**{key: str(path) for key, path in names.items()}, perforate=(3, 1.5), paper="letter")
+    for path in names.values():
+        assert path.stat().st_size > 100, path
+    assert (tmp_path / "a.pdf").read_bytes().startswith(b"%PDF")
+    # One output that cannot be written: nothing is replaced.
+    (tmp_path / "dir.obj").mkdir()
+    before = names["svg"].read_bytes()
+    design.undo()
+    with pytest.raises(OSError):
+        design.export(svg=str(names["svg"]), obj=str(tmp_path / "dir.obj"))
+    assert names["svg"].read_bytes() == before
+    with pytest.raises(ValueError, match="name at least one"):
+        design.export()
+    with pytest.raises(ValueError, match="paper"):
+        design.export(pdf=str(tmp_path / "b.pdf"), paper="a9")
+    with pytest.raises(ValueError, match="perforate"):
+        design.export(cut_svg=str(tmp_path / "b.svg"), perforate=(0, 1))
+    assert not (tmp_path / "b.pdf").exists() and not (tmp_path / "b.svg").exists()
+
+
+def test_render_is_an_rgba_image_of_the_design():
+    image = folded_cylinder().render(160, 120, view="front")
+    assert image.shape == (120, 160, 4) and image.dtype == np.uint8
+    background = image[0, 0, :3].astype(int)
+    differs = np.abs(image[:, :, :3].astype(int) - background).sum(axis=2) > 30
+    assert differs.mean() > 0.05  # the sheet covers a good part of it
+    with pytest.raises(ValueError, match="unknown view"):
+        folded_cylinder().render(10, 10, view="sideways")
+
+
+def test_replay_makes_the_recordings_design(tmp_path):
+    design = curvefold.replay(str(RECORDINGS / "star.jsonl"))
+    cli("replay", RECORDINGS / "star.jsonl", "--out", tmp_path / "star")
+    design.save(tmp_path / "python.curvefold.json")
+    assert (tmp_path / "python.curvefold.json").read_bytes() == \
+        (tmp_path / "star" / "star.curvefold.json").read_bytes()
+
+
+def test_load_and_from_obj(tmp_path):
+    design = folded_cylinder()
+    design.save(tmp_path / "a.curvefold.json")
+    loaded = curvefold.Design.load(str(tmp_path / "a.curvefold.json"))
+    assert loaded.folds == design.folds and loaded.surface == "cylinder"
+    assert loaded.undo()  # the loaded folds can be undone
+    design.export(obj=str(tmp_path / "a.obj"))
+    from_path = curvefold.Design.from_obj(tmp_path / "a.obj")
+    assert from_path.surface == "embedded mesh"
+    assert from_path.vertices.shape[0] > 0
+    # Arrays: a flat square of two triangles, with and without its development.
+    vertices = np.array([[0, 0, 0], [0.1, 0, 0], [0.1, 0.1, 0], [0, 0.1, 0]], dtype=float)
+    triangles = np.array([[0, 1, 2], [0, 2, 3]])
+    square = curvefold.Design.from_obj(vertices, triangles=triangles)
+    assert square.triangles.shape == (2, 3)
+    assert curvefold.Design.from_obj(vertices, triangles=triangles,
+                                     development=vertices[:, :2]).check()["passed"]
+
+
+def test_bad_input_is_a_value_error_with_the_one_line_message(tmp_path):
+    with pytest.raises(ValueError, match="parameter 'radius'"):
+        curvefold.Design.new("cylinder", radius=-1)
+    with pytest.raises(ValueError, match="unknown surface 'teapot'"):
+        curvefold.Design.new("teapot")
+    with pytest.raises(ValueError, match="no parameter 'points'"):
+        curvefold.Design.new("cylinder", points=5)
+    with pytest.raises(ValueError, match="rotational:7"):
+        curvefold.Design.new("cylinder", symmetry="rotational:7:x")
+    with pytest.raises(ValueError, match="grab"):
+        folded_cylinder().fold(grab=(0, 0), to=(0, 0, 0))
+    with pytest.raises(OSError, match="cannot read"):
+        curvefold.Design.load(str(tmp_path / "missing.curvefold.json"))
+    (tmp_path / "bad.curvefold.json").write_text("{not json")
+    with pytest.raises(ValueError, match="bad.curvefold.json"):
+        curvefold.Design.load(str(tmp_path / "bad.curvefold.json"))
+    (tmp_path / "bad.obj").write_text("v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    with pytest.raises(ValueError, match="bad.obj"):
+        curvefold.Design.from_obj(str(tmp_path / "bad.obj"))
+    with pytest.raises(ValueError, match="names a vertex"):
+        curvefold.Design.from_obj(np.zeros((3, 3)), triangles=np.array([[0, 1, 7]]))
+    with pytest.raises(ValueError, match="bad.jsonl"):
+        (tmp_path / "bad.jsonl").write_text("nothing\n")
+        curvefold.replay(str(tmp_path / "bad.jsonl"))
+    with pytest.raises(OSError):
+        folded_cylinder().save(str(tmp_path / "no" / "such" / "folder" / "a.curvefold.json"))
+
+
+def test_a_long_fold_lets_other_python_threads_run():
+    design = curvefold.Design.new("cylinder", resolution=600)  # about 700k triangles
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    ticker = threading.Thread(target=tick)
+    ticker.start()
+    start = time.perf_counter()
+    design.fold(grab=(0.045, 0.1, 0.0), to=(0.03, 0.07, 0.02))
+    end = time.perf_counter()
+    stop.set()
+    ticker.join()
+    during = [t for t in ticks if start < t < end]
+    assert end - start > 0.05
+    assert len(during) > 5  # the GIL was released while the engine folded
