@@ -27,6 +27,10 @@ packages=(
   procps
   # OpenXR: the Khronos loader and headers (the simulated runtime in sim_input/ serves tests)
   libopenxr-dev libopenxr-loader1
+  # the Python module (python/): pybind11, numpy, pytest; a virtual environment and setuptools
+  # for `pip install .`
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-setuptools
+  python3-pip
 )
 
 missing=()

@@ -3,6 +3,7 @@
 import json
 import os
 import subprocess
+import sys
 import threading
 import time
 from pathlib import Path
@@ -242,3 +243,22 @@ def test_a_long_fold_lets_other_python_threads_run():
     during = [t for t in ticks if start < t < end]
     assert end - start > 0.05
     assert len(during) > 5  # the GIL was released while the engine folded
+
+
+EXAMPLES = SOURCE / "python" / "examples"
+
+
+def run_example(name, tmp_path, *arguments):
+    environment = dict(os.environ, MPLBACKEND="Agg")
+    return subprocess.run([sys.executable, str(EXAMPLES / name), *map(str, arguments)], cwd=tmp_path,
+                          env=environment, capture_output=True, text=True, check=True).stdout
+
+
+def test_the_examples_run(tmp_path):
+    table = run_example("cone_sweep.py", tmp_path).splitlines()
+    assert len(table) == 10 and all(row.endswith("ok") for row in table[1:])
+    run_example("symmetric_pdf.py", tmp_path, tmp_path / "crown.pdf")
+    assert (tmp_path / "crown.pdf").read_bytes().startswith(b"%PDF")
+    shown = run_example("show_design.py", tmp_path, RECORDINGS / "star.jsonl")
+    if "wrote design.png" in shown:
+        assert (tmp_path / "design.png").read_bytes().startswith(b"\x89PNG")
