@@ -51,9 +51,11 @@ glm::dvec3 parsePoint(const std::string& text, const std::string& option) {
   return p;
 }
 
+// Six digits; a coordinate below a nanometre is rounding (a cosine's 3.06e-18) and printed as 0.
 std::string formatPoint(const glm::dvec3& p) {
+  auto shown = [](double x) { return std::abs(x) < 1e-9 ? 0.0 : x; };
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "%.6g,%.6g,%.6g", p.x, p.y, p.z);
+  std::snprintf(buffer, sizeof buffer, "%.6g,%.6g,%.6g", shown(p.x), shown(p.y), shown(p.z));
   return buffer;
 }
 
@@ -218,6 +220,10 @@ void addFoldCommand(CLI::App& app) {
           << "fold " << number << images << ": grabbed " << formatPoint(grabbed) << " -> "
           << formatPoint(to) << ", " << sheet.triangleCount() << " triangles; wrote "
           << options->output << "\n";
+      // Paper cannot pass through itself: say so now, not first at `check`.
+      if (const std::size_t pairs = findSelfIntersections(sheet).intersections.size(); pairs > 0)
+        std::cerr << "curvefold: warning: fold " << number << " passes the sheet through itself ("
+                  << pairs << " triangle pairs; `check` fails it)\n";
     } else {
       saveDesign(design, options->output);
       statusFor({options->output})

@@ -54,13 +54,13 @@ glm::dvec3 point3(const std::vector<double>& p, const char* what) {
 
 // What one fold did.
 struct FoldResult {
-  bool folded = false;                // false: the drop point lay within the shortest drag
-  std::vector<double> grabbed;        // the surface point grabbed (x, y, z)
-  std::vector<double> planePoint;     // the reflection plane
+  bool folded = false;             // false: the drop point lay within the shortest drag
+  std::vector<double> grabbed;     // the surface point grabbed (x, y, z)
+  std::vector<double> planePoint;  // the reflection plane
   std::vector<double> planeNormal;
-  std::size_t triangles = 0;          // after the fold
-  std::size_t images = 0;             // symmetric images made with it
-  std::string notes;                  // images skipped or overlapping, as the command says
+  std::size_t triangles = 0;  // after the fold
+  std::size_t images = 0;     // symmetric images made with it
+  std::string notes;          // images skipped or overlapping, as the command says
 };
 
 // A design and the fold session over it.
@@ -76,7 +76,8 @@ class PyDesign {
 
   Design design() const {
     const auto& history = session_->folds();
-    return Design{surface_, {history.begin(), history.begin() + std::ptrdiff_t(session_->foldCount())},
+    return Design{surface_,
+                  {history.begin(), history.begin() + std::ptrdiff_t(session_->foldCount())},
                   symmetry_};
   }
   const std::string& name() const { return name_; }
@@ -180,7 +181,8 @@ PyDesign newDesign(const std::string& surface, const std::optional<std::string>&
 }
 
 // An OBJ surface from a path, or from arrays through the same reader (written as OBJ text).
-PyDesign designFromObj(const py::object& source, const std::optional<py::array_t<double>>& triangles,
+PyDesign designFromObj(const py::object& source,
+                       const std::optional<py::array_t<double>>& triangles,
                        const std::optional<py::array_t<double>>& development) {
   if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
     const std::string path =
@@ -188,7 +190,8 @@ PyDesign designFromObj(const py::object& source, const std::optional<py::array_t
     return PyDesign(Design{readObjSurface(path), {}}, path);
   }
   if (!triangles) throw std::invalid_argument("from_obj: arrays need triangles=(m, 3)");
-  const auto vertices = py::cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(source);
+  const auto vertices =
+      py::cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(source);
   const auto faces =
       py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*triangles);
   if (vertices.ndim() != 2 || vertices.shape(1) != 3)
@@ -201,7 +204,8 @@ PyDesign designFromObj(const py::object& source, const std::optional<py::array_t
   for (py::ssize_t i = 0; i < v.shape(0); ++i)
     obj << "v " << v(i, 0) << ' ' << v(i, 1) << ' ' << v(i, 2) << '\n';
   if (development) {
-    const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*development);
+    const auto d =
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*development);
     if (!d || d.ndim() != 2 || d.shape(1) != 2 || d.shape(0) != v.shape(0))
       throw std::invalid_argument("from_obj: development must be an (n, 2) array, one per vertex");
     const auto u = d.unchecked<2>();
@@ -268,7 +272,8 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
   if (perforate) {
     if (!(perforate->first > 0.0) || !(perforate->second > 0.0) ||
         !std::isfinite(perforate->first) || !std::isfinite(perforate->second))
-      throw std::invalid_argument("export: perforate expects (cut, gap) in millimetres, both positive");
+      throw std::invalid_argument(
+          "export: perforate expects (cut, gap) in millimetres, both positive");
     perforation = Perforation{perforate->first, perforate->second};
   }
   const std::shared_ptr<const Sheet> sheet = design.snapshot();
@@ -277,15 +282,16 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
   print.paper = *paperSize;
   print.angles = angles;
   print.title = design.name();
-  print.facts = {"surface: " + cli::surfaceName(whole) +
-                     (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
-                 "folds: " + std::to_string(whole.folds.size())};
+  print.facts = {
+      "surface: " + cli::surfaceName(whole) + (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
+      "folds: " + std::to_string(whole.folds.size())};
   py::gil_scoped_release release;
   // All named files or none, as `curvefold export` writes them.
   OutputSet outputs;
   if (fold) outputs.add(*fold, [&](const auto& at) { writeFold(*sheet, at); });
   if (svg) outputs.add(*svg, [&](const auto& at) { writeSvgCreasePattern(*sheet, at); });
-  if (cutSvg) outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
+  if (cutSvg)
+    outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
   if (pdf) outputs.add(*pdf, [&](const auto& at) { writeCreasePatternPdf(*sheet, at, print); });
   if (obj) outputs.add(*obj, [&](const auto& at) { writeObj(*sheet, at); });
   if (gltf) outputs.add(*gltf, [&](const auto& at) { writeGlb(*sheet, at); });
@@ -297,8 +303,8 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
                                        bool creasePattern) {
   const std::optional<ViewPreset> preset = parseViewPreset(view);
   if (!preset)
-    throw std::invalid_argument("render: unknown view '" + view + "' (known: " +
-                                std::string(kViewPresetNames) + ")");
+    throw std::invalid_argument("render: unknown view '" + view +
+                                "' (known: " + std::string(kViewPresetNames) + ")");
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::invalid_argument("render: width and height must lie in 1 to 16384");
   const std::shared_ptr<const Sheet> sheet = design.snapshot();
@@ -347,7 +353,8 @@ py::list foldsOf(const PyDesign& design) {
   for (const FoldRecord& fold : whole.folds) {
     py::dict item;
     item["seed"] = py::make_tuple(fold.seed.x, fold.seed.y);
-    item["plane_point"] = py::make_tuple(fold.plane.point.x, fold.plane.point.y, fold.plane.point.z);
+    item["plane_point"] =
+        py::make_tuple(fold.plane.point.x, fold.plane.point.y, fold.plane.point.z);
     item["plane_normal"] =
         py::make_tuple(fold.plane.normal.x, fold.plane.normal.y, fold.plane.normal.z);
     item["grabbed"] = py::make_tuple(fold.grabbed.x, fold.grabbed.y, fold.grabbed.z);
@@ -399,8 +406,8 @@ PYBIND11_MODULE(_curvefold, m) {
                     "Why some images were skipped or are not exactly symmetric ('' when none)")
       .def("__repr__", [](const FoldResult& r) {
         return "FoldResult(folded=" + std::string(r.folded ? "True" : "False") +
-               ", triangles=" + std::to_string(r.triangles) + ", images=" +
-               std::to_string(r.images) + ")";
+               ", triangles=" + std::to_string(r.triangles) +
+               ", images=" + std::to_string(r.images) + ")";
       });
 
   py::class_<PyDesign>(m, "Design", "A design: an initial surface, its folds and a symmetry.")
@@ -501,8 +508,8 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("pdf") = py::none(), py::arg("cut_svg") = py::none(),
            py::arg("perforate") = py::none(), py::arg("paper") = "a4", py::arg("angles") = false,
            "Writes the named files, all or none (as `curvefold export`)")
-      .def("render", &renderDesign, py::arg("width") = 800, py::arg("height") = 600,
-           py::kw_only(), py::arg("view") = "iso", py::arg("crease_pattern") = false,
+      .def("render", &renderDesign, py::arg("width") = 800, py::arg("height") = 600, py::kw_only(),
+           py::arg("view") = "iso", py::arg("crease_pattern") = false,
            "The folded form as an (height, width, 4) uint8 RGBA image (headless Vulkan)")
       .def("__repr__", [](const PyDesign& d) {
         return "<curvefold.Design " + cli::surfaceName(d.design()) + ", " +

@@ -4,6 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
-cmake --preset asan >/dev/null
+werror=()
+[ "${CI:-}" = "true" ] && werror=(-DCURVEFOLD_WERROR=ON)  # as scripts/build.sh
+cmake --preset asan "${werror[@]}" >/dev/null
 cmake --build --preset asan -j"${CURVEFOLD_JOBS:-2}"
 ctest --preset asan -j"${CURVEFOLD_JOBS:-2}"

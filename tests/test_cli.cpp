@@ -54,8 +54,14 @@ TEST_F(Cli, NewFoldExportCheck) {
   CommandResult r =
       run("fold " + design + " --vertex-near 0.05,0.1,0 --to 0.02,0.06,0.05 -o " + folded);
   ASSERT_EQ(r.exitCode, 0) << r.err;
+  // Issue 31: a coordinate that is rounding (a cosine's 3e-18) prints as 0.
+  EXPECT_EQ(r.out.find("e-1"), std::string::npos) << r.out;
+  std::string warnings = r.err;
   r = run("fold " + folded + " --vertex-near -0.05,-0.1,0 --to -0.02,-0.05,0.06 -o " + folded);
   ASSERT_EQ(r.exitCode, 0) << r.err;
+  // Issue 31: a fold that passes the sheet through itself says so at once.
+  warnings += r.err;
+  EXPECT_NE(warnings.find("passes the sheet through itself"), std::string::npos) << warnings;
   const nlohmann::json json = nlohmann::json::parse(slurp(folded));
   EXPECT_EQ(json["folds"].size(), 2u);
 

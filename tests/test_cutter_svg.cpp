@@ -70,7 +70,9 @@ TEST(CutterSvg, PerforationsHaveTheirLengths) {
     for (std::size_t i = 0; i < dashes.size(); ++i) {
       ASSERT_EQ(dashes[i].size(), 2u);
       EXPECT_NEAR(length(dashes[i]), i + 1 < dashes.size() ? 3.0 : 1.0, 1e-9) << i;
-      if (i > 0) EXPECT_NEAR(glm::distance(dashes[i - 1][1], dashes[i][0]), 1.5, 1e-9) << i;
+      if (i > 0) {
+        EXPECT_NEAR(glm::distance(dashes[i - 1][1], dashes[i][0]), 1.5, 1e-9) << i;
+      }
     }
   }
   EXPECT_THROW(cutterLayers(foldedRectangle(), Perforation{0.0, 1.0}), std::invalid_argument);

@@ -185,7 +185,7 @@ TEST_F(Render, AnSrgbTargetShowsWhatAUnormTargetShows) {
                            glm::vec4(scene.markers.back().position, 1.0f);
   const auto mx = std::uint32_t((marker.x / marker.w * 0.5f + 0.5f) * kSize),
              my = std::uint32_t((marker.y / marker.w * 0.5f + 0.5f) * kSize);
-  for (const auto [x, y] : {std::pair{1u, 1u}, std::pair{kSize / 2, kSize / 2}, std::pair{mx, my}})
+  for (const auto& [x, y] : {std::pair{1u, 1u}, std::pair{kSize / 2, kSize / 2}, std::pair{mx, my}})
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(int(unorm.at(x, y)[c]), int(linear.at(x, y)[c]), 1) << x << "," << y << ":" << c;
   // Thin anti-aliased lines blend on linear values: a few pixels differ by more.

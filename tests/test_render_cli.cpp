@@ -52,7 +52,9 @@ void expectPictureOfAFoldedSheet(const fs::path& file, bool creases) {
   }
   stbi_image_free(pixels);
   EXPECT_GT(sheet, std::size_t(w) * h / 50) << file;
-  if (creases) EXPECT_GT(crease, 5u) << file;
+  if (creases) {
+    EXPECT_GT(crease, 5u) << file;
+  }
 }
 
 class RenderCli : public curvefold::testing::CliTest {

@@ -743,7 +743,9 @@ TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
     InputFrame f;
     f.time = t;
     f.sheetHand.tracked = true;
-    f.pointHand = {at, true, select};
+    f.pointHand.position = at;
+    f.pointHand.tracked = true;
+    f.pointHand.select = select;
     recording.frames.push_back(f);
   };
   frame(0.0, grab, 0.0);

@@ -170,7 +170,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
     try {
       saveRecentDesigns(recent);
     } catch (const std::exception& e) {
-      std::cerr << "\ncurvefold: warning: recent designs not kept: " << e.what() << std::flush;
+      std::cerr << "curvefold: warning: recent designs not kept: " << e.what() << std::endl;
     }
   };
   studio_ = std::make_unique<HeadsetStudio>(doc_, std::move(options), std::move(host));
@@ -216,7 +216,7 @@ void XrApp::processInput(XrTime displayTime) {
   input_->applyHaptics(doc_.core->haptics(), handedness);
   outputs_->frame(input, doc_.core->events());
   for (const std::string& problem : outputs_->takeNewProblems())
-    std::cerr << "\ncurvefold: warning: " << problem << std::flush;
+    std::cerr << "curvefold: warning: " << problem << std::endl;
 }
 
 // The file is made with the first focused frame, so a session that never starts leaves none, the

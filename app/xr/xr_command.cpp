@@ -45,9 +45,9 @@ void runXr(const XrAppOptions& options) {
   XrApp app(options);
   InterruptGuard guard;
   std::cout << "xr: running on " << (options.headless ? "a headless session of " : "")
-            << "the OpenXR runtime \"" << app.runtimeName() << "\"" << std::flush;
+            << "the OpenXR runtime \"" << app.runtimeName() << "\"" << std::endl;
   const XrAppSummary summary = app.run(interrupted);
-  std::cout << "\nxr: " << summary.framesProcessed << " input frames, " << summary.framesRendered
+  std::cout << "xr: " << summary.framesProcessed << " input frames, " << summary.framesRendered
             << " frames drawn, " << summary.sessions << " session(s), " << summary.folds
             << " folds; design saved to " << summary.autosave << "\n";
   std::cout << "xr: session states:";

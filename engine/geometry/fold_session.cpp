@@ -124,8 +124,9 @@ const ReflectionChanges& FoldSession::updateDrag(const glm::dvec3& target) {
     preview_ = temporal_;
     previewReflected_ = workspace_.reflectedTriangles(fixedAdjacency_);
     try {
-      previewFolder_->previewImages(
-          fixed_, preview_, FoldRecord{grabSeed_, plane_, grabbed_, target_}, previewReflected_);
+      previewFolder_->previewImages(fixed_, preview_,
+                                    FoldRecord{grabSeed_, plane_, grabbed_, target_, 0, {}},
+                                    previewReflected_);
       previewing_ = true;
     } catch (const InvalidSheet&) {
       previewing_ = false;  // an image this sheet cannot make: the commit will say
@@ -176,7 +177,7 @@ bool FoldSession::commit() {
   // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
   if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
     keyframes_.resize(applied_ / kKeyframeInterval + 1);
-  history_.push_back({grabSeed_, plane_, grabbed_, target_});
+  history_.push_back({grabSeed_, plane_, grabbed_, target_, 0, {}});
   ++applied_;
   ++designRevision_;
   lastSkipped_ = lastOverlapping_ = 0;
