@@ -324,29 +324,6 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
                                    image->pixels.data(), base);
 }
 
-py::dict checkResult(const DesignCheck& check) {
-  py::dict result;
-  result["passed"] = check.passed();
-  result["summary"] = check.summary;
-  py::list lines;
-  for (const cli::CheckLine& line : check.lines) lines.append(py::make_tuple(line.ok, line.text));
-  result["lines"] = lines;
-  result["failures"] = [&] {
-    py::list failures;
-    for (const cli::CheckLine& line : check.lines)
-      if (!line.ok) failures.append(line.text);
-    return failures;
-  }();
-  result["self_intersections"] = check.selfIntersectingPairs;
-  result["contacts"] = check.contactPairs;
-  result["max_edge_length_error"] = check.maxEdgeLengthError;
-  result["length_tolerance"] = check.lengthTolerance;
-  result["crease_curves"] = check.creaseCurves;
-  result["mountain_edges"] = check.mountainEdges;
-  result["valley_edges"] = check.valleyEdges;
-  return result;
-}
-
 py::list foldsOf(const PyDesign& design) {
   py::list folds;
   const Design whole = design.design();
@@ -410,6 +387,42 @@ PYBIND11_MODULE(_curvefold, m) {
                ", images=" + std::to_string(r.images) + ")";
       });
 
+  py::class_<DesignCheck>(m, "CheckResult",
+                          "The invariants `curvefold check` prints; true when all hold.")
+      .def_property_readonly("passed", &DesignCheck::passed)
+      .def_readonly("summary", &DesignCheck::summary, "'<name>: <surface>, N folds, ...'")
+      .def_property_readonly(
+          "lines",
+          [](const DesignCheck& check) {
+            std::vector<std::pair<bool, std::string>> lines;
+            for (const cli::CheckLine& line : check.lines) lines.emplace_back(line.ok, line.text);
+            return lines;
+          },
+          "Every line as (ok, text), in the command's order")
+      .def_property_readonly(
+          "failures",
+          [](const DesignCheck& check) {
+            std::vector<std::string> failures;
+            for (const cli::CheckLine& line : check.lines)
+              if (!line.ok) failures.push_back(line.text);
+            return failures;
+          },
+          "The failing lines' texts")
+      .def_readonly("self_intersections", &DesignCheck::selfIntersectingPairs,
+                    "Triangle pairs that pass through each other")
+      .def_readonly("contacts", &DesignCheck::contactPairs,
+                    "Triangle pairs whose layers only touch (allowed)")
+      .def_readonly("max_edge_length_error", &DesignCheck::maxEdgeLengthError, "Metres")
+      .def_readonly("length_tolerance", &DesignCheck::lengthTolerance, "Metres")
+      .def_readonly("crease_curves", &DesignCheck::creaseCurves)
+      .def_readonly("mountain_edges", &DesignCheck::mountainEdges)
+      .def_readonly("valley_edges", &DesignCheck::valleyEdges)
+      .def("__bool__", &DesignCheck::passed)
+      .def("__repr__", [](const DesignCheck& check) {
+        return "<curvefold.CheckResult " + std::string(check.passed() ? "passed" : "failed: ") +
+               check.firstFailure() + ">";
+      });
+
   py::class_<PyDesign>(m, "Design", "A design: an initial surface, its folds and a symmetry.")
       .def_static("new", &newDesign, py::arg("surface"), py::kw_only(),
                   py::arg("symmetry") = py::none(),
@@ -470,11 +483,11 @@ PYBIND11_MODULE(_curvefold, m) {
               check = cli::checkDesign(whole, d.name(), d.session().initial(), *sheet,
                                        allowSelfIntersection);
             }
-            return checkResult(check);
+            return check;
           },
           py::arg("allow_self_intersection") = false,
-          "The invariants `curvefold check` prints, as a dict: passed, lines [(ok, text)], "
-          "failures, self_intersections, contacts, max_edge_length_error, ...")
+          "The invariants `curvefold check` prints, as a CheckResult (true when all hold; "
+          "self-intersections and contacts included)")
       .def_property_readonly(
           "vertices",
           [](const PyDesign& d) {

@@ -7,13 +7,13 @@ and hand its meshes to numpy, trimesh or polyscope without files.
     import curvefold
     design = curvefold.Design.new("cylinder", radius=0.05, resolution=60)
     design.fold(grab=(0.05, 0.1, 0.0), to=(0.03, 0.07, 0.02))
-    assert design.check()["passed"]
+    assert design.check().passed
     design.export(svg="cylinder.svg", pdf="cylinder.pdf")
 
 Bad input raises ValueError, a file that cannot be read or written OSError, each with the
 command line's one-line message.
 """
 
-from ._curvefold import Design, FoldResult, replay, surfaces
+from ._curvefold import CheckResult, Design, FoldResult, replay, surfaces
 
-__all__ = ["Design", "FoldResult", "replay", "surfaces"]
+__all__ = ["CheckResult", "Design", "FoldResult", "replay", "surfaces"]

@@ -15,6 +15,6 @@ for grab, to in [((0.0, 0.105, 0.045), (0.0, 0.085, 0.03)),
     result = design.fold(grab=grab, to=to)
     print(f"fold: {result.images} images, {result.triangles} triangles {result.notes}".rstrip())
 check = design.check()
-print("check:", "passed" if check["passed"] else check["failures"])
+print("check:", "passed" if check.passed else check.failures)
 design.export(pdf=out, angles=True)
 print("wrote", out)

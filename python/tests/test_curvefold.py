@@ -112,17 +112,18 @@ def test_creases_carry_assignments_and_angles():
 def test_check_returns_the_command_lines_invariants(tmp_path):
     design = folded_cylinder()
     result = design.check()
-    assert result["passed"] and result["failures"] == []
-    assert result["self_intersections"] == 0
-    assert result["max_edge_length_error"] <= result["length_tolerance"]
+    assert result.passed and result.failures == []
+    assert result.self_intersections == 0
+    assert result.max_edge_length_error <= result.length_tolerance
     design.save(tmp_path / "a.curvefold.json")
     printed = cli("check", tmp_path / "a.curvefold.json").stdout.splitlines()
-    assert [("  ok    " if ok else "  FAIL  ") + text for ok, text in result["lines"]] == printed[1:]
+    assert [("  ok    " if ok else "  FAIL  ") + text for ok, text in result.lines] == printed[1:]
     # A fold that passes the paper through itself fails, unless allowed.
     crossing = curvefold.replay(str(RECORDINGS / "cone.jsonl")).check()
-    assert not crossing["passed"] and crossing["self_intersections"] > 0
-    assert crossing["failures"][0].startswith("self-intersection")
-    assert curvefold.replay(str(RECORDINGS / "cone.jsonl")).check(allow_self_intersection=True)["passed"]
+    assert bool(result) and not crossing  # true when every invariant holds
+    assert not crossing.passed and crossing.self_intersections > 0
+    assert crossing.failures[0].startswith("self-intersection")
+    assert curvefold.replay(str(RECORDINGS / "cone.jsonl")).check(allow_self_intersection=True).passed
 
 
 def test_to_fold_is_the_fold_files_content(tmp_path):
@@ -192,7 +193,7 @@ def test_load_and_from_obj(tmp_path):
     square = curvefold.Design.from_obj(vertices, triangles=triangles)
     assert square.triangles.shape == (2, 3)
     assert curvefold.Design.from_obj(vertices, triangles=triangles,
-                                     development=vertices[:, :2]).check()["passed"]
+                                     development=vertices[:, :2]).check().passed
 
 
 def test_bad_input_is_a_value_error_with_the_one_line_message(tmp_path):
