@@ -286,6 +286,12 @@ void addExportCommand(CLI::App& app) {
     PdfOptions print;
     if (pdf->count()) {
       print.paper = *parsePaper(options->paper);
+      // Counted before anything is drawn: a sheet metres wide would take hours and gigabytes.
+      if (const double pages = pdfPageCount(sheet, print.paper); pages > kMaxPdfPages)
+        throw UsageError("--pdf: the crease pattern would print on " +
+                         std::to_string(std::llround(pages)) + " pages at real size (at most " +
+                         std::to_string(std::llround(kMaxPdfPages)) +
+                         "); --paper fit prints it on one page");
       print.angles = options->angles;
       print.title = fs::path(options->design).filename().string();
       print.facts = {"surface: " + surfaceName(design) +

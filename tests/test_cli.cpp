@@ -101,6 +101,22 @@ TEST_F(Cli, ExportRefusesAnUnknownPaper) {
                 path("c.pdf"));
 }
 
+// Issue 29, 1: a crease pattern that would print on more pages than a print may have is refused
+// before anything is drawn (a 10 km square once ran for minutes into gigabytes), in one line that
+// names the count and --paper fit; fit prints it on one page.
+TEST_F(Cli, ExportRefusesAPdfOfTooManyPagesAndFitPrintsIt) {
+  const std::string design = newDesign("square --size 10000 --resolution 4", "a.curvefold.json");
+  expectFailure("export " + design + " --pdf " + path("c.pdf").string(), "--paper fit",
+                path("c.pdf"));
+  expectFailure("export " + design + " --pdf " + path("c.pdf").string() + " --svg " +
+                    path("c.svg").string(),
+                "pages at real size", path("c.svg"));
+  const CommandResult r =
+      run("export " + design + " --pdf " + path("c.pdf").string() + " --paper fit");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("c.pdf")));
+}
+
 // Issue 18, 2: `export --cut-svg` writes the cutter's layers, perforated when asked; a perforation
 // that is not two positive lengths is refused in one line and nothing is written.
 TEST_F(Cli, ExportWritesACutterSvg) {

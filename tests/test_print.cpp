@@ -182,6 +182,23 @@ TEST_F(PrintPdfFile, WritesThePagesItPlanned) {
   EXPECT_THROW(writeCreasePatternPdf(sheet, dir() / "missing" / "p.pdf", options), FileError);
 }
 
+// Issue 29, 1: the page count comes from the extent alone, agrees with the plan, and a plan past
+// kMaxPdfPages is refused before any page is made.
+TEST(PrintPdf, PagesAreCountedFirstAndTooManyAreRefused) {
+  const Sheet sheet = foldedSheet();  // 500 x 300 mm: 2 x 2 tiles on A4
+  EXPECT_EQ(pdfPageCount(sheet, Paper::A4), 4.0);
+  EXPECT_EQ(pdfPageCount(sheet, Paper::Fit), 1.0);
+  Sheet huge = sheet;
+  for (glm::dvec2& q : huge.development) q *= 200.0;  // 100 x 60 m
+  for (glm::dvec3& p : huge.positions) p *= 200.0;
+  const double pages = pdfPageCount(huge, Paper::A4);
+  EXPECT_GT(pages, kMaxPdfPages);
+  PdfOptions options;
+  EXPECT_THROW(planCreasePatternPdf(huge, options), PdfTooLarge);
+  options.paper = Paper::Fit;
+  EXPECT_EQ(planCreasePatternPdf(huge, options).pages.size(), 2u);  // the cover and one page
+}
+
 TEST(PrintPdf, PaperNames) {
   EXPECT_EQ(parsePaper("a4"), Paper::A4);
   EXPECT_EQ(parsePaper("letter"), Paper::Letter);

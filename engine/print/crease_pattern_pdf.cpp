@@ -139,42 +139,55 @@ PdfLineStyle pdfLineStyle(Assignment assignment) {
   }
 }
 
+PdfLayout pdfLayout(const glm::dvec2& patternMm, Paper paper) {
+  const glm::dvec2 portraitMm = paperSizeMm(paper);
+  // Tiles at 1:1, or one page scaled down; portrait or landscape, whichever needs fewer pages
+  // (or, to fit, allows the larger scale). Counts are doubles: a sheet kilometres wide would
+  // overflow an int before it is refused.
+  auto layoutFor = [&](const glm::dvec2& pageMm, bool landscape) {
+    const glm::dvec2 area =
+        pageMm - glm::dvec2(2.0 * kPageMarginMm, 2.0 * kPageMarginMm + kFooterMm);
+    if (paper == Paper::Fit) {
+      const double scale = std::min({area.x / std::max(patternMm.x, 1e-9),
+                                     area.y / std::max(patternMm.y, 1e-9), 1.0});
+      return PdfLayout{pageMm, 1.0, 1.0, scale, landscape};
+    }
+    auto count = [&](double extent, double room) {
+      return extent <= room ? 1.0 : 1.0 + std::ceil((extent - room) / (room - kOverlapMm));
+    };
+    return PdfLayout{pageMm, count(patternMm.y, area.y), count(patternMm.x, area.x), 1.0,
+                     landscape};
+  };
+  const PdfLayout portrait = layoutFor(portraitMm, false);
+  const PdfLayout landscape = layoutFor({portraitMm.y, portraitMm.x}, true);
+  const bool useLandscape = paper == Paper::Fit ? landscape.scale > portrait.scale
+                                                : landscape.rows * landscape.columns <
+                                                      portrait.rows * portrait.columns;
+  return useLandscape ? landscape : portrait;
+}
+
+double pdfPageCount(const Sheet& sheet, Paper paper) {
+  if (sheet.development.empty()) return 0.0;
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  const PdfLayout layout = pdfLayout((bounds.high - bounds.low) * kMmPerMetre, paper);
+  return layout.rows * layout.columns;
+}
+
 PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
   const Pattern pattern = patternOf(sheet, options.angles);
   PdfPlan plan;
   plan.patternMm = (pattern.high - pattern.low) * kMmPerMetre;
-  const glm::dvec2 portraitMm = paperSizeMm(options.paper);
-
-  // Tiles at 1:1, or one page scaled down; portrait or landscape, whichever needs fewer pages
-  // (or, to fit, allows the larger scale).
-  struct Layout {
-    glm::dvec2 pageMm;
-    int rows, columns;
-    double scale;
-  };
-  auto layoutFor = [&](const glm::dvec2& pageMm) {
-    const glm::dvec2 area =
-        pageMm - glm::dvec2(2.0 * kPageMarginMm, 2.0 * kPageMarginMm + kFooterMm);
-    if (options.paper == Paper::Fit) {
-      const double scale = std::min({area.x / std::max(plan.patternMm.x, 1e-9),
-                                     area.y / std::max(plan.patternMm.y, 1e-9), 1.0});
-      return Layout{pageMm, 1, 1, scale};
-    }
-    auto count = [&](double extent, double room) {
-      return extent <= room ? 1 : 1 + int(std::ceil((extent - room) / (room - kOverlapMm)));
-    };
-    return Layout{pageMm, count(plan.patternMm.y, area.y), count(plan.patternMm.x, area.x), 1.0};
-  };
-  const Layout portrait = layoutFor(portraitMm);
-  const Layout landscape = layoutFor({portraitMm.y, portraitMm.x});
-  const bool useLandscape = options.paper == Paper::Fit ? landscape.scale > portrait.scale
-                                                        : landscape.rows * landscape.columns <
-                                                              portrait.rows * portrait.columns;
-  const Layout layout = useLandscape ? landscape : portrait;
-  plan.rows = layout.rows;
-  plan.columns = layout.columns;
+  const PdfLayout layout = pdfLayout(plan.patternMm, options.paper);
+  if (layout.rows * layout.columns > kMaxPdfPages)
+    throw PdfTooLarge("a " + formatted("%.0f", plan.patternMm.x) + " x " +
+                      formatted("%.0f", plan.patternMm.y) +
+                      " mm crease pattern would print on " +
+                      formatted("%.0f", layout.rows * layout.columns) +
+                      " pages at real size, more than " + formatted("%.0f", kMaxPdfPages));
+  plan.rows = int(layout.rows);
+  plan.columns = int(layout.columns);
   plan.scale = layout.scale;
-  plan.landscape = useLandscape;
+  plan.landscape = layout.landscape;
   const glm::dvec2 pagePt = layout.pageMm * kPointsPerMm;
   const int tiles = plan.rows * plan.columns;
   const std::string paperName = options.paper == Paper::Letter ? "letter"

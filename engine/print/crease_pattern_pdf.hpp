@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -97,7 +98,30 @@ struct PdfPlan {
   glm::dvec2 patternMm{0.0};  // the development's extent
 };
 
-// Lays out the sheet's development on pages. Throws std::invalid_argument for an empty sheet.
+// How the pattern lies on paper: tiles at real size (rows x columns) or one page scaled to fit.
+struct PdfLayout {
+  glm::dvec2 pageMm{0.0};
+  double rows = 1.0, columns = 1.0;
+  double scale = 1.0;  // paper over pattern (1: real size)
+  bool landscape = false;
+};
+PdfLayout pdfLayout(const glm::dvec2& patternMm, Paper paper);
+
+// The most tiles a crease pattern prints on (2,000 A4 tiles tape up to about 8 by 11 metres): a
+// larger one is refused before anything is drawn.
+inline constexpr double kMaxPdfPages = 2000.0;
+
+// A pattern that would print on more than kMaxPdfPages tiles. One line naming the count.
+class PdfTooLarge : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// The tiles the sheet's crease pattern prints on (the cover not counted), from its extent alone.
+double pdfPageCount(const Sheet& sheet, Paper paper);
+
+// Lays out the sheet's development on pages. Throws std::invalid_argument for an empty sheet and
+// PdfTooLarge for one that would need more than kMaxPdfPages tiles.
 PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options);
 
 // Draws the plan with Cairo and writes it atomically. Throws FileError when the file cannot be
