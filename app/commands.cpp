@@ -275,9 +275,9 @@ void addExportCommand(CLI::App& app) {
       Perforation p;
       char end = 0;
       if (std::sscanf(options->perforate.c_str(), "%lf,%lf%c", &p.cutMm, &p.gapMm, &end) != 2 ||
-          !(p.cutMm > 0.0) || !(p.gapMm > 0.0) || !std::isfinite(p.cutMm) ||
-          !std::isfinite(p.gapMm))
-        throw UsageError("--perforate: expected CUT,GAP in millimetres, both positive, got '" +
+          !(p.cutMm >= kMinPerforationMm) || !(p.gapMm >= kMinPerforationMm) ||
+          !std::isfinite(p.cutMm) || !std::isfinite(p.gapMm))
+        throw UsageError("--perforate: expected CUT,GAP in millimetres, each at least 0.1, got '" +
                          options->perforate + "'");
       perforation = p;
     }

@@ -108,9 +108,9 @@ TEST_F(Cli, ExportRefusesAPdfOfTooManyPagesAndFitPrintsIt) {
   const std::string design = newDesign("square --size 10000 --resolution 4", "a.curvefold.json");
   expectFailure("export " + design + " --pdf " + path("c.pdf").string(), "--paper fit",
                 path("c.pdf"));
-  expectFailure("export " + design + " --pdf " + path("c.pdf").string() + " --svg " +
-                    path("c.svg").string(),
-                "pages at real size", path("c.svg"));
+  expectFailure(
+      "export " + design + " --pdf " + path("c.pdf").string() + " --svg " + path("c.svg").string(),
+      "pages at real size", path("c.svg"));
   const CommandResult r =
       run("export " + design + " --pdf " + path("c.pdf").string() + " --paper fit");
   EXPECT_EQ(r.exitCode, 0) << r.err;
@@ -125,10 +125,23 @@ TEST_F(Cli, ExportWritesACutterSvg) {
       run("export " + design + " --cut-svg " + path("cut.svg").string() + " --perforate 3,1.5");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(slurp(path("cut.svg")).find("inkscape:label=\"valley score\""), std::string::npos);
-  for (const char* wrong : {"3", "3,0", "a,b", "3,1.5,2", "-1,2"})
+  // Issue 29, 1: dashes finer than a cutter cuts are refused too (1e-5 once wrote 264 MB).
+  for (const char* wrong : {"3", "3,0", "a,b", "3,1.5,2", "-1,2", "1e-5,1e-5", "0.05,3"})
     expectFailure(
         "export " + design + " --cut-svg " + path("bad.svg").string() + " --perforate " + wrong,
         "--perforate", path("bad.svg"));
+}
+
+// Issue 29, 1: dashes are counted before any is made: kilometres of crease perforated finely are
+// refused in one line, and nothing is written.
+TEST_F(Cli, ExportRefusesMoreDashesThanAFileHolds) {
+  const std::string design = newDesign("square --size 10000 --resolution 4", "a.curvefold.json");
+  ASSERT_EQ(
+      run("fold " + design + " --vertex-near 5000,5000,0 --to 0,0,3000 -o " + design).exitCode, 0);
+  expectFailure("export " + design + " --cut-svg " + path("cut.svg").string() +
+                    " --perforate 3,1.5 --svg " + path("a.svg").string(),
+                "dashes", path("a.svg"));
+  EXPECT_FALSE(fs::exists(path("cut.svg")));
 }
 
 TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {

@@ -77,6 +77,15 @@ TEST(CutterSvg, PerforationsHaveTheirLengths) {
   }
   EXPECT_THROW(cutterLayers(foldedRectangle(), Perforation{0.0, 1.0}), std::invalid_argument);
   EXPECT_THROW(cutterLayers(foldedRectangle(), Perforation{1.0, -1.0}), std::invalid_argument);
+  // Issue 29, 1: finer than a cutter cuts, or more dashes than a file holds (the rectangle's
+  // creases are under a metre: a million dashes need a metre per micrometre).
+  EXPECT_THROW(cutterLayers(foldedRectangle(), Perforation{0.05, 1.0}), std::invalid_argument);
+  EXPECT_NO_THROW(cutterLayers(foldedRectangle(), Perforation{0.1, 0.1}));
+  Sheet huge = foldedRectangle();
+  for (glm::dvec2& q : huge.development) q *= 2000.0;
+  for (glm::dvec3& p : huge.positions) p *= 2000.0;
+  EXPECT_THROW(cutterLayers(huge, Perforation{0.1, 0.1}), std::invalid_argument);
+  EXPECT_NO_THROW(cutterLayers(huge));
 }
 
 // The file: Inkscape layers with their labels, hairline strokes, real millimetres.

@@ -90,9 +90,11 @@ std::vector<std::vector<glm::dvec2>> perforate(const std::vector<glm::dvec2>& li
 
 std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
                                       const std::optional<Perforation>& perforation) {
-  if (perforation && (!(perforation->cutMm > 0.0) || !(perforation->gapMm > 0.0) ||
-                      !std::isfinite(perforation->cutMm) || !std::isfinite(perforation->gapMm)))
-    throw std::invalid_argument("--perforate: cut and gap must be positive millimetres");
+  if (perforation &&
+      (!(perforation->cutMm >= kMinPerforationMm) || !(perforation->gapMm >= kMinPerforationMm) ||
+       !std::isfinite(perforation->cutMm) || !std::isfinite(perforation->gapMm)))
+    throw std::invalid_argument("perforation: cut and gap must be finite and at least " +
+                                std::to_string(kMinPerforationMm).substr(0, 3) + " mm");
   const DevelopmentBounds bounds = developmentBounds(sheet);
   const glm::dvec2 lo = bounds.low, hi = bounds.high;
   // Millimetres, y down (as in the SVG crease pattern: else the print is the mirror image).
@@ -110,6 +112,18 @@ std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
       mountain.push_back(sides.edge);
     else if (assignment == Assignment::Valley)
       valley.push_back(sides.edge);
+  }
+  // The dashes are counted before any is made: fine dashes over long creases would fill memory.
+  if (perforation) {
+    double scoreMm = 0.0;
+    for (const std::vector<Edge>* edges : {&mountain, &valley})
+      for (const Edge& e : *edges) scoreMm += glm::distance(toMm(e.a), toMm(e.b));
+    const double dashes = scoreMm / (perforation->cutMm + perforation->gapMm);
+    if (dashes > kMaxPerforationDashes)
+      throw std::invalid_argument("perforation: " + std::to_string(std::llround(dashes)) +
+                                  " dashes over " + std::to_string(std::llround(scoreMm)) +
+                                  " mm of creases, more than " +
+                                  std::to_string(std::llround(kMaxPerforationDashes)));
   }
   std::vector<CutterLayer> layers{
       {"cut", "#ff0000", {}}, {"mountain score", "#0000ff", {}}, {"valley score", "#00ff00", {}}};

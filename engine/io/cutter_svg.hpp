@@ -22,6 +22,11 @@ struct Perforation {
   double gapMm = 0.0;  // paper left between cuts
 };
 
+// No cutter cuts finer than this, and no file holds more dashes than this (a million dashes is
+// about 80 MB of SVG): both are checked before anything is made.
+inline constexpr double kMinPerforationMm = 0.1;
+inline constexpr double kMaxPerforationDashes = 1e6;
+
 // One layer: its name, its colour ("#rrggbb") and its polylines (millimetres, y down).
 struct CutterLayer {
   std::string name;
@@ -35,7 +40,8 @@ std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
                                       const std::optional<Perforation>& perforation = {});
 
 // Writes them as SVG, atomically. Throws std::invalid_argument for a perforation whose cut or gap
-// is not positive (and finite), FileError when the file cannot be written.
+// is under kMinPerforationMm (or not finite) or that would make more than kMaxPerforationDashes
+// dashes, FileError when the file cannot be written.
 void writeCutterSvg(const Sheet& sheet, const std::filesystem::path& path,
                     const std::optional<Perforation>& perforation = {});
 

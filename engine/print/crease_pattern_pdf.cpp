@@ -148,8 +148,8 @@ PdfLayout pdfLayout(const glm::dvec2& patternMm, Paper paper) {
     const glm::dvec2 area =
         pageMm - glm::dvec2(2.0 * kPageMarginMm, 2.0 * kPageMarginMm + kFooterMm);
     if (paper == Paper::Fit) {
-      const double scale = std::min({area.x / std::max(patternMm.x, 1e-9),
-                                     area.y / std::max(patternMm.y, 1e-9), 1.0});
+      const double scale = std::min(
+          {area.x / std::max(patternMm.x, 1e-9), area.y / std::max(patternMm.y, 1e-9), 1.0});
       return PdfLayout{pageMm, 1.0, 1.0, scale, landscape};
     }
     auto count = [&](double extent, double room) {
@@ -160,9 +160,9 @@ PdfLayout pdfLayout(const glm::dvec2& patternMm, Paper paper) {
   };
   const PdfLayout portrait = layoutFor(portraitMm, false);
   const PdfLayout landscape = layoutFor({portraitMm.y, portraitMm.x}, true);
-  const bool useLandscape = paper == Paper::Fit ? landscape.scale > portrait.scale
-                                                : landscape.rows * landscape.columns <
-                                                      portrait.rows * portrait.columns;
+  const bool useLandscape =
+      paper == Paper::Fit ? landscape.scale > portrait.scale
+                          : landscape.rows * landscape.columns < portrait.rows * portrait.columns;
   return useLandscape ? landscape : portrait;
 }
 
@@ -180,8 +180,7 @@ PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
   const PdfLayout layout = pdfLayout(plan.patternMm, options.paper);
   if (layout.rows * layout.columns > kMaxPdfPages)
     throw PdfTooLarge("a " + formatted("%.0f", plan.patternMm.x) + " x " +
-                      formatted("%.0f", plan.patternMm.y) +
-                      " mm crease pattern would print on " +
+                      formatted("%.0f", plan.patternMm.y) + " mm crease pattern would print on " +
                       formatted("%.0f", layout.rows * layout.columns) +
                       " pages at real size, more than " + formatted("%.0f", kMaxPdfPages));
   plan.rows = int(layout.rows);
