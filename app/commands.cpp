@@ -281,6 +281,11 @@ void addExportCommand(CLI::App& app) {
                          options->perforate + "'");
       perforation = p;
     }
+    for (const std::string* output : {&options->fold, &options->svg, &options->cutSvg,
+                                      &options->pdf, &options->obj, &options->gltf})
+      if (!output->empty() && *output != "-" && sameFile(*output, options->design))
+        throw UsageError("export: " + *output +
+                         " is the design being exported; write to another file");
     const Design design = loadDesign(options->design);
     const Sheet sheet = buildSheetCached(design, options->design);
     PdfOptions print;

@@ -171,6 +171,9 @@ void addRecordScriptCommand(CLI::App& app) {
   command->add_option("SCRIPT", options->script, "Gesture script (JSON)")->required();
   command->add_option("-o,--output", options->output, "Recording to write (*.jsonl)")->required();
   command->callback([options] {
+    if (options->output != "-" && sameFile(options->output, options->script))
+      throw UsageError("record-script: -o " + options->output +
+                       " is the script itself; write the recording to another file");
     // Streamed: each frame is written as the script makes it, into the staged file, which
     // replaces the output only once the whole script has run. Standard output or a device has
     // no staged file: the script is run once with nothing written, so a bad one writes nothing.

@@ -1,5 +1,7 @@
 #include "app/session_outputs.hpp"
 
+#include "engine/io/output_set.hpp"
+
 #include <exception>
 #include <filesystem>
 #include <system_error>
@@ -14,6 +16,9 @@ SessionOutputs::SessionOutputs(std::string autosavePath, std::string recordPath,
     : autosavePath_(std::move(autosavePath)),
       recordPath_(std::move(recordPath)),
       designOf_(std::move(designOf)) {
+  if (!recordPath_.empty() && sameFile(recordPath_, autosavePath_))
+    throw FileError("cannot record to " + recordPath_ +
+                    ": it is the autosave too (each needs its own file)");
   std::error_code error;
   if (!recordPath_.empty() && std::filesystem::exists(recordPath_, error))
     throw FileError("cannot record to " + recordPath_ +

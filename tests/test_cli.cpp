@@ -144,6 +144,32 @@ TEST_F(Cli, ExportRefusesMoreDashesThanAFileHolds) {
   EXPECT_FALSE(fs::exists(path("cut.svg")));
 }
 
+// Issue 29, 2: an output that names an input, or another output, is refused in one line and
+// nothing changes: the design exported onto itself, a script recorded over itself, a session's
+// recording and autosave in one file (before any window or runtime).
+TEST_F(Cli, AnOutputNamingAnInputOrAnotherOutputIsRefused) {
+  const std::string design = newDesign("square --resolution 4", "a.curvefold.json");
+  const std::string before = slurp(design);
+  expectFailure("export " + design + " --fold " + design, "design being exported",
+                path("none.fold"));
+  expectFailure("export " + design + " --svg " + path("b.svg").string() + " --obj " +
+                    path(".").string() + "/b.svg",
+                "same file", path("b.svg"));
+  EXPECT_EQ(slurp(design), before);
+  const fs::path script =
+      fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "scripts" / "star.gesture.json";
+  fs::copy_file(script, path("s.gesture.json"));
+  const std::string scriptText = slurp(path("s.gesture.json"));
+  expectFailure(
+      "record-script " + path("s.gesture.json").string() + " -o " + path("s.gesture.json").string(),
+      "script itself", path("none.jsonl"));
+  EXPECT_EQ(slurp(path("s.gesture.json")), scriptText);
+  for (const std::string command : {"design", "xr"})
+    expectFailure(command + " square --autosave " + path("f.json").string() + " --record " +
+                      path("f.json").string(),
+                  "autosave", path("f.json"));
+}
+
 TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {
   const std::string design = newDesign("square --resolution 8", "a.curvefold.json");
   // The square is centred on the origin in z = 0: its surface point nearest (0,0,1) is (0,0,0).

@@ -138,6 +138,22 @@ TEST_F(OutputFiles, AnOutputThatIsAFolderLeavesEveryOtherAsItWas) {
   EXPECT_EQ(entries(), (std::vector<std::string>{"a.svg", "adir"}));
 }
 
+// Issue 29, 2: two outputs naming one file (also through "." or a symbolic link) are refused before
+// anything is written.
+TEST_F(OutputFiles, TwoOutputsNamingOneFileAreRefused) {
+  put(dir() / "a.svg", "old svg");
+  fs::create_symlink(dir() / "a.svg", dir() / "link.svg");
+  for (const fs::path& other : {dir() / "a.svg", dir() / "." / "a.svg", dir() / "link.svg"}) {
+    OutputSet outputs;
+    outputs.add(dir() / "a.svg", [](const fs::path& at) { writeFileAtomically(at, "first"); });
+    outputs.add(other, [](const fs::path& at) { writeFileAtomically(at, "second"); });
+    EXPECT_THROW(outputs.write(), FileError) << other;
+    EXPECT_EQ(contentOf(dir() / "a.svg"), "old svg") << other;
+  }
+  EXPECT_TRUE(sameFile(dir() / "x" / ".." / "new.svg", dir() / "new.svg"));
+  EXPECT_FALSE(sameFile(dir() / "a.svg", dir() / "b.svg"));
+}
+
 TEST_F(OutputFiles, StaleTemporariesOfTheTargetAreRemoved) {
   const std::string dead = std::to_string(deadProcessId());
   const std::string alive = std::to_string(::getpid());

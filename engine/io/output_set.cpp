@@ -14,11 +14,23 @@ namespace curvefold {
 
 namespace fs = std::filesystem;
 
+bool sameFile(const fs::path& a, const fs::path& b) {
+  std::error_code error;
+  const fs::path x = fs::weakly_canonical(fs::absolute(a, error), error);
+  const fs::path y = fs::weakly_canonical(fs::absolute(b, error), error);
+  return x == y;
+}
+
 void OutputSet::add(const fs::path& path, std::function<void(const fs::path&)> writer) {
   outputs_.push_back({path, std::move(writer)});
 }
 
 void OutputSet::checkWritable() const {
+  for (std::size_t i = 0; i < outputs_.size(); ++i)
+    for (std::size_t j = i + 1; j < outputs_.size(); ++j)
+      if (outputs_[i].path != "-" && sameFile(outputs_[i].path, outputs_[j].path))
+        throw FileError("cannot write " + outputs_[j].path.string() +
+                        ": another output names the same file");
   for (const Output& output : outputs_) {
     if (output.path == "-") continue;
     const fs::path target = resolveOutputPath(output.path);

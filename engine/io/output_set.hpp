@@ -10,6 +10,10 @@
 
 namespace curvefold {
 
+// Whether two paths name one file: the same after symbolic links, "." and ".." (whether or not
+// the file exists yet).
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
 class OutputSet {
  public:
   // writer writes the whole file at the path it is given (atomically, with writeFileAtomically or
@@ -19,8 +23,8 @@ class OutputSet {
            std::function<void(const std::filesystem::path&)> writer);
 
   // Before a long computation: throws FileError naming the first target whose folder is missing
-  // or cannot be written to, or that is a folder itself (write() may still fail later: a full
-  // disk).
+  // or cannot be written to, that is a folder itself, or that another output names too (write()
+  // may still fail later: a full disk).
   void checkWritable() const;
 
   // Creates `folder` first when it is given and missing (and removes it again on failure), checks
