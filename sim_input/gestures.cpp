@@ -355,15 +355,19 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
   if (handedness != "right" && handedness != "left")
     reader.fail("handedness", "must be \"right\" or \"left\"");
   header.handedness = handedness == "left" ? Handedness::Left : Handedness::Right;
+  // The engine builds the sheet here or refuses it (a parameter it does not know), before any
+  // symmetry is checked against it.
+  std::optional<Sheet> initial;
   try {
     header.surface = parseInitialSurface(reader.member(document, "surface", ""), name);
+    initial.emplace(initialSheet(Design{header.surface, {}}, name));
   } catch (const DesignError& e) {
     throw GestureError(e.what());
   }
   if (reader.optionalMember(document, "symmetry", "")) {
     header.symmetry = reader.text(document, "symmetry", "");
     try {
-      parseSymmetry(header.symmetry, initialSheet(Design{header.surface, {}}, name));
+      parseSymmetry(header.symmetry, *initial);
     } catch (const InvalidSymmetry& e) {
       reader.fail("symmetry", e.what());
     }
