@@ -125,11 +125,12 @@ Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* c
     makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
     design.surface = generated;
   }
-  if (!options.symmetry.empty()) {
+  // Given is given: `--symmetry ""` is refused, not read as none.
+  if (command->get_option("--symmetry")->count() > 0) {
     try {
       design.symmetry = parseSymmetry(options.symmetry, initialSheet(design, nameForErrors)).name();
     } catch (const InvalidSymmetry& e) {
-      throw UsageError(e.what());
+      throw UsageError("--symmetry " + std::string(e.what()));
     }
   }
   return design;

@@ -8,6 +8,30 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "engine/text/excerpt.hpp"
+
+namespace {
+
+// The last guard on "one line": a message quoting a value this program did not cut (CLI11 quotes
+// an option's value whole) keeps its head and tail, with control characters escaped.
+std::string oneLine(const std::string& message) {
+  constexpr std::size_t kPart = 110;
+  std::string text = message.size() > 2 * kPart + 5
+                         ? message.substr(0, kPart) + " ... " + message.substr(message.size() - kPart)
+                         : message;
+  std::string line;
+  for (char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+      const std::string escaped = curvefold::quotedExcerpt(std::string(1, c));
+      line += escaped.substr(1, escaped.size() - 2);  // without its quotes
+    } else {
+      line += c;
+    }
+  }
+  return line;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
@@ -15,7 +39,7 @@ int main(int argc, char** argv) {
   // replay/render.
   app.require_subcommand(0, 1);
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return "curvefold: error: " + std::string(e.what()) + " (see --help)\n";
+    return "curvefold: error: " + oneLine(e.what()) + " (see --help)\n";
   });
   curvefold::cli::addSurfacesCommand(app);
   curvefold::cli::addNewCommand(app);
@@ -44,7 +68,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     // Every failure is one line naming the problem; nothing half-written is left behind because
     // every file is written to a temporary and renamed.
-    std::cerr << "curvefold: error: " << e.what() << "\n";
+    std::cerr << "curvefold: error: " << oneLine(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -175,8 +175,13 @@ PyDesign newDesign(const std::string& surface, const std::optional<std::string>&
     generated.parameters[py::cast<std::string>(key)] = py::cast<double>(value);
   makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
   Design design{generated, {}};
-  if (symmetry && !symmetry->empty())
-    design.symmetry = parseSymmetry(*symmetry, initialSheet(design, surface)).name();
+  if (symmetry) {
+    try {
+      design.symmetry = parseSymmetry(*symmetry, initialSheet(design, surface)).name();
+    } catch (const InvalidSymmetry& e) {
+      throw cli::UsageError("symmetry " + std::string(e.what()));
+    }
+  }
   return PyDesign(std::move(design), surface);
 }
 

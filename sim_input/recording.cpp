@@ -92,9 +92,14 @@ class LineReader : public JsonReader {
     header.source = string(member(value, "source", ""), "source");
     bool known = false;
     for (std::string_view source : kRecordingSources) known = known || source == header.source;
-    if (!known)
-      fail("source", "unknown source " + quotedExcerpt(header.source) +
-                         " (expected synthetic, script, desktop or openxr)");
+    if (!known) {
+      // The list comes from the table, so a source added there is named here too.
+      std::string expected;
+      for (std::string_view source : kRecordingSources)
+        expected += (expected.empty() ? "" : ", ") + std::string(source);
+      fail("source", "unknown source " + quotedExcerpt(header.source) + " (expected one of " +
+                         expected + ")");
+    }
     const std::string& hand = string(member(value, "handedness", ""), "handedness");
     if (hand == "right")
       header.handedness = Handedness::Right;

@@ -302,6 +302,32 @@ TEST(DesignErrors, GroupsAndSymmetry) {
   const std::string half =
       errorAfter(validDocument(), [](json& d) { d["folds"][0]["group"] = 1.5; });
   EXPECT_NE(half.find("group"), std::string::npos) << half;
+  // Issue 29: every bad value gets the same message, and the numbering is checked: groups go
+  // 1, 2, ... in the order they are made, their folds together.
+  const std::string negative =
+      errorAfter(validDocument(), [](json& d) { d["folds"][0]["group"] = -1; });
+  EXPECT_EQ(negative, std::string(kName) + ": fold 1: group: must be a whole number from 1, got -1");
+  EXPECT_EQ(group0, std::string(kName) + ": fold 1: group: must be a whole number from 1, got 0");
+  auto threeFolds = [](std::initializer_list<int> groups) {
+    json d = validDocument();
+    const json fold = d["folds"][0];
+    d["folds"] = json::array();
+    for (int g : groups) {
+      d["folds"].push_back(fold);
+      if (g != 0) d["folds"].back()["group"] = g;
+    }
+    return d;
+  };
+  const std::string far = errorAfter(threeFolds({1, 1, 999}), [](json&) {});
+  EXPECT_EQ(far, std::string(kName) +
+                     ": fold 3: group: must be 2 or 1 (groups are numbered in the order they are "
+                     "made, their folds together), got 999");
+  const std::string apart = errorAfter(threeFolds({1, 2, 1}), [](json&) {});
+  EXPECT_NE(apart.find("fold 3: group: must be 3 or 2"), std::string::npos) << apart;
+  for (auto groups : {std::initializer_list<int>{1, 1, 2}, {0, 1, 0}, {1, 2, 2}, {0, 0, 0}}) {
+    std::istringstream in(threeFolds(groups).dump());
+    EXPECT_EQ(parseDesign(in, kName).folds.size(), 3u);
+  }
   const std::string symmetry = errorAfter(validDocument(), [](json& d) { d["symmetry"] = 6; });
   EXPECT_NE(symmetry.find("symmetry"), std::string::npos) << symmetry;
   // more_seeds: development points, a handful.

@@ -277,6 +277,9 @@ TEST(Recording, BadInputNamesFileAndLine) {
       {"not a recording", 1, "curvefold-recording", "curvefold-design",
        "not a curvefold recording"},
       {"unknown source", 1, "\"synthetic\"", "\"kinect\"", "unknown source \"kinect\""},
+      // Sources are case-sensitive, and the list names every one, hands too.
+      {"source in capitals", 1, "\"synthetic\"", "\"HANDS\"",
+       "unknown source \"HANDS\" (expected one of synthetic, script, desktop, openxr, hands)"},
       {"unknown handedness", 1, "\"right\"", "\"both\"", "unknown handedness \"both\""},
       {"units", 1, "\"units\":\"m\"", "\"units\":\"mm\"", "units: must be \"m\""},
       {"rate", 1, "\"rate\":10.0", "\"rate\":0", "rate: must be positive"},

@@ -50,6 +50,32 @@ TEST(Symmetry, WhatASurfaceLacksIsRefusedInOneLine) {
   }
 }
 
+// Issue 29: loose forms are refused, and a long or multi-line value is quoted by a short excerpt.
+TEST(Symmetry, LooseOrLongTextIsRefusedByAnExcerpt) {
+  const Sheet cylinder = makeSurface("cylinder");
+  const std::string digits(100'000, '9');
+  for (const std::string& wrong :
+       {std::string(), std::string("rotational:+6"), std::string("rotational: 6"),
+        std::string("rotational:6 "), std::string("rotational:0x6"), std::string("rotational:6\ny"),
+        "rotational:" + digits, "mirror:" + digits}) {
+    try {
+      parseSymmetry(wrong, cylinder);
+      ADD_FAILURE() << "accepted " << wrong.substr(0, 40);
+    } catch (const InvalidSymmetry& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_LT(message.size(), 160u) << message;
+    }
+  }
+  EXPECT_THROW(parseSymmetry("", cylinder), InvalidSymmetry);
+  try {
+    parseSymmetry("rotational:6\ny", cylinder);
+  } catch (const InvalidSymmetry& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "\"rotational:6\\ny\": the order must be a whole number from 2 to 64");
+  }
+}
+
 using testing::expectMapsOntoItself;
 
 // A fold on a 6-fold cylinder and a mirrored cone: the images follow, each an exact reflection

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -10,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/geometry/surface_point.hpp"
+#include "engine/text/excerpt.hpp"
 
 namespace curvefold {
 
@@ -154,11 +157,15 @@ bool has(const Sheet& initial, const Symmetry& symmetry) {
 Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
   Symmetry symmetry;
   symmetry.centre = surfaceCentre(initial);
+  // Messages quote an excerpt: the text may be long or hold a newline.
+  const std::string quoted = quotedExcerpt(text, 40);
+  const std::string expected = "expected mirror:x|y|z or rotational:N[:x|y|z]";
+  if (text.empty()) throw InvalidSymmetry("\"\": " + expected);
   auto axisOf = [&](const std::string& name) {
     for (int a = 0; a < 3; ++a)
       if (name == kAxisNames[a]) return a;
-    throw InvalidSymmetry("--symmetry " + text + ": the axis must be x, y or z, not '" + name +
-                          "'");
+    throw InvalidSymmetry(quoted + ": the axis must be x, y or z, not " +
+                          quotedExcerpt(name, 12));
   };
   const auto colon = text.find(':');
   const std::string kind = text.substr(0, colon);
@@ -171,31 +178,27 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
     symmetry.kind = Symmetry::Kind::Rotational;
     const auto second = rest.find(':');
     const std::string order = rest.substr(0, second);
-    std::size_t used = 0;
+    // Digits only: no sign, no spaces, no hexadecimal.
     int n = 0;
-    try {
-      n = std::stoi(order, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != order.size() || n < 2 || n > 64)
-      throw InvalidSymmetry("--symmetry " + text +
-                            ": the order must be a whole number from 2 to 64");
+    const auto [end, error] = std::from_chars(order.data(), order.data() + order.size(), n);
+    if (order.empty() || !std::isdigit(static_cast<unsigned char>(order[0])) ||
+        error != std::errc() || end != order.data() + order.size() || n < 2 || n > 64)
+      throw InvalidSymmetry(quoted + ": the order must be a whole number from 2 to 64");
     symmetry.order = n;
     if (second != std::string::npos) {
       symmetry.axis = axisOf(rest.substr(second + 1));
     } else {
       for (symmetry.axis = 0; symmetry.axis < 3; ++symmetry.axis)
         if (has(initial, symmetry)) return symmetry;
-      throw InvalidSymmetry("--symmetry " + text + ": the surface has no " + std::to_string(n) +
+      throw InvalidSymmetry(quoted + ": the surface has no " + std::to_string(n) +
                             "-fold rotational symmetry about x, y or z through its centre (see "
                             "`curvefold surfaces`)");
     }
   } else {
-    throw InvalidSymmetry("--symmetry " + text + ": expected mirror:x|y|z or rotational:N[:x|y|z]");
+    throw InvalidSymmetry(quoted + ": " + expected);
   }
   if (!has(initial, symmetry))
-    throw InvalidSymmetry("--symmetry " + text + ": the surface does not have " + symmetry.name() +
+    throw InvalidSymmetry(quoted + ": the surface does not have " + symmetry.name() +
                           " through its centre (see `curvefold surfaces`)");
   return symmetry;
 }

@@ -51,8 +51,8 @@ struct Symmetry {
 glm::dvec3 surfaceCentre(const Sheet& initial);
 
 // "mirror:x|y|z" or "rotational:N[:x|y|z]" (N from 2 to 64; without an axis, the first of x, y, z
-// the surface has it about). Throws InvalidSymmetry with one line naming what is wrong, also when
-// the surface lacks the symmetry.
+// the surface has it about). Throws InvalidSymmetry with one line, an excerpt of text and what is
+// wrong with it, also when the surface lacks the symmetry; the caller names where text came from.
 Symmetry parseSymmetry(const std::string& text, const Sheet& initial);
 
 // Each triangle's image under g, corner by corner (the triangle whose corners lie where g puts

@@ -138,9 +138,11 @@ class Reader : public JsonReader {
     if (const json* target = optionalMember(value, "target", where))
       fold.target = vector3(*target, where + ": target");
     if (const json* group = optionalMember(value, "group", where)) {
-      const std::uint64_t g = unsignedInteger(*group, where + ": group");
-      if (g < 1 || g > 0xffffffffu) fail(where, "group must be a whole number from 1");
-      fold.group = static_cast<std::uint32_t>(g);
+      // One message for every bad value; design() checks the numbering across folds.
+      if (!group->is_number_unsigned() || group->get<std::uint64_t>() < 1 ||
+          group->get<std::uint64_t>() > 0xffffffffu)
+        fail(where + ": group", "must be a whole number from 1, got " + jsonExcerpt(*group));
+      fold.group = static_cast<std::uint32_t>(group->get<std::uint64_t>());
     }
     if (const json* more = optionalMember(value, "more_seeds", where)) {
       array(*more, where + ": more_seeds");
@@ -160,6 +162,21 @@ class Reader : public JsonReader {
     const json& folds = array(member(document, "folds", ""), "folds");
     design.folds.reserve(folds.size());
     for (std::size_t i = 0; i < folds.size(); ++i) design.folds.push_back(fold(folds[i], i + 1));
+    // A symmetric fold's images share its group. Groups are numbered 1, 2, ... as they are made
+    // and a group's folds are consecutive, which is what undo and redo step over.
+    std::uint32_t made = 0;
+    for (std::size_t i = 0; i < design.folds.size(); ++i) {
+      const std::uint32_t g = design.folds[i].group;
+      if (g == 0) continue;
+      const std::uint32_t previous = i > 0 ? design.folds[i - 1].group : 0;
+      if (g != previous && g != made + 1)
+        fail("fold " + std::to_string(i + 1) + ": group",
+             "must be " + std::to_string(made + 1) +
+                 (previous != 0 ? " or " + std::to_string(previous) : std::string()) +
+                 " (groups are numbered in the order they are made, their folds together), got " +
+                 std::to_string(g));
+      made = std::max(made, g);
+    }
     if (const json* symmetry = optionalMember(document, "symmetry", ""))
       design.symmetry = string(*symmetry, "symmetry");
     return design;

@@ -67,13 +67,6 @@ std::string jsonExcerpt(const json& value, std::size_t maxLength) {
   return cut(std::move(out), maxLength);
 }
 
-std::string quotedExcerpt(std::string_view text, std::size_t maxLength) {
-  // Cutting may split a UTF-8 sequence: replace what is no longer valid rather than throw.
-  const std::string quoted = json(std::string(text.substr(0, maxLength)))
-                                 .dump(-1, ' ', false, json::error_handler_t::replace);
-  return cut(quoted, maxLength);
-}
-
 std::string jsonParseProblem(const json::exception& error) {
   std::string message = error.what();
   if (const auto start = message.find("] "); start != std::string::npos)

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/geometry/sheet.hpp"
+#include "engine/text/excerpt.hpp"
 
 namespace curvefold {
 
@@ -39,13 +40,12 @@ class JsonReadError : public std::runtime_error {
 };
 
 // The longest excerpt of a value or key a message quotes.
-inline constexpr std::size_t kJsonExcerptLength = 60;
+inline constexpr std::size_t kJsonExcerptLength = kExcerptLength;
 
 // A single-line excerpt of value, ending in "..." when cut; its cost is bounded by maxLength,
 // not by the value's size or depth.
 std::string jsonExcerpt(const nlohmann::json& value, std::size_t maxLength = kJsonExcerptLength);
-// A string (an object key, a name read from a file) quoted and cut the same way.
-std::string quotedExcerpt(std::string_view text, std::size_t maxLength = kJsonExcerptLength);
+// A string (an object key, a name read from a file) is quoted and cut by quotedExcerpt.
 
 // Which object members to keep while parsing: keep(depth, key), depth 1 for the document's own
 // members. A member not kept is skipped as it is parsed, never built.

@@ -1,5 +1,7 @@
 #include "sim_input/xr_runtime/sim_user.hpp"
 
+#include <charconv>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include "interaction/xr_controls.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/simulated_hand.hpp"
+#include "engine/text/excerpt.hpp"
 
 namespace curvefold::simxr {
 
@@ -20,6 +23,15 @@ namespace {
 std::string env(const char* name) {
   const char* value = std::getenv(name);
   return value ? value : "";
+}
+
+// The whole text as a decimal number: from_chars takes no sign, space or "0x" that sscanf
+// would, and says when a value does not fit.
+template <typename Number>
+bool readWhole(const std::string& text, Number& value) {
+  if (text.empty() || text[0] == '+' || text[0] == '-') return false;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error == std::errc() && end == text.data() + text.size();
 }
 
 }  // namespace
@@ -50,24 +62,25 @@ SimConfig SimConfig::fromEnvironment() {
   config.hands = env("CURVEFOLD_SIM_HANDS") == "1";
   if (const std::string jitter = env("CURVEFOLD_SIM_JITTER"); !jitter.empty()) {
     double mm = -1.0;
-    char extra = 0;
-    if (std::sscanf(jitter.c_str(), "%lf%c", &mm, &extra) != 1 || !(mm >= 0.0 && mm <= 50.0))
-      throw std::runtime_error("CURVEFOLD_SIM_JITTER: expected millimetres from 0 to 50, got '" +
-                               jitter + "'");
+    if (!readWhole(jitter, mm) || !(mm >= 0.0 && mm <= 50.0))
+      throw std::runtime_error("CURVEFOLD_SIM_JITTER: expected millimetres from 0 to 50, got " +
+                               quotedExcerpt(jitter));
     config.jitter = mm * 1e-3;
   }
   if (const std::string seed = env("CURVEFOLD_SIM_SEED"); !seed.empty()) {
-    unsigned long long value = 0;
-    char extra = 0;
-    if (std::sscanf(seed.c_str(), "%llu%c", &value, &extra) != 1)
-      throw std::runtime_error("CURVEFOLD_SIM_SEED: expected a whole number, got '" + seed + "'");
+    std::uint64_t value = 0;
+    if (!readWhole(seed, value))
+      throw std::runtime_error("CURVEFOLD_SIM_SEED: expected a whole number from 0 to 2^64 - 1, got " +
+                               quotedExcerpt(seed));
     config.seed = value;
   }
   if (const std::string size = env("CURVEFOLD_SIM_VIEW_SIZE"); !size.empty()) {
     unsigned w = 0, h = 0;
-    if (std::sscanf(size.c_str(), "%ux%u", &w, &h) != 2 || w < 16 || h < 16 || w > 4096 || h > 4096)
-      throw std::runtime_error("CURVEFOLD_SIM_VIEW_SIZE: expected WxH from 16 to 4096, got '" +
-                               size + "'");
+    const std::size_t x = size.find('x');
+    if (x == std::string::npos || !readWhole(size.substr(0, x), w) ||
+        !readWhole(size.substr(x + 1), h) || w < 16 || h < 16 || w > 4096 || h > 4096)
+      throw std::runtime_error("CURVEFOLD_SIM_VIEW_SIZE: expected WxH from 16 to 4096, got " +
+                               quotedExcerpt(size));
     config.viewWidth = w;
     config.viewHeight = h;
   }
@@ -75,13 +88,14 @@ SimConfig SimConfig::fromEnvironment() {
   for (std::string item; std::getline(events, item, ',');) {
     const auto colon = item.find(':');
     std::size_t frame = 0;
-    if (colon == std::string::npos || std::sscanf(item.c_str(), "%zu", &frame) != 1)
-      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: expected FRAME:EVENT, got '" + item + "'");
+    if (colon == std::string::npos || !readWhole(item.substr(0, colon), frame))
+      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: expected FRAME:EVENT, got " +
+                               quotedExcerpt(item));
     const std::string event = item.substr(colon + 1);
     if (event != "loss_pending" && event != "instance_loss" && event != "exit" &&
         event != "hands" && event != "controllers" &&
         !event.starts_with("profile=/interaction_profiles/"))
-      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: unknown event '" + event + "'");
+      throw std::runtime_error("CURVEFOLD_SIM_EVENTS: unknown event " + quotedExcerpt(event));
     config.events[frame].push_back(event);
   }
   return config;

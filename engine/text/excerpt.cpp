@@ -1,0 +1,67 @@
+#include "engine/text/excerpt.hpp"
+
+#include <vector>
+
+namespace curvefold {
+namespace {
+
+// The length of the UTF-8 sequence starting at text[at], or 0 when it is not one.
+std::size_t utf8Length(std::string_view text, std::size_t at) {
+  const auto lead = static_cast<unsigned char>(text[at]);
+  const std::size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                             : lead >= 0xE0 && lead <= 0xEF ? 3
+                             : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                            : 0;
+  if (length == 0 || at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k)
+    if ((static_cast<unsigned char>(text[at + k]) & 0xC0) != 0x80) return 0;
+  return length;
+}
+
+}  // namespace
+
+std::string quotedExcerpt(std::string_view text, std::size_t maxLength) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "\"";
+  // Where each whole piece ends, so a cut never splits an escape or a character.
+  std::vector<std::size_t> ends;
+  std::size_t at = 0;
+  while (at < text.size() && out.size() <= maxLength) {
+    const auto c = static_cast<unsigned char>(text[at]);
+    std::size_t used = 1;
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += char(c);
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7F) {
+      out += "\\u00";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else if (c < 0x80) {
+      out += char(c);
+    } else if (const std::size_t length = utf8Length(text, at); length > 0) {
+      out.append(text.substr(at, length));
+      used = length;
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+    at += used;
+    ends.push_back(out.size());
+  }
+  if (at == text.size() && out.size() + 1 <= maxLength) return out + "\"";
+  // Cut: keep the whole pieces that leave room for "...".
+  std::size_t keep = 1;
+  for (std::size_t end : ends)
+    if (end + 3 <= maxLength) keep = end;
+  out.resize(maxLength >= 3 ? std::min(keep, maxLength - 3) : 0);
+  return out + "...";
+}
+
+}  // namespace curvefold
