@@ -14,6 +14,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -38,16 +40,18 @@ namespace curvefold::cli {
 namespace fs = std::filesystem;
 namespace {
 
-// "X,Y,Z" with three finite numbers.
+// "X,Y,Z" with three finite decimal numbers.
 glm::dvec3 parsePoint(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
+  const std::string_view all = text;
+  const std::size_t first = all.find(','), second = all.find(',', first + 1);
   glm::dvec3 p;
-  char comma1 = 0, comma2 = 0;
-  in >> p.x >> comma1 >> p.y >> comma2 >> p.z;
-  if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(p.x) ||
-      !std::isfinite(p.y) || !std::isfinite(p.z))
-    throw UsageError(option + ": expected X,Y,Z (three finite numbers in metres), got '" + text +
-                     "'");
+  if (first == std::string_view::npos || second == std::string_view::npos ||
+      !readDecimal(all.substr(0, first), p.x) ||
+      !readDecimal(all.substr(first + 1, second - first - 1), p.y) ||
+      !readDecimal(all.substr(second + 1), p.z) || !std::isfinite(p.x) || !std::isfinite(p.y) ||
+      !std::isfinite(p.z))
+    throw UsageError(option + ": expected X,Y,Z (three finite numbers in metres), got " +
+                     quotedExcerpt(text));
   return p;
 }
 
@@ -274,12 +278,13 @@ void addExportCommand(CLI::App& app) {
     std::optional<Perforation> perforation;
     if (!options->perforate.empty()) {
       Perforation p;
-      char end = 0;
-      if (std::sscanf(options->perforate.c_str(), "%lf,%lf%c", &p.cutMm, &p.gapMm, &end) != 2 ||
-          !(p.cutMm >= kMinPerforationMm) || !(p.gapMm >= kMinPerforationMm) ||
-          !std::isfinite(p.cutMm) || !std::isfinite(p.gapMm))
-        throw UsageError("--perforate: expected CUT,GAP in millimetres, each at least 0.1, got '" +
-                         options->perforate + "'");
+      const std::string_view text = options->perforate;
+      const std::size_t comma = text.find(',');
+      if (comma == std::string_view::npos || !readDecimal(text.substr(0, comma), p.cutMm) ||
+          !readDecimal(text.substr(comma + 1), p.gapMm) || !(p.cutMm >= kMinPerforationMm) ||
+          !(p.gapMm >= kMinPerforationMm) || !std::isfinite(p.cutMm) || !std::isfinite(p.gapMm))
+        throw UsageError("--perforate: expected CUT,GAP in millimetres, each at least 0.1, got " +
+                         quotedExcerpt(options->perforate));
       perforation = p;
     }
     for (const std::string* output : {&options->fold, &options->svg, &options->cutSvg,

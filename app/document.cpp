@@ -5,6 +5,7 @@
 
 #include "app/commands.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold::cli {
@@ -78,7 +79,7 @@ Design designFor(const std::string& input, const std::string& fallbackSurface) {
   if (fs::exists(input)) return loadDesign(input);
   for (const SurfaceInfo& info : surfaceCatalog())
     if (info.name == input) return {GeneratedSurface{input, {}}, {}};
-  throw UsageError("'" + input + "' is neither a design file nor a surface name");
+  throw UsageError(quotedExcerpt(input) + " is neither a design file nor a surface name");
 }
 
 std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface) {

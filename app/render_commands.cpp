@@ -18,6 +18,8 @@
 #include "app/commands.hpp"
 #include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/print/crease_pattern_pdf.hpp"
@@ -43,28 +45,17 @@ constexpr std::uint32_t kMaxRenderSide = 16384;
 
 // "WxH" with whole numbers from 1 to kMaxRenderSide.
 RenderSize parseSize(const std::string& text) {
-  const auto fail = [&]() -> RenderSize {
-    throw UsageError("--size: expected WxH with whole numbers from 1 to " +
-                     std::to_string(kMaxRenderSide) + ", got '" + text + "'");
-  };
-  const std::size_t x = text.find('x');
-  if (x == std::string::npos) return fail();
   RenderSize size;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  auto [wEnd, wError] = std::from_chars(begin, begin + x, size.width);
-  auto [hEnd, hError] = std::from_chars(begin + x + 1, end, size.height);
-  if (wError != std::errc() || hError != std::errc() || wEnd != begin + x || hEnd != end ||
-      size.width == 0 || size.height == 0 || size.width > kMaxRenderSide ||
-      size.height > kMaxRenderSide)
-    return fail();
+  if (!readSize<std::uint32_t>(text, 1, kMaxRenderSide, size.width, size.height))
+    throw UsageError("--size: expected WxH with whole numbers from 1 to " +
+                     std::to_string(kMaxRenderSide) + ", got " + quotedExcerpt(text));
   return size;
 }
 
 ViewPreset parseView(const std::string& text) {
   const std::optional<ViewPreset> view = parseViewPreset(text);
   if (!view)
-    throw UsageError("--view: unknown view '" + text + "' (one of " +
+    throw UsageError("--view: unknown view " + quotedExcerpt(text) + " (one of " +
                      std::string(kViewPresetNames) + ")");
   return *view;
 }

@@ -336,7 +336,7 @@ TEST(Gestures, BadScriptsNameTheProblem) {
   expectError(
       R"({"format":"curvefold-gesture-script","version":1,"symmetry":"mirror:x",)"
       R"("surface":{"generator":"cylinder","parameters":{"resolu":8}},"gestures":[]})",
-      "has no parameter 'resolu'");
+      "has no parameter \"resolu\"");
   // A value nested a million deep is quoted by an excerpt, not dumped recursively (A1).
   std::string deep = R"({"format":)";
   deep.append(1'000'000, '[').append(1'000'000, ']').append("}");

@@ -180,7 +180,7 @@ TEST(ObjSurface, PyramidIsNotDevelopable) {
 
 TEST(ObjSurface, MalformedFilesAreRefusedWithTheirLine) {
   const std::pair<std::string, std::string> cases[] = {
-      {"bad_number.obj:3:", "malformed number '1.0.5'"},
+      {"bad_number.obj:3:", "malformed number \"1.0.5\""},
       {"zero_index.obj:4:", "index 0"},
       {"out_of_range.obj:5:", "out of range"},
       {"nan_coordinate.obj:2:", "non-finite"},

@@ -177,17 +177,28 @@ TEST_F(XrHands, HandsFlagUsesHandsOnlyAndNeedsHandTracking) {
   EXPECT_NE(none.err.find("XR_EXT_hand_tracking"), std::string::npos) << none.err;
   EXPECT_FALSE(fs::exists(path("r.jsonl")));
   EXPECT_FALSE(fs::exists(path("n.json")));
-  // A jitter or seed the runtime cannot read: one line from the runtime's refusal, nothing made.
+  // A jitter or seed the runtime cannot read, loose forms included (issue 29: "0x10" was read as
+  // 16 mm, -1 and 2^64 as seeds): the runtime's line names the setting, and ours says the runtime
+  // refused, not that there is none. Nothing is made.
   for (const char* bad :
-       {"CURVEFOLD_SIM_JITTER=2mm", "CURVEFOLD_SIM_JITTER=-1", "CURVEFOLD_SIM_SEED=seven"}) {
+       {"CURVEFOLD_SIM_JITTER=2mm", "CURVEFOLD_SIM_JITTER=-1", "CURVEFOLD_SIM_JITTER=0x10",
+        "CURVEFOLD_SIM_JITTER=+2", "CURVEFOLD_SIM_SEED=seven", "CURVEFOLD_SIM_SEED=-1",
+        "CURVEFOLD_SIM_SEED=18446744073709551616"}) {
     const CommandResult refused =
         run("xr " + input + " --headless --record b.jsonl --autosave b.json",
             simulated(input, std::string("CURVEFOLD_SIM_HANDS=1 ") + bad));
     EXPECT_EQ(refused.exitCode, 1) << bad;
     EXPECT_FALSE(fs::exists(path("b.jsonl"))) << bad;
     EXPECT_FALSE(fs::exists(path("b.json"))) << bad;
+    const std::string setting = std::string(bad).substr(0, std::string(bad).find('='));
+    EXPECT_NE(refused.err.find("curvefold sim runtime: " + setting + ": expected"),
+              std::string::npos)
+        << refused.err;
     const std::string last = refused.err.substr(refused.err.rfind("curvefold:"));
     EXPECT_EQ(std::count(last.begin(), last.end(), '\n'), 1) << refused.err;
+    EXPECT_NE(last.find("the OpenXR runtime was found but refused to start"), std::string::npos)
+        << refused.err;
+    EXPECT_EQ(last.find("no OpenXR runtime"), std::string::npos) << refused.err;
   }
   // Without --hands, the same runtime folds with its controllers.
   const CommandResult plain = run("xr " + input + " --headless --autosave p.json",

@@ -26,6 +26,8 @@
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -89,9 +91,8 @@ void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D exte
 
 void runDesigner(const DesignerOptions& options) {
   unsigned width = 1280, height = 720;
-  if (std::sscanf(options.size.c_str(), "%ux%u", &width, &height) != 2 || width < 64 ||
-      height < 64 || width > 8192 || height > 8192)
-    throw UsageError("--size: expected WxH from 64 to 8192, got '" + options.size + "'");
+  if (!readSize(options.size, 64u, 8192u, width, height))
+    throw UsageError("--size: expected WxH from 64 to 8192, got " + quotedExcerpt(options.size));
   const std::string autosavePath =
       options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
   Design design;

@@ -1,3 +1,4 @@
+#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 
 #include <algorithm>
@@ -123,8 +124,8 @@ class Parser {
     double value = 0.0;
     const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (error != std::errc() || end != digits.data() + digits.size() || digits.empty())
-      fail("malformed number '" + std::string(token) + "'");
-    if (!std::isfinite(value)) fail("non-finite coordinate '" + std::string(token) + "'");
+      fail("malformed number " + quotedExcerpt(token));
+    if (!std::isfinite(value)) fail("non-finite coordinate " + quotedExcerpt(token));
     return value;
   }
 
@@ -133,11 +134,11 @@ class Parser {
     long value = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (error != std::errc() || end != token.data() + token.size() || token.empty())
-      fail(std::string("malformed ") + what + " index '" + std::string(token) + "'");
+      fail(std::string("malformed ") + what + " index " + quotedExcerpt(token));
     if (value == 0) fail(std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
     const long resolved = value > 0 ? value - 1 : static_cast<long>(count) + value;
     if (resolved < 0 || resolved >= static_cast<long>(count))
-      fail(std::string(what) + " index " + std::string(token) + " is out of range (" +
+      fail(std::string(what) + " index " + quotedExcerpt(token, 24) + " is out of range (" +
            std::to_string(count) + " defined so far)");
     return resolved;
   }

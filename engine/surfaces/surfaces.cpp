@@ -1,4 +1,5 @@
 // The surface catalog, parameter checking, and the flat named outlines.
+#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 #include <algorithm>
@@ -273,7 +274,7 @@ Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
   if (entry == catalog.end()) {
     std::string known;
     for (const CatalogEntry& e : catalog) known += (known.empty() ? "" : ", ") + e.info.name;
-    throw SurfaceError("unknown surface '" + name + "' (known: " + known + ")");
+    throw SurfaceError("unknown surface " + quotedExcerpt(name) + " (known: " + known + ")");
   }
   const SurfaceInfo& info = entry->info;
   for (const auto& override : overrides) {
@@ -283,8 +284,8 @@ Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
       std::string known;
       for (const SurfaceParameter& p : info.parameters)
         known += (known.empty() ? "" : ", ") + p.name;
-      throw SurfaceError("surface '" + name + "' has no parameter '" + key +
-                         "' (parameters: " + known + ")");
+      throw SurfaceError("surface '" + name + "' has no parameter " + quotedExcerpt(key) +
+                         " (parameters: " + known + ")");
     }
   }
   SurfaceParameters values;

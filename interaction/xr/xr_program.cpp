@@ -123,8 +123,13 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics)
   info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
   info.enabledExtensionCount = static_cast<std::uint32_t>(names.size());
   info.enabledExtensionNames = names.data();
+  // The runtime was found (it listed its extensions): a refusal now is the runtime's, not a
+  // missing one, and what to do is in the message it printed.
   const XrResult created = xrCreateInstance(&info, &instance_);
-  if (isNoRuntime(created)) throw XrError(kNoXrRuntime, created);
+  if (isNoRuntime(created))
+    throw XrError("the OpenXR runtime was found but refused to start (" + xrResultName(created) +
+                      "); its own message, if it printed one, says why",
+                  created);
   CHECK_XR(created);
 
   XrInstanceProperties properties{XR_TYPE_INSTANCE_PROPERTIES};

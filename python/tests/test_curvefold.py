@@ -199,9 +199,9 @@ def test_load_and_from_obj(tmp_path):
 def test_bad_input_is_a_value_error_with_the_one_line_message(tmp_path):
     with pytest.raises(ValueError, match="parameter 'radius'"):
         curvefold.Design.new("cylinder", radius=-1)
-    with pytest.raises(ValueError, match="unknown surface 'teapot'"):
+    with pytest.raises(ValueError, match='unknown surface "teapot"'):
         curvefold.Design.new("teapot")
-    with pytest.raises(ValueError, match="no parameter 'points'"):
+    with pytest.raises(ValueError, match='no parameter "points"'):
         curvefold.Design.new("cylinder", points=5)
     with pytest.raises(ValueError, match="rotational:7"):
         curvefold.Design.new("cylinder", symmetry="rotational:7:x")

@@ -1,6 +1,5 @@
 #include "sim_input/xr_runtime/sim_user.hpp"
 
-#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +13,7 @@
 #include "interaction/xr_controls.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/simulated_hand.hpp"
+#include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
 
 namespace curvefold::simxr {
@@ -23,15 +23,6 @@ namespace {
 std::string env(const char* name) {
   const char* value = std::getenv(name);
   return value ? value : "";
-}
-
-// The whole text as a decimal number: from_chars takes no sign, space or "0x" that sscanf
-// would, and says when a value does not fit.
-template <typename Number>
-bool readWhole(const std::string& text, Number& value) {
-  if (text.empty() || text[0] == '+' || text[0] == '-') return false;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return error == std::errc() && end == text.data() + text.size();
 }
 
 }  // namespace
@@ -62,23 +53,21 @@ SimConfig SimConfig::fromEnvironment() {
   config.hands = env("CURVEFOLD_SIM_HANDS") == "1";
   if (const std::string jitter = env("CURVEFOLD_SIM_JITTER"); !jitter.empty()) {
     double mm = -1.0;
-    if (!readWhole(jitter, mm) || !(mm >= 0.0 && mm <= 50.0))
+    if (!readDecimal(jitter, mm) || !(mm >= 0.0 && mm <= 50.0))
       throw std::runtime_error("CURVEFOLD_SIM_JITTER: expected millimetres from 0 to 50, got " +
                                quotedExcerpt(jitter));
     config.jitter = mm * 1e-3;
   }
   if (const std::string seed = env("CURVEFOLD_SIM_SEED"); !seed.empty()) {
     std::uint64_t value = 0;
-    if (!readWhole(seed, value))
+    if (!readDecimal(seed, value))
       throw std::runtime_error("CURVEFOLD_SIM_SEED: expected a whole number from 0 to 2^64 - 1, got " +
                                quotedExcerpt(seed));
     config.seed = value;
   }
   if (const std::string size = env("CURVEFOLD_SIM_VIEW_SIZE"); !size.empty()) {
     unsigned w = 0, h = 0;
-    const std::size_t x = size.find('x');
-    if (x == std::string::npos || !readWhole(size.substr(0, x), w) ||
-        !readWhole(size.substr(x + 1), h) || w < 16 || h < 16 || w > 4096 || h > 4096)
+    if (!readSize(size, 16u, 4096u, w, h))
       throw std::runtime_error("CURVEFOLD_SIM_VIEW_SIZE: expected WxH from 16 to 4096, got " +
                                quotedExcerpt(size));
     config.viewWidth = w;
@@ -88,7 +77,7 @@ SimConfig SimConfig::fromEnvironment() {
   for (std::string item; std::getline(events, item, ',');) {
     const auto colon = item.find(':');
     std::size_t frame = 0;
-    if (colon == std::string::npos || !readWhole(item.substr(0, colon), frame))
+    if (colon == std::string::npos || !readDecimal(item.substr(0, colon), frame))
       throw std::runtime_error("CURVEFOLD_SIM_EVENTS: expected FRAME:EVENT, got " +
                                quotedExcerpt(item));
     const std::string event = item.substr(colon + 1);
