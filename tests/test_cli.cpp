@@ -178,6 +178,37 @@ TEST_F(Cli, TargetAtTheGrabbedPointAddsNoFold) {
   EXPECT_EQ(nlohmann::json::parse(slurp(path("b.curvefold.json")))["folds"].size(), 0u);
 }
 
+// Issue 29, 4: loose forms are refused (an empty symmetry was read as none, "0x3" as 3 mm, a
+// sign or a space passed), and a long or multi-line value is quoted by a short excerpt, so every
+// refusal stays one short line.
+TEST_F(Cli, LooseValuesAreRefusedAndQuotedShort) {
+  const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
+  const fs::path out = path("x.curvefold.json");
+  const std::string o = " -o " + out.string();
+  expectFailure("new cylinder --symmetry ''" + o, "--symmetry \"\": expected mirror:x|y|z", out);
+  expectFailure("new cylinder --symmetry rotational:+6" + o, "the order must be a whole number",
+                out);
+  expectFailure("new cylinder --symmetry 'rotational: 6'" + o, "the order must be a whole number",
+                out);
+  expectFailure("new cylinder --symmetry \"$(printf 'rotational:6\\nx')\"" + o,
+                "--symmetry \"rotational:6\\nx\"", out);
+  expectFailure("export " + design + " --cut-svg " + path("c.svg").string() + " --perforate 0x3,1",
+                "--perforate: expected CUT,GAP", path("c.svg"));
+  expectFailure("export " + design + " --pdf " + path("c.pdf").string() +
+                    " --paper \"$(printf 'a4\\nzz')\"",
+                "--paper: a4\\nzz not in", path("c.pdf"));
+  expectFailure("fold " + design + " --vertex-near 0x1,0,0 --to 0,0,1" + o, "--vertex-near", out);
+  for (const char* option : {"--symmetry rotational:", "--paper "}) {
+    const CommandResult r =
+        run((std::string(option).starts_with("--paper") ? "export " + design + " --pdf c.pdf "
+                                                         : "new cylinder -o x.json ") +
+            option + "$(printf '%0100000d' 7)");
+    EXPECT_NE(r.exitCode, 0) << option;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << option;
+    EXPECT_LT(r.err.size(), 300u) << r.err.substr(0, 400);
+  }
+}
+
 TEST_F(Cli, BadSurfaceParametersAreRefused) {
   const fs::path out = path("x.curvefold.json");
   const std::string o = " -o " + out.string();

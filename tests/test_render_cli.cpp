@@ -130,9 +130,10 @@ TEST_F(RenderCli, RenderToStandardOutputIsThePngAlone) {
 TEST_F(RenderCli, RenderRefusesBadInputWithOneLine) {
   const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
   const std::string png = " --png " + path("out.png").string();
-  expectFailure("render " + recording + png + " --view sideways", "unknown view 'sideways'");
+  expectFailure("render " + recording + png + " --view sideways", "unknown view \"sideways\"");
   expectFailure("render " + recording + png + " --size 0x0", "--size");
   expectFailure("render " + recording + png + " --size 640", "--size");
+  expectFailure("render " + recording + png + " --size +64x48", "--size");
   expectFailure("render " + path("missing.curvefold.json").string() + png, "missing");
   // A target beside it (issue 27): unreadable, with the crease pattern's panel, no room.
   const std::string target =
