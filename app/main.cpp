@@ -63,7 +63,8 @@ int main(int argc, char** argv) {
     std::string command;
     for (int i = 1; i < argc && command.size() < 120; ++i) command += std::string(" ") + argv[i];
     if (command.size() > 120) command = command.substr(0, 117) + "...";
-    std::cerr << "curvefold: error: out of memory running `curvefold" << command << "`\n";
+    std::cerr << "curvefold: error: out of memory running `curvefold" << command
+              << "`: free memory, or use a coarser design (a lower --resolution)\n";
     return 1;
   } catch (const std::exception& e) {
     // Every failure is one line naming the problem; nothing half-written is left behind because

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -221,6 +222,9 @@ bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture) {
     checkValidation(renderer.context());
     picture = {image.width, image.height, image.pixels};
     return true;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "curvefold: the PDF goes without the picture of the folded form: out of memory\n";
+    return false;
   } catch (const std::exception& e) {
     std::cerr << "curvefold: the PDF goes without the picture of the folded form: " << e.what()
               << "\n";

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <new>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -136,6 +137,30 @@ TEST_F(OutputFiles, AnOutputThatIsAFolderLeavesEveryOtherAsItWas) {
   EXPECT_EQ(contentOf(dir() / "a.svg"), "old svg");
   EXPECT_TRUE(fs::is_directory(dir() / "adir"));
   EXPECT_EQ(entries(), (std::vector<std::string>{"a.svg", "adir"}));
+}
+
+// Issue 29, 2: a device that fails (/dev/full) is written before any file is committed, so the
+// files stay as they were.
+TEST_F(OutputFiles, AFailingDeviceLeavesEveryFileAsItWas) {
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  put(dir() / "a.svg", "old svg");
+  OutputSet outputs;
+  outputs.add(dir() / "a.svg", [](const fs::path& at) { writeFileAtomically(at, "new svg"); });
+  outputs.add("/dev/full", [](const fs::path& at) { writeFileAtomically(at, "new obj"); });
+  EXPECT_THROW(outputs.write(), FileError);
+  EXPECT_EQ(contentOf(dir() / "a.svg"), "old svg");
+  EXPECT_EQ(entries(), std::vector<std::string>{"a.svg"});
+}
+
+// Issue 29, 1: running out of memory in a writer is not the file's fault: it reaches the command
+// as std::bad_alloc (which says so), not as a FileError reading "std::bad_alloc".
+TEST_F(OutputFiles, OutOfMemoryInAWriterIsNotAFileError) {
+  put(dir() / "a.svg", "old svg");
+  OutputSet outputs;
+  outputs.add(dir() / "a.svg", [](const fs::path&) { throw std::bad_alloc(); });
+  EXPECT_THROW(outputs.write(), std::bad_alloc);
+  EXPECT_EQ(contentOf(dir() / "a.svg"), "old svg");
+  EXPECT_EQ(entries(), std::vector<std::string>{"a.svg"});
 }
 
 // Issue 29, 2: two outputs naming one file (also through "." or a symbolic link) are refused before

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <exception>
+#include <new>
 #include <string>
 #include <system_error>
 
@@ -69,6 +70,8 @@ void OutputSet::write(const fs::path& folder) {
   auto run = [](const Output& output, const fs::path& at) {
     try {
       output.writer(at);
+    } catch (const std::bad_alloc&) {
+      throw;  // not the file's fault: the command says what ran out
     } catch (const std::exception& e) {
       // The writers name the staging file; the user knows the target.
       std::string message = e.what();
@@ -94,6 +97,11 @@ void OutputSet::write(const fs::path& folder) {
       staged.push_back({&output, target, stagingPathFor(target), false});
       run(output, staged.back().stage);
     }
+    // What cannot be staged (a device, a FIFO, standard output) is written once every file is
+    // staged and before any is committed: a device that fails (/dev/full) leaves every file as
+    // it was.
+    for (const Staged& entry : staged)
+      if (entry.inPlace) run(*entry.output, entry.target);
     for (Staged& entry : staged) {
       if (entry.inPlace) continue;
       keepPermissions(entry.target, entry.stage);
@@ -107,8 +115,6 @@ void OutputSet::write(const fs::path& folder) {
     discard();
     throw;
   }
-  for (const Staged& entry : staged)
-    if (entry.inPlace) run(*entry.output, entry.target);
 }
 
 }  // namespace curvefold

@@ -28,9 +28,10 @@ class OutputSet {
   void checkWritable() const;
 
   // Creates `folder` first when it is given and missing (and removes it again on failure), checks
-  // every target (checkWritable), writes each to its staging name, then renames them all. Throws
-  // FileError naming the target, never the staging name; on failure no target has changed (but
-  // for a device written in place, which goes last).
+  // every target (checkWritable), writes each to its staging name, writes what cannot be staged
+  // (a device, a FIFO, standard output) in place, then renames them all. Throws FileError naming
+  // the target, never the staging name, and std::bad_alloc as it is; on failure no file target has
+  // changed (a device written in place may hold part of its output).
   void write(const std::filesystem::path& folder = {});
 
  private:
