@@ -108,6 +108,10 @@ class ReplayFrameWriter {
   ReplayFrameWriter(fs::path dir, std::size_t every, RenderSize size, bool panel)
       : dir_(std::move(dir)), every_(every), panel_(panel) {
     if (dir_.empty()) throw UsageError("--frames: needs a folder");
+    // Refused before any work: found at commit, the replay's other outputs were already written.
+    std::error_code error;
+    if (fs::exists(dir_, error) && !fs::is_directory(dir_, error))
+      throw UsageError("--frames: " + dir_.string() + " is a file; name a folder");
     stage_ = stagingPathFor(dir_.filename().empty() ? dir_.parent_path() : dir_);
     if (every_ == 0) throw UsageError("--every: must be at least 1");
     HeadlessOptions options;
@@ -125,6 +129,8 @@ class ReplayFrameWriter {
   std::size_t write(const Recording& recording) {
     std::error_code error;
     if (!stage_.parent_path().empty()) fs::create_directories(stage_.parent_path(), error);
+    // A replay killed while rendering left its staging folder; its process is gone.
+    removeStaleTemporaries(dir_.filename().empty() ? dir_.parent_path() : dir_);
     fs::remove_all(stage_, error);
     if (!error) fs::create_directory(stage_, error);
     if (error) throw FileError("cannot create " + dir_.string() + ": " + error.message());

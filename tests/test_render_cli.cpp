@@ -19,6 +19,14 @@ using curvefold::testing::slurp;
 
 namespace {
 
+// A process id that no process has now: a child that has exited and been waited for.
+pid_t deadProcessId() {
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  waitpid(child, nullptr, 0);
+  return child;
+}
+
 const fs::path kRecordings = fs::path(CURVEFOLD_TEST_DATA) / "recordings";
 
 // Width and height from a PNG's IHDR chunk, or {0, 0} when it is not a PNG.
@@ -214,6 +222,31 @@ TEST_F(RenderCli, FailingFramesLeaveTheOutputsAsTheyWere) {
     EXPECT_EQ(entry.path().filename().string().find("staged"), std::string::npos) << entry.path();
 }
 
+// Issue 29, 2: `--frames FILE` is refused before anything is written (it once failed after the
+// five outputs were in place), and the staging folder of a replay that was killed while rendering
+// is removed by the next replay into the same folder.
+TEST_F(RenderCli, FramesIntoAFileAreRefusedAndAKilledReplaysStagingIsCleared) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  std::ofstream(path("fr")) << "a file";
+  const CommandResult r = run("replay " + recording + " --out " + path("rp").string() +
+                              " --frames " + path("fr").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("--frames: " + path("fr").string() + " is a file"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(path("rp")));
+
+  const fs::path stale = path(".frames.staged-" + std::to_string(deadProcessId()));
+  fs::create_directory(stale);
+  std::ofstream(stale / "frame_000000.png") << "from a killed replay";
+  ASSERT_EQ(run("replay " + recording + " --out " + path("rp").string() + " --frames " +
+                path("frames").string() + " --every 50 --size 32x32")
+                .exitCode,
+            0);
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(path("frames") / "frame_000000.png"));
+}
+
 // The number of images in a GIF and its logical screen size, read from its blocks; {0, 0, 0} when
 // it is not a whole GIF (no trailer).
 struct GifFacts {
@@ -274,6 +307,21 @@ TEST_F(RenderCli, MakeAnimationWritesAGifOfTheReplay) {
   EXPECT_GE(gif.images, 2u);
   EXPECT_EQ(gif.width, 560u);
   EXPECT_EQ(gif.height, 315u);
+
+  // Issue 29, 2: a folder as the target is refused (it once exited 0 leaving DIR/DIR.XXXXXX), and
+  // what a killed run left beside its target is removed by the next run.
+  fs::create_directory(path("folder.gif"));
+  const CommandResult folder = makeAnimation(recording, "folder.gif");
+  EXPECT_NE(folder.exitCode, 0);
+  EXPECT_EQ(std::count(folder.err.begin(), folder.err.end(), '\n'), 1) << folder.err;
+  EXPECT_NE(folder.err.find("folder.gif is a folder"), std::string::npos) << folder.err;
+  EXPECT_TRUE(fs::is_empty(path("folder.gif")));
+  const std::string dead = std::to_string(deadProcessId());
+  fs::create_directories(path(".session.gif.work-" + dead) / "frames");
+  std::ofstream(path(".session.gif.part-" + dead)) << "half a GIF";
+  ASSERT_EQ(makeAnimation(recording, "session.gif").exitCode, 0);
+  EXPECT_FALSE(fs::exists(path(".session.gif.work-" + dead)));
+  EXPECT_FALSE(fs::exists(path(".session.gif.part-" + dead)));
 
   const CommandResult bad = makeAnimation(path("missing.jsonl").string(), "bad.gif");
   EXPECT_NE(bad.exitCode, 0);

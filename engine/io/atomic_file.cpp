@@ -218,7 +218,10 @@ void removeStaleTemporaries(const std::filesystem::path& resolvedPath) {
   }
   const auto stale = entry->second.find(name);
   if (stale == entry->second.end()) return;
-  for (const std::filesystem::path& file : stale->second) ::unlink(file.c_str());
+  for (const std::filesystem::path& file : stale->second) {
+    std::error_code ignored;
+    std::filesystem::remove_all(file, ignored);  // a link itself, never what it points to
+  }
   entry->second.erase(stale);
 }
 

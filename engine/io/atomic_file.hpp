@@ -42,8 +42,9 @@ std::filesystem::path stagingPathFor(const std::filesystem::path& resolvedPath);
 // Gives `staged` the permission bits of an existing regular `target` (so a rename over it keeps
 // them); nothing when target does not exist.
 void keepPermissions(const std::filesystem::path& target, const std::filesystem::path& staged);
-// Removes ".NAME.tmp-PID-N" and ".NAME.staged-PID" files next to resolvedPath whose process is
-// gone. Called by every write; the directory is listed once per process.
+// Removes ".NAME.tmp-PID-N" and ".NAME.staged-PID" files (and staged folders, as a replay's
+// frames are staged) next to resolvedPath whose process is gone. Called by every write; the
+// directory is listed once per process.
 void removeStaleTemporaries(const std::filesystem::path& resolvedPath);
 
 }  // namespace curvefold
