@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <sstream>
 
@@ -101,13 +102,25 @@ void GestureRecorder::aimAtPaper() {
   if (frame_.pointHand.aim) frame_.pointHand.aim = kAimDown;
 }
 
+namespace {
+
+std::string tooManyFrames(std::size_t maxFrames) {
+  return "the script makes more than " + std::to_string(maxFrames) + " frames (" +
+         std::to_string(maxFrames / 90 / 60) + " minutes at 90 Hz); split it or lower its rate";
+}
+
+// The frames a timed piece of `seconds` makes at `rate` (every piece makes at least one).
+double framesOf(double seconds, double rate) {
+  return std::max(1.0, std::round(seconds * rate));
+}
+
+}  // namespace
+
 int GestureRecorder::stepsFor(double seconds) const {
   // Refused before any frame is made, so that a script's cost is bounded by its limits.
-  const double steps = std::max(1.0, std::round(seconds * recording_.header.rate));
+  const double steps = framesOf(seconds, recording_.header.rate);
   if (static_cast<double>(frameCount_) + steps + 2.0 > static_cast<double>(maxFrames_))
-    throw GestureError("the script makes more than " + std::to_string(maxFrames_) + " frames (" +
-                       std::to_string(maxFrames_ / 90 / 60) +
-                       " minutes at 90 Hz); split it or lower its rate");
+    throw GestureError(tooManyFrames(maxFrames_));
   return static_cast<int>(steps);
 }
 
@@ -388,6 +401,37 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
       for (std::size_t k = 0; k < recent->size(); ++k)
         header.studio->recent.push_back(
             reader.string((*recent)[k], JsonReader::item("studio.recent", k)));
+    }
+  }
+
+  // The frames each gesture makes at least (its duration at the rate; a drag adds its approach),
+  // summed before any frame is made: a script far over the limit (200 waits of 600 s) is refused
+  // at once, not after generating a million frames. Values out of range are the pass below's.
+  const nlohmann::json& all = reader.array(reader.member(document, "gestures", ""), "gestures");
+  double leastFrames = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (!all[i].is_object() || all[i].size() != 1) continue;
+    const std::string& kind = all[i].begin().key();
+    const nlohmann::json& value = all[i].begin().value();
+    static const std::map<std::string, double, std::less<>> kTimed = {
+        {"turn_sheet", 0.5}, {"move_sheet", 0.5}, {"scale_sheet", 0.8},
+        {"sheet_hand", 0.5}, {"drag", 1.0},       {"point_at", 0.5}};
+    double seconds = 0.0;
+    if (kind == "wait" && value.is_number()) {
+      seconds = value.get<double>();
+    } else if (const auto timed = kTimed.find(kind); timed != kTimed.end()) {
+      seconds = timed->second;
+      if (value.is_object() && value.contains("duration") && value["duration"].is_number())
+        seconds = value["duration"].get<double>();
+    } else {
+      continue;
+    }
+    if (!(seconds >= 0.0 && seconds <= kMaxGestureSeconds)) continue;
+    leastFrames += framesOf(seconds, header.rate);
+    if (leastFrames + 2.0 > static_cast<double>(maxFrames)) {
+      const std::string kindText = kind.size() <= kJsonExcerptLength ? kind : quotedExcerpt(kind);
+      reader.fail("gesture " + std::to_string(i + 1) + " (" + kindText + ")",
+                  tooManyFrames(maxFrames));
     }
   }
 

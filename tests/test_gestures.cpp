@@ -315,6 +315,15 @@ TEST(Gestures, BadScriptsNameTheProblem) {
     waits += R"({"wait":600})";  // appended piece by piece: GCC 12's -Wrestrict on "," + string
   }
   expectError(waits + "]}", "gesture 28 (wait): the script makes more than 1000000 frames");
+  // Issue 29, 1: refused before any frame is made (it once generated frames for 10-35 s first).
+  {
+    const fs::path file = dir / "long.gesture.json";
+    std::ofstream(file) << waits + "]}";
+    std::size_t made = 0;
+    EXPECT_THROW(streamGestureScript(file, nullptr, [&](const InputFrame&) { ++made; }),
+                 GestureError);
+    EXPECT_EQ(made, 0u);
+  }
   // Two hands scaling the sheet (issue 14): a factor that is not a number or leaves the view
   // scale's range is named.
   expectError(head + R"("gestures":[{"scale_sheet":{"by":"big"}}]})",
