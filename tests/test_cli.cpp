@@ -326,6 +326,55 @@ TEST_F(Cli, FoldsThroughTheSheetCacheMatchTheReplay) {
             0);
 }
 
+// Issue 29, 1: the cache holds at most its budget in bytes (80 MB entries once piled up to 1.3
+// GB), and a FIFO in an entry's place is neither opened nor written through (open() blocked).
+TEST_F(Cli, TheSheetCacheKeepsToItsBudgetAndOpensOnlyFiles) {
+  const std::string design = newDesign("half_cylinder --resolution 24", "a.curvefold.json");
+  const std::vector<std::string> folds = {"--vertex-near 0.05,0.1,0 --to 0.02,0.06,0.05",
+                                          "--vertex-near -0.05,-0.1,0 --to -0.02,-0.05,0.06",
+                                          "--vertex-near 0,0.1,0.05 --to 0.01,0.07,0.02"};
+  auto cacheEntries = [&] {
+    std::vector<fs::path> entries;
+    for (const auto& entry : fs::directory_iterator(cacheDir()))
+      if (entry.path().extension() == ".sheet") entries.push_back(entry.path());
+    return entries;
+  };
+  ASSERT_EQ(run("fold " + design + " " + folds[0] + " -o " + path("b.json").string()).exitCode, 0);
+  ASSERT_FALSE(cacheEntries().empty());
+  const std::uintmax_t entrySize = fs::file_size(cacheEntries().front());
+  for (const fs::path& entry : cacheEntries()) fs::remove(entry);
+  // Room for two entries: after three more folds, two remain, together within the budget.
+  const std::string budget = "CURVEFOLD_CACHE_MAX_BYTES=" + std::to_string(entrySize * 5 / 2);
+  fs::copy_file(design, path("c.json"));
+  for (const std::string& fold : folds)
+    ASSERT_EQ(run("fold " + path("c.json").string() + " " + fold + " -o " + path("c.json").string(),
+                  budget)
+                  .exitCode,
+              0);
+  std::uintmax_t total = 0;
+  for (const fs::path& entry : cacheEntries()) total += fs::file_size(entry);
+  EXPECT_EQ(cacheEntries().size(), 2u);
+  EXPECT_LE(total, entrySize * 5 / 2);
+  // A budget smaller than one entry keeps none.
+  for (const fs::path& entry : cacheEntries()) fs::remove(entry);
+  ASSERT_EQ(run("fold " + design + " " + folds[0] + " -o " + path("d.json").string(),
+                "CURVEFOLD_CACHE_MAX_BYTES=1000")
+                .exitCode,
+            0);
+  EXPECT_TRUE(cacheEntries().empty());
+  // Each entry the folds meet replaced by a FIFO: the folds finish (bounded by `timeout`), with
+  // the design a replay gives.
+  ASSERT_EQ(run("fold " + design + " " + folds[0] + " -o " + path("e.json").string()).exitCode, 0);
+  for (const fs::path& entry : cacheEntries()) {
+    fs::remove(entry);
+    ASSERT_EQ(mkfifo(entry.c_str(), 0600), 0);
+  }
+  const CommandResult r = run("fold " + design + " " + folds[0] + " -o " + path("f.json").string(),
+                              "timeout 60");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(slurp(path("f.json")), slurp(path("e.json")));
+}
+
 // Issue 13, D14: a drag of 1e-10 to 1e-9 m off a flat star put its bisector within the on-plane
 // tolerance of the whole sheet and creased it everywhere. A drag below the shortest fold is none.
 TEST_F(Cli, SubToleranceDragAddsNoFold) {

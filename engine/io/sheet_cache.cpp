@@ -11,6 +11,7 @@
 #include <fstream>
 #include <vector>
 
+#include "engine/text/decimal.hpp"
 #include "engine/io/atomic_file.hpp"
 
 namespace curvefold {
@@ -96,12 +97,25 @@ std::filesystem::path sheetCacheDirectory() {
   return error ? std::filesystem::path() : dir;
 }
 
+std::uint64_t sheetCacheBudget() {
+  std::uint64_t budget = kSheetCacheBytes;
+  if (const char* own = std::getenv("CURVEFOLD_CACHE_MAX_BYTES"); own && *own)
+    if (std::uint64_t value = 0; readDecimal(own, value)) budget = value;
+  return budget;
+}
+
 std::optional<Sheet> loadCachedSheet(const Design& design) {
   try {
     const std::filesystem::path dir = sheetCacheDirectory();
     if (dir.empty()) return std::nullopt;
     const std::string key = keyOf(design);
-    std::ifstream file(dir / (key + ".sheet"), std::ios::binary);
+    const std::filesystem::path entry = dir / (key + ".sheet");
+    // Never opened unless it is a regular file of a size the cache keeps.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(entry, error)) ||
+        std::filesystem::file_size(entry, error) > sheetCacheBudget() || error)
+      return std::nullopt;
+    std::ifstream file(entry, std::ios::binary);
     if (!file) return std::nullopt;
     const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     if (bytes.size() < sizeof kMagic + 32 + 8) return std::nullopt;
@@ -158,16 +172,42 @@ void storeCachedSheet(const Design& design, const Sheet& sheet) noexcept {
     put(bytes, sheet.tags.data(), sheet.tags.size());
     const std::uint64_t sum = checksum(bytes);
     put(bytes, &sum, 1);
-    writeFileAtomically(dir / (key + ".sheet"), bytes);
-    // Keep the newest few.
-    std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> entries;
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
-      if (entry.path().extension() == ".sheet")
-        entries.emplace_back(entry.last_write_time(), entry.path());
-    if (entries.size() <= kSheetCacheEntries) return;
-    std::sort(entries.begin(), entries.end());
-    for (std::size_t i = 0; i + kSheetCacheEntries < entries.size(); ++i)
-      std::filesystem::remove(entries[i].second);
+    const std::uint64_t budget = sheetCacheBudget();
+    if (bytes.size() > budget) return;
+    // Something else in an entry's place (a FIFO, a link) is replaced, never written through.
+    const std::filesystem::path target = dir / (key + ".sheet");
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::symlink_status(target, error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+      std::filesystem::remove(target, error);
+    writeFileAtomically(target, bytes);
+    // Keep the newest few that fit the budget together; anything else named *.sheet goes.
+    struct Entry {
+      std::filesystem::file_time_type time;
+      std::uint64_t size;
+      std::filesystem::path path;
+    };
+    std::vector<Entry> entries;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() != ".sheet") continue;
+      std::error_code error;
+      const bool regular = entry.is_regular_file(error) && !entry.is_symlink(error);
+      entries.push_back({entry.last_write_time(error), regular ? entry.file_size(error) : budget + 1,
+                         entry.path()});
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const Entry& a, const Entry& b) { return a.time > b.time; });
+    std::uint64_t kept = 0;
+    std::size_t count = 0;
+    for (const Entry& entry : entries) {
+      if (count < kSheetCacheEntries && entry.size <= budget - std::min(kept, budget)) {
+        kept += entry.size;
+        ++count;
+        continue;
+      }
+      std::error_code ignored;
+      std::filesystem::remove(entry.path, ignored);
+    }
   } catch (...) {
     // A shortcut that could not be kept costs a replay next time, nothing else.
   }

@@ -7,11 +7,14 @@
 // never used by another build, whose folds might differ. Each entry carries a checksum of its
 // bytes: a stale, truncated or edited entry is a miss, never trusted. Entries live in
 // $CURVEFOLD_CACHE_DIR, else $XDG_CACHE_HOME/curvefold, else ~/.cache/curvefold; the oldest go
-// when there are more than kSheetCacheEntries. The cache is only ever a shortcut: every failure
-// to read or write it is silent and costs the replay.
+// when there are more than kSheetCacheEntries or they hold more than kSheetCacheBytes together
+// ($CURVEFOLD_CACHE_MAX_BYTES sets another budget); a sheet larger than the budget is not kept.
+// Only regular files are read (a FIFO put there would block the open). The cache is only ever a
+// shortcut: every failure to read or write it is silent and costs the replay.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,6 +26,11 @@
 namespace curvefold {
 
 inline constexpr std::size_t kSheetCacheEntries = 16;
+// About six sheets of a million triangles (80 MB each).
+inline constexpr std::uint64_t kSheetCacheBytes = std::uint64_t(512) << 20;
+
+// kSheetCacheBytes, or $CURVEFOLD_CACHE_MAX_BYTES when it is a whole number.
+std::uint64_t sheetCacheBudget();
 
 // The folder entries go to, or empty when there is none (no HOME, an unwritable folder).
 std::filesystem::path sheetCacheDirectory();
