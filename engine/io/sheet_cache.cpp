@@ -147,9 +147,7 @@ std::optional<Sheet> loadCachedSheet(const Design& design) {
       for (VertexIndex v : t)
         if (v >= counts[0]) return std::nullopt;
     // Used: the oldest entries are the ones evicted.
-    std::error_code error;
-    std::filesystem::last_write_time(dir / (key + ".sheet"),
-                                     std::filesystem::file_time_type::clock::now(), error);
+    std::filesystem::last_write_time(entry, std::filesystem::file_time_type::clock::now(), error);
     return sheet;
   } catch (...) {
     return std::nullopt;
