@@ -1,11 +1,12 @@
 #include "app/studio_panel.hpp"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <exception>
+#include <stdexcept>
 #include <filesystem>
 #include <utility>
 
@@ -16,32 +17,34 @@
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/utf8.hpp"
 #include "sim_input/player.hpp"
 
 namespace curvefold::cli {
 
 StudioPanel::StudioPanel(bool recording, std::string help, std::string exportBase)
-    : recording_(recording), help_(std::move(help)) {
-  std::strncpy(exportBase_, exportBase.c_str(), sizeof exportBase_ - 1);
+    : recording_(recording), help_(std::move(help)), exportBase_(std::move(exportBase)) {
   resetParameters();
 }
 
 void StudioPanel::setExportBase(const std::string& base) {
-  std::strncpy(exportBase_, base.c_str(), sizeof exportBase_ - 1);
-  exportBase_[sizeof exportBase_ - 1] = '\0';
+  exportBase_ = base;
 }
 
 void StudioPanel::setSavePath(const std::string& path) {
-  std::strncpy(savePath_, path.c_str(), sizeof savePath_ - 1);
-  savePath_[sizeof savePath_ - 1] = '\0';
+  savePath_ = path;
 }
 
 void StudioPanel::setTargetPath(const std::string& path) {
-  std::strncpy(targetPath_, path.c_str(), sizeof targetPath_ - 1);
-  targetPath_[sizeof targetPath_ - 1] = '\0';
+  targetPath_ = path;
 }
 
 void StudioPanel::setRecent(std::vector<std::string> recent) {
+  // Only what a recording can hold: one line of UTF-8 (a recording is JSON), of a path's length.
+  std::erase_if(recent, [](const std::string& path) {
+    return path.empty() || path.size() >= kMaxRecentPathBytes ||
+           path.find('\n') != std::string::npos || !isUtf8(path);
+  });
   if (recent.size() > kMaxRecentDesigns) recent.resize(kMaxRecentDesigns);
   recent_ = std::move(recent);
 }
@@ -195,7 +198,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     ImGui::SameLine();
     if (button("Reset view")) actions.resetView();
   }
-  ImGui::InputText("save as", savePath_, sizeof savePath_);
+  ImGui::InputText("save as", &savePath_);
   item("save as");
   if (button("Save")) {
     const std::string path = savePath_;
@@ -205,10 +208,15 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     });
   }
   if (!recording_) {
-    ImGui::InputText("open", openPath_, sizeof openPath_);
+    ImGui::InputText("open", &openPath_);
     item("open");
     auto open = [&](const std::string& path) {
       guarded("opened " + path, [&] {
+        // A FIFO or a device named here (a recent entry from another machine's recording) would
+        // block the open or never end: only regular files are read.
+        std::error_code error;
+        if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+          throw std::runtime_error("cannot open " + path + ": not a regular file");
         actions.replaceDocument(loadDesign(path), path);
         remember(path, actions);
       });
@@ -228,7 +236,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       }
     }
   }
-  ImGui::InputText("export to", exportBase_, sizeof exportBase_);
+  ImGui::InputText("export to", &exportBase_);
   item("export to");
   const std::string base = exportBase_;
   const Sheet& fixed = doc.session->fixed();
@@ -264,7 +272,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     // The same lines whatever they say (each a single line), so the items keep their places and
     // a recorded session's pointing replays onto the same buttons.
     ImGui::Separator();
-    ImGui::InputText("target", targetPath_, sizeof targetPath_);
+    ImGui::InputText("target", &targetPath_);
     item("target");
     if (button("Load target")) {
       const std::string path = targetPath_;

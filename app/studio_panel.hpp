@@ -101,10 +101,11 @@ class StudioPanel {
   std::string symmetry_ = kNoSymmetry;  // of the new sheet
   std::vector<std::string> symmetryChoices_;
   std::optional<GeneratedSurface> symmetriesFor_;  // the surface symmetryChoices_ are of
-  char savePath_[512] = "design.curvefold.json";
-  char openPath_[512] = "";
-  char exportBase_[512] = "";
-  char targetPath_[512] = "";
+  // Strings, not fixed buffers: a long path is kept whole, never cut.
+  std::string savePath_ = "design.curvefold.json";
+  std::string openPath_;
+  std::string exportBase_;
+  std::string targetPath_;
   std::string message_;
   double maxError_ = 0.0;
   const void* statsSession_ = nullptr;

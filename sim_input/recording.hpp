@@ -43,8 +43,9 @@ inline constexpr int kRecordingVersion = 1;
 // that replay sees exactly the recorded bits. OpenXR's float poses stay well within it.
 inline constexpr double kQuaternionUnitTolerance = 1e-6;
 
-// The most recent designs a studio session lists.
+// The most recent designs a studio session lists, and the longest path it keeps of one.
 inline constexpr std::size_t kMaxRecentDesigns = 8;
+inline constexpr std::size_t kMaxRecentPathBytes = 4096;
 
 // One line naming the file and the line, e.g. "a.jsonl: line 7: sheet.clutch: must lie in [0, 1]".
 // line() is 0 for a problem that is not on a line (a file that cannot be read).

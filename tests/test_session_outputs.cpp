@@ -4,15 +4,19 @@
 // way out saves.
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "app/document.hpp"
+#include "app/recent_designs.hpp"
 #include "app/session_outputs.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "io_test_support.hpp"
@@ -24,6 +28,58 @@ namespace {
 
 namespace fs = std::filesystem;
 using SessionOutputsTest = curvefold::testing::ScratchDirectory;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// Issue 29, 1 and 3: the recent-designs list is read a bounded line at a time (a 300 MB line was
+// held whole before its 4096-byte limit applied), and a path that is not UTF-8 is skipped (it
+// stopped `xr --record` with a JSON exception, a recording being JSON).
+TEST_F(SessionOutputsTest, TheRecentListIsReadBoundedAndKeepsOnlyUtf8) {
+  const char* before = std::getenv("XDG_STATE_HOME");
+  const std::string saved = before ? before : "";
+  setenv("XDG_STATE_HOME", dir().c_str(), 1);
+  fs::create_directories(dir() / "curvefold");
+  {
+    std::ofstream out(dir() / "curvefold" / "recent-designs", std::ios::binary);
+    // Written a megabyte at a time: the test itself must not grow by the line's size.
+    out << "/a/first.curvefold.json\n";
+    const std::string megabyte(1 << 20, 'x');
+    for (int i = 0; i < 64; ++i) out << megabyte;
+    out << "\n"
+        << "/b/caf\xc3\xa9.curvefold.json\n"
+        << "/c/\xff\xfe.curvefold.json\n"
+        << "/d/last.curvefold.json";
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const long peakBefore = usage.ru_maxrss;
+  const std::vector<std::string> recent = loadRecentDesigns();
+  getrusage(RUSAGE_SELF, &usage);
+  EXPECT_EQ(recent, (std::vector<std::string>{"/a/first.curvefold.json",
+                                              "/b/caf\xc3\xa9.curvefold.json",
+                                              "/d/last.curvefold.json"}));
+  if (!kSanitized) {
+    EXPECT_LT(usage.ru_maxrss - peakBefore, 16 * 1024) << "kilobytes";
+  }
+  // A FIFO in the list's place is not opened (the open would block).
+  fs::remove(dir() / "curvefold" / "recent-designs");
+  ASSERT_EQ(mkfifo((dir() / "curvefold" / "recent-designs").c_str(), 0600), 0);
+  EXPECT_TRUE(loadRecentDesigns().empty());
+  if (before)
+    setenv("XDG_STATE_HOME", saved.c_str(), 1);
+  else
+    unsetenv("XDG_STATE_HOME");
+}
 
 RecordingHeader squareHeader() {
   RecordingHeader header;

@@ -2,23 +2,9 @@
 
 #include <vector>
 
+#include "engine/text/utf8.hpp"
+
 namespace curvefold {
-namespace {
-
-// The length of the UTF-8 sequence starting at text[at], or 0 when it is not one.
-std::size_t utf8Length(std::string_view text, std::size_t at) {
-  const auto lead = static_cast<unsigned char>(text[at]);
-  const std::size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
-                             : lead >= 0xE0 && lead <= 0xEF ? 3
-                             : lead >= 0xF0 && lead <= 0xF4 ? 4
-                                                            : 0;
-  if (length == 0 || at + length > text.size()) return 0;
-  for (std::size_t k = 1; k < length; ++k)
-    if ((static_cast<unsigned char>(text[at + k]) & 0xC0) != 0x80) return 0;
-  return length;
-}
-
-}  // namespace
 
 std::string quotedExcerpt(std::string_view text, std::size_t maxLength) {
   static constexpr char kHex[] = "0123456789abcdef";
@@ -44,7 +30,7 @@ std::string quotedExcerpt(std::string_view text, std::size_t maxLength) {
       out += kHex[c & 15];
     } else if (c < 0x80) {
       out += char(c);
-    } else if (const std::size_t length = utf8Length(text, at); length > 0) {
+    } else if (const std::size_t length = utf8SequenceLength(text, at); length > 0) {
       out.append(text.substr(at, length));
       used = length;
     } else {
