@@ -1,6 +1,7 @@
 // The studio panel (issue 14, 1), headless: Dear ImGui runs without a renderer, the test clicks
 // items by their label (where the panel says it drew them) and checks what the panel asked of its
 // host or wrote. The same panel serves the desktop window and the headset.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -115,6 +116,35 @@ TEST_F(StudioPanelTest, ExportsWriteBesideTheExportBaseAndFailuresAreShown) {
   EXPECT_EQ(pictures, 1);
   ASSERT_TRUE(fs::exists(base + ".pdf"));
   EXPECT_GT(fs::file_size(base + ".pdf"), 1000u);
+}
+
+// Issue 29, 3: paths are kept whole (a 512-byte buffer cut a 600-character export path and the
+// files landed under a truncated name).
+TEST_F(StudioPanelTest, ALongExportPathIsKeptWhole) {
+  fs::path folder = dir_;
+  for (int i = 0; i < 6; ++i) folder /= std::string(100, char('a' + i));
+  fs::create_directories(folder);
+  const std::string base = (folder / "made").string();
+  ASSERT_GT(base.size(), 600u);
+  panel_.setExportBase(base);
+  click("SVG");
+  EXPECT_EQ(panel_.message(), "wrote " + base + ".svg");
+  EXPECT_TRUE(fs::exists(base + ".svg"));
+}
+
+// Issue 29, 3: the recent list holds only what a recording can (UTF-8: a recording is JSON, and a
+// path that is not stopped `xr --record`), and an entry that is not a regular file (a FIFO, from
+// another machine's recording) is refused, not opened: the open would block.
+TEST_F(StudioPanelTest, TheRecentListHoldsUtf8AndOpensOnlyFiles) {
+  const std::string fifo = (dir_ / "pipe.curvefold.json").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  panel_.setRecent({fifo, "/x/\xff\xfe.curvefold.json", "/x/caf\xc3\xa9.curvefold.json"});
+  EXPECT_EQ(panel_.recent(),
+            (std::vector<std::string>{fifo, "/x/caf\xc3\xa9.curvefold.json"}));
+  click("Recent designs");
+  click("pipe.curvefold.json");
+  EXPECT_TRUE(replaced_.empty());
+  EXPECT_EQ(panel_.message(), "cannot open " + fifo + ": not a regular file");
 }
 
 // The symmetry list holds what the chosen surface has (the square: none), and a new sheet takes
