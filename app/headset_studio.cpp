@@ -157,6 +157,7 @@ void HeadsetStudio::process(InputFrame& frame, const StudioStats& measured) {
     actions.resetView = [this] { doc_.core->resetView(); };
     actions.writeFile = host_.writeFile;
     actions.recentChanged = host_.recentChanged;
+    actions.failed = host_.failed;
     actions.loadTarget = [this](const std::string& path) { target_.load(path, doc_); };
     actions.suggest = [this] { target_.suggest(doc_); };
     ImGui::NewFrame();

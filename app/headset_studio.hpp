@@ -44,6 +44,8 @@ struct HeadsetStudioHost {
   std::function<void(const std::string& path, const std::function<void(const std::string&)>& write)>
       writeFile;
   std::function<void(const std::vector<std::string>& recent)> recentChanged;
+  // See StudioActions: a panel action failed.
+  std::function<void(const std::string& problem)> failed;
 };
 
 struct HeadsetStudioOptions {

@@ -1,5 +1,7 @@
 #include "app/recent_designs.hpp"
 
+#include "app/state_folder.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -14,11 +16,8 @@ namespace curvefold::cli {
 namespace fs = std::filesystem;
 
 fs::path recentDesignsFile() {
-  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state)
-    return fs::path(state) / "curvefold" / "recent-designs";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".local" / "state" / "curvefold" / "recent-designs";
-  return {};
+  const fs::path folder = stateFolder();
+  return folder.empty() ? folder : folder / "recent-designs";
 }
 
 std::vector<std::string> loadRecentDesigns() {

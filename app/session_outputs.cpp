@@ -2,10 +2,14 @@
 
 #include "engine/io/output_set.hpp"
 
+#include <unistd.h>
+
+#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <system_error>
 
+#include "app/state_folder.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "sim_input/recorder.hpp"
 
@@ -30,7 +34,7 @@ SessionOutputs::~SessionOutputs() {
 }
 
 void SessionOutputs::startRecording(const RecordingHeader& header) {
-  if (recordPath_.empty() || recorder_ || finished_) return;
+  if (recordPath_.empty() || recorder_ || finished_ || stopped_) return;
   recorder_ = std::make_unique<Recorder>(recordPath_, header);
 }
 
@@ -55,18 +59,46 @@ void SessionOutputs::frame(const InputFrame& input, const std::vector<Interactio
   }
 }
 
-bool SessionOutputs::save() noexcept {
+bool SessionOutputs::save(bool last) noexcept {
+  std::string why;
   try {
     saveDesign(designOf_(), autosavePath_);
     unsaved_ = false;
     return true;
   } catch (const std::exception& e) {
-    problems_.push_back(std::string("autosave failed (retried at the next fold): ") + e.what());
-    return false;
+    why = e.what();
   } catch (...) {
-    problems_.push_back("autosave failed: unknown error");
-    return false;
+    why = "unknown error";
   }
+  if (last)
+    rescue(why);
+  else
+    problems_.push_back("autosave failed (retried at the next fold): " + why);
+  return false;
+}
+
+void SessionOutputs::rescue(const std::string& why) noexcept {
+  std::string where;
+  try {
+    const std::filesystem::path folder = stateFolder();
+    if (folder.empty()) throw FileError("no state folder (neither XDG_STATE_HOME nor HOME is set)");
+    std::filesystem::create_directories(folder / "rescued");
+    const std::time_t now = std::time(nullptr);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+    std::string stem = std::filesystem::path(autosavePath_).filename().string();
+    if (const auto dot = stem.find('.'); dot != std::string::npos && dot > 0) stem.resize(dot);
+    const std::filesystem::path rescued =
+        folder / "rescued" / (stem + "-" + stamp + "-" + std::to_string(::getpid()) +
+                              ".curvefold.json");
+    saveDesign(designOf_(), rescued.string());
+    where = "the design is saved to " + rescued.string() + " instead";
+  } catch (const std::exception& e) {
+    where = std::string("the design could not be saved anywhere: ") + e.what();
+  } catch (...) {
+    where = "the design could not be saved anywhere";
+  }
+  problems_.push_back("cannot write the autosave " + autosavePath_ + ": " + why + "; " + where);
 }
 
 void SessionOutputs::switchAutosave(std::string path) noexcept {
@@ -83,6 +115,7 @@ void SessionOutputs::stopRecording(const std::string& why) noexcept {
     // The failure that stopped it is the one to report.
   }
   recorder_.reset();
+  stopped_ = true;
   problems_.push_back("stopped recording to " + recordPath_ + ": " + why +
                       " (the file keeps every whole frame before it; the session goes on)");
 }
@@ -90,7 +123,7 @@ void SessionOutputs::stopRecording(const std::string& why) noexcept {
 bool SessionOutputs::finish(bool saveAlways) noexcept {
   if (finished_) return problems_.empty();
   finished_ = true;
-  const bool saved = !(unsaved_ || saveAlways) || save();
+  const bool saved = !(unsaved_ || saveAlways) || save(/*last=*/true);
   if (recorder_) {
     try {
       recorder_->close();

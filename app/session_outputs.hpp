@@ -4,10 +4,11 @@
 // Neither is created before the session can start (a window, an OpenXR session): a session that
 // never starts leaves no file behind, and its retry is not refused. One output failing stops
 // neither the other nor the session: at a commit point the design is saved first, then the
-// recording's frames are made durable; a recording that cannot be written stops (its file keeps
-// only whole lines) and says so, while folding goes on and the autosave keeps every fold. Every
-// way out of a session (its end, an exception, a lost runtime) goes through finish(), which the
-// destructor calls when nothing else did.
+// recording's frames are made durable; a recording that cannot be written stops for the rest of
+// the session (its file keeps only whole lines) and says so, while folding goes on and the
+// autosave keeps every fold. Every way out of a session (its end, an exception, a lost runtime)
+// goes through finish(), which the destructor calls when nothing else did; when the autosave
+// cannot be written then, the design is rescued into the state folder and the message says where.
 #pragma once
 
 #include <functional>
@@ -42,7 +43,8 @@ class SessionOutputs {
   const std::string& recordPath() const { return recordPath_; }
 
   // Creates the recording with its header, once the session has started (a no-op without
-  // --record, or when it has already started). Throws FileError or RecordingError.
+  // --record, when it has already started, or once it stopped). Throws FileError or
+  // RecordingError.
   void startRecording(const RecordingHeader& header);
 
   // After each processed input frame: records it, and at a commit point (a commit, undo or redo
@@ -57,7 +59,8 @@ class SessionOutputs {
 
   // Saves the design (when a commit point happened since the last good save, or always when
   // saveAlways) and closes the recording. Runs once; never throws. Returns false when the design
-  // could not be saved (problems() says why).
+  // could not be saved at its autosave; the last of problems() says why and where it was rescued
+  // to (stateFolder()/rescued/NAME-TIME.curvefold.json), or that it could not be.
   bool finish(bool saveAlways = false) noexcept;
 
   // What went wrong so far, one line each, oldest first (for the panel and the final report).
@@ -66,13 +69,15 @@ class SessionOutputs {
   std::vector<std::string> takeNewProblems();
 
  private:
-  bool save() noexcept;
+  bool save(bool last = false) noexcept;
+  void rescue(const std::string& why) noexcept;
   void stopRecording(const std::string& why) noexcept;
 
   std::string autosavePath_, recordPath_;
   std::function<Design()> designOf_;
   std::unique_ptr<Recorder> recorder_;
   bool unsaved_ = false;  // a commit point whose design is not on disk yet
+  bool stopped_ = false;  // the recording failed: it is not started again
   bool finished_ = false;
   std::vector<std::string> problems_;
   std::size_t problemsTaken_ = 0;

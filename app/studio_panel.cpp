@@ -111,12 +111,14 @@ std::optional<glm::vec2> StudioPanel::itemCentre(const std::string& label) const
   return found->second;
 }
 
-void StudioPanel::guarded(const std::string& done, const std::function<void()>& action) {
+void StudioPanel::guarded(const StudioActions& actions, const std::string& done,
+                          const std::function<void()>& action) {
   try {
     action();
     message_ = done;
   } catch (const std::exception& e) {
     message_ = e.what();
+    if (actions.failed) actions.failed(message_);
   }
 }
 
@@ -174,7 +176,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       if (create) {
         const GeneratedSurface surface = chosenSurface();
         const std::string symmetry = symmetry_ == kNoSymmetry ? "" : symmetry_;
-        guarded("new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry), [&] {
+        guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry), [&] {
           actions.replaceDocument({surface, {}, symmetry}, surface.generator);
         });
       }
@@ -202,7 +204,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   item("save as");
   if (button("Save")) {
     const std::string path = savePath_;
-    guarded("saved " + path, [&] {
+    guarded(actions, "saved " + path, [&] {
       writeThrough(actions, path, [&](const std::string& to) { saveDesign(doc.design(), to); });
       remember(path, actions);
     });
@@ -211,7 +213,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     ImGui::InputText("open", &openPath_);
     item("open");
     auto open = [&](const std::string& path) {
-      guarded("opened " + path, [&] {
+      guarded(actions, "opened " + path, [&] {
         // A FIFO or a device named here (a recent entry from another machine's recording) would
         // block the open or never end: only regular files are read.
         std::error_code error;
@@ -242,7 +244,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   const Sheet& fixed = doc.session->fixed();
   auto exportAs = [&](const std::string& extension,
                       const std::function<void(const std::string&)>& write) {
-    guarded("wrote " + base + extension, [&] { writeThrough(actions, base + extension, write); });
+    guarded(actions, "wrote " + base + extension, [&] { writeThrough(actions, base + extension, write); });
   };
   if (button("FOLD")) exportAs(".fold", [&](const std::string& to) { writeFold(fixed, to); });
   ImGui::SameLine();
@@ -276,10 +278,10 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     item("target");
     if (button("Load target")) {
       const std::string path = targetPath_;
-      guarded("target " + path, [&] { actions.loadTarget(path); });
+      guarded(actions, "target " + path, [&] { actions.loadTarget(path); });
     }
     ImGui::SameLine();
-    if (button("Suggest")) guarded("", [&] { actions.suggest(); });
+    if (button("Suggest")) guarded(actions, "", [&] { actions.suggest(); });
     ImGui::TextUnformatted(stats.targetLine.c_str());
     ImGui::TextUnformatted(stats.suggestionLine.c_str());
     const bool offered = doc.core->offeredFold() != nullptr;

@@ -43,6 +43,9 @@ struct StudioActions {
   std::function<void()> suggest;
   // Optional: the recent designs changed (a design was saved or opened): the host keeps the list.
   std::function<void(const std::vector<std::string>& recent)> recentChanged;
+  // Optional: an action failed (an export onto a full or read-only disk). The panel shows it;
+  // the host also says it where it outlives the panel (stderr, its summary).
+  std::function<void(const std::string& problem)> failed;
 };
 
 // What the panel shows that the host measures.
@@ -83,7 +86,8 @@ class StudioPanel {
 
  private:
   void item(const char* label);  // records the last item's rectangle under its label
-  void guarded(const std::string& done, const std::function<void()>& action);
+  void guarded(const StudioActions& actions, const std::string& done,
+               const std::function<void()>& action);
   void resetParameters();
   // The catalog surface with the sliders' parameters.
   GeneratedSurface chosenSurface() const;

@@ -155,6 +155,70 @@ TEST_F(SessionOutputsTest, AFullRecordingDiskStopsTheRecordingNotTheSession) {
   EXPECT_LE(fs::file_size(record), 24u * 1024u);
 }
 
+// Issue 29, 3: the host asks for the recording every frame (XrApp does, so the file is made with
+// the first focused frame). Once the disk stopped it, it stays stopped: it was started again the
+// next frame, refused with "the file exists", and that ended the session (3 of 5 folds made).
+TEST_F(SessionOutputsTest, AStoppedRecordingStaysStopped) {
+  const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
+  const Recording input = foldingFrames(5);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{24 * 1024, 24 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
+    try {
+      for (const InputFrame& frame : input.frames) {
+        outputs.startRecording(input.header);
+        doc.core->process(frame);
+        outputs.frame(frame, doc.core->events());
+      }
+    } catch (const std::exception&) {
+      ::_exit(2);  // the session ended
+    }
+    const bool finished = outputs.finish();
+    ::_exit(finished && !outputs.recording() && outputs.problems().size() == 1 &&
+                    doc.session->foldCount() == 5
+                ? 0
+                : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "2: the session ended; 1: folds or problems not as expected";
+  EXPECT_EQ(loadDesign(autosave).folds.size(), 5u);
+}
+
+// Issue 29, 3: an autosave that cannot be written all session long warned at every fold and, at
+// the end, "retried at the next fold" when there was none, and the design was saved nowhere. At
+// the end it is rescued into the state folder, and the last message says where.
+TEST_F(SessionOutputsTest, AnAutosaveThatNeverWorksIsRescuedAtTheEnd) {
+  const char* before = std::getenv("XDG_STATE_HOME");
+  const std::string saved = before ? before : "";
+  setenv("XDG_STATE_HOME", (dir() / "state").c_str(), 1);
+  const fs::path autosave = dir() / "missing" / "a.autosave.curvefold.json";
+  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  SessionOutputs outputs(autosave.string(), "", [&] { return doc.design(); });
+  runSession(doc, outputs, foldingFrames(2));
+  ASSERT_EQ(doc.session->foldCount(), 2u);
+  EXPECT_FALSE(outputs.finish());
+  const std::string last = outputs.problems().back();
+  EXPECT_EQ(last.find("retried"), std::string::npos) << last;
+  const std::string prefix = "the design is saved to ";
+  const std::size_t at = last.find(prefix);
+  ASSERT_NE(at, std::string::npos) << last;
+  const fs::path rescued = last.substr(at + prefix.size(), last.rfind(" instead") - at - prefix.size());
+  EXPECT_EQ(rescued.parent_path(), dir() / "state" / "curvefold" / "rescued");
+  ASSERT_TRUE(fs::exists(rescued)) << last;
+  EXPECT_EQ(loadDesign(rescued).folds.size(), 2u);
+  EXPECT_FALSE(fs::exists(autosave));
+  if (before)
+    setenv("XDG_STATE_HOME", saved.c_str(), 1);
+  else
+    unsetenv("XDG_STATE_HOME");
+}
+
 // C12: `design --resume --record` rewrote the autosave as a flat mesh plus the new fold only. The
 // recording starts from the folded sheet; the design keeps its generator and every fold.
 TEST_F(SessionOutputsTest, AResumedRecordedSessionAppendsToTheDesign) {

@@ -327,6 +327,9 @@ void runDesigner(const DesignerOptions& options) {
         panel.setMessage(std::string("recent designs not kept: ") + e.what());
       }
     };
+    actions.failed = [](const std::string& problem) {
+      std::cerr << "curvefold: warning: " << problem << std::endl;
+    };
     panel.draw(doc, actions, stats, creasePatternPanel);
     ImGui::Render();
 
@@ -350,7 +353,10 @@ void runDesigner(const DesignerOptions& options) {
       stats.dragUpdateMs =
           std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
     outputs.frame(input, doc.core->events());
-    for (const std::string& problem : outputs.takeNewProblems()) panel.setMessage(problem);
+    for (const std::string& problem : outputs.takeNewProblems()) {
+      panel.setMessage(problem);
+      std::cerr << "curvefold: warning: " << problem << std::endl;
+    }
 
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,

@@ -166,6 +166,12 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
           {1200, 800});
       return PdfPicture{image.width, image.height, image.pixels};
     };
+  // A failed export (a full or read-only --export-dir) is said beyond the panel: on stderr at
+  // once and in the summary at the end.
+  host.failed = [this](const std::string& problem) {
+    std::cerr << "curvefold: warning: " << problem << std::endl;
+    summary_.problems.push_back(problem);
+  };
   host.recentChanged = [](const std::vector<std::string>& recent) {
     try {
       saveRecentDesigns(recent);
@@ -215,8 +221,10 @@ void XrApp::processInput(XrTime displayTime) {
   if (input_->usesHands()) ++summary_.handFrames;
   input_->applyHaptics(doc_.core->haptics(), handedness);
   outputs_->frame(input, doc_.core->events());
-  for (const std::string& problem : outputs_->takeNewProblems())
+  for (const std::string& problem : outputs_->takeNewProblems()) {
     std::cerr << "curvefold: warning: " << problem << std::endl;
+    summary_.problems.push_back(problem);
+  }
 }
 
 // The file is made with the first focused frame, so a session that never starts leaves none, the

@@ -60,6 +60,7 @@ struct XrAppSummary {
   bool instanceLost = false;
   bool interrupted = false;  // ended by requestExit (Ctrl+C)
   std::string autosave;      // the last design's (a new sheet from the panel starts another)
+  std::vector<std::string> problems;  // panel actions that failed, and files not kept
 };
 
 class XrApp {

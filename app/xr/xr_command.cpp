@@ -59,6 +59,11 @@ void runXr(const XrAppOptions& options) {
     std::cout << "xr: bare hands drove " << summary.handFrames << " of " << summary.framesProcessed
               << " input frames\n";
   if (summary.interrupted) std::cout << "xr: interrupted; the session was ended cleanly\n";
+  if (!summary.problems.empty())
+    std::cout << "xr: " << summary.problems.size()
+              << (summary.problems.size() == 1 ? " problem" : " problems")
+              << " during the session (warned above), the first: " << summary.problems.front()
+              << "\n";
   if (summary.instanceLost)
     throw XrError("the OpenXR runtime was lost (instance loss); every committed fold is saved in " +
                       summary.autosave,
