@@ -513,6 +513,28 @@ TEST_F(XrApp, AnExportDirThatIsAFileIsOneLine) {
   EXPECT_EQ(slurp(path("taken")), "a file");
 }
 
+// Issue 29, 3: exports that fail in the session (an --export-dir that cannot be made, a full or
+// read-only disk) were said only on the panel: the command exited 0 with nothing on stderr. Each
+// is a warning on stderr, and the summary counts them; the design is still saved.
+TEST_F(XrApp, ExportsThatFailInTheSessionAreSaidOnStderrAndInTheSummary) {
+  std::ofstream(path("file.txt")) << "a file";
+  const std::string input = kExamples + "xr_studio.jsonl";
+  const std::string exports = (path("file.txt") / "exports").string();
+  const CommandResult result =
+      run("xr " + input + " --headless --export-dir " + exports + " --autosave " +
+              path("s.curvefold.json").string(),
+          simulated(input));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.err.find("curvefold: warning: cannot create " + exports), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.out.find(" problems during the session (warned above), the first: cannot "
+                            "create " +
+                            exports),
+            std::string::npos)
+      << result.out;
+  EXPECT_GE(load("cone.autosave.curvefold.json")["folds"].size(), 3u);
+}
+
 TEST_F(XrApp, NoHeadsetIsOneLine) {
   const CommandResult result = run("xr --headless --record r.jsonl --autosave a.json",
                                    simulated(kExamples + "cone.jsonl", "CURVEFOLD_SIM_NO_HMD=1"));
