@@ -14,8 +14,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "engine/text/decimal.hpp"
-#include "engine/text/excerpt.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -34,6 +32,8 @@
 #include "engine/print/crease_pattern_pdf.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 
 namespace curvefold::cli {
 

@@ -5,8 +5,8 @@
 
 #include "app/commands.hpp"
 #include "engine/geometry/symmetry.hpp"
-#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/excerpt.hpp"
 
 namespace curvefold::cli {
 

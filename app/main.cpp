@@ -16,9 +16,9 @@ namespace {
 // an option's value whole) keeps its head and tail, with control characters escaped.
 std::string oneLine(const std::string& message) {
   constexpr std::size_t kPart = 110;
-  std::string text = message.size() > 2 * kPart + 5
-                         ? message.substr(0, kPart) + " ... " + message.substr(message.size() - kPart)
-                         : message;
+  std::string text = message.size() > 2 * kPart + 5 ? message.substr(0, kPart) + " ... " +
+                                                          message.substr(message.size() - kPart)
+                                                    : message;
   std::string line;
   for (char c : text) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {

@@ -6,9 +6,9 @@
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
-#include <new>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -19,8 +19,6 @@
 #include "app/commands.hpp"
 #include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
-#include "engine/text/decimal.hpp"
-#include "engine/text/excerpt.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/print/crease_pattern_pdf.hpp"
@@ -28,6 +26,8 @@
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "engine/surfaces/obj_surface.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
 

@@ -89,8 +89,8 @@ void SessionOutputs::rescue(const std::string& why) noexcept {
     std::string stem = std::filesystem::path(autosavePath_).filename().string();
     if (const auto dot = stem.find('.'); dot != std::string::npos && dot > 0) stem.resize(dot);
     const std::filesystem::path rescued =
-        folder / "rescued" / (stem + "-" + stamp + "-" + std::to_string(::getpid()) +
-                              ".curvefold.json");
+        folder / "rescued" /
+        (stem + "-" + stamp + "-" + std::to_string(::getpid()) + ".curvefold.json");
     saveDesign(designOf_(), rescued.string());
     where = "the design is saved to " + rescued.string() + " instead";
   } catch (const std::exception& e) {

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <stdexcept>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 
 #include "engine/geometry/symmetry.hpp"
@@ -176,9 +176,10 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       if (create) {
         const GeneratedSurface surface = chosenSurface();
         const std::string symmetry = symmetry_ == kNoSymmetry ? "" : symmetry_;
-        guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry), [&] {
-          actions.replaceDocument({surface, {}, symmetry}, surface.generator);
-        });
+        guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry),
+                [&] {
+                  actions.replaceDocument({surface, {}, symmetry}, surface.generator);
+                });
       }
     }
   }
@@ -244,7 +245,8 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   const Sheet& fixed = doc.session->fixed();
   auto exportAs = [&](const std::string& extension,
                       const std::function<void(const std::string&)>& write) {
-    guarded(actions, "wrote " + base + extension, [&] { writeThrough(actions, base + extension, write); });
+    guarded(actions, "wrote " + base + extension,
+            [&] { writeThrough(actions, base + extension, write); });
   };
   if (button("FOLD")) exportAs(".fold", [&](const std::string& to) { writeFold(fixed, to); });
   ImGui::SameLine();

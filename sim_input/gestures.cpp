@@ -271,7 +271,8 @@ void GestureRecorder::press(Button button) {
 void GestureRecorder::pointAt(const std::string& label, double seconds, bool click) {
   std::optional<glm::dvec3> item = world_->panelItem(label);
   const std::optional<glm::dvec3> facing = world_->panelFacing();
-  if (!item || !facing) throw GestureError("point_at: the panel shows no item " + quotedExcerpt(label));
+  if (!item || !facing)
+    throw GestureError("point_at: the panel shows no item " + quotedExcerpt(label));
   const glm::dvec3 from = frame_.pointHand.position;
   const glm::dquat aimFrom = frame_.pointHand.aim.value_or(kAimDown);
   for (int i = 1, n = stepsFor(seconds); i <= n; ++i) {

@@ -194,14 +194,14 @@ TEST_F(Cli, LooseValuesAreRefusedAndQuotedShort) {
                 "--symmetry \"rotational:6\\nx\"", out);
   expectFailure("export " + design + " --cut-svg " + path("c.svg").string() + " --perforate 0x3,1",
                 "--perforate: expected CUT,GAP", path("c.svg"));
-  expectFailure("export " + design + " --pdf " + path("c.pdf").string() +
-                    " --paper \"$(printf 'a4\\nzz')\"",
-                "--paper: a4\\nzz not in", path("c.pdf"));
+  expectFailure(
+      "export " + design + " --pdf " + path("c.pdf").string() + " --paper \"$(printf 'a4\\nzz')\"",
+      "--paper: a4\\nzz not in", path("c.pdf"));
   expectFailure("fold " + design + " --vertex-near 0x1,0,0 --to 0,0,1" + o, "--vertex-near", out);
   for (const char* option : {"--symmetry rotational:", "--paper "}) {
     const CommandResult r =
         run((std::string(option).starts_with("--paper") ? "export " + design + " --pdf c.pdf "
-                                                         : "new cylinder -o x.json ") +
+                                                        : "new cylinder -o x.json ") +
             option + "$(printf '%0100000d' 7)");
     EXPECT_NE(r.exitCode, 0) << option;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << option;
@@ -369,8 +369,8 @@ TEST_F(Cli, TheSheetCacheKeepsToItsBudgetAndOpensOnlyFiles) {
     fs::remove(entry);
     ASSERT_EQ(mkfifo(entry.c_str(), 0600), 0);
   }
-  const CommandResult r = run("fold " + design + " " + folds[0] + " -o " + path("f.json").string(),
-                              "timeout 60");
+  const CommandResult r =
+      run("fold " + design + " " + folds[0] + " -o " + path("f.json").string(), "timeout 60");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(slurp(path("f.json")), slurp(path("e.json")));
 }

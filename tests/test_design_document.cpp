@@ -306,7 +306,8 @@ TEST(DesignErrors, GroupsAndSymmetry) {
   // 1, 2, ... in the order they are made, their folds together.
   const std::string negative =
       errorAfter(validDocument(), [](json& d) { d["folds"][0]["group"] = -1; });
-  EXPECT_EQ(negative, std::string(kName) + ": fold 1: group: must be a whole number from 1, got -1");
+  EXPECT_EQ(negative,
+            std::string(kName) + ": fold 1: group: must be a whole number from 1, got -1");
   EXPECT_EQ(group0, std::string(kName) + ": fold 1: group: must be a whole number from 1, got 0");
   auto threeFolds = [](std::initializer_list<int> groups) {
     json d = validDocument();

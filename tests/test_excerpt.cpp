@@ -14,7 +14,9 @@ TEST(Excerpt, EscapesWhatWouldBreakTheLine) {
   EXPECT_EQ(quotedExcerpt(std::string("\x01\x7f", 2)), R"("\u0001\u007f")");
   // UTF-8 stays as it is; a byte that is not UTF-8 is shown, not passed on.
   EXPECT_EQ(quotedExcerpt("caf\xc3\xa9"), "\"caf\xc3\xa9\"");
-  EXPECT_EQ(quotedExcerpt("\xff" "a"), R"("\xffa")");
+  EXPECT_EQ(quotedExcerpt("\xff"
+                          "a"),
+            R"("\xffa")");
   EXPECT_EQ(quotedExcerpt("\xc3"), R"("\xc3")");
 }
 

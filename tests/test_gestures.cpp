@@ -342,10 +342,9 @@ TEST(Gestures, BadScriptsNameTheProblem) {
   expectError(head + R"("symmetry":6,"gestures":[]})", "symmetry");
   // A surface parameter the engine does not know, with a symmetry to check against the sheet
   // (found by fuzz_gesture_script): the reader's error, not the engine's escaping it.
-  expectError(
-      R"({"format":"curvefold-gesture-script","version":1,"symmetry":"mirror:x",)"
-      R"("surface":{"generator":"cylinder","parameters":{"resolu":8}},"gestures":[]})",
-      "has no parameter \"resolu\"");
+  expectError(R"({"format":"curvefold-gesture-script","version":1,"symmetry":"mirror:x",)"
+              R"("surface":{"generator":"cylinder","parameters":{"resolu":8}},"gestures":[]})",
+              "has no parameter \"resolu\"");
   // A value nested a million deep is quoted by an excerpt, not dumped recursively (A1).
   std::string deep = R"({"format":)";
   deep.append(1'000'000, '[').append(1'000'000, ']').append("}");

@@ -65,9 +65,9 @@ TEST_F(SessionOutputsTest, TheRecentListIsReadBoundedAndKeepsOnlyUtf8) {
   const long peakBefore = usage.ru_maxrss;
   const std::vector<std::string> recent = loadRecentDesigns();
   getrusage(RUSAGE_SELF, &usage);
-  EXPECT_EQ(recent, (std::vector<std::string>{"/a/first.curvefold.json",
-                                              "/b/caf\xc3\xa9.curvefold.json",
-                                              "/d/last.curvefold.json"}));
+  EXPECT_EQ(recent,
+            (std::vector<std::string>{"/a/first.curvefold.json", "/b/caf\xc3\xa9.curvefold.json",
+                                      "/d/last.curvefold.json"}));
   if (!kSanitized) {
     EXPECT_LT(usage.ru_maxrss - peakBefore, 16 * 1024) << "kilobytes";
   }
@@ -208,7 +208,8 @@ TEST_F(SessionOutputsTest, AnAutosaveThatNeverWorksIsRescuedAtTheEnd) {
   const std::string prefix = "the design is saved to ";
   const std::size_t at = last.find(prefix);
   ASSERT_NE(at, std::string::npos) << last;
-  const fs::path rescued = last.substr(at + prefix.size(), last.rfind(" instead") - at - prefix.size());
+  const fs::path rescued =
+      last.substr(at + prefix.size(), last.rfind(" instead") - at - prefix.size());
   EXPECT_EQ(rescued.parent_path(), dir() / "state" / "curvefold" / "rescued");
   ASSERT_TRUE(fs::exists(rescued)) << last;
   EXPECT_EQ(loadDesign(rescued).folds.size(), 2u);

@@ -139,8 +139,7 @@ TEST_F(StudioPanelTest, TheRecentListHoldsUtf8AndOpensOnlyFiles) {
   const std::string fifo = (dir_ / "pipe.curvefold.json").string();
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   panel_.setRecent({fifo, "/x/\xff\xfe.curvefold.json", "/x/caf\xc3\xa9.curvefold.json"});
-  EXPECT_EQ(panel_.recent(),
-            (std::vector<std::string>{fifo, "/x/caf\xc3\xa9.curvefold.json"}));
+  EXPECT_EQ(panel_.recent(), (std::vector<std::string>{fifo, "/x/caf\xc3\xa9.curvefold.json"}));
   click("Recent designs");
   click("pipe.curvefold.json");
   EXPECT_TRUE(replaced_.empty());

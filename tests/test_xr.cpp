@@ -520,10 +520,9 @@ TEST_F(XrApp, ExportsThatFailInTheSessionAreSaidOnStderrAndInTheSummary) {
   std::ofstream(path("file.txt")) << "a file";
   const std::string input = kExamples + "xr_studio.jsonl";
   const std::string exports = (path("file.txt") / "exports").string();
-  const CommandResult result =
-      run("xr " + input + " --headless --export-dir " + exports + " --autosave " +
-              path("s.curvefold.json").string(),
-          simulated(input));
+  const CommandResult result = run("xr " + input + " --headless --export-dir " + exports +
+                                       " --autosave " + path("s.curvefold.json").string(),
+                                   simulated(input));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_NE(result.err.find("curvefold: warning: cannot create " + exports), std::string::npos)
       << result.err;

@@ -26,8 +26,6 @@
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
-#include "engine/text/decimal.hpp"
-#include "engine/text/excerpt.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
@@ -41,6 +39,8 @@
 #include "engine/render/sheet_tracker.hpp"
 #include "engine/render/swapchain_target.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "sim_input/player.hpp"
 
 namespace curvefold::cli {

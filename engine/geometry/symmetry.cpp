@@ -164,8 +164,7 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
   auto axisOf = [&](const std::string& name) {
     for (int a = 0; a < 3; ++a)
       if (name == kAxisNames[a]) return a;
-    throw InvalidSymmetry(quoted + ": the axis must be x, y or z, not " +
-                          quotedExcerpt(name, 12));
+    throw InvalidSymmetry(quoted + ": the axis must be x, y or z, not " + quotedExcerpt(name, 12));
   };
   const auto colon = text.find(':');
   const std::string kind = text.substr(0, colon);

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <vector>
 
-#include "engine/text/decimal.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/text/decimal.hpp"
 
 namespace curvefold {
 namespace {
@@ -190,8 +190,8 @@ void storeCachedSheet(const Design& design, const Sheet& sheet) noexcept {
       if (entry.path().extension() != ".sheet") continue;
       std::error_code error;
       const bool regular = entry.is_regular_file(error) && !entry.is_symlink(error);
-      entries.push_back({entry.last_write_time(error), regular ? entry.file_size(error) : budget + 1,
-                         entry.path()});
+      entries.push_back({entry.last_write_time(error),
+                         regular ? entry.file_size(error) : budget + 1, entry.path()});
     }
     std::sort(entries.begin(), entries.end(),
               [](const Entry& a, const Entry& b) { return a.time > b.time; });

@@ -1,5 +1,5 @@
-#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/obj_surface.hpp"
+#include "engine/text/excerpt.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 // The surface catalog, parameter checking, and the flat named outlines.
-#include "engine/text/excerpt.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/excerpt.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -10,11 +10,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
 #include "interaction/xr_controls.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/simulated_hand.hpp"
-#include "engine/text/decimal.hpp"
-#include "engine/text/excerpt.hpp"
 
 namespace curvefold::simxr {
 
@@ -61,8 +61,9 @@ SimConfig SimConfig::fromEnvironment() {
   if (const std::string seed = env("CURVEFOLD_SIM_SEED"); !seed.empty()) {
     std::uint64_t value = 0;
     if (!readDecimal(seed, value))
-      throw std::runtime_error("CURVEFOLD_SIM_SEED: expected a whole number from 0 to 2^64 - 1, got " +
-                               quotedExcerpt(seed));
+      throw std::runtime_error(
+          "CURVEFOLD_SIM_SEED: expected a whole number from 0 to 2^64 - 1, got " +
+          quotedExcerpt(seed));
     config.seed = value;
   }
   if (const std::string size = env("CURVEFOLD_SIM_VIEW_SIZE"); !size.empty()) {
