@@ -3,13 +3,16 @@
 // lengths.
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/topology.hpp"
 #include "engine/io/cutter_svg.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
@@ -107,6 +110,62 @@ TEST_F(CutterSvgFile, InkscapeLayersInMillimetres) {
         << layer;
   EXPECT_NE(svg.find("stroke-width=\"0.0100\""), std::string::npos);
   EXPECT_EQ(entries(), std::vector<std::string>{"cut.svg"});
+}
+
+// Issue 28: the fixture above has one mountain and one valley of the same length, so the two score
+// layers swapped passed every test. Here a 200 x 100 mm sheet gets a straight fold across it and a
+// corner fold the other way, so mountains and valleys differ in length; each layer of the written
+// file must hold as many millimetres as the engine's creases of its kind.
+TEST_F(CutterSvgFile, MountainAndValleyScoresHoldTheirOwnCreases) {
+  FoldSession session(makeSurface("rectangle", {{"width", 0.2}, {"height", 0.1}}));
+  session.beginDragNear({0.1, 0.0, 0.0});
+  session.updateDrag({0.04, 0.0, 0.05});
+  ASSERT_TRUE(session.commit());
+  session.beginDragNear({-0.1, -0.05, 0.0});
+  session.updateDrag({-0.07, -0.03, -0.03});
+  ASSERT_TRUE(session.commit());
+  const Sheet& sheet = session.fixed();
+
+  // The engine's assignment, in millimetres of the development.
+  std::map<Assignment, double> creaseMm;
+  for (const CreaseEdge& c : creaseEdges(sheet, buildEdgeTopology(sheet)))
+    creaseMm[c.assignment] +=
+        1000.0 * glm::distance(sheet.development[c.edge.a], sheet.development[c.edge.b]);
+  const double mountainMm = creaseMm[Assignment::Mountain], valleyMm = creaseMm[Assignment::Valley];
+  RecordProperty("mountain_mm", std::to_string(mountainMm));
+  RecordProperty("valley_mm", std::to_string(valleyMm));
+  ASSERT_GT(mountainMm, 10.0);
+  ASSERT_GT(valleyMm, 10.0);
+  ASSERT_GT(std::abs(mountainMm - valleyMm), 10.0) << "the design must tell the layers apart";
+
+  const fs::path path = dir() / "cut.svg";
+  writeCutterSvg(sheet, path);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  // Each layer's paths ("M x y L x y ...", millimetres), summed by the layer's label.
+  std::map<std::string, double> layerMm;
+  const std::regex layer(R"re(<g [^>]*inkscape:label="([^"]*)"[^>]*>([\s\S]*?)</g>)re");
+  const std::regex pathData(R"re(<path d="M ([^"]*)"/>)re");
+  for (std::sregex_iterator g(svg.begin(), svg.end(), layer), end; g != end; ++g) {
+    const std::string name = (*g)[1], body = (*g)[2];
+    double& total = layerMm[name];
+    for (std::sregex_iterator p(body.begin(), body.end(), pathData); p != end; ++p) {
+      std::string d = (*p)[1];
+      for (char& c : d)
+        if (c == 'L') c = ' ';
+      std::istringstream numbers(d);
+      std::vector<glm::dvec2> line;
+      for (glm::dvec2 q; numbers >> q.x >> q.y;) line.push_back(q);
+      total += length(line);
+    }
+  }
+  ASSERT_EQ(layerMm.size(), 3u);
+  // The file rounds coordinates to 0.1 micrometres.
+  EXPECT_NEAR(layerMm["mountain score"], mountainMm, 0.01);
+  EXPECT_NEAR(layerMm["valley score"], valleyMm, 0.01);
+  EXPECT_NEAR(layerMm["cut"], 600.0, 0.01);
 }
 
 }  // namespace

@@ -2,8 +2,13 @@
 // into the frames they were made from (through 2 mm of jitter: no false press or release), its
 // filters steady a hand at rest without leaving a moving one behind, taps press their buttons
 // and a fist neither pinches nor taps.
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <map>
 #include <random>
+#include <regex>
+#include <string>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -216,6 +221,141 @@ TEST(HandInput, AnUntrackedHandHoldsItsPinchAndThePalmIsTheSheetFrame) {
                                 glm::dvec3(0.1), aim, HandSide::Right, {shape, {}})),
                             aim * glm::dvec3(0.0, 0.0, -1.0)),
               1e-12);
+}
+
+// Issue 28: the simulated hand and the reader share kSheetHandTaps / kPointHandTaps, so undo and
+// redo swapped in the table still round-tripped. Here the fingers come from the README's bare-hands
+// gesture table, and a hand tapping that finger must press that button.
+TEST(HandInput, TapsPressTheButtonsTheReadmeGivesEachFinger) {
+  std::ifstream readme(CURVEFOLD_SOURCE_DIR "/README.md");
+  ASSERT_TRUE(readme) << "README.md";
+  const std::map<std::string, Button> buttons = {{"show or hide the panel", Button::Panel},
+                                                 {"undo", Button::Undo},
+                                                 {"redo", Button::Redo},
+                                                 {"cancel the fold", Button::Cancel},
+                                                 {"switch hands", Button::SwitchHands}};
+  const std::map<std::string, HandJoint> fingers = {{"index", HandJoint::IndexTip},
+                                                    {"middle", HandJoint::MiddleTip},
+                                                    {"ring", HandJoint::RingTip},
+                                                    {"little", HandJoint::LittleTip}};
+  // e.g. "| undo | non-dominant, open | tap thumb to middle tip |"
+  const std::regex row(
+      R"(^\| ([^|]+?) \| (dominant|non-dominant), open \| tap thumb to (\w+) tip)");
+  std::mt19937_64 random(28);
+  int rows = 0;
+  for (std::string line; std::getline(readme, line);) {
+    std::smatch m;
+    if (!std::regex_search(line, m, row)) continue;
+    SCOPED_TRACE(line);
+    ++rows;
+    ASSERT_TRUE(buttons.count(m[1])) << "a gesture this test does not know";
+    ASSERT_TRUE(fingers.count(m[3]));
+    const Button button = buttons.at(m[1]);
+    const HandJoint finger = fingers.at(m[3]);
+    const bool sheet = m[2] == "non-dominant";
+    // The table agrees with the README ...
+    bool listed = false;
+    if (sheet) {
+      for (const HandTap& tap : kSheetHandTaps)
+        if (tap.button == button) listed = listed || tap.fingertip == finger;
+    } else {
+      for (const HandTap& tap : kPointHandTaps)
+        if (tap.button == button) listed = listed || tap.fingertip == finger;
+    }
+    EXPECT_TRUE(listed);
+    // ... and a hand tapping that finger presses that button, and only it.
+    HandInput input;
+    for (int i = 0; i < 4; ++i) {
+      InputFrame frame;
+      frame.time = i / kRate;
+      const HandPosture posture{HandShape::Open, finger};
+      if (sheet) {
+        input.updateSheetHand(sheetHand(Pose{{-0.2, 1.1, -0.3}, kForward}, posture, random), frame);
+      } else {
+        HandJoints hand =
+            simulatedPointingHand({0.1, 1.2, -0.3}, kForward, HandSide::Right, posture);
+        jitterJoints(hand, kJitter, random);
+        input.updatePointHand(hand, frame);
+      }
+      EXPECT_EQ(frame.buttons, std::uint32_t(button)) << i;
+    }
+  }
+  EXPECT_EQ(rows, 5) << "the README's bare-hands table lost or gained a tap";
+  EXPECT_EQ(std::size(kSheetHandTaps) + std::size(kPointHandTaps), std::size_t(rows));
+}
+
+// The thumb's tip `distance` from `finger`'s tip, on the side it came from.
+void thumbAt(HandJoints& hand, HandJoint finger, double distance) {
+  const glm::dvec3 tip = hand[finger].position;
+  hand[HandJoint::ThumbTip].position =
+      tip + distance * glm::normalize(hand[HandJoint::ThumbTip].position - tip);
+}
+
+// Issue 28: the simulated pinch is 3 mm apart and open 100 mm, so jitter never came near the
+// bands, and press == release passed. Inside the band (15 to 35 mm, README) a gesture keeps the
+// state it had: a pinch opened to 25 mm holds, an open hand closing to 25 mm does not pinch; a
+// thumb tap the same; a hand's fingertips 67 mm from its palm (between 55 and 80) keep it closed
+// or open as it was.
+TEST(HandInput, PinchTapAndGrabHoldTheirStateInsideTheirBands) {
+  const glm::dvec3 at(0.1, 1.2, -0.3);
+  auto pointHand = [&](double apart) {
+    HandJoints hand = simulatedPointingHand(at, kForward, HandSide::Right, {});
+    thumbAt(hand, HandJoint::IndexTip, apart);
+    return hand;
+  };
+  HandInput input;
+  int step = 0;
+  auto select = [&](double apart) {
+    InputFrame frame;
+    frame.time = step++ / kRate;
+    input.updatePointHand(pointHand(apart), frame);
+    return frame.pointHand.select;
+  };
+  EXPECT_EQ(select(0.025), 0.0);  // from open, inside the band: no pinch
+  EXPECT_EQ(select(0.010), 1.0);  // pinched
+  EXPECT_EQ(select(0.025), 1.0);  // inside the band: still pinched
+  EXPECT_EQ(select(0.034), 1.0);
+  EXPECT_EQ(select(0.040), 0.0);  // past it: released
+  EXPECT_EQ(select(0.025), 0.0);  // and back inside: still open
+
+  // A tap: the thumb on the sheet hand's ring tip.
+  const HandTap ring =
+      *std::find_if(std::begin(kSheetHandTaps), std::end(kSheetHandTaps),
+                    [](const HandTap& t) { return t.fingertip == HandJoint::RingTip; });
+  const Pose palm{{-0.2, 1.1, -0.3}, kForward};
+  auto tapped = [&](double apart) {
+    HandJoints hand = simulatedHand(palm, HandSide::Left, {});
+    thumbAt(hand, HandJoint::RingTip, apart);
+    InputFrame frame;
+    frame.time = step++ / kRate;
+    input.updateSheetHand(hand, frame);
+    return frame.buttons;
+  };
+  EXPECT_EQ(tapped(0.025), 0u);
+  EXPECT_EQ(tapped(0.010), std::uint32_t(ring.button));
+  EXPECT_EQ(tapped(0.025), std::uint32_t(ring.button));
+  EXPECT_EQ(tapped(0.040), 0u);
+  EXPECT_EQ(tapped(0.025), 0u);
+
+  // The grab: all four fingertips `reach` from the palm.
+  auto clutch = [&](double reach) {
+    HandJoints hand = simulatedHand(palm, HandSide::Left, {});
+    const glm::dvec3 centre = hand[HandJoint::Palm].position;
+    for (HandJoint tip :
+         {HandJoint::IndexTip, HandJoint::MiddleTip, HandJoint::RingTip, HandJoint::LittleTip})
+      hand[tip].position = centre + reach * glm::normalize(hand[tip].position - centre);
+    EXPECT_NEAR(fingertipsToPalm(hand), reach, 1e-12);
+    InputFrame frame;
+    frame.time = step++ / kRate;
+    input.updateSheetHand(hand, frame);
+    return frame.sheetHand.clutch;
+  };
+  EXPECT_EQ(clutch(0.067), 0.0);  // from open, inside the band: not closed
+  EXPECT_EQ(clutch(0.040), 1.0);  // closed
+  EXPECT_EQ(clutch(0.067), 1.0);  // opening, inside the band: still closed
+  EXPECT_EQ(clutch(0.079), 1.0);
+  EXPECT_EQ(clutch(0.090), 0.0);  // open
+  EXPECT_EQ(clutch(0.067), 0.0);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "engine/geometry/fold_session.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -205,6 +206,114 @@ TEST(PrintPdf, PaperNames) {
   EXPECT_EQ(parsePaper("a3"), Paper::A3);
   EXPECT_EQ(parsePaper("fit"), Paper::Fit);
   EXPECT_FALSE(parsePaper("A5"));
+}
+
+// The development's vertices in pattern millimetres (from its top left, y down), as printed.
+std::vector<glm::dvec2> patternVerticesMm(const Sheet& sheet) {
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  std::vector<glm::dvec2> vertices;
+  for (const glm::dvec2& p : sheet.development)
+    vertices.push_back({(p.x - bounds.low.x) * 1000.0, (bounds.high.y - p.y) * 1000.0});
+  return vertices;
+}
+
+bool nearAny(const glm::dvec2& q, const std::vector<glm::dvec2>& points, double tolerance) {
+  for (const glm::dvec2& p : points)
+    if (glm::distance(p, q) <= tolerance) return true;
+  return false;
+}
+
+// Issue 28: tiles that left 10 mm gaps between them, and tiles printed at half size, passed every
+// print test. Each tile shows a window of the pattern as large as its printable area (real size);
+// a tile's window starts kOverlapMm before its left and upper neighbours' end (no gap, the
+// documented overlap); the windows together hold every vertex; and every line drawn on a tile,
+// read back through its window at real size, runs between vertices of the development.
+TEST(PrintPdf, TilesOverlapByTheirBandAndLeaveNoGap) {
+  Sheet large = foldedSheet();  // 500 x 300 mm; doubled, 1000 x 600 mm
+  for (glm::dvec2& q : large.development) q *= 2.0;
+  for (glm::dvec3& p : large.positions) p *= 2.0;
+  for (const Sheet& sheet : {foldedSheet(), large})
+    for (const Paper paper : {Paper::A4, Paper::Letter}) {
+      PdfOptions options;
+      options.paper = paper;
+      const PdfPlan plan = planCreasePatternPdf(sheet, options);
+      SCOPED_TRACE(std::to_string(plan.patternMm.x) + " mm, paper " + std::to_string(int(paper)));
+      ASSERT_GT(plan.rows * plan.columns, 1);
+      ASSERT_EQ(plan.pages.size(), std::size_t(plan.rows * plan.columns + 1));
+      const std::vector<glm::dvec2> vertices = patternVerticesMm(sheet);
+      auto tile = [&](int row, int column) -> const PdfPage& {
+        return plan.pages[1 + std::size_t(row * plan.columns + column)];
+      };
+      for (int row = 0; row < plan.rows; ++row)
+        for (int column = 0; column < plan.columns; ++column) {
+          SCOPED_TRACE("row " + std::to_string(row) + ", column " + std::to_string(column));
+          const PdfPage& page = tile(row, column);
+          const PdfRect& window = page.patternWindowMm;
+          const glm::dvec2 clipMm = (page.clip.high - page.clip.low) / kPointsPerMm;
+          EXPECT_NEAR(window.high.x - window.low.x, clipMm.x, 1e-9);  // real size
+          EXPECT_NEAR(window.high.y - window.low.y, clipMm.y, 1e-9);
+          if (column == 0) {
+            EXPECT_NEAR(window.low.x, 0.0, 1e-9);
+          }
+          if (row == 0) {
+            EXPECT_NEAR(window.low.y, 0.0, 1e-9);
+          }
+          if (column > 0) {
+            const PdfRect& left = tile(row, column - 1).patternWindowMm;
+            EXPECT_NEAR(window.low.x, left.high.x - kOverlapMm, 1e-9);
+            EXPECT_NEAR(window.low.y, left.low.y, 1e-9);
+          }
+          if (row > 0) {
+            const PdfRect& up = tile(row - 1, column).patternWindowMm;
+            EXPECT_NEAR(window.low.y, up.high.y - kOverlapMm, 1e-9);
+            EXPECT_NEAR(window.low.x, up.low.x, 1e-9);
+          }
+          if (column + 1 == plan.columns) {
+            EXPECT_GE(window.high.x, plan.patternMm.x);
+          }
+          if (row + 1 == plan.rows) {
+            EXPECT_GE(window.high.y, plan.patternMm.y);
+          }
+          for (const PdfSegment& s : page.lines)
+            for (const glm::dvec2& end : {s.a, s.b})
+              ASSERT_TRUE(
+                  nearAny(window.low + (end - page.clip.low) / kPointsPerMm, vertices, 1e-6))
+                  << "a line end off the pattern at real size";
+        }
+      for (const glm::dvec2& v : vertices) {
+        bool shown = false;
+        for (std::size_t i = 1; i < plan.pages.size(); ++i) {
+          const PdfRect& w = plan.pages[i].patternWindowMm;
+          shown = shown || (v.x >= w.low.x && v.x <= w.high.x && v.y >= w.low.y && v.y <= w.high.y);
+        }
+        ASSERT_TRUE(shown) << "vertex at " << v.x << ", " << v.y << " mm is on no tile";
+      }
+    }
+}
+
+// Issue 28: a 150 mm square prints 150 mm wide and high (in page points over 72/25.4), within
+// 0.1%, on its one tile; fit to a page, a 500 mm sheet prints at the scale the plan says.
+TEST(PrintPdf, AKnownLengthPrintsAtRealSize) {
+  const PdfPlan plan = planCreasePatternPdf(makeSurface("square", {{"size", 0.15}}), PdfOptions{});
+  ASSERT_EQ(plan.pages.size(), 2u);
+  auto extentMm = [](const PdfPage& page) {
+    glm::dvec2 low(1e300), high(-1e300);
+    for (const PdfSegment& s : page.lines)
+      for (const glm::dvec2& end : {s.a, s.b}) {
+        low = glm::min(low, end);
+        high = glm::max(high, end);
+      }
+    return (high - low) / kPointsPerMm;
+  };
+  const glm::dvec2 printed = extentMm(plan.pages[1]);
+  EXPECT_NEAR(printed.x, 150.0, 0.15);
+  EXPECT_NEAR(printed.y, 150.0, 0.15);
+  PdfOptions fit;
+  fit.paper = Paper::Fit;
+  const PdfPlan fitted = planCreasePatternPdf(foldedSheet(), fit);
+  const glm::dvec2 fittedMm = extentMm(fitted.pages[1]);
+  EXPECT_NEAR(fittedMm.x, 500.0 * fitted.scale, 0.001 * 500.0 * fitted.scale);
+  EXPECT_NEAR(fittedMm.y, 300.0 * fitted.scale, 0.001 * 300.0 * fitted.scale);
 }
 
 }  // namespace

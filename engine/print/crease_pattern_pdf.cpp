@@ -203,6 +203,9 @@ PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
   auto addPattern = [&](PdfPage& page, const glm::dvec2& origin, const glm::dvec2& at, double scale,
                         bool labels) {
     const PdfRect& clip = page.clip;
+    const double pointsPerPatternMm = scale * kPointsPerMm;
+    page.patternWindowMm = {origin + (clip.low - at) / pointsPerPatternMm,
+                            origin + (clip.high - at) / pointsPerPatternMm};
     for (const PatternEdge& e : pattern.edges) {
       const glm::dvec2 a = place(e.a, origin, at, scale), b = place(e.b, origin, at, scale);
       if (std::max(a.x, b.x) < clip.low.x || std::min(a.x, b.x) > clip.high.x ||

@@ -88,6 +88,10 @@ struct PdfPage {
   glm::dvec2 scaleBarStart{0.0};  // its left end; it runs kScaleBarMm to the right
   double scaleBarLengthPt = 0.0;
   std::optional<PdfRect> pictureBox;  // cover: where the folded form is drawn
+  // The part of the pattern the clip shows, in millimetres of the pattern from its top left (y
+  // down), for reading only: tiles' overlaps and the printed scale can be checked against it
+  // (issue 28). On a tile at real size it is as large as the clip in millimetres.
+  PdfRect patternWindowMm;
 };
 
 struct PdfPlan {
