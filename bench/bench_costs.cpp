@@ -4,7 +4,9 @@
 //   a grab on a folded cylinder (was three scans of every triangle);
 //   the folded sheet a command-line fold starts from: the history replayed, or the cache's entry;
 //   the crease pattern panel of a frame: built from the sheet (what the desktop did every frame)
-//   or from the cache shared by the desktop and the headset.
+//   or from the cache shared by the desktop and the headset;
+//   whether a development overlaps itself on a fan of long spokes (was O(triangles^2) in a uniform
+//   grid: 39.8 s at 20k triangles) against a square of a million short edges' worth.
 //
 //   build/bench/bench_costs --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <unistd.h>
@@ -19,6 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include "app/interaction_scene.hpp"
+#include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
@@ -57,8 +60,7 @@ void BM_UnfoldConnectedGrid(benchmark::State& state) {
 BENCHMARK(BM_UnfoldConnectedGrid)->Arg(32'000)->Unit(benchmark::kMillisecond);
 
 // A flat disk of n triangles around one centre vertex.
-void BM_ValidateFan(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
+Sheet flatFan(int n) {
   Sheet sheet;
   sheet.positions.push_back({0.0, 0.0, 0.0});
   for (int i = 0; i < n; ++i) {
@@ -69,10 +71,37 @@ void BM_ValidateFan(benchmark::State& state) {
   for (int i = 0; i < n; ++i)
     sheet.triangles.push_back(
         {0, static_cast<VertexIndex>(1 + i), static_cast<VertexIndex>(1 + (i + 1) % n)});
+  return sheet;
+}
+
+void BM_ValidateFan(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Sheet sheet = flatFan(n);
   for (auto _ : state) validate(sheet);
   state.counters["triangles"] = n;
 }
 BENCHMARK(BM_ValidateFan)->Arg(20'000)->Arg(40'000)->Unit(benchmark::kMillisecond);
+
+// Whether the development overlaps itself (OBJ import, `check`): a fan's long spokes, then a
+// square of about a million triangles (about 5 resolution^2 of them).
+void BM_DevelopmentCrossingFan(benchmark::State& state) {
+  const Sheet sheet = flatFan(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(findDevelopmentCrossing(sheet));
+  state.counters["triangles"] = double(sheet.triangleCount());
+}
+BENCHMARK(BM_DevelopmentCrossingFan)
+    ->Arg(5'000)
+    ->Arg(20'000)
+    ->Arg(40'000)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_DevelopmentCrossingSquare(benchmark::State& state) {
+  const Sheet sheet =
+      makeSurface("square", {{"resolution", std::round(std::sqrt(state.range(0) / 5.0))}});
+  for (auto _ : state) benchmark::DoNotOptimize(findDevelopmentCrossing(sheet));
+  state.counters["triangles"] = double(sheet.triangleCount());
+}
+BENCHMARK(BM_DevelopmentCrossingSquare)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 // A cylinder of about 10k (resolution 82) or 100k (259) triangles with one fold on it.
 std::unique_ptr<FoldSession> foldedCylinder(int resolution) {

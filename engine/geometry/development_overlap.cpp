@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
-#include <unordered_map>
+#include <memory_resource>
+#include <set>
+#include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/topology.hpp"
@@ -28,81 +32,169 @@ bool crossProperly(const glm::dvec2& p, const glm::dvec2& q, const glm::dvec2& r
          ((p1 > tolerance && p2 < -tolerance) || (p1 < -tolerance && p2 > tolerance));
 }
 
+// The sweep's order of points: by x, then by y. It is a sweep line tilted an infinitesimal angle
+// from the vertical, so vertical edges need no case of their own: they run upward along it.
+bool sweepsBefore(const glm::dvec2& a, const glm::dvec2& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+// The sweep runs in a frame turned by an angle that no mesh favours (about 17 degrees), so the
+// columns and rows of grids, whose vertices line up to within rounding, lie across it.
+constexpr double kTurnCos = 0.9563047559630354, kTurnSin = 0.2923717047227367;
+glm::dvec2 turned(const glm::dvec2& p) {
+  return {kTurnCos * p.x - kTurnSin * p.y, kTurnSin * p.x + kTurnCos * p.y};
+}
+
+// An edge with its endpoints (in the turned frame) in sweep order: it enters at p, leaves at q.
+struct Segment {
+  glm::dvec2 p, q;
+  Edge edge;
+};
+
+class Sweep {
+ public:
+  // The segments in the order they enter (sorted by p), so that the sweep reads them in order.
+  // The tolerance is 1e-12 of the size squared, and no turned coordinate exceeds the size.
+  Sweep(const Sheet& sheet, std::vector<Segment> segments, double tolerance,
+        CrossingSearchStats& stats)
+      : sheet_(sheet),
+        segments_(std::move(segments)),
+        tolerance_(tolerance),
+        rounding_(16.0 * std::numeric_limits<double>::epsilon() * std::sqrt(tolerance * 1e12)),
+        stats_(stats) {}
+
+  std::optional<EdgeCrossing> run() {
+    const auto n = static_cast<std::uint32_t>(segments_.size());
+    std::vector<std::uint32_t> leaving(n);
+    for (std::uint32_t i = 0; i < n; ++i) leaving[i] = i;
+    std::sort(leaving.begin(), leaving.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return sweepsBefore(segments_[a].q, segments_[b].q);
+    });
+    // Nodes freed as edges leave are reused as others enter.
+    std::pmr::unsynchronized_pool_resource pool;
+    Status status(Below{this}, &pool);
+    std::vector<Status::iterator> where(n);
+    std::uint32_t in = 0, out = 0;
+    while (out < n) {
+      // At a shared point, edges leave before others enter: edges meeting at a vertex are never
+      // side by side there, and the ones entering are ordered only against edges that go on.
+      if (in < n && sweepsBefore(segments_[in].p, segments_[leaving[out]].q)) {
+        const std::uint32_t s = entering_ = in++;
+        const auto at = status.insert(s).first;
+        where[s] = at;
+        if (at != status.begin())
+          if (auto c = test(*std::prev(at), s)) return c;
+        if (std::next(at) != status.end())
+          if (auto c = test(s, *std::next(at))) return c;
+      } else {
+        const auto at = where[leaving[out++]];
+        if (at != status.begin() && std::next(at) != status.end())
+          if (auto c = test(*std::prev(at), *std::next(at))) return c;
+        status.erase(at);
+      }
+    }
+    return std::nullopt;
+  }
+
+ private:
+  // Orders the edges that the sweep line crosses, bottom to top. Only the edge entering is ever
+  // compared (a std::set compares the key it inserts against its nodes), and against edges that
+  // the line crosses at its start point.
+  struct Below {
+    const Sweep* sweep;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+      if (a == b) return false;
+      return a == sweep->entering_ ? sweep->entersBelow(b) : !sweep->entersBelow(a);
+    }
+  };
+  using Status = std::pmr::set<std::uint32_t, Below>;
+
+  // Whether the entering edge passes below edge t where the sweep line meets its start point.
+  bool entersBelow(std::uint32_t t) const {
+    ++stats_.orderTests;
+    const Segment& s = segments_[entering_];
+    const Segment& e = segments_[t];
+    const glm::dvec2 along = e.q - e.p, v = s.p - e.p;
+    const double side = cross(along, v);
+    if (side > tolerance_) return false;
+    if (side < -tolerance_) return true;
+    // Near t's line, beyond an end of it: t is steep (the line meets it within its span of x),
+    // and y decides.
+    const double at = glm::dot(along, v);
+    if (at < -tolerance_ || at > glm::dot(along, along) + tolerance_) {
+      if (s.p.y < std::min(e.p.y, e.q.y)) return true;
+      if (s.p.y > std::max(e.p.y, e.q.y)) return false;
+    }
+    // Starting on t, within the tolerance (a shared point, a T-junction, pieces laid edge to
+    // edge): crossProperly counts that as touching t, so it is ordered by where it heads, as it
+    // lies just past its start. Edges from one point part at any angle, so that angle is taken
+    // exactly (up to the rounding of the differences), not to the tolerance.
+    const glm::dvec2 heading = s.q - s.p;
+    const double turn = cross(along, heading);
+    const double rounding = rounding_ * (std::abs(along.x) + std::abs(along.y) +
+                                         std::abs(heading.x) + std::abs(heading.y));
+    if (turn > rounding) return false;
+    if (turn < -rounding) return true;
+    // Parallel. Both head forward in the sweep's order, so if they point apart, one heads
+    // straight up and the other straight down.
+    if (glm::dot(along, heading) < 0.0) return heading.y < 0.0;
+    return entering_ < t;  // along t: any fixed order will do, as neither crosses the other
+  }
+
+  // Decided on the development itself, not the turned frame: exactly the contract.
+  std::optional<EdgeCrossing> test(std::uint32_t a, std::uint32_t b) const {
+    ++stats_.pairTests;
+    const Edge e = segments_[a].edge, f = segments_[b].edge;
+    if (e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b) return std::nullopt;
+    const auto& at = sheet_.development;
+    if (!crossProperly(at[e.a], at[e.b], at[f.a], at[f.b], tolerance_)) return std::nullopt;
+    return e < f ? EdgeCrossing{e, f} : EdgeCrossing{f, e};
+  }
+
+  const Sheet& sheet_;
+  std::vector<Segment> segments_;
+  double tolerance_;
+  double rounding_;
+  CrossingSearchStats& stats_;
+  std::uint32_t entering_ = 0;
+};
+
 }  // namespace
 
-std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet) {
+std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
+                                                    CrossingSearchStats* stats) {
+  CrossingSearchStats local;
+  CrossingSearchStats& work = stats ? *stats : local;
+  work = {};
   const EdgeTopology topology = buildEdgeTopology(sheet);
-  const auto& edges = topology.edges;
-  if (edges.size() < 2) return std::nullopt;
+  if (topology.edges.size() < 2) return std::nullopt;
+  const auto finite = [](const glm::dvec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); };
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  double totalLength = 0.0;
-  for (const auto& sides : edges) {
+  for (const auto& sides : topology.edges)
+    for (const VertexIndex v : {sides.edge.a, sides.edge.b})
+      if (finite(sheet.development[v])) {
+        lo = glm::min(lo, sheet.development[v]);
+        hi = glm::max(hi, sheet.development[v]);
+      }
+  const double size = glm::length(hi - lo);
+  if (!(size > 0.0) || !std::isfinite(size)) return std::nullopt;
+  // Turned about the centre, so that turning rounds at the scale of the size: an edge it shrinks
+  // to a point is far too short to cross anything beyond the tolerance.
+  const glm::dvec2 centre = 0.5 * (lo + hi);
+  std::vector<Segment> segments;
+  segments.reserve(topology.edges.size());
+  for (const auto& sides : topology.edges) {
     const glm::dvec2 a = sheet.development[sides.edge.a], b = sheet.development[sides.edge.b];
-    lo = glm::min(lo, glm::min(a, b));
-    hi = glm::max(hi, glm::max(a, b));
-    totalLength += glm::distance(a, b);
+    // validate() refuses an end that is not finite; here such an edge is left out, as it has no
+    // place in the sweep's order.
+    if (!finite(a) || !finite(b)) continue;
+    glm::dvec2 p = turned(a - centre), q = turned(b - centre);
+    if (sweepsBefore(q, p)) std::swap(p, q);
+    if (p != q) segments.push_back({p, q, sides.edge});
   }
-  const glm::dvec2 extent = hi - lo;
-  const double size = glm::length(extent);
-  if (!(size > 0.0)) return std::nullopt;
-  // Cells about the mean edge length, but no more cells than a few per edge.
-  double cell = std::max(totalLength / double(edges.size()), size / 4096.0);
-  const auto columns = static_cast<std::int64_t>(std::floor(extent.x / cell)) + 1;
-  const auto rows = static_cast<std::int64_t>(std::floor(extent.y / cell)) + 1;
-  auto cellOf = [&](const glm::dvec2& p) {
-    return glm::i64vec2(std::clamp<std::int64_t>(std::int64_t((p.x - lo.x) / cell), 0, columns - 1),
-                        std::clamp<std::int64_t>(std::int64_t((p.y - lo.y) / cell), 0, rows - 1));
-  };
-  const double tolerance = 1e-12 * size * size;
-  std::unordered_map<std::int64_t, std::vector<std::uint32_t>> grid;
-  grid.reserve(edges.size() * 2);
-  for (std::uint32_t e = 0; e < edges.size(); ++e) {
-    const Edge edge = edges[e].edge;
-    const glm::dvec2 a = sheet.development[edge.a], b = sheet.development[edge.b];
-    // The cells the segment passes through, walked from a to b (Amanatides and Woo), with the
-    // cells beside each step, so that rounding at a cell corner loses none.
-    std::vector<std::int64_t> cells;
-    const glm::i64vec2 start = cellOf(a), end = cellOf(b);
-    const glm::dvec2 d = b - a;
-    glm::i64vec2 at = start;
-    const glm::i64vec2 step(d.x > 0 ? 1 : -1, d.y > 0 ? 1 : -1);
-    auto boundary = [&](int axis, std::int64_t index) {
-      return lo[axis] + double(index + (step[axis] > 0 ? 1 : 0)) * cell;
-    };
-    glm::dvec2 next(d.x != 0 ? (boundary(0, at.x) - a.x) / d.x : 2.0,
-                    d.y != 0 ? (boundary(1, at.y) - a.y) / d.y : 2.0);
-    const glm::dvec2 delta(d.x != 0 ? cell / std::abs(d.x) : 2.0,
-                           d.y != 0 ? cell / std::abs(d.y) : 2.0);
-    for (int guard = 0; guard < 4 * (columns + rows) + 8; ++guard) {
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          const std::int64_t x = at.x + dx, y = at.y + dy;
-          if (x >= 0 && x < columns && y >= 0 && y < rows) cells.push_back(y * columns + x);
-        }
-      if (at == end || (next.x > 1.0 && next.y > 1.0)) break;
-      if (next.x < next.y) {
-        at.x += step.x;
-        next.x += delta.x;
-      } else {
-        at.y += step.y;
-        next.y += delta.y;
-      }
-      at = glm::clamp(at, glm::i64vec2(0), glm::i64vec2(columns - 1, rows - 1));
-    }
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    for (std::int64_t index : cells) {
-      std::vector<std::uint32_t>& here = grid[index];
-      for (std::uint32_t other : here) {
-        const Edge o = edges[other].edge;
-        if (o.a == edge.a || o.a == edge.b || o.b == edge.a || o.b == edge.b) continue;
-        if (crossProperly(a, b, sheet.development[o.a], sheet.development[o.b], tolerance))
-          return EdgeCrossing{o, edge};
-      }
-      here.push_back(e);
-    }
-  }
-  return std::nullopt;
+  std::sort(segments.begin(), segments.end(),
+            [](const Segment& a, const Segment& b) { return sweepsBefore(a.p, b.p); });
+  return Sweep(sheet, std::move(segments), 1e-12 * size * size, work).run();
 }
 
 }  // namespace curvefold
