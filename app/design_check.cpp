@@ -7,6 +7,7 @@
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 
@@ -118,6 +119,14 @@ DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet
   line(now.minRelativeHeight >= options.relativeDegenerateHeight, buffer);
   line(now.firstProblem.empty(),
        now.firstProblem.empty() ? "validate: passed" : "validate: " + now.firstProblem);
+  // A stated symmetry the initial sheet lacks makes opening or replaying the design fail.
+  if (!design.symmetry.empty()) {
+    try {
+      line(true, "symmetry: " + parseSymmetry(design.symmetry, initial).name());
+    } catch (const InvalidSymmetry& e) {
+      line(false, std::string("symmetry: ") + e.what());
+    }
+  }
   return check;
 }
 

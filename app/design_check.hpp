@@ -1,7 +1,7 @@
 // The invariants of a design, as `curvefold check` prints them and the Python module returns them
 // (docs/design.md 1): isometry, planar creases, the initial topology, a manifold, a development
-// that does not overlap itself, no self-intersection (unless allowed), consistent orientation and
-// no degenerate triangle. One home for both, so they cannot disagree.
+// that does not overlap itself, no self-intersection (unless allowed), consistent orientation, no
+// degenerate triangle and a stated symmetry the initial sheet has. One home for both.
 #pragma once
 
 #include <cstddef>

@@ -210,6 +210,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       remember(path, actions);
     });
   }
+  std::function<void(const std::string&)> openRecent;  // null while recording (no open)
   if (!recording_) {
     ImGui::InputText("open", &openPath_);
     item("open");
@@ -225,19 +226,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       });
     };
     if (button("Open")) open(openPath_);
-    const bool showRecent = !recent_.empty() && ImGui::CollapsingHeader("Recent designs");
-    if (!recent_.empty()) item("Recent designs");
-    if (showRecent) {
-      // Copied: opening one reorders the list.
-      const std::vector<std::string> recent = recent_;
-      for (std::size_t i = 0; i < recent.size(); ++i) {
-        const std::string name = std::filesystem::path(recent[i]).filename().string();
-        const bool chosen = ImGui::Selectable((name + "##recent" + std::to_string(i)).c_str());
-        if (!items_.count(name)) item(name.c_str());
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent[i].c_str());
-        if (chosen) open(recent[i]);
-      }
-    }
+    openRecent = open;
   }
   ImGui::InputText("export to", &exportBase_);
   item("export to");
@@ -294,6 +283,26 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextUnformatted("or grab the marked point");
+  }
+  // After every other item, and drawn whether or not the list is empty: what this machine has
+  // recently opened moves nothing else, so a recorded session's pointing replays onto the same
+  // items on any machine.
+  if (openRecent) {
+    ImGui::Separator();
+    const bool showRecent = ImGui::CollapsingHeader("Recent designs");
+    item("Recent designs");
+    if (showRecent && recent_.empty()) ImGui::TextDisabled("none yet");
+    if (showRecent) {
+      // Copied: opening one reorders the list.
+      const std::vector<std::string> recent = recent_;
+      for (std::size_t i = 0; i < recent.size(); ++i) {
+        const std::string name = std::filesystem::path(recent[i]).filename().string();
+        const bool chosen = ImGui::Selectable((name + "##recent" + std::to_string(i)).c_str());
+        if (!items_.count(name)) item(name.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent[i].c_str());
+        if (chosen) openRecent(recent[i]);
+      }
+    }
   }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::Separator();

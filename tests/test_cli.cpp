@@ -566,6 +566,28 @@ TEST_F(Cli, CheckRefusesADevelopmentThatOverlapsItself) {
   EXPECT_NE(r.out.find("ok    development: no edges cross"), std::string::npos) << r.out;
 }
 
+// `check` tests the stated symmetry against the initial sheet: a cylinder has no 7-fold rotation
+// about x, and a design saying so passed `check` and then failed to open or replay.
+TEST_F(Cli, CheckRefusesASymmetryTheSurfaceLacks) {
+  const std::string tube = newDesign("cylinder", "tube.curvefold.json");
+  nlohmann::json design = nlohmann::json::parse(slurp(tube));
+  design["symmetry"] = "rotational:7:x";
+  std::ofstream(path("seven.curvefold.json")) << design.dump();
+  CommandResult r = run("check " + path("seven.curvefold.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.out.find("FAIL  symmetry: \"rotational:7:x\": the surface does not have "
+                       "rotational:7:x"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.err.find("check failed: symmetry:"), std::string::npos) << r.err;
+  // One it has passes, and says so.
+  design["symmetry"] = "rotational:12:y";
+  std::ofstream(path("twelve.curvefold.json")) << design.dump();
+  r = run("check " + path("twelve.curvefold.json").string());
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("ok    symmetry: rotational:12:y"), std::string::npos) << r.out;
+}
+
 // Issue 13, D19: an OBJ with vt written to 6 decimals, as exporters write it, imported and then
 // failed to save (the design reader held embedded meshes to 1e-9, the import to 1e-5). One
 // tolerance: it saves, folds, checks and exports.

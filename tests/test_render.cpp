@@ -2,7 +2,10 @@
 // without a GPU) with the Khronos validation layer on: any validation message fails the test.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -101,6 +104,53 @@ class Render : public ::testing::Test {
   std::size_t messagesBefore_ = 0;
 };
 std::unique_ptr<HeadlessRenderer> Render::renderer_;
+
+// With VK_INSTANCE_LAYERS naming the validation layer too (as a developer's shell often does), the
+// loader says it adds the layer: a general note, not a validation message, so nothing is counted
+// and `--validation` runs still pass.
+TEST(Validation, TheLoadersOwnNoteIsNotAValidationMessage) {
+  const char* was = std::getenv("VK_INSTANCE_LAYERS");
+  const std::optional<std::string> before = was ? std::optional<std::string>(was) : std::nullopt;
+  ASSERT_EQ(setenv("VK_INSTANCE_LAYERS", "VK_LAYER_KHRONOS_validation", 1), 0);
+  std::size_t counted = 0;
+  std::string messages;
+  {
+    HeadlessOptions options;
+    options.width = options.height = 64;
+    options.validation = true;
+    HeadlessRenderer renderer(options);
+    const Sheet sheet = testing::flatGrid(4, 4, 0.05);
+    renderer.render(sceneForSheet(sheet, ViewPreset::Iso, 1.0f, false));
+    counted = renderer.context().validationMessageCount();
+    for (const std::string& m : renderer.context().validationMessages()) messages += m + "\n";
+  }
+  if (before)
+    setenv("VK_INSTANCE_LAYERS", before->c_str(), 1);
+  else
+    unsetenv("VK_INSTANCE_LAYERS");
+  EXPECT_EQ(counted, 0u) << messages;
+}
+
+// A real validation error is still counted: a buffer of size 0
+// (VUID-VkBufferCreateInfo-size-00912).
+TEST(Validation, ARealValidationErrorIsCounted) {
+  ContextOptions options;
+  options.instance.validation = true;
+  VulkanContext context(options);
+  ASSERT_EQ(context.validationMessageCount(), 0u);
+  VkBufferCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+  info.size = 0;
+  info.usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  vkCreateBuffer(context.device(), &info, nullptr, &buffer);
+  if (buffer != VK_NULL_HANDLE) vkDestroyBuffer(context.device(), buffer, nullptr);
+  ASSERT_GE(context.validationMessageCount(), 1u);
+  EXPECT_NE(context.validationMessages().front().find("VUID-VkBufferCreateInfo-size-00912"),
+            std::string::npos)
+      << context.validationMessages().front();
+}
 
 // A 0.2 m square of 4x4 cells in z = 0, front facing +z.
 Sheet square() {

@@ -95,6 +95,18 @@ TEST_F(RenderCli, RenderWritesAPngOfTheAskedSize) {
   expectPictureOfAFoldedSheet(path("fold.png"), /*creases=*/true);
 }
 
+// A shell with VK_INSTANCE_LAYERS naming the validation layer: the loader's note that it adds the
+// layer is no validation message, so a validating run still passes.
+TEST_F(RenderCli, ValidationPassesWithVkInstanceLayersSet) {
+  const std::string recording = (kRecordings / "square_one_fold.jsonl").string();
+  const CommandResult r =
+      run("render " + recording + " --png " + path("fold.png").string() + " --size 64x64",
+          "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+  EXPECT_EQ(pngSize(path("fold.png")), std::make_pair(64u, 64u));
+}
+
 // Issue 27, 5: a target (grey) on the left half and the design (paper) on the right, one camera;
 // an odd width splits with the extra column on the design's side.
 TEST_F(RenderCli, RenderWithATargetPutsItBesideTheDesign) {

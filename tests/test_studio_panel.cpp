@@ -204,5 +204,37 @@ TEST_F(StudioPanelTest, SavedDesignsAreRecentAndOpenFromTheList) {
   EXPECT_FALSE(fs::exists(saved));
 }
 
+// The panel's items are where they are whatever the machine's recent list holds: a recorded
+// session's pointing (positions, not labels) replays onto the same items on another machine. The
+// list opening is the user's doing and recorded; what it holds is not.
+TEST_F(StudioPanelTest, ItemsStayWhereTheyAreWhateverTheRecentListHolds) {
+  actions_.loadTarget = [](const std::string&) {};
+  actions_.suggest = [] {};
+  const std::vector<std::string> labels = {
+      "surface", "Create", "Undo",        "crease pattern", "save as", "Save",
+      "open",    "Open",   "export to",   "FOLD",           "SVG",     "PNG",
+      "PDF",     "target", "Load target", "Suggest",        "Take",    "Recent designs"};
+  for (const bool fills : {false, true}) {
+    panel_.setFillsDisplay(fills);
+    auto centres = [&](std::vector<std::string> recent) {
+      panel_.setRecent(std::move(recent));
+      frame();
+      frame();
+      std::vector<glm::vec2> at;
+      for (const std::string& label : labels) {
+        const std::optional<glm::vec2> centre = panel_.itemCentre(label);
+        EXPECT_TRUE(centre) << "no item \"" << label << "\"";
+        at.push_back(centre.value_or(glm::vec2(-1.0f)));
+      }
+      return at;
+    };
+    const std::vector<glm::vec2> none = centres({});
+    const std::vector<glm::vec2> some =
+        centres({"/a/one.curvefold.json", "/b/two.curvefold.json", "/c/three.curvefold.json"});
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      EXPECT_EQ(none[i], some[i]) << labels[i] << (fills ? " (fills the display)" : "");
+  }
+}
+
 }  // namespace
 }  // namespace curvefold::cli
