@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -281,6 +282,51 @@ TEST_F(HeldPanel, PanelButtonsActOnTheCore) {
   EXPECT_NE(doc_.core->worldFromSheet(), start);
   click("Reset view");
   EXPECT_EQ(doc_.core->worldFromSheet(), start);
+}
+
+// Issue 28: a panel item acts once per press, however long the trigger is held on it: held for
+// many frames, the "crease pattern" checkbox toggles once and "Undo" (three folds made) undoes one.
+TEST_F(HeldPanel, AHeldTriggerActsOnceOnAPanelItem) {
+  // Three folds to undo, made with the tip.
+  for (const glm::dvec3 corner :
+       {glm::dvec3(0.05, 0.05, 0.0), glm::dvec3(-0.05, -0.05, 0.0), glm::dvec3(0.05, -0.05, 0.0)}) {
+    frame_.pointHand.aim = kDown;
+    frame_.pointHand.position = doc_.core->worldOf(corner);
+    send();
+    frame_.pointHand.select = 1.0;
+    send();
+    for (int i = 1; i <= 5; ++i) {
+      frame_.pointHand.position -= 0.1 * (doc_.core->worldOf(corner) - doc_.core->worldOf({}));
+      send();
+    }
+    frame_.pointHand.select = 0.0;
+    send();
+  }
+  const std::size_t folds = doc_.session->foldCount();
+  ASSERT_EQ(folds, 3u);
+  // Holds the trigger on the item for many frames; counts the frames in which `state` changed.
+  auto hold = [&](const std::string& label, const std::function<std::size_t()>& state) {
+    tipOnSheetAimingAt(label);
+    send();
+    int changes = 0;
+    std::size_t last = state();
+    auto step = [&] {
+      send();
+      changes += state() != last;
+      last = state();
+    };
+    frame_.pointHand.select = 1.0;
+    for (int i = 0; i < 30; ++i) step();
+    frame_.pointHand.select = 0.0;
+    step();
+    step();
+    return changes;
+  };
+  const bool creases = studio_.creasePattern();
+  EXPECT_EQ(hold("crease pattern", [&] { return std::size_t(studio_.creasePattern()); }), 1);
+  EXPECT_EQ(studio_.creasePattern(), !creases);
+  EXPECT_EQ(hold("Undo", [&] { return doc_.session->foldCount(); }), 1);
+  EXPECT_EQ(doc_.session->foldCount(), folds - 1);
 }
 
 // The studio folding toward a target (issue 27, 3): a square folded once at random is the target;

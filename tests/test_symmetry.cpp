@@ -192,6 +192,47 @@ TEST(Symmetry, ImagesWhosePartsOverlapAreCounted) {
   EXPECT_EQ(imageNotes(0, 0), "");
 }
 
+// Issue 28: an image whose seed lies in the part the fold moved is skipped, not folded from where
+// the fold put its seed. A ring at the top rim folded straight down holds every image's seed: all
+// five are skipped, and the fold alone (a ring, symmetric by itself) keeps every invariant. A
+// slanted cap holding some of its images' seeds skips those and folds the rest.
+TEST(Symmetry, AnImageWhoseSeedTheFoldMovedIsSkipped) {
+  struct Case {
+    glm::dvec3 to;
+    std::size_t skipped;
+  };
+  const Sheet initial = makeSurface("cylinder");
+  const Symmetry symmetry = parseSymmetry("rotational:6", initial);
+  for (const Case& c : {Case{{0.045, 0.09, 0.0}, 5}, Case{{0.0, 0.07, 0.0}, 3}}) {
+    SCOPED_TRACE(c.skipped);
+    FoldSession session(initial);
+    session.setSymmetry(symmetry);
+    session.beginDragNear({0.045, 0.105, 0.0});
+    session.updateDrag(c.to);
+    ASSERT_TRUE(session.commit());
+    EXPECT_EQ(session.lastSkippedImages(), c.skipped);
+    EXPECT_EQ(session.foldCount(), 1u + 5u - c.skipped);
+    EXPECT_NE(imageNotes(session.lastSkippedImages(), 0)
+                  .find(std::to_string(c.skipped) + " skipped: their seeds lie in a part"),
+              std::string::npos);
+    const Sheet& sheet = session.fixed();
+    ValidationOptions options;
+    EXPECT_NO_THROW(validate(sheet, options));
+    EXPECT_TRUE(identical(replayFolds(initial, session.folds()), sheet));
+    // The same through the folder: the fold's images, each skipped or folded.
+    const SymmetricFolder folder(initial, symmetry);
+    Sheet alone = replayFolds(initial, {session.folds().front()});
+    const SymmetricFolder::Result result =
+        folder.applyImages(initial, alone, session.folds().front());
+    EXPECT_EQ(result.skipped, c.skipped);
+    EXPECT_EQ(result.applied.size(), 5u - c.skipped);
+    EXPECT_TRUE(identical(alone, sheet));
+    if (c.skipped == 5)
+      for (const Isometry& g : symmetry.images())
+        expectMapsOntoItself(sheet, g, 1e-9 * sheetSize(initial));
+  }
+}
+
 // A drag in a symmetric design may preview its images (the display's coarse sheet does): what it
 // shows is what the commit then makes, bit for bit, with the images' reflected triangles; a drag
 // back to its start shows nothing folded, and a cancel ends the preview.
