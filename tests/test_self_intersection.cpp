@@ -2,6 +2,7 @@
 // against a brute-force all-pairs test on random designs, and the live drag watch against the
 // pairs of the folded sheet that cross between the reflected part and the rest.
 #include <random>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -63,6 +64,64 @@ TEST(TrianglePair, CrossingTouchingAndLyingFlat) {
             TrianglePairKind::Apart);
 }
 
+// Triangles sharing one corner (the origin): one passing through the other beyond it crosses;
+// meeting only at it (a fan, folded or flat), or leaning on it along an edge, does not; lying on
+// it and overlapping (a flat fold) is contact.
+TEST(TrianglePair, SharingOneCornerCrossesOnlyBeyondIt) {
+  const glm::dvec3 o(0.0);
+  const Corners flat{o, glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0)};
+  const double tolerance = 1e-9;
+  glm::dvec3 point;
+  EXPECT_EQ(classifyTrianglePair(flat, {o, glm::dvec3(0.6, 0.2, 0.5), glm::dvec3(0.2, 0.6, -0.5)},
+                                 tolerance, &point),
+            TrianglePairKind::Intersect);
+  EXPECT_NEAR(point.z, 0.0, 1e-12);
+  EXPECT_GT(point.x, 0.1);  // off the shared corner, inside both
+  EXPECT_NEAR(point.x, point.y, 1e-12);
+  // The other's planes cross, but its cut runs away from the triangle: they meet at the corner.
+  EXPECT_EQ(classifyTrianglePair(
+                flat, {o, glm::dvec3(-0.6, -0.2, 0.5), glm::dvec3(-0.2, -0.6, -0.5)}, tolerance),
+            TrianglePairKind::Apart);
+  EXPECT_EQ(
+      classifyTrianglePair(flat, {o, glm::dvec3(-1, 0, 0.3), glm::dvec3(0, -1, 0.3)}, tolerance),
+      TrianglePairKind::Apart);
+  EXPECT_EQ(classifyTrianglePair(flat, {o, glm::dvec3(0.3, 0.3, 0.0), glm::dvec3(0.3, 0.3, 1.0)},
+                                 tolerance),
+            TrianglePairKind::Apart);
+  EXPECT_EQ(classifyTrianglePair(flat, {o, glm::dvec3(-1, 0, 0), glm::dvec3(0, -1, 0)}, tolerance),
+            TrianglePairKind::Apart);
+  EXPECT_EQ(
+      classifyTrianglePair(flat, {o, glm::dvec3(0.5, 0.1, 0), glm::dvec3(0.1, 0.5, 0)}, tolerance),
+      TrianglePairKind::Contact);
+}
+
+// A sheet of two triangles sharing vertex 0 (the second's corners given), its development a
+// fan of the same size.
+Sheet twoTrianglesSharingACorner(const glm::dvec3& b1, const glm::dvec3& b2) {
+  Sheet sheet;
+  sheet.positions = {glm::dvec3(0.0), {1, 0, 0}, {0, 1, 0}, b1, b2};
+  sheet.development = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  sheet.triangles = {{0, 1, 2}, {0, 3, 4}};
+  return sheet;
+}
+
+// The whole-sheet check (tree and all pairs) tests pairs sharing one vertex.
+TEST(SelfIntersection, PairsSharingOneVertexAreTested) {
+  using Pairs = std::vector<std::pair<TriangleIndex, TriangleIndex>>;
+  const Pairs pair{{0, 1}};
+  for (const auto& [b1, b2, crossing, touching] :
+       {std::tuple{glm::dvec3(0.6, 0.2, 0.5), glm::dvec3(0.2, 0.6, -0.5), true, false},
+        std::tuple{glm::dvec3(-0.6, -0.2, 0.5), glm::dvec3(-0.2, -0.6, -0.5), false, false},
+        std::tuple{glm::dvec3(0.5, 0.1, 0.0), glm::dvec3(0.1, 0.5, 0.0), false, true}}) {
+    const Sheet sheet = twoTrianglesSharingACorner(b1, b2);
+    for (const SelfIntersectionReport& report :
+         {findSelfIntersections(sheet), findSelfIntersectionsBruteForce(sheet)}) {
+      EXPECT_EQ(report.intersections, crossing ? pair : Pairs{});
+      EXPECT_EQ(report.contacts, touching ? pair : Pairs{});
+    }
+  }
+}
+
 // The reflection of a point through the plane with unit normal n through q.
 glm::dvec3 mirrored(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& n) {
   return p - 2.0 * glm::dot(p - q, n) * n;
@@ -77,6 +136,36 @@ std::size_t crossingsBetweenParts(const FoldSession& session) {
   for (const auto& [s, t] : findSelfIntersectionsBruteForce(sheet).intersections)
     count += moved[s] != moved[t];
   return count;
+}
+
+// A truncated 300-degree cone of six triangles, its corner folded through the next panel
+// (`curvefold new cone --angle 300 --top_radius 0.02 --resolution 3`, then `fold`): the crossing
+// triangles share one vertex, and both the watch and `check` see them.
+TEST(SelfIntersection, AConeCornerFoldedThroughTheTriangleBesideItIsFlagged) {
+  FoldSession session(
+      makeSurface("cone", {{"angle", 300.0}, {"top_radius", 0.02}, {"resolution", 3}}));
+  ASSERT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+  session.beginDragNear({-0.01, 0.06, -0.017320508075688773});
+  DragIntersectionWatch watch;
+  watch.begin(session.fixed());
+  session.updateDrag({0.04048325757935013, -0.06534938107471035, -0.07413437895813192});
+  watch.update(session.current(), session.lastChanges(), session.plane(),
+               session.reflectedTriangles());
+  EXPECT_GT(watch.pairCount(), 0u);
+  EXPECT_EQ(watch.pairCount(), crossingsBetweenParts(session));
+  ASSERT_TRUE(session.commit());
+  const Sheet& sheet = session.fixed();
+  const SelfIntersectionReport report = findSelfIntersections(sheet);
+  ASSERT_FALSE(report.intersections.empty());
+  EXPECT_EQ(report.intersections, findSelfIntersectionsBruteForce(sheet).intersections);
+  bool sharingOne = false;
+  for (const auto& [s, t] : report.intersections) {
+    int shared = 0;
+    for (VertexIndex u : sheet.triangles[s])
+      for (VertexIndex v : sheet.triangles[t]) shared += u == v;
+    sharingOne |= shared == 1;
+  }
+  EXPECT_TRUE(sharingOne);
 }
 
 // A tube's top, folded down through a slanted plane into the tube and out through its far wall,

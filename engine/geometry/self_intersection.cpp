@@ -33,11 +33,14 @@ bool boxesMeet(const Corners& a, const Corners& b, double tolerance) {
   return true;
 }
 
-bool shareVertex(const Triangle& a, const Triangle& b) {
+// Neighbours across an edge are the crease itself: their dihedral is the fold, never a crossing.
+// Triangles sharing one corner are tested (the classifier excludes that corner): a fan folded
+// past itself passes through the sheet beyond it.
+bool shareEdge(const Triangle& a, const Triangle& b) {
+  int shared = 0;
   for (VertexIndex u : a)
-    for (VertexIndex v : b)
-      if (u == v) return true;
-  return false;
+    for (VertexIndex v : b) shared += u == v;
+  return shared >= 2;
 }
 
 // Signs of distances with those within the tolerance snapped to zero.
@@ -106,7 +109,10 @@ TrianglePairKind classifyTrianglePair(const Corners& a, const Corners& b, double
   if ((positiveB == 0 && negativeB == 0) || (positiveA == 0 && negativeA == 0))
     return coplanarOverlap(a, b, normalA, tolerance) ? TrianglePairKind::Contact
                                                      : TrianglePairKind::Apart;
-  // Interiors cross only where each triangle has corners strictly on both sides of the other.
+  // Interiors cross only where each triangle has corners strictly on both sides of the other. A
+  // shared corner lies on both planes, so both cuts start there and overlap beyond it (by more
+  // than the tolerance) only when the triangles pass through each other, not when they meet
+  // only at it.
   if (positiveB == 0 || negativeB == 0 || positiveA == 0 || negativeA == 0)
     return TrianglePairKind::Apart;
   const glm::dvec3 line = glm::normalize(glm::cross(normalA, normalB));
@@ -210,7 +216,7 @@ void finish(const Sheet& sheet, double tolerance, SelfIntersectionReport& report
 
 void record(const Sheet& sheet, TriangleIndex s, TriangleIndex t, double tolerance,
             SelfIntersectionReport& report) {
-  if (shareVertex(sheet.triangles[s], sheet.triangles[t])) return;
+  if (shareEdge(sheet.triangles[s], sheet.triangles[t])) return;
   const Corners a = cornersOf(sheet, s), b = cornersOf(sheet, t);
   if (!boxesMeet(a, b, tolerance)) return;
   const TrianglePairKind kind = classifyTrianglePair(a, b, tolerance);
@@ -390,7 +396,7 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
           if (!overlaps(low, high, B.low, B.high, tolerance_)) return;
           for (std::uint32_t j = B.first; j < B.first + B.count; ++j)
             forPieces(tree_.order[j], [&](TriangleIndex t) {
-              if (moved_[t] || shareVertex(folded.triangles[s], folded.triangles[t])) return;
+              if (moved_[t] || shareEdge(folded.triangles[s], folded.triangles[t])) return;
               const Corners ct = cornersOf(folded, t);
               if (!boxesMeet(cs, ct, tolerance_)) return;
               ++trianglePairs_;

@@ -1,9 +1,12 @@
 // Self-intersections of a folded sheet (issue 17, docs/design.md 7b). Mitani & Igarashi's system
 // "does not check for self collisions" (Sec. 6): a design may pass through itself and still look
-// finished, yet cannot be folded from paper. Two triangles intersect when they share no vertex and
+// finished, yet cannot be folded from paper. Two triangles intersect when they share no edge and
 // their interiors cross (each has vertices strictly on both sides of the other's plane and the two
-// cuts overlap along the planes' common line, by more than the tolerance). Layers that only touch
-// (coplanar within the tolerance, overlapping: a flat fold) are contact, counted apart.
+// cuts overlap along the planes' common line, by more than the tolerance). Triangles sharing one
+// vertex are tested too, that vertex excluded: both cuts start at it, so they cross only when one
+// passes through the other beyond it. Neighbours across an edge are the crease and never tested.
+// Layers that only touch (coplanar within the tolerance, overlapping in area: a flat fold, with or
+// without a shared vertex) are contact, counted apart.
 //
 // The tests run on a bounding-volume hierarchy of the sheet's triangles (flat arrays, built by
 // median splits): the whole sheet against itself for `check`, and while dragging the reflected
@@ -29,8 +32,9 @@ inline constexpr double kRelativeContactTolerance = 1e-9;
 
 enum class TrianglePairKind { Apart, Contact, Intersect };
 
-// Two triangles (by their corners) against each other; `tolerance` in metres. Sharing vertices is
-// the caller's to rule out (neighbours always touch).
+// Two triangles (by their corners) against each other; `tolerance` in metres. They may share one
+// corner (it is on both planes, and meeting only there is Apart); neighbours sharing an edge are
+// the caller's to rule out (they always touch).
 TrianglePairKind classifyTrianglePair(const std::array<glm::dvec3, 3>& a,
                                       const std::array<glm::dvec3, 3>& b, double tolerance,
                                       glm::dvec3* crossing = nullptr);
