@@ -3,7 +3,8 @@
 // of their own. On random folded designs (flat folds that lay layers on a square, folds through
 // curved surfaces), every pair curvefold calls intersecting CGAL calls intersecting; every contact
 // (coplanar layers) overlaps in the plane; and every pair CGAL calls intersecting that curvefold
-// reports as neither only touches (shrunk a little, CGAL finds them apart).
+// reports as neither only touches (shrunk a little, CGAL finds them apart). Pairs sharing one
+// vertex are held to meeting beyond it.
 #include <algorithm>
 #include <random>
 #include <set>
@@ -83,6 +84,35 @@ std::set<Pair> cgalPairs(const Sheet& sheet) {
   return pairs;
 }
 
+// How many vertices triangles s and t share.
+int sharedVertices(const Sheet& sheet, TriangleIndex s, TriangleIndex t) {
+  int shared = 0;
+  for (VertexIndex u : sheet.triangles[s])
+    for (VertexIndex v : sheet.triangles[t]) shared += u == v;
+  return shared;
+}
+
+// For triangles sharing one vertex: whether they meet beyond it. Past the shared vertex, the line
+// where their planes cross leaves each triangle through the edge opposite that vertex, so they
+// meet beyond it exactly when an opposite edge meets the other triangle.
+bool cgalMeetBeyondTheSharedVertex(const Sheet& sheet, TriangleIndex s, TriangleIndex t) {
+  auto opposite = [&](TriangleIndex u, TriangleIndex other) {
+    std::vector<Point3> ends;
+    for (VertexIndex v : sheet.triangles[u])
+      if (std::find(sheet.triangles[other].begin(), sheet.triangles[other].end(), v) ==
+          sheet.triangles[other].end())
+        ends.push_back(pointOf(sheet.positions[v]));
+    return Kernel::Segment_3(ends[0], ends[1]);
+  };
+  auto triangle = [&](TriangleIndex u) {
+    const Triangle& c = sheet.triangles[u];
+    return Triangle3(pointOf(sheet.positions[c[0]]), pointOf(sheet.positions[c[1]]),
+                     pointOf(sheet.positions[c[2]]));
+  };
+  return CGAL::do_intersect(opposite(s, t), triangle(t)) ||
+         CGAL::do_intersect(opposite(t, s), triangle(s));
+}
+
 TEST(SelfIntersection, AgreesWithCgalOnRandomFoldedDesigns) {
   std::mt19937 random(28);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -103,8 +133,18 @@ TEST(SelfIntersection, AgreesWithCgalOnRandomFoldedDesigns) {
       const Sheet& sheet = session.fixed();
       const SelfIntersectionReport report = findSelfIntersections(sheet);
       const std::set<Pair> cgal = cgalPairs(sheet);
-      const std::set<Pair> intersections(report.intersections.begin(), report.intersections.end());
-      const std::set<Pair> contacts(report.contacts.begin(), report.contacts.end());
+      // Pairs sharing no vertex are compared both ways below; pairs sharing one vertex (tested
+      // since the cone corner of issue 28, 2) are held to meeting beyond it.
+      std::set<Pair> intersections, contacts;
+      for (const Pair& p : report.intersections) {
+        if (sharedVertices(sheet, p.first, p.second) == 0)
+          intersections.insert(p);
+        else
+          EXPECT_TRUE(cgalMeetBeyondTheSharedVertex(sheet, p.first, p.second))
+              << "step " << step << ": " << p.first << " " << p.second;
+      }
+      for (const Pair& p : report.contacts)
+        if (sharedVertices(sheet, p.first, p.second) == 0) contacts.insert(p);
       for (const Pair& p : intersections)
         EXPECT_TRUE(cgal.count(p)) << "step " << step << ": " << p.first << " " << p.second;
       for (const Pair& p : contacts)
