@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "sanitizer_support.hpp"
 
 namespace fs = std::filesystem;
 using curvefold::testing::CommandResult;
@@ -428,17 +429,7 @@ TEST_F(Cli, UnwritableOutputIsRefused) {
 // as they are parsed, so a 40 MB unknown array costs nothing. Sanitizers reserve terabytes of
 // address space, so their build runs the same inputs without the ulimit.
 TEST_F(Cli, LargeInputsAreRefusedInOneLineWithinAGigabyte) {
-#if defined(__SANITIZE_ADDRESS__)
-  const std::string limit;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-  const std::string limit;
-#else
-  const std::string limit = "ulimit -v 1048576 &&";
-#endif
-#else
-  const std::string limit = "ulimit -v 1048576 &&";
-#endif
+  const std::string limit = curvefold::testing::kSanitized ? "" : "ulimit -v 1048576 &&";
   const std::string design = newDesign("square --resolution 8", "a.curvefold.json");
   const std::string text = slurp(design);
   auto withJunk = [&](const std::string& name, std::size_t elements) {

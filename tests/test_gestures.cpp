@@ -14,6 +14,7 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
@@ -204,18 +205,7 @@ TEST(Gestures, ShowcaseRecordingsAreCurrentAndRichOnEverySurface) {
 }
 
 // The address sanitizer keeps freed memory in quarantine: the process grows with every frame
-// line made and freed, so only the plain build measures the growth.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+// line made and freed, so only the plain build measures the growth (kSanitized).
 
 // Issue 14, 2: "scale_sheet" takes the sheet with both hands and spreads them: the recording
 // holds the point hand's squeeze, a replay of it reaches the same view scale, and a drag after it
@@ -268,7 +258,7 @@ TEST(Gestures, ALongScriptStreamsItsFrames) {
   EXPECT_EQ(stream.frames, streamed);
   EXPECT_GT(streamed, 400'000u);
   EXPECT_NEAR(stream.seconds, (streamed - 1) / 1000.0, 1e-6);
-  if (!kSanitized) {
+  if (!testing::kSanitized) {
     EXPECT_LT(grown, 16 * 1024) << "kilobytes";
   }
   // The same frames as the in-memory recording of the same script (the first 3000: the drag).

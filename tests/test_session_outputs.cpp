@@ -20,6 +20,7 @@
 #include "app/session_outputs.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "io_test_support.hpp"
+#include "sanitizer_support.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
 
@@ -28,18 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using SessionOutputsTest = curvefold::testing::ScratchDirectory;
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
 
 // Issue 29, 1 and 3: the recent-designs list is read a bounded line at a time (a 300 MB line was
 // held whole before its 4096-byte limit applied), and a path that is not UTF-8 is skipped (it
@@ -68,7 +57,7 @@ TEST_F(SessionOutputsTest, TheRecentListIsReadBoundedAndKeepsOnlyUtf8) {
   EXPECT_EQ(recent,
             (std::vector<std::string>{"/a/first.curvefold.json", "/b/caf\xc3\xa9.curvefold.json",
                                       "/d/last.curvefold.json"}));
-  if (!kSanitized) {
+  if (!curvefold::testing::kSanitized) {
     EXPECT_LT(usage.ru_maxrss - peakBefore, 16 * 1024) << "kilobytes";
   }
   // A FIFO in the list's place is not opened (the open would block).
