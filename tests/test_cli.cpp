@@ -376,6 +376,28 @@ TEST_F(Cli, TheSheetCacheKeepsToItsBudgetAndOpensOnlyFiles) {
   EXPECT_EQ(slurp(path("f.json")), slurp(path("e.json")));
 }
 
+// Issue 28, 2: a symmetric fold whose image a slit cuts into more than 64 pieces was written and
+// then refused at save ("more_seeds lists more than 64 points"); it is refused as the fold is
+// made, in one line, and the design stays as it was.
+TEST_F(Cli, ASymmetricFoldADesignCannotRecordIsRefused) {
+  const std::string design =
+      newDesign("cylinder --resolution 24 --symmetry mirror:x", "a.curvefold.json");
+  ASSERT_EQ(run("fold " + design +
+                " --vertex-near -0.0225,0.046666666666666676,-0.03897114317029974 --to "
+                "-0.07275499745684516,0.1254736126148371,0.01862030143694663 -o " +
+                design)
+                .exitCode,
+            0);
+  const std::string before = slurp(design);
+  const fs::path out = path("b.curvefold.json");
+  expectFailure("fold " + design +
+                    " --vertex-near -0.1437382553798517,0.11717063052962869,0.0964369962180662 "
+                    "--to -0.10483478971225205,0.18046269367226736,0.17215735734495607 -o " +
+                    out.string(),
+                "more than 64 pieces", out);
+  EXPECT_EQ(slurp(design), before);
+}
+
 // Issue 13, D14: a drag of 1e-10 to 1e-9 m off a flat star put its bisector within the on-plane
 // tolerance of the whole sheet and creased it everywhere. A drag below the shortest fold is none.
 TEST_F(Cli, SubToleranceDragAddsNoFold) {

@@ -76,6 +76,29 @@ TEST(Symmetry, LooseOrLongTextIsRefusedByAnExcerpt) {
   }
 }
 
+// Issue 28, 2: an image that a slit cuts into more pieces than a design records (more_seeds, at
+// most 64) was made, kept, and then refused when the design was saved. It is refused when the
+// fold is made: nothing is kept and refusal() says why.
+TEST(Symmetry, AnImageInMorePiecesThanADesignRecordsRefusesTheFold) {
+  const Sheet initial = makeSurface("cylinder", {{"resolution", 24}});
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("mirror:x", initial));
+  session.beginDragNear({-0.0225, 0.046666666666666676, -0.03897114317029974});
+  session.updateDrag({-0.07275499745684516, 0.1254736126148371, 0.01862030143694663});
+  ASSERT_TRUE(session.commit()) << session.refusal();
+  const std::size_t folds = session.foldCount();
+  const Sheet before = session.fixed();
+  session.beginDragNear({-0.1437382553798517, 0.11717063052962869, 0.0964369962180662});
+  session.updateDrag({-0.10483478971225205, 0.18046269367226736, 0.17215735734495607});
+  EXPECT_FALSE(session.commit());
+  EXPECT_NE(session.refusal().find("more than 64 pieces"), std::string::npos) << session.refusal();
+  EXPECT_EQ(session.foldCount(), folds);
+  EXPECT_EQ(session.fixed().positions, before.positions);
+  EXPECT_EQ(session.fixed().triangles, before.triangles);
+  validate(session.fixed());
+  for (const FoldRecord& fold : session.folds()) EXPECT_LE(fold.moreSeeds.size(), kMaxMoreSeeds);
+}
+
 using testing::expectMapsOntoItself;
 
 // A fold on a 6-fold cylinder and a mirrored cone: the images follow, each an exact reflection

@@ -170,6 +170,20 @@ bool FoldSession::commit() {
     cancel();
     return false;
   }
+  // The images follow, through the sheet as it was before the fold (fixed_), onto the folded one;
+  // an image the design could not record refuses the whole fold, before anything is kept.
+  const FoldRecord record{grabSeed_, plane_, grabbed_, target_, 0, {}};
+  SymmetricFolder::Result images;
+  if (symmetric_) {
+    try {
+      images = symmetric_->applyImages(fixed_, temporal_, record);
+    } catch (const InvalidSheet& e) {
+      refusal_ = std::string("the fold was not kept: ") + e.what();
+      temporal_ = fixed_;  // the images changed it past what the workspace restores
+      cancel();
+      return false;
+    }
+  }
   dragging_ = false;
   folded_ = false;
   previewing_ = false;
@@ -177,15 +191,12 @@ bool FoldSession::commit() {
   // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
   if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
     keyframes_.resize(applied_ / kKeyframeInterval + 1);
-  history_.push_back({grabSeed_, plane_, grabbed_, target_, 0, {}});
+  history_.push_back(record);
   ++applied_;
   ++designRevision_;
   lastSkipped_ = lastOverlapping_ = 0;
+  std::swap(fixed_, temporal_);
   if (symmetric_) {
-    // The images follow, through the sheet as it was before the fold.
-    const Sheet before = fixed_;
-    std::swap(fixed_, temporal_);
-    const SymmetricFolder::Result images = symmetric_->applyImages(before, fixed_, history_.back());
     std::uint32_t group = 0;
     for (std::size_t i = 0; i + 1 < history_.size(); ++i)
       group = std::max(group, history_[i].group);
@@ -197,8 +208,6 @@ bool FoldSession::commit() {
     }
     lastSkipped_ = images.skipped;
     lastOverlapping_ = images.overlapping;
-  } else {
-    std::swap(fixed_, temporal_);
   }
   temporal_ = fixed_;  // reuses the old storage; a commit pays for the sheet anyway (adjacency)
   fixedChanged();

@@ -28,6 +28,10 @@ struct Symmetry;
 // micro-drag off a flat sheet cannot put the whole sheet "on the plane" and crease it everywhere.
 inline constexpr double kRelativeMinimumDrag = 1e-7;
 
+// The most moreSeeds a fold records: an image whose part a slit cuts into more pieces than this
+// is refused when the fold is made, not first when its design is saved.
+inline constexpr std::size_t kMaxMoreSeeds = 64;
+
 struct FoldRecord {
   glm::dvec2 seed{0.0};
   ReflectionPlane plane;

@@ -296,6 +296,13 @@ SymmetricFolder::Pieces SymmetricFolder::piecesOf(const Sheet& sheet, const Fold
       return !reached[v] && plane.signedDistance(grab.sheet.positions[v]) < -epsilon;
     });
     if (missing == wanted.end()) break;
+    // Refused here, while the fold is made: a design cannot record more (it was found only when
+    // the design was saved).
+    if (more.size() == kMaxMoreSeeds)
+      throw InvalidSheet("an image of this fold falls into more than " +
+                         std::to_string(kMaxMoreSeeds) +
+                         " pieces across the surface's slits, more than a design records; a fold "
+                         "a little elsewhere avoids it");
     more.push_back(*missing);
   }
   Pieces pieces;

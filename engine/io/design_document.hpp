@@ -22,8 +22,7 @@ namespace curvefold {
 
 inline constexpr std::string_view kDesignFormat = "curvefold-design";
 inline constexpr int kDesignVersion = 1;
-// A fold's "more_seeds" (FoldRecord::moreSeeds): one per piece a slit cuts an image's part into.
-inline constexpr std::size_t kMaxMoreSeeds = 64;
+// A fold's "more_seeds" (FoldRecord::moreSeeds) hold at most kMaxMoreSeeds (fold_session.hpp).
 
 // One line naming the file and the problem, e.g.
 // "bird.curvefold.json: fold 3: seed (0.5, 1.2) lies outside the sheet". Folds count from 1.
