@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -91,7 +92,11 @@ class StudioPanel {
   void resetParameters();
   // The catalog surface with the sliders' parameters.
   GeneratedSurface chosenSurface() const;
-  // Lists the symmetries of chosenSurface() (once per surface and parameters).
+  // Finds the symmetries of chosenSurface() in the background once per surface and parameters,
+  // one search at a time, and takes a finished search's list.
+  void findSymmetries();
+  // Lists the symmetries of chosenSurface() when the list opens: the background's, waited for
+  // when not done yet.
   void refreshSymmetries();
   void remember(const std::string& designPath, const StudioActions& actions);
   void writeThrough(const StudioActions& actions, const std::string& path,
@@ -105,6 +110,8 @@ class StudioPanel {
   std::string symmetry_ = kNoSymmetry;  // of the new sheet
   std::vector<std::string> symmetryChoices_;
   std::optional<GeneratedSurface> symmetriesFor_;  // the surface symmetryChoices_ are of
+  std::future<std::vector<std::string>> finding_;  // the search under way, for findingFor_
+  std::optional<GeneratedSurface> findingFor_;
   // Strings, not fixed buffers: a long path is kept whole, never cut.
   std::string savePath_ = "design.curvefold.json";
   std::string openPath_;

@@ -23,6 +23,7 @@
 #include "app/interaction_scene.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
@@ -193,6 +194,15 @@ void BM_FoldCommandCached(benchmark::State& state) {
   state.counters["folds"] = double(design.folds.size());
 }
 BENCHMARK(BM_FoldCommandCached)->Arg(10)->Arg(40)->Unit(benchmark::kMillisecond);
+
+// Issue 28: the symmetries a studio panel lists for a cylinder, found on the frame that opens the
+// list (resolution 48 is the default).
+void BM_SymmetryChoices(benchmark::State& state) {
+  const Sheet cylinder = makeSurface("cylinder", {{"resolution", double(state.range(0))}});
+  for (auto _ : state) benchmark::DoNotOptimize(symmetryChoices(cylinder));
+  state.counters["vertices"] = double(cylinder.vertexCount());
+}
+BENCHMARK(BM_SymmetryChoices)->Arg(48)->Arg(200)->Arg(500)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace curvefold

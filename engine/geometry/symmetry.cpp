@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -39,40 +40,174 @@ Isometry rotation(int axis, double radians, const glm::dvec3& centre) {
   return about(glm::dmat3(glm::rotate(glm::dmat4(1.0), radians, unitAxis(axis))), centre);
 }
 
-// Vertices by their position on a grid of the tolerance, for lookups of images.
-class VertexGrid {
- public:
-  VertexGrid(const Sheet& sheet, double tolerance) : sheet_(sheet), cell_(4.0 * tolerance) {
-    for (VertexIndex v = 0; v < sheet.vertexCount(); ++v)
-      cells_[key(sheet.positions[v])].push_back(v);
-  }
-  std::optional<VertexIndex> find(const glm::dvec3& p, double tolerance) const {
-    const std::array<long long, 3> k = key(p);
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          const auto it = cells_.find({k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == cells_.end()) continue;
-          for (VertexIndex v : it->second)
-            if (glm::distance(sheet_.positions[v], p) <= tolerance) return v;
-        }
-    return std::nullopt;
-  }
+// Grid keys and vertex numbers are regular: mixed (splitmix64's finaliser) so buckets stay short.
+std::uint64_t mix(std::uint64_t h) {
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  return h ^ (h >> 31);
+}
 
- private:
-  std::array<long long, 3> key(const glm::dvec3& p) const {
-    return {std::llround(std::floor(p.x / cell_)), std::llround(std::floor(p.y / cell_)),
-            std::llround(std::floor(p.z / cell_))};
+struct CellHash {
+  std::size_t operator()(const std::array<long long, 3>& k) const {
+    return mix(mix(mix(std::uint64_t(k[0])) + std::uint64_t(k[1])) + std::uint64_t(k[2]));
   }
-  const Sheet& sheet_;
-  double cell_;
-  std::map<std::array<long long, 3>, std::vector<VertexIndex>> cells_;
 };
 
 std::array<VertexIndex, 3> sorted(std::array<VertexIndex, 3> t) {
   std::sort(t.begin(), t.end());
   return t;
 }
+
+// What every test of an isometry against one sheet shares, built once: vertices on a hashed grid
+// of the tolerance, each vertex's place (the first vertex at its position: a slit's two sides are
+// one place) and the triangles by the sorted places of their corners, grouped by the smallest.
+// Each image then costs one lookup per vertex and one per triangle, and stops at the first that
+// misses. Lookups go in the mesh's order, which an isometry of it mostly keeps: a vertex's image
+// is first sought next to the previous one's, and the triangles by their smallest place, so most
+// lookups stay in the cache.
+class SymmetryIndex {
+ public:
+  SymmetryIndex(const Sheet& sheet, SymmetryStats* stats)
+      : sheet_(sheet),
+        tolerance_(kRelativeContactTolerance * sheetSize(sheet)),
+        cell_(64.0 * tolerance_),
+        stats_(stats) {
+    // Open addressing, at most half full: one allocation, where a map of lists makes one a cell.
+    std::size_t capacity = 2;
+    while (capacity < 2 * sheet.vertexCount()) capacity *= 2;
+    cells_.assign(capacity, Cell{});
+    nextInCell_.assign(sheet.vertexCount(), kNoIndex);
+    for (std::uint32_t v = sheet.vertexCount(); v-- > 0;) {
+      const std::array<long long, 3> k = key(sheet.positions[v]);
+      Cell& cell = cellOf(k);
+      cell.key = k;
+      nextInCell_[v] = cell.first;  // backwards, so each cell lists its vertices in order
+      cell.first = v;
+    }
+    place_.resize(sheet.vertexCount());
+    for (VertexIndex v = 0; v < sheet.vertexCount(); ++v) place_[v] = *find(sheet.positions[v]);
+    // Counting sort by the smallest place, in the triangles' order: the first of equal triples
+    // is the one a lookup finds.
+    firstAt_.assign(sheet.vertexCount() + 1, 0);
+    for (const Triangle& tri : sheet.triangles) ++firstAt_[placesOf(tri)[0] + 1];
+    for (std::size_t p = 0; p < sheet.vertexCount(); ++p) firstAt_[p + 1] += firstAt_[p];
+    byPlaces_.resize(sheet.triangleCount());
+    std::vector<std::uint32_t> next(firstAt_.begin(), firstAt_.end() - 1);
+    for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
+      const std::array<VertexIndex, 3> places = placesOf(sheet.triangles[t]);
+      byPlaces_[next[places[0]]++] = {places, t};
+    }
+  }
+
+  const Sheet& sheet() const { return sheet_; }
+  double tolerance() const { return tolerance_; }
+
+  // Each triangle's image under g corner by corner, or nothing at the first corner or triangle
+  // that maps onto none (trianglePermutation).
+  std::optional<std::vector<Triangle>> permutation(const Isometry& g) const {
+    std::vector<Triangle> image(sheet_.triangleCount());
+    if (!map(g, &image)) return std::nullopt;
+    return image;
+  }
+  bool maps(const Isometry& g) const { return map(g, nullptr); }
+
+ private:
+  bool map(const Isometry& g, std::vector<Triangle>* image) const {
+    // Each vertex's image place, looked up when a corner first needs it.
+    std::vector<VertexIndex> imagePlace(sheet_.vertexCount(), kNoIndex);
+    VertexIndex last = kNoIndex;
+    for (TriangleIndex t = 0; t < sheet_.triangleCount(); ++t) {
+      const Triangle& tri = sheet_.triangles[t];
+      std::array<VertexIndex, 3> places{};
+      for (int i = 0; i < 3; ++i) {
+        VertexIndex& p = imagePlace[tri[i]];
+        if (p == kNoIndex) {
+          const std::optional<VertexIndex> found = find(g.apply(sheet_.positions[tri[i]]), last);
+          if (!found) return false;
+          last = *found;
+          p = place_[*found];
+        }
+        places[i] = p;
+      }
+      const std::optional<TriangleIndex> match = triangleAt(sorted(places));
+      if (!match) return false;
+      if (!image) continue;
+      const Triangle& other = sheet_.triangles[*match];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (place_[other[j]] == places[i]) (*image)[t][i] = other[j];
+    }
+    return true;
+  }
+
+  std::array<VertexIndex, 3> placesOf(const Triangle& tri) const {
+    return sorted({place_[tri[0]], place_[tri[1]], place_[tri[2]]});
+  }
+
+  std::array<long long, 3> key(const glm::dvec3& p) const {
+    return {std::llround(std::floor(p.x / cell_)), std::llround(std::floor(p.y / cell_)),
+            std::llround(std::floor(p.z / cell_))};
+  }
+
+  // The first triangle whose corners are at these sorted places.
+  std::optional<TriangleIndex> triangleAt(const std::array<VertexIndex, 3>& places) const {
+    for (std::uint32_t k = firstAt_[places[0]]; k < firstAt_[places[0] + 1]; ++k)
+      if (byPlaces_[k].places == places) return byPlaces_[k].triangle;
+    return std::nullopt;
+  }
+
+  // A vertex within the tolerance of p: first the neighbours of `near` (the previous image),
+  // then the cells the tolerance's box touches (one, mostly, as a cell is 64 tolerances wide).
+  std::optional<VertexIndex> find(const glm::dvec3& p, VertexIndex near = kNoIndex) const {
+    if (near != kNoIndex)
+      for (std::uint32_t v : {std::uint32_t(near) + 1, std::uint32_t(near) - 1})
+        if (v < sheet_.vertexCount()) {
+          if (stats_) ++stats_->distanceTests;
+          if (glm::distance(sheet_.positions[v], p) <= tolerance_) return VertexIndex(v);
+        }
+    const glm::dvec3 reach(tolerance_);
+    const std::array<long long, 3> low = key(p - reach), high = key(p + reach);
+    for (long long x = low[0]; x <= high[0]; ++x)
+      for (long long y = low[1]; y <= high[1]; ++y)
+        for (long long z = low[2]; z <= high[2]; ++z) {
+          if (stats_) ++stats_->cellProbes;
+          for (VertexIndex v = cellOf({x, y, z}).first; v != kNoIndex; v = nextInCell_[v]) {
+            if (stats_) ++stats_->distanceTests;
+            if (glm::distance(sheet_.positions[v], p) <= tolerance_) return v;
+          }
+        }
+    return std::nullopt;
+  }
+
+  const Sheet& sheet_;
+  double tolerance_;
+  double cell_;
+  SymmetryStats* stats_;
+  struct Cell {
+    std::array<long long, 3> key{};
+    VertexIndex first = kNoIndex;  // kNoIndex: an empty slot
+  };
+  // The slot of a key: its own, or the empty one where it would go.
+  Cell& cellOf(const std::array<long long, 3>& key) {
+    return const_cast<Cell&>(std::as_const(*this).cellOf(key));
+  }
+  const Cell& cellOf(const std::array<long long, 3>& key) const {
+    const std::size_t mask = cells_.size() - 1;
+    for (std::size_t slot = CellHash()(key) & mask;; slot = (slot + 1) & mask) {
+      const Cell& cell = cells_[slot];
+      if (cell.first == kNoIndex || cell.key == key) return cell;
+    }
+  }
+  std::vector<Cell> cells_;
+  std::vector<VertexIndex> nextInCell_;  // the next vertex in the same cell
+  std::vector<VertexIndex> place_;
+  struct Placed {
+    std::array<VertexIndex, 3> places;
+    TriangleIndex triangle;
+  };
+  std::vector<std::uint32_t> firstAt_;  // per place, where its triangles start in byPlaces_
+  std::vector<Placed> byPlaces_;
+};
 
 }  // namespace
 
@@ -103,53 +238,23 @@ glm::dvec3 surfaceCentre(const Sheet& initial) {
 }
 
 std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, const Isometry& g) {
-  const double tolerance = kRelativeContactTolerance * sheetSize(initial);
-  const VertexGrid grid(initial, tolerance);
-  // Vertices at one place (the two sides of a slit) are one place: triangles are matched by the
-  // places of their corners, then each corner by its place.
-  std::vector<VertexIndex> place(initial.vertexCount());
-  for (VertexIndex v = 0; v < initial.vertexCount(); ++v)
-    place[v] = *grid.find(initial.positions[v], tolerance);
-  std::map<std::array<VertexIndex, 3>, TriangleIndex> byPlaces;
-  for (TriangleIndex t = 0; t < initial.triangleCount(); ++t) {
-    const Triangle& tri = initial.triangles[t];
-    byPlaces.emplace(sorted({place[tri[0]], place[tri[1]], place[tri[2]]}), t);
-  }
-  std::vector<Triangle> image(initial.triangleCount());
-  for (TriangleIndex t = 0; t < initial.triangleCount(); ++t) {
-    const Triangle& tri = initial.triangles[t];
-    std::array<VertexIndex, 3> places{};
-    for (int i = 0; i < 3; ++i) {
-      const std::optional<VertexIndex> found =
-          grid.find(g.apply(initial.positions[tri[i]]), tolerance);
-      if (!found) return std::nullopt;
-      places[i] = place[*found];
-    }
-    const auto match = byPlaces.find(sorted(places));
-    if (match == byPlaces.end()) return std::nullopt;
-    const Triangle& other = initial.triangles[match->second];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        if (place[other[j]] == places[i]) image[t][i] = other[j];
-  }
-  return image;
+  return SymmetryIndex(initial, nullptr).permutation(g);
 }
 
 namespace {
 
-bool has(const Sheet& initial, const Symmetry& symmetry) {
+bool has(const SymmetryIndex& index, const Symmetry& symmetry) {
   const std::vector<Isometry> images = symmetry.images();
   // A mirror that fixes every vertex (a flat sheet's own plane) is no symmetry to fold by.
   if (symmetry.kind == Symmetry::Kind::Mirror) {
-    const double tolerance = kRelativeContactTolerance * sheetSize(initial);
-    bool moves = false;
-    for (const glm::dvec3& p : initial.positions)
-      moves = moves || glm::distance(images[0].apply(p), p) > tolerance;
-    if (!moves) return false;
+    const std::vector<glm::dvec3>& positions = index.sheet().positions;
+    if (std::none_of(positions.begin(), positions.end(), [&](const glm::dvec3& p) {
+          return glm::distance(images[0].apply(p), p) > index.tolerance();
+        }))
+      return false;
   }
-  for (const Isometry& g : images)
-    if (!trianglePermutation(initial, g)) return false;
-  return true;
+  return std::all_of(images.begin(), images.end(),
+                     [&](const Isometry& g) { return index.maps(g); });
 }
 
 }  // namespace
@@ -187,8 +292,9 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
     if (second != std::string::npos) {
       symmetry.axis = axisOf(rest.substr(second + 1));
     } else {
+      const SymmetryIndex index(initial, nullptr);
       for (symmetry.axis = 0; symmetry.axis < 3; ++symmetry.axis)
-        if (has(initial, symmetry)) return symmetry;
+        if (has(index, symmetry)) return symmetry;
       throw InvalidSymmetry(quoted + ": the surface has no " + std::to_string(n) +
                             "-fold rotational symmetry about x, y or z through its centre (see "
                             "`curvefold surfaces`)");
@@ -196,23 +302,24 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
   } else {
     throw InvalidSymmetry(quoted + ": " + expected);
   }
-  if (!has(initial, symmetry))
+  if (!has(SymmetryIndex(initial, nullptr), symmetry))
     throw InvalidSymmetry(quoted + ": the surface does not have " + symmetry.name() +
                           " through its centre (see `curvefold surfaces`)");
   return symmetry;
 }
 
-std::vector<std::string> symmetriesOf(const Sheet& initial) {
+std::vector<std::string> symmetriesOf(const Sheet& initial, SymmetryStats* stats) {
   std::vector<std::string> found;
   const glm::dvec3 centre = surfaceCentre(initial);
+  const SymmetryIndex index(initial, stats);
   for (int axis = 0; axis < 3; ++axis) {
     Symmetry mirrored{Symmetry::Kind::Mirror, 2, axis, centre};
-    if (has(initial, mirrored)) found.push_back(mirrored.name());
+    if (has(index, mirrored)) found.push_back(mirrored.name());
   }
   for (int axis = 0; axis < 3; ++axis)
     for (int n = 12; n >= 2; --n) {
       Symmetry turned{Symmetry::Kind::Rotational, n, axis, centre};
-      if (has(initial, turned)) {
+      if (has(index, turned)) {
         found.push_back(turned.name());
         break;
       }
@@ -220,9 +327,9 @@ std::vector<std::string> symmetriesOf(const Sheet& initial) {
   return found;
 }
 
-std::vector<std::string> symmetryChoices(const Sheet& initial) {
+std::vector<std::string> symmetryChoices(const Sheet& initial, SymmetryStats* stats) {
   std::vector<std::string> choices;
-  for (const std::string& name : symmetriesOf(initial)) {
+  for (const std::string& name : symmetriesOf(initial, stats)) {
     const std::string rotational = "rotational:";
     if (!name.starts_with(rotational)) {
       choices.push_back(name);
@@ -251,8 +358,9 @@ SymmetricFolder::SymmetricFolder(const Sheet& initial, const Symmetry& symmetry)
 
 SymmetricFolder::SymmetricFolder(std::shared_ptr<const Sheet> initial, const Symmetry& symmetry)
     : initial_(std::move(initial)), symmetry_(symmetry), images_(symmetry.images()) {
+  const SymmetryIndex index(*initial_, nullptr);
   for (const Isometry& g : images_) {
-    std::optional<std::vector<Triangle>> permutation = trianglePermutation(*initial_, g);
+    std::optional<std::vector<Triangle>> permutation = index.permutation(g);
     if (!permutation)
       throw InvalidSymmetry("the surface does not have " + symmetry.name() + " through its centre");
     std::vector<VertexIndex> vertexImage(initial_->vertexCount(), kNoIndex);

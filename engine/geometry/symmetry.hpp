@@ -7,6 +7,7 @@
 // development point exactly (through the triangle it lies in).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -60,13 +61,21 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial);
 // told apart by the triangle they belong to.
 std::optional<std::vector<Triangle>> trianglePermutation(const Sheet& initial, const Isometry& g);
 
+// The work of finding symmetries (issue 28), to show it stays near-linear: each vertex and each
+// image of one looks at about one cell of a grid and one vertex in it.
+struct SymmetryStats {
+  std::uint64_t cellProbes = 0;     // cells of the vertex grid looked up
+  std::uint64_t distanceTests = 0;  // vertices measured against a point looked up
+};
+
 // The symmetries the sheet has, among mirrors normal to x, y, z and rotations of order 2 to 12
-// about them (each rotation by its largest order, then its divisors are implied).
-std::vector<std::string> symmetriesOf(const Sheet& initial);
+// about them (each rotation by its largest order, then its divisors are implied). `stats`, when
+// given, receives the work done.
+std::vector<std::string> symmetriesOf(const Sheet& initial, SymmetryStats* stats = nullptr);
 
 // Every symmetry a design on the sheet may take, for a list to choose from: the mirrors, and each
 // rotation with every order that divides it ("rotational:12:y", "rotational:6:y", ...).
-std::vector<std::string> symmetryChoices(const Sheet& initial);
+std::vector<std::string> symmetryChoices(const Sheet& initial, SymmetryStats* stats = nullptr);
 
 // What a group's images left out or overlapped, for a message: "" when nothing, else
 // " (1 skipped: ...; 2 overlap ...)".
