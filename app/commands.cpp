@@ -258,7 +258,7 @@ void addExportCommand(CLI::App& app) {
       "valley score (green), in mm");
   command->add_option("--perforate", options->perforate,
                       "With --cut-svg: CUT,GAP in mm: the scores become cuts of CUT with GAP "
-                      "between, to fold by hand");
+                      "between, to fold by hand, in a layer perforation (magenta)");
   CLI::Option* pdf = command->add_option(
       "--pdf", options->pdf,
       "PDF to print: the crease pattern at real size, tiled across pages, after a cover page");

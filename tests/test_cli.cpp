@@ -123,7 +123,11 @@ TEST_F(Cli, ExportWritesACutterSvg) {
   CommandResult r =
       run("export " + design + " --cut-svg " + path("cut.svg").string() + " --perforate 3,1.5");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(slurp(path("cut.svg")).find("inkscape:label=\"valley score\""), std::string::npos);
+  const std::string svg = slurp(path("cut.svg"));
+  EXPECT_NE(svg.find("inkscape:label=\"valley score\""), std::string::npos);
+  // Issue 28, 3: the dashes are cuts, in their own layer.
+  EXPECT_NE(svg.find("inkscape:label=\"perforation\" fill=\"none\" stroke=\"#ff00ff\""),
+            std::string::npos);
   // Issue 29, 1: dashes finer than a cutter cuts are refused too (1e-5 once wrote 264 MB).
   for (const char* wrong : {"3", "3,0", "a,b", "3,1.5,2", "-1,2", "1e-5,1e-5", "0.05,3"})
     expectFailure(

@@ -1,8 +1,11 @@
 // The cutter SVG (issue 18, 2): its layers by name and colour, hairlines in millimetres, the cut
 // layer around the whole sheet, creases joined into polylines, and perforations of the asked
 // lengths.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -61,21 +64,27 @@ TEST(CutterSvg, ThreeLayersInTheirColours) {
 }
 
 // Perforated scores: every dash as long as asked but a line's last, which may be shorter, with the
-// gap between dashes (along a crease, dashes continue across its vertices); the cut is not.
+// gap between dashes (along a crease, dashes continue across its vertices); the cut is not. The
+// dashes are cuts, in a layer of their own (issue 28, 3): the score layers are left empty.
 TEST(CutterSvg, PerforationsHaveTheirLengths) {
   const Perforation perforation{3.0, 1.5};
   const std::vector<CutterLayer> layers = cutterLayers(foldedRectangle(), perforation);
+  ASSERT_EQ(layers.size(), 4u);
   ASSERT_EQ(layers[0].polylines.size(), 1u);
-  for (int k = 1; k <= 2; ++k) {
-    const auto& dashes = layers[k].polylines;
-    // 100 mm: 22 whole periods of 4.5 mm, then a last dash of 1 mm.
-    ASSERT_EQ(dashes.size(), 23u) << layers[k].name;
-    for (std::size_t i = 0; i < dashes.size(); ++i) {
-      ASSERT_EQ(dashes[i].size(), 2u);
-      EXPECT_NEAR(length(dashes[i]), i + 1 < dashes.size() ? 3.0 : 1.0, 1e-9) << i;
-      if (i > 0) {
-        EXPECT_NEAR(glm::distance(dashes[i - 1][1], dashes[i][0]), 1.5, 1e-9) << i;
-      }
+  EXPECT_TRUE(layers[1].polylines.empty());
+  EXPECT_TRUE(layers[2].polylines.empty());
+  EXPECT_EQ(layers[3].name, "perforation");
+  EXPECT_EQ(layers[3].colour, "#ff00ff");
+  // Two creases of 100 mm (the mountain's, then the valley's): each 22 whole periods of 4.5 mm,
+  // then a last dash of 1 mm.
+  const auto& dashes = layers[3].polylines;
+  ASSERT_EQ(dashes.size(), 46u);
+  for (std::size_t i = 0; i < dashes.size(); ++i) {
+    const bool last = i % 23 == 22;
+    ASSERT_GE(dashes[i].size(), 2u);
+    EXPECT_NEAR(length(dashes[i]), last ? 1.0 : 3.0, 1e-9) << i;
+    if (i % 23 > 0) {
+      EXPECT_NEAR(glm::distance(dashes[i - 1].back(), dashes[i].front()), 1.5, 1e-9) << i;
     }
   }
   EXPECT_THROW(cutterLayers(foldedRectangle(), Perforation{0.0, 1.0}), std::invalid_argument);
@@ -166,6 +175,139 @@ TEST_F(CutterSvgFile, MountainAndValleyScoresHoldTheirOwnCreases) {
   EXPECT_NEAR(layerMm["mountain score"], mountainMm, 0.01);
   EXPECT_NEAR(layerMm["valley score"], valleyMm, 0.01);
   EXPECT_NEAR(layerMm["cut"], 600.0, 0.01);
+}
+
+// Each layer's paths ("M x y L x y ...", millimetres) by the layer's label, read back from a file.
+std::map<std::string, std::vector<std::vector<glm::dvec2>>> readLayers(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  std::map<std::string, std::vector<std::vector<glm::dvec2>>> layers;
+  const std::regex layer(R"re(<g [^>]*inkscape:label="([^"]*)"[^>]*>([\s\S]*?)</g>)re");
+  const std::regex pathData(R"re(<path d="M ([^"]*)"/>)re");
+  for (std::sregex_iterator g(svg.begin(), svg.end(), layer), end; g != end; ++g) {
+    const std::string name = (*g)[1], body = (*g)[2];
+    auto& lines = layers[name];
+    for (std::sregex_iterator p(body.begin(), body.end(), pathData); p != end; ++p) {
+      std::string d = (*p)[1];
+      for (char& c : d)
+        if (c == 'L') c = ' ';
+      std::istringstream numbers(d);
+      std::vector<glm::dvec2> line;
+      for (glm::dvec2 q; numbers >> q.x >> q.y;) line.push_back(q);
+      lines.push_back(std::move(line));
+    }
+  }
+  return layers;
+}
+
+// A cone folded twice: long curved creases, each a polyline of many short edges.
+Sheet foldedCone() {
+  FoldSession session(makeSurface("cone", {}));
+  const glm::dvec3 first = session.beginDragNear({0.03, 0.105, 0.03});
+  session.updateDrag(first + glm::dvec3(-0.03, -0.075, 0.02));
+  EXPECT_TRUE(session.commit());
+  const glm::dvec3 second = session.beginDragNear({-0.045, -0.1, 0.0});
+  session.updateDrag(second + glm::dvec3(0.02, 0.05, 0.01));
+  EXPECT_TRUE(session.commit());
+  return session.fixed();
+}
+
+// The engine's crease edges in the file's millimetres (y down, 5 mm margin).
+std::vector<std::pair<glm::dvec2, glm::dvec2>> creaseSegmentsMm(const Sheet& sheet) {
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  auto mm = [&](VertexIndex v) {
+    const glm::dvec2& p = sheet.development[v];
+    return glm::dvec2((p.x - bounds.low.x) * 1000.0 + 5.0, (bounds.high.y - p.y) * 1000.0 + 5.0);
+  };
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> segments;
+  for (const CreaseEdge& c : creaseEdges(sheet, buildEdgeTopology(sheet)))
+    if (c.assignment == Assignment::Mountain || c.assignment == Assignment::Valley)
+      segments.emplace_back(mm(c.edge.a), mm(c.edge.b));
+  return segments;
+}
+
+double distanceToSegment(glm::dvec2 q, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 ab = b - a;
+  const double t = std::clamp(glm::dot(q - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+  return glm::distance(q, a + t * ab);
+}
+
+// Issue 28, 1 and 3: on a curved crease every dash follows the crease (a chord across its bends
+// was up to 0.64 mm off it), the dashes cut CUT/(CUT+GAP) of it, and they are all in the
+// perforation layer, none in the score layers.
+TEST_F(CutterSvgFile, PerforationsFollowCurvedCreasesInTheirOwnLayer) {
+  const Sheet sheet = foldedCone();
+  const auto segments = creaseSegmentsMm(sheet);
+  double creaseMm = 0.0;
+  for (const auto& [a, b] : segments) creaseMm += glm::distance(a, b);
+  ASSERT_GT(segments.size(), 100u);
+  ASSERT_GT(creaseMm, 300.0);
+
+  const fs::path path = dir() / "cut.svg";
+  const Perforation perforation{3.0, 1.5};
+  writeCutterSvg(sheet, path, perforation);
+  auto layers = readLayers(path);
+  ASSERT_EQ(layers.size(), 4u);
+  EXPECT_TRUE(layers["mountain score"].empty());
+  EXPECT_TRUE(layers["valley score"].empty());
+  const auto& dashes = layers["perforation"];
+  ASSERT_FALSE(dashes.empty());
+  double worst = 0.0, dashMm = 0.0;
+  for (const auto& dash : dashes) {
+    dashMm += length(dash);
+    for (glm::dvec2 q : dash) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& [a, b] : segments) nearest = std::min(nearest, distanceToSegment(q, a, b));
+      worst = std::max(worst, nearest);
+    }
+  }
+  RecordProperty("worst_mm", std::to_string(worst));
+  EXPECT_LT(worst, 0.01);
+  // Sampled between the points too: a dash's chord across a bend leaves the crease mid-way.
+  double worstBetween = 0.0;
+  for (const auto& dash : dashes)
+    for (std::size_t i = 0; i + 1 < dash.size(); ++i) {
+      const glm::dvec2 mid = 0.5 * (dash[i] + dash[i + 1]);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& [a, b] : segments) nearest = std::min(nearest, distanceToSegment(mid, a, b));
+      worstBetween = std::max(worstBetween, nearest);
+    }
+  EXPECT_LT(worstBetween, 0.01);
+  const double period = perforation.cutMm + perforation.gapMm;
+  EXPECT_NEAR(dashMm, creaseMm * perforation.cutMm / period, period);
+
+  // Without perforation the scores are as before and there is no perforation layer.
+  writeCutterSvg(sheet, path);
+  layers = readLayers(path);
+  EXPECT_EQ(layers.size(), 3u);
+  EXPECT_EQ(layers.count("perforation"), 0u);
+  EXPECT_FALSE(layers["mountain score"].empty());
+  EXPECT_FALSE(layers["valley score"].empty());
+}
+
+// Issue 28, 2: the dash pattern runs on along a whole crease of many edges, not restarted at each
+// edge: ceil(length / period) dashes a crease (one more where its end falls in a gap's 1e-9).
+TEST(CutterSvg, PerforationRunsOnAcrossEdges) {
+  const Sheet sheet = foldedCone();
+  const Perforation perforation{3.0, 1.5};
+  const double period = perforation.cutMm + perforation.gapMm;
+  const std::vector<CutterLayer> plain = cutterLayers(sheet);
+  std::size_t expected = 0;
+  for (int k = 1; k <= 2; ++k)
+    for (const auto& line : plain[k].polylines) {
+      ASSERT_GT(line.size(), 20u) << "each crease must be many edges";
+      expected += static_cast<std::size_t>(std::ceil(length(line) / period));
+    }
+  const std::vector<CutterLayer> layers = cutterLayers(sheet, perforation);
+  ASSERT_EQ(layers.size(), 4u);
+  const auto& dashes = layers[3].polylines;
+  EXPECT_NEAR(static_cast<double>(dashes.size()), static_cast<double>(expected), 1.0);
+  // Every dash but each crease's last is whole: at most one short dash a crease.
+  std::size_t shortDashes = 0;
+  for (const auto& dash : dashes) shortDashes += length(dash) < perforation.cutMm - 1e-6;
+  EXPECT_LE(shortDashes, plain[1].polylines.size() + plain[2].polylines.size());
 }
 
 }  // namespace

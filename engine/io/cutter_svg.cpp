@@ -1,11 +1,13 @@
 #include "engine/io/cutter_svg.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
 #include <map>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -20,13 +22,54 @@ namespace {
 constexpr double kMmPerMetre = 1000.0;
 constexpr double kMarginMm = 5.0;
 
-// Joins edges into polylines through vertices where exactly two of them meet: paths first from
-// each end (a vertex where one or three or more meet), then what is left, closed loops.
-std::vector<std::vector<VertexIndex>> chains(const std::vector<Edge>& edges) {
+// A crease runs on through a vertex where others meet if it turns by less than this there; a
+// curved crease turns by a few degrees a vertex, creases crossing at a vertex by far more.
+constexpr double kMaxRunOnTurnCos = 0.7071067811865476;  // 45 degrees
+
+// Joins edges into polylines: through every vertex where exactly two meet, and through a vertex
+// where more meet along the straightest pairs (so a crease crossed by another of its kind stays
+// one line, and its perforation runs on across the crossing). Paths first from each end (an edge
+// end with no partner), then what is left, closed loops.
+std::vector<std::vector<VertexIndex>> chains(const std::vector<Edge>& edges,
+                                             const std::vector<glm::dvec2>& at2d) {
   std::map<VertexIndex, std::vector<std::size_t>> at;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     at[edges[i].a].push_back(i);
     at[edges[i].b].push_back(i);
+  }
+  auto other = [&](std::size_t e, VertexIndex v) {
+    return edges[e].a == v ? edges[e].b : edges[e].a;
+  };
+  // partner[{v, e}]: the edge that continues e through v.
+  std::map<std::pair<VertexIndex, std::size_t>, std::size_t> partner;
+  for (const auto& [v, incident] : at) {
+    if (incident.size() == 2) {
+      partner[{v, incident[0]}] = incident[1];
+      partner[{v, incident[1]}] = incident[0];
+      continue;
+    }
+    if (incident.size() < 3) continue;
+    // Greedy pairing by straightness: the pair whose directions out of v are most opposed first.
+    struct Pair {
+      double cosine;
+      std::size_t e, f;
+    };
+    std::vector<Pair> pairs;
+    for (std::size_t i = 0; i < incident.size(); ++i)
+      for (std::size_t j = i + 1; j < incident.size(); ++j) {
+        const glm::dvec2 u = at2d[other(incident[i], v)] - at2d[v];
+        const glm::dvec2 w = at2d[other(incident[j], v)] - at2d[v];
+        const double lengths = glm::length(u) * glm::length(w);
+        if (lengths > 0.0) pairs.push_back({glm::dot(u, w) / lengths, incident[i], incident[j]});
+      }
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& x, const Pair& y) { return x.cosine < y.cosine; });
+    for (const Pair& pair : pairs)
+      if (-pair.cosine >= kMaxRunOnTurnCos && !partner.count({v, pair.e}) &&
+          !partner.count({v, pair.f})) {
+        partner[{v, pair.e}] = pair.f;
+        partner[{v, pair.f}] = pair.e;
+      }
   }
   std::vector<char> used(edges.size(), 0);
   std::vector<std::vector<VertexIndex>> result;
@@ -36,32 +79,31 @@ std::vector<std::vector<VertexIndex>> chains(const std::vector<Edge>& edges) {
     std::size_t e = first;
     while (true) {
       used[e] = 1;
-      v = edges[e].a == v ? edges[e].b : edges[e].a;
+      v = other(e, v);
       chain.push_back(v);
-      const std::vector<std::size_t>& next = at[v];
-      if (next.size() != 2) break;
-      const std::size_t other = next[0] == e ? next[1] : next[0];
-      if (used[other]) break;
-      e = other;
+      const auto next = partner.find({v, e});
+      if (next == partner.end() || used[next->second]) break;
+      e = next->second;
     }
     result.push_back(std::move(chain));
   };
   for (const auto& [v, incident] : at)
-    if (incident.size() != 2)
-      for (std::size_t e : incident)
-        if (!used[e]) walk(v, e);
+    for (std::size_t e : incident)
+      if (!used[e] && !partner.count({v, e})) walk(v, e);
   for (std::size_t e = 0; e < edges.size(); ++e)
     if (!used[e]) walk(edges[e].a, e);
   return result;
 }
 
-// Dashes of `cut` with `gap` between along a polyline, continuing across its vertices.
+// Dashes of `cut` with `gap` between along a polyline, the pattern running on across its
+// vertices; each dash follows the line through the vertices it passes (a chord would cut across
+// a curved crease's bends), and only the line's last dash may be shorter.
 std::vector<std::vector<glm::dvec2>> perforate(const std::vector<glm::dvec2>& line,
                                                const Perforation& p) {
   std::vector<std::vector<glm::dvec2>> dashes;
   bool cutting = true;
   double left = p.cutMm;  // of the current dash or gap
-  glm::dvec2 dashStart = line.front();
+  std::vector<glm::dvec2> dash{line.front()};
   for (std::size_t i = 0; i + 1 < line.size(); ++i) {
     glm::dvec2 a = line[i];
     const glm::dvec2 b = line[i + 1];
@@ -73,16 +115,23 @@ std::vector<std::vector<glm::dvec2>> perforate(const std::vector<glm::dvec2>& li
       length -= step;
       a = end;
       if (left <= 1e-12) {
-        if (cutting) dashes.push_back({dashStart, end});
+        if (cutting) {
+          dash.push_back(end);
+          dashes.push_back(std::move(dash));
+        }
         cutting = !cutting;
         left = cutting ? p.cutMm : p.gapMm;
-        dashStart = end;
+        dash = {end};
       }
     }
+    // The dash bends here with the line (not at its very start, which is already in it).
+    if (cutting && i + 2 < line.size() && glm::distance(dash.back(), b) > 1e-9) dash.push_back(b);
   }
   // A last, shorter dash where the line ends inside one.
-  if (cutting && glm::distance(dashStart, line.back()) > 1e-9)
-    dashes.push_back({dashStart, line.back()});
+  if (cutting && glm::distance(dash.front(), line.back()) > 1e-9) {
+    if (glm::distance(dash.back(), line.back()) > 1e-9) dash.push_back(line.back());
+    dashes.push_back(std::move(dash));
+  }
   return dashes;
 }
 
@@ -125,16 +174,21 @@ std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
                                   " mm of creases, more than " +
                                   std::to_string(std::llround(kMaxPerforationDashes)));
   }
+  std::vector<glm::dvec2> mm(sheet.development.size());
+  for (std::size_t v = 0; v < mm.size(); ++v) mm[v] = toMm(static_cast<std::uint32_t>(v));
   std::vector<CutterLayer> layers{
       {"cut", "#ff0000", {}}, {"mountain score", "#0000ff", {}}, {"valley score", "#00ff00", {}}};
+  // Perforations are cuts: a layer of their own (issue 28, 3), so the machine cuts them through
+  // rather than scoring them with the creases.
+  if (perforation) layers.push_back({"perforation", "#ff00ff", {}});
   const std::vector<Edge>* sources[3] = {&cut, &mountain, &valley};
   for (int k = 0; k < 3; ++k)
-    for (const std::vector<VertexIndex>& chain : chains(*sources[k])) {
+    for (const std::vector<VertexIndex>& chain : chains(*sources[k], mm)) {
       std::vector<glm::dvec2> line;
-      for (VertexIndex v : chain) line.push_back(toMm(v));
+      for (VertexIndex v : chain) line.push_back(mm[v]);
       if (k > 0 && perforation) {
         for (std::vector<glm::dvec2>& dash : perforate(line, *perforation))
-          layers[k].polylines.push_back(std::move(dash));
+          layers[3].polylines.push_back(std::move(dash));
       } else {
         layers[k].polylines.push_back(std::move(line));
       }

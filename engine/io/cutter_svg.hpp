@@ -3,7 +3,8 @@
 // mountain scores and the valley scores, in a colour per layer that the machines' software maps
 // to an operation (LightBurn layers, Glowforge steps, a plotter's pens). Lines are joined into
 // polylines, so a machine follows a crease without lifting. Perforation turns the scores into
-// cuts of a given length with gaps between, for folding by hand without a scoring tool.
+// cuts of a given length with gaps between, for folding by hand without a scoring tool; being
+// cuts, they get a layer of their own.
 #pragma once
 
 #include <filesystem>
@@ -34,8 +35,10 @@ struct CutterLayer {
   std::vector<std::vector<glm::dvec2>> polylines;
 };
 
-// The layers in order: "cut" red, "mountain score" blue, "valley score" green. With perforation
-// the two score layers hold the dashes (each a two-point polyline).
+// The layers in order: "cut" red, "mountain score" blue, "valley score" green, and with
+// perforation a fourth, "perforation" magenta, that holds the dashes of every crease (each dash a
+// polyline along its crease; the pattern runs on along a whole crease, only its last dash
+// shorter), leaving the score layers empty.
 std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
                                       const std::optional<Perforation>& perforation = {});
 
