@@ -188,6 +188,8 @@ void addRecordScriptCommand(CLI::App& app) {
           [&](const RecordingHeader& header) { out << headerLine(header) << '\n'; },
           [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; }, studioGestureWorld());
     });
+    for (const std::string& warning : stream.warnings)
+      std::cerr << "curvefold: warning: " << options->script << ": " << warning << '\n';
     statusFor({options->output}) << "wrote " << options->output << " (" << stream.frames
                                  << " frames, " << seconds(stream.seconds) << ")\n";
   });

@@ -261,14 +261,15 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   step();
 }
 
-void GestureRecorder::press(Button button) {
+void GestureRecorder::press(Button button, double holdSeconds) {
   frame_.buttons = static_cast<std::uint32_t>(button);
-  step();
+  for (int i = 0, n = stepsFor(holdSeconds); i < n; ++i) step();
   frame_.buttons = 0;
   step();
 }
 
-void GestureRecorder::pointAt(const std::string& label, double seconds, bool click) {
+void GestureRecorder::pointAt(const std::string& label, double seconds, bool click,
+                              double holdSeconds) {
   std::optional<glm::dvec3> item = world_->panelItem(label);
   const std::optional<glm::dvec3> facing = world_->panelFacing();
   if (!item || !facing)
@@ -288,10 +289,9 @@ void GestureRecorder::pointAt(const std::string& label, double seconds, bool cli
     step();
   }
   if (!click) return;
-  // Press for two frames and release, as a finger does; the panel clicks on the release.
+  // Press and release, as a finger does; the panel clicks on the release.
   frame_.pointHand.select = 1.0;
-  step();
-  step();
+  for (int i = 0, n = stepsFor(holdSeconds); i < n; ++i) step();
   frame_.pointHand.select = 0.0;
   step();
 }
@@ -444,6 +444,20 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
     throw GestureError(e.what());
   }
   GestureRecorder& recorder = *made;
+  std::vector<std::string> warnings;
+  // How long a press or click is held: "hold" seconds, or a person's click.
+  const auto holdOf = [&](const nlohmann::json& value, const std::string& at) {
+    reader.object(value, at);
+    const double hold = reader.number(value, "hold", at, kClickSeconds);
+    if (!(hold > 0.0 && hold <= kMaxClickSeconds))
+      reader.fail(at, "\"hold\" must lie in (0, 10] seconds");
+    const double held = framesOf(hold, header.rate) / header.rate;
+    if (held < kShortestSeenClickSeconds - 1e-9)
+      warnings.push_back(at + ": a click held " + std::to_string(std::lround(held * 1000.0)) +
+                         " ms may be missed; a runtime syncing 20 times a second sees presses "
+                         "held 100 ms or more");
+    return hold;
+  };
   const nlohmann::json* gestures =
       &reader.array(reader.member(document, "gestures", ""), "gestures");
   for (std::size_t i = 0; i < gestures->size(); ++i) {
@@ -488,21 +502,22 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
         recorder.drag(reader.vector(value, "grab", at), path, reader.duration(value, at, 1.0),
                       turn);
       } else if (kind == "undo") {
-        recorder.press(Button::Undo);
+        recorder.press(Button::Undo, holdOf(value, at));
       } else if (kind == "redo") {
-        recorder.press(Button::Redo);
+        recorder.press(Button::Redo, holdOf(value, at));
       } else if (kind == "cancel") {
-        recorder.press(Button::Cancel);
+        recorder.press(Button::Cancel, holdOf(value, at));
       } else if (kind == "switch_hands") {
-        recorder.press(Button::SwitchHands);
+        recorder.press(Button::SwitchHands, holdOf(value, at));
       } else if (kind == "toggle_panel" && header.studio) {
-        recorder.press(Button::Panel);
+        recorder.press(Button::Panel, holdOf(value, at));
       } else if (kind == "point_at" && header.studio) {
         reader.object(value, at);
         const nlohmann::json* click = reader.optionalMember(value, "click", at);
+        const bool clicks = !click || reader.boolean(*click, at + ".click");
+        const double hold = clicks ? holdOf(value, at) : kClickSeconds;
         recorder.pointAt(reader.string(reader.member(value, "item", at), at + ".item"),
-                         reader.duration(value, at, 0.5),
-                         !click || reader.boolean(*click, at + ".click"));
+                         reader.duration(value, at, 0.5), clicks, hold);
       } else if (kind == "toggle_panel" || kind == "point_at") {
         reader.fail(at, "needs a studio script (\"studio\":{} in its header)");
       } else {
@@ -518,7 +533,7 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
     }
   }
   recorder.wait(0.1);  // a moment of rest after the last gesture
-  if (stream) *stream = {recorder.frameCount(), recorder.duration()};
+  if (stream) *stream = {recorder.frameCount(), recorder.duration(), std::move(warnings)};
   return recorder.recording();
 }
 

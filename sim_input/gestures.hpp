@@ -20,9 +20,11 @@
 //                     "clutch":true}},                         // world pose; clutch optional
 //      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
 //               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional
-//      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}},
-//      {"point_at":{"item":"Create","click":true,"duration":0.5}},  // studio: a panel item
+//      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}},  // "hold":0.12 optional
+//      {"point_at":{"item":"Create","click":true,"duration":0.5,"hold":0.12}},  // studio: an item
 //      {"toggle_panel":{}}]}                                          // studio: show or hide it
+// A press or click is held "hold" seconds (default kClickSeconds, a person's click); one held
+// under kShortestSeenClickSeconds is recorded with a warning, as a real runtime may miss it.
 // A script with "studio":{} (optionally {"recent":[paths]}) is a headset session with its panel:
 // the point hand then has an aim (its ray), and point_at points it at a panel item by the item's
 // label, so a script survives a change of the panel's layout.
@@ -53,6 +55,11 @@ inline constexpr double kMaxGestureRate = 1000.0;            // frames per secon
 inline constexpr double kMaxGestureSeconds = 600.0;          // one gesture's duration, one wait
 inline constexpr std::size_t kMaxGestureFrames = 1'000'000;  // a whole script
 inline constexpr std::uint64_t kMaxGestureScriptBytes = 16ull << 20;
+// A person's click holds the button about a tenth of a second or more. A runtime reports a button's
+// state at each sync, so a press it should see must last two frames at 20 frames a second: 100 ms.
+inline constexpr double kClickSeconds = 0.12;
+inline constexpr double kShortestSeenClickSeconds = 0.1;
+inline constexpr double kMaxClickSeconds = 10.0;  // "hold" above this is refused as a mistake
 
 class GestureError : public std::runtime_error {
  public:
@@ -112,11 +119,13 @@ class GestureRecorder {
   // grab does not take (the point is out of reach).
   void drag(const glm::dvec3& grabNear, const std::vector<glm::dvec3>& path, double seconds,
             const std::optional<SheetTurn>& turnDuring = std::nullopt);
-  void press(Button button);
+  // Press `button` for `holdSeconds` (at least one frame) and release it.
+  void press(Button button, double holdSeconds = kClickSeconds);
   // Studio: point the dominant hand's ray at the panel item with this label (from 20 cm in front
-  // of the panel) over `seconds`, and click it with the trigger when `click`. Throws GestureError
-  // when no such item is shown.
-  void pointAt(const std::string& label, double seconds, bool click);
+  // of the panel) over `seconds`, and click it with the trigger (held `holdSeconds`) when `click`.
+  // Throws GestureError when no such item is shown.
+  void pointAt(const std::string& label, double seconds, bool click,
+               double holdSeconds = kClickSeconds);
 
   // The header and, without a sink, the frames.
   const Recording& recording() const { return recording_; }
@@ -167,6 +176,8 @@ Recording recordGestureScriptText(std::string_view text, std::string_view nameFo
 struct GestureStream {
   std::size_t frames = 0;
   double seconds = 0.0;
+  // What was recorded but may not play as meant: one line each, naming the gesture.
+  std::vector<std::string> warnings;
 };
 GestureStream streamGestureScript(const std::filesystem::path& script,
                                   const std::function<void(const RecordingHeader&)>& header,

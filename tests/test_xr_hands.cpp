@@ -129,7 +129,7 @@ TEST_F(XrHands, ControllersPutDownAndPickedUpAgainKeepFolding) {
       run("xr " + input + " --headless --autosave switched.json",
           simulated(input, "CURVEFOLD_SIM_JITTER=2 CURVEFOLD_SIM_EVENTS=10:hands,210:controllers"));
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_NE(result.out.find("bare hands drove 200 of 315"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("bare hands drove 200 of 327"), std::string::npos) << result.out;
   // The runtime dropped the controllers' profile while hands were served, and gave it back.
   const std::string log = slurp(path("sim.log"));
   EXPECT_NE(log.find("event hands\nprofile \n"), std::string::npos);
