@@ -284,16 +284,37 @@ TEST_F(Cli, ASymmetricDesignFoldsTheImagesOfEachFold) {
   EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("self-intersection: none"), std::string::npos) << r.out;
 
-  r = run("new square --symmetry mirror:x -o " + path("q.json").string());
+  r = run("new square --symmetry rotational:3 -o " + path("q.json").string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find("mirror:x"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rotational:3"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("q.json")));
   r = run("surfaces");
   EXPECT_NE(r.out.find("symmetries: mirror:x, mirror:y, mirror:z, rotational:2:x, "
                        "rotational:12:y"),
             std::string::npos)
       << r.out;
+  // Issue 28, 2: the flat sheets' meshes have their outlines' symmetries.
+  EXPECT_NE(r.out.find("symmetries: mirror:x, rotational:2:y, rotational:5:z"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("symmetries: mirror:x, mirror:y, rotational:2:x, rotational:2:y, "
+                       "rotational:4:z"),
+            std::string::npos)
+      << r.out;
+}
+
+// Issue 28, 2: a star folds with its 5-fold rotation: a tip and its four images, checked whole.
+TEST_F(Cli, AStarFoldsWithItsFiveFoldRotation) {
+  const std::string design = path("star.json").string();
+  CommandResult r = run("new star --symmetry rotational:5 -o " + design);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("rotational:5:z"), std::string::npos) << r.out;
+  r = run("fold " + design + " --vertex-near 0,0.1,0 --to 0,0.075,0.02 -o " + design);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("fold 1 and 4 images"), std::string::npos) << r.out;
+  r = run("check " + design);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("ok    symmetry: rotational:5:z"), std::string::npos) << r.out;
 }
 
 // Issue 13, E23: `fold` re-applied the whole history on every call. The folded sheet is cached by

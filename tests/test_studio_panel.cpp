@@ -146,12 +146,13 @@ TEST_F(StudioPanelTest, TheRecentListHoldsUtf8AndOpensOnlyFiles) {
   EXPECT_EQ(panel_.message(), "cannot open " + fifo + ": not a regular file");
 }
 
-// The symmetry list holds what the chosen surface has (the square: none), and a new sheet takes
-// the one chosen.
+// The symmetry list holds what the chosen surface has (the square: its mirrors and quarter
+// turns, issue 28, 2), and a new sheet takes the one chosen.
 TEST_F(StudioPanelTest, TheSymmetryListHoldsTheSurfacesOwn) {
   click("symmetry");
   EXPECT_TRUE(panel_.itemCentre("none"));
-  EXPECT_FALSE(panel_.itemCentre("mirror:x"));  // the square's triangles are not symmetric
+  EXPECT_TRUE(panel_.itemCentre("rotational:4:z"));
+  EXPECT_FALSE(panel_.itemCentre("rotational:12:y"));  // the cylinder's, not the square's
   click("none");
   click("surface");
   click("cylinder");

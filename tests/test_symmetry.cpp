@@ -1,6 +1,9 @@
 // Symmetric folding (issue 17, 2): which symmetries each catalog surface has, refusals in one line,
 // and folds whose images keep the folded mesh and its crease pattern mapping onto themselves
 // (within 1e-9 of the sheet's size), each image a fold that passes every invariant.
+#include <map>
+#include <utility>
+
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
@@ -28,9 +31,31 @@ TEST(Symmetry, EachSurfaceSaysWhichItHas) {
             (std::vector<std::string>{"mirror:x", "mirror:y", "mirror:z", "rotational:2:x",
                                       "rotational:12:y", "rotational:6:y", "rotational:4:y",
                                       "rotational:3:y", "rotational:2:y", "rotational:2:z"}));
-  // A flat sheet's own plane fixes it: no symmetry to fold by (the mesher's triangles are not
-  // symmetric either).
-  EXPECT_TRUE(symmetriesOf(makeSurface("square")).empty());
+  // Issue 28, 2: the flat sheets are meshed from one fundamental region, so the mesh has the
+  // outline's mirrors and turns (the disk's 12, a star's up to 12); turning one over about x or
+  // y is a half turn. Their own plane fixes them: no mirror:z.
+  const std::map<std::string, std::vector<std::string>> flat{
+      {"square", {"mirror:x", "mirror:y", "rotational:2:x", "rotational:2:y", "rotational:4:z"}},
+      {"rectangle", {"mirror:x", "mirror:y", "rotational:2:x", "rotational:2:y", "rotational:2:z"}},
+      {"disk", {"mirror:x", "mirror:y", "rotational:2:x", "rotational:2:y", "rotational:12:z"}},
+      {"star", {"mirror:x", "rotational:2:y", "rotational:5:z"}}};
+  for (const auto& [name, expected] : flat) {
+    EXPECT_EQ(symmetriesOf(makeSurface(name)), expected) << name;
+    EXPECT_EQ(symmetriesOf(makeSurface(name, {{"hole_radius", 0.02}, {"resolution", 20}})),
+              expected)
+        << name << " with a hole";
+  }
+  // A star's rotation is the largest divisor of its points up to 12: a prime count above 12 has
+  // its mirror only.
+  for (const auto& [points, expected] : std::vector<std::pair<double, std::vector<std::string>>>{
+           {12, {"mirror:x", "mirror:y", "rotational:2:x", "rotational:2:y", "rotational:12:z"}},
+           {13, {"mirror:x", "rotational:2:y"}},
+           {100,
+            {"mirror:x", "mirror:y", "rotational:2:x", "rotational:2:y", "rotational:10:z"}}}) {
+    const Sheet star = makeSurface("star", {{"points", points}});
+    validate(star);
+    EXPECT_EQ(symmetriesOf(star), expected) << points << " points";
+  }
 }
 
 TEST(Symmetry, WhatASurfaceLacksIsRefusedInOneLine) {
@@ -152,6 +177,38 @@ TEST(Symmetry, AFoldsImagesKeepTheDesignSymmetric) {
     std::vector<FoldRecord> folds{session.folds().back()};
     folds.insert(folds.end(), result.applied.begin(), result.applied.end());
     EXPECT_TRUE(identical(replayFolds(initial, folds), sheet));
+  }
+}
+
+// Issue 28, 2: flat sheets fold with their symmetries. A star's tip, a square's corner (turned
+// and mirrored) and a disk's rim each bring their images; the result passes every invariant, maps
+// onto itself under each element of the group, and its records replay to it.
+TEST(Symmetry, FlatSheetsFoldWithTheirSymmetries) {
+  struct Case {
+    const char* surface;
+    const char* symmetry;
+    glm::dvec3 grab, to;
+    std::size_t images;
+  };
+  for (const Case& c : {Case{"star", "rotational:5", {0.0, 0.1, 0.0}, {0.0, 0.075, 0.02}, 4},
+                        Case{"square", "rotational:4", {0.1, 0.1, 0.0}, {0.08, 0.085, 0.02}, 3},
+                        Case{"square", "mirror:x", {0.1, 0.03, 0.0}, {0.08, 0.03, 0.015}, 1},
+                        Case{"disk", "rotational:12", {0.1, 0.0, 0.0}, {0.098, 0.0, 0.002}, 11},
+                        Case{"disk", "rotational:3", {0.0, 0.1, 0.0}, {0.0, 0.06, 0.03}, 2}}) {
+    SCOPED_TRACE(std::string(c.surface) + " " + c.symmetry);
+    const Sheet initial = makeSurface(c.surface);
+    const Symmetry symmetry = parseSymmetry(c.symmetry, initial);
+    FoldSession session(initial);
+    session.setSymmetry(symmetry);
+    session.beginDragNear(c.grab);
+    session.updateDrag(c.to);
+    ASSERT_TRUE(session.commit()) << session.refusal();
+    EXPECT_EQ(session.foldCount(), 1 + c.images);
+    const Sheet& sheet = session.fixed();
+    validate(sheet);
+    const double tolerance = 1e-9 * sheetSize(initial);
+    for (const Isometry& g : symmetry.images()) expectMapsOntoItself(sheet, g, tolerance);
+    EXPECT_TRUE(identical(replayFolds(initial, session.folds()), sheet));
   }
 }
 

@@ -257,6 +257,32 @@ bool has(const SymmetryIndex& index, const Symmetry& symmetry) {
                      [&](const Isometry& g) { return index.maps(g); });
 }
 
+// The centroid of the area: every symmetry of the mesh fixes it, where the bounding box's middle
+// is off the axis of an odd rotation (a five-pointed star's box reaches further up than down).
+glm::dvec3 areaCentroid(const Sheet& sheet) {
+  glm::dvec3 sum(0.0);
+  double total = 0.0;
+  for (const Triangle& t : sheet.triangles) {
+    const glm::dvec3 a = sheet.positions[t[0]], b = sheet.positions[t[1]],
+                     c = sheet.positions[t[2]];
+    const double area = glm::length(glm::cross(b - a, c - a));
+    sum += area * (a + b + c);
+    total += 3.0 * area;
+  }
+  return total > 0.0 ? sum / total : surfaceCentre(sheet);
+}
+
+// Places the symmetry through the bounding box's middle, else through the area's centroid, and
+// says whether the sheet has it there (the box first: the centre designs made before had).
+bool hasThroughACentre(const SymmetryIndex& index, Symmetry& symmetry) {
+  symmetry.centre = surfaceCentre(index.sheet());
+  if (has(index, symmetry)) return true;
+  symmetry.centre = areaCentroid(index.sheet());
+  if (has(index, symmetry)) return true;
+  symmetry.centre = surfaceCentre(index.sheet());
+  return false;
+}
+
 }  // namespace
 
 Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
@@ -294,7 +320,7 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
     } else {
       const SymmetryIndex index(initial, nullptr);
       for (symmetry.axis = 0; symmetry.axis < 3; ++symmetry.axis)
-        if (has(index, symmetry)) return symmetry;
+        if (hasThroughACentre(index, symmetry)) return symmetry;
       throw InvalidSymmetry(quoted + ": the surface has no " + std::to_string(n) +
                             "-fold rotational symmetry about x, y or z through its centre (see "
                             "`curvefold surfaces`)");
@@ -302,7 +328,7 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
   } else {
     throw InvalidSymmetry(quoted + ": " + expected);
   }
-  if (!has(SymmetryIndex(initial, nullptr), symmetry))
+  if (!hasThroughACentre(SymmetryIndex(initial, nullptr), symmetry))
     throw InvalidSymmetry(quoted + ": the surface does not have " + symmetry.name() +
                           " through its centre (see `curvefold surfaces`)");
   return symmetry;
@@ -310,16 +336,15 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
 
 std::vector<std::string> symmetriesOf(const Sheet& initial, SymmetryStats* stats) {
   std::vector<std::string> found;
-  const glm::dvec3 centre = surfaceCentre(initial);
   const SymmetryIndex index(initial, stats);
   for (int axis = 0; axis < 3; ++axis) {
-    Symmetry mirrored{Symmetry::Kind::Mirror, 2, axis, centre};
-    if (has(index, mirrored)) found.push_back(mirrored.name());
+    Symmetry mirrored{Symmetry::Kind::Mirror, 2, axis, {}};
+    if (hasThroughACentre(index, mirrored)) found.push_back(mirrored.name());
   }
   for (int axis = 0; axis < 3; ++axis)
     for (int n = 12; n >= 2; --n) {
-      Symmetry turned{Symmetry::Kind::Rotational, n, axis, centre};
-      if (has(index, turned)) {
+      Symmetry turned{Symmetry::Kind::Rotational, n, axis, {}};
+      if (hasThroughACentre(index, turned)) {
         found.push_back(turned.name());
         break;
       }

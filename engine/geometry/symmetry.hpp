@@ -48,7 +48,8 @@ struct Symmetry {
   std::string name() const;
 };
 
-// The centre symmetries go through: the middle of the initial surface's bounding box.
+// The middle of the initial surface's bounding box: the centre symmetries go through, or where a
+// symmetry does not hold about it (an odd rotation: a five-pointed star), the centroid of its area.
 glm::dvec3 surfaceCentre(const Sheet& initial);
 
 // "mirror:x|y|z" or "rotational:N[:x|y|z]" (N from 2 to 64; without an axis, the first of x, y, z

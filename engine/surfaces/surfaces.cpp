@@ -8,6 +8,8 @@
 #include <functional>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 #include "engine/surfaces/surface_builders.hpp"
 
 namespace curvefold {
@@ -93,15 +95,6 @@ double polygonArea(const std::vector<glm::dvec2>& polygon) {
   return 0.5 * std::abs(twice);
 }
 
-// A regular polygon inscribed in a circle, with edges no longer than maxEdge.
-std::vector<glm::dvec2> circle(double radius, double maxEdge) {
-  const int count = std::max(8, static_cast<int>(std::ceil(2.0 * pi * radius / maxEdge)));
-  std::vector<glm::dvec2> points(count);
-  for (int i = 0; i < count; ++i)
-    points[i] = radius * glm::dvec2(std::cos(2.0 * pi * i / count), std::sin(2.0 * pi * i / count));
-  return points;
-}
-
 // A length where 0 means "none" (no hole, no truncation) but anything else must be a real length:
 // a hole or a top ring of 1e-20 m would only make degenerate triangles.
 double zeroOrLength(const std::string& surface, const SurfaceParameters& p, const char* name) {
@@ -112,38 +105,128 @@ double zeroOrLength(const std::string& surface, const SurfaceParameters& p, cons
   return value;
 }
 
-// A flat outline with an optional central hole; inradius bounds the hole.
-Sheet flatWithHole(const std::string& surface, const SurfaceParameters& p,
-                   std::vector<glm::dvec2> outline, double longer, double inradius) {
+// The highest rotation order a flat sheet's mesh is given: its centre then has 2 * 12 triangles
+// of 15 degrees there (a 100-point star's 200 would be 1.8-degree slivers), and the symmetry
+// finder looks for rotations up to 12.
+constexpr int kMaxFlatOrder = 12;
+
+// The largest divisor of n up to kMaxFlatOrder (1 for a prime above it: a mirror only).
+int flatOrder(int n) {
+  for (int m = std::min(n, kMaxFlatOrder); m > 1; --m)
+    if (n % m == 0) return m;
+  return 1;
+}
+
+// A flat outline with the dihedral symmetry of order `order` about the origin, meshed so that the
+// mesh has it too: one half-wedge (between the rays at `start` and start + pi / order, each a
+// mirror line of the outline) is meshed, mirrored across its second ray and the pair turned
+// `order` times, vertices on the rays shared by index. `arc` runs along the outline from the
+// first ray to the second; the whole outline sizes the mesh and bounds the hole.
+Sheet symmetricFlat(const std::string& surface, const SurfaceParameters& p,
+                    const std::vector<glm::dvec2>& outline, const std::vector<glm::dvec2>& arc,
+                    double start, int order, double longer, double inradius) {
   const double maxEdge = longer / integer(p, "resolution");
   const double hole = zeroOrLength(surface, p, "hole_radius");
-  std::vector<std::vector<glm::dvec2>> holes;
-  if (hole > 0.0) {
-    if (!(hole < kHoleMargin * inradius))
-      failParameter(surface, "hole_radius", hole,
-                    "must be less than " + detail::formatApprox(kHoleMargin * inradius) +
-                        " (90% of the distance from the centre to the outline)");
-    holes.push_back(circle(hole, maxEdge));
-  }
+  if (hole > 0.0 && !(hole < kHoleMargin * inradius))
+    failParameter(surface, "hole_radius", hole,
+                  "must be less than " + detail::formatApprox(kHoleMargin * inradius) +
+                      " (90% of the distance from the centre to the outline)");
   detail::checkTriangleCount(surface, integer(p, "resolution"),
                              kMeshTrianglesPerArea * polygonArea(outline) / (maxEdge * maxEdge));
-  return triangulateOutline(outline, holes, maxEdge);
+  const double wedge = pi / order;
+  const glm::dvec2 first(std::cos(start), std::sin(start));
+  const glm::dvec2 second(std::cos(start + wedge), std::sin(start + wedge));
+  std::vector<glm::dvec2> half = arc;
+  if (hole > 0.0) {
+    // As many hole segments as a whole circle of at least 8 would give this half-wedge.
+    const int total = std::max(8, static_cast<int>(std::ceil(2.0 * pi * hole / maxEdge)));
+    const int segments = std::max(1, (total + 2 * order - 1) / (2 * order));
+    for (int i = segments; i >= 0; --i) {
+      const double a = start + wedge * i / segments;
+      half.push_back(hole * glm::dvec2(std::cos(a), std::sin(a)));
+    }
+  } else {
+    half.push_back({0.0, 0.0});
+  }
+  const Sheet piece = triangulateOutline(half, {}, maxEdge);
+
+  // Which vertices lie on each ray: the mesher splits the rays at points on them, to rounding.
+  const double tolerance = 1e-12 * longer;
+  auto onRay = [&](const glm::dvec2& q, const glm::dvec2& ray) {
+    return std::abs(ray.x * q.y - ray.y * q.x) <= tolerance && glm::dot(ray, q) >= -tolerance;
+  };
+  const std::size_t n = piece.vertexCount();
+  std::vector<char> onFirst(n), onSecond(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    onFirst[v] = onRay(piece.development[v], first);
+    onSecond[v] = onRay(piece.development[v], second);
+  }
+  // Copy k turns by 2 pi k / order; side 1 is the mirror image across the second ray. A vertex on
+  // the second ray is its own mirror image; one on the first ray is the mirror image of copy k - 1.
+  auto canonical = [&](int k, int side, std::size_t v) -> std::size_t {
+    if (onFirst[v] && onSecond[v]) return v;
+    if (side == 1 && onSecond[v]) return (std::size_t(k) * 2) * n + v;
+    if (side == 0 && onFirst[v]) return (std::size_t((k + order - 1) % order) * 2 + 1) * n + v;
+    return (std::size_t(k) * 2 + side) * n + v;
+  };
+  auto placed = [&](std::size_t key) {
+    const std::size_t v = key % n, k = key / n / 2;
+    glm::dvec2 q = piece.development[v];
+    if ((key / n) % 2 == 1) q = 2.0 * glm::dot(q, second) * second - q;
+    const double turn = 2.0 * pi * static_cast<double>(k) / order;
+    const double c = std::cos(turn), s = std::sin(turn);
+    return glm::dvec2(c * q.x - s * q.y, s * q.x + c * q.y);
+  };
+  Sheet sheet;
+  std::vector<VertexIndex> index(2 * order * n, kNoIndex);
+  for (int k = 0; k < order; ++k)
+    for (int side = 0; side < 2; ++side)
+      for (const Triangle& t : piece.triangles) {
+        Triangle out;
+        for (int i = 0; i < 3; ++i) {
+          const std::size_t key = canonical(k, side, t[i]);
+          if (index[key] == kNoIndex) {
+            index[key] = static_cast<VertexIndex>(sheet.positions.size());
+            const glm::dvec2 q = placed(key);
+            sheet.development.push_back(q);
+            sheet.positions.emplace_back(q.x, q.y, 0.0);
+          }
+          out[i] = index[key];
+        }
+        if (side == 1) std::swap(out[1], out[2]);  // a mirror image turns the other way round
+        sheet.triangles.push_back(out);
+      }
+  return sheet;
 }
 
 Sheet rectangleSheet(const std::string& surface, const SurfaceParameters& p, double width,
                      double height) {
-  const std::vector<glm::dvec2> outline{{-0.5 * width, -0.5 * height},
-                                        {0.5 * width, -0.5 * height},
-                                        {0.5 * width, 0.5 * height},
-                                        {-0.5 * width, 0.5 * height}};
-  return flatWithHole(surface, p, outline, std::max(width, height), 0.5 * std::min(width, height));
+  const double x = 0.5 * width, y = 0.5 * height;
+  const std::vector<glm::dvec2> outline{{-x, -y}, {x, -y}, {x, y}, {-x, y}};
+  // A square is meshed with its four mirrors and turns, a rectangle with its two.
+  const bool square = surface == "square";
+  const std::vector<glm::dvec2> arc = square ? std::vector<glm::dvec2>{{x, 0.0}, {x, y}}
+                                             : std::vector<glm::dvec2>{{x, 0.0}, {x, y}, {0.0, y}};
+  return symmetricFlat(surface, p, outline, arc, 0.0, square ? 4 : 2, std::max(width, height),
+                       std::min(x, y));
 }
+
+// A disk's polygon has a multiple of 24 sides, so its mesh has 12 mirrors and 12-fold rotation.
+constexpr int kDiskOrder = 12;
 
 Sheet diskSheet(const SurfaceParameters& p) {
   const double radius = p.at("radius");
-  const std::vector<glm::dvec2> outline = circle(radius, 2.0 * radius / integer(p, "resolution"));
-  const double inradius = radius * std::cos(pi / static_cast<double>(outline.size()));
-  return flatWithHole("disk", p, outline, 2.0 * radius, inradius);
+  const double maxEdge = 2.0 * radius / integer(p, "resolution");
+  const int steps = 2 * kDiskOrder;
+  const int wanted = std::max(8, static_cast<int>(std::ceil(2.0 * pi * radius / maxEdge)));
+  const int count = (wanted + steps - 1) / steps * steps;
+  std::vector<glm::dvec2> outline(count);
+  for (int i = 0; i < count; ++i)
+    outline[i] =
+        radius * glm::dvec2(std::cos(2.0 * pi * i / count), std::sin(2.0 * pi * i / count));
+  const std::vector<glm::dvec2> arc(outline.begin(), outline.begin() + count / steps + 1);
+  const double inradius = radius * std::cos(pi / static_cast<double>(count));
+  return symmetricFlat("disk", p, outline, arc, 0.0, kDiskOrder, 2.0 * radius, inradius);
 }
 
 Sheet starSheet(const SurfaceParameters& p) {
@@ -160,7 +243,9 @@ Sheet starSheet(const SurfaceParameters& p) {
   // Distance from the centre to the line through an outer and the next inner point.
   const glm::dvec2 a = outline[0], b = outline[1];
   const double inradius = std::abs(a.x * b.y - a.y * b.x) / std::hypot(b.x - a.x, b.y - a.y);
-  return flatWithHole("star", p, outline, 2.0 * outer, inradius);
+  const int order = flatOrder(points);
+  const std::vector<glm::dvec2> arc(outline.begin(), outline.begin() + points / order + 1);
+  return symmetricFlat("star", p, outline, arc, 0.5 * pi, order, 2.0 * outer, inradius);
 }
 
 const std::vector<CatalogEntry>& entries() {
@@ -180,12 +265,15 @@ const std::vector<CatalogEntry>& entries() {
          [](const SurfaceParameters& p) {
            return rectangleSheet("rectangle", p, p.at("width"), p.at("height"));
          }});
-    list.push_back({{"disk",
-                     "flat disk (a regular polygon) in the plane z = 0",
-                     {length("radius", 0.1, "radius, metres"), holeRadius(), resolution(32)}},
-                    diskSheet});
+    list.push_back(
+        {{"disk",
+          "flat disk in the plane z = 0: a regular polygon of a multiple of 24 sides, meshed "
+          "with 12 mirrors and 12-fold rotation",
+          {length("radius", 0.1, "radius, metres"), holeRadius(), resolution(32)}},
+         diskSheet});
     list.push_back({{"star",
-                     "flat star polygon in the plane z = 0, first point along +y",
+                     "flat star polygon in the plane z = 0, first point along +y; meshed with its "
+                     "mirrors, and rotation by the largest divisor of points up to 12",
                      {{"points", 5.0, 3.0, 100.0, true, "number of points"},
                       length("outer_radius", 0.1, "radius of the points, metres"),
                       length("inner_radius", 0.045, "radius of the notches between points, metres"),
