@@ -3,14 +3,11 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <stdexcept>
 
 #include "app/imgui_context_scope.hpp"
 
 namespace curvefold::cli {
-
-namespace fs = std::filesystem;
 
 namespace {
 
