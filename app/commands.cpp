@@ -104,11 +104,17 @@ void addSurfacesCommand(CLI::App& app) {
 void addSurfaceOptions(CLI::App* command, SurfaceOptions& options) {
   // Every parameter of every surface is an option; makeSurface refuses one the chosen surface
   // does not have.
-  std::map<std::string, std::string> help;
+  // A parameter whole in every surface that has it is shown as INT (read as a number all the
+  // same: makeSurface says when a value is not whole).
+  std::map<std::string, std::pair<std::string, bool>> help;
   for (const SurfaceInfo& surface : surfaceCatalog())
-    for (const SurfaceParameter& p : surface.parameters) help.try_emplace(p.name, p.description);
-  for (const auto& [name, description] : help)
-    command->add_option("--" + name, options.values[name], description);
+    for (const SurfaceParameter& p : surface.parameters) {
+      const auto [at, added] = help.try_emplace(p.name, p.description, p.integer);
+      at->second.second = at->second.second && p.integer;
+    }
+  for (const auto& [name, about] : help)
+    command->add_option("--" + name, options.values[name], about.first)
+        ->type_name(about.second ? "INT" : "FLOAT");
   command->add_option("--symmetry", options.symmetry,
                       "mirror:x|y|z or rotational:N[:x|y|z] through the surface's centre: every "
                       "fold is followed by its images (see `surfaces`)");
@@ -304,7 +310,7 @@ void addExportCommand(CLI::App& app) {
                          std::to_string(std::llround(kMaxPdfPages)) +
                          "); --paper fit prints it on one page");
       print.angles = options->angles;
-      print.title = fs::path(options->design).filename().string();
+      print.title = designName(options->design);  // "vase", not "vase.curvefold.json"
       print.facts = {"surface: " + surfaceName(design) +
                          (design.symmetry.empty() ? "" : ", " + design.symmetry),
                      "folds: " + std::to_string(design.folds.size()), "date: " + today()};

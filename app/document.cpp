@@ -68,6 +68,14 @@ Document makeDocument(const Design& design, const std::string& name, const Pose&
   return doc;
 }
 
+std::string designName(const std::string& name) {
+  std::string stem = fs::path(name).filename().string();
+  for (const char* suffix : {".json", ".curvefold", ".autosave", ".jsonl"})
+    if (stem.size() > std::strlen(suffix) && stem.ends_with(suffix))
+      stem.resize(stem.size() - std::strlen(suffix));
+  return stem.empty() ? "design" : stem;
+}
+
 std::string surfaceName(const Design& design) {
   if (const auto* generated = std::get_if<GeneratedSurface>(&design.surface))
     return generated->generator;

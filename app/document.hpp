@@ -42,6 +42,10 @@ void startFromCommittedFolds(Document& doc);
 Document makeDocument(const Design& design, const std::string& name,
                       const Pose& worldFromSheet = {}, Handedness handedness = Handedness::Right);
 
+// The design's name for its files and titles: "cone" for a surface, "bowl" for
+// "designs/bowl.curvefold.json" (or its autosave); "design" for none.
+std::string designName(const std::string& name);
+
 // The design a command line INPUT names: a design file, a surface name (default parameters), or
 // empty for `fallbackSurface`. Throws UsageError for anything else.
 // The design's surface for a person: the generator's name, or "embedded mesh".

@@ -3,25 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <stdexcept>
 
 #include "app/imgui_context_scope.hpp"
 
 namespace curvefold::cli {
 
-namespace fs = std::filesystem;
-
 namespace {
-
-// "cone" for a surface, "bowl" for "designs/bowl.curvefold.json".
-std::string designName(const std::string& name) {
-  std::string stem = fs::path(name).filename().string();
-  for (const char* suffix : {".json", ".curvefold", ".autosave", ".jsonl"})
-    if (stem.size() > std::string_view(suffix).size() && stem.ends_with(suffix))
-      stem.resize(stem.size() - std::string_view(suffix).size());
-  return stem.empty() ? "design" : stem;
-}
 
 // The thumbstick scrolls this many wheel steps a second when pushed all the way.
 constexpr double kScrollStepsPerSecond = 10.0;
@@ -61,9 +49,8 @@ HeadsetStudio::~HeadsetStudio() {
 }
 
 void HeadsetStudio::nameDesign(const std::string& name) {
-  const std::string base = (fs::path(options_.exportDir) / designName(name)).string();
-  panel_.setExportBase(base);
-  panel_.setSavePath(base + ".curvefold.json");
+  panel_.setFilesDir(options_.exportDir);  // not beside an opened design: the headset's folder
+  panel_.nameDesign(name);
 }
 
 void HeadsetStudio::replace(const Design& design, const std::string& name) {

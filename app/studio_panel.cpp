@@ -36,6 +36,46 @@ void StudioPanel::setSavePath(const std::string& path) {
   savePath_ = path;
 }
 
+void StudioPanel::nameDesign(const std::string& name) {
+  const std::filesystem::path dir =
+      filesDir_ ? std::filesystem::path(*filesDir_) : std::filesystem::path(name).parent_path();
+  exportBase_ = (dir / designName(name)).string();
+  savePath_ = exportBase_ + ".curvefold.json";
+}
+
+void StudioPanel::setDesktop(bool desktop) {
+  desktop_ = desktop;
+  picker_.reset();
+  if (!desktop) return;
+  if (const std::string program = FilePicker::find(); !program.empty())
+    picker_ = std::make_unique<FilePicker>(program);
+}
+
+void StudioPanel::browse(bool save) {
+  try {
+    picker_->start(save, save ? savePath_ : openPath_);
+    pickingSave_ = save;
+    message_ = "choosing a file to " + std::string(save ? "save to" : "open");
+  } catch (const std::exception& e) {
+    message_ = e.what();
+  }
+}
+
+void StudioPanel::takePicked() {
+  if (!picker_) return;
+  const std::optional<FilePicker::Picked> picked = picker_->poll();
+  if (!picked) return;
+  if (!picked->error.empty()) {
+    message_ = picked->error;
+  } else if (picked->path.empty()) {
+    message_ = "no file chosen";
+  } else {
+    (pickingSave_ ? savePath_ : openPath_) = picked->path;
+    message_ =
+        "chosen: " + picked->path + (pickingSave_ ? " (Save writes it)" : " (Open opens it)");
+  }
+}
+
 void StudioPanel::setTargetPath(const std::string& path) {
   targetPath_ = path;
 }
@@ -165,6 +205,7 @@ void StudioPanel::guarded(const StudioActions& actions, const std::string& done,
 void StudioPanel::draw(Document& doc, const StudioActions& actions, const StudioStats& stats,
                        bool& creasePattern) {
   items_.clear();
+  takePicked();
   const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
   ImGuiWindowFlags flags = 0;
   if (fillsDisplay_) {
@@ -222,6 +263,7 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
         guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry),
                 [&] {
                   actions.replaceDocument({surface, {}, symmetry}, surface.generator);
+                  nameDesign(surface.generator);
                 });
       }
     }
@@ -253,6 +295,15 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
       remember(path, actions);
     });
   }
+  // On the Save line, after Save: the desktop's items move nothing the headset has.
+  auto browseButton = [&](const char* label, bool save) {
+    if (!picker_) return;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(picker_->busy());
+    if (button(label)) browse(save);
+    ImGui::EndDisabled();
+  };
+  browseButton("Browse...##save", true);
   std::function<void(const std::string&)> openRecent;  // null while recording (no open)
   if (!recording_) {
     ImGui::InputText("open", &openPath_);
@@ -265,11 +316,34 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
         if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
           throw std::runtime_error("cannot open " + path + ": not a regular file");
         actions.replaceDocument(loadDesign(path), path);
+        nameDesign(path);  // Save and the exports follow the opened design
         remember(path, actions);
       });
     };
     if (button("Open")) open(openPath_);
     openRecent = open;
+    if (desktop_) {
+      browseButton("Browse...##open", false);
+      // The recent designs, one click from Open (the list at the bottom holds them too).
+      ImGui::SameLine();
+      const char* preview = "Recent";
+      ImGui::SetNextItemWidth(ImGui::CalcTextSize(preview).x + ImGui::GetFrameHeight() +
+                              2.0f * ImGui::GetStyle().FramePadding.x);
+      std::optional<std::string> chosen;
+      if (ImGui::BeginCombo("##recent beside open", preview)) {
+        if (recent_.empty()) ImGui::TextDisabled("none yet");
+        for (std::size_t i = 0; i < recent_.size(); ++i) {
+          const std::string name = std::filesystem::path(recent_[i]).filename().string();
+          if (ImGui::Selectable((name + "##open recent" + std::to_string(i)).c_str()))
+            chosen = recent_[i];
+          if (!items_.count(name)) item(name.c_str());
+          if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent_[i].c_str());
+        }
+        ImGui::EndCombo();
+      }
+      item("Recent");
+      if (chosen) open(*chosen);
+    }
   }
   ImGui::InputText("export to", &exportBase_);
   item("export to");

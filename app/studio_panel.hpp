@@ -11,6 +11,7 @@
 #include <functional>
 #include <future>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/document.hpp"
+#include "app/file_picker.hpp"
 #include "engine/print/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
@@ -72,6 +74,18 @@ class StudioPanel {
   // Where exports go (a path without its extension) and where Save writes.
   void setExportBase(const std::string& base);
   void setSavePath(const std::string& path);
+  const std::string& exportBase() const { return exportBase_; }
+  const std::string& savePath() const { return savePath_; }
+  const std::string& openPath() const { return openPath_; }
+  // Names Save's file and the exports after the design `name` (a surface, or the file it was
+  // opened from): <name>.curvefold.json and <name>.<extension>, in the files folder when one is
+  // set, else beside the opened file. The panel does it itself for the designs it opens or makes.
+  void nameDesign(const std::string& name);
+  void setFilesDir(const std::string& dir) { filesDir_ = dir; }
+  // The desktop's own items, each beside an item both hosts have, so nothing else moves: the
+  // recent designs beside Open and, when zenity is on PATH, "Browse..." beside Open and Save. Off
+  // in the headset (no desktop there, and its recorded pointing must find the items it found).
+  void setDesktop(bool desktop);
   // The target path field's text.
   void setTargetPath(const std::string& path);
   // The recent designs, newest first (at most kMaxRecentDesigns).
@@ -99,6 +113,9 @@ class StudioPanel {
   // when not done yet.
   void refreshSymmetries();
   void remember(const std::string& designPath, const StudioActions& actions);
+  // A finished dialog's path goes into the field it was opened for.
+  void takePicked();
+  void browse(bool save);
   void writeThrough(const StudioActions& actions, const std::string& path,
                     const std::function<void(const std::string&)>& write);
 
@@ -124,6 +141,10 @@ class StudioPanel {
   std::map<std::string, glm::vec2> items_;
   std::vector<std::string> recent_;
   bool fillsDisplay_ = false;
+  std::optional<std::string> filesDir_;
+  bool desktop_ = false;
+  std::unique_ptr<FilePicker> picker_;  // null without zenity
+  bool pickingSave_ = false;            // the dialog open is Save's, else Open's
 };
 
 }  // namespace curvefold::cli

@@ -49,6 +49,17 @@ TEST_F(Cli, EverySubcommandHasHelp) {
   }
 }
 
+// Issue 31, 1: whole-number parameters are typed INT in the help, not FLOAT.
+TEST_F(Cli, NewHelpTypesWholeNumbersAsInt) {
+  for (const char* command : {"new", "fit"}) {
+    const CommandResult r = run(std::string(command) + " --help");
+    ASSERT_EQ(r.exitCode, 0) << command;
+    EXPECT_NE(r.out.find("--resolution INT"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--points INT"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("--radius FLOAT"), std::string::npos) << r.out;
+  }
+}
+
 TEST_F(Cli, NewFoldExportCheck) {
   const std::string design = newDesign("half_cylinder --resolution 24", "a.curvefold.json");
   const std::string folded = path("b.curvefold.json").string();
@@ -100,6 +111,20 @@ TEST_F(Cli, ExportRefusesAnUnknownPaper) {
   const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
   expectFailure("export " + design + " --pdf " + path("c.pdf").string() + " --paper a5", "--paper",
                 path("c.pdf"));
+}
+
+// Issue 31, 1: the PDF's title (its cover's, and the document's) is the design's name, without
+// the file's extension. No Vulkan driver here: the cover goes without its picture.
+TEST_F(Cli, ExportedPdfIsTitledByTheDesignsName) {
+  const std::string design = newDesign("square --size 0.15", "vase.curvefold.json");
+  const std::string noDriver = "VK_ICD_FILENAMES=" + path("none.json").string() +
+                               " VK_DRIVER_FILES=" + path("none.json").string() + " ";
+  const CommandResult r =
+      run("export " + design + " --pdf " + path("v.pdf").string() + " --paper fit", noDriver);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string pdf = slurp(path("v.pdf"));
+  EXPECT_NE(pdf.find("/Title (vase)"), std::string::npos);
+  EXPECT_EQ(pdf.find("vase.curvefold"), std::string::npos);
 }
 
 // Issue 29, 1: a crease pattern that would print on more pages than a print may have is refused

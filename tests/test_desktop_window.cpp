@@ -3,14 +3,21 @@
 // sheet, and a recording that `curvefold replay` turns into the same folds. Also: without a
 // display, plain `curvefold` says so in one line and exits non-zero.
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <map>
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 #include <nlohmann/json.hpp>
 
+#include <imgui.h>
+
 #include "app/desktop/desktop_input.hpp"
+#include "app/document.hpp"
+#include "app/studio_panel.hpp"
 #include "desktop_test_support.hpp"
+#include "engine/io/design_document.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -181,6 +188,63 @@ TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
   }
   EXPECT_GT(paper, w * h / 20);
   stbi_image_free(pixels);
+}
+
+// Where the designer's panel draws these items in a window of this size: the same panel, run
+// headless with the designer's items (a target section, the desktop's own items).
+std::map<std::string, glm::dvec2> designerPanelItems(const fs::path& design, int width, int height,
+                                                     const std::vector<std::string>& labels) {
+  ImGuiContext* context = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(float(width), float(height));
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  cli::Document doc = cli::makeDocument(loadDesign(design), design.string());
+  cli::StudioPanel panel(false, "help");
+  panel.setDesktop(true);
+  cli::StudioActions actions;
+  actions.loadTarget = [](const std::string&) {};
+  actions.suggest = [] {};
+  bool creasePattern = false;
+  for (int i = 0; i < 2; ++i) {
+    io.DeltaTime = 1.0f / 60.0f;
+    ImGui::NewFrame();
+    panel.draw(doc, actions, {}, creasePattern);
+    ImGui::Render();
+  }
+  std::map<std::string, glm::dvec2> at;
+  for (const std::string& label : labels)
+    if (const std::optional<glm::vec2> centre = panel.itemCentre(label)) at[label] = *centre;
+  ImGui::DestroyContext(context);
+  return at;
+}
+
+// Issue 31, 1: a design opened from a file saves to that file and exports beside it, under its
+// name (not design.curvefold.json and design.svg in the working directory).
+TEST_F(DesktopWindow, SaveAndExportsFollowTheOpenedDesign) {
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
+  ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
+  ::setenv("XDG_STATE_HOME", (dir() / "state").c_str(), 1);  // the recent list: not the user's
+  const fs::path vase = dir() / "vase.curvefold.json", log = dir() / "designer.log";
+  ASSERT_EQ(
+      shell(std::string(CURVEFOLD_BINARY) + " new square -o " + vase.string() + " >/dev/null"), 0);
+  std::map<std::string, glm::dvec2> at = designerPanelItems(vase, kWidth, kHeight, {"Save", "SVG"});
+  ASSERT_EQ(at.size(), 2u);
+  const std::string window = startDesigner(
+      vase.string() + " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight), log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  fs::remove(vase);  // Save puts it back
+  auto click = [&](glm::dvec2 p) {
+    return move(p) + move(p) + env() + "xdotool mousedown 1 && sleep 0.2 && " + env() +
+           "xdotool mouseup 1 && sleep 0.5 && ";
+  };
+  ASSERT_EQ(shell("sleep 1 && " + click(at["Save"]) + click(at["SVG"]) + quit()), 0);
+  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+  EXPECT_EQ(slurp(log), "");
+  EXPECT_TRUE(fs::exists(vase));
+  EXPECT_TRUE(fs::exists(dir() / "vase.svg"));
 }
 
 TEST_F(DesktopWindow, NoDisplayIsOneLineAndNonZero) {

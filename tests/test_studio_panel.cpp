@@ -4,13 +4,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <imgui.h>
 
 #include "app/document.hpp"
+#include "app/headset_studio.hpp"
 #include "app/studio_panel.hpp"
 #include "engine/io/design_document.hpp"
 
@@ -64,6 +72,34 @@ class StudioPanelTest : public ::testing::Test {
     frame();
   }
 
+  // Frames until `done` holds (a worker's result), at most 10 s.
+  bool framesUntil(const std::function<bool()>& done) {
+    for (int i = 0; i < 1000 && !done(); ++i) {
+      frame();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return done();
+  }
+  // A zenity on PATH that runs `body` (sh), for the panel's Browse; PATH is restored after.
+  void fakeZenity(const std::string& body) {
+    const fs::path bin = dir_ / "bin";
+    fs::create_directories(bin);
+    std::ofstream(bin / "zenity") << "#!/bin/sh\n" << body << "\n";
+    fs::permissions(bin / "zenity", fs::perms::owner_all);
+    setPath(bin.string() + ":" + oldPath_);
+  }
+  void setPath(const std::string& path) { ::setenv("PATH", path.c_str(), 1); }
+  std::string slurp(const fs::path& path) {
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    return text.str();
+  }
+
+  const std::string oldPath_ = std::getenv("PATH") ? std::getenv("PATH") : "";
+  struct RestorePath {
+    std::string path;
+    ~RestorePath() { ::setenv("PATH", path.c_str(), 1); }
+  } restorePath_{oldPath_};
   fs::path dir_;
   Document doc_;
   StudioActions actions_;
@@ -235,6 +271,147 @@ TEST_F(StudioPanelTest, ItemsStayWhereTheyAreWhateverTheRecentListHolds) {
     for (std::size_t i = 0; i < labels.size(); ++i)
       EXPECT_EQ(none[i], some[i]) << labels[i] << (fills ? " (fills the display)" : "");
   }
+}
+
+}  // namespace
+}  // namespace curvefold::cli
+
+namespace curvefold::cli {
+namespace {
+
+// Issue 31, 1: Save and the exports follow the design's name: an opened design saves to its own
+// file and exports beside it; a new sheet is named after its surface.
+TEST_F(StudioPanelTest, SaveAndExportsFollowTheOpenedDesignsName) {
+  EXPECT_EQ(panel_.savePath(), "design.curvefold.json");  // a host that names nothing
+  const std::string vase = (dir_ / "vase.curvefold.json").string();
+  saveDesign(doc_.design(), vase);
+  panel_.setRecent({vase});
+  click("Recent designs");
+  click("vase.curvefold.json");
+  ASSERT_EQ(panel_.message(), "opened " + vase);
+  EXPECT_EQ(panel_.savePath(), vase);
+  EXPECT_EQ(panel_.exportBase(), (dir_ / "vase").string());
+  click("SVG");
+  EXPECT_EQ(panel_.message(), "wrote " + (dir_ / "vase.svg").string());
+  EXPECT_TRUE(fs::exists(dir_ / "vase.svg"));
+  click("Create");
+  EXPECT_EQ(panel_.savePath(), "square.curvefold.json");
+  EXPECT_EQ(panel_.exportBase(), "square");
+  // A host names the design it starts with: an autosave's design is named without ".autosave".
+  panel_.nameDesign("designs/bowl.autosave.curvefold.json");
+  EXPECT_EQ(panel_.savePath(), "designs/bowl.curvefold.json");
+  panel_.setFilesDir("exports");  // the headset's: everything in one folder
+  panel_.nameDesign("designs/bowl.json");
+  EXPECT_EQ(panel_.savePath(), "exports/bowl.curvefold.json");
+  EXPECT_EQ(panel_.exportBase(), "exports/bowl");
+}
+
+// Issue 31, 1: on the desktop the recent designs are offered beside Open.
+TEST_F(StudioPanelTest, TheDesktopOffersRecentDesignsBesideOpen) {
+  const std::string vase = (dir_ / "vase.curvefold.json").string();
+  saveDesign(doc_.design(), vase);
+  panel_.setRecent({vase});
+  frame();
+  EXPECT_FALSE(panel_.itemCentre("Recent"));  // the headset's panel: not there
+  panel_.setDesktop(true);
+  click("Recent");
+  click("vase.curvefold.json");
+  ASSERT_EQ(replaced_, (std::vector<std::string>{vase}));
+  EXPECT_EQ(panel_.savePath(), vase);
+}
+
+// Issue 31, 1: with zenity on PATH, Browse... opens it without holding a frame, and the chosen path
+// fills the field (Open's, or Save's with --save).
+TEST_F(StudioPanelTest, BrowseFillsTheFieldFromZenity) {
+  fakeZenity(
+      "printf '%s\\n' \"$@\" > \"$(dirname \"$0\")/args\"\necho /chosen/bowl.curvefold.json");
+  panel_.setDesktop(true);
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.openPath() == "/chosen/bowl.curvefold.json"; }))
+      << panel_.message();
+  std::string args = slurp(dir_ / "bin" / "args");
+  EXPECT_NE(args.find("--file-selection\n"), std::string::npos) << args;
+  EXPECT_EQ(args.find("--save"), std::string::npos) << args;
+  click("Browse...##save");
+  ASSERT_TRUE(framesUntil([&] { return panel_.savePath() == "/chosen/bowl.curvefold.json"; }))
+      << panel_.message();
+  args = slurp(dir_ / "bin" / "args");
+  EXPECT_NE(args.find("--save\n"), std::string::npos) << args;
+  EXPECT_NE(args.find("--filename=design.curvefold.json\n"), std::string::npos) << args;
+  // Cancelled (zenity exits 1): the field keeps its path.
+  fakeZenity("exit 1");
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.message() == "no file chosen"; }))
+      << panel_.message();
+  EXPECT_EQ(panel_.openPath(), "/chosen/bowl.curvefold.json");
+}
+
+// Frames go on while the dialog is open, and closing the panel ends the dialog at once.
+TEST_F(StudioPanelTest, AnOpenDialogHoldsNoFrameAndEndsWithThePanel) {
+  fakeZenity("echo $$ > \"$(dirname \"$0\")/pid\"\nexec sleep 30");
+  panel_.setDesktop(true);
+  const auto start = std::chrono::steady_clock::now();
+  click("Browse...##open");
+  const fs::path pidFile = dir_ / "bin" / "pid";
+  ASSERT_TRUE(framesUntil([&] { return !slurp(pidFile).empty(); }));
+  for (int i = 0; i < 20; ++i) frame();
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3));
+  EXPECT_EQ(panel_.message(), "choosing a file to open");
+  const pid_t pid = std::stoi(slurp(pidFile));
+  EXPECT_EQ(::kill(pid, 0), 0);
+  panel_ = StudioPanel(false, "help");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(6));
+  EXPECT_EQ(::kill(pid, 0), -1);  // ended and reaped
+  EXPECT_EQ(errno, ESRCH);
+}
+
+// Without zenity the path fields are all there is; the desktop's items never move the others.
+TEST_F(StudioPanelTest, DesktopItemsMoveNothingElse) {
+  setPath((dir_ / "nothing here").string());
+  panel_.setDesktop(true);
+  frame();
+  EXPECT_FALSE(panel_.itemCentre("Browse...##open"));
+  EXPECT_TRUE(panel_.itemCentre("open"));
+  fakeZenity("exit 1");
+  actions_.loadTarget = [](const std::string&) {};
+  actions_.suggest = [] {};
+  const std::vector<std::string> labels = {
+      "surface", "Create", "Undo",        "crease pattern", "save as", "Save",
+      "open",    "Open",   "export to",   "FOLD",           "SVG",     "PNG",
+      "PDF",     "target", "Load target", "Suggest",        "Take",    "Recent designs"};
+  for (const bool fills : {false, true}) {
+    panel_.setFillsDisplay(fills);
+    auto centres = [&](bool desktop) {
+      panel_.setDesktop(desktop);
+      frame();
+      frame();
+      EXPECT_EQ(bool(panel_.itemCentre("Browse...##open")), desktop);
+      EXPECT_EQ(bool(panel_.itemCentre("Browse...##save")), desktop);
+      std::vector<glm::vec2> at;
+      for (const std::string& label : labels)
+        at.push_back(panel_.itemCentre(label).value_or(glm::vec2(-1.0f)));
+      return at;
+    };
+    const std::vector<glm::vec2> headset = centres(false), desktop = centres(true);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      EXPECT_EQ(headset[i], desktop[i]) << labels[i] << (fills ? " (fills the display)" : "");
+  }
+}
+
+// The headset has no desktop picker, even where zenity is installed; its files go to its folder.
+TEST_F(StudioPanelTest, TheHeadsetKeepsItsPathFields) {
+  fakeZenity("exit 1");
+  HeadsetStudioOptions options;
+  options.exportDir = "exports";
+  options.name = (dir_ / "vase.curvefold.json").string();
+  HeadsetStudio studio(doc_, options);
+  InputFrame frame;
+  frame.sheetHand.tracked = true;
+  studio.process(frame);
+  EXPECT_TRUE(studio.panel().itemCentre("open"));
+  EXPECT_FALSE(studio.panel().itemCentre("Browse...##open"));
+  EXPECT_FALSE(studio.panel().itemCentre("Recent"));
+  EXPECT_EQ(studio.panel().savePath(), "exports/vase.curvefold.json");
 }
 
 }  // namespace

@@ -264,6 +264,11 @@ void runDesigner(const DesignerOptions& options) {
                     "suggests a fold, T takes it, N offers another.");
   panel.setRecent(loadRecentDesigns());
   panel.setTargetPath(options.target);
+  panel.setDesktop(true);
+  // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
+  panel.nameDesign(options.resume          ? autosavePath
+                   : options.input.empty() ? std::string(kDefaultSurface)
+                                           : options.input);
   StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;

@@ -407,6 +407,10 @@ void writeCreasePatternPdf(const Sheet& sheet, const std::filesystem::path& path
     std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
         cairo_pdf_surface_create_for_stream(writeToStream, &out, first.x, first.y),
         cairo_surface_destroy);
+    // The cover's title is the document's too (a viewer's title bar).
+    if (!options.title.empty())
+      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE,
+                                     options.title.c_str());
     std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()),
                                                           cairo_destroy);
     for (const PdfPage& page : plan.pages) {
