@@ -342,6 +342,31 @@ TEST_F(Cli, AStarFoldsWithItsFiveFoldRotation) {
   EXPECT_NE(r.out.find("ok    symmetry: rotational:5:z"), std::string::npos) << r.out;
 }
 
+// Issue 28, 2: a fold near the slit whose own part the slit cuts short (its images are whole)
+// was written though the design was not symmetric; now it is one line, exit 1, nothing written.
+// The same fold turned 30 degrees about the axis, away from the slit, is kept and checks.
+TEST_F(Cli, AFoldTheSlitCutsShortIsRefusedAndOneAwayIsKept) {
+  const std::string design = path("r.json").string();
+  CommandResult r = run("new cylinder --symmetry rotational:4:y -o " + design);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string out = path("r2.json").string();
+  expectFailure("fold " + design +
+                    " --vertex-near -0.011646857029613445,-0.105,-0.04346666218300807"
+                    " --to -0.009053855032104785,-0.10085514992637065,-0.033789446984178156 -o " +
+                    out,
+                "not symmetric under rotational:4:y: the fold's part is cut short by the sheet's "
+                "slit",
+                out);
+  r = run("fold " + design +
+          " --vertex-near -0.03181980515,-0.105,-0.03181980515 --to"
+          " -0.02473559195,-0.1008551499,-0.02473559195 -o " +
+          out);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("fold 1 and 3 images:"), std::string::npos) << r.out;
+  r = run("check " + out);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+}
+
 // Issue 13, E23: `fold` re-applied the whole history on every call. The folded sheet is cached by
 // the history's content; a cached fold gives the very design a replay gives, and an edited or
 // stale entry is never trusted.

@@ -6,11 +6,13 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sheet_fixtures.hpp"
 #include "symmetry_test_support.hpp"
 
 namespace curvefold {
@@ -271,6 +273,83 @@ TEST(Symmetry, AnImageAcrossTheSlitFoldsBothPieces) {
   std::vector<FoldRecord> onePiece = session.folds();
   for (FoldRecord& fold : onePiece) fold.moreSeeds.clear();
   EXPECT_FALSE(identical(replayFolds(initial, onePiece), sheet));
+}
+
+// Issue 28: a fold near the cylinder's slit (at -z) whose own part the slit cuts short, while its
+// images, away from the slit, are whole. Refused at the commit, saying where and why, with the
+// session as it was; the fold alone is sound, and the symmetric folder refuses it the same way.
+TEST(Symmetry, AFoldWhosePartTheSlitCutsShortIsRefused) {
+  const Sheet initial = makeSurface("cylinder");
+  const glm::dvec3 near{-0.011646857029613445, -0.105, -0.04346666218300807};
+  const glm::dvec3 to{-0.009053855032104785, -0.10085514992637065, -0.033789446984178156};
+  FoldSession plain(initial);
+  plain.beginDragNear(near);
+  plain.updateDrag(to);
+  ASSERT_TRUE(plain.commit());
+  ASSERT_NO_FATAL_FAILURE(testing::expectInvariants(plain.fixed(), initial));
+  const SymmetricFolder folder(initial, parseSymmetry("rotational:4:y", initial));
+  Sheet sheet = plain.fixed();
+  EXPECT_THROW(folder.applyImages(initial, sheet, plain.folds().back()), InvalidSheet);
+
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:4:y", initial));
+  session.beginDragNear(near);
+  session.updateDrag(to);
+  EXPECT_FALSE(session.commit());
+  const std::string& why = session.refusal();
+  EXPECT_NE(why.find("not symmetric under rotational:4:y"), std::string::npos) << why;
+  EXPECT_NE(why.find("cut short by the sheet's slit"), std::string::npos) << why;
+  EXPECT_NE(why.find(" mm from its image"), std::string::npos) << why;
+  EXPECT_EQ(why.find("--"), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos);
+  EXPECT_EQ(session.foldCount(), 0u);
+  EXPECT_FALSE(session.dragging());
+  EXPECT_TRUE(identical(session.fixed(), initial));
+  ASSERT_NO_FATAL_FAILURE(testing::expectInvariants(session.fixed(), initial));
+}
+
+// The same on a cone (slit at -z too): a fold on the base rim 15 degrees from the slit.
+TEST(Symmetry, AFoldOnAConeWhosePartTheSlitCutsShortIsRefused) {
+  const Sheet initial = makeSurface("cone");
+  const glm::dvec3 near{-0.02070552360820166, -0.06, -0.07727406610312547};
+  const glm::dvec3 to{-0.01610552360820166, -0.0526, -0.059674066103125464};
+  FoldSession plain(initial);
+  plain.beginDragNear(near);
+  plain.updateDrag(to);
+  ASSERT_TRUE(plain.commit());
+  ASSERT_NO_FATAL_FAILURE(testing::expectInvariants(plain.fixed(), initial));
+
+  FoldSession session(initial);
+  session.setSymmetry(parseSymmetry("rotational:4:y", initial));
+  session.beginDragNear(near);
+  session.updateDrag(to);
+  EXPECT_FALSE(session.commit());
+  EXPECT_NE(session.refusal().find("cut short by the sheet's slit"), std::string::npos)
+      << session.refusal();
+  EXPECT_EQ(session.foldCount(), 0u);
+  EXPECT_TRUE(identical(session.fixed(), initial));
+}
+
+// The cylinder fold above turned 30 degrees about the axis, so it and its images lie 45 degrees
+// from the slit: kept, with its images, and the design maps onto itself.
+TEST(Symmetry, TheSameFoldAwayFromTheSlitIsKept) {
+  const Sheet initial = makeSurface("cylinder");
+  const Symmetry symmetry = parseSymmetry("rotational:4:y", initial);
+  const Isometry turn{glm::dmat3(glm::rotate(glm::dmat4(1.0), glm::radians(30.0), {0.0, 1.0, 0.0})),
+                      glm::dvec3(0.0)};
+  ASSERT_LT(glm::length(surfaceCentre(initial)), 1e-12);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  session.beginDragNear(turn.apply({-0.011646857029613445, -0.105, -0.04346666218300807}));
+  session.updateDrag(
+      turn.apply({-0.009053855032104785, -0.10085514992637065, -0.033789446984178156}));
+  ASSERT_TRUE(session.commit()) << session.refusal();
+  EXPECT_EQ(session.foldCount(), 4u);
+  EXPECT_EQ(session.lastSkippedImages(), 0u);
+  EXPECT_EQ(session.lastOverlappingImages(), 0u);
+  ASSERT_NO_FATAL_FAILURE(testing::expectInvariants(session.fixed(), initial));
+  for (const Isometry& g : symmetry.images())
+    expectMapsOntoItself(session.fixed(), g, 1e-9 * sheetSize(initial));
 }
 
 // Images whose parts overlap (a wide cap at the rim reaches past the next cap's edge) are made,

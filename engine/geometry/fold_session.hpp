@@ -98,7 +98,8 @@ class FoldSession {
   const ReflectionChanges& updateDrag(const glm::dvec3& target);
   // Commits the temporal sheet as the new fixed sheet (a drag that never left its start adds no
   // fold). Returns true if a fold was added. A fold whose new triangles fail validate()'s rules
-  // (a sliver) is not kept: the drag is cancelled and refusal() says why.
+  // (a sliver), or whose symmetric images cannot be made or would not be symmetric (symmetry.hpp),
+  // is not kept: the drag is cancelled and refusal() says why.
   bool commit();
   const std::string& refusal() const { return refusal_; }
   void cancel();

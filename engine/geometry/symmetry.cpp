@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <utility>
@@ -505,7 +506,54 @@ SymmetricFolder::Result SymmetricFolder::applyImages(const Sheet& before, Sheet&
     result.overlapping += overlaps;
     result.applied.push_back(std::move(*image));
   }
+  // A group that claims to be exact (nothing skipped, nothing overlapping) must be: refused here,
+  // before anything is kept, when the fold's part and an image's differ.
+  if (result.skipped == 0 && result.overlapping == 0) {
+    std::vector<char> byFold(sheet.vertexCount());
+    for (VertexIndex v : part) byFold[v] = 1;
+    expectSymmetric(before, sheet, movedByGroup, byFold);
+  }
   return result;
+}
+
+void SymmetricFolder::expectSymmetric(const Sheet& before, const Sheet& sheet,
+                                      const std::vector<char>& moved,
+                                      const std::vector<char>& byFold) const {
+  // The initial vertices keep their numbers and each has its image (vertexImages_), so a pair the
+  // symmetry matched before the group and no longer does is found vertex for vertex. Pairs
+  // already apart (an earlier group noted as not exact) are not this fold's doing.
+  const double tolerance = kRelativeContactTolerance * sheetSize(*initial_);
+  double worst = tolerance;
+  VertexIndex stayed = kNoIndex, went = kNoIndex;
+  for (VertexIndex v = 0; v < initial_->vertexCount(); ++v) {
+    if (!moved[v]) continue;
+    for (std::size_t k = 0; k < images_.size(); ++k) {
+      const VertexIndex w = vertexImages_[k][v];
+      const Isometry& g = images_[k];
+      const double now = glm::distance(sheet.positions[w], g.apply(sheet.positions[v]));
+      if (now <= worst ||
+          glm::distance(before.positions[w], g.apply(before.positions[v])) > tolerance)
+        continue;
+      worst = now;
+      // The one of the pair left where it was lies in the piece one part has and the other lacks.
+      stayed = moved[w] ? v : w;
+      went = moved[w] ? w : v;
+    }
+  }
+  if (stayed == kNoIndex) return;
+  const glm::dvec3 p = sheet.positions[stayed];
+  char where[96];
+  std::snprintf(where, sizeof where, "%.4g,%.4g,%.4g", p.x, p.y, p.z);
+  char distance[32];
+  std::snprintf(distance, sizeof distance, "%.3g mm", worst * 1000.0);
+  const bool foldShort = !byFold[went];
+  // Short enough for one line of the command line's error (225 characters).
+  throw InvalidSheet(std::string("not symmetric under ") + symmetry_.name() + ": " +
+                     (foldShort
+                          ? "the fold's part is cut short by the sheet's slit, its image's is not"
+                          : "an image's part is cut short by the sheet's slit, the fold's is not") +
+                     ", so the paper near " + where + " lies " + distance +
+                     " from its image; a fold farther from the slit avoids it");
 }
 
 void SymmetricFolder::previewImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold,

@@ -89,7 +89,8 @@ std::string imageNotes(std::size_t skipped, std::size_t overlapping);
 // whole part may lie across the slit, in two pieces. So each image also grows from the images of
 // the fold's reflected vertices, and records one more seed per extra piece (FoldRecord::moreSeeds,
 // so a replay needs no symmetry). A fold whose own part ends at the slit has images that reach
-// on where the paper goes on: they are not its exact images there (not detected).
+// on where the paper goes on: they are not its exact images there, so such a fold is refused
+// (applyImages throws InvalidSheet saying where), unless its group is already noted as not exact.
 class SymmetricFolder {
  public:
   SymmetricFolder(const Sheet& initial, const Symmetry& symmetry);
@@ -104,7 +105,8 @@ class SymmetricFolder {
     std::size_t overlapping = 0;
   };
   // `before`: the sheet the fold was made on; `sheet`: with the fold applied, to which the images
-  // are applied in turn.
+  // are applied in turn. Throws InvalidSheet (one line: where and why) when the images cannot be
+  // made or, in a group with none skipped or overlapping, the result is not symmetric.
   Result applyImages(const Sheet& before, Sheet& sheet, const FoldRecord& fold) const;
   // What a drag shows of the images before its commit, on any triangulation of the same surface
   // (a display's coarse sheet): each image seeded and reflected as applyImages does, skipped by
@@ -119,6 +121,11 @@ class SymmetricFolder {
   std::optional<FoldRecord> imageOf(const Sheet& before, const Sheet& sheet, const FoldRecord& fold,
                                     std::size_t k) const;
   // The vertices the fold reflects on `before`.
+  // Throws InvalidSheet, saying where and why, when an initial vertex `moved` by the group (the
+  // fold and its images, on `sheet`) and its image under some element no longer correspond as they
+  // did on `before`. `byFold`: the vertices the fold itself moved.
+  void expectSymmetric(const Sheet& before, const Sheet& sheet, const std::vector<char>& moved,
+                       const std::vector<char>& byFold) const;
   static std::vector<VertexIndex> verticesMoved(const Sheet& before, const FoldRecord& fold);
   struct Pieces {
     std::vector<glm::dvec2> moreSeeds;  // beyond the image's seed

@@ -62,6 +62,15 @@ def test_a_symmetric_fold_brings_its_images_as_the_command_line_does(tmp_path):
     assert design.undo() and design.folds == []  # the group at once
 
 
+def test_a_symmetric_fold_the_slit_cuts_short_is_refused_as_the_command_line_refuses_it():
+    # Issue 28: its own part ends at the cylinder's slit, its images do not.
+    design = curvefold.Design.new("cylinder", symmetry="rotational:4:y")
+    with pytest.raises(ValueError, match="not symmetric under rotational:4:y: the fold's part is cut short"):
+        design.fold(grab=(-0.011646857029613445, -0.105, -0.04346666218300807),
+                    to=(-0.009053855032104785, -0.10085514992637065, -0.033789446984178156))
+    assert design.folds == []
+
+
 def test_fold_undo_redo_and_the_folds():
     design = folded_cylinder()
     (fold,) = design.folds
