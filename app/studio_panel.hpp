@@ -18,7 +18,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/document.hpp"
-#include "engine/print/crease_pattern_pdf.hpp"
+#include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
 namespace curvefold::cli {
