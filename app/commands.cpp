@@ -14,6 +14,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/fabrication/crease_pattern_pdf.hpp"
+#include "engine/fabrication/cutter_svg.hpp"
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -21,15 +24,12 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
-#include "engine/io/cutter_svg.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/io/sheet_cache.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
-#include "engine/print/crease_pattern_pdf.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/decimal.hpp"

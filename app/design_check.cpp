@@ -8,6 +8,7 @@
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/tolerances.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 
@@ -25,7 +26,7 @@ std::string DesignCheck::firstFailure() const {
 
 double isometryTolerance(const Sheet& initial) {
   const SheetReport report = measure(initial);
-  return std::max(1e-9 * report.size, 1.5 * report.maxEdgeLengthError);
+  return std::max(kRelativeIsometryTolerance * report.size, 1.5 * report.maxEdgeLengthError);
 }
 
 DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet& initial,
@@ -67,12 +68,12 @@ DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet
                 "creases: %zu curves, %zu edges (%zu mountain, %zu valley); max planarity "
                 "error %.3g m",
                 curves.size(), creases.size(), mountains, valleys, worstPlanarity);
-  line(worstPlanarity <= 1e-9 * now.size, buffer);
+  line(worstPlanarity <= kRelativePlaneTolerance * now.size, buffer);
   for (std::size_t i = 0; i < curves.size(); ++i) {
     std::snprintf(buffer, sizeof buffer, "crease %zu: %zu vertices%s, planarity error %.3g m",
                   i + 1, curves[i].vertices.size(), curves[i].closed ? " (closed)" : "",
                   curves[i].planarityError);
-    line(curves[i].planarityError <= 1e-9 * now.size, buffer);
+    line(curves[i].planarityError <= kRelativePlaneTolerance * now.size, buffer);
   }
   line(now.eulerCharacteristic == before.eulerCharacteristic,
        "Euler characteristic " + std::to_string(now.eulerCharacteristic) + " (initial " +

@@ -14,6 +14,10 @@ namespace {
 // The thumbstick scrolls this many wheel steps a second when pushed all the way.
 constexpr double kScrollStepsPerSecond = 10.0;
 
+// Dear ImGui needs a positive frame time: a frame at the same instant as the last (or earlier)
+// counts as this long, far shorter than any display's frame.
+constexpr double kShortestFrameSeconds = 1e-4;
+
 }  // namespace
 
 HeadsetStudio::HeadsetStudio(Document& doc, HeadsetStudioOptions options, HeadsetStudioHost host)
@@ -120,7 +124,7 @@ void HeadsetStudio::process(InputFrame& frame, const StudioStats& measured) {
   if (shown_) {
     ImGuiContextScope scope(context_);
     ImGuiIO& io = ImGui::GetIO();
-    const double dt = std::max(frame.time - lastTime_, 1e-4);
+    const double dt = std::max(frame.time - lastTime_, kShortestFrameSeconds);
     io.DeltaTime = float(dt);
     io.MousePos =
         hit_ && target == PointTarget::Panel

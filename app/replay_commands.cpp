@@ -12,12 +12,12 @@
 
 #include "app/commands.hpp"
 #include "app/headset_studio.hpp"
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"

@@ -11,12 +11,12 @@
 #include <stdexcept>
 #include <utility>
 
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/utf8.hpp"
 #include "sim_input/player.hpp"

@@ -20,7 +20,7 @@
 
 #include "app/document.hpp"
 #include "app/file_picker.hpp"
-#include "engine/print/crease_pattern_pdf.hpp"
+#include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
 namespace curvefold::cli {

@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/obj_writer.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace curvefold;

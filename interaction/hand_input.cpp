@@ -93,7 +93,7 @@ glm::dvec3 handPointingDirection(const HandJoints& hand) {
   }
   const glm::dvec3 along = 0.25 * knuckles - 0.2 * back;
   const double length = glm::length(along);
-  return length > 1e-6 ? along / length : glm::dvec3(0.0);
+  return length > kShortestPointingSpan ? along / length : glm::dvec3(0.0);
 }
 
 HandInput::HandInput(const InteractionThresholds& thresholds)

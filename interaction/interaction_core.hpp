@@ -60,6 +60,11 @@ struct InteractionThresholds {
   double handAimFilterBeta = 2.0;
 };
 
+// Not a threshold to tune but a guard (metres): a hand whose knuckles lie within this of the back
+// of the hand (joints collapsed by the tracker) points nowhere. These are metres of the user's
+// world, not of the sheet, so they stay here, not among the geometry's tolerances.
+inline constexpr double kShortestPointingSpan = 1e-6;
+
 enum class InteractionState { Idle, Hover, Dragging };
 
 // What the point hand serves this frame: the sheet, or a panel its ray is on. On a panel the tip

@@ -20,9 +20,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
 

@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/fabrication/cutter_svg.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/topology.hpp"
-#include "engine/io/cutter_svg.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
 

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
@@ -17,7 +18,6 @@
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
-#include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "io_test_support.hpp"
 

@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/io/atomic_file.hpp"
-#include "engine/print/crease_pattern_pdf.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
 

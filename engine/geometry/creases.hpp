@@ -19,9 +19,6 @@ enum class Assignment : char {
   Cut = 'C',   // the slit of a tube or cone
 };
 
-// A crease whose |fold angle| is below this (degrees) is reported as flat.
-inline constexpr double kFlatCreaseDegrees = 1e-6;
-
 // Signed dihedral angle between the front normals of the two triangles of an interior edge, in
 // degrees in [-180, 180]: positive for a valley (the front faces turn toward each other),
 // negative for a mountain (the FOLD convention). 0 for a boundary edge.

@@ -194,7 +194,7 @@ std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
   }
   std::sort(segments.begin(), segments.end(),
             [](const Segment& a, const Segment& b) { return sweepsBefore(a.p, b.p); });
-  return Sweep(sheet, std::move(segments), 1e-12 * size * size, work).run();
+  return Sweep(sheet, std::move(segments), kRelativeCrossingArea * size * size, work).run();
 }
 
 }  // namespace curvefold

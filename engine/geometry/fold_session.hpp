@@ -23,11 +23,6 @@ struct Symmetry;
 
 // One committed fold: the grabbed point as a development point, and the plane it was reflected
 // through. grabbed/target are the 3D drag (informative; the plane is what replays).
-// The shortest drag that folds, relative to the sheet's size (20 nm on a 20 cm sheet). Its bisector
-// lies at least half of it from the grabbed point, 500 times the on-plane tolerance, so a
-// micro-drag off a flat sheet cannot put the whole sheet "on the plane" and crease it everywhere.
-inline constexpr double kRelativeMinimumDrag = 1e-7;
-
 // The most moreSeeds a fold records: an image whose part a slit cuts into more pieces than this
 // is refused when the fold is made, not first when its design is saved.
 inline constexpr std::size_t kMaxMoreSeeds = 64;

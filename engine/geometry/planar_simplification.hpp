@@ -16,10 +16,10 @@ namespace curvefold {
 struct PlanarSimplificationOptions {
   // How far, relative to the sheet's size, a vertex may lie off a triangle's plane and still count
   // as in it; the isometry tolerance, far below a pixel.
-  double relativePlaneTolerance = 1e-9;
+  double relativePlaneTolerance = kRelativePlaneTolerance;
   // New triangles lower than this (relative to the sheet's size, in the development) are refused:
   // a sliver would make the next fold's cuts fragile.
-  double relativeMinHeight = 1e-6;
+  double relativeMinHeight = kRelativeSimplifiedMinHeight;
 };
 
 struct PlanarSimplification {

@@ -50,10 +50,7 @@ struct ReflectionChanges {
   double thinnestCut = 0.0;
 };
 
-// How far a fold's plane may move to pass through a vertex instead of cutting a sliver next to
-// it, relative to the sheet's size (3 micrometres on a 30 cm sheet: below what a hand or a mouse
-// places), and how many planes are tried.
-inline constexpr double kRelativeMaxPlaneShift = 1e-5;
+// How many planes are tried, each moved at most kRelativeMaxPlaneShift (tolerances.hpp).
 inline constexpr int kMaxPlaneShiftTries = 8;
 
 // Slivers: a plane that passes close to a vertex (just outside the on-plane tolerance) cuts the

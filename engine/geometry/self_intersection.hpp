@@ -27,9 +27,6 @@
 
 namespace curvefold {
 
-// The tolerance of the tests, relative to the sheet's size: the isometry tolerance.
-inline constexpr double kRelativeContactTolerance = 1e-9;
-
 enum class TrianglePairKind { Apart, Contact, Intersect };
 
 // Two triangles (by their corners) against each other; `tolerance` in metres. They may share one

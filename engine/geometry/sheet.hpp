@@ -15,6 +15,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "engine/geometry/tolerances.hpp"
+
 namespace curvefold {
 
 inline constexpr std::uint32_t kNoIndex = 0xffffffffu;
@@ -110,24 +112,10 @@ DevelopmentBounds developmentBounds(const Sheet& sheet);
 // Diagonal of the development's bounding box: the sheet's size, invariant under folding.
 double sheetSize(const Sheet& sheet);
 
-// Tolerance below which a signed distance counts as zero, relative to the sheet's size. A vertex
-// snapped onto a plane stays where it is, which costs up to 2*epsilon of edge length in the
-// reflected part, so the snap sits an order below the 1e-9 isometry tolerance (docs/design.md 2,
-// 8).
-inline constexpr double kRelativeEpsilon = 1e-10;
+// The on-plane tolerance in metres (kRelativeEpsilon, tolerances.hpp).
 inline double sheetEpsilon(const Sheet& sheet) {
   return kRelativeEpsilon * sheetSize(sheet);
 }
-
-// The minimum feature size, relative to the sheet's size (0.3 nm on a 30 cm sheet): validate()
-// refuses a triangle thinner than this (its smallest height in the development), so no edge is
-// shorter either. Ten times the on-plane tolerance, far below anything printable, and far above
-// rounding (a normal computed from such a triangle is good to 1e-7). Folds keep ten times clear of
-// it (kRelativeCutFeatureSize, reflection.hpp), so later cuts through a thin piece stay above it.
-inline constexpr double kRelativeFeatureSize = 1e-9;
-// What an edit makes keeps ten times clear of the floor: a cut piece thinner than this moves the
-// fold's plane (reflection.hpp), a grab that would make one snaps to a vertex (surface_point.hpp).
-inline constexpr double kRelativeCutFeatureSize = 10 * kRelativeFeatureSize;
 
 // Thrown by validate() and by every operation handed an impossible sheet.
 class InvalidSheet : public std::runtime_error {

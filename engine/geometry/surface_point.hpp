@@ -47,10 +47,6 @@ SurfacePoint closestSurfacePoint(const Sheet& sheet, const glm::dvec3& p);
 std::optional<SurfacePoint> locateDevelopmentPoint(const Sheet& sheet, const glm::dvec2& q,
                                                    double tolerance);
 
-// Relative distance (of the sheet's size) within which a grabbed point snaps to an existing vertex
-// or edge instead of making a sliver.
-inline constexpr double kRelativeGrabSnap = 1e-6;
-
 struct VertexInsertion {
   Sheet sheet;
   VertexIndex vertex = kNoIndex;  // the vertex at the point (new, or the one it snapped to)

@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/tolerances.hpp"
 #include "engine/text/excerpt.hpp"
 
 namespace curvefold {
@@ -462,7 +463,8 @@ std::optional<FoldRecord> SymmetricFolder::imageOf(const Sheet& before, const Sh
   const std::optional<SurfacePoint> now = locateDevelopmentPoint(sheet, imageSeed, tolerance);
   const std::optional<SurfacePoint> then = locateDevelopmentPoint(before, imageSeed, tolerance);
   if (!now || !then ||
-      glm::distance(positionOf(sheet, *now), positionOf(before, *then)) > 1e-6 * size)
+      glm::distance(positionOf(sheet, *now), positionOf(before, *then)) >
+          kRelativeImageSeedMoved * size)
     return std::nullopt;
   FoldRecord image;
   image.seed = imageSeed;

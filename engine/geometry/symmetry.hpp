@@ -18,7 +18,6 @@
 #include <glm/vec3.hpp>
 
 #include "engine/geometry/fold_session.hpp"
-#include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/sheet.hpp"
 
 namespace curvefold {

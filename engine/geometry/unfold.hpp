@@ -33,6 +33,6 @@ class NotDevelopable : public std::runtime_error {
 // that each triangle is counter-clockwise. relativeTolerance is relative to the mesh's size.
 std::vector<glm::dvec2> unfoldDevelopment(const std::vector<glm::dvec3>& positions,
                                           const std::vector<Triangle>& triangles,
-                                          double relativeTolerance = 1e-9);
+                                          double relativeTolerance = kRelativeIsometryTolerance);
 
 }  // namespace curvefold

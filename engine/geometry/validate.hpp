@@ -14,7 +14,7 @@ namespace curvefold {
 
 struct ValidationOptions {
   // Largest allowed |3D edge length - 2D edge length|, relative to the sheet's size.
-  double relativeLengthTolerance = 1e-9;
+  double relativeLengthTolerance = kRelativeIsometryTolerance;
   // A triangle whose smallest height (in the development) is below this, relative to the sheet's
   // size, is degenerate: the minimum feature size.
   double relativeDegenerateHeight = kRelativeFeatureSize;

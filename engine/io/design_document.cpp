@@ -28,9 +28,6 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-// A bisector plane's normal is normalised in double precision: a few ulps off unit length.
-constexpr double kUnitTolerance = 1e-9;
-
 // Reads a JSON value into a design, with messages that name where the problem is.
 class Reader : public JsonReader {
  public:
@@ -130,7 +127,7 @@ class Reader : public JsonReader {
         vector3(member(plane, "normal", where + ": plane"), where + ": plane.normal");
     const double length = glm::length(fold.plane.normal);
     if (length == 0.0) fail(where, "plane.normal is zero");
-    if (std::abs(length - 1.0) > kUnitTolerance)
+    if (std::abs(length - 1.0) > kUnitNormalTolerance)
       fail(where, "plane.normal is not a unit vector (length " + shortestDouble(length) + ")");
     // grabbed and target only describe the drag; the plane is what replays.
     if (const json* grabbed = optionalMember(value, "grabbed", where))

@@ -20,10 +20,8 @@ class ObjError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// OBJ files carry about 6 significant digits, so an imported sheet is congruent to its
-// development within 1e-6 of its size (not the 1e-9 of generated sheets); the result passes
-// validate() with ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance}.
-inline constexpr double kObjRelativeTolerance = 1e-5;
+// An imported sheet passes validate() with ValidationOptions{.relativeLengthTolerance =
+// kObjRelativeTolerance} (engine/geometry/tolerances.hpp).
 
 // A mesh whose centre lies farther from the origin than this many times its size is moved to the
 // origin on import (its coordinates would leave too few digits for the folds otherwise).

@@ -1,4 +1,4 @@
-#include "engine/io/cutter_svg.hpp"
+#include "engine/fabrication/cutter_svg.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,14 +12,14 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "engine/geometry/creases.hpp"
-#include "engine/geometry/topology.hpp"
+#include "engine/fabrication/colours.hpp"
+#include "engine/fabrication/pattern_edges.hpp"
+#include "engine/fabrication/units.hpp"
 #include "engine/io/atomic_file.hpp"
 
 namespace curvefold {
 namespace {
 
-constexpr double kMmPerMetre = 1000.0;
 constexpr double kMarginMm = 5.0;
 
 // A crease runs on through a vertex where others meet if it turns by less than this there; a
@@ -114,7 +114,7 @@ std::vector<std::vector<glm::dvec2>> perforate(const std::vector<glm::dvec2>& li
       left -= step;
       length -= step;
       a = end;
-      if (left <= 1e-12) {
+      if (left <= kDashRoundingMm) {
         if (cutting) {
           dash.push_back(end);
           dashes.push_back(std::move(dash));
@@ -125,11 +125,12 @@ std::vector<std::vector<glm::dvec2>> perforate(const std::vector<glm::dvec2>& li
       }
     }
     // The dash bends here with the line (not at its very start, which is already in it).
-    if (cutting && i + 2 < line.size() && glm::distance(dash.back(), b) > 1e-9) dash.push_back(b);
+    if (cutting && i + 2 < line.size() && glm::distance(dash.back(), b) > kSamePointMm)
+      dash.push_back(b);
   }
   // A last, shorter dash where the line ends inside one.
-  if (cutting && glm::distance(dash.front(), line.back()) > 1e-9) {
-    if (glm::distance(dash.back(), line.back()) > 1e-9) dash.push_back(line.back());
+  if (cutting && glm::distance(dash.front(), line.back()) > kSamePointMm) {
+    if (glm::distance(dash.back(), line.back()) > kSamePointMm) dash.push_back(line.back());
     dashes.push_back(std::move(dash));
   }
   return dashes;
@@ -152,16 +153,10 @@ std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
     return glm::dvec2((p.x - lo.x) * kMmPerMetre + kMarginMm,
                       (hi.y - p.y) * kMmPerMetre + kMarginMm);
   };
-  std::vector<Edge> cut, mountain, valley;
-  for (const EdgeTopology::EdgeSides& sides : buildEdgeTopology(sheet).edges) {
-    const Assignment assignment = assignmentOf(sheet, sides, foldAngleDegrees(sheet, sides));
-    if (assignment == Assignment::Boundary || assignment == Assignment::Cut)
-      cut.push_back(sides.edge);
-    else if (assignment == Assignment::Mountain)
-      mountain.push_back(sides.edge);
-    else if (assignment == Assignment::Valley)
-      valley.push_back(sides.edge);
-  }
+  const std::vector<DrawnEdge> drawn = drawnEdges(sheet, buildEdgeTopology(sheet));
+  const std::vector<Edge> cut = edgesOf(drawn, {Assignment::Boundary, Assignment::Cut});
+  const std::vector<Edge> mountain = edgesOf(drawn, {Assignment::Mountain});
+  const std::vector<Edge> valley = edgesOf(drawn, {Assignment::Valley});
   // The dashes are counted before any is made: fine dashes over long creases would fill memory.
   if (perforation) {
     double scoreMm = 0.0;
@@ -176,11 +171,12 @@ std::vector<CutterLayer> cutterLayers(const Sheet& sheet,
   }
   std::vector<glm::dvec2> mm(sheet.development.size());
   for (std::size_t v = 0; v < mm.size(); ++v) mm[v] = toMm(static_cast<std::uint32_t>(v));
-  std::vector<CutterLayer> layers{
-      {"cut", "#ff0000", {}}, {"mountain score", "#0000ff", {}}, {"valley score", "#00ff00", {}}};
+  std::vector<CutterLayer> layers{{"cut", kCutterCutColour, {}},
+                                  {"mountain score", kCutterMountainScoreColour, {}},
+                                  {"valley score", kCutterValleyScoreColour, {}}};
   // Perforations are cuts: a layer of their own (issue 28, 3), so the machine cuts them through
   // rather than scoring them with the creases.
-  if (perforation) layers.push_back({"perforation", "#ff00ff", {}});
+  if (perforation) layers.push_back({"perforation", kCutterPerforationColour, {}});
   const std::vector<Edge>* sources[3] = {&cut, &mountain, &valley};
   for (int k = 0; k < 3; ++k)
     for (const std::vector<VertexIndex>& chain : chains(*sources[k], mm)) {

@@ -1,6 +1,6 @@
 // The crease pattern as SVG for printing at real size (docs/design.md 4), in the colours Origami
-// Simulator imports: boundary black, mountain red, valley blue, slit/cut green; bending edges are
-// not drawn.
+// Simulator imports: boundary black, mountain red, valley blue, slit/cut green (colours.hpp);
+// bending edges are not drawn.
 #pragma once
 
 #include <filesystem>

@@ -20,12 +20,12 @@
 
 #include <glm/vec2.hpp>
 
+#include "engine/fabrication/units.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/sheet.hpp"
 
 namespace curvefold {
 
-inline constexpr double kPointsPerMm = 72.0 / 25.4;
 inline constexpr double kScaleBarMm = 50.0;
 // Blank paper around the printed area (most printers cannot print the outer 5 mm), the band at
 // the foot of each page for its label and scale bar, and how far neighbouring tiles overlap.
@@ -41,7 +41,8 @@ std::optional<Paper> parsePaper(std::string_view name);
 // Portrait size in millimetres (Fit prints on A4).
 glm::dvec2 paperSizeMm(Paper paper);
 
-// How a crease, the boundary or a cut is drawn: colour, width and dash pattern (empty: solid).
+// How a crease, the boundary or a cut is drawn: colour (colours.hpp), width and dash pattern
+// (empty: solid).
 struct PdfLineStyle {
   double red = 0.0, green = 0.0, blue = 0.0;
   double widthMm = 0.25;

@@ -1,4 +1,4 @@
-#include "engine/print/crease_pattern_pdf.hpp"
+#include "engine/fabrication/crease_pattern_pdf.hpp"
 
 #include <cairo-pdf.h>
 #include <cairo.h>
@@ -14,13 +14,14 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "engine/fabrication/colours.hpp"
+#include "engine/fabrication/pattern_edges.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/io/atomic_file.hpp"
 
 namespace curvefold {
 namespace {
 
-constexpr double kMmPerMetre = 1000.0;
 constexpr double kMarkLengthMm = 5.0;  // a cut mark runs this far out from a tile's corner
 constexpr double kMarkGapMm = 1.0;     // and starts this far from it, so a cut leaves no line
 
@@ -50,13 +51,9 @@ Pattern patternOf(const Sheet& sheet, bool angles) {
   pattern.low = bounds.low;
   pattern.high = bounds.high;
   const EdgeTopology topology = buildEdgeTopology(sheet);
-  for (const EdgeTopology::EdgeSides& sides : topology.edges) {
-    const double angle = foldAngleDegrees(sheet, sides);
-    const Assignment assignment = assignmentOf(sheet, sides, angle);
-    if (assignment == Assignment::Flat) continue;
+  for (const DrawnEdge& e : drawnEdges(sheet, topology))
     pattern.edges.push_back(
-        {sheet.development[sides.edge.a], sheet.development[sides.edge.b], assignment});
-  }
+        {sheet.development[e.edge.a], sheet.development[e.edge.b], e.assignment});
   if (angles) {
     // One label per crease curve, at its middle edge, with that edge's angle: along a curved
     // crease the angle varies, and one number per edge would bury the pattern.
@@ -127,15 +124,14 @@ glm::dvec2 paperSizeMm(Paper paper) {
 }
 
 PdfLineStyle pdfLineStyle(Assignment assignment) {
+  const PaperRgb c = paperPdfColour(assignment);
   switch (assignment) {
-    case Assignment::Mountain:  // red, dash-dot
-      return {1.0, 0.0, 0.0, 0.3, {3.0, 1.0, 0.3, 1.0}};
-    case Assignment::Valley:  // blue, dashed
-      return {0.0, 0.0, 1.0, 0.3, {2.0, 1.2}};
-    case Assignment::Cut:  // green, solid: cut it
-      return {0.0, 0.6, 0.0, 0.3, {}};
-    default:  // the boundary: black, solid
-      return {0.0, 0.0, 0.0, 0.3, {}};
+    case Assignment::Mountain:  // dash-dot
+      return {c.red, c.green, c.blue, 0.3, {3.0, 1.0, 0.3, 1.0}};
+    case Assignment::Valley:  // dashed
+      return {c.red, c.green, c.blue, 0.3, {2.0, 1.2}};
+    default:  // the boundary and cuts (slits): solid
+      return {c.red, c.green, c.blue, 0.3, {}};
   }
 }
 
@@ -148,8 +144,8 @@ PdfLayout pdfLayout(const glm::dvec2& patternMm, Paper paper) {
     const glm::dvec2 area =
         pageMm - glm::dvec2(2.0 * kPageMarginMm, 2.0 * kPageMarginMm + kFooterMm);
     if (paper == Paper::Fit) {
-      const double scale = std::min(
-          {area.x / std::max(patternMm.x, 1e-9), area.y / std::max(patternMm.y, 1e-9), 1.0});
+      const double scale = std::min({area.x / std::max(patternMm.x, kSamePointMm),
+                                     area.y / std::max(patternMm.y, kSamePointMm), 1.0});
       return PdfLayout{pageMm, 1.0, 1.0, scale, landscape};
     }
     auto count = [&](double extent, double room) {

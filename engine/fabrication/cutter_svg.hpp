@@ -1,7 +1,8 @@
 // The crease pattern for laser cutters and cutting plotters (issue 18, 2; docs/design.md 4): real
 // millimetres, hairline strokes, one Inkscape layer each for the cut (boundary, slits, holes), the
 // mountain scores and the valley scores, in a colour per layer that the machines' software maps
-// to an operation (LightBurn layers, Glowforge steps, a plotter's pens). Lines are joined into
+// to an operation (LightBurn layers, Glowforge steps, a plotter's pens; colours.hpp says why these
+// are not the paper colours). Lines are joined into
 // polylines, so a machine follows a crease without lifting. Perforation turns the scores into
 // cuts of a given length with gaps between, for folding by hand without a scoring tool; being
 // cuts, they get a layer of their own.

@@ -1,4 +1,4 @@
-#include "engine/io/svg_crease_pattern.hpp"
+#include "engine/fabrication/svg_crease_pattern.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,29 +9,12 @@
 
 #include <glm/common.hpp>
 
-#include "engine/geometry/creases.hpp"
-#include "engine/geometry/topology.hpp"
+#include "engine/fabrication/colours.hpp"
+#include "engine/fabrication/pattern_edges.hpp"
+#include "engine/fabrication/units.hpp"
 #include "engine/io/atomic_file.hpp"
 
 namespace curvefold {
-namespace {
-
-constexpr double kMmPerMetre = 1000.0;
-
-const char* colourOf(Assignment assignment) {
-  switch (assignment) {
-    case Assignment::Mountain:
-      return "#ff0000";
-    case Assignment::Valley:
-      return "#0000ff";
-    case Assignment::Cut:
-      return "#00ff00";
-    default:
-      return "#000000";
-  }
-}
-
-}  // namespace
 
 void writeSvgCreasePattern(const Sheet& sheet, const std::filesystem::path& path,
                            const SvgOptions& options) {
@@ -51,23 +34,21 @@ void writeSvgCreasePattern(const Sheet& sheet, const std::filesystem::path& path
                       (hi.y - p.y) * kMmPerMetre + options.marginMm);
   };
 
-  const EdgeTopology topology = buildEdgeTopology(sheet);
+  const std::vector<DrawnEdge> edges = drawnEdges(sheet, buildEdgeTopology(sheet));
   writeFileAtomically(path, [&](std::ostream& out) {
     out << std::fixed << std::setprecision(4);  // 0.1 um: far below what a printer resolves
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "mm\" height=\""
         << height << "mm\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
     // Lines are direct children of <svg>: Origami Simulator's importer ignores groups.
-    for (const EdgeTopology::EdgeSides& sides : topology.edges) {
-      const double angle = foldAngleDegrees(sheet, sides);
-      const Assignment assignment = assignmentOf(sheet, sides, angle);
-      if (assignment == Assignment::Flat) continue;
-      const bool folded = assignment == Assignment::Mountain || assignment == Assignment::Valley;
-      const double opacity = folded ? std::min(std::abs(angle) / 180.0, 1.0) : 1.0;
-      const glm::dvec2 a = toSvg(sides.edge.a);
-      const glm::dvec2 b = toSvg(sides.edge.b);
+    for (const DrawnEdge& e : edges) {
+      const bool folded =
+          e.assignment == Assignment::Mountain || e.assignment == Assignment::Valley;
+      const double opacity = folded ? std::min(std::abs(e.foldAngle) / 180.0, 1.0) : 1.0;
+      const glm::dvec2 a = toSvg(e.edge.a);
+      const glm::dvec2 b = toSvg(e.edge.b);
       out << "<line x1=\"" << a.x << "\" y1=\"" << a.y << "\" x2=\"" << b.x << "\" y2=\"" << b.y
-          << "\" stroke=\"" << colourOf(assignment) << "\" stroke-opacity=\"" << opacity
+          << "\" stroke=\"" << paperSvgColour(e.assignment) << "\" stroke-opacity=\"" << opacity
           << "\" stroke-width=\"" << options.strokeWidthMm << "\" stroke-linecap=\"round\"/>\n";
     }
     out << "</svg>\n";
