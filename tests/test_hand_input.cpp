@@ -227,7 +227,7 @@ TEST(HandInput, AnUntrackedHandHoldsItsPinchAndThePalmIsTheSheetFrame) {
 // redo swapped in the table still round-tripped. Here the fingers come from the documented bare-hands
 // gesture table (docs/vr.md, moved from the README), and a hand tapping that finger must press that
 // button.
-TEST(HandInput, TapsPressTheButtonsTheReadmeGivesEachFinger) {
+TEST(HandInput, TapsPressTheButtonsTheDocsGiveEachFinger) {
   std::ifstream readme(CURVEFOLD_SOURCE_DIR "/docs/vr.md");
   ASSERT_TRUE(readme) << "docs/vr.md";
   const std::map<std::string, Button> buttons = {{"show or hide the panel", Button::Panel},
