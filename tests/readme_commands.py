@@ -7,7 +7,8 @@ comment-only lines are skipped) and run in order with bash, in one scratch folde
 in turn (README first: the docs go on from its files), holding copies of the shipped examples/,
 scripts/ and python/ and a link `build` to the build tree, with build/app on PATH. A ```python
 block runs as one script against build/python, with the Python running this. A command that exits
-non-zero fails the test, named with its page, line and stderr. Commands that
+non-zero fails the test, named with its page, line and stderr; so does a relative link to a file
+or heading that is not there. Commands that
 cannot run here are listed in EXCLUDED, each with why; an entry that no longer matches a command
 fails too, so the list cannot outlive the text.
 
@@ -36,7 +37,9 @@ EXCLUDED = {
 EXCLUDED_EXACT = {
     "curvefold": "opens a window (or a headset session) and waits for the user",
 }
-PAGES = ["README.md", "docs/cli.md", "docs/formats.md", "docs/vr.md"]
+PAGES = ["README.md", "docs/cli.md", "docs/formats.md", "docs/vr.md", "docs/development.md"]
+# Pages whose links are checked but whose commands are not run (benchmarks take minutes).
+LINKS_ONLY = ["docs/design.md", "docs/performance.md"]
 TIMEOUT_S = 120
 
 
@@ -86,10 +89,35 @@ def excluded(command):
     return None, None
 
 
+def slug(heading):
+    """GitHub's anchor for a heading."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+def broken_links(source, page, text):
+    """Relative links (and their #anchors) that name no file or heading: a moved section."""
+    out = []
+    for target in re.findall(r"\]\(([^)\s]+)\)", text):
+        if re.match(r"^[a-z]+:", target):
+            continue
+        path, _, anchor = target.partition("#")
+        file = os.path.normpath(os.path.join(source, os.path.dirname(page), path)) if path else \
+            os.path.join(source, page)
+        if not os.path.exists(file):
+            out.append(f"{page}: link {target}: no such file")
+        elif anchor and file.endswith(".md"):
+            with open(file, encoding="utf-8") as f:
+                headings = {slug(h) for h in re.findall(r"^#+ (.*)$", f.read(), re.M)}
+            if anchor not in headings:
+                out.append(f"{page}: link {target}: no such heading")
+    return out
+
+
 def scratch(source, build):
     folder = tempfile.mkdtemp(prefix="readme-commands-")
     for shipped in ("examples", "scripts", "python"):
-        shutil.copytree(os.path.join(source, shipped), os.path.join(folder, shipped))
+        if os.path.isdir(os.path.join(source, shipped)):
+            shutil.copytree(os.path.join(source, shipped), os.path.join(folder, shipped))
     os.symlink(build, os.path.join(folder, "build"))
     return folder
 
@@ -109,7 +137,7 @@ def environment(args, folder):
 def run_page(page, args, folder, env, used):
     with open(os.path.join(args.source, page), encoding="utf-8") as f:
         text = f.read()
-    failures, ran = [], 0
+    failures, ran = broken_links(args.source, page, text), 0
     for lang, start, body in blocks(text):
         if lang in ("sh", "bash"):
             runs = []
@@ -159,6 +187,9 @@ def main():
         ran += page_ran
         failures += page_failures
     if args.pages == PAGES:
+        for page in LINKS_ONLY:
+            with open(os.path.join(args.source, page), encoding="utf-8") as f:
+                failures += broken_links(args.source, page, f.read())
         for key in list(EXCLUDED) + list(EXCLUDED_EXACT):
             if key not in used:
                 failures.append(f"exclusion `{key}` matches no command any more: remove it")
