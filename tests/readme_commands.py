@@ -12,7 +12,7 @@ or heading that is not there. Commands that
 cannot run here are listed in EXCLUDED, each with why; an entry that no longer matches a command
 fails too, so the list cannot outlive the text.
 
-usage: readme_commands.py --source SRC --build BUILD [--no-python] [PAGE ...]
+usage: readme_commands.py --source SRC --build BUILD [--no-python] [--keep-on-failure] [PAGE ...]
 """
 import argparse
 import os
@@ -176,6 +176,8 @@ def main():
     parser.add_argument("--build", required=True)
     parser.add_argument("--no-python", action="store_true",
                         help="skip the python blocks (a build without the Python module)")
+    parser.add_argument("--keep-on-failure", action="store_true",
+                        help="keep the scratch folder when a command fails, to look into it")
     parser.add_argument("pages", nargs="*", default=PAGES)
     args = parser.parse_args()
     args.source, args.build = os.path.abspath(args.source), os.path.abspath(args.build)
@@ -195,7 +197,7 @@ def main():
                 failures.append(f"exclusion `{key}` matches no command any more: remove it")
     for failure in failures:
         print("FAILED: " + failure, file=sys.stderr)
-    if failures:
+    if failures and args.keep_on_failure:
         print(f"scratch folder kept: {folder}")
     else:
         shutil.rmtree(folder, ignore_errors=True)
