@@ -18,7 +18,10 @@ design() {
   for drag in "$@"; do
     "$curvefold" fold "$file" --vertex-near "${drag%%>*}" --to "${drag##*>}" -o "$file" >/dev/null
   done
-  "$curvefold" check "$file" >"$dir/check.txt" || { cat "$dir/check.txt" >&2; exit 1; }
+  # These folds predate the self-intersection check and pass the paper through itself, as the
+  # recorded Figure 5 sessions do: check.txt lists the pairs; every other invariant must hold.
+  "$curvefold" check "$file" --allow-self-intersection >"$dir/check.txt" ||
+    { cat "$dir/check.txt" >&2; exit 1; }
   "$curvefold" export "$file" --fold "$dir/$name.fold" --svg "$dir/$name.svg" \
     --obj "$dir/$name.obj" --gltf "$dir/$name.glb" >/dev/null
   echo "$name: $# folds, $(head -1 "$dir/check.txt" | sed 's/.*folds, //'); $(grep -o 'creases: [^;]*' "$dir/check.txt")"

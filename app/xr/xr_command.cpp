@@ -86,8 +86,8 @@ void addXrCommand(CLI::App& app) {
                       "Design saved after every committed fold and at the end (default: "
                       "<name>.autosave.curvefold.json)");
   command->add_option("--export-dir", options->exportDir,
-                      "Folder for the panel's exports (FOLD, SVG, OBJ, glTF, PNG) and saves "
-                      "(default: beside the design's autosave)");
+                      "Folder for the panel's exports (FOLD, SVG, PDF, OBJ, glTF, PNG) and "
+                      "saves (default: beside the design's autosave)");
   command->add_option("--target", options->target,
                       "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
                       "with its distance, and the panel's Suggest proposes the next fold");
