@@ -1,7 +1,8 @@
 // Bare hands as an input source (issue 16, docs/design.md 5b), on the standard joints of
 // XR_EXT_hand_tracking and no OpenXR types: the dominant hand's pinch point (between the thumb and
 // index tips, filtered) is the point, a pinch is select and a closed hand the second hand's grip;
-// the non-dominant hand's palm (filtered) is the sheet frame and a closed hand is the clutch. Taps
+// the non-dominant hand gives the sheet frame (the centre of its rigid part, rigidCentre, turned
+// as its palm; both filtered) and a closed hand is the clutch. Taps
 // (the thumb on a fingertip) press the buttons (kSheetHandTaps, kPointHandTaps). Pinch, grab and
 // tap have hysteresis (InteractionThresholds), so a hand's jitter neither starts nor drops a fold.
 // The result is the same InputFrame every other source makes.

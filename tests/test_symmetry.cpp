@@ -146,7 +146,7 @@ TEST(Symmetry, FindingThemIsNearLinear) {
   RecordProperty("cellProbesPerVertex", std::to_string(double(stats.cellProbes) / vertices));
 }
 
-// A fold on a 6-fold cylinder and a mirrored cone: the images follow, each an exact reflection
+// A fold on a 6-fold cylinder and on a mirrored one: the images follow, each an exact reflection
 // fold, and the folded mesh and its creases map onto themselves under every element.
 TEST(Symmetry, AFoldsImagesKeepTheDesignSymmetric) {
   struct Case {

@@ -90,7 +90,7 @@ int XrHands::servesEveryRecordingAsHands(const std::string& folder) {
     const json reference = replayed(input, "reference_" + stem);
     // A studio recording makes a new sheet from the panel (pinching its items): the design is
     // that sheet's, saved under its own name.
-    const std::string surface = reference["surface"]["generator"].get<std::string>();
+    const std::string surface = reference["surface"].value("generator", std::string());
     const fs::path design =
         fs::exists(path(surface + ".autosave.curvefold.json")) && stem == "xr_studio"
             ? path(surface + ".autosave.curvefold.json")
