@@ -224,9 +224,9 @@ TEST(HandInput, AnUntrackedHandHoldsItsPinchAndThePalmIsTheSheetFrame) {
 }
 
 // Issue 28: the simulated hand and the reader share kSheetHandTaps / kPointHandTaps, so undo and
-// redo swapped in the table still round-tripped. Here the fingers come from the documented bare-hands
-// gesture table (docs/vr.md, moved from the README), and a hand tapping that finger must press that
-// button.
+// redo swapped in the table still round-tripped. Here the fingers come from the documented
+// bare-hands gesture table (docs/vr.md, moved from the README), and a hand tapping that finger must
+// press that button.
 TEST(HandInput, TapsPressTheButtonsTheDocsGiveEachFinger) {
   std::ifstream readme(CURVEFOLD_SOURCE_DIR "/docs/vr.md");
   ASSERT_TRUE(readme) << "docs/vr.md";
