@@ -169,83 +169,77 @@ double pdfPageCount(const Sheet& sheet, Paper paper) {
   return layout.rows * layout.columns;
 }
 
-PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
-  const Pattern pattern = patternOf(sheet, options.angles);
-  PdfPlan plan;
-  plan.patternMm = (pattern.high - pattern.low) * kMmPerMetre;
-  const PdfLayout layout = pdfLayout(plan.patternMm, options.paper);
+namespace {
+
+// A pattern that would print on more than kMaxPdfPages tiles is refused before anything is drawn.
+void refuseTooManyPages(const glm::dvec2& patternMm, const PdfLayout& layout) {
   if (layout.rows * layout.columns > kMaxPdfPages)
-    throw PdfTooLarge("a " + formatted("%.0f", plan.patternMm.x) + " x " +
-                      formatted("%.0f", plan.patternMm.y) + " mm crease pattern would print on " +
+    throw PdfTooLarge("a " + formatted("%.0f", patternMm.x) + " x " +
+                      formatted("%.0f", patternMm.y) + " mm crease pattern would print on " +
                       formatted("%.0f", layout.rows * layout.columns) +
                       " pages at real size, more than " + formatted("%.0f", kMaxPdfPages));
-  plan.rows = int(layout.rows);
-  plan.columns = int(layout.columns);
-  plan.scale = layout.scale;
-  plan.landscape = layout.landscape;
-  const glm::dvec2 pagePt = layout.pageMm * kPointsPerMm;
+}
+
+std::string paperName(Paper paper) {
+  return paper == Paper::Letter ? "letter" : paper == Paper::A3 ? "A3" : "A4";
+}
+
+// What every page of a plan is drawn from: the pattern, the options, the page size and the
+// printable area on it (points).
+struct PageSetup {
+  const Pattern& pattern;
+  const PdfOptions& options;
+  glm::dvec2 pagePt;
+  PdfRect area;
+};
+
+// Where the pattern lies on a page: the window whose top left pattern corner is `origin` (mm from
+// the pattern's top left) drawn at `at` (points), at `scale`.
+struct Placement {
+  glm::dvec2 origin, at;
+  double scale;
+};
+
+// Pattern (metres, y up) to page points (y down).
+glm::dvec2 place(const Pattern& pattern, const Placement& placement, const glm::dvec2& p) {
+  const glm::dvec2 mm((p.x - pattern.low.x) * kMmPerMetre, (pattern.high.y - p.y) * kMmPerMetre);
+  return placement.at + (mm - placement.origin) * placement.scale * kPointsPerMm;
+}
+
+// The pattern's edges (and labels, if asked) that reach into the page's clip.
+void addPattern(PdfPage& page, const Pattern& pattern, const Placement& placement, bool labels) {
+  const PdfRect& clip = page.clip;
+  const double pointsPerPatternMm = placement.scale * kPointsPerMm;
+  page.patternWindowMm = {placement.origin + (clip.low - placement.at) / pointsPerPatternMm,
+                          placement.origin + (clip.high - placement.at) / pointsPerPatternMm};
+  for (const PatternEdge& e : pattern.edges) {
+    const glm::dvec2 a = place(pattern, placement, e.a), b = place(pattern, placement, e.b);
+    if (std::max(a.x, b.x) < clip.low.x || std::min(a.x, b.x) > clip.high.x ||
+        std::max(a.y, b.y) < clip.low.y || std::min(a.y, b.y) > clip.high.y)
+      continue;
+    page.lines.push_back({a, b, e.assignment});
+  }
+  if (!labels) return;
+  for (const auto& [p, text] : pattern.labels) {
+    const glm::dvec2 q = place(pattern, placement, p);
+    if (q.x >= clip.low.x && q.x <= clip.high.x && q.y >= clip.low.y && q.y <= clip.high.y)
+      page.texts.push_back({q + glm::dvec2(1.0, -1.0), 6.0, text});
+  }
+}
+
+// The cover's lines beside the pattern: the caller's facts, then the size, the paper and how to
+// print, read and tape the pages.
+std::vector<std::string> coverFacts(const PdfPlan& plan, const PdfOptions& options) {
   const int tiles = plan.rows * plan.columns;
-  const std::string paperName = options.paper == Paper::Letter ? "letter"
-                                : options.paper == Paper::A3   ? "A3"
-                                                               : "A4";
-
-  // Pattern (metres, y up) to page points (y down), for a tile whose top left pattern corner is
-  // `origin` (mm from the pattern's top left) drawn at `at`, at `scale`.
-  auto place = [&](const glm::dvec2& p, const glm::dvec2& origin, const glm::dvec2& at,
-                   double scale) {
-    const glm::dvec2 mm((p.x - pattern.low.x) * kMmPerMetre, (pattern.high.y - p.y) * kMmPerMetre);
-    return at + (mm - origin) * scale * kPointsPerMm;
-  };
-  auto addPattern = [&](PdfPage& page, const glm::dvec2& origin, const glm::dvec2& at, double scale,
-                        bool labels) {
-    const PdfRect& clip = page.clip;
-    const double pointsPerPatternMm = scale * kPointsPerMm;
-    page.patternWindowMm = {origin + (clip.low - at) / pointsPerPatternMm,
-                            origin + (clip.high - at) / pointsPerPatternMm};
-    for (const PatternEdge& e : pattern.edges) {
-      const glm::dvec2 a = place(e.a, origin, at, scale), b = place(e.b, origin, at, scale);
-      if (std::max(a.x, b.x) < clip.low.x || std::min(a.x, b.x) > clip.high.x ||
-          std::max(a.y, b.y) < clip.low.y || std::min(a.y, b.y) > clip.high.y)
-        continue;
-      page.lines.push_back({a, b, e.assignment});
-    }
-    if (!labels) return;
-    for (const auto& [p, text] : pattern.labels) {
-      const glm::dvec2 q = place(p, origin, at, scale);
-      if (q.x >= clip.low.x && q.x <= clip.high.x && q.y >= clip.low.y && q.y <= clip.high.y)
-        page.texts.push_back({q + glm::dvec2(1.0, -1.0), 6.0, text});
-    }
-  };
-
-  // The cover: the folded form above, the pattern at a glance and the facts below.
-  PdfPage cover;
-  cover.sizePt = pagePt;
-  cover.cover = true;
-  const PdfRect area = printableArea(pagePt);
-  const double line = 12.0;
-  double y = area.low.y + 16.0;
-  cover.texts.push_back(
-      {{area.low.x, y}, 16.0, options.title.empty() ? "curvefold" : options.title});
-  y += 8.0;
-  const glm::dvec2 areaSize = area.high - area.low;
-  cover.pictureBox = PdfRect{{area.low.x, y}, {area.high.x, y + 0.45 * areaSize.y}};
-  y = cover.pictureBox->high.y + 10.0;
-  const PdfRect glance{{area.low.x, y}, {area.low.x + 0.5 * areaSize.x, area.high.y}};
-  cover.clip = glance;
-  const glm::dvec2 glanceSize = glance.high - glance.low;
-  const double glanceScale = std::min(glanceSize.x / (plan.patternMm.x * kPointsPerMm),
-                                      glanceSize.y / (plan.patternMm.y * kPointsPerMm));
-  addPattern(cover, {0.0, 0.0}, glance.low, glanceScale, false);
-  double factsY = y + line;
-  const double factsX = glance.high.x + 12.0;
+  const std::string paper = paperName(options.paper);
   std::vector<std::string> facts = options.facts;
   facts.push_back("pattern " + formatted("%.1f", plan.patternMm.x) + " x " +
                   formatted("%.1f", plan.patternMm.y) + " mm");
   if (options.paper == Paper::Fit)
-    facts.push_back("printed on one " + paperName + " page at " +
+    facts.push_back("printed on one " + paper + " page at " +
                     formatted("%.1f", 100.0 * plan.scale) + "% of real size");
   else
-    facts.push_back("printed at real size on " + std::to_string(tiles) + " " + paperName +
+    facts.push_back("printed at real size on " + std::to_string(tiles) + " " + paper +
                     (tiles == 1 ? " page" : " pages") + " (" + std::to_string(plan.rows) + " x " +
                     std::to_string(plan.columns) + ")");
   facts.push_back("print at 100% (actual size); check the 50 mm bar");
@@ -256,48 +250,102 @@ PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
     facts.push_back("over its left and upper neighbours so their");
     facts.push_back("edges meet the grey lines, and tape");
   }
-  for (const std::string& fact : facts) {
+  return facts;
+}
+
+// The cover: the folded form above, the pattern at a glance and the facts below.
+PdfPage coverPage(const PageSetup& setup, const PdfPlan& plan) {
+  const PdfRect& area = setup.area;
+  PdfPage cover;
+  cover.sizePt = setup.pagePt;
+  cover.cover = true;
+  const double line = 12.0;
+  double y = area.low.y + 16.0;
+  cover.texts.push_back(
+      {{area.low.x, y}, 16.0, setup.options.title.empty() ? "curvefold" : setup.options.title});
+  y += 8.0;
+  const glm::dvec2 areaSize = area.high - area.low;
+  cover.pictureBox = PdfRect{{area.low.x, y}, {area.high.x, y + 0.45 * areaSize.y}};
+  y = cover.pictureBox->high.y + 10.0;
+  const PdfRect glance{{area.low.x, y}, {area.low.x + 0.5 * areaSize.x, area.high.y}};
+  cover.clip = glance;
+  const glm::dvec2 glanceSize = glance.high - glance.low;
+  const double glanceScale = std::min(glanceSize.x / (plan.patternMm.x * kPointsPerMm),
+                                      glanceSize.y / (plan.patternMm.y * kPointsPerMm));
+  addPattern(cover, setup.pattern, {{0.0, 0.0}, glance.low, glanceScale}, false);
+  double factsY = y + line;
+  const double factsX = glance.high.x + 12.0;
+  for (const std::string& fact : coverFacts(plan, setup.options)) {
     cover.texts.push_back({{factsX, factsY}, 9.0, fact});
     factsY += line;
   }
-  addFooter(cover, "cover, page 1 of " + std::to_string(tiles + 1), "50 mm");
-  plan.pages.push_back(std::move(cover));
+  addFooter(cover, "cover, page 1 of " + std::to_string(plan.rows * plan.columns + 1), "50 mm");
+  return cover;
+}
 
-  // The tiles, row by row.
+// Where the left and upper neighbours' tile edges go on a tile: their overlap band ends there.
+void addNeighbourGuides(PdfPage& page, const PdfRect& area, int row, int column) {
+  const double overlap = kOverlapMm * kPointsPerMm;
+  if (column > 0)
+    page.guides.push_back(
+        {{area.low.x + overlap, area.low.y}, {area.low.x + overlap, area.high.y}});
+  if (row > 0)
+    page.guides.push_back(
+        {{area.low.x, area.low.y + overlap}, {area.high.x, area.low.y + overlap}});
+}
+
+std::string tileLabel(const PdfPlan& plan, Paper paper, int row, int column) {
+  if (paper == Paper::Fit)
+    return "scale " + formatted("%.1f", 100.0 * plan.scale) + "%, page 2 of 2";
+  const int tiles = plan.rows * plan.columns;
+  const int pageNumber = row * plan.columns + column + 2;  // the cover is page 1
+  return "row " + std::to_string(row + 1) + ", column " + std::to_string(column + 1) + " of " +
+         std::to_string(plan.rows) + " x " + std::to_string(plan.columns) + ", page " +
+         std::to_string(pageNumber) + " of " + std::to_string(tiles + 1);
+}
+
+// The tile at `row`, `column`: its window of the pattern at real size, with cut marks and the
+// neighbours' edges, or (to fit) the whole pattern scaled and centred.
+PdfPage tilePage(const PageSetup& setup, const PdfPlan& plan, int row, int column) {
+  const PdfRect& area = setup.area;
+  PdfPage page;
+  page.sizePt = setup.pagePt;
+  page.clip = area;
   const glm::dvec2 stepMm = (area.high - area.low) / kPointsPerMm - glm::dvec2(kOverlapMm);
+  const glm::dvec2 origin(column * stepMm.x, row * stepMm.y);
+  if (setup.options.paper == Paper::Fit) {
+    const glm::dvec2 drawn = plan.patternMm * plan.scale * kPointsPerMm;
+    const glm::dvec2 at = area.low + 0.5 * ((area.high - area.low) - drawn);
+    addPattern(page, setup.pattern, {origin, at, plan.scale}, setup.options.angles);
+  } else {
+    addPattern(page, setup.pattern, {origin, area.low, 1.0}, setup.options.angles);
+    addCutMarks(page, area);
+    addNeighbourGuides(page, area, row, column);
+  }
+  addFooter(page, tileLabel(plan, setup.options.paper, row, column),
+            "50 mm: measure it to check the printer's scale");
+  return page;
+}
+
+}  // namespace
+
+PdfPlan planCreasePatternPdf(const Sheet& sheet, const PdfOptions& options) {
+  const Pattern pattern = patternOf(sheet, options.angles);
+  PdfPlan plan;
+  plan.patternMm = (pattern.high - pattern.low) * kMmPerMetre;
+  const PdfLayout layout = pdfLayout(plan.patternMm, options.paper);
+  refuseTooManyPages(plan.patternMm, layout);
+  plan.rows = int(layout.rows);
+  plan.columns = int(layout.columns);
+  plan.scale = layout.scale;
+  plan.landscape = layout.landscape;
+  const glm::dvec2 pagePt = layout.pageMm * kPointsPerMm;
+  const PageSetup setup{pattern, options, pagePt, printableArea(pagePt)};
+  plan.pages.push_back(coverPage(setup, plan));
+  // The tiles, row by row.
   for (int row = 0; row < plan.rows; ++row)
-    for (int column = 0; column < plan.columns; ++column) {
-      PdfPage page;
-      page.sizePt = pagePt;
-      page.clip = area;
-      const glm::dvec2 origin(column * stepMm.x, row * stepMm.y);
-      if (options.paper == Paper::Fit) {
-        // Centred on the page.
-        const glm::dvec2 drawn = plan.patternMm * plan.scale * kPointsPerMm;
-        const glm::dvec2 at = area.low + 0.5 * ((area.high - area.low) - drawn);
-        addPattern(page, origin, at, plan.scale, options.angles);
-      } else {
-        addPattern(page, origin, area.low, 1.0, options.angles);
-        addCutMarks(page, area);
-        // Where the left and upper neighbours' tile edges go: their overlap band ends here.
-        const double overlap = kOverlapMm * kPointsPerMm;
-        if (column > 0)
-          page.guides.push_back(
-              {{area.low.x + overlap, area.low.y}, {area.low.x + overlap, area.high.y}});
-        if (row > 0)
-          page.guides.push_back(
-              {{area.low.x, area.low.y + overlap}, {area.high.x, area.low.y + overlap}});
-      }
-      const std::string label =
-          options.paper == Paper::Fit
-              ? "scale " + formatted("%.1f", 100.0 * plan.scale) + "%, page 2 of 2"
-              : "row " + std::to_string(row + 1) + ", column " + std::to_string(column + 1) +
-                    " of " + std::to_string(plan.rows) + " x " + std::to_string(plan.columns) +
-                    ", page " + std::to_string(plan.pages.size() + 1) + " of " +
-                    std::to_string(tiles + 1);
-      addFooter(page, label, "50 mm: measure it to check the printer's scale");
-      plan.pages.push_back(std::move(page));
-    }
+    for (int column = 0; column < plan.columns; ++column)
+      plan.pages.push_back(tilePage(setup, plan, row, column));
   return plan;
 }
 
