@@ -299,6 +299,14 @@ void DragIntersectionWatch::end() {
   triangles_.clear();
 }
 
+// The reflection's parts for the walk's node boxes: the plane, its normal's magnitudes (a box's
+// reach across it) and the reflection's linear part (a box's reflected half-size).
+struct DragIntersectionWatch::Mirror {
+  const ReflectionPlane& plane;
+  glm::dvec3 absN;
+  glm::dmat3 linear;
+};
+
 void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges& changes,
                                    const ReflectionPlane& plane,
                                    const std::vector<TriangleIndex>& reflected) {
@@ -308,26 +316,41 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
   if (!active_ || tree_.nodes.empty() || reflected.empty()) return;
   moved_.assign(folded.triangleCount(), 0);
   for (TriangleIndex t : reflected) moved_[t] = 1;
-  // The folded triangles each fixed one became: itself (kept or rewritten as a piece) and the
-  // pieces a cut appended, found through their origin. A cut triangle has pieces on both sides.
   ++stamp_;
-  std::vector<std::pair<TriangleIndex, TriangleIndex>> extra;
+  listPieces(changes);
+  markNodes(changes, reflected);
+  const glm::dvec3 n = plane.normal;
+  walk(folded, {plane, glm::abs(n), glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n)});
+  std::sort(triangles_.begin(), triangles_.end());
+  triangles_.erase(std::unique(triangles_.begin(), triangles_.end()), triangles_.end());
+}
+
+// The folded triangles each fixed one became: itself (kept or rewritten as a piece) and the
+// pieces a cut appended, found through their origin. A cut triangle has pieces on both sides.
+void DragIntersectionWatch::listPieces(const ReflectionChanges& changes) {
+  pieces_.clear();
   for (std::size_t k = 0; k < changes.triangleOrigin.size(); ++k) {
-    extra.emplace_back(changes.triangleOrigin[k],
-                       TriangleIndex(std::uint32_t(changes.firstNewTriangle + k)));
+    pieces_.emplace_back(changes.triangleOrigin[k],
+                         TriangleIndex(std::uint32_t(changes.firstNewTriangle + k)));
     splitStamp_[changes.triangleOrigin[k]] = stamp_;
   }
-  std::sort(extra.begin(), extra.end());
-  auto forPieces = [&](TriangleIndex t, auto&& visit) {
-    visit(t);
-    if (splitStamp_[t] != stamp_) return;
-    auto it = std::lower_bound(extra.begin(), extra.end(), std::make_pair(t, TriangleIndex(0)));
-    for (; it != extra.end() && it->first == t; ++it) visit(it->second);
-  };
-  // Per node of the tree, whether it holds a triangle with a reflected piece, and one with a piece
-  // left in place, from the reflected triangles alone (a leaf keeps a piece in place unless every
-  // triangle of it was reflected whole); children follow their parents in the array, so one
-  // backward pass fills the inner nodes.
+  std::sort(pieces_.begin(), pieces_.end());
+}
+
+template <typename Visit>
+void DragIntersectionWatch::forPieces(TriangleIndex t, Visit&& visit) const {
+  visit(t);
+  if (splitStamp_[t] != stamp_) return;
+  auto it = std::lower_bound(pieces_.begin(), pieces_.end(), std::make_pair(t, TriangleIndex(0)));
+  for (; it != pieces_.end() && it->first == t; ++it) visit(it->second);
+}
+
+// Per node of the tree, whether it holds a triangle with a reflected piece, and one with a piece
+// left in place, from the reflected triangles alone (a leaf keeps a piece in place unless every
+// triangle of it was reflected whole); children follow their parents in the array, so one
+// backward pass fills the inner nodes.
+void DragIntersectionWatch::markNodes(const ReflectionChanges& changes,
+                                      const std::vector<TriangleIndex>& reflected) {
   hasMoved_.assign(tree_.nodes.size(), 0);
   hasRest_.assign(tree_.nodes.size(), 0);
   movedWhole_.assign(tree_.nodes.size(), 0);
@@ -350,78 +373,94 @@ void DragIntersectionWatch::update(const Sheet& folded, const ReflectionChanges&
     hasMoved_[k] = hasMoved_[node.first] | hasMoved_[node.first + 1];
     hasRest_[k] = hasRest_[node.first] | hasRest_[node.first + 1];
   }
-  // Per node, when the walk first meets it (a few thousand of a 100k-triangle tree's nodes):
-  // whether it can hold a reflected piece (some moved triangle, and a box that reaches the seed's
-  // side, d < 0, where the reflected part was) or a piece of the rest that can be met (some
-  // staying triangle, and a box that reaches beyond the plane, where the reflected part is now);
-  // and the box of its reflection (the reflection's linear part on its half-size).
-  const glm::dvec3 n = plane.normal, absN = glm::abs(n);
-  const glm::dmat3 linear = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
+}
+
+// Per node, when the walk first meets it (a few thousand of a 100k-triangle tree's nodes):
+// whether it can hold a reflected piece (some moved triangle, and a box that reaches the seed's
+// side, d < 0, where the reflected part was) or a piece of the rest that can be met (some
+// staying triangle, and a box that reaches beyond the plane, where the reflected part is now);
+// and the box of its reflection (the reflection's linear part on its half-size).
+void DragIntersectionWatch::meet(std::uint32_t k, const Mirror& mirror) {
+  if (nodeStamp_[k] == stamp_) return;
+  nodeStamp_[k] = stamp_;
+  const TriangleTree::Node& node = tree_.nodes[k];
+  const glm::dvec3 centre = 0.5 * (node.low + node.high), half = 0.5 * (node.high - node.low);
+  const double d = mirror.plane.signedDistance(centre), reach = glm::dot(mirror.absN, half);
+  hasMoved_[k] &= d - reach <= tolerance_;
+  hasRest_[k] &= d + reach >= -tolerance_;
+  if (!hasMoved_[k]) return;
+  glm::dvec3 halfReflected(0.0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) halfReflected[i] += std::abs(mirror.linear[j][i]) * half[j];
+  const glm::dvec3 centreReflected = mirror.plane.reflect(centre);
+  reflectedLow_[k] = centreReflected - halfReflected;
+  reflectedHigh_[k] = centreReflected + halfReflected;
+}
+
+// The tree against its own mirror image: node pairs (reflected part, rest) whose boxes meet, down
+// to leaf pairs.
+void DragIntersectionWatch::walk(const Sheet& folded, const Mirror& mirror) {
   reflectedLow_.resize(tree_.nodes.size());
   reflectedHigh_.resize(tree_.nodes.size());
-  auto meet = [&](std::uint32_t k) {
-    if (nodeStamp_[k] == stamp_) return;
-    nodeStamp_[k] = stamp_;
-    const TriangleTree::Node& node = tree_.nodes[k];
-    const glm::dvec3 centre = 0.5 * (node.low + node.high), half = 0.5 * (node.high - node.low);
-    const double d = plane.signedDistance(centre), reach = glm::dot(absN, half);
-    hasMoved_[k] &= d - reach <= tolerance_;
-    hasRest_[k] &= d + reach >= -tolerance_;
-    if (!hasMoved_[k]) return;
-    glm::dvec3 halfReflected(0.0);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) halfReflected[i] += std::abs(linear[j][i]) * half[j];
-    const glm::dvec3 centreReflected = plane.reflect(centre);
-    reflectedLow_[k] = centreReflected - halfReflected;
-    reflectedHigh_[k] = centreReflected + halfReflected;
-  };
-  meet(0);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
-  while (!stack.empty()) {
-    const auto [a, b] = stack.back();
-    stack.pop_back();
+  meet(0, mirror);
+  stack_.assign(1, {0, 0});
+  while (!stack_.empty()) {
+    const auto [a, b] = stack_.back();
+    stack_.pop_back();
     ++nodePairs_;
     if (!hasMoved_[a] || !hasRest_[b]) continue;
     const TriangleTree::Node& A = tree_.nodes[a];
     const TriangleTree::Node& B = tree_.nodes[b];
     if (!overlaps(reflectedLow_[a], reflectedHigh_[a], B.low, B.high, tolerance_)) continue;
-    if (A.count > 0 && B.count > 0) {
-      for (std::uint32_t i = A.first; i < A.first + A.count; ++i)
-        forPieces(tree_.order[i], [&](TriangleIndex s) {
-          if (!moved_[s]) return;
-          // The reflected piece where it is now, against the rest's node box first.
-          const Corners cs = cornersOf(folded, s);
-          const glm::dvec3 low = glm::min(cs[0], glm::min(cs[1], cs[2]));
-          const glm::dvec3 high = glm::max(cs[0], glm::max(cs[1], cs[2]));
-          if (!overlaps(low, high, B.low, B.high, tolerance_)) return;
-          for (std::uint32_t j = B.first; j < B.first + B.count; ++j)
-            forPieces(tree_.order[j], [&](TriangleIndex t) {
-              if (moved_[t] || shareEdge(folded.triangles[s], folded.triangles[t])) return;
-              const Corners ct = cornersOf(folded, t);
-              if (!boxesMeet(cs, ct, tolerance_)) return;
-              ++trianglePairs_;
-              if (classifyTrianglePair(cs, ct, tolerance_) != TrianglePairKind::Intersect) return;
-              ++pairCount_;
-              triangles_.push_back(s);
-              triangles_.push_back(t);
-            });
-        });
-    } else {
-      // Both sides split where they can, a child pair kept only if it can meet.
-      const std::uint32_t as[2] = {A.count > 0 ? a : A.first, A.count > 0 ? a : A.first + 1};
-      const std::uint32_t bs[2] = {B.count > 0 ? b : B.first, B.count > 0 ? b : B.first + 1};
-      for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i) meet(as[i]);
-      for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j) meet(bs[j]);
-      for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i)
-        for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j)
-          if (hasMoved_[as[i]] && hasRest_[bs[j]] &&
-              overlaps(reflectedLow_[as[i]], reflectedHigh_[as[i]], tree_.nodes[bs[j]].low,
-                       tree_.nodes[bs[j]].high, tolerance_))
-            stack.push_back({as[i], bs[j]});
-    }
+    if (A.count > 0 && B.count > 0)
+      testLeaves(folded, A, B);
+    else
+      splitNodePair(a, b, mirror);
   }
-  std::sort(triangles_.begin(), triangles_.end());
-  triangles_.erase(std::unique(triangles_.begin(), triangles_.end()), triangles_.end());
+}
+
+// Both sides split where they can, a child pair kept only if it can meet.
+void DragIntersectionWatch::splitNodePair(std::uint32_t a, std::uint32_t b, const Mirror& mirror) {
+  const TriangleTree::Node& A = tree_.nodes[a];
+  const TriangleTree::Node& B = tree_.nodes[b];
+  const std::uint32_t as[2] = {A.count > 0 ? a : A.first, A.count > 0 ? a : A.first + 1};
+  const std::uint32_t bs[2] = {B.count > 0 ? b : B.first, B.count > 0 ? b : B.first + 1};
+  for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i) meet(as[i], mirror);
+  for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j) meet(bs[j], mirror);
+  for (int i = 0; i < (A.count > 0 ? 1 : 2); ++i)
+    for (int j = 0; j < (B.count > 0 ? 1 : 2); ++j)
+      if (hasMoved_[as[i]] && hasRest_[bs[j]] &&
+          overlaps(reflectedLow_[as[i]], reflectedHigh_[as[i]], tree_.nodes[bs[j]].low,
+                   tree_.nodes[bs[j]].high, tolerance_))
+        stack_.push_back({as[i], bs[j]});
+}
+
+// Leaf A's reflected pieces, where they are now, against leaf B's pieces left in place.
+void DragIntersectionWatch::testLeaves(const Sheet& folded, const TriangleTree::Node& A,
+                                       const TriangleTree::Node& B) {
+  for (std::uint32_t i = A.first; i < A.first + A.count; ++i)
+    forPieces(tree_.order[i], [&](TriangleIndex s) {
+      if (!moved_[s]) return;
+      // The reflected piece against the rest's node box first.
+      const Corners cs = cornersOf(folded, s);
+      const glm::dvec3 low = glm::min(cs[0], glm::min(cs[1], cs[2]));
+      const glm::dvec3 high = glm::max(cs[0], glm::max(cs[1], cs[2]));
+      if (!overlaps(low, high, B.low, B.high, tolerance_)) return;
+      for (std::uint32_t j = B.first; j < B.first + B.count; ++j)
+        forPieces(tree_.order[j], [&](TriangleIndex t) { testPair(folded, s, cs, t); });
+    });
+}
+
+void DragIntersectionWatch::testPair(const Sheet& folded, TriangleIndex s,
+                                     const std::array<glm::dvec3, 3>& cs, TriangleIndex t) {
+  if (moved_[t] || shareEdge(folded.triangles[s], folded.triangles[t])) return;
+  const Corners ct = cornersOf(folded, t);
+  if (!boxesMeet(cs, ct, tolerance_)) return;
+  ++trianglePairs_;
+  if (classifyTrianglePair(cs, ct, tolerance_) != TrianglePairKind::Intersect) return;
+  ++pairCount_;
+  triangles_.push_back(s);
+  triangles_.push_back(t);
 }
 
 }  // namespace curvefold

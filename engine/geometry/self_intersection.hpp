@@ -15,7 +15,9 @@
 // the tree is walked against its own mirror image and nothing is rebuilt per update.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -84,6 +86,20 @@ class DragIntersectionWatch {
   std::size_t trianglePairsTested() const { return trianglePairs_; }
 
  private:
+  struct Mirror;
+  // update()'s steps, in order.
+  void listPieces(const ReflectionChanges& changes);
+  void markNodes(const ReflectionChanges& changes, const std::vector<TriangleIndex>& reflected);
+  void walk(const Sheet& folded, const Mirror& mirror);
+  void meet(std::uint32_t k, const Mirror& mirror);
+  void splitNodePair(std::uint32_t a, std::uint32_t b, const Mirror& mirror);
+  void testLeaves(const Sheet& folded, const TriangleTree::Node& a, const TriangleTree::Node& b);
+  void testPair(const Sheet& folded, TriangleIndex s, const std::array<glm::dvec3, 3>& cs,
+                TriangleIndex t);
+  // Visits fixed triangle `t`'s folded triangles: itself and the pieces a cut appended.
+  template <typename Visit>
+  void forPieces(TriangleIndex t, Visit&& visit) const;
+
   std::size_t nodePairs_ = 0, trianglePairs_ = 0;
   bool active_ = false;
   TriangleTree tree_;
@@ -98,6 +114,10 @@ class DragIntersectionWatch {
   std::vector<std::uint32_t> movedWhole_;  // per leaf: its triangles reflected whole
   std::vector<std::uint32_t> nodeStamp_;   // per node: == stamp_ when the walk has met it
   std::uint32_t stamp_ = 0;
+  // Per update, kept for their capacity: (fixed triangle, piece a cut appended) sorted, and the
+  // walk's node pairs still to visit.
+  std::vector<std::pair<TriangleIndex, TriangleIndex>> pieces_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack_;
 };
 
 }  // namespace curvefold
