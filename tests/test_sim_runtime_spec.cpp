@@ -8,13 +8,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
+
+#include <dlfcn.h>
 
 #include <gtest/gtest.h>
 #include <vulkan/vulkan.h>
 
 #include "app/xr/xr_vulkan_graphics.hpp"
+#include "sim_input/xr_runtime/loader_negotiation.hpp"
 
 namespace {
 
@@ -449,6 +453,124 @@ TEST_F(SimRuntimeSpec, HandTrackingFunctionsNeedTheExtension) {
   EXPECT_EQ(xrGetInstanceProcAddr(instance_, "xrLocateHandJointsEXT", &found),
             XR_ERROR_FUNCTION_UNSUPPORTED);
   EXPECT_EQ(found, nullptr);
+}
+
+// "xrResultToString" and "xrStructureTypeToString": an enumerant's own name; a value the runtime
+// does not know is named XR_UNKNOWN_ with its number, and fits the buffer.
+TEST_F(SimRuntimeSpec, ResultsAndStructureTypesAreNamedAsTheSpecificationNamesThem) {
+  char result[XR_MAX_RESULT_STRING_SIZE];
+  ASSERT_EQ(xrResultToString(instance_, XR_ERROR_HANDLE_INVALID, result), XR_SUCCESS);
+  EXPECT_STREQ(result, "XR_ERROR_HANDLE_INVALID");
+  ASSERT_EQ(xrResultToString(instance_, XR_SESSION_LOSS_PENDING, result), XR_SUCCESS);
+  EXPECT_STREQ(result, "XR_SESSION_LOSS_PENDING");
+  ASSERT_EQ(xrResultToString(instance_, XrResult(-987654), result), XR_SUCCESS);
+  EXPECT_EQ(std::string(result).rfind("XR_UNKNOWN_", 0), 0u) << result;
+  EXPECT_EQ(std::string(result).find("987654"), std::strlen(result) - 6) << result;
+  char type[XR_MAX_STRUCTURE_NAME_SIZE];
+  ASSERT_EQ(xrStructureTypeToString(instance_, XR_TYPE_INSTANCE_CREATE_INFO, type), XR_SUCCESS);
+  EXPECT_STREQ(type, "XR_TYPE_INSTANCE_CREATE_INFO");
+  ASSERT_EQ(xrStructureTypeToString(instance_, XR_TYPE_HAND_JOINT_LOCATIONS_EXT, type), XR_SUCCESS);
+  EXPECT_STREQ(type, "XR_TYPE_HAND_JOINT_LOCATIONS_EXT");
+  ASSERT_EQ(xrStructureTypeToString(instance_, XrStructureType(987654), type), XR_SUCCESS);
+  EXPECT_STREQ(type, "XR_UNKNOWN_STRUCTURE_TYPE_987654");
+}
+
+// The runtime's own xrGetInstanceProcAddr, as the loader gets it from the negotiation: the loader
+// answers some names itself, so its rules are checked here without it.
+class SimRuntimeDispatch : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    unsetenv("CURVEFOLD_SIM_INPUT");
+    unsetenv("CURVEFOLD_SIM_NO_HAND_TRACKING");
+    library_ = dlopen(CURVEFOLD_SIM_RUNTIME_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    ASSERT_NE(library_, nullptr) << dlerror();
+    using namespace curvefold::simxr;
+    using Negotiate = XrResult (*)(const XrNegotiateLoaderInfo*, XrNegotiateRuntimeRequest*);
+    const auto negotiate =
+        reinterpret_cast<Negotiate>(dlsym(library_, "xrNegotiateLoaderRuntimeInterface"));
+    ASSERT_NE(negotiate, nullptr);
+    XrNegotiateLoaderInfo loader{XR_LOADER_INTERFACE_STRUCT_LOADER_INFO,
+                                 kLoaderInfoStructVersion,
+                                 sizeof(XrNegotiateLoaderInfo),
+                                 kLoaderRuntimeInterfaceVersion,
+                                 kLoaderRuntimeInterfaceVersion,
+                                 XR_MAKE_VERSION(1, 0, 0),
+                                 XR_CURRENT_API_VERSION};
+    XrNegotiateRuntimeRequest request{XR_LOADER_INTERFACE_STRUCT_RUNTIME_REQUEST,
+                                      kRuntimeInfoStructVersion, sizeof(XrNegotiateRuntimeRequest)};
+    ASSERT_EQ(negotiate(&loader, &request), XR_SUCCESS);
+    getProcAddr_ = request.getInstanceProcAddr;
+    ASSERT_NE(getProcAddr_, nullptr);
+  }
+  void TearDown() override {
+    if (library_) dlclose(library_);
+  }
+  // The result of looking `name` up, and whether a function came with it exactly on success.
+  XrResult lookUp(XrInstance instance, const char* name) {
+    // Not null: the runtime must clear it when it finds nothing.
+    PFN_xrVoidFunction found = reinterpret_cast<PFN_xrVoidFunction>(&dlclose);
+    const XrResult result = getProcAddr_(instance, name, &found);
+    EXPECT_EQ(found != nullptr, result == XR_SUCCESS) << name;
+    return result;
+  }
+  XrInstance createInstance(std::vector<const char*> extensions) {
+    PFN_xrVoidFunction create = nullptr;
+    EXPECT_EQ(getProcAddr_(XR_NULL_HANDLE, "xrCreateInstance", &create), XR_SUCCESS);
+    XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
+    info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
+    info.enabledExtensionCount = std::uint32_t(extensions.size());
+    info.enabledExtensionNames = extensions.data();
+    XrInstance instance = XR_NULL_HANDLE;
+    EXPECT_EQ(reinterpret_cast<PFN_xrCreateInstance>(create)(&info, &instance), XR_SUCCESS);
+    return instance;
+  }
+  void destroyInstance(XrInstance instance) {
+    PFN_xrVoidFunction destroy = nullptr;
+    ASSERT_EQ(getProcAddr_(instance, "xrDestroyInstance", &destroy), XR_SUCCESS);
+    EXPECT_EQ(reinterpret_cast<PFN_xrDestroyInstance>(destroy)(instance), XR_SUCCESS);
+  }
+
+  void* library_ = nullptr;
+  PFN_xrGetInstanceProcAddr getProcAddr_ = nullptr;
+};
+
+// "xrGetInstanceProcAddr": with XR_NULL_HANDLE only the functions that make an instance may be
+// fetched; any other function the runtime has is XR_ERROR_HANDLE_INVALID; a name it does not have
+// is XR_ERROR_FUNCTION_UNSUPPORTED.
+TEST_F(SimRuntimeDispatch, WithoutAnInstanceOnlyTheFunctionsThatMakeOneResolve) {
+  for (const char* name :
+       {"xrGetInstanceProcAddr", "xrEnumerateInstanceExtensionProperties", "xrCreateInstance"})
+    EXPECT_EQ(lookUp(XR_NULL_HANDLE, name), XR_SUCCESS) << name;
+  for (const char* name : {"xrDestroyInstance", "xrGetSystem", "xrCreateSession", "xrEndFrame",
+                           "xrGetVulkanGraphicsDevice2KHR", "xrCreateHandTrackerEXT"})
+    EXPECT_EQ(lookUp(XR_NULL_HANDLE, name), XR_ERROR_HANDLE_INVALID) << name;
+  EXPECT_EQ(lookUp(XR_NULL_HANDLE, "xrNoSuchFunction"), XR_ERROR_FUNCTION_UNSUPPORTED);
+  PFN_xrVoidFunction found = nullptr;
+  EXPECT_EQ(getProcAddr_(XR_NULL_HANDLE, nullptr, &found), XR_ERROR_VALIDATION_FAILURE);
+  EXPECT_EQ(getProcAddr_(XR_NULL_HANDLE, "xrCreateInstance", nullptr), XR_ERROR_VALIDATION_FAILURE);
+}
+
+// With an instance, every core function resolves; XR_EXT_hand_tracking's only when the instance
+// enabled it (XR_ERROR_FUNCTION_UNSUPPORTED otherwise), and an unknown name never.
+TEST_F(SimRuntimeDispatch, ExtensionFunctionsResolveOnlyWhenTheExtensionIsEnabled) {
+  const char* const core[] = {
+      "xrGetInstanceProcAddr", "xrCreateInstance", "xrDestroyInstance",
+      "xrGetSystem",           "xrPollEvent",      "xrCreateSession",
+      "xrWaitFrame",           "xrSyncActions",    "xrReleaseSwapchainImage"};
+  const char* const hands[] = {"xrCreateHandTrackerEXT", "xrDestroyHandTrackerEXT",
+                               "xrLocateHandJointsEXT"};
+  XrInstance instance = createInstance({"XR_MND_headless"});
+  ASSERT_NE(instance, XR_NULL_HANDLE);
+  for (const char* name : core) EXPECT_EQ(lookUp(instance, name), XR_SUCCESS) << name;
+  for (const char* name : hands)
+    EXPECT_EQ(lookUp(instance, name), XR_ERROR_FUNCTION_UNSUPPORTED) << name;
+  EXPECT_EQ(lookUp(instance, "xrNoSuchFunction"), XR_ERROR_FUNCTION_UNSUPPORTED);
+  destroyInstance(instance);
+
+  instance = createInstance({"XR_MND_headless", XR_EXT_HAND_TRACKING_EXTENSION_NAME});
+  ASSERT_NE(instance, XR_NULL_HANDLE);
+  for (const char* name : hands) EXPECT_EQ(lookUp(instance, name), XR_SUCCESS) << name;
+  destroyInstance(instance);
 }
 
 }  // namespace

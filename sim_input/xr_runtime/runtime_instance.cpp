@@ -3,6 +3,8 @@
 // loader reaches through xrGetInstanceProcAddr.
 #include "sim_input/xr_runtime/runtime_state.hpp"
 
+#include <string_view>
+
 namespace curvefold::simxr {
 
 const char* const kExtensions[] = {"XR_KHR_vulkan_enable2", "XR_MND_headless",
@@ -108,50 +110,52 @@ XRAPI_ATTR XrResult XRAPI_CALL getInstanceProperties(XrInstance handle,
   });
 }
 
-// A name into a fixed-size, always terminated buffer.
-void writeName(const std::string& name, char* buffer, std::size_t size) {
-  std::strncpy(buffer, name.c_str(), size - 1);
-  buffer[size - 1] = '\0';
+namespace {
+
+// The enumerants' names, from the specification's reflection lists.
+#define CURVEFOLD_SIM_NAME(n, v) \
+  case n:                        \
+    return #n;
+const char* nameOf(XrResult value) {
+  switch (value) {
+    XR_LIST_ENUM_XrResult(CURVEFOLD_SIM_NAME);
+    default:
+      return nullptr;
+  }
 }
+const char* nameOf(XrStructureType value) {
+  switch (value) {
+    XR_LIST_ENUM_XrStructureType(CURVEFOLD_SIM_NAME);
+    default:
+      return nullptr;
+  }
+}
+#undef CURVEFOLD_SIM_NAME
+
+// An enumerant's name, or `unknown` and its value, into a fixed-size, always terminated buffer.
+template <typename Enum>
+XrResult writeName(XrInstance handle, Enum value, const char* unknown, char* buffer,
+                   std::size_t size) {
+  return guard([&] {
+    instanceOf(handle);
+    const char* name = nameOf(value);
+    const std::string text = name ? name : unknown + std::to_string(int(value));
+    std::strncpy(buffer, text.c_str(), size - 1);
+    buffer[size - 1] = '\0';
+    return XR_SUCCESS;
+  });
+}
+
+}  // namespace
 
 XRAPI_ATTR XrResult XRAPI_CALL resultToString(XrInstance handle, XrResult value,
                                               char buffer[XR_MAX_RESULT_STRING_SIZE]) {
-  return guard([&] {
-    instanceOf(handle);
-    const char* name = nullptr;
-    switch (value) {
-#define CURVEFOLD_SIM_RESULT(n, v) \
-  case n:                          \
-    name = #n;                     \
-    break;
-      XR_LIST_ENUM_XrResult(CURVEFOLD_SIM_RESULT)
-#undef CURVEFOLD_SIM_RESULT
-          default : break;
-    }
-    writeName(name ? name : "XR_UNKNOWN_" + std::to_string(int(value)), buffer,
-              XR_MAX_RESULT_STRING_SIZE);
-    return XR_SUCCESS;
-  });
+  return writeName(handle, value, "XR_UNKNOWN_", buffer, XR_MAX_RESULT_STRING_SIZE);
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL structureTypeToString(XrInstance handle, XrStructureType value,
                                                      char buffer[XR_MAX_STRUCTURE_NAME_SIZE]) {
-  return guard([&] {
-    instanceOf(handle);
-    const char* name = nullptr;
-    switch (value) {
-#define CURVEFOLD_SIM_TYPE(n, v) \
-  case n:                        \
-    name = #n;                   \
-    break;
-      XR_LIST_ENUM_XrStructureType(CURVEFOLD_SIM_TYPE)
-#undef CURVEFOLD_SIM_TYPE
-          default : break;
-    }
-    writeName(name ? name : "XR_UNKNOWN_STRUCTURE_TYPE_" + std::to_string(int(value)), buffer,
-              XR_MAX_STRUCTURE_NAME_SIZE);
-    return XR_SUCCESS;
-  });
+  return writeName(handle, value, "XR_UNKNOWN_STRUCTURE_TYPE_", buffer, XR_MAX_STRUCTURE_NAME_SIZE);
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL pollEvent(XrInstance handle, XrEventDataBuffer* event) {
@@ -323,92 +327,105 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance handle,
 
 // --- Dispatch ------------------------------------------------------------------------------------
 
+namespace {
+
+// An entry point, and who may fetch it: also without an instance (the functions that make one),
+// and only for an instance that enabled `extension` (when set). XR_KHR_vulkan_enable2's functions
+// are reachable whether or not the instance enabled it, as they always have been.
+struct NamedFunction {
+  std::string_view name;
+  PFN_xrVoidFunction function;
+  bool global = false;
+  const char* extension = nullptr;
+};
+
+// An entry point as the loader takes it. The table is const, not constexpr: a cast between
+// function pointer types is not a constant expression.
+template <typename Function>
+PFN_xrVoidFunction erased(Function* function) {
+  return reinterpret_cast<PFN_xrVoidFunction>(function);
+}
+
+constexpr const char* kHandTracking = XR_EXT_HAND_TRACKING_EXTENSION_NAME;
+
+const NamedFunction kFunctions[] = {
+    {"xrGetInstanceProcAddr", erased(getInstanceProcAddr), true},
+    {"xrEnumerateInstanceExtensionProperties", erased(enumerateInstanceExtensionProperties), true},
+    {"xrCreateInstance", erased(createInstance), true},
+    {"xrDestroyInstance", erased(destroyInstance)},
+    {"xrGetInstanceProperties", erased(getInstanceProperties)},
+    {"xrResultToString", erased(resultToString)},
+    {"xrStructureTypeToString", erased(structureTypeToString)},
+    {"xrPollEvent", erased(pollEvent)},
+    {"xrStringToPath", erased(stringToPath)},
+    {"xrPathToString", erased(pathToString)},
+    {"xrGetSystem", erased(getSystem)},
+    {"xrGetSystemProperties", erased(getSystemProperties)},
+    {"xrEnumerateViewConfigurations", erased(enumerateViewConfigurations)},
+    {"xrGetViewConfigurationProperties", erased(getViewConfigurationProperties)},
+    {"xrEnumerateViewConfigurationViews", erased(enumerateViewConfigurationViews)},
+    {"xrEnumerateEnvironmentBlendModes", erased(enumerateEnvironmentBlendModes)},
+    {"xrCreateSession", erased(createSession)},
+    {"xrDestroySession", erased(destroySessionEntry)},
+    {"xrBeginSession", erased(beginSession)},
+    {"xrEndSession", erased(endSession)},
+    {"xrRequestExitSession", erased(requestExitSession)},
+    {"xrEnumerateReferenceSpaces", erased(enumerateReferenceSpaces)},
+    {"xrCreateReferenceSpace", erased(createReferenceSpace)},
+    {"xrGetReferenceSpaceBoundsRect", erased(getReferenceSpaceBoundsRect)},
+    {"xrCreateActionSpace", erased(createActionSpace)},
+    {"xrLocateSpace", erased(locateSpace)},
+    {"xrDestroySpace", erased(destroySpace)},
+    {"xrLocateViews", erased(locateViews)},
+    {"xrWaitFrame", erased(waitFrame)},
+    {"xrBeginFrame", erased(beginFrame)},
+    {"xrEndFrame", erased(endFrame)},
+    {"xrCreateActionSet", erased(createActionSet)},
+    {"xrDestroyActionSet", erased(destroyActionSet)},
+    {"xrCreateAction", erased(createAction)},
+    {"xrDestroyAction", erased(destroyAction)},
+    {"xrSuggestInteractionProfileBindings", erased(suggestBindings)},
+    {"xrAttachSessionActionSets", erased(attachActionSets)},
+    {"xrGetCurrentInteractionProfile", erased(getCurrentInteractionProfile)},
+    {"xrSyncActions", erased(syncActions)},
+    {"xrGetActionStateBoolean", erased(getActionStateBoolean)},
+    {"xrGetActionStateFloat", erased(getActionStateFloat)},
+    {"xrGetActionStateVector2f", erased(getActionStateVector2f)},
+    {"xrGetActionStatePose", erased(getActionStatePose)},
+    {"xrApplyHapticFeedback", erased(applyHapticFeedback)},
+    {"xrStopHapticFeedback", erased(stopHapticFeedback)},
+    {"xrEnumerateSwapchainFormats", erased(enumerateSwapchainFormats)},
+    {"xrCreateSwapchain", erased(createSwapchain)},
+    {"xrDestroySwapchain", erased(destroySwapchainEntry)},
+    {"xrEnumerateSwapchainImages", erased(enumerateSwapchainImages)},
+    {"xrAcquireSwapchainImage", erased(acquireSwapchainImage)},
+    {"xrWaitSwapchainImage", erased(waitSwapchainImage)},
+    {"xrReleaseSwapchainImage", erased(releaseSwapchainImage)},
+    {"xrGetVulkanGraphicsRequirements2KHR", erased(getVulkanGraphicsRequirements2)},
+    {"xrCreateVulkanInstanceKHR", erased(createVulkanInstance)},
+    {"xrGetVulkanGraphicsDevice2KHR", erased(getVulkanGraphicsDevice2)},
+    {"xrCreateVulkanDeviceKHR", erased(createVulkanDevice)},
+    {"xrCreateHandTrackerEXT", erased(createHandTracker), false, kHandTracking},
+    {"xrDestroyHandTrackerEXT", erased(destroyHandTrackerEntry), false, kHandTracking},
+    {"xrLocateHandJointsEXT", erased(locateHandJoints), false, kHandTracking},
+};
+
+}  // namespace
+
 XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const char* name,
                                                    PFN_xrVoidFunction* function) {
   if (!name || !function) return XR_ERROR_VALIDATION_FAILURE;
-  static const std::map<std::string, PFN_xrVoidFunction, std::less<>> table = {
-#define CURVEFOLD_SIM_FN(xrName, fn) {xrName, reinterpret_cast<PFN_xrVoidFunction>(&fn)}
-      CURVEFOLD_SIM_FN("xrGetInstanceProcAddr", getInstanceProcAddr),
-      CURVEFOLD_SIM_FN("xrEnumerateInstanceExtensionProperties",
-                       enumerateInstanceExtensionProperties),
-      CURVEFOLD_SIM_FN("xrCreateInstance", createInstance),
-      CURVEFOLD_SIM_FN("xrDestroyInstance", destroyInstance),
-      CURVEFOLD_SIM_FN("xrGetInstanceProperties", getInstanceProperties),
-      CURVEFOLD_SIM_FN("xrResultToString", resultToString),
-      CURVEFOLD_SIM_FN("xrStructureTypeToString", structureTypeToString),
-      CURVEFOLD_SIM_FN("xrPollEvent", pollEvent),
-      CURVEFOLD_SIM_FN("xrStringToPath", stringToPath),
-      CURVEFOLD_SIM_FN("xrPathToString", pathToString),
-      CURVEFOLD_SIM_FN("xrGetSystem", getSystem),
-      CURVEFOLD_SIM_FN("xrGetSystemProperties", getSystemProperties),
-      CURVEFOLD_SIM_FN("xrEnumerateViewConfigurations", enumerateViewConfigurations),
-      CURVEFOLD_SIM_FN("xrGetViewConfigurationProperties", getViewConfigurationProperties),
-      CURVEFOLD_SIM_FN("xrEnumerateViewConfigurationViews", enumerateViewConfigurationViews),
-      CURVEFOLD_SIM_FN("xrEnumerateEnvironmentBlendModes", enumerateEnvironmentBlendModes),
-      CURVEFOLD_SIM_FN("xrCreateSession", createSession),
-      CURVEFOLD_SIM_FN("xrDestroySession", destroySessionEntry),
-      CURVEFOLD_SIM_FN("xrBeginSession", beginSession),
-      CURVEFOLD_SIM_FN("xrEndSession", endSession),
-      CURVEFOLD_SIM_FN("xrRequestExitSession", requestExitSession),
-      CURVEFOLD_SIM_FN("xrEnumerateReferenceSpaces", enumerateReferenceSpaces),
-      CURVEFOLD_SIM_FN("xrCreateReferenceSpace", createReferenceSpace),
-      CURVEFOLD_SIM_FN("xrGetReferenceSpaceBoundsRect", getReferenceSpaceBoundsRect),
-      CURVEFOLD_SIM_FN("xrCreateActionSpace", createActionSpace),
-      CURVEFOLD_SIM_FN("xrLocateSpace", locateSpace),
-      CURVEFOLD_SIM_FN("xrDestroySpace", destroySpace),
-      CURVEFOLD_SIM_FN("xrLocateViews", locateViews),
-      CURVEFOLD_SIM_FN("xrWaitFrame", waitFrame),
-      CURVEFOLD_SIM_FN("xrBeginFrame", beginFrame),
-      CURVEFOLD_SIM_FN("xrEndFrame", endFrame),
-      CURVEFOLD_SIM_FN("xrCreateActionSet", createActionSet),
-      CURVEFOLD_SIM_FN("xrDestroyActionSet", destroyActionSet),
-      CURVEFOLD_SIM_FN("xrCreateAction", createAction),
-      CURVEFOLD_SIM_FN("xrDestroyAction", destroyAction),
-      CURVEFOLD_SIM_FN("xrSuggestInteractionProfileBindings", suggestBindings),
-      CURVEFOLD_SIM_FN("xrAttachSessionActionSets", attachActionSets),
-      CURVEFOLD_SIM_FN("xrGetCurrentInteractionProfile", getCurrentInteractionProfile),
-      CURVEFOLD_SIM_FN("xrSyncActions", syncActions),
-      CURVEFOLD_SIM_FN("xrGetActionStateBoolean", getActionStateBoolean),
-      CURVEFOLD_SIM_FN("xrGetActionStateFloat", getActionStateFloat),
-      CURVEFOLD_SIM_FN("xrGetActionStateVector2f", getActionStateVector2f),
-      CURVEFOLD_SIM_FN("xrGetActionStatePose", getActionStatePose),
-      CURVEFOLD_SIM_FN("xrApplyHapticFeedback", applyHapticFeedback),
-      CURVEFOLD_SIM_FN("xrStopHapticFeedback", stopHapticFeedback),
-      CURVEFOLD_SIM_FN("xrEnumerateSwapchainFormats", enumerateSwapchainFormats),
-      CURVEFOLD_SIM_FN("xrCreateSwapchain", createSwapchain),
-      CURVEFOLD_SIM_FN("xrDestroySwapchain", destroySwapchainEntry),
-      CURVEFOLD_SIM_FN("xrEnumerateSwapchainImages", enumerateSwapchainImages),
-      CURVEFOLD_SIM_FN("xrAcquireSwapchainImage", acquireSwapchainImage),
-      CURVEFOLD_SIM_FN("xrWaitSwapchainImage", waitSwapchainImage),
-      CURVEFOLD_SIM_FN("xrReleaseSwapchainImage", releaseSwapchainImage),
-      CURVEFOLD_SIM_FN("xrGetVulkanGraphicsRequirements2KHR", getVulkanGraphicsRequirements2),
-      CURVEFOLD_SIM_FN("xrCreateVulkanInstanceKHR", createVulkanInstance),
-      CURVEFOLD_SIM_FN("xrGetVulkanGraphicsDevice2KHR", getVulkanGraphicsDevice2),
-      CURVEFOLD_SIM_FN("xrCreateVulkanDeviceKHR", createVulkanDevice),
-      CURVEFOLD_SIM_FN("xrCreateHandTrackerEXT", createHandTracker),
-      CURVEFOLD_SIM_FN("xrDestroyHandTrackerEXT", destroyHandTrackerEntry),
-      CURVEFOLD_SIM_FN("xrLocateHandJointsEXT", locateHandJoints),
-#undef CURVEFOLD_SIM_FN
-  };
-  // An extension's functions exist only for an instance that enabled it.
-  static const std::map<std::string, std::string, std::less<>> extensionOf = {
-      {"xrCreateHandTrackerEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
-      {"xrDestroyHandTrackerEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
-      {"xrLocateHandJointsEXT", XR_EXT_HAND_TRACKING_EXTENSION_NAME},
-  };
   *function = nullptr;
-  const auto found = table.find(std::string_view(name));
-  if (found == table.end()) return XR_ERROR_FUNCTION_UNSUPPORTED;
-  // Before an instance exists only the functions that make one are reachable.
-  const bool global = found->first == "xrEnumerateInstanceExtensionProperties" ||
-                      found->first == "xrCreateInstance" || found->first == "xrGetInstanceProcAddr";
-  if (instance == XR_NULL_HANDLE && !global) return XR_ERROR_HANDLE_INVALID;
-  if (const auto extension = extensionOf.find(found->first); extension != extensionOf.end()) {
-    Instance* object = objectOf<Instance>(instance);
-    if (!object || !object->extensions.count(extension->second))
+  const auto found = std::find_if(std::begin(kFunctions), std::end(kFunctions),
+                                  [&](const NamedFunction& f) { return f.name == name; });
+  if (found == std::end(kFunctions)) return XR_ERROR_FUNCTION_UNSUPPORTED;
+  if (instance == XR_NULL_HANDLE && !found->global) return XR_ERROR_HANDLE_INVALID;
+  if (found->extension) {
+    const Instance* object = objectOf<Instance>(instance);
+    if (!object || !object->extensions.count(found->extension))
       return XR_ERROR_FUNCTION_UNSUPPORTED;
   }
-  *function = found->second;
+  *function = found->function;
   return XR_SUCCESS;
 }
 
