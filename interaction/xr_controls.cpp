@@ -8,82 +8,92 @@ namespace {
 
 using C = XrControl;
 
-// Poses and haptics on both hands; clutch and select on both (read from the hand in the role).
-#define CURVEFOLD_BOTH(control, input)                         \
-  XrControlBinding{control, "left", input}, XrControlBinding { \
-    control, "right", input                                    \
-  }
-
-constexpr std::array kSimple{
-    CURVEFOLD_BOTH(C::GripPose, "/input/grip/pose"),
-    CURVEFOLD_BOTH(C::AimPose, "/input/aim/pose"),
-    // One button each: select clutches on the sheet hand and grabs on the point hand; menu undoes
-    // on the sheet hand and cancels on the point hand. No redo or switch.
-    CURVEFOLD_BOTH(C::Clutch, "/input/select/click"),
-    CURVEFOLD_BOTH(C::Select, "/input/select/click"),
-    CURVEFOLD_BOTH(C::Undo, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Cancel, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
+// A control's input on both hands, or on one ("left" or "right") where the hands differ.
+struct Input {
+  XrControl control;
+  std::string_view path;
+  std::string_view hand = {};
 };
 
-constexpr std::array kOculusTouch{
-    CURVEFOLD_BOTH(C::GripPose, "/input/grip/pose"),
-    CURVEFOLD_BOTH(C::AimPose, "/input/aim/pose"),
-    CURVEFOLD_BOTH(C::Clutch, "/input/squeeze/value"),
-    CURVEFOLD_BOTH(C::Select, "/input/trigger/value"),
-    XrControlBinding{C::Undo, "left", "/input/x/click"},
-    XrControlBinding{C::Undo, "right", "/input/a/click"},
-    XrControlBinding{C::Redo, "left", "/input/y/click"},
-    XrControlBinding{C::Redo, "right", "/input/b/click"},
-    CURVEFOLD_BOTH(C::Cancel, "/input/thumbstick/click"),
-    XrControlBinding{C::SwitchHands, "left", "/input/menu/click"},  // the right has no menu
-    CURVEFOLD_BOTH(C::Panel, "/input/thumbstick/click"),  // the sheet hand's; cancel the point's
-    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
-    CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
+// A profile's bindings: its inputs between the poses and the haptic, which every profile has on
+// both hands.
+template <const auto& kInputs>
+constexpr auto withPosesAndHaptic() {
+  constexpr std::size_t count = [] {
+    std::size_t n = 3 * 2;
+    for (const Input& input : kInputs) n += input.hand.empty() ? 2 : 1;
+    return n;
+  }();
+  std::array<XrControlBinding, count> bindings{};
+  std::size_t next = 0;
+  const auto add = [&](const Input& input) {
+    for (std::string_view hand : {"left", "right"})
+      if (input.hand.empty() || input.hand == hand)
+        bindings[next++] = {input.control, hand, input.path};
+  };
+  add({C::GripPose, "/input/grip/pose"});
+  add({C::AimPose, "/input/aim/pose"});
+  for (const Input& input : kInputs) add(input);
+  add({C::Haptic, "/output/haptic"});
+  return bindings;
+}
+
+// One button each: select clutches on the sheet hand and grabs on the point hand; menu undoes on
+// the sheet hand and cancels on the point hand. No redo or switch.
+constexpr Input kSimpleInputs[]{
+    {C::Clutch, "/input/select/click"},
+    {C::Select, "/input/select/click"},
+    {C::Undo, "/input/menu/click"},
+    {C::Cancel, "/input/menu/click"},
 };
 
-constexpr std::array kValveIndex{
-    CURVEFOLD_BOTH(C::GripPose, "/input/grip/pose"),
-    CURVEFOLD_BOTH(C::AimPose, "/input/aim/pose"),
-    CURVEFOLD_BOTH(C::Clutch, "/input/squeeze/value"),
-    CURVEFOLD_BOTH(C::Select, "/input/trigger/value"),
-    CURVEFOLD_BOTH(C::Undo, "/input/a/click"),
-    CURVEFOLD_BOTH(C::Redo, "/input/b/click"),
-    CURVEFOLD_BOTH(C::Cancel, "/input/thumbstick/click"),
-    CURVEFOLD_BOTH(C::SwitchHands, "/input/trackpad/force"),
-    CURVEFOLD_BOTH(C::Panel, "/input/thumbstick/click"),
-    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
-    CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
+constexpr Input kOculusTouchInputs[]{
+    {C::Clutch, "/input/squeeze/value"},
+    {C::Select, "/input/trigger/value"},
+    {C::Undo, "/input/x/click", "left"},
+    {C::Undo, "/input/a/click", "right"},
+    {C::Redo, "/input/y/click", "left"},
+    {C::Redo, "/input/b/click", "right"},
+    {C::Cancel, "/input/thumbstick/click"},
+    {C::SwitchHands, "/input/menu/click", "left"},  // the right has no menu
+    {C::Panel, "/input/thumbstick/click"},          // the sheet hand's; cancel the point's
+    {C::Scroll, "/input/thumbstick/y"},
 };
 
-constexpr std::array kHtcVive{
-    CURVEFOLD_BOTH(C::GripPose, "/input/grip/pose"),
-    CURVEFOLD_BOTH(C::AimPose, "/input/aim/pose"),
-    CURVEFOLD_BOTH(C::Clutch, "/input/squeeze/click"),
-    CURVEFOLD_BOTH(C::Select, "/input/trigger/value"),
-    CURVEFOLD_BOTH(C::Undo, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Cancel, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Redo, "/input/trackpad/click"),
-    CURVEFOLD_BOTH(C::Panel, "/input/trigger/click"),  // the sheet hand's trigger is free
-    CURVEFOLD_BOTH(C::Scroll, "/input/trackpad/y"),
-    CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
+constexpr Input kValveIndexInputs[]{
+    {C::Clutch, "/input/squeeze/value"},
+    {C::Select, "/input/trigger/value"},
+    {C::Undo, "/input/a/click"},
+    {C::Redo, "/input/b/click"},
+    {C::Cancel, "/input/thumbstick/click"},
+    {C::SwitchHands, "/input/trackpad/force"},
+    {C::Panel, "/input/thumbstick/click"},
+    {C::Scroll, "/input/thumbstick/y"},
 };
 
-constexpr std::array kMicrosoftMotion{
-    CURVEFOLD_BOTH(C::GripPose, "/input/grip/pose"),
-    CURVEFOLD_BOTH(C::AimPose, "/input/aim/pose"),
-    CURVEFOLD_BOTH(C::Clutch, "/input/squeeze/click"),
-    CURVEFOLD_BOTH(C::Select, "/input/trigger/value"),
-    CURVEFOLD_BOTH(C::Undo, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Cancel, "/input/menu/click"),
-    CURVEFOLD_BOTH(C::Redo, "/input/trackpad/click"),
-    CURVEFOLD_BOTH(C::SwitchHands, "/input/thumbstick/click"),
-    CURVEFOLD_BOTH(C::Panel, "/input/trigger/value"),  // the sheet hand's trigger is free
-    CURVEFOLD_BOTH(C::Scroll, "/input/thumbstick/y"),
-    CURVEFOLD_BOTH(C::Haptic, "/output/haptic"),
+constexpr Input kHtcViveInputs[]{
+    {C::Clutch, "/input/squeeze/click"},
+    {C::Select, "/input/trigger/value"},
+    {C::Undo, "/input/menu/click"},
+    {C::Cancel, "/input/menu/click"},
+    {C::Redo, "/input/trackpad/click"},
+    {C::Panel, "/input/trigger/click"},  // the sheet hand's trigger is free
+    {C::Scroll, "/input/trackpad/y"},
 };
 
-#undef CURVEFOLD_BOTH
+constexpr Input kMicrosoftMotionInputs[]{
+    {C::Clutch, "/input/squeeze/click"}, {C::Select, "/input/trigger/value"},
+    {C::Undo, "/input/menu/click"},      {C::Cancel, "/input/menu/click"},
+    {C::Redo, "/input/trackpad/click"},  {C::SwitchHands, "/input/thumbstick/click"},
+    {C::Panel, "/input/trigger/value"},  // the sheet hand's trigger is free
+    {C::Scroll, "/input/thumbstick/y"},
+};
+
+constexpr auto kSimple = withPosesAndHaptic<kSimpleInputs>();
+constexpr auto kOculusTouch = withPosesAndHaptic<kOculusTouchInputs>();
+constexpr auto kValveIndex = withPosesAndHaptic<kValveIndexInputs>();
+constexpr auto kHtcVive = withPosesAndHaptic<kHtcViveInputs>();
+constexpr auto kMicrosoftMotion = withPosesAndHaptic<kMicrosoftMotionInputs>();
 
 const std::array kProfiles{
     XrProfileControls{"/interaction_profiles/khr/simple_controller", kSimple},

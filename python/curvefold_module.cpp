@@ -146,6 +146,18 @@ py::array_t<T> view(const T* data, std::size_t rows, std::size_t columns,
   return array;
 }
 
+// A Design property: one of the current sheet's arrays (rows of Element, each Columns values of
+// T), read-only and without a copy, kept alive by the snapshot that holds it.
+template <typename T, std::size_t Columns, typename Element>
+auto sheetArray(const std::vector<Element> Sheet::*rows) {
+  static_assert(sizeof(Element) == Columns * sizeof(T));
+  return [rows](const PyDesign& d) {
+    const std::shared_ptr<const Sheet> sheet = d.snapshot();
+    const std::vector<Element>& array = (*sheet).*rows;
+    return view(reinterpret_cast<const T*>(array.data()), array.size(), Columns, sheet);
+  };
+}
+
 py::dict surfacesInfo() {
   py::dict surfaces;
   for (const SurfaceInfo& info : surfaceCatalog()) {
@@ -493,30 +505,13 @@ PYBIND11_MODULE(_curvefold, m) {
           py::arg("allow_self_intersection") = false,
           "The invariants `curvefold check` prints, as a CheckResult (true when all hold; "
           "self-intersections and contacts included)")
-      .def_property_readonly(
-          "vertices",
-          [](const PyDesign& d) {
-            const auto sheet = d.snapshot();
-            return view(&sheet->positions.data()->x, sheet->positions.size(), 3, sheet);
-          },
-          "Folded positions, (n, 3) float64, read-only (no copy)")
-      .def_property_readonly(
-          "development",
-          [](const PyDesign& d) {
-            const auto sheet = d.snapshot();
-            return view(&sheet->development.data()->x, sheet->development.size(), 2, sheet);
-          },
-          "The flat paper, (n, 2) float64, read-only (no copy)")
-      .def_property_readonly(
-          "triangles",
-          [](const PyDesign& d) {
-            const auto sheet = d.snapshot();
-            static_assert(sizeof(Triangle) == 3 * sizeof(std::uint32_t));
-            return view(reinterpret_cast<const std::uint32_t*>(sheet->triangles.data()),
-                        sheet->triangles.size(), 3, sheet);
-          },
-          "Triangles, (m, 3) uint32 vertex indices, counter-clockwise in the development, "
-          "read-only (no copy)")
+      .def_property_readonly("vertices", sheetArray<double, 3>(&Sheet::positions),
+                             "Folded positions, (n, 3) float64, read-only (no copy)")
+      .def_property_readonly("development", sheetArray<double, 2>(&Sheet::development),
+                             "The flat paper, (n, 2) float64, read-only (no copy)")
+      .def_property_readonly("triangles", sheetArray<std::uint32_t, 3>(&Sheet::triangles),
+                             "Triangles, (m, 3) uint32 vertex indices, counter-clockwise in the "
+                             "development, read-only (no copy)")
       .def("creases", &creasesOf,
            "Crease edges: edges (k, 2) uint32, assignment ['M' or 'V'], angles (k,) degrees "
            "(FOLD's convention)")

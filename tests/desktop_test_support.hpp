@@ -120,6 +120,16 @@ class DesktopTest : public ::testing::Test {
     return window_;
   }
 
+  // Replays `recording` headless (`curvefold replay`) into dir()/replayed: the design it saved
+  // there, or "" when the replay failed.
+  fs::path replay(const fs::path& recording) const {
+    const fs::path out = dir_ / "replayed";
+    if (shell(std::string(CURVEFOLD_BINARY) + " replay " + recording.string() + " --out " +
+              out.string() + " >/dev/null") != 0)
+      return {};
+    return out / "session.curvefold.json";
+  }
+
   // The designer process itself: startDesigner runs it under `timeout`, whose pid that is.
   int designerProcess() const {
     const fs::path child = dir_ / "designer.child";

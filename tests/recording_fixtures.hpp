@@ -19,6 +19,16 @@ inline RecordingHeader squareRecordingHeader() {
   return header;
 }
 
+// A square of `resolution` held where a standing user reaches it (1.1 m up, 0.45 m ahead), at 60
+// frames a second: the gesture scripts' and the session outputs' tests fold on it.
+inline RecordingHeader heldSquareHeader(int resolution) {
+  RecordingHeader header;
+  header.surface = GeneratedSurface{"square", {{"resolution", resolution}}};
+  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
+  header.rate = 60;
+  return header;
+}
+
 inline InputFrame handFrame(double time, const glm::dvec3& sheetHand, double clutch,
                             const glm::dvec3& point, double select, std::uint32_t buttons = 0) {
   InputFrame frame;

@@ -121,6 +121,31 @@ TEST_F(CutterSvgFile, InkscapeLayersInMillimetres) {
   EXPECT_EQ(entries(), std::vector<std::string>{"cut.svg"});
 }
 
+// Each layer's paths ("M x y L x y ...", millimetres) by the layer's label, read back from a file.
+std::map<std::string, std::vector<std::vector<glm::dvec2>>> readLayers(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string svg = text.str();
+  std::map<std::string, std::vector<std::vector<glm::dvec2>>> layers;
+  const std::regex layer(R"re(<g [^>]*inkscape:label="([^"]*)"[^>]*>([\s\S]*?)</g>)re");
+  const std::regex pathData(R"re(<path d="M ([^"]*)"/>)re");
+  for (std::sregex_iterator g(svg.begin(), svg.end(), layer), end; g != end; ++g) {
+    const std::string name = (*g)[1], body = (*g)[2];
+    auto& lines = layers[name];
+    for (std::sregex_iterator p(body.begin(), body.end(), pathData); p != end; ++p) {
+      std::string d = (*p)[1];
+      for (char& c : d)
+        if (c == 'L') c = ' ';
+      std::istringstream numbers(d);
+      std::vector<glm::dvec2> line;
+      for (glm::dvec2 q; numbers >> q.x >> q.y;) line.push_back(q);
+      lines.push_back(std::move(line));
+    }
+  }
+  return layers;
+}
+
 // Issue 28: the fixture above has one mountain and one valley of the same length, so the two score
 // layers swapped passed every test. Here a 200 x 100 mm sheet gets a straight fold across it and a
 // corner fold the other way, so mountains and valleys differ in length; each layer of the written
@@ -149,57 +174,17 @@ TEST_F(CutterSvgFile, MountainAndValleyScoresHoldTheirOwnCreases) {
 
   const fs::path path = dir() / "cut.svg";
   writeCutterSvg(sheet, path);
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string svg = text.str();
-  // Each layer's paths ("M x y L x y ...", millimetres), summed by the layer's label.
+  // Each layer's paths, summed by the layer's label.
   std::map<std::string, double> layerMm;
-  const std::regex layer(R"re(<g [^>]*inkscape:label="([^"]*)"[^>]*>([\s\S]*?)</g>)re");
-  const std::regex pathData(R"re(<path d="M ([^"]*)"/>)re");
-  for (std::sregex_iterator g(svg.begin(), svg.end(), layer), end; g != end; ++g) {
-    const std::string name = (*g)[1], body = (*g)[2];
+  for (const auto& [name, lines] : readLayers(path)) {
     double& total = layerMm[name];
-    for (std::sregex_iterator p(body.begin(), body.end(), pathData); p != end; ++p) {
-      std::string d = (*p)[1];
-      for (char& c : d)
-        if (c == 'L') c = ' ';
-      std::istringstream numbers(d);
-      std::vector<glm::dvec2> line;
-      for (glm::dvec2 q; numbers >> q.x >> q.y;) line.push_back(q);
-      total += length(line);
-    }
+    for (const std::vector<glm::dvec2>& line : lines) total += length(line);
   }
   ASSERT_EQ(layerMm.size(), 3u);
   // The file rounds coordinates to 0.1 micrometres.
   EXPECT_NEAR(layerMm["mountain score"], mountainMm, 0.01);
   EXPECT_NEAR(layerMm["valley score"], valleyMm, 0.01);
   EXPECT_NEAR(layerMm["cut"], 600.0, 0.01);
-}
-
-// Each layer's paths ("M x y L x y ...", millimetres) by the layer's label, read back from a file.
-std::map<std::string, std::vector<std::vector<glm::dvec2>>> readLayers(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string svg = text.str();
-  std::map<std::string, std::vector<std::vector<glm::dvec2>>> layers;
-  const std::regex layer(R"re(<g [^>]*inkscape:label="([^"]*)"[^>]*>([\s\S]*?)</g>)re");
-  const std::regex pathData(R"re(<path d="M ([^"]*)"/>)re");
-  for (std::sregex_iterator g(svg.begin(), svg.end(), layer), end; g != end; ++g) {
-    const std::string name = (*g)[1], body = (*g)[2];
-    auto& lines = layers[name];
-    for (std::sregex_iterator p(body.begin(), body.end(), pathData); p != end; ++p) {
-      std::string d = (*p)[1];
-      for (char& c : d)
-        if (c == 'L') c = ' ';
-      std::istringstream numbers(d);
-      std::vector<glm::dvec2> line;
-      for (glm::dvec2 q; numbers >> q.x >> q.y;) line.push_back(q);
-      lines.push_back(std::move(line));
-    }
-  }
-  return layers;
 }
 
 // A cone folded twice: long curved creases, each a polyline of many short edges.

@@ -84,11 +84,9 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   stbi_image_free(pixels);
 
   // The recording replays headless to the same folds.
-  const fs::path out = dir() / "replayed";
-  ASSERT_EQ(shell(std::string(CURVEFOLD_BINARY) + " replay " + recording.string() + " --out " +
-                  out.string() + " >/dev/null"),
-            0);
-  const nlohmann::json replayed = nlohmann::json::parse(slurp(out / "session.curvefold.json"));
+  const fs::path design = replay(recording);
+  ASSERT_FALSE(design.empty()) << "the recording did not replay";
+  const nlohmann::json replayed = nlohmann::json::parse(slurp(design));
   EXPECT_EQ(replayed["folds"], saved["folds"]);
   EXPECT_EQ(replayed["surface"], saved["surface"]);
 }
@@ -125,11 +123,9 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
   EXPECT_NE(frames.find("\"suggestions\":[{\"seed\""), std::string::npos);
   EXPECT_NE(frames.find("take_suggestion"), std::string::npos);
 
-  const fs::path out = dir() / "replayed";
-  ASSERT_EQ(shell(std::string(CURVEFOLD_BINARY) + " replay " + recording.string() + " --out " +
-                  out.string() + " >/dev/null"),
-            0);
-  const nlohmann::json replayed = nlohmann::json::parse(slurp(out / "session.curvefold.json"));
+  const fs::path design = replay(recording);
+  ASSERT_FALSE(design.empty()) << "the recording did not replay";
+  const nlohmann::json replayed = nlohmann::json::parse(slurp(design));
   EXPECT_EQ(replayed["folds"], saved["folds"]);
 }
 

@@ -15,6 +15,7 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "recording_fixtures.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
@@ -25,6 +26,7 @@ namespace curvefold {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::heldSquareHeader;
 
 const fs::path kExamples = fs::path(CURVEFOLD_SOURCE_DIR) / "examples";
 
@@ -62,16 +64,8 @@ Replayed replay(const Recording& recording) {
   return result;
 }
 
-RecordingHeader squareHeader() {
-  RecordingHeader header;
-  header.surface = GeneratedSurface{"square", {{"resolution", 20}}};
-  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
-  header.rate = 60;
-  return header;
-}
-
 TEST(Gestures, RecordingReplaysToTheSameSheetBitForBit) {
-  GestureRecorder recorder(squareHeader());
+  GestureRecorder recorder(heldSquareHeader(20));
   recorder.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6);
   recorder.turnSheet({{0, 1, 0}, 30}, 0.3);
   recorder.drag({-0.1, 0.1, 0.0}, {{-0.04, 0.02, 0.05}}, 0.6, SheetTurn{{1, 0, 0}, 20});
@@ -88,7 +82,7 @@ TEST(Gestures, RecordingReplaysToTheSameSheetBitForBit) {
 }
 
 TEST(Gestures, TurningTheSheetDuringADragChangesTheFold) {
-  GestureRecorder still(squareHeader()), turning(squareHeader());
+  GestureRecorder still(heldSquareHeader(20)), turning(heldSquareHeader(20));
   still.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6);
   turning.drag({0.1, 0.1, 0.0}, {{0.03, 0.04, 0.05}}, 0.6, SheetTurn{{0, 0, 1}, 15});
   ASSERT_EQ(still.session().foldCount(), 1u);
@@ -97,7 +91,7 @@ TEST(Gestures, TurningTheSheetDuringADragChangesTheFold) {
 }
 
 TEST(Gestures, ClutchAtPoseAMoveToPoseB) {
-  GestureRecorder recorder(squareHeader());
+  GestureRecorder recorder(heldSquareHeader(20));
   const Pose a{{-0.2, 1.0, -0.3}, glm::dquat(1, 0, 0, 0)};
   const Pose b{{-0.1, 1.2, -0.35}, glm::angleAxis(0.5, glm::dvec3(0, 1, 0))};
   const Pose sheetBefore = recorder.core().worldFromSheet();
@@ -112,7 +106,7 @@ TEST(Gestures, ClutchAtPoseAMoveToPoseB) {
 }
 
 TEST(Gestures, AFarGrabPointGrabsTheNearestEdge) {
-  GestureRecorder recorder(squareHeader());
+  GestureRecorder recorder(heldSquareHeader(20));
   // The grabbed point is the nearest surface point, so a point off the sheet grabs its edge.
   EXPECT_NO_THROW(recorder.drag({1.0, 0.0, 0.0}, {{0.05, 0.0, 0.05}}, 0.3));
   ASSERT_EQ(recorder.session().foldCount(), 1u);
@@ -223,7 +217,7 @@ TEST(Gestures, ShowcaseRecordingsAreCurrentAndRichOnEverySurface) {
 // holds the point hand's squeeze, a replay of it reaches the same view scale, and a drag after it
 // still grabs where the script says (its points are sheet coordinates) and folds once.
 TEST(Gestures, ScaleSheetTakesTheSheetWithBothHands) {
-  GestureRecorder recorder(squareHeader());
+  GestureRecorder recorder(heldSquareHeader(20));
   recorder.scaleSheet(1.5, 0.5);
   EXPECT_NEAR(recorder.core().viewScale(), 1.5, 1e-9);
   recorder.drag({0.05, 0.05, 0.0}, {{0.05, 0.05, 0.04}}, 0.5);
@@ -236,7 +230,7 @@ TEST(Gestures, ScaleSheetTakesTheSheetWithBothHands) {
   EXPECT_EQ(again.commits, 1u);
   EXPECT_TRUE(identical(again.session->fixed(), recorder.session().fixed()));
   // Beyond the view scale's range: refused by name.
-  GestureRecorder far(squareHeader());
+  GestureRecorder far(heldSquareHeader(20));
   EXPECT_THROW(far.scaleSheet(100.0, 0.5), GestureError);
 }
 

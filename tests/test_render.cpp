@@ -18,7 +18,9 @@
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image_barrier.hpp"
 #include "engine/render/scene_builder.hpp"
+#include "engine/render/scope_fail.hpp"
 #include "engine/render/sheet_tracker.hpp"
+#include "engine/render/vulkan_objects.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "tests/sheet_fixtures.hpp"
 
@@ -104,6 +106,37 @@ class Render : public ::testing::Test {
   std::size_t messagesBefore_ = 0;
 };
 std::unique_ptr<HeadlessRenderer> Render::renderer_;
+
+// A half-made object's cleanup (engine/render/scope_fail.hpp) runs when an exception leaves the
+// constructor's scope, and only then: not when the scope ends normally, even while another
+// exception unwinds through it (a destructor's scope).
+TEST(ScopeFail, CleansUpOnlyWhenAnExceptionLeavesTheScope) {
+  int cleanups = 0;
+  {
+    const ScopeFail cleanup([&] { ++cleanups; });
+  }
+  EXPECT_EQ(cleanups, 0);
+  EXPECT_THROW(
+      {
+        const ScopeFail cleanup([&] { ++cleanups; });
+        throw VulkanError("vkCreateImage failed");
+      },
+      VulkanError);
+  EXPECT_EQ(cleanups, 1);
+  struct EndsNormallyWhileUnwinding {
+    int& cleanups;
+    ~EndsNormallyWhileUnwinding() {
+      const ScopeFail cleanup([&] { ++cleanups; });
+    }
+  };
+  EXPECT_THROW(
+      {
+        const EndsNormallyWhileUnwinding unwinding{cleanups};
+        throw VulkanError("vkAllocateMemory failed");
+      },
+      VulkanError);
+  EXPECT_EQ(cleanups, 1);
+}
 
 // With VK_INSTANCE_LAYERS naming the validation layer too (as a developer's shell often does), the
 // loader says it adds the layer: a general note, not a validation message, so nothing is counted
@@ -341,11 +374,8 @@ TEST_F(Render, AWorldPanelShowsItsPictureAndHidesWhatIsBehindIt) {
     once.submit(frame);
     once.wait(frame);
   }
-  VkSamplerCreateInfo samplerInfo{};
-  samplerInfo.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_NEAREST;
-  VkSampler sampler = VK_NULL_HANDLE;
-  ASSERT_EQ(vkCreateSampler(context.device(), &samplerInfo, nullptr, &sampler), VK_SUCCESS);
+  const VkSampler sampler =
+      createSampler(context.device(), VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_REPEAT);
   renderer_->sceneRenderer().setWorldPanelTexture(picture.view(), sampler);
 
   const Sheet sheet = square();  // 0.2 m, z = 0, seen from the front

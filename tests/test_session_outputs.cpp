@@ -20,6 +20,7 @@
 #include "app/session_outputs.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "io_test_support.hpp"
+#include "recording_fixtures.hpp"
 #include "sanitizer_support.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
@@ -28,6 +29,7 @@ namespace curvefold::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::heldSquareHeader;
 using SessionOutputsTest = curvefold::testing::ScratchDirectory;
 
 // Issue 29, 1 and 3: the recent-designs list is read a bounded line at a time (a 300 MB line was
@@ -70,17 +72,9 @@ TEST_F(SessionOutputsTest, TheRecentListIsReadBoundedAndKeepsOnlyUtf8) {
     unsetenv("XDG_STATE_HOME");
 }
 
-RecordingHeader squareHeader() {
-  RecordingHeader header;
-  header.surface = GeneratedSurface{"square", {{"resolution", 12}}};
-  header.sheetFrame = {{0.0, 1.1, -0.45}, glm::dquat(1, 0, 0, 0)};
-  header.rate = 60;
-  return header;
-}
-
 // Hand motion making `folds` folds on the square, one after another.
 Recording foldingFrames(int folds) {
-  GestureRecorder recorder(squareHeader());
+  GestureRecorder recorder(heldSquareHeader(12));
   for (int i = 0; i < folds; ++i) {
     const double x = 0.1 - 0.02 * i;
     recorder.drag({x, 0.1, 0.0}, {{x - 0.03, 0.06, 0.04 + 0.002 * i}}, 0.3);
@@ -99,15 +93,17 @@ void runSession(Document& doc, SessionOutputs& outputs, const Recording& input) 
 TEST_F(SessionOutputsTest, NothingIsCreatedBeforeTheSessionStarts) {
   const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
   {
-    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    Document doc =
+        makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
     SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
     // The window or the OpenXR instance fails here: the session never starts.
   }
   EXPECT_TRUE(entries().empty());
   // The retry is not refused; an existing recording is refused before anything starts.
-  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  Document doc =
+      makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
   SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
-  outputs.startRecording(squareHeader());
+  outputs.startRecording(heldSquareHeader(12));
   EXPECT_TRUE(fs::exists(record));
   EXPECT_THROW(SessionOutputs(autosave.string(), record.string(), [&] { return doc.design(); }),
                FileError);
@@ -124,7 +120,8 @@ TEST_F(SessionOutputsTest, AFullRecordingDiskStopsTheRecordingNotTheSession) {
     ::signal(SIGXFSZ, SIG_IGN);  // writes past the limit fail with EFBIG instead
     const rlimit limit{24 * 1024, 24 * 1024};
     ::setrlimit(RLIMIT_FSIZE, &limit);
-    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    Document doc =
+        makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
     SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
     outputs.startRecording(input.header);
     runSession(doc, outputs, input);
@@ -155,7 +152,8 @@ TEST_F(SessionOutputsTest, AStoppedRecordingStaysStopped) {
     ::signal(SIGXFSZ, SIG_IGN);
     const rlimit limit{24 * 1024, 24 * 1024};
     ::setrlimit(RLIMIT_FSIZE, &limit);
-    Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+    Document doc =
+        makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
     SessionOutputs outputs(autosave.string(), record.string(), [&] { return doc.design(); });
     try {
       for (const InputFrame& frame : input.frames) {
@@ -187,7 +185,8 @@ TEST_F(SessionOutputsTest, AnAutosaveThatNeverWorksIsRescuedAtTheEnd) {
   const std::string saved = before ? before : "";
   setenv("XDG_STATE_HOME", (dir() / "state").c_str(), 1);
   const fs::path autosave = dir() / "missing" / "a.autosave.curvefold.json";
-  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  Document doc =
+      makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
   SessionOutputs outputs(autosave.string(), "", [&] { return doc.design(); });
   runSession(doc, outputs, foldingFrames(2));
   ASSERT_EQ(doc.session->foldCount(), 2u);
@@ -215,7 +214,7 @@ TEST_F(SessionOutputsTest, AResumedRecordedSessionAppendsToTheDesign) {
   const fs::path autosave = dir() / "a.autosave.curvefold.json", record = dir() / "r.jsonl";
   const Recording first = foldingFrames(2);
   Document earlier =
-      makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+      makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
   for (const InputFrame& frame : first.frames) earlier.core->process(frame);
   ASSERT_EQ(earlier.session->foldCount(), 2u);
   const Design resumed = earlier.design();
@@ -247,7 +246,8 @@ TEST_F(SessionOutputsTest, AResumedRecordedSessionAppendsToTheDesign) {
 TEST_F(SessionOutputsTest, AnUnexpectedErrorStillSaves) {
   const fs::path autosave = dir() / "later" / "a.autosave.curvefold.json";
   const Recording input = foldingFrames(1);
-  Document doc = makeDocument({squareHeader().surface, {}}, "square", squareHeader().sheetFrame);
+  Document doc =
+      makeDocument({heldSquareHeader(12).surface, {}}, "square", heldSquareHeader(12).sheetFrame);
   try {
     SessionOutputs outputs(autosave.string(), "", [&] { return doc.design(); });
     runSession(doc, outputs, input);  // the commit's save fails: its folder is missing

@@ -80,6 +80,35 @@ class StudioPanelTest : public ::testing::Test {
     }
     return done();
   }
+  // Lays the panel out as `before` leaves it and as `after` does, filling the display and not, and
+  // expects every item of a panel with a target and suggestions where it was: a recorded
+  // session's pointing (positions, not labels) lands on the same items.
+  void expectItemsStay(const std::function<void()>& before, const std::function<void()>& after) {
+    actions_.loadTarget = [](const std::string&) {};
+    actions_.suggest = [] {};
+    const std::vector<std::string> labels = {
+        "surface", "Create", "Undo",        "crease pattern", "save as", "Save",
+        "open",    "Open",   "export to",   "FOLD",           "SVG",     "PNG",
+        "PDF",     "target", "Load target", "Suggest",        "Take",    "Recent designs"};
+    auto centres = [&](const std::function<void()>& change) {
+      change();
+      frame();
+      frame();
+      std::vector<glm::vec2> at;
+      for (const std::string& label : labels) {
+        const std::optional<glm::vec2> centre = panel_.itemCentre(label);
+        EXPECT_TRUE(centre) << "no item \"" << label << "\"";
+        at.push_back(centre.value_or(glm::vec2(-1.0f)));
+      }
+      return at;
+    };
+    for (const bool fills : {false, true}) {
+      panel_.setFillsDisplay(fills);
+      const std::vector<glm::vec2> first = centres(before), second = centres(after);
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        EXPECT_EQ(first[i], second[i]) << labels[i] << (fills ? " (fills the display)" : "");
+    }
+  }
   // A zenity on PATH that runs `body` (sh), for the panel's Browse; PATH is restored after.
   void fakeZenity(const std::string& body) {
     const fs::path bin = dir_ / "bin";
@@ -245,32 +274,11 @@ TEST_F(StudioPanelTest, SavedDesignsAreRecentAndOpenFromTheList) {
 // session's pointing (positions, not labels) replays onto the same items on another machine. The
 // list opening is the user's doing and recorded; what it holds is not.
 TEST_F(StudioPanelTest, ItemsStayWhereTheyAreWhateverTheRecentListHolds) {
-  actions_.loadTarget = [](const std::string&) {};
-  actions_.suggest = [] {};
-  const std::vector<std::string> labels = {
-      "surface", "Create", "Undo",        "crease pattern", "save as", "Save",
-      "open",    "Open",   "export to",   "FOLD",           "SVG",     "PNG",
-      "PDF",     "target", "Load target", "Suggest",        "Take",    "Recent designs"};
-  for (const bool fills : {false, true}) {
-    panel_.setFillsDisplay(fills);
-    auto centres = [&](std::vector<std::string> recent) {
-      panel_.setRecent(std::move(recent));
-      frame();
-      frame();
-      std::vector<glm::vec2> at;
-      for (const std::string& label : labels) {
-        const std::optional<glm::vec2> centre = panel_.itemCentre(label);
-        EXPECT_TRUE(centre) << "no item \"" << label << "\"";
-        at.push_back(centre.value_or(glm::vec2(-1.0f)));
-      }
-      return at;
-    };
-    const std::vector<glm::vec2> none = centres({});
-    const std::vector<glm::vec2> some =
-        centres({"/a/one.curvefold.json", "/b/two.curvefold.json", "/c/three.curvefold.json"});
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      EXPECT_EQ(none[i], some[i]) << labels[i] << (fills ? " (fills the display)" : "");
-  }
+  expectItemsStay([&] { panel_.setRecent({}); },
+                  [&] {
+                    panel_.setRecent({"/a/one.curvefold.json", "/b/two.curvefold.json",
+                                      "/c/three.curvefold.json"});
+                  });
 }
 
 }  // namespace
@@ -373,29 +381,13 @@ TEST_F(StudioPanelTest, DesktopItemsMoveNothingElse) {
   EXPECT_FALSE(panel_.itemCentre("Browse...##open"));
   EXPECT_TRUE(panel_.itemCentre("open"));
   fakeZenity("exit 1");
-  actions_.loadTarget = [](const std::string&) {};
-  actions_.suggest = [] {};
-  const std::vector<std::string> labels = {
-      "surface", "Create", "Undo",        "crease pattern", "save as", "Save",
-      "open",    "Open",   "export to",   "FOLD",           "SVG",     "PNG",
-      "PDF",     "target", "Load target", "Suggest",        "Take",    "Recent designs"};
-  for (const bool fills : {false, true}) {
-    panel_.setFillsDisplay(fills);
-    auto centres = [&](bool desktop) {
-      panel_.setDesktop(desktop);
-      frame();
-      frame();
-      EXPECT_EQ(bool(panel_.itemCentre("Browse...##open")), desktop);
-      EXPECT_EQ(bool(panel_.itemCentre("Browse...##save")), desktop);
-      std::vector<glm::vec2> at;
-      for (const std::string& label : labels)
-        at.push_back(panel_.itemCentre(label).value_or(glm::vec2(-1.0f)));
-      return at;
-    };
-    const std::vector<glm::vec2> headset = centres(false), desktop = centres(true);
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      EXPECT_EQ(headset[i], desktop[i]) << labels[i] << (fills ? " (fills the display)" : "");
+  for (const bool desktop : {false, true}) {
+    panel_.setDesktop(desktop);
+    frame();
+    EXPECT_EQ(bool(panel_.itemCentre("Browse...##open")), desktop);
+    EXPECT_EQ(bool(panel_.itemCentre("Browse...##save")), desktop);
   }
+  expectItemsStay([&] { panel_.setDesktop(false); }, [&] { panel_.setDesktop(true); });
 }
 
 // The headset has no desktop picker, even where zenity is installed; its files go to its folder.

@@ -38,6 +38,7 @@
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "engine/render/swapchain_target.hpp"
+#include "engine/render/vulkan_objects.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
@@ -148,15 +149,9 @@ void runDesigner(const DesignerOptions& options) {
   SessionSheetTracker tracker;
 
   // ImGui, drawn in the scene pass (its MSAA sample count).
-  VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-  poolInfo.maxSets = 16;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &poolSize;
-  VkDescriptorPool imguiPool = VK_NULL_HANDLE;
-  vkCheck(vkCreateDescriptorPool(context.device(), &poolInfo, nullptr, &imguiPool),
-          "vkCreateDescriptorPool");
+  const VkDescriptorPool imguiPool =
+      createDescriptorPool(context.device(), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16,
+                           VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "engine/render/scope_fail.hpp"
 #include "engine/render/vulkan_error.hpp"
+#include "engine/render/vulkan_objects.hpp"
 #include "interaction/xr/xr_check.hpp"
 
 namespace curvefold {
@@ -20,19 +23,23 @@ bool isDepthFormat(VkFormat format) {
 
 // A view of a swapchain image: all its layers (an array view for a multiview pass).
 VkImageView createView(VkDevice device, VkImage image, VkFormat format, std::uint32_t layers) {
-  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  info.image = image;
-  info.viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
-  info.format = format;
-  info.subresourceRange.aspectMask =
+  VkImageAspectFlags aspect =
       isDepthFormat(format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   if (format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT)
-    info.subresourceRange.aspectMask |= VK_IMAGE_ASPECT_STENCIL_BIT;
-  info.subresourceRange.levelCount = 1;
-  info.subresourceRange.layerCount = layers;
-  VkImageView view = VK_NULL_HANDLE;
-  vkCheck(vkCreateImageView(device, &info, nullptr, &view), "vkCreateImageView");
-  return view;
+    aspect |= VK_IMAGE_ASPECT_STENCIL_BIT;
+  return createImageView(device, image, format, aspect, layers);
+}
+
+// A Vulkan instance or device the runtime makes with `create` (xrCreateVulkanInstanceKHR or
+// xrCreateVulkanDeviceKHR, named `name`): the runtime's failure and Vulkan's are reported apart.
+template <typename Handle, typename Create, typename CreateInfo>
+Handle createByRuntime(Create create, const char* name, XrInstance instance, const CreateInfo& info,
+                       const char* vulkanCall) {
+  Handle vulkan = VK_NULL_HANDLE;
+  VkResult result = VK_SUCCESS;
+  xrCheck(create(instance, &info, &vulkan, &result), name, __FILE__, __LINE__);
+  vkCheck(result, (std::string(name) + "'s " + vulkanCall).c_str());
+  return vulkan;
 }
 
 std::vector<VkImage> swapchainImages(XrSwapchain swapchain) {
@@ -94,17 +101,13 @@ XrEyeTarget::XrEyeTarget(const VulkanContext& context, const XrViewSwapchains& s
   // An array swapchain holds every view: one multiview pass draws them all.
   format_.views = swapchains.arraySize;
   renderPass_ = createScenePass(context.device(), format_);
-  try {
-    transient_ = createTransientAttachments(context, extent_, format_);
-    if (!depthImages.empty()) transient_.depth = GpuImage();  // the swapchain's depth serves
-    for (VkImage image : colorImages)
-      colorViews_.push_back(createView(context.device(), image, format_.color, format_.views));
-    for (VkImage image : depthImages)
-      depthViews_.push_back(createView(context.device(), image, format_.depth, format_.views));
-  } catch (...) {
-    destroy();
-    throw;
-  }
+  const ScopeFail cleanup([this] { destroy(); });
+  transient_ = createTransientAttachments(context, extent_, format_);
+  if (!depthImages.empty()) transient_.depth = GpuImage();  // the swapchain's depth serves
+  for (VkImage image : colorImages)
+    colorViews_.push_back(createView(context.device(), image, format_.color, format_.views));
+  for (VkImage image : depthImages)
+    depthViews_.push_back(createView(context.device(), image, format_.depth, format_.views));
 }
 
 XrEyeTarget::~XrEyeTarget() {
@@ -120,8 +123,7 @@ void XrEyeTarget::destroy() {
   for (VkImageView view : depthViews_) vkDestroyImageView(device, view, nullptr);
   colorViews_.clear();
   depthViews_.clear();
-  if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
-  renderPass_ = VK_NULL_HANDLE;
+  destroyHandle(device, renderPass_, vkDestroyRenderPass);
 }
 
 void XrEyeTarget::use(std::uint32_t colorImage, std::optional<std::uint32_t> depthImage) {
@@ -200,11 +202,8 @@ void XrVulkanGraphics::initializeDevice(XrInstance instance, XrSystemId system) 
     create.systemId = system;
     create.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
     create.vulkanCreateInfo = &info;
-    VkInstance vulkan = VK_NULL_HANDLE;
-    VkResult result = VK_SUCCESS;
-    CHECK_XR(createInstance(instance, &create, &vulkan, &result));
-    vkCheck(result, "xrCreateVulkanInstanceKHR's vkCreateInstance");
-    return vulkan;
+    return createByRuntime<VkInstance>(createInstance, "xrCreateVulkanInstanceKHR", instance,
+                                       create, "vkCreateInstance");
   };
   options.requiredPhysicalDevice = physicalDevice;
   options.createDevice = [=](VkPhysicalDevice device, const VkDeviceCreateInfo& info) {
@@ -213,11 +212,8 @@ void XrVulkanGraphics::initializeDevice(XrInstance instance, XrSystemId system) 
     create.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
     create.vulkanPhysicalDevice = device;
     create.vulkanCreateInfo = &info;
-    VkDevice vulkan = VK_NULL_HANDLE;
-    VkResult result = VK_SUCCESS;
-    CHECK_XR(createDevice(instance, &create, &vulkan, &result));
-    vkCheck(result, "xrCreateVulkanDeviceKHR's vkCreateDevice");
-    return vulkan;
+    return createByRuntime<VkDevice>(createDevice, "xrCreateVulkanDeviceKHR", instance, create,
+                                     "vkCreateDevice");
   };
   context_ = std::make_unique<VulkanContext>(options);
   binding_.type = XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR;

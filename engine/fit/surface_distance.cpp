@@ -4,50 +4,34 @@
 #include <cmath>
 #include <vector>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/cgal/triangle_tree.hpp"
 #include "engine/fit/surface_samples.hpp"
 
 namespace curvefold {
-namespace {
-
-using Kernel = CGAL::Simple_cartesian<double>;
-using CgalTriangle = Kernel::Triangle_3;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<CgalTriangle>::const_iterator>;
-using CgalTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Kernel::Point_3 point(const glm::dvec3& p) {
-  return {p.x, p.y, p.z};
-}
-
-}  // namespace
 
 // The closest-point queries of one mesh: its triangles with area (CGAL's queries assume them).
 struct SurfaceDistanceQuery::Tree {
   Tree(const TriangleMesh& mesh, const char* which) {
     for (const auto& t : mesh.triangles) {
-      CgalTriangle triangle(point(mesh.positions[t[0]]), point(mesh.positions[t[1]]),
-                            point(mesh.positions[t[2]]));
-      if (!triangle.is_degenerate()) triangles_.push_back(triangle);
+      CgalTriangle triangle(cgalPoint(mesh.positions[t[0]]), cgalPoint(mesh.positions[t[1]]),
+                            cgalPoint(mesh.positions[t[2]]));
+      if (!triangle.is_degenerate()) tree_.triangles.push_back(triangle);
     }
-    if (triangles_.empty())
+    if (tree_.triangles.empty())
       throw DegenerateMesh(std::string("the ") + which + " surface has no triangle with area");
-    tree_.insert(triangles_.begin(), triangles_.end());
     tree_.build();
-    tree_.accelerate_distance_queries();
     // The search structure is made by the first query: make it here, before queries run in
     // parallel.
     distance(mesh.positions[mesh.triangles.front()[0]]);
   }
-  double distance(const glm::dvec3& p) const { return std::sqrt(tree_.squared_distance(point(p))); }
+  double distance(const glm::dvec3& p) const {
+    return std::sqrt(tree_.tree.squared_distance(cgalPoint(p)));
+  }
 
-  std::vector<CgalTriangle> triangles_;
-  CgalTree tree_;
+  CgalTriangleTree tree_;
 };
 
 SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& mesh, const char* which)

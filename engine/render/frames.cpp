@@ -2,37 +2,35 @@
 
 #include <limits>
 
+#include "engine/render/scope_fail.hpp"
+
 namespace curvefold {
 
 FrameRing::FrameRing(const VulkanContext& context, std::uint32_t count)
     : context_(context), frames_(count) {
   const VkDevice device = context.device();
-  try {
-    for (std::uint32_t i = 0; i < count; ++i) {
-      Frame& frame = frames_[i];
-      frame.slot = i;
-      VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-      pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-      pool.queueFamilyIndex = context.graphicsFamily();
-      vkCheck(vkCreateCommandPool(device, &pool, nullptr, &frame.pool), "vkCreateCommandPool");
-      VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-      allocate.commandPool = frame.pool;
-      allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-      allocate.commandBufferCount = 1;
-      vkCheck(vkAllocateCommandBuffers(device, &allocate, &frame.commands),
-              "vkAllocateCommandBuffers");
-      VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-      fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-      vkCheck(vkCreateFence(device, &fence, nullptr, &frame.done), "vkCreateFence");
-      VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-      vkCheck(vkCreateSemaphore(device, &semaphore, nullptr, &frame.imageAvailable),
-              "vkCreateSemaphore");
-      vkCheck(vkCreateSemaphore(device, &semaphore, nullptr, &frame.renderFinished),
-              "vkCreateSemaphore");
-    }
-  } catch (...) {
-    destroy();
-    throw;
+  const ScopeFail cleanup([this] { destroy(); });
+  for (std::uint32_t i = 0; i < count; ++i) {
+    Frame& frame = frames_[i];
+    frame.slot = i;
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool.queueFamilyIndex = context.graphicsFamily();
+    vkCheck(vkCreateCommandPool(device, &pool, nullptr, &frame.pool), "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo allocate{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocate.commandPool = frame.pool;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    vkCheck(vkAllocateCommandBuffers(device, &allocate, &frame.commands),
+            "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+    vkCheck(vkCreateFence(device, &fence, nullptr, &frame.done), "vkCreateFence");
+    VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    vkCheck(vkCreateSemaphore(device, &semaphore, nullptr, &frame.imageAvailable),
+            "vkCreateSemaphore");
+    vkCheck(vkCreateSemaphore(device, &semaphore, nullptr, &frame.renderFinished),
+            "vkCreateSemaphore");
   }
 }
 

@@ -2,32 +2,44 @@
 
 #include <utility>
 
+#include "engine/render/scope_fail.hpp"
+#include "engine/render/vulkan_objects.hpp"
+
 namespace curvefold {
+
+namespace {
+
+// `needs.size` bytes of the memory type `type`, for a buffer or an image to bind.
+VkDeviceMemory allocateMemory(VkDevice device, const VkMemoryRequirements& needs,
+                              std::uint32_t type) {
+  VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  allocate.allocationSize = needs.size;
+  allocate.memoryTypeIndex = type;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  vkCheck(vkAllocateMemory(device, &allocate, nullptr, &memory), "vkAllocateMemory");
+  return memory;
+}
+
+}  // namespace
 
 HostBuffer::HostBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage)
     : device_(context.device()), size_(size) {
+  const ScopeFail cleanup([this] { reset(); });
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
-  try {
-    VkMemoryRequirements needs;
-    vkGetBufferMemoryRequirements(device_, buffer_, &needs);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = needs.size;
-    allocate.memoryTypeIndex =
-        context.memoryType(needs.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                     VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    vkCheck(vkAllocateMemory(device_, &allocate, nullptr, &memory_), "vkAllocateMemory");
-    vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
-    void* mapped = nullptr;
-    vkCheck(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
-    mapped_ = static_cast<std::byte*>(mapped);
-  } catch (...) {
-    reset();
-    throw;
-  }
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device_, buffer_, &needs);
+  memory_ = allocateMemory(
+      device_, needs,
+      context.memoryType(needs.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                   VK_MEMORY_PROPERTY_HOST_COHERENT_BIT));
+  vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+  void* mapped = nullptr;
+  vkCheck(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+  mapped_ = static_cast<std::byte*>(mapped);
 }
 
 HostBuffer& HostBuffer::operator=(HostBuffer&& other) noexcept {
@@ -43,10 +55,8 @@ HostBuffer& HostBuffer::operator=(HostBuffer&& other) noexcept {
 }
 
 void HostBuffer::reset() {
-  if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
-  buffer_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+  destroyHandle(device_, buffer_, vkDestroyBuffer);
+  destroyHandle(device_, memory_, vkFreeMemory);  // unmaps implicitly
   mapped_ = nullptr;
   size_ = 0;
 }
@@ -55,6 +65,7 @@ GpuImage::GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat for
                    VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                    VkImageAspectFlags aspect, std::uint32_t layers)
     : device_(context.device()) {
+  const ScopeFail cleanup([this] { reset(); });
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
@@ -67,25 +78,13 @@ GpuImage::GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat for
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   vkCheck(vkCreateImage(device_, &info, nullptr, &image_), "vkCreateImage");
-  try {
-    VkMemoryRequirements needs;
-    vkGetImageMemoryRequirements(device_, image_, &needs);
-    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    allocate.allocationSize = needs.size;
-    allocate.memoryTypeIndex =
-        context.memoryTypePreferring(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    vkCheck(vkAllocateMemory(device_, &allocate, nullptr, &memory_), "vkAllocateMemory");
-    vkCheck(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = image_;
-    view.viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, layers};
-    vkCheck(vkCreateImageView(device_, &view, nullptr, &view_), "vkCreateImageView");
-  } catch (...) {
-    reset();
-    throw;
-  }
+  VkMemoryRequirements needs;
+  vkGetImageMemoryRequirements(device_, image_, &needs);
+  memory_ = allocateMemory(
+      device_, needs,
+      context.memoryTypePreferring(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
+  vkCheck(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
+  view_ = createImageView(device_, image_, format, aspect, layers);
 }
 
 GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
@@ -100,12 +99,9 @@ GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
 }
 
 void GpuImage::reset() {
-  if (view_) vkDestroyImageView(device_, view_, nullptr);
-  if (image_) vkDestroyImage(device_, image_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);
-  view_ = VK_NULL_HANDLE;
-  image_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+  destroyHandle(device_, view_, vkDestroyImageView);
+  destroyHandle(device_, image_, vkDestroyImage);
+  destroyHandle(device_, memory_, vkFreeMemory);
 }
 
 }  // namespace curvefold

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/render/vulkan_objects.hpp"
+
 namespace curvefold {
 
 bool isSrgbFormat(VkFormat format) {
@@ -50,37 +52,18 @@ TransientAttachments createTransientAttachments(const VulkanContext& context, Vk
 
 VkRenderPass createScenePass(VkDevice device, const PassFormat& format) {
   const bool msaa = format.samples != VK_SAMPLE_COUNT_1_BIT;
-  std::vector<VkAttachmentDescription> attachments(msaa ? 3 : 2);
-  VkAttachmentDescription& color = attachments[0];
-  color.format = format.color;
-  color.samples = format.samples;
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  // With MSAA only the resolved image is kept.
-  color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
-  color.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  color.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  color.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  color.finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : format.finalLayout;
-  VkAttachmentDescription& depth = attachments[1];
-  depth.format = format.depth;
-  depth.samples = format.samples;
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  depth.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  if (msaa) {
-    VkAttachmentDescription& resolve = attachments[2];
-    resolve.format = format.color;
-    resolve.samples = VK_SAMPLE_COUNT_1_BIT;
-    resolve.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    resolve.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    resolve.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    resolve.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    resolve.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    resolve.finalLayout = format.finalLayout;
-  }
+  std::vector<VkAttachmentDescription> attachments = {
+      // With MSAA only the resolved image is kept.
+      describeAttachment(format.color, format.samples, VK_ATTACHMENT_LOAD_OP_CLEAR,
+                         msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE,
+                         msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : format.finalLayout),
+      describeAttachment(format.depth, format.samples, VK_ATTACHMENT_LOAD_OP_CLEAR,
+                         VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
+  if (msaa)
+    attachments.push_back(describeAttachment(format.color, VK_SAMPLE_COUNT_1_BIT,
+                                             VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                             VK_ATTACHMENT_STORE_OP_STORE, format.finalLayout));
   VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkAttachmentReference resolveRef{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
@@ -93,25 +76,20 @@ VkRenderPass createScenePass(VkDevice device, const PassFormat& format) {
 
   // The previous frame's use of the same images (drawing, the readback copy or presentation)
   // finishes before this frame writes them; the copy after the pass sees the resolved colour.
-  VkSubpassDependency dependencies[2]{};
-  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
-                                 VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[0].srcAccessMask =
-      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[0].dstStageMask =
-      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
-  dependencies[0].dstAccessMask =
-      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
-      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
-  dependencies[1].srcSubpass = 0;
-  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  const VkSubpassDependency dependencies[2] = {
+      subpassDependency(
+          VK_SUBPASS_EXTERNAL,
+          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+              VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, 0,
+          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+              VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT),
+      subpassDependency(0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_SUBPASS_EXTERNAL,
+                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT)};
 
   VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   info.attachmentCount = static_cast<std::uint32_t>(attachments.size());

@@ -8,6 +8,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/render/pipeline_builder.hpp"
+#include "engine/render/scope_fail.hpp"
+#include "engine/render/vulkan_objects.hpp"
 #include "shaders/line.frag.h"
 #include "shaders/line.frag.multiview.h"
 #include "shaders/line.vert.h"
@@ -182,94 +184,79 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
       renderPass_(target.renderPass()),
       slots_(framesInFlight) {
   const VkDevice device = context.device();
-  try {
-    VkDescriptorSetLayoutBinding bindings[1]{};
-    bindings[0].binding = 0;
-    bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    bindings[0].descriptorCount = 1;
-    bindings[0].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 1;
-    setInfo.pBindings = bindings;
-    vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_),
-            "vkCreateDescriptorSetLayout");
-    VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(LinePush)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout_;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &push;
-    vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_),
-            "vkCreatePipelineLayout");
+  const ScopeFail cleanup([this] { destroy(); });
+  VkDescriptorSetLayoutBinding bindings[1]{};
+  bindings[0].binding = 0;
+  bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  bindings[0].descriptorCount = 1;
+  bindings[0].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  setInfo.bindingCount = 1;
+  setInfo.pBindings = bindings;
+  vkCheck(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_),
+          "vkCreateDescriptorSetLayout");
+  VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(LinePush)};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
 
-    const VkDescriptorPoolSize sizes[1] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight}};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = framesInFlight;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = sizes;
-    vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+  pool_ = createDescriptorPool(device, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, framesInFlight);
 
-    const bool multiview = format_.views > 1;
-    PipelineBuilder builder{device,
-                            layout_,
-                            target.renderPass(),
-                            format_.samples,
-                            code(multiview, sheet_vert_spv, sheet_vert_multiview_spv),
-                            code(multiview, sheet_frag_spv, sheet_frag_multiview_spv)};
-    builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
-    builder.bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX},
-                        {1, 1, VK_VERTEX_INPUT_RATE_VERTEX}};
-    builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8_UNORM, 0}};
-    sheetPipeline_ = builder.build();
+  const bool multiview = format_.views > 1;
+  PipelineBuilder builder{device,
+                          layout_,
+                          target.renderPass(),
+                          format_.samples,
+                          code(multiview, sheet_vert_spv, sheet_vert_multiview_spv),
+                          code(multiview, sheet_frag_spv, sheet_frag_multiview_spv)};
+  builder.srgbTarget = isSrgbFormat(format_.color) ? VK_TRUE : VK_FALSE;
+  builder.bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX},
+                      {1, 1, VK_VERTEX_INPUT_RATE_VERTEX}};
+  builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8_UNORM, 0}};
+  sheetPipeline_ = builder.build();
+  // The other pipelines: lines and translucent surfaces blend and write no depth, markers are
+  // opaque like the sheet.
+  const auto build = [&builder](bool blended) {
+    builder.depthWrite = !blended;
+    builder.blend = blended;
+    return builder.build();
+  };
 
-    builder.vertexCode = code(multiview, line_vert_spv, line_vert_multiview_spv);
-    builder.fragmentCode = code(multiview, line_frag_spv, line_frag_multiview_spv);
-    builder.bindings = {{0, sizeof(LineInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
-    builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, a)},
-                          {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, b)},
-                          {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(LineInstance, color)}};
-    builder.depthWrite = false;
-    builder.blend = true;
-    linePipeline_ = builder.build();
+  builder.vertexCode = code(multiview, line_vert_spv, line_vert_multiview_spv);
+  builder.fragmentCode = code(multiview, line_frag_spv, line_frag_multiview_spv);
+  builder.bindings = {{0, sizeof(LineInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, a)},
+                        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(LineInstance, b)},
+                        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(LineInstance, color)}};
+  linePipeline_ = build(true);
 
-    builder.vertexCode = code(multiview, marker_vert_spv, marker_vert_multiview_spv);
-    builder.fragmentCode = code(multiview, marker_frag_spv, marker_frag_multiview_spv);
-    builder.bindings = {{0, sizeof(MarkerInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
-    builder.attributes = {
-        {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MarkerInstance, centreRadius)},
-        {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MarkerInstance, color)}};
-    builder.depthWrite = true;
-    builder.blend = false;
-    markerPipeline_ = builder.build();
+  builder.vertexCode = code(multiview, marker_vert_spv, marker_vert_multiview_spv);
+  builder.fragmentCode = code(multiview, marker_frag_spv, marker_frag_multiview_spv);
+  builder.bindings = {{0, sizeof(MarkerInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
+  builder.attributes = {
+      {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MarkerInstance, centreRadius)},
+      {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MarkerInstance, color)}};
+  markerPipeline_ = build(false);
 
-    builder.vertexCode = code(multiview, translucent_vert_spv, translucent_vert_multiview_spv);
-    builder.fragmentCode = code(multiview, translucent_frag_spv, translucent_frag_multiview_spv);
-    builder.bindings = {{0, sizeof(ColoredVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ColoredVertex, position)},
-                          {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(ColoredVertex, color)}};
-    builder.depthWrite = false;  // translucent: tested against the scene, hides nothing
-    builder.blend = true;
-    translucentPipeline_ = builder.build();
+  builder.vertexCode = code(multiview, translucent_vert_spv, translucent_vert_multiview_spv);
+  builder.fragmentCode = code(multiview, translucent_frag_spv, translucent_frag_multiview_spv);
+  builder.bindings = {{0, sizeof(ColoredVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ColoredVertex, position)},
+                        {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(ColoredVertex, color)}};
+  translucentPipeline_ = build(true);  // tested against the scene, hides nothing
 
-    for (Slot& slot : slots_) {
-      slot.uniforms =
-          HostBuffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-      VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-      allocate.descriptorPool = pool_;
-      allocate.descriptorSetCount = 1;
-      allocate.pSetLayouts = &setLayout_;
-      vkCheck(vkAllocateDescriptorSets(device, &allocate, &slot.set), "vkAllocateDescriptorSets");
-      slot.vertices =
-          HostBuffer(context, 16 * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-      slot.indices = HostBuffer(context, 16 * sizeof(Triangle), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-      slot.flags = HostBuffer(context, 16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-      slot.vertexCapacity = 16;
-      slot.triangleCapacity = 16;
-      writeDescriptors(slot);
-    }
-  } catch (...) {
-    destroy();
-    throw;
+  for (Slot& slot : slots_) {
+    slot.uniforms = HostBuffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    slot.set = allocateDescriptorSet(device, pool_, setLayout_);
+    slot.vertices = HostBuffer(context, 16 * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    slot.indices = HostBuffer(context, 16 * sizeof(Triangle), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    slot.flags = HostBuffer(context, 16, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    slot.vertexCapacity = 16;
+    slot.triangleCapacity = 16;
+    writeDescriptors(slot);
   }
 }
 
@@ -299,18 +286,8 @@ void SceneRenderer::createPanelPipeline() {
   layoutInfo.pPushConstantRanges = &push;
   vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &panelLayout_),
           "vkCreatePipelineLayout");
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &size;
-  vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &panelPool_),
-          "vkCreateDescriptorPool");
-  VkDescriptorSetAllocateInfo allocate{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocate.descriptorPool = panelPool_;
-  allocate.descriptorSetCount = 1;
-  allocate.pSetLayouts = &panelSetLayout_;
-  vkCheck(vkAllocateDescriptorSets(device, &allocate, &panelSet_), "vkAllocateDescriptorSets");
+  panelPool_ = createDescriptorPool(device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1);
+  panelSet_ = allocateDescriptorSet(device, panelPool_, panelSetLayout_);
   const bool multiview = format_.views > 1;
   PipelineBuilder builder{device,
                           panelLayout_,
@@ -342,24 +319,17 @@ void SceneRenderer::destroy() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   slots_.clear();
-  if (panelPipeline_) vkDestroyPipeline(device, panelPipeline_, nullptr);
-  if (panelPool_) vkDestroyDescriptorPool(device, panelPool_, nullptr);
-  if (panelLayout_) vkDestroyPipelineLayout(device, panelLayout_, nullptr);
-  if (panelSetLayout_) vkDestroyDescriptorSetLayout(device, panelSetLayout_, nullptr);
-  panelPipeline_ = VK_NULL_HANDLE;
-  panelPool_ = VK_NULL_HANDLE;
-  panelLayout_ = VK_NULL_HANDLE;
-  panelSetLayout_ = VK_NULL_HANDLE;
+  destroyHandle(device, panelPipeline_, vkDestroyPipeline);
+  destroyHandle(device, panelPool_, vkDestroyDescriptorPool);  // frees panelSet_
+  destroyHandle(device, panelLayout_, vkDestroyPipelineLayout);
+  destroyHandle(device, panelSetLayout_, vkDestroyDescriptorSetLayout);
   panelSet_ = VK_NULL_HANDLE;
-  for (VkPipeline pipeline : {sheetPipeline_, linePipeline_, markerPipeline_, translucentPipeline_})
-    if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
-  sheetPipeline_ = linePipeline_ = markerPipeline_ = translucentPipeline_ = VK_NULL_HANDLE;
-  if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
-  if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
-  if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
-  pool_ = VK_NULL_HANDLE;
-  layout_ = VK_NULL_HANDLE;
-  setLayout_ = VK_NULL_HANDLE;
+  for (VkPipeline* pipeline :
+       {&sheetPipeline_, &linePipeline_, &markerPipeline_, &translucentPipeline_})
+    destroyHandle(device, *pipeline, vkDestroyPipeline);
+  destroyHandle(device, pool_, vkDestroyDescriptorPool);
+  destroyHandle(device, layout_, vkDestroyPipelineLayout);
+  destroyHandle(device, setLayout_, vkDestroyDescriptorSetLayout);
 }
 
 void SceneRenderer::writeDescriptors(Slot& slot) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "engine/render/vulkan_objects.hpp"
+
 namespace curvefold {
 
 namespace {
@@ -124,13 +126,8 @@ void SwapchainTarget::create(VkExtent2D wanted) {
   multisampled_ = std::move(transient.multisampled);
   depth_ = std::move(transient.depth);
   for (VkImage image : images_) {
-    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    viewInfo.image = image;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = format_.color;
-    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    vkCheck(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
+    const VkImageView view =
+        createImageView(device, image, format_.color, VK_IMAGE_ASPECT_COLOR_BIT);
     views_.push_back(view);
     const VkFramebuffer framebuffer = createSceneFramebuffer(
         device, renderPass_, format_, extent, view, depth_.view(), multisampled_.view());

@@ -11,6 +11,7 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include "engine/surfaces/surface_builders.hpp"
 #include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
@@ -29,16 +30,6 @@ constexpr double kShapeBound = 0.125;
 // Triangles per (area / maxEdgeLength^2) that the mesher makes: about 5 measured, 6 with margin.
 constexpr double kTrianglesPerSquareEdge = 6.0;
 
-double signedArea(const std::vector<glm::dvec2>& polygon) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec2& a = polygon[i];
-    const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return 0.5 * twice;
-}
-
 void checkPolygon(const std::vector<glm::dvec2>& polygon, const std::string& what) {
   if (polygon.size() < 3)
     throw SurfaceError("outline: " + what + " has " + std::to_string(polygon.size()) +
@@ -51,7 +42,7 @@ void checkPolygon(const std::vector<glm::dvec2>& polygon, const std::string& wha
     if (p == polygon[(i + 1) % polygon.size()])
       throw SurfaceError("outline: " + what + " repeats point " + std::to_string(i));
   }
-  if (signedArea(polygon) == 0.0) throw SurfaceError("outline: " + what + " has zero area");
+  if (detail::signedArea(polygon) == 0.0) throw SurfaceError("outline: " + what + " has zero area");
 }
 
 void insertPolygon(Cdt& cdt, const std::vector<glm::dvec2>& polygon) {
@@ -99,15 +90,15 @@ Sheet triangulateOutline(const std::vector<glm::dvec2>& outline,
   checkPolygon(outline, "the outline");
   for (std::size_t h = 0; h < holes.size(); ++h)
     checkPolygon(holes[h], "hole " + std::to_string(h));
-  double expectedArea = std::abs(signedArea(outline));
-  for (const auto& hole : holes) expectedArea -= std::abs(signedArea(hole));
+  double expectedArea = std::abs(detail::signedArea(outline));
+  for (const auto& hole : holes) expectedArea -= std::abs(detail::signedArea(hole));
   if (!(maxEdgeLength > 0.0) || !std::isfinite(maxEdgeLength)) {
     std::ostringstream out;
     out << "outline: maxEdgeLength = " << maxEdgeLength << " must be positive and finite";
     throw SurfaceError(out.str());
   }
-  const double estimate =
-      kTrianglesPerSquareEdge * std::abs(signedArea(outline)) / (maxEdgeLength * maxEdgeLength);
+  const double estimate = kTrianglesPerSquareEdge * std::abs(detail::signedArea(outline)) /
+                          (maxEdgeLength * maxEdgeLength);
   if (!(estimate <= static_cast<double>(kMaxSurfaceTriangles))) {
     std::ostringstream out;
     out << "outline: maxEdgeLength = " << maxEdgeLength << " would give about " << estimate
@@ -147,7 +138,7 @@ Sheet triangulateOutline(const std::vector<glm::dvec2>& outline,
   }
   // Holes outside the outline, overlapping or nested show up as a wrong meshed area.
   if (sheet.triangles.empty() ||
-      std::abs(area - expectedArea) > 1e-9 * std::abs(signedArea(outline)))
+      std::abs(area - expectedArea) > 1e-9 * std::abs(detail::signedArea(outline)))
     throw SurfaceError("outline: holes must lie inside the outline without overlapping");
   return sheet;
 }

@@ -3,6 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "engine/geometry/sheet.hpp"
 
@@ -14,6 +17,9 @@ namespace curvefold::detail {
 // Shortest exact form, for values the user gave; 6 significant digits for derived limits.
 std::string formatNumber(double value);
 std::string formatApprox(double value);
+
+// A polygon's area, positive where it runs counter-clockwise (the shoelace formula).
+double signedArea(const std::vector<glm::dvec2>& polygon);
 
 // The largest "resolution" a generator accepts.
 inline constexpr int kMaxResolution = 2000;

@@ -41,6 +41,16 @@ void checkTriangleCount(const std::string& surface, int resolution, double trian
                       std::to_string(kMaxSurfaceTriangles));
 }
 
+double signedArea(const std::vector<glm::dvec2>& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const glm::dvec2& a = polygon[i];
+    const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return 0.5 * twice;
+}
+
 }  // namespace detail
 
 namespace {
@@ -85,16 +95,6 @@ int integer(const SurfaceParameters& p, const char* name) {
   return static_cast<int>(p.at(name));
 }
 
-double polygonArea(const std::vector<glm::dvec2>& polygon) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec2& a = polygon[i];
-    const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x * b.y - a.y * b.x;
-  }
-  return 0.5 * std::abs(twice);
-}
-
 // A length where 0 means "none" (no hole, no truncation) but anything else must be a real length:
 // a hole or a top ring of 1e-20 m would only make degenerate triangles.
 double zeroOrLength(const std::string& surface, const SurfaceParameters& p, const char* name) {
@@ -131,8 +131,9 @@ Sheet symmetricFlat(const std::string& surface, const SurfaceParameters& p,
     failParameter(surface, "hole_radius", hole,
                   "must be less than " + detail::formatApprox(kHoleMargin * inradius) +
                       " (90% of the distance from the centre to the outline)");
-  detail::checkTriangleCount(surface, integer(p, "resolution"),
-                             kMeshTrianglesPerArea * polygonArea(outline) / (maxEdge * maxEdge));
+  detail::checkTriangleCount(
+      surface, integer(p, "resolution"),
+      kMeshTrianglesPerArea * std::abs(detail::signedArea(outline)) / (maxEdge * maxEdge));
   const double wedge = pi / order;
   const glm::dvec2 first(std::cos(start), std::sin(start));
   const glm::dvec2 second(std::cos(start + wedge), std::sin(start + wedge));

@@ -184,24 +184,32 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
   }
   sheetJoints_ = tracksHands_ ? handTracking_->locate(sheet, base, time) : HandJoints{};
   pointJoints_ = tracksHands_ ? handTracking_->locate(point, base, time) : HandJoints{};
-  // A located controller drives its role (unless --hands), else a tracked hand; with neither,
-  // whichever drove it last keeps it (a hand out of view holds its pinch).
-  auto sourceFor = [&](bool controllerLocated, const HandJoints& joints, XrHandSource last) {
-    if (handsOnly_) return XrHandSource::Hand;
-    if (controllerLocated) return XrHandSource::Controller;
-    if (joints.tracked) return XrHandSource::Hand;
-    return tracksHands_ ? last : XrHandSource::Controller;
+  // Locates a role's controller (its space into `location`) and picks what drives the role: a
+  // located controller (unless --hands), else a tracked hand; with neither, whichever drove it last
+  // keeps it (a hand out of view holds its pinch). A role that leaves its hand forgets what the
+  // hand was doing; a hand that drives its role updates the frame. True when the source changed.
+  XrSpaceLocation location{XR_TYPE_SPACE_LOCATION};
+  auto follow = [&](XrSpace space, const HandJoints& joints, XrHandSource& source,
+                    void (HandInput::*resetHand)(),
+                    void (HandInput::*updateHand)(const HandJoints&, InputFrame&)) {
+    location = XrSpaceLocation{XR_TYPE_SPACE_LOCATION};
+    CHECK_XR(xrLocateSpace(space, base, time, &location));
+    const XrHandSource now = [&] {
+      if (handsOnly_) return XrHandSource::Hand;
+      if (located(location)) return XrHandSource::Controller;
+      if (joints.tracked) return XrHandSource::Hand;
+      return tracksHands_ ? source : XrHandSource::Controller;
+    }();
+    const bool switched = now != source;
+    if (switched && source == XrHandSource::Hand) (hands_.*resetHand)();
+    source = now;
+    if (source == XrHandSource::Hand) (hands_.*updateHand)(joints, frame);
+    return switched;
   };
 
-  XrSpaceLocation location{XR_TYPE_SPACE_LOCATION};
-  CHECK_XR(xrLocateSpace(gripSpaces_[std::size_t(sheet)], base, time, &location));
-  const XrHandSource sheetSource = sourceFor(located(location), sheetJoints_, sheetSource_);
-  const bool sheetSwitched = sheetSource != sheetSource_;
-  if (sheetSwitched && sheetSource_ == XrHandSource::Hand) hands_.resetSheetHand();
-  sheetSource_ = sheetSource;
-  if (sheetSource_ == XrHandSource::Hand) {
-    hands_.updateSheetHand(sheetJoints_, frame);
-  } else {
+  const bool sheetSwitched = follow(gripSpaces_[std::size_t(sheet)], sheetJoints_, sheetSource_,
+                                    &HandInput::resetSheetHand, &HandInput::updateSheetHand);
+  if (sheetSource_ == XrHandSource::Controller) {
     if (located(location)) {
       frame.sheetHand.tracked = true;
       frame.sheetHand.pose = poseOf(location.pose);
@@ -209,15 +217,9 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
     frame.sheetHand.clutch = floatState(XrControl::Clutch, sheet);
   }
 
-  location = XrSpaceLocation{XR_TYPE_SPACE_LOCATION};
-  CHECK_XR(xrLocateSpace(aimSpaces_[std::size_t(point)], base, time, &location));
-  const XrHandSource pointSource = sourceFor(located(location), pointJoints_, pointSource_);
-  const bool pointSwitched = pointSource != pointSource_;
-  if (pointSwitched && pointSource_ == XrHandSource::Hand) hands_.resetPointHand();
-  pointSource_ = pointSource;
-  if (pointSource_ == XrHandSource::Hand) {
-    hands_.updatePointHand(pointJoints_, frame);
-  } else {
+  const bool pointSwitched = follow(aimSpaces_[std::size_t(point)], pointJoints_, pointSource_,
+                                    &HandInput::resetPointHand, &HandInput::updatePointHand);
+  if (pointSource_ == XrHandSource::Controller) {
     if (located(location)) {
       const Pose aim = poseOf(location.pose);
       pointAim_ = aim;

@@ -287,22 +287,43 @@ Action& readAction(XrSession handle, const XrActionStateGetInfo* info, State* st
   return action;
 }
 
+// A button's or an axis's state over the hands it is read from: active where any hand is, the
+// largest value of the active hands (0 where none is), changed where any hand's value changed.
+struct HandsState {
+  bool active = false;
+  float value = 0.0f;
+  bool changed = false;
+  XrTime lastChangeTime = 0;
+};
+
+HandsState readHands(Action& action, XrPath subaction) {
+  HandsState state;
+  for (int hand : handsFor(action, subaction)) {
+    if (!action.active[hand]) continue;
+    state.active = true;
+    state.value = std::max(state.value, action.value[hand]);
+    state.changed |= action.value[hand] != action.previous[hand];
+    state.lastChangeTime = std::max(state.lastChangeTime, action.changed[hand]);
+  }
+  return state;
+}
+
+template <typename State, typename Value>
+void writeState(State* state, const HandsState& hands, Value current) {
+  state->isActive = hands.active ? XR_TRUE : XR_FALSE;
+  state->currentState = current;
+  state->changedSinceLastSync = hands.changed ? XR_TRUE : XR_FALSE;
+  state->lastChangeTime = hands.lastChangeTime;
+}
+
 XRAPI_ATTR XrResult XRAPI_CALL getActionStateBoolean(XrSession handle,
                                                      const XrActionStateGetInfo* info,
                                                      XrActionStateBoolean* state) {
   return guard([&] {
     Action& action =
         readAction(handle, info, state, XR_TYPE_ACTION_STATE_BOOLEAN, XR_ACTION_TYPE_BOOLEAN_INPUT);
-    state->isActive = XR_FALSE;
-    state->currentState = state->changedSinceLastSync = XR_FALSE;
-    state->lastChangeTime = 0;
-    for (int hand : handsFor(action, info->subactionPath)) {
-      if (!action.active[hand]) continue;
-      state->isActive = XR_TRUE;
-      state->currentState |= action.value[hand] >= 0.5f;
-      state->changedSinceLastSync |= action.value[hand] != action.previous[hand];
-      state->lastChangeTime = std::max(state->lastChangeTime, action.changed[hand]);
-    }
+    const HandsState hands = readHands(action, info->subactionPath);
+    writeState(state, hands, hands.value >= 0.5f ? XR_TRUE : XR_FALSE);
     return XR_SUCCESS;
   });
 }
@@ -313,17 +334,8 @@ XRAPI_ATTR XrResult XRAPI_CALL getActionStateFloat(XrSession handle,
   return guard([&] {
     Action& action =
         readAction(handle, info, state, XR_TYPE_ACTION_STATE_FLOAT, XR_ACTION_TYPE_FLOAT_INPUT);
-    state->isActive = XR_FALSE;
-    state->currentState = 0.0f;
-    state->changedSinceLastSync = XR_FALSE;
-    state->lastChangeTime = 0;
-    for (int hand : handsFor(action, info->subactionPath)) {
-      if (!action.active[hand]) continue;
-      state->isActive = XR_TRUE;
-      state->currentState = std::max(state->currentState, action.value[hand]);
-      state->changedSinceLastSync |= action.value[hand] != action.previous[hand];
-      state->lastChangeTime = std::max(state->lastChangeTime, action.changed[hand]);
-    }
+    const HandsState hands = readHands(action, info->subactionPath);
+    writeState(state, hands, hands.value);
     return XR_SUCCESS;
   });
 }
@@ -333,10 +345,7 @@ XRAPI_ATTR XrResult XRAPI_CALL getActionStateVector2f(XrSession handle,
                                                       XrActionStateVector2f* state) {
   return guard([&] {
     readAction(handle, info, state, XR_TYPE_ACTION_STATE_VECTOR2F, XR_ACTION_TYPE_VECTOR2F_INPUT);
-    state->isActive = XR_FALSE;  // the simulated user never touches a stick
-    state->currentState = {0.0f, 0.0f};
-    state->changedSinceLastSync = XR_FALSE;
-    state->lastChangeTime = 0;
+    writeState(state, HandsState{}, XrVector2f{0.0f, 0.0f});  // the user never touches a stick
     return XR_SUCCESS;
   });
 }

@@ -7,6 +7,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/render/image.hpp"
 #include "engine/render/image_barrier.hpp"
+#include "engine/render/scope_fail.hpp"
 
 namespace curvefold::simxr {
 
@@ -82,47 +83,43 @@ SwapchainImages::SwapchainImages(const VulkanBinding& binding, VkFormat format, 
       height_(height),
       layers_(layers),
       depth_(isDepth(format)) {
-  try {
-    for (std::uint32_t i = 0; i < count; ++i) {
-      VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-      info.imageType = VK_IMAGE_TYPE_2D;
-      info.format = format;
-      info.extent = {width, height, 1};
-      info.mipLevels = 1;
-      info.arrayLayers = layers;
-      info.samples = VK_SAMPLE_COUNT_1_BIT;
-      info.tiling = VK_IMAGE_TILING_OPTIMAL;
-      info.usage = usage | (depth_ ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-      info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      VkImage image = VK_NULL_HANDLE;
-      check(vkCreateImage(binding.device, &info, nullptr, &image), "vkCreateImage");
-      images_.push_back(image);
-      VkMemoryRequirements needs;
-      vkGetImageMemoryRequirements(binding.device, image, &needs);
-      VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-      allocate.allocationSize = needs.size;
-      allocate.memoryTypeIndex = memoryType(binding.physicalDevice, needs.memoryTypeBits,
-                                            VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-      VkDeviceMemory memory = VK_NULL_HANDLE;
-      check(vkAllocateMemory(binding.device, &allocate, nullptr, &memory), "vkAllocateMemory");
-      memory_.push_back(memory);
-      check(vkBindImageMemory(binding.device, image, memory, 0), "vkBindImageMemory");
-    }
-    // The extension promises images in their attachment layout, owned by the app's queue.
-    const VkImageLayout layout = depth_ ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
-                                        : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    submitOnce([&](VkCommandBuffer commands) {
-      for (VkImage image : images_) {
-        const VkAccessFlags write = depth_ ? VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
-                                           : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-        imageBarrier(commands, image, aspectOf(format), {},
-                     {layout, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, write}, layers);
-      }
-    });
-  } catch (...) {
-    release();
-    throw;
+  const ScopeFail cleanup([this] { release(); });
+  for (std::uint32_t i = 0; i < count; ++i) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = layers;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage | (depth_ ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImage image = VK_NULL_HANDLE;
+    check(vkCreateImage(binding.device, &info, nullptr, &image), "vkCreateImage");
+    images_.push_back(image);
+    VkMemoryRequirements needs;
+    vkGetImageMemoryRequirements(binding.device, image, &needs);
+    VkMemoryAllocateInfo allocate{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    allocate.allocationSize = needs.size;
+    allocate.memoryTypeIndex = memoryType(binding.physicalDevice, needs.memoryTypeBits,
+                                          VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    check(vkAllocateMemory(binding.device, &allocate, nullptr, &memory), "vkAllocateMemory");
+    memory_.push_back(memory);
+    check(vkBindImageMemory(binding.device, image, memory, 0), "vkBindImageMemory");
   }
+  // The extension promises images in their attachment layout, owned by the app's queue.
+  const VkImageLayout layout = depth_ ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+                                      : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  submitOnce([&](VkCommandBuffer commands) {
+    for (VkImage image : images_) {
+      const VkAccessFlags write = depth_ ? VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT
+                                         : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+      imageBarrier(commands, image, aspectOf(format), {},
+                   {layout, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, write}, layers);
+    }
+  });
 }
 
 SwapchainImages::~SwapchainImages() {
