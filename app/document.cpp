@@ -40,7 +40,7 @@ void startFromCommittedFolds(Document& doc) {
   if (doc.session->foldCount() == 0) return;
   doc.baseFolds = doc.design().folds;
   const Pose worldFromSheet = doc.core->worldFromSheet();
-  const Handedness handedness = doc.core->handedness();
+  const HandSide handedness = doc.core->handedness();
   Sheet folded = doc.session->fixed();
   doc.core.reset();
   doc.session = std::make_unique<FoldSession>(std::move(folded));
@@ -55,7 +55,7 @@ void startFromCommittedFolds(Document& doc) {
 }
 
 Document makeDocument(const Design& design, const std::string& name, const Pose& worldFromSheet,
-                      Handedness handedness) {
+                      HandSide handedness) {
   Document doc;
   doc.surface = design.surface;
   doc.session = std::make_unique<FoldSession>(initialSheet(design, name));

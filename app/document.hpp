@@ -40,7 +40,7 @@ void startFromCommittedFolds(Document& doc);
 // A document from a design (its folds remade live, so they can be undone), with the sheet at
 // `worldFromSheet`.
 Document makeDocument(const Design& design, const std::string& name,
-                      const Pose& worldFromSheet = {}, Handedness handedness = Handedness::Right);
+                      const Pose& worldFromSheet = {}, HandSide handedness = HandSide::Right);
 
 // The design's name for its files and titles: "cone" for a surface, "bowl" for
 // "designs/bowl.curvefold.json" (or its autosave); "design" for none.

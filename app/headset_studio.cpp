@@ -58,7 +58,7 @@ void HeadsetStudio::nameDesign(const std::string& name) {
 }
 
 void HeadsetStudio::replace(const Design& design, const std::string& name) {
-  const Handedness handedness = doc_.core->handedness();
+  const HandSide handedness = doc_.core->handedness();
   Document fresh = makeDocument(design, name, options_.sheetFrame, handedness);
   if (host_.documentReplacing) host_.documentReplacing(name);
   doc_.core.reset();

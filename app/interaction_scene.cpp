@@ -63,21 +63,15 @@ void addControllerModels(Scene& scene, const InteractionCore& core, const InputF
 void addHandModel(Scene& scene, const HandJoints& hand, const glm::vec4& color) {
   if (!hand.tracked) return;
   auto at = [&](HandJoint joint) { return glm::vec3(hand[joint].position); };
-  for (int i = static_cast<int>(HandJoint::Wrist); i < kHandJointCount; ++i) {
-    const auto joint = static_cast<HandJoint>(i);
-    const bool tip = joint == HandJoint::ThumbTip || joint == HandJoint::IndexTip ||
-                     joint == HandJoint::MiddleTip || joint == HandJoint::RingTip ||
-                     joint == HandJoint::LittleTip;
-    scene.markers.push_back({at(joint), tip ? 0.005f : 0.007f, color});
+  for (HandJoint joint : kHandJoints) {
+    if (joint == HandJoint::Palm) continue;  // inside the hand
+    scene.markers.push_back({at(joint), isFingerTip(joint) ? 0.005f : 0.007f, color});
   }
   // Each finger's chain from the wrist: metacarpal to tip (the thumb has no intermediate).
-  for (HandJoint first :
-       {HandJoint::ThumbMetacarpal, HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
-        HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
-    const int count = first == HandJoint::ThumbMetacarpal ? 4 : 5;
+  for (HandFinger finger : kHandFingers) {
     glm::vec3 from = at(HandJoint::Wrist);
-    for (int k = 0; k < count; ++k) {
-      const glm::vec3 to = at(static_cast<HandJoint>(static_cast<int>(first) + k));
+    for (HandJoint joint : fingerJoints(finger)) {
+      const glm::vec3 to = at(joint);
       scene.lines.push_back({from, to, color});
       from = to;
     }

@@ -1,59 +1,11 @@
 #include "interaction/hand_input.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 namespace curvefold {
-
-namespace {
-
-// The smoothing factor of a first-order low-pass filter with this cutoff, for a step of dt.
-double smoothing(double cutoffHz, double dt) {
-  const double tau = 1.0 / (2.0 * std::numbers::pi * cutoffHz);
-  return 1.0 / (1.0 + tau / dt);
-}
-
-}  // namespace
-
-glm::dvec3 OneEuroFilter::filter(const glm::dvec3& sample, double time) {
-  if (!last_) {
-    last_ = sample;
-    lastDerivative_ = glm::dvec3(0.0);
-    lastTime_ = time;
-    return sample;
-  }
-  const double dt = time - lastTime_;
-  if (!(dt > 0.0)) return *last_;  // the same instant again: nothing new to smooth
-  lastTime_ = time;
-  const glm::dvec3 derivative = (sample - *last_) / dt;
-  lastDerivative_ += smoothing(derivativeCutoff_, dt) * (derivative - lastDerivative_);
-  const double cutoff = minCutoff_ + beta_ * glm::length(lastDerivative_);
-  *last_ += smoothing(cutoff, dt) * (sample - *last_);
-  return *last_;
-}
-
-glm::dquat OneEuroRotationFilter::filter(const glm::dquat& sample, double time) {
-  if (!last_) {
-    last_ = sample;
-    lastSpeed_ = 0.0;
-    lastTime_ = time;
-    return sample;
-  }
-  const double dt = time - lastTime_;
-  if (!(dt > 0.0)) return *last_;
-  lastTime_ = time;
-  // The shorter way round: q and -q are one orientation.
-  const glm::dquat target = glm::dot(*last_, sample) < 0.0 ? -sample : sample;
-  const double turned = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(*last_, target))));
-  lastSpeed_ += smoothing(derivativeCutoff_, dt) * (turned / dt - lastSpeed_);
-  const double cutoff = minCutoff_ + beta_ * lastSpeed_;
-  *last_ = glm::normalize(glm::slerp(*last_, target, smoothing(cutoff, dt)));
-  return *last_;
-}
 
 glm::dvec3 pinchPoint(const HandJoints& hand) {
   return 0.5 * (hand[HandJoint::ThumbTip].position + hand[HandJoint::IndexTip].position);
@@ -66,18 +18,16 @@ double pinchDistance(const HandJoints& hand) {
 double fingertipsToPalm(const HandJoints& hand) {
   const glm::dvec3 palm = hand[HandJoint::Palm].position;
   double sum = 0.0;
-  for (HandJoint tip :
-       {HandJoint::IndexTip, HandJoint::MiddleTip, HandJoint::RingTip, HandJoint::LittleTip})
-    sum += glm::distance(hand[tip].position, palm);
+  for (HandFinger finger : kFingersButThumb)
+    sum += glm::distance(hand[tipOf(finger)].position, palm);
   return sum / 4.0;
 }
 
 glm::dvec3 rigidCentre(const HandJoints& hand) {
   glm::dvec3 sum = hand[HandJoint::Palm].position + hand[HandJoint::Wrist].position;
-  for (HandJoint metacarpal : {HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
-                               HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
-    sum += hand[metacarpal].position;
-    sum += hand[static_cast<HandJoint>(static_cast<int>(metacarpal) + 1)].position;
+  for (HandFinger finger : kFingersButThumb) {
+    sum += hand[metacarpalOf(finger)].position;
+    sum += hand[knuckleOf(finger)].position;
   }
   return sum / 10.0;
 }
@@ -86,10 +36,9 @@ glm::dvec3 handPointingDirection(const HandJoints& hand) {
   // From the back of the hand (wrist and metacarpal bases) to the knuckles: nine joints a pinch
   // does not move, averaged so one joint's jitter turns the ray less.
   glm::dvec3 back = hand[HandJoint::Wrist].position, knuckles(0.0);
-  for (HandJoint metacarpal : {HandJoint::IndexMetacarpal, HandJoint::MiddleMetacarpal,
-                               HandJoint::RingMetacarpal, HandJoint::LittleMetacarpal}) {
-    back += hand[metacarpal].position;
-    knuckles += hand[static_cast<HandJoint>(static_cast<int>(metacarpal) + 1)].position;
+  for (HandFinger finger : kFingersButThumb) {
+    back += hand[metacarpalOf(finger)].position;
+    knuckles += hand[knuckleOf(finger)].position;
   }
   const glm::dvec3 along = 0.25 * knuckles - 0.2 * back;
   const double length = glm::length(along);
@@ -98,20 +47,20 @@ glm::dvec3 handPointingDirection(const HandJoints& hand) {
 
 HandInput::HandInput(const InteractionThresholds& thresholds)
     : thresholds_(thresholds),
-      pinchFilter_(thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
-                   thresholds_.handFilterDerivativeCutoff),
-      palmFilter_(thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
-                  thresholds_.handFilterDerivativeCutoff),
-      aimFilter_(thresholds_.handAimFilterMinCutoff, thresholds_.handAimFilterBeta,
-                 thresholds_.handFilterDerivativeCutoff),
-      palmRotationFilter_(thresholds_.handRotationFilterMinCutoff,
-                          thresholds_.handRotationFilterBeta,
-                          thresholds_.handFilterDerivativeCutoff) {}
+      pinchFilter_({thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
+                    thresholds_.handFilterDerivativeCutoff}),
+      palmFilter_({thresholds_.handFilterMinCutoff, thresholds_.handFilterBeta,
+                   thresholds_.handFilterDerivativeCutoff}),
+      aimFilter_({thresholds_.handAimFilterMinCutoff, thresholds_.handAimFilterBeta,
+                  thresholds_.handFilterDerivativeCutoff}),
+      palmRotationFilter_({thresholds_.handRotationFilterMinCutoff,
+                           thresholds_.handRotationFilterBeta,
+                           thresholds_.handFilterDerivativeCutoff}) {}
 
 void HandInput::updateClosed(const HandJoints& hand, Gestures& gestures) const {
   const double curl = fingertipsToPalm(hand);
-  if (gestures.closed && curl >= thresholds_.grabRelease) gestures.closed = false;
-  if (!gestures.closed && curl <= thresholds_.grabPress) gestures.closed = true;
+  if (gestures.closed && curl >= thresholds_.handOpenAboveMetres) gestures.closed = false;
+  if (!gestures.closed && curl <= thresholds_.handClosedBelowMetres) gestures.closed = true;
 }
 
 template <std::size_t N>

@@ -10,9 +10,11 @@
 
 #include <array>
 #include <optional>
+#include <span>
 
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
+#include "interaction/one_euro_filter.hpp"
 
 namespace curvefold {
 
@@ -47,6 +49,56 @@ enum class HandJoint : int {
 };
 inline constexpr int kHandJointCount = 26;
 
+static_assert(static_cast<int>(HandJoint::LittleTip) + 1 == kHandJointCount);
+
+// Every joint, in order: the enum's values index it, as they do HandJoints.
+inline constexpr std::array<HandJoint, kHandJointCount> kHandJoints = [] {
+  std::array<HandJoint, kHandJointCount> joints{};
+  for (int i = 0; i < kHandJointCount; ++i) joints[i] = static_cast<HandJoint>(i);
+  return joints;
+}();
+
+// The fingers, thumb first (the order of their joints in HandJoint).
+enum class HandFinger { Thumb, Index, Middle, Ring, Little };
+inline constexpr std::array<HandFinger, 5> kHandFingers = {
+    HandFinger::Thumb, HandFinger::Index, HandFinger::Middle, HandFinger::Ring, HandFinger::Little};
+// The four fingers beside the thumb, index first.
+inline constexpr std::array<HandFinger, 4> kFingersButThumb = {
+    HandFinger::Index, HandFinger::Middle, HandFinger::Ring, HandFinger::Little};
+
+// A finger's joints are those from its metacarpal (at the wrist) to its tip, in order: metacarpal,
+// proximal (the knuckle), intermediate, distal, tip; the thumb has no intermediate joint.
+struct FingerJointRange {
+  HandJoint metacarpal, tip;
+};
+inline constexpr FingerJointRange kFingerJointRanges[] = {
+    {HandJoint::ThumbMetacarpal, HandJoint::ThumbTip},
+    {HandJoint::IndexMetacarpal, HandJoint::IndexTip},
+    {HandJoint::MiddleMetacarpal, HandJoint::MiddleTip},
+    {HandJoint::RingMetacarpal, HandJoint::RingTip},
+    {HandJoint::LittleMetacarpal, HandJoint::LittleTip}};
+
+constexpr std::span<const HandJoint> fingerJoints(HandFinger finger) {
+  const FingerJointRange range = kFingerJointRanges[static_cast<std::size_t>(finger)];
+  const auto first = static_cast<std::size_t>(range.metacarpal);
+  return std::span(kHandJoints).subspan(first, static_cast<std::size_t>(range.tip) - first + 1);
+}
+constexpr HandJoint metacarpalOf(HandFinger finger) {
+  return fingerJoints(finger).front();
+}
+// The knuckle: the proximal joint, where the finger leaves the palm.
+constexpr HandJoint knuckleOf(HandFinger finger) {
+  return fingerJoints(finger)[1];
+}
+constexpr HandJoint tipOf(HandFinger finger) {
+  return fingerJoints(finger).back();
+}
+constexpr bool isFingerTip(HandJoint joint) {
+  for (HandFinger finger : kHandFingers)
+    if (joint == tipOf(finger)) return true;
+  return false;
+}
+
 // One hand's joints as a runtime located them (poses in the base space), or untracked. Each joint's
 // -Z points along its bone towards the fingertip and +Y out of the back of the hand.
 struct HandJoints {
@@ -70,41 +122,6 @@ inline constexpr HandTap kSheetHandTaps[] = {{HandJoint::IndexTip, Button::Panel
                                              {HandJoint::LittleTip, Button::Cancel}};
 // The dominant hand, not pinching: middle switches hands.
 inline constexpr HandTap kPointHandTaps[] = {{HandJoint::MiddleTip, Button::SwitchHands}};
-
-// The One Euro filter (Casiez, Roussel and Vogel, CHI 2012) on a point: a low-pass filter whose
-// cutoff rises with speed, so a hand at rest is steady and a moving hand is not left behind.
-class OneEuroFilter {
- public:
-  OneEuroFilter(double minCutoff, double beta, double derivativeCutoff = 1.0)
-      : minCutoff_(minCutoff), beta_(beta), derivativeCutoff_(derivativeCutoff) {}
-
-  // The filtered point for a sample at `time` (seconds, never going back).
-  glm::dvec3 filter(const glm::dvec3& sample, double time);
-  void reset() { last_.reset(); }
-
- private:
-  double minCutoff_, beta_, derivativeCutoff_;
-  std::optional<glm::dvec3> last_;
-  glm::dvec3 lastDerivative_{0.0};
-  double lastTime_ = 0.0;
-};
-
-// The same filter on an orientation: the step towards each sample is a slerp, its speed the angle
-// turned per second.
-class OneEuroRotationFilter {
- public:
-  OneEuroRotationFilter(double minCutoff, double beta, double derivativeCutoff = 1.0)
-      : minCutoff_(minCutoff), beta_(beta), derivativeCutoff_(derivativeCutoff) {}
-
-  glm::dquat filter(const glm::dquat& sample, double time);
-  void reset() { last_.reset(); }
-
- private:
-  double minCutoff_, beta_, derivativeCutoff_;
-  std::optional<glm::dquat> last_;
-  double lastSpeed_ = 0.0;
-  double lastTime_ = 0.0;
-};
 
 // Makes input frames from hands' joints, a role at a time (the other may be a controller). Keeps
 // each gesture's state between frames (the hysteresis and the filters), so feed it every frame in
@@ -143,8 +160,8 @@ class HandInput {
                   std::uint32_t& buttons) const;
 
   InteractionThresholds thresholds_;
-  OneEuroFilter pinchFilter_, palmFilter_;
-  OneEuroRotationFilter aimFilter_, palmRotationFilter_;
+  OneEuroFilter<glm::dvec3> pinchFilter_, palmFilter_;
+  OneEuroFilter<glm::dquat> aimFilter_, palmRotationFilter_;
   Gestures point_, sheet_;
   double pinchOpenness_ = 1.0;
 };

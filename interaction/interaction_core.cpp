@@ -11,7 +11,7 @@ const std::vector<TriangleIndex> kNoTriangles;
 }  // namespace
 
 InteractionCore::InteractionCore(FoldSession& session, const Pose& worldFromSheet,
-                                 Handedness handedness, const InteractionThresholds& thresholds)
+                                 HandSide handedness, const InteractionThresholds& thresholds)
     : session_(session),
       thresholds_(thresholds),
       handedness_(handedness),
@@ -124,7 +124,7 @@ void InteractionCore::handleButtons(const InputFrame& frame) {
     clutched_ = false;
     selectHeld_ = false;
     hover_.reset();
-    handedness_ = handedness_ == Handedness::Right ? Handedness::Left : Handedness::Right;
+    handedness_ = otherHand(handedness_);
     emit(InteractionEventKind::SwitchHands, frame.time);
   }
   if (wasPressed(Button::Cancel)) endDrag(false, frame.time);

@@ -13,6 +13,7 @@
 
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "interaction/hand_side.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/surface_picker.hpp"
 
@@ -36,15 +37,16 @@ struct InteractionThresholds {
   // A drag folds only once the target has moved this far (metres) from the grabbed point, so a
   // click without intent adds no fold; a release before that cancels.
   double minimumDragDistance = 0.002;
-  // Bare hands (interaction/hand_input.hpp): a pinch starts when the thumb and index tips come this
-  // close and ends when they part this far; a hand is closed (the clutch) when its fingertips come
-  // this close to the palm on average, and open again this far. The gaps between press and release
-  // are wider than tracking jitter, so jitter neither starts nor drops a fold. A tap (the thumb on
-  // another fingertip) uses the pinch distances.
+  // Bare hands (interaction/hand_input.hpp), distances in metres, not the 0..1 values above: a
+  // pinch starts when the thumb and index tips come this close and ends when they part this far; a
+  // hand is closed (the clutch) when its fingertips come within handClosedBelowMetres of the palm
+  // on average (fingertipsToPalm), and open again from handOpenAboveMetres. The gaps between press
+  // and release are wider than tracking jitter, so jitter neither starts nor drops a fold. A tap
+  // (the thumb on another fingertip) uses the pinch distances.
   double pinchPress = 0.015;
   double pinchRelease = 0.035;
-  double grabPress = 0.055;
-  double grabRelease = 0.08;
+  double handClosedBelowMetres = 0.055;
+  double handOpenAboveMetres = 0.08;
   // The One Euro filters (Casiez et al., CHI 2012) on a hand's pinch point and palm: cutoff at
   // rest (Hz), how fast it rises with speed (per m/s), and the cutoff of the speed estimate (Hz).
   // Tuned on the example recordings with 2 mm of jitter (docs/design.md 5b): the point is steady
@@ -71,9 +73,6 @@ enum class InteractionState { Idle, Hover, Dragging };
 // neither hovers nor grabs (a drag already under way goes on), so pointing at a button over the
 // sheet does not fold it.
 enum class PointTarget { Sheet, Panel };
-
-// Which hand is dominant (holds the point). The source maps controllers to roles by it.
-enum class Handedness { Right, Left };
 
 enum class InteractionEventKind { Grab, Commit, Cancel, Undo, Redo, SwitchHands };
 
@@ -105,7 +104,7 @@ struct HoverPoint {
 class InteractionCore {
  public:
   InteractionCore(FoldSession& session, const Pose& worldFromSheet,
-                  Handedness handedness = Handedness::Right,
+                  HandSide handedness = HandSide::Right,
                   const InteractionThresholds& thresholds = {});
 
   // Consumes one frame. Frames must come in time order.
@@ -127,7 +126,8 @@ class InteractionCore {
   bool twoHanded() const { return twoHanded_; }
   // Puts the sheet back where the session started it, at scale 1 (the panel's "reset view").
   void resetView();
-  Handedness handedness() const { return handedness_; }
+  // The dominant hand, which holds the point (sources map controllers and hands to roles by it).
+  HandSide handedness() const { return handedness_; }
   const std::optional<HoverPoint>& hover() const { return hover_; }
   // While dragging: the grabbed point's start and its current target, in sheet coordinates.
   glm::dvec3 grabStart() const { return session_.grabbedPoint(); }
@@ -174,7 +174,7 @@ class InteractionCore {
 
   FoldSession& session_;
   InteractionThresholds thresholds_;
-  Handedness handedness_;
+  HandSide handedness_;
   InteractionState state_ = InteractionState::Idle;
   std::vector<InteractionEvent> events_;
   std::vector<HapticPulse> haptics_;

@@ -368,7 +368,7 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
   const std::string handedness = reader.text(document, "handedness", "right");
   if (handedness != "right" && handedness != "left")
     reader.fail("handedness", "must be \"right\" or \"left\"");
-  header.handedness = handedness == "left" ? Handedness::Left : Handedness::Right;
+  header.handedness = handedness == "left" ? HandSide::Left : HandSide::Right;
   // The engine builds the sheet here or refuses it (a parameter it does not know), before any
   // symmetry is checked against it.
   std::optional<Sheet> initial;

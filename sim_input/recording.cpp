@@ -102,9 +102,9 @@ class LineReader : public JsonReader {
     }
     const std::string& hand = string(member(value, "handedness", ""), "handedness");
     if (hand == "right")
-      header.handedness = Handedness::Right;
+      header.handedness = HandSide::Right;
     else if (hand == "left")
-      header.handedness = Handedness::Left;
+      header.handedness = HandSide::Left;
     else
       fail("handedness", "unknown handedness " + quotedExcerpt(hand) + " (expected right or left)");
     const std::string& units = string(member(value, "units", ""), "units");
@@ -236,16 +236,12 @@ std::string_view buttonName(Button button) {
   return "unknown";
 }
 
-std::string_view handednessName(Handedness handedness) {
-  return handedness == Handedness::Left ? "left" : "right";
-}
-
 std::string headerLine(const RecordingHeader& header) {
   ordered_json value;
   value["format"] = kRecordingFormat;
   value["version"] = kRecordingVersion;
   value["source"] = header.source;
-  value["handedness"] = handednessName(header.handedness);
+  value["handedness"] = handSideName(header.handedness);
   value["units"] = "m";
   value["rate"] = header.rate;
   value["sheet_frame"] = poseJson(header.sheetFrame);

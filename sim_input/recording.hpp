@@ -65,8 +65,8 @@ inline constexpr std::string_view kRecordingSources[] = {"synthetic", "script", 
 
 struct RecordingHeader {
   std::string source = "synthetic";
-  Handedness handedness = Handedness::Right;
-  Pose sheetFrame;  // the initial world_from_sheet
+  HandSide handedness = HandSide::Right;  // the dominant hand
+  Pose sheetFrame;                        // the initial world_from_sheet
   InitialSurface surface;
   double rate = 90.0;  // nominal frames per second (informative)
   // A headset session with its panel: replayed with the panel running (without drawing), so the
@@ -116,7 +116,5 @@ void writeRecording(const Recording& recording, const std::filesystem::path& pat
 // The button names used in the file ("cancel", "undo", "redo", "switch_hands", "panel",
 // "take_suggestion", "next_suggestion").
 std::string_view buttonName(Button button);
-
-std::string_view handednessName(Handedness handedness);
 
 }  // namespace curvefold

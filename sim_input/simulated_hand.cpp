@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -14,7 +15,7 @@ namespace {
 using J = HandJoint;
 
 struct Finger {
-  J metacarpal;        // its first joint; proximal, intermediate, distal and tip follow
+  HandFinger which;    // not the thumb, which is placed on its own
   double across;       // the knuckle's place across the hand (right hand, +X away from the thumb)
   double scale;        // its length against the index finger's
   glm::dvec3 contact;  // where its tip meets the thumb's in a tap
@@ -22,10 +23,10 @@ struct Finger {
 
 // A right hand in the palm's frame (metres). The left hand is its mirror image across X.
 constexpr std::array<Finger, 4> kFingers = {{
-    {J::IndexMetacarpal, -0.021, 1.0, {-0.045, -0.035, -0.075}},
-    {J::MiddleMetacarpal, 0.0, 1.08, {-0.03, -0.045, -0.065}},
-    {J::RingMetacarpal, 0.019, 1.0, {-0.015, -0.05, -0.055}},
-    {J::LittleMetacarpal, 0.036, 0.82, {-0.002, -0.05, -0.045}},
+    {HandFinger::Index, -0.021, 1.0, {-0.045, -0.035, -0.075}},
+    {HandFinger::Middle, 0.0, 1.08, {-0.03, -0.045, -0.065}},
+    {HandFinger::Ring, 0.019, 1.0, {-0.015, -0.05, -0.055}},
+    {HandFinger::Little, 0.036, 0.82, {-0.002, -0.05, -0.045}},
 }};
 constexpr glm::dvec3 kWrist{0.0, 0.0, 0.05};
 constexpr double kKnuckles = -0.045;                 // the knuckles' Z
@@ -33,10 +34,6 @@ constexpr double kBones[3] = {0.045, 0.027, 0.022};  // proximal, intermediate, 
 constexpr double kOpenCurl[3] = {0.08, 0.08, 0.06};  // radians at each knuckle, curling palmwards
 constexpr double kClosedCurl[3] = {1.5, 1.6, 1.0};
 constexpr double kTipGap = 0.003;  // between touching tips (skin and tracking)
-
-J joint(J first, int offset) {
-  return static_cast<J>(static_cast<int>(first) + offset);
-}
 
 // Positions in the palm's frame, right hand.
 std::array<glm::dvec3, kHandJointCount> rightHandPositions(const HandPosture& posture) {
@@ -51,16 +48,18 @@ std::array<glm::dvec3, kHandJointCount> rightHandPositions(const HandPosture& po
 
   std::optional<glm::dvec3> contact;
   for (const Finger& finger : kFingers) {
+    // Metacarpal, knuckle, then the three joints the phalanges end at: intermediate, distal, tip.
+    const std::span<const J> chain = fingerJoints(finger.which);
     const glm::dvec3 knuckle(finger.across, 0.0, kKnuckles);
-    at(finger.metacarpal) = glm::dvec3(0.4 * finger.across, 0.0, 0.045);
-    at(joint(finger.metacarpal, 1)) = knuckle;
-    if (touching && *touching == joint(finger.metacarpal, 4)) {
+    at(metacarpalOf(finger.which)) = glm::dvec3(0.4 * finger.across, 0.0, 0.045);
+    at(knuckleOf(finger.which)) = knuckle;
+    if (touching && *touching == chain.back()) {
       // Bent to meet the thumb: the middle joints between the knuckle and the contact, sagging.
       contact = finger.contact;
       const glm::dvec3 toward = finger.contact - knuckle;
-      at(joint(finger.metacarpal, 2)) = knuckle + 0.5 * toward + glm::dvec3(0.0, -0.012, 0.0);
-      at(joint(finger.metacarpal, 3)) = knuckle + 0.8 * toward + glm::dvec3(0.0, -0.006, 0.0);
-      at(joint(finger.metacarpal, 4)) = finger.contact + glm::dvec3(0.5 * kTipGap, 0.0, 0.0);
+      at(chain[2]) = knuckle + 0.5 * toward + glm::dvec3(0.0, -0.012, 0.0);
+      at(chain[3]) = knuckle + 0.8 * toward + glm::dvec3(0.0, -0.006, 0.0);
+      at(tipOf(finger.which)) = finger.contact + glm::dvec3(0.5 * kTipGap, 0.0, 0.0);
       continue;
     }
     const double* curl = closed ? kClosedCurl : kOpenCurl;
@@ -69,7 +68,7 @@ std::array<glm::dvec3, kHandJointCount> rightHandPositions(const HandPosture& po
     for (int bone = 0; bone < 3; ++bone) {
       angle += curl[bone];
       q += finger.scale * kBones[bone] * glm::dvec3(0.0, -std::sin(angle), -std::cos(angle));
-      at(joint(finger.metacarpal, 2 + bone)) = q;
+      at(chain[2 + bone]) = q;
     }
   }
   at(J::ThumbMetacarpal) = {-0.025, -0.01, 0.035};
@@ -108,14 +107,13 @@ HandJoints handInPalmFrame(HandSide side, const HandPosture& posture) {
   for (int i = 0; i < kHandJointCount; ++i) hand.joints[i].position = p[i];
   // Palm and wrist share the palm's frame; each other joint looks along its bone (a tip along
   // the bone before it).
-  for (J first : {J::ThumbMetacarpal, J::IndexMetacarpal, J::MiddleMetacarpal, J::RingMetacarpal,
-                  J::LittleMetacarpal}) {
-    const int count = first == J::ThumbMetacarpal ? 4 : 5;
-    for (int k = 0; k < count; ++k) {
-      const int here = static_cast<int>(first) + k;
-      const int next = k + 1 < count ? here + 1 : here;
-      const int from = k + 1 < count ? here : here - 1;
-      hand.joints[here].orientation = boneOrientation(p[next] - p[from]);
+  for (HandFinger finger : kHandFingers) {
+    const std::span<const J> chain = fingerJoints(finger);
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const bool tip = k + 1 == chain.size();
+      const J next = tip ? chain[k] : chain[k + 1];
+      const J from = tip ? chain[k - 1] : chain[k];
+      hand[chain[k]].orientation = boneOrientation(hand[next].position - hand[from].position);
     }
   }
   return hand;

@@ -9,10 +9,9 @@
 #include <random>
 
 #include "interaction/hand_input.hpp"
+#include "interaction/hand_side.hpp"
 
 namespace curvefold {
-
-enum class HandSide { Left, Right };
 
 enum class HandShape { Open, Pinch, Closed };
 

@@ -1,13 +1,15 @@
 // Bare hands as an input source (issue 16): HandInput reads the simulated runtime's hands back
 // into the frames they were made from (through 2 mm of jitter: no false press or release), its
 // filters steady a hand at rest without leaving a moving one behind, taps press their buttons
-// and a fist neither pinches nor taps.
+// and a fist neither pinches nor taps; the finger tables name every joint once.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <random>
 #include <regex>
+#include <set>
+#include <span>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -357,6 +359,32 @@ TEST(HandInput, PinchTapAndGrabHoldTheirStateInsideTheirBands) {
   EXPECT_EQ(clutch(0.079), 1.0);
   EXPECT_EQ(clutch(0.090), 0.0);  // open
   EXPECT_EQ(clutch(0.067), 0.0);
+}
+
+TEST(HandJoint, FingerChainsNameEveryJointOnceFromTheWristOut) {
+  // Palm, wrist and the five fingers' chains, thumb first, each chain in the enum's order from
+  // its metacarpal to its tip: every joint once.
+  std::map<HandJoint, int> seen{{HandJoint::Palm, 1}, {HandJoint::Wrist, 1}};
+  HandJoint last = HandJoint::Wrist;
+  for (HandFinger finger : kHandFingers) {
+    const std::span<const HandJoint> chain = fingerJoints(finger);
+    EXPECT_EQ(chain.size(), finger == HandFinger::Thumb ? 4u : 5u);
+    EXPECT_EQ(metacarpalOf(finger), chain.front());
+    EXPECT_EQ(knuckleOf(finger), chain[1]);
+    EXPECT_EQ(tipOf(finger), chain.back());
+    for (HandJoint joint : chain) {
+      EXPECT_LT(last, joint);
+      last = joint;
+      ++seen[joint];
+    }
+  }
+  EXPECT_EQ(seen.size(), std::size_t(kHandJointCount));
+  for (HandJoint joint : kHandJoints) EXPECT_EQ(seen[joint], 1);
+
+  const std::set<HandJoint> tips = {HandJoint::ThumbTip, HandJoint::IndexTip, HandJoint::MiddleTip,
+                                    HandJoint::RingTip, HandJoint::LittleTip};
+  for (HandJoint joint : kHandJoints) EXPECT_EQ(isFingerTip(joint), tips.contains(joint));
+  EXPECT_EQ(knuckleOf(HandFinger::Index), HandJoint::IndexProximal);
 }
 
 }  // namespace

@@ -345,7 +345,7 @@ TEST_F(Interaction, SwitchingHandsEndsTheDragAndSwapsRoles) {
   frame_.sheetHand.clutch = 1.0;
   frame_.buttons = static_cast<std::uint32_t>(Button::SwitchHands);
   send();
-  EXPECT_EQ(core_.handedness(), Handedness::Left);
+  EXPECT_EQ(core_.handedness(), HandSide::Left);
   EXPECT_TRUE(sawEvent(InteractionEventKind::SwitchHands));
   EXPECT_NE(core_.state(), InteractionState::Dragging);
   EXPECT_EQ(session_.foldCount(), 0u);

@@ -136,7 +136,7 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
 
   RecordingHeader header;
   header.source = "openxr";
-  header.handedness = Handedness::Left;
+  header.handedness = HandSide::Left;
   header.rate = 72.5;
   header.sheetFrame.position = {1.0 / 3.0, -0.0, 1e-17};
   header.sheetFrame.orientation = glm::normalize(glm::dquat(0.9, 0.1, -0.3, 1.0 / 7.0));
@@ -178,7 +178,7 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
   EXPECT_FALSE(read.truncated);
   EXPECT_EQ(read.lineCount, frames.size() + 1);
   EXPECT_EQ(read.header.source, "openxr");
-  EXPECT_EQ(read.header.handedness, Handedness::Left);
+  EXPECT_EQ(read.header.handedness, HandSide::Left);
   EXPECT_TRUE(sameBits(read.header.rate, 72.5));
   expectSameBits(read.header.sheetFrame, header.sheetFrame, "sheet_frame");
   const auto& surface = std::get<GeneratedSurface>(read.header.surface);

@@ -79,8 +79,8 @@ TEST(XrControls, EveryProfileHoldsThePosesAndFoldsOnBothHands) {
     }
   }
   EXPECT_EQ(profiles.size(), 5u);
-  EXPECT_EQ(sheetHandSide(Handedness::Right), XrHandSide::Left);
-  EXPECT_EQ(pointHandSide(Handedness::Left), XrHandSide::Left);
+  EXPECT_EQ(sheetHandSide(HandSide::Right), HandSide::Left);
+  EXPECT_EQ(pointHandSide(HandSide::Left), HandSide::Left);
 }
 
 }  // namespace

@@ -31,14 +31,13 @@ constexpr const char* kDefaultSurface = "square";
 
 // The crease pattern on a card held beside the non-dominant hand, outside it so it never covers
 // the sheet: 16 cm across, in the plane of the hand's x and y axes.
-void addHeldPanel(Scene& scene, const CreasePatternPanel& panel, const Pose& hand,
-                  XrHandSide side) {
+void addHeldPanel(Scene& scene, const CreasePatternPanel& panel, const Pose& hand, HandSide side) {
   constexpr double kWidth = 0.16;
   const glm::dvec2 low(panel.min), high(panel.max);
   const glm::dvec2 span = glm::max(high - low, glm::dvec2(1e-9));
   const double scale = kWidth / std::max(span.x, span.y);
   const glm::dvec2 centre = 0.5 * (low + high);
-  const double outward = side == XrHandSide::Left ? -1.0 : 1.0;
+  const double outward = side == HandSide::Left ? -1.0 : 1.0;
   const glm::dvec3 origin(outward * (0.06 + 0.5 * kWidth), 0.05, 0.0);
   auto world = [&](const glm::dvec2& p) {
     return glm::vec3(hand.apply(origin + glm::dvec3((p - centre) * scale, 0.0)));
@@ -60,7 +59,7 @@ void addHeldPanel(Scene& scene, const CreasePatternPanel& panel, const Pose& han
 XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   Design design;
   Pose sheetFrame = defaultSheetFrame();
-  Handedness handedness = options.leftHanded ? Handedness::Left : Handedness::Right;
+  HandSide handedness = options.leftHanded ? HandSide::Left : HandSide::Right;
   if (options.input.ends_with(".jsonl")) {
     // A recording: its surface, sheet frame and hands, to watch it through the XR path.
     const Recording recording = readRecording(options.input, {.allowTruncated = true});
@@ -213,7 +212,7 @@ void XrApp::processInput(XrTime displayTime) {
   InputFrame input;
   if (!input_->poll(program_->baseSpace(), displayTime, doc_.core->handedness(), seconds, input))
     return;
-  const Handedness handedness = doc_.core->handedness();
+  const HandSide handedness = doc_.core->handedness();
   startRecording();
   studio_->process(input, stats_);
   lastInput_ = input;

@@ -31,7 +31,7 @@ void XrHandTracking::detach() {
   }
 }
 
-HandJoints XrHandTracking::locate(XrHandSide side, XrSpace base, XrTime time) const {
+HandJoints XrHandTracking::locate(HandSide side, XrSpace base, XrTime time) const {
   HandJoints hand;
   const XrHandTrackerEXT tracker = trackers_[std::size_t(side)];
   if (tracker == XR_NULL_HANDLE) return hand;

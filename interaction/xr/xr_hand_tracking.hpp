@@ -8,10 +8,9 @@
 #include <openxr/openxr.h>
 
 #include "interaction/hand_input.hpp"
+#include "interaction/hand_side.hpp"
 
 namespace curvefold {
-
-enum class XrHandSide { Left = 0, Right = 1 };
 
 class XrHandTracking {
  public:
@@ -29,7 +28,7 @@ class XrHandTracking {
 
   // A hand's joints at `time` in `base`; untracked when the runtime does not track it now (no
   // hand in view, a controller held, the session not focused).
-  HandJoints locate(XrHandSide side, XrSpace base, XrTime time) const;
+  HandJoints locate(HandSide side, XrSpace base, XrTime time) const;
 
  private:
   PFN_xrCreateHandTrackerEXT createTracker_ = nullptr;

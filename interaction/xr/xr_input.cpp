@@ -52,12 +52,12 @@ Pose poseOf(const XrPosef& pose) {
 
 }  // namespace
 
-XrHandSide sheetHandSide(Handedness handedness) {
-  return handedness == Handedness::Right ? XrHandSide::Left : XrHandSide::Right;
+HandSide sheetHandSide(HandSide handedness) {
+  return otherHand(handedness);
 }
 
-XrHandSide pointHandSide(Handedness handedness) {
-  return handedness == Handedness::Right ? XrHandSide::Right : XrHandSide::Left;
+HandSide pointHandSide(HandSide handedness) {
+  return handedness;
 }
 
 XrPath XrInput::path(const std::string& text) const {
@@ -145,7 +145,7 @@ void XrInput::detach() {
   session_ = XR_NULL_HANDLE;
 }
 
-float XrInput::floatState(XrControl control, XrHandSide hand) const {
+float XrInput::floatState(XrControl control, HandSide hand) const {
   XrActionStateGetInfo info{XR_TYPE_ACTION_STATE_GET_INFO};
   info.action = action(control);
   info.subactionPath = handPaths_[std::size_t(hand)];
@@ -163,7 +163,7 @@ bool XrInput::booleanState(XrControl control, XrPath subaction) const {
   return state.isActive && state.currentState;
 }
 
-bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seconds,
+bool XrInput::poll(XrSpace base, XrTime time, HandSide handedness, double seconds,
                    InputFrame& frame) {
   frame = InputFrame{};
   frame.time = seconds;
@@ -174,8 +174,8 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
   sync.activeActionSets = &active;
   if (CHECK_XR(xrSyncActions(session_, &sync)) == XR_SESSION_NOT_FOCUSED) return false;
 
-  const XrHandSide sheet = sheetHandSide(handedness);
-  const XrHandSide point = pointHandSide(handedness);
+  const HandSide sheet = sheetHandSide(handedness);
+  const HandSide point = pointHandSide(handedness);
   if (handedness != handedness_) {
     // The hands swapped roles: what each role's hand was doing belongs to the other now.
     hands_.resetPointHand();
@@ -248,9 +248,9 @@ bool XrInput::poll(XrSpace base, XrTime time, Handedness handedness, double seco
   return true;
 }
 
-void XrInput::applyHaptics(std::span<const HapticPulse> pulses, Handedness handedness) {
+void XrInput::applyHaptics(std::span<const HapticPulse> pulses, HandSide handedness) {
   for (const HapticPulse& pulse : pulses) {
-    const XrHandSide side =
+    const HandSide side =
         pulse.hand == HapticHand::Sheet ? sheetHandSide(handedness) : pointHandSide(handedness);
     XrHapticActionInfo info{XR_TYPE_HAPTIC_ACTION_INFO};
     info.action = action(XrControl::Haptic);

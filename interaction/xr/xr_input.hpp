@@ -34,9 +34,9 @@ namespace curvefold {
 // What drives a role: a controller's actions or a bare hand's joints.
 enum class XrHandSource { Controller, Hand };
 
-// The hand that has the role for `handedness`.
-XrHandSide sheetHandSide(Handedness handedness);
-XrHandSide pointHandSide(Handedness handedness);
+// The hand that has the role for `handedness` (the dominant hand).
+HandSide sheetHandSide(HandSide handedness);
+HandSide pointHandSide(HandSide handedness);
 
 // How a profile's suggested bindings went: a runtime that does not know a profile refuses it,
 // which is not an error for us (another profile serves).
@@ -65,12 +65,12 @@ class XrInput {
   // Syncs the actions and reads both hands at `time` into a frame (time in seconds given by the
   // caller). Hands that are not located are untracked. Returns false, with an empty frame, when
   // the session is not focused (input then belongs to another application).
-  bool poll(XrSpace base, XrTime time, Handedness handedness, double seconds, InputFrame& frame);
+  bool poll(XrSpace base, XrTime time, HandSide handedness, double seconds, InputFrame& frame);
   // The point hand's aim pose at the last poll (none when not located): the frame carries only its
   // tip, the headset draws the controller along it.
   const std::optional<Pose>& pointAim() const { return pointAim_; }
   // Haptic pulses on the hands in their roles.
-  void applyHaptics(std::span<const HapticPulse> pulses, Handedness handedness);
+  void applyHaptics(std::span<const HapticPulse> pulses, HandSide handedness);
 
   // The current interaction profile of each hand ("" when none), from
   // xrGetCurrentInteractionProfile.
@@ -90,7 +90,7 @@ class XrInput {
  private:
   XrPath path(const std::string& text) const;
   XrAction action(XrControl control) const { return actions_.at(control); }
-  float floatState(XrControl control, XrHandSide hand) const;
+  float floatState(XrControl control, HandSide hand) const;
   std::optional<Pose> pointAim_;
   bool booleanState(XrControl control, XrPath subaction) const;
 
@@ -107,7 +107,7 @@ class XrInput {
   bool tracksHands_ = false;
   bool handsOnly_ = false;
   HandInput hands_;
-  Handedness handedness_ = Handedness::Right;
+  HandSide handedness_ = HandSide::Right;
   XrHandSource sheetSource_ = XrHandSource::Controller, pointSource_ = XrHandSource::Controller;
   HandJoints sheetJoints_, pointJoints_;
 };

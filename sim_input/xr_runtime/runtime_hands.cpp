@@ -16,11 +16,9 @@ HandTracker& trackerOf(XrHandTrackerEXT handle) {
 }
 
 // A joint's radius: fingertips are thinner than knuckles; palm and wrist span the hand.
-float jointRadius(int joint) {
-  if (joint <= static_cast<int>(HandJoint::Wrist)) return 0.02f;
-  const bool tip = joint == static_cast<int>(HandJoint::ThumbTip) ||
-                   (joint >= static_cast<int>(HandJoint::IndexTip) && (joint - 10) % 5 == 0);
-  return tip ? 0.007f : 0.01f;
+float jointRadius(HandJoint joint) {
+  if (joint == HandJoint::Palm || joint == HandJoint::Wrist) return 0.02f;
+  return isFingerTip(joint) ? 0.007f : 0.01f;
 }
 
 }  // namespace
@@ -85,7 +83,7 @@ XRAPI_ATTR XrResult XRAPI_CALL locateHandJoints(XrHandTrackerEXT handle,
     locations->isActive = active ? XR_TRUE : XR_FALSE;
     for (std::uint32_t i = 0; i < XR_HAND_JOINT_COUNT_EXT; ++i) {
       XrHandJointLocationEXT& joint = locations->jointLocations[i];
-      joint.radius = jointRadius(int(i));
+      joint.radius = jointRadius(kHandJoints[i]);
       joint.locationFlags = 0;
       joint.pose = toXr(Pose{});
       if (active) {

@@ -74,7 +74,7 @@ XRAPI_ATTR XrResult XRAPI_CALL createInstance(const XrInstanceCreateInfo* info, 
     if (instance->config.input)
       instance->user.emplace(instance->config.input->header.handedness);
     else
-      instance->user.emplace(Handedness::Right);
+      instance->user.emplace(HandSide::Right);
     instance->wallStart = std::chrono::steady_clock::now();
     gInstance = instance.release();
     *out = handleOf<XrInstance>(gInstance);

@@ -93,30 +93,29 @@ SimConfig SimConfig::fromEnvironment() {
 
 std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
                                                  std::string_view profile) {
-  const int sheet = handedness_ == Handedness::Right ? 0 : 1;
-  const int point = 1 - sheet;
+  const HandSide sheet = otherHand(handedness_), point = handedness_;
   std::array<HandState, 2> hands;
-  hands[sheet].tracked = frame.sheetHand.tracked;
-  hands[sheet].pose = frame.sheetHand.pose;
-  hands[point].tracked = frame.pointHand.tracked;
+  auto hand = [&](HandSide side) -> HandState& { return hands[std::size_t(side)]; };
+  hand(sheet).tracked = frame.sheetHand.tracked;
+  hand(sheet).pose = frame.sheetHand.pose;
+  hand(point).tracked = frame.pointHand.tracked;
   // The recorded aim, or straight ahead (-Z); the tip kXrTipOffset ahead of the aim pose is the
   // recorded point.
   const glm::dquat aim = frame.pointHand.aim.value_or(glm::dquat(1.0, 0.0, 0.0, 0.0));
-  hands[point].pose = {frame.pointHand.position + aim * glm::dvec3(0.0, 0.0, kXrTipOffset), aim};
+  hand(point).pose = {frame.pointHand.position + aim * glm::dvec3(0.0, 0.0, kXrTipOffset), aim};
 
   const XrProfileControls* controls = nullptr;
   for (const XrProfileControls& p : xrProfileControls())
     if (p.profile == profile) controls = &p;
   if (controls) {
-    auto press = [&](XrControl control, int hand, double value) {
-      const std::string_view side = hand == 0 ? "left" : "right";
+    auto press = [&](XrControl control, HandSide side, double value) {
       bool pressed = false;
       for (const XrControlBinding& binding : controls->bindings)
-        if (binding.control == control && binding.hand == side) {
+        if (binding.control == control && binding.hand == handSideName(side)) {
           // A click is all or nothing.
           const float v = binding.input.ends_with("/click") ? (value >= 0.5 ? 1.0f : 0.0f)
                                                             : static_cast<float>(value);
-          float& slot = hands[hand].inputs[std::string(binding.input)];
+          float& slot = hand(side).inputs[std::string(binding.input)];
           slot = std::max(slot, v);
           pressed = true;
         }
@@ -131,9 +130,8 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
     press(XrControl::Panel, sheet, frame.held(Button::Panel) ? 1.0 : 0.0);
     // An axis is set, not raised: it may be negative.
     for (const XrControlBinding& binding : controls->bindings)
-      if (binding.control == XrControl::Scroll && binding.hand == (point == 0 ? "left" : "right"))
-        hands[point].inputs[std::string(binding.input)] =
-            static_cast<float>(frame.pointHand.scroll);
+      if (binding.control == XrControl::Scroll && binding.hand == handSideName(point))
+        hand(point).inputs[std::string(binding.input)] = static_cast<float>(frame.pointHand.scroll);
     const double switching = frame.held(Button::SwitchHands) ? 1.0 : 0.0;
     if (!press(XrControl::SwitchHands, point, switching))
       press(XrControl::SwitchHands, sheet, switching);
@@ -143,16 +141,14 @@ std::array<HandState, 2> SimUser::controllersFor(const InputFrame& frame,
 }
 
 std::array<HandJoints, 2> SimUser::handsFor(const InputFrame& frame) {
-  const int sheet = handedness_ == Handedness::Right ? 0 : 1;
-  const int point = 1 - sheet;
-  auto side = [](int hand) { return hand == 0 ? HandSide::Left : HandSide::Right; };
+  const HandSide sheet = otherHand(handedness_), point = handedness_;
   std::array<HandJoints, 2> hands;
   if (frame.sheetHand.tracked)
-    hands[sheet] = simulatedHand(frame.sheetHand.pose, side(sheet), sheetHandPosture(frame));
+    hands[std::size_t(sheet)] = simulatedHand(frame.sheetHand.pose, sheet, sheetHandPosture(frame));
   if (frame.pointHand.tracked)
-    hands[point] = simulatedPointingHand(
+    hands[std::size_t(point)] = simulatedPointingHand(
         frame.pointHand.position, frame.pointHand.aim.value_or(glm::dquat(1.0, 0.0, 0.0, 0.0)),
-        side(point), pointHandPosture(frame));
+        point, pointHandPosture(frame));
   afterFrame(frame);
   return hands;
 }
@@ -160,7 +156,7 @@ std::array<HandJoints, 2> SimUser::handsFor(const InputFrame& frame) {
 void SimUser::afterFrame(const InputFrame& frame) {
   const auto switchBit = static_cast<std::uint32_t>(Button::SwitchHands);
   if ((frame.buttons & switchBit) && !(lastButtons_ & switchBit))
-    handedness_ = handedness_ == Handedness::Right ? Handedness::Left : Handedness::Right;
+    handedness_ = otherHand(handedness_);
   lastButtons_ = frame.buttons;
 }
 

@@ -64,20 +64,20 @@ struct HandState {
 
 class SimUser {
  public:
-  explicit SimUser(Handedness handedness) : handedness_(handedness) {}
+  explicit SimUser(HandSide handedness) : handedness_(handedness) {}
   // Both controllers (0 left, 1 right) for a frame, pressing the controls of `profile`; then
   // switches hands when the frame newly presses SwitchHands, as the interaction core does.
   std::array<HandState, 2> controllersFor(const InputFrame& frame, std::string_view profile);
   // Both hands' joints (0 left, 1 right) for a frame, in the postures that give its state
   // (simulated_hand.hpp); switches hands as controllersFor does.
   std::array<HandJoints, 2> handsFor(const InputFrame& frame);
-  Handedness handedness() const { return handedness_; }
+  HandSide handedness() const { return handedness_; }
 
  private:
   // Follows a newly pressed SwitchHands, as the interaction core does.
   void afterFrame(const InputFrame& frame);
 
-  Handedness handedness_;
+  HandSide handedness_;
   std::uint32_t lastButtons_ = 0;
 };
 
