@@ -7,7 +7,7 @@
 #include "engine/render/frames.hpp"
 #include "engine/render/vulkan_error.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::xr {
 
 namespace {
 
@@ -93,7 +93,7 @@ PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, Vk
     poolInfo.pPoolSizes = &poolSize;
     vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
 
-    ImGuiContextScope scope(imgui_);
+    studio::ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_InitInfo info{};
     info.Instance = context.instance();
     info.PhysicalDevice = context.physicalDevice();
@@ -130,7 +130,7 @@ void PanelTexture::destroy() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   if (backend_) {
-    ImGuiContextScope scope(imgui_);
+    studio::ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_Shutdown();
     backend_ = false;
   }
@@ -156,10 +156,10 @@ void PanelTexture::record(VkCommandBuffer commands, ImDrawData* drawData) {
   begin.pClearValues = &clear;
   vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
   if (drawData) {
-    ImGuiContextScope scope(imgui_);
+    studio::ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_RenderDrawData(drawData, commands);
   }
   vkCmdEndRenderPass(commands);
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::xr

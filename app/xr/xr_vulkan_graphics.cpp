@@ -9,7 +9,7 @@
 #include "engine/render/vulkan_error.hpp"
 #include "interaction/xr/xr_check.hpp"
 
-namespace curvefold {
+namespace curvefold::xr {
 
 namespace {
 
@@ -298,4 +298,4 @@ void XrVulkanGraphics::renderEye(const XrEyeView& eye) {
     throw VulkanError("XR eye " + std::to_string(eye.index) + " was not drawn");
 }
 
-}  // namespace curvefold
+}  // namespace curvefold::xr
