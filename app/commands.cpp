@@ -169,7 +169,8 @@ void addNewCommand(CLI::App& app) {
     // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
     // paper, laid side by side in the development and printed on one crease pattern.
     const std::size_t pieces = connectedComponentCount(sheet, buildEdgeTopology(sheet));
-    statusFor({options->output}) << "wrote " << options->output << " (" << surfaceName(design)
+    statusFor({options->output}) << "wrote " << options->output << " ("
+                                 << session::surfaceName(design)
                                  << (design.symmetry.empty() ? "" : ", " + design.symmetry) << ", "
                                  << sheet.triangleCount() << " triangles"
                                  << (pieces > 1 ? ", " + std::to_string(pieces) + " pieces" : "")
@@ -223,7 +224,7 @@ void addFoldCommand(CLI::App& app) {
       }
       ValidationOptions tolerance;
       tolerance.relativeLengthTolerance =
-          isometryTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
+          session::isometryTolerance(initialSheet(design, options->design)) / sheetSize(sheet);
       validate(sheet, tolerance);
       saveDesign(design, options->output);
       storeCachedSheet(design, sheet);
@@ -310,8 +311,8 @@ void addExportCommand(CLI::App& app) {
                          std::to_string(std::llround(kMaxPdfPages)) +
                          "); --paper fit prints it on one page");
       print.angles = options->angles;
-      print.title = designName(options->design);  // "vase", not "vase.curvefold.json"
-      print.facts = {"surface: " + surfaceName(design) +
+      print.title = session::designName(options->design);  // "vase", not "vase.curvefold.json"
+      print.facts = {"surface: " + session::surfaceName(design) +
                          (design.symmetry.empty() ? "" : ", " + design.symmetry),
                      "folds: " + std::to_string(design.folds.size()), "date: " + today()};
       PdfPicture picture;
@@ -350,9 +351,10 @@ void addCheckCommand(CLI::App& app) {
     const Design loaded = loadDesign(*design);
     const Sheet initial = initialSheet(loaded, *design);
     const Sheet sheet = buildSheet(loaded, *design);
-    const DesignCheck check = checkDesign(loaded, *design, initial, sheet, *allowSelfIntersection);
+    const session::DesignCheck check =
+        session::checkDesign(loaded, *design, initial, sheet, *allowSelfIntersection);
     std::cout << check.summary << "\n";
-    for (const CheckLine& line : check.lines)
+    for (const session::CheckLine& line : check.lines)
       std::cout << (line.ok ? "  ok    " : "  FAIL  ") << line.text << "\n";
     if (!check.passed()) throw std::runtime_error("check failed: " + check.firstFailure());
   });

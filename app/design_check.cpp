@@ -12,7 +12,7 @@
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 bool DesignCheck::passed() const {
   return std::all_of(lines.begin(), lines.end(), [](const CheckLine& line) { return line.ok; });
@@ -131,4 +131,4 @@ DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet
   return check;
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -12,7 +12,7 @@
 #include "engine/geometry/sheet.hpp"
 #include "engine/io/design_document.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 struct CheckLine {
   bool ok = true;
@@ -42,4 +42,4 @@ double isometryTolerance(const Sheet& initial);
 DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet& initial,
                         const Sheet& sheet, bool allowSelfIntersection);
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -8,7 +8,7 @@
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/excerpt.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 namespace fs = std::filesystem;
 
@@ -87,7 +87,7 @@ Design designFor(const std::string& input, const std::string& fallbackSurface) {
   if (fs::exists(input)) return loadDesign(input);
   for (const SurfaceInfo& info : surfaceCatalog())
     if (info.name == input) return {GeneratedSurface{input, {}}, {}};
-  throw UsageError(quotedExcerpt(input) + " is neither a design file nor a surface name");
+  throw cli::UsageError(quotedExcerpt(input) + " is neither a design file nor a surface name");
 }
 
 std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface) {
@@ -110,4 +110,4 @@ std::string nextAutosave(const std::string& current, const std::string& name) {
   }
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

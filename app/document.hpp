@@ -10,7 +10,7 @@
 #include "engine/io/design_document.hpp"
 #include "interaction/interaction_core.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 struct Document {
   InitialSurface surface;
@@ -61,4 +61,4 @@ std::string defaultAutosave(const std::string& input, const std::string& fallbac
 // so no earlier design's autosave is overwritten.
 std::string nextAutosave(const std::string& current, const std::string& name);
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 namespace {
 
@@ -182,4 +182,4 @@ std::optional<FilePicker::Picked> FilePicker::poll() {
   return std::exchange(done_, std::nullopt);
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

@@ -10,7 +10,7 @@
 #include <string>
 #include <thread>
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 class FilePicker {
  public:
@@ -47,4 +47,4 @@ class FilePicker {
   std::optional<Picked> done_;  // set by the worker, under mutex_
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

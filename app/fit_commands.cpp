@@ -109,7 +109,7 @@ void addFitCommand(CLI::App& app) {
     fit.seconds = options->seconds;
     fit.progress = [&](const FitProgress& step) {
       if (step.fold == 0) {
-        std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+        std::cout << "start: " << studio::distanceText(step.hausdorff, step.chamfer, step.diagonal)
                   << " of the target's " << step.diagonal << " m diagonal" << std::endl;
         return;
       }
@@ -137,13 +137,13 @@ void addFitCommand(CLI::App& app) {
       std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
       std::cout << "fold " << step.fold
                 << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
-                << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
-                << std::endl;
+                << seconds << ": "
+                << studio::distanceText(step.hausdorff, step.chamfer, step.diagonal) << std::endl;
     };
     fit.searching = [](std::size_t depth, double distance, double seconds) {
       char text[96];
       std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
-                    millimetresText(distance).c_str(), seconds);
+                    studio::millimetresText(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };
     // The outputs, checked before the search: a path that cannot be written fails now.
@@ -166,7 +166,7 @@ void addFitCommand(CLI::App& app) {
               << (design.folds.size() > log.size()
                       ? ", " + std::to_string(design.folds.size()) + " with images"
                       : "")
-              << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+              << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
   });
 }
@@ -201,14 +201,15 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
-              << millimetresText(d.fromAMean) << "\n"
-              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
-              << millimetresText(d.fromBMean) << "\n"
-              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
-              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
-              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
-              << percentText(d.relativeChamfer()) << ")\n";
+    std::cout << "A -> B: max " << studio::millimetresText(d.fromAMax) << ", mean "
+              << studio::millimetresText(d.fromAMean) << "\n"
+              << "B -> A: max " << studio::millimetresText(d.fromBMax) << ", mean "
+              << studio::millimetresText(d.fromBMean) << "\n"
+              << "Hausdorff (two-sided): " << studio::millimetresText(d.hausdorff) << " ("
+              << studio::percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
+              << " m)\n"
+              << "Chamfer (mean two-sided): " << studio::millimetresText(d.chamfer) << " ("
+              << studio::percentText(d.relativeChamfer()) << ")\n";
   });
 }
 

@@ -22,13 +22,11 @@
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
 #include "interaction/panel_pointer.hpp"
-#include "sim_input/gestures.hpp"
-#include "sim_input/player.hpp"
 
 struct ImGuiContext;
 struct ImDrawData;
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 // What the studio asks of the program it runs in.
 struct HeadsetStudioHost {
@@ -61,7 +59,7 @@ struct HeadsetStudioOptions {
 
 class HeadsetStudio {
  public:
-  HeadsetStudio(Document& doc, HeadsetStudioOptions options, HeadsetStudioHost host = {});
+  HeadsetStudio(session::Document& doc, HeadsetStudioOptions options, HeadsetStudioHost host = {});
   ~HeadsetStudio();
   HeadsetStudio(const HeadsetStudio&) = delete;
   HeadsetStudio& operator=(const HeadsetStudio&) = delete;
@@ -106,7 +104,7 @@ class HeadsetStudio {
   void nameDesign(const std::string& name);
   glm::dvec3 panelPoint(const glm::dvec2& pixel) const;
 
-  Document& doc_;
+  session::Document& doc_;
   HeadsetStudioOptions options_;
   HeadsetStudioHost host_;
   ImGuiContext* context_ = nullptr;
@@ -123,16 +121,4 @@ class HeadsetStudio {
   bool drawn_ = false;
 };
 
-// Replays a studio recording (its header has "studio"): the panel runs without drawing and writes
-// no file, so the design comes out as the session made it. The log lists folds, undos and redos
-// as replayRecording's does, across new sheets.
-ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options = {});
-
-// Any recording: a studio one with its panel, any other as replayRecording does.
-ReplayResult replayAnyRecording(const Recording& recording, const ReplayOptions& options = {});
-
-// What a studio gesture script acts on: a studio over the script's surface, which writes no file,
-// so `point_at` can find the panel's items by label.
-GestureWorldFactory studioGestureWorld();
-
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 class ImGuiContextScope {
  public:
@@ -20,4 +20,4 @@ class ImGuiContextScope {
   ImGuiContext* previous_;
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

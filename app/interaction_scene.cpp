@@ -8,7 +8,7 @@
 
 #include "engine/render/scene_builder.hpp"
 
-namespace curvefold {
+namespace curvefold::desktop {
 
 glm::mat4 matrixOf(const Pose& pose) {
   return glm::translate(glm::mat4(1.0f), glm::vec3(pose.position)) *
@@ -176,4 +176,4 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
   return scene;
 }
 
-}  // namespace curvefold
+}  // namespace curvefold::desktop

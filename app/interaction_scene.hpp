@@ -13,7 +13,7 @@
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
 
-namespace curvefold {
+namespace curvefold::desktop {
 
 glm::mat4 matrixOf(const Pose& pose);
 
@@ -62,4 +62,4 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,
                           const InteractionSceneOptions& options = {});
 
-}  // namespace curvefold
+}  // namespace curvefold::desktop

@@ -11,7 +11,7 @@
 #include "engine/text/utf8.hpp"
 #include "sim_input/recording.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 namespace fs = std::filesystem;
 
@@ -56,4 +56,4 @@ void saveRecentDesigns(const std::vector<std::string>& recent) {
   writeFileAtomically(file, text);
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

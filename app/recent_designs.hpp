@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 // Where the list lives; empty when neither XDG_STATE_HOME nor HOME is set.
 std::filesystem::path recentDesignsFile();
@@ -17,4 +17,4 @@ std::vector<std::string> loadRecentDesigns();
 // Replaces the list atomically; throws FileError when it cannot be written.
 void saveRecentDesigns(const std::vector<std::string>& recent);
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -17,8 +17,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands.hpp"
-#include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
+#include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -141,7 +141,8 @@ class ReplayFrameWriter {
           "replay it without --frames, or watch it with `curvefold xr`");
     Player player(recording);
     // One camera for the whole replay, framing the sheet where it starts and every hand position.
-    Bounds bounds = worldBounds(player.session().current(), matrixOf(recording.header.sheetFrame));
+    Bounds bounds =
+        worldBounds(player.session().current(), desktop::matrixOf(recording.header.sheetFrame));
     for (const InputFrame& frame : recording.frames) {
       if (frame.pointHand.tracked) bounds.add(glm::vec3(frame.pointHand.position));
       if (frame.sheetHand.tracked) bounds.add(glm::vec3(frame.sheetHand.pose.position));
@@ -149,15 +150,15 @@ class ReplayFrameWriter {
     const Camera camera = frameBounds(bounds, ViewPreset::Iso, panel_ ? aspect_ * 0.66f : aspect_);
     const Ground ground = groundBelow(bounds);
     SessionSheetTracker tracker;
-    CreasePatternCache panelCache;
+    desktop::CreasePatternCache panelCache;
     std::size_t written = 0;
     while (!player.done()) {
       const std::size_t index = player.nextFrame();
       const InputFrame& input = player.step();
       if (index % every_ != 0 && !player.done()) continue;
       tracker.update(player.session(), renderer_->sceneRenderer());
-      Scene scene = sceneForInteraction(player.core(), input, camera, ground,
-                                        {panel_, /*handMarkers=*/true, &panelCache});
+      Scene scene = desktop::sceneForInteraction(player.core(), input, camera, ground,
+                                                 {panel_, /*handMarkers=*/true, &panelCache});
       tracker.describe(scene.sheet);
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
@@ -263,7 +264,7 @@ void addRenderCommand(CLI::App& app) {
     const fs::path input = options->input;
     Sheet sheet;
     if (input.extension() == ".jsonl") {
-      sheet = replayAnyRecording(readRecording(input)).sheet;
+      sheet = studio::replayAnyRecording(readRecording(input)).sheet;
     } else {
       sheet = buildSheet(loadDesign(input), input.string());
     }

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/headset_studio.hpp"
+#include "app/studio_replay.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -125,7 +125,7 @@ void addReplayCommand(CLI::App& app) {
     ProgressBar bar(options->realtime, duration);
     replayOptions.onFrame = [&bar](const ReplayProgress& progress) { bar.update(progress); };
     const Clock::time_point start = Clock::now();
-    const ReplayResult result = replayAnyRecording(recording, replayOptions);
+    const ReplayResult result = studio::replayAnyRecording(recording, replayOptions);
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     bar.clear();
 
@@ -181,12 +181,13 @@ void addRecordScriptCommand(CLI::App& app) {
     if (writesInPlace(resolveOutputPath(options->output)))
       streamGestureScript(
           options->script, [](const RecordingHeader&) {}, [](const InputFrame&) {},
-          studioGestureWorld());
+          studio::studioGestureWorld());
     writeFileAtomically(options->output, [&](std::ostream& out) {
       stream = streamGestureScript(
           options->script,
           [&](const RecordingHeader& header) { out << headerLine(header) << '\n'; },
-          [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; }, studioGestureWorld());
+          [&](const InputFrame& frame) { out << frameLine(frame) << '\n'; },
+          studio::studioGestureWorld());
     });
     for (const std::string& warning : stream.warnings)
       std::cerr << "curvefold: warning: " << options->script << ": " << warning << '\n';

@@ -13,7 +13,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "sim_input/recorder.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 SessionOutputs::SessionOutputs(std::string autosavePath, std::string recordPath,
                                std::function<Design()> designOf)
@@ -142,4 +142,4 @@ std::vector<std::string> SessionOutputs::takeNewProblems() {
   return fresh;
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

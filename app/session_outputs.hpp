@@ -25,7 +25,7 @@ namespace curvefold {
 class Recorder;
 }
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 class SessionOutputs {
  public:
@@ -83,4 +83,4 @@ class SessionOutputs {
   std::size_t problemsTaken_ = 0;
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 std::filesystem::path stateFolder() {
   if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state)
@@ -12,4 +12,4 @@ std::filesystem::path stateFolder() {
   return {};
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-namespace curvefold::cli {
+namespace curvefold::session {
 
 // The folder (not created here); empty when neither XDG_STATE_HOME nor HOME is set.
 std::filesystem::path stateFolder();
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

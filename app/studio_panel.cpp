@@ -21,7 +21,7 @@
 #include "engine/text/utf8.hpp"
 #include "sim_input/player.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 StudioPanel::StudioPanel(bool recording, std::string help, std::string exportBase)
     : recording_(recording), help_(std::move(help)), exportBase_(std::move(exportBase)) {
@@ -39,7 +39,7 @@ void StudioPanel::setSavePath(const std::string& path) {
 void StudioPanel::nameDesign(const std::string& name) {
   const std::filesystem::path dir =
       filesDir_ ? std::filesystem::path(*filesDir_) : std::filesystem::path(name).parent_path();
-  exportBase_ = (dir / designName(name)).string();
+  exportBase_ = (dir / session::designName(name)).string();
   savePath_ = exportBase_ + ".curvefold.json";
 }
 
@@ -202,8 +202,8 @@ void StudioPanel::guarded(const StudioActions& actions, const std::string& done,
   }
 }
 
-void StudioPanel::draw(Document& doc, const StudioActions& actions, const StudioStats& stats,
-                       bool& creasePattern) {
+void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
+                       const StudioStats& stats, bool& creasePattern) {
   items_.clear();
   takePicked();
   const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
@@ -370,9 +370,9 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
     const Design design = doc.design();
     PdfOptions print;
     print.title = std::filesystem::path(base).filename().string();
-    print.facts = {
-        "surface: " + surfaceName(design) + (design.symmetry.empty() ? "" : ", " + design.symmetry),
-        "folds: " + std::to_string(design.folds.size())};
+    print.facts = {"surface: " + session::surfaceName(design) +
+                       (design.symmetry.empty() ? "" : ", " + design.symmetry),
+                   "folds: " + std::to_string(design.folds.size())};
     exportAs(".pdf", [&](const std::string& to) {
       if (actions.foldedForm) print.picture = actions.foldedForm();
       writeCreasePatternPdf(fixed, to, print);
@@ -447,4 +447,4 @@ void StudioPanel::draw(Document& doc, const StudioActions& actions, const Studio
   ImGui::End();
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

@@ -23,7 +23,7 @@
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 // What the host does when the panel asks. Each returns what to show ("wrote a.svg") or throws
 // (the message is shown instead).
@@ -68,7 +68,7 @@ class StudioPanel {
   StudioPanel(bool recording, std::string help, std::string exportBase = "design");
 
   // Inside an ImGui frame: one window, "curvefold". creasePattern is the host's toggle.
-  void draw(Document& doc, const StudioActions& actions, const StudioStats& stats,
+  void draw(session::Document& doc, const StudioActions& actions, const StudioStats& stats,
             bool& creasePattern);
 
   // Where exports go (a path without its extension) and where Save writes.
@@ -147,4 +147,4 @@ class StudioPanel {
   bool pickingSave_ = false;            // the dialog open is Save's, else Open's
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

@@ -9,7 +9,7 @@
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 namespace {
 
@@ -53,7 +53,7 @@ StudioTarget::StudioTarget(bool replaying) : replaying_(replaying) {}
 
 StudioTarget::~StudioTarget() = default;
 
-void StudioTarget::load(const std::string& path, const Document& doc) {
+void StudioTarget::load(const std::string& path, const session::Document& doc) {
   std::shared_ptr<const FoldFitter> fitter;
   try {
     fitter = std::make_shared<const FoldFitter>(readObjMesh(path));
@@ -80,7 +80,7 @@ const TriangleMesh* StudioTarget::mesh() const {
   return fitter_ ? &fitter_->target() : nullptr;
 }
 
-void StudioTarget::suggest(const Document& doc) {
+void StudioTarget::suggest(const session::Document& doc) {
   if (!fitter_) throw std::runtime_error("no target to suggest toward: load one first");
   requestSession_ = doc.session.get();
   requestRevision_ = doc.session->designRevision();
@@ -95,7 +95,7 @@ void StudioTarget::suggest(const Document& doc) {
   request_ = worker_->request(std::move(snapshot), kSuggestionsPerRequest);
 }
 
-void StudioTarget::poll(const Document& doc, InputFrame& frame) {
+void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
   const bool sameDesign =
       requestSession_ == doc.session.get() && requestRevision_ == doc.session->designRevision();
   if (searching_ && !sameDesign) {
@@ -197,4 +197,4 @@ void StudioTarget::documentReplaced() {
   measuredCurrent_ = false;
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

@@ -19,7 +19,7 @@
 #include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 
 // "12.3 mm" and "4.1%": three digits; what lies below a nanometre is rounding, printed as 0.
 std::string millimetresText(double metres);
@@ -44,7 +44,7 @@ class StudioTarget {
   // Reads the target (an OBJ in the sheet's frame) and checks it against the document's sheet.
   // Throws a one-line error naming the file (unreadable, no area, far away or in other units),
   // keeping the target it had.
-  void load(const std::string& path, const Document& doc);
+  void load(const std::string& path, const session::Document& doc);
   bool loaded() const { return fitter_ != nullptr; }
   // The target (sheet coordinates), for the ghost; null without one.
   const TriangleMesh* mesh() const;
@@ -52,13 +52,13 @@ class StudioTarget {
 
   // Starts the search for the next folds of the document's committed design (a drag in
   // progress is not part of it). Throws when there is no target.
-  void suggest(const Document& doc);
+  void suggest(const session::Document& doc);
   bool searching() const { return searching_; }
 
   // Once a frame, before the frame reaches the core and the recorder: a search that finished for
   // the design as it still is puts its folds into frame.suggestions (a replay's frame brings its
   // own). Also starts measuring the distance when the design changed.
-  void poll(const Document& doc, InputFrame& frame);
+  void poll(const session::Document& doc, InputFrame& frame);
 
   // The part the suggestion the core offers moves, where it goes (sheet coordinates), for the
   // preview; null when unknown (a replay's suggestions come without their results).
@@ -98,4 +98,4 @@ class StudioTarget {
   std::future<Measured> measuring_;
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

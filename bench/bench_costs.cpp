@@ -135,7 +135,7 @@ void BM_CreasePatternPanelPerFrame(benchmark::State& state) {
   const std::unique_ptr<FoldSession> folded = foldedCylinder(259);
   const FoldSession& session = *folded;
   const SceneColors colors;
-  CreasePatternCache cache;
+  desktop::CreasePatternCache cache;
   for (auto _ : state) {
     if (state.range(0) == 0) {
       benchmark::DoNotOptimize(creasePatternPanel(session.fixed(), colors));

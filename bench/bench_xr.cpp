@@ -43,7 +43,7 @@ fs::path serveDragging(const fs::path& dir) {
 
 struct XrLoop {
   fs::path dir;
-  std::unique_ptr<cli::XrApp> app;
+  std::unique_ptr<xr::XrApp> app;
 
   // With `hands`, the runtime serves bare hands (XR_EXT_hand_tracking) with 2 mm of jitter.
   explicit XrLoop(bool hands) {
@@ -53,12 +53,12 @@ struct XrLoop {
       setenv("CURVEFOLD_SIM_HANDS", "1", 1);
       setenv("CURVEFOLD_SIM_JITTER", "2", 1);
     }
-    cli::XrAppOptions options;
+    xr::XrAppOptions options;
     options.input = input.string();
     options.headless = true;
     options.record = (dir / "xr.jsonl").string();
     options.autosave = (dir / "xr.curvefold.json").string();
-    app = std::make_unique<cli::XrApp>(options);
+    app = std::make_unique<xr::XrApp>(options);
     unsetenv("CURVEFOLD_SIM_HANDS");  // read when the runtime's instance was made
     unsetenv("CURVEFOLD_SIM_JITTER");
     if (!app->startSession()) throw std::runtime_error("the simulated runtime has no headset");
@@ -116,11 +116,11 @@ void BM_XrStereoFrame(benchmark::State& state) {
   const fs::path input = serveDragging(dir);
   setenv("CURVEFOLD_SIM_VIEW_SIZE", "1440x1600", 1);
   {
-    cli::XrAppOptions options;
+    xr::XrAppOptions options;
     options.input = input.string();
     options.autosave = (dir / "xr.curvefold.json").string();
-    options.multiview = multiview ? XrMultiview::On : XrMultiview::Off;
-    cli::XrApp app(options);
+    options.multiview = multiview ? xr::XrMultiview::On : xr::XrMultiview::Off;
+    xr::XrApp app(options);
     if (!app.startSession()) throw std::runtime_error("the simulated runtime has no headset");
     for (int i = 0; i < 60; ++i) {  // up to FOCUSED and into the drag
       app.pollEvents();
@@ -146,11 +146,11 @@ BENCHMARK(BM_XrStereoFrame)
 // the ray on the panel (ImGui's frame: input, the whole panel's widgets, its draw lists), the
 // core told the point is on the panel, on a small sheet so the panel is what is measured.
 void BM_PanelCpuPerFrame(benchmark::State& state) {
-  cli::Document doc = cli::makeDocument(
+  session::Document doc = session::makeDocument(
       Design{GeneratedSurface{"square", {{"resolution", 10}}}, {}}, "square", defaultSheetFrame());
-  cli::HeadsetStudioOptions options;
+  studio::HeadsetStudioOptions options;
   options.sheetFrame = defaultSheetFrame();
-  cli::HeadsetStudio studio(doc, options);
+  studio::HeadsetStudio studio(doc, options);
   InputFrame frame;
   frame.sheetHand.tracked = true;
   frame.sheetHand.pose.position = {-0.25, 1.0, -0.6};

@@ -18,7 +18,8 @@
 
 #include "app/commands.hpp"
 #include "app/design_check.hpp"
-#include "app/headset_studio.hpp"
+#include "app/document.hpp"
+#include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
@@ -44,7 +45,7 @@ namespace py = pybind11;
 namespace curvefold::python {
 namespace {
 
-using cli::DesignCheck;
+using session::DesignCheck;
 
 // A point from any 3-sequence of numbers.
 glm::dvec3 point3(const std::vector<double>& p, const char* what) {
@@ -110,7 +111,7 @@ class PyDesign {
     // The same check as the command line's fold.
     ValidationOptions tolerance;
     tolerance.relativeLengthTolerance =
-        cli::isometryTolerance(session_->initial()) / sheetSize(session_->fixed());
+        session::isometryTolerance(session_->initial()) / sheetSize(session_->fixed());
     try {
       validate(session_->fixed(), tolerance);
     } catch (...) {
@@ -299,9 +300,9 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
   print.paper = *paperSize;
   print.angles = angles;
   print.title = design.name();
-  print.facts = {
-      "surface: " + cli::surfaceName(whole) + (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
-      "folds: " + std::to_string(whole.folds.size())};
+  print.facts = {"surface: " + session::surfaceName(whole) +
+                     (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
+                 "folds: " + std::to_string(whole.folds.size())};
   py::gil_scoped_release release;
   // All named files or none, as `curvefold export` writes them.
   OutputSet outputs;
@@ -412,7 +413,8 @@ PYBIND11_MODULE(_curvefold, m) {
           "lines",
           [](const DesignCheck& check) {
             std::vector<std::pair<bool, std::string>> lines;
-            for (const cli::CheckLine& line : check.lines) lines.emplace_back(line.ok, line.text);
+            for (const session::CheckLine& line : check.lines)
+              lines.emplace_back(line.ok, line.text);
             return lines;
           },
           "Every line as (ok, text), in the command's order")
@@ -420,7 +422,7 @@ PYBIND11_MODULE(_curvefold, m) {
           "failures",
           [](const DesignCheck& check) {
             std::vector<std::string> failures;
-            for (const cli::CheckLine& line : check.lines)
+            for (const session::CheckLine& line : check.lines)
               if (!line.ok) failures.push_back(line.text);
             return failures;
           },
@@ -487,7 +489,7 @@ PYBIND11_MODULE(_curvefold, m) {
                              "target, group")
       .def_property_readonly("symmetry", &PyDesign::symmetry, "'' or e.g. 'rotational:6:y'")
       .def_property_readonly(
-          "surface", [](const PyDesign& d) { return cli::surfaceName(d.design()); },
+          "surface", [](const PyDesign& d) { return session::surfaceName(d.design()); },
           "The surface's name, or 'embedded mesh'")
       .def(
           "check",
@@ -497,8 +499,8 @@ PYBIND11_MODULE(_curvefold, m) {
             DesignCheck check;
             {
               py::gil_scoped_release release;
-              check = cli::checkDesign(whole, d.name(), d.session().initial(), *sheet,
-                                       allowSelfIntersection);
+              check = session::checkDesign(whole, d.name(), d.session().initial(), *sheet,
+                                           allowSelfIntersection);
             }
             return check;
           },
@@ -525,7 +527,7 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
            "The folded form as an (height, width, 4) uint8 RGBA image (headless Vulkan)")
       .def("__repr__", [](const PyDesign& d) {
-        return "<curvefold.Design " + cli::surfaceName(d.design()) + ", " +
+        return "<curvefold.Design " + session::surfaceName(d.design()) + ", " +
                std::to_string(d.session().foldCount()) + " folds" +
                (d.symmetry().empty() ? "" : ", " + d.symmetry()) + ">";
       });
@@ -556,7 +558,7 @@ PYBIND11_MODULE(_curvefold, m) {
       "replay",
       [](const std::filesystem::path& recording) {
         py::gil_scoped_release release;
-        const ReplayResult result = cli::replayAnyRecording(readRecording(recording));
+        const ReplayResult result = studio::replayAnyRecording(readRecording(recording));
         return PyDesign(result.design, recording.string());
       },
       py::arg("recording"), "The design a recording (*.jsonl) makes, replayed headless");

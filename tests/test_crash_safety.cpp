@@ -63,7 +63,8 @@ class CrashSafety : public DesktopTest {
 
   // The designer's initial view is OrbitCamera::framing of the sheet.
   Sheet sheet_ = makeSurface("square");
-  OrbitCamera camera_ = OrbitCamera::framing(sheet_, Pose{}, float(kWidth) / kHeight);
+  desktop::OrbitCamera camera_ =
+      desktop::OrbitCamera::framing(sheet_, Pose{}, float(kWidth) / kHeight);
 };
 
 TEST_F(CrashSafety, KillMidDragKeepsCommittedFoldsAndResumes) {

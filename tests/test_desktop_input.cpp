@@ -10,7 +10,7 @@
 #include "interaction/interaction_core.hpp"
 #include "sim_input/simulated_hand.hpp"
 
-namespace curvefold {
+namespace curvefold::desktop {
 namespace {
 
 constexpr double kWidth = 640, kHeight = 480;
@@ -76,9 +76,9 @@ TEST(DesktopInput, PressOffTheSheetDoesNothing) {
 }
 
 }  // namespace
-}  // namespace curvefold
+}  // namespace curvefold::desktop
 
-namespace curvefold {
+namespace curvefold::desktop {
 namespace {
 
 // Issue 14, 5: the crease pattern panel is built once per design change (commit, undo, redo, a new
@@ -109,9 +109,9 @@ TEST(CreasePatternCache, BuildsOncePerDesignChange) {
 }
 
 }  // namespace
-}  // namespace curvefold
+}  // namespace curvefold::desktop
 
-namespace curvefold {
+namespace curvefold::desktop {
 namespace {
 
 // Issue 14, 3: the headset draws the controllers as simple generic models: a grip body at the
@@ -183,4 +183,4 @@ TEST(HandModels, JointsBonesAndThePinchState) {
 }
 
 }  // namespace
-}  // namespace curvefold
+}  // namespace curvefold::desktop

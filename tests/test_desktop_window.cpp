@@ -36,7 +36,8 @@ TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
 
   // Where a vertex of the square appears: the designer's initial view is OrbitCamera::framing.
   const Sheet sheet = makeSurface("square");
-  const OrbitCamera camera = OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
+  const desktop::OrbitCamera camera =
+      desktop::OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
   // The vertex nearest (0.06, -0.04): right of the panel, below the middle.
   std::size_t vertex = 0;
   for (std::size_t i = 0; i < sheet.positions.size(); ++i)
@@ -137,7 +138,8 @@ TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
   ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
   constexpr int kNewWidth = 900, kNewHeight = 560;
   const Sheet sheet = makeSurface("square");
-  const OrbitCamera camera = OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
+  const desktop::OrbitCamera camera =
+      desktop::OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
   const glm::dvec3 aim(0.07, 0.05, 0.0);  // right of the panel, above the middle
   std::size_t vertex = 0;
   for (std::size_t i = 0; i < sheet.positions.size(); ++i)
@@ -197,10 +199,10 @@ std::map<std::string, glm::dvec2> designerPanelItems(const fs::path& design, int
   unsigned char* pixels = nullptr;
   int w = 0, h = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  cli::Document doc = cli::makeDocument(loadDesign(design), design.string());
-  cli::StudioPanel panel(false, "help");
+  session::Document doc = session::makeDocument(loadDesign(design), design.string());
+  studio::StudioPanel panel(false, "help");
   panel.setDesktop(true);
-  cli::StudioActions actions;
+  studio::StudioActions actions;
   actions.loadTarget = [](const std::string&) {};
   actions.suggest = [] {};
   bool creasePattern = false;

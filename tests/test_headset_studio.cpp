@@ -16,6 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/headset_studio.hpp"
+#include "app/studio_replay.hpp"
 #include "engine/fit/random_fold_target.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -24,7 +25,7 @@
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 namespace {
 
 namespace fs = std::filesystem;
@@ -72,8 +73,8 @@ TEST(HeadsetStudio, TheExampleStudioSessionIsCurrentAndMakesTheWholeDesign) {
     EXPECT_TRUE(frame.pointHand.aim.has_value());
   }
 
-  Document doc = makeDocument(Design{stored.header.surface, {}}, "recording",
-                              stored.header.sheetFrame, stored.header.handedness);
+  session::Document doc = session::makeDocument(Design{stored.header.surface, {}}, "recording",
+                                                stored.header.sheetFrame, stored.header.handedness);
   HostLog log;
   HeadsetStudio studio(doc, optionsFor(stored.header), loggingHost(log));
   double largestScale = 1.0;
@@ -166,8 +167,8 @@ TEST(HeadsetStudio, ABadPanelGestureNamesTheGesture) {
 class HeldPanel : public ::testing::Test {
  protected:
   HeldPanel()
-      : doc_(makeDocument(Design{GeneratedSurface{"square", {{"resolution", 10}}}, {}}, "square",
-                          defaultSheetFrame())),
+      : doc_(session::makeDocument(Design{GeneratedSurface{"square", {{"resolution", 10}}}, {}},
+                                   "square", defaultSheetFrame())),
         studio_(doc_, optionsFor(RecordingHeader{}), loggingHost(log_)) {
     // The sheet hand to the left of the sheet and behind it, not holding it; the panel above it.
     frame_.sheetHand.tracked = true;
@@ -191,7 +192,7 @@ class HeldPanel : public ::testing::Test {
   }
 
   const glm::dquat kDown = glm::angleAxis(-0.5 * std::numbers::pi, glm::dvec3(1.0, 0.0, 0.0));
-  Document doc_;
+  session::Document doc_;
   HostLog log_;
   HeadsetStudio studio_;
   InputFrame frame_;
@@ -353,7 +354,7 @@ TEST(StudioTarget, SuggestTakeAndTheRecordingReplaysToTheSameDesign) {
   header.sheetFrame = defaultSheetFrame();
   header.surface = square;
   header.studio = RecordingHeader::Studio{};
-  Document doc = makeDocument(Design{square, {}}, "square", header.sheetFrame);
+  session::Document doc = session::makeDocument(Design{square, {}}, "square", header.sheetFrame);
   HeadsetStudioOptions options = optionsFor(header);
   options.target = targetPath.string();
   HostLog log;
@@ -439,4 +440,4 @@ TEST(StudioTarget, SuggestTakeAndTheRecordingReplaysToTheSameDesign) {
 }
 
 }  // namespace
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

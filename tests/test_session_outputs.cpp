@@ -25,7 +25,7 @@
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::session {
 namespace {
 
 namespace fs = std::filesystem;
@@ -263,4 +263,4 @@ TEST_F(SessionOutputsTest, AnUnexpectedErrorStillSaves) {
 }
 
 }  // namespace
-}  // namespace curvefold::cli
+}  // namespace curvefold::session

@@ -203,7 +203,7 @@ TEST(SimRuntimeSwapchains, FormatsArraysAndImageOrderFollowTheSpecification) {
   setenv("XR_RUNTIME_JSON", CURVEFOLD_SIM_RUNTIME_JSON, 1);
   setenv("CURVEFOLD_SIM_HOLD", "1", 1);
   unsetenv("CURVEFOLD_SIM_INPUT");
-  curvefold::XrVulkanGraphics graphics(/*validation=*/false);
+  curvefold::xr::XrVulkanGraphics graphics(/*validation=*/false);
   const std::vector<std::string> wanted = graphics.instanceExtensions();
   std::vector<const char*> extensions;
   for (const std::string& e : wanted) extensions.push_back(e.c_str());

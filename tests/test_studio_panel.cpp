@@ -22,7 +22,7 @@
 #include "app/studio_panel.hpp"
 #include "engine/io/design_document.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,10 +39,11 @@ class StudioPanelTest : public ::testing::Test {
     io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // the atlas a frame needs
     dir_ = fs::path(::testing::TempDir()) / ("panel-" + std::to_string(getpid()));
     fs::create_directories(dir_);
-    doc_ = makeDocument(Design{GeneratedSurface{"square", {{"resolution", 8}}}, {}}, "square");
+    doc_ = session::makeDocument(Design{GeneratedSurface{"square", {{"resolution", 8}}}, {}},
+                                 "square");
     actions_.replaceDocument = [this](const Design& design, const std::string& name) {
       replaced_.push_back(name);
-      doc_ = makeDocument(design, name);
+      doc_ = session::makeDocument(design, name);
     };
     actions_.press = [this](Button button) { pressed_.push_back(button); };
     actions_.exportPng = [](const std::string&) { throw std::runtime_error("no renderer here"); };
@@ -130,7 +131,7 @@ class StudioPanelTest : public ::testing::Test {
     ~RestorePath() { ::setenv("PATH", path.c_str(), 1); }
   } restorePath_{oldPath_};
   fs::path dir_;
-  Document doc_;
+  session::Document doc_;
   StudioActions actions_;
   StudioStats stats_;
   bool creasePattern_ = false;
@@ -282,9 +283,9 @@ TEST_F(StudioPanelTest, ItemsStayWhereTheyAreWhateverTheRecentListHolds) {
 }
 
 }  // namespace
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio
 
-namespace curvefold::cli {
+namespace curvefold::studio {
 namespace {
 
 // Issue 31, 1: Save and the exports follow the design's name: an opened design saves to its own
@@ -407,4 +408,4 @@ TEST_F(StudioPanelTest, TheHeadsetKeepsItsPathFields) {
 }
 
 }  // namespace
-}  // namespace curvefold::cli
+}  // namespace curvefold::studio

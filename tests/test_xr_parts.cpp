@@ -38,7 +38,7 @@ TEST(XrEyeCamera, TheFrustumEdgesLandOnTheImageEdges) {
   pose.orientation = {turn.x, turn.y, turn.z, turn.w};
   pose.position = {0.1f, 1.6f, 0.3f};
   const XrFovf fov{-0.87f, 0.79f, 0.84f, -0.91f};  // left, right, up, down
-  const Camera camera = eyeCamera(pose, fov, 0.05f, 50.0f);
+  const Camera camera = xr::eyeCamera(pose, fov, 0.05f, 50.0f);
   const glm::mat4 clipFromWorld = camera.projection(1.0f) * camera.view();
   auto ndc = [&](const glm::vec3& eyeDirection, float distance) {
     const glm::vec3 world = glm::vec3(pose.position.x, pose.position.y, pose.position.z) +

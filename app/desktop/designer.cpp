@@ -44,7 +44,7 @@
 #include "engine/text/excerpt.hpp"
 #include "sim_input/player.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::desktop {
 
 namespace {
 
@@ -69,9 +69,9 @@ struct DesignerOptions {
 struct Glfw {
   Glfw() {
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr)
-      throw NoDisplayError(kNoDisplay);
+      throw cli::NoDisplayError(kNoDisplay);
     glfwSetErrorCallback([](int, const char*) {});  // glfwInit's failure is reported below
-    if (!glfwInit()) throw NoDisplayError(kNoDisplay);
+    if (!glfwInit()) throw cli::NoDisplayError(kNoDisplay);
     if (!glfwVulkanSupported()) {
       glfwTerminate();
       throw std::runtime_error("no Vulkan loader usable with the window system");
@@ -93,28 +93,32 @@ void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D exte
 void runDesigner(const DesignerOptions& options) {
   unsigned width = 1280, height = 720;
   if (!readSize(options.size, 64u, 8192u, width, height))
-    throw UsageError("--size: expected WxH from 64 to 8192, got " + quotedExcerpt(options.size));
-  const std::string autosavePath =
-      options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
+    throw cli::UsageError("--size: expected WxH from 64 to 8192, got " +
+                          quotedExcerpt(options.size));
+  const std::string autosavePath = options.autosave.empty()
+                                       ? session::defaultAutosave(options.input, kDefaultSurface)
+                                       : options.autosave;
   Design design;
   if (options.resume) {
-    if (!fs::exists(autosavePath)) throw UsageError("--resume: no autosave at " + autosavePath);
+    if (!fs::exists(autosavePath))
+      throw cli::UsageError("--resume: no autosave at " + autosavePath);
     design = loadDesign(autosavePath);
   } else {
-    design = designFor(options.input, kDefaultSurface);
+    design = session::designFor(options.input, kDefaultSurface);
   }
-  Document doc = makeDocument(design, options.resume ? autosavePath : options.input);
+  session::Document doc =
+      session::makeDocument(design, options.resume ? autosavePath : options.input);
   // Read and checked before any window or file: a bad target is one line and nothing else.
-  StudioTarget goal;
+  studio::StudioTarget goal;
   if (!options.target.empty()) goal.load(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
-  SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); });
-  if (outputs.wantsRecording()) startFromCommittedFolds(doc);
+  session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); });
+  if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
 
   Glfw glfw;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   glfw.window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
-  if (!glfw.window) throw NoDisplayError(kNoDisplay);
+  if (!glfw.window) throw cli::NoDisplayError(kNoDisplay);
   GLFWwindow* window = glfw.window;
 
   ContextOptions contextOptions;
@@ -165,7 +169,7 @@ void runDesigner(const DesignerOptions& options) {
   struct State {
     OrbitCamera camera;
     DesktopInput input;
-    Document* doc = nullptr;
+    session::Document* doc = nullptr;
     glm::dvec2 mouse{0.0};
     bool orbiting = false, panning = false, quit = false;
     bool suggest = false;  // S: the panel's Suggest
@@ -253,23 +257,24 @@ void runDesigner(const DesignerOptions& options) {
   }
 
   // The panel (shared with the headset) and what the window measures for it.
-  StudioPanel panel(outputs.wantsRecording(),
-                    "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
-                    "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
-                    "suggests a fold, T takes it, N offers another.");
-  panel.setRecent(loadRecentDesigns());
+  studio::StudioPanel panel(
+      outputs.wantsRecording(),
+      "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
+      "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
+      "suggests a fold, T takes it, N offers another.");
+  panel.setRecent(session::loadRecentDesigns());
   panel.setTargetPath(options.target);
   panel.setDesktop(true);
   // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
   panel.nameDesign(options.resume          ? autosavePath
                    : options.input.empty() ? std::string(kDefaultSurface)
                                            : options.input);
-  StudioStats stats;
+  studio::StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
   Scene lastScene;
 
   auto replaceDocument = [&](Design next, const std::string& name) {
-    Document fresh = makeDocument(next, name);
+    session::Document fresh = session::makeDocument(next, name);
     doc.core.reset();
     doc = std::move(fresh);
     goal.documentReplaced();
@@ -305,7 +310,7 @@ void runDesigner(const DesignerOptions& options) {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    StudioActions actions{
+    studio::StudioActions actions{
         [&](const Design& next, const std::string& name) { replaceDocument(next, name); },
         [&](Button button) { state.input.pulse(button); },
         [&](const std::string& path) { exportPng(context, lastScene, target.extent(), path); }};
@@ -322,7 +327,7 @@ void runDesigner(const DesignerOptions& options) {
     stats.suggestionLine = goal.suggestionLine(*doc.core);
     actions.recentChanged = [&panel](const std::vector<std::string>& recent) {
       try {
-        saveRecentDesigns(recent);
+        session::saveRecentDesigns(recent);
       } catch (const std::exception& e) {
         panel.setMessage(std::string("recent designs not kept: ") + e.what());
       }
@@ -389,10 +394,15 @@ void runDesigner(const DesignerOptions& options) {
 
 }  // namespace
 
+}  // namespace curvefold::desktop
+
+// The command line's entry points into the window.
+namespace curvefold::cli {
+
 void addDesignCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("design", "Open the desktop designer window (needs a display)");
-  auto options = std::make_shared<DesignerOptions>();
+  auto options = std::make_shared<desktop::DesignerOptions>();
   command->add_option("INPUT", options->input,
                       "Design file (*.curvefold.json) or surface name (default: square)");
   command->add_option("--record", options->record, "Record the session's input (*.jsonl)");
@@ -412,11 +422,11 @@ void addDesignCommand(CLI::App& app) {
       ->check(CLI::IsMember({1, 2, 4, 8}));
   command->add_option("--screenshot-on-exit", options->screenshotOnExit,
                       "Write the last frame's scene to this PNG when the window closes");
-  command->callback([options] { runDesigner(*options); });
+  command->callback([options] { desktop::runDesigner(*options); });
 }
 
 void runDefaultDesigner() {
-  runDesigner(DesignerOptions{});
+  desktop::runDesigner(desktop::DesignerOptions{});
 }
 
 }  // namespace curvefold::cli

@@ -8,7 +8,7 @@
 
 #include "engine/render/scene_builder.hpp"
 
-namespace curvefold {
+namespace curvefold::desktop {
 
 namespace {
 
@@ -165,4 +165,4 @@ InputFrame DesktopInput::frame(double time) {
   return frame;
 }
 
-}  // namespace curvefold
+}  // namespace curvefold::desktop

@@ -20,7 +20,7 @@
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"
 
-namespace curvefold {
+namespace curvefold::desktop {
 
 struct Ray {
   glm::dvec3 origin{0.0};
@@ -86,4 +86,4 @@ class DesktopInput {
   std::uint32_t pulses_ = 0;
 };
 
-}  // namespace curvefold
+}  // namespace curvefold::desktop

@@ -9,7 +9,7 @@
 #include "engine/render/vulkan_error.hpp"
 #include "engine/render/vulkan_objects.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::xr {
 
 namespace {
 
@@ -72,7 +72,7 @@ PanelTexture::PanelTexture(const VulkanContext& context, ImGuiContext* imgui, Vk
   pool_ = createDescriptorPool(device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
 
-  ImGuiContextScope scope(imgui_);
+  studio::ImGuiContextScope scope(imgui_);
   ImGui_ImplVulkan_InitInfo info{};
   info.Instance = context.instance();
   info.PhysicalDevice = context.physicalDevice();
@@ -105,7 +105,7 @@ void PanelTexture::destroy() {
   const VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   if (backend_) {
-    ImGuiContextScope scope(imgui_);
+    studio::ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_Shutdown();
     backend_ = false;
   }
@@ -127,10 +127,10 @@ void PanelTexture::record(VkCommandBuffer commands, ImDrawData* drawData) {
   begin.pClearValues = &clear;
   vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
   if (drawData) {
-    ImGuiContextScope scope(imgui_);
+    studio::ImGuiContextScope scope(imgui_);
     ImGui_ImplVulkan_RenderDrawData(drawData, commands);
   }
   vkCmdEndRenderPass(commands);
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::xr

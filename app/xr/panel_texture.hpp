@@ -12,7 +12,7 @@
 struct ImGuiContext;
 struct ImDrawData;
 
-namespace curvefold::cli {
+namespace curvefold::xr {
 
 class PanelTexture {
  public:
@@ -47,4 +47,4 @@ class PanelTexture {
   bool backend_ = false;
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::xr

@@ -21,7 +21,7 @@
 #include "sim_input/recorder.hpp"
 #include "sim_input/recording.hpp"
 
-namespace curvefold::cli {
+namespace curvefold::xr {
 
 namespace fs = std::filesystem;
 
@@ -67,17 +67,17 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     sheetFrame = recording.header.sheetFrame;
     if (!options.leftHanded) handedness = recording.header.handedness;
   } else {
-    design = designFor(options.input, kDefaultSurface);
+    design = session::designFor(options.input, kDefaultSurface);
   }
-  doc_ = makeDocument(design, options.input, sheetFrame, handedness);
-  autosave_ =
-      options.autosave.empty() ? defaultAutosave(options.input, kDefaultSurface) : options.autosave;
-  outputs_ =
-      std::make_unique<SessionOutputs>(autosave_, options.record, [this] { return doc_.design(); });
+  doc_ = session::makeDocument(design, options.input, sheetFrame, handedness);
+  autosave_ = options.autosave.empty() ? session::defaultAutosave(options.input, kDefaultSurface)
+                                       : options.autosave;
+  outputs_ = std::make_unique<session::SessionOutputs>(autosave_, options.record,
+                                                       [this] { return doc_.design(); });
   if (outputs_->wantsRecording()) {
     // A recording starts from its header's surface: the opened folds become that surface, and
     // stay in the design (baseFolds).
-    startFromCommittedFolds(doc_);
+    session::startFromCommittedFolds(doc_);
     recordingHeader_.source = "openxr";
     recordingHeader_.handedness = handedness;
     recordingHeader_.sheetFrame = sheetFrame;
@@ -119,20 +119,20 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
 XrApp::~XrApp() = default;
 
 void XrApp::makeStudio(const Pose& sheetFrame) {
-  HeadsetStudioOptions options;
+  studio::HeadsetStudioOptions options;
   options.exportDir = options_.exportDir;
   if (options.exportDir.empty()) {
     options.exportDir = fs::path(autosave_).parent_path().string();
     if (options.exportDir.empty()) options.exportDir = ".";
   }
   options.name = options_.input.empty() ? kDefaultSurface : options_.input;
-  options.recent = loadRecentDesigns();
+  options.recent = session::loadRecentDesigns();
   options.target = options_.target;
   options.sheetFrame = sheetFrame;
-  HeadsetStudioHost host;
+  studio::HeadsetStudioHost host;
   host.documentReplacing = [this](const std::string& name) {
     // The design left behind keeps its autosave; the next gets its own.
-    outputs_->switchAutosave(nextAutosave(outputs_->autosavePath(), name));
+    outputs_->switchAutosave(session::nextAutosave(outputs_->autosavePath(), name));
   };
   host.documentReplaced = [this] {
     if (graphics_ && graphics_->renderer()) graphics_->renderer()->markSheetReplaced();
@@ -173,12 +173,12 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
   };
   host.recentChanged = [](const std::vector<std::string>& recent) {
     try {
-      saveRecentDesigns(recent);
+      session::saveRecentDesigns(recent);
     } catch (const std::exception& e) {
       std::cerr << "curvefold: warning: recent designs not kept: " << e.what() << std::endl;
     }
   };
-  studio_ = std::make_unique<HeadsetStudio>(doc_, std::move(options), std::move(host));
+  studio_ = std::make_unique<studio::HeadsetStudio>(doc_, std::move(options), std::move(host));
 }
 
 bool XrApp::startSession() {
@@ -252,24 +252,26 @@ void XrApp::buildScene() {
       texturedRenderer_ = graphics_->rendererGeneration();
     }
   }
-  InteractionSceneOptions sceneOptions;
+  desktop::InteractionSceneOptions sceneOptions;
   sceneOptions.target = studio_->goal().mesh();
   sceneOptions.offeredResult = studio_->goal().offeredResult(*doc_.core);
-  scene_ = sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_, sceneOptions);
+  scene_ = desktop::sceneForInteraction(*doc_.core, lastInput_, Camera{}, ground_, sceneOptions);
   // Controllers are drawn for the roles they drive, bare hands for the others.
   const bool sheetByHand = input_->sheetSource() == XrHandSource::Hand;
   const bool pointByHand = input_->pointSource() == XrHandSource::Hand;
   InputFrame controllers = lastInput_;
   if (sheetByHand) controllers.sheetHand.tracked = false;
   if (pointByHand) controllers.pointHand.tracked = false;
-  addControllerModels(scene_, *doc_.core, controllers, input_->pointAim());
+  desktop::addControllerModels(scene_, *doc_.core, controllers, input_->pointAim());
   const glm::vec4 handColor(0.55f, 0.5f, 0.6f, 1.0f), closedColor(0.6f, 0.3f, 0.8f, 1.0f);
   if (sheetByHand)
-    addHandModel(scene_, input_->sheetJoints(), doc_.core->clutched() ? closedColor : handColor);
+    desktop::addHandModel(scene_, input_->sheetJoints(),
+                          doc_.core->clutched() ? closedColor : handColor);
   if (pointByHand && input_->pointJoints().tracked) {
-    addHandModel(scene_, input_->pointJoints(), doc_.core->twoHanded() ? closedColor : handColor);
-    addPinchPoint(scene_, lastInput_.pointHand.position, input_->handInput().pinched(),
-                  input_->handInput().pinchOpenness());
+    desktop::addHandModel(scene_, input_->pointJoints(),
+                          doc_.core->twoHanded() ? closedColor : handColor);
+    desktop::addPinchPoint(scene_, lastInput_.pointHand.position, input_->handInput().pinched(),
+                           input_->handInput().pinchOpenness());
   }
   tracker_->describe(scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
@@ -391,4 +393,4 @@ XrAppSummary XrApp::runSessions(const std::atomic<bool>& interrupt) {
   return summary_;
 }
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::xr

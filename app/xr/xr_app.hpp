@@ -26,13 +26,15 @@
 
 namespace curvefold {
 class XrInput;
-class XrVulkanGraphics;
 class SessionSheetTracker;
 }  // namespace curvefold
 
-namespace curvefold::cli {
-
+namespace curvefold::studio {
 class HeadsetStudio;
+}  // namespace curvefold::studio
+
+namespace curvefold::xr {
+
 class PanelTexture;
 
 struct XrAppOptions {
@@ -81,8 +83,8 @@ class XrApp {
   bool sessionRunning() const;
   bool startSession();  // finds the system and creates the session; false without a headset
 
-  const Document& document() const { return doc_; }
-  const HeadsetStudio& studio() const { return *studio_; }
+  const session::Document& document() const { return doc_; }
+  const studio::HeadsetStudio& studio() const { return *studio_; }
   const std::string& runtimeName() const { return summary_.runtime; }
 
  private:
@@ -95,17 +97,18 @@ class XrApp {
   void buildScene();
 
   XrAppOptions options_;
-  Document doc_;
+  session::Document doc_;
   std::unique_ptr<XrVulkanGraphics> graphics_;
   std::unique_ptr<XrProgram> program_;
   std::unique_ptr<XrInput> input_;
   std::unique_ptr<SessionSheetTracker> tracker_;
   std::string autosave_;
-  RecordingHeader recordingHeader_;             // its rate is set from the runtime's frame period
-  std::unique_ptr<SessionOutputs> outputs_;     // after doc_: finishes (saves) before doc_ goes
-  std::unique_ptr<HeadsetStudio> studio_;       // after doc_, which it edits
-  std::unique_ptr<PanelTexture> panelTexture_;  // after studio_, whose ImGui context it uses
-  std::uint64_t texturedRenderer_ = 0;          // the renderer (generation) given its texture
+  RecordingHeader recordingHeader_;  // its rate is set from the runtime's frame period
+  // After doc_: finishes (saves) before doc_ goes.
+  std::unique_ptr<session::SessionOutputs> outputs_;
+  std::unique_ptr<studio::HeadsetStudio> studio_;  // after doc_, which it edits
+  std::unique_ptr<PanelTexture> panelTexture_;     // after studio_, whose ImGui context it uses
+  std::uint64_t texturedRenderer_ = 0;             // the renderer (generation) given its texture
   std::chrono::steady_clock::time_point lastFrame_{};
   InputFrame lastInput_;
   bool haveFirstTime_ = false;
@@ -114,10 +117,10 @@ class XrApp {
   double lastSeconds_ = 0.0;
   Scene scene_;
   Ground ground_;
-  CreasePatternCache panelCache_;
-  StudioStats stats_;
+  desktop::CreasePatternCache panelCache_;
+  studio::StudioStats stats_;
   bool restart_ = false;
   XrAppSummary summary_;
 };
 
-}  // namespace curvefold::cli
+}  // namespace curvefold::xr

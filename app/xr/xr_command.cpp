@@ -40,13 +40,13 @@ class InterruptGuard {
   struct sigaction previousTerm_ {};
 };
 
-void runXr(const XrAppOptions& options) {
+void runXr(const xr::XrAppOptions& options) {
   interrupted = false;
-  XrApp app(options);
+  xr::XrApp app(options);
   InterruptGuard guard;
   std::cout << "xr: running on " << (options.headless ? "a headless session of " : "")
             << "the OpenXR runtime \"" << app.runtimeName() << "\"" << std::endl;
-  const XrAppSummary summary = app.run(interrupted);
+  const xr::XrAppSummary summary = app.run(interrupted);
   std::cout << "xr: " << summary.framesProcessed << " input frames, " << summary.framesRendered
             << " frames drawn, " << summary.sessions << " session(s), " << summary.folds
             << " folds; design saved to " << summary.autosave << "\n";
@@ -77,7 +77,7 @@ void addXrCommand(CLI::App& app) {
       "xr",
       "Fold with tracked controllers or bare hands in an OpenXR headset (needs an OpenXR "
       "runtime)");
-  auto options = std::make_shared<XrAppOptions>();
+  auto options = std::make_shared<xr::XrAppOptions>();
   command->add_option("INPUT", options->input,
                       "Design file, surface name (default: square), or a recording (*.jsonl) "
                       "whose surface and sheet frame to start from");
@@ -97,16 +97,16 @@ void addXrCommand(CLI::App& app) {
   command->add_flag("--left-handed", options->leftHanded,
                     "The left hand folds and the right holds the sheet");
   command->add_flag(
-      "--multiview", [options](std::int64_t) { options->multiview = XrMultiview::On; },
+      "--multiview", [options](std::int64_t) { options->multiview = xr::XrMultiview::On; },
       "Draw both eyes in one pass (VK_KHR_multiview) even on a CPU device such as lavapipe");
   command->add_flag(
-      "--no-multiview", [options](std::int64_t) { options->multiview = XrMultiview::Off; },
+      "--no-multiview", [options](std::int64_t) { options->multiview = xr::XrMultiview::Off; },
       "Draw each eye in its own pass (default: one multiview pass on a GPU that has it)");
   command->add_flag("--headless", options->headless, "Input only, nothing drawn (XR_MND_headless)");
   command->add_flag("--validation", options->validation,
                     "Enable the Vulkan validation layer; any message fails the run");
   command->callback([options] {
-    XrAppOptions run = *options;
+    xr::XrAppOptions run = *options;
     // Refused before any runtime or file is touched: exports need a folder there (or none yet).
     if (!run.exportDir.empty() && std::filesystem::exists(run.exportDir) &&
         !std::filesystem::is_directory(run.exportDir))
@@ -120,7 +120,7 @@ void addXrCommand(CLI::App& app) {
 void runDefault() {
   std::string why;
   if (xrHeadsetAvailable(why)) {
-    runXr(XrAppOptions{});
+    runXr(xr::XrAppOptions{});
     return;
   }
   try {

@@ -12,7 +12,7 @@
 #include "engine/render/vulkan_objects.hpp"
 #include "interaction/xr/xr_check.hpp"
 
-namespace curvefold {
+namespace curvefold::xr {
 
 namespace {
 
@@ -294,4 +294,4 @@ void XrVulkanGraphics::renderEye(const XrEyeView& eye) {
     throw VulkanError("XR eye " + std::to_string(eye.index) + " was not drawn");
 }
 
-}  // namespace curvefold
+}  // namespace curvefold::xr

@@ -29,7 +29,7 @@
 #include "engine/render/vulkan_context.hpp"
 #include "interaction/xr/xr_program.hpp"
 
-namespace curvefold {
+namespace curvefold::xr {
 
 // How the eyes are drawn. On: both in one pass into an array swapchain (VK_KHR_multiview) where
 // the device has multiview. Off: a pass per eye. Auto: On, except on a CPU device: Debian 12's
@@ -121,4 +121,4 @@ class XrVulkanGraphics : public XrGraphics {
 // frustum (y down, depth 0 to 1).
 Camera eyeCamera(const XrPosef& pose, const XrFovf& fov, float nearPlane, float farPlane);
 
-}  // namespace curvefold
+}  // namespace curvefold::xr
