@@ -101,6 +101,17 @@ void addSurfacesCommand(CLI::App& app) {
   });
 }
 
+void addSessionFileOptions(CLI::App* command, std::string& record, std::string& autosave,
+                           std::string& target, const std::string& autosaveWhen) {
+  command->add_option("--record", record, "Record the session's input (*.jsonl)");
+  command->add_option(
+      "--autosave", autosave,
+      "Design saved " + autosaveWhen + " (default: <name>.autosave.curvefold.json)");
+  command->add_option("--target", target,
+                      "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
+                      "with its distance, and the panel's Suggest proposes the next fold");
+}
+
 void addSurfaceOptions(CLI::App* command, SurfaceOptions& options) {
   // Every parameter of every surface is an option; makeSurface refuses one the chosen surface
   // does not have.

@@ -42,6 +42,11 @@ void addSurfaceOptions(CLI::App* command, SurfaceOptions& options);
 Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
                                 const std::string& nameForErrors);
 
+// The files a folding session (the window or the headset) records to, autosaves to and folds
+// toward; `autosaveWhen` says when the session writes its autosave.
+void addSessionFileOptions(CLI::App* command, std::string& record, std::string& autosave,
+                           std::string& target, const std::string& autosaveWhen);
+
 void addSurfacesCommand(CLI::App& app);
 void addNewCommand(CLI::App& app);
 void addFoldCommand(CLI::App& app);

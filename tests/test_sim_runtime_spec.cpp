@@ -456,7 +456,8 @@ TEST_F(SimRuntimeSpec, HandTrackingFunctionsNeedTheExtension) {
 }
 
 // "xrResultToString" and "xrStructureTypeToString": an enumerant's own name; a value the runtime
-// does not know is named XR_UNKNOWN_ with its number, and fits the buffer.
+// does not know is named XR_UNKNOWN_SUCCESS_, XR_UNKNOWN_FAILURE_ (by its sign) or
+// XR_UNKNOWN_STRUCTURE_TYPE_ with its number, and fits the buffer.
 TEST_F(SimRuntimeSpec, ResultsAndStructureTypesAreNamedAsTheSpecificationNamesThem) {
   char result[XR_MAX_RESULT_STRING_SIZE];
   ASSERT_EQ(xrResultToString(instance_, XR_ERROR_HANDLE_INVALID, result), XR_SUCCESS);
@@ -464,8 +465,9 @@ TEST_F(SimRuntimeSpec, ResultsAndStructureTypesAreNamedAsTheSpecificationNamesTh
   ASSERT_EQ(xrResultToString(instance_, XR_SESSION_LOSS_PENDING, result), XR_SUCCESS);
   EXPECT_STREQ(result, "XR_SESSION_LOSS_PENDING");
   ASSERT_EQ(xrResultToString(instance_, XrResult(-987654), result), XR_SUCCESS);
-  EXPECT_EQ(std::string(result).rfind("XR_UNKNOWN_", 0), 0u) << result;
-  EXPECT_EQ(std::string(result).find("987654"), std::strlen(result) - 6) << result;
+  EXPECT_STREQ(result, "XR_UNKNOWN_FAILURE_-987654");
+  ASSERT_EQ(xrResultToString(instance_, XrResult(987654), result), XR_SUCCESS);
+  EXPECT_STREQ(result, "XR_UNKNOWN_SUCCESS_987654");
   char type[XR_MAX_STRUCTURE_NAME_SIZE];
   ASSERT_EQ(xrStructureTypeToString(instance_, XR_TYPE_INSTANCE_CREATE_INFO, type), XR_SUCCESS);
   EXPECT_STREQ(type, "XR_TYPE_INSTANCE_CREATE_INFO");
@@ -550,8 +552,9 @@ TEST_F(SimRuntimeDispatch, WithoutAnInstanceOnlyTheFunctionsThatMakeOneResolve) 
   EXPECT_EQ(getProcAddr_(XR_NULL_HANDLE, "xrCreateInstance", nullptr), XR_ERROR_VALIDATION_FAILURE);
 }
 
-// With an instance, every core function resolves; XR_EXT_hand_tracking's only when the instance
-// enabled it (XR_ERROR_FUNCTION_UNSUPPORTED otherwise), and an unknown name never.
+// With an instance, every core function resolves; XR_EXT_hand_tracking's and
+// XR_KHR_vulkan_enable2's only when the instance enabled them (XR_ERROR_FUNCTION_UNSUPPORTED
+// otherwise), and an unknown name never.
 TEST_F(SimRuntimeDispatch, ExtensionFunctionsResolveOnlyWhenTheExtensionIsEnabled) {
   const char* const core[] = {
       "xrGetInstanceProcAddr", "xrCreateInstance", "xrDestroyInstance",
@@ -559,10 +562,14 @@ TEST_F(SimRuntimeDispatch, ExtensionFunctionsResolveOnlyWhenTheExtensionIsEnable
       "xrWaitFrame",           "xrSyncActions",    "xrReleaseSwapchainImage"};
   const char* const hands[] = {"xrCreateHandTrackerEXT", "xrDestroyHandTrackerEXT",
                                "xrLocateHandJointsEXT"};
+  const char* const vulkan[] = {"xrGetVulkanGraphicsRequirements2KHR", "xrCreateVulkanInstanceKHR",
+                                "xrGetVulkanGraphicsDevice2KHR", "xrCreateVulkanDeviceKHR"};
   XrInstance instance = createInstance({"XR_MND_headless"});
   ASSERT_NE(instance, XR_NULL_HANDLE);
   for (const char* name : core) EXPECT_EQ(lookUp(instance, name), XR_SUCCESS) << name;
   for (const char* name : hands)
+    EXPECT_EQ(lookUp(instance, name), XR_ERROR_FUNCTION_UNSUPPORTED) << name;
+  for (const char* name : vulkan)
     EXPECT_EQ(lookUp(instance, name), XR_ERROR_FUNCTION_UNSUPPORTED) << name;
   EXPECT_EQ(lookUp(instance, "xrNoSuchFunction"), XR_ERROR_FUNCTION_UNSUPPORTED);
   destroyInstance(instance);
@@ -570,6 +577,13 @@ TEST_F(SimRuntimeDispatch, ExtensionFunctionsResolveOnlyWhenTheExtensionIsEnable
   instance = createInstance({"XR_MND_headless", XR_EXT_HAND_TRACKING_EXTENSION_NAME});
   ASSERT_NE(instance, XR_NULL_HANDLE);
   for (const char* name : hands) EXPECT_EQ(lookUp(instance, name), XR_SUCCESS) << name;
+  for (const char* name : vulkan)
+    EXPECT_EQ(lookUp(instance, name), XR_ERROR_FUNCTION_UNSUPPORTED) << name;
+  destroyInstance(instance);
+
+  instance = createInstance({"XR_KHR_vulkan_enable2"});
+  ASSERT_NE(instance, XR_NULL_HANDLE);
+  for (const char* name : vulkan) EXPECT_EQ(lookUp(instance, name), XR_SUCCESS) << name;
   destroyInstance(instance);
 }
 

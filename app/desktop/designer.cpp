@@ -405,14 +405,9 @@ void addDesignCommand(CLI::App& app) {
   auto options = std::make_shared<desktop::DesignerOptions>();
   command->add_option("INPUT", options->input,
                       "Design file (*.curvefold.json) or surface name (default: square)");
-  command->add_option("--record", options->record, "Record the session's input (*.jsonl)");
-  command->add_option("--autosave", options->autosave,
-                      "Design saved after every committed fold (default: "
-                      "<name>.autosave.curvefold.json)");
+  addSessionFileOptions(command, options->record, options->autosave, options->target,
+                        "after every committed fold");
   command->add_flag("--resume", options->resume, "Start from the autosaved design");
-  command->add_option("--target", options->target,
-                      "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
-                      "with its distance, and the panel's Suggest proposes the next fold");
   command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
                     "Show the crease pattern as a side view (also a checkbox in the panel)");
   command->add_option("--size", options->size, "Window size WxH (default 1280x720)");

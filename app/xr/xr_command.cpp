@@ -81,16 +81,11 @@ void addXrCommand(CLI::App& app) {
   command->add_option("INPUT", options->input,
                       "Design file, surface name (default: square), or a recording (*.jsonl) "
                       "whose surface and sheet frame to start from");
-  command->add_option("--record", options->record, "Record the session's input (*.jsonl)");
-  command->add_option("--autosave", options->autosave,
-                      "Design saved after every committed fold and at the end (default: "
-                      "<name>.autosave.curvefold.json)");
+  addSessionFileOptions(command, options->record, options->autosave, options->target,
+                        "after every committed fold and at the end");
   command->add_option("--export-dir", options->exportDir,
                       "Folder for the panel's exports (FOLD, SVG, PDF, OBJ, glTF, PNG) and "
                       "saves (default: beside the design's autosave)");
-  command->add_option("--target", options->target,
-                      "A target shape (OBJ, in the sheet's frame) to fold toward: shown as a ghost "
-                      "with its distance, and the panel's Suggest proposes the next fold");
   command->add_flag("--hands", options->hands,
                     "Fold with bare hands only (XR_EXT_hand_tracking), ignoring controllers; "
                     "without it, a hand holding no controller folds too");

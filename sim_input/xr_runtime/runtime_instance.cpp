@@ -150,7 +150,9 @@ XrResult writeName(XrInstance handle, Enum value, const char* unknown, char* buf
 
 XRAPI_ATTR XrResult XRAPI_CALL resultToString(XrInstance handle, XrResult value,
                                               char buffer[XR_MAX_RESULT_STRING_SIZE]) {
-  return writeName(handle, value, "XR_UNKNOWN_", buffer, XR_MAX_RESULT_STRING_SIZE);
+  // The specification's names for a value it does not define: success or failure by its sign.
+  const char* unknown = value >= 0 ? "XR_UNKNOWN_SUCCESS_" : "XR_UNKNOWN_FAILURE_";
+  return writeName(handle, value, unknown, buffer, XR_MAX_RESULT_STRING_SIZE);
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL structureTypeToString(XrInstance handle, XrStructureType value,
@@ -330,8 +332,7 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance handle,
 namespace {
 
 // An entry point, and who may fetch it: also without an instance (the functions that make one),
-// and only for an instance that enabled `extension` (when set). XR_KHR_vulkan_enable2's functions
-// are reachable whether or not the instance enabled it, as they always have been.
+// and only for an instance that enabled `extension` (when set).
 struct NamedFunction {
   std::string_view name;
   PFN_xrVoidFunction function;
@@ -347,6 +348,7 @@ PFN_xrVoidFunction erased(Function* function) {
 }
 
 constexpr const char* kHandTracking = XR_EXT_HAND_TRACKING_EXTENSION_NAME;
+constexpr const char* kVulkan = XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME;
 
 const NamedFunction kFunctions[] = {
     {"xrGetInstanceProcAddr", erased(getInstanceProcAddr), true},
@@ -401,10 +403,10 @@ const NamedFunction kFunctions[] = {
     {"xrAcquireSwapchainImage", erased(acquireSwapchainImage)},
     {"xrWaitSwapchainImage", erased(waitSwapchainImage)},
     {"xrReleaseSwapchainImage", erased(releaseSwapchainImage)},
-    {"xrGetVulkanGraphicsRequirements2KHR", erased(getVulkanGraphicsRequirements2)},
-    {"xrCreateVulkanInstanceKHR", erased(createVulkanInstance)},
-    {"xrGetVulkanGraphicsDevice2KHR", erased(getVulkanGraphicsDevice2)},
-    {"xrCreateVulkanDeviceKHR", erased(createVulkanDevice)},
+    {"xrGetVulkanGraphicsRequirements2KHR", erased(getVulkanGraphicsRequirements2), false, kVulkan},
+    {"xrCreateVulkanInstanceKHR", erased(createVulkanInstance), false, kVulkan},
+    {"xrGetVulkanGraphicsDevice2KHR", erased(getVulkanGraphicsDevice2), false, kVulkan},
+    {"xrCreateVulkanDeviceKHR", erased(createVulkanDevice), false, kVulkan},
     {"xrCreateHandTrackerEXT", erased(createHandTracker), false, kHandTracking},
     {"xrDestroyHandTrackerEXT", erased(destroyHandTrackerEntry), false, kHandTracking},
     {"xrLocateHandJointsEXT", erased(locateHandJoints), false, kHandTracking},

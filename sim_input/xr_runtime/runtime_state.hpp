@@ -254,8 +254,6 @@ XRAPI_ATTR XrResult XRAPI_CALL enumerateEnvironmentBlendModes(XrInstance handle,
                                                               std::uint32_t capacity,
                                                               std::uint32_t* count,
                                                               XrEnvironmentBlendMode* out);
-XRAPI_ATTR XrResult XRAPI_CALL getInstanceProcAddr(XrInstance instance, const char* name,
-                                                   PFN_xrVoidFunction* function);
 XRAPI_ATTR XrResult XRAPI_CALL createSession(XrInstance handle, const XrSessionCreateInfo* info,
                                              XrSession* out);
 XRAPI_ATTR XrResult XRAPI_CALL destroySessionEntry(XrSession handle);
