@@ -10,6 +10,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 #include <nanoflann.hpp>
 #include <nlopt.hpp>
 
@@ -134,7 +135,7 @@ EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::ui
   for (const Triangle& t : sheet.triangles) {
     const glm::dvec2 a = sheet.development[t[1]] - sheet.development[t[0]];
     const glm::dvec2 b = sheet.development[t[2]] - sheet.development[t[0]];
-    area += 0.5 * std::abs(a.x * b.y - a.y * b.x);
+    area += 0.5 * std::abs(glm::cross(a, b));
   }
   copy.radius = 0.5 * std::sqrt(area / std::max<std::size_t>(1, copy.samples.size()));
   return copy;

@@ -12,22 +12,19 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/geometry/topology.hpp"
 
 namespace curvefold {
 namespace {
 
-double cross(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Whether segments pq and rs cross at a point inside both, each endpoint clearly (beyond
 // `tolerance`, an area) on its own side of the other segment.
 bool crossProperly(const glm::dvec2& p, const glm::dvec2& q, const glm::dvec2& r,
                    const glm::dvec2& s, double tolerance) {
-  const double r1 = cross(q - p, r - p), r2 = cross(q - p, s - p);
-  const double p1 = cross(s - r, p - r), p2 = cross(s - r, q - r);
+  const double r1 = glm::cross(q - p, r - p), r2 = glm::cross(q - p, s - p);
+  const double p1 = glm::cross(s - r, p - r), p2 = glm::cross(s - r, q - r);
   return ((r1 > tolerance && r2 < -tolerance) || (r1 < -tolerance && r2 > tolerance)) &&
          ((p1 > tolerance && p2 < -tolerance) || (p1 < -tolerance && p2 > tolerance));
 }
@@ -115,7 +112,7 @@ class Sweep {
     const Segment& s = segments_[entering_];
     const Segment& e = segments_[t];
     const glm::dvec2 along = e.q - e.p, v = s.p - e.p;
-    const double side = cross(along, v);
+    const double side = glm::cross(along, v);
     if (side > tolerance_) return false;
     if (side < -tolerance_) return true;
     // Near t's line, beyond an end of it: t is steep (the line meets it within its span of x),
@@ -130,7 +127,7 @@ class Sweep {
     // lies just past its start. Edges from one point part at any angle, so that angle is taken
     // exactly (up to the rounding of the differences), not to the tolerance.
     const glm::dvec2 heading = s.q - s.p;
-    const double turn = cross(along, heading);
+    const double turn = glm::cross(along, heading);
     const double rounding = rounding_ * (std::abs(along.x) + std::abs(along.y) +
                                          std::abs(heading.x) + std::abs(heading.y));
     if (turn > rounding) return false;

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/geometry/topology.hpp"
 
@@ -17,15 +18,11 @@ std::uint64_t edgeKey(VertexIndex u, VertexIndex v) {
   return (std::uint64_t{e.a} << 32) | e.b;
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Smallest height of a development triangle: twice its area over its longest edge.
 double smallestHeight(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
   const double longest =
       std::sqrt(std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)}));
-  return longest > 0.0 ? cross2(b - a, c - a) / longest : 0.0;
+  return longest > 0.0 ? glm::cross(b - a, c - a) / longest : 0.0;
 }
 
 // An edge at a vertex that a collapse must keep straight: on the boundary, or tagged.

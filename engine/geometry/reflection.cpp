@@ -7,6 +7,7 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/geometry/validate.hpp"
 
@@ -31,15 +32,11 @@ std::uint64_t edgeKey(Edge e) {
   return (std::uint64_t{e.a} << 32) | e.b;
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Shape quality of a development triangle: twice its area over its longest edge squared.
 double quality(const std::vector<glm::dvec2>& dev, VertexIndex a, VertexIndex b, VertexIndex c) {
   const glm::dvec2 ab = dev[b] - dev[a], bc = dev[c] - dev[b], ca = dev[a] - dev[c];
   const double longest = std::max({glm::dot(ab, ab), glm::dot(bc, bc), glm::dot(ca, ca)});
-  return cross2(ab, dev[c] - dev[a]) / longest;
+  return glm::cross(ab, dev[c] - dev[a]) / longest;
 }
 
 // Side of a distance: -1 strictly behind the plane (the seed's side), 0 on it, +1 in front.

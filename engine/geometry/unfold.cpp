@@ -10,16 +10,13 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 namespace curvefold {
 namespace {
 
 std::uint64_t directedKey(VertexIndex from, VertexIndex to) {
   return (static_cast<std::uint64_t>(from) << 32) | to;
-}
-
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
 }
 
 // Angle at corner a of triangle (a, b, c); atan2 stays accurate near 0 and pi.
@@ -167,8 +164,8 @@ std::vector<glm::dvec2> unfoldDevelopment(const std::vector<glm::dvec3>& positio
   const double tolerance = relativeTolerance * size;
   for (TriangleIndex t = 0; t < triangles.size(); ++t) {
     const Triangle& tri = triangles[t];
-    const double area = cross2(development[tri[1]] - development[tri[0]],
-                               development[tri[2]] - development[tri[0]]);
+    const double area = glm::cross(development[tri[1]] - development[tri[0]],
+                                   development[tri[2]] - development[tri[0]]);
     std::string problem;
     for (int i = 0; i < 3 && problem.empty(); ++i) {
       const VertexIndex u = tri[i], v = tri[(i + 1) % 3];

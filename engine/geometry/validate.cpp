@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/geometry/topology.hpp"
 
@@ -19,14 +20,10 @@ std::string describe(const glm::dvec3& p) {
   return out.str();
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Twice the signed area of a development triangle.
 double doubledArea(const Sheet& sheet, const Triangle& t) {
   const glm::dvec2& a = sheet.development[t[0]];
-  return cross2(sheet.development[t[1]] - a, sheet.development[t[2]] - a);
+  return glm::cross(sheet.development[t[1]] - a, sheet.development[t[2]] - a);
 }
 
 double smallestHeightOf(const Sheet& sheet, const Triangle& t) {
@@ -163,7 +160,7 @@ double maxEdgeLengthError(const Sheet& sheet, const EdgeTopology& edges, Edge* w
 
 double smallestHeight(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
   const double longest = std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
-  return longest > 0.0 ? std::abs(cross2(b - a, c - a)) / longest : 0.0;
+  return longest > 0.0 ? std::abs(glm::cross(b - a, c - a)) / longest : 0.0;
 }
 
 void validate(const Sheet& sheet, const ValidationOptions& options) {

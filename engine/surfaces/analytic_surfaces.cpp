@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/surfaces/surface_builders.hpp"
 
@@ -14,10 +15,6 @@ namespace curvefold::detail {
 namespace {
 
 using std::numbers::pi;
-
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
 
 // Vertex (i, j) of a grid with cols x rows quads, i around/along the curve, j across.
 struct Grid {
@@ -61,7 +58,7 @@ Grid appendGrid(Sheet& sheet, int cols, int rows, VertexAt&& vertexAt) {
 void orientCounterClockwise(Sheet& sheet) {
   const Triangle& t = sheet.triangles.front();
   const glm::dvec2& a = sheet.development[t[0]];
-  if (cross2(sheet.development[t[1]] - a, sheet.development[t[2]] - a) > 0.0) return;
+  if (glm::cross(sheet.development[t[1]] - a, sheet.development[t[2]] - a) > 0.0) return;
   for (Triangle& triangle : sheet.triangles) std::swap(triangle[1], triangle[2]);
 }
 

@@ -18,6 +18,7 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/topology.hpp"
@@ -169,10 +170,6 @@ double pointsDiagonal(const std::vector<glm::dvec3>& points) {
   return glm::length(hi - lo);
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-  return a.x * b.y - a.y * b.x;
-}
-
 // Tags boundary edges whose endpoints coincide in 3D with another boundary edge's: a seam.
 void tagSeams(Sheet& sheet) {
   const EdgeTopology edges = buildEdgeTopology(sheet);
@@ -264,8 +261,8 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
         length3 += glm::distance(sheet.positions[t[i]], sheet.positions[t[(i + 1) % 3]]);
         length2 += glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]);
       }
-      area += cross2(sheet.development[t[1]] - sheet.development[t[0]],
-                     sheet.development[t[2]] - sheet.development[t[0]]);
+      area += glm::cross(sheet.development[t[1]] - sheet.development[t[0]],
+                         sheet.development[t[2]] - sheet.development[t[0]]);
     }
     if (!(length2 > 0.0)) throw ObjError(name + ": all texture coordinates coincide");
     const double scale = length3 / length2;

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/exterior_product.hpp>
 
 #include "engine/surfaces/surface_builders.hpp"
 
@@ -46,7 +47,7 @@ double signedArea(const std::vector<glm::dvec2>& polygon) {
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const glm::dvec2& a = polygon[i];
     const glm::dvec2& b = polygon[(i + 1) % polygon.size()];
-    twice += a.x * b.y - a.y * b.x;
+    twice += glm::cross(a, b);
   }
   return 0.5 * twice;
 }
@@ -154,7 +155,7 @@ Sheet symmetricFlat(const std::string& surface, const SurfaceParameters& p,
   // Which vertices lie on each ray: the mesher splits the rays at points on them, to rounding.
   const double tolerance = 1e-12 * longer;
   auto onRay = [&](const glm::dvec2& q, const glm::dvec2& ray) {
-    return std::abs(ray.x * q.y - ray.y * q.x) <= tolerance && glm::dot(ray, q) >= -tolerance;
+    return std::abs(glm::cross(ray, q)) <= tolerance && glm::dot(ray, q) >= -tolerance;
   };
   const std::size_t n = piece.vertexCount();
   std::vector<char> onFirst(n), onSecond(n);
@@ -243,7 +244,7 @@ Sheet starSheet(const SurfaceParameters& p) {
   }
   // Distance from the centre to the line through an outer and the next inner point.
   const glm::dvec2 a = outline[0], b = outline[1];
-  const double inradius = std::abs(a.x * b.y - a.y * b.x) / std::hypot(b.x - a.x, b.y - a.y);
+  const double inradius = std::abs(glm::cross(a, b)) / std::hypot(b.x - a.x, b.y - a.y);
   const int order = flatOrder(points);
   const std::vector<glm::dvec2> arc(outline.begin(), outline.begin() + points / order + 1);
   return symmetricFlat("star", p, outline, arc, 0.5 * pi, order, 2.0 * outer, inradius);
