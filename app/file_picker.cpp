@@ -31,88 +31,12 @@ bool isExecutableFile(const std::string& path) {
          ::access(path.c_str(), X_OK) == 0;
 }
 
-}  // namespace
-
-std::string FilePicker::find() {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return "";
-  const std::string all = path;
-  for (std::size_t begin = 0; begin <= all.size();) {
-    const std::size_t end = std::min(all.find(':', begin), all.size());
-    // An empty entry is the working directory: not where a desktop's picker lives.
-    if (end > begin) {
-      const std::string candidate = all.substr(begin, end - begin) + "/zenity";
-      if (isExecutableFile(candidate)) return candidate;
-    }
-    begin = end + 1;
-  }
-  return "";
-}
-
-FilePicker::FilePicker(std::string program) : program_(std::move(program)) {}
-
-FilePicker::~FilePicker() {
-  if (!worker_.joinable()) return;
-  const char stop = 1;
-  [[maybe_unused]] const ssize_t written = ::write(cancel_[1], &stop, 1);
-  worker_.join();
-  ::close(cancel_[0]);
-  ::close(cancel_[1]);
-}
-
-void FilePicker::start(bool save, const std::string& current) {
-  if (busy()) return;
-  std::vector<std::string> arguments = {
-      program_, "--file-selection", save ? "--title=Save the design as" : "--title=Open a design",
-      "--file-filter=Designs | *.curvefold.json *.json", "--file-filter=All files | *"};
-  if (save) {
-    arguments.push_back("--save");
-    arguments.push_back("--confirm-overwrite");  // zenity 4 always asks, and ignores it
-  }
-  if (!current.empty()) arguments.push_back("--filename=" + current);
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-
-  int output[2];
-  if (::pipe2(output, O_CLOEXEC) != 0 || ::pipe2(cancel_, O_CLOEXEC) != 0)
-    throw std::runtime_error(std::string("cannot start the file picker: ") + std::strerror(errno));
-  posix_spawn_file_actions_t files;
-  posix_spawn_file_actions_init(&files);
-  posix_spawn_file_actions_addopen(&files, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&files, output[1], 1);
-  // GTK's warnings would fill the terminal; a failure is told by the exit status.
-  posix_spawn_file_actions_addopen(&files, 2, "/dev/null", O_WRONLY, 0);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  // Its own process group, so that ending the dialog ends whatever it started too.
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  pid_t child = 0;
-  const int failed =
-      ::posix_spawn(&child, program_.c_str(), &files, &attributes, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&files);
-  posix_spawnattr_destroy(&attributes);
-  ::close(output[1]);
-  if (failed != 0) {
-    ::close(output[0]);
-    for (int& end : cancel_) ::close(std::exchange(end, -1));
-    throw std::runtime_error(std::string("cannot start the file picker (zenity): ") +
-                             std::strerror(failed));
-  }
-  {
-    std::lock_guard lock(mutex_);
-    done_.reset();
-  }
-  worker_ = std::thread([this, child, out = output[0]] { wait(child, out); });
-}
-
-// On the worker: reads the chosen path until the program closes its output, then reaps it; a
-// write to cancel_ ends it first.
-void FilePicker::wait(pid_t child, int output) {
+// On the worker: reads the chosen path until zenity closes its output, then reaps it; `cancel`
+// becoming readable ends it first.
+FilePicker::Picked waitForZenity(pid_t child, int output, int cancel) {
   std::string text;
   bool cancelled = false;
-  pollfd watched[2] = {{output, POLLIN, 0}, {cancel_[0], POLLIN, 0}};
+  pollfd watched[2] = {{output, POLLIN, 0}, {cancel, POLLIN, 0}};
   for (;;) {
     if (::poll(watched, 2, -1) < 0) {
       if (errno == EINTR) continue;
@@ -139,7 +63,7 @@ void FilePicker::wait(pid_t child, int output) {
   pid_t reaped = 0;
   while ((reaped = ::waitpid(child, &status, WNOHANG)) == 0) {
     if (!cancelled) {
-      pollfd stop = {cancel_[0], POLLIN, 0};
+      pollfd stop = {cancel, POLLIN, 0};
       if (::poll(&stop, 1, 20) > 0) {
         cancelled = true;
         ::kill(-child, SIGTERM);
@@ -150,7 +74,7 @@ void FilePicker::wait(pid_t child, int output) {
       ::usleep(20000);
     }
   }
-  Picked picked;
+  FilePicker::Picked picked;
   const bool exited = reaped == child && WIFEXITED(status);
   if (cancelled) {
     // The window is closing: nobody reads this.
@@ -167,8 +91,39 @@ void FilePicker::wait(pid_t child, int output) {
                            : std::string(reaped == child ? " on a signal" : "")) +
                    "; type the path instead";
   }
-  std::lock_guard lock(mutex_);
-  done_ = std::move(picked);
+  return picked;
+}
+
+}  // namespace
+
+std::unique_ptr<FilePicker> FilePicker::find() {
+  if (std::string bus = PortalPicker::find(); !bus.empty())
+    return std::make_unique<PortalPicker>(std::move(bus));
+  if (std::string program = ZenityPicker::find(); !program.empty())
+    return std::make_unique<ZenityPicker>(std::move(program));
+  return nullptr;
+}
+
+FilePicker::~FilePicker() {
+  if (!worker_.joinable()) return;
+  const char stop = 1;
+  [[maybe_unused]] const ssize_t written = ::write(cancel_[1], &stop, 1);
+  worker_.join();
+  for (int& end : cancel_) ::close(std::exchange(end, -1));
+}
+
+void FilePicker::launch(std::function<Picked(int cancelled)> dialog) {
+  if (::pipe2(cancel_, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("cannot start the file picker: ") + std::strerror(errno));
+  {
+    std::lock_guard lock(mutex_);
+    done_.reset();
+  }
+  worker_ = std::thread([this, dialog = std::move(dialog)] {
+    Picked picked = dialog(cancel_[0]);
+    std::lock_guard lock(mutex_);
+    done_ = std::move(picked);
+  });
 }
 
 std::optional<FilePicker::Picked> FilePicker::poll() {
@@ -180,6 +135,71 @@ std::optional<FilePicker::Picked> FilePicker::poll() {
   for (int& end : cancel_) ::close(std::exchange(end, -1));
   std::lock_guard lock(mutex_);
   return std::exchange(done_, std::nullopt);
+}
+
+std::string ZenityPicker::find() {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return "";
+  const std::string all = path;
+  for (std::size_t begin = 0; begin <= all.size();) {
+    const std::size_t end = std::min(all.find(':', begin), all.size());
+    // An empty entry is the working directory: not where a desktop's picker lives.
+    if (end > begin) {
+      const std::string candidate = all.substr(begin, end - begin) + "/zenity";
+      if (isExecutableFile(candidate)) return candidate;
+    }
+    begin = end + 1;
+  }
+  return "";
+}
+
+void ZenityPicker::start(bool save, const std::string& current) {
+  if (busy()) return;
+  std::vector<std::string> arguments = {
+      program_, "--file-selection", save ? "--title=Save the design as" : "--title=Open a design",
+      "--file-filter=Designs | *.curvefold.json *.json", "--file-filter=All files | *"};
+  if (save) {
+    arguments.push_back("--save");
+    arguments.push_back("--confirm-overwrite");  // zenity 4 always asks, and ignores it
+  }
+  if (!current.empty()) arguments.push_back("--filename=" + current);
+  std::vector<char*> argv;
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+
+  int output[2];
+  if (::pipe2(output, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("cannot start the file picker: ") + std::strerror(errno));
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&files, output[1], 1);
+  // GTK's warnings would fill the terminal; a failure is told by the exit status.
+  posix_spawn_file_actions_addopen(&files, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  // Its own process group, so that ending the dialog ends whatever it started too.
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  pid_t child = 0;
+  const int failed =
+      ::posix_spawn(&child, program_.c_str(), &files, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  posix_spawnattr_destroy(&attributes);
+  ::close(output[1]);
+  if (failed != 0) {
+    ::close(output[0]);
+    throw std::runtime_error(std::string("cannot start the file picker (zenity): ") +
+                             std::strerror(failed));
+  }
+  try {
+    launch([child, out = output[0]](int cancel) { return waitForZenity(child, out, cancel); });
+  } catch (...) {
+    ::close(output[0]);
+    ::kill(-child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+    throw;
+  }
 }
 
 }  // namespace curvefold::studio

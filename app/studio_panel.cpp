@@ -47,8 +47,7 @@ void StudioPanel::setDesktop(bool desktop) {
   desktop_ = desktop;
   picker_.reset();
   if (!desktop) return;
-  if (const std::string program = FilePicker::find(); !program.empty())
-    picker_ = std::make_unique<FilePicker>(program);
+  picker_ = FilePicker::find();
 }
 
 void StudioPanel::browse(bool save) {

@@ -83,8 +83,9 @@ class StudioPanel {
   void nameDesign(const std::string& name);
   void setFilesDir(const std::string& dir) { filesDir_ = dir; }
   // The desktop's own items, each beside an item both hosts have, so nothing else moves: the
-  // recent designs beside Open and, when zenity is on PATH, "Browse..." beside Open and Save. Off
-  // in the headset (no desktop there, and its recorded pointing must find the items it found).
+  // recent designs beside Open and, with the desktop portal or zenity, "Browse..." beside Open and
+  // Save. Off in the headset (no desktop there, and its recorded pointing must find the items it
+  // found).
   void setDesktop(bool desktop);
   // The target path field's text.
   void setTargetPath(const std::string& path);
@@ -143,7 +144,7 @@ class StudioPanel {
   bool fillsDisplay_ = false;
   std::optional<std::string> filesDir_;
   bool desktop_ = false;
-  std::unique_ptr<FilePicker> picker_;  // null without zenity
+  std::unique_ptr<FilePicker> picker_;  // null without the portal or zenity
   bool pickingSave_ = false;            // the dialog open is Save's, else Open's
 };
 

@@ -23,6 +23,8 @@ packages=(
   # GLSL compiler, GLFW, Dear ImGui; Xvfb and xdotool for the window tests
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libglfw3-dev libimgui-dev xvfb xauth xdotool
+  # the desktop portal's file chooser over D-Bus (GLib's GDBus); dbus-daemon for its tests
+  libglib2.0-dev dbus-daemon
   # pgrep, for the crash-safety test
   procps
   # OpenXR: the Khronos loader and headers (the simulated runtime in sim_input/ serves tests)

@@ -1,7 +1,11 @@
 // The studio panel (issue 14, 1), headless: Dear ImGui runs without a renderer, the test clicks
 // items by their label (where the panel says it drew them) and checks what the panel asked of its
 // host or wrote. The same panel serves the desktop window and the headset.
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -26,6 +30,119 @@ namespace curvefold::studio {
 namespace {
 
 namespace fs = std::filesystem;
+
+extern "C" char** environ;
+
+// Sets (or, given null, unsets) an environment variable for its lifetime.
+class ScopedEnv {
+ public:
+  ScopedEnv(std::string name, const char* value) : name_(std::move(name)) {
+    if (const char* old = std::getenv(name_.c_str())) old_ = old;
+    set(value);
+  }
+  ~ScopedEnv() { set(old_ ? old_->c_str() : nullptr); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+  void set(const char* value) {
+    if (value)
+      ::setenv(name_.c_str(), value, 1);
+    else
+      ::unsetenv(name_.c_str());
+  }
+
+ private:
+  std::string name_;
+  std::optional<std::string> old_;
+};
+
+// Starts `arguments` with its standard output on a pipe (and its standard error in `errors` when
+// given): the child and the pipe's read end.
+std::pair<pid_t, int> spawnReading(std::vector<std::string> arguments,
+                                   const std::string& errors = "") {
+  std::vector<char*> argv;
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+  int output[2];
+  if (::pipe2(output, O_CLOEXEC) != 0) return {-1, -1};
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_adddup2(&files, output[1], 1);
+  if (!errors.empty())
+    posix_spawn_file_actions_addopen(&files, 2, errors.c_str(), O_WRONLY | O_CREAT | O_APPEND,
+                                     0644);
+  pid_t child = -1;
+  if (::posix_spawn(&child, argv[0], &files, nullptr, argv.data(), environ) != 0) child = -1;
+  posix_spawn_file_actions_destroy(&files);
+  ::close(output[1]);
+  return {child, output[0]};
+}
+
+// One line from `fd`, without its newline; empty when none came within five seconds.
+std::string readLine(int fd) {
+  std::string line;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (std::chrono::steady_clock::now() < deadline) {
+    pollfd ready = {fd, POLLIN, 0};
+    if (::poll(&ready, 1, 100) <= 0) continue;
+    char c = 0;
+    if (::read(fd, &c, 1) != 1) break;
+    if (c == '\n') return line;
+    line += c;
+  }
+  return "";
+}
+
+// A private session bus (dbus-daemon with the policy of Debian's session.conf, nothing
+// activatable on it) in DBUS_SESSION_BUS_ADDRESS,
+// and, once `startPortal()`, the fake portal (tests/fake_portal.cpp) on it.
+class PortalBus {
+ public:
+  explicit PortalBus(const fs::path& dir) : dir_(dir) {
+    const fs::path config = dir_ / "bus.conf";
+    std::ofstream(config) << "<busconfig><type>session</type>"
+                          << "<listen>unix:tmpdir=" << dir_.string() << "</listen>"
+                          << "<auth>EXTERNAL</auth><policy context=\"default\">"
+                          << "<allow send_destination=\"*\" eavesdrop=\"true\"/>"
+                          << "<allow eavesdrop=\"true\"/><allow own=\"*\"/></policy>"
+                          << "</busconfig>\n";
+    std::tie(daemon_, daemonOut_) = spawnReading(
+        {"/usr/bin/dbus-daemon", "--config-file=" + config.string(), "--nofork", "--nopidfile",
+         "--print-address=1"},
+        (dir_ / "bus.log").string());  // as root it says it cannot raise its descriptor limit
+    address_ = readLine(daemonOut_);
+    if (!address_.empty()) ::setenv("DBUS_SESSION_BUS_ADDRESS", address_.c_str(), 1);
+  }
+  ~PortalBus() {
+    for (const pid_t child : {portal_, daemon_}) {
+      if (child <= 0) continue;
+      ::kill(child, SIGKILL);  // the fake first: it never sees its bus go
+      ::waitpid(child, nullptr, 0);
+    }
+    for (const int out : {portalOut_, daemonOut_})
+      if (out >= 0) ::close(out);
+  }
+  bool up() const { return !address_.empty(); }
+  // The fake portal owns its name on the bus; false when it did not say so.
+  bool startPortal() {
+    answer("never");
+    std::tie(portal_, portalOut_) = spawnReading(
+        {CURVEFOLD_FAKE_PORTAL, (dir_ / "answer").string(), (dir_ / "portal.log").string()});
+    return readLine(portalOut_) == "ready";
+  }
+  // How the portal answers the next dialog: "uri <URI>", "cancel" or "never".
+  void answer(const std::string& how) { std::ofstream(dir_ / "answer") << how << "\n"; }
+  std::string log() const {
+    std::stringstream text;
+    text << std::ifstream(dir_ / "portal.log").rdbuf();
+    return text.str();
+  }
+
+ private:
+  fs::path dir_;
+  pid_t daemon_ = -1, portal_ = -1;
+  int daemonOut_ = -1, portalOut_ = -1;
+  std::string address_;
+};
 
 class StudioPanelTest : public ::testing::Test {
  protected:
@@ -130,6 +247,8 @@ class StudioPanelTest : public ::testing::Test {
     std::string path;
     ~RestorePath() { ::setenv("PATH", path.c_str(), 1); }
   } restorePath_{oldPath_};
+  // No session bus unless a test starts one: a desktop's own portal would answer Browse.
+  ScopedEnv noBus_{"DBUS_SESSION_BUS_ADDRESS", nullptr}, noRuntimeDir_{"XDG_RUNTIME_DIR", nullptr};
   fs::path dir_;
   session::Document doc_;
   StudioActions actions_;
@@ -372,6 +491,84 @@ TEST_F(StudioPanelTest, AnOpenDialogHoldsNoFrameAndEndsWithThePanel) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(6));
   EXPECT_EQ(::kill(pid, 0), -1);  // ended and reaped
   EXPECT_EQ(errno, ESRCH);
+}
+
+// Issue 31, 1: where the session bus has the desktop portal, Browse... asks its FileChooser (not
+// zenity, though it is on PATH), with the designs' filters and where to start; the chosen file's
+// path fills the field, a cancel keeps it, and a file that is not on this machine is refused.
+TEST_F(StudioPanelTest, BrowseAsksTheDesktopPortalWhereTheSessionHasOne) {
+  fakeZenity("touch \"$(dirname \"$0\")/ran\"\nexit 1");
+  PortalBus bus(dir_);
+  ASSERT_TRUE(bus.up());
+  ASSERT_TRUE(bus.startPortal());
+  panel_.setDesktop(true);
+  bus.answer("uri file:///chosen/bowl.curvefold.json");
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.openPath() == "/chosen/bowl.curvefold.json"; }))
+      << panel_.message() << "\n"
+      << bus.log();
+  EXPECT_NE(bus.log().find("OpenFile title=Open a design token=curvefold"), std::string::npos)
+      << bus.log();
+  EXPECT_NE(bus.log().find("filters=a(sa(us))"), std::string::npos) << bus.log();
+
+  bus.answer("uri file:///chosen/cup%20one.curvefold.json");
+  click("Browse...##save");
+  ASSERT_TRUE(framesUntil([&] { return panel_.savePath() == "/chosen/cup one.curvefold.json"; }))
+      << panel_.message() << "\n"
+      << bus.log();
+  EXPECT_NE(bus.log().find("SaveFile title=Save the design as"), std::string::npos) << bus.log();
+  EXPECT_NE(bus.log().find("current_folder=" + fs::current_path().string() +
+                           " current_name=design.curvefold.json"),
+            std::string::npos)
+      << bus.log();
+
+  bus.answer("cancel");
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.message() == "no file chosen"; }))
+      << panel_.message();
+  EXPECT_EQ(panel_.openPath(), "/chosen/bowl.curvefold.json");
+
+  bus.answer("uri https://example.com/bowl.curvefold.json");
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] {
+    return panel_.message().find("not on this machine") != std::string::npos;
+  })) << panel_.message();
+  EXPECT_EQ(panel_.openPath(), "/chosen/bowl.curvefold.json");
+  EXPECT_FALSE(fs::exists(dir_ / "bin" / "ran"));
+}
+
+// Frames go on while the portal's dialog is open, and closing the panel closes the dialog's
+// Request (the portal takes the dialog down) without waiting for a person.
+TEST_F(StudioPanelTest, ClosingThePanelClosesThePortalsDialog) {
+  PortalBus bus(dir_);
+  ASSERT_TRUE(bus.up());
+  ASSERT_TRUE(bus.startPortal());
+  panel_.setDesktop(true);
+  const auto start = std::chrono::steady_clock::now();
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return bus.log().find("OpenFile") != std::string::npos; }));
+  for (int i = 0; i < 20; ++i) frame();
+  EXPECT_EQ(panel_.message(), "choosing a file to open");
+  EXPECT_EQ(bus.log().find("Close"), std::string::npos);
+  panel_ = StudioPanel(false, "help");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  const std::string log = bus.log();
+  const std::size_t token = log.find("token=");
+  ASSERT_NE(token, std::string::npos) << log;
+  const std::string name = log.substr(token + 6, log.find(' ', token) - token - 6);
+  EXPECT_NE(log.find("Close /org/freedesktop/portal/desktop/request/"), std::string::npos) << log;
+  EXPECT_NE(log.find("/" + name + "\n"), std::string::npos) << log;
+}
+
+// A session bus without the portal leaves Browse to zenity.
+TEST_F(StudioPanelTest, ABusWithoutThePortalLeavesBrowseToZenity) {
+  fakeZenity("echo /chosen/by-zenity.curvefold.json");
+  PortalBus bus(dir_);
+  ASSERT_TRUE(bus.up());
+  panel_.setDesktop(true);
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.openPath() == "/chosen/by-zenity.curvefold.json"; }))
+      << panel_.message();
 }
 
 // Without zenity the path fields are all there is; the desktop's items never move the others.
