@@ -11,28 +11,64 @@
 
 namespace curvefold::studio {
 
+namespace {
+
+// A design and the headset studio over it, as a recording's header sets them up. The studio
+// writes no files: a replay or a script makes the design, not the session's files.
+struct StudioFromHeader {
+  StudioFromHeader(const RecordingHeader& header, const std::string& name, bool replaying)
+      : doc(session::makeDocument(Design{header.surface, {}, header.symmetry}, name,
+                                  header.sheetFrame, header.handedness)),
+        studio(doc, optionsFor(header, name, replaying), hostWritingNothing()) {}
+
+  static HeadsetStudioOptions optionsFor(const RecordingHeader& header, const std::string& name,
+                                         bool replaying) {
+    HeadsetStudioOptions options;
+    options.recent = header.studio ? header.studio->recent : std::vector<std::string>{};
+    options.sheetFrame = header.sheetFrame;
+    options.name = name;
+    options.replaying = replaying;
+    return options;
+  }
+  static HeadsetStudioHost hostWritingNothing() {
+    HeadsetStudioHost host;
+    host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};
+    return host;
+  }
+
+  session::Document doc;
+  HeadsetStudio studio;
+};
+
+class StudioGestureWorld : public GestureWorld {
+ public:
+  explicit StudioGestureWorld(const RecordingHeader& header) : world_(header, "script", false) {}
+
+  void process(const InputFrame& frame) override { world_.studio.process(frame); }
+  const InteractionCore& core() const override { return *world_.doc.core; }
+  std::optional<glm::dvec3> panelItem(const std::string& label) const override {
+    return world_.studio.itemWorld(label);
+  }
+  std::optional<glm::dvec3> panelFacing() const override { return world_.studio.facing(); }
+
+ private:
+  StudioFromHeader world_;
+};
+
+}  // namespace
+
 ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options) {
   if (!recording.header.studio)
     throw std::invalid_argument("replayStudioRecording: the recording has no studio");
-  session::Document doc =
-      session::makeDocument(Design{recording.header.surface, {}, recording.header.symmetry},
-                            "recording", recording.header.sheetFrame, recording.header.handedness);
-  HeadsetStudioOptions studioOptions;
-  studioOptions.recent = recording.header.studio->recent;
-  studioOptions.sheetFrame = recording.header.sheetFrame;
-  studioOptions.name = "recording";
-  studioOptions.replaying = true;
-  HeadsetStudioHost host;
-  // A replay makes the design, not the session's files.
-  host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};
-  HeadsetStudio studio(doc, studioOptions, host);
+  StudioFromHeader replayed(recording.header, "recording", true);
+  session::Document& doc = replayed.doc;
 
   ReplayResult result;
   result.duration = replayFrames(recording, options, [&](const InputFrame& frame) {
     const FoldSession* before = doc.session.get();
     const std::size_t foldsBefore = doc.session->foldCount();
     const std::size_t trianglesBefore = doc.session->fixed().triangleCount();
-    studio.process(frame);
+    replayed.studio.process(frame);
     // A new sheet starts its fold count again; its events are logged against it.
     appendFoldLog(
         result.log, *doc.session, doc.core->events(), frame.time,
@@ -50,42 +86,6 @@ ReplayResult replayAnyRecording(const Recording& recording, const ReplayOptions&
   return recording.header.studio ? replayStudioRecording(recording, options)
                                  : replayRecording(recording, options);
 }
-
-namespace {
-
-class StudioGestureWorld : public GestureWorld {
- public:
-  explicit StudioGestureWorld(const RecordingHeader& header)
-      : doc_(session::makeDocument(Design{header.surface, {}, header.symmetry}, "script",
-                                   header.sheetFrame, header.handedness)),
-        studio_(doc_, optionsFor(header), hostWritingNothing()) {}
-
-  void process(const InputFrame& frame) override { studio_.process(frame); }
-  const InteractionCore& core() const override { return *doc_.core; }
-  std::optional<glm::dvec3> panelItem(const std::string& label) const override {
-    return studio_.itemWorld(label);
-  }
-  std::optional<glm::dvec3> panelFacing() const override { return studio_.facing(); }
-
- private:
-  static HeadsetStudioOptions optionsFor(const RecordingHeader& header) {
-    HeadsetStudioOptions options;
-    options.recent = header.studio ? header.studio->recent : std::vector<std::string>{};
-    options.sheetFrame = header.sheetFrame;
-    options.name = "script";
-    return options;
-  }
-  static HeadsetStudioHost hostWritingNothing() {
-    HeadsetStudioHost host;
-    host.writeFile = [](const std::string&, const std::function<void(const std::string&)>&) {};
-    return host;
-  }
-
-  session::Document doc_;
-  HeadsetStudio studio_;
-};
-
-}  // namespace
 
 GestureWorldFactory studioGestureWorld() {
   return [](const RecordingHeader& header) -> std::unique_ptr<GestureWorld> {

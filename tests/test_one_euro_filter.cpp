@@ -65,6 +65,30 @@ TEST(OneEuroFilter, MatchesTheReferenceImplementationsPublishedOutputs) {
   }
 }
 
+// The published data has both cutoffs at 1 Hz; this is the reference run with a derivative cutoff
+// of 3 Hz (tests/data/one_euro_filter/README.md), printed to full precision.
+TEST(OneEuroFilter, MatchesTheReferenceWithADerivativeCutoffOfItsOwn) {
+  std::ifstream in(std::string(CURVEFOLD_TEST_DATA) + "/one_euro_filter/derivative_cutoff_3.csv");
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "timestamp,noisy,filtered");
+  OneEuroFilter<double> filter({1.0, 0.1, 3.0});
+  std::size_t count = 0;
+  while (std::getline(in, line)) {
+    double values[3] = {};
+    const char* at = line.data();
+    const char* end = line.data() + line.size();
+    for (double& value : values) {
+      const auto [next, error] = std::from_chars(at, end, value);
+      ASSERT_EQ(error, std::errc()) << line;
+      at = next < end && *next == ',' ? next + 1 : next;
+    }
+    ASSERT_NEAR(filter.filter(values[1], values[0]), values[2], 1e-12) << "at t = " << values[0];
+    ++count;
+  }
+  EXPECT_EQ(count, 300u);
+}
+
 TEST(OneEuroFilter, FiltersAPointAsTheReferenceDoesANumber) {
   // The signal along one direction: the speed is the vector's length, so the point moves along
   // that direction exactly as the number does.
@@ -82,7 +106,8 @@ TEST(OneEuroFilter, FiltersAPointAsTheReferenceDoesANumber) {
 TEST(OneEuroFilter, TurnsAnOrientationAsItFiltersItsAngle) {
   // While the reference's clean signal rises, a turn by that angle (radians) about one axis is
   // filtered as the angle is: the same speed (the angle turned, which then never changes sign)
-  // and the same share of the way, by slerp.
+  // and the same share of the way, by slerp. Every other sample comes with its sign flipped, as a
+  // tracker may give it: q and -q are one orientation, so the filter turns just the same.
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.2, 1.0, -0.4));
   OneEuroFilter<double> angleFilter(kReferenceParameters);
   OneEuroFilter<glm::dquat> turnFilter(kReferenceParameters);
@@ -91,9 +116,11 @@ TEST(OneEuroFilter, TurnsAnOrientationAsItFiltersItsAngle) {
   for (std::size_t i = 0; i < rows.size() && (i == 0 || rows[i].signal > rows[i - 1].signal); ++i) {
     const glm::dquat expected =
         glm::angleAxis(angleFilter.filter(rows[i].signal, sampleTime(i)), axis);
-    const glm::dquat turn = turnFilter.filter(glm::angleAxis(rows[i].signal, axis), sampleTime(i));
+    const glm::dquat sample = glm::angleAxis(rows[i].signal, axis);
+    const glm::dquat turn = turnFilter.filter(i % 2 == 1 ? -sample : sample, sampleTime(i));
+    const double sign = glm::dot(turn, expected) < 0.0 ? -1.0 : 1.0;
     for (int c = 0; c < 4; ++c)
-      ASSERT_NEAR(turn[c], expected[c], 1e-9) << "at t = " << rows[i].timestamp;
+      ASSERT_NEAR(sign * turn[c], expected[c], 1e-9) << "at t = " << rows[i].timestamp;
     ++compared;
   }
   EXPECT_GT(compared, 100u);
