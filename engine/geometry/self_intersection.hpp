@@ -94,8 +94,6 @@ class DragIntersectionWatch {
   void meet(std::uint32_t k, const Mirror& mirror);
   void splitNodePair(std::uint32_t a, std::uint32_t b, const Mirror& mirror);
   void testLeaves(const Sheet& folded, const TriangleTree::Node& a, const TriangleTree::Node& b);
-  void testPair(const Sheet& folded, TriangleIndex s, const std::array<glm::dvec3, 3>& cs,
-                TriangleIndex t);
   // Visits fixed triangle `t`'s folded triangles: itself and the pieces a cut appended.
   template <typename Visit>
   void forPieces(TriangleIndex t, Visit&& visit) const;
