@@ -1,6 +1,7 @@
 // The One Euro filter (interaction/one_euro_filter.hpp) against the reference implementation's
 // published data (tests/data/one_euro_filter: casiez/OneEuroFilter's groundTruth.csv, its first
 // 300 rows): every output, not only the lag, on a number, on a point and on an orientation.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -23,14 +24,16 @@ struct ReferenceRow {
   double timestamp = 0.0, signal = 0.0, noisy = 0.0, filtered = 0.0;
 };
 
-std::vector<ReferenceRow> referenceRows() {
-  std::ifstream in(std::string(CURVEFOLD_TEST_DATA) + "/one_euro_filter/ground_truth.csv");
+// The rows of one of the reference's CSV files (tests/data/one_euro_filter), its header checked.
+std::vector<std::vector<double>> readCsv(const std::string& name, const std::string& header) {
+  std::ifstream in(std::string(CURVEFOLD_TEST_DATA) + "/one_euro_filter/" + name);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "timestamp,signal,noisy,filtered");
-  std::vector<ReferenceRow> rows;
+  EXPECT_EQ(line, header);
+  const std::size_t columns = std::count(header.begin(), header.end(), ',') + 1;
+  std::vector<std::vector<double>> rows;
   while (std::getline(in, line)) {
-    double values[4] = {};
+    std::vector<double> values(columns);
     const char* at = line.data();
     const char* end = line.data() + line.size();
     for (double& value : values) {
@@ -38,8 +41,16 @@ std::vector<ReferenceRow> referenceRows() {
       EXPECT_EQ(error, std::errc()) << line;
       at = next < end && *next == ',' ? next + 1 : next;
     }
-    rows.push_back({values[0], values[1], values[2], values[3]});
+    rows.push_back(std::move(values));
   }
+  return rows;
+}
+
+std::vector<ReferenceRow> referenceRows() {
+  std::vector<ReferenceRow> rows;
+  for (const std::vector<double>& values :
+       readCsv("ground_truth.csv", "timestamp,signal,noisy,filtered"))
+    rows.push_back({values[0], values[1], values[2], values[3]});
   return rows;
 }
 
@@ -68,25 +79,12 @@ TEST(OneEuroFilter, MatchesTheReferenceImplementationsPublishedOutputs) {
 // The published data has both cutoffs at 1 Hz; this is the reference run with a derivative cutoff
 // of 3 Hz (tests/data/one_euro_filter/README.md), printed to full precision.
 TEST(OneEuroFilter, MatchesTheReferenceWithADerivativeCutoffOfItsOwn) {
-  std::ifstream in(std::string(CURVEFOLD_TEST_DATA) + "/one_euro_filter/derivative_cutoff_3.csv");
-  std::string line;
-  std::getline(in, line);
-  ASSERT_EQ(line, "timestamp,noisy,filtered");
+  const std::vector<std::vector<double>> rows =
+      readCsv("derivative_cutoff_3.csv", "timestamp,noisy,filtered");
+  ASSERT_EQ(rows.size(), 300u);
   OneEuroFilter<double> filter({1.0, 0.1, 3.0});
-  std::size_t count = 0;
-  while (std::getline(in, line)) {
-    double values[3] = {};
-    const char* at = line.data();
-    const char* end = line.data() + line.size();
-    for (double& value : values) {
-      const auto [next, error] = std::from_chars(at, end, value);
-      ASSERT_EQ(error, std::errc()) << line;
-      at = next < end && *next == ',' ? next + 1 : next;
-    }
-    ASSERT_NEAR(filter.filter(values[1], values[0]), values[2], 1e-12) << "at t = " << values[0];
-    ++count;
-  }
-  EXPECT_EQ(count, 300u);
+  for (const std::vector<double>& row : rows)
+    ASSERT_NEAR(filter.filter(row[1], row[0]), row[2], 1e-12) << "at t = " << row[0];
 }
 
 TEST(OneEuroFilter, FiltersAPointAsTheReferenceDoesANumber) {
