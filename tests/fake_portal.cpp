@@ -2,7 +2,8 @@
 // panel's tests: it owns org.freedesktop.portal.Desktop, answers OpenFile and SaveFile with a
 // Request at the path the specification gives (sender and handle_token), and later sends that
 // Request's Response as the file `answer` says at the time: "uri <URI>" (chosen), "cancel" (the
-// person cancelled) or "never" (the dialog stays open until closed). Each call, and each Close of
+// person cancelled), "fail" (ended some other way), "nothing" (success without a file) or "never"
+// (the dialog stays open until closed). Each call, and each Close of
 // a Request, is written as a line to `log`. Prints "ready" once the name is its own.
 //
 // Usage: fake_portal ANSWER_FILE LOG_FILE
@@ -81,6 +82,8 @@ gboolean respond(gpointer data) {
   g_variant_builder_init(&results, G_VARIANT_TYPE_VARDICT);
   guint32 response = 1;
   if (kind == "never") return G_SOURCE_REMOVE;
+  if (kind == "fail") response = 2;     // "the user interaction was ended in some other way"
+  if (kind == "nothing") response = 0;  // chosen, yet no uris
   if (kind == "uri") {
     response = 0;
     const gchar* uris[] = {uri.c_str(), nullptr};

@@ -1,6 +1,8 @@
 // The printable crease pattern (issue 18, 1): page counts and sizes of tiled PDFs for known sheets
-// on A4 and letter, the scale bar's length in points, mountain and valley told apart by their line
-// styles in black and white, every line on some page, fit to one page, and the file Cairo writes.
+// on A4, letter and A3, the scale bar's length in points, mountain and valley told apart by their
+// line styles in black and white, the tiles' marks, guides and labels, fit to one page, the file
+// Cairo writes, pages counted before any is drawn, and (issue 28) tiles that overlap by their band
+// with no gap and print a known length at real size.
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -111,9 +113,11 @@ TEST(PrintPdf, MountainAndValleyDifferInBlackAndWhite) {
   EXPECT_EQ(valley.red, 0.0);
 }
 
-// Every line of the pattern lands on some tile, inside its printable area, and the tiles' overlap
-// bands repeat what the neighbour ends with; each tile but the first column and row has a guide
-// where its neighbour's edge goes, and every tile has its cut marks and its row and column.
+// Every tile has lines, its eight cut marks and its row and column; each tile but the first column
+// and row has a guide where its neighbour's edge goes; mountains, valleys and (with --angles) the
+// crease curves' angles are printed; the cover has the picture's place and the pattern at a
+// glance. Where the tiles' windows lie and what their lines are:
+// TilesOverlapByTheirBandAndLeaveNoGap.
 TEST(PrintPdf, TilesCoverThePatternWithCutMarksAndLabels) {
   const Sheet sheet = foldedSheet();
   PdfOptions options;

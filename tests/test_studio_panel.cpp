@@ -129,7 +129,7 @@ class PortalBus {
         {CURVEFOLD_FAKE_PORTAL, (dir_ / "answer").string(), (dir_ / "portal.log").string()});
     return readLine(portalOut_) == "ready";
   }
-  // How the portal answers the next dialog: "uri <URI>", "cancel" or "never".
+  // How the portal answers the next dialog: "uri <URI>", "cancel", "fail", "nothing" or "never".
   void answer(const std::string& how) { std::ofstream(dir_ / "answer") << how << "\n"; }
   std::string log() const {
     std::stringstream text;
@@ -558,6 +558,39 @@ TEST_F(StudioPanelTest, ClosingThePanelClosesThePortalsDialog) {
   const std::string name = log.substr(token + 6, log.find(' ', token) - token - 6);
   EXPECT_NE(log.find("Close /org/freedesktop/portal/desktop/request/"), std::string::npos) << log;
   EXPECT_NE(log.find("/" + name + "\n"), std::string::npos) << log;
+}
+
+// A portal that ends the dialog some other way, or answers success with no file, is said in one
+// line on the panel, and the field keeps its path.
+TEST_F(StudioPanelTest, APortalThatGivesNoFileIsSaidInOneLine) {
+  PortalBus bus(dir_);
+  ASSERT_TRUE(bus.up());
+  ASSERT_TRUE(bus.startPortal());
+  panel_.setDesktop(true);
+  const std::string before = panel_.openPath();
+  for (const char* how : {"fail", "nothing"}) {
+    SCOPED_TRACE(how);
+    bus.answer(how);
+    click("Browse...##open");
+    ASSERT_TRUE(framesUntil([&] { return panel_.message().rfind("the desktop portal ", 0) == 0; }))
+        << panel_.message();
+    EXPECT_EQ(panel_.message().find('\n'), std::string::npos);
+    EXPECT_NE(panel_.message().find("type the path instead"), std::string::npos);
+    EXPECT_EQ(panel_.openPath(), before);
+  }
+}
+
+// A session bus that is not there (a stale DBUS_SESSION_BUS_ADDRESS) leaves Browse to zenity at
+// once.
+TEST_F(StudioPanelTest, AStaleBusAddressLeavesBrowseToZenity) {
+  fakeZenity("echo /chosen/by-zenity.curvefold.json");
+  ::setenv("DBUS_SESSION_BUS_ADDRESS", ("unix:path=" + (dir_ / "no-bus").string()).c_str(), 1);
+  const auto start = std::chrono::steady_clock::now();
+  panel_.setDesktop(true);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+  click("Browse...##open");
+  ASSERT_TRUE(framesUntil([&] { return panel_.openPath() == "/chosen/by-zenity.curvefold.json"; }))
+      << panel_.message();
 }
 
 // A session bus without the portal leaves Browse to zenity.
