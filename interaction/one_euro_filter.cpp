@@ -10,9 +10,15 @@ double lowPassSmoothing(double cutoffHz, double dt) {
   return 1.0 / (1.0 + tau / dt);
 }
 
-double OneEuroValue<glm::dquat>::change(const glm::dquat& from, const glm::dquat& to) {
-  // q and -q are one orientation: the angle between them is zero.
-  return 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(from, to))));
+glm::dvec3 OneEuroValue<glm::dquat>::change(const glm::dquat& from, const glm::dquat& to) {
+  // q and -q are one orientation: the turn between them is none, and the shorter way is taken.
+  glm::dquat turn = to * glm::conjugate(from);
+  if (turn.w < 0.0) turn = -turn;
+  const glm::dvec3 axisSine(turn.x, turn.y, turn.z);
+  const double sine = glm::length(axisSine);
+  if (sine < 1e-300) return glm::dvec3(0.0);
+  const double angle = 2.0 * std::atan2(sine, std::min(1.0, turn.w));
+  return axisSine * (angle / sine);
 }
 
 glm::dquat OneEuroValue<glm::dquat>::step(const glm::dquat& from, const glm::dquat& to,

@@ -1,9 +1,9 @@
 // The One Euro filter (Casiez, Roussel and Vogel, CHI 2012; https://gery.casiez.net/1euro/): a
 // first-order low-pass filter whose cutoff rises with the signal's speed, so a value at rest is
 // steady and a moving one is not left behind. One implementation for every kind of value: a number,
-// a point (glm::dvec3) and an orientation (glm::dquat, stepped by slerp, its speed the angle turned
-// per second). tests/test_one_euro_filter.cpp checks it against the reference implementation's
-// published data.
+// a point (glm::dvec3) and an orientation (glm::dquat, stepped by slerp, its speed the angular
+// velocity, a vector). tests/test_one_euro_filter.cpp checks it against the reference
+// implementation's published data.
 #pragma once
 
 #include <cmath>
@@ -50,12 +50,16 @@ struct OneEuroValue<glm::dvec3> {
   }
 };
 
-// An orientation's change is the angle it turned (radians, never negative), the shorter way round.
+// An orientation's change is the turn that takes it there, as a rotation vector (axis times angle,
+// radians, in the world frame), the shorter way round. A vector, not the angle alone: jitter at
+// rest turns one way, then back, and its mean speed must average out to zero as a point's does,
+// or the cutoff would rise at rest (with a rotation beta of 10, the filter would then pass the
+// jitter through).
 template <>
 struct OneEuroValue<glm::dquat> {
-  using Change = double;
-  static double change(const glm::dquat& from, const glm::dquat& to);
-  static double size(double rate) { return std::abs(rate); }
+  using Change = glm::dvec3;
+  static glm::dvec3 change(const glm::dquat& from, const glm::dquat& to);
+  static double size(const glm::dvec3& rate) { return glm::length(rate); }
   static glm::dquat step(const glm::dquat& from, const glm::dquat& to, double smoothing);
 };
 

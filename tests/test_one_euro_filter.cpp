@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -103,8 +104,8 @@ TEST(OneEuroFilter, FiltersAPointAsTheReferenceDoesANumber) {
 
 TEST(OneEuroFilter, TurnsAnOrientationAsItFiltersItsAngle) {
   // While the reference's clean signal rises, a turn by that angle (radians) about one axis is
-  // filtered as the angle is: the same speed (the angle turned, which then never changes sign)
-  // and the same share of the way, by slerp. Every other sample comes with its sign flipped, as a
+  // filtered as the angle is: the same speed (the angular velocity, along the axis) and the same
+  // share of the way, by slerp. Every other sample comes with its sign flipped, as a
   // tracker may give it: q and -q are one orientation, so the filter turns just the same.
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.2, 1.0, -0.4));
   OneEuroFilter<double> angleFilter(kReferenceParameters);
@@ -122,6 +123,36 @@ TEST(OneEuroFilter, TurnsAnOrientationAsItFiltersItsAngle) {
     ++compared;
   }
   EXPECT_GT(compared, 100u);
+}
+
+TEST(OneEuroFilter, JitterAtRestAveragesOutAsAPointsDoes) {
+  // A hand held still: its orientation jitters by small turns about random axes. The filter's
+  // speed estimate must average that jitter out as it does a point's (turns one way and back
+  // cancel), so with a large beta the cutoff stays near its minimum and the jitter is smoothed
+  // as much as the same jitter on a point. Filtering the angle alone (never negative) would add
+  // the jitter up into a speed, raise the cutoff at rest and let the jitter through.
+  const OneEuroParameters handParameters{1.0, 10.0, 1.0};
+  OneEuroFilter<glm::dquat> turnFilter(handParameters);
+  OneEuroFilter<glm::dvec3> pointFilter(handParameters);
+  const glm::dquat rest = glm::angleAxis(0.7, glm::normalize(glm::dvec3(1.0, 2.0, -0.5)));
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> jitter(0.0, 0.004);  // radians per axis
+  double turnSquares = 0.0, pointSquares = 0.0, sampleSquares = 0.0;
+  constexpr int kSamples = 600;
+  for (int i = 0; i < kSamples; ++i) {
+    const glm::dvec3 turn(jitter(random), jitter(random), jitter(random));
+    const double angle = glm::length(turn);
+    const glm::dquat sample = glm::angleAxis(angle, turn / angle) * rest;
+    const glm::dquat turned = turnFilter.filter(sample, i / kRate);
+    const glm::dvec3 moved = pointFilter.filter(turn, i / kRate);
+    if (i < kSamples / 3) continue;  // the filters settle first
+    const double off = 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(turned, rest))));
+    turnSquares += off * off;
+    pointSquares += glm::dot(moved, moved);
+    sampleSquares += angle * angle;
+  }
+  EXPECT_LT(pointSquares, 0.25 * sampleSquares);  // the point's jitter is smoothed
+  EXPECT_NEAR(std::sqrt(turnSquares / pointSquares), 1.0, 0.15);
 }
 
 TEST(OneEuroFilter, FirstSamplePassesAndARepeatedInstantChangesNothing) {
