@@ -32,7 +32,8 @@ std::vector<SurfaceSample> sampleSurface(const TriangleMesh& mesh, std::size_t c
   samples.reserve(count);
   std::mt19937_64 random(seed);
   for (std::size_t i = 0; i < count; ++i) {
-    // One point per equal slice of the area: even cover, no clumps.
+    // One point per equal slice of the cumulative area (stratified): every part of the surface
+    // gets its share of points, though two may still fall close together across a slice's edge.
     const double at = (static_cast<double>(i) + unit(random)) / static_cast<double>(count) * total;
     const std::size_t t = std::min<std::size_t>(
         std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin(),

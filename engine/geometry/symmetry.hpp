@@ -119,12 +119,12 @@ class SymmetricFolder {
   // fold and the images before it made) no longer has its seed where `before` had it.
   std::optional<FoldRecord> imageOf(const Sheet& before, const Sheet& sheet, const FoldRecord& fold,
                                     std::size_t k) const;
-  // The vertices the fold reflects on `before`.
   // Throws InvalidSheet, saying where and why, when an initial vertex `moved` by the group (the
   // fold and its images, on `sheet`) and its image under some element no longer correspond as they
   // did on `before`. `byFold`: the vertices the fold itself moved.
   void expectSymmetric(const Sheet& before, const Sheet& sheet, const std::vector<char>& moved,
                        const std::vector<char>& byFold) const;
+  // The vertices the fold reflects on `before`.
   static std::vector<VertexIndex> verticesMoved(const Sheet& before, const FoldRecord& fold);
   struct Pieces {
     std::vector<glm::dvec2> moreSeeds;  // beyond the image's seed

@@ -1,8 +1,10 @@
 // The geometry's tolerances, in one place (docs/design.md 1 and 2). Each is relative to the sheet's
 // size, the diagonal of its development's bounding box, which no fold changes, unless its name or
 // comment says otherwise. They nest (on-plane < feature = isometry < cut floor < shortest drag <
-// grab snap < largest plane move), each an order above the one below, so what one step snaps or
-// refuses the next never mistakes for something else; the static_asserts at the end hold that.
+// grab snap < largest plane move), each an order above the one below but for the feature size and
+// the isometry tolerance, which are the same value (design.md 2: "feature 1e-9 = isometry"), so
+// what one step snaps or refuses the next never mistakes for something else; the static_asserts at
+// the end hold that.
 // Limits of interaction (pinch bands, hover radius: interaction/interaction_core.hpp) are in
 // metres of the user's world, not of the sheet, and stay with the interaction.
 #pragma once
