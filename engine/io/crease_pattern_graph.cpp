@@ -448,6 +448,8 @@ CreasePattern triangulateCreaseDrawing(const CreaseDrawing& drawing,
     pattern.notes.push_back(std::to_string(throughVertices) +
                             " lines through other vertices were split there");
 
+  if (cdt.dimension() < 2)
+    throw CreasePatternError("no paper: every line lies on one straight line");
   // Regions: faces joined across unconstrained edges; region 0 holds the outside.
   int regionCount = 0;
   {
