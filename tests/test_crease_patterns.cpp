@@ -318,6 +318,18 @@ TEST(CreasePatternSvg, CutSlitIsOpenedAndTheHairlineGapsInTheBorderSnapShut) {
   EXPECT_NEAR(valley->foldAngleDegrees, 45.0, 1e-12);  // opacity 0.25
 }
 
+TEST(CreasePatternSvg, FaceBoundedOnlyByBorderLinesIsAHole) {
+  // A 10 x 10 sheet with a 2 x 2 window, and a valley through the sheet beside it.
+  const CreasePattern p = readSvgCreasePatternText(
+      kSvgSquare + R"(<rect x="2" y="2" width="2" height="2" stroke="black"/>
+                      <line x1="6" y1="0" x2="6" y2="10" stroke="blue"/></svg>)",
+      "window.svg");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 96.0, 1e-9);
+  EXPECT_EQ(counts(p)[CreaseAssignment::Boundary],
+            4 + 2 + 4);  // outline (split by the valley) and window
+}
+
 TEST(CreasePatternSvg, CurvedPleatCubicsAreFlattenedOntoTheCurve) {
   const CreasePattern p = readSvgCreasePattern(kPatterns / "curved_pleat.svg");
   expectValid(p);
@@ -365,10 +377,10 @@ TEST(CreasePatternSvg, CrossingLinesAreSplitWhereTheyCross) {
 }
 
 TEST(CreasePatternSvg, PathCommandsRelativeAbsoluteAndArcs) {
-  // The border as one path: absolute M, relative h and v, absolute V, closing z; a valley drawn
+  // The border as one path: absolute M and V, relative h, closing z; a valley drawn
   // with relative l from a relative first m; a mountain quarter arc around the corner.
   const CreasePattern p = readSvgCreasePatternText(
-      R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0h10v10H0Z" stroke="#000"/>
+      R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M10,10h-10V0h10z" stroke="#000"/>
          <path d="m5,0 l0,5 5,0" stroke="#0000ff"/>
          <path d="M0,6 A4,4 0 0,1 4,10" stroke="#f00"/></svg>)",
       "paths.svg");
