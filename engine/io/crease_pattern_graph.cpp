@@ -162,7 +162,9 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
   const glm::dvec2 size = high - low;
   const double diagonal = std::sqrt(size.x * size.x + size.y * size.y);
   if (!(diagonal > 0.0) || !std::isfinite(diagonal))
-    throw CreasePatternError("the pattern has no extent: every line has length zero");
+    throw CreasePatternError(diagonal > 0.0
+                                 ? "coordinates too large to measure (over 1e308)"
+                                 : "the pattern has no extent: every line has length zero");
   // The floor keeps the snapping grid's cell count within 64-bit keys.
   const double tolerance = std::max(options.relativeSnap, 1e-12) * diagonal;
 

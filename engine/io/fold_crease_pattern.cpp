@@ -239,7 +239,7 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
   }
 
   // What is read but not used.
-  std::vector<std::string> ignored;
+  std::vector<std::string> ignored, frameKeys;
   for (const auto& [key, value] : document.items()) {
     static const std::unordered_set<std::string> used = {"vertices_coords",  "edges_vertices",
                                                          "edges_assignment", "edges_foldAngle",
@@ -249,10 +249,18 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
       drawing.notes.push_back("file_frames (" +
                               std::to_string(value.is_array() ? value.size() : 0) +
                               " frames) ignored: only the key frame is read");
-    else if (key.rfind("frame_", 0) == 0 || key.rfind("file_", 0) == 0)
-      continue;  // titles, classes, units, authors: metadata
+    else if (key.rfind("frame_", 0) == 0)
+      frameKeys.push_back(key);  // title, classes, attributes, unit: said in a note
+    else if (key.rfind("file_", 0) == 0)
+      continue;  // spec, creator, author, title, classes: about the file, nothing to fold
     else
       ignored.push_back(key);
+  }
+  if (!frameKeys.empty()) {
+    std::string line = "key frame metadata ignored (coordinates kept in the file's units):";
+    for (std::size_t k = 0; k < frameKeys.size() && k < 8; ++k)
+      line += (k ? ", " : " ") + quotedExcerpt(frameKeys[k], 40);
+    drawing.notes.push_back(line);
   }
   if (!ignored.empty()) {
     std::string line = "ignored:";
