@@ -141,9 +141,9 @@ TEST(CreasePatternFold, WaterbombBaseWithFacesLowerCaseAndDefaultAngles) {
     if (e.assignment == CreaseAssignment::Mountain) EXPECT_EQ(e.foldAngleDegrees, -180.0);
     if (e.assignment == CreaseAssignment::Valley) EXPECT_EQ(e.foldAngleDegrees, 180.0);
   }
-  // The frames are not read, and a note says so.
+  // The frames (two, with the same keys: not a key given twice) are not read, and a note says so.
   EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
-    return n.find("file_frames") != std::string::npos;
+    return n.find("file_frames (2 frames)") != std::string::npos;
   }));
 }
 
@@ -227,6 +227,10 @@ TEST(CreasePatternFold, BadInputGetsOneLineNamingTheProblem) {
       foldError(R"({"vertices_coords": [[0,0]], "vertices_coords": [[1,1]], "edges_vertices": []})")
           .find("\"vertices_coords\" given twice"),
       std::string::npos);
+  EXPECT_NE(foldError(squareFold("", "", "",
+                                 R"(, "file_frames": [{"frame_title": "a", "frame_title": "b"}])"))
+                .find("\"frame_title\" given twice"),
+            std::string::npos);
   EXPECT_NE(foldError(R"({"vertices_coords": "square", "edges_vertices": []})")
                 .find("vertices_coords: must be an array"),
             std::string::npos);
