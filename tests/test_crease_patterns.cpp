@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -458,4 +460,29 @@ TEST(CreasePatternGraph, ValidateCatchesBrokenPatterns) {
   for (auto& e : inner.edges)
     if (e.assignment == CreaseAssignment::Valley) e.assignment = CreaseAssignment::Cut;
   EXPECT_TRUE(validateCreasePattern(inner));
+}
+
+// Origami Simulator's own examples (github.com/amandaghassaei/OrigamiSimulator, assets/), not in
+// this repository (their licence): set CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS to a checkout's assets
+// folder and every .fold and .svg below it must load into a valid pattern. Skipped without it.
+TEST(CreasePatternExternal, OrigamiSimulatorExamplesLoad) {
+  const char* root = std::getenv("CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS");
+  if (!root) GTEST_SKIP() << "CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS is not set";
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
+    if (entry.path().extension() == ".fold" || entry.path().extension() == ".svg")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  for (const auto& file : files) {
+    try {
+      const CreasePattern p =
+          file.extension() == ".fold" ? readFoldCreasePattern(file) : readSvgCreasePattern(file);
+      expectValid(p);
+      std::printf("%s: %zu vertices, %zu triangles, %zu edges\n", file.string().c_str(),
+                  p.vertices.size(), p.triangles.size(), p.edges.size());
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << error.what();
+    }
+  }
 }
