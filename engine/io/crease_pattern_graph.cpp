@@ -196,7 +196,7 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
   // 2. Crossings and touches, found among the lines that share a cell of a grid, and the lines
   // split there. A crossing snapped to a nearby vertex bends its lines a little, which can make
   // new crossings within the tolerance of that vertex: rounds repeat until none is left.
-  std::size_t zeroLength = 0, repeated = 0, conflicting = 0;
+  std::size_t zeroLength = 0, repeated = 0, conflicting = 0, crossingVertices = 0;
   for (int round = 0;; ++round) {
     std::vector<std::vector<Split>> splits(drawing.lines.size());
     std::size_t splitCount = 0;
@@ -291,15 +291,18 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
           const auto index = static_cast<std::uint32_t>(vertices.size());
           vertices.push_back(at);
           const std::uint32_t vertex = snapper.snap(at, index, vertices);
-          if (vertex != index) vertices.pop_back();
+          if (vertex != index)
+            vertices.pop_back();
+          else
+            ++crossingVertices;
           splits[i].push_back({t, vertex});
           splits[j].push_back({u, vertex});
           splitCount += 2;
         }
       }
-      if (vertices.size() > kMaxCreasePatternVertices)
+      if (crossingVertices > kMaxCreasePatternVertices)
         throw CreasePatternError("more than " + std::to_string(kMaxCreasePatternVertices) +
-                                 " vertices after splitting lines where they cross");
+                                 " crossings of lines");
     }
 
     // 3. Lines cut at their splits; zero-length pieces dropped, repeats merged.
