@@ -140,8 +140,12 @@ TEST(CreasePatternFold, WaterbombBaseWithFacesLowerCaseAndDefaultAngles) {
   EXPECT_EQ(c[CreaseAssignment::Valley], 4);
   EXPECT_EQ(c[CreaseAssignment::Flat], 0);  // the faces are triangles already
   for (const auto& e : p.edges) {
-    if (e.assignment == CreaseAssignment::Mountain) EXPECT_EQ(e.foldAngleDegrees, -180.0);
-    if (e.assignment == CreaseAssignment::Valley) EXPECT_EQ(e.foldAngleDegrees, 180.0);
+    if (e.assignment == CreaseAssignment::Mountain) {
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    }
+    if (e.assignment == CreaseAssignment::Valley) {
+      EXPECT_EQ(e.foldAngleDegrees, 180.0);
+    }
   }
   // The frames (two, with the same keys: not a key given twice) are not read, and a note says so.
   EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
@@ -302,8 +306,12 @@ TEST(CreasePatternSvg, SquareTwistWithGroupTransformStylesAndColourSpellings) {
   EXPECT_EQ(c[CreaseAssignment::Valley], 4);
   EXPECT_EQ(c[CreaseAssignment::Boundary], 12);
   for (const auto& e : p.edges) {
-    if (e.assignment == CreaseAssignment::Valley) EXPECT_NEAR(e.foldAngleDegrees, 90.0, 1e-12);
-    if (e.assignment == CreaseAssignment::Mountain) EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    if (e.assignment == CreaseAssignment::Valley) {
+      EXPECT_NEAR(e.foldAngleDegrees, 90.0, 1e-12);
+    }
+    if (e.assignment == CreaseAssignment::Mountain) {
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    }
   }
   // SVG's y points down: the twisted square's corner (1.5, 1) is at (37.5, -25).
   ASSERT_TRUE(edgeBetween(p, {37.5, -25}, {75, -37.5}));
