@@ -16,6 +16,7 @@
 
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern_graph.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/input_limits.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
@@ -453,6 +454,28 @@ TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {
   svgError(R"(<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa">
     <!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;"><!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">]>
     <svg><line stroke="&c;"/></svg>)");
+}
+
+TEST(CreasePatternReader, ChoosesTheFormatByNameOrFirstCharacter) {
+  EXPECT_EQ(readCreasePattern(kPatterns / "miura_ori.svg").triangles.size(), 24u);
+  EXPECT_EQ(readCreasePattern(kPatterns / "miura_ori.fold").triangles.size(), 24u);
+  const auto directory = std::filesystem::temp_directory_path() / "curvefold_pattern_reader";
+  std::filesystem::create_directories(directory);
+  std::filesystem::copy_file(kPatterns / "cut_slit.svg", directory / "slit.txt",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(kPatterns / "single_crease.fold", directory / "crease.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  EXPECT_EQ(counts(readCreasePattern(directory / "slit.txt"))[CreaseAssignment::Cut], 2);
+  EXPECT_EQ(readCreasePattern(directory / "crease.json").triangles.size(), 4u);
+  { std::ofstream(directory / "note.txt") << "a crease pattern"; }
+  try {
+    readCreasePattern(directory / "note.txt");
+    ADD_FAILURE() << "read a text file as a crease pattern";
+  } catch (const CreasePatternError& error) {
+    EXPECT_NE(std::string(error.what()).find("neither FOLD nor SVG"), std::string::npos);
+  }
+  EXPECT_THROW(readCreasePattern(directory / "missing.fold"), FileError);
+  std::filesystem::remove_all(directory);
 }
 
 TEST(CreasePatternGraph, ValidateCatchesBrokenPatterns) {
