@@ -34,6 +34,8 @@ run fuzz_fold fuzz/corpus/fold
 run fuzz_writers fuzz/corpus/writers
 run fuzz_obj_reader tests/data/obj
 run fuzz_design_reader fuzz/corpus/design
+run fuzz_crease_pattern_fold tests/data/crease_patterns fuzz/corpus/crease_pattern_fold
+run fuzz_crease_pattern_svg tests/data/crease_patterns fuzz/corpus/crease_pattern_svg
 run fuzz_recording_reader tests/data/recordings fuzz/corpus/recording
 run fuzz_gesture_script examples/scripts fuzz/corpus/gesture
 echo "fuzzers: no crash in ${seconds} s each"

@@ -13,6 +13,8 @@ packages=(
   clang-format
   # folding toward a goal: both cores, the local search, nearest neighbours
   libtbb-dev libnlopt-cxx-dev libnanoflann-dev
+  # SVG crease patterns from other tools (Origami Simulator's convention): an XML parser
+  libxml2-dev
   # the printable crease pattern (PDF)
   libcairo2-dev
   # the main job's animated picture of a replay (GIF)

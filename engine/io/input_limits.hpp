@@ -18,6 +18,15 @@ inline constexpr std::uint64_t kMaxRecordingBytes = 256ull << 20;
 inline constexpr std::uint64_t kMaxRecordingHeaderBytes = kMaxDesignBytes;
 inline constexpr std::uint64_t kMaxRecordingFrameBytes = 64ull << 10;
 
+// Crease patterns from other tools (docs/formats.md "Crease patterns"): a FOLD or SVG file, the
+// vertices and edges it may hold (counted as read, and again after an SVG's lines are split where
+// they cross), and a FOLD file's face corners (all faces together). Origami Simulator's largest
+// example has about 10k edges; a 1M-vertex sheet is the simulation's largest target.
+inline constexpr std::uint64_t kMaxCreasePatternBytes = 64ull << 20;
+inline constexpr std::uint64_t kMaxCreasePatternVertices = 1'000'000;
+inline constexpr std::uint64_t kMaxCreasePatternEdges = 3'000'000;
+inline constexpr std::uint64_t kMaxCreasePatternFaceCorners = 6'000'000;
+
 // The whole file as text, refused (FileError) when it cannot be read, is not a regular file or
 // stream, or holds more than maxBytes: "<path>: 104857600 bytes, more than a <kind> may hold
 // (64 MiB)". Out of memory while reading is the same kind of one-line FileError.

@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <unordered_set>
+#include <vector>
 
 namespace curvefold {
 namespace {
@@ -74,11 +76,28 @@ std::string jsonParseProblem(const json::exception& error) {
   return message;
 }
 
-json parseJsonText(std::string_view text, std::string_view name, const JsonMemberFilter& keep) {
+json parseJsonText(std::string_view text, std::string_view name, const JsonMemberFilter& keep,
+                   DuplicateKeys duplicates) {
   try {
-    if (!keep) return json::parse(text);
+    if (!keep && duplicates == DuplicateKeys::LastWins) return json::parse(text);
+    // The keys seen in the open object at each depth (an object's keys arrive at its depth + 1).
+    std::vector<std::unordered_set<std::string>> seen;
     return json::parse(text, [&](int depth, json::parse_event_t event, json& parsed) {
-      return event != json::parse_event_t::key || keep(depth, parsed.get_ref<const std::string&>());
+      if (duplicates == DuplicateKeys::Refuse) {
+        const auto level = static_cast<std::size_t>(depth);
+        if (event == json::parse_event_t::object_start) {
+          if (seen.size() <= level + 1) seen.resize(level + 2);
+          seen[level + 1].clear();
+        } else if (event == json::parse_event_t::key) {
+          if (seen.size() <= level) seen.resize(level + 1);
+          const std::string& key = parsed.get_ref<const std::string&>();
+          if (!seen[level].insert(key).second)
+            throw JsonReadError(std::string(name) + ": key " + quotedExcerpt(key) +
+                                " given twice in one object");
+        }
+      }
+      return event != json::parse_event_t::key || !keep ||
+             keep(depth, parsed.get_ref<const std::string&>());
     });
   } catch (const json::parse_error& e) {
     // "parse error at line L, column C: problem": keep the place and the problem.

@@ -54,9 +54,14 @@ using JsonMemberFilter = std::function<bool(int depth, std::string_view key)>;
 // The shortest text that reads back as the same double, for messages and lines.
 std::string shortestDouble(double value);
 
-// Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem".
+// What a key given twice in one object means: JSON leaves it open; nlohmann keeps the last.
+enum class DuplicateKeys { LastWins, Refuse };
+
+// Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem",
+// and with DuplicateKeys::Refuse "<name>: key "k" given twice in one object".
 nlohmann::json parseJsonText(std::string_view text, std::string_view name,
-                             const JsonMemberFilter& keep = {});
+                             const JsonMemberFilter& keep = {},
+                             DuplicateKeys duplicates = DuplicateKeys::LastWins);
 // nlohmann's message without its "[json.exception...]" tag, for a parse inside a larger report.
 std::string jsonParseProblem(const nlohmann::json::exception& error);
 

@@ -1,0 +1,34 @@
+#include "engine/io/crease_pattern_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "engine/io/crease_pattern_graph.hpp"
+#include "engine/io/fold_crease_pattern.hpp"
+#include "engine/io/input_limits.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
+
+namespace curvefold {
+
+CreasePattern readCreasePattern(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string text = readWholeFile(path, kMaxCreasePatternBytes, "crease pattern");
+  bool svg = extension == ".svg";
+  if (extension != ".fold" && !svg) {
+    const auto first =
+        std::find_if(text.begin(), text.end(), [](unsigned char c) { return !std::isspace(c); });
+    // A UTF-8 byte-order mark is how some editors start an SVG.
+    const bool bom = text.rfind("\xEF\xBB\xBF", 0) == 0;
+    const char start = bom && text.size() > 3 ? text[3] : (first == text.end() ? '\0' : *first);
+    if (start != '{' && start != '<')
+      throw CreasePatternError(path.string() + ": neither FOLD nor SVG (name it .fold or .svg)");
+    svg = start == '<';
+  }
+  return svg ? readSvgCreasePatternText(text, path.string())
+             : readFoldCreasePatternText(text, path.string());
+}
+
+}  // namespace curvefold

@@ -1,0 +1,519 @@
+// The crease-pattern readers (engine/io/fold_crease_pattern.hpp, svg_crease_pattern.hpp) on the
+// project's own patterns (tests/data/crease_patterns: by hand, and by make_patterns.py), and every
+// kind of bad input with its one line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <set>
+#include <string>
+
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/crease_pattern_graph.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
+#include "engine/io/fold_crease_pattern.hpp"
+#include "engine/io/input_limits.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
+
+using namespace curvefold;
+
+namespace {
+
+const std::filesystem::path kPatterns =
+    std::filesystem::path(CURVEFOLD_TEST_DATA) / "crease_patterns";
+
+double area(const CreasePattern& p) {
+  double sum = 0.0;
+  for (const auto& t : p.triangles) {
+    const glm::dvec2 a = p.vertices[t[0]], b = p.vertices[t[1]], c = p.vertices[t[2]];
+    sum += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  }
+  return sum;
+}
+
+std::map<CreaseAssignment, int> counts(const CreasePattern& p) {
+  std::map<CreaseAssignment, int> out;
+  for (const auto& e : p.edges) ++out[e.assignment];
+  return out;
+}
+
+// Pieces of paper: triangles joined across shared edges.
+int pieces(const CreasePattern& p) {
+  std::vector<int> parent(p.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const auto& t : p.triangles)
+    for (int k = 0; k < 3; ++k) parent[find(t[k])] = find(t[(k + 1) % 3]);
+  std::set<int> roots;
+  for (const auto& t : p.triangles) roots.insert(find(t[0]));
+  return static_cast<int>(roots.size());
+}
+
+// The edge between the vertices nearest to p and q; fails the test when there is none.
+const CreasePatternEdge* edgeBetween(const CreasePattern& pattern, glm::dvec2 p, glm::dvec2 q) {
+  for (const auto& e : pattern.edges) {
+    const glm::dvec2 a = pattern.vertices[e.a], b = pattern.vertices[e.b];
+    const auto near = [](glm::dvec2 x, glm::dvec2 y) {
+      return std::hypot(x.x - y.x, x.y - y.y) < 1e-6;
+    };
+    if ((near(a, p) && near(b, q)) || (near(a, q) && near(b, p))) return &e;
+  }
+  return nullptr;
+}
+
+void expectValid(const CreasePattern& pattern) {
+  const auto problem = validateCreasePattern(pattern);
+  EXPECT_FALSE(problem) << *problem;
+}
+
+std::string foldError(const std::string& text) {
+  try {
+    readFoldCreasePatternText(text, "bad.fold");
+  } catch (const CreasePatternError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("bad.fold: ", 0), 0u) << message;
+    return message;
+  }
+  ADD_FAILURE() << "no error for " << text.substr(0, 200);
+  return {};
+}
+
+std::string svgError(const std::string& text) {
+  try {
+    readSvgCreasePatternText(text, "bad.svg");
+  } catch (const CreasePatternError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("bad.svg: ", 0), 0u) << message;
+    return message;
+  }
+  ADD_FAILURE() << "no error for " << text.substr(0, 200);
+  return {};
+}
+
+// A unit square with the given extra vertices and edges (after its 4 border edges).
+std::string squareFold(const std::string& extraVertices, const std::string& extraEdges,
+                       const std::string& extraAssignments, const std::string& more = "") {
+  return R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1])" + extraVertices +
+         R"(], "edges_vertices": [[0,1],[1,2],[2,3],[3,0])" + extraEdges +
+         R"(], "edges_assignment": ["B","B","B","B")" + extraAssignments + "]" + more + "}";
+}
+
+const std::string kSvgSquare =
+    R"(<svg xmlns="http://www.w3.org/2000/svg"><rect x="0" y="0" width="10" height="10" stroke="#000"/>)";
+
+}  // namespace
+
+// --- FOLD ---
+
+TEST(CreasePatternFold, SingleCreaseKeepsItsAngleAndSplitsTheSquareIntoTriangles) {
+  const CreasePattern p = readFoldCreasePattern(kPatterns / "single_crease.fold");
+  expectValid(p);
+  EXPECT_EQ(p.vertices.size(), 6u);
+  EXPECT_EQ(p.triangles.size(), 4u);
+  EXPECT_NEAR(area(p), 1.0, 1e-12);
+  const CreasePatternEdge* crease = edgeBetween(p, {0.5, 0}, {0.5, 1});
+  ASSERT_TRUE(crease);
+  EXPECT_EQ(crease->assignment, CreaseAssignment::Valley);
+  EXPECT_EQ(crease->foldAngleDegrees, 90.0);
+  auto c = counts(p);
+  EXPECT_EQ(c[CreaseAssignment::Boundary], 6);
+  EXPECT_EQ(c[CreaseAssignment::Flat], 2);  // one diagonal in each half
+}
+
+TEST(CreasePatternFold, WaterbombBaseWithFacesLowerCaseAndDefaultAngles) {
+  const CreasePattern p = readFoldCreasePattern(kPatterns / "waterbomb_base.fold");
+  expectValid(p);
+  EXPECT_EQ(p.triangles.size(), 8u);
+  EXPECT_NEAR(area(p), 4.0, 1e-12);
+  auto c = counts(p);
+  EXPECT_EQ(c[CreaseAssignment::Mountain], 4);
+  EXPECT_EQ(c[CreaseAssignment::Valley], 4);
+  EXPECT_EQ(c[CreaseAssignment::Flat], 0);  // the faces are triangles already
+  for (const auto& e : p.edges) {
+    if (e.assignment == CreaseAssignment::Mountain) {
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    }
+    if (e.assignment == CreaseAssignment::Valley) {
+      EXPECT_EQ(e.foldAngleDegrees, 180.0);
+    }
+  }
+  // The frames (two, with the same keys: not a key given twice) are not read, and a note says so.
+  EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
+    return n.find("file_frames (2 frames)") != std::string::npos;
+  }));
+}
+
+TEST(CreasePatternFold, ConcaveFaceFoundWithoutFacesIsTriangulatedInsideOnly) {
+  const CreasePattern p = readFoldCreasePattern(kPatterns / "concave_face.fold");
+  expectValid(p);
+  // The L's area: a triangle across the notch would add 0.5 or more.
+  EXPECT_NEAR(area(p), 3.0, 1e-12);
+  const CreasePatternEdge* crease = edgeBetween(p, {0, 1.5}, {1, 1.5});
+  ASSERT_TRUE(crease);
+  EXPECT_EQ(crease->assignment, CreaseAssignment::Mountain);
+  EXPECT_EQ(crease->foldAngleDegrees, -60.0);
+  EXPECT_FALSE(edgeBetween(p, {2, 1}, {1, 1.5}));  // across the notch, outside the paper
+}
+
+TEST(CreasePatternFold, MiuraOriFromFoldAndSvgGiveTheSamePattern) {
+  const CreasePattern fold = readFoldCreasePattern(kPatterns / "miura_ori.fold");
+  const CreasePattern svg = readSvgCreasePattern(kPatterns / "miura_ori.svg");
+  expectValid(fold);
+  expectValid(svg);
+  EXPECT_EQ(fold.vertices.size(), 20u);
+  EXPECT_EQ(fold.triangles.size(), 24u);  // 12 parallelograms
+  EXPECT_EQ(counts(fold), counts(svg));
+  EXPECT_NEAR(area(fold), area(svg), 1e-9);
+  // Every crease of one is a crease of the other, with the same assignment.
+  for (const auto& e : fold.edges) {
+    if (e.assignment == CreaseAssignment::Flat) continue;
+    const CreasePatternEdge* other = edgeBetween(svg, fold.vertices[e.a], fold.vertices[e.b]);
+    ASSERT_TRUE(other);
+    EXPECT_EQ(other->assignment, e.assignment);
+    EXPECT_EQ(other->foldAngleDegrees, e.foldAngleDegrees);
+  }
+}
+
+TEST(CreasePatternFold, CurvedPleatSegmentsAreKept) {
+  const CreasePattern p = readFoldCreasePattern(kPatterns / "curved_pleat.fold");
+  expectValid(p);
+  auto c = counts(p);
+  EXPECT_EQ(c[CreaseAssignment::Mountain], 32);  // two creases of 16 segments
+  EXPECT_EQ(c[CreaseAssignment::Valley], 16);
+  EXPECT_NEAR(area(p), 16.0, 1e-9);
+}
+
+TEST(CreasePatternFold, ThreeDimensionalFileFlatInYReadsInXZ) {
+  const CreasePattern p = readFoldCreasePatternText(
+      R"({"vertices_coords": [[0,0,0],[2,0,0],[2,0,1],[0,0,1]], "edges_vertices": [[0,1],[1,2],[2,3],[3,0],[0,2]],
+          "edges_assignment": ["B","B","B","B","V"], "edges_foldAngle": [0,0,0,0,45],
+          "frame_classes": ["creasePattern"]})",
+      "flat3d.fold");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 2.0, 1e-12);
+  ASSERT_TRUE(edgeBetween(p, {0, 0}, {2, 1}));
+  EXPECT_EQ(edgeBetween(p, {0, 0}, {2, 1})->foldAngleDegrees, 45.0);
+}
+
+TEST(CreasePatternFold, CutIsOpenedAndCanSplitThePaper) {
+  // A slit from the bottom edge's midpoint up to the centre: the border vertex is doubled.
+  const CreasePattern slit = readFoldCreasePatternText(
+      R"({"vertices_coords": [[0,0],[0.5,0],[1,0],[1,1],[0,1],[0.5,0.5]],
+          "edges_vertices": [[0,1],[1,2],[2,3],[3,4],[4,0],[1,5]],
+          "edges_assignment": ["B","B","B","B","B","C"]})",
+      "slit.fold");
+  expectValid(slit);
+  EXPECT_EQ(slit.vertices.size(), 7u);
+  EXPECT_EQ(counts(slit)[CreaseAssignment::Cut], 2);  // one each side
+  EXPECT_EQ(pieces(slit), 1);
+  // A cut right across makes two pieces.
+  const CreasePattern across = readFoldCreasePatternText(
+      R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1],[0,0.5],[1,0.5]],
+          "edges_vertices": [[0,1],[1,5],[5,2],[2,3],[3,4],[4,0],[4,5]],
+          "edges_assignment": ["B","B","B","B","B","B","C"]})",
+      "across.fold");
+  expectValid(across);
+  EXPECT_EQ(pieces(across), 2);
+  EXPECT_EQ(across.vertices.size(), 8u);
+}
+
+TEST(CreasePatternFold, BadInputGetsOneLineNamingTheProblem) {
+  EXPECT_NE(foldError("{\"vertices_coords\": [[0,0],").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(
+      foldError(R"({"vertices_coords": [[0,0]], "vertices_coords": [[1,1]], "edges_vertices": []})")
+          .find("\"vertices_coords\" given twice"),
+      std::string::npos);
+  EXPECT_NE(foldError(squareFold("", "", "",
+                                 R"(, "file_frames": [{"frame_title": "a", "frame_title": "b"}])"))
+                .find("\"frame_title\" given twice"),
+            std::string::npos);
+  EXPECT_NE(foldError(R"({"vertices_coords": "square", "edges_vertices": []})")
+                .find("vertices_coords: must be an array"),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold("", ",[0,7]", ",\"M\""))
+                .find("edges_vertices[4]: vertex 7 out of range"),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold("", ",[0,2]", ",\"Q\"")).find("unknown assignment \"Q\""),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold("", ",[0,2]", "")).find("edges_assignment: has 4 entries"),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold("", ",[0,2]", ",\"M\"", R"(, "edges_foldAngle": [0,0,0,0,200])"))
+                .find("outside [-180, 180]"),
+            std::string::npos);
+  // Two diagonals crossing at the centre without a vertex there.
+  EXPECT_NE(foldError(squareFold("", ",[0,2],[1,3]", ",\"M\",\"V\""))
+                .find("cross at (0.5, 0.5) without a vertex"),
+            std::string::npos);
+  // A crease ending on another crease's inside.
+  EXPECT_NE(foldError(squareFold(",[0.5,0.5]", ",[0,2],[1,4]", ",\"M\",\"V\""))
+                .find("passes through vertex 4"),
+            std::string::npos);
+  // A crease outside the paper.
+  EXPECT_NE(foldError(squareFold(",[2,0],[3,1]", ",[4,5]", ",\"M\"")).find("has no face"),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold(",[1,1]", ",[2,4]", ",\"M\"")).find("length zero"),
+            std::string::npos);
+  EXPECT_NE(foldError(R"({"vertices_coords": [[0,0,0],[1,0,0],[1,1,0.5],[0,1,0]],
+                          "edges_vertices": [[0,1],[1,2],[2,3],[3,0]], "edges_assignment": ["B","B","B","B"]})")
+                .find("vertices_coords: not a flat crease pattern"),
+            std::string::npos);
+  EXPECT_NE(foldError(squareFold("", ",[0,2]", ",\"M\"", R"(, "faces_vertices": [[0,1]])"))
+                .find("faces_vertices[0]: has fewer than 3 vertices"),
+            std::string::npos);
+  EXPECT_NE(
+      foldError(
+          R"({"vertices_coords": [[0,0],[1,0]], "edges_vertices": [[0,1]], "edges_assignment": ["B"]})")
+          .find("no paper"),
+      std::string::npos);
+}
+
+TEST(CreasePatternFold, CountsAndSizesPastTheLimitsAreRefused) {
+  std::string text = R"({"vertices_coords": [)";
+  text.reserve(8 * kMaxCreasePatternVertices);
+  for (std::uint64_t i = 0; i <= kMaxCreasePatternVertices; ++i) text += i ? ",[0,0]" : "[0,0]";
+  text += R"(], "edges_vertices": []})";
+  EXPECT_NE(foldError(text).find("more than a crease pattern may hold (1000000)"),
+            std::string::npos);
+  // A file over the byte limit is refused before it is read (a sparse file costs nothing).
+  const auto path = std::filesystem::temp_directory_path() / "curvefold_huge_pattern.fold";
+  { std::ofstream out(path); }
+  std::filesystem::resize_file(path, kMaxCreasePatternBytes + 1);
+  EXPECT_THROW(readFoldCreasePattern(path), FileError);
+  EXPECT_THROW(readSvgCreasePattern(path), FileError);
+  std::filesystem::remove(path);
+}
+
+// --- SVG ---
+
+TEST(CreasePatternSvg, SquareTwistWithGroupTransformStylesAndColourSpellings) {
+  const CreasePattern p = readSvgCreasePattern(kPatterns / "square_twist.svg");
+  expectValid(p);
+  EXPECT_EQ(p.vertices.size(), 16u);
+  EXPECT_EQ(p.triangles.size(), 18u);
+  EXPECT_NEAR(area(p), 100.0 * 100.0, 1e-6);  // scale(25) on a 4 x 4 sheet
+  auto c = counts(p);
+  EXPECT_EQ(c[CreaseAssignment::Mountain], 8);
+  EXPECT_EQ(c[CreaseAssignment::Valley], 4);
+  EXPECT_EQ(c[CreaseAssignment::Boundary], 12);
+  for (const auto& e : p.edges) {
+    if (e.assignment == CreaseAssignment::Valley) {
+      EXPECT_NEAR(e.foldAngleDegrees, 90.0, 1e-12);
+    }
+    if (e.assignment == CreaseAssignment::Mountain) {
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    }
+  }
+  // SVG's y points down: the twisted square's corner (1.5, 1) is at (37.5, -25).
+  ASSERT_TRUE(edgeBetween(p, {37.5, -25}, {75, -37.5}));
+  EXPECT_EQ(edgeBetween(p, {37.5, -25}, {75, -37.5})->assignment, CreaseAssignment::Mountain);
+}
+
+TEST(CreasePatternSvg, CutSlitIsOpenedAndTheHairlineGapsInTheBorderSnapShut) {
+  const CreasePattern p = readSvgCreasePattern(kPatterns / "cut_slit.svg");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 100.0 * 100.0, 1e-2);
+  EXPECT_EQ(counts(p)[CreaseAssignment::Cut], 2);
+  // The slit's end on the border, (50, -100), is two vertices now.
+  EXPECT_EQ(std::count_if(p.vertices.begin(), p.vertices.end(),
+                          [](glm::dvec2 v) { return std::hypot(v.x - 50, v.y + 100) < 1e-6; }),
+            2);
+  const CreasePatternEdge* valley = edgeBetween(p, {0, -20}, {100, -20});
+  ASSERT_TRUE(valley);
+  EXPECT_NEAR(valley->foldAngleDegrees, 45.0, 1e-12);  // opacity 0.25
+}
+
+TEST(CreasePatternSvg, FaceBoundedOnlyByBorderLinesIsAHole) {
+  // A 10 x 10 sheet with a 2 x 2 window, and a valley through the sheet beside it.
+  const CreasePattern p = readSvgCreasePatternText(
+      kSvgSquare + R"(<rect x="2" y="2" width="2" height="2" stroke="black"/>
+                      <line x1="6" y1="0" x2="6" y2="10" stroke="blue"/></svg>)",
+      "window.svg");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 96.0, 1e-9);
+  EXPECT_EQ(counts(p)[CreaseAssignment::Boundary],
+            4 + 2 + 4);  // outline (split by the valley) and window
+}
+
+TEST(CreasePatternSvg, CurvedPleatCubicsAreFlattenedOntoTheCurve) {
+  const CreasePattern p = readSvgCreasePattern(kPatterns / "curved_pleat.svg");
+  expectValid(p);
+  const auto c = counts(p);
+  EXPECT_GE(c.at(CreaseAssignment::Mountain), 8);  // at least 4 pieces a curve
+  EXPECT_LE(c.at(CreaseAssignment::Mountain), 128);
+  // Every crease vertex lies on its cubic (t found from x by bisection; y negated by the reader).
+  for (const auto& e : p.edges) {
+    if (e.assignment != CreaseAssignment::Mountain && e.assignment != CreaseAssignment::Valley)
+      continue;
+    EXPECT_NEAR(e.foldAngleDegrees, e.assignment == CreaseAssignment::Valley ? 90.0 : -90.0, 1e-12);
+    for (std::uint32_t v : {e.a, e.b}) {
+      const glm::dvec2 at = p.vertices[v];
+      const auto bx = [](double t) {
+        const double s = 1 - t;
+        return 3 * s * s * t * 1.2 + 3 * s * t * t * 2.8 + t * t * t * 4;
+      };
+      double low = 0, high = 1;
+      for (int k = 0; k < 60; ++k)
+        (bx(0.5 * (low + high)) < at.x ? low : high) = 0.5 * (low + high);
+      const double t = 0.5 * (low + high), s = 1 - t;
+      const double k = std::round(at.y);
+      const double y =
+          s * s * s * k + 3 * s * s * t * (k + 0.4) + 3 * s * t * t * (k + 0.4) + t * t * t * k;
+      EXPECT_NEAR(at.y, y, 1e-9);
+    }
+  }
+}
+
+TEST(CreasePatternSvg, CrossingLinesAreSplitWhereTheyCross) {
+  const CreasePattern p = readSvgCreasePatternText(
+      kSvgSquare +
+          R"(<line x1="0" y1="0" x2="10" y2="10" stroke="red"/><line x1="10" y1="0" x2="0" y2="10" stroke="blue"/></svg>)",
+      "x.svg");
+  expectValid(p);
+  EXPECT_EQ(p.vertices.size(), 5u);
+  ASSERT_TRUE(edgeBetween(p, {5, -5}, {0, 0}));
+  EXPECT_EQ(edgeBetween(p, {5, -5}, {0, 0})->assignment, CreaseAssignment::Mountain);
+  EXPECT_EQ(edgeBetween(p, {5, -5}, {10, 0})->assignment, CreaseAssignment::Valley);
+  // A crease ending a hair short of the border (a T) is joined to it.
+  const CreasePattern t = readSvgCreasePatternText(
+      kSvgSquare + R"(<line x1="5" y1="0.001" x2="5" y2="10" stroke="blue"/></svg>)", "t.svg");
+  expectValid(t);
+  EXPECT_EQ(t.triangles.size(), 4u);
+}
+
+TEST(CreasePatternSvg, PathCommandsRelativeAbsoluteAndArcs) {
+  // The border as one path: absolute M and V, relative h, closing z; a valley drawn
+  // with relative l from a relative first m; a mountain quarter arc around the corner.
+  const CreasePattern p = readSvgCreasePatternText(
+      R"(<svg xmlns="http://www.w3.org/2000/svg"><path d="M10,10h-10V0h10z" stroke="#000"/>
+         <path d="m5,0 l0,5 5,0" stroke="#0000ff"/>
+         <path d="M0,6 A4,4 0 0,1 4,10" stroke="#f00"/></svg>)",
+      "paths.svg");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 100.0, 1e-9);
+  ASSERT_TRUE(edgeBetween(p, {5, 0}, {5, -5}));
+  ASSERT_TRUE(edgeBetween(p, {5, -5}, {10, -5}));
+  int onArc = 0;
+  for (const glm::dvec2 v : p.vertices)
+    if (v.x > 1e-9 && v.y < -4.0 - 1e-9 && v.x < 4.0 - 1e-9) {
+      EXPECT_NEAR(std::hypot(v.x - 0, v.y + 10), 4.0, 1e-9);  // centre (0, 10) in SVG's y
+      ++onArc;
+    }
+  EXPECT_GE(onArc, 4);
+}
+
+TEST(CreasePatternSvg, StyleSheetClassesAndUnknownColoursAreNoted) {
+  const CreasePattern p = readSvgCreasePatternText(
+      R"(<svg xmlns="http://www.w3.org/2000/svg"><style>/* c */ .b{stroke:#000000} line.m { stroke: rgb(100%, 0%, 0%); opacity: 0.5 }</style>
+         <rect class="b" width="10" height="10"/><line class="m" x1="0" y1="5" x2="10" y2="5"/>
+         <line x1="0" y1="2" x2="10" y2="2" stroke="#231F20"/><defs><line x1="0" y1="0" x2="1" y2="9" stroke="red"/></defs></svg>)",
+      "classes.svg");
+  expectValid(p);
+  ASSERT_TRUE(edgeBetween(p, {0, -5}, {10, -5}));
+  EXPECT_NEAR(edgeBetween(p, {0, -5}, {10, -5})->foldAngleDegrees, -90.0, 1e-12);
+  EXPECT_FALSE(edgeBetween(p, {0, -2}, {10, -2}));
+  EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
+    return n.find("\"#231f20\" (1)") != std::string::npos;
+  }));
+}
+
+TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {
+  EXPECT_NE(svgError("<svg><line").find("not valid XML at line 1"), std::string::npos);
+  EXPECT_NE(svgError("<html/>").find("not an SVG file"), std::string::npos);
+  EXPECT_NE(svgError(kSvgSquare + R"(<path d="M0,0 L5" stroke="red"/></svg>)")
+                .find("line 1: malformed path data"),
+            std::string::npos);
+  EXPECT_NE(svgError(kSvgSquare + R"(<path d="M0,0 X5,5" stroke="red"/></svg>)")
+                .find("malformed path data"),
+            std::string::npos);
+  EXPECT_NE(
+      svgError(kSvgSquare + R"(<line x1="a" stroke="red"/></svg>)").find("x1 is not a number"),
+      std::string::npos);
+  EXPECT_NE(
+      svgError(kSvgSquare + R"svg(<g transform="rotate(1,2)"><line stroke="red"/></g></svg>)svg")
+          .find("transform \"rotate\" with 2 numbers"),
+      std::string::npos);
+  EXPECT_NE(svgError(R"(<svg><line x1="0" y1="0" x2="1" y2="1" stroke="#123456"/></svg>)")
+                .find("no lines of a crease colour"),
+            std::string::npos);
+  // A border that does not close leaves no paper.
+  EXPECT_NE(svgError(R"(<svg><polyline points="0,0 10,0 10,10 0,10" stroke="black"/></svg>)")
+                .find("no paper"),
+            std::string::npos);
+  // Entities are not expanded from outside, and a billion laughs stays small (libxml2's limits).
+  svgError(R"(<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa">
+    <!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;"><!ENTITY c "&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;">]>
+    <svg><line stroke="&c;"/></svg>)");
+}
+
+TEST(CreasePatternReader, ChoosesTheFormatByNameOrFirstCharacter) {
+  EXPECT_EQ(readCreasePattern(kPatterns / "miura_ori.svg").triangles.size(), 24u);
+  EXPECT_EQ(readCreasePattern(kPatterns / "miura_ori.fold").triangles.size(), 24u);
+  const auto directory = std::filesystem::temp_directory_path() / "curvefold_pattern_reader";
+  std::filesystem::create_directories(directory);
+  std::filesystem::copy_file(kPatterns / "cut_slit.svg", directory / "slit.txt",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(kPatterns / "single_crease.fold", directory / "crease.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  EXPECT_EQ(counts(readCreasePattern(directory / "slit.txt"))[CreaseAssignment::Cut], 2);
+  EXPECT_EQ(readCreasePattern(directory / "crease.json").triangles.size(), 4u);
+  { std::ofstream(directory / "note.txt") << "a crease pattern"; }
+  try {
+    readCreasePattern(directory / "note.txt");
+    ADD_FAILURE() << "read a text file as a crease pattern";
+  } catch (const CreasePatternError& error) {
+    EXPECT_NE(std::string(error.what()).find("neither FOLD nor SVG"), std::string::npos);
+  }
+  EXPECT_THROW(readCreasePattern(directory / "missing.fold"), FileError);
+  std::filesystem::remove_all(directory);
+}
+
+TEST(CreasePatternGraph, ValidateCatchesBrokenPatterns) {
+  CreasePattern p = readFoldCreasePattern(kPatterns / "single_crease.fold");
+  expectValid(p);
+  CreasePattern flipped = p;
+  std::swap(flipped.triangles[0][0], flipped.triangles[0][1]);
+  EXPECT_TRUE(validateCreasePattern(flipped));
+  CreasePattern missing = p;
+  missing.edges.pop_back();
+  EXPECT_TRUE(validateCreasePattern(missing));
+  CreasePattern inner = p;
+  for (auto& e : inner.edges)
+    if (e.assignment == CreaseAssignment::Valley) e.assignment = CreaseAssignment::Cut;
+  EXPECT_TRUE(validateCreasePattern(inner));
+}
+
+// Origami Simulator's own examples (github.com/amandaghassaei/OrigamiSimulator, assets/), not in
+// this repository (their licence): set CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS to a checkout's assets
+// folder and every .fold and .svg below it must load into a valid pattern. Skipped without it.
+TEST(CreasePatternExternal, OrigamiSimulatorExamplesLoad) {
+  const char* root = std::getenv("CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS");
+  if (!root) GTEST_SKIP() << "CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS is not set";
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
+    if (entry.path().extension() == ".fold" || entry.path().extension() == ".svg")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  for (const auto& file : files) {
+    try {
+      const CreasePattern p =
+          file.extension() == ".fold" ? readFoldCreasePattern(file) : readSvgCreasePattern(file);
+      expectValid(p);
+      std::printf("%s: %zu vertices, %zu triangles, %zu edges\n", file.string().c_str(),
+                  p.vertices.size(), p.triangles.size(), p.edges.size());
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << error.what();
+    }
+  }
+}
