@@ -26,6 +26,14 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Ends a command with an exit status once it has said what happened (a fit interrupted by Ctrl+C
+// that saved its design: 130); main prints nothing more.
+class ExitStatus : public std::runtime_error {
+ public:
+  explicit ExitStatus(int status) : std::runtime_error("exit status"), status(status) {}
+  int status;
+};
+
 // Where a command's "wrote ..." line goes: standard error when one of its outputs is standard
 // output ("-"), so that what is piped is the file alone; else standard output.
 std::ostream& statusFor(std::initializer_list<std::string_view> outputs);

@@ -1,15 +1,20 @@
 // `curvefold fit` and `curvefold distance` (issue 27): folding toward a target shape, and how far
 // two shapes lie apart.
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/commands.hpp"
 #include "app/document.hpp"
+#include "app/interrupt_guard.hpp"
 #include "app/studio_target.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -54,6 +59,7 @@ void addFitCommand(CLI::App& app) {
     SurfaceOptions from;
     std::size_t folds = 6;
     double seconds = 60.0;
+    std::uint64_t evaluations = 0;
     std::string seed = "1";
     bool allowSelfIntersection = false;
   };
@@ -67,10 +73,19 @@ void addFitCommand(CLI::App& app) {
   addSurfaceOptions(command, options->from);
   command->add_option("--folds", options->folds, "At most this many folds (each must help)")
       ->check(CLI::Range(1, 64));
-  command->add_option("--time", options->seconds, "Stop within this many seconds")
+  command
+      ->add_option("--time", options->seconds,
+                   "End within this many seconds, unfolding and measuring included (default 60, "
+                   "none with --evaluations alone)")
       ->check(CLI::Range(0.1, 86400.0));
-  command->add_option("--seed", options->seed,
-                      "Seed of the search (the same seed, the same folds)");
+  command
+      ->add_option("--evaluations", options->evaluations,
+                   "Score at most about this many candidate folds (a budget free of the clock: "
+                   "the same seed gives the same design on any machine)")
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1'000'000'000'000)));
+  command->add_option(
+      "--seed", options->seed,
+      "Seed of the search (with --evaluations, the same seed gives the same folds)");
   command->add_flag("--allow-self-intersection", options->allowSelfIntersection,
                     "Let a fold pass the sheet through itself");
   command->add_option("--log", options->log,
@@ -78,6 +93,10 @@ void addFitCommand(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
       ->required();
   command->callback([options, command] {
+    // The time limit counts from here: reading the target and measuring are part of it.
+    const auto started = std::chrono::steady_clock::now();
+    // Ctrl+C or SIGTERM stops the search; the best design found is still written (below).
+    const InterruptGuard interrupt;
     // Everything that can be refused is refused before the search (a NaN passes a range check).
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
@@ -106,7 +125,12 @@ void addFitCommand(CLI::App& app) {
     std::size_t trianglesBefore = initial.triangleCount();
     FitOptions fit;
     fit.maxFolds = options->folds;
-    fit.seconds = options->seconds;
+    // --evaluations alone: no clock, so nothing depends on the machine's speed.
+    const bool timed = command->count("--time") > 0 || options->evaluations == 0;
+    fit.seconds = timed ? options->seconds : std::numeric_limits<double>::infinity();
+    fit.started = started;
+    fit.maxEvaluations = options->evaluations;
+    fit.cancelled = &InterruptGuard::flag();
     fit.progress = [&](const FitProgress& step) {
       if (step.fold == 0) {
         std::cout << "start: " << studio::distanceText(step.hausdorff, step.chamfer, step.diagonal)
@@ -147,27 +171,49 @@ void addFitCommand(CLI::App& app) {
       std::cout << text << std::endl;
     };
     // The outputs, checked before the search: a path that cannot be written fails now.
+    nlohmann::json fitEnd;
     OutputSet outputs;
     outputs.add(options->output, [&](const fs::path& at) { saveDesign(design, at); });
     if (!options->log.empty())
       outputs.add(options->log, [&](const fs::path& at) {
         std::string text;
         for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
+        text += fitEnd.dump() + "\n";
         writeFileAtomically(at, text);
       });
     outputs.checkWritable();
     const FitResult result = fitFolds(session, *fitter, fit);
     design.folds = result.folds;
+    const bool interrupted = InterruptGuard::flag().load();
+    // The log's last line: how the fit ended (a line of its own kind, after the folds').
+    fitEnd = {{"event", "fit_end"},
+              {"stop", result.stopReason},
+              {"folds", result.steps.size() - 1},
+              {"evaluations", result.evaluations},
+              {"timed_out", result.timedOut},
+              {"out_of_evaluations", result.outOfEvaluations},
+              {"interrupted", interrupted},
+              {"seconds",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
 
     outputs.write();
     const FitProgress& last = result.steps.back();
-    std::cout << "stopped: " << result.stopReason << "\n"
-              << "wrote " << options->output << " (" << log.size() << " folds"
-              << (design.folds.size() > log.size()
+    std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
+              << " candidate folds scored\n";
+    if (result.timedOut)
+      std::cout << "the time limit cut the search short: another run may find other folds (give "
+                   "--evaluations to repeat a fit exactly)\n";
+    if (interrupted)
+      std::cout << "interrupted: wrote the best design found so far to " << options->output << " ("
+                << result.steps.size() - 1 << " folds)\n";
+    std::cout << "wrote " << options->output << " (" << result.steps.size() - 1 << " folds"
+              << (design.folds.size() > result.steps.size() - 1
                       ? ", " + std::to_string(design.folds.size()) + " with images"
                       : "")
               << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
+    std::cout.flush();
+    if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
   });
 }
 

@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
     if (app.get_subcommands().empty()) curvefold::cli::runDefault();
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const curvefold::cli::ExitStatus& e) {
+    return e.status;
   } catch (const std::bad_alloc&) {
     // A reader that knows its input names it; this is the last resort, naming the command.
     std::string command;

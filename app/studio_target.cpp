@@ -51,7 +51,21 @@ std::string distanceText(double hausdorff, double chamfer, double diagonal) {
 
 StudioTarget::StudioTarget(bool replaying) : replaying_(replaying) {}
 
+// The worker and the measures still running are waited for here, when the studio ends (each
+// stops at its next check, or within a measure).
 StudioTarget::~StudioTarget() = default;
+
+void StudioTarget::retireMeasuring() {
+  // A future of std::async waits for its task when destroyed: kept until it is ready.
+  if (measuring_.valid()) retired_.push_back(std::move(measuring_));
+  measuring_ = {};
+}
+
+void StudioTarget::reapRetired() {
+  std::erase_if(retired_, [](const std::future<Measured>& f) {
+    return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  });
+}
 
 void StudioTarget::load(const std::string& path, const session::Document& doc) {
   std::shared_ptr<const FoldFitter> fitter;
@@ -61,13 +75,16 @@ void StudioTarget::load(const std::string& path, const session::Document& doc) {
   } catch (const InvalidTarget& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
-  // The old worker's search (if any) is abandoned with it.
-  worker_.reset();
-  if (measuring_.valid()) measuring_.wait();
-  measuring_ = {};
+  // The old target's search (if any) is abandoned and its measure left to finish off the frame.
+  retireMeasuring();
   fitter_ = std::move(fitter);
   path_ = path;
-  if (!replaying_) worker_ = std::make_unique<SuggestionWorker>(fitter_);
+  if (!replaying_) {
+    if (worker_)
+      worker_->retarget(fitter_);
+    else
+      worker_ = std::make_unique<SuggestionWorker>(fitter_);
+  }
   measured_.reset();
   searching_ = false;
   answerNote_.clear();
@@ -98,8 +115,10 @@ void StudioTarget::suggest(const session::Document& doc) {
 void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
   const bool sameDesign =
       requestSession_ == doc.session.get() && requestRevision_ == doc.session->designRevision();
+  reapRetired();
   if (searching_ && !sameDesign) {
     // Folded, undone or replaced while searching: what comes is for another design.
+    if (worker_) worker_->cancel();
     searching_ = false;
     answerNote_ = "the design changed while searching: suggest again";
   }
@@ -182,7 +201,7 @@ std::string StudioTarget::suggestionLine(const InteractionCore& core) const {
 }
 
 void StudioTarget::documentReplaced() {
-  if (worker_) worker_ = std::make_unique<SuggestionWorker>(fitter_);  // abandons the search
+  if (worker_) worker_->cancel();
   searching_ = false;
   requestSession_ = nullptr;
   answerNote_.clear();
@@ -190,9 +209,8 @@ void StudioTarget::documentReplaced() {
   moved_.clear();
   offered_.clear();
   // A measure of the old design must not pass for one of the new (its session may share the
-  // address).
-  if (measuring_.valid()) measuring_.wait();
-  measuring_ = {};
+  // address): it finishes off the frame, unread.
+  retireMeasuring();
   measured_.reset();
   measuredCurrent_ = false;
 }

@@ -1,7 +1,9 @@
 // The studio's target shape (issue 27, docs/design.md 9): a mesh the designer folds toward, shown
 // as a ghost in the sheet's frame with its distance to the design, and the next folds toward it
 // suggested on request. The search runs on a worker thread (SuggestionWorker) and the distance is
-// measured off the frame too, so frames never wait for either. A suggestion reaches the
+// measured off the frame too, so frames never wait for either: a load, a change of the design or
+// of the document abandons the search in flight (SuggestionWorker::cancel, retarget) and leaves
+// an old measure to finish unread, without waiting for them. A suggestion reaches the
 // interaction core as input (InputFrame::suggestions), where it is recorded like the hands: a
 // replay offers the same folds at the same moment without searching, so it makes the same design.
 // The desktop window and the headset's panel share it.
@@ -53,6 +55,8 @@ class StudioTarget {
   // Starts the search for the next folds of the document's committed design (a drag in
   // progress is not part of it). Throws when there is no target.
   void suggest(const session::Document& doc);
+  // The worker (null without a target or while replaying), for tests and benchmarks.
+  const SuggestionWorker* worker() const { return worker_.get(); }
   bool searching() const { return searching_; }
 
   // Once a frame, before the frame reaches the core and the recorder: a search that finished for
@@ -96,6 +100,10 @@ class StudioTarget {
   std::optional<Measured> measured_;
   bool measuredCurrent_ = false;  // measured_ is of the design as it is
   std::future<Measured> measuring_;
+  // Measures of a design or target no longer shown, left to finish (never waited for on a frame).
+  std::vector<std::future<Measured>> retired_;
+  void retireMeasuring();
+  void reapRetired();
 };
 
 }  // namespace curvefold::studio

@@ -10,6 +10,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -23,6 +24,8 @@
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -360,6 +363,128 @@ py::list foldsOf(const PyDesign& design) {
   return folds;
 }
 
+// A shape to fit or measure: a Design (its folded form), an OBJ file, or a design file (its
+// folded form), as `curvefold fit` and `curvefold distance` read them.
+TriangleMesh shapeOf(const py::object& shape, const char* what) {
+  if (py::isinstance<PyDesign>(shape)) return meshOf(*py::cast<const PyDesign&>(shape).snapshot());
+  if (!py::isinstance<py::str>(shape) && !py::hasattr(shape, "__fspath__"))
+    throw std::invalid_argument(std::string(what) + ": expected a Design or a path");
+  const std::string path =
+      py::str(py::hasattr(shape, "__fspath__") ? shape.attr("__fspath__")() : shape);
+  py::gil_scoped_release release;
+  if (std::filesystem::path(path).extension() == ".obj") return readObjMesh(path);
+  const PyDesign design(loadDesign(path), path);
+  return meshOf(*design.snapshot());
+}
+
+std::string shapeName(const py::object& shape) {
+  if (py::isinstance<PyDesign>(shape)) return py::cast<const PyDesign&>(shape).name();
+  return py::str(py::hasattr(shape, "__fspath__") ? shape.attr("__fspath__")() : shape);
+}
+
+py::dict distanceDict(const SurfaceDistance& d) {
+  py::dict result;
+  result["hausdorff"] = d.hausdorff;
+  result["chamfer"] = d.chamfer;
+  result["diagonal"] = d.diagonal;
+  result["hausdorff_relative"] = d.relativeHausdorff();
+  result["chamfer_relative"] = d.relativeChamfer();
+  result["a_to_b_max"] = d.fromAMax;
+  result["a_to_b_mean"] = d.fromAMean;
+  result["b_to_a_max"] = d.fromBMax;
+  result["b_to_a_mean"] = d.fromBMean;
+  return result;
+}
+
+// `curvefold distance A B`: the same samples, the same numbers.
+py::dict distanceOf(const py::object& a, const py::object& b, std::size_t samples,
+                    std::uint64_t seed) {
+  if (samples < 100 || samples > 10'000'000)
+    throw std::invalid_argument("distance: samples must lie in 100 to 10000000");
+  const TriangleMesh meshA = shapeOf(a, "distance: a"), meshB = shapeOf(b, "distance: b");
+  SurfaceDistance d;
+  {
+    py::gil_scoped_release release;
+    try {
+      d = surfaceDistance(meshA, meshB, samples, seed);
+    } catch (const DegenerateMesh& e) {
+      const bool first = std::string(e.what()).find("first") != std::string::npos;
+      throw std::invalid_argument(std::string(e.what()) + " (" + [&] {
+        py::gil_scoped_acquire gil;
+        return shapeName(first ? a : b);
+      }() + ")");
+    }
+  }
+  return distanceDict(d);
+}
+
+// `curvefold fit TARGET --from <this design's surface>`, continuing from this design's folds:
+// the search runs on a session of its own with the GIL released, and the folds it keeps are made
+// on the design at the end, with the GIL held (the design never shows half a fit).
+py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
+                   std::optional<double> time, std::uint64_t seed,
+                   std::optional<std::uint64_t> evaluations, bool allowSelfIntersection) {
+  if (folds < 1 || folds > 64) throw std::invalid_argument("fit: folds must lie in 1 to 64");
+  if (time && !(*time >= 0.1 && *time <= 86400.0))
+    throw std::invalid_argument("fit: time must lie in 0.1 to 86400 seconds");
+  if (evaluations && (*evaluations < 1 || *evaluations > 1'000'000'000'000ull))
+    throw std::invalid_argument("fit: evaluations must lie in 1 to 10^12");
+  const auto started = std::chrono::steady_clock::now();
+  const std::string targetName = shapeName(target);
+  TriangleMesh mesh = shapeOf(target, "fit: target");
+  const Design before = d.design();
+  const std::shared_ptr<const Sheet> initial = std::make_shared<const Sheet>(d.session().initial());
+  FitResult result;
+  {
+    py::gil_scoped_release release;
+    FitSettings settings;
+    settings.seed = seed;
+    settings.allowSelfIntersection = allowSelfIntersection;
+    std::unique_ptr<FoldFitter> fitter;
+    FoldSession session(*initial);
+    if (!before.symmetry.empty()) session.setSymmetry(parseSymmetry(before.symmetry, *initial));
+    session.applyRecords(before.folds);
+    try {
+      fitter = std::make_unique<FoldFitter>(std::move(mesh), settings);
+      fitter->checkAgainst(session.fixed());
+    } catch (const InvalidTarget& e) {
+      throw std::invalid_argument(targetName + ": " + e.what());
+    }
+    FitOptions options;
+    options.maxFolds = folds;
+    // As the command line: evaluations alone use no clock.
+    options.seconds = time ? *time : (evaluations ? std::numeric_limits<double>::infinity() : 60.0);
+    options.started = started;
+    options.maxEvaluations = evaluations.value_or(0);
+    result = fitFolds(session, *fitter, options);
+  }
+  // The folds kept, made on the design (the same records: the same sheet).
+  std::vector<FoldRecord> added(result.folds.begin() + std::ptrdiff_t(before.folds.size()),
+                                result.folds.end());
+  d.session().applyRecords(added);
+  py::list steps;
+  for (const FitProgress& step : result.steps) {
+    py::dict item;
+    item["folds"] = step.fold;
+    item["hausdorff"] = step.hausdorff;
+    item["chamfer"] = step.chamfer;
+    item["seconds"] = step.seconds;
+    steps.append(item);
+  }
+  const FitProgress& last = result.steps.back();
+  py::dict report;
+  report["folds"] = result.steps.size() - 1;
+  report["hausdorff"] = last.hausdorff;
+  report["chamfer"] = last.chamfer;
+  report["diagonal"] = last.diagonal;
+  report["steps"] = steps;
+  report["stop"] = result.stopReason;
+  report["timed_out"] = result.timedOut;
+  report["out_of_evaluations"] = result.outOfEvaluations;
+  report["evaluations"] = result.evaluations;
+  return report;
+}
+
 }  // namespace
 }  // namespace curvefold::python
 
@@ -523,6 +648,16 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("pdf") = py::none(), py::arg("cut_svg") = py::none(),
            py::arg("perforate") = py::none(), py::arg("paper") = "a4", py::arg("angles") = false,
            "Writes the named files, all or none (as `curvefold export`)")
+      .def("fit", &fitDesign, py::arg("target"), py::kw_only(), py::arg("folds") = 6,
+           py::arg("time") = py::none(), py::arg("seed") = 1, py::arg("evaluations") = py::none(),
+           py::arg("allow_self_intersection") = false,
+           "Folds the design toward a target shape (an OBJ path, a design file or a Design), as "
+           "`curvefold fit` does from this design: at most `folds` more folds, each bringing it "
+           "closer, within `time` seconds (default 60; none when only `evaluations` is given), "
+           "scoring at most about `evaluations` candidate folds (the same seed then gives the "
+           "same folds on any machine). Returns {folds, hausdorff, chamfer, diagonal (metres), "
+           "steps, stop, timed_out, out_of_evaluations, evaluations}; the design holds the "
+           "folds kept.")
       .def("render", &renderDesign, py::arg("width") = 800, py::arg("height") = 600, py::kw_only(),
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
            "The folded form as an (height, width, 4) uint8 RGBA image (headless Vulkan)")
@@ -551,6 +686,11 @@ PYBIND11_MODULE(_curvefold, m) {
         return seconds;
       },
       py::arg("design"), py::arg("grab"), py::arg("to"), py::arg("repeats"));
+  m.def("distance", &distanceOf, py::arg("a"), py::arg("b"), py::kw_only(),
+        py::arg("samples") = kDefaultDistanceSamples, py::arg("seed") = 1,
+        "How far two shapes (Designs, OBJ paths or design files) lie apart, as `curvefold "
+        "distance A B`: {hausdorff, chamfer, diagonal (of b), hausdorff_relative, "
+        "chamfer_relative, a_to_b_max, a_to_b_mean, b_to_a_max, b_to_a_mean}, metres");
   m.def("surfaces", &surfacesInfo,
         "The catalogue: {name: {description, parameters: {name: {default, min, max, integer, "
         "description}}, symmetries}}");

@@ -50,8 +50,13 @@ bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double tolera
 void expectSoundFit(const FitResult& result, const FoldSession& session) {
   for (std::size_t k = 1; k < result.steps.size(); ++k)
     EXPECT_LT(result.steps[k].chamfer, result.steps[k - 1].chamfer) << "fold " << k;
-  EXPECT_EQ(result.steps.size() - 1 + (result.folds.size() - (result.steps.size() - 1)),
-            result.folds.size());
+  // One step per group kept (a fold and its symmetric images share a group number > 0).
+  std::size_t groups = 0;
+  for (std::size_t k = 0; k < result.folds.size(); ++k)
+    if (result.folds[k].group == 0 || k == 0 || result.folds[k].group != result.folds[k - 1].group)
+      ++groups;
+  EXPECT_EQ(groups, result.steps.size() - 1);
+  EXPECT_EQ(result.folds.size(), session.foldCount());
   testing::expectInvariants(session.fixed(), session.initial());
   EXPECT_TRUE(identical(replayFolds(session.initial(), result.folds), session.fixed()));
 }
@@ -102,6 +107,14 @@ TEST(SurfaceDistance, OfASquareAndItsShiftIsTheShift) {
   // Three quarters of the square lie off the quarter, on average a few centimetres.
   EXPECT_GT(q.fromBMean, 0.02);
   EXPECT_LT(q.fromBMean, 0.06);
+  // Two-sided: the far side counts whichever shape comes first (a one-sided measure would call
+  // the quarter on the square a perfect fit).
+  EXPECT_NEAR(q.hausdorff, 0.1 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(q.chamfer, 0.5 * (q.fromAMean + q.fromBMean), 1e-15);
+  const SurfaceDistance r = surfaceDistance(square, quarter, 20000);
+  EXPECT_NEAR(r.hausdorff, 0.1 * std::sqrt(2.0), 1e-12);
+  EXPECT_LT(r.fromBMax, 1e-15);
+  EXPECT_GT(r.chamfer, 0.01);
 }
 
 TEST(SurfaceDistance, RefusesAMeshWithoutArea) {
@@ -378,6 +391,63 @@ TEST(SuggestionWorker, ANewerRequestAbandonsTheOlder) {
   // Its suggestions are for the folded design: the target's second fold completes it.
   ASSERT_FALSE(answer->suggestions.empty());
   EXPECT_LT(answer->suggestions.front().after, 0.25 * answer->suggestions.front().before);
+}
+
+// Waits (up to a minute) until `done` holds; the seconds it took.
+template <typename Done>
+double secondsUntil(const Done& done) {
+  const auto start = std::chrono::steady_clock::now();
+  while (!done() && std::chrono::steady_clock::now() - start < std::chrono::minutes(1))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The seconds one whole search of `design` takes here (the yardstick for "promptly", also under
+// the sanitizers).
+double searchSeconds(const FoldFitter& fitter, const Sheet& design) {
+  FoldSession session(design);
+  const auto start = std::chrono::steady_clock::now();
+  fitter.suggest(session, 3);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A newer request, a cancel (the design changed) or a new target stops the search in flight at
+// its next check (bench_fit's SuggestionCancel measures the 100 ms), not when it would end.
+TEST(SuggestionWorker, ANewerRequestACancelOrANewTargetStopsTheSearchInFlight) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 60}}, 2, 2002);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet));
+  const auto initial = std::make_shared<const Sheet>(target.initial);
+  const double searched = searchSeconds(*fitter, target.initial);
+  SuggestionWorker worker(fitter, 600.0);
+  for (const char* how : {"request", "cancel", "retarget"}) {
+    const std::uint64_t older = worker.request({initial, {}, ""}, 3);
+    secondsUntil([&] { return worker.searching() == older; });
+    ASSERT_EQ(worker.searching(), older) << how;
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));  // well into the search
+    const std::string which = how;
+    if (which == "request")
+      worker.request({initial, {target.folds.front()}, ""}, 3);
+    else if (which == "cancel")
+      worker.cancel();
+    else
+      worker.retarget(fitter);
+    const double stopped = secondsUntil([&] { return worker.searching() != older; });
+    EXPECT_LT(stopped, 0.3 * searched) << how << ": the abandoned search ran on";
+    secondsUntil([&] { return !worker.busy(); });
+    worker.take();
+  }
+}
+
+// The worker's own time limit: a search that would take seconds answers within it.
+TEST(SuggestionWorker, AnswersWithinItsTimeLimit) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 60}}, 2, 2002);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet));
+  const double searched = searchSeconds(*fitter, target.initial);
+  SuggestionWorker worker(fitter, 0.1 * searched);
+  worker.request({std::make_shared<const Sheet>(target.initial), {}, ""}, 3);
+  const double answered = secondsUntil([&] { return !worker.busy(); });
+  EXPECT_LT(answered, 0.6 * searched);
+  EXPECT_TRUE(worker.take().has_value());
 }
 
 TEST(SuggestionWorker, EndsPromptlyWhileSearching) {

@@ -333,6 +333,97 @@ TEST_F(HeldPanel, AHeldTriggerActsOnceOnAPanelItem) {
   EXPECT_EQ(doc_.session->foldCount(), folds - 1);
 }
 
+// A random-fold target of `surface` written as a plain OBJ at `path`.
+void writeTargetObj(const RandomFoldTarget& folded, const fs::path& path) {
+  std::ofstream out(path);
+  out.precision(17);
+  for (const glm::dvec3& p : folded.sheet.positions)
+    out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (const Triangle& t : folded.sheet.triangles)
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+}
+
+// The frame thread's calls while a search and a measure run on a fine sheet: a design change, a
+// replaced document, a newer request and a new target each return at once (none joins the worker
+// or waits for a measure), and the abandoned search stops. The bound here is generous (also under
+// the sanitizers); bench_studio_target measures the 50 ms and 100 ms goals.
+TEST(StudioTarget, FrameCallsNeverWaitForTheSearchOrTheMeasure) {
+  const GeneratedSurface cylinder{"cylinder", {{"resolution", 60}}};
+  const RandomFoldTarget folded = makeRandomFoldTarget("cylinder", cylinder.parameters, 2, 2002);
+  const fs::path targetPath =
+      fs::temp_directory_path() / ("curvefold-frame-target-" + std::to_string(::getpid()) + ".obj");
+  writeTargetObj(folded, targetPath);
+  session::Document doc = session::makeDocument(Design{cylinder, {}}, "cylinder");
+  StudioTarget goal;
+  goal.load(targetPath.string(), doc);
+  // What one whole search takes here: "at once" is a small part of it.
+  const FoldFitter fitter(meshOf(folded.sheet));
+  FoldSession alone(doc.session->initial());
+  auto clock = std::chrono::steady_clock::now();
+  fitter.suggest(alone, StudioTarget::kSuggestionsPerRequest);
+  const double searched =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  const double bound = std::min(0.5, 0.2 * searched);
+
+  double longest = 0.0;
+  std::string slowest;
+  auto timed = [&](const std::string& what, const std::function<void()>& call) {
+    const auto start = std::chrono::steady_clock::now();
+    call();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds > longest) {
+      longest = seconds;
+      slowest = what;
+    }
+  };
+  auto searchRunning = [&] {
+    InputFrame frame;
+    timed("poll", [&] { goal.poll(doc, frame); });  // starts the measure too
+    timed("suggest", [&] { goal.suggest(doc); });
+    for (int i = 0; i < 200 && goal.worker()->searching() == 0; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    ASSERT_NE(goal.worker()->searching(), 0u);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  };
+  // A fold made while searching: the next frame's poll sees the design changed.
+  searchRunning();
+  const glm::dvec3 grabbed = doc.session->beginDragNear({0.045, 0.1, 0.0});
+  doc.session->updateDrag(grabbed + glm::dvec3(-0.02, -0.03, 0.0));
+  ASSERT_TRUE(doc.session->commit());
+  InputFrame frame;
+  timed("poll after a fold", [&] { goal.poll(doc, frame); });
+  const std::uint64_t abandoned = goal.worker()->searching();
+  const auto cancelled = std::chrono::steady_clock::now();
+  while (goal.worker()->searching() == abandoned && abandoned != 0 &&
+         std::chrono::steady_clock::now() - cancelled < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - cancelled).count(),
+            bound)
+      << "the search for the design before the fold ran on";
+  searchRunning();
+  timed("newer request", [&] { goal.suggest(doc); });
+  searchRunning();
+  timed("document replaced", [&] { goal.documentReplaced(); });
+  searchRunning();
+  const auto loadStart = std::chrono::steady_clock::now();
+  goal.load(targetPath.string(), doc);  // reads and samples the target itself, then retargets
+  const double loading =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - loadStart).count();
+  fs::remove(targetPath);
+  EXPECT_LT(longest, bound) << slowest << " waited (a whole search takes " << searched << " s)";
+  // The load's own work (reading the file, sampling the target) is on the frame; waiting for the
+  // search or the measure is not.
+  StudioTarget idle;
+  writeTargetObj(folded, targetPath);
+  const auto idleStart = std::chrono::steady_clock::now();
+  idle.load(targetPath.string(), doc);
+  const double idleLoading =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - idleStart).count();
+  fs::remove(targetPath);
+  EXPECT_LT(loading, idleLoading + bound);
+}
+
 // The studio folding toward a target (issue 27, 3): a square folded once at random is the target;
 // the panel's Suggest searches on the worker while frames go on, its folds arrive in a frame (which
 // the recorder keeps), "Another" goes to the next and "Take" makes it, bringing the sheet closer;

@@ -1,12 +1,12 @@
 // `curvefold xr [DESIGN|SURFACE|RECORDING] [--record REC] [--hands] [--left-handed]`, and plain
 // `curvefold` choosing XR, the desktop window, or a line saying what is missing.
-#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/interrupt_guard.hpp"
 #include "app/xr/xr_app.hpp"
 #include "interaction/xr/xr_check.hpp"
 
@@ -14,39 +14,12 @@ namespace curvefold::cli {
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-
-extern "C" void onInterrupt(int) {
-  interrupted = true;  // lock-free: safe in a signal handler
-}
-
-// Ctrl+C and SIGTERM end the session through the runtime instead of killing the process.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    struct sigaction action {};
-    action.sa_handler = onInterrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previousInt_);
-    sigaction(SIGTERM, &action, &previousTerm_);
-  }
-  ~InterruptGuard() {
-    sigaction(SIGINT, &previousInt_, nullptr);
-    sigaction(SIGTERM, &previousTerm_, nullptr);
-  }
-
- private:
-  struct sigaction previousInt_ {};
-  struct sigaction previousTerm_ {};
-};
-
 void runXr(const xr::XrAppOptions& options) {
-  interrupted = false;
   xr::XrApp app(options);
-  InterruptGuard guard;
+  const InterruptGuard guard;
   std::cout << "xr: running on " << (options.headless ? "a headless session of " : "")
             << "the OpenXR runtime \"" << app.runtimeName() << "\"" << std::endl;
-  const xr::XrAppSummary summary = app.run(interrupted);
+  const xr::XrAppSummary summary = app.run(InterruptGuard::flag());
   std::cout << "xr: " << summary.framesProcessed << " input frames, " << summary.framesRendered
             << " frames drawn, " << summary.sessions << " session(s), " << summary.folds
             << " folds; design saved to " << summary.autosave << "\n";

@@ -181,15 +181,6 @@ std::vector<Candidate> bestAndCrease(std::vector<Candidate> sorted, std::size_t 
 
 }  // namespace
 
-Deadline Deadline::in(double seconds) {
-  Deadline deadline;
-  if (std::isfinite(seconds))
-    deadline.at = std::chrono::steady_clock::now() +
-                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                      std::chrono::duration<double>(std::max(0.0, seconds)));
-  return deadline;
-}
-
 struct FoldFitter::Target {
   TriangleMesh mesh;
   double diagonal = 0.0;
@@ -464,14 +455,16 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   session.cancel();
   if (count == 0) return {};
   const Target& target = *target_;
+  if (deadline.passed()) return {};
   const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
                                                  settings_.seed * 0x9e3779b97f4a7c15ull + step);
-  if (copy.samples.empty()) return {};
+  if (copy.samples.empty() || deadline.passed()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
   const SymmetricFolder* symmetric = session.symmetricFolder().get();
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
   auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
+    deadline.countEvaluation();
     if (!worker.ready) {
       worker.out = copy.sheet;
       worker.workspace.clear();
@@ -565,6 +558,8 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       if (!deadline.passed()) drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop);
   });
 
+  if (deadline.passed()) return {};  // the scores are partial: nothing to choose from
+
   // The best few with distinct planes, each refined, then made on the real sheet.
   std::vector<Drag> finalists =
       chooseFinalists(drags, drags.size() - settings_.proposals, current, copy, settings_.refined);
@@ -594,14 +589,19 @@ class FitRun {
       : session_(session),
         fitter_(fitter),
         options_(options),
-        start_(std::chrono::steady_clock::now()),
-        // The search stops early enough for the exact measure of what it found.
-        deadline_(Deadline::in(0.9 * options.seconds)),
+        start_(options.started.value_or(std::chrono::steady_clock::now())),
+        end_(endOf(start_, options.seconds)),
         base_(session.folds().begin(),
-              session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount())) {}
+              session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount())) {
+    deadline_.cancelled = options.cancelled;
+    deadline_.evaluations = &evaluations_;
+  }
 
   FitResult run() {
     result_.steps.push_back(measureNow(0));
+    // What one fold kept costs at the end (its exact measure and the caller's report of it):
+    // about the start's measure, twice over (the report, and a sheet grown by folds).
+    foldCost_ = 2.0 * result_.steps.back().seconds - 2.0 * startedAt_;
     if (options_.progress) options_.progress(result_.steps.back());
     FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
     best_ = bestMonotone_ = root;
@@ -615,15 +615,45 @@ class FitRun {
     result_.folds.assign(
         session_.folds().begin(),
         session_.folds().begin() + static_cast<std::ptrdiff_t>(session_.foldCount()));
+    result_.evaluations = evaluations_.load();
+    if (result_.cancelled) result_.stopReason = "interrupted";
     return std::move(result_);
   }
 
  private:
+  static std::chrono::steady_clock::time_point endOf(std::chrono::steady_clock::time_point start,
+                                                     double seconds) {
+    if (!(seconds < 1e9)) return std::chrono::steady_clock::time_point::max();  // no clock
+    return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                       std::chrono::duration<double>(std::max(0.0, seconds)));
+  }
+
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
 
-  FitProgress measureNow(std::size_t folds) const {
+  // The search's deadline with `groups` folds to measure and report at the end: it stops early
+  // enough for them (and 5% of the time for the rest), whatever the deadline says.
+  Deadline searchDeadline(std::size_t groups) const {
+    if (end_ == std::chrono::steady_clock::time_point::max()) return deadline_;
+    const double reserve = 0.05 * options_.seconds + foldCost_ * static_cast<double>(groups + 1);
+    return deadline_.notAfter(end_ -
+                              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(reserve)));
+  }
+
+  // Whether the clock (or a cancel) cut the search short: said in the result.
+  void noteCut(const Deadline& deadline) {
+    if (deadline.isCancelled()) {
+      result_.cancelled = true;
+    } else {
+      result_.timedOut = true;
+      result_.stopReason = "reached the time limit";
+    }
+  }
+
+  FitProgress measureNow(std::size_t folds) {
+    if (folds == 0) startedAt_ = seconds();
     const SurfaceDistance d =
         surfaceDistance(meshOf(session_.fixed()), fitter_.target(), options_.distanceSamples);
     return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
@@ -644,12 +674,23 @@ class FitRun {
   // reach the target (a search could only polish it).
   bool unfoldTarget() {
     if (session_.symmetry() || !fitter_.settings().useCreases) return false;
-    const TargetUnfolding plan =
-        curvefold::unfoldTarget(fitter_.target(), meshOf(session_.initial()),
-                                sharpEdgeThreshold(meshOf(session_.initial())), options_.maxFolds);
+    // Room for one fold's measure after it (its own check and measure below); the folds it
+    // names are measured within the time at the end, or not kept.
+    const Deadline deadline = searchDeadline(1);
+    const TargetUnfolding plan = curvefold::unfoldTarget(
+        fitter_.target(), meshOf(session_.initial()),
+        sharpEdgeThreshold(meshOf(session_.initial())), options_.maxFolds, deadline);
+    if (plan.cutShort) {
+      noteCut(deadline);
+      return false;
+    }
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence planned;
     for (const UnfoldedFold& fold : plan.folds) {
+      if (deadline.passed()) {
+        noteCut(deadline);
+        return false;
+      }
       const std::size_t before = branch->foldCount();
       const glm::dvec3 grabbed = branch->beginDragNear(fold.seedBefore);
       branch->updateDrag(fold.plane.reflect(grabbed));
@@ -659,9 +700,10 @@ class FitRun {
           branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
       planned.groups.push_back(branch->foldCount() - before);
     }
+    if (planned.groups.empty()) return false;
     const bool crosses = !fitter_.settings().allowSelfIntersection &&
                          !findSelfIntersections(branch->fixed()).intersections.empty();
-    if (planned.groups.empty() || crosses) return false;
+    if (crosses) return false;
     planned.score = fitter_.approximateDistance(branch->fixed());
     if (planned.score < best_.score) best_ = planned;
     if (options_.searching) options_.searching(planned.groups.size(), planned.score, seconds());
@@ -673,12 +715,21 @@ class FitRun {
   // sequences (and the best few ending on a crease plane) kept at each depth.
   void beamSearch(const FoldSequence& root) {
     std::vector<FoldSequence> beam{root};
+    if (result_.timedOut || result_.cancelled) return;  // the unfolding took the time
     for (std::size_t depth = 0; depth < options_.maxFolds; ++depth) {
       std::vector<FoldSequence> children;
-      for (std::size_t k = 0; k < beam.size() && !deadline_.passed(); ++k) {
+      const Deadline deadline = searchDeadline(depth + 1);
+      bool outOfEvaluations = false;
+      for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {
+        // The budget is checked only here, between steps, where the count is the same on every
+        // run (each step scores the same candidates).
+        if (options_.maxEvaluations > 0 && evaluations_.load() >= options_.maxEvaluations) {
+          outOfEvaluations = true;
+          break;
+        }
         const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
         for (FoldSuggestion& next :
-             fitter_.suggest(*branch, options_.branching, deadline_, 16 * (depth + 1) + k)) {
+             fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k)) {
           FoldSequence child = beam[k];
           child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
           child.groups.push_back(next.folds.size());
@@ -688,10 +739,15 @@ class FitRun {
           children.push_back(std::move(child));
         }
       }
-      if (deadline_.passed()) {
+      if (outOfEvaluations) {
+        // A depth the budget cut short is dropped whole, as one the clock cuts.
+        result_.outOfEvaluations = true;
+        result_.stopReason = "used the evaluations allowed";
+        return;
+      }
+      if (deadline.passed()) {
         // A depth the deadline cut short is dropped whole: what is kept does not depend on speed.
-        result_.timedOut = true;
-        result_.stopReason = "reached the time limit";
+        noteCut(deadline);
         return;
       }
       if (children.empty()) {
@@ -722,6 +778,17 @@ class FitRun {
   Measured measure(const FoldSequence& sequence, bool strict) {
     Measured m;
     for (std::size_t g = 0, first = 0; g < sequence.groups.size(); first += sequence.groups[g++]) {
+      // Within the time: this measure and the report of every fold measured so far. A fold not
+      // measured is not kept.
+      if (end_ != std::chrono::steady_clock::time_point::max() &&
+          std::chrono::steady_clock::now() +
+                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                      std::chrono::duration<double>(0.5 * foldCost_ * double(g + 2))) >
+              end_) {
+        result_.timedOut = true;
+        result_.stopReason = "reached the time limit";
+        break;
+      }
       session_.applyRecords(
           {sequence.folds.begin() + static_cast<std::ptrdiff_t>(first),
            sequence.folds.begin() + static_cast<std::ptrdiff_t>(first + sequence.groups[g])});
@@ -777,7 +844,11 @@ class FitRun {
   const FoldFitter& fitter_;
   const FitOptions& options_;
   const std::chrono::steady_clock::time_point start_;
-  const Deadline deadline_;
+  const std::chrono::steady_clock::time_point end_;  // of the whole fit (max: no clock)
+  Deadline deadline_;                                // the cancel and the evaluation count
+  std::atomic<std::uint64_t> evaluations_{0};
+  double startedAt_ = 0.0;              // seconds from start_ to the start's measure
+  double foldCost_ = 0.0;               // seconds one fold kept costs at the end
   const std::vector<FoldRecord> base_;  // the session's folds before the fit
   FitResult result_;
   FoldSequence best_, bestMonotone_;  // the best, and the best whose every fold gains

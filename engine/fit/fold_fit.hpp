@@ -24,7 +24,8 @@
 //
 // Deterministic: proposals come from a seeded generator, every evaluation lands in its own slot
 // and ties go to the lower index, so the result does not depend on the threads' timing. The only
-// exception is a deadline that cuts a step short (the result says so).
+// exception is a deadline that cuts a step short (the result says so); a budget of evaluations
+// (FitOptions::maxEvaluations) is checked between steps and repeats exactly.
 //
 // Known limits: each fold of a sequence must bring the sheet closer on its own; a target that
 // needs a fold that makes it worse before a later one makes it better is not reached.
@@ -45,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
@@ -55,18 +57,6 @@ namespace curvefold {
 class InvalidTarget : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
-};
-
-// The moment a search stops (the default never comes), or earlier when `cancelled` is set from
-// another thread.
-struct Deadline {
-  std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
-  const std::atomic<bool>* cancelled = nullptr;
-  static Deadline in(double seconds);
-  bool passed() const {
-    return (cancelled && cancelled->load(std::memory_order_relaxed)) ||
-           std::chrono::steady_clock::now() >= at;
-  }
 };
 
 struct FitSettings {
@@ -143,7 +133,19 @@ struct FitProgress {
 
 struct FitOptions {
   std::size_t maxFolds = 6;
+  // The whole fit (unfolding, search and the exact measures of what it found, the `progress`
+  // calls included) ends within this many seconds of `started` (infinity: no clock).
   double seconds = 60.0;
+  // When the clock of `seconds` started (unset: when fitFolds is called). A command passes its
+  // own start, so that reading the target counts too.
+  std::optional<std::chrono::steady_clock::time_point> started;
+  // Candidate folds scored, at most (0: no limit). Checked between the search's steps, so a fit
+  // stopped by it repeats bit for bit for one seed on any machine; a search step under way when
+  // the count is reached is dropped whole (as one the clock cuts short).
+  std::uint64_t maxEvaluations = 0;
+  // Set from another thread (or a signal handler) to stop the search at its next check; the
+  // folds found are still measured and committed.
+  const std::atomic<bool>* cancelled = nullptr;
   // Each fold kept must lower the exact Chamfer distance by this fraction at least.
   double minimumGain = 0.01;
   // and by this fraction of the target's diagonal (a fit already as close as the samples tell
@@ -164,7 +166,10 @@ struct FitResult {
   std::vector<FoldRecord> folds;   // every fold and image, groups numbered from 1 when symmetric
   std::vector<FitProgress> steps;  // the start, then one per fold kept
   std::string stopReason;          // why no further fold was added
-  bool timedOut = false;
+  bool timedOut = false;           // the clock cut the fit short (it may differ run to run)
+  bool cancelled = false;          // FitOptions::cancelled cut it short
+  bool outOfEvaluations = false;   // maxEvaluations cut it short (the same on every run)
+  std::uint64_t evaluations = 0;   // candidate folds scored
 };
 
 // Folds `session`'s design toward the fitter's target: a beam search over fold sequences (the

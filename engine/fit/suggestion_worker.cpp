@@ -6,8 +6,8 @@
 
 namespace curvefold {
 
-SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter)
-    : fitter_(std::move(fitter)), thread_([this] { run(); }) {}
+SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter, double timeLimit)
+    : fitter_(std::move(fitter)), timeLimit_(timeLimit), thread_([this] { run(); }) {}
 
 SuggestionWorker::~SuggestionWorker() {
   {
@@ -32,6 +32,28 @@ std::uint64_t SuggestionWorker::request(DesignSnapshot design, std::size_t count
   return number;
 }
 
+void SuggestionWorker::cancel() {
+  const std::lock_guard lock(mutex_);
+  ++latest_;  // an answer on its way is of no request now
+  pending_.reset();
+  answer_.reset();
+  if (working_ != 0) abandon_ = true;
+}
+
+void SuggestionWorker::retarget(std::shared_ptr<const FoldFitter> fitter) {
+  const std::lock_guard lock(mutex_);
+  fitter_ = std::move(fitter);
+  ++latest_;
+  pending_.reset();
+  answer_.reset();
+  if (working_ != 0) abandon_ = true;
+}
+
+std::uint64_t SuggestionWorker::searching() const {
+  const std::lock_guard lock(mutex_);
+  return working_;
+}
+
 bool SuggestionWorker::busy() const {
   const std::lock_guard lock(mutex_);
   return pending_.has_value() || working_ != 0;
@@ -47,6 +69,7 @@ std::optional<SuggestionWorker::Answer> SuggestionWorker::take() {
 void SuggestionWorker::run() {
   while (true) {
     std::pair<DesignSnapshot, std::size_t> job;
+    std::shared_ptr<const FoldFitter> fitter;
     std::uint64_t number = 0;
     {
       std::unique_lock lock(mutex_);
@@ -55,6 +78,7 @@ void SuggestionWorker::run() {
       job = std::move(*pending_);
       pending_.reset();
       number = working_ = latest_;
+      fitter = fitter_;
       abandon_ = false;
     }
     Answer answer;
@@ -65,9 +89,9 @@ void SuggestionWorker::run() {
       if (!job.first.symmetry.empty())
         session.setSymmetry(parseSymmetry(job.first.symmetry, session.initial()));
       session.applyRecords(job.first.folds);
-      Deadline deadline;
+      Deadline deadline = Deadline::in(timeLimit_);
       deadline.cancelled = &abandon_;
-      answer.suggestions = fitter_->suggest(session, job.second, deadline);
+      answer.suggestions = fitter->suggest(session, job.second, deadline);
     } catch (const std::exception& e) {
       answer.error = e.what();
     }

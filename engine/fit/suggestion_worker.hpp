@@ -1,8 +1,10 @@
 // Suggestions off the frame (issue 27, 3): the studio asks for the next fold and goes on drawing;
 // a worker thread runs the search (FoldFitter::suggest, about a second at 10k triangles) on a
-// snapshot of the design and the frame picks the result up when it is there. A newer request
-// abandons the one in flight (its search stops at its next check and its result is dropped), and
-// so does the worker's end.
+// snapshot of the design and the frame picks the result up when it is there. A newer request, a
+// cancel (the design changed) or a new target abandons the one in flight: its search stops at its
+// next check (well within 100 ms: bench/bench_fit.cpp) and its result is dropped; none of these
+// calls waits for the search. Each search has a time limit; only the destructor waits (for the
+// search to see it is abandoned), so a frame loop keeps its worker until it ends.
 #pragma once
 
 #include <atomic>
@@ -28,7 +30,10 @@ struct DesignSnapshot {
 
 class SuggestionWorker {
  public:
-  explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter);
+  // Seconds a search may take before it answers with what it found.
+  static constexpr double kDefaultTimeLimit = 5.0;
+  explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter,
+                            double timeLimit = kDefaultTimeLimit);
   ~SuggestionWorker();  // abandons the request in flight and waits for the thread
   SuggestionWorker(const SuggestionWorker&) = delete;
   SuggestionWorker& operator=(const SuggestionWorker&) = delete;
@@ -36,8 +41,14 @@ class SuggestionWorker {
   // Starts the search for up to `count` next folds of `design` (never blocks on a search).
   // Returns the request's number.
   std::uint64_t request(DesignSnapshot design, std::size_t count);
+  // Abandons the request in flight and any waiting (the design they were for changed).
+  void cancel();
+  // Searches toward another target from now on (the request in flight is abandoned).
+  void retarget(std::shared_ptr<const FoldFitter> fitter);
   // Whether the latest request is still being searched.
   bool busy() const;
+  // The request whose search runs now (0: none): an abandoned one until its search stops.
+  std::uint64_t searching() const;
   struct Answer {
     std::uint64_t request = 0;
     std::vector<FoldSuggestion> suggestions;  // best first; none: no fold brings it closer
@@ -49,7 +60,8 @@ class SuggestionWorker {
  private:
   void run();
 
-  std::shared_ptr<const FoldFitter> fitter_;
+  std::shared_ptr<const FoldFitter> fitter_;  // guarded by mutex_
+  const double timeLimit_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<std::pair<DesignSnapshot, std::size_t>> pending_;

@@ -79,7 +79,14 @@ struct Unfolder {
   const double diagonal, onPlane, cosThreshold, minDihedralDegrees;
   const SurfaceDistanceQuery& sheetSurface;
   std::size_t maxFolds;
+  const Deadline& deadline;
   std::size_t leaves = 0;  // unfoldings finished, to bound the branching
+  bool cutShort = false;   // the deadline passed: every answer from here on is dropped
+
+  bool outOfTime() {
+    cutShort = cutShort || deadline.passed();
+    return cutShort;
+  }
 
   // Where the unfolded target lies off the sheet, on average: the right unfolding lies on it.
   double offSheet(const std::vector<glm::dvec3>& positions) const {
@@ -99,6 +106,7 @@ struct Unfolder {
     std::vector<Candidate> candidates;
     std::vector<int> component(positions.size());
     for (const CreasePlane& crease : planes) {
+      if (deadline.passed()) break;  // the caller sees it and drops what comes back
       const ReflectionPlane& plane = crease.plane;
       std::vector<double> d(positions.size());
       for (std::size_t v = 0; v < positions.size(); ++v) d[v] = plane.signedDistance(positions[v]);
@@ -167,23 +175,47 @@ struct Unfolder {
     std::vector<glm::dvec3> probe;
     for (std::size_t v = 0; v < unfolded.size(); v += 1 + unfolded.size() / 200)
       if (!connectivity.neighbours[v].empty()) probe.push_back(unfolded[v]);
-    double bestOff = kInfinitySharp;
-    std::uint32_t bestRest = 0;
-    for (std::uint32_t rest = 0; rest < (1u << n); ++rest) {
+    // Bit u of `rest`: step u reflected the rest rather than the piece.
+    auto offOf = [&](const std::vector<char>& rest) {
       Motion motion;
       for (std::size_t u = 0; u < n; ++u)
-        if (rest >> u & 1u) motion = motion.then(steps[u].plane);
+        if (rest[u]) motion = motion.then(steps[u].plane);
       double off = 0.0;
       for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
-      if (off < bestOff - 1e-12) {
-        bestOff = off;
-        bestRest = rest;
+      return off;
+    };
+    std::vector<char> bestRest(n, 0), rest(n, 0);
+    double bestOff = offOf(bestRest);
+    if (n <= kExhaustiveSides) {
+      for (std::uint32_t bits = 1; bits < (1u << n) && !deadline.passed(); ++bits) {
+        for (std::size_t u = 0; u < n; ++u) rest[u] = bits >> u & 1u;
+        const double off = offOf(rest);
+        if (off < bestOff - 1e-12) {
+          bestOff = off;
+          bestRest = rest;
+        }
+      }
+    } else {
+      // Too many for every choice: one step flipped at a time while that brings the result
+      // closer to the sheet (at most n rounds of n tries).
+      for (std::size_t round = 0, better = 1; round < n && better && !deadline.passed(); ++round) {
+        better = 0;
+        for (std::size_t u = 0; u < n && !deadline.passed(); ++u) {
+          rest = bestRest;
+          rest[u] = !rest[u];
+          const double off = offOf(rest);
+          if (off < bestOff - 1e-12) {
+            bestOff = off;
+            bestRest = rest;
+            better = 1;
+          }
+        }
       }
     }
     TargetUnfolding result;
     Motion motion;
     for (std::size_t u = 0; u < n; ++u) {
-      const bool rest = bestRest >> u & 1u;
+      const bool rest = bestRest[u] != 0;
       UnfoldedFold fold;
       fold.plane = {motion(steps[u].plane.point), motion.linear * steps[u].plane.normal};
       if (rest) motion = motion.then(steps[u].plane);
@@ -198,7 +230,9 @@ struct Unfolder {
   // Unfolds from `positions` (the steps so far in `steps`); returns the best unfolding.
   TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
     std::vector<Candidate> candidates;
+    if (outOfTime()) return {};
     if (steps.size() < maxFolds) candidates = candidatesAt(positions);
+    if (outOfTime()) return {};
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
@@ -230,6 +264,7 @@ struct Unfolder {
     bool first = true;
     for (const Candidate* chosen : choices) {
       if (!first && leaves >= kMaxUnfoldings) break;
+      if (outOfTime()) return {};
       std::vector<char> inPiece(positions.size(), 0);
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
@@ -267,7 +302,8 @@ struct Unfolder {
 }  // namespace
 
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
-                             double minDihedralDegrees, std::size_t maxFolds) {
+                             double minDihedralDegrees, std::size_t maxFolds,
+                             const Deadline& deadline) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
   Unfolder unfolder{target,
@@ -277,10 +313,16 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                     std::cos(minDihedralDegrees * kPi / 180.0),
                     minDihedralDegrees,
                     sheetSurface,
-                    maxFolds};
+                    maxFolds,
+                    deadline};
   const double sharp =
       sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosThreshold);
-  return unfolder.unfold(target.positions, {}, sharp);
+  TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);
+  if (unfolder.outOfTime()) {
+    unfolding = {};
+    unfolding.cutShort = true;
+  }
+  return unfolding;
 }
 
 }  // namespace curvefold

@@ -18,7 +18,9 @@
 // Known limits: a target must carry its creases as mesh edges (a folded sheet written as a mesh
 // does; a remeshed scan does not); a crease whose faces meet at less than the sharp-edge
 // threshold is not seen; an unfolding that ends off the sheet names folds that do not fold the
-// sheet onto the target (the fit then finds its folds by search alone).
+// sheet onto the target (the fit then finds its folds by search alone). Which side of each crease
+// stays is tried every way for up to kExhaustiveSides creases, and beyond that flipped one crease
+// at a time while the result comes closer to the sheet (it may then miss the best choice).
 #pragma once
 
 #include <cstdint>
@@ -26,6 +28,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/geometry/reflection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
@@ -41,11 +44,17 @@ struct TargetUnfolding {
   std::vector<UnfoldedFold> folds;   // in folding order: the first fold first
   std::vector<glm::dvec3> unfolded;  // the target's vertices before its first fold
   double sharpLengthLeft = 0.0;      // sharp edges the unfolded target still has, metres
+  bool cutShort = false;             // the deadline came first: no folds
 };
 
+// Creases whose sides are tried every way (2^n choices); more are chosen one at a time.
+constexpr std::size_t kExhaustiveSides = 10;
+
 // `sheet`: the initial sheet the target was folded from (the part that stays is found on it);
-// `minDihedralDegrees`: the sharp-edge threshold (above the sheet's own bends).
+// `minDihedralDegrees`: the sharp-edge threshold (above the sheet's own bends). Stops at its next
+// check once `deadline` passes, with no folds and cutShort set.
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
-                             double minDihedralDegrees, std::size_t maxFolds);
+                             double minDihedralDegrees, std::size_t maxFolds,
+                             const Deadline& deadline = {});
 
 }  // namespace curvefold

@@ -9,11 +9,13 @@ and hand its meshes to numpy, trimesh or polyscope without files.
     design.fold(grab=(0.05, 0.1, 0.0), to=(0.03, 0.07, 0.02))
     assert design.check().passed
     design.export(svg="cylinder.svg", pdf="cylinder.pdf")
+    report = curvefold.Design.new("cylinder").fit("target.obj", folds=4, evaluations=20000)
+    curvefold.distance(design, "target.obj")["hausdorff"]   # metres, as `curvefold distance`
 
 Bad input raises ValueError, a file that cannot be read or written OSError, each with the
 command line's one-line message.
 """
 
-from ._curvefold import CheckResult, Design, FoldResult, replay, surfaces
+from ._curvefold import CheckResult, Design, FoldResult, distance, replay, surfaces
 
-__all__ = ["CheckResult", "Design", "FoldResult", "replay", "surfaces"]
+__all__ = ["CheckResult", "Design", "FoldResult", "distance", "replay", "surfaces"]

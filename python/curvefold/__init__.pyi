@@ -91,6 +91,16 @@ class Design:
         paper: Literal["a4", "letter", "a3", "fit"] = "a4",
         angles: bool = False,
     ) -> None: ...
+    def fit(
+        self,
+        target: str | PathLike[str] | Design,
+        *,
+        folds: int = 6,
+        time: float | None = None,
+        seed: int = 1,
+        evaluations: int | None = None,
+        allow_self_intersection: bool = False,
+    ) -> dict[str, Any]: ...
     def render(
         self,
         width: int = 800,
@@ -100,5 +110,12 @@ class Design:
         crease_pattern: bool = False,
     ) -> npt.NDArray[np.uint8]: ...
 
+def distance(
+    a: str | PathLike[str] | Design,
+    b: str | PathLike[str] | Design,
+    *,
+    samples: int = 20000,
+    seed: int = 1,
+) -> dict[str, float]: ...
 def surfaces() -> dict[str, dict[str, Any]]: ...
 def replay(recording: str | PathLike[str]) -> Design: ...

@@ -274,3 +274,103 @@ def test_the_examples_run(tmp_path):
     shown = run_example("show_design.py", tmp_path, RECORDINGS / "star.jsonl")
     if "wrote design.png" in shown:
         assert (tmp_path / "design.png").read_bytes().startswith(b"\x89PNG")
+
+
+TARGETS = SOURCE / "examples" / "targets"
+
+
+def cli_distance(a, b, *arguments):
+    """The four lines of `curvefold distance`, as {A -> B max, ..., hausdorff, chamfer} in mm."""
+    out = cli("distance", a, b, *arguments).stdout.splitlines()
+    def mm(text):
+        return float(text.split(" mm")[0].split()[-1])
+    return {
+        "a_to_b_max": mm(out[0].split("max ")[1]), "a_to_b_mean": mm(out[0].split("mean ")[1]),
+        "b_to_a_max": mm(out[1].split("max ")[1]), "b_to_a_mean": mm(out[1].split("mean ")[1]),
+        "hausdorff": mm(out[2].split(": ")[1]), "chamfer": mm(out[3].split(": ")[1]),
+    }
+
+
+def assert_same_to_three_digits(python_metres, cli_millimetres, what):
+    # The command prints three significant digits.
+    assert python_metres * 1000 == pytest.approx(cli_millimetres, rel=5e-3, abs=1e-9), what
+
+
+def test_distance_is_the_command_lines(tmp_path):
+    design = folded_cylinder()
+    design.save(tmp_path / "d.curvefold.json")
+    target = TARGETS / "tube_tucked.obj"
+    for a, b in [(design, target), (tmp_path / "d.curvefold.json", str(target)), (target, design)]:
+        ours = curvefold.distance(a, b, samples=5000, seed=3)
+        theirs = cli_distance(tmp_path / "d.curvefold.json" if isinstance(a, curvefold.Design) else a,
+                              tmp_path / "d.curvefold.json" if isinstance(b, curvefold.Design) else b,
+                              "--samples", "5000", "--seed", "3")
+        for key, millimetres in theirs.items():
+            assert_same_to_three_digits(ours[key], millimetres, key)
+        assert ours["hausdorff"] == max(ours["a_to_b_max"], ours["b_to_a_max"])
+    with pytest.raises(OSError):
+        curvefold.distance(design, tmp_path / "missing.obj")
+    with pytest.raises(ValueError):
+        curvefold.distance(design, 3)
+
+
+def test_fit_is_the_command_lines_fit(tmp_path):
+    """With evaluations (no clock) Design.fit keeps the same folds as `curvefold fit`, byte for
+    byte in the saved design, and reports the same distances; another seed searches otherwise."""
+    target = TARGETS / "saddle.obj"
+    design = curvefold.Design.new("square", resolution=20)
+    report = design.fit(target, folds=3, evaluations=2500, seed=5)
+    assert report["folds"] >= 1 and len(design.folds) == report["folds"]
+    assert report["out_of_evaluations"] and not report["timed_out"]
+    assert report["evaluations"] >= 2500
+    design.save(tmp_path / "python.curvefold.json")
+    out = cli("fit", target, "--from", "square", "--resolution", "20", "--folds", "3",
+              "--evaluations", "2500", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
+    assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
+    wrote = [line for line in out.splitlines() if line.startswith("wrote ")][0]
+    hausdorff_mm = float(wrote.split("Hausdorff ")[1].split(" mm")[0])
+    chamfer_mm = float(wrote.split("Chamfer ")[1].split(" mm")[0])
+    assert_same_to_three_digits(report["hausdorff"], hausdorff_mm, "hausdorff")
+    assert_same_to_three_digits(report["chamfer"], chamfer_mm, "chamfer")
+    assert report["steps"][0]["folds"] == 0 and len(report["steps"]) == report["folds"] + 1
+    other = curvefold.Design.new("square", resolution=20)
+    other.fit(target, folds=3, evaluations=2500, seed=6)
+    assert other.folds != design.folds
+    assert design.check().passed
+
+
+def test_fit_refuses_bad_values_and_keeps_the_design(tmp_path):
+    design = folded_cylinder()
+    before = design.folds
+    with pytest.raises(ValueError, match="folds"):
+        design.fit(TARGETS / "tube_tucked.obj", folds=0)
+    with pytest.raises(ValueError, match="time"):
+        design.fit(TARGETS / "tube_tucked.obj", time=float("nan"))
+    with pytest.raises(OSError):
+        design.fit(tmp_path / "missing.obj")
+    far = tmp_path / "far.obj"
+    far.write_text("v 100 0 0\nv 101 0 0\nv 100 1 0\nf 1 2 3\n")
+    with pytest.raises(ValueError, match="far.obj"):
+        design.fit(far)
+    assert design.folds == before
+
+
+def test_a_long_fit_lets_other_python_threads_run():
+    design = curvefold.Design.new("square", resolution=20)
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.01)
+
+    thread = threading.Thread(target=tick)
+    thread.start()
+    start = time.monotonic()
+    design.fit(TARGETS / "saddle.obj", folds=2, time=1.0)
+    elapsed = time.monotonic() - start
+    done.set()
+    thread.join()
+    assert elapsed < 1.0 * 1.05 + 0.5
+    assert sum(1 for t in ticks if start < t < start + elapsed) >= 10

@@ -1,0 +1,145 @@
+// The studio's target off the frame (issue 38, 3): on a 10k-triangle sheet (the default cylinder
+// at resolution 82), a search for the next folds runs while the frame goes on. Goals: no frame
+// call of StudioTarget over 50 ms while it searches (a load, a design change, a newer request, a
+// replaced document included), and an abandoned search stopped within 100 ms.
+//
+//   build/bench/bench_studio_target --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
+//
+// Each reports its time by hand (the call's, or from the cancel until the worker is free of the
+// abandoned search; setting up the search and the studio's end are not counted); "longest_ms" is
+// the worst of the iterations.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include <unistd.h>
+
+#include <benchmark/benchmark.h>
+
+#include "app/document.hpp"
+#include "app/studio_target.hpp"
+#include "engine/fit/random_fold_target.hpp"
+
+namespace curvefold::studio {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+const GeneratedSurface kCylinder{"cylinder", {{"resolution", 82}}};
+
+// A 2-fold target of the 10k cylinder, as an OBJ file (written once).
+const fs::path& targetFile() {
+  static const fs::path path = [] {
+    const RandomFoldTarget folded = makeRandomFoldTarget("cylinder", kCylinder.parameters, 2, 4002);
+    const fs::path at =
+        fs::temp_directory_path() / ("curvefold-bench-target-" + std::to_string(getpid()) + ".obj");
+    std::ofstream out(at);
+    out.precision(17);
+    for (const glm::dvec3& p : folded.sheet.positions)
+      out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    for (const Triangle& t : folded.sheet.triangles)
+      out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    return at;
+  }();
+  return path;
+}
+
+// A studio with the target loaded and a search running `intoSearch` seconds.
+struct Searching {
+  session::Document doc = session::makeDocument(Design{kCylinder, {}}, "cylinder");
+  StudioTarget goal;
+  explicit Searching(double intoSearch) {
+    goal.load(targetFile().string(), doc);
+    InputFrame frame;
+    goal.poll(doc, frame);  // the measure starts
+    goal.suggest(doc);
+    while (goal.worker()->searching() == 0)
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    std::this_thread::sleep_for(std::chrono::duration<double>(intoSearch));
+  }
+};
+
+// One frame call while a search runs (arg: which; range(1): milliseconds into the search).
+// 0: poll after a fold, 1: a newer request, 2: the document replaced, 3: a new target loaded.
+void BM_FrameCallWhileSearching(benchmark::State& state) {
+  double longest = 0.0;
+  for (auto _ : state) {
+    Searching studio(double(state.range(1)) / 1000.0);
+    if (state.range(0) == 0) {
+      const glm::dvec3 grabbed = studio.doc.session->beginDragNear({0.045, 0.1, 0.0});
+      studio.doc.session->updateDrag(grabbed + glm::dvec3(-0.02, -0.03, 0.0));
+      studio.doc.session->commit();
+    }
+    const auto start = Clock::now();
+    InputFrame frame;
+    switch (state.range(0)) {
+      case 0:
+        studio.goal.poll(studio.doc, frame);
+        break;
+      case 1:
+        studio.goal.suggest(studio.doc);
+        break;
+      case 2:
+        studio.goal.documentReplaced();
+        break;
+      default:
+        studio.goal.load(targetFile().string(), studio.doc);
+        break;
+    }
+    const double seconds = secondsSince(start);
+    state.SetIterationTime(seconds);
+    longest = std::max(longest, seconds);
+  }
+  state.counters["longest_ms"] = 1000.0 * longest;
+}
+BENCHMARK(BM_FrameCallWhileSearching)
+    ->ArgsProduct({{0, 1, 2, 3}, {20, 300}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+// From a design change (the poll that sees it) until the worker has let the abandoned search go
+// (range(0): milliseconds into the search).
+void BM_SuggestionCancel(benchmark::State& state) {
+  double longest = 0.0;
+  for (auto _ : state) {
+    Searching studio(double(state.range(0)) / 1000.0);
+    const std::uint64_t abandoned = studio.goal.worker()->searching();
+    const auto start = Clock::now();
+    studio.goal.suggest(studio.doc);  // a newer request
+    while (studio.goal.worker()->searching() == abandoned)
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+    const double seconds = secondsSince(start);
+    state.SetIterationTime(seconds);
+    longest = std::max(longest, seconds);
+  }
+  state.counters["longest_ms"] = 1000.0 * longest;
+}
+BENCHMARK(BM_SuggestionCancel)
+    ->Arg(5)
+    ->Arg(100)
+    ->Arg(300)
+    ->Arg(600)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
+
+}  // namespace
+}  // namespace curvefold::studio
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  std::filesystem::remove(curvefold::studio::targetFile());
+  return 0;
+}

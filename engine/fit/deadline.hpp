@@ -1,0 +1,43 @@
+// When a search stops: a moment on the steady clock, a flag another thread (or a signal
+// handler) sets, and a count of the candidates scored (a budget that does not depend on the
+// clock). Shared by the fit (fold_fit.hpp), the unfolding (target_unfolding.hpp) and the studio's
+// worker (suggestion_worker.hpp).
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+
+namespace curvefold {
+
+// The moment a search stops (the default never comes), or earlier when `cancelled` is set from
+// another thread. `evaluations`, when set, counts the candidate folds a search scores (a budget
+// that does not depend on the clock: fitFolds checks it between steps).
+struct Deadline {
+  std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
+  const std::atomic<bool>* cancelled = nullptr;
+  std::atomic<std::uint64_t>* evaluations = nullptr;
+  // `seconds` from now (beyond a billion, or NaN: never).
+  static Deadline in(double seconds) {
+    Deadline deadline;
+    if (seconds < 1e9)
+      deadline.at = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(std::max(0.0, seconds)));
+    return deadline;
+  }
+  bool isCancelled() const { return cancelled && cancelled->load(std::memory_order_relaxed); }
+  bool passed() const { return isCancelled() || std::chrono::steady_clock::now() >= at; }
+  // The same deadline, come no later than `latest`.
+  Deadline notAfter(std::chrono::steady_clock::time_point latest) const {
+    Deadline d = *this;
+    d.at = std::min(at, latest);
+    return d;
+  }
+  void countEvaluation() const {
+    if (evaluations) evaluations->fetch_add(1, std::memory_order_relaxed);
+  }
+};
+
+}  // namespace curvefold
