@@ -18,8 +18,10 @@
 #include "engine/io/crease_pattern_graph.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/fold_crease_pattern.hpp"
+#include "engine/io/fold_format.hpp"
 #include "engine/io/input_limits.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
+#include "engine/surfaces/surfaces.hpp"
 
 using namespace curvefold;
 
@@ -515,5 +517,26 @@ TEST(CreasePatternExternal, OrigamiSimulatorExamplesLoad) {
     } catch (const std::exception& error) {
       ADD_FAILURE() << error.what();
     }
+  }
+}
+
+// curvefold's own FOLD export (engine/io/fold_format.hpp) of every catalogue surface, read back as
+// a crease pattern: the same triangles (faces given), the same paper, slits reopened (their two
+// sides are written at the same flat points and merged on reading), every promise kept.
+TEST(CreasePatternFold, CurvefoldsOwnFoldExportReadsBack) {
+  for (const SurfaceInfo& info : surfaceCatalog()) {
+    SCOPED_TRACE(info.name);
+    const Sheet sheet = makeSurface(info.name);
+    const CreasePattern p = readFoldCreasePatternText(foldText(sheet), info.name + ".fold");
+    expectValid(p);
+    EXPECT_EQ(p.triangles.size(), sheet.triangleCount());
+    EXPECT_EQ(p.vertices.size(), sheet.vertexCount());
+    double developmentArea = 0.0;
+    for (const Triangle& t : sheet.triangles) {
+      const glm::dvec2 a = sheet.development[t[0]], b = sheet.development[t[1]],
+                       c = sheet.development[t[2]];
+      developmentArea += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+    }
+    EXPECT_NEAR(area(p), developmentArea, 1e-9 * developmentArea);
   }
 }

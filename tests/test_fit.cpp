@@ -340,6 +340,28 @@ TEST(FoldFitter, SuggestsFoldsAndLeavesTheSessionAsItWas) {
                         1e-3 * sheetSize(before)));
 }
 
+// A search ends at its deadline's next check: given a tenth of the time a whole search takes, it
+// returns within about a fifth of it (the proposals and the refinement check the deadline after
+// each candidate; the time is relative, so it holds under the sanitizers too).
+TEST(FoldFitter, ASuggestionStopsSoonAfterItsDeadline) {
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 60}}, 2, 2002);
+  FitSettings settings;
+  settings.useCreases = false;  // the proposals and the refinement: the long part
+  const FoldFitter fitter(meshOf(target.sheet), settings);
+  FoldSession session(target.initial);
+  auto start = std::chrono::steady_clock::now();
+  ASSERT_FALSE(fitter.suggest(session, 3).empty());
+  const double whole =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const double part : {0.1, 0.3, 0.6}) {
+    start = std::chrono::steady_clock::now();
+    fitter.suggest(session, 3, Deadline::in(part * whole));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, (part + 0.12) * whole) << "deadline at " << part << " of " << whole << " s";
+  }
+}
+
 // Polls as a frame loop would, until an answer comes (or a minute passes).
 std::optional<SuggestionWorker::Answer> waitForAnswer(SuggestionWorker& worker) {
   const auto start = std::chrono::steady_clock::now();

@@ -750,10 +750,10 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
     xml.context = xmlNewParserCtxt();
     if (!xml.context) throw std::bad_alloc();
     // No network, no external entities or DTDs, no entity substitution; libxml2's own limits on
-    // depth and entity expansion stay on (no XML_PARSE_HUGE).
-    xml.document =
-        xmlCtxtReadMemory(xml.context, text.data(), static_cast<int>(text.size()), prefix.c_str(),
-                          nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+    // depth and entity expansion stay on (no XML_PARSE_HUGE); line numbers past 65535 stay exact.
+    xml.document = xmlCtxtReadMemory(
+        xml.context, text.data(), static_cast<int>(text.size()), prefix.c_str(), nullptr,
+        XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES);
     if (!xml.document) {
       const xmlError* error = xmlCtxtGetLastError(xml.context);
       std::string message = error && error->message ? trim(error->message) : "unreadable";
