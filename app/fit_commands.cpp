@@ -12,6 +12,7 @@
 #include "app/document.hpp"
 #include "app/studio_target.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -44,6 +45,45 @@ TriangleMesh shapeOf(const std::string& path) {
   return meshOf(buildSheetCached(design, path));
 }
 
+// The design a fit starts from: as given, or (no --from, or a surface name without parameters)
+// the catalogue surface sized to the target (start_surface.hpp); with the target's rotational
+// symmetry when --symmetry is not given.
+Design startDesign(const SurfaceOptions& from, const CLI::App* command, const TriangleMesh& target,
+                   const std::string& output) {
+  bool parametersGiven = false;
+  for (const auto& [name, value] : from.values)
+    parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
+  const bool isObj = fs::path(from.surface).extension() == ".obj";
+  Design design;
+  if (isObj || parametersGiven) {
+    design = designFromSurfaceOptions(from, command, output);
+  } else {
+    if (!from.surface.empty()) makeSurface(from.surface);  // an unknown name is refused as such
+    const StartChoice start = chooseStart(target, from.surface);
+    design.surface = GeneratedSurface{start.surface, start.parameters};
+    std::string text = "start: " + start.surface;
+    for (const auto& [name, value] : start.parameters) {
+      char number[32];
+      std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
+      text += number;
+    }
+    std::cout << text << " (sized to the target)" << std::endl;
+    if (command->get_option("--symmetry")->count() > 0) {
+      try {
+        design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
+      } catch (const InvalidSymmetry& e) {
+        throw UsageError("--symmetry " + std::string(e.what()));
+      }
+    }
+  }
+  if (command->get_option("--symmetry")->count() == 0 && !isObj) {
+    design.symmetry = detectRotationalSymmetry(target, initialSheet(design, output));
+    if (!design.symmetry.empty())
+      std::cout << "symmetry: " << design.symmetry << " (the target's)" << std::endl;
+  }
+  return design;
+}
+
 }  // namespace
 
 void addFitCommand(CLI::App& app) {
@@ -60,10 +100,9 @@ void addFitCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   command->add_option("TARGET", options->target, "The shape to fold toward: a triangle mesh (.obj)")
       ->required();
-  command
-      ->add_option("--from", options->from.surface,
-                   "The surface to fold: a name (see `surfaces`) or an .obj file")
-      ->required();
+  command->add_option("--from", options->from.surface,
+                      "The surface to fold: a name (see `surfaces`) or an .obj file; a name "
+                      "without parameters, or none, is sized (and chosen) to the target");
   addSurfaceOptions(command, options->from);
   command->add_option("--folds", options->folds, "At most this many folds (each must help)")
       ->check(CLI::Range(1, 64));
@@ -82,8 +121,8 @@ void addFitCommand(CLI::App& app) {
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
                        std::to_string(options->seconds));
-    Design design = designFromSurfaceOptions(options->from, command, options->output);
     TriangleMesh target = readObjMesh(options->target);
+    Design design = startDesign(options->from, command, target, options->output);
     FitSettings settings;
     settings.seed = parseSeed(options->seed);
     settings.allowSelfIntersection = options->allowSelfIntersection;
