@@ -48,8 +48,11 @@ TriangleMesh shapeOf(const std::string& path) {
 // The design a fit starts from: as given, or (no --from, or a surface name without parameters)
 // the catalogue surface sized to the target (start_surface.hpp); with the target's rotational
 // symmetry when --symmetry is not given.
-Design startDesign(const SurfaceOptions& from, const CLI::App* command, const TriangleMesh& target,
-                   const std::string& output) {
+// A target far from the catalogue's frame or in other units is refused as it would be from the
+// surface's defaults, not sized to.
+Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
+                   const std::string& output, const std::string& targetName) {
+  const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
     parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
@@ -58,16 +61,24 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Tr
   if (isObj || parametersGiven) {
     design = designFromSurfaceOptions(from, command, output);
   } else {
-    if (!from.surface.empty()) makeSurface(from.surface);  // an unknown name is refused as such
+    try {
+      // An unknown name is refused as such.
+      fitter.checkAgainst(makeSurface(from.surface.empty() ? "square" : from.surface));
+    } catch (const InvalidTarget& e) {
+      throw UsageError(targetName + ": " + e.what());
+    }
     const StartChoice start = chooseStart(target, from.surface);
     design.surface = GeneratedSurface{start.surface, start.parameters};
-    std::string text = "start: " + start.surface;
+    std::string text = "from: " + start.surface;
     for (const auto& [name, value] : start.parameters) {
       char number[32];
       std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
       text += number;
     }
-    std::cout << text << " (sized to the target)" << std::endl;
+    std::cout << text
+              << (start.parameters.empty() ? " (its defaults: the target has creases)"
+                                           : " (sized to the target)")
+              << std::endl;
     if (command->get_option("--symmetry")->count() > 0) {
       try {
         design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
@@ -121,17 +132,16 @@ void addFitCommand(CLI::App& app) {
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
                        std::to_string(options->seconds));
-    TriangleMesh target = readObjMesh(options->target);
-    Design design = startDesign(options->from, command, target, options->output);
     FitSettings settings;
     settings.seed = parseSeed(options->seed);
     settings.allowSelfIntersection = options->allowSelfIntersection;
     std::unique_ptr<FoldFitter> fitter;
     try {
-      fitter = std::make_unique<FoldFitter>(std::move(target), settings);
+      fitter = std::make_unique<FoldFitter>(readObjMesh(options->target), settings);
     } catch (const InvalidTarget& e) {
       throw UsageError(options->target + ": " + e.what());
     }
+    Design design = startDesign(options->from, command, *fitter, options->output, options->target);
     const Sheet initial = initialSheet(design, options->output);
     FoldSession session(initial);
     if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
