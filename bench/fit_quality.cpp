@@ -2,7 +2,8 @@
 // docs/performance.md.
 //
 //   build/bench/fit_quality [--recipes a,b] [--buckets 1-2,3-4,5-8] [--per-bucket K]
-//                           [--seconds S] [--shapes | --shapes-only] [--write-targets DIR]
+//                           [--seconds S] [--shapes | --shapes-only] [--shape-folds N]
+//                           [--shape-file OBJ[:KIND]]... [--write-targets DIR]
 //
 // Reachable targets, per recipe of tests/support/fold_target_generators.hpp and per bucket of fold
 // counts: K targets (the catalogue's surfaces in turn, at their defaults, each design passing
@@ -29,10 +30,12 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "tests/support/fold_target_generators.hpp"
 
@@ -104,9 +107,11 @@ std::vector<Shape> unreachableShapes() {
 }
 
 // Random drags for `seconds`, each kept when it lowers the approximate distance: the baseline.
-double randomSearch(const Case& from, const FoldFitter& fitter, double seconds, std::size_t folds,
-                    std::uint64_t seed) {
-  FoldSession session(makeSurface(from.surface, from.parameters));
+double randomSearch(const Case& from, const std::string& symmetry, const FoldFitter& fitter,
+                    double seconds, std::size_t folds, std::uint64_t seed) {
+  const Sheet initial = makeSurface(from.surface, from.parameters);
+  FoldSession session(initial);
+  if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const TriangleMesh& target = fitter.target();
@@ -216,7 +221,10 @@ void reachableTable(const std::vector<std::string>& recipes, const std::vector<B
 }
 
 int run(int argc, char** argv) {
-  std::size_t perBucket = 4;
+  std::size_t perBucket = 4, shapeFolds = 16;
+  std::vector<std::string> shapeFiles;
+  std::vector<std::string> kinds;
+  kinds.reserve(64);
   double seconds = 60.0;
   std::vector<Bucket> buckets = {{1, 2}, {3, 4}, {5, 8}};
   std::vector<std::string> recipes;
@@ -249,6 +257,10 @@ int run(int argc, char** argv) {
       }
     } else if (arg == "--recipes")
       recipes = split(next());
+    else if (arg == "--shape-file")
+      shapeFiles.push_back(next());
+    else if (arg == "--shape-folds")
+      shapeFolds = std::stoul(next());
     else if (arg == "--shapes")
       shapes = true;
     else if (arg == "--shapes-only")
@@ -261,17 +273,39 @@ int run(int argc, char** argv) {
   if (!writeTargets.empty()) std::filesystem::create_directories(writeTargets);
   if (reachable) reachableTable(recipes, buckets, perBucket, seconds, writeTargets);
   if (shapes) {
+    // Each shape from the start `fit --from KIND` sizes to it (start_surface.hpp), with the
+    // target's rotational symmetry, against random drags from the same start in the same time.
     std::printf(
-        "\n| shape | from | Chamfer after each fold kept | fit Chamfer | random search "
-        "Chamfer (same time) | ratio |\n| --- | --- | --- | --- | --- | --- |\n");
-    for (const Shape& shape : unreachableShapes()) {
+        "\n| shape | from | symmetry | start Chamfer | Chamfer after each fold kept | fit "
+        "Chamfer | fit Hausdorff | start / fit | random search Chamfer (same time) | random / "
+        "fit |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    std::vector<Shape> all = unreachableShapes();
+    std::vector<std::string> names;  // Shape holds a name's pointer
+    names.reserve(shapeFiles.size());
+    for (const std::string& file : shapeFiles) {
+      const std::size_t colon = file.find(':');
+      names.push_back(std::filesystem::path(file.substr(0, colon)).stem().string());
+      Shape shape{names.back().c_str(), {"", {}}, readObjMesh(file.substr(0, colon))};
+      if (colon != std::string::npos)
+        kinds.push_back(file.substr(colon + 1));
+      else
+        kinds.emplace_back();
+      shape.from.surface = kinds.back().c_str();
+      all.push_back(std::move(shape));
+    }
+    for (const Shape& shape : all) {
       if (!writeTargets.empty())
         writeObj(shape.mesh,
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
-      FoldSession session(makeSurface(shape.from.surface, shape.from.parameters));
+      const StartChoice start = chooseStart(shape.mesh, shape.from.surface);
+      const Case from{start.surface.c_str(), start.parameters};
+      const Sheet initial = makeSurface(start.surface, start.parameters);
+      const std::string symmetry = detectRotationalSymmetry(shape.mesh, initial);
+      FoldSession session(initial);
+      if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
       FitOptions options;
-      options.maxFolds = 6;
+      options.maxFolds = shapeFolds;
       options.seconds = seconds;
       const FitResult result = fitFolds(session, fitter, options);
       std::string trail;
@@ -280,10 +314,16 @@ int run(int argc, char** argv) {
         std::snprintf(text, sizeof text, "%s%.3g", trail.empty() ? "" : ", ", 1000 * step.chamfer);
         trail += text;
       }
-      const double fitted = result.steps.back().chamfer;
-      const double random = randomSearch(shape.from, fitter, result.steps.back().seconds, 64, 7);
-      std::printf("| %s | %s | %s mm | %.3g mm | %.3g mm | %.2f |\n", shape.name,
-                  shape.from.surface, trail.c_str(), 1000 * fitted, 1000 * random, random / fitted);
+      const FitProgress& first = result.steps.front();
+      const FitProgress& last = result.steps.back();
+      const double random = randomSearch(from, symmetry, fitter, last.seconds, 4 * shapeFolds, 7);
+      std::printf("| %s | %s | %s | %.3g%% | %s mm | %.3g%% | %.3g%% | %.2f | %.3g%% | %.2f |\n",
+                  shape.name, start.surface.c_str(), symmetry.empty() ? "none" : symmetry.c_str(),
+                  100 * first.chamfer / first.diagonal, trail.c_str(),
+                  100 * last.chamfer / last.diagonal, 100 * last.hausdorff / last.diagonal,
+                  first.chamfer / last.chamfer, 100 * random / last.diagonal,
+                  random / last.chamfer);
+      std::fflush(stdout);
     }
   }
   return 0;

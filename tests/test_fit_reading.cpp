@@ -129,7 +129,7 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   // and, creased, was folded from the cylinder the catalogue makes: kept at its defaults.
   const StartChoice again = chooseStart(folded->exported, "cylinder");
   EXPECT_EQ(again.surface, "cylinder");
-  EXPECT_TRUE(again.parameters.empty());
+  EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
 }
 
 }  // namespace
