@@ -17,6 +17,7 @@
 #include "app/interrupt_guard.hpp"
 #include "app/studio_target.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -49,6 +50,56 @@ TriangleMesh shapeOf(const std::string& path) {
   return meshOf(buildSheetCached(design, path));
 }
 
+// The design a fit starts from: as given, or (no --from, or a surface name without parameters)
+// the catalogue surface sized to the target (start_surface.hpp); with the target's rotational
+// symmetry when --symmetry is not given.
+// A target far from the catalogue's frame or in other units is refused as it would be from the
+// surface's defaults, not sized to.
+Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
+                   const std::string& output, const std::string& targetName) {
+  const TriangleMesh& target = fitter.target();
+  bool parametersGiven = false;
+  for (const auto& [name, value] : from.values)
+    parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
+  const bool isObj = fs::path(from.surface).extension() == ".obj";
+  Design design;
+  if (isObj || parametersGiven) {
+    design = designFromSurfaceOptions(from, command, output);
+  } else {
+    try {
+      // An unknown name is refused as such.
+      fitter.checkAgainst(makeSurface(from.surface.empty() ? "square" : from.surface));
+    } catch (const InvalidTarget& e) {
+      throw UsageError(targetName + ": " + e.what());
+    }
+    const StartChoice start = chooseStart(target, from.surface);
+    design.surface = GeneratedSurface{start.surface, start.parameters};
+    std::string text = "from: " + start.surface;
+    for (const auto& [name, value] : start.parameters) {
+      char number[32];
+      std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
+      text += number;
+    }
+    std::cout << text
+              << (start.parameters.empty() ? " (its defaults: the target has creases)"
+                                           : " (sized to the target)")
+              << std::endl;
+    if (command->get_option("--symmetry")->count() > 0) {
+      try {
+        design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
+      } catch (const InvalidSymmetry& e) {
+        throw UsageError("--symmetry " + std::string(e.what()));
+      }
+    }
+  }
+  if (command->get_option("--symmetry")->count() == 0 && !isObj) {
+    design.symmetry = detectRotationalSymmetry(target, initialSheet(design, output));
+    if (!design.symmetry.empty())
+      std::cout << "symmetry: " << design.symmetry << " (the target's)" << std::endl;
+  }
+  return design;
+}
+
 }  // namespace
 
 void addFitCommand(CLI::App& app) {
@@ -66,10 +117,9 @@ void addFitCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   command->add_option("TARGET", options->target, "The shape to fold toward: a triangle mesh (.obj)")
       ->required();
-  command
-      ->add_option("--from", options->from.surface,
-                   "The surface to fold: a name (see `surfaces`) or an .obj file")
-      ->required();
+  command->add_option("--from", options->from.surface,
+                      "The surface to fold: a name (see `surfaces`) or an .obj file; a name "
+                      "without parameters, or none, is sized (and chosen) to the target");
   addSurfaceOptions(command, options->from);
   command->add_option("--folds", options->folds, "At most this many folds (each must help)")
       ->check(CLI::Range(1, 64));
@@ -101,17 +151,16 @@ void addFitCommand(CLI::App& app) {
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
                        std::to_string(options->seconds));
-    Design design = designFromSurfaceOptions(options->from, command, options->output);
-    TriangleMesh target = readObjMesh(options->target);
     FitSettings settings;
     settings.seed = parseSeed(options->seed);
     settings.allowSelfIntersection = options->allowSelfIntersection;
     std::unique_ptr<FoldFitter> fitter;
     try {
-      fitter = std::make_unique<FoldFitter>(std::move(target), settings);
+      fitter = std::make_unique<FoldFitter>(readObjMesh(options->target), settings);
     } catch (const InvalidTarget& e) {
       throw UsageError(options->target + ": " + e.what());
     }
+    Design design = startDesign(options->from, command, *fitter, options->output, options->target);
     const Sheet initial = initialSheet(design, options->output);
     FoldSession session(initial);
     if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));

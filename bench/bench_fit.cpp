@@ -7,7 +7,7 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/random_fold_target.hpp"
+#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/surface_distance.hpp"
 
 namespace curvefold {

@@ -1,15 +1,18 @@
-// How well `curvefold fit` reaches targets (issue 27, 4): the quality table of the README.
+// How well `curvefold fit` reaches targets (issues 27, 38): the quality tables of the README and
+// docs/performance.md.
 //
-//   build/bench/fit_quality [--per-count K] [--seconds S] [--counts 1,2,3,4] [--shapes]
-//                           [--write-targets DIR]
+//   build/bench/fit_quality [--recipes a,b] [--buckets 1-2,3-4,5-8] [--per-bucket K]
+//                           [--seconds S] [--shapes | --shapes-only] [--shape-folds N]
+//                           [--shape-file OBJ[:KIND]]... [--write-targets DIR]
 //
-// Reachable targets: for each fold count N and each of K seeds, a catalogue surface folded N
-// times at random (random_fold_target.hpp), given to the search as a plain mesh (no development),
-// fitted from the same surface with at most N + 2 folds; the table counts the fits whose two-sided
-// Hausdorff distance is at most 1% and 3% of the target's diagonal. Shapes no reflection sequence
-// reaches (--shapes: a hemisphere bowl from a disk, a vase of revolution from a cylinder, a saddle
-// from a square): the distance after each fold, against a random search given the same time
-// (random drags of random samples, each kept when it brings the sheet closer).
+// Reachable targets, per recipe of tests/support/fold_target_generators.hpp and per bucket of fold
+// counts: K targets (the catalogue's surfaces in turn, at their defaults, each design passing
+// `check`), exported as `export --obj` less its vt lines, fitted from the same surface (and
+// symmetry) with `--folds N --time S`; the table counts the fits whose two-sided Hausdorff distance
+// (surface_distance.hpp) is at most 1% and 3% of the target's diagonal. Shapes no reflection
+// sequence reaches (--shapes): the distance after each fold, against a random search given the
+// same time (random drags of random samples, each kept when it brings the sheet closer).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,17 +20,24 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "engine/fit/crease_planes.hpp"
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/random_fold_target.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/target_unfolding.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "tests/support/fold_target_generators.hpp"
 
 namespace curvefold {
 namespace {
@@ -36,17 +46,6 @@ struct Case {
   const char* surface;
   SurfaceParameters parameters;
 };
-
-// The catalogue at about 3k triangles each.
-const std::vector<Case>& cases() {
-  static const std::vector<Case> all = {
-      {"cylinder", {{"resolution", 40}}},      {"cone", {{"resolution", 48}}},
-      {"square", {{"resolution", 30}}},        {"rectangle", {{"resolution", 36}}},
-      {"half_cylinder", {{"resolution", 40}}}, {"swept_curve", {{"resolution", 40}}},
-      {"helix_tangent", {{"resolution", 60}}}, {"disk", {{"resolution", 32}}},
-  };
-  return all;
-}
 
 void writeObj(const TriangleMesh& mesh, const std::filesystem::path& path) {
   std::ofstream out(path);
@@ -108,9 +107,11 @@ std::vector<Shape> unreachableShapes() {
 }
 
 // Random drags for `seconds`, each kept when it lowers the approximate distance: the baseline.
-double randomSearch(const Case& from, const FoldFitter& fitter, double seconds, std::size_t folds,
-                    std::uint64_t seed) {
-  FoldSession session(makeSurface(from.surface, from.parameters));
+double randomSearch(const Case& from, const std::string& symmetry, const FoldFitter& fitter,
+                    double seconds, std::size_t folds, std::uint64_t seed) {
+  const Sheet initial = makeSurface(from.surface, from.parameters);
+  FoldSession session(initial);
+  if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const TriangleMesh& target = fitter.target();
@@ -133,95 +134,178 @@ double randomSearch(const Case& from, const FoldFitter& fitter, double seconds, 
   return surfaceDistance(meshOf(session.fixed()), target).chamfer;
 }
 
+// Sorted copy's middle.
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+struct Bucket {
+  std::size_t lo, hi;
+};
+
+// Reachable targets by recipe (tests/support/fold_target_generators.hpp) and fold count: each
+// target made on the catalogue surfaces in turn at their defaults, exported as `export --obj`
+// without vt, fitted as `fit TARGET --from SURFACE [--symmetry S] --folds N --time T` would, and
+// measured by the project's two-sided Hausdorff distance (surface_distance.hpp).
+void reachableTable(const std::vector<std::string>& recipes, const std::vector<Bucket>& buckets,
+                    std::size_t perBucket, double seconds, const std::string& writeTargets) {
+  std::vector<std::string> surfaces;
+  for (const SurfaceInfo& info : surfaceCatalog()) surfaces.push_back(info.name);
+  std::printf(
+      "| recipe | folds | targets | Hausdorff <= 1%% | <= 3%% | unfolded | median Hausdorff | "
+      "median time |\n| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const testing::FoldTargetRecipe& recipe : testing::foldTargetRecipes()) {
+    if (!recipes.empty() && std::find(recipes.begin(), recipes.end(), recipe.name) == recipes.end())
+      continue;
+    for (std::size_t b = 0; b < buckets.size(); ++b) {
+      const Bucket bucket = buckets[b];
+      std::vector<double> distances, times;
+      std::size_t unfolded = 0;
+      for (std::size_t k = 0, made = 0; made < perBucket && k < 8 * perBucket + 8; ++k) {
+        const std::size_t n = bucket.lo + made % (bucket.hi - bucket.lo + 1);
+        const std::string& surface =
+            surfaces[(made * 4 + b + recipe.name.size()) % surfaces.size()];
+        const std::uint64_t seed = 7919 * (b + 1) + 104729 * k + recipe.name.size();
+        std::optional<testing::FoldTarget> target;
+        try {
+          target = testing::makeFoldTarget(recipe, surface, n, seed);
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "%s %s seed %llu: %s\n", recipe.name.c_str(), surface.c_str(),
+                       static_cast<unsigned long long>(seed), e.what());
+        }
+        if (!target) continue;
+        ++made;
+        const std::string name =
+            recipe.name + "-" + surface + "-" + std::to_string(n) + "folds-" + std::to_string(seed);
+        if (!writeTargets.empty())
+          writeObj(target->exported, std::filesystem::path(writeTargets) / (name + ".obj"));
+        const FoldFitter fitter(target->exported);
+        FoldSession session(target->initial);
+        if (!target->design.symmetry.empty())
+          session.setSymmetry(parseSymmetry(target->design.symmetry, target->initial));
+        FitOptions options;
+        options.maxFolds = n;
+        options.seconds = seconds;
+        const auto begun = std::chrono::steady_clock::now();
+        const FitResult result = fitFolds(session, fitter, options);
+        times.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count());
+        const SurfaceDistance d = surfaceDistance(meshOf(session.fixed()), target->exported);
+        distances.push_back(d.relativeHausdorff());
+        unfolded += result.stopReason.rfind("the target unfolded", 0) == 0;
+        // What the unfolding alone reads (for finding why a fit missed).
+        const TargetUnfolding plan = unfoldTarget(target->exported, meshOf(target->initial),
+                                                  sharpEdgeThreshold(meshOf(target->initial)), n);
+        std::fprintf(stderr,
+                     "%s: %zu folds kept, Hausdorff %.3g%%, %.1f s (%s); unfolding read %zu, "
+                     "%.3g diagonals of crease left\n",
+                     name.c_str(), result.steps.size() - 1, 100 * distances.back(), times.back(),
+                     result.stopReason.c_str(), plan.folds.size(),
+                     plan.sharpLengthLeft / d.diagonal);
+      }
+      std::size_t within1 = 0, within3 = 0;
+      for (double d : distances) {
+        within1 += d <= 0.01;
+        within3 += d <= 0.03;
+      }
+      const double count = std::max<double>(1.0, distances.size());
+      std::printf("| %s | %zu-%zu | %zu | %zu (%.0f%%) | %zu (%.0f%%) | %zu | %.3g%% | %.1f s |\n",
+                  recipe.name.c_str(), bucket.lo, bucket.hi, distances.size(), within1,
+                  100.0 * within1 / count, within3, 100.0 * within3 / count, unfolded,
+                  100 * median(distances), median(times));
+      std::fflush(stdout);
+    }
+  }
+}
+
 int run(int argc, char** argv) {
-  std::size_t perCount = 5;
+  std::size_t perBucket = 4, shapeFolds = 16;
+  std::vector<std::string> shapeFiles;
+  std::vector<std::string> kinds;
+  kinds.reserve(64);
   double seconds = 60.0;
-  std::vector<std::size_t> counts = {1, 2, 3, 4};
-  bool shapes = false;
+  std::vector<Bucket> buckets = {{1, 2}, {3, 4}, {5, 8}};
+  std::vector<std::string> recipes;
+  bool shapes = false, reachable = true;
   std::string writeTargets;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');)
+      if (!part.empty()) parts.push_back(part);
+    return parts;
+  };
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto next = [&]() -> std::string {
       if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--per-count")
-      perCount = std::stoul(next());
+    if (arg == "--per-bucket")
+      perBucket = std::stoul(next());
     else if (arg == "--seconds")
       seconds = std::stod(next());
-    else if (arg == "--counts") {
-      counts.clear();
-      for (const char c : next())
-        if (c >= '1' && c <= '9') counts.push_back(c - '0');
-    } else if (arg == "--shapes")
+    else if (arg == "--buckets") {
+      buckets.clear();
+      for (const std::string& part : split(next())) {
+        const std::size_t dash = part.find('-');
+        const std::size_t lo = std::stoul(part.substr(0, dash));
+        buckets.push_back({lo, dash == std::string::npos ? lo : std::stoul(part.substr(dash + 1))});
+        if (buckets.back().hi < lo) throw std::runtime_error("--buckets: " + part);
+      }
+    } else if (arg == "--recipes")
+      recipes = split(next());
+    else if (arg == "--shape-file")
+      shapeFiles.push_back(next());
+    else if (arg == "--shape-folds")
+      shapeFolds = std::stoul(next());
+    else if (arg == "--shapes")
       shapes = true;
+    else if (arg == "--shapes-only")
+      shapes = true, reachable = false;
     else if (arg == "--write-targets")
       writeTargets = next();
     else
       throw std::runtime_error("unknown option " + arg);
   }
   if (!writeTargets.empty()) std::filesystem::create_directories(writeTargets);
-
-  std::printf("| folds | targets | Hausdorff <= 1%% | <= 3%% | median Hausdorff | median time |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- |\n");
-  for (std::size_t n : counts) {
-    std::vector<double> distances, times;
-    for (std::size_t k = 0; k < perCount; ++k) {
-      const Case& c = cases()[(k + 3 * n) % cases().size()];
-      // A surface that takes no more such folds from one seed takes them from another.
-      std::uint64_t seed = 1000 * n + k;
-      RandomFoldTarget target;
-      for (int attempt = 0;; ++attempt, seed += 100) {
-        try {
-          target = makeRandomFoldTarget(c.surface, c.parameters, n, seed);
-          break;
-        } catch (const std::runtime_error&) {
-          if (attempt == 5) throw;
-        }
-      }
-      const TriangleMesh mesh = meshOf(target.sheet);
-      if (!writeTargets.empty())
-        writeObj(mesh, std::filesystem::path(writeTargets) /
-                           (std::string(c.surface) + "-" + std::to_string(n) + "folds-" +
-                            std::to_string(k) + ".obj"));
-      const FoldFitter fitter(mesh);
-      FoldSession session(target.initial);
-      FitOptions options;
-      options.maxFolds = n + 2;
-      options.seconds = seconds;
-      const FitResult result = fitFolds(session, fitter, options);
-      distances.push_back(result.steps.back().hausdorff / result.steps.back().diagonal);
-      times.push_back(result.steps.back().seconds);
-      std::fprintf(stderr,
-                   "%zu folds, %s seed %llu: %zu folds kept, Hausdorff %.3g%% (%.1f s; %s)\n", n,
-                   c.surface, static_cast<unsigned long long>(seed), result.steps.size() - 1,
-                   100 * distances.back(), times.back(), result.stopReason.c_str());
-    }
-    std::size_t within1 = 0, within3 = 0;
-    for (double d : distances) {
-      within1 += d <= 0.01;
-      within3 += d <= 0.03;
-    }
-    std::vector<double> sorted = distances, sortedTimes = times;
-    std::sort(sorted.begin(), sorted.end());
-    std::sort(sortedTimes.begin(), sortedTimes.end());
-    std::printf("| %zu | %zu | %zu (%.0f%%) | %zu (%.0f%%) | %.3g%% | %.1f s |\n", n,
-                distances.size(), within1, 100.0 * within1 / distances.size(), within3,
-                100.0 * within3 / distances.size(), 100 * sorted[sorted.size() / 2],
-                sortedTimes[sortedTimes.size() / 2]);
-  }
+  if (reachable) reachableTable(recipes, buckets, perBucket, seconds, writeTargets);
   if (shapes) {
+    // Each shape from the start `fit --from KIND` sizes to it (start_surface.hpp), with the
+    // target's rotational symmetry, against random drags from the same start in the same time.
     std::printf(
-        "\n| shape | from | Chamfer after each fold kept | fit Chamfer | random search "
-        "Chamfer (same time) | ratio |\n| --- | --- | --- | --- | --- | --- |\n");
-    for (const Shape& shape : unreachableShapes()) {
+        "\n| shape | from | symmetry | start Chamfer | Chamfer after each fold kept | fit "
+        "Chamfer | fit Hausdorff | start / fit | random search Chamfer (same time) | random / "
+        "fit |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    std::vector<Shape> all = unreachableShapes();
+    std::vector<std::string> names;  // Shape holds a name's pointer
+    names.reserve(shapeFiles.size());
+    for (const std::string& file : shapeFiles) {
+      const std::size_t colon = file.find(':');
+      names.push_back(std::filesystem::path(file.substr(0, colon)).stem().string());
+      Shape shape{names.back().c_str(), {"", {}}, readObjMesh(file.substr(0, colon))};
+      if (colon != std::string::npos)
+        kinds.push_back(file.substr(colon + 1));
+      else
+        kinds.emplace_back();
+      shape.from.surface = kinds.back().c_str();
+      all.push_back(std::move(shape));
+    }
+    for (const Shape& shape : all) {
       if (!writeTargets.empty())
         writeObj(shape.mesh,
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
-      FoldSession session(makeSurface(shape.from.surface, shape.from.parameters));
+      const StartChoice start = chooseStart(shape.mesh, shape.from.surface);
+      const Case from{start.surface.c_str(), start.parameters};
+      const Sheet initial = makeSurface(start.surface, start.parameters);
+      const std::string symmetry = detectRotationalSymmetry(shape.mesh, initial);
+      FoldSession session(initial);
+      if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
       FitOptions options;
-      options.maxFolds = 6;
+      options.maxFolds = shapeFolds;
       options.seconds = seconds;
       const FitResult result = fitFolds(session, fitter, options);
       std::string trail;
@@ -230,10 +314,16 @@ int run(int argc, char** argv) {
         std::snprintf(text, sizeof text, "%s%.3g", trail.empty() ? "" : ", ", 1000 * step.chamfer);
         trail += text;
       }
-      const double fitted = result.steps.back().chamfer;
-      const double random = randomSearch(shape.from, fitter, result.steps.back().seconds, 64, 7);
-      std::printf("| %s | %s | %s mm | %.3g mm | %.3g mm | %.2f |\n", shape.name,
-                  shape.from.surface, trail.c_str(), 1000 * fitted, 1000 * random, random / fitted);
+      const FitProgress& first = result.steps.front();
+      const FitProgress& last = result.steps.back();
+      const double random = randomSearch(from, symmetry, fitter, last.seconds, 4 * shapeFolds, 7);
+      std::printf("| %s | %s | %s | %.3g%% | %s mm | %.3g%% | %.3g%% | %.2f | %.3g%% | %.2f |\n",
+                  shape.name, start.surface.c_str(), symmetry.empty() ? "none" : symmetry.c_str(),
+                  100 * first.chamfer / first.diagonal, trail.c_str(),
+                  100 * last.chamfer / last.diagonal, 100 * last.hausdorff / last.diagonal,
+                  first.chamfer / last.chamfer, 100 * random / last.diagonal,
+                  random / last.chamfer);
+      std::fflush(stdout);
     }
   }
   return 0;

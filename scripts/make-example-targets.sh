@@ -48,6 +48,18 @@ grid() {
           r = 0.08 - (along + 0.06) / 0.12 * 0.05
           x = r * sin(a); z = -r * cos(a)
         }
+        if (shape == "vase") {
+          # A vase about the y axis, 20 cm tall: a belly of 5.2 cm radius low down, a neck of
+          # 3 cm and a lip flaring to 4 cm.
+          a = 2 * pi * u; y = -0.1 + 0.2 * v
+          r = 0.04 + 0.012 * sin(1.6 * pi * v) - 0.01 * v + 0.01 * v ^ 6
+          x = r * sin(a); z = -r * cos(a)
+        } else if (shape == "bowl") {
+          # A round bowl opening up: a paraboloid z = r^2 / 0.16 out to a rim of 8 cm radius,
+          # 4 cm deep (a small hole at its bottom, where the grid meets itself).
+          a = 2 * pi * u; rr = 0.004 + 0.076 * v
+          x = rr * cos(a); y = rr * sin(a); z = rr * rr / 0.16 - 0.02
+        }
         printf "v %.9g %.9g %.9g\n", x, y, z
       }
       for (j = 0; j < nv; j++) for (i = 0; i < nu; i++) {
@@ -60,3 +72,5 @@ grid() {
 }
 grid lampshade 96 60 "a lampshade with its brim turned up, from cone --top_radius 0.03"
 grid saddle 40 40 "a saddle z = (x^2 - y^2) / 0.3, from the default square"
+grid vase 64 40 "a vase about the y axis with a belly, a neck and a lip"
+grid bowl 64 24 "a round bowl, a paraboloid 4 cm deep and 16 cm across"

@@ -10,7 +10,7 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/random_fold_target.hpp"
+#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"

@@ -349,7 +349,6 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
                   autosave);
     expectFailure(command + " cylinder --target " + path("mm.obj").string() + a, "units", autosave);
   }
-  expectFailure("fit " + target + o, "--from", out);
   expectFailure("fit " + target + " --from cylinder --wobble 3" + o, "--wobble", out);
   for (const char* seed : {"abc", "-1", "18446744073709551616", "0x10", "\"\""})
     expectFailure("fit " + target + " --from cylinder --seed " + seed + o, "--seed", out);

@@ -17,7 +17,7 @@
 
 #include "app/headset_studio.hpp"
 #include "app/studio_replay.hpp"
-#include "engine/fit/random_fold_target.hpp"
+#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"

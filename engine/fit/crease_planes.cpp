@@ -44,6 +44,10 @@ void forEachInteriorEdge(const TriangleMesh& mesh, Visit visit) {
   }
 }
 
+constexpr double kMinimumSharpDegrees = 4.0;
+// A crease this long (of the diagonal) names a plane: a fold of a corner makes a short one.
+constexpr double kMinimumSupport = 0.005;
+
 double unit(std::mt19937_64& random) {
   return static_cast<double>(random() >> 11) * 0x1.0p-53;
 }
@@ -59,14 +63,17 @@ double largestDihedralDegrees(const TriangleMesh& mesh) {
 }
 
 double sharpEdgeThreshold(const TriangleMesh& initialSheet) {
-  return std::max(12.0, 1.5 * largestDihedralDegrees(initialSheet) + 2.0);
+  // A flat sheet's faces do not bend at all: a shallow fold (a drag mostly off the sheet bends
+  // it by a few degrees) is read there as well as a steep one.
+  return std::max(kMinimumSharpDegrees, 1.5 * largestDihedralDegrees(initialSheet) + 2.0);
 }
 
 std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
                                           const CreasePlaneOptions& options) {
   const double diagonal = boundingDiagonal(mesh);
-  const double tolerance = options.tolerance > 0.0 ? options.tolerance : 1e-3 * diagonal;
-  const double minSupport = options.minSupport > 0.0 ? options.minSupport : 0.03 * diagonal;
+  const double tolerance = options.tolerance > 0.0 ? options.tolerance : 1e-4 * diagonal;
+  const double minSupport =
+      options.minSupport > 0.0 ? options.minSupport : kMinimumSupport * diagonal;
   std::vector<SharpEdge> sharp;
   forEachInteriorEdge(mesh, [&](std::uint32_t u, std::uint32_t v, const glm::dvec3& n1,
                                 const glm::dvec3& n2, double degrees) {
@@ -81,8 +88,10 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
   std::mt19937_64 random(options.seed);
   // An edge is in a fold's plane when it lies in it and the plane mirrors one face's
   // normal onto the other's (up to sign): the plane of a flat region that holds two creases
-  // lies along both, but mirrors neither.
-  const double consistent = std::cos(0.5 * options.minDihedralDegrees * 3.14159265358979 / 180.0);
+  // lies along both, but mirrors neither. Within the threshold, not less: where a crease runs
+  // along an edge of a curved sheet's facets, its faces come from two facets, which bent apart
+  // by up to two thirds of it before the fold.
+  const double consistent = std::cos(options.minDihedralDegrees * 3.14159265358979 / 180.0);
   auto holds = [&](const ReflectionPlane& plane, const SharpEdge& e) {
     if (std::abs(plane.signedDistance(e.a)) > tolerance ||
         std::abs(plane.signedDistance(e.b)) > tolerance)

@@ -29,8 +29,8 @@ struct CreasePlane {
 
 struct CreasePlaneOptions {
   double minDihedralDegrees = 12.0;  // edges whose faces turn by more are sharp
-  double tolerance = 0.0;            // metres; 0: 1e-3 of the mesh's diagonal
-  double minSupport = 0.0;           // metres; 0: 3% of the mesh's diagonal
+  double tolerance = 0.0;   // metres; 0: 1e-4 of the mesh's diagonal (a file's 6 digits: 1e-6)
+  double minSupport = 0.0;  // metres; 0: 0.5% of the mesh's diagonal
   std::size_t maxPlanes = 16;
   std::size_t hypotheses = 600;  // three-point hypotheses tried per plane
   std::uint64_t seed = 1;
@@ -45,7 +45,7 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
 double largestDihedralDegrees(const TriangleMesh& mesh);
 
 // The sharp-edge threshold for targets folded from `initialSheet`: half as much again as its
-// facets bend, two degrees more, and at least 12 degrees.
+// facets bend, two degrees more, and at least 4 degrees (a flat sheet's shallow folds).
 double sharpEdgeThreshold(const TriangleMesh& initialSheet);
 
 }  // namespace curvefold

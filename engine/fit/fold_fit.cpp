@@ -27,6 +27,7 @@ namespace curvefold {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
 // Seeds tried on each side of a crease plane: parts the plane leaves apart are each a fold.
 constexpr std::size_t kSeedsPerCreasePlane = 6;
 // Crease planes mirrored through each other: of the best this many (at most n(n-1) more planes).
@@ -585,8 +586,12 @@ struct FoldSequence {
 // One fitFolds: the session it folds, the clock, and what it has measured.
 class FitRun {
  public:
-  FitRun(FoldSession& session, const FoldFitter& fitter, const FitOptions& options)
-      : session_(session),
+  // `readCreases`: try the target's unfolding first (off for the search toward a target the
+  // unfolding left unfinished, which has been read).
+  FitRun(FoldSession& session, const FoldFitter& fitter, const FitOptions& options,
+         bool readCreases = true)
+      : readCreases_(readCreases),
+        session_(session),
         fitter_(fitter),
         options_(options),
         start_(options.started.value_or(std::chrono::steady_clock::now())),
@@ -606,7 +611,7 @@ class FitRun {
     FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
     best_ = bestMonotone_ = root;
     result_.stopReason = "reached the most folds asked for";
-    if (unfoldTarget()) {
+    if (readCreases_ && unfoldTarget()) {
       result_.stopReason = "the target unfolded: its creases named every fold";
     } else {
       beamSearch(root);
@@ -669,46 +674,152 @@ class FitRun {
     return branch;
   }
 
-  // The folds the target's own creases name, read by unfolding it (a symmetric design's folds
-  // bring images the unfolding does not know of: those are left to the search). True when they
-  // reach the target (a search could only polish it).
+  // The folds the target's own creases name, read by unfolding it. A symmetric design's fold
+  // brings its images, which the unfolding reads as folds of their own: a fold read whose plane
+  // an image already made is skipped. True when they reach the target (a search could only
+  // polish it).
   bool unfoldTarget() {
-    if (session_.symmetry() || !fitter_.settings().useCreases) return false;
+    if (!fitter_.settings().useCreases) return false;
+    const Symmetry* symmetry = session_.symmetry();
+    const std::size_t perFold = symmetry ? static_cast<std::size_t>(symmetry->order) : 1;
     // Room for one fold's measure after it (its own check and measure below); the folds it
     // names are measured within the time at the end, or not kept.
     const Deadline deadline = searchDeadline(1);
     const TargetUnfolding plan = curvefold::unfoldTarget(
         fitter_.target(), meshOf(session_.initial()),
-        sharpEdgeThreshold(meshOf(session_.initial())), options_.maxFolds, deadline);
+        sharpEdgeThreshold(meshOf(session_.initial())),
+        std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
+        deadline);
     if (plan.cutShort) {
       noteCut(deadline);
       return false;
     }
     const std::unique_ptr<FoldSession> branch = sessionFor({});
-    FoldSequence planned;
-    for (const UnfoldedFold& fold : plan.folds) {
-      if (deadline.passed()) {
-        noteCut(deadline);
-        return false;
-      }
-      const std::size_t before = branch->foldCount();
-      const glm::dvec3 grabbed = branch->beginDragNear(fold.seedBefore);
-      branch->updateDrag(fold.plane.reflect(grabbed));
-      if (!branch->commit()) break;
-      planned.folds.insert(
-          planned.folds.end(), branch->folds().begin() + static_cast<std::ptrdiff_t>(before),
-          branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
-      planned.groups.push_back(branch->foldCount() - before);
+    const FoldSequence planned = replay(plan, *branch, session_.initial(), deadline);
+    if (deadline.passed()) {
+      noteCut(deadline);
+      return false;
     }
-    if (planned.groups.empty()) return false;
+    if (offer(planned, *branch)) return true;
+    // Where the unfolding stopped short of the sheet (a crease it could not read, or an
+    // unfolding that ends off it), what it read is used still: the search folds the sheet
+    // toward where the unfolding stopped, and the folds read follow.
+    const TriangleMesh unfolded{plan.unfolded, fitter_.target().triangles};
+    if (plan.folds.empty() || planned.groups.size() >= options_.maxFolds ||
+        surfaceDistance(unfolded, meshOf(session_.initial()), options_.distanceSamples)
+                .relativeHausdorff() <= kUnfoldedCloseEnough)
+      return false;
+    return searchTowardUnfolded(plan, unfolded, planned.groups.size());
+  }
+
+  // The unfolding's folds made on `branch` (the session's folds and maybe more), each seeded at
+  // the development point under where the unfolding lays its seed on `seedsOn` (the sheet the
+  // unfolded target lies on, as `branch` holds it now): a point in 3D may name two (a slit's
+  // sides, layers a flat fold laid together); the development names one. A symmetric design's
+  // fold brings its images, which the unfolding reads as folds of their own: a fold read whose
+  // plane an image already made is skipped.
+  FoldSequence replay(const TargetUnfolding& plan, FoldSession& branch, const Sheet& seedsOn,
+                      const Deadline& deadline) const {
+    const Symmetry* symmetry = session_.symmetry();
+    const double size = sheetSize(session_.initial());
+    const std::size_t first = branch.foldCount();
+    auto madeAlready = [&](const ReflectionPlane& plane) {
+      for (std::size_t f = first; f < branch.foldCount(); ++f) {
+        const ReflectionPlane& made = branch.folds()[f].plane;
+        if (std::abs(glm::dot(made.normal, plane.normal)) > std::cos(0.5 * kPi / 180.0) &&
+            std::abs(made.signedDistance(plane.point)) < 1e-4 * size)
+          return true;
+      }
+      return false;
+    };
+    std::vector<glm::dvec2> seeds;
+    for (const UnfoldedFold& fold : plan.folds)
+      seeds.push_back(
+          developmentOf(seedsOn, closestSurfacePoint(seedsOn, plan.unfolded[fold.seedVertex])));
+    FoldSequence planned;
+    for (std::size_t k = 0; k < plan.folds.size(); ++k) {
+      if (symmetry && madeAlready(plan.folds[k].plane)) continue;
+      if (planned.groups.size() >= options_.maxFolds || deadline.passed()) break;
+      const std::size_t before = branch.foldCount();
+      const glm::dvec3 grabbed = branch.beginDragAtDevelopment(seeds[k]);
+      branch.updateDrag(plan.folds[k].plane.reflect(grabbed));
+      if (!branch.commit()) break;
+      planned.folds.insert(
+          planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
+          branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
+      planned.groups.push_back(branch.foldCount() - before);
+    }
+    return planned;
+  }
+
+  // A sequence found outside the beam, made on `branch`: kept as the best when it is (and passes
+  // nothing through itself unless allowed). True when it reaches the target.
+  bool offer(FoldSequence sequence, const FoldSession& branch) {
     const bool crosses = !fitter_.settings().allowSelfIntersection &&
-                         !findSelfIntersections(branch->fixed()).intersections.empty();
-    if (crosses) return false;
-    planned.score = fitter_.approximateDistance(branch->fixed());
-    if (planned.score < best_.score) best_ = planned;
-    if (options_.searching) options_.searching(planned.groups.size(), planned.score, seconds());
-    return surfaceDistance(meshOf(branch->fixed()), fitter_.target(), options_.distanceSamples)
-               .relativeHausdorff() <= kUnfoldedCloseEnough;
+                         !findSelfIntersections(branch.fixed()).intersections.empty();
+    if (sequence.groups.empty() || crosses) return false;
+    sequence.score = fitter_.approximateDistance(branch.fixed());
+    if (options_.searching) options_.searching(sequence.groups.size(), sequence.score, seconds());
+    const bool better = sequence.score < best_.score;
+    if (better) best_ = sequence;
+    return better &&
+           surfaceDistance(meshOf(branch.fixed()), fitter_.target(), options_.distanceSamples)
+                   .relativeHausdorff() <= kUnfoldedCloseEnough;
+  }
+
+  // The folds the unfolding did not read, searched for toward the target as far as it unfolded
+  // (with half the time left), then the folds it read; true when that reaches the target.
+  bool searchTowardUnfolded(const TargetUnfolding& plan, const TriangleMesh& unfolded,
+                            std::size_t groupsRead) {
+    std::unique_ptr<FoldFitter> toward;
+    try {
+      toward = std::make_unique<FoldFitter>(unfolded, fitter_.settings());
+    } catch (const InvalidTarget&) {
+      return false;
+    }
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    FitOptions inner;
+    inner.maxFolds = options_.maxFolds - groupsRead;
+    inner.minimumGain = options_.minimumGain;
+    inner.distanceSamples = options_.distanceSamples;
+    inner.cancelled = options_.cancelled;
+    // Half of what is left of each budget: the clock's (less the reserve for measuring at the
+    // end) and the evaluations', so a fit with a count repeats bit for bit.
+    const Deadline deadline = searchDeadline(groupsRead + 1);
+    if (deadline.passed()) return false;
+    if (end_ != std::chrono::steady_clock::time_point::max()) {
+      inner.seconds =
+          0.5 *
+          std::chrono::duration<double>(deadline.at - std::chrono::steady_clock::now()).count();
+      if (!(inner.seconds > 0.05)) return false;
+    } else {
+      inner.seconds = std::numeric_limits<double>::infinity();
+    }
+    if (options_.maxEvaluations > 0) {
+      const std::uint64_t used = evaluations_.load();
+      if (used >= options_.maxEvaluations) return false;
+      inner.maxEvaluations = std::max<std::uint64_t>(1, (options_.maxEvaluations - used) / 2);
+    }
+    const FitResult innerResult = FitRun(*branch, *toward, inner, false).run();
+    evaluations_ += innerResult.evaluations;
+    if (innerResult.cancelled) result_.cancelled = true;
+    FoldSequence sequence;
+    sequence.folds.assign(
+        branch->folds().begin() + static_cast<std::ptrdiff_t>(base_.size()),
+        branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
+    for (std::size_t f = 0; f < sequence.folds.size(); ++f) {
+      // A symmetric group: consecutive folds of one group number.
+      if (f > 0 && sequence.folds[f].group != 0 &&
+          sequence.folds[f].group == sequence.folds[f - 1].group)
+        ++sequence.groups.back();
+      else
+        sequence.groups.push_back(1);
+    }
+    const Sheet reached = branch->fixed();
+    const FoldSequence read = replay(plan, *branch, reached, deadline);
+    sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
+    sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
+    return offer(std::move(sequence), *branch);
   }
 
   // A beam over fold sequences: each kept sequence grown by its best few next folds, the best few
@@ -840,6 +951,7 @@ class FitRun {
     }
   }
 
+  const bool readCreases_;
   FoldSession& session_;
   const FoldFitter& fitter_;
   const FitOptions& options_;

@@ -1,6 +1,7 @@
 #include "engine/fit/target_unfolding.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <map>
 
@@ -15,6 +16,11 @@ namespace curvefold {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// How much more than the sheet's own facets an edge may bend and still count as smooth.
+constexpr double kBendMarginDegrees = 0.5;
+// The least crease (of the diagonal) one unfolding step must take away: a fold of a thin tip
+// leaves a crease a few millimetres long.
+constexpr double kLeastCrease = 0.003;
 
 struct MeshEdge {
   std::uint32_t a = 0, b = 0;
@@ -25,6 +31,7 @@ struct MeshEdge {
 struct Connectivity {
   std::vector<MeshEdge> interior;                      // edges with exactly two faces
   std::vector<std::vector<std::uint32_t>> neighbours;  // per vertex
+  std::vector<char> onBoundary;                        // per vertex: on an edge with one face
 };
 
 Connectivity connectivityOf(const TriangleMesh& mesh) {
@@ -36,7 +43,9 @@ Connectivity connectivityOf(const TriangleMesh& mesh) {
     }
   Connectivity c;
   c.neighbours.resize(mesh.positions.size());
+  c.onBoundary.assign(mesh.positions.size(), 0);
   for (const auto& [edge, around] : faces) {
+    if (around.size() == 1) c.onBoundary[edge.first] = c.onBoundary[edge.second] = 1;
     c.neighbours[edge.first].push_back(edge.second);
     c.neighbours[edge.second].push_back(edge.first);
     if (around.size() == 2) c.interior.push_back({edge.first, edge.second, {around[0], around[1]}});
@@ -77,6 +86,11 @@ struct Unfolder {
   const TriangleMesh& target;
   const Connectivity connectivity;
   const double diagonal, onPlane, cosThreshold, minDihedralDegrees;
+  // What counts as crease left: any bend beyond the sheet's own facets'. A reflection through a
+  // plane near a fold's (within the detection's tolerance) leaves its crease bent by a few
+  // degrees, below the detection threshold: counted so, the right plane wins, and an unfolding
+  // that ends with such creases says so.
+  const double cosBent;
   const SurfaceDistanceQuery& sheetSurface;
   std::size_t maxFolds;
   const Deadline& deadline;
@@ -101,7 +115,7 @@ struct Unfolder {
     TriangleMesh current{positions, target.triangles};
     CreasePlaneOptions options;
     options.minDihedralDegrees = minDihedralDegrees;
-    options.maxPlanes = 8;
+    options.maxPlanes = 16;
     const std::vector<CreasePlane> planes = findCreasePlanes(current, options);
     std::vector<Candidate> candidates;
     std::vector<int> component(positions.size());
@@ -138,7 +152,7 @@ struct Unfolder {
             }
             std::vector<glm::dvec3> moved = positions;
             for (std::uint32_t v : candidate.part) moved[v] = plane.reflect(moved[v]);
-            candidate.sharpAfter = sharpLength(target, connectivity, moved, cosThreshold);
+            candidate.sharpAfter = sharpLength(target, connectivity, moved, cosBent);
             candidates.push_back(std::move(candidate));
           }
       }
@@ -151,6 +165,8 @@ struct Unfolder {
   struct Step {
     ReflectionPlane plane;
     glm::dvec3 seedPiece{0.0}, seedRest{0.0};
+    std::uint32_t seedPieceVertex = 0, seedRestVertex = 0;
+    bool restReplayable = false;  // the rest lies on one side of the plane
   };
 
   // x -> linear x + offset.
@@ -175,7 +191,10 @@ struct Unfolder {
     std::vector<glm::dvec3> probe;
     for (std::size_t v = 0; v < unfolded.size(); v += 1 + unfolded.size() / 200)
       if (!connectivity.neighbours[v].empty()) probe.push_back(unfolded[v]);
-    // Bit u of `rest`: step u reflected the rest rather than the piece.
+    // A fold replays as a drag only where the part it moves is a whole side of its plane: a
+    // rest that reaches across the plane elsewhere is not what a fold moved. Of the choices
+    // that end on the sheet (a symmetric sheet has several), the fewest rests.
+    // `rest[u]`: step u reflected the rest rather than the piece.
     auto offOf = [&](const std::vector<char>& rest) {
       Motion motion;
       for (std::size_t u = 0; u < n; ++u)
@@ -184,16 +203,29 @@ struct Unfolder {
       for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
       return off;
     };
+    auto rests = [](const std::vector<char>& rest) {
+      return std::count(rest.begin(), rest.end(), char(1));
+    };
+    const double tie = 1e-7 * diagonal * static_cast<double>(probe.size());
     std::vector<char> bestRest(n, 0), rest(n, 0);
     double bestOff = offOf(bestRest);
+    auto consider = [&](const std::vector<char>& choice) {
+      const double off = offOf(choice);
+      if (off < bestOff - tie || (off <= bestOff + tie && rests(choice) < rests(bestRest))) {
+        bestOff = std::min(off, bestOff);
+        bestRest = choice;
+        return true;
+      }
+      return false;
+    };
     if (n <= kExhaustiveSides) {
+      std::uint32_t allowed = 0;
+      for (std::size_t u = 0; u < n; ++u)
+        if (steps[u].restReplayable) allowed |= 1u << u;
       for (std::uint32_t bits = 1; bits < (1u << n) && !deadline.passed(); ++bits) {
+        if (bits & ~allowed) continue;
         for (std::size_t u = 0; u < n; ++u) rest[u] = bits >> u & 1u;
-        const double off = offOf(rest);
-        if (off < bestOff - 1e-12) {
-          bestOff = off;
-          bestRest = rest;
-        }
+        consider(rest);
       }
     } else {
       // Too many for every choice: one step flipped at a time while that brings the result
@@ -201,14 +233,10 @@ struct Unfolder {
       for (std::size_t round = 0, better = 1; round < n && better && !deadline.passed(); ++round) {
         better = 0;
         for (std::size_t u = 0; u < n && !deadline.passed(); ++u) {
+          if (!steps[u].restReplayable) continue;
           rest = bestRest;
           rest[u] = !rest[u];
-          const double off = offOf(rest);
-          if (off < bestOff - 1e-12) {
-            bestOff = off;
-            bestRest = rest;
-            better = 1;
-          }
+          if (consider(rest)) better = 1;
         }
       }
     }
@@ -220,6 +248,7 @@ struct Unfolder {
       fold.plane = {motion(steps[u].plane.point), motion.linear * steps[u].plane.normal};
       if (rest) motion = motion.then(steps[u].plane);
       fold.seedBefore = motion(rest ? steps[u].seedRest : steps[u].seedPiece);
+      fold.seedVertex = rest ? steps[u].seedRestVertex : steps[u].seedPieceVertex;
       result.folds.insert(result.folds.begin(), fold);  // unfolding runs backwards
     }
     for (const glm::dvec3& p : unfolded) result.unfolded.push_back(motion(p));
@@ -236,28 +265,31 @@ struct Unfolder {
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
-    if (candidates.empty() || !(least < sharp - 0.02 * diagonal)) {
+    if (candidates.empty() || !(least < sharp - kLeastCrease * diagonal)) {
       ++leaves;
       return bestSides(steps, positions, sharp);
     }
-    // The pieces that take away the most crease: the best, and the best through another plane
-    // (a crease a later fold moved may be unfolded first, and lead nowhere), while fewer than
-    // kMaxUnfoldings unfoldings have ended.
+    // The pieces that take away a crease, best first (the most crease gone, then the smallest
+    // piece), one per plane and at most kChoicesPerStep: the fold made last need not have the
+    // longest crease (a corner folded last leaves a short one), and a crease a later fold moved
+    // may be unfolded first and lead nowhere. Tried depth first while fewer than kMaxUnfoldings
+    // unfoldings have ended, until one ends on the sheet.
+    std::vector<const Candidate*> ranked;
+    for (const Candidate& c : candidates)
+      if (c.sharpAfter < sharp - kLeastCrease * diagonal) ranked.push_back(&c);
+    std::stable_sort(ranked.begin(), ranked.end(), [&](const Candidate* a, const Candidate* b) {
+      if (a->sharpAfter < b->sharpAfter - 1e-6 * diagonal) return true;
+      if (b->sharpAfter < a->sharpAfter - 1e-6 * diagonal) return false;
+      return a->part.size() < b->part.size();
+    });
     std::vector<const Candidate*> choices;
-    for (int round = 0; round < 2; ++round) {
-      const Candidate* chosen = nullptr;
-      for (const Candidate& c : candidates) {
-        if (!choices.empty() &&
-            std::abs(std::abs(glm::dot(c.plane.normal, choices[0]->plane.normal)) - 1.0) < 1e-6 &&
-            std::abs(choices[0]->plane.signedDistance(c.plane.point)) < onPlane)
-          continue;
-        if (!(c.sharpAfter < sharp - 0.02 * diagonal)) continue;
-        if (!chosen || c.sharpAfter < chosen->sharpAfter - 1e-6 * diagonal ||
-            (c.sharpAfter <= chosen->sharpAfter + 1e-6 * diagonal &&
-             c.part.size() < chosen->part.size()))
-          chosen = &c;
-      }
-      if (chosen) choices.push_back(chosen);
+    for (const Candidate* c : ranked) {
+      if (choices.size() >= kChoicesPerStep) break;
+      const bool samePlane = std::any_of(choices.begin(), choices.end(), [&](const Candidate* d) {
+        return std::abs(std::abs(glm::dot(c->plane.normal, d->plane.normal)) - 1.0) < 1e-6 &&
+               std::abs(d->plane.signedDistance(c->plane.point)) < onPlane;
+      });
+      if (!samePlane) choices.push_back(c);
     }
     TargetUnfolding best;
     double bestOff = kInfinitySharp;
@@ -269,34 +301,49 @@ struct Unfolder {
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
       Step step{chosen->plane, {}, {}};
+      // The seeds: the deepest vertices off the boundary (any, where a side has none).
       double deepestPiece = -1.0, deepestRest = -1.0;
       for (std::size_t v = 0; v < positions.size(); ++v) {
         if (connectivity.neighbours[v].empty()) continue;
         if (inPiece[v]) next[v] = chosen->plane.reflect(next[v]);
-        const double depth = std::abs(chosen->plane.signedDistance(next[v]));
+        const double depth = std::abs(chosen->plane.signedDistance(next[v])) +
+                             (connectivity.onBoundary[v] ? 0.0 : 2.0 * diagonal);
         double& deepest = inPiece[v] ? deepestPiece : deepestRest;
         if (depth > deepest) {
           deepest = depth;
           (inPiece[v] ? step.seedPiece : step.seedRest) = next[v];
+          (inPiece[v] ? step.seedPieceVertex : step.seedRestVertex) = static_cast<std::uint32_t>(v);
         }
       }
+      double lowest = 0.0, highest = 0.0;
+      for (std::size_t v = 0; v < positions.size(); ++v)
+        if (!inPiece[v] && !connectivity.neighbours[v].empty()) {
+          const double d = chosen->plane.signedDistance(next[v]);
+          lowest = std::min(lowest, d);
+          highest = std::max(highest, d);
+        }
+      step.restReplayable = lowest > -1e-4 * diagonal || highest < 1e-4 * diagonal;
       std::vector<Step> more = steps;
       more.push_back(step);
       TargetUnfolding result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
       const double off = offSheet(result.unfolded);
       // The unfolding that takes away more creases, then the one that ends on the sheet.
-      if (first || result.sharpLengthLeft < best.sharpLengthLeft - 0.02 * diagonal ||
-          (result.sharpLengthLeft <= best.sharpLengthLeft + 0.02 * diagonal && off < bestOff)) {
+      if (first || result.sharpLengthLeft < best.sharpLengthLeft - kLeastCrease * diagonal ||
+          (result.sharpLengthLeft <= best.sharpLengthLeft + kLeastCrease * diagonal &&
+           off < bestOff)) {
         best = std::move(result);
         bestOff = off;
       }
       first = false;
+      // Smooth and on the sheet: the target's folds, read whole.
+      if (best.sharpLengthLeft <= 1e-4 * diagonal && bestOff <= 1e-5 * diagonal) break;
     }
     return best;
   }
 
   static constexpr double kInfinitySharp = 1e300;
-  static constexpr std::size_t kMaxUnfoldings = 16;
+  static constexpr std::size_t kMaxUnfoldings = 160;
+  static constexpr std::size_t kChoicesPerStep = 4;
 };
 
 }  // namespace
@@ -312,11 +359,12 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                     1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
                     std::cos(minDihedralDegrees * kPi / 180.0),
                     minDihedralDegrees,
+                    std::cos((largestDihedralDegrees(sheet) + kBendMarginDegrees) * kPi / 180.0),
                     sheetSurface,
                     maxFolds,
                     deadline};
   const double sharp =
-      sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosThreshold);
+      sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
   TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);
   if (unfolder.outOfTime()) {
     unfolding = {};

@@ -36,8 +36,12 @@ namespace curvefold {
 
 struct UnfoldedFold {
   ReflectionPlane plane;
-  // A vertex of the target deep in the part the fold reflected, where it lay before the fold.
+  // A vertex of the target deep in the part the fold reflected, where it lay before the fold,
+  // and its index: where it lies on the sheet (TargetUnfolding::unfolded) names it in the
+  // development, which no fold moves. Never on the target's boundary (a slit's two sides lie at
+  // one place: a point there names either).
   glm::dvec3 seedBefore{0.0};
+  std::uint32_t seedVertex = 0;
 };
 
 struct TargetUnfolding {

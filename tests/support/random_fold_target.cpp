@@ -1,4 +1,4 @@
-#include "engine/fit/random_fold_target.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 #include <cmath>
 #include <random>

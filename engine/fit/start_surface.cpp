@@ -1,0 +1,141 @@
+#include "engine/fit/start_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "engine/fit/crease_planes.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/symmetry.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kChoiceSamples = 4000;
+
+// Where the target lies about the y axis: mean radius overall and over the lowest and highest
+// tenth of its extent along y.
+struct Revolution {
+  double radius = 0.0, bottomRadius = 0.0, topRadius = 0.0, height = 0.0;
+};
+
+Revolution revolutionOf(const std::vector<SurfaceSample>& samples) {
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : samples) {
+    lo = std::min(lo, s.position.y);
+    hi = std::max(hi, s.position.y);
+  }
+  Revolution r;
+  r.height = hi - lo;
+  double sum = 0.0, bottom = 0.0, top = 0.0;
+  std::size_t nBottom = 0, nTop = 0;
+  for (const SurfaceSample& s : samples) {
+    const double radius = std::hypot(s.position.x, s.position.z);
+    sum += radius;
+    if (s.position.y <= lo + 0.1 * r.height) bottom += radius, ++nBottom;
+    if (s.position.y >= hi - 0.1 * r.height) top += radius, ++nTop;
+  }
+  r.radius = sum / static_cast<double>(std::max<std::size_t>(1, samples.size()));
+  r.bottomRadius = nBottom ? bottom / static_cast<double>(nBottom) : r.radius;
+  r.topRadius = nTop ? top / static_cast<double>(nTop) : r.radius;
+  return r;
+}
+
+std::vector<StartChoice> candidatesFor(const TriangleMesh& target, const std::string& kind) {
+  const double area = surfaceArea(target);
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : target.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const Revolution rev = revolutionOf(sampleSurface(target, kChoiceSamples, 3));
+  std::vector<StartChoice> out;
+  auto want = [&](const char* name) { return kind.empty() || kind == name; };
+  if (want("square")) out.push_back({"square", {{"size", std::sqrt(area)}}});
+  if (want("disk")) out.push_back({"disk", {{"radius", std::sqrt(area / kPi)}}});
+  if (want("rectangle")) {
+    const double aspect = std::clamp((hi.x - lo.x) / std::max(1e-12, hi.y - lo.y), 0.2, 5.0);
+    out.push_back(
+        {"rectangle", {{"width", std::sqrt(area * aspect)}, {"height", std::sqrt(area / aspect)}}});
+  }
+  if (want("cylinder"))
+    out.push_back({"cylinder", {{"radius", rev.radius}, {"height", rev.height}}});
+  if (want("half_cylinder"))
+    out.push_back({"half_cylinder", {{"radius", rev.radius}, {"height", rev.height}}});
+  if (want("cone"))
+    out.push_back({"cone",
+                   {{"base_radius", std::max(rev.bottomRadius, rev.topRadius)},
+                    {"top_radius", std::min(rev.bottomRadius, rev.topRadius)},
+                    {"height", rev.height}}});
+  if (out.empty()) out.push_back({kind, {}});  // a kind the rule does not size: its defaults
+  return out;
+}
+
+// Whether the target carries creases a sheet of this kind would not have: a fold's (a plane
+// holds 3% of the diagonal of sharp edges).
+bool creasedFor(const TriangleMesh& target, const Sheet& sheet) {
+  CreasePlaneOptions options;
+  options.minDihedralDegrees = sharpEdgeThreshold(meshOf(sheet));
+  options.minSupport = 0.03 * boundingDiagonal(target);
+  options.maxPlanes = 1;
+  options.hypotheses = 200;
+  return !findCreasePlanes(target, options).empty();
+}
+
+}  // namespace
+
+StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
+  StartChoice best;
+  bool any = false;
+  std::string lastError;
+  for (StartChoice& candidate : candidatesFor(target, kind)) {
+    // A folded design was folded from the sheet as the catalogue makes it.
+    try {
+      if (creasedFor(target, makeSurface(candidate.surface))) candidate.parameters.clear();
+    } catch (const SurfaceError&) {
+    }
+    try {
+      const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
+      candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
+    } catch (const SurfaceError& e) {
+      lastError = e.what();
+      continue;
+    }
+    if (!any || candidate.chamfer < best.chamfer) best = candidate;
+    any = true;
+  }
+  if (!any) throw SurfaceError(lastError);
+  return best;
+}
+
+std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial) {
+  const double diagonal = boundingDiagonal(target);
+  const std::vector<SurfaceSample> samples = sampleSurface(target, 2000, 5);
+  const SurfaceDistanceQuery query(target, "target");
+  std::string best;
+  int bestOrder = 1;
+  for (const std::string& choice : symmetryChoices(initial)) {
+    if (choice.rfind("rotational:", 0) != 0) continue;
+    const Symmetry symmetry = parseSymmetry(choice, initial);
+    if (symmetry.order <= bestOrder) continue;
+    const Isometry turn = symmetry.images().front();
+    double sum = 0.0, most = 0.0;
+    for (const SurfaceSample& s : samples) {
+      const double d = query.distance(turn.apply(s.position));
+      sum += d;
+      most = std::max(most, d);
+      if (most > 0.03 * diagonal) break;
+    }
+    if (most <= 0.03 * diagonal && sum <= 0.01 * diagonal * static_cast<double>(samples.size())) {
+      best = symmetry.name();
+      bestOrder = symmetry.order;
+    }
+  }
+  return best;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,46 @@
+// The sheet to fold toward a shape no reflection sequence reaches (issue 38, 2): which catalogue
+// surface, at which size, and with which of its symmetries, as a paper artist would start a vase
+// from a tube and a bowl from a disk with pleats in a ring.
+//
+// The rule (docs/cli.md, `fit` without `--from` parameters): each candidate kind (the one named,
+// or square, rectangle, disk, cylinder, half_cylinder and cone) is sized from the target in the
+// catalogue's own frame (flat sheets lie in z = 0, the others turn about the y axis through the
+// origin): a flat sheet gets the target's area (the paper it needs to cover it; a rectangle the
+// proportions of the target's x and y extents), a cylinder the mean distance of the target from
+// the y axis and its extent along y, a cone its mean radius over the lowest and the highest tenth
+// of that extent. Each is made at its default resolution and the one with the least Chamfer
+// distance to the target (surface_distance.hpp, 4000 samples) is the start. A target with
+// creases (a plane of its sharp edges, above the kind's own bends, holds 3% of its diagonal) was
+// folded from a sheet as the catalogue makes it: that kind keeps its defaults, which the
+// unfolding reads back onto.
+//
+// The symmetry: of the rotations the start has (symmetryChoices), the highest order whose turn
+// maps the target onto itself, within 1% of its diagonal on average and 3% at most (measured at
+// 2000 area-uniform points); none when no rotation does.
+//
+// Known limits: the target is not moved: a shape far from the catalogue's frame (a vase lying
+// along x) gets a poor start; mirrors are not detected, only rotations.
+#pragma once
+
+#include <string>
+
+#include "engine/geometry/sheet.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold {
+
+struct StartChoice {
+  std::string surface;
+  SurfaceParameters parameters;  // those the rule set (the rest at their defaults)
+  double chamfer = 0.0;          // the start's distance to the target, metres
+};
+
+// `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError
+// when the named kind cannot be sized to the target.
+StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "");
+
+// The target's rotational symmetry among the sheet's ("rotational:12:y"), or "" for none.
+std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial);
+
+}  // namespace curvefold

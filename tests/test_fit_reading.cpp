@@ -1,0 +1,136 @@
+// Reading every design reflections make (issue 38, 1), and the start a smooth shape gets (2):
+// targets made by recipes unlike the fit's own tests' (tests/support/fold_target_generators.hpp),
+// each a case the unfolding once misread, found again exactly; the start surface sized to a
+// shape, and the shape's rotational symmetry.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "app/design_check.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/start_surface.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "tests/support/fold_target_generators.hpp"
+
+namespace curvefold {
+namespace {
+
+struct ReadCase {
+  const char* recipe;
+  const char* surface;
+  std::size_t folds;
+  std::uint64_t seed;
+  const char* why;  // what the unfolding once got wrong on it
+};
+
+const testing::FoldTargetRecipe& recipeNamed(const std::string& name) {
+  for (const testing::FoldTargetRecipe& recipe : testing::foldTargetRecipes())
+    if (recipe.name == name) return recipe;
+  throw std::invalid_argument(name);
+}
+
+void expectFoundExactly(const ReadCase& c) {
+  SCOPED_TRACE(std::string(c.recipe) + " " + c.surface + " " + std::to_string(c.folds) +
+               " folds, seed " + std::to_string(c.seed) + ": " + c.why);
+  const std::optional<testing::FoldTarget> target =
+      testing::makeFoldTarget(recipeNamed(c.recipe), c.surface, c.folds, c.seed);
+  ASSERT_TRUE(target);
+  const FoldFitter fitter(target->exported);
+  FoldSession session(target->initial);
+  if (!target->design.symmetry.empty())
+    session.setSymmetry(parseSymmetry(target->design.symmetry, target->initial));
+  FitOptions options;
+  options.maxFolds = c.folds;
+  options.seconds = 120.0;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  const SurfaceDistance d = surfaceDistance(meshOf(session.fixed()), target->exported);
+  EXPECT_LE(d.relativeHausdorff(), 1e-3);
+  // The fitted design is one `check` passes.
+  const Design fitted(GeneratedSurface{c.surface, {}}, result.folds, target->design.symmetry);
+  const session::DesignCheck check =
+      session::checkDesign(fitted, "fitted", target->initial, session.fixed(), false);
+  EXPECT_TRUE(check.passed()) << check.firstFailure();
+}
+
+TEST(FitReading, ASlitDoesNotHideWhichSideASeedIsOn) {
+  expectFoundExactly(
+      {"anywhere-long", "cylinder", 4, 7932,
+       "its first fold's seed lay on the slit, and a grab in 3D took the other side"});
+}
+
+TEST(FitReading, TheLastFoldMayLeaveTheShortestCrease) {
+  expectFoundExactly({"anywhere-long", "square", 4, 120580,
+                      "its last fold left an 8 mm crease: under the least support, and never "
+                      "the first unfolded"});
+}
+
+TEST(FitReading, ASymmetricSheetDoesNotChooseTheSidesAFoldCannotMove) {
+  expectFoundExactly({"anywhere-long", "half_cylinder", 3, 15851,
+                      "a mirror of the sheet lay on it too, through a side no drag moves"});
+}
+
+TEST(FitReading, AFoldedTipLeavesACreaseOfAFewMillimetres) {
+  expectFoundExactly(
+      {"outer-short", "star", 3, 15849, "a star's tip folded last leaves a 1.4 mm crease"});
+}
+
+TEST(FitReading, ACreaseAlongACylindersFacetsIsAPlaneToo) {
+  expectFoundExactly({"outer-short", "cylinder", 5, 23768,
+                      "a crease along facets bent apart failed the mirror check, and a loose "
+                      "plane took its edges"});
+}
+
+// A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.
+TriangleMesh tube(double radius, double height, int around, int along) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * 3.14159265358979 * i / around;
+      mesh.positions.emplace_back(radius * std::sin(a), height * (double(j) / along - 0.5),
+                                  radius * std::cos(a));
+    }
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto at = [&](int ii, int jj) {
+        return static_cast<std::uint32_t>(jj * around + (ii % around));
+      };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+TEST(StartSurface, ATubeStartsFromACylinderOfItsSizeAndItsRingOfSymmetry) {
+  const TriangleMesh target = tube(0.05, 0.18, 96, 30);
+  const StartChoice start = chooseStart(target);
+  EXPECT_EQ(start.surface, "cylinder");
+  EXPECT_NEAR(start.parameters.at("radius"), 0.05, 0.002);
+  EXPECT_NEAR(start.parameters.at("height"), 0.18, 0.002);
+  EXPECT_LT(start.chamfer, 0.005 * boundingDiagonal(target));
+  const Sheet sheet = makeSurface(start.surface, start.parameters);
+  EXPECT_EQ(detectRotationalSymmetry(target, sheet), "rotational:12:y");
+}
+
+TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
+  const TriangleMesh target = tube(0.05, 0.18, 96, 30);
+  const StartChoice start = chooseStart(target, "square");
+  EXPECT_EQ(start.surface, "square");
+  EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  // A tube with one fold turns onto itself no more.
+  const std::optional<testing::FoldTarget> folded =
+      testing::makeFoldTarget(testing::foldTargetRecipes()[0], "cylinder", 1, 7932);
+  ASSERT_TRUE(folded);
+  EXPECT_EQ(detectRotationalSymmetry(folded->exported, folded->initial), "");
+  // and, creased, was folded from the cylinder the catalogue makes: kept at its defaults.
+  const StartChoice again = chooseStart(folded->exported, "cylinder");
+  EXPECT_EQ(again.surface, "cylinder");
+  EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
+}
+
+}  // namespace
+}  // namespace curvefold
