@@ -22,7 +22,7 @@
 
 #include "app/document.hpp"
 #include "app/studio_target.hpp"
-#include "engine/fit/random_fold_target.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {
 namespace {
