@@ -19,6 +19,7 @@
 #include "app/commands.hpp"
 #include "app/design_check.hpp"
 #include "app/document.hpp"
+#include "app/guarded_design.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
@@ -53,88 +54,35 @@ glm::dvec3 point3(const std::vector<double>& p, const char* what) {
   return {p[0], p[1], p[2]};
 }
 
-// What one fold did.
-struct FoldResult {
-  bool folded = false;             // false: the drop point lay within the shortest drag
-  std::vector<double> grabbed;     // the surface point grabbed (x, y, z)
-  std::vector<double> planePoint;  // the reflection plane
-  std::vector<double> planeNormal;
-  std::size_t triangles = 0;  // after the fold
-  std::size_t images = 0;     // symmetric images made with it
-  std::string notes;          // images skipped or overlapping, as the command says
-};
+using session::FoldResult;
+// The module's Design: safe to call from several Python threads at once (issue 40, 2).
+using PyDesign = session::GuardedDesign;
 
-// A design and the fold session over it.
-class PyDesign {
+// Every Design method that reads or writes the design holds one of these while it does: the GIL
+// is released first, then the design's lock is taken (released, then the GIL taken back, at the
+// end of its scope). So a thread waiting for a design lets Python run and never holds the GIL
+// while it waits; Python objects are made after the guard's scope. Construct it with the GIL held.
+class DesignGuard {
  public:
-  PyDesign(Design design, std::string name) : name_(std::move(name)) {
-    surface_ = design.surface;
-    symmetry_ = design.symmetry;
-    session_ = std::make_unique<FoldSession>(initialSheet(design, name_));
-    session_->applyRecords(design.folds);
-    if (!symmetry_.empty()) session_->setSymmetry(parseSymmetry(symmetry_, session_->initial()));
-  }
-
-  Design design() const {
-    const auto& history = session_->folds();
-    return Design{surface_,
-                  {history.begin(), history.begin() + std::ptrdiff_t(session_->foldCount())},
-                  symmetry_};
-  }
-  const std::string& name() const { return name_; }
-  const std::string& symmetry() const { return symmetry_; }
-  FoldSession& session() { return *session_; }
-  const FoldSession& session() const { return *session_; }
-
-  // The folded sheet as it is now, shared with the arrays handed out (they stay valid after the
-  // design changes: a change makes a new snapshot, one copy per change, none per array).
-  std::shared_ptr<const Sheet> snapshot() const {
-    if (!snapshot_ || snapshotRevision_ != session_->designRevision()) {
-      snapshot_ = std::make_shared<const Sheet>(session_->fixed());
-      snapshotRevision_ = session_->designRevision();
-    }
-    return snapshot_;
-  }
-
-  FoldResult fold(const glm::dvec3& grab, const glm::dvec3& to) {
-    const std::size_t before = session_->foldCount();
-    const glm::dvec3 grabbed = session_->beginDragNear(grab);
-    session_->updateDrag(to);
-    FoldResult result;
-    result.grabbed = {grabbed.x, grabbed.y, grabbed.z};
-    const ReflectionPlane plane = session_->hasPlane() ? session_->plane() : ReflectionPlane{};
-    if (!session_->commit()) {
-      if (!session_->refusal().empty()) throw std::invalid_argument(session_->refusal());
-      result.triangles = session_->fixed().triangleCount();
-      return result;
-    }
-    // The same check as the command line's fold.
-    ValidationOptions tolerance;
-    tolerance.relativeLengthTolerance =
-        session::isometryTolerance(session_->initial()) / sheetSize(session_->fixed());
-    try {
-      validate(session_->fixed(), tolerance);
-    } catch (...) {
-      session_->undo();
-      throw;
-    }
-    result.folded = true;
-    result.planePoint = {plane.point.x, plane.point.y, plane.point.z};
-    result.planeNormal = {plane.normal.x, plane.normal.y, plane.normal.z};
-    result.triangles = session_->fixed().triangleCount();
-    result.images = session_->foldCount() - before - 1;
-    result.notes = imageNotes(session_->lastSkippedImages(), session_->lastOverlappingImages());
-    return result;
-  }
+  explicit DesignGuard(const PyDesign& design) : lock(design) {}
 
  private:
-  std::string name_;
-  InitialSurface surface_;
-  std::string symmetry_;
-  std::unique_ptr<FoldSession> session_;
-  mutable std::shared_ptr<const Sheet> snapshot_;
-  mutable std::uint64_t snapshotRevision_ = 0;
+  py::gil_scoped_release gil_;  // first: released before waiting for the lock
+
+ public:
+  const PyDesign::Lock lock;
 };
+
+// The sheet as it is now (immutable: read it with the GIL held or not, no guard needed).
+std::shared_ptr<const Sheet> snapshotOf(const PyDesign& design) {
+  DesignGuard guard(design);
+  return design.snapshot(guard.lock);
+}
+
+Design designOf(const PyDesign& design) {
+  DesignGuard guard(design);
+  return design.design(guard.lock);
+}
 
 // A read-only array over `data` (rows of `columns` values of T), kept alive by `owner`.
 template <typename T, typename Owner>
@@ -147,16 +95,29 @@ py::array_t<T> view(const T* data, std::size_t rows, std::size_t columns,
   return array;
 }
 
-// A Design property: one of the current sheet's arrays (rows of Element, each Columns values of
-// T), read-only and without a copy, kept alive by the snapshot that holds it.
+// One of a sheet's arrays (rows of Element, each Columns values of T), read-only and without a
+// copy, kept alive by the snapshot that holds it.
+template <typename T, std::size_t Columns, typename Element>
+py::array_t<T> sheetView(const std::shared_ptr<const Sheet>& sheet,
+                         const std::vector<Element> Sheet::*rows) {
+  static_assert(sizeof(Element) == Columns * sizeof(T));
+  const std::vector<Element>& array = (*sheet).*rows;
+  return view(reinterpret_cast<const T*>(array.data()), array.size(), Columns, sheet);
+}
+
+// A Design property: one of the current sheet's arrays.
 template <typename T, std::size_t Columns, typename Element>
 auto sheetArray(const std::vector<Element> Sheet::*rows) {
-  static_assert(sizeof(Element) == Columns * sizeof(T));
-  return [rows](const PyDesign& d) {
-    const std::shared_ptr<const Sheet> sheet = d.snapshot();
-    const std::vector<Element>& array = (*sheet).*rows;
-    return view(reinterpret_cast<const T*>(array.data()), array.size(), Columns, sheet);
-  };
+  return [rows](const PyDesign& d) { return sheetView<T, Columns>(snapshotOf(d), rows); };
+}
+
+// (vertices, triangles, development) of one state of the design: separate property reads may
+// see a fold another thread made between them.
+py::tuple meshArrays(const PyDesign& design) {
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
+  return py::make_tuple(sheetView<double, 3>(sheet, &Sheet::positions),
+                        sheetView<std::uint32_t, 3>(sheet, &Sheet::triangles),
+                        sheetView<double, 2>(sheet, &Sheet::development));
 }
 
 py::dict surfacesInfo() {
@@ -248,7 +209,7 @@ PyDesign designFromObj(const py::object& source,
 }
 
 py::dict creasesOf(const PyDesign& design) {
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
   const std::vector<CreaseEdge> creases = creaseEdges(*sheet, buildEdgeTopology(*sheet));
   py::array_t<std::uint32_t> edges({py::ssize_t(creases.size()), py::ssize_t(2)});
   py::array_t<double> angles(py::ssize_t(creases.size()));
@@ -270,7 +231,7 @@ py::dict creasesOf(const PyDesign& design) {
 
 // The design as a FOLD dict (json.loads of the FOLD file's text).
 py::object foldDict(const PyDesign& design) {
-  const std::string text = foldText(*design.snapshot());
+  const std::string text = foldText(*snapshotOf(design));
   return py::module_::import("json").attr("loads")(text);
 }
 
@@ -294,8 +255,13 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
           "export: perforate expects (cut, gap) in millimetres, both positive");
     perforation = Perforation{perforate->first, perforate->second};
   }
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
-  const Design whole = design.design();
+  std::shared_ptr<const Sheet> sheet;
+  Design whole;
+  {
+    DesignGuard guard(design);
+    sheet = design.snapshot(guard.lock);
+    whole = design.design(guard.lock);
+  }
   PdfOptions print;
   print.paper = *paperSize;
   print.angles = angles;
@@ -325,7 +291,7 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
                                 "' (known: " + std::string(kViewPresetNames) + ")");
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::invalid_argument("render: width and height must lie in 1 to 16384");
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
   auto image = std::make_shared<RgbaImage>();
   {
     py::gil_scoped_release release;
@@ -344,7 +310,7 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
 
 py::list foldsOf(const PyDesign& design) {
   py::list folds;
-  const Design whole = design.design();
+  const Design whole = designOf(design);
   for (const FoldRecord& fold : whole.folds) {
     py::dict item;
     item["seed"] = py::make_tuple(fold.seed.x, fold.seed.y);
@@ -367,6 +333,13 @@ PYBIND11_MODULE(_curvefold, m) {
   using namespace curvefold;
   using namespace curvefold::python;
   m.doc() = "curvefold: curved folding by reflection (the C++ engine)";
+
+  // Now, at import, with the GIL held: pybind11 2.10's npy_api::get() (the first numpy array)
+  // imports numpy inside a function-local static's initialisation guard, so two threads making
+  // their first array at once deadlock, one holding the GIL and waiting on the guard, the other
+  // holding the guard and waiting for the GIL (fixed upstream by gil_safe_call_once, pybind11
+  // PR 4877, which Debian 12's pybind11 lacks).
+  py::detail::npy_api::get();
 
   // The engine's one-line messages, as Python's own exceptions.
   py::register_exception_translator([](std::exception_ptr p) {
@@ -463,7 +436,7 @@ PYBIND11_MODULE(_curvefold, m) {
       .def(
           "save",
           [](const PyDesign& d, const std::filesystem::path& path) {
-            const Design whole = d.design();
+            const Design whole = designOf(d);
             py::gil_scoped_release release;
             saveDesign(whole, path);
           },
@@ -472,37 +445,40 @@ PYBIND11_MODULE(_curvefold, m) {
           "fold",
           [](PyDesign& d, const std::vector<double>& grab, const std::vector<double>& to) {
             const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
-            py::gil_scoped_release release;
-            return d.fold(from, drop);
+            DesignGuard guard(d);
+            return d.fold(guard.lock, from, drop);
           },
           py::kw_only(), py::arg("grab"), py::arg("to"),
           "Grabs the surface point nearest `grab` and drops it at `to`: the part holding it is "
           "reflected through their bisector plane (with its symmetric images)")
       .def(
-          "undo", [](PyDesign& d) { return d.session().undo(); },
+          "undo",
+          [](PyDesign& d) {
+            DesignGuard guard(d);
+            return d.session(guard.lock).undo();
+          },
           "Takes the last fold (and its images) back; False when there is none")
       .def(
-          "redo", [](PyDesign& d) { return d.session().redo(); },
+          "redo",
+          [](PyDesign& d) {
+            DesignGuard guard(d);
+            return d.session(guard.lock).redo();
+          },
           "Makes the last undone fold again; False when there is none")
       .def_property_readonly("folds", &foldsOf,
                              "The folds, each a dict: seed, plane_point, plane_normal, grabbed, "
                              "target, group")
       .def_property_readonly("symmetry", &PyDesign::symmetry, "'' or e.g. 'rotational:6:y'")
       .def_property_readonly(
-          "surface", [](const PyDesign& d) { return session::surfaceName(d.design()); },
+          "surface", [](const PyDesign& d) { return session::surfaceName(designOf(d)); },
           "The surface's name, or 'embedded mesh'")
       .def(
           "check",
           [](const PyDesign& d, bool allowSelfIntersection) {
-            const std::shared_ptr<const Sheet> sheet = d.snapshot();
-            const Design whole = d.design();
-            DesignCheck check;
-            {
-              py::gil_scoped_release release;
-              check = session::checkDesign(whole, d.name(), d.session().initial(), *sheet,
-                                           allowSelfIntersection);
-            }
-            return check;
+            DesignGuard guard(d);
+            return session::checkDesign(d.design(guard.lock), d.name(),
+                                        d.session(guard.lock).initial(), *d.snapshot(guard.lock),
+                                        allowSelfIntersection);
           },
           py::arg("allow_self_intersection") = false,
           "The invariants `curvefold check` prints, as a CheckResult (true when all hold; "
@@ -514,6 +490,10 @@ PYBIND11_MODULE(_curvefold, m) {
       .def_property_readonly("triangles", sheetArray<std::uint32_t, 3>(&Sheet::triangles),
                              "Triangles, (m, 3) uint32 vertex indices, counter-clockwise in the "
                              "development, read-only (no copy)")
+      .def("mesh", &meshArrays,
+           "(vertices, triangles, development) of one state of the design, as the three "
+           "properties give them; while another thread folds, separate reads of the properties "
+           "may come from states either side of a fold")
       .def("creases", &creasesOf,
            "Crease edges: edges (k, 2) uint32, assignment ['M' or 'V'], angles (k,) degrees "
            "(FOLD's convention)")
@@ -527,8 +507,9 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
            "The folded form as an (height, width, 4) uint8 RGBA image (headless Vulkan)")
       .def("__repr__", [](const PyDesign& d) {
-        return "<curvefold.Design " + session::surfaceName(d.design()) + ", " +
-               std::to_string(d.session().foldCount()) + " folds" +
+        const Design whole = designOf(d);
+        return "<curvefold.Design " + session::surfaceName(whole) + ", " +
+               std::to_string(whole.folds.size()) + " folds" +
                (d.symmetry().empty() ? "" : ", " + d.symmetry()) + ">";
       });
 
@@ -540,13 +521,13 @@ PYBIND11_MODULE(_curvefold, m) {
          std::size_t repeats) {
         const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
         std::vector<double> seconds;
-        py::gil_scoped_release release;
+        DesignGuard guard(d);
         for (std::size_t i = 0; i < repeats; ++i) {
           const auto start = std::chrono::steady_clock::now();
-          const FoldResult result = d.fold(from, drop);
+          const FoldResult result = d.fold(guard.lock, from, drop);
           seconds.push_back(
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-          if (result.folded) d.session().undo();
+          if (result.folded) d.session(guard.lock).undo();
         }
         return seconds;
       },
