@@ -9,7 +9,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -33,6 +36,7 @@
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/render/headless_renderer.hpp"
@@ -48,15 +52,138 @@ namespace {
 
 using session::DesignCheck;
 
-// A point from any 3-sequence of numbers.
-glm::dvec3 point3(const std::vector<double>& p, const char* what) {
-  if (p.size() != 3) throw std::invalid_argument(std::string(what) + ": expected (x, y, z)");
-  return {p[0], p[1], p[2]};
+// Arguments (issue 40, 3): each converted here, by name, so a bad one is one line naming its
+// parameter: a value of the wrong type is ArgumentTypeError (curvefold.ArgumentError, both a
+// ValueError and a TypeError), a bad value of the right type std::invalid_argument (ValueError).
+// A file that cannot be read or written is FileError (OSError) naming the path.
+class ArgumentTypeError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// "str '0.2'", "NoneType None": what was given, shortened.
+std::string given(const py::handle& value) {
+  if (py::isinstance<py::array>(value)) {
+    std::string shape;
+    for (const py::handle& n : value.attr("shape"))
+      shape += (shape.empty() ? "" : ", ") + std::string(py::str(n));
+    return "an array of shape (" + shape + (value.attr("ndim").cast<int>() == 1 ? ",)" : ")");
+  }
+  std::string shown = py::str(py::repr(value));
+  std::replace(shown.begin(), shown.end(), '\n', ' ');
+  if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+  return std::string(Py_TYPE(value.ptr())->tp_name) + " " + shown;
+}
+
+double number(const py::handle& value, const std::string& name) {
+  const bool isNumber = PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr()) ||
+                        (py::hasattr(value, "__float__") && !py::isinstance<py::array>(value) &&
+                         !py::isinstance<py::str>(value));
+  if (!isNumber) throw ArgumentTypeError(name + ": expected a number, got " + given(value));
+  const double x = PyFloat_AsDouble(value.ptr());
+  if (x == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw std::invalid_argument(name + ": " + given(value) + " is out of range");
+  }
+  return x;
+}
+
+std::int64_t integer(const py::handle& value, const std::string& name) {
+  if (!PyIndex_Check(value.ptr()) || PyBool_Check(value.ptr()))
+    throw ArgumentTypeError(name + ": expected an integer, got " + given(value));
+  const Py_ssize_t n = PyNumber_AsSsize_t(value.ptr(), nullptr);
+  if (n == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw std::invalid_argument(name + ": " + given(value) + " is out of range");
+  }
+  return n;
+}
+
+bool flag(const py::handle& value, const std::string& name) {
+  if (!PyBool_Check(value.ptr()) && std::string(Py_TYPE(value.ptr())->tp_name) != "numpy.bool_")
+    throw ArgumentTypeError(name + ": expected True or False, got " + given(value));
+  return value.cast<bool>();
+}
+
+std::string text(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value))
+    throw ArgumentTypeError(name + ": expected a str, got " + given(value));
+  return value.cast<std::string>();
+}
+
+std::filesystem::path filePath(const py::handle& value, const std::string& name) {
+  const bool pathLike = py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+                        py::hasattr(value, "__fspath__");
+  if (!pathLike)
+    throw ArgumentTypeError(name + ": expected a path (str or os.PathLike), got " + given(value));
+  const std::filesystem::path path = value.cast<std::filesystem::path>();
+  if (path.empty()) throw std::invalid_argument(name + ": the path is empty");
+  return path;
+}
+
+std::optional<std::filesystem::path> optionalPath(const py::handle& value,
+                                                  const std::string& name) {
+  if (value.is_none()) return std::nullopt;
+  return filePath(value, name);
+}
+
+// A point: any three numbers, (3,) or a 3-sequence; not (3, 1), not NaN.
+glm::dvec3 point3(const py::handle& value, const std::string& name) {
+  const auto a = py::array_t<double, py::array::forcecast>::ensure(value);
+  if (!a || py::isinstance<py::str>(value))
+    throw ArgumentTypeError(name + ": expected (x, y, z), got " + given(value));
+  if (a.ndim() != 1 || a.shape(0) != 3)
+    throw std::invalid_argument(name + ": expected (x, y, z), three numbers, got " + given(value));
+  const glm::dvec3 p{a.at(0), a.at(1), a.at(2)};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw std::invalid_argument(name + ": expected finite coordinates, got " + given(value));
+  return p;
+}
+
+// An input file, checked before it is opened: a path that names no regular file (missing, a
+// folder, a FIFO that would block, a device) is FileError naming it; one over `maxBytes` is the
+// reader's own limit message, as ValueError (a limit is about the input's value, not the disk).
+void checkInputFile(const std::filesystem::path& path, std::uint64_t maxBytes = 0,
+                    std::string_view kind = {}) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status))
+    throw FileError("cannot read " + path.string() + ": " + std::strerror(ENOENT));
+  if (std::filesystem::is_directory(status))
+    throw FileError("cannot read " + path.string() + ": " + std::strerror(EISDIR));
+  if (!std::filesystem::is_regular_file(status))
+    throw FileError("cannot read " + path.string() +
+                    ": not a regular file (a FIFO, socket or device)");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (maxBytes > 0 && !error && size > maxBytes)
+    throw std::invalid_argument(tooLarge(path.string(), size, maxBytes, kind));
 }
 
 using session::FoldResult;
-// The module's Design: safe to call from several Python threads at once (issue 40, 2).
-using PyDesign = session::GuardedDesign;
+// The module's Design: safe to call from several Python threads at once (issue 40, 2), and the
+// file it was read from, which its outputs must not overwrite (set before the design is shared).
+class PyDesign : public session::GuardedDesign {
+ public:
+  PyDesign(Design design, std::string name, std::filesystem::path source = {},
+           bool sourceIsDesign = false)
+      : GuardedDesign(std::move(design), std::move(name)),
+        source_(std::move(source)),
+        sourceIsDesign_(sourceIsDesign) {}
+
+  // Refuses an output that names the file the design came from (save may write a design file
+  // again, as `curvefold fold D -o D` does; nothing writes over an OBJ or a recording).
+  void checkOutput(const std::filesystem::path& output, const std::string& parameter,
+                   bool designFile = false) const {
+    if (source_.empty() || (designFile && sourceIsDesign_)) return;
+    if (sameFile(output, source_))
+      throw std::invalid_argument(parameter + ": " + output.string() +
+                                  " is the file this design was read from; write to another file");
+  }
+
+ private:
+  std::filesystem::path source_;
+  bool sourceIsDesign_ = false;
+};
 
 // Every Design method that reads or writes the design holds one of these while it does: the GIL
 // is released first, then the design's lock is taken (released, then the GIL taken back, at the
@@ -142,11 +269,16 @@ py::dict surfacesInfo() {
   return surfaces;
 }
 
-PyDesign newDesign(const std::string& surface, const std::optional<std::string>& symmetry,
+PyDesign newDesign(const py::object& surfaceName, const py::object& symmetryName,
                    const py::kwargs& parameters) {
+  const std::string surface = text(surfaceName, "surface");
+  const std::optional<std::string> symmetry =
+      symmetryName.is_none() ? std::nullopt : std::optional(text(symmetryName, "symmetry"));
   GeneratedSurface generated{surface, {}};
-  for (const auto& [key, value] : parameters)
-    generated.parameters[py::cast<std::string>(key)] = py::cast<double>(value);
+  for (const auto& [key, value] : parameters) {
+    const std::string name = py::cast<std::string>(key);
+    generated.parameters[name] = number(value, name);
+  }
   makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
   Design design{generated, {}};
   if (symmetry) {
@@ -160,20 +292,21 @@ PyDesign newDesign(const std::string& surface, const std::optional<std::string>&
 }
 
 // An OBJ surface from a path, or from arrays through the same reader (written as OBJ text).
-PyDesign designFromObj(const py::object& source,
-                       const std::optional<py::array_t<double>>& triangles,
-                       const std::optional<py::array_t<double>>& development) {
-  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
-    const std::string path =
-        py::str(py::hasattr(source, "__fspath__") ? source.attr("__fspath__")() : source);
-    return PyDesign(Design{readObjSurface(path), {}}, path);
+PyDesign designFromObj(const py::object& source, const py::object& triangles,
+                       const py::object& development) {
+  if (py::isinstance<py::str>(source) || py::isinstance<py::bytes>(source) ||
+      py::hasattr(source, "__fspath__")) {
+    const std::filesystem::path path = filePath(source, "source");
+    py::gil_scoped_release release;  // a long read; nothing here blocks: regular files only
+    checkInputFile(path);
+    return PyDesign(Design{readObjSurface(path.string()), {}}, path.string(), path);
   }
-  if (!triangles) throw std::invalid_argument("from_obj: arrays need triangles=(m, 3)");
+  if (triangles.is_none()) throw std::invalid_argument("from_obj: arrays need triangles=(m, 3)");
   const auto vertices =
-      py::cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(source);
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(source);
   const auto faces =
-      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*triangles);
-  if (vertices.ndim() != 2 || vertices.shape(1) != 3)
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(triangles);
+  if (!vertices || vertices.ndim() != 2 || vertices.shape(1) != 3)
     throw std::invalid_argument("from_obj: vertices must be an (n, 3) array");
   if (!faces || faces.ndim() != 2 || faces.shape(1) != 3)
     throw std::invalid_argument("from_obj: triangles must be an (m, 3) array");
@@ -182,9 +315,9 @@ PyDesign designFromObj(const py::object& source,
   const auto v = vertices.unchecked<2>();
   for (py::ssize_t i = 0; i < v.shape(0); ++i)
     obj << "v " << v(i, 0) << ' ' << v(i, 1) << ' ' << v(i, 2) << '\n';
-  if (development) {
+  if (!development.is_none()) {
     const auto d =
-        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*development);
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(development);
     if (!d || d.ndim() != 2 || d.shape(1) != 2 || d.shape(0) != v.shape(0))
       throw std::invalid_argument("from_obj: development must be an (n, 2) array, one per vertex");
     const auto u = d.unchecked<2>();
@@ -200,7 +333,7 @@ PyDesign designFromObj(const py::object& source,
                                     " names a vertex that is not there");
       const long long corner = (long long)index + 1;
       obj << ' ' << corner;
-      if (development) obj << '/' << corner;
+      if (!development.is_none()) obj << '/' << corner;
     }
     obj << '\n';
   }
@@ -237,13 +370,33 @@ py::object foldDict(const PyDesign& design) {
 
 using OptionalPath = std::optional<std::filesystem::path>;
 
-void exportDesign(const PyDesign& design, const OptionalPath& fold, const OptionalPath& svg,
-                  const OptionalPath& obj, const OptionalPath& gltf, const OptionalPath& pdf,
-                  const OptionalPath& cutSvg,
-                  const std::optional<std::pair<double, double>>& perforate,
-                  const std::string& paper, bool angles) {
+void exportDesign(const PyDesign& design, const py::object& foldArg, const py::object& svgArg,
+                  const py::object& objArg, const py::object& gltfArg, const py::object& pdfArg,
+                  const py::object& cutSvgArg, const py::object& perforateArg,
+                  const py::object& paperArg, const py::object& anglesArg) {
+  const OptionalPath fold = optionalPath(foldArg, "fold"), svg = optionalPath(svgArg, "svg"),
+                     obj = optionalPath(objArg, "obj"), gltf = optionalPath(gltfArg, "gltf"),
+                     pdf = optionalPath(pdfArg, "pdf"), cutSvg = optionalPath(cutSvgArg, "cut_svg");
+  const std::string paper = text(paperArg, "paper");
+  const bool angles = flag(anglesArg, "angles");
+  std::optional<std::pair<double, double>> perforate;
+  if (!perforateArg.is_none()) {
+    if (!py::isinstance<py::sequence>(perforateArg) || py::isinstance<py::str>(perforateArg) ||
+        py::len(perforateArg) != 2)
+      throw ArgumentTypeError("perforate: expected (cut, gap) in millimetres, got " +
+                              given(perforateArg));
+    perforate = {number(perforateArg[py::int_(0)], "perforate"),
+                 number(perforateArg[py::int_(1)], "perforate")};
+  }
   if (!fold && !svg && !obj && !gltf && !pdf && !cutSvg)
     throw std::invalid_argument("export: name at least one of fold, svg, obj, gltf, pdf, cut_svg");
+  for (const auto& [path, parameter] : {std::pair{&fold, "fold"},
+                                        {&svg, "svg"},
+                                        {&obj, "obj"},
+                                        {&gltf, "gltf"},
+                                        {&pdf, "pdf"},
+                                        {&cutSvg, "cut_svg"}})
+    if (*path) design.checkOutput(**path, parameter);
   const std::optional<Paper> paperSize = parsePaper(paper);
   if (!paperSize)
     throw std::invalid_argument("export: paper must be a4, letter, a3 or fit, got '" + paper + "'");
@@ -282,9 +435,12 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
   outputs.write();
 }
 
-py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t width,
-                                       std::uint32_t height, const std::string& view,
-                                       bool creasePattern) {
+py::array_t<std::uint8_t> renderDesign(const PyDesign& design, const py::object& widthArg,
+                                       const py::object& heightArg, const py::object& viewArg,
+                                       const py::object& creasePatternArg) {
+  const std::int64_t width = integer(widthArg, "width"), height = integer(heightArg, "height");
+  const std::string view = text(viewArg, "view");
+  const bool creasePattern = flag(creasePatternArg, "crease_pattern");
   const std::optional<ViewPreset> preset = parseViewPreset(view);
   if (!preset)
     throw std::invalid_argument("render: unknown view '" + view +
@@ -296,8 +452,8 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
   {
     py::gil_scoped_release release;
     HeadlessOptions options;
-    options.width = width;
-    options.height = height;
+    options.width = std::uint32_t(width);
+    options.height = std::uint32_t(height);
     HeadlessRenderer renderer(options);
     *image = renderer.render(
         sceneForSheet(*sheet, *preset, float(width) / float(height), creasePattern));
@@ -341,10 +497,27 @@ PYBIND11_MODULE(_curvefold, m) {
   // PR 4877, which Debian 12's pybind11 lacks).
   py::detail::npy_api::get();
 
+  // An argument of the wrong type: both a ValueError (the module's rule: a bad argument is
+  // ValueError naming its parameter) and a TypeError (Python's), one line either way. Kept for the
+  // interpreter's life (a static py::object would be released after it ends).
+  static PyObject* argumentError = [] {
+    PyObject* bases = PyTuple_Pack(2, PyExc_ValueError, PyExc_TypeError);
+    PyObject* type = PyErr_NewExceptionWithDoc(
+        "curvefold.ArgumentError",
+        "An argument of the wrong type, named in the message (a ValueError and a TypeError)", bases,
+        nullptr);
+    Py_XDECREF(bases);
+    return type;
+  }();
+  if (!argumentError) throw py::error_already_set();
+  m.attr("ArgumentError") = py::handle(argumentError);
+
   // The engine's one-line messages, as Python's own exceptions.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const ArgumentTypeError& e) {
+      PyErr_SetString(argumentError, e.what());
     } catch (const FileError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const cli::UsageError& e) {
@@ -428,14 +601,18 @@ PYBIND11_MODULE(_curvefold, m) {
                   "read by the same OBJ reader")
       .def_static(
           "load",
-          [](const std::filesystem::path& path) {
+          [](const py::object& pathArg) {
+            const std::filesystem::path path = filePath(pathArg, "path");
             py::gil_scoped_release release;
-            return PyDesign(loadDesign(path), path.string());
+            checkInputFile(path, kMaxDesignBytes, "design");
+            return PyDesign(loadDesign(path), path.string(), path, true);
           },
           py::arg("path"), "Opens a design file (*.curvefold.json)")
       .def(
           "save",
-          [](const PyDesign& d, const std::filesystem::path& path) {
+          [](const PyDesign& d, const py::object& pathArg) {
+            const std::filesystem::path path = filePath(pathArg, "path");
+            d.checkOutput(path, "path", true);
             const Design whole = designOf(d);
             py::gil_scoped_release release;
             saveDesign(whole, path);
@@ -443,7 +620,7 @@ PYBIND11_MODULE(_curvefold, m) {
           py::arg("path"), "Writes the design file atomically (the same bytes as the command line)")
       .def(
           "fold",
-          [](PyDesign& d, const std::vector<double>& grab, const std::vector<double>& to) {
+          [](PyDesign& d, const py::object& grab, const py::object& to) {
             const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
             DesignGuard guard(d);
             return d.fold(guard.lock, from, drop);
@@ -474,7 +651,8 @@ PYBIND11_MODULE(_curvefold, m) {
           "The surface's name, or 'embedded mesh'")
       .def(
           "check",
-          [](const PyDesign& d, bool allowSelfIntersection) {
+          [](const PyDesign& d, const py::object& allowArg) {
+            const bool allowSelfIntersection = flag(allowArg, "allow_self_intersection");
             DesignGuard guard(d);
             return session::checkDesign(d.design(guard.lock), d.name(),
                                         d.session(guard.lock).initial(), *d.snapshot(guard.lock),
@@ -517,8 +695,7 @@ PYBIND11_MODULE(_curvefold, m) {
   // timed in C++ without the binding, each taken back; seconds per fold.
   m.def(
       "_time_folds_in_cpp",
-      [](PyDesign& d, const std::vector<double>& grab, const std::vector<double>& to,
-         std::size_t repeats) {
+      [](PyDesign& d, const py::object& grab, const py::object& to, std::size_t repeats) {
         const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
         std::vector<double> seconds;
         DesignGuard guard(d);
@@ -537,10 +714,12 @@ PYBIND11_MODULE(_curvefold, m) {
         "description}}, symmetries}}");
   m.def(
       "replay",
-      [](const std::filesystem::path& recording) {
+      [](const py::object& recordingArg) {
+        const std::filesystem::path recording = filePath(recordingArg, "recording");
         py::gil_scoped_release release;
+        checkInputFile(recording);
         const ReplayResult result = studio::replayAnyRecording(readRecording(recording));
-        return PyDesign(result.design, recording.string());
+        return PyDesign(result.design, recording.string(), recording);
       },
       py::arg("recording"), "The design a recording (*.jsonl) makes, replayed headless");
 }
