@@ -3,7 +3,9 @@
 // live FoldSession over it (as the studio's Document), folds go through FoldSession, `check` is
 // checkDesign, exports go through the same writers and OutputSet, `render` through the headless
 // renderer and `replay` through the player. Errors keep the engine's one-line messages: bad input
-// is ValueError, a file that cannot be read or written OSError. Long calls release the GIL.
+// is ValueError, a file that cannot be read or written OSError; arguments are converted here by
+// name, so a bad one names its parameter. Long calls release the GIL; a Design may be used from
+// several threads (DesignGuard, below).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>

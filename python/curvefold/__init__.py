@@ -10,10 +10,17 @@ and hand its meshes to numpy, trimesh or polyscope without files.
     assert design.check().passed
     design.export(svg="cylinder.svg", pdf="cylinder.pdf")
 
-Bad input raises ValueError, a file that cannot be read or written OSError, each with the
-command line's one-line message.
+Errors are one line each. A bad argument raises ValueError naming its parameter ("size: expected
+a number, got NoneType None"); one of the wrong type is curvefold.ArgumentError, both a ValueError
+and a TypeError. A file that cannot be read or written (missing, a folder, not a regular file)
+raises OSError naming the path. An input over a size limit or malformed is ValueError, with the
+command line's message.
+
+A Design may be used from several threads: each takes the design's lock in turn (with the GIL
+released), so calls on one design never interleave; `mesh()` gives vertices, triangles and
+development of one state while another thread folds.
 """
 
-from ._curvefold import CheckResult, Design, FoldResult, replay, surfaces
+from ._curvefold import ArgumentError, CheckResult, Design, FoldResult, replay, surfaces
 
-__all__ = ["CheckResult", "Design", "FoldResult", "replay", "surfaces"]
+__all__ = ["ArgumentError", "CheckResult", "Design", "FoldResult", "replay", "surfaces"]
