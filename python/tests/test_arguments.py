@@ -3,6 +3,7 @@ value of the wrong type is curvefold.ArgumentError, a ValueError and a TypeError
 cannot be read or written is OSError naming the path. Each in one line."""
 
 import os
+import re
 import subprocess
 import sys
 
@@ -132,3 +133,17 @@ def test_export_never_writes_over_the_file_the_design_came_from(tmp_path):
     from_obj = curvefold.Design.from_obj(tmp_path / "a.obj")
     with pytest.raises(ValueError, match="^path: .*a.obj is the file this design was read from"):
         from_obj.save(tmp_path / "a.obj")
+
+
+def test_missing_or_unexpected_arguments_are_one_line_naming_the_call():
+    design = curvefold.Design.new("square")
+    for call, expected in [
+        (lambda: design.fold(grab=(0, 0, 0)), "Design.fold(): .* it takes (*, grab, to)"),
+        (lambda: design.fold((0, 0, 0), (0, 0, 0.01)), "Design.fold(): .* it takes (*, grab, to)"),
+        (lambda: design.export(svg="a.svg", colour="red"), "Design.export(): .*svg=None"),
+        (lambda: curvefold.Design.new(), "Design.new(): .* it takes (surface, *, symmetry=None"),
+        (lambda: curvefold.replay(), "replay(): .* it takes (recording)"),
+    ]:
+        with pytest.raises(TypeError) as error:
+            call()
+        assert re.match(re.escape(expected).replace(r"\.\*", ".*"), one_line(error)), str(error.value)
