@@ -96,14 +96,6 @@ FilePicker::Picked waitForZenity(pid_t child, int output, int cancel) {
 
 }  // namespace
 
-std::unique_ptr<FilePicker> FilePicker::find() {
-  if (std::string bus = PortalPicker::find(); !bus.empty())
-    return std::make_unique<PortalPicker>(std::move(bus));
-  if (std::string program = ZenityPicker::find(); !program.empty())
-    return std::make_unique<ZenityPicker>(std::move(program));
-  return nullptr;
-}
-
 FilePicker::~FilePicker() {
   if (!worker_.joinable()) return;
   const char stop = 1;

@@ -299,4 +299,14 @@ void PortalPicker::start(bool save, const std::string& current) {
   });
 }
 
+// Here beside the portal, not in file_picker.cpp: only what links GDBus (curvefold_panel) may
+// choose it, so the studio library below stays free of GLib.
+std::unique_ptr<FilePicker> FilePicker::find() {
+  if (std::string bus = PortalPicker::find(); !bus.empty())
+    return std::make_unique<PortalPicker>(std::move(bus));
+  if (std::string program = ZenityPicker::find(); !program.empty())
+    return std::make_unique<ZenityPicker>(std::move(program));
+  return nullptr;
+}
+
 }  // namespace curvefold::studio

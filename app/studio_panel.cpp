@@ -43,11 +43,12 @@ void StudioPanel::nameDesign(const std::string& name) {
   savePath_ = exportBase_ + ".curvefold.json";
 }
 
-void StudioPanel::setDesktop(bool desktop) {
+void StudioPanel::setDesktop(bool desktop,
+                             const std::function<std::unique_ptr<FilePicker>()>& findPicker) {
   desktop_ = desktop;
   picker_.reset();
   if (!desktop) return;
-  picker_ = FilePicker::find();
+  picker_ = findPicker();
 }
 
 void StudioPanel::browse(bool save) {

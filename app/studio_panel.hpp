@@ -85,8 +85,11 @@ class StudioPanel {
   // The desktop's own items, each beside an item both hosts have, so nothing else moves: the
   // recent designs beside Open and, with the desktop portal or zenity, "Browse..." beside Open and
   // Save. Off in the headset (no desktop there, and its recorded pointing must find the items it
-  // found).
-  void setDesktop(bool desktop);
+  // found). `findPicker` is the desktop's picker finder; the default, FilePicker::find, lives in
+  // curvefold_panel (GDBus) and is named by the caller, so this library (curvefold_studio, which
+  // the Python module's replay links) needs no GLib.
+  void setDesktop(bool desktop, const std::function<std::unique_ptr<FilePicker>()>& findPicker =
+                                    FilePicker::find);
   // The target path field's text.
   void setTargetPath(const std::string& path);
   // The recent designs, newest first (at most kMaxRecentDesigns).

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -60,6 +61,10 @@ class StudioGestureWorld : public GestureWorld {
 ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options) {
   if (!recording.header.studio)
     throw std::invalid_argument("replayStudioRecording: the recording has no studio");
+  // Dear ImGui's current context is one pointer for the whole process (GImGui), so replays in
+  // several threads (the Python module's) take turns rather than draw into each other's panel.
+  static std::mutex oneReplayAtATime;
+  const std::lock_guard<std::mutex> turn(oneReplayAtATime);
   StudioFromHeader replayed(recording.header, "recording", true);
   session::Document& doc = replayed.doc;
 

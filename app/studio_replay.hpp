@@ -12,7 +12,8 @@ namespace curvefold::studio {
 
 // Replays a studio recording (its header has "studio"): the panel runs without drawing and writes
 // no file, so the design comes out as the session made it. The log lists folds, undos and redos
-// as replayRecording's does, across new sheets.
+// as replayRecording's does, across new sheets. Safe from several threads: studio replays take
+// turns (Dear ImGui's current context is process-wide), other replays run in parallel.
 ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptions& options = {});
 
 // Any recording: a studio one with its panel, any other as replayRecording does.

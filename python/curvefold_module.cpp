@@ -3,13 +3,18 @@
 // live FoldSession over it (as the studio's Document), folds go through FoldSession, `check` is
 // checkDesign, exports go through the same writers and OutputSet, `render` through the headless
 // renderer and `replay` through the player. Errors keep the engine's one-line messages: bad input
-// is ValueError, a file that cannot be read or written OSError. Long calls release the GIL.
+// is ValueError, a file that cannot be read or written OSError; arguments are converted here by
+// name, so a bad one names its parameter. Long calls release the GIL; a Design may be used from
+// several threads (DesignGuard, below).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -20,6 +25,7 @@
 #include "app/commands.hpp"
 #include "app/design_check.hpp"
 #include "app/document.hpp"
+#include "app/guarded_design.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
@@ -35,6 +41,7 @@
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/render/headless_renderer.hpp"
@@ -50,94 +57,164 @@ namespace {
 
 using session::DesignCheck;
 
-// A point from any 3-sequence of numbers.
-glm::dvec3 point3(const std::vector<double>& p, const char* what) {
-  if (p.size() != 3) throw std::invalid_argument(std::string(what) + ": expected (x, y, z)");
-  return {p[0], p[1], p[2]};
-}
-
-// What one fold did.
-struct FoldResult {
-  bool folded = false;             // false: the drop point lay within the shortest drag
-  std::vector<double> grabbed;     // the surface point grabbed (x, y, z)
-  std::vector<double> planePoint;  // the reflection plane
-  std::vector<double> planeNormal;
-  std::size_t triangles = 0;  // after the fold
-  std::size_t images = 0;     // symmetric images made with it
-  std::string notes;          // images skipped or overlapping, as the command says
+// Arguments (issue 40, 3): each converted here, by name, so a bad one is one line naming its
+// parameter: a value of the wrong type is ArgumentTypeError (curvefold.ArgumentError, both a
+// ValueError and a TypeError), a bad value of the right type std::invalid_argument (ValueError).
+// A file that cannot be read or written is FileError (OSError) naming the path.
+class ArgumentTypeError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
 };
 
-// A design and the fold session over it.
-class PyDesign {
+// "str '0.2'", "NoneType None": what was given, shortened.
+std::string given(const py::handle& value) {
+  if (py::isinstance<py::array>(value)) {
+    std::string shape;
+    for (const py::handle& n : value.attr("shape"))
+      shape += (shape.empty() ? "" : ", ") + std::string(py::str(n));
+    return "an array of shape (" + shape + (value.attr("ndim").cast<int>() == 1 ? ",)" : ")");
+  }
+  std::string shown = py::str(py::repr(value));
+  std::replace(shown.begin(), shown.end(), '\n', ' ');
+  if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+  return std::string(Py_TYPE(value.ptr())->tp_name) + " " + shown;
+}
+
+double number(const py::handle& value, const std::string& name) {
+  const bool isNumber = PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr()) ||
+                        (py::hasattr(value, "__float__") && !py::isinstance<py::array>(value) &&
+                         !py::isinstance<py::str>(value));
+  if (!isNumber) throw ArgumentTypeError(name + ": expected a number, got " + given(value));
+  const double x = PyFloat_AsDouble(value.ptr());
+  if (x == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw std::invalid_argument(name + ": " + given(value) + " is out of range");
+  }
+  return x;
+}
+
+std::int64_t integer(const py::handle& value, const std::string& name) {
+  if (!PyIndex_Check(value.ptr()) || PyBool_Check(value.ptr()))
+    throw ArgumentTypeError(name + ": expected an integer, got " + given(value));
+  const Py_ssize_t n = PyNumber_AsSsize_t(value.ptr(), nullptr);
+  if (n == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw std::invalid_argument(name + ": " + given(value) + " is out of range");
+  }
+  return n;
+}
+
+bool flag(const py::handle& value, const std::string& name) {
+  if (!PyBool_Check(value.ptr()) && std::string(Py_TYPE(value.ptr())->tp_name) != "numpy.bool_")
+    throw ArgumentTypeError(name + ": expected True or False, got " + given(value));
+  return value.cast<bool>();
+}
+
+std::string text(const py::handle& value, const std::string& name) {
+  if (!py::isinstance<py::str>(value))
+    throw ArgumentTypeError(name + ": expected a str, got " + given(value));
+  return value.cast<std::string>();
+}
+
+std::filesystem::path filePath(const py::handle& value, const std::string& name) {
+  const bool pathLike = py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+                        py::hasattr(value, "__fspath__");
+  if (!pathLike)
+    throw ArgumentTypeError(name + ": expected a path (str or os.PathLike), got " + given(value));
+  const std::filesystem::path path = value.cast<std::filesystem::path>();
+  if (path.empty()) throw std::invalid_argument(name + ": the path is empty");
+  return path;
+}
+
+std::optional<std::filesystem::path> optionalPath(const py::handle& value,
+                                                  const std::string& name) {
+  if (value.is_none()) return std::nullopt;
+  return filePath(value, name);
+}
+
+// A point: any three numbers, (3,) or a 3-sequence; not (3, 1), not NaN.
+glm::dvec3 point3(const py::handle& value, const std::string& name) {
+  const auto a = py::array_t<double, py::array::forcecast>::ensure(value);
+  if (!a || py::isinstance<py::str>(value))
+    throw ArgumentTypeError(name + ": expected (x, y, z), got " + given(value));
+  if (a.ndim() != 1 || a.shape(0) != 3)
+    throw std::invalid_argument(name + ": expected (x, y, z), three numbers, got " + given(value));
+  const glm::dvec3 p{a.at(0), a.at(1), a.at(2)};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw std::invalid_argument(name + ": expected finite coordinates, got " + given(value));
+  return p;
+}
+
+// An input file, checked before it is opened: a path that names no regular file (missing, a
+// folder, a FIFO that would block, a device) is FileError naming it; one over `maxBytes` is the
+// reader's own limit message, as ValueError (a limit is about the input's value, not the disk).
+void checkInputFile(const std::filesystem::path& path, std::uint64_t maxBytes = 0,
+                    std::string_view kind = {}) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status))
+    throw FileError("cannot read " + path.string() + ": " + std::strerror(ENOENT));
+  if (std::filesystem::is_directory(status))
+    throw FileError("cannot read " + path.string() + ": " + std::strerror(EISDIR));
+  if (!std::filesystem::is_regular_file(status))
+    throw FileError("cannot read " + path.string() +
+                    ": not a regular file (a FIFO, socket or device)");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (maxBytes > 0 && !error && size > maxBytes)
+    throw std::invalid_argument(tooLarge(path.string(), size, maxBytes, kind));
+}
+
+using session::FoldResult;
+// The module's Design: safe to call from several Python threads at once (issue 40, 2), and the
+// file it was read from, which its outputs must not overwrite (set before the design is shared).
+class PyDesign : public session::GuardedDesign {
  public:
-  PyDesign(Design design, std::string name) : name_(std::move(name)) {
-    surface_ = design.surface;
-    symmetry_ = design.symmetry;
-    session_ = std::make_unique<FoldSession>(initialSheet(design, name_));
-    session_->applyRecords(design.folds);
-    if (!symmetry_.empty()) session_->setSymmetry(parseSymmetry(symmetry_, session_->initial()));
-  }
+  PyDesign(Design design, std::string name, std::filesystem::path source = {},
+           bool sourceIsDesign = false)
+      : GuardedDesign(std::move(design), std::move(name)),
+        source_(std::move(source)),
+        sourceIsDesign_(sourceIsDesign) {}
 
-  Design design() const {
-    const auto& history = session_->folds();
-    return Design{surface_,
-                  {history.begin(), history.begin() + std::ptrdiff_t(session_->foldCount())},
-                  symmetry_};
-  }
-  const std::string& name() const { return name_; }
-  const std::string& symmetry() const { return symmetry_; }
-  FoldSession& session() { return *session_; }
-  const FoldSession& session() const { return *session_; }
-
-  // The folded sheet as it is now, shared with the arrays handed out (they stay valid after the
-  // design changes: a change makes a new snapshot, one copy per change, none per array).
-  std::shared_ptr<const Sheet> snapshot() const {
-    if (!snapshot_ || snapshotRevision_ != session_->designRevision()) {
-      snapshot_ = std::make_shared<const Sheet>(session_->fixed());
-      snapshotRevision_ = session_->designRevision();
-    }
-    return snapshot_;
-  }
-
-  FoldResult fold(const glm::dvec3& grab, const glm::dvec3& to) {
-    const std::size_t before = session_->foldCount();
-    const glm::dvec3 grabbed = session_->beginDragNear(grab);
-    session_->updateDrag(to);
-    FoldResult result;
-    result.grabbed = {grabbed.x, grabbed.y, grabbed.z};
-    const ReflectionPlane plane = session_->hasPlane() ? session_->plane() : ReflectionPlane{};
-    if (!session_->commit()) {
-      if (!session_->refusal().empty()) throw std::invalid_argument(session_->refusal());
-      result.triangles = session_->fixed().triangleCount();
-      return result;
-    }
-    // The same check as the command line's fold.
-    ValidationOptions tolerance;
-    tolerance.relativeLengthTolerance =
-        session::isometryTolerance(session_->initial()) / sheetSize(session_->fixed());
-    try {
-      validate(session_->fixed(), tolerance);
-    } catch (...) {
-      session_->undo();
-      throw;
-    }
-    result.folded = true;
-    result.planePoint = {plane.point.x, plane.point.y, plane.point.z};
-    result.planeNormal = {plane.normal.x, plane.normal.y, plane.normal.z};
-    result.triangles = session_->fixed().triangleCount();
-    result.images = session_->foldCount() - before - 1;
-    result.notes = imageNotes(session_->lastSkippedImages(), session_->lastOverlappingImages());
-    return result;
+  // Refuses an output that names the file the design came from (save may write a design file
+  // again, as `curvefold fold D -o D` does; nothing writes over an OBJ or a recording).
+  void checkOutput(const std::filesystem::path& output, const std::string& parameter,
+                   bool designFile = false) const {
+    if (source_.empty() || (designFile && sourceIsDesign_)) return;
+    if (sameFile(output, source_))
+      throw std::invalid_argument(parameter + ": " + output.string() +
+                                  " is the file this design was read from; write to another file");
   }
 
  private:
-  std::string name_;
-  InitialSurface surface_;
-  std::string symmetry_;
-  std::unique_ptr<FoldSession> session_;
-  mutable std::shared_ptr<const Sheet> snapshot_;
-  mutable std::uint64_t snapshotRevision_ = 0;
+  std::filesystem::path source_;
+  bool sourceIsDesign_ = false;
 };
+
+// Every Design method that reads or writes the design holds one of these while it does: the GIL
+// is released first, then the design's lock is taken (released, then the GIL taken back, at the
+// end of its scope). So a thread waiting for a design lets Python run and never holds the GIL
+// while it waits; Python objects are made after the guard's scope. Construct it with the GIL held.
+class DesignGuard {
+ public:
+  explicit DesignGuard(const PyDesign& design) : lock(design) {}
+
+ private:
+  py::gil_scoped_release gil_;  // first: released before waiting for the lock
+
+ public:
+  const PyDesign::Lock lock;
+};
+
+// The sheet as it is now (immutable: read it with the GIL held or not, no guard needed).
+std::shared_ptr<const Sheet> snapshotOf(const PyDesign& design) {
+  DesignGuard guard(design);
+  return design.snapshot(guard.lock);
+}
+
+Design designOf(const PyDesign& design) {
+  DesignGuard guard(design);
+  return design.design(guard.lock);
+}
 
 // A read-only array over `data` (rows of `columns` values of T), kept alive by `owner`.
 template <typename T, typename Owner>
@@ -150,16 +227,29 @@ py::array_t<T> view(const T* data, std::size_t rows, std::size_t columns,
   return array;
 }
 
-// A Design property: one of the current sheet's arrays (rows of Element, each Columns values of
-// T), read-only and without a copy, kept alive by the snapshot that holds it.
+// One of a sheet's arrays (rows of Element, each Columns values of T), read-only and without a
+// copy, kept alive by the snapshot that holds it.
+template <typename T, std::size_t Columns, typename Element>
+py::array_t<T> sheetView(const std::shared_ptr<const Sheet>& sheet,
+                         const std::vector<Element> Sheet::*rows) {
+  static_assert(sizeof(Element) == Columns * sizeof(T));
+  const std::vector<Element>& array = (*sheet).*rows;
+  return view(reinterpret_cast<const T*>(array.data()), array.size(), Columns, sheet);
+}
+
+// A Design property: one of the current sheet's arrays.
 template <typename T, std::size_t Columns, typename Element>
 auto sheetArray(const std::vector<Element> Sheet::*rows) {
-  static_assert(sizeof(Element) == Columns * sizeof(T));
-  return [rows](const PyDesign& d) {
-    const std::shared_ptr<const Sheet> sheet = d.snapshot();
-    const std::vector<Element>& array = (*sheet).*rows;
-    return view(reinterpret_cast<const T*>(array.data()), array.size(), Columns, sheet);
-  };
+  return [rows](const PyDesign& d) { return sheetView<T, Columns>(snapshotOf(d), rows); };
+}
+
+// (vertices, triangles, development) of one state of the design: separate property reads may
+// see a fold another thread made between them.
+py::tuple meshArrays(const PyDesign& design) {
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
+  return py::make_tuple(sheetView<double, 3>(sheet, &Sheet::positions),
+                        sheetView<std::uint32_t, 3>(sheet, &Sheet::triangles),
+                        sheetView<double, 2>(sheet, &Sheet::development));
 }
 
 py::dict surfacesInfo() {
@@ -184,11 +274,16 @@ py::dict surfacesInfo() {
   return surfaces;
 }
 
-PyDesign newDesign(const std::string& surface, const std::optional<std::string>& symmetry,
+PyDesign newDesign(const py::object& surfaceName, const py::object& symmetryName,
                    const py::kwargs& parameters) {
+  const std::string surface = text(surfaceName, "surface");
+  const std::optional<std::string> symmetry =
+      symmetryName.is_none() ? std::nullopt : std::optional(text(symmetryName, "symmetry"));
   GeneratedSurface generated{surface, {}};
-  for (const auto& [key, value] : parameters)
-    generated.parameters[py::cast<std::string>(key)] = py::cast<double>(value);
+  for (const auto& [key, value] : parameters) {
+    const std::string name = py::cast<std::string>(key);
+    generated.parameters[name] = number(value, name);
+  }
   makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
   Design design{generated, {}};
   if (symmetry) {
@@ -202,20 +297,21 @@ PyDesign newDesign(const std::string& surface, const std::optional<std::string>&
 }
 
 // An OBJ surface from a path, or from arrays through the same reader (written as OBJ text).
-PyDesign designFromObj(const py::object& source,
-                       const std::optional<py::array_t<double>>& triangles,
-                       const std::optional<py::array_t<double>>& development) {
-  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
-    const std::string path =
-        py::str(py::hasattr(source, "__fspath__") ? source.attr("__fspath__")() : source);
-    return PyDesign(Design{readObjSurface(path), {}}, path);
+PyDesign designFromObj(const py::object& source, const py::object& triangles,
+                       const py::object& development) {
+  if (py::isinstance<py::str>(source) || py::isinstance<py::bytes>(source) ||
+      py::hasattr(source, "__fspath__")) {
+    const std::filesystem::path path = filePath(source, "source");
+    py::gil_scoped_release release;  // a long read; nothing here blocks: regular files only
+    checkInputFile(path);
+    return PyDesign(Design{readObjSurface(path.string()), {}}, path.string(), path);
   }
-  if (!triangles) throw std::invalid_argument("from_obj: arrays need triangles=(m, 3)");
+  if (triangles.is_none()) throw std::invalid_argument("from_obj: arrays need triangles=(m, 3)");
   const auto vertices =
-      py::cast<py::array_t<double, py::array::c_style | py::array::forcecast>>(source);
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(source);
   const auto faces =
-      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*triangles);
-  if (vertices.ndim() != 2 || vertices.shape(1) != 3)
+      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(triangles);
+  if (!vertices || vertices.ndim() != 2 || vertices.shape(1) != 3)
     throw std::invalid_argument("from_obj: vertices must be an (n, 3) array");
   if (!faces || faces.ndim() != 2 || faces.shape(1) != 3)
     throw std::invalid_argument("from_obj: triangles must be an (m, 3) array");
@@ -224,9 +320,9 @@ PyDesign designFromObj(const py::object& source,
   const auto v = vertices.unchecked<2>();
   for (py::ssize_t i = 0; i < v.shape(0); ++i)
     obj << "v " << v(i, 0) << ' ' << v(i, 1) << ' ' << v(i, 2) << '\n';
-  if (development) {
+  if (!development.is_none()) {
     const auto d =
-        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(*development);
+        py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(development);
     if (!d || d.ndim() != 2 || d.shape(1) != 2 || d.shape(0) != v.shape(0))
       throw std::invalid_argument("from_obj: development must be an (n, 2) array, one per vertex");
     const auto u = d.unchecked<2>();
@@ -242,7 +338,7 @@ PyDesign designFromObj(const py::object& source,
                                     " names a vertex that is not there");
       const long long corner = (long long)index + 1;
       obj << ' ' << corner;
-      if (development) obj << '/' << corner;
+      if (!development.is_none()) obj << '/' << corner;
     }
     obj << '\n';
   }
@@ -251,7 +347,7 @@ PyDesign designFromObj(const py::object& source,
 }
 
 py::dict creasesOf(const PyDesign& design) {
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
   const std::vector<CreaseEdge> creases = creaseEdges(*sheet, buildEdgeTopology(*sheet));
   py::array_t<std::uint32_t> edges({py::ssize_t(creases.size()), py::ssize_t(2)});
   py::array_t<double> angles(py::ssize_t(creases.size()));
@@ -273,19 +369,39 @@ py::dict creasesOf(const PyDesign& design) {
 
 // The design as a FOLD dict (json.loads of the FOLD file's text).
 py::object foldDict(const PyDesign& design) {
-  const std::string text = foldText(*design.snapshot());
+  const std::string text = foldText(*snapshotOf(design));
   return py::module_::import("json").attr("loads")(text);
 }
 
 using OptionalPath = std::optional<std::filesystem::path>;
 
-void exportDesign(const PyDesign& design, const OptionalPath& fold, const OptionalPath& svg,
-                  const OptionalPath& obj, const OptionalPath& gltf, const OptionalPath& pdf,
-                  const OptionalPath& cutSvg,
-                  const std::optional<std::pair<double, double>>& perforate,
-                  const std::string& paper, bool angles) {
+void exportDesign(const PyDesign& design, const py::object& foldArg, const py::object& svgArg,
+                  const py::object& objArg, const py::object& gltfArg, const py::object& pdfArg,
+                  const py::object& cutSvgArg, const py::object& perforateArg,
+                  const py::object& paperArg, const py::object& anglesArg) {
+  const OptionalPath fold = optionalPath(foldArg, "fold"), svg = optionalPath(svgArg, "svg"),
+                     obj = optionalPath(objArg, "obj"), gltf = optionalPath(gltfArg, "gltf"),
+                     pdf = optionalPath(pdfArg, "pdf"), cutSvg = optionalPath(cutSvgArg, "cut_svg");
+  const std::string paper = text(paperArg, "paper");
+  const bool angles = flag(anglesArg, "angles");
+  std::optional<std::pair<double, double>> perforate;
+  if (!perforateArg.is_none()) {
+    if (!py::isinstance<py::sequence>(perforateArg) || py::isinstance<py::str>(perforateArg) ||
+        py::len(perforateArg) != 2)
+      throw ArgumentTypeError("perforate: expected (cut, gap) in millimetres, got " +
+                              given(perforateArg));
+    perforate = {number(perforateArg[py::int_(0)], "perforate"),
+                 number(perforateArg[py::int_(1)], "perforate")};
+  }
   if (!fold && !svg && !obj && !gltf && !pdf && !cutSvg)
     throw std::invalid_argument("export: name at least one of fold, svg, obj, gltf, pdf, cut_svg");
+  for (const auto& [path, parameter] : {std::pair{&fold, "fold"},
+                                        {&svg, "svg"},
+                                        {&obj, "obj"},
+                                        {&gltf, "gltf"},
+                                        {&pdf, "pdf"},
+                                        {&cutSvg, "cut_svg"}})
+    if (*path) design.checkOutput(**path, parameter);
   const std::optional<Paper> paperSize = parsePaper(paper);
   if (!paperSize)
     throw std::invalid_argument("export: paper must be a4, letter, a3 or fit, got '" + paper + "'");
@@ -297,8 +413,13 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
           "export: perforate expects (cut, gap) in millimetres, both positive");
     perforation = Perforation{perforate->first, perforate->second};
   }
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
-  const Design whole = design.design();
+  std::shared_ptr<const Sheet> sheet;
+  Design whole;
+  {
+    DesignGuard guard(design);
+    sheet = design.snapshot(guard.lock);
+    whole = design.design(guard.lock);
+  }
   PdfOptions print;
   print.paper = *paperSize;
   print.angles = angles;
@@ -319,22 +440,25 @@ void exportDesign(const PyDesign& design, const OptionalPath& fold, const Option
   outputs.write();
 }
 
-py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t width,
-                                       std::uint32_t height, const std::string& view,
-                                       bool creasePattern) {
+py::array_t<std::uint8_t> renderDesign(const PyDesign& design, const py::object& widthArg,
+                                       const py::object& heightArg, const py::object& viewArg,
+                                       const py::object& creasePatternArg) {
+  const std::int64_t width = integer(widthArg, "width"), height = integer(heightArg, "height");
+  const std::string view = text(viewArg, "view");
+  const bool creasePattern = flag(creasePatternArg, "crease_pattern");
   const std::optional<ViewPreset> preset = parseViewPreset(view);
   if (!preset)
     throw std::invalid_argument("render: unknown view '" + view +
                                 "' (known: " + std::string(kViewPresetNames) + ")");
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::invalid_argument("render: width and height must lie in 1 to 16384");
-  const std::shared_ptr<const Sheet> sheet = design.snapshot();
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
   auto image = std::make_shared<RgbaImage>();
   {
     py::gil_scoped_release release;
     HeadlessOptions options;
-    options.width = width;
-    options.height = height;
+    options.width = std::uint32_t(width);
+    options.height = std::uint32_t(height);
     HeadlessRenderer renderer(options);
     *image = renderer.render(
         sceneForSheet(*sheet, *preset, float(width) / float(height), creasePattern));
@@ -347,7 +471,7 @@ py::array_t<std::uint8_t> renderDesign(const PyDesign& design, std::uint32_t wid
 
 py::list foldsOf(const PyDesign& design) {
   py::list folds;
-  const Design whole = design.design();
+  const Design whole = designOf(design);
   for (const FoldRecord& fold : whole.folds) {
     py::dict item;
     item["seed"] = py::make_tuple(fold.seed.x, fold.seed.y);
@@ -366,15 +490,15 @@ py::list foldsOf(const PyDesign& design) {
 // A shape to fit or measure: a Design (its folded form), an OBJ file, or a design file (its
 // folded form), as `curvefold fit` and `curvefold distance` read them.
 TriangleMesh shapeOf(const py::object& shape, const char* what) {
-  if (py::isinstance<PyDesign>(shape)) return meshOf(*py::cast<const PyDesign&>(shape).snapshot());
+  if (py::isinstance<PyDesign>(shape)) return meshOf(*snapshotOf(py::cast<const PyDesign&>(shape)));
   if (!py::isinstance<py::str>(shape) && !py::hasattr(shape, "__fspath__"))
     throw std::invalid_argument(std::string(what) + ": expected a Design or a path");
   const std::string path =
       py::str(py::hasattr(shape, "__fspath__") ? shape.attr("__fspath__")() : shape);
   py::gil_scoped_release release;
   if (std::filesystem::path(path).extension() == ".obj") return readObjMesh(path);
-  const PyDesign design(loadDesign(path), path);
-  return meshOf(*design.snapshot());
+  const session::GuardedDesign design(loadDesign(path), path);
+  return meshOf(*design.snapshot(session::GuardedDesign::Lock(design)));
 }
 
 std::string shapeName(const py::object& shape) {
@@ -432,8 +556,13 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   const auto started = std::chrono::steady_clock::now();
   const std::string targetName = shapeName(target);
   TriangleMesh mesh = shapeOf(target, "fit: target");
-  const Design before = d.design();
-  const std::shared_ptr<const Sheet> initial = std::make_shared<const Sheet>(d.session().initial());
+  Design before;
+  std::shared_ptr<const Sheet> initial;
+  {
+    DesignGuard guard(d);
+    before = d.design(guard.lock);
+    initial = std::make_shared<const Sheet>(d.session(guard.lock).initial());
+  }
   FitResult result;
   {
     py::gil_scoped_release release;
@@ -461,7 +590,13 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   // The folds kept, made on the design (the same records: the same sheet).
   std::vector<FoldRecord> added(result.folds.begin() + std::ptrdiff_t(before.folds.size()),
                                 result.folds.end());
-  d.session().applyRecords(added);
+  {
+    DesignGuard guard(d);
+    // Another thread's fold or undo meanwhile: the folds found continue a design that is gone.
+    if (d.design(guard.lock).folds.size() != before.folds.size())
+      throw std::runtime_error("fit: the design changed while it was fitted; fit it again");
+    d.session(guard.lock).applyRecords(added);
+  }
   py::list steps;
   for (const FitProgress& step : result.steps) {
     py::dict item;
@@ -493,10 +628,34 @@ PYBIND11_MODULE(_curvefold, m) {
   using namespace curvefold::python;
   m.doc() = "curvefold: curved folding by reflection (the C++ engine)";
 
+  // Now, at import, with the GIL held: pybind11 2.10's npy_api::get() (the first numpy array)
+  // imports numpy inside a function-local static's initialisation guard, so two threads making
+  // their first array at once deadlock, one holding the GIL and waiting on the guard, the other
+  // holding the guard and waiting for the GIL (fixed upstream by gil_safe_call_once, pybind11
+  // PR 4877, which Debian 12's pybind11 lacks).
+  py::detail::npy_api::get();
+
+  // An argument of the wrong type: both a ValueError (the module's rule: a bad argument is
+  // ValueError naming its parameter) and a TypeError (Python's), one line either way. Kept for the
+  // interpreter's life (a static py::object would be released after it ends).
+  static PyObject* argumentError = [] {
+    PyObject* bases = PyTuple_Pack(2, PyExc_ValueError, PyExc_TypeError);
+    PyObject* type = PyErr_NewExceptionWithDoc(
+        "curvefold.ArgumentError",
+        "An argument of the wrong type, named in the message (a ValueError and a TypeError)", bases,
+        nullptr);
+    Py_XDECREF(bases);
+    return type;
+  }();
+  if (!argumentError) throw py::error_already_set();
+  m.attr("ArgumentError") = py::handle(argumentError);
+
   // The engine's one-line messages, as Python's own exceptions.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const ArgumentTypeError& e) {
+      PyErr_SetString(argumentError, e.what());
     } catch (const FileError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const cli::UsageError& e) {
@@ -580,54 +739,62 @@ PYBIND11_MODULE(_curvefold, m) {
                   "read by the same OBJ reader")
       .def_static(
           "load",
-          [](const std::filesystem::path& path) {
+          [](const py::object& pathArg) {
+            const std::filesystem::path path = filePath(pathArg, "path");
             py::gil_scoped_release release;
-            return PyDesign(loadDesign(path), path.string());
+            checkInputFile(path, kMaxDesignBytes, "design");
+            return PyDesign(loadDesign(path), path.string(), path, true);
           },
           py::arg("path"), "Opens a design file (*.curvefold.json)")
       .def(
           "save",
-          [](const PyDesign& d, const std::filesystem::path& path) {
-            const Design whole = d.design();
+          [](const PyDesign& d, const py::object& pathArg) {
+            const std::filesystem::path path = filePath(pathArg, "path");
+            d.checkOutput(path, "path", true);
+            const Design whole = designOf(d);
             py::gil_scoped_release release;
             saveDesign(whole, path);
           },
           py::arg("path"), "Writes the design file atomically (the same bytes as the command line)")
       .def(
           "fold",
-          [](PyDesign& d, const std::vector<double>& grab, const std::vector<double>& to) {
+          [](PyDesign& d, const py::object& grab, const py::object& to) {
             const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
-            py::gil_scoped_release release;
-            return d.fold(from, drop);
+            DesignGuard guard(d);
+            return d.fold(guard.lock, from, drop);
           },
           py::kw_only(), py::arg("grab"), py::arg("to"),
           "Grabs the surface point nearest `grab` and drops it at `to`: the part holding it is "
           "reflected through their bisector plane (with its symmetric images)")
       .def(
-          "undo", [](PyDesign& d) { return d.session().undo(); },
+          "undo",
+          [](PyDesign& d) {
+            DesignGuard guard(d);
+            return d.session(guard.lock).undo();
+          },
           "Takes the last fold (and its images) back; False when there is none")
       .def(
-          "redo", [](PyDesign& d) { return d.session().redo(); },
+          "redo",
+          [](PyDesign& d) {
+            DesignGuard guard(d);
+            return d.session(guard.lock).redo();
+          },
           "Makes the last undone fold again; False when there is none")
       .def_property_readonly("folds", &foldsOf,
                              "The folds, each a dict: seed, plane_point, plane_normal, grabbed, "
                              "target, group")
       .def_property_readonly("symmetry", &PyDesign::symmetry, "'' or e.g. 'rotational:6:y'")
       .def_property_readonly(
-          "surface", [](const PyDesign& d) { return session::surfaceName(d.design()); },
+          "surface", [](const PyDesign& d) { return session::surfaceName(designOf(d)); },
           "The surface's name, or 'embedded mesh'")
       .def(
           "check",
-          [](const PyDesign& d, bool allowSelfIntersection) {
-            const std::shared_ptr<const Sheet> sheet = d.snapshot();
-            const Design whole = d.design();
-            DesignCheck check;
-            {
-              py::gil_scoped_release release;
-              check = session::checkDesign(whole, d.name(), d.session().initial(), *sheet,
-                                           allowSelfIntersection);
-            }
-            return check;
+          [](const PyDesign& d, const py::object& allowArg) {
+            const bool allowSelfIntersection = flag(allowArg, "allow_self_intersection");
+            DesignGuard guard(d);
+            return session::checkDesign(d.design(guard.lock), d.name(),
+                                        d.session(guard.lock).initial(), *d.snapshot(guard.lock),
+                                        allowSelfIntersection);
           },
           py::arg("allow_self_intersection") = false,
           "The invariants `curvefold check` prints, as a CheckResult (true when all hold; "
@@ -639,6 +806,10 @@ PYBIND11_MODULE(_curvefold, m) {
       .def_property_readonly("triangles", sheetArray<std::uint32_t, 3>(&Sheet::triangles),
                              "Triangles, (m, 3) uint32 vertex indices, counter-clockwise in the "
                              "development, read-only (no copy)")
+      .def("mesh", &meshArrays,
+           "(vertices, triangles, development) of one state of the design, as the three "
+           "properties give them; while another thread folds, separate reads of the properties "
+           "may come from states either side of a fold")
       .def("creases", &creasesOf,
            "Crease edges: edges (k, 2) uint32, assignment ['M' or 'V'], angles (k,) degrees "
            "(FOLD's convention)")
@@ -662,8 +833,9 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
            "The folded form as an (height, width, 4) uint8 RGBA image (headless Vulkan)")
       .def("__repr__", [](const PyDesign& d) {
-        return "<curvefold.Design " + session::surfaceName(d.design()) + ", " +
-               std::to_string(d.session().foldCount()) + " folds" +
+        const Design whole = designOf(d);
+        return "<curvefold.Design " + session::surfaceName(whole) + ", " +
+               std::to_string(whole.folds.size()) + " folds" +
                (d.symmetry().empty() ? "" : ", " + d.symmetry()) + ">";
       });
 
@@ -671,17 +843,16 @@ PYBIND11_MODULE(_curvefold, m) {
   // timed in C++ without the binding, each taken back; seconds per fold.
   m.def(
       "_time_folds_in_cpp",
-      [](PyDesign& d, const std::vector<double>& grab, const std::vector<double>& to,
-         std::size_t repeats) {
+      [](PyDesign& d, const py::object& grab, const py::object& to, std::size_t repeats) {
         const glm::dvec3 from = point3(grab, "grab"), drop = point3(to, "to");
         std::vector<double> seconds;
-        py::gil_scoped_release release;
+        DesignGuard guard(d);
         for (std::size_t i = 0; i < repeats; ++i) {
           const auto start = std::chrono::steady_clock::now();
-          const FoldResult result = d.fold(from, drop);
+          const FoldResult result = d.fold(guard.lock, from, drop);
           seconds.push_back(
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-          if (result.folded) d.session().undo();
+          if (result.folded) d.session(guard.lock).undo();
         }
         return seconds;
       },
@@ -696,10 +867,12 @@ PYBIND11_MODULE(_curvefold, m) {
         "description}}, symmetries}}");
   m.def(
       "replay",
-      [](const std::filesystem::path& recording) {
+      [](const py::object& recordingArg) {
+        const std::filesystem::path recording = filePath(recordingArg, "recording");
         py::gil_scoped_release release;
+        checkInputFile(recording);
         const ReplayResult result = studio::replayAnyRecording(readRecording(recording));
-        return PyDesign(result.design, recording.string());
+        return PyDesign(result.design, recording.string(), recording);
       },
       py::arg("recording"), "The design a recording (*.jsonl) makes, replayed headless");
 }

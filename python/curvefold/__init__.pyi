@@ -5,7 +5,13 @@ from typing import Any, Literal, Sequence
 import numpy as np
 import numpy.typing as npt
 
-Point = Sequence[float]
+# A point is three numbers: a 3-sequence or a (3,) array (not (3, 1)), finite.
+Point = Sequence[float] | npt.NDArray[np.floating[Any]]
+
+# The rule for every call: a bad value raises ValueError naming its parameter; a value of the wrong
+# type raises ArgumentError (a ValueError and a TypeError) naming it; a file that cannot be read or
+# written (missing, a folder, a FIFO, no permission) raises OSError naming the path.
+class ArgumentError(ValueError, TypeError): ...
 
 class FoldResult:
     @property
@@ -76,6 +82,9 @@ class Design:
     def development(self) -> npt.NDArray[np.float64]: ...
     @property
     def triangles(self) -> npt.NDArray[np.uint32]: ...
+    def mesh(
+        self,
+    ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32], npt.NDArray[np.float64]]: ...
     def creases(self) -> dict[str, Any]: ...
     def to_fold(self) -> dict[str, Any]: ...
     def export(
