@@ -13,6 +13,8 @@ packages=(
   clang-format
   # folding toward a goal: both cores, the local search, nearest neighbours
   libtbb-dev libnlopt-cxx-dev libnanoflann-dev
+  # the folding simulation's static solver (sparse LDL^T)
+  libeigen3-dev
   # the printable crease pattern (PDF)
   libcairo2-dev
   # the main job's animated picture of a replay (GIF)
