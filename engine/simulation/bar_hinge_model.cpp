@@ -59,6 +59,27 @@ std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dve
   return {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
 }
 
+double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                              const glm::dvec3& d, double previous,
+                              std::array<glm::dvec3, 4>& gradient) {
+  const glm::dvec3 edge = b - a;
+  const glm::dvec3 n1 = glm::cross(edge, c - a);
+  const glm::dvec3 n2 = glm::cross(a - b, d - b);
+  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
+  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) {
+    gradient = {};
+    return previous;
+  }
+  const double length = std::sqrt(ee);
+  const double raw = std::atan2(-glm::dot(glm::cross(n1, n2), edge) / length, glm::dot(n1, n2));
+  const glm::dvec3 gc = n1 * (length / n1n1);
+  const glm::dvec3 gd = n2 * (length / n2n2);
+  const double tc = glm::dot(c - a, edge) / ee;
+  const double td = glm::dot(d - a, edge) / ee;
+  gradient = {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
+  return previous + wrapToPi(raw - previous);
+}
+
 BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
   const std::size_t n = pattern.vertices.size();
   BarHingeModel model;
@@ -268,7 +289,8 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 
 void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                    const std::vector<double>& targets, const std::vector<double>& previous,
-                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces) {
+                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,
+                   const glm::dvec3* velocities, double dampingRatio) {
   slotForces.resize(model.slotCount);
   angles.resize(model.hinges.size());
   const glm::dvec3* x = positions.data();
@@ -278,17 +300,24 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
     const glm::dvec3 delta = x[b] - x[a];
     const double length = glm::length(delta);
     glm::dvec3 force(0.0);  // on a; b gets the opposite
-    if (length > 0.0)
+    if (length > 0.0 && velocities) {
+      const double damping =
+          2.0 * dampingRatio *
+          std::sqrt(model.barStiffness[i] * std::min(model.mass[a], model.mass[b]));
+      const double pull = model.barStiffness[i] * (length - model.barLength[i]) +
+                          damping * glm::dot(velocities[b] - velocities[a], delta) / length;
+      force = (pull / length) * delta;
+    } else if (length > 0.0)
       force = (model.barStiffness[i] * (length - model.barLength[i]) / length) * delta;
     forces[2 * i] = force;
     forces[2 * i + 1] = -force;
   });
   forEachIndex(model.hinges.size(), [&](std::size_t j) {
     const Hinge& h = model.hinges[j];
-    const double angle =
-        hingeAngle(x[h.a], x[h.b], x[h.c], x[h.d], previous.empty() ? 0.0 : previous[j]);
+    std::array<glm::dvec3, 4> gradient;
+    const double angle = hingeAngleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d],
+                                                previous.empty() ? 0.0 : previous[j], gradient);
     angles[j] = angle;
-    const auto gradient = hingeAngleGradient(x[h.a], x[h.b], x[h.c], x[h.d]);
     const double torque = -model.hingeStiffness[j] * (angle - targets[j]);
     glm::dvec3* slot = forces + model.hingeSlot0 + 4 * j;
     for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];

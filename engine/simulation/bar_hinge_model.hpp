@@ -132,6 +132,11 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
 double hingeAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
                   const glm::dvec3& d, double previous = 0.0);
 
+// Both at once (the forces' kernel).
+double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                              const glm::dvec3& d, double previous,
+                              std::array<glm::dvec3, 4>& gradient);
+
 // The angle's gradient with respect to a, b, c, d (zero while a triangle is degenerate).
 std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dvec3& b,
                                              const glm::dvec3& c, const glm::dvec3& d);
@@ -151,10 +156,12 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 
 // Every element's force on each of its vertices into its slots (slotForces, model.slotCount
 // long) and every hinge's angle unwrapped against previous into angles (both may be the same
-// vector). Bars are undamped. Runs on all cores; each element writes only its own slots.
+// vector). With velocities, bars resist their ends' relative speed along them (damping ratio
+// dampingRatio: 2 zeta sqrt(k m)). Runs on all cores; each element writes only its own slots.
 void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                    const std::vector<double>& targets, const std::vector<double>& previous,
-                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces);
+                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,
+                   const glm::dvec3* velocities = nullptr, double dampingRatio = 0.0);
 
 // Each vertex's total force: the sum of its slots in gather order (0 for a pinned vertex).
 void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,

@@ -42,24 +42,9 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
 
   for (std::size_t step = 0; step < steps; ++step) {
     elementForces(model, state.positions, targets, state.hingeAngles, state.hingeAngles,
-                  state.slotForces);
-    glm::dvec3* forces = state.slotForces.data();
-    const glm::dvec3* x = state.positions.data();
+                  state.slotForces, state.velocities.data(), options.dampingRatio);
+    const glm::dvec3* forces = state.slotForces.data();
     glm::dvec3* v = state.velocities.data();
-    // Bars resist their ends' relative speed along them.
-    forEachIndex(model.bars.size(), [&](std::size_t i) {
-      const std::uint32_t a = model.bars[i][0], b = model.bars[i][1];
-      const glm::dvec3 delta = x[b] - x[a];
-      const double length = glm::length(delta);
-      if (length == 0.0) return;
-      const glm::dvec3 along = delta / length;
-      const double damping =
-          2.0 * options.dampingRatio *
-          std::sqrt(model.barStiffness[i] * std::min(model.mass[a], model.mass[b]));
-      const glm::dvec3 force = (damping * glm::dot(v[b] - v[a], along)) * along;
-      forces[2 * i] += force;
-      forces[2 * i + 1] -= force;
-    });
     glm::dvec3* positions = state.positions.data();
     forEachIndex(model.vertexCount(), [&](std::size_t vertex) {
       if (model.pinned[vertex]) return;
