@@ -261,8 +261,9 @@ void addSimulateCommand(CLI::App& app) {
       if (options->settle) {
         const StaticResult result = settle(model, amount, state);
         char text[96];
-        std::snprintf(text, sizeof text, "%s, residual %.1e",
-                      result.converged ? "settled" : "NOT settled", result.residual);
+        std::snprintf(text, sizeof text, "%s in %zu iterations, residual %.1e",
+                      result.converged ? "settled" : "NOT settled", result.iterations,
+                      result.residual);
         solved = text;
       } else {
         stepDynamic(model, amount, state, options->steps);
