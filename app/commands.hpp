@@ -66,6 +66,8 @@ void addDistanceCommand(CLI::App& app);
 // replay_commands.cpp: recorded input.
 void addReplayCommand(CLI::App& app);
 void addRecordScriptCommand(CLI::App& app);
+// simulate_commands.cpp: the folding simulation.
+void addSimulateCommand(CLI::App& app);
 // render_commands.cpp: headless Vulkan renders.
 void addRenderCommand(CLI::App& app);
 // The folded form, iso view, for a printed page's cover: false (the reason on standard error)

@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   curvefold::cli::addReplayCommand(app);
   curvefold::cli::addRecordScriptCommand(app);
   curvefold::cli::addRenderCommand(app);
+  curvefold::cli::addSimulateCommand(app);
   curvefold::cli::addDesignCommand(app);
   curvefold::cli::addXrCommand(app);
   try {

@@ -46,6 +46,10 @@
 #include "engine/io/output_set.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
+#include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/design_input.hpp"
+#include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sim_input/recording.hpp"
@@ -440,6 +444,65 @@ void exportDesign(const PyDesign& design, const py::object& foldArg, const py::o
   outputs.write();
 }
 
+// Design.simulate: the bar-and-hinge simulation (engine/simulation) of the design's flat sheet at
+// a fold amount, as numpy arrays.
+py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
+                        const py::object& settleArg, const py::object& paperArg,
+                        const py::object& stepsArg) {
+  const double percent = number(percentArg, "percent");
+  const bool settleState = flag(settleArg, "settle");
+  std::optional<double> paperMm;
+  if (!paperArg.is_none()) paperMm = number(paperArg, "paper");
+  const std::int64_t steps = integer(stepsArg, "steps");
+  if (!(percent >= 0.0 && percent <= 100.0))
+    throw std::invalid_argument("percent: must be from 0 to 100");
+  if (steps < 0 || steps > 10'000'000)
+    throw std::invalid_argument("steps: must lie in 0 to 10000000");
+  ModelOptions options;
+  if (paperMm) {
+    if (!(*paperMm > 0.0 && *paperMm <= 10.0))
+      throw std::invalid_argument("paper: the thickness must be above 0 and at most 10 mm");
+    options.mode = SimulationMode::Paper;
+    options.paper.thickness = *paperMm * 1e-3;
+  }
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
+  BarHingeModel model;
+  SimulationState state;
+  StaticResult result;
+  {
+    py::gil_scoped_release release;
+    model = buildModel(designPattern(*sheet).pattern, options);
+    state = flatState(model);
+    if (settleState)
+      result = settle(model, percent / 100.0, state);
+    else
+      stepDynamic(model, percent / 100.0, state, static_cast<std::size_t>(steps));
+  }
+  const std::size_t n = state.positions.size(), e = model.bars.size();
+  py::array_t<double> vertices({py::ssize_t(n), py::ssize_t(3)});
+  auto v = vertices.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) v(i, c) = state.positions[i][c];
+  py::array_t<std::uint32_t> edges({py::ssize_t(e), py::ssize_t(2)});
+  auto ed = edges.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < e; ++i) {
+    ed(i, 0) = model.bars[i][0];
+    ed(i, 1) = model.bars[i][1];
+  }
+  py::dict out;
+  out["vertices"] = vertices;
+  out["edges"] = edges;
+  out["strain"] = py::array_t<double>(py::ssize_t(e), edgeStrain(model, state.positions).data());
+  out["crease_angle_error"] = py::array_t<double>(
+      py::ssize_t(e),
+      creaseAngleError(model, state.positions, percent / 100.0, state.hingeAngles).data());
+  out["converged"] = settleState ? result.converged : false;
+  out["residual"] =
+      settleState ? result.residual
+                  : staticResidual(model, state.positions, percent / 100.0, state.hingeAngles);
+  return out;
+}
+
 py::array_t<std::uint8_t> renderDesign(const PyDesign& design, const py::object& widthArg,
                                        const py::object& heightArg, const py::object& viewArg,
                                        const py::object& creasePatternArg) {
@@ -756,6 +819,12 @@ PYBIND11_MODULE(_curvefold, m) {
             saveDesign(whole, path);
           },
           py::arg("path"), "Writes the design file atomically (the same bytes as the command line)")
+      .def("simulate", &simulateDesign, py::kw_only(), py::arg("percent") = 100.0,
+           py::arg("settle") = true, py::arg("paper") = py::none(), py::arg("steps") = 2000,
+           "Folds the design's flat sheet to `percent` with the bar-and-hinge simulation: to "
+           "equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM for "
+           "paper mode. Returns a dict: vertices (n, 3), edges (e, 2), strain (e,), "
+           "crease_angle_error (e,) in degrees, converged, residual")
       .def(
           "fold",
           [](PyDesign& d, const py::object& grab, const py::object& to) {

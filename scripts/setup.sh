@@ -15,6 +15,8 @@ packages=(
   libtbb-dev libnlopt-cxx-dev libnanoflann-dev
   # SVG crease patterns from other tools (Origami Simulator's convention): an XML parser
   libxml2-dev
+  # the folding simulation's static solver (sparse LDL^T)
+  libeigen3-dev
   # the printable crease pattern (PDF)
   libcairo2-dev
   # the main job's animated picture of a replay (GIF)

@@ -1,0 +1,309 @@
+// `curvefold simulate`: folds a design's flat sheet (or a crease pattern) with the bar-and-hinge
+// simulation (engine/simulation) to a fold amount or through a sequence of them, and writes the
+// folded state as OBJ, FOLD, glTF and PNG, or a folder of frames.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "app/commands.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/crease_pattern.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/fold_format.hpp"
+#include "engine/io/gltf_writer.hpp"
+#include "engine/io/obj_writer.hpp"
+#include "engine/io/output_set.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/image.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/design_input.hpp"
+#include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/static_solver.hpp"
+#include "engine/text/decimal.hpp"
+#include "engine/text/excerpt.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::size_t kMaxFrames = 1000;
+constexpr std::size_t kMaxSteps = 10'000'000;
+
+// What is simulated: the pattern, and for a design its sheet (tags, seams).
+struct SimulationInput {
+  CreasePattern pattern;
+  Sheet sheet;  // positions are replaced by each simulated state
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> seams;
+};
+
+// The sheet a crease pattern is written as: development from the pattern, creases and cuts tagged.
+Sheet sheetOfPattern(const CreasePattern& pattern) {
+  Sheet sheet;
+  sheet.development = pattern.vertices;
+  sheet.positions.reserve(pattern.vertices.size());
+  for (const glm::dvec2& p : pattern.vertices) sheet.positions.emplace_back(p, 0.0);
+  for (const auto& t : pattern.triangles) sheet.triangles.push_back({t[0], t[1], t[2]});
+  for (const CreasePatternEdge& e : pattern.edges) {
+    const Edge edge = Edge::of(e.a, e.b);
+    if (e.assignment == CreaseAssignment::Mountain || e.assignment == CreaseAssignment::Valley)
+      sheet.tags.push_back({edge, EdgeKind::Crease});
+    else if (e.assignment == CreaseAssignment::Cut)
+      sheet.tags.push_back({edge, EdgeKind::Slit});
+  }
+  sheet.normalizeTags();
+  return sheet;
+}
+
+// The hook for crease patterns from other tools (FOLD 1.1/1.2 and Origami Simulator's SVG): the
+// readers in engine/io/crease_pattern_*.hpp produce a CreasePattern, which this command simulates
+// as it does a design's; until they are in the build, such a file is refused by name.
+CreasePattern readCreasePatternFile(const fs::path& path) {
+  throw UsageError("simulate: " + path.filename().string() +
+                   ": reading FOLD and SVG crease patterns is not in this build; give a "
+                   "*.curvefold.json design");
+}
+
+SimulationInput readInput(const fs::path& path) {
+  SimulationInput input;
+  const std::string name = path.filename().string();
+  const auto endsWith = [&](std::string_view suffix) {
+    return name.size() >= suffix.size() &&
+           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if (endsWith(".fold") || endsWith(".svg")) {
+    input.pattern = readCreasePatternFile(path);
+    input.sheet = sheetOfPattern(input.pattern);
+    return input;
+  }
+  input.sheet = buildSheet(loadDesign(path), path.string());
+  DesignPattern design = designPattern(input.sheet);
+  input.pattern = std::move(design.pattern);
+  input.seams = std::move(design.seams);
+  return input;
+}
+
+// "P" or "FROM:TO:N" (N fold amounts from FROM to TO, both included), percent.
+std::vector<double> parsePercents(const std::string& text) {
+  const auto bad = [&] {
+    return UsageError(
+        "--percent: expected P or FROM:TO:N with percents from 0 to 100 and N from "
+        "2 to " +
+        std::to_string(kMaxFrames) + ", got " + quotedExcerpt(text));
+  };
+  const auto percent = [&](std::string_view part) {
+    double value = 0.0;
+    if (!readDecimal(part, value) || !(value >= 0.0 && value <= 100.0)) throw bad();
+    return value;
+  };
+  const std::size_t first = text.find(':');
+  if (first == std::string::npos) return {percent(text)};
+  const std::size_t second = text.find(':', first + 1);
+  if (second == std::string::npos) throw bad();
+  const double from = percent(std::string_view(text).substr(0, first));
+  const double to = percent(std::string_view(text).substr(first + 1, second - first - 1));
+  std::size_t count = 0;
+  if (!readDecimal(std::string_view(text).substr(second + 1), count) || count < 2 ||
+      count > kMaxFrames)
+    throw bad();
+  std::vector<double> percents;
+  for (std::size_t i = 0; i < count; ++i)
+    percents.push_back(from +
+                       (to - from) * static_cast<double>(i) / static_cast<double>(count - 1));
+  return percents;
+}
+
+glm::dvec2 parsePoint(const std::string& text, const std::string& option) {
+  const std::size_t comma = text.find(',');
+  glm::dvec2 p;
+  if (comma == std::string::npos || !readDecimal(std::string_view(text).substr(0, comma), p.x) ||
+      !readDecimal(std::string_view(text).substr(comma + 1), p.y) || !std::isfinite(p.x) ||
+      !std::isfinite(p.y))
+    throw UsageError(option + ": expected X,Y on the flat sheet in metres, got " +
+                     quotedExcerpt(text));
+  return p;
+}
+
+std::uint32_t nearestVertex(const CreasePattern& pattern, const glm::dvec2& p) {
+  std::uint32_t best = 0;
+  for (std::uint32_t v = 1; v < pattern.vertices.size(); ++v)
+    if (glm::distance(pattern.vertices[v], p) < glm::distance(pattern.vertices[best], p)) best = v;
+  return best;
+}
+
+double largestMagnitude(const std::vector<double>& values) {
+  double largest = 0.0;
+  for (double v : values) largest = std::max(largest, std::abs(v));
+  return largest;
+}
+
+void writePng(const Sheet& sheet, const fs::path& path, HeadlessRenderer& renderer, float aspect) {
+  writeFileAtomically(
+      path, encodePng(renderer.render(sceneForSheet(sheet, ViewPreset::Iso, aspect, false))));
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "simulate",
+      "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
+  struct Options {
+    std::string input, percent, obj, fold, gltf, png, frames;
+    bool settle = false;
+    double paperMm = 0.0, modulusGpa = 4.0;
+    std::size_t steps = 2000;
+    std::vector<std::string> pins, glue;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("INPUT", options->input, "Design (*.curvefold.json)")->required();
+  command
+      ->add_option("--percent", options->percent,
+                   "Fold amount in percent, P, or a sequence FROM:TO:N (N states, both ends)")
+      ->required();
+  command->add_flag("--settle", options->settle,
+                    "Solve each state to equilibrium (static solver) instead of --steps steps of "
+                    "the damped dynamic solver");
+  command->add_option("--steps", options->steps,
+                      "Dynamic steps per state without --settle (default 2000)");
+  CLI::Option* paper = command->add_option(
+      "--paper", options->paperMm,
+      "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
+  command->add_option("--modulus", options->modulusGpa,
+                      "With --paper: the paper's Young's modulus in GPa (default 4)");
+  command->add_option(
+      "--pin", options->pins,
+      "X,Y: hold the vertex nearest this flat-sheet point (metres) where it starts; "
+      "repeatable");
+  command->add_option("--glue", options->glue,
+                      "X1,Y1:X2,Y2: pull the vertices nearest these two flat-sheet points "
+                      "together, or `slits`: glue every slit of the design shut; repeatable");
+  CLI::Option* obj = command->add_option("--obj", options->obj, "OBJ of the (last) state");
+  CLI::Option* fold =
+      command->add_option("--fold", options->fold, "FOLD 1.2 of the (last) state (3D frame)");
+  CLI::Option* gltf = command->add_option("--gltf", options->gltf, "glTF 2.0 binary (.glb)");
+  CLI::Option* png = command->add_option("--png", options->png, "PNG picture (headless Vulkan)");
+  CLI::Option* frames = command->add_option("--frames", options->frames,
+                                            "Folder for frame_NNNN.png and .obj, one per state");
+  command->callback([options, paper, obj, fold, gltf, png, frames] {
+    const std::vector<double> percents = parsePercents(options->percent);
+    if (obj->count() + fold->count() + gltf->count() + png->count() + frames->count() == 0)
+      throw UsageError("simulate: name at least one of --obj, --fold, --gltf, --png, --frames");
+    if (options->steps == 0 || options->steps > kMaxSteps)
+      throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
+    ModelOptions modelOptions;
+    if (paper->count()) {
+      if (!(options->paperMm > 0.0 && options->paperMm <= 10.0))
+        throw UsageError("--paper: the thickness must be above 0 and at most 10 mm");
+      if (!(options->modulusGpa > 0.0 && options->modulusGpa <= 1000.0))
+        throw UsageError("--modulus: must be above 0 and at most 1000 GPa");
+      modelOptions.mode = SimulationMode::Paper;
+      modelOptions.paper.thickness = options->paperMm * 1e-3;
+      modelOptions.paper.youngsModulus = options->modulusGpa * 1e9;
+    }
+    for (const std::string* output : {&options->obj, &options->fold, &options->gltf, &options->png})
+      if (!output->empty() && *output != "-" && sameFile(*output, options->input))
+        throw UsageError("simulate: " + *output + " is the input; write to another file");
+
+    SimulationInput input = readInput(options->input);
+    for (const std::string& pin : options->pins)
+      modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin")));
+    for (const std::string& glue : options->glue) {
+      if (glue == "slits") {
+        if (input.seams.empty()) throw UsageError("--glue slits: the design has no slit");
+        modelOptions.glue.insert(modelOptions.glue.end(), input.seams.begin(), input.seams.end());
+        continue;
+      }
+      const std::size_t colon = glue.find(':');
+      if (colon == std::string::npos)
+        throw UsageError("--glue: expected X1,Y1:X2,Y2 or slits, got " + quotedExcerpt(glue));
+      const std::uint32_t a =
+          nearestVertex(input.pattern, parsePoint(glue.substr(0, colon), "--glue"));
+      const std::uint32_t b =
+          nearestVertex(input.pattern, parsePoint(glue.substr(colon + 1), "--glue"));
+      if (a == b) throw UsageError("--glue: both points are nearest the same vertex");
+      modelOptions.glue.emplace_back(a, b);
+    }
+    BarHingeModel model;
+    try {
+      model = buildModel(input.pattern, modelOptions);
+    } catch (const SimulationInputError& e) {
+      throw UsageError("simulate: " + fs::path(options->input).filename().string() + ": " +
+                       e.what());
+    }
+
+    // The renderer first: a machine without Vulkan fails before any work.
+    std::unique_ptr<HeadlessRenderer> renderer;
+    constexpr std::uint32_t kWidth = 1280, kHeight = 720;
+    if (png->count() || frames->count()) {
+      HeadlessOptions renderOptions;
+      renderOptions.width = kWidth;
+      renderOptions.height = kHeight;
+      renderer = std::make_unique<HeadlessRenderer>(renderOptions);
+    }
+    const float aspect = float(kWidth) / float(kHeight);
+
+    SimulationState state = flatState(model);
+    std::vector<Sheet> frameSheets;
+    frameSheets.reserve(frames->count() ? percents.size() : 0);
+    Sheet sheet = input.sheet;
+    for (std::size_t i = 0; i < percents.size(); ++i) {
+      const double amount = percents[i] / 100.0;
+      std::string solved;
+      if (options->settle) {
+        const StaticResult result = settle(model, amount, state);
+        char text[96];
+        std::snprintf(text, sizeof text, "%s in %zu iterations, residual %.1e",
+                      result.converged ? "settled" : "NOT settled", result.iterations,
+                      result.residual);
+        solved = text;
+      } else {
+        stepDynamic(model, amount, state, options->steps);
+        solved = std::to_string(options->steps) + " dynamic steps";
+      }
+      char line[200];
+      std::snprintf(
+          line, sizeof line,
+          "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees\n", percents[i],
+          solved.c_str(), largestMagnitude(edgeStrain(model, state.positions)),
+          largestMagnitude(creaseAngleError(model, state.positions, amount, state.hingeAngles)));
+      statusFor({options->obj, options->fold, options->gltf, options->png}) << line;
+      sheet.positions = state.positions;
+      if (frames->count()) frameSheets.push_back(sheet);
+    }
+
+    OutputSet outputs;
+    if (obj->count()) outputs.add(options->obj, [&](const auto& at) { writeObj(sheet, at); });
+    if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });
+    if (gltf->count()) outputs.add(options->gltf, [&](const auto& at) { writeGlb(sheet, at); });
+    if (png->count())
+      outputs.add(options->png, [&](const auto& at) { writePng(sheet, at, *renderer, aspect); });
+    const fs::path folder = options->frames;
+    for (std::size_t i = 0; i < frameSheets.size(); ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04zu", i);
+      const Sheet* frameSheet = &frameSheets[i];
+      outputs.add(folder / (std::string(name) + ".obj"),
+                  [frameSheet](const auto& at) { writeObj(*frameSheet, at); });
+      outputs.add(folder / (std::string(name) + ".png"), [&, frameSheet](const auto& at) {
+        writePng(*frameSheet, at, *renderer, aspect);
+      });
+    }
+    outputs.write(frames->count() ? folder : fs::path());
+    for (const std::string* path :
+         {&options->obj, &options->fold, &options->gltf, &options->png, &options->frames})
+      if (!path->empty())
+        statusFor({options->obj, options->fold, options->gltf, options->png})
+            << "wrote " << *path << "\n";
+  });
+}
+
+}  // namespace curvefold::cli

@@ -1,0 +1,374 @@
+#include "engine/simulation/bar_hinge_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+namespace curvefold {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+std::string edgeName(std::uint32_t a, std::uint32_t b) {
+  return "edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+struct EdgeSides {
+  std::uint32_t left = kNoTriangle, right = kNoTriangle;
+  static constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+};
+
+double wrapToPi(double angle) {
+  return std::remainder(angle, 2.0 * std::numbers::pi);
+}
+
+}  // namespace
+
+double hingeAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                  const glm::dvec3& d, double previous) {
+  const glm::dvec3 n1 = glm::cross(b - a, c - a);
+  const glm::dvec3 n2 = glm::cross(a - b, d - b);
+  const glm::dvec3 edge = b - a;
+  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
+  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) return previous;
+  // creases.hpp's foldAngleDegrees with unnormalized vectors: atan2 needs only their ratio.
+  const double sine = -glm::dot(glm::cross(n1, n2), edge) / std::sqrt(ee);
+  const double cosine = glm::dot(n1, n2);
+  const double raw = std::atan2(sine, cosine);
+  return previous + wrapToPi(raw - previous);
+}
+
+std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dvec3& b,
+                                             const glm::dvec3& c, const glm::dvec3& d) {
+  const glm::dvec3 edge = b - a;
+  const glm::dvec3 n1 = glm::cross(edge, c - a);
+  const glm::dvec3 n2 = glm::cross(a - b, d - b);
+  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
+  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) return {};
+  const double length = std::sqrt(ee);
+  // A wing moving along its face's normal turns the face by 1 / its height (valley positive).
+  const glm::dvec3 gc = n1 * (length / n1n1);
+  const glm::dvec3 gd = n2 * (length / n2n2);
+  // The edge's ends share the rest so the gradient is blind to translation and rotation.
+  const double tc = glm::dot(c - a, edge) / ee;
+  const double td = glm::dot(d - a, edge) / ee;
+  return {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
+}
+
+double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                              const glm::dvec3& d, double previous,
+                              std::array<glm::dvec3, 4>& gradient) {
+  const glm::dvec3 edge = b - a;
+  const glm::dvec3 n1 = glm::cross(edge, c - a);
+  const glm::dvec3 n2 = glm::cross(a - b, d - b);
+  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
+  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) {
+    gradient = {};
+    return previous;
+  }
+  const double length = std::sqrt(ee);
+  const double raw = std::atan2(-glm::dot(glm::cross(n1, n2), edge) / length, glm::dot(n1, n2));
+  const glm::dvec3 gc = n1 * (length / n1n1);
+  const glm::dvec3 gd = n2 * (length / n2n2);
+  const double tc = glm::dot(c - a, edge) / ee;
+  const double td = glm::dot(d - a, edge) / ee;
+  gradient = {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
+  return previous + wrapToPi(raw - previous);
+}
+
+BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
+  const std::size_t n = pattern.vertices.size();
+  BarHingeModel model;
+  model.mode = options.mode;
+  model.flatPositions.reserve(n);
+  for (const glm::dvec2& p : pattern.vertices) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      throw SimulationInputError("a vertex position is not a finite number");
+    model.flatPositions.emplace_back(p.x, p.y, 0.0);
+  }
+  model.triangles = pattern.triangles;
+
+  // Which triangle runs each edge a->b (left) and b->a (right).
+  std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeSides> sides;
+  std::vector<double> area(pattern.triangles.size());
+  for (std::size_t t = 0; t < pattern.triangles.size(); ++t) {
+    const auto& tri = pattern.triangles[t];
+    for (std::uint32_t v : tri)
+      if (v >= n)
+        throw SimulationInputError("triangle " + std::to_string(t) + " names vertex " +
+                                   std::to_string(v) + ", past the last");
+    const glm::dvec2 e1 = pattern.vertices[tri[1]] - pattern.vertices[tri[0]];
+    const glm::dvec2 e2 = pattern.vertices[tri[2]] - pattern.vertices[tri[0]];
+    area[t] = 0.5 * (e1.x * e2.y - e1.y * e2.x);
+    if (!(area[t] > 0.0))
+      throw SimulationInputError("triangle " + std::to_string(t) + " is degenerate or clockwise");
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = tri[k], v = tri[(k + 1) % 3];
+      EdgeSides& s = sides[{std::min(u, v), std::max(u, v)}];
+      std::uint32_t& slot = u < v ? s.left : s.right;
+      if (slot != EdgeSides::kNoTriangle)
+        throw SimulationInputError(edgeName(std::min(u, v), std::max(u, v)) +
+                                   " has more than two triangles or two of one orientation");
+      slot = static_cast<std::uint32_t>(t);
+    }
+  }
+  if (sides.size() != pattern.edges.size())
+    throw SimulationInputError("the pattern lists " + std::to_string(pattern.edges.size()) +
+                               " edges but its triangles have " + std::to_string(sides.size()));
+
+  // Lumped masses, mean 1, so the explicit step depends on stiffness and shape, not on units.
+  model.mass.assign(n, 0.0);
+  double totalArea = 0.0;
+  for (std::size_t t = 0; t < pattern.triangles.size(); ++t) {
+    for (std::uint32_t v : pattern.triangles[t]) model.mass[v] += area[t] / 3.0;
+    totalArea += area[t];
+  }
+  for (double& m : model.mass) {
+    m *= static_cast<double>(n) / totalArea;
+    if (m == 0.0) m = 1.0;  // a vertex no triangle uses: it only drifts with glue
+  }
+
+  const PaperProperties& paper = options.paper;
+  const bool paperMode = options.mode == SimulationMode::Paper;
+  if (paperMode &&
+      !(paper.thickness > 0.0 && paper.youngsModulus > 0.0 && paper.poissonRatio > -1.0 &&
+        paper.poissonRatio < 0.5 && paper.creaseLength > 0.0))
+    throw SimulationInputError("paper thickness, modulus and crease length must be positive");
+  const double bendingStiffness = paper.youngsModulus * std::pow(paper.thickness, 3) /
+                                  (12.0 * (1.0 - paper.poissonRatio * paper.poissonRatio));
+
+  model.bars.reserve(pattern.edges.size());
+  double maxBar = 0.0;
+  for (std::size_t e = 0; e < pattern.edges.size(); ++e) {
+    const CreasePatternEdge& edge = pattern.edges[e];
+    const auto key = std::make_pair(std::min(edge.a, edge.b), std::max(edge.a, edge.b));
+    const auto found = sides.find(key);
+    if (found == sides.end())
+      throw SimulationInputError(edgeName(edge.a, edge.b) + " is on no triangle");
+    if (!std::isfinite(edge.foldAngleDegrees))
+      throw SimulationInputError(edgeName(edge.a, edge.b) + " has a fold angle that is not finite");
+    const EdgeSides& s = found->second;
+    const double length =
+        glm::distance(model.flatPositions[key.first], model.flatPositions[key.second]);
+    const double adjacentArea = (s.left != EdgeSides::kNoTriangle ? area[s.left] : 0.0) +
+                                (s.right != EdgeSides::kNoTriangle ? area[s.right] : 0.0);
+    model.bars.push_back({key.first, key.second});
+    model.barLength.push_back(length);
+    const double barK =
+        paperMode ? paper.youngsModulus * paper.thickness * (adjacentArea / 3.0) / (length * length)
+                  : options.axialStiffness / length;
+    model.barStiffness.push_back(barK);
+    maxBar = std::max(maxBar, barK);
+
+    if (s.left == EdgeSides::kNoTriangle || s.right == EdgeSides::kNoTriangle) continue;
+    const auto& left = pattern.triangles[s.left];
+    const auto& right = pattern.triangles[s.right];
+    auto opposite = [](const std::array<std::uint32_t, 3>& tri, std::uint32_t u, std::uint32_t v) {
+      for (std::uint32_t w : tri)
+        if (w != u && w != v) return w;
+      return tri[0];
+    };
+    Hinge hinge{key.first, key.second, opposite(left, key.first, key.second),
+                opposite(right, key.first, key.second)};
+    const bool crease = edge.assignment == CreaseAssignment::Mountain ||
+                        edge.assignment == CreaseAssignment::Valley;
+    double targetDegrees = edge.foldAngleDegrees;
+    if (crease && targetDegrees == 0.0)  // an M or V with no angle: folded flat, as FOLD says
+      targetDegrees = edge.assignment == CreaseAssignment::Valley ? 180.0 : -180.0;
+    // A sliver (a triangle lower than half its hinge edge) turns a lot for a small move of its
+    // wing; its hinge is weakened in proportion, or its forces would swamp every other.
+    const double sliver =
+        std::min(1.0, 4.0 * std::min(area[s.left], area[s.right]) / (length * length));
+    double stiffness = 0.0;
+    if (crease) {
+      stiffness = (paperMode ? bendingStiffness * length / paper.creaseLength
+                             : options.creaseStiffness * length) *
+                  sliver;
+    } else {
+      if (paperMode) targetDegrees = 0.0;  // paper's rest state is flat
+      stiffness = (paperMode ? 6.0 * bendingStiffness : options.facetStiffness * length) * sliver;
+    }
+    model.hinges.push_back(hinge);
+    model.hingeEdge.push_back(static_cast<std::uint32_t>(e));
+    model.hingeTriangles.push_back({s.left, s.right});
+    model.hingeTarget.push_back(targetDegrees / kDegrees);
+    model.hingeCrease.push_back(crease ? 1 : 0);
+    model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
+    model.hingeStiffness.push_back(stiffness);
+  }
+
+  model.pinned.assign(n, 0);
+  for (std::uint32_t v : options.pins) {
+    if (v >= n)
+      throw SimulationInputError("pin names vertex " + std::to_string(v) + ", past the last");
+    model.pinned[v] = 1;
+  }
+  for (const auto& [i, j] : options.glue) {
+    if (i >= n || j >= n || i == j)
+      throw SimulationInputError("glue names vertices " + std::to_string(i) + " and " +
+                                 std::to_string(j));
+    model.glue.push_back({i, j});
+  }
+  // Glue as stiff as the stiffest bar: seams close to within bar strain.
+  model.glueStiffness = maxBar;
+
+  // The gather lists: each vertex's slots in slot order (counting sort).
+  model.hingeSlot0 = 2 * model.bars.size();
+  model.glueSlot0 = model.hingeSlot0 + 4 * model.hinges.size();
+  model.slotCount = model.glueSlot0 + 2 * model.glue.size();
+  std::vector<std::uint32_t> slotVertex(model.slotCount);
+  for (std::size_t i = 0; i < model.bars.size(); ++i) {
+    slotVertex[2 * i] = model.bars[i][0];
+    slotVertex[2 * i + 1] = model.bars[i][1];
+  }
+  for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+    const Hinge& h = model.hinges[j];
+    const std::size_t s = model.hingeSlot0 + 4 * j;
+    slotVertex[s] = h.a;
+    slotVertex[s + 1] = h.b;
+    slotVertex[s + 2] = h.c;
+    slotVertex[s + 3] = h.d;
+  }
+  for (std::size_t g = 0; g < model.glue.size(); ++g) {
+    slotVertex[model.glueSlot0 + 2 * g] = model.glue[g][0];
+    slotVertex[model.glueSlot0 + 2 * g + 1] = model.glue[g][1];
+  }
+  model.gatherOffsets.assign(n + 1, 0);
+  for (std::uint32_t v : slotVertex) ++model.gatherOffsets[v + 1];
+  for (std::size_t v = 0; v < n; ++v) model.gatherOffsets[v + 1] += model.gatherOffsets[v];
+  model.gatherSlots.resize(model.slotCount);
+  std::vector<std::uint32_t> fill(model.gatherOffsets.begin(), model.gatherOffsets.end() - 1);
+  for (std::size_t s = 0; s < model.slotCount; ++s)
+    model.gatherSlots[fill[slotVertex[s]]++] = static_cast<std::uint32_t>(s);
+  return model;
+}
+
+std::vector<double> hingeAngles(const BarHingeModel& model,
+                                const std::vector<glm::dvec3>& positions,
+                                const std::vector<double>& previous) {
+  std::vector<double> angles(model.hinges.size());
+  for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+    const Hinge& h = model.hinges[j];
+    angles[j] = hingeAngle(positions[h.a], positions[h.b], positions[h.c], positions[h.d],
+                           previous.empty() ? 0.0 : previous[j]);
+  }
+  return angles;
+}
+
+std::vector<double> hingeTargets(const BarHingeModel& model, double foldAmount) {
+  std::vector<double> targets(model.hinges.size());
+  for (std::size_t j = 0; j < targets.size(); ++j) targets[j] = model.target(j, foldAmount);
+  return targets;
+}
+
+double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                   const std::vector<double>& targets, const std::vector<double>& previous) {
+  double energy = 0.0;
+  for (std::size_t i = 0; i < model.bars.size(); ++i) {
+    const double stretch = glm::distance(positions[model.bars[i][0]], positions[model.bars[i][1]]) -
+                           model.barLength[i];
+    energy += 0.5 * model.barStiffness[i] * stretch * stretch;
+  }
+  for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+    const Hinge& h = model.hinges[j];
+    const double angle = hingeAngle(positions[h.a], positions[h.b], positions[h.c], positions[h.d],
+                                    previous.empty() ? 0.0 : previous[j]);
+    const double error = angle - targets[j];
+    energy += 0.5 * model.hingeStiffness[j] * error * error;
+  }
+  for (const auto& [i, k] : model.glue) {
+    const glm::dvec3 gap = positions[i] - positions[k];
+    energy += 0.5 * model.glueStiffness * glm::dot(gap, gap);
+  }
+  return energy;
+}
+
+void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                   const std::vector<double>& targets, const std::vector<double>& previous,
+                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,
+                   const glm::dvec3* velocities, double dampingRatio) {
+  slotForces.resize(model.slotCount);
+  angles.resize(model.hinges.size());
+  const glm::dvec3* x = positions.data();
+  glm::dvec3* forces = slotForces.data();
+  forEachIndex(model.bars.size(), [&](std::size_t i) {
+    const std::uint32_t a = model.bars[i][0], b = model.bars[i][1];
+    const glm::dvec3 delta = x[b] - x[a];
+    const double length = glm::length(delta);
+    glm::dvec3 force(0.0);  // on a; b gets the opposite
+    if (length > 0.0 && velocities) {
+      const double damping =
+          2.0 * dampingRatio *
+          std::sqrt(model.barStiffness[i] * std::min(model.mass[a], model.mass[b]));
+      const double pull = model.barStiffness[i] * (length - model.barLength[i]) +
+                          damping * glm::dot(velocities[b] - velocities[a], delta) / length;
+      force = (pull / length) * delta;
+    } else if (length > 0.0)
+      force = (model.barStiffness[i] * (length - model.barLength[i]) / length) * delta;
+    forces[2 * i] = force;
+    forces[2 * i + 1] = -force;
+  });
+  forEachIndex(model.hinges.size(), [&](std::size_t j) {
+    const Hinge& h = model.hinges[j];
+    std::array<glm::dvec3, 4> gradient;
+    const double angle = hingeAngleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d],
+                                                previous.empty() ? 0.0 : previous[j], gradient);
+    angles[j] = angle;
+    const double torque = -model.hingeStiffness[j] * (angle - targets[j]);
+    glm::dvec3* slot = forces + model.hingeSlot0 + 4 * j;
+    for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];
+  });
+  forEachIndex(model.glue.size(), [&](std::size_t g) {
+    const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
+    const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
+    forces[model.glueSlot0 + 2 * g] = force;
+    forces[model.glueSlot0 + 2 * g + 1] = -force;
+  });
+}
+
+void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,
+                  std::vector<glm::dvec3>& vertexForces) {
+  vertexForces.resize(model.vertexCount());
+  forEachIndex(model.vertexCount(), [&](std::size_t v) {
+    glm::dvec3 total(0.0);
+    if (!model.pinned[v])
+      for (std::uint32_t s = model.gatherOffsets[v]; s < model.gatherOffsets[v + 1]; ++s)
+        total += slotForces[model.gatherSlots[s]];
+    vertexForces[v] = total;
+  });
+}
+
+SimulationState flatState(const BarHingeModel& model) {
+  SimulationState state;
+  state.positions = model.flatPositions;
+  state.velocities.assign(model.vertexCount(), glm::dvec3(0.0));
+  state.hingeAngles = hingeAngles(model, state.positions);
+  return state;
+}
+
+std::vector<double> edgeStrain(const BarHingeModel& model,
+                               const std::vector<glm::dvec3>& positions) {
+  std::vector<double> strain(model.bars.size());
+  for (std::size_t i = 0; i < model.bars.size(); ++i)
+    strain[i] = glm::distance(positions[model.bars[i][0]], positions[model.bars[i][1]]) /
+                    model.barLength[i] -
+                1.0;
+  return strain;
+}
+
+std::vector<double> creaseAngleError(const BarHingeModel& model,
+                                     const std::vector<glm::dvec3>& positions, double foldAmount,
+                                     const std::vector<double>& previous) {
+  std::vector<double> error(model.bars.size(), 0.0);
+  const std::vector<double> angles = hingeAngles(model, positions, previous);
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j])
+      error[model.hingeEdge[j]] = (angles[j] - model.target(j, foldAmount)) * kDegrees;
+  return error;
+}
+
+}  // namespace curvefold

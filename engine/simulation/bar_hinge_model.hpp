@@ -1,0 +1,207 @@
+// The bar-and-hinge model of a folding sheet (docs/design.md, "Simulating the fold"), after
+// Ghassaei, Demaine & Gershenfeld, "Fast, Interactive Origami Simulation using GPU Computation"
+// (7OSME, 2018): every edge of the triangulated crease pattern is an axial bar that keeps its
+// length; every interior edge is a hinge between its two triangles, driven toward a target fold
+// angle. Crease hinges aim at their crease's angle times the fold amount (0 to 1); facet hinges
+// aim at their facet's angle (0: flat, or in design mode the design's own bending) and either
+// keep the faces stiff (design mode) or bend with paper's stiffness (paper mode).
+//
+// Energy: bars 1/2 k (l - L)^2, hinges 1/2 k (theta - target)^2, glued vertex pairs 1/2 k |xi -
+// xj|^2; pinned vertices do not move. The dihedral angle theta is the FOLD convention of
+// creases.hpp (positive valley), tracked through +-180 degrees by unwrapping against the last
+// known angle (hingeAngle's `previous`).
+//
+// Layout: flat index arrays only, and each element's force goes into its own slots of one force
+// buffer, which every vertex then sums over a fixed list (gatherOffsets/gatherSlots): no atomics,
+// no pointers, the same result for any thread count, and a compute-shader port is one kernel per
+// element kind plus one per vertex.
+//
+// Stiffnesses: design mode uses nominal ones (bars axialStiffness / L, hinges stiffness x edge
+// length; Origami Simulator's form); paper mode uses paper's: bars E t A_e / L^2 (A_e: a third of
+// the edge's triangles' area), bending edges 6 D (discrete shells' 3 D |e|^2 / (A1 + A2), Grinspun
+// et al. 2003, for triangles of height |e| / 2 on each side) with D = E t^3 / (12 (1 - nu^2)),
+// creases D |e| / creaseLength. A hinge with a triangle lower than |e| / 2 (a sliver, which
+// reflection cuts make) is weakened by that ratio: its angle turns by 1 / height for a unit move of
+// the wing, and unweakened its forces would swamp every other and stall the solvers.
+//
+// Known limits: faces never collide (no self-contact); a hinge whose triangle degenerates has no
+// angle (its force is 0 while it stays degenerate).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <glm/vec3.hpp>
+
+#include "engine/io/crease_pattern.hpp"
+
+namespace curvefold {
+
+// A crease pattern the model cannot be built from (an edge with three triangles, triangles of
+// opposite orientation across an edge, an edge no triangle has, a value that is not finite).
+class SimulationInputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class SimulationMode : std::uint8_t {
+  Design,  // every edge driven to its angle x fold amount, stiff faces
+  Paper,   // only creases driven; facets bend with paper's stiffness toward flat
+};
+
+// Paper's stiffness (paper mode). Defaults: 0.1 mm copy paper, E = 4 GPa, nu = 0.3; a crease as
+// stiff per length as 5 mm of the sheet around it in bending.
+struct PaperProperties {
+  double thickness = 1e-4;     // m
+  double youngsModulus = 4e9;  // Pa
+  double poissonRatio = 0.3;   //
+  double creaseLength = 5e-3;  // m: crease torsional stiffness per length = D / creaseLength
+};
+
+struct ModelOptions {
+  SimulationMode mode = SimulationMode::Design;
+  PaperProperties paper;
+  // Design mode's nominal stiffnesses (per unit length for hinges): stiff bars and faces, soft
+  // creases, so creases whose targets disagree (a Miura-ori between flat and folded) fold the
+  // faces rigidly rather than stretch or bend them (at 100 / L bars the Miura-ori strained 1%).
+  double axialStiffness = 2000.0;
+  double facetStiffness = 200.0;
+  double creaseStiffness = 1.0;
+  std::vector<std::uint32_t> pins;                            // vertices held where they start
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> glue;  // vertex pairs pulled together
+};
+
+// The hinge of an interior edge: a -> b is the edge as its left triangle (a, b, c) runs it; the
+// right triangle is (b, a, d).
+struct Hinge {
+  std::uint32_t a = 0, b = 0, c = 0, d = 0;
+};
+
+struct BarHingeModel {
+  SimulationMode mode = SimulationMode::Design;
+  std::vector<glm::dvec3> flatPositions;  // the crease pattern at z = 0
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<double> mass;          // lumped, a third of the incident triangles' area, mean 1
+  std::vector<std::uint8_t> pinned;  // per vertex
+
+  // One bar per crease-pattern edge, in the pattern's edge order.
+  std::vector<std::array<std::uint32_t, 2>> bars;
+  std::vector<double> barLength;     // rest length
+  std::vector<double> barStiffness;  // N/m (or nominal)
+
+  // One hinge per interior edge.
+  std::vector<Hinge> hinges;
+  std::vector<std::uint32_t> hingeEdge;                      // which bar / pattern edge
+  std::vector<std::array<std::uint32_t, 2>> hingeTriangles;  // left (a, b, c), right (b, a, d)
+  std::vector<double> hingeTarget;                           // radians at fold amount 1
+  std::vector<std::uint8_t> hingeCrease;                     // 1: a crease (Mountain or Valley)
+  std::vector<std::uint8_t> hingeDriven;                     // 1: target scaled by the fold amount
+  std::vector<double> hingeStiffness;                        // per radian^2
+
+  std::vector<std::array<std::uint32_t, 2>> glue;
+  double glueStiffness = 0.0;
+
+  // Force slots: bar i's ends at 2i, 2i+1; hinge j's a, b, c, d at hingeSlot0 + 4j..; glue g's at
+  // glueSlot0 + 2g... Vertex v sums gatherSlots[gatherOffsets[v] .. gatherOffsets[v+1]) in order.
+  std::size_t hingeSlot0 = 0, glueSlot0 = 0, slotCount = 0;
+  std::vector<std::uint32_t> gatherOffsets;
+  std::vector<std::uint32_t> gatherSlots;
+
+  std::size_t vertexCount() const { return flatPositions.size(); }
+  // The hinge's target at a fold amount (0..1): driven hinges scale, the others keep theirs.
+  double target(std::size_t hinge, double foldAmount) const {
+    return hingeDriven[hinge] ? hingeTarget[hinge] * foldAmount : hingeTarget[hinge];
+  }
+};
+
+// Builds the model. In design mode every interior edge is driven to its foldAngleDegrees times
+// the fold amount (creases with crease stiffness; Flat and Unassigned edges, facets, with facet
+// stiffness), so 0 is the flat pattern and 1 every edge's angle; in paper mode Mountain and
+// Valley edges are creases driven so, and every other interior edge bends freely toward flat.
+// Throws SimulationInputError for a pattern it cannot use.
+BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options = {});
+
+// The signed dihedral angle of a hinge (radians, positive valley), unwrapped to lie within pi of
+// `previous`; 0 while either triangle is degenerate.
+double hingeAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                  const glm::dvec3& d, double previous = 0.0);
+
+// Both at once (the forces' kernel).
+double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                              const glm::dvec3& d, double previous,
+                              std::array<glm::dvec3, 4>& gradient);
+
+// The angle's gradient with respect to a, b, c, d (zero while a triangle is degenerate).
+std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dvec3& b,
+                                             const glm::dvec3& c, const glm::dvec3& d);
+
+// Every hinge's angle at these positions, unwrapped against `previous` (empty: against 0).
+std::vector<double> hingeAngles(const BarHingeModel& model,
+                                const std::vector<glm::dvec3>& positions,
+                                const std::vector<double>& previous = {});
+
+// Every hinge's target at a fold amount (0..1).
+std::vector<double> hingeTargets(const BarHingeModel& model, double foldAmount);
+
+// The model's energy at these positions toward these hinge targets, hinge angles unwrapped
+// against `previous`. Summed in a fixed order.
+double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                   const std::vector<double>& targets, const std::vector<double>& previous);
+
+// Every element's force on each of its vertices into its slots (slotForces, model.slotCount
+// long) and every hinge's angle unwrapped against previous into angles (both may be the same
+// vector). With velocities, bars resist their ends' relative speed along them (damping ratio
+// dampingRatio: 2 zeta sqrt(k m)). Runs on all cores; each element writes only its own slots.
+void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                   const std::vector<double>& targets, const std::vector<double>& previous,
+                   std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,
+                   const glm::dvec3* velocities = nullptr, double dampingRatio = 0.0);
+
+// Each vertex's total force: the sum of its slots in gather order (0 for a pinned vertex).
+void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,
+                  std::vector<glm::dvec3>& vertexForces);
+
+// Calls body(i) for i in [0, count) on all cores; for kernels that write only their own index,
+// whose result is then the same however TBB splits the range.
+template <typename Body>
+void forEachIndex(std::size_t count, const Body& body) {
+  constexpr std::size_t kGrain = 1024;
+  if (count <= kGrain) {
+    for (std::size_t i = 0; i < count; ++i) body(i);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+                    });
+}
+
+// A sheet's state while it folds: what the dynamic and static solvers advance.
+struct SimulationState {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> velocities;
+  std::vector<double> hingeAngles;     // unwrapped, as of the last step or iteration
+  std::size_t steps = 0;               // dynamic steps taken
+  std::vector<glm::dvec3> slotForces;  // scratch: one force per element slot
+};
+
+// The flat crease pattern at rest.
+SimulationState flatState(const BarHingeModel& model);
+
+// Per pattern edge: (length - rest length) / rest length.
+std::vector<double> edgeStrain(const BarHingeModel& model,
+                               const std::vector<glm::dvec3>& positions);
+
+// Per pattern edge: the crease's angle minus its target at the fold amount, degrees; 0 for an
+// edge that is not a crease hinge.
+std::vector<double> creaseAngleError(const BarHingeModel& model,
+                                     const std::vector<glm::dvec3>& positions, double foldAmount,
+                                     const std::vector<double>& previous = {});
+
+}  // namespace curvefold

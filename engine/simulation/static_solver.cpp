@@ -1,0 +1,264 @@
+#include "engine/simulation/static_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+namespace curvefold {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+// The Hessian's lower block triangle, laid out once: for each element, the value index of the
+// first row of each of its 3x3 blocks' columns, so assembly adds into the matrix directly.
+struct HessianLayout {
+  SparseMatrix matrix;
+  std::vector<int> barBlocks;    // per bar: 3 blocks x 3 columns
+  std::vector<int> hingeBlocks;  // per hinge: 10 blocks x 3 columns
+  std::vector<int> glueBlocks;   // per glue pair: 3 blocks x 3 columns
+  std::vector<int> diagonal;     // per dof: the value index of its diagonal entry
+};
+
+// The element's lower-triangle block pairs (p, q) with vertex[p] >= vertex[q] (or p == q).
+template <std::size_t N>
+void forLowerBlocks(const std::array<std::uint32_t, N>& vertices, auto&& visit) {
+  for (std::size_t p = 0; p < N; ++p)
+    for (std::size_t q = 0; q < N; ++q)
+      if (p == q || vertices[p] > vertices[q]) visit(p, q);
+}
+
+int valueIndex(const SparseMatrix& matrix, int row, int column) {
+  const int* begin = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column];
+  const int* end = matrix.innerIndexPtr() + matrix.outerIndexPtr()[column + 1];
+  return static_cast<int>(std::lower_bound(begin, end, row) - matrix.innerIndexPtr());
+}
+
+std::array<std::uint32_t, 4> hingeVertices(const Hinge& h) {
+  return {h.a, h.b, h.c, h.d};
+}
+
+HessianLayout buildLayout(const BarHingeModel& model) {
+  const int dofs = static_cast<int>(3 * model.vertexCount());
+  std::vector<Eigen::Triplet<double, int>> entries;
+  auto addBlock = [&](std::uint32_t row, std::uint32_t column) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        if (3 * row + r >= 3 * column + c) entries.emplace_back(3 * row + r, 3 * column + c, 0.0);
+  };
+  for (std::uint32_t v = 0; v < model.vertexCount(); ++v) addBlock(v, v);
+  auto addElement = [&](const auto& vertices) {
+    forLowerBlocks(vertices,
+                   [&](std::size_t p, std::size_t q) { addBlock(vertices[p], vertices[q]); });
+  };
+  for (const auto& bar : model.bars) addElement(bar);
+  for (const Hinge& h : model.hinges) addElement(hingeVertices(h));
+  for (const auto& pair : model.glue) addElement(pair);
+
+  HessianLayout layout;
+  layout.matrix.resize(dofs, dofs);
+  layout.matrix.setFromTriplets(entries.begin(), entries.end());
+  layout.matrix.makeCompressed();
+  // A diagonal block keeps only its lower triangle, so its column c starts at row 3v + c.
+  auto record = [&](std::vector<int>& out, const auto& vertices) {
+    forLowerBlocks(vertices, [&](std::size_t p, std::size_t q) {
+      for (int c = 0; c < 3; ++c)
+        out.push_back(
+            valueIndex(layout.matrix, 3 * vertices[p] + (p == q ? c : 0), 3 * vertices[q] + c));
+    });
+  };
+  for (const auto& bar : model.bars) record(layout.barBlocks, bar);
+  for (const Hinge& h : model.hinges) record(layout.hingeBlocks, hingeVertices(h));
+  for (const auto& pair : model.glue) record(layout.glueBlocks, pair);
+  layout.diagonal.resize(dofs);
+  for (int d = 0; d < dofs; ++d) layout.diagonal[d] = valueIndex(layout.matrix, d, d);
+  return layout;
+}
+
+// Adds the element's Hessian block (p, q) = coefficient x K into the matrix, skipping pinned
+// vertices (their rows and columns stay identity).
+template <std::size_t N>
+void addElementBlocks(double* values, const int* blocks,
+                      const std::array<std::uint32_t, N>& vertices,
+                      const std::vector<std::uint8_t>& pinned, auto&& blockOf) {
+  std::size_t block = 0;
+  forLowerBlocks(vertices, [&](std::size_t p, std::size_t q) {
+    const int* columns = blocks + 3 * block++;
+    if (pinned[vertices[p]] || pinned[vertices[q]]) return;
+    const glm::dmat3 k = blockOf(p, q);
+    for (int c = 0; c < 3; ++c)
+      for (int r = (p == q ? c : 0); r < 3; ++r)
+        values[columns[c] + r - (p == q ? c : 0)] += k[c][r];
+  });
+}
+
+void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, HessianLayout& layout) {
+  double* values = layout.matrix.valuePtr();
+  std::fill(values, values + layout.matrix.nonZeros(), 0.0);
+  for (std::size_t i = 0; i < model.bars.size(); ++i) {
+    const auto& bar = model.bars[i];
+    const glm::dvec3 delta = x[bar[1]] - x[bar[0]];
+    const double length = glm::length(delta);
+    if (length == 0.0) continue;
+    const glm::dvec3 u = delta / length;
+    const double k = model.barStiffness[i];
+    // Along the bar k; across it k (1 - L / l) when stretched (dropped when compressed: it would
+    // make the matrix indefinite).
+    const double across = k * std::max(0.0, 1.0 - model.barLength[i] / length);
+    const glm::dmat3 block = (k - across) * glm::outerProduct(u, u) + across * glm::dmat3(1.0);
+    addElementBlocks(values, layout.barBlocks.data() + 9 * i, bar, model.pinned,
+                     [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
+  }
+  for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+    const Hinge& h = model.hinges[j];
+    const auto g = hingeAngleGradient(x[h.a], x[h.b], x[h.c], x[h.d]);
+    const double k = model.hingeStiffness[j];
+    addElementBlocks(
+        values, layout.hingeBlocks.data() + 30 * j, hingeVertices(h), model.pinned,
+        [&](std::size_t p, std::size_t q) { return k * glm::outerProduct(g[p], g[q]); });
+  }
+  for (std::size_t i = 0; i < model.glue.size(); ++i) {
+    const glm::dmat3 block = model.glueStiffness * glm::dmat3(1.0);
+    addElementBlocks(values, layout.glueBlocks.data() + 9 * i, model.glue[i], model.pinned,
+                     [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
+  }
+  for (std::size_t v = 0; v < model.vertexCount(); ++v)
+    if (model.pinned[v])
+      for (int c = 0; c < 3; ++c) values[layout.diagonal[3 * v + c]] = 1.0;
+}
+
+double maxForce(const std::vector<glm::dvec3>& forces) {
+  double largest = 0.0;
+  for (const glm::dvec3& f : forces) largest = std::max(largest, glm::length(f));
+  return largest;
+}
+
+}  // namespace
+
+double forceScale(const BarHingeModel& model) {
+  double scale = 0.0;
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    scale = std::max(scale, model.hingeStiffness[j] / model.barLength[model.hingeEdge[j]]);
+  if (scale == 0.0)
+    for (std::size_t i = 0; i < model.bars.size(); ++i)
+      scale = std::max(scale, model.barStiffness[i] * model.barLength[i]);
+  return scale > 0.0 ? scale : 1.0;
+}
+
+double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      double foldAmount, const std::vector<double>& previousAngles) {
+  std::vector<double> angles;
+  std::vector<glm::dvec3> slots, forces;
+  elementForces(model, positions, hingeTargets(model, foldAmount), previousAngles, angles, slots);
+  gatherForces(model, slots, forces);
+  return maxForce(forces) / forceScale(model);
+}
+
+StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
+                    const StaticOptions& options) {
+  StaticResult result;
+  const std::size_t n = model.vertexCount();
+  state.velocities.assign(n, glm::dvec3(0.0));
+  if (state.hingeAngles.size() != model.hinges.size())
+    state.hingeAngles = hingeAngles(model, state.positions);
+  const double scale = forceScale(model);
+  const std::vector<double> goal = hingeTargets(model, foldAmount);
+  const std::vector<double> start = state.hingeAngles;
+  double largestChange = 0.0;
+  for (std::size_t j = 0; j < goal.size(); ++j)
+    largestChange = std::max(largestChange, std::abs(goal[j] - start[j]));
+  const double stageRadians = options.maxStageDegrees * std::numbers::pi / 180.0;
+  const std::size_t stages =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(largestChange / stageRadians)));
+  result.stages = stages;
+
+  HessianLayout layout = buildLayout(model);
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
+  solver.analyzePattern(layout.matrix);
+  Eigen::VectorXd gradient(3 * n), step(3 * n);
+  std::vector<glm::dvec3> forces, trial(n);
+  std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
+
+  for (std::size_t stage = 1; stage <= stages; ++stage) {
+    const bool last = stage == stages;
+    const double t = static_cast<double>(stage) / static_cast<double>(stages);
+    for (std::size_t j = 0; j < goal.size(); ++j)
+      targets[j] = last ? goal[j] : start[j] + (goal[j] - start[j]) * t;
+    const double tolerance =
+        last ? options.tolerance : std::max(options.tolerance, options.stageTolerance);
+    double energy = modelEnergy(model, state.positions, targets, state.hingeAngles);
+    double damping = 1e-6;  // mu, relative to the Hessian's diagonal
+    while (true) {
+      elementForces(model, state.positions, targets, state.hingeAngles, state.hingeAngles,
+                    state.slotForces);
+      gatherForces(model, state.slotForces, forces);
+      const double residual = maxForce(forces) / scale;
+      result.history.push_back({stage, energy, residual});
+      result.residual = residual;
+      if (residual <= tolerance) break;
+      if (result.iterations >= options.maxIterations) {
+        result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
+        return result;
+      }
+
+      for (std::size_t v = 0; v < n; ++v)
+        for (int c = 0; c < 3; ++c) gradient[3 * v + c] = -forces[v][c];
+      assemble(model, state.positions, layout);
+      double* values = layout.matrix.valuePtr();
+      double largestDiagonal = 0.0;
+      for (std::size_t d = 0; d < 3 * n; ++d) {
+        diagonal[d] = values[layout.diagonal[d]];
+        largestDiagonal = std::max(largestDiagonal, diagonal[d]);
+      }
+      bool accepted = false;
+      for (int attempt = 0; attempt < 10 && !accepted; ++attempt) {
+        // The tiny absolute term keeps rigid motions (no stiffness at all) solvable.
+        for (std::size_t d = 0; d < 3 * n; ++d)
+          values[layout.diagonal[d]] = diagonal[d] * (1.0 + damping) + 1e-12 * largestDiagonal;
+        solver.factorize(layout.matrix);
+        if (solver.info() != Eigen::Success) {
+          damping = std::max(damping * 10.0, 1e-6);
+          continue;
+        }
+        step = solver.solve(-gradient);
+        const double slope = gradient.dot(step);
+        double alpha = 1.0;
+        for (int halving = 0; halving < 30 && slope < 0.0 && !accepted; ++halving) {
+          for (std::size_t v = 0; v < n; ++v)
+            trial[v] = state.positions[v] +
+                       alpha * glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
+          const double trialEnergy = modelEnergy(model, trial, targets, state.hingeAngles);
+          if (trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope) {
+            trialAngles = hingeAngles(model, trial, state.hingeAngles);
+            state.positions.swap(trial);
+            state.hingeAngles.swap(trialAngles);
+            energy = trialEnergy;
+            accepted = true;
+          } else {
+            alpha *= 0.5;
+          }
+        }
+        if (accepted)
+          damping = alpha == 1.0 ? std::max(1e-9, damping / 4.0) : damping * 2.0;
+        else
+          damping = std::max(damping * 10.0, 1e-4);
+      }
+      for (std::size_t d = 0; d < 3 * n; ++d) values[layout.diagonal[d]] = diagonal[d];
+      ++result.iterations;
+      if (!accepted) {  // no step lowers the energy: as close as double precision gets
+        result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
+        return result;
+      }
+    }
+  }
+  result.converged = true;
+  result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
+  return result;
+}
+
+}  // namespace curvefold

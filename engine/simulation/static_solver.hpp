@@ -1,0 +1,64 @@
+// The static solver of the bar-and-hinge model (bar_hinge_model.hpp): the equilibrium at a fold
+// amount, for exports and tests. A damped Gauss-Newton (Levenberg-Marquardt) iteration: each
+// step solves (H + mu diag(H)) dx = -g with Eigen's sparse LDL^T, where H is the model's
+// Gauss-Newton Hessian (bars: their exact Hessian with the compressive part dropped; hinges
+// k grad(theta) grad(theta)^T; glue exact), then a backtracking line search (Armijo) takes the
+// longest step of 1, 1/2, 1/4, .. that lowers the energy, so the energy never rises between
+// iterations. Large angle changes are reached by continuation: the hinge targets go from the
+// state's angles to the goal in stages of at most maxStageDegrees, each solved loosely, the last
+// to the tolerance.
+//
+// Residual (the stated convergence test): the largest force on a free vertex divided by
+// forceScale(model), the force a hinge exerts at one radian of error through a lever of its own
+// edge's length (the largest over hinges). Converged when it is at most `tolerance`.
+//
+// Deterministic: sequential assembly and a sequential factorization; the forces are the
+// element-per-slot kernels of bar_hinge_model.hpp.
+//
+// Known limits: a state between two stable equilibria may settle in either (the solver takes the
+// one downhill of its start); no self-contact.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "engine/simulation/bar_hinge_model.hpp"
+
+namespace curvefold {
+
+struct StaticOptions {
+  double tolerance = 1e-9;          // residual the last stage must reach
+  double stageTolerance = 1e-4;     // residual each earlier stage stops at
+  double maxStageDegrees = 20.0;    // largest change of any hinge's target in one stage
+  std::size_t maxIterations = 400;  // over all stages
+};
+
+struct StaticIteration {
+  std::size_t stage = 0;  // from 1; the last stage has the goal's targets
+  double energy = 0.0;    // at that stage's targets, after the iteration
+  double residual = 0.0;
+};
+
+struct StaticResult {
+  bool converged = false;
+  std::size_t iterations = 0;
+  std::size_t stages = 0;
+  double energy = 0.0;                   // at the goal's targets
+  double residual = 0.0;                 // at the end
+  std::vector<StaticIteration> history;  // one entry per iteration, and one for each stage's start
+};
+
+// The force a hinge exerts at one radian of error through a lever of its edge's length, the
+// largest over hinges (the stiffest bar's k times its length when there is no hinge).
+double forceScale(const BarHingeModel& model);
+
+// The residual of a state: the largest force on a free vertex / forceScale(model).
+double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      double foldAmount, const std::vector<double>& previousAngles);
+
+// Moves the state to equilibrium at the fold amount (0..1). Velocities are zeroed; hinge angles
+// are updated.
+StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
+                    const StaticOptions& options = {});
+
+}  // namespace curvefold

@@ -1,0 +1,241 @@
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <random>
+
+#include <tbb/task_arena.h>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <filesystem>
+
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+#include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/design_input.hpp"
+#include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/hinge_unfolding.hpp"
+#include "engine/simulation/rigid_placement.hpp"
+#include "engine/simulation/static_solver.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recording.hpp"
+#include "tests/simulation_test_support.hpp"
+
+namespace curvefold {
+namespace {
+
+using testing::creasedSquare;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+TEST(Simulation, HingeGradientMatchesFiniteDifferences) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::array<glm::dvec3, 4> p = {glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0),
+                                   glm::dvec3(0.4, 0.8, 0), glm::dvec3(0.6, -0.7, 0)};
+    for (auto& q : p) q += glm::dvec3(jitter(random), jitter(random), jitter(random));
+    const auto gradient = hingeAngleGradient(p[0], p[1], p[2], p[3]);
+    const double h = 1e-6;
+    for (int v = 0; v < 4; ++v)
+      for (int c = 0; c < 3; ++c) {
+        auto plus = p, minus = p;
+        plus[v][c] += h;
+        minus[v][c] -= h;
+        const double numeric = (hingeAngle(plus[0], plus[1], plus[2], plus[3]) -
+                                hingeAngle(minus[0], minus[1], minus[2], minus[3])) /
+                               (2 * h);
+        EXPECT_NEAR(gradient[v][c], numeric, 1e-6) << "vertex " << v << " coordinate " << c;
+      }
+  }
+}
+
+TEST(Simulation, SingleStraightCreaseReachesItsShareOfTheTarget) {
+  for (SimulationMode mode : {SimulationMode::Design, SimulationMode::Paper})
+    for (double target : {90.0, -120.0})
+      for (double percent : {25.0, 50.0, 100.0}) {
+        const CreasePattern pattern = creasedSquare(6, 3, target, 0.2);
+        ModelOptions options;
+        options.mode = mode;
+        const BarHingeModel model = buildModel(pattern, options);
+        SimulationState state = flatState(model);
+        const StaticResult result = settle(model, percent / 100.0, state);
+        EXPECT_TRUE(result.converged);
+        const std::vector<double> angles = hingeAngles(model, state.positions, state.hingeAngles);
+        for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+          const double expected = model.hingeCrease[j] ? target * percent / 100.0 : 0.0;
+          EXPECT_NEAR(angles[j] * kDegrees, expected, 0.5)
+              << "percent " << percent << " hinge " << j;
+        }
+      }
+}
+
+// The largest distance between corresponding vertices after the best rigid placement.
+double placedDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  const std::vector<glm::dvec3> moved = placed(bestRigidPlacement(a, b), a);
+  double largest = 0.0;
+  for (std::size_t v = 0; v < a.size(); ++v)
+    largest = std::max(largest, glm::distance(moved[v], b[v]));
+  return largest;
+}
+
+TEST(Simulation, MiuraOriFollowsItsRigidFoldingMotion) {
+  const double w = 1.0, h = 1.0, s = 0.5, side = std::min(h, std::hypot(w, s));
+  const double full = 150.0 / kDegrees;  // zigzag fold angle at 100%
+  const BarHingeModel model = buildModel(testing::miuraOri(6, 6, w, h, s, full));
+  // The motion's state at zigzag angle rho: the closed form's angles placed across the hinges.
+  auto motion = [&](double rho) {
+    return unfoldedState(buildModel(testing::miuraOri(6, 6, w, h, s, rho)), 1.0).positions;
+  };
+  // The closed form is a motion: every hinge, not only the placement's tree, sits at its angle,
+  // and every edge keeps its length.
+  for (double rho : {0.4, 1.2, 2.4}) {
+    const BarHingeModel exact = buildModel(testing::miuraOri(6, 6, w, h, s, rho));
+    const SimulationState state = unfoldedState(exact, 1.0);
+    for (std::size_t j = 0; j < exact.hinges.size(); ++j)
+      ASSERT_NEAR(state.hingeAngles[j], exact.hingeTarget[j], 1e-9) << "rho " << rho;
+    for (double strain : edgeStrain(exact, state.positions)) ASSERT_NEAR(strain, 0.0, 1e-12);
+  }
+  SimulationState state = flatState(model);
+  for (double percent : {25.0, 50.0, 75.0}) {
+    const StaticResult result = settle(model, percent / 100.0, state);
+    EXPECT_TRUE(result.converged) << percent;
+    // The nearest state of the motion: a fine scan of rho, then golden-section refinement.
+    auto distance = [&](double rho) { return placedDistance(state.positions, motion(rho)); };
+    double best = 0.0;
+    for (double rho = 0.0; rho <= std::numbers::pi * 0.99; rho += 0.02)
+      if (distance(rho) < distance(best)) best = rho;
+    double low = std::max(0.0, best - 0.02), high = best + 0.02;
+    for (int k = 0; k < 40; ++k) {
+      const double m1 = low + (high - low) * 0.382, m2 = low + (high - low) * 0.618;
+      (distance(m1) < distance(m2) ? high : low) = distance(m1) < distance(m2) ? m2 : m1;
+    }
+    const double nearest = distance(0.5 * (low + high));
+    EXPECT_LE(nearest, 0.01 * side)
+        << percent << "%: zigzag angle " << 0.5 * (low + high) * kDegrees;
+    EXPECT_GT(0.5 * (low + high), 0.1) << "folded at all";
+    std::fprintf(stderr,
+                 "Miura %g%%: nearest motion state at zigzag %.2f degrees, %.2e of the side\n",
+                 percent, 0.5 * (low + high) * kDegrees, nearest / side);
+  }
+}
+
+TEST(Simulation, StaticSolverReachesItsResidualWithEnergyNeverRising) {
+  const BarHingeModel model = buildModel(testing::miuraOri(4, 4, 1.0, 1.0, 0.5, 120.0 / kDegrees));
+  SimulationState state = flatState(model);
+  StaticOptions options;
+  const StaticResult result = settle(model, 0.6, state, options);
+  ASSERT_TRUE(result.converged);
+  EXPECT_LE(result.residual, options.tolerance);
+  EXPECT_LE(staticResidual(model, state.positions, 0.6, state.hingeAngles), options.tolerance);
+  ASSERT_GT(result.history.size(), 3u);
+  for (std::size_t k = 1; k < result.history.size(); ++k) {
+    if (result.history[k].stage == result.history[k - 1].stage) {
+      EXPECT_LE(result.history[k].energy, result.history[k - 1].energy) << "iteration " << k;
+    }
+  }
+}
+
+TEST(Simulation, SameInputAndStepsGiveTheSameStateBitForBit) {
+  const BarHingeModel model = buildModel(creasedSquare(32, 16, 100.0, 0.2));  // 1089 vertices
+  auto run = [&](int threads) {
+    tbb::task_arena arena(threads);
+    SimulationState state = flatState(model);
+    arena.execute([&] { stepDynamic(model, 0.8, state, 300); });
+    return state;
+  };
+  const SimulationState one = run(1), two = run(2), again = run(2);
+  ASSERT_EQ(one.positions.size(), two.positions.size());
+  EXPECT_EQ(0, std::memcmp(one.positions.data(), two.positions.data(),
+                           one.positions.size() * sizeof(glm::dvec3)));
+  EXPECT_EQ(0, std::memcmp(two.positions.data(), again.positions.data(),
+                           two.positions.size() * sizeof(glm::dvec3)));
+  EXPECT_EQ(0, std::memcmp(one.velocities.data(), two.velocities.data(),
+                           one.velocities.size() * sizeof(glm::dvec3)));
+  // It moved: the test compares folding states, not two copies of the flat one.
+  EXPECT_GT(std::abs(one.positions[30].z - one.positions[0].z) + std::abs(one.positions[60].z),
+            1e-6);
+  SimulationState a = flatState(model), b = flatState(model);
+  settle(model, 0.5, a);
+  settle(model, 0.5, b);
+  EXPECT_EQ(0, std::memcmp(a.positions.data(), b.positions.data(),
+                           a.positions.size() * sizeof(glm::dvec3)));
+}
+
+// Bundled designs: the final sheet of each named example recording (examples/recordings and
+// examples/showcase/recordings), or of every one when `names` is empty.
+std::vector<std::pair<std::string, Sheet>> exampleDesigns(const std::vector<std::string>& names) {
+  std::vector<std::pair<std::string, Sheet>> designs;
+  for (const char* folder : {"/examples/recordings", "/examples/showcase/recordings"}) {
+    std::vector<std::filesystem::path> paths;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(CURVEFOLD_SOURCE_DIR + std::string(folder)))
+      if (entry.path().extension() == ".jsonl") paths.push_back(entry.path());
+    std::sort(paths.begin(), paths.end());
+    for (const auto& path : paths)
+      if (names.empty() ||
+          std::find(names.begin(), names.end(), path.stem().string()) != names.end())
+        designs.emplace_back(path.stem().string(), replayRecording(readRecording(path)).sheet);
+  }
+  return designs;
+}
+
+Sheet withPositions(Sheet sheet, std::vector<glm::dvec3> positions) {
+  sheet.positions = std::move(positions);
+  return sheet;
+}
+
+// From the flat development (exactly the flat state at 0%) to 100% in design mode by the static
+// solver alone, then compared with the design after the best rigid placement.
+void expectDesignModeReachesTheDesign(const std::vector<std::string>& names) {
+  const auto designs = exampleDesigns(names);
+  if (!names.empty()) {
+    ASSERT_EQ(designs.size(), names.size());
+  }
+  for (const auto& [name, sheet] : designs) {
+    const DesignPattern input = designPattern(sheet);
+    const BarHingeModel model = buildModel(input.pattern);
+    SimulationState state = flatState(model);
+
+    // 0%: the flat development, exactly.
+    settle(model, 0.0, state);
+    for (std::size_t v = 0; v < sheet.vertexCount(); ++v)
+      ASSERT_EQ(state.positions[v], glm::dvec3(sheet.development[v], 0.0))
+          << name << " vertex " << v;
+
+    const auto start = std::chrono::steady_clock::now();
+    const StaticResult result = settle(model, 1.0, state);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_TRUE(result.converged) << name << " residual " << result.residual;
+    const Sheet simulated = withPositions(
+        sheet, placed(bestRigidPlacement(state.positions, sheet.positions), state.positions));
+    const SurfaceDistance distance = surfaceDistance(meshOf(simulated), meshOf(sheet));
+    EXPECT_LE(distance.relativeHausdorff(), 0.005) << name;
+    double worstStrain = 0.0;
+    for (double strain : edgeStrain(model, state.positions))
+      worstStrain = std::max(worstStrain, std::abs(strain));
+    EXPECT_LE(worstStrain, 0.001) << name;
+    std::fprintf(stderr,
+                 "%-24s %6zu vertices  %3zu stages %3zu iterations %.2f s  hausdorff %.2e of "
+                 "diagonal  strain %.1e\n",
+                 name.c_str(), sheet.vertexCount(), result.stages, result.iterations, seconds,
+                 distance.relativeHausdorff(), worstStrain);
+  }
+}
+
+// The three smallest bundled designs: a cone's rings, a crown and a helix's tangent folds.
+TEST(Simulation, DesignModeFoldsExampleDesignsFromTheirDevelopmentToTheDesign) {
+  expectDesignModeReachesTheDesign({"cone", "crown_vessel", "helix_tangent"});
+}
+
+// Every bundled design (about 15 minutes on two busy cores; run with
+// --gtest_also_run_disabled_tests). Known to fail: from flat, xr_studio, helix_scallops and
+// wave_chevrons settle in a local minimum of the energy (docs/design.md, "Simulating the fold").
+TEST(Simulation, DISABLED_DesignModeFoldsEveryExampleDesign) {
+  expectDesignModeReachesTheDesign({});
+}
+
+}  // namespace
+}  // namespace curvefold
