@@ -480,6 +480,33 @@ TEST(CreasePatternReader, ChoosesTheFormatByNameOrFirstCharacter) {
   std::filesystem::remove_all(directory);
 }
 
+// The simulation promises the same state for the same input bit for bit, so the reader must give
+// the same pattern every time, even where the Delaunay triangulation is not unique (a grid's
+// squares have four points on one circle).
+TEST(CreasePatternGraph, ReadingIsDeterministic) {
+  std::string grid =
+      R"(<svg xmlns="http://www.w3.org/2000/svg"><rect width="8" height="8" stroke="#000"/>)";
+  for (int i = 1; i < 8; ++i)
+    grid += "<line x1=\"0\" y1=\"" + std::to_string(i) + "\" x2=\"8\" y2=\"" + std::to_string(i) +
+            "\" stroke=\"red\"/><line x1=\"" + std::to_string(i) + "\" y1=\"0\" x2=\"" +
+            std::to_string(i) + "\" y2=\"8\" stroke=\"blue\"/>";
+  grid += "</svg>";
+  const CreasePattern first = readSvgCreasePatternText(grid, "grid.svg");
+  expectValid(first);
+  EXPECT_EQ(first.vertices.size(), 81u);
+  for (int run = 0; run < 3; ++run) {
+    const CreasePattern again = readSvgCreasePatternText(grid, "grid.svg");
+    ASSERT_EQ(again.vertices, first.vertices);
+    ASSERT_EQ(again.triangles, first.triangles);
+    ASSERT_EQ(again.edges.size(), first.edges.size());
+    for (std::size_t e = 0; e < first.edges.size(); ++e) {
+      EXPECT_EQ(again.edges[e].a, first.edges[e].a);
+      EXPECT_EQ(again.edges[e].b, first.edges[e].b);
+      EXPECT_EQ(again.edges[e].assignment, first.edges[e].assignment);
+    }
+  }
+}
+
 TEST(CreasePatternGraph, ValidateCatchesBrokenPatterns) {
   CreasePattern p = readFoldCreasePattern(kPatterns / "single_crease.fold");
   expectValid(p);

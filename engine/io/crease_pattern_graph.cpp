@@ -370,7 +370,9 @@ CreasePattern triangulateCreaseDrawing(const CreaseDrawing& drawing,
   for (const auto& face : drawing.faces)
     for (std::uint32_t v : face) used.at(v) = 1;
 
-  // Points in a spatially coherent order, each located from the last.
+  // Points in a spatially coherent order, each located from the last. The order decides the
+  // triangulation where Delaunay is not unique (four points on a circle), so it must not vary:
+  // spatial_sort shuffles with a fixed-seed rand48 of its own, the same on every call.
   std::vector<std::uint32_t> order;
   for (std::uint32_t v = 0; v < vertices.size(); ++v)
     if (used[v]) order.push_back(v);
