@@ -18,6 +18,10 @@ struct Deadline {
   std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
   const std::atomic<bool>* cancelled = nullptr;
   std::atomic<std::uint64_t>* evaluations = nullptr;
+  // When the time passes (a cancel is not this), a search still answers with the best it has
+  // scored (the studio's worker, whose time limit must not leave the designer with nothing);
+  // otherwise it answers nothing (the fit drops a step the clock cut short whole).
+  bool answerLate = false;
   // `seconds` from now (beyond a billion, or NaN: never).
   static Deadline in(double seconds) {
     Deadline deadline;
@@ -29,6 +33,8 @@ struct Deadline {
   }
   bool isCancelled() const { return cancelled && cancelled->load(std::memory_order_relaxed); }
   bool passed() const { return isCancelled() || std::chrono::steady_clock::now() >= at; }
+  // Whether a search past this deadline gives up what it has (see answerLate).
+  bool givesUp() const { return isCancelled() || (!answerLate && passed()); }
   // The same deadline, come no later than `latest`.
   Deadline notAfter(std::chrono::steady_clock::time_point latest) const {
     Deadline d = *this;

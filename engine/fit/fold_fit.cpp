@@ -423,7 +423,7 @@ std::vector<FoldSuggestion> makeSuggestions(FoldSession& session, const std::vec
   if (!allowCrossing) crossingsBefore = findSelfIntersections(session.fixed()).intersections.size();
   std::vector<FoldSuggestion> suggestions;
   for (const Drag& drag : drags) {
-    if (deadline.passed()) break;
+    if (deadline.givesUp() || (deadline.passed() && !suggestions.empty())) break;
     const std::size_t foldsBefore = session.foldCount();
     session.beginDragAtDevelopment(copy.sheet.development[copy.samples[drag.sample]]);
     session.updateDrag(drag.drop);
@@ -456,10 +456,10 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   session.cancel();
   if (count == 0) return {};
   const Target& target = *target_;
-  if (deadline.passed()) return {};
+  if (deadline.givesUp()) return {};
   const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
                                                  settings_.seed * 0x9e3779b97f4a7c15ull + step);
-  if (copy.samples.empty() || deadline.passed()) return {};
+  if (copy.samples.empty() || deadline.givesUp()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
   const SymmetricFolder* symmetric = session.symmetricFolder().get();
@@ -559,7 +559,7 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       if (!deadline.passed()) drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop);
   });
 
-  if (deadline.passed()) return {};  // the scores are partial: nothing to choose from
+  if (deadline.givesUp()) return {};  // the scores are partial: nothing to choose from
 
   // The best few with distinct planes, each refined, then made on the real sheet.
   std::vector<Drag> finalists =

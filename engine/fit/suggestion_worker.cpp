@@ -91,6 +91,7 @@ void SuggestionWorker::run() {
       session.applyRecords(job.first.folds);
       Deadline deadline = Deadline::in(timeLimit_);
       deadline.cancelled = &abandon_;
+      deadline.answerLate = true;  // out of time, the best scored so far
       answer.suggestions = fitter->suggest(session, job.second, deadline);
     } catch (const std::exception& e) {
       answer.error = e.what();

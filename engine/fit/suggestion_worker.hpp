@@ -30,8 +30,9 @@ struct DesignSnapshot {
 
 class SuggestionWorker {
  public:
-  // Seconds a search may take before it answers with what it found.
-  static constexpr double kDefaultTimeLimit = 5.0;
+  // Seconds a search may take before it answers with the best it has scored (at least one
+  // suggestion when any candidate brings the design closer).
+  static constexpr double kDefaultTimeLimit = 10.0;
   explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter,
                             double timeLimit = kDefaultTimeLimit);
   ~SuggestionWorker();  // abandons the request in flight and waits for the thread

@@ -308,7 +308,7 @@ def test_distance_is_the_command_lines(tmp_path):
         for key, millimetres in theirs.items():
             assert_same_to_three_digits(ours[key], millimetres, key)
         assert ours["hausdorff"] == max(ours["a_to_b_max"], ours["b_to_a_max"])
-    with pytest.raises(OSError):
+    with pytest.raises((OSError, ValueError), match="missing.obj"):  # as from_obj says it
         curvefold.distance(design, tmp_path / "missing.obj")
     with pytest.raises(ValueError):
         curvefold.distance(design, 3)
@@ -318,14 +318,14 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     """With evaluations (no clock) Design.fit keeps the same folds as `curvefold fit`, byte for
     byte in the saved design, and reports the same distances; another seed searches otherwise."""
     target = TARGETS / "saddle.obj"
-    design = curvefold.Design.new("square", resolution=20)
-    report = design.fit(target, folds=3, evaluations=2500, seed=5)
+    design = curvefold.Design.new("square", resolution=12)
+    report = design.fit(target, folds=2, evaluations=1200, seed=5)
     assert report["folds"] >= 1 and len(design.folds) == report["folds"]
     assert report["out_of_evaluations"] and not report["timed_out"]
-    assert report["evaluations"] >= 2500
+    assert report["evaluations"] >= 1200
     design.save(tmp_path / "python.curvefold.json")
-    out = cli("fit", target, "--from", "square", "--resolution", "20", "--folds", "3",
-              "--evaluations", "2500", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
+    out = cli("fit", target, "--from", "square", "--resolution", "12", "--folds", "2",
+              "--evaluations", "1200", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
     assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
     wrote = [line for line in out.splitlines() if line.startswith("wrote ")][0]
     hausdorff_mm = float(wrote.split("Hausdorff ")[1].split(" mm")[0])
@@ -333,8 +333,8 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     assert_same_to_three_digits(report["hausdorff"], hausdorff_mm, "hausdorff")
     assert_same_to_three_digits(report["chamfer"], chamfer_mm, "chamfer")
     assert report["steps"][0]["folds"] == 0 and len(report["steps"]) == report["folds"] + 1
-    other = curvefold.Design.new("square", resolution=20)
-    other.fit(target, folds=3, evaluations=2500, seed=6)
+    other = curvefold.Design.new("square", resolution=12)
+    other.fit(target, folds=2, evaluations=1200, seed=6)
     assert other.folds != design.folds
     assert design.check().passed
 
@@ -346,7 +346,7 @@ def test_fit_refuses_bad_values_and_keeps_the_design(tmp_path):
         design.fit(TARGETS / "tube_tucked.obj", folds=0)
     with pytest.raises(ValueError, match="time"):
         design.fit(TARGETS / "tube_tucked.obj", time=float("nan"))
-    with pytest.raises(OSError):
+    with pytest.raises((OSError, ValueError), match="missing.obj"):
         design.fit(tmp_path / "missing.obj")
     far = tmp_path / "far.obj"
     far.write_text("v 100 0 0\nv 101 0 0\nv 100 1 0\nf 1 2 3\n")
@@ -356,7 +356,7 @@ def test_fit_refuses_bad_values_and_keeps_the_design(tmp_path):
 
 
 def test_a_long_fit_lets_other_python_threads_run():
-    design = curvefold.Design.new("square", resolution=20)
+    design = curvefold.Design.new("square", resolution=12)
     ticks = []
     done = threading.Event()
 
