@@ -46,8 +46,8 @@ TriangleMesh shapeOf(const std::string& path) {
 }
 
 // The design a fit starts from: as given, or (no --from, or a surface name without parameters)
-// the catalogue surface sized to the target (start_surface.hpp); with the target's rotational
-// symmetry when --symmetry is not given.
+// the catalogue surface sized to the target (start_surface.hpp); the target's rotational
+// symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is refused as it would be from the
 // surface's defaults, not sized to.
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
@@ -87,10 +87,13 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       }
     }
   }
+  // The target's rotation is said, not used: measured (docs/performance.md), a ring of images
+  // per fold has not yet brought a smooth shape closer than single folds in the same time.
   if (command->get_option("--symmetry")->count() == 0 && !isObj) {
-    design.symmetry = detectRotationalSymmetry(target, initialSheet(design, output));
-    if (!design.symmetry.empty())
-      std::cout << "symmetry: " << design.symmetry << " (the target's)" << std::endl;
+    const std::string turn = detectRotationalSymmetry(target, initialSheet(design, output));
+    if (!turn.empty())
+      std::cout << "symmetry: the target turns onto itself by " << turn << " (--symmetry " << turn
+                << " folds rings of it)" << std::endl;
   }
   return design;
 }

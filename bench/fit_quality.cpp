@@ -3,7 +3,7 @@
 //
 //   build/bench/fit_quality [--recipes a,b] [--buckets 1-2,3-4,5-8] [--per-bucket K]
 //                           [--seconds S] [--shapes | --shapes-only] [--shape-folds N]
-//                           [--shape-file OBJ[:KIND]]... [--write-targets DIR]
+//                           [--shape-file OBJ[:KIND]]... [--no-symmetry] [--write-targets DIR]
 //
 // Reachable targets, per recipe of tests/support/fold_target_generators.hpp and per bucket of fold
 // counts: K targets (the catalogue's surfaces in turn, at their defaults, each design passing
@@ -228,7 +228,7 @@ int run(int argc, char** argv) {
   double seconds = 60.0;
   std::vector<Bucket> buckets = {{1, 2}, {3, 4}, {5, 8}};
   std::vector<std::string> recipes;
-  bool shapes = false, reachable = true;
+  bool shapes = false, reachable = true, useSymmetry = true;
   std::string writeTargets;
   auto split = [](const std::string& text) {
     std::vector<std::string> parts;
@@ -257,6 +257,8 @@ int run(int argc, char** argv) {
       }
     } else if (arg == "--recipes")
       recipes = split(next());
+    else if (arg == "--no-symmetry")
+      useSymmetry = false;
     else if (arg == "--shape-file")
       shapeFiles.push_back(next());
     else if (arg == "--shape-folds")
@@ -301,7 +303,8 @@ int run(int argc, char** argv) {
       const StartChoice start = chooseStart(shape.mesh, shape.from.surface);
       const Case from{start.surface.c_str(), start.parameters};
       const Sheet initial = makeSurface(start.surface, start.parameters);
-      const std::string symmetry = detectRotationalSymmetry(shape.mesh, initial);
+      const std::string symmetry =
+          useSymmetry ? detectRotationalSymmetry(shape.mesh, initial) : std::string();
       FoldSession session(initial);
       if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
       FitOptions options;

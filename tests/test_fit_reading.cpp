@@ -118,9 +118,17 @@ TEST(StartSurface, ATubeStartsFromACylinderOfItsSizeAndItsRingOfSymmetry) {
 
 TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   const TriangleMesh target = tube(0.05, 0.18, 96, 30);
+  // Sized to the target's area, or at its defaults where that starts closer.
   const StartChoice start = chooseStart(target, "square");
   EXPECT_EQ(start.surface, "square");
-  EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  if (!start.parameters.empty())
+    EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  const double defaults = surfaceDistance(meshOf(makeSurface("square")), target, 4000).chamfer;
+  const double sized =
+      surfaceDistance(meshOf(makeSurface("square", {{"size", std::sqrt(surfaceArea(target))}})),
+                      target, 4000)
+          .chamfer;
+  EXPECT_DOUBLE_EQ(start.chamfer, std::min(defaults, sized));
   // A tube with one fold turns onto itself no more.
   const std::optional<testing::FoldTarget> folded =
       testing::makeFoldTarget(testing::foldTargetRecipes()[0], "cylinder", 1, 7932);
