@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "app/document.hpp"
 #include "app/studio_target.hpp"
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -220,6 +221,17 @@ void addFitCommand(CLI::App& app) {
                       : "")
               << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
+    // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
+    if (last.hausdorff > 1e-3 * last.diagonal) {
+      const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter->target(), 5000);
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
+                    "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
+                    far.onA.x, far.onA.y, far.onA.z, studio::millimetresText(far.fromA).c_str(),
+                    far.onB.x, far.onB.y, far.onB.z, studio::millimetresText(far.fromB).c_str());
+      std::cout << text;
+    }
   });
 }
 

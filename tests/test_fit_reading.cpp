@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/design_check.hpp"
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -138,6 +139,24 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   const StartChoice again = chooseStart(folded->exported, "cylinder");
   EXPECT_EQ(again.surface, "cylinder");
   EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+TEST(FarthestPoints, AreWhereASheetLeavesARampMost) {
+  const TriangleMesh flat = meshOf(makeSurface("square"));
+  TriangleMesh ramp = flat;
+  for (glm::dvec3& p : ramp.positions) p.z += 0.05 * std::max(0.0, p.x);
+  const FarthestPoints far = farthestPoints(flat, ramp, 20'000);
+  // The flat sheet's far edge (x = 0.1) lies 0.005 / sqrt(1.0025) below the ramp's plane.
+  EXPECT_GT(far.onA.x, 0.098);
+  EXPECT_NEAR(far.fromA, 0.005 / std::sqrt(1.0025), 1e-4);
+  EXPECT_GT(far.onB.x, 0.098);
+  EXPECT_NEAR(far.fromB, 0.005, 1e-4);
 }
 
 }  // namespace
