@@ -91,7 +91,10 @@ TriangleMesh exportedWithoutDevelopment(const Sheet& sheet) {
     if (line.rfind("f ", 0) == 0) {
       std::istringstream words(line.substr(2));
       std::string out = "f";
-      for (std::string word; words >> word;) out += " " + word.substr(0, word.find('/'));
+      for (std::string word; words >> word;) {
+        out += ' ';
+        out.append(word, 0, word.find('/'));
+      }
       line = out;
     }
     stripped << line << '\n';
