@@ -122,8 +122,9 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   // Sized to the target's area, or at its defaults where that starts closer.
   const StartChoice start = chooseStart(target, "square");
   EXPECT_EQ(start.surface, "square");
-  if (!start.parameters.empty())
+  if (!start.parameters.empty()) {
     EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  }
   const double defaults = surfaceDistance(meshOf(makeSurface("square")), target, 4000).chamfer;
   const double sized =
       surfaceDistance(meshOf(makeSurface("square", {{"size", std::sqrt(surfaceArea(target))}})),
