@@ -86,6 +86,11 @@ TEST(FitReading, ACreaseAlongACylindersFacetsIsAPlaneToo) {
                       "plane took its edges"});
 }
 
+TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
+  expectFoundExactly({"anywhere-long", "square", 6, 620580,
+                      "its unfolding ends on the sheet only after more than 160 orders tried"});
+}
+
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.
 TriangleMesh tube(double radius, double height, int around, int along) {
   TriangleMesh mesh;

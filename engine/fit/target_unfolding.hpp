@@ -8,7 +8,7 @@
 //
 // Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
 // their creases, a reflection that takes crease away (any bend beyond the sheet's own facets is
-// crease), up to four planes a step, best first and depth first, up to 160 unfoldings or until one
+// crease), up to four planes a step, best first and depth first, up to 600 unfoldings or until one
 // ends smooth and on the sheet (the fold made last may leave the shortest crease, and a crease a
 // later fold moved can be unfolded first and lead nowhere). It stops when no reflection takes
 // away a crease. Reflecting a piece or the rest of the target unfolds its crease alike, one
