@@ -16,6 +16,7 @@
 #include "app/document.hpp"
 #include "app/interrupt_guard.hpp"
 #include "app/studio_target.hpp"
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -51,8 +52,8 @@ TriangleMesh shapeOf(const std::string& path) {
 }
 
 // The design a fit starts from: as given, or (no --from, or a surface name without parameters)
-// the catalogue surface sized to the target (start_surface.hpp); with the target's rotational
-// symmetry when --symmetry is not given.
+// the catalogue surface sized to the target (start_surface.hpp); the target's rotational
+// symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is refused as it would be from the
 // surface's defaults, not sized to.
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
@@ -92,10 +93,13 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       }
     }
   }
+  // The target's rotation is said, not used: measured (docs/performance.md), a ring of images
+  // per fold has not yet brought a smooth shape closer than single folds in the same time.
   if (command->get_option("--symmetry")->count() == 0 && !isObj) {
-    design.symmetry = detectRotationalSymmetry(target, initialSheet(design, output));
-    if (!design.symmetry.empty())
-      std::cout << "symmetry: " << design.symmetry << " (the target's)" << std::endl;
+    const std::string turn = detectRotationalSymmetry(target, initialSheet(design, output));
+    if (!turn.empty())
+      std::cout << "symmetry: the target turns onto itself by " << turn << " (--symmetry " << turn
+                << " folds rings of it)" << std::endl;
   }
   return design;
 }
@@ -261,6 +265,17 @@ void addFitCommand(CLI::App& app) {
                       : "")
               << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
+    // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
+    if (last.hausdorff > 1e-3 * last.diagonal) {
+      const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter->target(), 5000);
+      char text[256];
+      std::snprintf(text, sizeof text,
+                    "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
+                    "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
+                    far.onA.x, far.onA.y, far.onA.z, studio::millimetresText(far.fromA).c_str(),
+                    far.onB.x, far.onB.y, far.onB.z, studio::millimetresText(far.fromB).c_str());
+      std::cout << text;
+    }
     std::cout.flush();
     if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
   });

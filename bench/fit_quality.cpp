@@ -2,8 +2,9 @@
 // docs/performance.md.
 //
 //   build/bench/fit_quality [--recipes a,b] [--buckets 1-2,3-4,5-8] [--per-bucket K]
-//                           [--seconds S] [--shapes | --shapes-only] [--shape-folds N]
-//                           [--shape-file OBJ[:KIND]]... [--write-targets DIR]
+//                           [--seconds S] [--seed-offset K] [--shapes | --shapes-only]
+//                           [--shape-folds N]
+//                           [--shape-file OBJ[:KIND]]... [--no-symmetry] [--write-targets DIR]
 //
 // Reachable targets, per recipe of tests/support/fold_target_generators.hpp and per bucket of fold
 // counts: K targets (the catalogue's surfaces in turn, at their defaults, each design passing
@@ -150,7 +151,8 @@ struct Bucket {
 // without vt, fitted as `fit TARGET --from SURFACE [--symmetry S] --folds N --time T` would, and
 // measured by the project's two-sided Hausdorff distance (surface_distance.hpp).
 void reachableTable(const std::vector<std::string>& recipes, const std::vector<Bucket>& buckets,
-                    std::size_t perBucket, double seconds, const std::string& writeTargets) {
+                    std::size_t perBucket, double seconds, const std::string& writeTargets,
+                    std::uint64_t seedOffset) {
   std::vector<std::string> surfaces;
   for (const SurfaceInfo& info : surfaceCatalog()) surfaces.push_back(info.name);
   std::printf(
@@ -167,7 +169,7 @@ void reachableTable(const std::vector<std::string>& recipes, const std::vector<B
         const std::size_t n = bucket.lo + made % (bucket.hi - bucket.lo + 1);
         const std::string& surface =
             surfaces[(made * 4 + b + recipe.name.size()) % surfaces.size()];
-        const std::uint64_t seed = 7919 * (b + 1) + 104729 * k + recipe.name.size();
+        const std::uint64_t seed = 7919 * (b + 1) + 104729 * k + recipe.name.size() + seedOffset;
         std::optional<testing::FoldTarget> target;
         try {
           target = testing::makeFoldTarget(recipe, surface, n, seed);
@@ -222,13 +224,14 @@ void reachableTable(const std::vector<std::string>& recipes, const std::vector<B
 
 int run(int argc, char** argv) {
   std::size_t perBucket = 4, shapeFolds = 16;
+  std::uint64_t seedOffset = 0;
   std::vector<std::string> shapeFiles;
   std::vector<std::string> kinds;
   kinds.reserve(64);
   double seconds = 60.0;
   std::vector<Bucket> buckets = {{1, 2}, {3, 4}, {5, 8}};
   std::vector<std::string> recipes;
-  bool shapes = false, reachable = true;
+  bool shapes = false, reachable = true, useSymmetry = true;
   std::string writeTargets;
   auto split = [](const std::string& text) {
     std::vector<std::string> parts;
@@ -257,6 +260,10 @@ int run(int argc, char** argv) {
       }
     } else if (arg == "--recipes")
       recipes = split(next());
+    else if (arg == "--seed-offset")
+      seedOffset = std::stoull(next());
+    else if (arg == "--no-symmetry")
+      useSymmetry = false;
     else if (arg == "--shape-file")
       shapeFiles.push_back(next());
     else if (arg == "--shape-folds")
@@ -271,7 +278,7 @@ int run(int argc, char** argv) {
       throw std::runtime_error("unknown option " + arg);
   }
   if (!writeTargets.empty()) std::filesystem::create_directories(writeTargets);
-  if (reachable) reachableTable(recipes, buckets, perBucket, seconds, writeTargets);
+  if (reachable) reachableTable(recipes, buckets, perBucket, seconds, writeTargets, seedOffset);
   if (shapes) {
     // Each shape from the start `fit --from KIND` sizes to it (start_surface.hpp), with the
     // target's rotational symmetry, against random drags from the same start in the same time.
@@ -285,7 +292,9 @@ int run(int argc, char** argv) {
     for (const std::string& file : shapeFiles) {
       const std::size_t colon = file.find(':');
       names.push_back(std::filesystem::path(file.substr(0, colon)).stem().string());
-      Shape shape{names.back().c_str(), {"", {}}, readObjMesh(file.substr(0, colon))};
+      Shape shape{};
+      shape.name = names.back().c_str();
+      shape.mesh = readObjMesh(file.substr(0, colon));
       if (colon != std::string::npos)
         kinds.push_back(file.substr(colon + 1));
       else
@@ -301,7 +310,8 @@ int run(int argc, char** argv) {
       const StartChoice start = chooseStart(shape.mesh, shape.from.surface);
       const Case from{start.surface.c_str(), start.parameters};
       const Sheet initial = makeSurface(start.surface, start.parameters);
-      const std::string symmetry = detectRotationalSymmetry(shape.mesh, initial);
+      const std::string symmetry =
+          useSymmetry ? detectRotationalSymmetry(shape.mesh, initial) : std::string();
       FoldSession session(initial);
       if (!symmetry.empty()) session.setSymmetry(parseSymmetry(symmetry, initial));
       FitOptions options;

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/design_check.hpp"
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -85,6 +86,11 @@ TEST(FitReading, ACreaseAlongACylindersFacetsIsAPlaneToo) {
                       "plane took its edges"});
 }
 
+TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
+  expectFoundExactly({"anywhere-long", "square", 6, 620580,
+                      "its unfolding ends on the sheet only after more than 160 orders tried"});
+}
+
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.
 TriangleMesh tube(double radius, double height, int around, int along) {
   TriangleMesh mesh;
@@ -118,9 +124,18 @@ TEST(StartSurface, ATubeStartsFromACylinderOfItsSizeAndItsRingOfSymmetry) {
 
 TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   const TriangleMesh target = tube(0.05, 0.18, 96, 30);
+  // Sized to the target's area, or at its defaults where that starts closer.
   const StartChoice start = chooseStart(target, "square");
   EXPECT_EQ(start.surface, "square");
-  EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  if (!start.parameters.empty()) {
+    EXPECT_NEAR(start.parameters.at("size"), std::sqrt(surfaceArea(target)), 1e-9);
+  }
+  const double defaults = surfaceDistance(meshOf(makeSurface("square")), target, 4000).chamfer;
+  const double sized =
+      surfaceDistance(meshOf(makeSurface("square", {{"size", std::sqrt(surfaceArea(target))}})),
+                      target, 4000)
+          .chamfer;
+  EXPECT_DOUBLE_EQ(start.chamfer, std::min(defaults, sized));
   // A tube with one fold turns onto itself no more.
   const std::optional<testing::FoldTarget> folded =
       testing::makeFoldTarget(testing::foldTargetRecipes()[0], "cylinder", 1, 7932);
@@ -130,6 +145,24 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   const StartChoice again = chooseStart(folded->exported, "cylinder");
   EXPECT_EQ(again.surface, "cylinder");
   EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+TEST(FarthestPoints, AreWhereASheetLeavesARampMost) {
+  const TriangleMesh flat = meshOf(makeSurface("square"));
+  TriangleMesh ramp = flat;
+  for (glm::dvec3& p : ramp.positions) p.z += 0.05 * std::max(0.0, p.x);
+  const FarthestPoints far = farthestPoints(flat, ramp, 20'000);
+  // The flat sheet's far edge (x = 0.1) lies 0.005 / sqrt(1.0025) below the ramp's plane.
+  EXPECT_GT(far.onA.x, 0.098);
+  EXPECT_NEAR(far.fromA, 0.005 / std::sqrt(1.0025), 1e-4);
+  EXPECT_GT(far.onB.x, 0.098);
+  EXPECT_NEAR(far.fromB, 0.005, 1e-4);
 }
 
 }  // namespace

@@ -71,6 +71,9 @@ std::vector<StartChoice> candidatesFor(const TriangleMesh& target, const std::st
                    {{"base_radius", std::max(rev.bottomRadius, rev.topRadius)},
                     {"top_radius", std::min(rev.bottomRadius, rev.topRadius)},
                     {"height", rev.height}}});
+  // Each kind at its defaults too: a sized sheet is kept only where it starts closer.
+  const std::size_t sized = out.size();
+  for (std::size_t i = 0; i < sized; ++i) out.push_back({out[i].surface, {}});
   if (out.empty()) out.push_back({kind, {}});  // a kind the rule does not size: its defaults
   return out;
 }

@@ -8,8 +8,9 @@
 // origin): a flat sheet gets the target's area (the paper it needs to cover it; a rectangle the
 // proportions of the target's x and y extents), a cylinder the mean distance of the target from
 // the y axis and its extent along y, a cone its mean radius over the lowest and the highest tenth
-// of that extent. Each is made at its default resolution and the one with the least Chamfer
-// distance to the target (surface_distance.hpp, 4000 samples) is the start. A target with
+// of that extent. Each is made at its default resolution, and also at its defaults, and the one
+// with the least Chamfer distance to the target (surface_distance.hpp, 4000 samples) is the
+// start. A target with
 // creases (a plane of its sharp edges, above the kind's own bends, holds 3% of its diagonal) was
 // folded from a sheet as the catalogue makes it: that kind keeps its defaults, which the
 // unfolding reads back onto.

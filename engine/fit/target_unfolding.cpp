@@ -342,7 +342,7 @@ struct Unfolder {
   }
 
   static constexpr double kInfinitySharp = 1e300;
-  static constexpr std::size_t kMaxUnfoldings = 160;
+  static constexpr std::size_t kMaxUnfoldings = 600;
   static constexpr std::size_t kChoicesPerStep = 4;
 };
 

@@ -7,13 +7,16 @@
 // unfolds to the sheet it was folded from, and its folds, read backwards, fold the sheet onto it.
 //
 // Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
-// their creases, the reflection that leaves the least length of sharp edges (and follows the
-// second best through another plane too, up to 16 unfoldings: a crease a later fold moved can be
-// unfolded first and lead nowhere). It stops when no reflection takes away a crease. Reflecting a
-// piece or the rest of the target unfolds its crease alike, one reflection of the whole apart; of
-// every such choice along an unfolding, the one whose result lies on the initial sheet is kept
-// (the part that never moved stays where the sheet is), and the unfolding that ends closest to
-// the sheet wins.
+// their creases, a reflection that takes crease away (any bend beyond the sheet's own facets is
+// crease), up to four planes a step, best first and depth first, up to 600 unfoldings or until one
+// ends smooth and on the sheet (the fold made last may leave the shortest crease, and a crease a
+// later fold moved can be unfolded first and lead nowhere). It stops when no reflection takes
+// away a crease. Reflecting a piece or the rest of the target unfolds its crease alike, one
+// reflection of the whole apart; of every such choice along an unfolding, one whose result lies
+// on the initial sheet is kept (the part that never moved stays where the sheet is), with rests
+// only where the rest lies whole on one side of the plane (a drag moves no other) and as few as
+// may be (a symmetric sheet lies on itself several ways); the unfolding that ends closest to the
+// sheet wins.
 //
 // Known limits: a target must carry its creases as mesh edges (a folded sheet written as a mesh
 // does; a remeshed scan does not); a crease whose faces meet at less than the sharp-edge

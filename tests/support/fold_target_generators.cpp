@@ -78,9 +78,10 @@ const std::vector<FoldTargetRecipe>& foldTargetRecipes() {
 
 TriangleMesh exportedWithoutDevelopment(const Sheet& sheet) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path();
-  const std::filesystem::path path =
-      dir / ("curvefold-target-" + std::to_string(::getpid()) + "-" +
-             std::to_string(reinterpret_cast<std::uintptr_t>(&sheet)) + ".obj");
+  std::ostringstream name;
+  name << "curvefold-target-" << ::getpid() << '-' << reinterpret_cast<std::uintptr_t>(&sheet)
+       << ".obj";
+  const std::filesystem::path path = dir / name.str();
   writeObj(sheet, path);
   std::ifstream in(path);
   std::stringstream stripped;
@@ -90,7 +91,10 @@ TriangleMesh exportedWithoutDevelopment(const Sheet& sheet) {
     if (line.rfind("f ", 0) == 0) {
       std::istringstream words(line.substr(2));
       std::string out = "f";
-      for (std::string word; words >> word;) out += " " + word.substr(0, word.find('/'));
+      for (std::string word; words >> word;) {
+        out += ' ';
+        out.append(word, 0, word.find('/'));
+      }
       line = out;
     }
     stripped << line << '\n';
