@@ -134,7 +134,7 @@ TEST(SelfIntersection, FansAgreeWithAllPairs) {
   std::size_t crossings = 0, contacts = 0;
   for (int trial = 0; trial < 12; ++trial) {
     const int n = 20 + 40 * trial;  // stars from 20 to 460 triangles: past the small-star bound
-    const double jitter = trial % 3 == 0 ? 0.0 : 1.5, lift = trial % 4 == 1 ? 0.0 : 0.02;
+    const double jitter = trial % 3 == 0 ? 0.0 : 3.0, lift = trial % 4 == 1 ? 0.0 : 0.02;
     Sheet sheet;
     sheet.positions.push_back({0.0, 0.0, 0.0});
     for (int i = 0; i < n; ++i) {
@@ -162,7 +162,7 @@ TEST(SelfIntersection, FansAgreeWithAllPairs) {
   }
   // The fans hold both kinds, or the comparison says little.
   EXPECT_GT(crossings, 100u);
-  EXPECT_GT(contacts, 100u);
+  EXPECT_GT(contacts, 50u);
 }
 
 // The reflection of a point through the plane with unit normal n through q.
