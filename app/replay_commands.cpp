@@ -175,7 +175,7 @@ void addRecordScriptCommand(CLI::App& app) {
   command->add_option("SCRIPT", options->script, "Gesture script (JSON)")->required();
   command->add_option("-o,--output", options->output, "Recording to write (*.jsonl)")->required();
   command->callback([options] {
-    refuseOutputsOverInputs({options->output}, {{options->script, "the script being recorded"}});
+    refuseOutputsOverInputs({options->output}, {{options->script, "the script itself"}});
     // Streamed: each frame is written as the script makes it, into the staged file, which
     // replaces the output only once the whole script has run. Standard output or a device has
     // no staged file: the script is run once with nothing written, so a bad one writes nothing.

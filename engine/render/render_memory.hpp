@@ -10,7 +10,7 @@
 namespace curvefold {
 
 // Bytes a headless render of width x height at `samples` needs beyond what the process holds:
-// the driver (about 320 MiB measured with lavapipe: LLVM, its pools), one stack per CPU (at
+// the driver (512 MiB: lavapipe crashed with 420 MiB left; LLVM, its pools), one stack per CPU (at
 // most 32 threads), and the colour, depth, resolve and readback images of two frames.
 std::uint64_t renderMemoryEstimate(std::uint32_t width, std::uint32_t height,
                                    std::uint32_t samples);
