@@ -34,6 +34,7 @@
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
+#include "engine/text/input_path.hpp"
 
 namespace curvefold::cli {
 
@@ -74,6 +75,23 @@ std::string today() {
 }
 
 }  // namespace
+
+void requireDecimalNumbers(CLI::App& app) {
+  const CLI::Validator decimal(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        if (readDecimal(text, value)) return "";
+        return "expected a decimal number (no sign +, hex or spaces), got " + quotedExcerpt(text);
+      },
+      "", "decimal");
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+    for (CLI::Option* option : command->get_options()) {
+      // "UINT", or "UINT:INT in [1 - 64]" with a range check.
+      const std::string full = option->get_type_name(), type = full.substr(0, full.find(':'));
+      // First, before any range check reads the text its own way.
+      if (type == "INT" || type == "UINT" || type == "FLOAT") option->transform(decimal);
+    }
+}
 
 std::ostream& statusFor(std::initializer_list<std::string_view> outputs) {
   for (std::string_view output : outputs)
@@ -134,7 +152,7 @@ void addSurfaceOptions(CLI::App* command, SurfaceOptions& options) {
 Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
                                 const std::string& nameForErrors) {
   Design design;
-  if (std::filesystem::path(options.surface).extension() == ".obj") {
+  if (hasExtension(options.surface, ".obj")) {
     for (const auto& [name, value] : options.values)
       if (command->get_option("--" + name)->count() > 0)
         throw UsageError("--" + name + " does not apply to an OBJ surface");
@@ -174,6 +192,11 @@ void addNewCommand(CLI::App& app) {
   addSurfaceOptions(command, options->surface);
 
   command->callback([options, command] {
+    // An OBJ surface is read; the design must not replace it.
+    refuseOutputsOverInputs(
+        {options->output},
+        {{hasExtension(options->surface.surface, ".obj") ? options->surface.surface : "",
+          "the surface read"}});
     const Design design = designFromSurfaceOptions(options->surface, command, options->output);
     const Sheet sheet = initialSheet(design, options->output);
     saveDesign(design, options->output);
@@ -305,11 +328,9 @@ void addExportCommand(CLI::App& app) {
                          quotedExcerpt(options->perforate));
       perforation = p;
     }
-    for (const std::string* output : {&options->fold, &options->svg, &options->cutSvg,
-                                      &options->pdf, &options->obj, &options->gltf})
-      if (!output->empty() && *output != "-" && sameFile(*output, options->design))
-        throw UsageError("export: " + *output +
-                         " is the design being exported; write to another file");
+    refuseOutputsOverInputs(
+        {options->fold, options->svg, options->cutSvg, options->pdf, options->obj, options->gltf},
+        {{options->design, "the design being exported"}});
     const Design design = loadDesign(options->design);
     const Sheet sheet = buildSheetCached(design, options->design);
     PdfOptions print;

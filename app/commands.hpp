@@ -55,6 +55,11 @@ Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* c
 void addSessionFileOptions(CLI::App* command, std::string& record, std::string& autosave,
                            std::string& target, const std::string& autosaveWhen);
 
+// Every number option of every command (typed INT, UINT or FLOAT) is read whole and in decimal,
+// as readDecimal reads (docs/cli.md): CLI11 alone takes "0x10" as 16 and " 3" as 3. Call once,
+// after every command is added.
+void requireDecimalNumbers(CLI::App& app);
+
 void addSurfacesCommand(CLI::App& app);
 void addNewCommand(CLI::App& app);
 void addFoldCommand(CLI::App& app);

@@ -27,6 +27,7 @@
 #include "engine/io/output_set.hpp"
 #include "engine/io/sheet_cache.hpp"
 #include "engine/surfaces/obj_surface.hpp"
+#include "engine/text/input_path.hpp"
 #include "sim_input/player.hpp"
 
 namespace curvefold::cli {
@@ -46,7 +47,7 @@ std::uint64_t parseSeed(const std::string& text) {
 
 // A shape to measure: an OBJ, or a design's folded form.
 TriangleMesh shapeOf(const std::string& path) {
-  if (fs::path(path).extension() == ".obj") return readObjMesh(path);
+  if (hasExtension(path, ".obj")) return readObjMesh(path);
   const Design design = loadDesign(path);
   return meshOf(buildSheetCached(design, path));
 }
@@ -155,6 +156,11 @@ void addFitCommand(CLI::App& app) {
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
                        std::to_string(options->seconds));
+    refuseOutputsOverInputs(
+        {options->output, options->log},
+        {{options->target, "the target"},
+         {hasExtension(options->from.surface, ".obj") ? options->from.surface : "",
+          "the surface read (--from)"}});
     FitSettings settings;
     settings.seed = parseSeed(options->seed);
     settings.allowSelfIntersection = options->allowSelfIntersection;

@@ -1,4 +1,6 @@
 // curvefold: design curved-fold origami by reflection (Mitani & Igarashi 2011).
+#include <atomic>
+#include <cstddef>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -31,9 +33,25 @@ std::string oneLine(const std::string& message) {
   return line;
 }
 
+// Memory held back for the way out of an allocation that fails. nlohmann's json allocates while it
+// is destroyed (a stack as long as the array), so an exception unwinding through a large document
+// with no memory left ended in std::terminate (`export --fold` under `ulimit -v`). The first
+// failure hands the reserve back and throws std::bad_alloc; the unwinding frees with it, and
+// main() says what ran out in one line.
+constexpr std::size_t kUnwindReserveBytes = 32u << 20;
+std::atomic<char*> unwindReserve{nullptr};
+
+void releaseUnwindReserve() {
+  delete[] unwindReserve.exchange(nullptr);
+  std::set_new_handler(nullptr);
+  throw std::bad_alloc();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  unwindReserve = new (std::nothrow) char[kUnwindReserveBytes];
+  if (unwindReserve) std::set_new_handler(releaseUnwindReserve);
   CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
   // No subcommand: XR with a headset, else the designer window, else a one-line pointer to
   // replay/render.
@@ -54,6 +72,7 @@ int main(int argc, char** argv) {
   curvefold::cli::addSimulateCommand(app);
   curvefold::cli::addDesignCommand(app);
   curvefold::cli::addXrCommand(app);
+  curvefold::cli::requireDecimalNumbers(app);
   try {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) curvefold::cli::runDefault();
@@ -66,7 +85,7 @@ int main(int argc, char** argv) {
     std::string command;
     for (int i = 1; i < argc && command.size() < 120; ++i) command += std::string(" ") + argv[i];
     if (command.size() > 120) command = command.substr(0, 117) + "...";
-    std::cerr << "curvefold: error: out of memory running `curvefold" << command
+    std::cerr << "curvefold: error: out of memory while running `curvefold" << command
               << "`: free memory, or use a coarser design (a lower --resolution)\n";
     return 1;
   } catch (const std::exception& e) {

@@ -20,14 +20,17 @@
 #include "app/interaction_scene.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
+#include "engine/fit/fold_fit.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/io/output_set.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
+#include "engine/text/input_path.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
 
@@ -262,8 +265,10 @@ void addRenderCommand(CLI::App& app) {
     const RenderSize size = parseSize(options->size);
     const ViewPreset view = parseView(options->view);
     const fs::path input = options->input;
+    refuseOutputsOverInputs({options->png},
+                            {{input, "the input being rendered"}, {options->target, "the target"}});
     Sheet sheet;
-    if (input.extension() == ".jsonl") {
+    if (hasExtension(input, ".jsonl")) {
       sheet = studio::replayAnyRecording(readRecording(input)).sheet;
     } else {
       sheet = buildSheet(loadDesign(input), input.string());
@@ -274,7 +279,15 @@ void addRenderCommand(CLI::App& app) {
         throw UsageError("--target: not with --crease-pattern-panel (the halves are views)");
       if (size.width < 2)
         throw UsageError("--size: a target beside the design needs a width of 2 or more");
-      target = meshSheet(readObjMesh(options->target));
+      // The check `fit` and the studio's --target make: no millimetre-scale, flat or faraway one.
+      const TriangleMesh mesh = readObjMesh(options->target);
+      try {
+        checkTarget(mesh);
+        checkTargetAgainst(mesh, sheet);
+      } catch (const InvalidTarget& e) {
+        throw UsageError(options->target + ": " + e.what());
+      }
+      target = meshSheet(mesh);
     }
     // With a target, the design takes the right half and the target the left.
     const std::uint32_t left = target ? size.width / 2 : 0;

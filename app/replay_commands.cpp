@@ -141,6 +141,10 @@ void addReplayCommand(CLI::App& app) {
     outputs.add(dir / (name + ".obj"), [&](const fs::path& path) { writeObj(result.sheet, path); });
     outputs.add(dir / (name + ".folds.jsonl"),
                 [&](const fs::path& path) { writeFileAtomically(path, log); });
+    refuseOutputsOverInputs(
+        {dir / (name + ".curvefold.json"), dir / (name + ".fold"), dir / (name + ".svg"),
+         dir / (name + ".obj"), dir / (name + ".folds.jsonl")},
+        {{recordingPath, "the recording being replayed"}});
     // The frames first, into their staging folder: if they fail, no output has changed.
     std::size_t framesWritten = 0;
     if (frameWriter) framesWritten = writeReplayFrames(*frameWriter, recording);
@@ -171,9 +175,7 @@ void addRecordScriptCommand(CLI::App& app) {
   command->add_option("SCRIPT", options->script, "Gesture script (JSON)")->required();
   command->add_option("-o,--output", options->output, "Recording to write (*.jsonl)")->required();
   command->callback([options] {
-    if (options->output != "-" && sameFile(options->output, options->script))
-      throw UsageError("record-script: -o " + options->output +
-                       " is the script itself; write the recording to another file");
+    refuseOutputsOverInputs({options->output}, {{options->script, "the script itself"}});
     // Streamed: each frame is written as the script makes it, into the staged file, which
     // replaces the output only once the whole script has run. Standard output or a device has
     // no staged file: the script is run once with nothing written, so a bad one writes nothing.

@@ -16,10 +16,12 @@
 namespace curvefold::session {
 
 SessionOutputs::SessionOutputs(std::string autosavePath, std::string recordPath,
-                               std::function<Design()> designOf)
+                               std::function<Design()> designOf,
+                               const std::vector<NamedInput>& inputs)
     : autosavePath_(std::move(autosavePath)),
       recordPath_(std::move(recordPath)),
       designOf_(std::move(designOf)) {
+  refuseOutputsOverInputs({autosavePath_, recordPath_}, inputs);
   if (!recordPath_.empty() && sameFile(recordPath_, autosavePath_))
     throw FileError("cannot record to " + recordPath_ +
                     ": it is the autosave too (each needs its own file)");

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/io/design_document.hpp"
+#include "engine/io/output_set.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
 #include "sim_input/recording.hpp"
@@ -29,10 +30,11 @@ namespace curvefold::session {
 
 class SessionOutputs {
  public:
-  // designOf gives the design as it is (the folds committed so far). An existing recordPath is
-  // refused now (FileError), before any window or session is made; nothing is created yet.
-  SessionOutputs(std::string autosavePath, std::string recordPath,
-                 std::function<Design()> designOf);
+  // designOf gives the design as it is (the folds committed so far). An existing recordPath, or
+  // either path naming one of `inputs` (the target, the recording watched), is refused now
+  // (FileError), before any window or session is made; nothing is created yet.
+  SessionOutputs(std::string autosavePath, std::string recordPath, std::function<Design()> designOf,
+                 const std::vector<NamedInput>& inputs = {});
   ~SessionOutputs();
   SessionOutputs(const SessionOutputs&) = delete;
   SessionOutputs& operator=(const SessionOutputs&) = delete;

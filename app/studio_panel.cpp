@@ -8,6 +8,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/input_path.hpp"
 #include "engine/text/utf8.hpp"
 #include "sim_input/player.hpp"
 
@@ -312,9 +314,8 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
       guarded(actions, "opened " + path, [&] {
         // A FIFO or a device named here (a recent entry from another machine's recording) would
         // block the open or never end: only regular files are read.
-        std::error_code error;
-        if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
-          throw std::runtime_error("cannot open " + path + ": not a regular file");
+        if (const std::optional<std::string> why = notRegularFile(path))
+          throw std::runtime_error("cannot open " + path + ": " + *why);
         actions.replaceDocument(loadDesign(path), path);
         nameDesign(path);  // Save and the exports follow the opened design
         remember(path, actions);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,7 @@
 #include "engine/io/input_limits.hpp"
 #include "engine/io/json_reader.hpp"
 #include "engine/text/bounded_line.hpp"
+#include "engine/text/input_path.hpp"
 
 namespace curvefold {
 namespace {
@@ -314,9 +316,9 @@ void writeRecording(const Recording& recording, const std::filesystem::path& pat
 }
 
 Recording readRecording(const std::filesystem::path& path, const ReadOptions& options) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw RecordingError("cannot read " + path.string() + ": " + std::strerror(EISDIR));
+  // Only a regular file: a FIFO would block the open, a device might never end.
+  if (const std::optional<std::string> why = notRegularFile(path))
+    throw RecordingError("cannot read " + path.string() + ": " + *why);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw RecordingError("cannot read " + path.string() + ": " + std::strerror(errno));
   return parseRecording(in, path.string(), options);
@@ -356,7 +358,9 @@ Recording parseRecordingLines(std::istream& in, const std::string& name,
     const LineReader reader(name + ": line " + std::to_string(number), number);
     json value;
     try {
-      value = json::parse(line);
+      value = parseUniqueJson(line);
+    } catch (const JsonDuplicateKey& e) {
+      reader.refuse("", e.what());
     } catch (const json::exception& e) {
       if (complete) reader.refuse("", "not valid JSON: " + jsonLineProblem(e));
       if (!options.allowTruncated || !haveHeader)

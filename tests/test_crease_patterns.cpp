@@ -234,11 +234,11 @@ TEST(CreasePatternFold, BadInputGetsOneLineNamingTheProblem) {
   EXPECT_NE(foldError("{\"vertices_coords\": [[0,0],").find("not valid JSON"), std::string::npos);
   EXPECT_NE(
       foldError(R"({"vertices_coords": [[0,0]], "vertices_coords": [[1,1]], "edges_vertices": []})")
-          .find("\"vertices_coords\" given twice"),
+          .find("duplicate key \"vertices_coords\" in the top-level object"),
       std::string::npos);
   EXPECT_NE(foldError(squareFold("", "", "",
                                  R"(, "file_frames": [{"frame_title": "a", "frame_title": "b"}])"))
-                .find("\"frame_title\" given twice"),
+                .find("duplicate key \"frame_title\" in file_frames[0]"),
             std::string::npos);
   EXPECT_NE(foldError(R"({"vertices_coords": "square", "edges_vertices": []})")
                 .find("vertices_coords: must be an array"),

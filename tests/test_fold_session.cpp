@@ -276,6 +276,14 @@ TEST(FoldSession, PointsAbsurdlyFarFromTheSheetAreRefused) {
   EXPECT_THROW(closestSurfacePoint(sheet, {1e155, 0.0, 0.0}), InvalidSheet);
   EXPECT_THROW(closestSurfacePoint(sheet, {0.0, -1e300, 0.0}), InvalidSheet);
   EXPECT_NO_THROW(closestSurfacePoint(sheet, {1e4, 0.0, 0.0}));  // far, but within reach
+  // Issue 40: a NaN lies nowhere, not "too far from the sheet".
+  try {
+    closestSurfacePoint(sheet, {std::nan(""), 0.0, 0.0});
+    ADD_FAILURE() << "a NaN point was taken";
+  } catch (const InvalidSheet& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "point (nan, 0, 0) is not a point: its coordinates must be finite numbers");
+  }
   FoldSession session(sheet);
   session.beginDragNear({0.1, 0.1, 0.0});
   EXPECT_THROW(session.updateDrag({1e300, 0.0, 0.0}), InvalidSheet);

@@ -1,6 +1,7 @@
 // Self-intersections (issue 17, 1): the triangle-pair test, the whole-sheet check on its tree
 // against a brute-force all-pairs test on random designs, and the live drag watch against the
 // pairs of the folded sheet that cross between the reflected part and the rest.
+#include <cmath>
 #include <random>
 #include <tuple>
 
@@ -120,6 +121,48 @@ TEST(SelfIntersection, PairsSharingOneVertexAreTested) {
       EXPECT_EQ(report.contacts, touching ? pair : Pairs{});
     }
   }
+}
+
+// Issue 40: a fan's triangles all share its centre, and `check` tests them star by star, by the
+// directions their wedges span from it (no longer every pair: it was quadratic). Crumpled fans
+// (rims at random heights and radii, wedges that overlap when their angles are jittered past each
+// other, some lying flat on each other), each with a ring of triangles around it, agree with all
+// pairs, crossings and contacts alike.
+TEST(SelfIntersection, FansAgreeWithAllPairs) {
+  std::mt19937_64 random(40);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t crossings = 0, contacts = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 20 + 40 * trial;  // stars from 20 to 460 triangles: past the small-star bound
+    const double jitter = trial % 3 == 0 ? 0.0 : 3.0, lift = trial % 4 == 1 ? 0.0 : 0.02;
+    Sheet sheet;
+    sheet.positions.push_back({0.0, 0.0, 0.0});
+    for (int i = 0; i < n; ++i) {
+      const double a = 2.0 * 3.14159265358979 * (i + jitter * (unit(random) - 0.5)) / n;
+      const double r = 0.1 * (0.5 + unit(random));
+      sheet.positions.push_back({r * std::cos(a), r * std::sin(a), lift * (unit(random) - 0.5)});
+    }
+    for (int i = 0; i < n; ++i)  // the ring outside the fan
+      sheet.positions.push_back(1.3 * sheet.positions[1 + i] +
+                                glm::dvec3(0, 0, 0.01 * unit(random)));
+    for (int i = 0; i < n; ++i) {
+      const auto rim = [&](int k) { return VertexIndex(1 + (k % n)); };
+      const auto outer = [&](int k) { return VertexIndex(1 + n + (k % n)); };
+      sheet.triangles.push_back({VertexIndex(0), rim(i), rim(i + 1)});
+      sheet.triangles.push_back({rim(i), outer(i), outer(i + 1)});
+      sheet.triangles.push_back({rim(i), outer(i + 1), rim(i + 1)});
+    }
+    for (const glm::dvec3& p : sheet.positions) sheet.development.push_back({p.x, p.y});
+    const SelfIntersectionReport tree = findSelfIntersections(sheet);
+    const SelfIntersectionReport all = findSelfIntersectionsBruteForce(sheet);
+    EXPECT_EQ(tree.intersections, all.intersections) << "trial " << trial;
+    EXPECT_EQ(tree.contacts, all.contacts) << "trial " << trial;
+    crossings += all.intersections.size();
+    contacts += all.contacts.size();
+  }
+  // The fans hold both kinds, or the comparison says little.
+  EXPECT_GT(crossings, 100u);
+  EXPECT_GT(contacts, 50u);
 }
 
 // The reflection of a point through the plane with unit normal n through q.

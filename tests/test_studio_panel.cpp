@@ -328,7 +328,8 @@ TEST_F(StudioPanelTest, TheRecentListHoldsUtf8AndOpensOnlyFiles) {
   click("Recent designs");
   click("pipe.curvefold.json");
   EXPECT_TRUE(replaced_.empty());
-  EXPECT_EQ(panel_.message(), "cannot open " + fifo + ": not a regular file");
+  EXPECT_EQ(panel_.message(),
+            "cannot open " + fifo + ": it is a FIFO (named pipe), not a regular file");
 }
 
 // The symmetry list holds what the chosen surface has (the square: its mirrors and quarter

@@ -213,6 +213,8 @@ TEST_F(XrHands, HandsFlagUsesHandsOnlyAndNeedsHandTracking) {
     EXPECT_NE(refused.err.find("curvefold sim runtime: " + setting + ": expected"),
               std::string::npos)
         << refused.err;
+    // Issue 40: the runtime's reason inside curvefold's one line, not a line of its own.
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
     const std::string last = refused.err.substr(refused.err.rfind("curvefold:"));
     EXPECT_EQ(std::count(last.begin(), last.end(), '\n'), 1) << refused.err;
     EXPECT_NE(last.find("the OpenXR runtime was found but refused to start"), std::string::npos)

@@ -112,7 +112,8 @@ void runDesigner(const DesignerOptions& options) {
   studio::StudioTarget goal;
   if (!options.target.empty()) goal.load(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
-  session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); });
+  session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); },
+                                  {{options.target, "the target"}});
   if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
 
   Glfw glfw;

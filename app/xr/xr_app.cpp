@@ -12,10 +12,12 @@
 #include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/output_set.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
+#include "engine/text/input_path.hpp"
 #include "interaction/xr/xr_check.hpp"
 #include "interaction/xr/xr_input.hpp"
 #include "sim_input/recorder.hpp"
@@ -60,7 +62,7 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   Design design;
   Pose sheetFrame = defaultSheetFrame();
   HandSide handedness = options.leftHanded ? HandSide::Left : HandSide::Right;
-  if (options.input.ends_with(".jsonl")) {
+  if (hasExtension(options.input, ".jsonl")) {
     // A recording: its surface, sheet frame and hands, to watch it through the XR path.
     const Recording recording = readRecording(options.input, {.allowTruncated = true});
     design = {recording.header.surface, {}, recording.header.symmetry};
@@ -72,8 +74,11 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   doc_ = session::makeDocument(design, options.input, sheetFrame, handedness);
   autosave_ = options.autosave.empty() ? session::defaultAutosave(options.input, kDefaultSurface)
                                        : options.autosave;
-  outputs_ = std::make_unique<session::SessionOutputs>(autosave_, options.record,
-                                                       [this] { return doc_.design(); });
+  outputs_ = std::make_unique<session::SessionOutputs>(
+      autosave_, options.record, [this] { return doc_.design(); },
+      std::vector<NamedInput>{
+          {options.target, "the target"},
+          {hasExtension(options.input, ".jsonl") ? options.input : "", "the recording watched"}});
   if (outputs_->wantsRecording()) {
     // A recording starts from its header's surface: the opened folds become that surface, and
     // stay in the design (baseFolds).

@@ -228,11 +228,9 @@ FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
     : target_(std::make_unique<Target>()), settings_(settings) {
   Target& t = *target_;
   t.mesh = std::move(target);
+  checkTarget(t.mesh);
   const double area = surfaceArea(t.mesh);
   t.diagonal = boundingDiagonal(t.mesh);
-  if (t.mesh.triangles.empty()) throw InvalidTarget("the target has no triangles");
-  if (!(area > 1e-12 * t.diagonal * t.diagonal) || !std::isfinite(area))
-    throw InvalidTarget("the target is degenerate: its triangles have no area");
   glm::dvec3 low(kInfinity), high(-kInfinity);
   for (const auto& tri : t.mesh.triangles)
     for (std::uint32_t v : tri) {
@@ -260,28 +258,52 @@ double FoldFitter::targetDiagonal() const {
   return target_->diagonal;
 }
 
-void FoldFitter::checkAgainst(const Sheet& sheet) const {
-  const TriangleMesh mesh = meshOf(sheet);
-  const double size = boundingDiagonal(mesh);
+void checkTarget(const TriangleMesh& target) {
+  if (target.triangles.empty()) throw InvalidTarget("the target has no triangles");
+  // Before its area: a vertex at 1e300 makes the area infinite, not zero.
+  if (const std::optional<std::string> why = unmeasurableVertex(target))
+    throw InvalidTarget("the target's " + *why);
+  const double area = surfaceArea(target), diagonal = boundingDiagonal(target);
+  if (!(area > 1e-12 * diagonal * diagonal) || !std::isfinite(area))
+    throw InvalidTarget("the target is degenerate: its triangles have no area");
+}
+
+namespace {
+
+// The centre of the bounding box of the vertices triangles use.
+glm::dvec3 boxCentre(const TriangleMesh& mesh) {
   glm::dvec3 low(kInfinity), high(-kInfinity);
-  for (const glm::dvec3& p : sheet.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  const double apart = glm::distance(0.5 * (low + high), target_->centre);
-  const double ratio = target_->diagonal / size;
+  for (const auto& tri : mesh.triangles)
+    for (std::uint32_t v : tri) {
+      low = glm::min(low, mesh.positions[v]);
+      high = glm::max(high, mesh.positions[v]);
+    }
+  return 0.5 * (low + high);
+}
+
+}  // namespace
+
+void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet) {
+  const TriangleMesh mesh = meshOf(sheet);
+  const double size = boundingDiagonal(mesh), targetSize = boundingDiagonal(target);
+  const double apart = glm::distance(boxCentre(mesh), boxCentre(target));
+  const double ratio = targetSize / size;
   std::ostringstream text;
   text.precision(3);
   if (ratio > 100.0 || ratio < 0.01) {
-    text << "the target is " << ratio << " times the sheet's size (" << target_->diagonal
+    text << "the target is " << ratio << " times the sheet's size (" << targetSize
          << " m across against " << size << " m): are its units metres?";
     throw InvalidTarget(text.str());
   }
-  if (apart > 10.0 * std::max(size, target_->diagonal)) {
+  if (apart > 10.0 * std::max(size, targetSize)) {
     text << "the target lies " << apart << " m from the sheet (centre to centre), far beyond both ("
          << size << " m across): give it in the sheet's frame";
     throw InvalidTarget(text.str());
   }
+}
+
+void FoldFitter::checkAgainst(const Sheet& sheet) const {
+  checkTargetAgainst(target_->mesh, sheet);
 }
 
 const std::vector<ReflectionPlane>& FoldFitter::creasePlanesAbove(double degrees) const {

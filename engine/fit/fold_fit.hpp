@@ -59,6 +59,13 @@ class InvalidTarget : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// The one check of a target shape, whoever reads it (`fit`, the studio's --target, `render
+// --target`). checkTarget: it has triangles with area, at coordinates that can be measured
+// (unmeasurableVertex). checkTargetAgainst: it lies near the sheet (centres at most ten times the
+// larger size apart) and is of its size within a hundredfold (its units). Throw InvalidTarget.
+void checkTarget(const TriangleMesh& target);
+void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet);
+
 struct FitSettings {
   std::size_t sheetSamples = 1500;          // sample vertices of the evaluation copy
   std::size_t targetSamples = 1500;         // target points measured to the sheet
@@ -86,7 +93,7 @@ struct FoldSuggestion {
 
 class FoldFitter {
  public:
-  // Samples the target once. Throws InvalidTarget for a target without area.
+  // Samples the target once. Throws InvalidTarget for a target checkTarget refuses.
   explicit FoldFitter(TriangleMesh target, const FitSettings& settings = {});
   ~FoldFitter();
   FoldFitter(const FoldFitter&) = delete;
@@ -96,8 +103,7 @@ class FoldFitter {
   double targetDiagonal() const;
   const FitSettings& settings() const { return settings_; }
 
-  // Throws InvalidTarget when the target lies nowhere near the sheet (centres farther apart than
-  // ten times the larger of the two) or differs from it in size a hundredfold (its units).
+  // checkTargetAgainst with this target.
   void checkAgainst(const Sheet& sheet) const;
 
   // The approximate Chamfer distance of a folded form to the target (what the search lowers).

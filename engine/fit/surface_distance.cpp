@@ -15,6 +15,9 @@ namespace curvefold {
 // The closest-point queries of one mesh: its triangles with area (CGAL's queries assume them).
 struct SurfaceDistanceQuery::Tree {
   Tree(const TriangleMesh& mesh, const char* which) {
+    // A vertex at 1e300 would give "inf mm" and a NaN ratio, not a distance.
+    if (const std::optional<std::string> why = unmeasurableVertex(mesh))
+      throw DegenerateMesh(std::string("the ") + which + " surface's " + *why);
     for (const auto& t : mesh.triangles) {
       CgalTriangle triangle(cgalPoint(mesh.positions[t[0]]), cgalPoint(mesh.positions[t[1]]),
                             cgalPoint(mesh.positions[t[2]]));

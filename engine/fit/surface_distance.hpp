@@ -39,7 +39,7 @@ inline constexpr std::size_t kDefaultDistanceSamples = 20'000;
 
 // Distances from points to one mesh's surface (the closest point on its triangles with area),
 // for many queries; safe to query from several threads. Throws DegenerateMesh (naming `which`)
-// for a mesh without area.
+// for a mesh without area or with a vertex too far out to measure (unmeasurableVertex).
 class SurfaceDistanceQuery {
  public:
   SurfaceDistanceQuery(const TriangleMesh& mesh, const char* which = "first");

@@ -214,6 +214,13 @@ void finish(const Sheet& sheet, double tolerance, SelfIntersectionReport& report
   }
 }
 
+bool shareVertex(const Triangle& a, const Triangle& b) {
+  for (VertexIndex u : a)
+    for (VertexIndex v : b)
+      if (u == v) return true;
+  return false;
+}
+
 void record(const Sheet& sheet, TriangleIndex s, TriangleIndex t, double tolerance,
             SelfIntersectionReport& report) {
   if (shareEdge(sheet.triangles[s], sheet.triangles[t])) return;
@@ -225,24 +232,149 @@ void record(const Sheet& sheet, TriangleIndex s, TriangleIndex t, double toleran
   list.emplace_back(std::min(s, t), std::max(s, t));
 }
 
+// The vertices every triangle under a node has (at most three; none for most inner nodes), per
+// node: the triangles of a fan all have its centre, and two nodes that share such a vertex hold
+// only pairs that share it, which the star pass tests. Children follow their parents in the
+// array, so one backward pass fills the inner nodes.
+struct CommonVertices {
+  std::array<VertexIndex, 3> vertices{};
+  std::uint32_t count = 0;
+  bool has(VertexIndex v) const {
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (vertices[k] == v) return true;
+    return false;
+  }
+  bool meets(const CommonVertices& other) const {
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (other.has(vertices[k])) return true;
+    return false;
+  }
+  CommonVertices within(const CommonVertices& other) const {
+    CommonVertices both;
+    for (std::uint32_t k = 0; k < count; ++k)
+      if (other.has(vertices[k])) both.vertices[both.count++] = vertices[k];
+    return both;
+  }
+};
+
+std::vector<CommonVertices> commonVertices(const Sheet& sheet, const TriangleTree& tree) {
+  std::vector<CommonVertices> common(tree.nodes.size());
+  for (std::size_t k = tree.nodes.size(); k-- > 0;) {
+    const TriangleTree::Node& node = tree.nodes[k];
+    if (node.count == 0) {
+      common[k] = common[node.first].within(common[node.first + 1]);
+      continue;
+    }
+    const Triangle& first = sheet.triangles[tree.order[node.first]];
+    common[k] = {{first[0], first[1], first[2]}, 3};
+    for (std::uint32_t i = node.first + 1; i < node.first + node.count && common[k].count > 0;
+         ++i) {
+      const Triangle& t = sheet.triangles[tree.order[i]];
+      common[k] = common[k].within({{t[0], t[1], t[2]}, 3});
+    }
+  }
+  return common;
+}
+
+// Stars this small test every pair of their triangles.
+constexpr std::size_t kSmallStar = 16;
+
+// The pairs of triangles that share exactly one vertex, star by star. Near their shared vertex v
+// two such triangles are wedges from v, and they cross or touch only along directions from v
+// that both wedges hold (within the tolerance, an angle of about tolerance / edge length): each
+// wedge's directions are an arc on the unit sphere, and only pairs whose arcs' boxes meet are
+// classified. A fan of n triangles costs about n log n, not n^2.
+void recordStars(const Sheet& sheet, double tolerance, SelfIntersectionReport& report) {
+  const std::size_t n = sheet.vertexCount();
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (const Triangle& t : sheet.triangles)
+    for (VertexIndex v : t) ++start[v.value + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<TriangleIndex> star(start[n]);
+  std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
+  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t)
+    for (VertexIndex v : sheet.triangles[t]) star[filled[v.value]++] = t;
+
+  struct Arc {
+    glm::dvec3 low, high;
+    TriangleIndex triangle;
+  };
+  std::vector<Arc> arcs;
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::uint32_t first = start[v], count = start[v + 1] - start[v];
+    if (count <= kSmallStar) {
+      for (std::uint32_t i = first; i < first + count; ++i)
+        for (std::uint32_t j = i + 1; j < first + count; ++j)
+          record(sheet, star[i], star[j], tolerance, report);
+      continue;
+    }
+    const glm::dvec3 centre = sheet.positions[v];
+    arcs.clear();
+    for (std::uint32_t i = first; i < first + count; ++i) {
+      const Triangle& t = sheet.triangles[star[i]];
+      const int k = t[0].value == v ? 0 : (t[1].value == v ? 1 : 2);
+      const glm::dvec3 a = sheet.positions[t[(k + 1) % 3]] - centre;
+      const glm::dvec3 b = sheet.positions[t[(k + 2) % 3]] - centre;
+      const double la = glm::length(a), lb = glm::length(b);
+      if (!(la > 0.0 && lb > 0.0)) {  // degenerate (validate() refuses it): every pair is tested
+        arcs.push_back({glm::dvec3(-2.0), glm::dvec3(2.0), star[i]});
+        continue;
+      }
+      const glm::dvec3 ua = a / la, ub = b / lb;
+      // The arc bulges from its chord by at most 1 - cos(angle / 2); the tolerance is an angle of
+      // tolerance / length at the nearer corner (doubled: the other wedge's share).
+      const double cosHalf = std::sqrt(std::max(0.0, 0.5 * (1.0 + glm::dot(ua, ub))));
+      const double margin = (1.0 - cosHalf) + 2.0 * tolerance / std::min(la, lb) + 1e-12;
+      arcs.push_back({glm::min(ua, ub) - margin, glm::max(ua, ub) + margin, star[i]});
+    }
+    // Sweep along the axis the arcs spread most on.
+    glm::dvec3 lowCentre(INFINITY), highCentre(-INFINITY);
+    for (const Arc& arc : arcs) {
+      lowCentre = glm::min(lowCentre, arc.low + arc.high);
+      highCentre = glm::max(highCentre, arc.low + arc.high);
+    }
+    const glm::dvec3 extent = highCentre - lowCentre;
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    std::sort(arcs.begin(), arcs.end(),
+              [axis](const Arc& p, const Arc& q) { return p.low[axis] < q.low[axis]; });
+    for (std::size_t i = 0; i < arcs.size(); ++i)
+      for (std::size_t j = i + 1; j < arcs.size() && arcs[j].low[axis] <= arcs[i].high[axis]; ++j)
+        if (overlaps(arcs[i].low, arcs[i].high, arcs[j].low, arcs[j].high, 0.0))
+          record(sheet, arcs[i].triangle, arcs[j].triangle, tolerance, report);
+  }
+}
+
 }  // namespace
 
+// Pairs that share a vertex are the star pass's; the tree's walk tests the rest, and skips node
+// pairs whose triangles all share one vertex (a fan's nodes, whose boxes all hold its centre).
 SelfIntersectionReport findSelfIntersections(const Sheet& sheet) {
   SelfIntersectionReport report;
   const double tolerance = kRelativeContactTolerance * sheetSize(sheet);
+  recordStars(sheet, tolerance, report);
   const TriangleTree tree = buildTriangleTree(sheet);
-  if (tree.nodes.empty()) return report;
+  if (tree.nodes.empty()) {
+    finish(sheet, tolerance, report);
+    return report;
+  }
+  const std::vector<CommonVertices> common = commonVertices(sheet, tree);
+  auto recordApart = [&](TriangleIndex s, TriangleIndex t) {
+    if (!shareVertex(sheet.triangles[s], sheet.triangles[t]))
+      record(sheet, s, t, tolerance, report);
+  };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
   while (!stack.empty()) {
     const auto [a, b] = stack.back();
     stack.pop_back();
     const TriangleTree::Node& A = tree.nodes[a];
     const TriangleTree::Node& B = tree.nodes[b];
+    if (common[a].meets(common[b])) continue;
     if (a == b) {
       if (A.count > 0) {
         for (std::uint32_t i = A.first; i < A.first + A.count; ++i)
           for (std::uint32_t j = i + 1; j < A.first + A.count; ++j)
-            record(sheet, tree.order[i], tree.order[j], tolerance, report);
+            recordApart(tree.order[i], tree.order[j]);
       } else {
         stack.push_back({A.first, A.first});
         stack.push_back({A.first + 1, A.first + 1});
@@ -254,7 +386,7 @@ SelfIntersectionReport findSelfIntersections(const Sheet& sheet) {
     if (A.count > 0 && B.count > 0) {
       for (std::uint32_t i = A.first; i < A.first + A.count; ++i)
         for (std::uint32_t j = B.first; j < B.first + B.count; ++j)
-          record(sheet, tree.order[i], tree.order[j], tolerance, report);
+          recordApart(tree.order[i], tree.order[j]);
     } else if (A.count > 0 || (B.count == 0 && spread(B) > spread(A))) {
       stack.push_back({a, B.first});
       stack.push_back({a, B.first + 1});

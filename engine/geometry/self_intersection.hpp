@@ -9,10 +9,12 @@
 // without a shared vertex) are contact, counted apart.
 //
 // The tests run on a bounding-volume hierarchy of the sheet's triangles (flat arrays, built by
-// median splits): the whole sheet against itself for `check`, and while dragging the reflected
-// part against the rest on a tree of the sheet built once when the drag starts
-// (DragIntersectionWatch): the reflected part is the reflection of its place in that sheet, so
-// the tree is walked against its own mirror image and nothing is rebuilt per update.
+// median splits): the whole sheet against itself for `check` (pairs that share a vertex apart,
+// star by star, by the directions their wedges span from it: a fan's triangles all share its
+// centre, so their boxes all meet, and a box test alone made `check` quadratic on fans), and while
+// dragging the reflected part against the rest on a tree of the sheet built once when the drag
+// starts (DragIntersectionWatch): the reflected part is the reflection of its place in that sheet,
+// so the tree is walked against its own mirror image and nothing is rebuilt per update.
 #pragma once
 
 #include <array>

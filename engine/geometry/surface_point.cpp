@@ -100,9 +100,13 @@ void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetS
   if (withinReach(p, from, sheetSize)) return;
   std::ostringstream message;
   message.precision(6);
-  message << what << " (" << p.x << ", " << p.y << ", " << p.z
-          << ") lies too far from the sheet (more than " << reach
-          << " m, a million times the sheet's size)";
+  message << what << " (" << p.x << ", " << p.y << ", " << p.z << ")";
+  // A NaN lies nowhere: "too far" would name the wrong problem.
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    message << " is not a point: its coordinates must be finite numbers";
+  else
+    message << " lies too far from the sheet (more than " << reach
+            << " m, a million times the sheet's size)";
   throw InvalidSheet(message.str());
 }
 

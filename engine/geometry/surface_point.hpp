@@ -33,7 +33,8 @@ inline constexpr double kRelativeMaxReach = 1e6;
 
 // Whether p (finite) lies within kRelativeMaxReach sheet sizes of `from` (a point of the sheet).
 bool withinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize);
-// Throws InvalidSheet "<what> (x, y, z) lies too far from the sheet ..." when it does not.
+// Throws InvalidSheet "<what> (x, y, z) lies too far from the sheet ..." when it does not, or
+// "<what> (nan, 0, 0) is not a point ..." when a coordinate is not finite.
 void checkWithinReach(const glm::dvec3& p, const glm::dvec3& from, double sheetSize,
                       const char* what);
 

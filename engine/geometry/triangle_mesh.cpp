@@ -1,6 +1,8 @@
 #include "engine/geometry/triangle_mesh.hpp"
 
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 #include <glm/geometric.hpp>
 
@@ -33,6 +35,28 @@ double boundingDiagonal(const TriangleMesh& mesh) {
       high = glm::max(high, mesh.positions[v]);
     }
   return glm::length(high - low);
+}
+
+std::optional<std::string> unmeasurableVertex(const TriangleMesh& mesh) {
+  for (const auto& triangle : mesh.triangles)
+    for (const std::uint32_t v : triangle) {
+      const glm::dvec3& p = mesh.positions[v];
+      // Written so that NaN fails it too.
+      if (std::abs(p.x) <= kMaxMeasurableCoordinate && std::abs(p.y) <= kMaxMeasurableCoordinate &&
+          std::abs(p.z) <= kMaxMeasurableCoordinate)
+        continue;
+      std::ostringstream text;
+      text.precision(6);
+      text << "vertex " << std::size_t(v) + 1 << " lies at (" << p.x << ", " << p.y << ", " << p.z
+           << ")";
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))
+        text << ", beyond " << kMaxMeasurableCoordinate
+             << " m of the origin: too far out to measure";
+      else
+        text << ": not a point (coordinates must be finite numbers)";
+      return text.str();
+    }
+  return std::nullopt;
 }
 
 }  // namespace curvefold

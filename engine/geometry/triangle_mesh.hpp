@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -26,5 +28,15 @@ double surfaceArea(const TriangleMesh& mesh);
 
 // Diagonal of the bounding box of the vertices that triangles use (0 when there are none).
 double boundingDiagonal(const TriangleMesh& mesh);
+
+// How far from the origin a shape to measure may reach, in metres (a million kilometres): beyond
+// it areas, diagonals and squared distances lose every digit or overflow (1e300 squared is
+// infinite), and a distance would print as "inf mm" or a ratio as NaN.
+inline constexpr double kMaxMeasurableCoordinate = 1e9;
+
+// The first vertex a triangle uses whose coordinates are not finite or reach beyond
+// kMaxMeasurableCoordinate, said in one line: "vertex 3 lies at (1e+300, 0, 0), beyond 1e+09 m
+// of the origin: too far out to measure" (vertices counted from 1, as OBJ does); or nothing.
+std::optional<std::string> unmeasurableVertex(const TriangleMesh& mesh);
 
 }  // namespace curvefold

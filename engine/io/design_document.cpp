@@ -265,6 +265,8 @@ Sheet initialSheet(const Design& design, std::string_view nameForErrors) {
   const auto& generated = std::get<GeneratedSurface>(design.surface);
   try {
     return makeSurface(generated.generator, generated.parameters);
+  } catch (const std::bad_alloc&) {
+    throw;  // not the surface's fault: the command says what ran out
   } catch (const std::exception& e) {
     throw DesignError(std::string(nameForErrors) + ": surface \"" + generated.generator +
                       "\": " + e.what());

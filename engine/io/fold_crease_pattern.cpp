@@ -276,7 +276,7 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
 
 CreasePattern readFoldCreasePatternText(std::string_view text, std::string_view name) {
   try {
-    const json document = parseJsonText(text, name, {}, DuplicateKeys::Refuse);
+    const json document = parseJsonText(text, name);
     const JsonReader reader(std::string{name});
     CreaseDrawing drawing = readDrawing(document, reader);
     PlanarizeOptions options;

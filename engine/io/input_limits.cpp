@@ -5,8 +5,10 @@
 #include <fstream>
 #include <iterator>
 #include <new>
+#include <optional>
 
 #include "engine/io/atomic_file.hpp"
+#include "engine/text/input_path.hpp"
 
 namespace curvefold {
 
@@ -19,14 +21,14 @@ std::string tooLarge(std::string_view name, std::uint64_t bytes, std::uint64_t m
 std::string readWholeFile(const std::filesystem::path& path, std::uint64_t maxBytes,
                           std::string_view kind) {
   const std::string name = path.string();
+  // Only a regular file: a FIFO would block the open, a device might never end.
+  if (const std::optional<std::string> why = notRegularFile(path))
+    throw FileError("cannot read " + name + ": " + *why);
   std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw FileError("cannot read " + name + ": " + std::strerror(EISDIR));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError("cannot read " + name + ": " + std::strerror(errno));
-  // Regular files say their size up front; a pipe is read until it passes the limit.
-  const std::uintmax_t size =
-      std::filesystem::is_regular_file(path, error) ? std::filesystem::file_size(path, error) : 0;
+  // The size up front (the bound below still holds for a file that grows while read).
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
   if (!error && size > maxBytes) throw FileError(tooLarge(name, size, maxBytes, kind));
   try {
     std::string text;

@@ -27,9 +27,10 @@ inline constexpr std::uint64_t kMaxCreasePatternVertices = 1'000'000;
 inline constexpr std::uint64_t kMaxCreasePatternEdges = 3'000'000;
 inline constexpr std::uint64_t kMaxCreasePatternFaceCorners = 6'000'000;
 
-// The whole file as text, refused (FileError) when it cannot be read, is not a regular file or
-// stream, or holds more than maxBytes: "<path>: 104857600 bytes, more than a <kind> may hold
-// (64 MiB)". Out of memory while reading is the same kind of one-line FileError.
+// The whole file as text, refused (FileError) when it cannot be read, is not a regular file (a
+// folder, a FIFO, a device: notRegularFile), or holds more than maxBytes: "<path>: 104857600 bytes,
+// more than a <kind> may hold (64 MiB)". Out of memory while reading is the same kind of one-line
+// FileError.
 std::string readWholeFile(const std::filesystem::path& path, std::uint64_t maxBytes,
                           std::string_view kind);
 

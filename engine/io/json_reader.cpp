@@ -76,29 +76,70 @@ std::string jsonParseProblem(const json::exception& error) {
   return message;
 }
 
-json parseJsonText(std::string_view text, std::string_view name, const JsonMemberFilter& keep,
-                   DuplicateKeys duplicates) {
+namespace {
+
+// The containers open around the parser's place, outermost first: each object's keys so far, each
+// array's element count (for the path a message names). nlohmann's callback says the depth of
+// every event but reports no end of a skipped container, so the stack is cut to the depth each
+// event gives rather than popped at ends.
+class KeyTracker {
+ public:
+  void event(int depth, json::parse_event_t event, const json& parsed) {
+    const auto level = static_cast<std::size_t>(depth);
+    if (event == json::parse_event_t::object_end || event == json::parse_event_t::array_end) return;
+    if (open_.size() > level) open_.resize(level);
+    // A value, an object or an array opening inside an array is its next element.
+    if (event != json::parse_event_t::key && !open_.empty() && !open_.back().object)
+      ++open_.back().elements;
+    if (event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) {
+      Container opened;
+      opened.object = event == json::parse_event_t::object_start;
+      open_.push_back(std::move(opened));
+    } else if (event == json::parse_event_t::key && !open_.empty()) {
+      Container& object = open_.back();
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!object.keys.insert(key).second)
+        throw JsonDuplicateKey("duplicate key " + quotedExcerpt(key) + " in " + where());
+      object.key = key;
+    }
+  }
+
+ private:
+  struct Container {
+    bool object = true;
+    std::unordered_set<std::string> keys;
+    std::string key;           // an object's member being read
+    std::size_t elements = 0;  // an array's elements so far
+  };
+
+  // The object the last container is: "the top-level object", "surface.parameters", "folds[2]".
+  std::string where() const {
+    std::string path;
+    for (std::size_t i = 0; i + 1 < open_.size(); ++i)
+      path = open_[i].object ? JsonReader::join(path, open_[i].key)
+                             : JsonReader::item(path, open_[i].elements - 1);
+    return path.empty() ? "the top-level object" : path;
+  }
+
+  std::vector<Container> open_;
+};
+
+}  // namespace
+
+json parseUniqueJson(std::string_view text, const JsonMemberFilter& keep) {
+  KeyTracker keys;
+  return json::parse(text, [&](int depth, json::parse_event_t event, json& parsed) {
+    keys.event(depth, event, parsed);
+    return event != json::parse_event_t::key || !keep ||
+           keep(depth, parsed.get_ref<const std::string&>());
+  });
+}
+
+json parseJsonText(std::string_view text, std::string_view name, const JsonMemberFilter& keep) {
   try {
-    if (!keep && duplicates == DuplicateKeys::LastWins) return json::parse(text);
-    // The keys seen in the open object at each depth (an object's keys arrive at its depth + 1).
-    std::vector<std::unordered_set<std::string>> seen;
-    return json::parse(text, [&](int depth, json::parse_event_t event, json& parsed) {
-      if (duplicates == DuplicateKeys::Refuse) {
-        const auto level = static_cast<std::size_t>(depth);
-        if (event == json::parse_event_t::object_start) {
-          if (seen.size() <= level + 1) seen.resize(level + 2);
-          seen[level + 1].clear();
-        } else if (event == json::parse_event_t::key) {
-          if (seen.size() <= level) seen.resize(level + 1);
-          const std::string& key = parsed.get_ref<const std::string&>();
-          if (!seen[level].insert(key).second)
-            throw JsonReadError(std::string(name) + ": key " + quotedExcerpt(key) +
-                                " given twice in one object");
-        }
-      }
-      return event != json::parse_event_t::key || !keep ||
-             keep(depth, parsed.get_ref<const std::string&>());
-    });
+    return parseUniqueJson(text, keep);
+  } catch (const JsonDuplicateKey& e) {
+    throw JsonReadError(std::string(name) + ": " + e.what());
   } catch (const json::parse_error& e) {
     // "parse error at line L, column C: problem": keep the place and the problem.
     std::string message = jsonParseProblem(e);

@@ -54,14 +54,23 @@ using JsonMemberFilter = std::function<bool(int depth, std::string_view key)>;
 // The shortest text that reads back as the same double, for messages and lines.
 std::string shortestDouble(double value);
 
-// What a key given twice in one object means: JSON leaves it open; nlohmann keeps the last.
-enum class DuplicateKeys { LastWins, Refuse };
+// A key an object holds twice. JSON leaves its meaning open and nlohmann keeps the last (a second
+// "folds": [] would drop every fold before it), so every reader refuses it: "duplicate key
+// "folds" in the top-level object", "duplicate key "x" in surface.parameters".
+class JsonDuplicateKey : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
-// Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem",
-// and with DuplicateKeys::Refuse "<name>: key "k" given twice in one object".
+// nlohmann's parse with every object's keys checked unique (JsonDuplicateKey) and the members
+// `keep` refuses skipped; nlohmann's own exceptions pass as they are. The one parse behind
+// parseJsonText and the recording's lines.
+nlohmann::json parseUniqueJson(std::string_view text, const JsonMemberFilter& keep = {});
+
+// Parses text; throws JsonReadError "<name>: not valid JSON at byte B (line L, column C): problem"
+// or "<name>: duplicate key ...".
 nlohmann::json parseJsonText(std::string_view text, std::string_view name,
-                             const JsonMemberFilter& keep = {},
-                             DuplicateKeys duplicates = DuplicateKeys::LastWins);
+                             const JsonMemberFilter& keep = {});
 // nlohmann's message without its "[json.exception...]" tag, for a parse inside a larger report.
 std::string jsonParseProblem(const nlohmann::json::exception& error);
 

@@ -17,9 +17,24 @@ namespace fs = std::filesystem;
 
 bool sameFile(const fs::path& a, const fs::path& b) {
   std::error_code error;
+  // Both there: the same inode is the same file, whichever links lead to it.
+  if (fs::exists(a, error) && fs::exists(b, error)) {
+    const bool same = fs::equivalent(a, b, error);
+    if (!error) return same;
+  }
   const fs::path x = fs::weakly_canonical(fs::absolute(a, error), error);
   const fs::path y = fs::weakly_canonical(fs::absolute(b, error), error);
   return x == y;
+}
+
+void refuseOutputsOverInputs(const std::vector<fs::path>& outputs,
+                             const std::vector<NamedInput>& inputs) {
+  for (const fs::path& output : outputs) {
+    if (output.empty() || output == "-") continue;
+    for (const NamedInput& input : inputs)
+      if (!input.path.empty() && sameFile(output, input.path))
+        throw FileError(output.string() + " is " + input.what + "; write to another file");
+  }
 }
 
 void OutputSet::add(const fs::path& path, std::function<void(const fs::path&)> writer) {

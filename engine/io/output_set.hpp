@@ -6,13 +6,28 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace curvefold {
 
-// Whether two paths name one file: the same after symbolic links, "." and ".." (whether or not
-// the file exists yet).
+// Whether two paths name one file: one file on the disk when both exist (symbolic links and hard
+// links included: std::filesystem::equivalent), else the same path after symbolic links, "." and
+// ".." (a file not written yet).
 bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// A file a command reads, with how a message names it ("the target", "the design being
+// exported").
+struct NamedInput {
+  std::filesystem::path path;
+  std::string what;
+};
+
+// The one check of every command that reads and writes: throws FileError "<output> is <what>;
+// write to another file" for the first output that names the same file as one of the inputs
+// (sameFile), before anything is read or written. Empty paths and "-" (standard output) pass.
+void refuseOutputsOverInputs(const std::vector<std::filesystem::path>& outputs,
+                             const std::vector<NamedInput>& inputs);
 
 class OutputSet {
  public:

@@ -3,9 +3,13 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "engine/render/render_memory.hpp"
+
 namespace curvefold {
 
 HeadlessRenderer::HeadlessRenderer(const HeadlessOptions& options) {
+  // Before the driver is loaded: out of memory inside vkCreateDevice is a crash, not an error.
+  checkRenderMemory(options.width, options.height, options.samples);
   ContextOptions contextOptions;
   const char* env = std::getenv("CURVEFOLD_VK_VALIDATION");
   contextOptions.instance.validation = options.validation || (env && std::strcmp(env, "1") == 0);

@@ -22,7 +22,8 @@ struct HeadlessOptions {
 
 class HeadlessRenderer {
  public:
-  // Throws VulkanError when there is no usable Vulkan device (one line).
+  // Throws VulkanError when there is no usable Vulkan device, or too little memory to start one
+  // (checkRenderMemory), in one line.
   explicit HeadlessRenderer(const HeadlessOptions& options = {});
 
   // Draws the scene and waits for its pixels.

@@ -25,6 +25,7 @@
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/text/bounded_line.hpp"
+#include "engine/text/input_path.hpp"
 
 namespace curvefold {
 namespace {
@@ -335,6 +336,9 @@ namespace {
 
 template <typename Parse>
 auto readObjFile(const std::string& path, Parse parse) {
+  // Only a regular file: a FIFO would block the open, a folder fail inside the stream.
+  if (const std::optional<std::string> why = notRegularFile(path))
+    throw ObjError(path + ": cannot open: " + *why);
   std::ifstream in(path);
   if (!in) throw ObjError(path + ": cannot open: " + std::strerror(errno));
   try {

@@ -1,8 +1,12 @@
 #include "interaction/xr/xr_program.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "interaction/xr/xr_check.hpp"
 #include "interaction/xr/xr_hand_tracking.hpp"
@@ -14,6 +18,57 @@ const char* const kNoXrRuntime =
     "runtime's manifest; `curvefold design` opens the desktop window instead";
 
 namespace {
+
+// What a runtime writes to standard error while it starts, held: a refusal is then said in one
+// line with the runtime's reason (it printed its line and curvefold another), and what a runtime
+// that starts prints is passed on unchanged.
+class StderrCapture {
+ public:
+  StderrCapture() {
+    std::fflush(stderr);
+    file_ = std::tmpfile();
+    saved_ = file_ ? ::dup(STDERR_FILENO) : -1;
+    if (saved_ >= 0 && ::dup2(::fileno(file_), STDERR_FILENO) < 0) {
+      ::close(saved_);
+      saved_ = -1;
+    }
+  }
+  ~StderrCapture() {
+    finish();
+    if (file_) std::fclose(file_);
+  }
+  StderrCapture(const StderrCapture&) = delete;
+  StderrCapture& operator=(const StderrCapture&) = delete;
+
+  // Standard error back as it was; what was written meanwhile (its first 64 KiB).
+  std::string finish() {
+    if (saved_ < 0) return "";
+    std::fflush(stderr);
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    saved_ = -1;
+    std::string text;
+    std::rewind(file_);
+    char buffer[4096];
+    for (std::size_t n;
+         text.size() < (64u << 10) && (n = std::fread(buffer, 1, sizeof buffer, file_)) > 0;)
+      text.append(buffer, n);
+    return text;
+  }
+
+ private:
+  std::FILE* file_ = nullptr;
+  int saved_ = -1;
+};
+
+// The last line with something on it, without its end of line.
+std::string lastLine(const std::string& text) {
+  const std::size_t end = text.find_last_not_of(" \t\r\n");
+  if (end == std::string::npos) return "";
+  const std::size_t newline = text.rfind('\n', end);
+  const std::size_t start = newline == std::string::npos ? 0 : newline + 1;
+  return text.substr(start, end + 1 - start);
+}
 
 constexpr XrViewConfigurationType kViewConfig = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
 
@@ -124,12 +179,17 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics)
   info.enabledExtensionCount = static_cast<std::uint32_t>(names.size());
   info.enabledExtensionNames = names.data();
   // The runtime was found (it listed its extensions): a refusal now is the runtime's, not a
-  // missing one, and what to do is in the message it printed.
+  // missing one, and what to do is in the line it printed, which the one error line quotes.
+  StderrCapture capture;
   const XrResult created = xrCreateInstance(&info, &instance_);
-  if (isNoRuntime(created))
+  const std::string printed = capture.finish();
+  if (isNoRuntime(created)) {
+    const std::string reason = lastLine(printed);
     throw XrError("the OpenXR runtime was found but refused to start (" + xrResultName(created) +
-                      "); its own message, if it printed one, says why",
+                      (reason.empty() ? "), saying nothing of why" : "): " + reason),
                   created);
+  }
+  if (!printed.empty()) std::fwrite(printed.data(), 1, printed.size(), stderr);
   CHECK_XR(created);
 
   XrInstanceProperties properties{XR_TYPE_INSTANCE_PROPERTIES};
