@@ -309,7 +309,6 @@ Design parseText(const std::string& text, std::string_view name) {
             .design(parseJsonText(text, name, [](int depth, std::string_view key) {
               return depth != 1 || std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end();
             }));
-    tellLegacyMeshing(design, name);
     return design;
   } catch (const JsonReadError& e) {
     throw DesignError(e.what());
@@ -395,7 +394,9 @@ void saveDesign(const Design& design, const std::filesystem::path& path) {
 }
 
 Design loadDesign(const std::filesystem::path& path) {
-  return parseText(readWholeFile(path, kMaxDesignBytes, "design"), path.string());
+  Design design = parseText(readWholeFile(path, kMaxDesignBytes, "design"), path.string());
+  tellLegacyMeshing(design, path.string());
+  return design;
 }
 
 Design parseDesign(std::istream& in, std::string_view nameForErrors) {

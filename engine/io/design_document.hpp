@@ -83,6 +83,8 @@ std::string designText(const Design& design);
 // lacks (symmetries came with version 2), or its folds replay on version 2 but not on version 1.
 // That one replay is the cost of reading such a file; saving it again writes version 2.
 Design loadDesign(const std::filesystem::path& path);
+// The reading alone, without that replay: a version-1 flat sheet stays generator version 1 (so a
+// fuzzer's input costs no replay before it is looked at).
 Design parseDesign(std::istream& in, std::string_view nameForErrors);
 
 // The "surface" object of a design document, for other formats that embed an initial surface (a
