@@ -9,8 +9,11 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <regex>
 #include <sstream>
 #include <string_view>
+#include <variant>
 
 #include <glm/geometric.hpp>
 
@@ -72,6 +75,22 @@ std::string today() {
   char text[16];
   std::strftime(text, sizeof text, "%Y-%m-%d", &local);
   return text;
+}
+
+// N of "rotational:N" or "rotational:N:axis" written as parseSymmetry reads it, else nothing.
+std::optional<int> rotationOrder(const std::string& symmetry) {
+  static const std::regex rotation("rotational:([1-9][0-9]{0,2})(:[xyz])?");
+  std::smatch match;
+  if (!std::regex_match(symmetry, match, rotation)) return std::nullopt;
+  return std::stoi(match[1].str());
+}
+
+bool hasParameter(const std::string& surface, const std::string& parameter) {
+  for (const SurfaceInfo& info : surfaceCatalog())
+    if (info.name == surface)
+      for (const SurfaceParameter& p : info.parameters)
+        if (p.name == parameter) return true;
+  return false;
 }
 
 }  // namespace
@@ -169,7 +188,22 @@ Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* c
     try {
       design.symmetry = parseSymmetry(options.symmetry, initialSheet(design, nameForErrors)).name();
     } catch (const InvalidSymmetry& e) {
-      throw UsageError("--symmetry " + std::string(e.what()));
+      // A disk has every rotation and a star one by each divisor of its points: a rotation the
+      // default mesh lacks is meshed for (its "rotations"), unless the user chose them.
+      auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+      const std::optional<int> order = rotationOrder(options.symmetry);
+      if (!generated || !order || generated->parameters.count("rotations") > 0 ||
+          !hasParameter(generated->generator, "rotations"))
+        throw UsageError("--symmetry " + std::string(e.what()));
+      GeneratedSurface meshed = *generated;
+      meshed.parameters["rotations"] = *order;
+      try {
+        const Sheet sheet = makeSurface(meshed.generator, meshed.parameters);
+        design.symmetry = parseSymmetry(options.symmetry, sheet).name();
+      } catch (const std::invalid_argument&) {
+        throw UsageError("--symmetry " + std::string(e.what()));
+      }
+      design.surface = meshed;
     }
   }
   return design;

@@ -91,8 +91,12 @@ DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet
                     std::to_string(crossing->first.b) + ") and (" +
                     std::to_string(crossing->second.a) + ", " + std::to_string(crossing->second.b) +
                     ") cross");
+  else if (const std::optional<PieceOverlap> overlap = findPieceOverlap(sheet))
+    line(false, "development overlaps itself: the piece of triangle " +
+                    std::to_string(overlap->inner) + " lies on the piece of triangle " +
+                    std::to_string(overlap->outer));
   else
-    line(true, "development: no edges cross");
+    line(true, "development: no edges cross, no piece lies on another");
   // Paper cannot pass through itself (issue 17); layers that only touch are contact.
   const SelfIntersectionReport crossings = findSelfIntersections(sheet);
   check.selfIntersectingPairs = crossings.intersections.size();

@@ -36,10 +36,12 @@ bool isExecutableFile(const std::string& path) {
 FilePicker::Picked waitForZenity(pid_t child, int output, int cancel) {
   std::string text;
   bool cancelled = false;
+  int pollError = 0;  // waiting failed: the dialog is ended as if cancelled, and that is said
   pollfd watched[2] = {{output, POLLIN, 0}, {cancel, POLLIN, 0}};
   for (;;) {
     if (::poll(watched, 2, -1) < 0) {
       if (errno == EINTR) continue;
+      pollError = errno;
       cancelled = true;
       break;
     }
@@ -76,7 +78,10 @@ FilePicker::Picked waitForZenity(pid_t child, int output, int cancel) {
   }
   FilePicker::Picked picked;
   const bool exited = reaped == child && WIFEXITED(status);
-  if (cancelled) {
+  if (pollError != 0) {
+    picked.error = std::string("cannot wait for the file picker (zenity): ") +
+                   std::strerror(pollError) + "; type the path instead";
+  } else if (cancelled) {
     // The window is closing: nobody reads this.
   } else if (exited && WEXITSTATUS(status) == 0) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 #include "engine/fabrication/svg_crease_pattern.hpp"
@@ -129,15 +130,22 @@ GeneratedSurface StudioPanel::chosenSurface() const {
 
 namespace {
 
-// "none", then the sheet's symmetries; only "none" for parameters the surface refuses (Create
-// says why).
+// What the symmetry list says, instead of a choice, when it cannot offer the sheet's own.
+constexpr std::string_view kNoSymmetriesBecause = "no symmetries: ";
+
+bool isReason(const std::string& entry) {
+  return entry.rfind(kNoSymmetriesBecause, 0) == 0;
+}
+
+// "none", then the sheet's symmetries; for parameters the surface refuses (or a sheet that cannot
+// be made), "none" and the reason, which the list shows.
 std::vector<std::string> symmetryListOf(const GeneratedSurface& surface) {
   std::vector<std::string> list = {"none"};
   try {
     for (std::string& choice : symmetryChoices(makeSurface(surface.generator, surface.parameters)))
       list.push_back(std::move(choice));
-  } catch (const std::exception&) {
-    // Parameters the surface refuses: Create says why.
+  } catch (const std::exception& e) {
+    list.push_back(std::string(kNoSymmetriesBecause) + e.what());
   }
   return list;
 }
@@ -251,6 +259,12 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
       if (listing) {
         refreshSymmetries();
         for (const std::string& choice : symmetryChoices_) {
+          if (isReason(choice)) {
+            ImGui::TextDisabled("%s", choice.c_str());
+            item("no symmetries");
+            message_ = choice;
+            continue;
+          }
           if (ImGui::Selectable(choice.c_str(), choice == symmetry_)) symmetry_ = choice;
           item(choice.c_str());
         }

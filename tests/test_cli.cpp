@@ -342,6 +342,37 @@ TEST_F(Cli, AStarFoldsWithItsFiveFoldRotation) {
   EXPECT_NE(r.out.find("ok    symmetry: rotational:5:z"), std::string::npos) << r.out;
 }
 
+// Issue 40, 1: a disk has every rotation and a star one by each divisor of its points: `new` meshes
+// them for the order asked (recorded as "rotations"), folds bring every image, and check passes.
+// A star's order that does not divide its points is still refused in one line.
+TEST_F(Cli, ADiskTakesAnyRotationAndAStarEachDivisorOfItsPoints) {
+  const std::string disk = path("disk.json").string();
+  CommandResult r = run("new disk --symmetry rotational:8 -o " + disk);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("rotational:8:z"), std::string::npos) << r.out;
+  const nlohmann::json design = nlohmann::json::parse(slurp(path("disk.json")));
+  EXPECT_EQ(design["surface"]["parameters"]["rotations"], 8);
+  EXPECT_EQ(design["surface"]["generator_version"], 2);
+  r = run("fold " + disk + " --vertex-near 0.1,0,0 --to 0.098,0,0.002 -o " + disk);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("fold 1 and 7 images"), std::string::npos) << r.out;
+  r = run("check " + disk);
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  // A rotation the default mesh has keeps the default mesh.
+  r = run("new disk --symmetry rotational:4 -o " + disk);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(slurp(path("disk.json")))["surface"]["parameters"].contains(
+      "rotations"));
+  r = run("new star --points 24 --symmetry rotational:8 -o " + path("star.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("rotational:8:z"), std::string::npos) << r.out;
+  r = run("new star --points 24 --symmetry rotational:5 -o " + path("star5.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("rotational:5"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("star5.json")));
+}
+
 // Issue 28, 2: a fold near the slit whose own part the slit cuts short (its images are whole)
 // was written though the design was not symmetric; now it is one line, exit 1, nothing written.
 // The same fold turned 30 degrees about the axis, away from the slit, is kept and checks.

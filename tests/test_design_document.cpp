@@ -4,7 +4,9 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <sstream>
+#include <variant>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -58,7 +60,8 @@ TEST_F(DesignDocument, GeneratedSurfaceRoundTripRebuildsBitForBit) {
   EXPECT_EQ(entries(), std::vector<std::string>{"square.curvefold.json"});
   const json written = json::parse(readText(path));
   EXPECT_EQ(written["format"], "curvefold-design");
-  EXPECT_EQ(written["version"], 1);
+  EXPECT_EQ(written["version"], 2);
+  EXPECT_EQ(written["surface"]["generator_version"], 2);
   EXPECT_EQ(written["surface"]["generator"], "square");
 
   const Design loaded = loadDesign(path);
@@ -234,12 +237,91 @@ TEST(DesignErrors, FormatAndVersion) {
   EXPECT_NE(errorAfter(validDocument(), [](json& d) { d["format"] = "curvefold-recording"; })
                 .find("format \"curvefold-recording\", expected \"curvefold-design\""),
             std::string::npos);
-  EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = 2; }),
-            std::string(kName) + ": unsupported version 2 (this build reads version 1)");
+  EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = 3; }),
+            std::string(kName) +
+                ": unsupported version 3, newer than this build reads (versions 1 to 2): open it "
+                "with a newer curvefold");
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = "1"; }),
-            std::string(kName) + ": unsupported version \"1\" (this build reads version 1)");
+            std::string(kName) + ": unsupported version \"1\" (this build reads versions 1 to 2)");
+  EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d["version"] = 0; }),
+            std::string(kName) + ": unsupported version 0 (this build reads versions 1 to 2)");
   EXPECT_EQ(errorAfter(validDocument(), [](json& d) { d.erase("version"); }),
             std::string(kName) + ": missing \"version\"");
+}
+
+// Issue 40, 1: a version-2 design says which generator version made its sheet.
+TEST(DesignErrors, GeneratorVersion) {
+  auto version2 = [](const json& generatorVersion) {
+    json d = validDocument();
+    d["version"] = 2;
+    d["surface"]["generator_version"] = generatorVersion;
+    return d;
+  };
+  EXPECT_EQ(errorAfter(version2(2), [](json& d) { d["surface"].erase("generator_version"); }),
+            std::string(kName) + ": surface: missing \"generator_version\"");
+  EXPECT_EQ(errorOf(version2(3)),
+            std::string(kName) +
+                ": surface.generator_version: the \"square\" generator version 3 is newer than "
+                "this build's (2): open it with a newer curvefold");
+  for (const json& bad : {json(0), json(-1), json(1.5), json("2"), json(nullptr)})
+    EXPECT_NE(
+        errorOf(version2(bad))
+            .find("surface.generator_version: must be a whole number from 1, got " + bad.dump()),
+        std::string::npos)
+        << bad;
+}
+
+TEST_F(DesignDocument, ASavedDesignRecordsTheGeneratorVersionThatMadeItsSheet) {
+  const auto path = dir() / "d.curvefold.json";
+  for (const auto& [generator, version] :
+       {std::pair{"disk", 2}, std::pair{"square", 2}, std::pair{"cylinder", 1}}) {
+    saveDesign(Design{GeneratedSurface{generator, {{"resolution", 8}}}, {}}, path);
+    const json written = json::parse(readText(path));
+    EXPECT_EQ(written["version"], 2);
+    EXPECT_EQ(written["surface"]["generator_version"], version) << generator;
+    EXPECT_EQ(std::get<GeneratedSurface>(loadDesign(path).surface).generatorVersion, 0);
+  }
+  // An older meshing stays the older meshing through save and load.
+  const Design old{GeneratedSurface{"disk", {{"resolution", 8}}, 1}, {}};
+  saveDesign(old, path);
+  EXPECT_EQ(json::parse(readText(path))["surface"]["generator_version"], 1);
+  const Design loaded = loadDesign(path);
+  EXPECT_EQ(std::get<GeneratedSurface>(loaded.surface).generatorVersion, 1);
+  EXPECT_EQ(initialSheet(loaded).development,
+            makeSurface("disk", {{"resolution", 8}}, 1).development);
+  EXPECT_NE(initialSheet(loaded).development, makeSurface("disk", {{"resolution", 8}}).development);
+}
+
+// A version-1 design does not say which meshing made a flat sheet: the one before 2026-12-04,
+// unless its symmetry or its folds say it was the one after.
+TEST_F(DesignDocument, AVersionOneDesignIsToldItsMeshing) {
+  const auto path = dir() / "v1.curvefold.json";
+  auto versionOf = [&](const json& document) {
+    writeFileAtomically(path, document.dump());
+    return std::get<GeneratedSurface>(loadDesign(path).surface).generatorVersion;
+  };
+  json plain = validDocument();
+  plain["folds"] = json::array();
+  EXPECT_EQ(versionOf(plain), 1);
+  // The cylinder's meshing never changed: version 1 is its latest.
+  plain["surface"]["generator"] = "cylinder";
+  EXPECT_EQ(versionOf(plain), 0);
+  // Only the newer square has its quarter turns.
+  json symmetric = validDocument();
+  symmetric["folds"] = json::array();
+  symmetric["symmetry"] = "rotational:4:z";
+  EXPECT_EQ(versionOf(symmetric), 0);
+  // A disk of 8 sides (resolution 2) then, of 24 now: a seed between the two outlines fits only
+  // the newer one. Its plane leaves the seed's side whole: nothing but the seed decides.
+  json disk = validDocument();
+  disk["surface"] = json::parse(R"({"generator": "disk", "parameters": {"resolution": 2}})");
+  const double r = 0.1 * std::cos(std::numbers::pi / 24.0) * 0.999;
+  const double a = std::numbers::pi / 8.0;  // the middle of an old side
+  disk["folds"][0]["seed"] = {r * std::cos(a), r * std::sin(a)};
+  disk["folds"][0]["plane"] = json::parse(R"({"point": [0, 0, 0], "normal": [-0.6, -0.8, 0]})");
+  EXPECT_EQ(versionOf(disk), 0);
+  disk["folds"][0]["seed"] = {0.5 * r * std::cos(a), 0.5 * r * std::sin(a)};
+  EXPECT_EQ(versionOf(disk), 1);
 }
 
 TEST(DesignErrors, Surface) {

@@ -362,5 +362,109 @@ TEST(DevelopmentOverlap, RarelyMissesACrossingLinedUpWithTheSweep) {
   EXPECT_LE(missed, 5);
 }
 
+// Issue 40, 4: pieces that lie on each other without an edge crossing went unseen. A small grid
+// wholly inside a face of a large one (its vertices off every edge of it), two coincident pieces,
+// and a piece in a hole of another (allowed: a ring and the disk cut from its middle).
+TEST(DevelopmentOverlap, APieceInsideAnotherIsFound) {
+  Sheet inner = testing::flatGrid(2, 2, 0.1);
+  // Below the outer square's diagonal, from (0, 0) to (1, 1).
+  for (glm::dvec2& p : inner.development) p += glm::dvec2(0.6, 0.1);
+  const Sheet outer = testing::flatGrid(1, 1, 1.0);
+  const Sheet sheet = joined(outer, inner);
+  EXPECT_FALSE(findDevelopmentCrossing(sheet));
+  const std::optional<PieceOverlap> overlap = findPieceOverlap(sheet);
+  ASSERT_TRUE(overlap);
+  // The inner piece's triangle lies on the outer's (the outer has triangles 0 and 1).
+  EXPECT_GE(overlap->inner, outer.triangleCount());
+  EXPECT_LT(overlap->outer, outer.triangleCount());
+  // Either order of the pieces.
+  EXPECT_TRUE(findPieceOverlap(joined(inner, outer)));
+}
+
+TEST(DevelopmentOverlap, CoincidentPiecesAreFound) {
+  const Sheet piece = testing::flatGrid(3, 2, 0.1);
+  const Sheet sheet = joined(piece, piece);
+  EXPECT_FALSE(findDevelopmentCrossing(sheet));  // edges along each other never cross properly
+  EXPECT_TRUE(findPieceOverlap(sheet));
+}
+
+TEST(DevelopmentOverlap, PiecesApartOrEdgeToEdgeOrInAHoleDoNotOverlap) {
+  EXPECT_FALSE(findPieceOverlap(testing::flatGrid(4, 4, 0.1)));  // one piece
+  Sheet right = testing::flatGrid(1, 1, 1.0);
+  for (glm::dvec2& p : right.development) p += glm::dvec2(1.0, 0.5);
+  EXPECT_FALSE(findPieceOverlap(joined(testing::flatGrid(1, 1, 1.0), right)));
+  for (glm::dvec2& p : right.development) p += glm::dvec2(5.0, 0.0);
+  EXPECT_FALSE(findPieceOverlap(joined(testing::flatGrid(1, 1, 1.0), right)));
+  // A square ring (a 3 x 3 grid without its middle cell) and a square in its hole.
+  Sheet ring = testing::flatGrid(3, 3, 1.0);
+  Sheet withoutMiddle = ring;
+  withoutMiddle.triangles.clear();
+  for (const Triangle& t : ring.triangles) {
+    glm::dvec2 c(0.0);
+    for (VertexIndex v : t) c += ring.development[v] / 3.0;
+    if (!(c.x > 1.0 && c.x < 2.0 && c.y > 1.0 && c.y < 2.0)) withoutMiddle.triangles.push_back(t);
+  }
+  ASSERT_EQ(withoutMiddle.triangles.size(), ring.triangles.size() - 2);
+  Sheet middle = testing::flatGrid(1, 1, 0.5);
+  for (glm::dvec2& p : middle.development) p += glm::dvec2(1.25, 1.25);
+  EXPECT_FALSE(findPieceOverlap(joined(withoutMiddle, middle)));
+  // The same square on the ring itself does overlap.
+  for (glm::dvec2& p : middle.development) p += glm::dvec2(1.0, 0.0);
+  EXPECT_TRUE(findPieceOverlap(joined(withoutMiddle, middle)));
+}
+
+// The sweep's order of two edges (issue 40, 4) is a strict weak ordering: irreflexive, asymmetric,
+// and transitive over every triple of edges that one sweep line crosses (their extents along the
+// sweep, in its frame turned by about 17 degrees, overlap), on a fan, a random fan and a grid.
+// The order it replaced held only between the edge entering and the others.
+TEST(DevelopmentOverlap, TheSweepOrderIsAStrictWeakOrdering) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> radius(0.3, 1.0);
+  const std::vector<Sheet> sheets = {
+      flatFan(9), flatFan(12, [&](int, glm::dvec2 p) { return radius(random) * p; }),
+      testing::flatGrid(2, 3, 1.0)};
+  const double turnCos = 0.9563047559630354, turnSin = 0.2923717047227367;
+  for (std::size_t k = 0; k < sheets.size(); ++k) {
+    const Sheet& sheet = sheets[k];
+    std::vector<Edge> edges;
+    std::vector<std::pair<double, double>> extent;  // along the sweep
+    for (const auto& sides : buildEdgeTopology(sheet).edges) {
+      edges.push_back(sides.edge);
+      const glm::dvec2 p = sheet.development[sides.edge.a], q = sheet.development[sides.edge.b];
+      const double x0 = turnCos * p.x - turnSin * p.y, x1 = turnCos * q.x - turnSin * q.y;
+      extent.push_back({std::min(x0, x1), std::max(x0, x1)});
+    }
+    const std::size_t n = edges.size();
+    std::vector<std::vector<char>> below(n, std::vector<char>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        below[i][j] = detail::sweepRunsBelow(sheet, edges[i], edges[j]);
+    auto crossed = [&](std::initializer_list<std::size_t> some) {
+      double lo = -1e300, hi = 1e300;
+      for (std::size_t i : some) {
+        lo = std::max(lo, extent[i].first);
+        hi = std::min(hi, extent[i].second);
+      }
+      return hi - lo > 1e-9;
+    };
+    std::size_t triples = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      EXPECT_FALSE(below[i][i]) << "sheet " << k << ", edge " << i;
+      for (std::size_t j = 0; j < n; ++j) {
+        if (i == j || !crossed({i, j})) continue;
+        EXPECT_FALSE(below[i][j] && below[j][i]) << "sheet " << k << ": " << i << ", " << j;
+        for (std::size_t m = 0; m < n; ++m) {
+          if (m == i || m == j || !crossed({i, j, m})) continue;
+          ++triples;
+          if (below[i][j] && below[j][m]) {
+            EXPECT_TRUE(below[i][m]) << "sheet " << k << ": " << i << " < " << j << " < " << m;
+          }
+        }
+      }
+    }
+    EXPECT_GT(triples, 0u) << "sheet " << k;
+  }
+}
+
 }  // namespace
 }  // namespace curvefold

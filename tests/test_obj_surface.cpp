@@ -94,6 +94,40 @@ TEST(ObjSurface, ADevelopmentThatOverlapsItselfIsRefused) {
   }
 }
 
+// Issue 40, 4: two flat pieces whose vt lie one inside the other (a small square in the middle of
+// a large one), or on each other, share no crossing edge; both were accepted though pieces must
+// not overlap. Side by side they are fine.
+TEST(ObjSurface, PiecesWhoseTextureCoordinatesLieOnEachOtherAreRefused) {
+  auto twoSquares = [](double small, const glm::dvec2& at) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        << "v 0 0 1\nv " << small << " 0 1\nv " << small << ' ' << small << " 1\nv 0 " << small
+        << " 1\n"
+        << "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+        << "vt " << at.x << ' ' << at.y << "\nvt " << at.x + small << ' ' << at.y << "\nvt "
+        << at.x + small << ' ' << at.y + small << "\nvt " << at.x << ' ' << at.y + small << '\n'
+        << "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 5/5 6/6 7/7\nf 5/5 7/7 8/8\n";
+    return out.str();
+  };
+  EXPECT_NO_THROW(parse(twoSquares(0.25, {2.0, 0.0})));
+  // Inside (below the large square's diagonal, from its first vertex to its third), and on it.
+  for (const auto& [small, at] :
+       {std::pair{0.25, glm::dvec2(0.6, 0.1)}, std::pair{1.0, glm::dvec2(0.0, 0.0)}}) {  // on it
+    try {
+      parse(twoSquares(small, at));
+      ADD_FAILURE() << "pieces lying on each other were accepted (" << small << ")";
+    } catch (const ObjError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("the development overlaps itself: this face's piece lies on the "
+                             "piece of the face on line"),
+                std::string::npos)
+          << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos);
+    }
+  }
+}
+
 // Issue 13, D16: an OBJ 1e9 m from the origin imported, then every fold failed to round-off.
 // It is recentred on import, and a fold on it keeps every invariant.
 TEST(ObjSurface, AMeshFarFromTheOriginIsRecentred) {

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -22,6 +24,7 @@
 #include <imgui.h>
 
 #include "app/document.hpp"
+#include "app/file_picker.hpp"
 #include "app/headset_studio.hpp"
 #include "app/studio_panel.hpp"
 #include "engine/io/design_document.hpp"
@@ -473,6 +476,52 @@ TEST_F(StudioPanelTest, BrowseFillsTheFieldFromZenity) {
   ASSERT_TRUE(framesUntil([&] { return panel_.message() == "no file chosen"; }))
       << panel_.message();
   EXPECT_EQ(panel_.openPath(), "/chosen/bowl.curvefold.json");
+}
+
+// Issue 40, 4: waiting on zenity that fails (poll() refused: here the descriptors it watches exceed
+// RLIMIT_NOFILE, lowered while the dialog is open) was taken for "no file chosen"; it is said.
+TEST_F(StudioPanelTest, AFailedWaitForTheFilePickerIsSaid) {
+  fakeZenity(
+      "echo $$ > \"$(dirname \"$0\")/pid\"\ntrap 'echo /chosen/x.curvefold.json; exit 0' USR1\n"
+      "while :; do sleep 0.05; done");
+  studio::ZenityPicker picker(studio::ZenityPicker::find());
+  picker.start(false, "");
+  const fs::path pidFile = dir_ / "bin" / "pid";
+  const auto start = std::chrono::steady_clock::now();
+  while (slurp(pidFile).empty() &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const pid_t pid = std::stoi(slurp(pidFile));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the worker waits in poll()
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &old), 0);
+  const rlimit low{1, old.rlim_max};
+  ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &low), 0);
+  ::kill(pid, SIGUSR1);  // the path comes, and the next wait fails
+  std::optional<studio::FilePicker::Picked> picked;
+  while (!(picked = picker.poll()) &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ::setrlimit(RLIMIT_NOFILE, &old);
+  ASSERT_TRUE(picked);
+  EXPECT_EQ(picked->path, "");
+  EXPECT_EQ(picked->error,
+            "cannot wait for the file picker (zenity): Invalid argument; type the path instead");
+}
+
+// The symmetry list says why it offers none (issue 40, 4): a star whose notches lie beyond its
+// points (the inner radius's slider clicked in its middle, 5 km) is refused, and the list says so
+// where it showed "none" alone.
+TEST_F(StudioPanelTest, TheSymmetryListSaysWhyItOffersNone) {
+  click("surface");
+  click("star");
+  click("inner_radius");
+  click("symmetry");
+  EXPECT_TRUE(panel_.itemCentre("none"));
+  EXPECT_TRUE(panel_.itemCentre("no symmetries")) << panel_.message();
+  EXPECT_EQ(panel_.message().rfind("no symmetries: surface 'star': parameter 'inner_radius' = ", 0),
+            0u)
+      << panel_.message();
 }
 
 // Frames go on while the dialog is open, and closing the panel ends the dialog at once.

@@ -214,6 +214,57 @@ TEST(Symmetry, FlatSheetsFoldWithTheirSymmetries) {
   }
 }
 
+// Issue 40, 1: a disk has every rotation, a star one by each divisor of its points. Meshed for the
+// order asked ("rotations"), each has it, and a rim flap folds with all its images, every
+// invariant kept; the default mesh lacks the order, and a star refuses one that does not divide
+// its points.
+TEST(Symmetry, ADiskIsMeshedForAnyRotationAndAStarForEachDivisorOfItsPoints) {
+  EXPECT_THROW(parseSymmetry("rotational:8", makeSurface("disk")), InvalidSymmetry);
+  struct Case {
+    const char* surface;
+    SurfaceParameters parameters;
+    int order;
+    glm::dvec3 grab, to;
+  };
+  std::vector<Case> cases;
+  // A cap 8 degrees either side of the grab: up to 16 images apart.
+  for (int n : {5, 7, 8, 16})
+    cases.push_back({"disk", {{"rotations", n}}, n, {0.1, 0.0, 0.0}, {0.099, 0.0, 0.001}});
+  for (int n : {8, 24})
+    cases.push_back(
+        {"star", {{"points", 24}, {"rotations", n}}, n, {0.0, 0.1, 0.0}, {0.0, 0.09, 0.01}});
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(c.surface) + " rotations " + std::to_string(c.order));
+    const Sheet initial = makeSurface(c.surface, c.parameters);
+    validate(initial);
+    const Symmetry symmetry = parseSymmetry("rotational:" + std::to_string(c.order), initial);
+    EXPECT_EQ(symmetry.order, c.order);
+    FoldSession session(initial);
+    session.setSymmetry(symmetry);
+    session.beginDragNear(c.grab);
+    session.updateDrag(c.to);
+    ASSERT_TRUE(session.commit()) << session.refusal();
+    EXPECT_EQ(session.foldCount(), std::size_t(c.order));
+    const Sheet& sheet = session.fixed();
+    validate(sheet);
+    const double tolerance = 1e-9 * sheetSize(initial);
+    for (const Isometry& g : symmetry.images()) expectMapsOntoItself(sheet, g, tolerance);
+    EXPECT_TRUE(identical(replayFolds(initial, session.folds()), sheet));
+  }
+  // The most asked for: 64 (parseSymmetry's most), a valid mesh that has it.
+  const Sheet most = makeSurface("disk", {{"rotations", 64}});
+  validate(most);
+  EXPECT_EQ(parseSymmetry("rotational:64", most).order, 64);
+  try {
+    makeSurface("star", {{"points", 24}, {"rotations", 5}});
+    ADD_FAILURE() << "a star of 24 points was meshed with 5 rotations";
+  } catch (const SurfaceError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "surface 'star': parameter 'rotations' = 5 must divide points = 24 (a star turns "
+              "onto itself only by a whole number of its points)");
+  }
+}
+
 // A session with a symmetry (the desktop's, the headset's, a replay's): each commit brings the
 // images, undo and redo take a group at once (across a keyframe), and a design opened again keeps
 // its groups.

@@ -425,8 +425,10 @@ void refineFinalists(std::vector<Drag>& finalists, tbb::enumerable_thread_specif
     double value = 0.0;
     try {
       optimizer.optimize(x, value);
-    } catch (const std::exception&) {
-      // A forced stop or a round-off limit: the best drag seen is kept either way.
+    } catch (const nlopt::forced_stop&) {
+      // The deadline: the best drag seen is kept. Out of memory and the rest go on up.
+    } catch (const nlopt::roundoff_limited&) {
+      // As close as rounding lets it get: the best drag seen is kept.
     }
   });
   std::stable_sort(finalists.begin(), finalists.end(),

@@ -76,7 +76,7 @@ class Sweep {
       // At a shared point, edges leave before others enter: edges meeting at a vertex are never
       // side by side there, and the ones entering are ordered only against edges that go on.
       if (in < n && sweepsBefore(segments_[in].p, segments_[leaving[out]].q)) {
-        const std::uint32_t s = entering_ = in++;
+        const std::uint32_t s = in++;
         const auto at = status.insert(s).first;
         where[s] = at;
         if (at != status.begin())
@@ -94,22 +94,27 @@ class Sweep {
   }
 
  private:
-  // Orders the edges that the sweep line crosses, bottom to top. Only the edge entering is ever
-  // compared (a std::set compares the key it inserts against its nodes), and against edges that
-  // the line crosses at its start point.
+  // Orders the edges that one sweep line crosses, bottom to top: the one that starts later (a
+  // higher index: segments are sorted by start) is placed where it starts, so the order of a
+  // pair never depends on which is compared first (a strict weak ordering: irreflexive,
+  // asymmetric, and transitive where the edges do not cross). A std::set compares only the edge
+  // entering with the ones the line crosses at its start point.
+ public:
   struct Below {
     const Sweep* sweep;
     bool operator()(std::uint32_t a, std::uint32_t b) const {
       if (a == b) return false;
-      return a == sweep->entering_ ? sweep->entersBelow(b) : !sweep->entersBelow(a);
+      return a > b ? sweep->startsBelow(a, b) : !sweep->startsBelow(b, a);
     }
   };
+
+ private:
   using Status = std::pmr::set<std::uint32_t, Below>;
 
-  // Whether the entering edge passes below edge t where the sweep line meets its start point.
-  bool entersBelow(std::uint32_t t) const {
+  // Whether edge `later` passes below edge t where the sweep line meets its start point.
+  bool startsBelow(std::uint32_t later, std::uint32_t t) const {
     ++stats_.orderTests;
-    const Segment& s = segments_[entering_];
+    const Segment& s = segments_[later];
     const Segment& e = segments_[t];
     const glm::dvec2 along = e.q - e.p, v = s.p - e.p;
     const double side = glm::cross(along, v);
@@ -135,7 +140,7 @@ class Sweep {
     // Parallel. Both head forward in the sweep's order, so if they point apart, one heads
     // straight up and the other straight down.
     if (glm::dot(along, heading) < 0.0) return heading.y < 0.0;
-    return entering_ < t;  // along t: any fixed order will do, as neither crosses the other
+    return later < t;  // along t: any fixed order will do, as neither crosses the other
   }
 
   // Decided on the development itself, not the turned frame: exactly the contract.
@@ -153,18 +158,18 @@ class Sweep {
   double tolerance_;
   double rounding_;
   CrossingSearchStats& stats_;
-  std::uint32_t entering_ = 0;
 };
 
-}  // namespace
+// The development's edges as the sweep takes them, in the order they enter, with the tolerance;
+// no segments when the development has no extent.
+struct SweepInput {
+  std::vector<Segment> segments;
+  double tolerance = 0.0;
+};
 
-std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
-                                                    CrossingSearchStats* stats) {
-  CrossingSearchStats local;
-  CrossingSearchStats& work = stats ? *stats : local;
-  work = {};
+SweepInput sweepInput(const Sheet& sheet) {
   const EdgeTopology topology = buildEdgeTopology(sheet);
-  if (topology.edges.size() < 2) return std::nullopt;
+  SweepInput input;
   const auto finite = [](const glm::dvec2& p) { return std::isfinite(p.x) && std::isfinite(p.y); };
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (const auto& sides : topology.edges)
@@ -174,12 +179,11 @@ std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
         hi = glm::max(hi, sheet.development[v]);
       }
   const double size = glm::length(hi - lo);
-  if (!(size > 0.0) || !std::isfinite(size)) return std::nullopt;
+  if (!(size > 0.0) || !std::isfinite(size)) return input;
   // Turned about the centre, so that turning rounds at the scale of the size: an edge it shrinks
   // to a point is far too short to cross anything beyond the tolerance.
   const glm::dvec2 centre = 0.5 * (lo + hi);
-  std::vector<Segment> segments;
-  segments.reserve(topology.edges.size());
+  input.segments.reserve(topology.edges.size());
   for (const auto& sides : topology.edges) {
     const glm::dvec2 a = sheet.development[sides.edge.a], b = sheet.development[sides.edge.b];
     // validate() refuses an end that is not finite; here such an edge is left out, as it has no
@@ -187,11 +191,103 @@ std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
     if (!finite(a) || !finite(b)) continue;
     glm::dvec2 p = turned(a - centre), q = turned(b - centre);
     if (sweepsBefore(q, p)) std::swap(p, q);
-    if (p != q) segments.push_back({p, q, sides.edge});
+    if (p != q) input.segments.push_back({p, q, sides.edge});
   }
-  std::sort(segments.begin(), segments.end(),
-            [](const Segment& a, const Segment& b) { return sweepsBefore(a.p, b.p); });
-  return Sweep(sheet, std::move(segments), kRelativeCrossingArea * size * size, work).run();
+  // Edges from one point in a fixed order (the topology's), so that any two runs agree.
+  std::stable_sort(input.segments.begin(), input.segments.end(),
+                   [](const Segment& a, const Segment& b) { return sweepsBefore(a.p, b.p); });
+  input.tolerance = kRelativeCrossingArea * size * size;
+  return input;
 }
+
+}  // namespace
+
+std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
+                                                    CrossingSearchStats* stats) {
+  CrossingSearchStats local;
+  CrossingSearchStats& work = stats ? *stats : local;
+  work = {};
+  SweepInput input = sweepInput(sheet);
+  if (input.segments.size() < 2) return std::nullopt;
+  return Sweep(sheet, std::move(input.segments), input.tolerance, work).run();
+}
+
+std::optional<PieceOverlap> findPieceOverlap(const Sheet& sheet) {
+  const EdgeTopology topology = buildEdgeTopology(sheet);
+  const std::vector<std::uint32_t> component = connectedComponents(sheet, topology);
+  if (component.empty()) return std::nullopt;
+  const std::uint32_t pieces = *std::max_element(component.begin(), component.end()) + 1;
+  if (pieces < 2) return std::nullopt;
+  const auto& at = sheet.development;
+  auto twiceArea = [&](const Triangle& t) {
+    return glm::cross(at[t[1]] - at[t[0]], at[t[2]] - at[t[0]]);
+  };
+  // Each piece's point: the centroid of its largest triangle, well inside the piece.
+  std::vector<TriangleIndex> largest(pieces, TriangleIndex(kNoIndex));
+  std::vector<double> largestArea(pieces, -1.0);
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (std::uint32_t t = 0; t < sheet.triangleCount(); ++t) {
+    const double area = std::abs(twiceArea(sheet.triangles[t]));
+    if (!std::isfinite(area)) return std::nullopt;  // validate() refuses such a sheet
+    if (area > largestArea[component[t]]) {
+      largestArea[component[t]] = area;
+      largest[component[t]] = t;
+    }
+    for (const VertexIndex v : sheet.triangles[t]) {
+      lo = glm::min(lo, at[v]);
+      hi = glm::max(hi, at[v]);
+    }
+  }
+  const double size = glm::length(hi - lo);
+  const double tolerance = kRelativeCrossingArea * size * size;
+  struct Probe {
+    glm::dvec2 point;
+    std::uint32_t piece;
+  };
+  std::vector<Probe> probes;
+  probes.reserve(pieces);
+  for (std::uint32_t c = 0; c < pieces; ++c) {
+    const Triangle& t = sheet.triangles[largest[c]];
+    probes.push_back({(at[t[0]] + at[t[1]] + at[t[2]]) / 3.0, c});
+  }
+  std::sort(probes.begin(), probes.end(),
+            [](const Probe& a, const Probe& b) { return a.point.x < b.point.x; });
+  for (std::uint32_t t = 0; t < sheet.triangleCount(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const glm::dvec2 a = at[tri[0]], b = at[tri[1]], c = at[tri[2]];
+    const glm::dvec2 low = glm::min(a, glm::min(b, c)), high = glm::max(a, glm::max(b, c));
+    // Either turning of the development: its sign says which side is inside.
+    const double sign = twiceArea(tri) < 0.0 ? -1.0 : 1.0;
+    auto first = std::lower_bound(probes.begin(), probes.end(), low.x,
+                                  [](const Probe& p, double x) { return p.point.x < x; });
+    for (auto probe = first; probe != probes.end() && probe->point.x <= high.x; ++probe) {
+      if (probe->piece == component[t] || probe->point.y < low.y || probe->point.y > high.y)
+        continue;
+      const glm::dvec2 p = probe->point;
+      if (sign * glm::cross(b - a, p - a) > tolerance &&
+          sign * glm::cross(c - b, p - b) > tolerance &&
+          sign * glm::cross(a - c, p - c) > tolerance)
+        return PieceOverlap{largest[probe->piece], TriangleIndex(t)};
+    }
+  }
+  return std::nullopt;
+}
+
+namespace detail {
+
+bool sweepRunsBelow(const Sheet& sheet, Edge a, Edge b) {
+  SweepInput input = sweepInput(sheet);
+  std::uint32_t ia = kNoIndex, ib = kNoIndex;
+  for (std::uint32_t i = 0; i < input.segments.size(); ++i) {
+    if (input.segments[i].edge == a) ia = i;
+    if (input.segments[i].edge == b) ib = i;
+  }
+  if (ia == kNoIndex || ib == kNoIndex) return false;
+  CrossingSearchStats stats;
+  const Sweep sweep(sheet, std::move(input.segments), input.tolerance, stats);
+  return Sweep::Below{&sweep}(ia, ib);
+}
+
+}  // namespace detail
 
 }  // namespace curvefold

@@ -47,4 +47,27 @@ struct CrossingSearchStats {
 std::optional<EdgeCrossing> findDevelopmentCrossing(const Sheet& sheet,
                                                     CrossingSearchStats* stats = nullptr);
 
+// Two pieces (connected components) of the development where one lies on the other with no edges
+// crossing, which findDevelopmentCrossing cannot see: a piece inside a face of another (not in a
+// hole of it), or two coincident pieces. `inner` is a triangle of the piece lying on the other,
+// `outer` the triangle of the other it lies in.
+struct PieceOverlap {
+  TriangleIndex inner = kNoIndex, outer = kNoIndex;
+};
+
+// With no edges crossing, a piece lies wholly on or wholly off another (their boundaries may
+// touch: pieces laid edge to edge), so one point inside each piece (the centroid of its largest
+// triangle) is tested against the other pieces' triangles, beyond the crossing tolerance. The
+// points are sorted by x and each triangle looks at those within its extent: O(T log P) for T
+// triangles and P pieces, nothing for one piece. Limit: pieces whose edges overlap along a line
+// (collinear, not crossing) in part only are seen only when such a point falls in the overlap.
+std::optional<PieceOverlap> findPieceOverlap(const Sheet& sheet);
+
+namespace detail {
+// The sweep's order of two edges of the development that one sweep line crosses (the later one
+// starts within the other's extent): whether `a` runs below `b` there. For tests that hold it to
+// a strict weak ordering; false for an edge that is not in the development.
+bool sweepRunsBelow(const Sheet& sheet, Edge a, Edge b);
+}  // namespace detail
+
 }  // namespace curvefold

@@ -120,7 +120,7 @@ std::vector<std::vector<VertexIndex>> boundaryLoops(const Sheet& sheet, const Ed
   return loops;
 }
 
-std::size_t connectedComponentCount(const Sheet& sheet, const EdgeTopology& edges) {
+std::vector<std::uint32_t> connectedComponents(const Sheet& sheet, const EdgeTopology& edges) {
   std::vector<std::uint32_t> parent(sheet.triangleCount());
   std::iota(parent.begin(), parent.end(), 0u);
   auto root = [&](std::uint32_t x) {
@@ -130,9 +130,20 @@ std::size_t connectedComponentCount(const Sheet& sheet, const EdgeTopology& edge
   for (const auto& sides : edges.edges)
     if (sides.left != kNoIndex && sides.right != kNoIndex)
       parent[root(sides.left)] = root(sides.right);
-  std::size_t components = 0;
-  for (std::uint32_t t = 0; t < parent.size(); ++t) components += root(t) == t;
-  return components;
+  std::vector<std::uint32_t> component(parent.size());
+  std::vector<std::uint32_t> number(parent.size(), kNoIndex);
+  std::uint32_t count = 0;
+  for (std::uint32_t t = 0; t < parent.size(); ++t) {
+    std::uint32_t& n = number[root(t)];
+    if (n == kNoIndex) n = count++;
+    component[t] = n;
+  }
+  return component;
+}
+
+std::size_t connectedComponentCount(const Sheet& sheet, const EdgeTopology& edges) {
+  const std::vector<std::uint32_t> component = connectedComponents(sheet, edges);
+  return component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
 }
 
 }  // namespace curvefold

@@ -66,5 +66,7 @@ std::vector<std::vector<VertexIndex>> boundaryLoops(const Sheet& sheet, const Ed
 
 // Connected components of the triangle graph (through shared edges).
 std::size_t connectedComponentCount(const Sheet& sheet, const EdgeTopology& edges);
+// Each triangle's component, numbered 0, 1, ... in the order of their first triangles.
+std::vector<std::uint32_t> connectedComponents(const Sheet& sheet, const EdgeTopology& edges);
 
 }  // namespace curvefold

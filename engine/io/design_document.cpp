@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/geometry/surface_point.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/input_limits.hpp"
@@ -96,7 +97,8 @@ class Reader : public JsonReader {
     return sheet;
   }
 
-  InitialSurface surface(const json& value) const {
+  // documentVersion: 0 for formats that embed a surface without a generator version (the latest).
+  InitialSurface surface(const json& value, std::int64_t documentVersion) const {
     const std::string where = "surface";
     object(value, where);
     const bool generated = value.contains("generator");
@@ -112,6 +114,25 @@ class Reader : public JsonReader {
       object(*parameters, where + ".parameters");
       for (const auto& [key, parameter] : parameters->items())
         surface.parameters[key] = number(parameter, join(where + ".parameters", key));
+    }
+    if (documentVersion == 1) {
+      surface.generatorVersion = 1;  // loadDesign tells which meshing (see there)
+    } else if (documentVersion >= 2) {
+      const std::string at = where + ".generator_version";
+      const json& given = member(value, "generator_version", where);
+      if (!given.is_number_unsigned() || given.get<std::uint64_t>() < 1)
+        fail(at, "must be a whole number from 1, got " + jsonExcerpt(given));
+      const std::uint64_t version = given.get<std::uint64_t>();
+      try {
+        const int latest = latestGeneratorVersion(surface.generator);
+        if (version > static_cast<std::uint64_t>(latest))
+          fail(at, "the \"" + surface.generator + "\" generator version " +
+                       std::to_string(version) + " is newer than this build's (" +
+                       std::to_string(latest) + "): open it with a newer curvefold");
+        surface.generatorVersion = static_cast<int>(version) == latest ? 0 : int(version);
+      } catch (const SurfaceError&) {
+        // An unknown generator: initialSheet names it and the ones there are.
+      }
     }
     return surface;
   }
@@ -153,9 +174,10 @@ class Reader : public JsonReader {
   }
 
   Design design(const json& document) const {
-    formatAndVersion(document, kDesignFormat, kDesignVersion, "curvefold design");
+    const std::int64_t version =
+        formatAndVersion(document, kDesignFormat, 1, kDesignVersion, "curvefold design");
     Design design;
-    design.surface = surface(member(document, "surface", ""));
+    design.surface = surface(member(document, "surface", ""), version);
     const json& folds = array(member(document, "folds", ""), "folds");
     design.folds.reserve(folds.size());
     for (std::size_t i = 0; i < folds.size(); ++i) design.folds.push_back(fold(folds[i], i + 1));
@@ -187,11 +209,26 @@ ordered_json vectorJson(const glm::dvec3& v) {
   return {v.x, v.y, v.z};
 }
 
-ordered_json surfaceJsonOf(const InitialSurface& surface) {
+// withVersion: a design's surface, which says which meshing made it (a generator the build does
+// not know has no version to give: saving it is refused when it is read back).
+ordered_json surfaceJsonOf(const InitialSurface& surface, bool withVersion) {
   if (const auto* generated = std::get_if<GeneratedSurface>(&surface)) {
     ordered_json parameters = ordered_json::object();
     for (const auto& [key, value] : generated->parameters) parameters[key] = value;
-    return {{"generator", generated->generator}, {"parameters", std::move(parameters)}};
+    ordered_json result = {{"generator", generated->generator}};
+    if (withVersion) {
+      int version = generated->generatorVersion;
+      if (version == 0) {
+        try {
+          version = latestGeneratorVersion(generated->generator);
+        } catch (const SurfaceError&) {
+          version = 1;
+        }
+      }
+      result["generator_version"] = version;
+    }
+    result["parameters"] = std::move(parameters);
+    return result;
   }
   const Sheet& sheet = std::get<Sheet>(surface);
   ordered_json mesh = ordered_json::object();
@@ -226,6 +263,39 @@ ordered_json foldJson(const FoldRecord& fold) {
   return value;
 }
 
+// The flat sheets' meshing changed from generator version 1 to 2 (2026-12-04); a version-1 design
+// does not say which made it (see loadDesign). Its generator version is read as 1 until now.
+void tellLegacyMeshing(Design& design, std::string_view name) {
+  auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+  if (!generated || generated->generatorVersion != 1) return;
+  int latest = 1;
+  try {
+    latest = latestGeneratorVersion(generated->generator);
+  } catch (const SurfaceError&) {
+    return;  // initialSheet names the unknown generator
+  }
+  // Generators that never changed: version 1 is their latest.
+  if (latest == 1) {
+    generated->generatorVersion = 0;
+    return;
+  }
+  Design newer = design;
+  std::get<GeneratedSurface>(newer.surface).generatorVersion = 2 == latest ? 0 : 2;
+  auto fits = [&](const Design& candidate) {
+    try {
+      if (!candidate.symmetry.empty())
+        parseSymmetry(candidate.symmetry, initialSheet(candidate, name));
+      buildSheet(candidate, name);
+      return true;
+    } catch (const DesignError&) {
+      return false;
+    } catch (const InvalidSymmetry&) {
+      return false;
+    }
+  };
+  if (!fits(design) && fits(newer)) design = std::move(newer);
+}
+
 Design parseText(const std::string& text, std::string_view name) {
   if (text.size() > kMaxDesignBytes)
     throw DesignError(tooLarge(name, text.size(), kMaxDesignBytes, "design"));
@@ -234,10 +304,12 @@ Design parseText(const std::string& text, std::string_view name) {
     // millions of elements costs no memory (and cannot exhaust it while being destroyed).
     static const std::array<std::string_view, 5> kKnown = {"format", "version", "surface", "folds",
                                                            "symmetry"};
-    return Reader(std::string(name))
-        .design(parseJsonText(text, name, [](int depth, std::string_view key) {
-          return depth != 1 || std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end();
-        }));
+    Design design =
+        Reader(std::string(name))
+            .design(parseJsonText(text, name, [](int depth, std::string_view key) {
+              return depth != 1 || std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end();
+            }));
+    return design;
   } catch (const JsonReadError& e) {
     throw DesignError(e.what());
   } catch (const std::bad_alloc&) {
@@ -249,12 +321,12 @@ Design parseText(const std::string& text, std::string_view name) {
 }  // namespace
 
 nlohmann::ordered_json initialSurfaceJson(const InitialSurface& surface) {
-  return surfaceJsonOf(surface);
+  return surfaceJsonOf(surface, false);
 }
 
 InitialSurface parseInitialSurface(const nlohmann::json& value, std::string_view nameForErrors) {
   try {
-    return Reader(std::string(nameForErrors)).surface(value);
+    return Reader(std::string(nameForErrors)).surface(value, 0);
   } catch (const JsonReadError& e) {
     throw DesignError(e.what());
   }
@@ -264,7 +336,7 @@ Sheet initialSheet(const Design& design, std::string_view nameForErrors) {
   if (const auto* sheet = std::get_if<Sheet>(&design.surface)) return *sheet;
   const auto& generated = std::get<GeneratedSurface>(design.surface);
   try {
-    return makeSurface(generated.generator, generated.parameters);
+    return makeSurface(generated.generator, generated.parameters, generated.generatorVersion);
   } catch (const std::bad_alloc&) {
     throw;  // not the surface's fault: the command says what ran out
   } catch (const std::exception& e) {
@@ -293,7 +365,7 @@ Sheet buildSheet(const Design& design, std::string_view nameForErrors) {
 }
 
 std::string designText(const Design& design) {
-  const ordered_json surface = surfaceJsonOf(design.surface);
+  const ordered_json surface = surfaceJsonOf(design.surface, true);
   std::vector<ordered_json> folds;
   for (const FoldRecord& fold : design.folds) folds.push_back(foldJson(fold));
 
@@ -324,7 +396,9 @@ void saveDesign(const Design& design, const std::filesystem::path& path) {
 }
 
 Design loadDesign(const std::filesystem::path& path) {
-  return parseText(readWholeFile(path, kMaxDesignBytes, "design"), path.string());
+  Design design = parseText(readWholeFile(path, kMaxDesignBytes, "design"), path.string());
+  tellLegacyMeshing(design, path.string());
+  return design;
 }
 
 Design parseDesign(std::istream& in, std::string_view nameForErrors) {

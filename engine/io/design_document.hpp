@@ -21,7 +21,9 @@
 namespace curvefold {
 
 inline constexpr std::string_view kDesignFormat = "curvefold-design";
-inline constexpr int kDesignVersion = 1;
+// Version 2 records the generator version that made a generated sheet ("generator_version");
+// version 1 (until 2026-12-04) did not: see loadDesign for how its meshing is told.
+inline constexpr int kDesignVersion = 2;
 // A fold's "more_seeds" (FoldRecord::moreSeeds) hold at most kMaxMoreSeeds (fold_session.hpp).
 
 // One line naming the file and the problem, e.g.
@@ -35,6 +37,9 @@ class DesignError : public std::runtime_error {
 struct GeneratedSurface {
   std::string generator;
   std::map<std::string, double> parameters;
+  // The meshing that made the sheet (makeSurface's generatorVersion); 0: the generator's latest,
+  // which a design read from a file holds as 0 too.
+  int generatorVersion = 0;
   bool operator==(const GeneratedSurface&) const = default;
 };
 
@@ -69,13 +74,23 @@ void saveDesign(const Design& design, const std::filesystem::path& path);
 std::string designText(const Design& design);
 
 // Reads and checks a design (everything but the replay, which buildSheet does). Throws FileError
-// when the file cannot be read, DesignError for anything wrong with its content.
+// when the file cannot be read, DesignError for anything wrong with its content, also for a file
+// or a generator version newer than this build's ("unsupported version 3, newer than ...").
+//
+// A version-1 design does not say which meshing made its generated sheet, and the flat sheets'
+// changed on 2026-12-04 (generator version 2). It is read as generator version 1, the meshing of
+// the twelve days before, unless only version 2 fits it: its symmetry is one the version-1 sheet
+// lacks (symmetries came with version 2), or its folds replay on version 2 but not on version 1.
+// That one replay is the cost of reading such a file; saving it again writes version 2.
 Design loadDesign(const std::filesystem::path& path);
+// The reading alone, without that replay: a version-1 flat sheet stays generator version 1 (so a
+// fuzzer's input costs no replay before it is looked at).
 Design parseDesign(std::istream& in, std::string_view nameForErrors);
 
 // The "surface" object of a design document, for other formats that embed an initial surface (a
 // recording's header). parseInitialSurface checks the JSON (not whether a generator accepts its
-// parameters: initialSheet does that) and throws DesignError starting with nameForErrors.
+// parameters: initialSheet does that) and throws DesignError starting with nameForErrors. These
+// formats name no generator version: their generated surfaces are the latest meshing.
 nlohmann::ordered_json initialSurfaceJson(const InitialSurface& surface);
 InitialSurface parseInitialSurface(const nlohmann::json& value, std::string_view nameForErrors);
 

@@ -248,8 +248,9 @@ glm::dvec3 JsonReader::vector3(const json& value, const std::string& where) cons
   return {c[0], c[1], c[2]};
 }
 
-void JsonReader::formatAndVersion(const json& document, std::string_view format,
-                                  std::int64_t version, std::string_view what) const {
+std::int64_t JsonReader::formatAndVersion(const json& document, std::string_view format,
+                                          std::int64_t oldest, std::int64_t newest,
+                                          std::string_view what) const {
   if (!document.is_object())
     fail("", "not a " + std::string(what) + " (a JSON " + std::string(document.type_name()) +
                  ", not an object)");
@@ -259,9 +260,17 @@ void JsonReader::formatAndVersion(const json& document, std::string_view format,
     fail("", "not a " + std::string(what) + " (format " + jsonExcerpt(*name) + ", expected \"" +
                  std::string(format) + "\")");
   const json& found = member(document, "version", "");
-  if (!found.is_number_integer() || found.get<std::int64_t>() != version)
-    fail("", "unsupported version " + jsonExcerpt(found) + " (this build reads version " +
-                 std::to_string(version) + ")");
+  const std::string reads =
+      oldest == newest ? "version " + std::to_string(newest)
+                       : "versions " + std::to_string(oldest) + " to " + std::to_string(newest);
+  if (found.is_number_integer()) {
+    const std::int64_t version = found.get<std::int64_t>();
+    if (version > newest)
+      fail("", "unsupported version " + std::to_string(version) +
+                   ", newer than this build reads (" + reads + "): open it with a newer curvefold");
+    if (version >= oldest) return version;
+  }
+  fail("", "unsupported version " + jsonExcerpt(found) + " (this build reads " + reads + ")");
 }
 
 }  // namespace curvefold

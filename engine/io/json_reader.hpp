@@ -110,7 +110,15 @@ class JsonReader {
   // Checks a document's "format" and "version" members, quoting only an excerpt of what is there:
   // "not a <what> (format [[[[..., expected "curvefold-design")".
   void formatAndVersion(const nlohmann::json& document, std::string_view format,
-                        std::int64_t version, std::string_view what) const;
+                        std::int64_t version, std::string_view what) const {
+    formatAndVersion(document, format, version, version, what);
+  }
+  // Any version from oldest to newest; returns the one read. A newer one is refused saying that a
+  // newer curvefold wrote it: "unsupported version 3, newer than this build reads (versions 1 to
+  // 2): open it with a newer curvefold".
+  std::int64_t formatAndVersion(const nlohmann::json& document, std::string_view format,
+                                std::int64_t oldest, std::int64_t newest,
+                                std::string_view what) const;
 
  private:
   std::string prefix_;

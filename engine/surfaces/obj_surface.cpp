@@ -329,6 +329,13 @@ Sheet parseObjSurface(std::istream& in, const std::string& name) {
                    edgeText(crossing->first.a, crossing->first.b) + " crosses the " +
                    edgeText(crossing->second.a, crossing->second.b) +
                    " (cut the mesh open where it wraps over itself)");
+  // Without crossing edges, a piece may still lie inside another or on it (coincident pieces).
+  if (const std::optional<PieceOverlap> overlap = findPieceOverlap(sheet))
+    throw ObjError(lineText(triangleLine[overlap->inner]) +
+                   "the development overlaps itself: this face's piece lies on the piece of the "
+                   "face on line " +
+                   std::to_string(triangleLine[overlap->outer]) +
+                   " (lay the pieces' texture coordinates apart)");
   return sheet;
 }
 

@@ -85,7 +85,8 @@ SurfaceParameter angle(double value) {
   return {"angle", value, 0.01, 360.0, false, "angle around the axis, degrees (360 = slit tube)"};
 }
 
-using Builder = std::function<Sheet(const SurfaceParameters&)>;
+// Builds from checked parameters with a generator version from 1 to the entry's latest.
+using Builder = std::function<Sheet(const SurfaceParameters&, int version)>;
 
 struct CatalogEntry {
   SurfaceInfo info;
@@ -117,6 +118,68 @@ int flatOrder(int n) {
     if (n % m == 0) return m;
   return 1;
 }
+
+// The most rotations a disk or star may be meshed with when asked (parseSymmetry's largest n):
+// the centre of a disk then has 128 triangles of 2.8 degrees, still far from degenerate.
+constexpr int kMaxAskedOrder = 64;
+
+SurfaceParameter rotations(std::string automatic) {
+  return {"rotations",
+          0.0,
+          0.0,
+          kMaxAskedOrder,
+          true,
+          "n-fold rotation (and n mirrors) the mesh is made with, so that rotational:n is a "
+          "symmetry; 0 = " +
+              std::move(automatic)};
+}
+
+// Generator version 1 of the flat sheets (until 2026-12-04), kept so that designs saved then
+// rebuild their sheet bit for bit: the whole outline and a circular hole meshed at once.
+namespace version1 {
+
+double polygonArea(const std::vector<glm::dvec2>& polygon) {
+  return std::abs(detail::signedArea(polygon));
+}
+
+// A regular polygon inscribed in a circle, with edges no longer than maxEdge.
+std::vector<glm::dvec2> circle(double radius, double maxEdge) {
+  const int count = std::max(8, static_cast<int>(std::ceil(2.0 * pi * radius / maxEdge)));
+  std::vector<glm::dvec2> points(count);
+  for (int i = 0; i < count; ++i)
+    points[i] = radius * glm::dvec2(std::cos(2.0 * pi * i / count), std::sin(2.0 * pi * i / count));
+  return points;
+}
+
+// A flat outline with an optional central hole; inradius bounds the hole.
+Sheet flatWithHole(const std::string& surface, const SurfaceParameters& p,
+                   const std::vector<glm::dvec2>& outline, double longer, double inradius) {
+  if (const auto asked = p.find("rotations"); asked != p.end() && asked->second != 0.0)
+    failParameter(surface, "rotations", asked->second,
+                  "needs generator version 2 (version 1 meshes the whole outline at once)");
+  const double maxEdge = longer / integer(p, "resolution");
+  const double hole = zeroOrLength(surface, p, "hole_radius");
+  std::vector<std::vector<glm::dvec2>> holes;
+  if (hole > 0.0) {
+    if (!(hole < kHoleMargin * inradius))
+      failParameter(surface, "hole_radius", hole,
+                    "must be less than " + detail::formatApprox(kHoleMargin * inradius) +
+                        " (90% of the distance from the centre to the outline)");
+    holes.push_back(circle(hole, maxEdge));
+  }
+  detail::checkTriangleCount(surface, integer(p, "resolution"),
+                             kMeshTrianglesPerArea * polygonArea(outline) / (maxEdge * maxEdge));
+  return triangulateOutline(outline, holes, maxEdge);
+}
+
+Sheet diskSheet(const SurfaceParameters& p) {
+  const double radius = p.at("radius");
+  const std::vector<glm::dvec2> outline = circle(radius, 2.0 * radius / integer(p, "resolution"));
+  const double inradius = radius * std::cos(pi / static_cast<double>(outline.size()));
+  return flatWithHole("disk", p, outline, 2.0 * radius, inradius);
+}
+
+}  // namespace version1
 
 // A flat outline with the dihedral symmetry of order `order` about the origin, meshed so that the
 // mesh has it too: one half-wedge (between the rays at `start` and start + pi / order, each a
@@ -202,9 +265,11 @@ Sheet symmetricFlat(const std::string& surface, const SurfaceParameters& p,
 }
 
 Sheet rectangleSheet(const std::string& surface, const SurfaceParameters& p, double width,
-                     double height) {
+                     double height, int version) {
   const double x = 0.5 * width, y = 0.5 * height;
   const std::vector<glm::dvec2> outline{{-x, -y}, {x, -y}, {x, y}, {-x, y}};
+  if (version == 1)
+    return version1::flatWithHole(surface, p, outline, std::max(width, height), std::min(x, y));
   // A square is meshed with its four mirrors and turns, a rectangle with its two.
   const bool square = surface == "square";
   const std::vector<glm::dvec2> arc = square ? std::vector<glm::dvec2>{{x, 0.0}, {x, y}}
@@ -213,13 +278,16 @@ Sheet rectangleSheet(const std::string& surface, const SurfaceParameters& p, dou
                        std::min(x, y));
 }
 
-// A disk's polygon has a multiple of 24 sides, so its mesh has 12 mirrors and 12-fold rotation.
+// Unless asked for another, a disk's polygon has a multiple of 24 sides, so its mesh has 12
+// mirrors and 12-fold rotation.
 constexpr int kDiskOrder = 12;
 
-Sheet diskSheet(const SurfaceParameters& p) {
+Sheet diskSheet(const SurfaceParameters& p, int version) {
+  if (version == 1) return version1::diskSheet(p);
   const double radius = p.at("radius");
   const double maxEdge = 2.0 * radius / integer(p, "resolution");
-  const int steps = 2 * kDiskOrder;
+  const int order = integer(p, "rotations") > 0 ? integer(p, "rotations") : kDiskOrder;
+  const int steps = 2 * order;
   const int wanted = std::max(8, static_cast<int>(std::ceil(2.0 * pi * radius / maxEdge)));
   const int count = (wanted + steps - 1) / steps * steps;
   std::vector<glm::dvec2> outline(count);
@@ -228,10 +296,10 @@ Sheet diskSheet(const SurfaceParameters& p) {
         radius * glm::dvec2(std::cos(2.0 * pi * i / count), std::sin(2.0 * pi * i / count));
   const std::vector<glm::dvec2> arc(outline.begin(), outline.begin() + count / steps + 1);
   const double inradius = radius * std::cos(pi / static_cast<double>(count));
-  return symmetricFlat("disk", p, outline, arc, 0.0, kDiskOrder, 2.0 * radius, inradius);
+  return symmetricFlat("disk", p, outline, arc, 0.0, order, 2.0 * radius, inradius);
 }
 
-Sheet starSheet(const SurfaceParameters& p) {
+Sheet starSheet(const SurfaceParameters& p, int version) {
   const int points = integer(p, "points");
   const double outer = p.at("outer_radius"), inner = p.at("inner_radius");
   if (!(inner < outer))
@@ -245,7 +313,13 @@ Sheet starSheet(const SurfaceParameters& p) {
   // Distance from the centre to the line through an outer and the next inner point.
   const glm::dvec2 a = outline[0], b = outline[1];
   const double inradius = std::abs(glm::cross(a, b)) / std::hypot(b.x - a.x, b.y - a.y);
-  const int order = flatOrder(points);
+  if (version == 1) return version1::flatWithHole("star", p, outline, 2.0 * outer, inradius);
+  const int asked = integer(p, "rotations");
+  if (asked > 0 && points % asked != 0)
+    failParameter("star", "rotations", asked,
+                  "must divide points = " + std::to_string(points) +
+                      " (a star turns onto itself only by a whole number of its points)");
+  const int order = asked > 0 ? asked : flatOrder(points);
   const std::vector<glm::dvec2> arc(outline.begin(), outline.begin() + points / order + 1);
   return symmetricFlat("star", p, outline, arc, 0.5 * pi, order, 2.0 * outer, inradius);
 }
@@ -255,39 +329,45 @@ const std::vector<CatalogEntry>& entries() {
     std::vector<CatalogEntry> list;
     list.push_back({{"square",
                      "flat square sheet in the plane z = 0",
-                     {length("size", 0.2, "side length, metres"), holeRadius(), resolution(30)}},
-                    [](const SurfaceParameters& p) {
-                      return rectangleSheet("square", p, p.at("size"), p.at("size"));
+                     {length("size", 0.2, "side length, metres"), holeRadius(), resolution(30)},
+                     2},
+                    [](const SurfaceParameters& p, int version) {
+                      return rectangleSheet("square", p, p.at("size"), p.at("size"), version);
                     }});
     list.push_back(
         {{"rectangle",
           "flat rectangular sheet in the plane z = 0 (A4 landscape by default)",
           {length("width", 0.297, "extent along x, metres"),
-           length("height", 0.21, "extent along y, metres"), holeRadius(), resolution(36)}},
-         [](const SurfaceParameters& p) {
-           return rectangleSheet("rectangle", p, p.at("width"), p.at("height"));
+           length("height", 0.21, "extent along y, metres"), holeRadius(), resolution(36)},
+          2},
+         [](const SurfaceParameters& p, int version) {
+           return rectangleSheet("rectangle", p, p.at("width"), p.at("height"), version);
          }});
     list.push_back(
         {{"disk",
-          "flat disk in the plane z = 0: a regular polygon of a multiple of 24 sides, meshed "
-          "with 12 mirrors and 12-fold rotation",
-          {length("radius", 0.1, "radius, metres"), holeRadius(), resolution(32)}},
+          "flat disk in the plane z = 0: a regular polygon of a multiple of 2n sides, meshed "
+          "with n mirrors and n-fold rotation (n = rotations, 12 unless asked)",
+          {length("radius", 0.1, "radius, metres"), holeRadius(), resolution(32), rotations("12")},
+          2},
          diskSheet});
     list.push_back({{"star",
                      "flat star polygon in the plane z = 0, first point along +y; meshed with its "
-                     "mirrors, and rotation by the largest divisor of points up to 12",
+                     "mirrors, and rotation by rotations (a divisor of points; unless asked, the "
+                     "largest divisor of points up to 12)",
                      {{"points", 5.0, 3.0, 100.0, true, "number of points"},
                       length("outer_radius", 0.1, "radius of the points, metres"),
                       length("inner_radius", 0.045, "radius of the notches between points, metres"),
                       holeRadius(),
-                      resolution(48)}},
+                      resolution(48),
+                      rotations("the largest divisor of points up to 12")},
+                     2},
                     starSheet});
     list.push_back(
         {{"cylinder",
           "cylinder around the y axis; angle 360 is a tube with a slit at -z",
           {length("radius", 0.045, "radius, metres"),
            length("height", 0.21, "extent along the axis, metres"), angle(360.0), resolution(48)}},
-         [](const SurfaceParameters& p) {
+         [](const SurfaceParameters& p, int) {
            return detail::makeCylinder("cylinder", p.at("radius"), p.at("height"), p.at("angle"),
                                        integer(p, "resolution"));
          }});
@@ -295,7 +375,7 @@ const std::vector<CatalogEntry>& entries() {
                      "half of a cylinder around the y axis (angle 180), bulging toward +z",
                      {length("radius", 0.06, "radius, metres"),
                       length("height", 0.21, "extent along the axis, metres"), resolution(48)}},
-                    [](const SurfaceParameters& p) {
+                    [](const SurfaceParameters& p, int) {
                       return detail::makeCylinder("half_cylinder", p.at("radius"), p.at("height"),
                                                   180.0, integer(p, "resolution"));
                     }});
@@ -308,7 +388,7 @@ const std::vector<CatalogEntry>& entries() {
             "radius at the top, metres (0 = full cone with apex)"},
            angle(360.0),
            resolution(64)}},
-         [](const SurfaceParameters& p) {
+         [](const SurfaceParameters& p, int) {
            return detail::makeCone("cone", p.at("base_radius"), p.at("height"),
                                    zeroOrLength("cone", p, "top_radius"), p.at("angle"),
                                    integer(p, "resolution"));
@@ -320,7 +400,7 @@ const std::vector<CatalogEntry>& entries() {
                       length("curve_width", 0.2, "extent of the curve along x, metres"),
                       length("length", 0.2, "extent of the sweep along y, metres"),
                       resolution(48)}},
-                    [](const SurfaceParameters& p) {
+                    [](const SurfaceParameters& p, int) {
                       return detail::makeSweptSine("swept_curve", p.at("amplitude"),
                                                    p.at("wavelength"), p.at("curve_width"),
                                                    p.at("length"), integer(p, "resolution"));
@@ -336,7 +416,7 @@ const std::vector<CatalogEntry>& entries() {
                   "sample spacing)"),
            length("ruling_width", 0.08, "extent of the sheet along each ruling, metres"),
            resolution(64)}},
-         [](const SurfaceParameters& p) {
+         [](const SurfaceParameters& p, int) {
            return detail::makeHelixTangent("helix_tangent", p.at("radius"), p.at("pitch"),
                                            p.at("turns"), p.at("ruling_start"),
                                            p.at("ruling_width"), integer(p, "resolution"));
@@ -357,7 +437,9 @@ const std::vector<SurfaceInfo>& surfaceCatalog() {
   return infos;
 }
 
-Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
+namespace {
+
+const CatalogEntry& entryNamed(const std::string& name) {
   const auto& catalog = entries();
   auto entry = std::find_if(catalog.begin(), catalog.end(),
                             [&](const CatalogEntry& e) { return e.info.name == name; });
@@ -366,7 +448,24 @@ Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
     for (const CatalogEntry& e : catalog) known += (known.empty() ? "" : ", ") + e.info.name;
     throw SurfaceError("unknown surface " + quotedExcerpt(name) + " (known: " + known + ")");
   }
+  return *entry;
+}
+
+}  // namespace
+
+int latestGeneratorVersion(const std::string& name) {
+  return entryNamed(name).info.generatorVersion;
+}
+
+Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides,
+                  int generatorVersion) {
+  const CatalogEntry* entry = &entryNamed(name);
   const SurfaceInfo& info = entry->info;
+  if (generatorVersion == 0) generatorVersion = info.generatorVersion;
+  if (generatorVersion < 1 || generatorVersion > info.generatorVersion)
+    throw SurfaceError("surface '" + name + "': generator version " +
+                       std::to_string(generatorVersion) + " is not one this build has (1 to " +
+                       std::to_string(info.generatorVersion) + ")");
   for (const auto& override : overrides) {
     const std::string& key = override.first;  // a plain name: lambdas cannot capture bindings
     if (std::none_of(info.parameters.begin(), info.parameters.end(),
@@ -390,7 +489,7 @@ Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides) {
       failParameter(name, p.name, value, "must be a whole number");
     values[p.name] = value;
   }
-  return entry->build(values);
+  return entry->build(values, generatorVersion);
 }
 
 }  // namespace curvefold

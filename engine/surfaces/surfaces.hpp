@@ -55,6 +55,8 @@ struct SurfaceInfo {
   std::string name;
   std::string description;
   std::vector<SurfaceParameter> parameters;
+  // The generator's latest version (see makeSurface).
+  int generatorVersion = 1;
 };
 
 // Every named surface, in a fixed order: square, rectangle, disk, star, cylinder, half_cylinder,
@@ -66,7 +68,21 @@ using SurfaceParameters = std::map<std::string, double>;
 // Builds a named surface; omitted parameters take their defaults. Throws SurfaceError for an
 // unknown surface or parameter, a value out of range or not whole, geometric nonsense, or a
 // resolution that would exceed kMaxSurfaceTriangles.
-Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides = {});
+//
+// generatorVersion picks the meshing (0: the latest). A design records the version that made its
+// sheet, so a design saved before a generator changed rebuilds the very sheet it was folded on
+// (its seeds lie where they did). The versions, from the history of engine/surfaces:
+// - square, rectangle, disk, star: 1, the whole outline meshed at once by CGAL (a disk a polygon
+//   of max(8, ceil(pi * resolution)) sides, a hole a circle of its own), until 2026-12-04;
+//   2, one half-wedge meshed and mirrored and turned (symmetricFlat), the disk's polygon rounded up
+//   to a multiple of 2 * its rotations; its "rotations" parameter came with it.
+// - cylinder, half_cylinder, cone, swept_curve, helix_tangent: 1 (never changed).
+// A version above the latest, or one that lacks a parameter given, throws SurfaceError.
+Sheet makeSurface(const std::string& name, const SurfaceParameters& overrides = {},
+                  int generatorVersion = 0);
+
+// The latest generator version of a named surface; throws SurfaceError for an unknown one.
+int latestGeneratorVersion(const std::string& name);
 
 inline constexpr std::size_t kMaxSurfaceTriangles = 4'000'000;
 
