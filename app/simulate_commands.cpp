@@ -15,6 +15,7 @@
 #include "app/commands.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
@@ -29,6 +30,7 @@
 #include "engine/simulation/static_solver.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
+#include "engine/text/input_path.hpp"
 
 namespace curvefold::cli {
 namespace {
@@ -63,24 +65,11 @@ Sheet sheetOfPattern(const CreasePattern& pattern) {
   return sheet;
 }
 
-// The hook for crease patterns from other tools (FOLD 1.1/1.2 and Origami Simulator's SVG): the
-// readers in engine/io/crease_pattern_*.hpp produce a CreasePattern, which this command simulates
-// as it does a design's; until they are in the build, such a file is refused by name.
-CreasePattern readCreasePatternFile(const fs::path& path) {
-  throw UsageError("simulate: " + path.filename().string() +
-                   ": reading FOLD and SVG crease patterns is not in this build; give a "
-                   "*.curvefold.json design");
-}
-
 SimulationInput readInput(const fs::path& path) {
   SimulationInput input;
-  const std::string name = path.filename().string();
-  const auto endsWith = [&](std::string_view suffix) {
-    return name.size() >= suffix.size() &&
-           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-  };
-  if (endsWith(".fold") || endsWith(".svg")) {
-    input.pattern = readCreasePatternFile(path);
+  // A crease pattern from another tool (docs/formats.md); anything else is a curvefold design.
+  if (hasExtension(path, ".fold") || hasExtension(path, ".svg")) {
+    input.pattern = readCreasePattern(path);
     input.sheet = sheetOfPattern(input.pattern);
     return input;
   }

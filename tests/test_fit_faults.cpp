@@ -13,8 +13,8 @@
 #include <nlopt.h>
 
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/random_fold_target.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 namespace {
 // NLopt's result for every refinement while set; the real optimizer otherwise.
