@@ -7,8 +7,8 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/fit/fold_fit.hpp"
-#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 namespace curvefold {
 namespace {

@@ -10,7 +10,6 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/fold_fit.hpp"
-#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
@@ -19,6 +18,7 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sheet_fixtures.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 namespace curvefold {
 namespace {

@@ -231,7 +231,7 @@ TEST_F(FitCli, TimeBoundsTheWholeFitUnfoldingIncluded) {
     const double seconds = since(start);
     ASSERT_EQ(fit.exitCode, 0) << fit.err;
     EXPECT_LT(seconds, 1.05 * time + fixed + 0.25) << target << ": fixed work " << fixed << " s\n"
-                                                  << fit.out;
+                                                   << fit.out;
     EXPECT_NE(fit.out.find("the time limit cut the search short"), std::string::npos) << fit.out;
     EXPECT_EQ(run("check " + path("long.curvefold.json").string()).exitCode, 0);
   }

@@ -17,13 +17,13 @@
 
 #include "app/headset_studio.hpp"
 #include "app/studio_replay.hpp"
-#include "tests/support/random_fold_target.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
+#include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {
 namespace {

@@ -2,9 +2,9 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
-#include <glm/vec2.hpp>
 namespace curvefold {
 // What a crease-pattern edge is, as FOLD's edges_assignment names it (B, M, V, F, U, C).
 enum class CreaseAssignment : std::uint8_t { Boundary, Mountain, Valley, Flat, Unassigned, Cut };
@@ -16,9 +16,9 @@ struct CreasePatternEdge {
 // A flat crease pattern, triangulated: every polygon face split into triangles whose new edges
 // are Flat (facet) edges; cuts already opened (their vertices doubled) so a Cut edge is a boundary.
 struct CreasePattern {
-  std::vector<glm::dvec2> vertices;                    // flat positions, the file's units
+  std::vector<glm::dvec2> vertices;                     // flat positions, the file's units
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise
-  std::vector<CreasePatternEdge> edges;                // every edge of the triangles, once
-  std::vector<std::string> notes;                      // things read but not used, one line each
+  std::vector<CreasePatternEdge> edges;                 // every edge of the triangles, once
+  std::vector<std::string> notes;                       // things read but not used, one line each
 };
 }  // namespace curvefold
