@@ -28,7 +28,7 @@ HeadsetStudio::HeadsetStudio(session::Document& doc, HeadsetStudioOptions option
       panel_(false,
              "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
              "at the tip: fold. Panel button: show or hide this panel."),
-      target_(options_.replaying) {
+      target_(options_.replaying, options_.suggestionSeconds) {
   context_ = ImGui::CreateContext();
   ImGuiContextScope scope(context_);
   ImGuiIO& io = ImGui::GetIO();

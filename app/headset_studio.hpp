@@ -55,6 +55,8 @@ struct HeadsetStudioOptions {
   PanelPlacement placement = heldPanelPlacement();
   std::string target;      // a target shape (OBJ) to fold toward, loaded at the start
   bool replaying = false;  // a replay: suggestions come from the frames, nothing is searched
+  // How long a suggestion may search before it answers with the best it has.
+  double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit;
 };
 
 class HeadsetStudio {

@@ -49,7 +49,8 @@ std::string distanceText(double hausdorff, double chamfer, double diagonal) {
          "), Chamfer " + millimetresText(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
 }
 
-StudioTarget::StudioTarget(bool replaying) : replaying_(replaying) {}
+StudioTarget::StudioTarget(bool replaying, double suggestionSeconds)
+    : replaying_(replaying), suggestionSeconds_(suggestionSeconds) {}
 
 // The worker and the measures still running are waited for here, when the studio ends (each
 // stops at its next check, or within a measure).
@@ -83,7 +84,7 @@ void StudioTarget::load(const std::string& path, const session::Document& doc) {
     if (worker_)
       worker_->retarget(fitter_);
     else
-      worker_ = std::make_unique<SuggestionWorker>(fitter_);
+      worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_);
   }
   measured_.reset();
   searching_ = false;

@@ -38,7 +38,9 @@ class StudioTarget {
   static constexpr std::size_t kDistanceSamples = 5'000;
 
   // replaying: suggestions come from the frames (a replay's), and nothing is searched or measured.
-  explicit StudioTarget(bool replaying = false);
+  // suggestionSeconds: how long a search may take before it answers with what it has.
+  explicit StudioTarget(bool replaying = false,
+                        double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit);
   ~StudioTarget();
   StudioTarget(const StudioTarget&) = delete;
   StudioTarget& operator=(const StudioTarget&) = delete;
@@ -85,6 +87,7 @@ class StudioTarget {
   };
 
   bool replaying_;
+  double suggestionSeconds_;
   std::string path_;
   std::shared_ptr<const FoldFitter> fitter_;
   std::unique_ptr<SuggestionWorker> worker_;
