@@ -272,7 +272,13 @@ void addFitCommand(CLI::App& app) {
               << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
     // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
-    if (last.hausdorff > 1e-3 * last.diagonal) {
+    // Within --time too: only when what is left exceeds what the start took to read and measure
+    // (more than this lighter measure costs); an interrupted fit says nothing more.
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const bool timeForFarthest =
+        !timed || elapsed + result.steps.front().seconds < options->seconds;
+    if (last.hausdorff > 1e-3 * last.diagonal && !interrupted && timeForFarthest) {
       const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter->target(), 5000);
       char text[256];
       std::snprintf(text, sizeof text,
