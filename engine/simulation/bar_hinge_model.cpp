@@ -1,5 +1,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 
+#include "engine/simulation/dynamic_solver.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -22,8 +24,77 @@ struct EdgeSides {
   static constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 };
 
-double wrapToPi(double angle) {
-  return std::remainder(angle, 2.0 * std::numbers::pi);
+// atan2 by Cephes' atan (S. L. Moshier, Cephes Math Library, atan.c: range reduction to
+// |x| <= 0.66 and a rational approximation of degree 4/5, within 2 ulp of std::atan2 over random
+// tests), inlined: the libm call was a fifth of a dynamic step, and this one gives the same bits
+// on every machine (libm picks an FMA variant by CPU).
+inline double atanOfNonNegative(double x) {
+  constexpr double kMoreBits = 6.123233995736765886130e-17;  // pi/2 - double(pi/2)
+  double base = 0.0, more = 0.0;
+  if (x > 2.41421356237309504880) {  // tan(3 pi / 8)
+    base = std::numbers::pi / 2;
+    more = kMoreBits;
+    x = -1.0 / x;
+  } else if (x > 0.66) {
+    base = std::numbers::pi / 4;
+    more = 0.5 * kMoreBits;
+    x = (x - 1.0) / (x + 1.0);
+  }
+  const double z = x * x;
+  const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
+                     7.500855792314704667340e1) *
+                        z -
+                    1.228866684490136173410e2) *
+                       z -
+                   6.485021904942025371773e1;
+  const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
+                     4.328810604912902668951e2) *
+                        z +
+                    4.853903996359136964868e2) *
+                       z +
+                   1.945506571482613964425e2;
+  return base + ((x * z * p / q + more) + x);
+}
+
+inline double atan2Cephes(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  if (ax == 0.0 && ay == 0.0) return 0.0;
+  double angle =
+      ay <= ax ? atanOfNonNegative(ay / ax) : std::numbers::pi / 2 - atanOfNonNegative(ax / ay);
+  if (x < 0.0) angle = std::numbers::pi - angle;
+  return y < 0.0 ? -angle : angle;
+}
+
+// previous + (raw - previous) wrapped to [-pi, pi]: the remainder only when it wraps (it is the
+// step's costliest call otherwise, and the same bits: remainder returns |d| <= pi unchanged).
+inline double unwrapAgainst(double raw, double previous) {
+  double change = raw - previous;
+  if (change > std::numbers::pi || change < -std::numbers::pi)
+    change = std::remainder(change, 2.0 * std::numbers::pi);
+  return previous + change;
+}
+
+// The dynamic step's kernel, inlined into elementForces.
+[[gnu::always_inline]] inline double angleWithGradient(const glm::dvec3& a, const glm::dvec3& b,
+                                                       const glm::dvec3& c, const glm::dvec3& d,
+                                                       double previous,
+                                                       std::array<glm::dvec3, 4>& gradient) {
+  const glm::dvec3 edge = b - a;
+  const glm::dvec3 n1 = glm::cross(edge, c - a);
+  const glm::dvec3 n2 = glm::cross(a - b, d - b);
+  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
+  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) {
+    gradient = {};
+    return previous;
+  }
+  const double length = std::sqrt(ee);
+  const double raw = atan2Cephes(-glm::dot(glm::cross(n1, n2), edge) / length, glm::dot(n1, n2));
+  const glm::dvec3 gc = n1 * (length / n1n1);
+  const glm::dvec3 gd = n2 * (length / n2n2);
+  const double tc = glm::dot(c - a, edge) / ee;
+  const double td = glm::dot(d - a, edge) / ee;
+  gradient = {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
+  return unwrapAgainst(raw, previous);
 }
 
 }  // namespace
@@ -38,8 +109,8 @@ double hingeAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   // creases.hpp's foldAngleDegrees with unnormalized vectors: atan2 needs only their ratio.
   const double sine = -glm::dot(glm::cross(n1, n2), edge) / std::sqrt(ee);
   const double cosine = glm::dot(n1, n2);
-  const double raw = std::atan2(sine, cosine);
-  return previous + wrapToPi(raw - previous);
+  const double raw = atan2Cephes(sine, cosine);
+  return unwrapAgainst(raw, previous);
 }
 
 std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dvec3& b,
@@ -62,22 +133,7 @@ std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dve
 double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
                               const glm::dvec3& d, double previous,
                               std::array<glm::dvec3, 4>& gradient) {
-  const glm::dvec3 edge = b - a;
-  const glm::dvec3 n1 = glm::cross(edge, c - a);
-  const glm::dvec3 n2 = glm::cross(a - b, d - b);
-  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
-  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) {
-    gradient = {};
-    return previous;
-  }
-  const double length = std::sqrt(ee);
-  const double raw = std::atan2(-glm::dot(glm::cross(n1, n2), edge) / length, glm::dot(n1, n2));
-  const glm::dvec3 gc = n1 * (length / n1n1);
-  const glm::dvec3 gd = n2 * (length / n2n2);
-  const double tc = glm::dot(c - a, edge) / ee;
-  const double td = glm::dot(d - a, edge) / ee;
-  gradient = {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
-  return previous + wrapToPi(raw - previous);
+  return angleWithGradient(a, b, c, d, previous, gradient);
 }
 
 BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
@@ -244,6 +300,13 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
   std::vector<std::uint32_t> fill(model.gatherOffsets.begin(), model.gatherOffsets.end() - 1);
   for (std::size_t s = 0; s < model.slotCount; ++s)
     model.gatherSlots[fill[slotVertex[s]]++] = static_cast<std::uint32_t>(s);
+
+  model.barDamping.resize(model.bars.size());
+  for (std::size_t i = 0; i < model.bars.size(); ++i)
+    model.barDamping[i] =
+        2.0 * std::sqrt(model.barStiffness[i] *
+                        std::min(model.mass[model.bars[i][0]], model.mass[model.bars[i][1]]));
+  model.timeStep = stableTimeStep(model);
   return model;
 }
 
@@ -295,39 +358,45 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
   angles.resize(model.hinges.size());
   const glm::dvec3* x = positions.data();
   glm::dvec3* forces = slotForces.data();
-  forEachIndex(model.bars.size(), [&](std::size_t i) {
-    const std::uint32_t a = model.bars[i][0], b = model.bars[i][1];
-    const glm::dvec3 delta = x[b] - x[a];
-    const double length = glm::length(delta);
-    glm::dvec3 force(0.0);  // on a; b gets the opposite
-    if (length > 0.0 && velocities) {
-      const double damping =
-          2.0 * dampingRatio *
-          std::sqrt(model.barStiffness[i] * std::min(model.mass[a], model.mass[b]));
-      const double pull = model.barStiffness[i] * (length - model.barLength[i]) +
-                          damping * glm::dot(velocities[b] - velocities[a], delta) / length;
-      force = (pull / length) * delta;
-    } else if (length > 0.0)
-      force = (model.barStiffness[i] * (length - model.barLength[i]) / length) * delta;
-    forces[2 * i] = force;
-    forces[2 * i + 1] = -force;
-  });
-  forEachIndex(model.hinges.size(), [&](std::size_t j) {
-    const Hinge& h = model.hinges[j];
-    std::array<glm::dvec3, 4> gradient;
-    const double angle = hingeAngleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d],
-                                                previous.empty() ? 0.0 : previous[j], gradient);
-    angles[j] = angle;
-    const double torque = -model.hingeStiffness[j] * (angle - targets[j]);
-    glm::dvec3* slot = forces + model.hingeSlot0 + 4 * j;
-    for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];
-  });
-  forEachIndex(model.glue.size(), [&](std::size_t g) {
-    const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
-    const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
-    forces[model.glueSlot0 + 2 * g] = force;
-    forces[model.glueSlot0 + 2 * g + 1] = -force;
-  });
+  const std::size_t barCount = model.bars.size(), hingeCount = model.hinges.size();
+  const double* previousAngles = previous.empty() ? nullptr : previous.data();
+  double* angleOut = angles.data();
+  // One pass over bars, then hinges, then glue: one barrier per call instead of three.
+  auto element = [&](std::size_t e) {
+    if (e < barCount) {
+      const std::size_t i = e;
+      const std::uint32_t a = model.bars[i][0], b = model.bars[i][1];
+      const glm::dvec3 delta = x[b] - x[a];
+      const double length = glm::length(delta);
+      glm::dvec3 force(0.0);  // on a; b gets the opposite
+      if (length > 0.0) {
+        double pull = model.barStiffness[i] * (length - model.barLength[i]);
+        if (velocities)
+          pull += dampingRatio * model.barDamping[i] *
+                  glm::dot(velocities[b] - velocities[a], delta) / length;
+        force = (pull / length) * delta;
+      }
+      forces[2 * i] = force;
+      forces[2 * i + 1] = -force;
+    } else if (e < barCount + hingeCount) {
+      const std::size_t j = e - barCount;
+      const Hinge& h = model.hinges[j];
+      std::array<glm::dvec3, 4> gradient;
+      const double angle = angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d],
+                                             previousAngles ? previousAngles[j] : 0.0, gradient);
+      angleOut[j] = angle;
+      const double torque = -model.hingeStiffness[j] * (angle - targets[j]);
+      glm::dvec3* slot = forces + model.hingeSlot0 + 4 * j;
+      for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];
+    } else {
+      const std::size_t g = e - barCount - hingeCount;
+      const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
+      const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
+      forces[model.glueSlot0 + 2 * g] = force;
+      forces[model.glueSlot0 + 2 * g + 1] = -force;
+    }
+  };
+  forEachIndex(barCount + hingeCount + model.glue.size(), element);
 }
 
 void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,

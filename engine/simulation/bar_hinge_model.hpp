@@ -94,6 +94,7 @@ struct BarHingeModel {
   std::vector<std::array<std::uint32_t, 2>> bars;
   std::vector<double> barLength;     // rest length
   std::vector<double> barStiffness;  // N/m (or nominal)
+  std::vector<double> barDamping;    // 2 sqrt(k min(m_a, m_b)): times the damping ratio, per m/s
 
   // One hinge per interior edge.
   std::vector<Hinge> hinges;
@@ -112,6 +113,9 @@ struct BarHingeModel {
   std::size_t hingeSlot0 = 0, glueSlot0 = 0, slotCount = 0;
   std::vector<std::uint32_t> gatherOffsets;
   std::vector<std::uint32_t> gatherSlots;
+
+  // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
+  double timeStep = 0.0;
 
   std::size_t vertexCount() const { return flatPositions.size(); }
   // The hinge's target at a fold amount (0..1): driven hinges scale, the others keep theirs.
@@ -157,7 +161,8 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 // Every element's force on each of its vertices into its slots (slotForces, model.slotCount
 // long) and every hinge's angle unwrapped against previous into angles (both may be the same
 // vector). With velocities, bars resist their ends' relative speed along them (damping ratio
-// dampingRatio: 2 zeta sqrt(k m)). Runs on all cores; each element writes only its own slots.
+// dampingRatio: 2 zeta sqrt(k m)). Runs on all cores in one pass over every element (one barrier);
+// each element writes only its own slots.
 void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                    const std::vector<double>& targets, const std::vector<double>& previous,
                    std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,
@@ -189,6 +194,7 @@ struct SimulationState {
   std::vector<double> hingeAngles;     // unwrapped, as of the last step or iteration
   std::size_t steps = 0;               // dynamic steps taken
   std::vector<glm::dvec3> slotForces;  // scratch: one force per element slot
+  std::vector<double> targets;         // scratch: the hinge targets of the last step
 };
 
 // The flat crease pattern at rest.

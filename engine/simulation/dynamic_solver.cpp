@@ -33,9 +33,13 @@ double stableTimeStep(const BarHingeModel& model) {
 
 void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState& state,
                  std::size_t steps, const DynamicOptions& options) {
-  const double dt = options.timeStep > 0.0 ? options.timeStep : stableTimeStep(model);
+  const double dt = options.timeStep > 0.0 ? options.timeStep
+                    : model.timeStep > 0.0 ? model.timeStep
+                                           : stableTimeStep(model);
   const double keep = 1.0 - options.velocityDamping;
-  const std::vector<double> targets = hingeTargets(model, foldAmount);
+  std::vector<double>& targets = state.targets;  // no allocation after the first call
+  targets.resize(model.hinges.size());
+  for (std::size_t j = 0; j < targets.size(); ++j) targets[j] = model.target(j, foldAmount);
   if (state.hingeAngles.size() != model.hinges.size())
     state.hingeAngles = hingeAngles(model, state.positions);
   state.velocities.resize(model.vertexCount(), glm::dvec3(0.0));
@@ -46,11 +50,13 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
     const glm::dvec3* forces = state.slotForces.data();
     glm::dvec3* v = state.velocities.data();
     glm::dvec3* positions = state.positions.data();
+    const std::uint32_t* offsets = model.gatherOffsets.data();
+    const std::uint32_t* slots = model.gatherSlots.data();
     forEachIndex(model.vertexCount(), [&](std::size_t vertex) {
       if (model.pinned[vertex]) return;
       glm::dvec3 total(0.0);
-      for (std::uint32_t s = model.gatherOffsets[vertex]; s < model.gatherOffsets[vertex + 1]; ++s)
-        total += forces[model.gatherSlots[s]];
+      for (std::uint32_t s = offsets[vertex]; s < offsets[vertex + 1]; ++s)
+        total += forces[slots[s]];
       v[vertex] = (v[vertex] + (dt / model.mass[vertex]) * total) * keep;
       positions[vertex] += dt * v[vertex];
     });
