@@ -10,6 +10,9 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/simulation/hinge_unfolding.hpp"
+#include "engine/simulation/rigid_placement.hpp"
+
 namespace curvefold {
 namespace {
 
@@ -44,26 +47,41 @@ std::array<std::uint32_t, 4> hingeVertices(const Hinge& h) {
 }
 
 HessianLayout buildLayout(const BarHingeModel& model) {
-  const int dofs = static_cast<int>(3 * model.vertexCount());
-  std::vector<Eigen::Triplet<double, int>> entries;
-  auto addBlock = [&](std::uint32_t row, std::uint32_t column) {
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        if (3 * row + r >= 3 * column + c) entries.emplace_back(3 * row + r, 3 * column + c, 0.0);
-  };
-  for (std::uint32_t v = 0; v < model.vertexCount(); ++v) addBlock(v, v);
+  const std::size_t n = model.vertexCount();
+  const int dofs = static_cast<int>(3 * n);
+  // The vertex pairs (row > column) that share an element, per column, sorted and unique; the
+  // matrix's lower triangle is then written column by column with no triplets to sort.
+  std::vector<std::vector<std::uint32_t>> below(n);
   auto addElement = [&](const auto& vertices) {
-    forLowerBlocks(vertices,
-                   [&](std::size_t p, std::size_t q) { addBlock(vertices[p], vertices[q]); });
+    for (std::uint32_t p : vertices)
+      for (std::uint32_t q : vertices)
+        if (p > q) below[q].push_back(p);
   };
   for (const auto& bar : model.bars) addElement(bar);
   for (const Hinge& h : model.hinges) addElement(hingeVertices(h));
   for (const auto& pair : model.glue) addElement(pair);
+  std::size_t nonZeros = 0;
+  for (auto& rows : below) {
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    nonZeros += 6 + 9 * rows.size();
+  }
 
   HessianLayout layout;
   layout.matrix.resize(dofs, dofs);
-  layout.matrix.setFromTriplets(entries.begin(), entries.end());
-  layout.matrix.makeCompressed();
+  layout.matrix.resizeNonZeros(static_cast<Eigen::Index>(nonZeros));
+  int* outer = layout.matrix.outerIndexPtr();
+  int* inner = layout.matrix.innerIndexPtr();
+  int next = 0;
+  for (std::size_t q = 0; q < n; ++q)
+    for (int c = 0; c < 3; ++c) {
+      outer[3 * q + c] = next;
+      for (int r = c; r < 3; ++r) inner[next++] = static_cast<int>(3 * q) + r;
+      for (std::uint32_t p : below[q])
+        for (int r = 0; r < 3; ++r) inner[next++] = static_cast<int>(3 * p) + r;
+    }
+  outer[dofs] = next;
+  std::fill(layout.matrix.valuePtr(), layout.matrix.valuePtr() + nonZeros, 0.0);
   // A diagonal block keeps only its lower triangle, so its column c starts at row 3v + c.
   auto record = [&](std::vector<int>& out, const auto& vertices) {
     forLowerBlocks(vertices, [&](std::size_t p, std::size_t q) {
@@ -168,6 +186,21 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
     state.hingeAngles = hingeAngles(model, state.positions);
   const double scale = forceScale(model);
   const std::vector<double> goal = hingeTargets(model, foldAmount);
+  if (options.predictor && !model.hinges.empty()) {
+    SimulationState guess = unfoldedState(model, foldAmount);
+    bool anyPinned = false;
+    for (std::uint8_t p : model.pinned) anyPinned = anyPinned || p;
+    // In the state's frame (pins already hold the guess where they hold the state).
+    if (!anyPinned)
+      guess.positions =
+          placed(bestRigidPlacement(guess.positions, state.positions), guess.positions);
+    if (modelEnergy(model, guess.positions, goal, guess.hingeAngles) <
+        modelEnergy(model, state.positions, goal, state.hingeAngles)) {
+      state.positions.swap(guess.positions);
+      state.hingeAngles.swap(guess.hingeAngles);
+      result.predicted = true;
+    }
+  }
   const std::vector<double> start = state.hingeAngles;
   double largestChange = 0.0;
   for (std::size_t j = 0; j < goal.size(); ++j)
@@ -177,9 +210,11 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
       std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(largestChange / stageRadians)));
   result.stages = stages;
 
-  HessianLayout layout = buildLayout(model);
+  // Laid out and analysed once per call, and only when an iteration needs it (a predicted state
+  // that already meets the tolerance needs none).
+  HessianLayout layout;
+  bool analysed = false;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
-  solver.analyzePattern(layout.matrix);
   Eigen::VectorXd gradient(3 * n), step(3 * n);
   std::vector<glm::dvec3> forces, trial(n);
   std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
@@ -208,6 +243,11 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
 
       for (std::size_t v = 0; v < n; ++v)
         for (int c = 0; c < 3; ++c) gradient[3 * v + c] = -forces[v][c];
+      if (!analysed) {
+        layout = buildLayout(model);
+        solver.analyzePattern(layout.matrix);
+        analysed = true;
+      }
       assemble(model, state.positions, layout);
       double* values = layout.matrix.valuePtr();
       double largestDiagonal = 0.0;

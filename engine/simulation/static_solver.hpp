@@ -6,7 +6,9 @@
 // longest step of 1, 1/2, 1/4, .. that lowers the energy, so the energy never rises between
 // iterations. Large angle changes are reached by continuation: the hinge targets go from the
 // state's angles to the goal in stages of at most maxStageDegrees, each solved loosely, the last
-// to the tolerance.
+// to the tolerance. Before all that, a predictor (StaticOptions::predictor) places the
+// triangles across the hinges at their goal angles and starts from there if that is lower in
+// energy than the state.
 //
 // Residual (the stated convergence test): the largest force on a free vertex divided by
 // forceScale(model), the force a hinge exerts at one radian of error through a lever of its own
@@ -31,6 +33,11 @@ struct StaticOptions {
   double stageTolerance = 1e-4;     // residual each earlier stage stops at
   double maxStageDegrees = 20.0;    // largest change of any hinge's target in one stage
   std::size_t maxIterations = 400;  // over all stages
+  // Start from unfoldedState at the fold amount (hinge_unfolding.hpp), rigidly placed onto the
+  // state, when its energy at the goal is lower than the state's: for targets the sheet can take
+  // all at once (a design at 100% in design mode, a single crease) that is the equilibrium itself,
+  // and no continuation is needed.
+  bool predictor = true;
 };
 
 struct StaticIteration {
@@ -43,6 +50,7 @@ struct StaticResult {
   bool converged = false;
   std::size_t iterations = 0;
   std::size_t stages = 0;
+  bool predicted = false;                // started from the predictor (StaticOptions::predictor)
   double energy = 0.0;                   // at the goal's targets
   double residual = 0.0;                 // at the end
   std::vector<StaticIteration> history;  // one entry per iteration, and one for each stage's start
