@@ -216,7 +216,7 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
   bool analysed = false;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
   Eigen::VectorXd gradient(3 * n), step(3 * n);
-  std::vector<glm::dvec3> forces, trial(n);
+  std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces;
   std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
 
   for (std::size_t stage = 1; stage <= stages; ++stage) {
@@ -273,7 +273,16 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
             trial[v] = state.positions[v] +
                        alpha * glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
           const double trialEnergy = modelEnergy(model, trial, targets, state.hingeAngles);
-          if (trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope) {
+          bool lower = trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope;
+          // Near equilibrium the decrease (about residual^2 / stiffness) falls below the
+          // rounding of the energy's sum, and no step measurably lowers it: a step that leaves
+          // the energy where it was (not above) is then taken if it lowers the residual.
+          if (!lower && trialEnergy <= energy && energy - trialEnergy <= 1e-12 * std::abs(energy)) {
+            elementForces(model, trial, targets, state.hingeAngles, trialAngles, trialSlots);
+            gatherForces(model, trialSlots, trialForces);
+            lower = maxForce(trialForces) < maxForce(forces);
+          }
+          if (lower) {
             trialAngles = hingeAngles(model, trial, state.hingeAngles);
             state.positions.swap(trial);
             state.hingeAngles.swap(trialAngles);
