@@ -29,7 +29,8 @@ struct DynamicOptions {
 };
 
 // A step the integrator is stable at: a Gershgorin bound on the stiffest vertex's frequency at the
-// flat state (bars, hinges and glue), with a safety factor of 2.
+// flat state (bars, hinges and glue), with a safety factor of 2. buildModel stores it in
+// BarHingeModel::timeStep, which stepDynamic uses (recompute it after changing a stiffness).
 double stableTimeStep(const BarHingeModel& model);
 
 // Advances the state by `steps` fixed steps toward the fold amount (0..1).
