@@ -624,7 +624,7 @@ py::dict distanceOf(const py::object& a, const py::object& b, std::size_t sample
         pointDistances(sheet->positions, SurfaceDistanceQuery(meshB, "second"));
     double largest = 0.0;
     for (double& value : millimetres) largest = std::max(largest, value *= 1e3);
-    const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), "distance to b",
+    const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), "distance to B",
                              "mm"};
     writeFileAtomically(*png, encodePng(renderFieldPicture(renderer, *sheet, millimetres, legend)));
   }
