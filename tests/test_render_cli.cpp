@@ -481,6 +481,41 @@ TEST_F(ColouredPictures, SimulateColourStrainPaintsTheStrain) {
   EXPECT_EQ(none.high + none.lowHalf, 0u);
 }
 
+// simulate --color angle-error: a folded square's crease, given few steps toward 80%, lags its
+// target: the sheet along the crease is cool-warm's blue (short of the target), the flat parts its
+// grey middle; a plain picture is paper, not grey (its only blue is the valley's line).
+TEST_F(ColouredPictures, SimulateColourAngleErrorPaintsTheLaggingCreaseBlue) {
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  ASSERT_EQ(run("fold s.curvefold.json --vertex-near 0.05,0.1,0 --to 0.03,0.07,0.02 -o "
+                "s.curvefold.json")
+                .exitCode,
+            0);
+  const auto blueAndGrey = [](const fs::path& file) {
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
+    std::pair<std::size_t, std::size_t> counts{0, 0};
+    if (!pixels) return counts;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w - 220; ++x) {
+        const unsigned char* p = pixels + (std::size_t(y) * w + x) * 4;
+        counts.first += p[2] > p[0] + 60 && p[2] > p[1] + 30;
+        counts.second +=
+            std::abs(p[0] - p[2]) < 6 && std::abs(p[0] - p[1]) < 6 && p[0] > 150 && p[0] < 215;
+      }
+    stbi_image_free(pixels);
+    return counts;
+  };
+  const std::string simulate = "simulate s.curvefold.json --percent 80 --steps 30 --png ";
+  const CommandResult coloured = run(simulate + "a.png --color angle-error");
+  ASSERT_EQ(coloured.exitCode, 0) << coloured.err;
+  const auto [blue, grey] = blueAndGrey(path("a.png"));
+  EXPECT_GT(blue, 200u);
+  EXPECT_GT(grey, 20 * blue);
+  ASSERT_EQ(run(simulate + "p.png").exitCode, 0);
+  const auto [plainBlue, plainGrey] = blueAndGrey(path("p.png"));
+  EXPECT_LT(plainGrey, grey / 20) << plainBlue;
+}
+
 // check of a simulated state: the largest strain and no self-intersection, a line each; the same
 // for its FOLD; a lifted quarter on a flat development strains by the lift.
 TEST_F(ColouredPictures, CheckReportsASimulatedStatesStrainAndSelfIntersection) {
