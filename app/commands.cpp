@@ -16,6 +16,7 @@
 #include <variant>
 
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
@@ -27,9 +28,11 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
+#include "engine/io/input_limits.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/io/sheet_cache.hpp"
@@ -405,15 +408,108 @@ void addExportCommand(CLI::App& app) {
   });
 }
 
+namespace {
+
+// A folded state written with its flat sheet (simulate --obj or --fold, export --obj or --fold):
+// the sheet read back, positions folded, development flat. A FOLD file's key frame is the flat
+// sheet and its first file_frames entry the folded coordinates (as fold_format.hpp writes them).
+Sheet readFoldedState(const std::string& path) {
+  if (hasExtension(path, ".obj")) {
+    try {
+      return readObjState(path);
+    } catch (const ObjError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  const CreasePattern pattern = readCreasePattern(path);
+  const nlohmann::json fold =
+      nlohmann::json::parse(readWholeFile(path, kMaxCreasePatternBytes, "crease pattern"));
+  const auto noFrame = [&](const std::string& why) {
+    return UsageError(path + ": no folded state to check: " + why +
+                      " (file_frames[0].vertices_coords, 3D, one per vertex, as simulate --fold "
+                      "writes)");
+  };
+  if (!fold.contains("file_frames") || !fold["file_frames"].is_array() ||
+      fold["file_frames"].empty() || !fold["file_frames"][0].is_object() ||
+      !fold["file_frames"][0].contains("vertices_coords"))
+    throw noFrame("it has no frame with vertex coordinates");
+  const nlohmann::json& coords = fold["file_frames"][0]["vertices_coords"];
+  if (!coords.is_array() || coords.size() != pattern.vertices.size())
+    throw noFrame("its frame has " + std::to_string(coords.is_array() ? coords.size() : 0) +
+                  " vertices, the crease pattern " + std::to_string(pattern.vertices.size()));
+  Sheet sheet;
+  sheet.development = pattern.vertices;
+  for (const nlohmann::json& c : coords) {
+    if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() ||
+        !c[2].is_number())
+      throw noFrame("a vertex of its frame is not three numbers");
+    const glm::dvec3 p(c[0].get<double>(), c[1].get<double>(), c[2].get<double>());
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw noFrame("a vertex of its frame is not finite");
+    sheet.positions.push_back(p);
+  }
+  for (const auto& t : pattern.triangles) sheet.triangles.push_back({t[0], t[1], t[2]});
+  return sheet;
+}
+
+// `check` of a simulated state (issue 39, 3): its largest strain (how much an edge's length
+// differs from the flat sheet's; paper hardly stretches) and whether it passes through itself.
+void checkFoldedState(const std::string& path, bool allowSelfIntersection) {
+  const Sheet sheet = readFoldedState(path);
+  double largest = 0.0;
+  glm::dvec3 where(0.0);
+  for (const Triangle& t : sheet.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const VertexIndex a = t[i], b = t[(i + 1) % 3];
+      const double flat = glm::distance(sheet.development[a], sheet.development[b]);
+      const double strain =
+          std::abs(glm::distance(sheet.positions[a], sheet.positions[b]) - flat) / flat;
+      if (!(flat > 0.0) || !std::isfinite(strain))
+        throw UsageError(path + ": an edge has no length on the flat sheet");
+      if (strain > largest) {
+        largest = strain;
+        where = 0.5 * (sheet.positions[a] + sheet.positions[b]);
+      }
+    }
+  const SelfIntersectionReport report = findSelfIntersections(sheet);
+  std::cout << path << ": a folded state, " << sheet.vertexCount() << " vertices, "
+            << sheet.triangleCount() << " triangles\n";
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "  info  largest strain %.3g%% (an edge's length change), at (%.4g, %.4g, %.4g)\n",
+                100.0 * largest, where.x, where.y, where.z);
+  std::cout << line;
+  const std::size_t crossing = report.intersections.size();
+  if (crossing == 0) {
+    std::cout << "  ok    no self-intersection\n";
+    return;
+  }
+  const glm::dvec3& p = report.firstPoint;
+  std::snprintf(line, sizeof line,
+                "self-intersection: %zu pairs of triangles cross, the first at (%.4g, %.4g, %.4g)",
+                crossing, p.x, p.y, p.z);
+  std::cout << (allowSelfIntersection ? "  info  " : "  FAIL  ") << line << "\n";
+  if (!allowSelfIntersection) throw std::runtime_error(std::string("check failed: ") + line);
+}
+
+}  // namespace
+
 void addCheckCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("check", "Print the geometry invariants; exit non-zero if one fails");
   auto design = std::make_shared<std::string>();
   auto allowSelfIntersection = std::make_shared<bool>(false);
-  command->add_option("DESIGN", *design, "Design file")->required();
+  command
+      ->add_option("DESIGN", *design,
+                   "Design file, or a simulated state (.obj or .fold written by simulate)")
+      ->required();
   command->add_flag("--allow-self-intersection", *allowSelfIntersection,
                     "Report a folded form that passes through itself without failing");
   command->callback([design, allowSelfIntersection] {
+    if (hasExtension(*design, ".obj") || hasExtension(*design, ".fold")) {
+      checkFoldedState(*design, *allowSelfIntersection);
+      return;
+    }
     const Design loaded = loadDesign(*design);
     const Sheet initial = initialSheet(loaded, *design);
     const Sheet sheet = buildSheet(loaded, *design);

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,8 @@ struct Design;
 struct Recording;
 struct Sheet;
 struct PdfPicture;
+struct ColorLegend;
+class HeadlessRenderer;
 }  // namespace curvefold
 
 namespace curvefold::cli {
@@ -78,6 +81,13 @@ void addRenderCommand(CLI::App& app);
 // The folded form, iso view, for a printed page's cover: false (the reason on standard error)
 // when there is no Vulkan device to render it with.
 bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture);
+// A picture of a quantity coloured on a sheet (fit and distance --png, simulate --color), 1280x720
+// with its legend: the renderer is made first, so a machine without Vulkan fails before any work;
+// writeFieldPng renders one value per vertex and writes the PNG at `at` (an OutputSet's writer).
+std::unique_ptr<HeadlessRenderer> makePictureRenderer();
+void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
+                   const std::vector<double>& vertexValues, const ColorLegend& legend,
+                   const std::string& at);
 // desktop/designer.cpp: the desktop designer window.
 class NoDisplayError : public std::runtime_error {
  public:

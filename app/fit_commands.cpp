@@ -26,6 +26,9 @@
 #include "engine/io/design_document.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/io/sheet_cache.hpp"
+#include "engine/render/color_legend.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/text/input_path.hpp"
 #include "sim_input/player.hpp"
@@ -105,13 +108,26 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
   return design;
 }
 
+// The picture of `sheet` coloured by each vertex's distance to `reference` (fit and distance
+// --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres.
+void writeDistancePng(HeadlessRenderer& renderer, const Sheet& sheet,
+                      const SurfaceDistanceQuery& reference, const std::string& title,
+                      const std::string& at) {
+  std::vector<double> millimetres = pointDistances(sheet.positions, reference);
+  double largest = 0.0;
+  for (double& d : millimetres) largest = std::max(largest, d *= 1e3);
+  // An exact fit is all dark, not all the map's middle.
+  const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), title, "mm"};
+  writeFieldPng(renderer, sheet, millimetres, legend, at);
+}
+
 }  // namespace
 
 void addFitCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fit", "Find reflection folds that bring a surface close to a target shape (an OBJ)");
   struct Options {
-    std::string target, output, log;
+    std::string target, output, log, png;
     SurfaceOptions from;
     std::size_t folds = 6;
     double seconds = 60.0;
@@ -145,6 +161,9 @@ void addFitCommand(CLI::App& app) {
                     "Let a fold pass the sheet through itself");
   command->add_option("--log", options->log,
                       "Per-fold log (JSON lines) with each fold's distance to the target");
+  command->add_option("--png", options->png,
+                      "Picture of the fitted sheet coloured by its distance to the target "
+                      "(headless Vulkan)");
   command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
       ->required();
   command->callback([options, command] {
@@ -156,8 +175,10 @@ void addFitCommand(CLI::App& app) {
     if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
       throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
                        std::to_string(options->seconds));
+    if (command->count("--png") > 0 && options->png.empty())
+      throw UsageError("--png: needs a file name");
     refuseOutputsOverInputs(
-        {options->output, options->log},
+        {options->output, options->log, options->png},
         {{options->target, "the target"},
          {hasExtension(options->from.surface, ".obj") ? options->from.surface : "",
           "the surface read (--from)"}});
@@ -240,6 +261,15 @@ void addFitCommand(CLI::App& app) {
         text += fitEnd.dump() + "\n";
         writeFileAtomically(at, text);
       });
+    // The renderer before the search: a machine without Vulkan fails before any work.
+    std::unique_ptr<HeadlessRenderer> renderer;
+    if (!options->png.empty()) {
+      renderer = makePictureRenderer();
+      outputs.add(options->png, [&](const fs::path& at) {
+        const SurfaceDistanceQuery target(fitter->target(), "target");
+        writeDistancePng(*renderer, session.fixed(), target, "distance to the target", at);
+      });
+    }
     outputs.checkWritable();
     const FitResult result = fitFolds(session, *fitter, fit);
     design.folds = result.folds;
@@ -271,6 +301,7 @@ void addFitCommand(CLI::App& app) {
                       : "")
               << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
+    if (!options->png.empty()) std::cout << "wrote " << options->png << "\n";
     // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
     // Within --time too: only when what is left exceeds what the start took to read and measure
     // (more than this lighter measure costs); an interrupted fit says nothing more.
@@ -298,7 +329,7 @@ void addDistanceCommand(CLI::App& app) {
       "distance",
       "How far two shapes (designs or OBJs) lie apart: Hausdorff and Chamfer distances");
   struct Options {
-    std::string a, b;
+    std::string a, b, png;
     std::size_t samples = kDefaultDistanceSamples;
     std::string seed = "1";
   };
@@ -310,10 +341,28 @@ void addDistanceCommand(CLI::App& app) {
   command->add_option("--samples", options->samples, "Area-uniform samples on each surface")
       ->check(CLI::Range(100, 10'000'000));
   command->add_option("--seed", options->seed, "Seed of the samples");
-  command->callback([options] {
+  command->add_option("--png", options->png,
+                      "Picture of A coloured by its distance to B (headless Vulkan)");
+  command->callback([options, command] {
     parseSeed(options->seed);  // refused before the shapes are read
+    if (command->count("--png") > 0 && options->png.empty())
+      throw UsageError("--png: needs a file name");
+    refuseOutputsOverInputs({options->png}, {{options->a, "A"}, {options->b, "B"}});
+    // A machine without Vulkan fails before any work.
+    const std::unique_ptr<HeadlessRenderer> renderer =
+        options->png.empty() ? nullptr : makePictureRenderer();
     const TriangleMesh a = shapeOf(options->a);
     const TriangleMesh b = shapeOf(options->b);
+    OutputSet outputs;
+    if (renderer) {
+      outputs.add(options->png, [&](const fs::path& at) {
+        const Sheet sheet = hasExtension(options->a, ".obj")
+                                ? meshSheet(a)
+                                : buildSheetCached(loadDesign(options->a), options->a);
+        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at);
+      });
+      outputs.checkWritable();
+    }
     SurfaceDistance d;
     try {
       d = surfaceDistance(a, b, options->samples, parseSeed(options->seed));
@@ -332,6 +381,10 @@ void addDistanceCommand(CLI::App& app) {
               << " m)\n"
               << "Chamfer (mean two-sided): " << studio::millimetresText(d.chamfer) << " ("
               << studio::percentText(d.relativeChamfer()) << ")\n";
+    if (renderer) {
+      outputs.write();
+      std::cout << "wrote " << options->png << "\n";
+    }
   });
 }
 

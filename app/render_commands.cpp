@@ -24,6 +24,7 @@
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/io/output_set.hpp"
+#include "engine/render/field_picture.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/sheet_tracker.hpp"
@@ -64,19 +65,6 @@ ViewPreset parseView(const std::string& text) {
   return *view;
 }
 
-// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
-// catch them too.
-// A plain mesh (a target) as a sheet for the renderer: its own positions as the development,
-// which only a crease pattern would read.
-Sheet meshSheet(const TriangleMesh& mesh) {
-  Sheet sheet;
-  sheet.positions = mesh.positions;
-  for (const glm::dvec3& p : mesh.positions) sheet.development.push_back({p.x, p.y});
-  for (const auto& t : mesh.triangles)
-    sheet.triangles.push_back({VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2])});
-  return sheet;
-}
-
 // Two images of one height side by side.
 RgbaImage besideEachOther(const RgbaImage& left, const RgbaImage& right) {
   RgbaImage image{left.width + right.width, left.height, {}};
@@ -88,6 +76,8 @@ RgbaImage besideEachOther(const RgbaImage& left, const RgbaImage& right) {
   return image;
 }
 
+// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
+// catch them too.
 void checkValidation(const VulkanContext& context) {
   if (context.validationMessageCount() == 0) return;
   std::string first = context.validationMessages().front();
@@ -101,6 +91,21 @@ void writePng(const fs::path& path, const RgbaImage& image) {
 }
 
 }  // namespace
+
+std::unique_ptr<HeadlessRenderer> makePictureRenderer() {
+  HeadlessOptions options;
+  options.width = 1280;
+  options.height = 720;
+  return std::make_unique<HeadlessRenderer>(options);
+}
+
+void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
+                   const std::vector<double>& vertexValues, const ColorLegend& legend,
+                   const std::string& at) {
+  const RgbaImage image = renderFieldPicture(renderer, sheet, vertexValues, legend);
+  checkValidation(renderer.context());
+  writePng(at, image);
+}
 
 // Replays a recording and writes frame_NNNNNN.png every N frames. The renderer is made first, so
 // a machine without Vulkan fails before anything is written; the frames are rendered into a hidden

@@ -21,6 +21,7 @@
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
+#include "engine/render/color_legend.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image.hpp"
 #include "engine/render/scene_builder.hpp"
@@ -134,6 +135,49 @@ double largestMagnitude(const std::vector<double>& values) {
   return largest;
 }
 
+// What --color paints on the sheet.
+enum class StateColor { None, Strain, AngleError };
+
+StateColor parseStateColor(const std::string& text) {
+  if (text == "strain") return StateColor::Strain;
+  if (text == "angle-error") return StateColor::AngleError;
+  throw UsageError("--color: expected strain or angle-error, got " + quotedExcerpt(text));
+}
+
+// A per-edge value at the vertices, for a picture: each vertex takes the value of largest
+// magnitude among its edges (sign kept), so a strained bar or a lagging crease shows at both ends.
+std::vector<double> vertexField(const BarHingeModel& model, const std::vector<double>& edgeValues) {
+  std::vector<double> field(model.vertexCount(), 0.0);
+  for (std::size_t e = 0; e < model.bars.size(); ++e)
+    for (std::uint32_t v : model.bars[e])
+      if (std::abs(edgeValues[e]) > std::abs(field[v])) field[v] = edgeValues[e];
+  return field;
+}
+
+// The state's --color field at its vertices: strain in percent (magnitude), or the crease angle
+// error in degrees (signed: positive folded past its target).
+std::vector<double> stateField(StateColor color, const BarHingeModel& model,
+                               const SimulationState& state, double amount) {
+  if (color == StateColor::Strain) {
+    std::vector<double> strain = edgeStrain(model, state.positions);
+    for (double& s : strain) s = 100.0 * std::abs(s);
+    return vertexField(model, strain);
+  }
+  return vertexField(model, creaseAngleError(model, state.positions, amount, state.hingeAngles));
+}
+
+// The legend of --color pictures, one scale for every picture of a run so frames compare.
+ColorLegend stateLegend(StateColor color, const std::vector<std::vector<double>>& fields) {
+  double largest = 0.0;
+  for (const std::vector<double>& field : fields)
+    largest = std::max(largest, largestMagnitude(field));
+  largest = std::max(largest, 1e-9);
+  if (color == StateColor::Strain)
+    return {ColorMap::Viridis, 0.0, largest, "strain (edge length change)", "%"};
+  return {ColorMap::CoolWarm, -largest, largest, "crease angle error (+: past its target)",
+          "degrees"};
+}
+
 void writePng(const Sheet& sheet, const fs::path& path, HeadlessRenderer& renderer, float aspect) {
   writeFileAtomically(
       path, encodePng(renderer.render(sceneForSheet(sheet, ViewPreset::Iso, aspect, false))));
@@ -146,7 +190,7 @@ void addSimulateCommand(CLI::App& app) {
       "simulate",
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
-    std::string input, percent, obj, fold, gltf, png, frames;
+    std::string input, percent, obj, fold, gltf, png, frames, color;
     bool settle = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
@@ -182,8 +226,16 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* png = command->add_option("--png", options->png, "PNG picture (headless Vulkan)");
   CLI::Option* frames = command->add_option("--frames", options->frames,
                                             "Folder for frame_NNNN.png and .obj, one per state");
-  command->callback([options, paper, obj, fold, gltf, png, frames] {
+  CLI::Option* colorOption = command->add_option(
+      "--color", options->color,
+      "Colour the pictures (--png, --frames) by `strain` (each edge's length change) or "
+      "`angle-error` (each crease's fold angle minus its target), with a legend");
+  command->callback([options, paper, obj, fold, gltf, png, frames, colorOption] {
     const std::vector<double> percents = parsePercents(options->percent);
+    const StateColor color =
+        colorOption->count() ? parseStateColor(options->color) : StateColor::None;
+    if (color != StateColor::None && png->count() + frames->count() == 0)
+      throw UsageError("--color: colours a picture; name --png or --frames too");
     if (obj->count() + fold->count() + gltf->count() + png->count() + frames->count() == 0)
       throw UsageError("simulate: name at least one of --obj, --fold, --gltf, --png, --frames");
     if (options->steps == 0 || options->steps > kMaxSteps)
@@ -243,6 +295,7 @@ void addSimulateCommand(CLI::App& app) {
     SimulationState state = flatState(model);
     std::vector<Sheet> frameSheets;
     frameSheets.reserve(frames->count() ? percents.size() : 0);
+    std::vector<std::vector<double>> fields;  // --color's, one per state kept
     Sheet sheet = input.sheet;
     for (std::size_t i = 0; i < percents.size(); ++i) {
       const double amount = percents[i] / 100.0;
@@ -267,14 +320,23 @@ void addSimulateCommand(CLI::App& app) {
       statusFor({options->obj, options->fold, options->gltf, options->png}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);
+      if (color != StateColor::None && (frames->count() || i + 1 == percents.size()))
+        fields.push_back(stateField(color, model, state, amount));
     }
+    const ColorLegend legend =
+        color == StateColor::None ? ColorLegend{} : stateLegend(color, fields);
 
     OutputSet outputs;
     if (obj->count()) outputs.add(options->obj, [&](const auto& at) { writeObj(sheet, at); });
     if (fold->count()) outputs.add(options->fold, [&](const auto& at) { writeFold(sheet, at); });
     if (gltf->count()) outputs.add(options->gltf, [&](const auto& at) { writeGlb(sheet, at); });
     if (png->count())
-      outputs.add(options->png, [&](const auto& at) { writePng(sheet, at, *renderer, aspect); });
+      outputs.add(options->png, [&](const auto& at) {
+        if (color == StateColor::None)
+          writePng(sheet, at, *renderer, aspect);
+        else
+          writeFieldPng(*renderer, sheet, fields.back(), legend, at);
+      });
     const fs::path folder = options->frames;
     for (std::size_t i = 0; i < frameSheets.size(); ++i) {
       char name[32];
@@ -282,8 +344,11 @@ void addSimulateCommand(CLI::App& app) {
       const Sheet* frameSheet = &frameSheets[i];
       outputs.add(folder / (std::string(name) + ".obj"),
                   [frameSheet](const auto& at) { writeObj(*frameSheet, at); });
-      outputs.add(folder / (std::string(name) + ".png"), [&, frameSheet](const auto& at) {
-        writePng(*frameSheet, at, *renderer, aspect);
+      outputs.add(folder / (std::string(name) + ".png"), [&, frameSheet, i](const auto& at) {
+        if (color == StateColor::None)
+          writePng(*frameSheet, at, *renderer, aspect);
+        else
+          writeFieldPng(*renderer, *frameSheet, fields[i], legend, at);
       });
     }
     outputs.write(frames->count() ? folder : fs::path());

@@ -44,6 +44,7 @@
 #include "engine/io/input_limits.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
+#include "engine/render/field_picture.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
@@ -583,11 +584,19 @@ py::dict distanceDict(const SurfaceDistance& d) {
   return result;
 }
 
-// `curvefold distance A B`: the same samples, the same numbers.
+// `curvefold distance A B [--png P]`: the same samples, the same numbers, the same picture (A
+// coloured by its distance to B; a Design is drawn with its creases, a file's shape without).
 py::dict distanceOf(const py::object& a, const py::object& b, std::size_t samples,
-                    std::uint64_t seed) {
+                    std::uint64_t seed, const py::object& pngArg) {
   if (samples < 100 || samples > 10'000'000)
     throw std::invalid_argument("distance: samples must lie in 100 to 10000000");
+  const std::optional<std::filesystem::path> png = optionalPath(pngArg, "distance: png");
+  if (png) {
+    std::vector<NamedInput> inputs;
+    if (!py::isinstance<PyDesign>(a)) inputs.push_back({shapeName(a), "a"});
+    if (!py::isinstance<PyDesign>(b)) inputs.push_back({shapeName(b), "b"});
+    refuseOutputsOverInputs({*png}, inputs);
+  }
   const TriangleMesh meshA = shapeOf(a, "distance: a"), meshB = shapeOf(b, "distance: b");
   SurfaceDistance d;
   {
@@ -601,6 +610,23 @@ py::dict distanceOf(const py::object& a, const py::object& b, std::size_t sample
         return shapeName(first ? a : b);
       }() + ")");
     }
+  }
+  if (png) {
+    const std::shared_ptr<const Sheet> sheet =
+        py::isinstance<PyDesign>(a) ? snapshotOf(py::cast<const PyDesign&>(a))
+                                    : std::make_shared<const Sheet>(meshSheet(meshA));
+    py::gil_scoped_release release;
+    HeadlessOptions options;
+    options.width = 1280;
+    options.height = 720;
+    HeadlessRenderer renderer(options);
+    std::vector<double> millimetres =
+        pointDistances(sheet->positions, SurfaceDistanceQuery(meshB, "second"));
+    double largest = 0.0;
+    for (double& value : millimetres) largest = std::max(largest, value *= 1e3);
+    const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), "distance to B",
+                             "mm"};
+    writeFileAtomically(*png, encodePng(renderFieldPicture(renderer, *sheet, millimetres, legend)));
   }
   return distanceDict(d);
 }
@@ -928,9 +954,11 @@ PYBIND11_MODULE(_curvefold, m) {
       py::arg("design"), py::arg("grab"), py::arg("to"), py::arg("repeats"));
   m.def("distance", &distanceOf, py::arg("a"), py::arg("b"), py::kw_only(),
         py::arg("samples") = kDefaultDistanceSamples, py::arg("seed") = 1,
+        py::arg("png") = py::none(),
         "How far two shapes (Designs, OBJ paths or design files) lie apart, as `curvefold "
         "distance A B`: {hausdorff, chamfer, diagonal (of b), hausdorff_relative, "
-        "chamfer_relative, a_to_b_max, a_to_b_mean, b_to_a_max, b_to_a_mean}, metres");
+        "chamfer_relative, a_to_b_max, a_to_b_mean, b_to_a_max, b_to_a_mean}, metres; with "
+        "png=PATH also a picture of a coloured by its distance to b (1280x720, legend in mm)");
   m.def("surfaces", &surfacesInfo,
         "The catalogue: {name: {description, parameters: {name: {default, min, max, integer, "
         "description}}, symmetries}}");

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -14,6 +16,9 @@
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/reflection.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/render/color_legend.hpp"
+#include "engine/render/color_map.hpp"
+#include "engine/render/field_picture.hpp"
 #include "engine/render/gpu_resources.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image_barrier.hpp"
@@ -505,6 +510,87 @@ TEST(DirtyRanges, JoinsNearbyRunsAndClips) {
   EXPECT_EQ(runs[0], std::make_pair(3u, 10u));
   EXPECT_EQ(runs[1], std::make_pair(40u, 41u));
   EXPECT_EQ(runs[2], std::make_pair(100u, 150u));
+}
+
+// Issue 38 2d / issue 39 1: a quantity coloured on the sheet. viridis runs from dark purple to
+// yellow and brightens all the way (perceptual: its lightness rises with the value); cool-warm
+// is blue, grey, red with its light middle at 0.5.
+TEST(ColorMaps, RunFromTheirPublishedEndsAndViridisBrightensThroughout) {
+  EXPECT_EQ(colorAt(ColorMap::Viridis, 0.0), glm::u8vec4(68, 1, 84, 255));
+  EXPECT_EQ(colorAt(ColorMap::Viridis, 1.0), glm::u8vec4(253, 231, 37, 255));
+  EXPECT_EQ(colorAt(ColorMap::Viridis, -3.0), colorAt(ColorMap::Viridis, 0.0));
+  EXPECT_EQ(colorAt(ColorMap::Viridis, std::nan("")), colorAt(ColorMap::Viridis, 0.0));
+  EXPECT_EQ(colorAt(ColorMap::Viridis, 7.0), colorAt(ColorMap::Viridis, 1.0));
+  double lightness = -1.0;
+  for (int i = 0; i <= 100; ++i) {
+    const glm::u8vec4 c = colorAt(ColorMap::Viridis, i / 100.0);
+    const double y = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+    EXPECT_GT(y, lightness) << "at " << i;
+    lightness = y;
+  }
+  const glm::u8vec4 low = colorAt(ColorMap::CoolWarm, 0.0),
+                    middle = colorAt(ColorMap::CoolWarm, 0.5),
+                    high = colorAt(ColorMap::CoolWarm, 1.0);
+  EXPECT_GT(low.b, low.r + 100);
+  EXPECT_GT(high.r, high.b + 100);
+  EXPECT_NEAR(middle.r, middle.b, 2);
+  EXPECT_GT(middle.g, 200);
+  const std::vector<double> values{-1.0, 0.0, 1.0, std::numeric_limits<double>::infinity()};
+  const std::vector<glm::u8vec4> colors = colorsOf(values, -1.0, 1.0, ColorMap::CoolWarm);
+  EXPECT_EQ(colors[0], low);
+  EXPECT_EQ(colors[1], middle);
+  EXPECT_EQ(colors[2], high);
+  EXPECT_EQ(colors[3], low);
+}
+
+bool isViridisHigh(const std::uint8_t* p) {  // yellow, shaded or not
+  return p[0] > 150 && p[1] > 130 && p[2] < 80;
+}
+bool isViridisLow(const std::uint8_t* p) {  // dark purple
+  return p[0] > 30 && p[0] < 100 && p[1] < 30 && p[2] > 45 && p[2] < 110;
+}
+
+// A flat square whose right quarter is "far" (value 1, the rest 0), seen from the front: the far
+// part is drawn in the map's high colour, right of the low colour, and the legend strip at the
+// right shows the bar's both ends and dark text. The same sheet drawn plain has neither colour.
+TEST_F(Render, AColouredSheetShowsItsFarRegionInTheHighColour) {
+  const Sheet sheet = testing::flatGrid(8, 8, 0.025);
+  std::vector<double> values(sheet.vertexCount(), 0.0);
+  for (VertexIndex v = 0; v < sheet.vertexCount(); ++v)
+    if (sheet.positions[v].x > 0.15 + 1e-9) values[v] = 1.0;
+  const ColorLegend legend{ColorMap::Viridis, 0.0, 1.0, "distance to the target", "mm"};
+  const RgbaImage image = renderFieldPicture(*renderer_, sheet, values, legend, ViewPreset::Front);
+  ASSERT_EQ(image.width, kSize);
+  const std::uint32_t viewWidth = kSize - legendWidth(kSize);
+  double highX = 0.0, lowX = 0.0;
+  std::size_t high = 0, low = 0, legendHigh = 0, legendLow = 0, legendText = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y)
+    for (std::uint32_t x = 0; x < kSize; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      if (x < viewWidth) {
+        if (isViridisHigh(p)) ++high, highX += x;
+        if (isViridisLow(p)) ++low, lowX += x;
+      } else {
+        legendHigh += isViridisHigh(p);
+        legendLow += isViridisLow(p);
+        legendText += p[0] < 60 && p[1] < 60 && p[2] < 60;
+      }
+    }
+  // The square spans the flat view; its right quarter is about a fifth of its pixels.
+  EXPECT_GT(high, std::size_t(viewWidth) * kSize / 40);
+  EXPECT_GT(low, 2 * high);
+  ASSERT_GT(high, 0u);
+  ASSERT_GT(low, 0u);
+  EXPECT_GT(highX / double(high), lowX / double(low) + 0.2 * viewWidth);
+  EXPECT_GT(legendHigh, 20u);
+  EXPECT_GT(legendLow, 20u);
+  EXPECT_GT(legendText, 20u);
+
+  // Plain paper: neither colour anywhere.
+  Scene plain = sceneForSheet(sheet, ViewPreset::Front, 1.0f, false);
+  const RgbaImage paper = renderer_->render(plain);
+  EXPECT_EQ(countPixels(paper, isViridisHigh), 0u);
+  EXPECT_EQ(countPixels(paper, isViridisLow), 0u);
 }
 
 TEST(ViewPresets, ParseKnownNamesOnly) {

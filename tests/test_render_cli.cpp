@@ -345,3 +345,215 @@ TEST_F(RenderCli, MakeAnimationWritesAGifOfTheReplay) {
 }
 
 }  // namespace
+
+// Pictures with a quantity coloured on the sheet (issue 38 2d, issue 39 1, 3): fit and distance
+// --png colour the sheet by its distance to the target, simulate --color by strain or crease
+// angle error; bad options are one line and write nothing; check reads a simulated state.
+namespace curvefold::testing {
+namespace {
+
+class ColouredPictures : public CliTest {
+ protected:
+  // A 0.2 m square as an OBJ grid of 8x8 cells in z = 0, with its right quarter (x > 0.15)
+  // lifted by `lift` along z, and the flat grid as texture coordinates when `withVt`.
+  void writeSquare(const std::string& name, double lift, bool withVt = false) const {
+    std::ofstream out(path(name));
+    for (int j = 0; j <= 8; ++j)
+      for (int i = 0; i <= 8; ++i) {
+        const double x = 0.025 * i, y = 0.025 * j;
+        out << "v " << x << " " << y << " " << (x > 0.15 + 1e-9 ? lift : 0.0) << "\n";
+        if (withVt) out << "vt " << x << " " << y << "\n";
+      }
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i) {
+        const int a = j * 9 + i + 1, b = a + 1, c = a + 10, d = a + 9;
+        if (withVt)
+          out << "f " << a << "/" << a << " " << b << "/" << b << " " << c << "/" << c << "\n"
+              << "f " << a << "/" << a << " " << c << "/" << c << " " << d << "/" << d << "\n";
+        else
+          out << "f " << a << " " << b << " " << c << "\nf " << a << " " << c << " " << d << "\n";
+      }
+  }
+
+  struct Colours {
+    std::size_t high = 0, low = 0;   // pixels of the map's ends
+    std::size_t lowHalf = 0;         // pixels of its purple-blue half (blue above green and red)
+    double highX = 0.0, lowX = 0.0;  // their mean column
+    int width = 0;
+  };
+
+  // Counts a picture's pixels of viridis' high (yellow) and low (dark purple) ends in the 3D view
+  // (left of the legend strip).
+  static Colours viridisEnds(const fs::path& file) {
+    Colours colours;
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
+    if (!pixels) return colours;
+    colours.width = w;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w - 220; ++x) {
+        const unsigned char* p = pixels + (std::size_t(y) * w + x) * 4;
+        if (p[0] > 150 && p[1] > 130 && p[2] < 80) {
+          ++colours.high;
+          colours.highX += x;
+        } else if (p[0] > 30 && p[0] < 100 && p[1] < 30 && p[2] > 45 && p[2] < 110) {
+          ++colours.low;
+          colours.lowX += x;
+        }
+        colours.lowHalf += p[2] > p[1] + 15 && p[2] > p[0] + 15;
+      }
+    stbi_image_free(pixels);
+    if (colours.high) colours.highX /= double(colours.high);
+    if (colours.low) colours.lowX /= double(colours.low);
+    return colours;
+  }
+};
+
+// The flat square against the same square with its right quarter lifted 5 cm: that quarter is
+// far (yellow), the rest lies on B (dark purple), and the yellow lies right of the purple.
+TEST_F(ColouredPictures, DistancePngColoursTheFarQuarterInTheHighColour) {
+  writeSquare("flat.obj", 0.0);
+  writeSquare("lifted.obj", 0.05);
+  const CommandResult result = run("distance flat.obj lifted.obj --png d.png");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote d.png"), std::string::npos) << result.out;
+  const Colours colours = viridisEnds(path("d.png"));
+  ASSERT_EQ(colours.width, 1280);
+  EXPECT_GT(colours.high, 2000u);
+  EXPECT_GT(colours.low, 2 * colours.high);
+  EXPECT_GT(colours.highX, colours.lowX + 50.0);
+}
+
+// A fit's picture: the sheet a fit ends with, coloured by its distance to the target; a target
+// one fold cannot reach leaves a far part (yellow) beside a near one (purple). With a folder that
+// does not exist for the picture, neither it nor the design is written.
+TEST_F(ColouredPictures, FitPngColoursTheFittedSheetByItsDistance) {
+  writeSquare("lifted.obj", 0.05);
+  // A second of search (a fold or none, the quarter stays far): the picture is what is tested.
+  const CommandResult result =
+      run("fit lifted.obj --from square --folds 1 --time 1 -o f.curvefold.json --png f.png");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const Colours colours = viridisEnds(path("f.png"));
+  EXPECT_GT(colours.high, 100u);
+  EXPECT_GT(colours.low, 1000u);
+
+  const CommandResult missing =
+      run("fit lifted.obj --from square --folds 1 --time 1 -o g.curvefold.json --png "
+          "nowhere/g.png");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+  EXPECT_FALSE(fs::exists(path("g.curvefold.json")));
+}
+
+TEST_F(ColouredPictures, BadPictureOptionsAreOneLineAndWriteNothing) {
+  writeSquare("flat.obj", 0.0);
+  writeSquare("lifted.obj", 0.05);
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  for (const std::string command :
+       {"simulate c.curvefold.json --percent 50 --color strain --obj out.obj",
+        "simulate c.curvefold.json --percent 50 --color heat --png out.png --obj out.obj",
+        "distance flat.obj lifted.obj --png nowhere/out.png",
+        "distance flat.obj lifted.obj --png flat.obj", "distance flat.obj lifted.obj --png ''",
+        "fit lifted.obj --from square --folds 1 --evaluations 100 -o out.obj --png lifted.obj"}) {
+    const CommandResult result = run(command);
+    EXPECT_EQ(result.exitCode, 1) << command;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1)
+        << command << ": " << result.err;
+    EXPECT_FALSE(fs::exists(path("out.png"))) << command;
+    EXPECT_FALSE(fs::exists(path("out.obj"))) << command;
+  }
+  EXPECT_NE(slurp(path("flat.obj")).find("v "), std::string::npos);  // not overwritten
+}
+
+// simulate --color strain: a cone folded part way by few dynamic steps strains unevenly, so its
+// picture holds the map's high end and its low half; the same run without --color holds neither.
+TEST_F(ColouredPictures, SimulateColourStrainPaintsTheStrain) {
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  const CommandResult coloured =
+      run("simulate c.curvefold.json --percent 60 --steps 200 --png s.png --color strain");
+  ASSERT_EQ(coloured.exitCode, 0) << coloured.err;
+  const Colours colours = viridisEnds(path("s.png"));
+  EXPECT_GT(colours.high, 200u);
+  EXPECT_GT(colours.lowHalf, 2000u);
+  const CommandResult plain = run("simulate c.curvefold.json --percent 60 --steps 200 --png p.png");
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  const Colours none = viridisEnds(path("p.png"));
+  EXPECT_EQ(none.high + none.lowHalf, 0u);
+}
+
+// simulate --color angle-error: a folded square's crease, given few steps toward 80%, lags its
+// target: the sheet along the crease is cool-warm's blue (short of the target), the flat parts its
+// grey middle; a plain picture is paper, not grey (its only blue is the valley's line).
+TEST_F(ColouredPictures, SimulateColourAngleErrorPaintsTheLaggingCreaseBlue) {
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  ASSERT_EQ(run("fold s.curvefold.json --vertex-near 0.05,0.1,0 --to 0.03,0.07,0.02 -o "
+                "s.curvefold.json")
+                .exitCode,
+            0);
+  const auto blueAndGrey = [](const fs::path& file) {
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(file.c_str(), &w, &h, &channels, 4);
+    std::pair<std::size_t, std::size_t> counts{0, 0};
+    if (!pixels) return counts;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w - 220; ++x) {
+        const unsigned char* p = pixels + (std::size_t(y) * w + x) * 4;
+        counts.first += p[2] > p[0] + 60 && p[2] > p[1] + 30;
+        counts.second +=
+            std::abs(p[0] - p[2]) < 6 && std::abs(p[0] - p[1]) < 6 && p[0] > 150 && p[0] < 215;
+      }
+    stbi_image_free(pixels);
+    return counts;
+  };
+  const std::string simulate = "simulate s.curvefold.json --percent 80 --steps 30 --png ";
+  const CommandResult coloured = run(simulate + "a.png --color angle-error");
+  ASSERT_EQ(coloured.exitCode, 0) << coloured.err;
+  const auto [blue, grey] = blueAndGrey(path("a.png"));
+  EXPECT_GT(blue, 200u);
+  EXPECT_GT(grey, 20 * blue);
+  ASSERT_EQ(run(simulate + "p.png").exitCode, 0);
+  const auto [plainBlue, plainGrey] = blueAndGrey(path("p.png"));
+  EXPECT_LT(plainGrey, grey / 20) << plainBlue;
+}
+
+// check of a simulated state: the largest strain and no self-intersection, a line each; the same
+// for its FOLD; a lifted quarter on a flat development strains by the lift.
+TEST_F(ColouredPictures, CheckReportsASimulatedStatesStrainAndSelfIntersection) {
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  ASSERT_EQ(
+      run("simulate c.curvefold.json --percent 60 --steps 200 --obj s.obj --fold s.fold").exitCode,
+      0);
+  for (const std::string file : {"s.obj", "s.fold"}) {
+    const CommandResult result = run("check " + file);
+    ASSERT_EQ(result.exitCode, 0) << file << ": " << result.err;
+    EXPECT_NE(result.out.find("largest strain"), std::string::npos) << result.out;
+    EXPECT_NE(result.out.find("ok    no self-intersection"), std::string::npos) << result.out;
+  }
+  // The quarter's cells next to the lift stretch from 2.5 cm to hypot(2.5, 5) cm: 124%.
+  writeSquare("strained.obj", 0.05, true);
+  const CommandResult strained = run("check strained.obj");
+  ASSERT_EQ(strained.exitCode, 0) << strained.err;
+  EXPECT_NE(strained.out.find("largest strain 124%"), std::string::npos) << strained.out;
+
+  // Two triangles of separate pieces that pass through each other.
+  {
+    std::ofstream out(path("crossing.obj"));
+    out << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.2 0.2 -0.5\nv 0.2 0.2 0.5\nv 0.3 -0.5 0\n"
+        << "vt 0 0\nvt 1 0\nvt 0 1\nvt 3 0\nvt 4 0\nvt 3.5 1.1\n"
+        << "f 1/1 2/2 3/3\nf 4/4 5/5 6/6\n";
+  }
+  const CommandResult crossing = run("check crossing.obj");
+  EXPECT_EQ(crossing.exitCode, 1);
+  EXPECT_NE(crossing.out.find("FAIL  self-intersection: 1 pairs"), std::string::npos)
+      << crossing.out;
+  EXPECT_EQ(run("check crossing.obj --allow-self-intersection").exitCode, 0);
+
+  writeSquare("novt.obj", 0.0);
+  const CommandResult novt = run("check novt.obj");
+  EXPECT_EQ(novt.exitCode, 1);
+  EXPECT_EQ(std::count(novt.err.begin(), novt.err.end(), '\n'), 1) << novt.err;
+  EXPECT_NE(novt.err.find("texture coordinates"), std::string::npos) << novt.err;
+}
+
+}  // namespace
+}  // namespace curvefold::testing

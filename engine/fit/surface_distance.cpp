@@ -44,6 +44,15 @@ double SurfaceDistanceQuery::distance(const glm::dvec3& p) const {
   return tree_->distance(p);
 }
 
+std::vector<double> pointDistances(std::span<const glm::dvec3> points,
+                                   const SurfaceDistanceQuery& to) {
+  std::vector<double> distances(points.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) distances[i] = to.distance(points[i]);
+  });
+  return distances;
+}
+
 namespace {
 
 struct OneSide {

@@ -11,7 +11,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -52,6 +54,11 @@ class SurfaceDistanceQuery {
   struct Tree;
   std::unique_ptr<Tree> tree_;
 };
+
+// Each point's distance to the query's surface (a picture's per-vertex field: a fitted sheet's
+// vertices to its target), on all cores; the same result for any thread count.
+std::vector<double> pointDistances(std::span<const glm::dvec3> points,
+                                   const SurfaceDistanceQuery& to);
 
 // A against B (B is the reference, a fit's target). Both halves run on all cores; the result is
 // the same for the same samples and seed. Throws DegenerateMesh naming "first" or "second".

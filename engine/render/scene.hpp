@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -58,6 +59,11 @@ struct SceneSheet {
   const Sheet* sheet = nullptr;
   glm::mat4 worldFromSheet{1.0f};
   std::span<const TriangleIndex> reflectedTriangles;  // tinted; any order
+  // A quantity coloured on the sheet (color_map.hpp): one sRGB colour per vertex, interpolated
+  // across each triangle and shaded, in place of the paper's two sides and the tint. Empty: paper.
+  // Uploaded whole each frame it is given (pictures, not a live drag); its size must be the
+  // sheet's vertex count (else it is ignored).
+  std::span<const glm::u8vec4> vertexColors;
 };
 
 struct LineSegment {

@@ -170,6 +170,15 @@ Ground groundBelow(const Bounds& bounds) {
   return ground;
 }
 
+Sheet meshSheet(const TriangleMesh& mesh) {
+  Sheet sheet;
+  sheet.positions = mesh.positions;
+  for (const glm::dvec3& p : mesh.positions) sheet.development.push_back({p.x, p.y});
+  for (const auto& t : mesh.triangles)
+    sheet.triangles.push_back({VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2])});
+  return sheet;
+}
+
 Scene sceneForSheet(const Sheet& sheet, ViewPreset view, float aspect, bool panel) {
   Scene scene;
   scene.sheet.sheet = &sheet;

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "engine/geometry/sheet.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
 #include "engine/render/scene.hpp"
 
 namespace curvefold {
@@ -49,6 +50,10 @@ CreasePatternPanel creasePatternPanel(const Sheet& sheet, const SceneColors& col
 
 // A grid a little below the bounds, centred under them, spaced to their size.
 Ground groundBelow(const Bounds& bounds);
+
+// A plain mesh (a target, a shape measured) as a sheet for the renderer: its own positions as the
+// development, which only a crease pattern would read; no creases.
+Sheet meshSheet(const TriangleMesh& mesh);
 
 // A still image of a sheet: framed camera, creases, ground and (optionally) the panel. The scene
 // points at `sheet`, which must outlive it. aspect: of the whole image.

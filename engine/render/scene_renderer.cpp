@@ -26,6 +26,10 @@
 #include "shaders/sheet.frag.multiview.h"
 #include "shaders/sheet.vert.h"
 #include "shaders/sheet.vert.multiview.h"
+#include "shaders/sheet_colored.frag.h"
+#include "shaders/sheet_colored.frag.multiview.h"
+#include "shaders/sheet_colored.vert.h"
+#include "shaders/sheet_colored.vert.multiview.h"
 #include "shaders/translucent.frag.h"
 #include "shaders/translucent.frag.multiview.h"
 #include "shaders/translucent.vert.h"
@@ -163,6 +167,8 @@ struct SceneRenderer::Slot {
 
   // The sheet as this slot's buffers hold it.
   HostBuffer vertices, flags, indices;  // flags: one byte per vertex, the reflected tint
+  HostBuffer colors;                    // the scene's vertexColors, when it has them
+  bool colored = false;                 // this frame draws them
   std::uint32_t vertexCapacity = 0, triangleCapacity = 0;
   std::uint32_t vertexCount = 0, triangleCount = 0;
   bool dirtyAll = true;
@@ -217,6 +223,12 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
                       {1, 1, VK_VERTEX_INPUT_RATE_VERTEX}};
   builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8_UNORM, 0}};
   sheetPipeline_ = builder.build();
+  builder.vertexCode = code(multiview, sheet_colored_vert_spv, sheet_colored_vert_multiview_spv);
+  builder.fragmentCode = code(multiview, sheet_colored_frag_spv, sheet_colored_frag_multiview_spv);
+  builder.bindings = {{0, sizeof(glm::vec3), VK_VERTEX_INPUT_RATE_VERTEX},
+                      {1, sizeof(glm::u8vec4), VK_VERTEX_INPUT_RATE_VERTEX}};
+  builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R8G8B8A8_UNORM, 0}};
+  coloredSheetPipeline_ = builder.build();
   // The other pipelines: lines and translucent surfaces blend and write no depth, markers are
   // opaque like the sheet.
   const auto build = [&builder](bool blended) {
@@ -324,8 +336,8 @@ void SceneRenderer::destroy() {
   destroyHandle(device, panelLayout_, vkDestroyPipelineLayout);
   destroyHandle(device, panelSetLayout_, vkDestroyDescriptorSetLayout);
   panelSet_ = VK_NULL_HANDLE;
-  for (VkPipeline* pipeline :
-       {&sheetPipeline_, &linePipeline_, &markerPipeline_, &translucentPipeline_})
+  for (VkPipeline* pipeline : {&sheetPipeline_, &coloredSheetPipeline_, &linePipeline_,
+                               &markerPipeline_, &translucentPipeline_})
     destroyHandle(device, *pipeline, vkDestroyPipeline);
   destroyHandle(device, pool_, vkDestroyDescriptorPool);
   destroyHandle(device, layout_, vkDestroyPipelineLayout);
@@ -447,6 +459,17 @@ void SceneRenderer::uploadSheet(Slot& slot, const Scene& scene) {
     stats_.sheetBytes += std::size_t(end - begin) * sizeof(Triangle);
   }
   stats_.sheetRuns += vertexRuns.size() + triangleRuns.size();
+  // A coloured sheet's colours, whole: they come with pictures, not with a drag's frames.
+  slot.colored = !scene.sheet.vertexColors.empty() &&
+                 scene.sheet.vertexColors.size() == std::size_t(vertexCount) && vertexCount > 0;
+  if (slot.colored) {
+    const VkDeviceSize bytes = VkDeviceSize(vertexCount) * sizeof(glm::u8vec4);
+    if (slot.colors.size() < bytes)
+      slot.colors = HostBuffer(context_, VkDeviceSize(slot.vertexCapacity) * sizeof(glm::u8vec4),
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::memcpy(slot.colors.data(), scene.sheet.vertexColors.data(), bytes);
+    stats_.sheetBytes += bytes;
+  }
   slot.dirtyAll = false;
   slot.dirtyVertices.clear();
   slot.dirtyTriangles.clear();
@@ -578,8 +601,10 @@ void SceneRenderer::record(const Frame& frame, const Scene& scene, VkExtent2D ex
                           nullptr);
   const VkDeviceSize zero = 0;
   if (slot.drawTriangles > 0) {
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, sheetPipeline_);
-    const VkBuffer vertexBuffers[2] = {slot.vertices.buffer(), slot.flags.buffer()};
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      slot.colored ? coloredSheetPipeline_ : sheetPipeline_);
+    const VkBuffer vertexBuffers[2] = {slot.vertices.buffer(),
+                                       slot.colored ? slot.colors.buffer() : slot.flags.buffer()};
     const VkDeviceSize offsets[2] = {0, 0};
     vkCmdBindVertexBuffers(commands, 0, 2, vertexBuffers, offsets);
     vkCmdBindIndexBuffer(commands, slot.indices.buffer(), 0, VK_INDEX_TYPE_UINT32);

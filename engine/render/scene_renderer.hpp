@@ -114,6 +114,7 @@ class SceneRenderer {
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkPipeline sheetPipeline_ = VK_NULL_HANDLE;
+  VkPipeline coloredSheetPipeline_ = VK_NULL_HANDLE;  // SceneSheet::vertexColors
   VkPipeline linePipeline_ = VK_NULL_HANDLE;
   VkPipeline markerPipeline_ = VK_NULL_HANDLE;
   VkPipeline translucentPipeline_ = VK_NULL_HANDLE;

@@ -361,6 +361,37 @@ Sheet readObjSurface(const std::string& path) {
   return readObjFile(path, parseObjSurface);
 }
 
+Sheet parseObjState(std::istream& in, const std::string& name) {
+  const ObjData data = Parser(name).parse(in);
+  if (data.triangles.front().corners[0].vt < 0)
+    throw ObjError(name +
+                   ": no texture coordinates (vt) on the faces: a folded state is measured "
+                   "against its flat sheet, which vt holds");
+  Sheet sheet;
+  std::map<std::pair<long, long>, VertexIndex> vertexOf;
+  for (const ObjTriangle& t : data.triangles) {
+    Triangle triangle;
+    for (int i = 0; i < 3; ++i) {
+      const Corner& c = t.corners[i];
+      auto [it, added] =
+          vertexOf.emplace(std::pair{c.v, c.vt}, static_cast<VertexIndex>(sheet.positions.size()));
+      if (added) {
+        sheet.positions.push_back(data.v[c.v]);
+        sheet.development.push_back(data.vt[c.vt]);
+      }
+      triangle[i] = it->second;
+    }
+    if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2])
+      throw ObjError(name + ":" + std::to_string(t.line) + ": a face repeats a vertex");
+    sheet.triangles.push_back(triangle);
+  }
+  return sheet;
+}
+
+Sheet readObjState(const std::string& path) {
+  return readObjFile(path, parseObjState);
+}
+
 TriangleMesh parseObjMesh(std::istream& in, const std::string& name) {
   const ObjData data = Parser(name).parse(in);
   TriangleMesh mesh;

@@ -41,6 +41,13 @@ inline constexpr std::size_t kMaxObjLineBytes = 1 << 20;
 Sheet parseObjSurface(std::istream& in, const std::string& nameForErrors);
 Sheet readObjSurface(const std::string& path);
 
+// A folded state as written with its flat sheet (simulate --obj, export --obj: `v` folded, `vt`
+// the development in metres), read as it is: each distinct (v, vt) pair a vertex, no scale fitted
+// and no length, manifold or overlap check, so a strained or self-intersecting state can be
+// measured (`check` of a simulated state). Throws ObjError for a file without `vt` on its faces.
+Sheet parseObjState(std::istream& in, const std::string& nameForErrors);
+Sheet readObjState(const std::string& path);
+
 // Any triangle mesh from an OBJ (a target shape: a scan, a surface of revolution), read by the
 // same parser with the same limits: `v` and `f` only (polygons fanned), in the file's own frame
 // (never recentred), with no check of manifoldness or developability. Throws ObjError naming the

@@ -314,6 +314,25 @@ def test_distance_is_the_command_lines(tmp_path):
         curvefold.distance(design, 3)
 
 
+def test_distance_png_is_the_command_lines_picture(tmp_path):
+    """png= draws a coloured by its distance to b as `curvefold distance A B --png` does: the same
+    bytes for the same shapes; a picture over an input is refused and nothing is written."""
+    design = folded_cylinder()
+    design.save(tmp_path / "d.curvefold.json")
+    target = TARGETS / "tube_tucked.obj"
+    ours = curvefold.distance(target, design, samples=2000, png=tmp_path / "python.png")
+    assert ours["hausdorff"] > 0
+    cli("distance", target, tmp_path / "d.curvefold.json", "--samples", "2000",
+        "--png", tmp_path / "cli.png")
+    picture = (tmp_path / "python.png").read_bytes()
+    assert picture[:8] == b"\x89PNG\r\n\x1a\n"
+    assert picture == (tmp_path / "cli.png").read_bytes()
+    with pytest.raises((OSError, ValueError), match="d.curvefold.json"):
+        curvefold.distance(design, tmp_path / "d.curvefold.json", png=tmp_path / "d.curvefold.json")
+    with pytest.raises(TypeError):
+        curvefold.distance(design, target, png=3)
+
+
 def test_fit_is_the_command_lines_fit(tmp_path):
     """With evaluations (no clock) Design.fit keeps the same folds as `curvefold fit`, byte for
     byte in the saved design, and reports the same distances; another seed searches otherwise."""
