@@ -230,6 +230,33 @@ TEST(StartSurface, ASaddleStartsFromASweptParabolaNearerThanAFlatSheet) {
   validate(*start.placed);
 }
 
+TEST(StartSurface, ABowlStartsFromAConeThatReachesItsBottomAndRim) {
+  // A paraboloid bowl, 16 cm across and 4 cm deep, a small hole at its bottom, tilted.
+  TriangleMesh bowl;
+  const int around = 64, out = 20;
+  for (int j = 0; j <= out; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * 3.14159265358979 * i / around, r = 0.004 + 0.076 * j / out;
+      bowl.positions.emplace_back(r * std::cos(a), r * std::sin(a), r * r / 0.16);
+    }
+  for (int j = 0; j < out; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * around + ii % around); };
+      bowl.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      bowl.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  const TriangleMesh target = moved(bowl, {1.0, 0.5, 0.0}, 30.0, {0.0, 0.0, 0.01});
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "cone");
+  // The least-squares radius line stops 2 cm short of the bottom (Hausdorff 8%); the line across
+  // the profile reaches it.
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.chamfer, 0.01 * distance.diagonal);
+  EXPECT_LT(distance.hausdorff, 0.06 * distance.diagonal);
+  EXPECT_LT(start.parameters.at("top_radius"), 0.015);
+}
+
 TEST(StartSurface, TheSweptParabolaIsDevelopedExactly) {
   const Sheet sheet = sweptParabola(6.0, 0.3, -0.1, 0.12, 0.15, 40);
   validate(sheet);

@@ -58,6 +58,67 @@ Principal principalOf(const std::vector<SurfaceSample>& samples) {
   return out;
 }
 
+// The cone of the line nearest the profile (total least squares of (height, radius): distances
+// across the line, as the surface's are), spanning the profile's extreme projections onto it, so
+// it reaches a bowl's bottom and rim where the least-squares radius line stops short (its
+// Hausdorff distance is the line's largest deviation, not the part it leaves uncovered).
+void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& centroid,
+                const glm::dvec3& axis, const std::string& kind, std::vector<PlacedStart>& out) {
+  if (!kind.empty() && kind != "cone") return;
+  std::vector<glm::dvec2> profile;  // (height, radius)
+  glm::dvec2 mean(0.0);
+  for (const SurfaceSample& sample : samples) {
+    const glm::dvec3 d = sample.position - centroid;
+    const double t = glm::dot(d, axis);
+    profile.emplace_back(t, glm::length(d - t * axis));
+    mean += profile.back();
+  }
+  mean /= static_cast<double>(profile.size());
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+  for (const glm::dvec2& p : profile) {
+    const Eigen::Vector2d e(p.x - mean.x, p.y - mean.y);
+    covariance += e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
+  glm::dvec2 along(solver.eigenvectors()(0, 1), solver.eigenvectors()(1, 1));
+  if (along.x < 0.0) along = -along;  // up the axis
+  double lo = 1e300, hi = -1e300;
+  for (const glm::dvec2& p : profile) {
+    lo = std::min(lo, glm::dot(p - mean, along));
+    hi = std::max(hi, glm::dot(p - mean, along));
+  }
+  glm::dvec2 a = mean + lo * along, b = mean + hi * along;
+  // A line through the axis ends at it: an apex.
+  auto clip = [&](glm::dvec2& end, const glm::dvec2& other) {
+    if (end.y >= 0.0) return;
+    end = other + (end - other) * (other.y / (other.y - end.y));
+    end.y = 0.0;
+  };
+  clip(a, b);
+  clip(b, a);
+  if (!(b.x - a.x > 0.0)) return;  // a disk across the axis: the flat candidates' case
+  double bottom = a.y, top = b.y;
+  glm::dvec3 up = axis;
+  if (bottom < top) {
+    std::swap(bottom, top);
+    up = -axis;
+  }
+  if (!(top < 0.98 * bottom)) return;
+  Frame frame;
+  frame.origin = centroid + 0.5 * (a.x + b.x) * axis;
+  frame.y = up;
+  frame.x = perpendicular(up);
+  frame.z = glm::cross(frame.x, frame.y);
+  const SurfaceParameters parameters{
+      {"base_radius", bottom}, {"top_radius", top}, {"height", b.x - a.x}};
+  try {
+    out.push_back({"cone", parameters,
+                   "axis " + vectorText(up) + " through " + vectorText(frame.origin),
+                   placedSheet(makeSurface("cone", parameters), frame)});
+  } catch (const SurfaceError&) {
+  }
+}
+
 void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3& centroid,
                      const glm::dvec3& axis, const std::string& kind,
                      std::vector<PlacedStart>& out) {
@@ -105,6 +166,7 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   add("cylinder", {{"radius", mean}, {"height", height}});
   if (top < 0.98 * bottom)
     add("cone", {{"base_radius", bottom}, {"top_radius", top}, {"height", height}});
+  coneAcross(samples, centroid, axis, kind, out);
 }
 
 // Least squares w = k s^2 + b s + e t + f over samples in the frame (x: s, y: t, z: w).

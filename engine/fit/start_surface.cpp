@@ -24,6 +24,8 @@ constexpr double kSmoothBendDegrees = 12.0;
 constexpr double kNoisySharpShare = 0.2;
 // A placed sheet replaces one in the catalogue's frame when this much nearer (Chamfer).
 constexpr double kPlacedGain = 0.95;
+// How much a placed sheet's Hausdorff distance counts beside its Chamfer distance.
+constexpr double kPlacedHausdorffWeight = 0.2;
 
 // Where the target lies about the y axis: mean radius overall and over the lowest and highest
 // tenth of its extent along y.
@@ -173,16 +175,26 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   // was folded from the catalogue's sheet where it lies).
   const bool smooth = mayPlace(target);
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
+  std::optional<PlacedStart> nearest;
+  double nearestChamfer = 0.0, nearestScore = 0.0;
   for (PlacedStart& placed :
        smooth ? placedStarts(samples, surfaceArea(target), kind) : std::vector<PlacedStart>{}) {
-    const double chamfer = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples).chamfer;
-    // Kept only where clearly nearer: a sheet in the catalogue's frame keeps its symmetries.
-    if (any && !(chamfer < kPlacedGain * best.chamfer)) continue;
-    best.surface = placed.surface;
-    best.parameters = placed.parameters;
-    best.chamfer = chamfer;
-    best.placement = placed.placement;
-    best.placed = std::move(placed.sheet);
+    // Among placed sheets, the farthest point counts too: of two as near on average, the one
+    // that covers the whole target (a cone down to a bowl's bottom) folds to it better.
+    const SurfaceDistance distance = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples);
+    const double score = distance.chamfer + kPlacedHausdorffWeight * distance.hausdorff;
+    if (nearest && !(score < nearestScore)) continue;
+    nearestChamfer = distance.chamfer;
+    nearestScore = score;
+    nearest = std::move(placed);
+  }
+  // Kept only where clearly nearer: a sheet in the catalogue's frame keeps its symmetries.
+  if (nearest && (!any || nearestChamfer < kPlacedGain * best.chamfer)) {
+    best.surface = nearest->surface;
+    best.parameters = nearest->parameters;
+    best.chamfer = nearestChamfer;
+    best.placement = nearest->placement;
+    best.placed = std::move(nearest->sheet);
     any = true;
   }
   if (!any) throw SurfaceError(lastError);
