@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <optional>
 
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
+#include "engine/geometry/validate.hpp"
 
 namespace curvefold {
 namespace {
@@ -183,6 +186,73 @@ Eigen::Vector4d profileFit(const std::vector<SurfaceSample>& samples, const Fram
   return a.colPivHouseholderQr().solve(w);
 }
 
+// `sheet` less the triangles whose centres lie farther than `reach` from every sample: a
+// rectangle cut to a round target's outline, its corners no longer sticking out past it. Nothing
+// when what is left is not a valid sheet (a vertex where two kept parts only touch) or is most of
+// the sheet anyway.
+std::optional<Sheet> trimmedTo(const Sheet& sheet, const std::vector<SurfaceSample>& samples,
+                               double reach) {
+  std::vector<char> keep(sheet.triangles.size(), 0);
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const glm::dvec3 centre =
+        (sheet.positions[tri[0]] + sheet.positions[tri[1]] + sheet.positions[tri[2]]) / 3.0;
+    for (const SurfaceSample& sample : samples)
+      if (glm::distance(centre, sample.position) <= reach) {
+        keep[t] = 1;
+        ++kept;
+        break;
+      }
+  }
+  // Where kept parts would only touch at a vertex (more than two boundary edges meet there), the
+  // triangles about it are kept too, until none is left.
+  for (int round = 0; round < 8; ++round) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (std::size_t t = 0; t < sheet.triangles.size(); ++t)
+      if (keep[t])
+        for (int k = 0; k < 3; ++k)
+          ++uses[std::minmax<std::uint32_t>(sheet.triangles[t][k],
+                                            sheet.triangles[t][(k + 1) % 3])];
+    std::vector<int> boundaryEdges(sheet.vertexCount(), 0);
+    for (const auto& [edge, count] : uses)
+      if (count == 1) ++boundaryEdges[edge.first], ++boundaryEdges[edge.second];
+    bool changed = false;
+    for (std::size_t t = 0; t < sheet.triangles.size(); ++t)
+      if (!keep[t])
+        for (const VertexIndex v : sheet.triangles[t])
+          if (boundaryEdges[v] > 2) {
+            keep[t] = 1;
+            ++kept;
+            changed = true;
+            break;
+          }
+    if (!changed) break;
+  }
+  if (kept > sheet.triangles.size() * 19 / 20 || kept < sheet.triangles.size() / 4) return {};
+  Sheet out;
+  std::vector<std::uint32_t> index(sheet.vertexCount(), kNoIndex);
+  for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+    if (!keep[t]) continue;
+    Triangle tri = sheet.triangles[t];
+    for (VertexIndex& v : tri) {
+      if (index[v] == kNoIndex) {
+        index[v] = static_cast<std::uint32_t>(out.positions.size());
+        out.positions.push_back(sheet.positions[v]);
+        out.development.push_back(sheet.development[v]);
+      }
+      v = index[v];
+    }
+    out.triangles.push_back(tri);
+  }
+  try {
+    validate(out);
+  } catch (const InvalidSheet&) {
+    return {};
+  }
+  return out;
+}
+
 void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& principal,
                 std::vector<PlacedStart>& out) {
   const std::size_t n = samples.size();
@@ -231,6 +301,14 @@ void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& prin
                  {{"curvature", profile(0)}, {"curve_width", sHi - sLo}, {"length", tHi - tLo}},
                  text,
                  placedSheet(sweptParabola(profile(0), profile(1), sLo, sHi, tHi - tLo), frame)});
+  // The same cut to the target's outline, for a target that does not fill its rectangle.
+  const double reach = 0.03 * std::max(sHi - sLo, tHi - tLo);
+  if (std::optional<Sheet> trimmed = trimmedTo(out.back().sheet, samples, reach)) {
+    PlacedStart cut = out.back();
+    cut.placement += ", cut to the target's outline";
+    cut.sheet = std::move(*trimmed);
+    out.push_back(std::move(cut));
+  }
 }
 
 void flatIn(const Principal& principal, double area, const std::string& kind,
