@@ -257,6 +257,28 @@ TEST(StartSurface, ABowlStartsFromAConeThatReachesItsBottomAndRim) {
   EXPECT_LT(start.parameters.at("top_radius"), 0.015);
 }
 
+TEST(StartSurface, ASaddleOverADiskStartsFromAParabolaCutToItsOutline) {
+  TriangleMesh target =
+      heightField(0.2, 40, [](double x, double y) { return 0.5 * (x * x / 0.08 - y * y / 0.12); });
+  // Only the triangles within 9 cm of the middle: a round outline.
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (const auto& t : target.triangles) {
+    const glm::dvec3 c =
+        (target.positions[t[0]] + target.positions[t[1]] + target.positions[t[2]]) / 3.0;
+    if (std::hypot(c.x, c.y) < 0.09) inside.push_back(t);
+  }
+  target.triangles.assign(inside.begin(), inside.end());
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "swept_curve");
+  EXPECT_NE(start.placement.find("cut to the target's outline"), std::string::npos)
+      << start.placement;
+  validate(*start.placed);
+  // The rectangle's corners stood 14% of the diagonal out past the round outline.
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.hausdorff, 0.15 * distance.diagonal);
+}
+
 TEST(StartSurface, TheSweptParabolaIsDevelopedExactly) {
   const Sheet sheet = sweptParabola(6.0, 0.3, -0.1, 0.12, 0.15, 40);
   validate(sheet);
