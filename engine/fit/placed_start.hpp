@@ -7,11 +7,15 @@
 //  - revolution: about each principal axis through the centroid, a least-squares line r = a + b t
 //    of the samples' distance r from the axis against their height t gives a cone (its radii at
 //    the lowest and highest samples) and a cylinder (the mean radius), each as long as the target;
+//    and the line nearest the profile (t, r) across (total least squares), spanning the samples'
+//    extreme projections onto it, another cone that reaches a bowl's bottom and rim;
 //  - swept parabola: a least-squares quadric w = A u^2 + B uv + C v^2 + D u + E v + F over the
 //    plane of the two largest axes (w along the smallest) gives the direction of the strongest
 //    curvature; along it the profile w = k s^2 + b s + f is fitted (the rulings tilted to absorb
 //    a slope along them) and swept over the target's extent across it, meshed with an exact
-//    development (arc length along the profile, distance along the rulings);
+//    development (arc length along the profile, distance along the rulings); and the same cut to
+//    the target's outline (triangles farther than 3% of its size from every sample dropped, kept
+//    parts that would only touch at a vertex filled back; offered when valid);
 //  - flat: a disk and a square of the target's area in the plane of its two largest axes.
 // Each is a catalogue sheet (or the swept one) moved rigidly, so its development is exact.
 //
