@@ -78,16 +78,23 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       throw UsageError(targetName + ": " + e.what());
     }
     const StartChoice start = chooseStart(target, from.surface);
-    design.surface = GeneratedSurface{start.surface, start.parameters};
-    std::string text = "from: " + start.surface;
+    if (start.placed)
+      design.surface = *start.placed;  // moved onto the target: embedded as it lies
+    else
+      design.surface = GeneratedSurface{start.surface, start.parameters};
+    std::string text =
+        "from: " +
+        (start.placed && start.surface == "swept_curve" ? "a swept parabola" : start.surface);
     for (const auto& [name, value] : start.parameters) {
       char number[32];
       std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
       text += number;
     }
     std::cout << text
-              << (start.parameters.empty() ? " (its defaults: the target has creases)"
-                                           : " (sized to the target)")
+              << (start.placed ? " (sized and placed on the target: " + start.placement + ")"
+                  : start.parameters.empty()
+                      ? std::string(" (its defaults: the target has creases)")
+                      : std::string(" (sized to the target)"))
               << std::endl;
     if (command->get_option("--symmetry")->count() > 0) {
       try {

@@ -11,9 +11,11 @@
 #include "app/design_check.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/placed_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "tests/support/fold_target_generators.hpp"
 
@@ -163,6 +165,126 @@ TEST(FarthestPoints, AreWhereASheetLeavesARampMost) {
   EXPECT_NEAR(far.fromA, 0.005 / std::sqrt(1.0025), 1e-4);
   EXPECT_GT(far.onB.x, 0.098);
   EXPECT_NEAR(far.fromB, 0.005, 1e-4);
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+// `mesh` turned by `degrees` about `axis` and moved by `shift`.
+TriangleMesh moved(TriangleMesh mesh, glm::dvec3 axis, double degrees, glm::dvec3 shift) {
+  axis = glm::normalize(axis);
+  const double a = degrees * 3.14159265358979 / 180.0;
+  for (glm::dvec3& p : mesh.positions)  // Rodrigues' rotation
+    p = p * std::cos(a) + glm::cross(axis, p) * std::sin(a) +
+        axis * glm::dot(axis, p) * (1.0 - std::cos(a)) + shift;
+  return mesh;
+}
+
+// A gridded z = f(x, y) over a square of side `size` about the origin.
+template <typename F>
+TriangleMesh heightField(double size, int cells, F f) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = size * (double(i) / cells - 0.5), y = size * (double(j) / cells - 0.5);
+      mesh.positions.emplace_back(x, y, f(x, y));
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * (cells + 1) + ii); };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+TEST(StartSurface, ATiltedTubeStartsFromACylinderPlacedOnItsAxis) {
+  const TriangleMesh target =
+      moved(tube(0.05, 0.18, 96, 30), {1.0, 0.3, 0.5}, 65.0, {0.02, -0.01, 0.03});
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "cylinder");
+  EXPECT_NEAR(start.parameters.at("radius"), 0.05, 0.002);
+  EXPECT_LT(start.chamfer, 0.005 * boundingDiagonal(target));
+  validate(*start.placed);  // moved rigidly: still isometric to its development
+  // The same from a named kind.
+  const StartChoice named = chooseStart(target, "cylinder");
+  ASSERT_TRUE(named.placed);
+  EXPECT_LT(named.chamfer, 0.005 * boundingDiagonal(target));
+}
+
+TEST(StartSurface, ASaddleStartsFromASweptParabolaNearerThanAFlatSheet) {
+  // Turned off the catalogue's axes: the swept parabola follows the strongest curvature.
+  const TriangleMesh target =
+      moved(heightField(0.2, 40, [](double x, double y) { return (x * x - 0.5 * y * y) / 0.2; }),
+            {0.2, 0.1, 1.0}, 40.0, {0.0, 0.01, 0.0});
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "swept_curve");
+  EXPECT_NEAR(std::abs(start.parameters.at("curvature")), 5.0, 0.5);
+  const StartChoice flat = chooseStart(target, "square");
+  EXPECT_LT(start.chamfer, 0.7 * flat.chamfer) << start.chamfer << " " << flat.chamfer;
+  validate(*start.placed);
+}
+
+TEST(StartSurface, ABowlStartsFromAConeThatReachesItsBottomAndRim) {
+  // A paraboloid bowl, 16 cm across and 4 cm deep, a small hole at its bottom, tilted.
+  TriangleMesh bowl;
+  const int around = 64, out = 20;
+  for (int j = 0; j <= out; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * 3.14159265358979 * i / around, r = 0.004 + 0.076 * j / out;
+      bowl.positions.emplace_back(r * std::cos(a), r * std::sin(a), r * r / 0.16);
+    }
+  for (int j = 0; j < out; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * around + ii % around); };
+      bowl.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      bowl.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  const TriangleMesh target = moved(bowl, {1.0, 0.5, 0.0}, 30.0, {0.0, 0.0, 0.01});
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "cone");
+  // The least-squares radius line stops 2 cm short of the bottom (Hausdorff 8%); the line across
+  // the profile reaches it.
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.chamfer, 0.01 * distance.diagonal);
+  EXPECT_LT(distance.hausdorff, 0.06 * distance.diagonal);
+  EXPECT_LT(start.parameters.at("top_radius"), 0.015);
+}
+
+TEST(StartSurface, ASaddleOverADiskStartsFromAParabolaCutToItsOutline) {
+  TriangleMesh target =
+      heightField(0.2, 40, [](double x, double y) { return 0.5 * (x * x / 0.08 - y * y / 0.12); });
+  // Only the triangles within 9 cm of the middle: a round outline.
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (const auto& t : target.triangles) {
+    const glm::dvec3 c =
+        (target.positions[t[0]] + target.positions[t[1]] + target.positions[t[2]]) / 3.0;
+    if (std::hypot(c.x, c.y) < 0.09) inside.push_back(t);
+  }
+  target.triangles.assign(inside.begin(), inside.end());
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "swept_curve");
+  EXPECT_NE(start.placement.find("cut to the target's outline"), std::string::npos)
+      << start.placement;
+  validate(*start.placed);
+  // The rectangle's corners stood 14% of the diagonal out past the round outline.
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.hausdorff, 0.15 * distance.diagonal);
+}
+
+TEST(StartSurface, TheSweptParabolaIsDevelopedExactly) {
+  const Sheet sheet = sweptParabola(6.0, 0.3, -0.1, 0.12, 0.15, 40);
+  validate(sheet);
+  // Its profile lies on w = 6 s^2 + 0.3 s.
+  for (const glm::dvec3& p : sheet.positions) EXPECT_NEAR(p.z, 6.0 * p.x * p.x + 0.3 * p.x, 1e-12);
+  EXPECT_NEAR(developmentBounds(sheet).high.y - developmentBounds(sheet).low.y, 0.15, 1e-12);
 }
 
 }  // namespace

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/placed_start.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -16,6 +18,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kChoiceSamples = 4000;
+// Edges of a gridded smooth shape bend a few degrees; a reflection fold's crease, far more.
+constexpr double kSmoothBendDegrees = 12.0;
+// A fold's creases are a few curves: a target with more of its edge length bent so is a noisy scan.
+constexpr double kNoisySharpShare = 0.2;
+// A placed sheet replaces one in the catalogue's frame when this much nearer (Chamfer).
+constexpr double kPlacedGain = 0.95;
+// How much a placed sheet's Hausdorff distance counts beside its Chamfer distance.
+constexpr double kPlacedHausdorffWeight = 0.2;
 
 // Where the target lies about the y axis: mean radius overall and over the lowest and highest
 // tenth of its extent along y.
@@ -45,6 +55,13 @@ Revolution revolutionOf(const std::vector<SurfaceSample>& samples) {
   return r;
 }
 
+StartChoice choice(const std::string& surface, SurfaceParameters parameters) {
+  StartChoice out;
+  out.surface = surface;
+  out.parameters = std::move(parameters);
+  return out;
+}
+
 std::vector<StartChoice> candidatesFor(const TriangleMesh& target, const std::string& kind) {
   const double area = surfaceArea(target);
   glm::dvec3 lo(1e300), hi(-1e300);
@@ -55,38 +72,73 @@ std::vector<StartChoice> candidatesFor(const TriangleMesh& target, const std::st
   const Revolution rev = revolutionOf(sampleSurface(target, kChoiceSamples, 3));
   std::vector<StartChoice> out;
   auto want = [&](const char* name) { return kind.empty() || kind == name; };
-  if (want("square")) out.push_back({"square", {{"size", std::sqrt(area)}}});
-  if (want("disk")) out.push_back({"disk", {{"radius", std::sqrt(area / kPi)}}});
+  if (want("square")) out.push_back(choice("square", {{"size", std::sqrt(area)}}));
+  if (want("disk")) out.push_back(choice("disk", {{"radius", std::sqrt(area / kPi)}}));
   if (want("rectangle")) {
     const double aspect = std::clamp((hi.x - lo.x) / std::max(1e-12, hi.y - lo.y), 0.2, 5.0);
-    out.push_back(
-        {"rectangle", {{"width", std::sqrt(area * aspect)}, {"height", std::sqrt(area / aspect)}}});
+    out.push_back(choice(
+        "rectangle", {{"width", std::sqrt(area * aspect)}, {"height", std::sqrt(area / aspect)}}));
   }
   if (want("cylinder"))
-    out.push_back({"cylinder", {{"radius", rev.radius}, {"height", rev.height}}});
+    out.push_back(choice("cylinder", {{"radius", rev.radius}, {"height", rev.height}}));
   if (want("half_cylinder"))
-    out.push_back({"half_cylinder", {{"radius", rev.radius}, {"height", rev.height}}});
+    out.push_back(choice("half_cylinder", {{"radius", rev.radius}, {"height", rev.height}}));
   if (want("cone"))
-    out.push_back({"cone",
-                   {{"base_radius", std::max(rev.bottomRadius, rev.topRadius)},
-                    {"top_radius", std::min(rev.bottomRadius, rev.topRadius)},
-                    {"height", rev.height}}});
+    out.push_back(choice("cone", {{"base_radius", std::max(rev.bottomRadius, rev.topRadius)},
+                                  {"top_radius", std::min(rev.bottomRadius, rev.topRadius)},
+                                  {"height", rev.height}}));
   // Each kind at its defaults too: a sized sheet is kept only where it starts closer.
   const std::size_t sized = out.size();
-  for (std::size_t i = 0; i < sized; ++i) out.push_back({out[i].surface, {}});
-  if (out.empty()) out.push_back({kind, {}});  // a kind the rule does not size: its defaults
+  for (std::size_t i = 0; i < sized; ++i) out.push_back(choice(out[i].surface, {}));
+  if (out.empty()) out.push_back(choice(kind, {}));  // a kind the rule does not size: its defaults
   return out;
 }
 
 // Whether the target carries creases a sheet of this kind would not have: a fold's (a plane
 // holds 3% of the diagonal of sharp edges).
-bool creasedFor(const TriangleMesh& target, const Sheet& sheet) {
+bool creasedFor(const TriangleMesh& target, const Sheet& sheet, double floorDegrees = 0.0) {
   CreasePlaneOptions options;
-  options.minDihedralDegrees = sharpEdgeThreshold(meshOf(sheet));
+  options.minDihedralDegrees = std::max(floorDegrees, sharpEdgeThreshold(meshOf(sheet)));
   options.minSupport = 0.03 * boundingDiagonal(target);
   options.maxPlanes = 1;
   options.hypotheses = 200;
   return !findCreasePlanes(target, options).empty();
+}
+
+// The share of the target's edge length bent more than `degrees` between its two triangles.
+double sharpShare(const TriangleMesh& target, double degrees) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, glm::dvec3> firstNormal;
+  const double cosine = std::cos(degrees * kPi / 180.0);
+  double all = 0.0, sharp = 0.0;
+  for (const auto& t : target.triangles) {
+    const glm::dvec3 a = target.positions[t[0]], b = target.positions[t[1]],
+                     c = target.positions[t[2]];
+    const glm::dvec3 cross = glm::cross(b - a, c - a);
+    if (!(glm::length(cross) > 0.0)) continue;
+    const glm::dvec3 normal = glm::normalize(cross);
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = t[k], v = t[(k + 1) % 3];
+      const auto key = std::minmax(u, v);
+      const auto [found, added] = firstNormal.emplace(key, normal);
+      if (added) continue;
+      const double length = glm::distance(target.positions[u], target.positions[v]);
+      all += length;
+      if (glm::dot(found->second, normal) < cosine) sharp += length;
+    }
+  }
+  return all > 0.0 ? sharp / all : 0.0;
+}
+
+// Whether sheets moved onto the target may start it: a smooth target (no plane of edges bent
+// more than a gridded smooth shape bends), or a noisy one (a scan: sharp edges everywhere, not
+// along the few curves a fold makes). A target folded from the catalogue's sheet is neither.
+bool mayPlace(const TriangleMesh& target) {
+  try {
+    if (!creasedFor(target, makeSurface("square"), kSmoothBendDegrees)) return true;
+  } catch (const SurfaceError&) {
+    return true;
+  }
+  return sharpShare(target, kSmoothBendDegrees) > kNoisySharpShare;
 }
 
 }  // namespace
@@ -95,12 +147,20 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   StartChoice best;
   bool any = false;
   std::string lastError;
-  for (StartChoice& candidate : candidatesFor(target, kind)) {
-    // A folded design was folded from the sheet as the catalogue makes it.
+  std::map<std::string, bool> creased;  // per kind, at its defaults
+  auto creasedKind = [&](const std::string& surface) {
+    const auto found = creased.find(surface);
+    if (found != creased.end()) return found->second;
+    bool result = false;
     try {
-      if (creasedFor(target, makeSurface(candidate.surface))) candidate.parameters.clear();
+      result = creasedFor(target, makeSurface(surface));
     } catch (const SurfaceError&) {
     }
+    return creased[surface] = result;
+  };
+  for (StartChoice& candidate : candidatesFor(target, kind)) {
+    // A folded design was folded from the sheet as the catalogue makes it.
+    if (creasedKind(candidate.surface)) candidate.parameters.clear();
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
       candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
@@ -109,6 +169,32 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
       continue;
     }
     if (!any || candidate.chamfer < best.chamfer) best = candidate;
+    any = true;
+  }
+  // Sheets moved onto the target: only for a smooth or noisy one (mayPlace; a creased target
+  // was folded from the catalogue's sheet where it lies).
+  const bool smooth = mayPlace(target);
+  const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
+  std::optional<PlacedStart> nearest;
+  double nearestChamfer = 0.0, nearestScore = 0.0;
+  for (PlacedStart& placed :
+       smooth ? placedStarts(samples, surfaceArea(target), kind) : std::vector<PlacedStart>{}) {
+    // Among placed sheets, the farthest point counts too: of two as near on average, the one
+    // that covers the whole target (a cone down to a bowl's bottom) folds to it better.
+    const SurfaceDistance distance = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples);
+    const double score = distance.chamfer + kPlacedHausdorffWeight * distance.hausdorff;
+    if (nearest && !(score < nearestScore)) continue;
+    nearestChamfer = distance.chamfer;
+    nearestScore = score;
+    nearest = std::move(placed);
+  }
+  // Kept only where clearly nearer: a sheet in the catalogue's frame keeps its symmetries.
+  if (nearest && (!any || nearestChamfer < kPlacedGain * best.chamfer)) {
+    best.surface = nearest->surface;
+    best.parameters = nearest->parameters;
+    best.chamfer = nearestChamfer;
+    best.placement = nearest->placement;
+    best.placed = std::move(nearest->sheet);
     any = true;
   }
   if (!any) throw SurfaceError(lastError);

@@ -19,10 +19,14 @@
 // maps the target onto itself, within 1% of its diagonal on average and 3% at most (measured at
 // 2000 area-uniform points); none when no rotation does.
 //
-// Known limits: the target is not moved: a shape far from the catalogue's frame (a vase lying
-// along x) gets a poor start; mirrors are not detected, only rotations.
+// Placed sheets: the same kinds moved onto the target's principal axes, and a swept parabola
+// (placed_start.hpp), are candidates too when the target has no creases; the nearest of all wins.
+//
+// Known limits: mirrors are not detected, only rotations, and only about the catalogue's axes (a
+// placed start has none of them).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "engine/geometry/sheet.hpp"
@@ -35,6 +39,10 @@ struct StartChoice {
   std::string surface;
   SurfaceParameters parameters;  // those the rule set (the rest at their defaults)
   double chamfer = 0.0;          // the start's distance to the target, metres
+  // A sheet moved onto the target (placed_start.hpp), embedded in the design as it is: set when
+  // it starts closer than every sheet in the catalogue's frame.
+  std::optional<Sheet> placed;
+  std::string placement;  // how, for the user
 };
 
 // `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError

@@ -1,0 +1,391 @@
+#include "engine/fit/placed_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+#include <Eigen/Dense>
+#include <glm/geometric.hpp>
+#include "engine/geometry/validate.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A right-handed frame: catalogue x, y, z go to x, y, z here, the origin to `origin`.
+struct Frame {
+  glm::dvec3 origin{0.0}, x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  glm::dvec3 apply(const glm::dvec3& p) const { return origin + p.x * x + p.y * y + p.z * z; }
+};
+
+Sheet placedSheet(Sheet sheet, const Frame& frame) {
+  for (glm::dvec3& p : sheet.positions) p = frame.apply(p);
+  return sheet;
+}
+
+std::string vectorText(const glm::dvec3& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
+  return text;
+}
+
+// A unit vector perpendicular to `a`.
+glm::dvec3 perpendicular(const glm::dvec3& a) {
+  const glm::dvec3 other = std::abs(a.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return glm::normalize(glm::cross(other, a));
+}
+
+struct Principal {
+  glm::dvec3 centroid{0.0};
+  glm::dvec3 axes[3];  // ascending spread: axes[0] the smallest (a sheet's normal)
+};
+
+Principal principalOf(const std::vector<SurfaceSample>& samples) {
+  Principal out;
+  for (const SurfaceSample& s : samples) out.centroid += s.position;
+  out.centroid /= static_cast<double>(samples.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - out.centroid;
+    const Eigen::Vector3d e(d.x, d.y, d.z);
+    covariance += e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d v = solver.eigenvectors().col(i);
+    out.axes[i] = glm::normalize(glm::dvec3(v.x(), v.y(), v.z()));
+  }
+  return out;
+}
+
+// The cone of the line nearest the profile (total least squares of (height, radius): distances
+// across the line, as the surface's are), spanning the profile's extreme projections onto it, so
+// it reaches a bowl's bottom and rim where the least-squares radius line stops short (its
+// Hausdorff distance is the line's largest deviation, not the part it leaves uncovered).
+void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& centroid,
+                const glm::dvec3& axis, const std::string& kind, std::vector<PlacedStart>& out) {
+  if (!kind.empty() && kind != "cone") return;
+  std::vector<glm::dvec2> profile;  // (height, radius)
+  glm::dvec2 mean(0.0);
+  for (const SurfaceSample& sample : samples) {
+    const glm::dvec3 d = sample.position - centroid;
+    const double t = glm::dot(d, axis);
+    profile.emplace_back(t, glm::length(d - t * axis));
+    mean += profile.back();
+  }
+  mean /= static_cast<double>(profile.size());
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+  for (const glm::dvec2& p : profile) {
+    const Eigen::Vector2d e(p.x - mean.x, p.y - mean.y);
+    covariance += e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
+  glm::dvec2 along(solver.eigenvectors()(0, 1), solver.eigenvectors()(1, 1));
+  if (along.x < 0.0) along = -along;  // up the axis
+  double lo = 1e300, hi = -1e300;
+  for (const glm::dvec2& p : profile) {
+    lo = std::min(lo, glm::dot(p - mean, along));
+    hi = std::max(hi, glm::dot(p - mean, along));
+  }
+  glm::dvec2 a = mean + lo * along, b = mean + hi * along;
+  // A line through the axis ends at it: an apex.
+  auto clip = [&](glm::dvec2& end, const glm::dvec2& other) {
+    if (end.y >= 0.0) return;
+    end = other + (end - other) * (other.y / (other.y - end.y));
+    end.y = 0.0;
+  };
+  clip(a, b);
+  clip(b, a);
+  if (!(b.x - a.x > 0.0)) return;  // a disk across the axis: the flat candidates' case
+  double bottom = a.y, top = b.y;
+  glm::dvec3 up = axis;
+  if (bottom < top) {
+    std::swap(bottom, top);
+    up = -axis;
+  }
+  if (!(top < 0.98 * bottom)) return;
+  Frame frame;
+  frame.origin = centroid + 0.5 * (a.x + b.x) * axis;
+  frame.y = up;
+  frame.x = perpendicular(up);
+  frame.z = glm::cross(frame.x, frame.y);
+  const SurfaceParameters parameters{
+      {"base_radius", bottom}, {"top_radius", top}, {"height", b.x - a.x}};
+  try {
+    out.push_back({"cone", parameters,
+                   "axis " + vectorText(up) + " through " + vectorText(frame.origin),
+                   placedSheet(makeSurface("cone", parameters), frame)});
+  } catch (const SurfaceError&) {
+  }
+}
+
+void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3& centroid,
+                     const glm::dvec3& axis, const std::string& kind,
+                     std::vector<PlacedStart>& out) {
+  const std::size_t n = samples.size();
+  Eigen::MatrixXd a(n, 2);
+  Eigen::VectorXd r(n);
+  double lo = 1e300, hi = -1e300, mean = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 d = samples[i].position - centroid;
+    const double t = glm::dot(d, axis);
+    a(i, 0) = 1.0;
+    a(i, 1) = t;
+    r(i) = glm::length(d - t * axis);
+    mean += r(i);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  mean /= static_cast<double>(n);
+  const double height = hi - lo;
+  if (!(height > 0.0) || !(mean > 0.0)) return;
+  const Eigen::Vector2d line = a.colPivHouseholderQr().solve(r);
+  double bottom = std::max(0.0, line(0) + line(1) * lo),
+         top = std::max(0.0, line(0) + line(1) * hi);
+  // The catalogue's cone is widest at its base, at y = -height / 2.
+  glm::dvec3 up = axis;
+  if (bottom < top) {
+    std::swap(bottom, top);
+    up = -axis;
+  }
+  Frame frame;
+  frame.origin = centroid + 0.5 * (lo + hi) * axis;
+  frame.y = up;
+  frame.x = perpendicular(up);
+  frame.z = glm::cross(frame.x, frame.y);
+  const std::string placement = "axis " + vectorText(up) + " through " + vectorText(frame.origin);
+  auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
+    if (!kind.empty() && kind != surface) return;
+    try {
+      out.push_back(
+          {surface, parameters, placement, placedSheet(makeSurface(surface, parameters), frame)});
+    } catch (const SurfaceError&) {
+      // Sizes the generator refuses (a cone too slender to taper): not a candidate.
+    }
+  };
+  add("cylinder", {{"radius", mean}, {"height", height}});
+  if (top < 0.98 * bottom)
+    add("cone", {{"base_radius", bottom}, {"top_radius", top}, {"height", height}});
+  coneAcross(samples, centroid, axis, kind, out);
+}
+
+// Least squares w = k s^2 + b s + e t + f over samples in the frame (x: s, y: t, z: w).
+Eigen::Vector4d profileFit(const std::vector<SurfaceSample>& samples, const Frame& frame) {
+  const std::size_t n = samples.size();
+  Eigen::MatrixXd a(n, 4);
+  Eigen::VectorXd w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 d = samples[i].position - frame.origin;
+    const double s = glm::dot(d, frame.x), t = glm::dot(d, frame.y);
+    a.row(i) << s * s, s, t, 1.0;
+    w(i) = glm::dot(d, frame.z);
+  }
+  return a.colPivHouseholderQr().solve(w);
+}
+
+// `sheet` less the triangles whose centres lie farther than `reach` from every sample: a
+// rectangle cut to a round target's outline, its corners no longer sticking out past it. Nothing
+// when what is left is not a valid sheet (a vertex where two kept parts only touch) or is most of
+// the sheet anyway.
+std::optional<Sheet> trimmedTo(const Sheet& sheet, const std::vector<SurfaceSample>& samples,
+                               double reach) {
+  std::vector<char> keep(sheet.triangles.size(), 0);
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+    const Triangle& tri = sheet.triangles[t];
+    const glm::dvec3 centre =
+        (sheet.positions[tri[0]] + sheet.positions[tri[1]] + sheet.positions[tri[2]]) / 3.0;
+    for (const SurfaceSample& sample : samples)
+      if (glm::distance(centre, sample.position) <= reach) {
+        keep[t] = 1;
+        ++kept;
+        break;
+      }
+  }
+  // Where kept parts would only touch at a vertex (more than two boundary edges meet there), the
+  // triangles about it are kept too, until none is left.
+  for (int round = 0; round < 8; ++round) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (std::size_t t = 0; t < sheet.triangles.size(); ++t)
+      if (keep[t])
+        for (int k = 0; k < 3; ++k)
+          ++uses[std::minmax<std::uint32_t>(sheet.triangles[t][k],
+                                            sheet.triangles[t][(k + 1) % 3])];
+    std::vector<int> boundaryEdges(sheet.vertexCount(), 0);
+    for (const auto& [edge, count] : uses)
+      if (count == 1) ++boundaryEdges[edge.first], ++boundaryEdges[edge.second];
+    bool changed = false;
+    for (std::size_t t = 0; t < sheet.triangles.size(); ++t)
+      if (!keep[t])
+        for (const VertexIndex v : sheet.triangles[t])
+          if (boundaryEdges[v] > 2) {
+            keep[t] = 1;
+            ++kept;
+            changed = true;
+            break;
+          }
+    if (!changed) break;
+  }
+  if (kept > sheet.triangles.size() * 19 / 20 || kept < sheet.triangles.size() / 4) return {};
+  Sheet out;
+  std::vector<std::uint32_t> index(sheet.vertexCount(), kNoIndex);
+  for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+    if (!keep[t]) continue;
+    Triangle tri = sheet.triangles[t];
+    for (VertexIndex& v : tri) {
+      if (index[v] == kNoIndex) {
+        index[v] = static_cast<std::uint32_t>(out.positions.size());
+        out.positions.push_back(sheet.positions[v]);
+        out.development.push_back(sheet.development[v]);
+      }
+      v = index[v];
+    }
+    out.triangles.push_back(tri);
+  }
+  try {
+    validate(out);
+  } catch (const InvalidSheet&) {
+    return {};
+  }
+  return out;
+}
+
+void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& principal,
+                std::vector<PlacedStart>& out) {
+  const std::size_t n = samples.size();
+  const glm::dvec3 u = principal.axes[2], v = principal.axes[1], normal = principal.axes[0];
+  Eigen::MatrixXd a(n, 6);
+  Eigen::VectorXd w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 d = samples[i].position - principal.centroid;
+    const double su = glm::dot(d, u), sv = glm::dot(d, v);
+    a.row(i) << su * su, su * sv, sv * sv, su, sv, 1.0;
+    w(i) = glm::dot(d, normal);
+  }
+  const Eigen::VectorXd q = a.colPivHouseholderQr().solve(w);
+  Eigen::Matrix2d hessian;
+  hessian << 2 * q(0), q(1), q(1), 2 * q(2);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(hessian);
+  const int strongest =
+      std::abs(solver.eigenvalues()(1)) >= std::abs(solver.eigenvalues()(0)) ? 1 : 0;
+  const Eigen::Vector2d direction = solver.eigenvectors().col(strongest);
+  Frame frame;
+  frame.origin = principal.centroid;
+  frame.x = glm::normalize(direction(0) * u + direction(1) * v);
+  frame.y = glm::normalize(glm::cross(normal, frame.x));
+  frame.z = glm::cross(frame.x, frame.y);
+  Eigen::Vector4d profile = profileFit(samples, frame);
+  // Rulings tilted by the slope along them, then the profile fitted again.
+  frame.y = glm::normalize(frame.y + profile(2) * frame.z);
+  frame.z = glm::cross(frame.x, frame.y);
+  profile = profileFit(samples, frame);
+  double sLo = 1e300, sHi = -1e300, tLo = 1e300, tHi = -1e300;
+  for (const SurfaceSample& sample : samples) {
+    const glm::dvec3 d = sample.position - frame.origin;
+    sLo = std::min(sLo, glm::dot(d, frame.x));
+    sHi = std::max(sHi, glm::dot(d, frame.x));
+    tLo = std::min(tLo, glm::dot(d, frame.y));
+    tHi = std::max(tHi, glm::dot(d, frame.y));
+  }
+  if (!(sHi > sLo) || !(tHi > tLo)) return;
+  // The sheet's rulings run over [tLo, tHi] and its profile's offset f lifts it.
+  frame.origin += tLo * frame.y + profile(3) * frame.z;
+  char text[160];
+  std::snprintf(text, sizeof text, "profile %.4g s^2 %+.4g s along %s, ruled along %s from %s",
+                profile(0), profile(1), vectorText(frame.x).c_str(), vectorText(frame.y).c_str(),
+                vectorText(frame.origin).c_str());
+  out.push_back({"swept_curve",
+                 {{"curvature", profile(0)}, {"curve_width", sHi - sLo}, {"length", tHi - tLo}},
+                 text,
+                 placedSheet(sweptParabola(profile(0), profile(1), sLo, sHi, tHi - tLo), frame)});
+  // The same cut to the target's outline, for a target that does not fill its rectangle.
+  const double reach = 0.03 * std::max(sHi - sLo, tHi - tLo);
+  if (std::optional<Sheet> trimmed = trimmedTo(out.back().sheet, samples, reach)) {
+    PlacedStart cut = out.back();
+    cut.placement += ", cut to the target's outline";
+    cut.sheet = std::move(*trimmed);
+    out.push_back(std::move(cut));
+  }
+}
+
+void flatIn(const Principal& principal, double area, const std::string& kind,
+            std::vector<PlacedStart>& out) {
+  Frame frame;
+  frame.origin = principal.centroid;
+  frame.x = principal.axes[2];
+  frame.y = principal.axes[1];
+  frame.z = glm::cross(frame.x, frame.y);
+  const std::string placement =
+      "in the plane through " + vectorText(frame.origin) + " normal " + vectorText(frame.z);
+  auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
+    if (!kind.empty() && kind != surface) return;
+    try {
+      out.push_back(
+          {surface, parameters, placement, placedSheet(makeSurface(surface, parameters), frame)});
+    } catch (const SurfaceError&) {
+    }
+  };
+  add("disk", {{"radius", std::sqrt(area / kPi)}});
+  add("square", {{"size", std::sqrt(area)}});
+}
+
+}  // namespace
+
+Sheet sweptParabola(double curvature, double slope, double from, double to, double length,
+                    int resolution) {
+  auto height = [&](double s) { return curvature * s * s + slope * s; };
+  // Arc length along the profile from a dense polyline, to space the samples evenly.
+  const int dense = 4096;
+  std::vector<double> arc(dense + 1, 0.0);
+  auto at = [&](int i) { return from + (to - from) * i / dense; };
+  for (int i = 1; i <= dense; ++i)
+    arc[i] = arc[i - 1] + std::hypot(at(i) - at(i - 1), height(at(i)) - height(at(i - 1)));
+  const double longer = std::max(arc.back(), length);
+  const int along = std::max(2, static_cast<int>(std::lround(resolution * arc.back() / longer)));
+  const int across = std::max(1, static_cast<int>(std::lround(resolution * length / longer)));
+  std::vector<double> s(along + 1);
+  for (int i = 0, cell = 0; i <= along; ++i) {
+    const double wanted = arc.back() * i / along;
+    while (cell + 1 < dense && arc[cell + 1] < wanted) ++cell;
+    const double f = std::clamp((wanted - arc[cell]) / (arc[cell + 1] - arc[cell]), 0.0, 1.0);
+    s[i] = at(cell) + f * (at(cell + 1) - at(cell));
+  }
+  s.front() = from;
+  s.back() = to;
+  // The development runs along the chords of the samples, so each triangle is exactly flat.
+  std::vector<double> chord(along + 1, 0.0);
+  for (int i = 1; i <= along; ++i)
+    chord[i] = chord[i - 1] + std::hypot(s[i] - s[i - 1], height(s[i]) - height(s[i - 1]));
+  Sheet sheet;
+  for (int j = 0; j <= across; ++j)
+    for (int i = 0; i <= along; ++i) {
+      const double t = length * j / across;
+      sheet.positions.emplace_back(s[i], t, height(s[i]));
+      sheet.development.emplace_back(chord[i] - 0.5 * chord[along], t - 0.5 * length);
+    }
+  auto index = [&](int i, int j) { return static_cast<VertexIndex>(j * (along + 1) + i); };
+  for (int j = 0; j < across; ++j)
+    for (int i = 0; i < along; ++i) {
+      sheet.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+      sheet.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  return sheet;
+}
+
+std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
+                                      const std::string& kind) {
+  std::vector<PlacedStart> out;
+  if (samples.size() < 10) return out;
+  const Principal principal = principalOf(samples);
+  if (kind.empty() || kind == "cylinder" || kind == "cone")
+    for (const glm::dvec3& axis : principal.axes)
+      revolutionAbout(samples, principal.centroid, axis, kind, out);
+  if (kind.empty() || kind == "swept_curve") sweptAbout(samples, principal, out);
+  flatIn(principal, targetArea, kind, out);
+  return out;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,54 @@
+// Catalogue sheets placed where the target lies (issue 38, 2): the start of a fit toward a smooth
+// shape that is not in the catalogue's frame (a vase lying along x, a tilted bowl, a saddle), and
+// a swept parabola, the developable sheet nearest a saddle or a trough.
+//
+// The frame is the target's principal axes (PCA of area-uniform samples, Eigen's self-adjoint
+// solver), its origin the samples' centroid:
+//  - revolution: about each principal axis through the centroid, a least-squares line r = a + b t
+//    of the samples' distance r from the axis against their height t gives a cone (its radii at
+//    the lowest and highest samples) and a cylinder (the mean radius), each as long as the target;
+//    and the line nearest the profile (t, r) across (total least squares), spanning the samples'
+//    extreme projections onto it, another cone that reaches a bowl's bottom and rim;
+//  - swept parabola: a least-squares quadric w = A u^2 + B uv + C v^2 + D u + E v + F over the
+//    plane of the two largest axes (w along the smallest) gives the direction of the strongest
+//    curvature; along it the profile w = k s^2 + b s + f is fitted (the rulings tilted to absorb
+//    a slope along them) and swept over the target's extent across it, meshed with an exact
+//    development (arc length along the profile, distance along the rulings); and the same cut to
+//    the target's outline (triangles farther than 3% of its size from every sample dropped, kept
+//    parts that would only touch at a vertex filled back; offered when valid);
+//  - flat: a disk and a square of the target's area in the plane of its two largest axes.
+// Each is a catalogue sheet (or the swept one) moved rigidly, so its development is exact.
+//
+// Known limits: the axis of revolution passes through the centroid (a half vase is placed off
+// its axis); the swept parabola is one curve (a sine or an S profile is not fitted); nothing is
+// refined after the least-squares fits (no ICP): the caller keeps whichever is nearest.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/sheet.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold {
+
+struct PlacedStart {
+  std::string surface;           // the catalogue kind ("swept_curve" for the swept parabola)
+  SurfaceParameters parameters;  // the kind's, as sized (the swept parabola's: curvature, ...)
+  std::string placement;         // how it was placed, for the user: "axis (0, 0, 1) at (...)"
+  Sheet sheet;                   // moved into place
+};
+
+// Candidates of `kind` ("" for every kind) placed onto the target described by `samples`
+// (area-uniform, at least a few hundred). Candidates a kind's generator refuses are left out.
+std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
+                                      const std::string& kind = "");
+
+// A swept profile w = curvature s^2 + slope s over s in [from, to], ruled over [0, length],
+// `resolution` segments along the longer side, in the catalogue's frame (s along x, rulings
+// along y, w along z), with an exact development.
+Sheet sweptParabola(double curvature, double slope, double from, double to, double length,
+                    int resolution = 64);
+
+}  // namespace curvefold
