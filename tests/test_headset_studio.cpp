@@ -476,6 +476,55 @@ TEST(StudioTarget, ALoadRunsOffTheFrame) {
   EXPECT_EQ(goal.mesh(), target);  // the target before stays
 }
 
+// One measure (issue 38, 4): the offer's "before" is the distance line's Chamfer (not the
+// search's approximate one: "about 0.345 -> 0.266 mm" beside the distance line's 0.23 mm), and
+// its "after" the distance line's once it is taken.
+TEST(StudioTarget, TheOfferSpeaksInTheDistanceLinesMeasure) {
+  // A smooth shape no fold reaches: neither figure is zero.
+  const GeneratedSurface cylinder{"cylinder", {{"resolution", 40}}};
+  const fs::path targetPath = fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "vase.obj";
+  session::Document doc = session::makeDocument(Design{cylinder, {}}, "cylinder");
+  StudioTarget goal(false, testing::kSanitized ? 30.0 : 3.0);  // the best found by then
+  goal.loadNow(targetPath.string(), doc);
+  InputFrame frame;
+  auto send = [&] {
+    frame.time += 1.0 / 60.0;
+    goal.poll(doc, frame);
+    doc.core->process(frame);
+    frame.suggestions.clear();
+    frame.buttons = 0;
+  };
+  send();
+  goal.suggest(doc);
+  auto ready = [&] {
+    const std::string line = goal.suggestionLine(*doc.core);
+    return line.find(" -> ") != std::string::npos && line.find("...") == std::string::npos &&
+           goal.distanceLine().find("measuring") == std::string::npos;
+  };
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(180);
+  while (!ready() && std::chrono::steady_clock::now() < giveUp) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    send();
+  }
+  const std::string offer = goal.suggestionLine(*doc.core);
+  ASSERT_TRUE(ready()) << offer << " / " << goal.distanceLine();
+  const double chamfer =
+      surfaceDistance(meshOf(doc.session->fixed()), *goal.mesh(), StudioTarget::kDistanceSamples)
+          .chamfer;
+  EXPECT_NE(offer.find("Chamfer " + millimetresText(chamfer) + " -> "), std::string::npos)
+      << offer << " (the design is " << millimetresText(chamfer) << " away)";
+  EXPECT_NE(goal.distanceLine().find("Chamfer " + millimetresText(chamfer)), std::string::npos)
+      << goal.distanceLine();
+  frame.buttons = static_cast<std::uint32_t>(Button::TakeSuggestion);
+  send();
+  send();
+  ASSERT_EQ(doc.session->foldCount(), 1u);
+  const double after =
+      surfaceDistance(meshOf(doc.session->fixed()), *goal.mesh(), StudioTarget::kDistanceSamples)
+          .chamfer;
+  EXPECT_EQ(offer.substr(offer.find(" -> ") + 4), millimetresText(after)) << offer;
+}
+
 // The studio folding toward a target (issue 27, 3): a square folded once at random is the target;
 // the panel's Suggest searches on the worker while frames go on, its folds arrive in a frame (which
 // the recorder keeps), "Another" goes to the next and "Take" makes it, bringing the sheet closer;
