@@ -69,7 +69,8 @@ struct Searching {
 };
 
 // One frame call while a search runs (arg: which; range(1): milliseconds into the search).
-// 0: poll after a fold, 1: a newer request, 2: the document replaced, 3: a new target loaded.
+// 0: poll after a fold, 1: a newer request, 2: the document replaced, 3: a new target loaded (the
+// call that starts the load off the frame; the frame later only swaps the result in).
 void BM_FrameCallWhileSearching(benchmark::State& state) {
   double longest = 0.0;
   for (auto _ : state) {
