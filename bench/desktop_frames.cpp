@@ -53,7 +53,8 @@ std::string slurp(const fs::path& path) {
 void writeObj(const Sheet& sheet, const fs::path& path) {
   std::ofstream out(path);
   out.precision(17);
-  for (const glm::dvec3& p : sheet.positions) out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (const glm::dvec3& p : sheet.positions)
+    out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
   for (const Triangle& t : sheet.triangles)
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
 }
@@ -119,8 +120,8 @@ int main(int argc, char** argv) {
   }
   const std::string env = "DISPLAY=" + display + " ";
   const fs::path times = dir / "frames.txt", log = dir / "designer.log";
-  shell(env + binary + " design " + design.string() + " --target " + target.string() +
-        " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --autosave " +
+  shell(env + binary + " design " + design.string() + " --target " + target.string() + " --size " +
+        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --autosave " +
         (dir / "auto.curvefold.json").string() + " --frame-times " + times.string() + " >" +
         log.string() + " 2>&1 &");
   const fs::path windowFile = dir / "window";
