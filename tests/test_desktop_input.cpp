@@ -86,6 +86,33 @@ TEST(DesktopInput, TheViewFramesTheSheetWithTheTarget) {
   }
 }
 
+// Issue 38, 4: after Take the sheet left the view. A fold that takes a sheet the view showed
+// whole out of it frames the sheet with the target again; a view zoomed into the sheet (which
+// did not show it whole) stays as the user left it.
+TEST(DesktopInput, AFoldThatTakesTheSheetOutOfViewFramesItAgain) {
+  const Sheet square = makeSurface("square");
+  const TriangleMesh target = meshOf(makeSurface("cylinder", {{"radius", 0.12}, {"height", 0.5}}));
+  const double width = 1280, height = 720;
+  const OrbitCamera start = OrbitCamera::framing(square, Pose{}, float(width / height));
+  // The sheet after a fold that lifted it up into the target.
+  Bounds moved;
+  moved.add({-0.1f, 0.1f, -0.05f});
+  moved.add({0.1f, 0.35f, 0.05f});
+  Bounds both = moved;
+  for (const glm::dvec3& p : target.positions) both.add(glm::vec3(p));
+  ASSERT_FALSE(start.shows(moved, width, height));  // the case is real
+  OrbitCamera camera = start;
+  EXPECT_TRUE(followSheet(camera, true, moved, both, width, height));
+  EXPECT_TRUE(camera.shows(moved, width, height));
+  EXPECT_TRUE(camera.shows(both, width, height));
+  OrbitCamera zoomed = start;
+  zoomed.zoom(5.0);
+  const OrbitCamera before = zoomed;
+  EXPECT_FALSE(followSheet(zoomed, false, moved, both, width, height));
+  EXPECT_EQ(zoomed.distance, before.distance);
+  EXPECT_EQ(zoomed.target, before.target);
+}
+
 TEST(DesktopInput, PressOffTheSheetDoesNothing) {
   const Sheet sheet = makeSurface("square");
   const OrbitCamera camera = OrbitCamera::framing(sheet, Pose{}, float(kWidth / kHeight));

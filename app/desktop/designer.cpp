@@ -395,11 +395,11 @@ void runDesigner(const DesignerOptions& options) {
         framedTarget = goal.mesh();
         frameView();
       } else if (viewedSession == doc.session.get() &&
-                 viewedRevision != doc.session->fixedRevision() && sheetShown &&
-                 !state.camera.shows(
-                     studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()),
-                     size.x, size.y)) {
-        frameView();
+                 viewedRevision != doc.session->fixedRevision()) {
+        followSheet(state.camera, sheetShown,
+                    studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()),
+                    studioBounds(doc.session->fixed(), goal.mesh(), doc.core->worldFromSheet()),
+                    size.x, size.y);
       }
       if (viewedSession != doc.session.get() || viewedRevision != doc.session->fixedRevision()) {
         viewedSession = doc.session.get();

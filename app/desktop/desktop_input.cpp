@@ -74,6 +74,13 @@ bool OrbitCamera::shows(const Bounds& bounds, double width, double height) const
   return true;
 }
 
+bool followSheet(OrbitCamera& camera, bool sheetWasShown, const Bounds& sheet, const Bounds& framed,
+                 double width, double height) {
+  if (!sheetWasShown || camera.shows(sheet, width, height)) return false;
+  camera = OrbitCamera::framing(framed, float(width / height));
+  return true;
+}
+
 OrbitCamera OrbitCamera::framing(const Bounds& bounds, float aspect) {
   const Camera framed = frameBounds(bounds, ViewPreset::Front, aspect);
   OrbitCamera camera;

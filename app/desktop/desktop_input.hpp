@@ -68,6 +68,13 @@ class OrbitCamera {
 // (sheet coordinates, placed the same way): what the designer's view frames.
 Bounds studioBounds(const Sheet& sheet, const TriangleMesh* target, const Pose& worldFromSheet);
 
+// After the committed sheet changed (issue 38, 4: a suggestion taken toward a target elsewhere):
+// a view that showed the whole sheet before (sheetWasShown) and no longer shows `sheet` frames
+// `framed` (the sheet with the target) again; any other view is the user's (zoomed in) and stays.
+// Returns whether the camera moved.
+bool followSheet(OrbitCamera& camera, bool sheetWasShown, const Bounds& sheet, const Bounds& framed,
+                 double width, double height);
+
 class DesktopInput {
  public:
   // How far one wheel step moves a grabbed point in depth, metres.
