@@ -42,7 +42,7 @@ HeadsetStudio::HeadsetStudio(session::Document& doc, HeadsetStudioOptions option
   panel_.setRecent(options_.recent);
   nameDesign(options_.name);
   if (!options_.target.empty()) {
-    target_.load(options_.target, doc_);
+    target_.loadNow(options_.target, doc_);
     panel_.setTargetPath(options_.target);
   }
 }

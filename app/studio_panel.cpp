@@ -212,6 +212,23 @@ void StudioPanel::guarded(const StudioActions& actions, const std::string& done,
   }
 }
 
+void StudioPanel::targetLines(const StudioStats& stats) {
+  // kTargetLineRows rows, more only for lines longer than those (a long path's failed load), so
+  // that no line is ever cut or hidden.
+  const float width = ImGui::GetContentRegionAvail().x;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float needed = 0.0f;
+  for (const std::string* line : {&stats.targetLine, &stats.suggestionLine})
+    needed += ImGui::CalcTextSize(line->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
+  const float height =
+      std::max(float(kTargetLineRows) * ImGui::GetTextLineHeightWithSpacing(), needed);
+  ImGui::BeginChild("##target lines", ImVec2(0.0f, height), false,
+                    ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar);
+  ImGui::TextWrapped("%s", stats.targetLine.c_str());
+  ImGui::TextWrapped("%s", stats.suggestionLine.c_str());
+  ImGui::EndChild();
+}
+
 void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
                        const StudioStats& stats, bool& creasePattern) {
   items_.clear();
@@ -394,19 +411,18 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
     });
   }
   if (actions.loadTarget && actions.suggest) {
-    // The same lines whatever they say (each a single line), so the items keep their places and
-    // a recorded session's pointing replays onto the same buttons.
+    // The same items whatever the lines say: the lines wrap inside a box of fixed height, so the
+    // items keep their places and a recorded session's pointing replays onto the same buttons.
     ImGui::Separator();
     ImGui::InputText("target", &targetPath_);
     item("target");
     if (button("Load target")) {
       const std::string path = targetPath_;
-      guarded(actions, "target " + path, [&] { actions.loadTarget(path); });
+      guarded(actions, "", [&] { actions.loadTarget(path); });  // the target line says how it went
     }
     ImGui::SameLine();
     if (button("Suggest")) guarded(actions, "", [&] { actions.suggest(); });
-    ImGui::TextUnformatted(stats.targetLine.c_str());
-    ImGui::TextUnformatted(stats.suggestionLine.c_str());
+    targetLines(stats);
     const bool offered = doc.core->offeredFold() != nullptr;
     ImGui::BeginDisabled(!offered);
     if (button("Take")) actions.press(Button::TakeSuggestion);
@@ -414,7 +430,7 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
     if (button("Another")) actions.press(Button::NextSuggestion);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::TextUnformatted("or grab the marked point");
+    ImGui::TextWrapped("or grab the marked point");
   }
   // After every other item, and drawn whether or not the list is empty: what this machine has
   // recently opened moves nothing else, so a recorded session's pointing replays onto the same
@@ -444,20 +460,25 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
     statsRevision_ = doc.session->fixedRevision();
     maxError_ = maxEdgeLengthError(doc.session->fixed());
   }
-  ImGui::Text("triangles %zu (drawn %zu), folds %zu", doc.session->current().triangleCount(),
-              stats.drawnTriangles, doc.session->foldCount());
-  ImGui::Text("max edge-length error %.3g m", maxError_);
+  // After every item: these wrap rather than run past the panel's edge.
+  ImGui::TextWrapped("triangles %zu (drawn %zu), folds %zu", doc.session->current().triangleCount(),
+                     stats.drawnTriangles, doc.session->foldCount());
+  ImGui::TextWrapped("max edge-length error %.3g m", maxError_);
   // Paper cannot pass through itself: say so while the fold does, and after (issue 17).
-  if (doc.core->session().dragging() && doc.core->intersectionPairs() > 0)
-    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.8f, 1.0f), "self-intersection: %zu triangle pairs",
-                       doc.core->intersectionPairs());
-  else if (doc.core->lastCommitIntersections() > 0)
-    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.8f, 1.0f),
-                       "the last fold passes through the sheet (%zu triangle pairs)",
+  const ImVec4 crossing(1.0f, 0.35f, 0.8f, 1.0f);
+  if (doc.core->session().dragging() && doc.core->intersectionPairs() > 0) {
+    ImGui::PushStyleColor(ImGuiCol_Text, crossing);
+    ImGui::TextWrapped("self-intersection: %zu triangle pairs", doc.core->intersectionPairs());
+    ImGui::PopStyleColor();
+  } else if (doc.core->lastCommitIntersections() > 0) {
+    ImGui::PushStyleColor(ImGuiCol_Text, crossing);
+    ImGui::TextWrapped("the last fold passes through the sheet (%zu triangle pairs)",
                        doc.core->lastCommitIntersections());
-  else
-    ImGui::Text("self-intersection: none");
-  ImGui::Text("drag update %.2f ms, frame %.2f ms", stats.dragUpdateMs, stats.frameMs);
+    ImGui::PopStyleColor();
+  } else {
+    ImGui::TextWrapped("self-intersection: none");
+  }
+  ImGui::TextWrapped("drag update %.2f ms, frame %.2f ms", stats.dragUpdateMs, stats.frameMs);
   ImGui::TextWrapped("%s", help_.c_str());
   ImGui::End();
 }

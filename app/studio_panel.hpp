@@ -104,7 +104,10 @@ class StudioPanel {
   std::optional<glm::vec2> itemCentre(const std::string& label) const;
 
  private:
+  // Rows of text the target section's two lines have, wrapped, at the narrowest panel.
+  static constexpr int kTargetLineRows = 5;
   void item(const char* label);  // records the last item's rectangle under its label
+  void targetLines(const StudioStats& stats);
   void guarded(const StudioActions& actions, const std::string& done,
                const std::function<void()>& action);
   void resetParameters();

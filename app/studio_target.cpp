@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "engine/fit/start_surface.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/surfaces/obj_surface.hpp"
+#include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold::studio {
 
@@ -49,11 +51,27 @@ std::string distanceText(double hausdorff, double chamfer, double diagonal) {
          "), Chamfer " + millimetresText(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
 }
 
-StudioTarget::StudioTarget(bool replaying, double suggestionSeconds)
-    : replaying_(replaying), suggestionSeconds_(suggestionSeconds) {}
+Design startForTarget(const std::string& path) {
+  const TriangleMesh target = readObjMesh(path);
+  try {
+    checkTarget(target);
+    // Units and place as a sheet at the catalogue's defaults has them: a target in millimetres
+    // is refused, not met by a sheet a thousand times too large.
+    checkTargetAgainst(target, makeSurface("square"));
+    const StartChoice start = chooseStart(target);
+    return Design{GeneratedSurface{start.surface, start.parameters}, {}};
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
 
-// The worker and the measures still running are waited for here, when the studio ends (each
-// stops at its next check, or within a measure).
+StudioTarget::StudioTarget(bool replaying, double suggestionSeconds, MeshReader reader)
+    : replaying_(replaying),
+      suggestionSeconds_(suggestionSeconds),
+      reader_(reader ? std::move(reader) : MeshReader(readObjMesh)) {}
+
+// The worker, the loads and the measures still running are waited for here, when the studio ends
+// (each stops at its next check, or within a measure or a read).
 StudioTarget::~StudioTarget() = default;
 
 void StudioTarget::retireMeasuring() {
@@ -62,24 +80,90 @@ void StudioTarget::retireMeasuring() {
   measuring_ = {};
 }
 
+void StudioTarget::retireFound() {
+  if (measuringFound_.valid()) retiredFound_.push_back(std::move(measuringFound_));
+  measuringFound_ = {};
+  foundChamfer_.clear();
+}
+
+namespace {
+
+template <typename T>
+bool isReady(const std::future<T>& f) {
+  return f.valid() && f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+template <typename T>
+void reap(std::vector<std::future<T>>& futures) {
+  std::erase_if(futures, [](const std::future<T>& f) { return isReady(f); });
+}
+
+}  // namespace
+
 void StudioTarget::reapRetired() {
-  std::erase_if(retired_, [](const std::future<Measured>& f) {
-    return f.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
-  });
+  reap(retired_);
+  reap(retiredFound_);
+  reap(retiredLoads_);
+}
+
+StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sheet,
+                                        const MeshReader& reader) {
+  Loaded loaded;
+  loaded.path = path;
+  try {
+    auto fitter = std::make_shared<const FoldFitter>(reader(path));
+    fitter->checkAgainst(sheet);
+    loaded.fitter = std::move(fitter);
+  } catch (const InvalidTarget& e) {
+    loaded.error = path + ": " + e.what();
+  } catch (const std::exception& e) {
+    loaded.error = e.what();  // the reader's errors name the file
+  }
+  return loaded;
 }
 
 void StudioTarget::load(const std::string& path, const session::Document& doc) {
-  std::shared_ptr<const FoldFitter> fitter;
-  try {
-    fitter = std::make_shared<const FoldFitter>(readObjMesh(path));
-    fitter->checkAgainst(doc.session->initial());
-  } catch (const InvalidTarget& e) {
-    throw std::runtime_error(path + ": " + e.what());
+  // The user asked for another target: what is searched toward the old one is of no use.
+  if (worker_) worker_->cancel();
+  searching_ = false;
+  suggestAfterLoad_ = false;
+  answerNote_.clear();
+  loadError_.clear();
+  if (loading_.valid()) retiredLoads_.push_back(std::move(loading_));
+  loading_ = {};
+  if (replaying_) {
+    swapIn(read(path, doc.session->initial(), reader_), doc);
+    return;
   }
-  // The old target's search (if any) is abandoned and its measure left to finish off the frame.
+  loadingPath_ = path;
+  loading_ = std::async(
+      std::launch::async,
+      [path, reader = reader_, sheet = std::make_shared<const Sheet>(doc.session->initial())] {
+        return read(path, *sheet, reader);
+      });
+}
+
+void StudioTarget::loadNow(const std::string& path, const session::Document& doc) {
+  Loaded loaded = read(path, doc.session->initial(), reader_);
+  if (!loaded.error.empty()) throw std::runtime_error(loaded.error);
+  if (loading_.valid()) retiredLoads_.push_back(std::move(loading_));
+  loading_ = {};
+  swapIn(std::move(loaded), doc);
+}
+
+void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
+  if (!loaded.error.empty()) {
+    loadError_ = std::move(loaded.error);
+    searching_ = false;
+    suggestAfterLoad_ = false;
+    return;
+  }
+  // The old target's search (if any) is abandoned and its measures left to finish off the frame.
   retireMeasuring();
-  fitter_ = std::move(fitter);
-  path_ = path;
+  retireFound();
+  fitter_ = std::move(loaded.fitter);
+  path_ = std::move(loaded.path);
+  loadError_.clear();
   if (!replaying_) {
     if (worker_)
       worker_->retarget(fitter_);
@@ -87,11 +171,19 @@ void StudioTarget::load(const std::string& path, const session::Document& doc) {
       worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_);
   }
   measured_.reset();
-  searching_ = false;
+  measuredCurrent_ = false;
   answerNote_.clear();
   found_.clear();
   moved_.clear();
   offered_.clear();
+  const bool sameDesign =
+      requestSession_ == doc.session.get() && requestRevision_ == doc.session->designRevision();
+  if (suggestAfterLoad_ && sameDesign && !replaying_) {
+    startSearch(doc);
+  } else {
+    searching_ = false;
+  }
+  suggestAfterLoad_ = false;
 }
 
 const TriangleMesh* StudioTarget::mesh() const {
@@ -99,12 +191,23 @@ const TriangleMesh* StudioTarget::mesh() const {
 }
 
 void StudioTarget::suggest(const session::Document& doc) {
-  if (!fitter_) throw std::runtime_error("no target to suggest toward: load one first");
+  if (!fitter_ && !loading_.valid())
+    throw std::runtime_error("no target to suggest toward: load one first");
   requestSession_ = doc.session.get();
   requestRevision_ = doc.session->designRevision();
   searching_ = true;
   answerNote_.clear();
   if (replaying_) return;  // the recording brings what was found
+  if (loading_.valid()) {
+    if (worker_) worker_->cancel();  // toward the target that is on its way, not the old one
+    suggestAfterLoad_ = true;
+    return;
+  }
+  startSearch(doc);
+}
+
+void StudioTarget::startSearch(const session::Document& doc) {
+  searching_ = true;
   const FoldSession& session = *doc.session;
   DesignSnapshot snapshot;
   snapshot.initial = std::make_shared<const Sheet>(session.initial());
@@ -117,10 +220,16 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
   const bool sameDesign =
       requestSession_ == doc.session.get() && requestRevision_ == doc.session->designRevision();
   reapRetired();
+  if (isReady(loading_)) {
+    Loaded loaded = loading_.get();
+    loading_ = {};
+    swapIn(std::move(loaded), doc);
+  }
   if (searching_ && !sameDesign) {
     // Folded, undone or replaced while searching: what comes is for another design.
     if (worker_) worker_->cancel();
     searching_ = false;
+    suggestAfterLoad_ = false;
     answerNote_ = "the design changed while searching: suggest again";
   }
   if (replaying_) {
@@ -143,6 +252,17 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
       moved_.clear();
       for (const FoldSuggestion& suggestion : found_)
         moved_.push_back(movedPart(doc.session->fixed(), suggestion.sheet));
+      // What each would make the design, in the distance line's measure, off the frame.
+      retireFound();
+      std::vector<TriangleMesh> results;
+      for (const FoldSuggestion& suggestion : found_) results.push_back(meshOf(suggestion.sheet));
+      measuringFound_ = std::async(std::launch::async, [fitter = fitter_,
+                                                        results = std::move(results)] {
+        std::vector<double> chamfer;
+        for (const TriangleMesh& result : results)
+          chamfer.push_back(surfaceDistance(result, fitter->target(), kDistanceSamples).chamfer);
+        return chamfer;
+      });
       for (const FoldSuggestion& suggestion : found_) {
         const FoldRecord& fold = suggestion.folds.front();
         offered_.push_back({fold.seed, fold.grabbed, fold.target});
@@ -153,9 +273,8 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
 
   // The distance of the committed design, measured again when it changes.
   if (replaying_ || !fitter_) return;
-  if (measuring_.valid() &&
-      measuring_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
-    measured_ = measuring_.get();
+  if (isReady(measuringFound_)) foundChamfer_ = measuringFound_.get();
+  if (isReady(measuring_)) measured_ = measuring_.get();
   const bool current = measured_ && measured_->session == doc.session.get() &&
                        measured_->revision == doc.session->designRevision();
   if (!current && !measuring_.valid()) {
@@ -179,6 +298,8 @@ const TriangleMesh* StudioTarget::offeredResult(const InteractionCore& core) con
 }
 
 std::string StudioTarget::distanceLine() const {
+  if (loading_.valid()) return "loading the target " + loadingPath_ + " ...";
+  if (!loadError_.empty()) return loadError_;
   if (!fitter_) return "target: none";
   if (replaying_) return "target: " + path_;
   if (!measured_) return "measuring the distance to the target ...";
@@ -192,10 +313,15 @@ std::string StudioTarget::suggestionLine(const InteractionCore& core) const {
   if (const SuggestedFold* offer = core.offeredFold()) {
     std::string line = "suggestion " + std::to_string(core.offerIndex() + 1) + " of " +
                        std::to_string(core.offerCount());
-    for (std::size_t i = 0; i < offered_.size() && i < found_.size(); ++i)
-      if (offered_[i] == *offer)
-        line += ": Chamfer about " + millimetresText(found_[i].before) + " -> " +
-                millimetresText(found_[i].after);
+    // The design's Chamfer as the distance line gives it, and what this fold would make it.
+    for (std::size_t i = 0; i < offered_.size() && i < found_.size(); ++i) {
+      if (!(offered_[i] == *offer)) continue;
+      line += ": Chamfer " + (measured_ && measuredCurrent_
+                                  ? millimetresText(measured_->distance.chamfer)
+                                  : std::string("..."));
+      line += " -> " + (i < foundChamfer_.size() ? millimetresText(foundChamfer_[i])
+                                                 : std::string("measuring ..."));
+    }
     return line;
   }
   return answerNote_;
@@ -209,6 +335,7 @@ void StudioTarget::documentReplaced() {
   found_.clear();
   moved_.clear();
   offered_.clear();
+  retireFound();
   // A measure of the old design must not pass for one of the new (its session may share the
   // address): it finishes off the frame, unread.
   retireMeasuring();

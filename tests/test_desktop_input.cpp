@@ -66,6 +66,53 @@ TEST(DesktopInput, DragFoldsThroughTheCore) {
   EXPECT_EQ(session.foldCount(), 1u);
 }
 
+// Issue 38, 4: `design square --target T.obj`, T a tall cylinder's shape, opened on the square
+// with the target mostly out of view. The view frames the sheet and the target together: both
+// boxes lie inside it, at the window's aspect, wide or tall.
+TEST(DesktopInput, TheViewFramesTheSheetWithTheTarget) {
+  const Sheet square = makeSurface("square");
+  const TriangleMesh target = meshOf(makeSurface("cylinder", {{"radius", 0.12}, {"height", 0.5}}));
+  const Bounds sheetBox = studioBounds(square, nullptr, Pose{});
+  const Bounds both = studioBounds(square, &target, Pose{});
+  Bounds targetBox;
+  for (const glm::dvec3& p : target.positions) targetBox.add(glm::vec3(p));
+  for (const glm::dvec2 size : {glm::dvec2(1280, 720), glm::dvec2(640, 900)}) {
+    const float aspect = float(size.x / size.y);
+    // The sheet's own framing leaves the target out: the case is real.
+    EXPECT_FALSE(OrbitCamera::framing(square, Pose{}, aspect).shows(targetBox, size.x, size.y));
+    const OrbitCamera camera = OrbitCamera::framing(both, aspect);
+    EXPECT_TRUE(camera.shows(sheetBox, size.x, size.y)) << size.x << "x" << size.y;
+    EXPECT_TRUE(camera.shows(targetBox, size.x, size.y)) << size.x << "x" << size.y;
+  }
+}
+
+// Issue 38, 4: after Take the sheet left the view. A fold that takes a sheet the view showed
+// whole out of it frames the sheet with the target again; a view zoomed into the sheet (which
+// did not show it whole) stays as the user left it.
+TEST(DesktopInput, AFoldThatTakesTheSheetOutOfViewFramesItAgain) {
+  const Sheet square = makeSurface("square");
+  const TriangleMesh target = meshOf(makeSurface("cylinder", {{"radius", 0.12}, {"height", 0.5}}));
+  const double width = 1280, height = 720;
+  const OrbitCamera start = OrbitCamera::framing(square, Pose{}, float(width / height));
+  // The sheet after a fold that lifted it up into the target.
+  Bounds moved;
+  moved.add({-0.1f, 0.1f, -0.05f});
+  moved.add({0.1f, 0.35f, 0.05f});
+  Bounds both = moved;
+  for (const glm::dvec3& p : target.positions) both.add(glm::vec3(p));
+  ASSERT_FALSE(start.shows(moved, width, height));  // the case is real
+  OrbitCamera camera = start;
+  EXPECT_TRUE(followSheet(camera, true, moved, both, width, height));
+  EXPECT_TRUE(camera.shows(moved, width, height));
+  EXPECT_TRUE(camera.shows(both, width, height));
+  OrbitCamera zoomed = start;
+  zoomed.zoom(5.0);
+  const OrbitCamera before = zoomed;
+  EXPECT_FALSE(followSheet(zoomed, false, moved, both, width, height));
+  EXPECT_EQ(zoomed.distance, before.distance);
+  EXPECT_EQ(zoomed.target, before.target);
+}
+
 TEST(DesktopInput, PressOffTheSheetDoesNothing) {
   const Sheet sheet = makeSurface("square");
   const OrbitCamera camera = OrbitCamera::framing(sheet, Pose{}, float(kWidth / kHeight));

@@ -130,6 +130,32 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
   EXPECT_EQ(replayed["folds"], saved["folds"]);
 }
 
+// Issue 38, 4, as a designer meets it: `curvefold design --target T.obj` with T folded from the
+// cylinder and no sheet named starts from the sheet `fit` would choose (the cylinder, not the
+// default square), and a suggestion toward it is taken from the keyboard.
+TEST_F(DesktopWindow, ATargetAloneChoosesTheSheet) {
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
+  ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
+  const fs::path target =
+      fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj";
+  const fs::path autosave = dir() / "auto.curvefold.json", log = dir() / "designer.log";
+  const std::string window = startDesigner(
+      "--size 640x480 --target " + target.string() + " --autosave " + autosave.string(), log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
+  auto folds = [&] {
+    if (!fs::exists(autosave)) return std::size_t{0};
+    return nlohmann::json::parse(slurp(autosave))["folds"].size();
+  };
+  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+  shell("sleep 1 && " + quit());
+  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+  EXPECT_EQ(slurp(log), "");
+  const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
+  EXPECT_NE(saved["surface"].dump().find("cylinder"), std::string::npos) << saved["surface"];
+  EXPECT_EQ(saved["folds"].size(), 1u);
+}
+
 // Resizing the window: the swapchain follows it (the exit screenshot has the new size and shows
 // the sheet) and the mouse picks through the new size. The view keeps its camera, so a vertex
 // appears where that camera projects it into the larger window.

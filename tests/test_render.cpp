@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -353,6 +354,52 @@ TEST_F(Render, TranslucentTrianglesBlendInFrontAndHideBehind) {
   EXPECT_GT(int(over[0]), int(over[1]) + 60);  // reddened
   EXPECT_GT(int(over[1]), 40);                 // the paper still shows through
   EXPECT_LT(int(over[1]), int(under[1]) - 40);
+}
+
+// Issue 38, 4: a target's ghost lying on the sheet (where the design already matches it) tints
+// the sheet evenly; without a polygon offset their depths tie and the ghost speckles (seen as
+// grey and orange on a headset). The ghost here is the sheet itself, a curved one seen at a
+// slant, placed on the CPU as the studio places a target.
+TEST_F(Render, AGhostOnTheSheetTintsItEvenly) {
+  const Sheet sheet = makeSurface("cylinder");
+  Scene scene = sceneForSheet(sheet, ViewPreset::Iso, 1.0f, false);
+  scene.ground.enabled = false;  // only the sheet differs from the background
+  // Held somewhere in a room (a headset's sheet frame), the camera moved with it: the sheet is
+  // placed by the GPU in floats, the ghost by the CPU in doubles (InteractionCore::worldOf).
+  const glm::dmat4 place =
+      glm::translate(glm::dmat4(1.0), glm::dvec3(0.31, 1.13, -0.47)) *
+      glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(0.3, 1.0, 0.2)));
+  scene.sheet.worldFromSheet = glm::mat4(place) * scene.sheet.worldFromSheet;
+  scene.camera.eye = glm::vec3(place * glm::dvec4(glm::dvec3(scene.camera.eye), 1.0));
+  scene.camera.target = glm::vec3(place * glm::dvec4(glm::dvec3(scene.camera.target), 1.0));
+  scene.camera.up = glm::vec3(place * glm::dvec4(glm::dvec3(scene.camera.up), 0.0));
+  const RgbaImage plain = renderer_->render(scene);
+  const glm::vec4 tint(1.0f, 0.0f, 0.0f, 0.5f);
+  const glm::dmat4 model(scene.sheet.worldFromSheet);
+  for (const Triangle& t : sheet.triangles)
+    for (const VertexIndex v : t)
+      scene.translucent.push_back({glm::vec3(model * glm::dvec4(sheet.positions[v], 1.0)), tint});
+  const RgbaImage ghost = renderer_->render(scene);
+  const std::uint8_t* corner = plain.at(0, 0);
+  std::size_t paper = 0, untinted = 0;
+  for (std::uint32_t y = 1; y + 1 < kSize; ++y)
+    for (std::uint32_t x = 1; x + 1 < kSize; ++x) {
+      // The sheet's inside: this pixel and its neighbours differ from the background.
+      bool inside = true;
+      for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const std::uint8_t* p = plain.at(x + dx, y + dy);
+        inside = inside && std::abs(int(p[0]) - int(corner[0])) +
+                                   std::abs(int(p[1]) - int(corner[1])) +
+                                   std::abs(int(p[2]) - int(corner[2])) >
+                               30;
+      }
+      if (!inside) continue;
+      ++paper;
+      const std::uint8_t* over = ghost.at(x, y);
+      untinted += int(over[0]) < int(over[1]) + 30;
+    }
+  ASSERT_GT(paper, std::size_t(kSize * kSize / 20));
+  EXPECT_LT(untinted, paper / 200) << untinted << " of " << paper << " pixels of the sheet speckle";
 }
 
 // Issue 14: a picture on a quad in the world (the headset's panel) shows its texture and hides

@@ -27,6 +27,7 @@
 #include "app/file_picker.hpp"
 #include "app/headset_studio.hpp"
 #include "app/studio_panel.hpp"
+#include "app/studio_target.hpp"
 #include "engine/io/design_document.hpp"
 
 namespace curvefold::studio {
@@ -685,6 +686,70 @@ TEST_F(StudioPanelTest, TheHeadsetKeepsItsPathFields) {
   EXPECT_FALSE(studio.panel().itemCentre("Browse...##open"));
   EXPECT_FALSE(studio.panel().itemCentre("Recent"));
   EXPECT_EQ(studio.panel().savePath(), "exports/vase.curvefold.json");
+}
+
+// Issue 38, 4: every line of the panel readable at its width, the desktop's floating panel (300
+// pixels) and the headset's (480): the target's distance and suggestion lines, as long as they
+// come, wrap instead of running past the edge ("Chamfer 24.4 m" for "Chamfer 24.4 mm (12.2%)").
+// A glyph past its clip rectangle is text cut off.
+TEST_F(StudioPanelTest, EveryLineIsWholeAtThePanelsWidth) {
+  actions_.loadTarget = [](const std::string&) {};
+  actions_.suggest = [] {};
+  ImGui::GetStyle().AntiAliasedLinesUseTex = false;  // lines too sample only the white pixel
+  const std::vector<std::pair<std::string, std::string>> lines = {
+      {"(measuring) " + distanceText(0.0244, 0.0244, 0.2001),
+       "suggestion 1 of 3: Chamfer 0.345 mm -> 0.000752 mm"},
+      {"/home/designer/targets/lampshade with a bulge.obj: the target is 1e+03 times the sheet's "
+       "size (212 m across against 0.212 m): are its units metres?",
+       "the design changed while searching: suggest again"},
+      {"loading the target /home/designer/targets/a rather long folder name/vase.obj ...",
+       "searching for the next fold ..."}};
+  for (const bool fills : {false, true}) {
+    ImGui::GetIO().DisplaySize = fills ? ImVec2(480, 600) : ImVec2(1280, 720);
+    panel_.setFillsDisplay(fills);
+    for (const auto& [target, suggestion] : lines) {
+      stats_.targetLine = target;
+      stats_.suggestionLine = suggestion;
+      frame();
+      frame();
+      const ImDrawData* data = ImGui::GetDrawData();
+      ASSERT_NE(data, nullptr);
+      std::size_t cut = 0;
+      const ImVec2 white = ImGui::GetIO().Fonts->TexUvWhitePixel;
+      for (int l = 0; l < data->CmdListsCount; ++l) {
+        const ImDrawList* list = data->CmdLists[l];
+        for (const ImDrawCmd& cmd : list->CmdBuffer)
+          for (unsigned i = 0; i < cmd.ElemCount; ++i) {
+            const ImDrawVert& v =
+                list->VtxBuffer[list->IdxBuffer[cmd.IdxOffset + i] + cmd.VtxOffset];
+            // Glyphs only: shapes (a border on the display's edge) sample the white pixel.
+            if (v.uv.x == white.x && v.uv.y == white.y) continue;
+            const ImVec2 p = v.pos;
+            const bool outside = p.x > cmd.ClipRect.z + 1.0f || p.x < cmd.ClipRect.x - 1.0f;
+            if (outside && cut == 0)
+              ADD_FAILURE() << "at " << p.x << ", " << p.y << " outside " << cmd.ClipRect.x << ".."
+                            << cmd.ClipRect.z << " (list " << l << ")";
+            cut += outside;
+          }
+      }
+      EXPECT_EQ(cut, 0u) << "cut at the panel's width" << (fills ? " (headset)" : " (desktop)")
+                         << ": " << target << " / " << suggestion;
+    }
+  }
+}
+
+// The wrapped lines keep the items where they are, as long as they fit the box's rows: a replay,
+// whose lines say less, points at the same buttons.
+TEST_F(StudioPanelTest, TheTargetLinesMoveNoItem) {
+  expectItemsStay(
+      [&] {
+        stats_.targetLine = "target: a.obj";
+        stats_.suggestionLine = "";
+      },
+      [&] {
+        stats_.targetLine = "(measuring) " + distanceText(0.0244, 0.0244, 0.2001);
+        stats_.suggestionLine = "suggestion 1 of 3: Chamfer 0.345 mm -> 0.000752 mm";
+      });
 }
 
 }  // namespace

@@ -58,7 +58,8 @@ constexpr const char* kDefaultSurface = "square";
 struct DesignerOptions {
   std::string input;  // design file, surface name, or empty for the default surface
   std::string record, autosave, screenshotOnExit, size = "1280x720";
-  std::string target;  // a target shape (OBJ) to fold toward
+  std::string target;      // a target shape (OBJ) to fold toward
+  std::string frameTimes;  // where to write each frame's duration when the window closes
   bool resume = false;
   bool validation = false;
   bool creasePatternPanel = false;
@@ -95,22 +96,28 @@ void runDesigner(const DesignerOptions& options) {
   if (!readSize(options.size, 64u, 8192u, width, height))
     throw cli::UsageError("--size: expected WxH from 64 to 8192, got " +
                           quotedExcerpt(options.size));
-  const std::string autosavePath = options.autosave.empty()
-                                       ? session::defaultAutosave(options.input, kDefaultSurface)
-                                       : options.autosave;
+  // With a target and no sheet named, the sheet is chosen to match the target (issue 38, 4),
+  // before any window: the catalogue surface `fit` would start from.
+  const bool startFromTarget = !options.resume && options.input.empty() && !options.target.empty();
   Design design;
+  if (startFromTarget) design = studio::startForTarget(options.target);
+  const std::string startName =
+      startFromTarget ? std::get<GeneratedSurface>(design.surface).generator : kDefaultSurface;
+  const std::string autosavePath = options.autosave.empty()
+                                       ? session::defaultAutosave(options.input, startName)
+                                       : options.autosave;
   if (options.resume) {
     if (!fs::exists(autosavePath))
       throw cli::UsageError("--resume: no autosave at " + autosavePath);
     design = loadDesign(autosavePath);
-  } else {
+  } else if (!startFromTarget) {
     design = session::designFor(options.input, kDefaultSurface);
   }
   session::Document doc =
       session::makeDocument(design, options.resume ? autosavePath : options.input);
   // Read and checked before any window or file: a bad target is one line and nothing else.
   studio::StudioTarget goal;
-  if (!options.target.empty()) goal.load(options.target, doc);
+  if (!options.target.empty()) goal.loadNow(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
   session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); },
                                   {{options.target, "the target"}});
@@ -177,7 +184,15 @@ void runDesigner(const DesignerOptions& options) {
     double pendingWheel = 0.0;
   } state;
   state.doc = &doc;
-  state.camera = OrbitCamera::framing(doc.session->fixed(), Pose{}, float(width) / float(height));
+  // The sheet and the target together (issue 38, 4).
+  auto frameView = [&] {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window, &w, &h);
+    const float aspect = w > 0 && h > 0 ? float(w) / float(h) : float(width) / float(height);
+    state.camera = OrbitCamera::framing(
+        studioBounds(doc.session->fixed(), goal.mesh(), doc.core->worldFromSheet()), aspect);
+  };
+  frameView();
   state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
   glfwSetWindowUserPointer(window, &state);
   auto windowSize = [](GLFWwindow* w) {
@@ -268,7 +283,7 @@ void runDesigner(const DesignerOptions& options) {
   panel.setDesktop(true);
   // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
   panel.nameDesign(options.resume          ? autosavePath
-                   : options.input.empty() ? std::string(kDefaultSurface)
+                   : options.input.empty() ? startName
                                            : options.input);
   studio::StudioStats stats;
   Ground ground = groundBelow(worldBounds(doc.session->fixed()));
@@ -282,7 +297,7 @@ void runDesigner(const DesignerOptions& options) {
     renderer.markSheetReplaced();
     tracker = SessionSheetTracker();
     state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
-    state.camera = OrbitCamera::framing(doc.session->fixed(), Pose{}, float(width) / float(height));
+    frameView();
     ground = groundBelow(worldBounds(doc.session->fixed()));
   };
 
@@ -297,6 +312,15 @@ void runDesigner(const DesignerOptions& options) {
     header.rate = mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
     outputs.startRecording(header);
   }
+
+  // What the view showed of the committed sheet: a fold that takes a sheet the view showed whole
+  // out of it (a suggestion taken toward a target elsewhere) frames the view again; a view the
+  // user zoomed into stays theirs.
+  std::uint64_t viewedRevision = doc.session->fixedRevision();
+  const void* viewedSession = doc.session.get();
+  bool sheetShown = true;
+  const TriangleMesh* framedTarget = goal.mesh();
+  std::vector<float> frameTimes;
 
   const Clock::time_point start = Clock::now();
   double lastTime = 0.0;
@@ -364,6 +388,27 @@ void runDesigner(const DesignerOptions& options) {
       std::cerr << "curvefold: warning: " << problem << std::endl;
     }
 
+    {
+      const glm::dvec2 size = windowSize(window);
+      if (goal.mesh() != framedTarget) {
+        // A target swapped in (loaded off the frame): framed with the sheet.
+        framedTarget = goal.mesh();
+        frameView();
+      } else if (viewedSession == doc.session.get() &&
+                 viewedRevision != doc.session->fixedRevision()) {
+        followSheet(state.camera, sheetShown,
+                    studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()),
+                    studioBounds(doc.session->fixed(), goal.mesh(), doc.core->worldFromSheet()),
+                    size.x, size.y);
+      }
+      if (viewedSession != doc.session.get() || viewedRevision != doc.session->fixedRevision()) {
+        viewedSession = doc.session.get();
+        viewedRevision = doc.session->fixedRevision();
+        sheetShown = state.camera.shows(
+            studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()), size.x,
+            size.y);
+      }
+    }
     tracker.update(*doc.session, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
                                     {creasePatternPanel, /*handMarkers=*/false, &panelCache,
@@ -377,6 +422,7 @@ void runDesigner(const DesignerOptions& options) {
     const Clock::time_point now = Clock::now();
     stats.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
     lastFrame = now;
+    if (!options.frameTimes.empty()) frameTimes.push_back(float(stats.frameMs));
   }
   frames.waitAll();
   if (!options.screenshotOnExit.empty())
@@ -385,6 +431,15 @@ void runDesigner(const DesignerOptions& options) {
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   vkDestroyDescriptorPool(context.device(), imguiPool, nullptr);
+  if (!options.frameTimes.empty()) {
+    std::string text;
+    char line[32];
+    for (const float ms : frameTimes) {
+      std::snprintf(line, sizeof line, "%.3f\n", ms);
+      text += line;
+    }
+    writeFileAtomically(options.frameTimes, text);
+  }
   if (!outputs.finish()) throw FileError(outputs.problems().back());
   if (context.validationMessageCount() > 0)
     throw VulkanError(std::to_string(context.validationMessageCount()) +
@@ -418,6 +473,9 @@ void addDesignCommand(CLI::App& app) {
       ->check(CLI::IsMember({1, 2, 4, 8}));
   command->add_option("--screenshot-on-exit", options->screenshotOnExit,
                       "Write the last frame's scene to this PNG when the window closes");
+  command->add_option("--frame-times", options->frameTimes,
+                      "Write each frame's duration (ms, one a line) to this file when the window "
+                      "closes");
   command->callback([options] { desktop::runDesigner(*options); });
 }
 

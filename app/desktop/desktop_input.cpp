@@ -50,7 +50,38 @@ std::optional<glm::dvec3> intersectSheet(const Ray& ray, const Sheet& sheet,
 }
 
 OrbitCamera OrbitCamera::framing(const Sheet& sheet, const Pose& worldFromSheet, float aspect) {
-  const Bounds bounds = worldBounds(sheet, matrixOf(worldFromSheet));
+  return framing(worldBounds(sheet, matrixOf(worldFromSheet)), aspect);
+}
+
+Bounds studioBounds(const Sheet& sheet, const TriangleMesh* target, const Pose& worldFromSheet) {
+  Bounds bounds = worldBounds(sheet, matrixOf(worldFromSheet));
+  if (target)
+    for (const glm::dvec3& p : target->positions) bounds.add(glm::vec3(worldFromSheet.apply(p)));
+  return bounds;
+}
+
+bool OrbitCamera::shows(const Bounds& bounds, double width, double height) const {
+  if (bounds.empty()) return true;
+  const glm::dvec3 f = forward();
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
+                       (corner & 2) ? bounds.max.y : bounds.min.y,
+                       (corner & 4) ? bounds.max.z : bounds.min.z);
+    if (glm::dot(p - eye(), f) <= 0.0) return false;
+    const glm::dvec2 at = project(p, width, height);
+    if (at.x < 0.0 || at.x > width || at.y < 0.0 || at.y > height) return false;
+  }
+  return true;
+}
+
+bool followSheet(OrbitCamera& camera, bool sheetWasShown, const Bounds& sheet, const Bounds& framed,
+                 double width, double height) {
+  if (!sheetWasShown || camera.shows(sheet, width, height)) return false;
+  camera = OrbitCamera::framing(framed, float(width / height));
+  return true;
+}
+
+OrbitCamera OrbitCamera::framing(const Bounds& bounds, float aspect) {
   const Camera framed = frameBounds(bounds, ViewPreset::Front, aspect);
   OrbitCamera camera;
   camera.target = glm::dvec3(framed.target);

@@ -17,7 +17,9 @@
 #include <glm/vec3.hpp>
 
 #include "engine/geometry/sheet.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
 #include "engine/render/scene.hpp"
+#include "engine/render/scene_builder.hpp"
 #include "interaction/input_frame.hpp"
 
 namespace curvefold::desktop {
@@ -38,6 +40,8 @@ class OrbitCamera {
   // The front view (frameBounds with ViewPreset::Front) of the sheet: deterministic, so a test can
   // compute where a vertex appears.
   static OrbitCamera framing(const Sheet& sheet, const Pose& worldFromSheet, float aspect);
+  // The front view of a world box (the sheet's and a target's together, issue 38, 4).
+  static OrbitCamera framing(const Bounds& bounds, float aspect);
 
   Camera camera() const;
   glm::dvec3 eye() const;
@@ -46,6 +50,8 @@ class OrbitCamera {
   Ray ray(glm::dvec2 pixel, double width, double height) const;
   // Where a world point appears, in the same pixel coordinates.
   glm::dvec2 project(const glm::dvec3& p, double width, double height) const;
+  // Whether the whole box (its eight corners) lies in front of the eye and inside the view.
+  bool shows(const Bounds& bounds, double width, double height) const;
 
   void orbit(double dxPixels, double dyPixels);
   void pan(double dxPixels, double dyPixels, double height);
@@ -57,6 +63,17 @@ class OrbitCamera {
   double distance = 1.0;
   double fovYDegrees = 35.0;
 };
+
+// The world box of the sheet (placed by worldFromSheet) and, when there is one, of the target
+// (sheet coordinates, placed the same way): what the designer's view frames.
+Bounds studioBounds(const Sheet& sheet, const TriangleMesh* target, const Pose& worldFromSheet);
+
+// After the committed sheet changed (issue 38, 4: a suggestion taken toward a target elsewhere):
+// a view that showed the whole sheet before (sheetWasShown) and no longer shows `sheet` frames
+// `framed` (the sheet with the target) again; any other view is the user's (zoomed in) and stays.
+// Returns whether the camera moved.
+bool followSheet(OrbitCamera& camera, bool sheetWasShown, const Bounds& sheet, const Bounds& framed,
+                 double width, double height);
 
 class DesktopInput {
  public:

@@ -53,6 +53,11 @@ VkPipeline PipelineBuilder::build() const {
   // With the projection's y flip, a triangle counter-clockwise to the viewer has positive area.
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
+  if (depthBiasConstant != 0.0f || depthBiasSlope != 0.0f) {
+    raster.depthBiasEnable = VK_TRUE;
+    raster.depthBiasConstantFactor = depthBiasConstant;
+    raster.depthBiasSlopeFactor = depthBiasSlope;
+  }
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = samples;

@@ -27,6 +27,9 @@ struct PipelineBuilder {
   std::vector<VkVertexInputAttributeDescription> attributes;
   bool depthWrite = true;
   bool blend = false;
+  // Polygon offset (Vulkan's depth bias; negative: toward the eye), so that a surface drawn over
+  // another where they coincide wins everywhere instead of fighting it pixel by pixel.
+  float depthBiasConstant = 0.0f, depthBiasSlope = 0.0f;
   VkBool32 srgbTarget = VK_FALSE;  // shaders/target_color.glsl's constant 0
 
   // Throws VulkanError (the shader modules are destroyed either way).

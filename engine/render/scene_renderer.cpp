@@ -160,6 +160,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> DirtyRanges::runs(std::uint
   return merged;
 }
 
+// The translucent pass's polygon offset, in depth units and per unit of depth slope: a few units
+// settle the tie of two surfaces that coincide and move nothing visibly.
+constexpr float kTranslucentDepthBias = -4.0f;
+
 // Everything one frame in flight owns.
 struct SceneRenderer::Slot {
   HostBuffer uniforms;
@@ -258,7 +262,12 @@ SceneRenderer::SceneRenderer(const VulkanContext& context, const RenderTarget& t
   builder.bindings = {{0, sizeof(ColoredVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   builder.attributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ColoredVertex, position)},
                         {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(ColoredVertex, color)}};
-  translucentPipeline_ = build(true);  // tested against the scene, hides nothing
+  // Tested against the scene, hides nothing; drawn a little toward the eye, so a target's ghost
+  // lying on the sheet tints it evenly rather than speckling where their depths tie (issue 38, 4).
+  builder.depthBiasConstant = kTranslucentDepthBias;
+  builder.depthBiasSlope = kTranslucentDepthBias;
+  translucentPipeline_ = build(true);
+  builder.depthBiasConstant = builder.depthBiasSlope = 0.0f;
 
   for (Slot& slot : slots_) {
     slot.uniforms = HostBuffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
