@@ -75,6 +75,16 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
     expectSameBits(a.suggestions[i].grab, b.suggestions[i].grab, which + " grab");
     expectSameBits(a.suggestions[i].to, b.suggestions[i].to, which + " to");
   }
+  ASSERT_EQ(a.simulation.has_value(), b.simulation.has_value()) << what;
+  if (a.simulation) {
+    EXPECT_TRUE(sameBits(a.simulation->percent, b.simulation->percent)) << what;
+    EXPECT_EQ(a.simulation->steps, b.simulation->steps) << what;
+    ASSERT_EQ(a.simulation->pull.has_value(), b.simulation->pull.has_value()) << what;
+    if (a.simulation->pull) {
+      EXPECT_EQ(a.simulation->pull->vertex, b.simulation->pull->vertex) << what;
+      expectSameBits(a.simulation->pull->to, b.simulation->pull->to, what + " pull");
+    }
+  }
 }
 
 std::string recordingText(const RecordingHeader& header, const std::vector<InputFrame>& frames) {
@@ -170,6 +180,12 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
       for (int k = 0; k <= i % 4; ++k)
         frame.suggestions.push_back(
             {{a, any(random)}, {any(random), a, any(random)}, {any(random), any(random), a}});
+    // The live simulation (issue 39, 4): its fold amount, steps and pull, kept exactly.
+    if (i % 3 == 1) {
+      frame.simulation = SimulationInput{100.0 * unit(random), std::uint32_t(i % 40), {}};
+      if (i % 2 == 0)
+        frame.simulation->pull = SimulationPull{std::uint32_t(i * 7), {a, any(random), -0.0}};
+    }
     frames.push_back(frame);
   }
   header.studio = RecordingHeader::Studio{{"a.curvefold.json", "designs/b c.curvefold.json"}};
@@ -211,7 +227,7 @@ TEST(Recording, FrameLinesAreJsonWithTheDocumentedKeys) {
   frame.buttons = 0;
   EXPECT_EQ(frameLine(frame).find("buttons"), std::string::npos);
   EXPECT_EQ(headerLine(squareRecordingHeader()),
-            R"({"format":"curvefold-recording","version":1,"source":"synthetic",)"
+            R"({"format":"curvefold-recording","version":2,"source":"synthetic",)"
             R"("handedness":"right","units":"m","rate":10.0,"sheet_frame":{"position":[0.0,0.0,)"
             R"(0.0],"orientation":[1.0,0.0,0.0,0.0]},"surface":{"generator":"square",)"
             R"("parameters":{"resolution":10.0}}})");
@@ -270,10 +286,26 @@ TEST(Recording, BadInputNamesFileAndLine) {
       {"suggestion seed NaN", 11, "\"select\":1.0}",
        "\"select\":1.0},\"suggestions\":[{\"seed\":[null,0],\"grab\":[0,0,0],\"to\":[0,0,1]}]",
        "suggestions[0].seed"},
+      {"simulation percent past 100", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":150,\"steps\":4}",
+       "simulation.percent: must lie in [0, 100]"},
+      {"simulation steps past the limit", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":20000}",
+       "simulation.steps: must be at most"},
+      {"simulation without steps", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50}", "missing \"steps\""},
+      {"simulation pull NaN", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":4,"
+       "\"pull\":{\"vertex\":3,\"to\":[0,null,0]}}",
+       "simulation.pull.to"},
+      {"simulation pull negative vertex", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":4,"
+       "\"pull\":{\"vertex\":-1,\"to\":[0,0,0]}}",
+       "simulation.pull.vertex"},
       {"buttons not an array", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":\"undo\"",
        "buttons"},
-      {"unknown version", 1, "\"version\":1", "\"version\":2", "unsupported version 2"},
-      {"version not integer", 1, "\"version\":1", "\"version\":1.5", "unsupported version 1.5"},
+      {"unknown version", 1, "\"version\":2", "\"version\":3", "unsupported version 3"},
+      {"version not integer", 1, "\"version\":2", "\"version\":1.5", "unsupported version 1.5"},
       {"not a recording", 1, "curvefold-recording", "curvefold-design",
        "not a curvefold recording"},
       {"unknown source", 1, "\"synthetic\"", "\"kinect\"", "unknown source \"kinect\""},
@@ -451,7 +483,7 @@ TEST(Recording, DataFilesAreReadWithTheirPathInErrors) {
       {"nan.jsonl", "line 5"},
       {"bad_quaternion.jsonl", "line 7"},
       {"backwards.jsonl", "line 10"},
-      {"version2.jsonl", "line 1"},
+      {"version3.jsonl", "line 1"},
       {"unknown_source.jsonl", "line 1"},
       {"bad_surface.jsonl", "line 1"},
       {"truncated.jsonl", "truncated at line 14"}};
