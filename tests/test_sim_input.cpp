@@ -832,3 +832,123 @@ TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
 
 }  // namespace
 }  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+using namespace curvefold::testing;
+
+// A half cylinder (cylinderHeader) simulated from flat: the fold amount ramps to 100%, a pull
+// takes vertex `pulled` toward a point beside the sheet, and the amount goes down to 40%.
+// `withPull`: the pull frames carry it (else the same frames without).
+RecordingHeader cylinderHeader() {
+  RecordingHeader header = squareRecordingHeader();
+  header.surface = GeneratedSurface{"cylinder", {{"resolution", 8}}};
+  return header;
+}
+
+std::vector<InputFrame> simulatedFrames(bool withPull, std::uint32_t pulled = 0) {
+  std::vector<InputFrame> frames;
+  const std::uint32_t steps = 60;
+  double time = 0.0;
+  auto add = [&](double percent, std::optional<SimulationPull> pull) {
+    InputFrame frame = handFrame(time, {0.0, -0.2, 0.0}, 0.0, {0.1, 0.1, 0.1}, 0.0);
+    time += 1.0 / 60.0;
+    frame.simulation = SimulationInput{percent, steps, pull};
+    frames.push_back(frame);
+  };
+  for (int i = 0; i <= 10; ++i) add(100.0 * i / 10.0, std::nullopt);
+  for (int i = 0; i < 10; ++i)
+    add(100.0,
+        withPull ? std::optional(SimulationPull{pulled, {0.0, 0.05, 0.02 * i}}) : std::nullopt);
+  for (int i = 0; i < 5; ++i) add(40.0, std::nullopt);
+  return frames;
+}
+
+bool sameArrays(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)) == 0;
+}
+
+// Issue 39, 4: the simulation is input like the hands. What a live session showed, written to a
+// file and read back, replays to the very same vertex arrays, twice, on the desktop path (the
+// plain player, which knows no panel: the frames carry the fold amount, steps and pull).
+TEST_F(TempDir, ARecordedSimulationReplaysBitForBit) {
+  Recording recording{cylinderHeader(), simulatedFrames(true)};
+  // Live: the frames straight into a player, as a session feeds its core.
+  Player live(recording);
+  while (!live.done()) live.step();
+  ASSERT_NE(live.core().simulation(), nullptr);
+  const std::vector<glm::dvec3> shown = live.core().simulation()->sheet().positions;
+
+  writeRecording(recording, dir_ / "simulated.jsonl");
+  EXPECT_NE(slurp(dir_ / "simulated.jsonl").find("\"pull\":{\"vertex\":0"), std::string::npos);
+  const Recording read = readRecording(dir_ / "simulated.jsonl");
+  const ReplayResult first = replayRecording(read);
+  const ReplayResult second = replayRecording(read);
+  ASSERT_EQ(first.simulated.size(), shown.size());
+  EXPECT_TRUE(sameArrays(first.simulated, shown));
+  EXPECT_TRUE(sameArrays(second.simulated, first.simulated));
+
+  // The pull is part of it: the same frames without it end elsewhere.
+  const ReplayResult unpulled = replayRecording({cylinderHeader(), simulatedFrames(false)});
+  ASSERT_EQ(unpulled.simulated.size(), shown.size());
+  EXPECT_FALSE(sameArrays(unpulled.simulated, shown));
+}
+
+// Simulating never changes the design: leaving it gives back the design bit for bit, and the
+// simulation folds from flat (0%) to the design (100%) and back.
+TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {
+  // A half cylinder: design mode drives every edge to its bending, so 100% is the cylinder (a
+  // reflection fold's sliver triangles would set a step far too short to reach it in a test).
+  const Sheet cylinder = makeSurface("cylinder", {{"resolution", 8}});
+  // A session over it and its core, fed frames as a host's loop feeds them.
+  FoldSession session(cylinder);
+  InteractionCore core(session, Pose{});
+  const Sheet& design = session.fixed();
+  double size = 0.0;
+  for (const glm::dvec3& p : design.positions)
+    size = std::max(size, glm::distance(p, design.positions[0]));
+  auto distanceToDesign = [&] {
+    double largest = 0.0;
+    for (std::size_t v = 0; v < design.vertexCount(); ++v)
+      largest = std::max(
+          largest, glm::distance(core.simulation()->sheet().positions[v], design.positions[v]));
+    return largest;
+  };
+  // The spread of the model's z (its flat state lies in z = 0).
+  auto thickness = [&] {
+    double low = 1e300, high = -1e300;
+    for (const glm::dvec3& p : core.simulation()->state().positions) {
+      low = std::min(low, p.z);
+      high = std::max(high, p.z);
+    }
+    return high - low;
+  };
+  InputFrame frame;
+  auto run = [&](double percent, int count) {
+    for (int i = 0; i < count; ++i) {
+      frame.time += 1.0 / 60.0;
+      frame.simulation = liveSimulationInput(percent, design);
+      core.process(frame);
+    }
+  };
+  const int settleFrames = 2000 / int(liveStepsPerFrame(design.vertexCount()));
+  run(0.0, 1);
+  ASSERT_NE(core.simulation(), nullptr);
+  EXPECT_EQ(thickness(), 0.0);  // it starts flat, the development itself
+  EXPECT_GT(distanceToDesign(), 0.05 * size);
+  run(100.0, settleFrames);
+  EXPECT_LT(distanceToDesign(), 1e-4 * size);
+  run(0.0, settleFrames);
+  EXPECT_LT(thickness(), 0.01 * size);
+  // Leaving the simulation: the design as it was, bit for bit, and no simulation.
+  frame.simulation.reset();
+  frame.time += 1.0 / 60.0;
+  core.process(frame);
+  EXPECT_EQ(core.simulation(), nullptr);
+  EXPECT_TRUE(identical(session.fixed(), cylinder));
+}
+
+}  // namespace
+}  // namespace curvefold
