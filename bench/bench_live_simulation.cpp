@@ -5,7 +5,9 @@
 // (liveStepsPerFrame dynamic steps and the rigid placement), the renderer told the sheet moved
 // (InteractionSheetTracker), sceneForInteraction (the simulated sheet and its creases) and the
 // frame drawn to its fence. Not counted: the ImGui panel's few hundred triangles and the
-// swapchain's present. Counters: fps (frames per second of real time), vertices, steps per frame.
+// swapchain's present. Second argument: 0 the whole frame, 1 the simulation alone (process, no
+// drawing), 2 the drawing alone (process with 0 steps: the placement, the upload, the frame).
+// Counters: fps (frames per second of real time), vertices, steps per frame.
 //
 //   build/bench/bench_live_simulation --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
@@ -44,10 +46,13 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
       frameBounds(worldBounds(session.initial()), ViewPreset::Iso, 1280.0f / 720.0f);
   const Ground ground = groundBelow(worldBounds(session.initial()));
   InputFrame input;
+  const long part = state.range(1);
   auto frame = [&] {
     input.time += 1.0 / 60.0;
     input.simulation = liveSimulationInput(100.0, session.fixed());
+    if (part == 2) input.simulation->steps = 0;
     core.process(input);
+    if (part == 1) return;
     tracker.update(core, r.sceneRenderer());
     Scene scene = desktop::sceneForInteraction(core, input, camera, ground);
     tracker.describe(core, scene.sheet);
@@ -63,7 +68,7 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
   state.SetLabel(r.context().deviceName());
 }
 BENCHMARK(BM_SimulatingWindowFrame)
-    ->Arg(10'000)
+    ->ArgsProduct({{10'000}, {0, 1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(3.0);
