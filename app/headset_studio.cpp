@@ -18,6 +18,10 @@ constexpr double kScrollStepsPerSecond = 10.0;
 // counts as this long, far shorter than any display's frame.
 constexpr double kShortestFrameSeconds = 1e-4;
 
+// While simulating, the trigger takes the sheet's nearest point within this (metres): a hand's
+// width, looser than a fold's hover (a pull need not start exactly on the paper).
+constexpr double kPullReach = 0.08;
+
 }  // namespace
 
 HeadsetStudio::HeadsetStudio(session::Document& doc, HeadsetStudioOptions options,
@@ -27,7 +31,8 @@ HeadsetStudio::HeadsetStudio(session::Document& doc, HeadsetStudioOptions option
       host_(std::move(host)),
       panel_(false,
              "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
-             "at the tip: fold. Panel button: show or hide this panel."),
+             "at the tip: fold (simulating: pull the paper). Panel button: show or hide this "
+             "panel."),
       target_(options_.replaying, options_.suggestionSeconds) {
   context_ = ImGui::CreateContext();
   ImGuiContextScope scope(context_);
@@ -158,6 +163,21 @@ void HeadsetStudio::process(InputFrame& frame, const StudioStats& measured) {
     drawn_ = true;
   }
   lastTime_ = std::max(lastTime_, frame.time);
+
+  // The live simulation (issue 39, 4), as input for the core and the recorder: the panel's fold
+  // amount, and the trigger near the simulated sheet pulling its nearest point (the sheet hand
+  // holds the sheet as ever). A hidden panel keeps simulating at the amount it last had.
+  frame.simulation.reset();
+  if (const std::optional<double> percent = panel_.simulationPercent()) {
+    SimulationInput simulation = liveSimulationInput(*percent, doc_.session->fixed());
+    const InteractionThresholds& thresholds = doc_.core->thresholds();
+    simulation.pull = puller_.update(point, target == PointTarget::Sheet, doc_.core->simulation(),
+                                     doc_.core->worldFromSheet(), doc_.core->viewScale(),
+                                     thresholds.selectPress, thresholds.selectRelease, kPullReach);
+    frame.simulation = simulation;
+  } else {
+    puller_.reset();
+  }
 
   // The buttons the panel pressed reach the core in this frame, as presses (a frame later they
   // are released).

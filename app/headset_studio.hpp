@@ -21,6 +21,7 @@
 #include "app/document.hpp"
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
+#include "interaction/live_simulation.hpp"
 #include "interaction/panel_pointer.hpp"
 
 struct ImGuiContext;
@@ -119,6 +120,7 @@ class HeadsetStudio {
   std::optional<Pose> worldFromPanel_;
   std::optional<PanelRayHit> hit_;
   std::uint32_t pressedByPanel_ = 0;
+  SimulationPuller puller_;  // the point hand's pull while simulating
   double lastTime_ = 0.0;
   bool drawn_ = false;
 };

@@ -110,11 +110,33 @@ void addTranslucentMesh(Scene& scene, const std::vector<glm::dvec3>& positions,
 
 }  // namespace
 
+void InteractionSheetTracker::update(const InteractionCore& core, SceneRenderer& renderer) {
+  if (core.simulation()) {
+    renderer.markSheetReplaced();
+    simulated_ = true;
+    return;
+  }
+  if (simulated_) {
+    tracker_ = SessionSheetTracker(simplify_);
+    renderer.markSheetReplaced();
+    simulated_ = false;
+  }
+  tracker_.update(core.session(), renderer);
+}
+
+void InteractionSheetTracker::describe(const InteractionCore& core, SceneSheet& sheet) const {
+  if (!core.simulation()) tracker_.describe(sheet);
+}
+
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const Camera& camera, const Ground& ground,
                           const InteractionSceneOptions& options) {
   const FoldSession& session = core.session();
-  const Sheet& sheet = session.current();
+  // While simulating (issue 39, 4) the simulated sheet is drawn instead of the design, its creases
+  // where they have folded to. Strain colours hook here once SceneSheet takes a colour per vertex
+  // (LiveSimulation::vertexStrain through a colour map).
+  const LiveSimulation* simulation = core.simulation();
+  const Sheet& sheet = simulation ? simulation->sheet() : session.current();
   const Pose& worldFromSheet = core.worldFromSheet();
   const glm::mat4 model =
       matrixOf(worldFromSheet) * glm::scale(glm::mat4(1.0f), glm::vec3(float(core.viewScale())));
@@ -123,7 +145,7 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
   scene.ground = ground;
   scene.sheet.sheet = &sheet;
   scene.sheet.worldFromSheet = model;
-  scene.sheet.reflectedTriangles = core.reflectedTriangles();
+  if (!simulation) scene.sheet.reflectedTriangles = core.reflectedTriangles();
   scene.creases = creaseLines(sheet, model, scene.colors);
   if (options.creasePatternPanel)
     scene.panel = options.panelCache ? options.panelCache->panelFor(session, scene.colors)
@@ -149,6 +171,13 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
     }
   } else if (const std::optional<HoverPoint>& hover = core.hover()) {
     scene.markers.push_back({world(hover->sheetPosition), 0.015f * size, {1.0f, 0.85f, 0.1f, 1}});
+  }
+  if (simulation && simulation->pull()) {
+    // The pulled point and the spring to the hand.
+    const glm::vec4 spring(0.95f, 0.45f, 0.1f, 1.0f);
+    const glm::dvec3 from = sheet.positions[simulation->pull()->vertex];
+    scene.markers.push_back({world(from), 0.012f * size, spring});
+    scene.lines.push_back({world(from), world(simulation->pull()->to), spring});
   }
   if (options.handMarkers && input.pointHand.tracked)
     scene.markers.push_back(

@@ -9,6 +9,8 @@
 
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/render/scene.hpp"
+#include "engine/render/scene_renderer.hpp"
+#include "engine/render/sheet_tracker.hpp"
 #include "interaction/hand_input.hpp"
 #include "interaction/input_frame.hpp"
 #include "interaction/interaction_core.hpp"
@@ -32,6 +34,25 @@ class CreasePatternCache {
   std::uint64_t revision_ = 0;
   std::size_t builds_ = 0;
   CreasePatternPanel panel_;
+};
+
+// The renderer's copy of what sceneForInteraction draws, frame by frame: the session's sheet
+// through a SessionSheetTracker (its merged display sheet), or, while the core simulates, the
+// simulated sheet, which moves everywhere each frame. Leaving the simulation starts the tracker
+// afresh, so the design comes back whole.
+class InteractionSheetTracker {
+ public:
+  explicit InteractionSheetTracker(bool simplify = true)
+      : simplify_(simplify), tracker_(simplify) {}
+  // Once per frame, before the scene is built.
+  void update(const InteractionCore& core, SceneRenderer& renderer);
+  // After sceneForInteraction: the sheet to draw (the tracker's, unless simulating).
+  void describe(const InteractionCore& core, SceneSheet& sheet) const;
+
+ private:
+  bool simplify_;
+  SessionSheetTracker tracker_;
+  bool simulated_ = false;
 };
 
 struct InteractionSceneOptions {

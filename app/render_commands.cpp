@@ -157,17 +157,17 @@ class ReplayFrameWriter {
     }
     const Camera camera = frameBounds(bounds, ViewPreset::Iso, panel_ ? aspect_ * 0.66f : aspect_);
     const Ground ground = groundBelow(bounds);
-    SessionSheetTracker tracker;
+    desktop::InteractionSheetTracker tracker;
     desktop::CreasePatternCache panelCache;
     std::size_t written = 0;
     while (!player.done()) {
       const std::size_t index = player.nextFrame();
       const InputFrame& input = player.step();
       if (index % every_ != 0 && !player.done()) continue;
-      tracker.update(player.session(), renderer_->sceneRenderer());
+      tracker.update(player.core(), renderer_->sceneRenderer());
       Scene scene = desktop::sceneForInteraction(player.core(), input, camera, ground,
                                                  {panel_, /*handMarkers=*/true, &panelCache});
-      tracker.describe(scene.sheet);
+      tracker.describe(player.core(), scene.sheet);
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
       const RgbaImage image = renderer_->render(scene);

@@ -452,6 +452,7 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
       }
     }
   }
+  drawSimulation(doc);
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::Separator();
   // The isometry error walks every edge: measured again only when the committed sheet changes.
@@ -481,6 +482,45 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
   ImGui::TextWrapped("drag update %.2f ms, frame %.2f ms", stats.dragUpdateMs, stats.frameMs);
   ImGui::TextWrapped("%s", help_.c_str());
   ImGui::End();
+}
+
+std::optional<double> StudioPanel::simulationPercent() const {
+  if (!simulating_) return std::nullopt;
+  return double(foldPercent_);
+}
+
+void StudioPanel::setSimulation(bool on, double percent) {
+  simulating_ = on;
+  foldPercent_ = float(std::clamp(percent, 0.0, 100.0));
+}
+
+void StudioPanel::drawSimulation(const session::Document& doc) {
+  ImGui::Separator();
+  ImGui::Checkbox("simulate", &simulating_);
+  item("simulate");
+  ImGui::SameLine();
+  ImGui::Checkbox("strain", &strainColours_);
+  item("strain");
+  ImGui::BeginDisabled(!simulating_);
+  ImGui::SliderFloat("fold %", &foldPercent_, 0.0f, 100.0f, "%.0f%%", ImGuiSliderFlags_AlwaysClamp);
+  item("fold %");
+  ImGui::EndDisabled();
+  // One line whatever it says, so nothing below moves.
+  const LiveSimulation* simulation = doc.core->simulation();
+  if (!simulating_) {
+    ImGui::TextDisabled("simulation off: the design as designed");
+  } else if (!simulation) {
+    ImGui::TextColored(ImVec4(0.8f, 0.2f, 0.1f, 1.0f), "cannot simulate: %s",
+                       doc.core->simulationProblem().c_str());
+  } else if (strainColours_) {
+    const std::vector<double> strain = simulation->vertexStrain();
+    const double largest = strain.empty() ? 0.0 : *std::max_element(strain.begin(), strain.end());
+    ImGui::Text("%.0f%%, %zu steps, largest strain %.2e", simulation->percent(),
+                simulation->steps(), largest);
+  } else {
+    ImGui::Text("%.0f%%, %zu steps%s", simulation->percent(), simulation->steps(),
+                simulation->pull() ? ", pulled" : "");
+  }
 }
 
 }  // namespace curvefold::studio

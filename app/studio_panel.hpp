@@ -98,6 +98,15 @@ class StudioPanel {
   // The window fills the ImGui display (a headset's panel texture) instead of floating.
   void setFillsDisplay(bool fills) { fillsDisplay_ = fills; }
 
+  // The live simulation (issue 39, 4; the panel's "Simulate" section): the fold amount the slider
+  // asks for while "simulate" is on (0..100), else none; the host puts it into the frame
+  // (liveSimulationInput) for the core. Strain colours: asked for (the renderer's per-vertex colour
+  // shows LiveSimulation::vertexStrain once it has one; until then the panel prints the largest).
+  std::optional<double> simulationPercent() const;
+  bool strainColours() const { return simulating_ && strainColours_; }
+  // Sets the section's state (a test, or a host restoring it).
+  void setSimulation(bool on, double percent);
+
   const std::string& message() const { return message_; }
   void setMessage(std::string message) { message_ = std::move(message); }
   // Where the item with this label was drawn last frame (screen pixels), if it was.
@@ -123,6 +132,8 @@ class StudioPanel {
   // A finished dialog's path goes into the field it was opened for.
   void takePicked();
   void browse(bool save);
+  // The "Simulate" section: its own items, after every item a recorded session points at.
+  void drawSimulation(const session::Document& doc);
   void writeThrough(const StudioActions& actions, const std::string& path,
                     const std::function<void(const std::string&)>& write);
 
@@ -152,6 +163,9 @@ class StudioPanel {
   bool desktop_ = false;
   std::unique_ptr<FilePicker> picker_;  // null without the portal or zenity
   bool pickingSave_ = false;            // the dialog open is Save's, else Open's
+  bool simulating_ = false;
+  float foldPercent_ = 100.0f;  // a new simulation folds from flat to the design
+  bool strainColours_ = false;
 };
 
 }  // namespace curvefold::studio

@@ -84,6 +84,8 @@ ReplayResult replayStudioRecording(const Recording& recording, const ReplayOptio
   result.sheet = doc.session->fixed();
   result.frameCount = recording.frames.size();
   result.endedWhileDragging = doc.session->dragging();
+  if (const LiveSimulation* simulation = doc.core->simulation())
+    result.simulated = simulation->sheet().positions;
   return result;
 }
 

@@ -59,6 +59,23 @@ struct SuggestedFold {
   bool operator==(const SuggestedFold&) const = default;
 };
 
+// The live simulation (issue 39, 4): while a frame carries one, the sheet is drawn as the
+// bar-and-hinge model folds it (interaction/live_simulation.hpp) instead of as designed, and the
+// point hand pulls the sheet instead of folding it. Input like the hands, so a recording keeps it
+// and a replay steps the very same way (a fixed step count per frame, never the wall clock).
+struct SimulationPull {
+  std::uint32_t vertex = 0;  // of the committed design's sheet
+  glm::dvec3 to{0.0};        // where the spring pulls it, sheet coordinates
+  bool operator==(const SimulationPull&) const = default;
+};
+
+struct SimulationInput {
+  double percent = 0.0;     // fold amount, 0 (flat) to 100 (the design)
+  std::uint32_t steps = 0;  // dynamic steps this frame
+  std::optional<SimulationPull> pull;
+  bool operator==(const SimulationInput&) const = default;
+};
+
 struct InputFrame {
   double time = 0.0;  // seconds since the start of the session
 
@@ -95,6 +112,9 @@ struct InputFrame {
   // are input like the hands: the core offers them until the design changes, and a recording
   // keeps them, so a replay offers the same folds at the same moment without searching again.
   std::vector<SuggestedFold> suggestions;
+
+  // Present while the sheet is simulated (see SimulationInput).
+  std::optional<SimulationInput> simulation;
 
   bool held(Button button) const { return (buttons & static_cast<std::uint32_t>(button)) != 0; }
 };

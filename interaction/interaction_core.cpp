@@ -96,7 +96,36 @@ void InteractionCore::process(const InputFrame& frame, PointTarget target) {
   }
   handleButtons(frame);
   handleSheetHand(frame);
+  if (handleSimulation(frame)) {
+    // The trigger pulls the simulated sheet (the host says where, in frame.simulation): it is
+    // tracked so that one still held when the simulation ends does not grab.
+    selectHeld_ = frame.pointHand.tracked && frame.pointHand.select >= thresholds_.selectPress;
+    return;
+  }
   handlePointHand(frame, target);
+}
+
+bool InteractionCore::handleSimulation(const InputFrame& frame) {
+  if (!frame.simulation) {
+    simulation_.reset();
+    simulationRevision_.reset();
+    simulationProblem_.clear();
+    return false;
+  }
+  endDrag(false, frame.time);
+  hover_.reset();
+  if (simulationRevision_ != session_.fixedRevision()) {
+    simulation_.reset();
+    simulationRevision_ = session_.fixedRevision();
+    try {
+      simulation_ = std::make_unique<LiveSimulation>(session_.fixed());
+      simulationProblem_.clear();
+    } catch (const std::exception& e) {
+      simulationProblem_ = e.what();
+    }
+  }
+  if (simulation_) simulation_->advance(*frame.simulation);
+  return true;
 }
 
 void InteractionCore::endDrag(bool commit, double time) {

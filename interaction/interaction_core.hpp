@@ -9,12 +9,14 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "interaction/hand_side.hpp"
 #include "interaction/input_frame.hpp"
+#include "interaction/live_simulation.hpp"
 #include "interaction/surface_picker.hpp"
 
 namespace curvefold {
@@ -152,6 +154,13 @@ class InteractionCore {
   std::size_t offerIndex() const { return offeredFold() ? offerIndex_ : 0; }
   std::size_t offerCount() const { return offeredFold() ? offers_.size() : 0; }
   const FoldSession& session() const { return session_; }
+  // The live simulation while frames carry one (InputFrame::simulation), else null: made from the
+  // committed design when the first such frame comes (again when the design changes: an undo),
+  // dropped when one comes without. While it runs the point hand neither hovers nor folds (a
+  // drag under way is cancelled); the sheet hand holds the sheet as ever. The design is untouched.
+  const LiveSimulation* simulation() const { return simulation_.get(); }
+  // Why the last frame's simulation could not be made (a sheet the model refuses), else empty.
+  const std::string& simulationProblem() const { return simulationProblem_; }
 
   // What happened in the last processed frame, and the haptic pulses it asks for.
   const std::vector<InteractionEvent>& events() const { return events_; }
@@ -166,6 +175,8 @@ class InteractionCore {
   bool handleTwoHands(const InputFrame& frame);
   void handlePointHand(const InputFrame& frame, PointTarget target);
   void endDrag(bool commit, double time);
+  // Makes, advances or drops the live simulation for this frame; true while it runs.
+  bool handleSimulation(const InputFrame& frame);
   // Starts a drag of the offered fold, already at its drop point. False (and the offer dropped)
   // when its seed is not on the sheet (a recording's mistake).
   bool dragOffered(double time);
@@ -217,6 +228,11 @@ class InteractionCore {
   std::vector<SuggestedFold> offers_;
   std::size_t offerIndex_ = 0;
   std::uint64_t offerRevision_ = 0;
+
+  std::unique_ptr<LiveSimulation> simulation_;
+  // The design's fixedRevision it was made from (or failed to be made from).
+  std::optional<std::uint64_t> simulationRevision_;
+  std::string simulationProblem_;
 };
 
 }  // namespace curvefold

@@ -231,7 +231,9 @@ void GestureRecorder::drag(const glm::dvec3& grabNear, const std::vector<glm::dv
   frame_.pointHand.select = 1.0;
   if (turnDuring) frame_.sheetHand.clutch = 1.0;
   step();
-  if (core().state() != InteractionState::Dragging)
+  // While the sheet is simulated (issue 39, 4) the trigger pulls the point instead of folding.
+  const bool pulling = core().simulation() && core().simulation()->pull();
+  if (core().state() != InteractionState::Dragging && !pulling)
     throw GestureError("drag: could not grab the sheet near the given point");
 
   // Along the polyline grabbed -> path..., by arc length, in the sheet frame of the start. Points

@@ -19,7 +19,8 @@
 //      {"sheet_hand":{"to":{"position":[x,y,z],"orientation":[w,x,y,z]},"duration":0.5,
 //                     "clutch":true}},                         // world pose; clutch optional
 //      {"drag":{"grab":[x,y,z],"to":[x,y,z],"via":[[x,y,z]],"duration":1.0,
-//               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional
+//               "turn_sheet":{"axis":[1,0,0],"degrees":20}}},  // sheet points; turn optional;
+//                                              // while simulating (studio), a pull, not a fold
 //      {"undo":{}}, {"redo":{}}, {"cancel":{}}, {"switch_hands":{}},  // "hold":0.12 optional
 //      {"point_at":{"item":"Create","click":true,"duration":0.5,"hold":0.12}},  // studio: an item
 //      {"toggle_panel":{}}]}                                          // studio: show or hide it

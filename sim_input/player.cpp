@@ -195,6 +195,8 @@ ReplayResult replayRecording(const Recording& recording, const ReplayOptions& op
   result.log = player.log();
   result.frameCount = recording.frames.size();
   result.endedWhileDragging = player.session().dragging();
+  if (const LiveSimulation* simulation = player.core().simulation())
+    result.simulated = simulation->sheet().positions;
   return result;
 }
 

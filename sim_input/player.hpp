@@ -107,6 +107,8 @@ struct ReplayResult {
   std::size_t frameCount = 0;
   double duration = 0.0;            // seconds of recording
   bool endedWhileDragging = false;  // the recording stopped inside a drag, which was dropped
+  // The simulated sheet's positions when the recording ends simulating (issue 39, 4), else empty.
+  std::vector<glm::dvec3> simulated;
 };
 
 ReplayResult replayRecording(const Recording& recording, const ReplayOptions& options = {});

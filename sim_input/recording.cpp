@@ -30,6 +30,11 @@ constexpr Button kButtons[] = {Button::Cancel,        Button::Undo,  Button::Red
                                Button::SwitchHands,   Button::Panel, Button::TakeSuggestion,
                                Button::NextSuggestion};
 
+// A simulated frame's largest step count and pulled vertex index (the model's limits are far
+// below; a file's wild number is refused here rather than run for hours).
+constexpr std::uint64_t kMaxSimulationStepsPerFrame = 10000;
+constexpr std::uint64_t kMaxPullVertex = 0xFFFFFFFEu;
+
 // The most suggestions one frame brings (the studio asks for a few).
 constexpr std::size_t kMaxSuggestionsPerFrame = 16;
 
@@ -88,7 +93,8 @@ class LineReader : public JsonReader {
   }
 
   RecordingHeader readHeader(const json& value) const {
-    formatAndVersion(value, kRecordingFormat, kRecordingVersion, "curvefold recording");
+    formatAndVersion(value, kRecordingFormat, kOldestRecordingVersion, kRecordingVersion,
+                     "curvefold recording");
 
     RecordingHeader header;
     header.source = string(member(value, "source", ""), "source");
@@ -200,7 +206,34 @@ class LineReader : public JsonReader {
                                      vector3(member(fold, "to", where), where + ".to")});
       }
     }
+    if (const json* simulation = optionalMember(value, "simulation", ""))
+      frame.simulation = readSimulation(*simulation);
     return frame;
+  }
+
+  SimulationInput readSimulation(const json& value) const {
+    if (!value.is_object()) fail("simulation", "must be an object with percent and steps");
+    SimulationInput simulation;
+    simulation.percent = number(member(value, "percent", "simulation"), "simulation.percent");
+    if (!(simulation.percent >= 0.0 && simulation.percent <= 100.0))
+      fail("simulation.percent", "must lie in [0, 100], got " + shortestDouble(simulation.percent));
+    const std::uint64_t steps =
+        unsignedInteger(member(value, "steps", "simulation"), "simulation.steps");
+    if (steps > kMaxSimulationStepsPerFrame)
+      fail("simulation.steps", "must be at most " + std::to_string(kMaxSimulationStepsPerFrame) +
+                                   ", got " + std::to_string(steps));
+    simulation.steps = std::uint32_t(steps);
+    if (const json* pull = optionalMember(value, "pull", "simulation")) {
+      if (!pull->is_object()) fail("simulation.pull", "must be an object with vertex and to");
+      const std::uint64_t vertex =
+          unsignedInteger(member(*pull, "vertex", "simulation.pull"), "simulation.pull.vertex");
+      if (vertex > kMaxPullVertex)
+        fail("simulation.pull.vertex", "must be at most " + std::to_string(kMaxPullVertex));
+      simulation.pull =
+          SimulationPull{std::uint32_t(vertex),
+                         vector3(member(*pull, "to", "simulation.pull"), "simulation.pull.to")};
+    }
+    return simulation;
   }
 
   std::size_t line_;
@@ -292,6 +325,13 @@ std::string frameLine(const InputFrame& frame) {
       suggestions.push_back({{"seed", ordered_json::array({fold.seed.x, fold.seed.y})},
                              {"grab", positionJson(fold.grab)},
                              {"to", positionJson(fold.to)}});
+  }
+  if (frame.simulation) {
+    ordered_json simulation = {{"percent", frame.simulation->percent},
+                               {"steps", frame.simulation->steps}};
+    if (const std::optional<SimulationPull>& pull = frame.simulation->pull)
+      simulation["pull"] = {{"vertex", pull->vertex}, {"to", positionJson(pull->to)}};
+    value["simulation"] = std::move(simulation);
   }
   std::string line = value.dump();
   LineReader("cannot record frame at t=" + shortestDouble(frame.time), 0).frame(json::parse(line));

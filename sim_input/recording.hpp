@@ -2,7 +2,7 @@
 // headset, the desktop, a gesture script) can be replayed bit for bit without its source.
 //
 // Line 1 is the header:
-//   {"format":"curvefold-recording","version":1,"source":"openxr","handedness":"right",
+//   {"format":"curvefold-recording","version":2,"source":"openxr","handedness":"right",
 //    "units":"m","rate":90,"sheet_frame":{"position":[x,y,z],"orientation":[w,x,y,z]},
 //    "surface":{...the "surface" object of a design document...}}
 // then one frame per line:
@@ -17,6 +17,9 @@
 // bare hands began), "desktop", "script" or "synthetic"; the frames are the same either way.
 // "suggestions" ([{"seed":[u,v],"grab":[x,y,z],"to":[x,y,z]}], best first) are the studio's
 // suggested folds that arrived in that frame (docs/design.md 9), so a replay offers the same ones.
+// "simulation" ({"percent":P,"steps":N,"pull":{"vertex":i,"to":[x,y,z]}}, version 2) is present
+// while the sheet is simulated (InputFrame::simulation): the fold amount (0..100), the dynamic
+// steps the frame takes, and the vertex a hand pulls toward `to` (sheet coordinates), if any.
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
 // shortest exact form, so parsing a line gives back the very bits that were written.
 #pragma once
@@ -37,7 +40,9 @@
 namespace curvefold {
 
 inline constexpr std::string_view kRecordingFormat = "curvefold-recording";
-inline constexpr int kRecordingVersion = 1;
+// Version 2 added "simulation" (issue 39); version 1 files read as ever (they have none).
+inline constexpr int kRecordingVersion = 2;
+inline constexpr int kOldestRecordingVersion = 1;
 
 // A quaternion whose length is further than this from 1 is refused rather than normalised, so
 // that replay sees exactly the recorded bits. OpenXR's float poses stay well within it.

@@ -3,6 +3,7 @@
 // at panel items by their label. The same studio runs in `curvefold xr` (test_xr drives it through
 // the runtime) and in `curvefold replay`.
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -289,6 +290,86 @@ TEST_F(HeldPanel, PanelButtonsActOnTheCore) {
   EXPECT_NE(doc_.core->worldFromSheet(), start);
   click("Reset view");
   EXPECT_EQ(doc_.core->worldFromSheet(), start);
+}
+
+// Issue 39, 4: in the headset, "simulate" on the panel folds the sheet live (the frames carry the
+// fold amount and steps); the trigger near the simulated sheet pulls its nearest point toward the
+// hand; the sheet hand holds the sheet as when designing; the frames, recorded, replay through the
+// studio to the very same vertex arrays, twice; and "simulate" off gives back the design untouched.
+TEST_F(HeldPanel, SimulatingInTheHeadsetPullsHoldsAndReplaysBitForBit) {
+  const Sheet design = doc_.session->fixed();
+  std::vector<InputFrame> recorded{frame_};  // the fixture's first frame
+  auto sendRecorded = [&] {
+    send();
+    recorded.push_back(frame_);
+  };
+  auto click = [&](const std::string& label) {
+    tipOnSheetAimingAt(label);
+    sendRecorded();
+    frame_.pointHand.select = 1.0;
+    sendRecorded();
+    frame_.pointHand.select = 0.0;
+    sendRecorded();
+  };
+  click("simulate");
+  ASSERT_TRUE(studio_.panel().simulationPercent().has_value());
+  ASSERT_TRUE(frame_.simulation.has_value());
+  EXPECT_EQ(frame_.simulation->steps, liveStepsPerFrame(design.vertexCount()));
+  ASSERT_NE(doc_.core->simulation(), nullptr);
+
+  // The sheet hand holds the simulated sheet: it moves with the grip.
+  frame_.pointHand.aim = kDown;
+  frame_.pointHand.position = {0.2, 1.3, -0.2};
+  const glm::dvec3 before = doc_.core->worldOf(doc_.core->simulation()->sheet().positions[0]);
+  frame_.sheetHand.clutch = 1.0;
+  sendRecorded();
+  frame_.sheetHand.pose.position += glm::dvec3(0.05, 0.0, 0.0);
+  sendRecorded();
+  frame_.sheetHand.clutch = 0.0;
+  sendRecorded();
+  const glm::dvec3 after = doc_.core->worldOf(doc_.core->simulation()->sheet().positions[0]);
+  EXPECT_NEAR(after.x - before.x, 0.05, 1e-3);
+
+  // The trigger 4 cm off the sheet's corner pulls the corner toward the tip.
+  const LiveSimulation& simulation = *doc_.core->simulation();
+  std::uint32_t corner = 0;
+  for (std::uint32_t v = 0; v < simulation.sheet().vertexCount(); ++v)
+    if (simulation.sheet().positions[v].x + simulation.sheet().positions[v].y >
+        simulation.sheet().positions[corner].x + simulation.sheet().positions[corner].y)
+      corner = v;
+  const glm::dvec3 tip = simulation.sheet().positions[corner] + glm::dvec3(0.0, 0.0, 0.04);
+  frame_.pointHand.position = doc_.core->worldOf(tip);
+  frame_.pointHand.select = 1.0;
+  for (int i = 0; i < 30; ++i) sendRecorded();
+  ASSERT_TRUE(frame_.simulation && frame_.simulation->pull);
+  EXPECT_EQ(frame_.simulation->pull->vertex, corner);
+  EXPECT_EQ(doc_.core->state(), InteractionState::Idle);  // pulling, not folding
+  EXPECT_LT(glm::distance(doc_.core->simulation()->sheet().positions[corner], tip), 0.02);
+  frame_.pointHand.select = 0.0;
+  sendRecorded();
+  EXPECT_FALSE(frame_.simulation->pull.has_value());
+  const std::vector<glm::dvec3> shown = doc_.core->simulation()->sheet().positions;
+
+  // The recording replays through the studio to the same arrays, twice.
+  RecordingHeader header;
+  header.surface = GeneratedSurface{"square", {{"resolution", 10}}};
+  header.sheetFrame = defaultSheetFrame();
+  header.studio = RecordingHeader::Studio{};
+  const Recording recording{header, recorded};
+  const ReplayResult first = replayStudioRecording(recording);
+  const ReplayResult second = replayStudioRecording(recording);
+  ASSERT_EQ(first.simulated.size(), shown.size());
+  EXPECT_EQ(std::memcmp(first.simulated.data(), shown.data(), shown.size() * sizeof(glm::dvec3)),
+            0);
+  EXPECT_EQ(std::memcmp(second.simulated.data(), shown.data(), shown.size() * sizeof(glm::dvec3)),
+            0);
+
+  // Off: the design as it was, bit for bit.
+  click("simulate");
+  EXPECT_FALSE(frame_.simulation.has_value());
+  EXPECT_EQ(doc_.core->simulation(), nullptr);
+  EXPECT_TRUE(identical(doc_.session->fixed(), design));
+  EXPECT_EQ(doc_.session->foldCount(), 0u);
 }
 
 // Issue 28: a panel item acts once per press, however long the trigger is held on it: held for

@@ -92,7 +92,7 @@ TEST_F(ReplayCli, BadRecordingsGiveOneLineAndNoFiles) {
       {"nan.jsonl", "line 5: sheet.position[1]: must be a finite number"},
       {"bad_quaternion.jsonl", "line 7: sheet.orientation: is not a unit quaternion"},
       {"backwards.jsonl", "line 10: t: time goes backwards"},
-      {"version2.jsonl", "line 1: unsupported version 2"},
+      {"version3.jsonl", "line 1: unsupported version 3"},
       {"unknown_source.jsonl", "line 1: source: unknown source \"kinect\""},
       {"bad_surface.jsonl", "line 1: surface \"square\""},
       {"truncated.jsonl", "truncated at line 14"},

@@ -75,6 +75,16 @@ void expectSameFrame(const InputFrame& a, const InputFrame& b, std::size_t index
     expectSameBits(a.suggestions[i].grab, b.suggestions[i].grab, which + " grab");
     expectSameBits(a.suggestions[i].to, b.suggestions[i].to, which + " to");
   }
+  ASSERT_EQ(a.simulation.has_value(), b.simulation.has_value()) << what;
+  if (a.simulation) {
+    EXPECT_TRUE(sameBits(a.simulation->percent, b.simulation->percent)) << what;
+    EXPECT_EQ(a.simulation->steps, b.simulation->steps) << what;
+    ASSERT_EQ(a.simulation->pull.has_value(), b.simulation->pull.has_value()) << what;
+    if (a.simulation->pull) {
+      EXPECT_EQ(a.simulation->pull->vertex, b.simulation->pull->vertex) << what;
+      expectSameBits(a.simulation->pull->to, b.simulation->pull->to, what + " pull");
+    }
+  }
 }
 
 std::string recordingText(const RecordingHeader& header, const std::vector<InputFrame>& frames) {
@@ -170,6 +180,12 @@ TEST(Recording, HeaderAndFramesRoundTripBitForBit) {
       for (int k = 0; k <= i % 4; ++k)
         frame.suggestions.push_back(
             {{a, any(random)}, {any(random), a, any(random)}, {any(random), any(random), a}});
+    // The live simulation (issue 39, 4): its fold amount, steps and pull, kept exactly.
+    if (i % 3 == 1) {
+      frame.simulation = SimulationInput{100.0 * unit(random), std::uint32_t(i % 40), {}};
+      if (i % 2 == 0)
+        frame.simulation->pull = SimulationPull{std::uint32_t(i * 7), {a, any(random), -0.0}};
+    }
     frames.push_back(frame);
   }
   header.studio = RecordingHeader::Studio{{"a.curvefold.json", "designs/b c.curvefold.json"}};
@@ -211,7 +227,7 @@ TEST(Recording, FrameLinesAreJsonWithTheDocumentedKeys) {
   frame.buttons = 0;
   EXPECT_EQ(frameLine(frame).find("buttons"), std::string::npos);
   EXPECT_EQ(headerLine(squareRecordingHeader()),
-            R"({"format":"curvefold-recording","version":1,"source":"synthetic",)"
+            R"({"format":"curvefold-recording","version":2,"source":"synthetic",)"
             R"("handedness":"right","units":"m","rate":10.0,"sheet_frame":{"position":[0.0,0.0,)"
             R"(0.0],"orientation":[1.0,0.0,0.0,0.0]},"surface":{"generator":"square",)"
             R"("parameters":{"resolution":10.0}}})");
@@ -270,10 +286,26 @@ TEST(Recording, BadInputNamesFileAndLine) {
       {"suggestion seed NaN", 11, "\"select\":1.0}",
        "\"select\":1.0},\"suggestions\":[{\"seed\":[null,0],\"grab\":[0,0,0],\"to\":[0,0,1]}]",
        "suggestions[0].seed"},
+      {"simulation percent past 100", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":150,\"steps\":4}",
+       "simulation.percent: must lie in [0, 100]"},
+      {"simulation steps past the limit", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":20000}",
+       "simulation.steps: must be at most"},
+      {"simulation without steps", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50}", "missing \"steps\""},
+      {"simulation pull NaN", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":4,"
+       "\"pull\":{\"vertex\":3,\"to\":[0,null,0]}}",
+       "simulation.pull.to"},
+      {"simulation pull negative vertex", 11, "\"select\":1.0}",
+       "\"select\":1.0},\"simulation\":{\"percent\":50,\"steps\":4,"
+       "\"pull\":{\"vertex\":-1,\"to\":[0,0,0]}}",
+       "simulation.pull.vertex"},
       {"buttons not an array", 11, "\"select\":1.0}", "\"select\":1.0},\"buttons\":\"undo\"",
        "buttons"},
-      {"unknown version", 1, "\"version\":1", "\"version\":2", "unsupported version 2"},
-      {"version not integer", 1, "\"version\":1", "\"version\":1.5", "unsupported version 1.5"},
+      {"unknown version", 1, "\"version\":2", "\"version\":3", "unsupported version 3"},
+      {"version not integer", 1, "\"version\":2", "\"version\":1.5", "unsupported version 1.5"},
       {"not a recording", 1, "curvefold-recording", "curvefold-design",
        "not a curvefold recording"},
       {"unknown source", 1, "\"synthetic\"", "\"kinect\"", "unknown source \"kinect\""},
@@ -451,7 +483,7 @@ TEST(Recording, DataFilesAreReadWithTheirPathInErrors) {
       {"nan.jsonl", "line 5"},
       {"bad_quaternion.jsonl", "line 7"},
       {"backwards.jsonl", "line 10"},
-      {"version2.jsonl", "line 1"},
+      {"version3.jsonl", "line 1"},
       {"unknown_source.jsonl", "line 1"},
       {"bad_surface.jsonl", "line 1"},
       {"truncated.jsonl", "truncated at line 14"}};
@@ -796,6 +828,126 @@ TEST(Recording, ASymmetricSessionReplaysWithItsImages) {
   } catch (const RecordingError& e) {
     EXPECT_NE(std::string(e.what()).find("rotational:5"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+using namespace curvefold::testing;
+
+// A half cylinder (cylinderHeader) simulated from flat: the fold amount ramps to 100%, a pull
+// takes vertex `pulled` toward a point beside the sheet, and the amount goes down to 40%.
+// `withPull`: the pull frames carry it (else the same frames without).
+RecordingHeader cylinderHeader() {
+  RecordingHeader header = squareRecordingHeader();
+  header.surface = GeneratedSurface{"cylinder", {{"resolution", 8}}};
+  return header;
+}
+
+std::vector<InputFrame> simulatedFrames(bool withPull, std::uint32_t pulled = 0) {
+  std::vector<InputFrame> frames;
+  const std::uint32_t steps = 60;
+  double time = 0.0;
+  auto add = [&](double percent, std::optional<SimulationPull> pull) {
+    InputFrame frame = handFrame(time, {0.0, -0.2, 0.0}, 0.0, {0.1, 0.1, 0.1}, 0.0);
+    time += 1.0 / 60.0;
+    frame.simulation = SimulationInput{percent, steps, pull};
+    frames.push_back(frame);
+  };
+  for (int i = 0; i <= 10; ++i) add(100.0 * i / 10.0, std::nullopt);
+  for (int i = 0; i < 10; ++i)
+    add(100.0,
+        withPull ? std::optional(SimulationPull{pulled, {0.0, 0.05, 0.02 * i}}) : std::nullopt);
+  for (int i = 0; i < 5; ++i) add(40.0, std::nullopt);
+  return frames;
+}
+
+bool sameArrays(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)) == 0;
+}
+
+// Issue 39, 4: the simulation is input like the hands. What a live session showed, written to a
+// file and read back, replays to the very same vertex arrays, twice, on the desktop path (the
+// plain player, which knows no panel: the frames carry the fold amount, steps and pull).
+TEST_F(TempDir, ARecordedSimulationReplaysBitForBit) {
+  Recording recording{cylinderHeader(), simulatedFrames(true)};
+  // Live: the frames straight into a player, as a session feeds its core.
+  Player live(recording);
+  while (!live.done()) live.step();
+  ASSERT_NE(live.core().simulation(), nullptr);
+  const std::vector<glm::dvec3> shown = live.core().simulation()->sheet().positions;
+
+  writeRecording(recording, dir_ / "simulated.jsonl");
+  EXPECT_NE(slurp(dir_ / "simulated.jsonl").find("\"pull\":{\"vertex\":0"), std::string::npos);
+  const Recording read = readRecording(dir_ / "simulated.jsonl");
+  const ReplayResult first = replayRecording(read);
+  const ReplayResult second = replayRecording(read);
+  ASSERT_EQ(first.simulated.size(), shown.size());
+  EXPECT_TRUE(sameArrays(first.simulated, shown));
+  EXPECT_TRUE(sameArrays(second.simulated, first.simulated));
+
+  // The pull is part of it: the same frames without it end elsewhere.
+  const ReplayResult unpulled = replayRecording({cylinderHeader(), simulatedFrames(false)});
+  ASSERT_EQ(unpulled.simulated.size(), shown.size());
+  EXPECT_FALSE(sameArrays(unpulled.simulated, shown));
+}
+
+// Simulating never changes the design: leaving it gives back the design bit for bit, and the
+// simulation folds from flat (0%) to the design (100%) and back.
+TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {
+  // A half cylinder: design mode drives every edge to its bending, so 100% is the cylinder (a
+  // reflection fold's sliver triangles would set a step far too short to reach it in a test).
+  const Sheet cylinder = makeSurface("cylinder", {{"resolution", 8}});
+  // A session over it and its core, fed frames as a host's loop feeds them.
+  FoldSession session(cylinder);
+  InteractionCore core(session, Pose{});
+  const Sheet& design = session.fixed();
+  double size = 0.0;
+  for (const glm::dvec3& p : design.positions)
+    size = std::max(size, glm::distance(p, design.positions[0]));
+  auto distanceToDesign = [&] {
+    double largest = 0.0;
+    for (std::size_t v = 0; v < design.vertexCount(); ++v)
+      largest = std::max(
+          largest, glm::distance(core.simulation()->sheet().positions[v], design.positions[v]));
+    return largest;
+  };
+  // The spread of the model's z (its flat state lies in z = 0).
+  auto thickness = [&] {
+    double low = 1e300, high = -1e300;
+    for (const glm::dvec3& p : core.simulation()->state().positions) {
+      low = std::min(low, p.z);
+      high = std::max(high, p.z);
+    }
+    return high - low;
+  };
+  InputFrame frame;
+  auto run = [&](double percent, int count) {
+    for (int i = 0; i < count; ++i) {
+      frame.time += 1.0 / 60.0;
+      frame.simulation = liveSimulationInput(percent, design);
+      core.process(frame);
+    }
+  };
+  const int settleFrames = 2000 / int(liveStepsPerFrame(design.vertexCount()));
+  run(0.0, 1);
+  ASSERT_NE(core.simulation(), nullptr);
+  EXPECT_EQ(thickness(), 0.0);  // it starts flat, the development itself
+  EXPECT_GT(distanceToDesign(), 0.05 * size);
+  run(100.0, settleFrames);
+  EXPECT_LT(distanceToDesign(), 1e-4 * size);
+  run(0.0, settleFrames);
+  EXPECT_LT(thickness(), 0.01 * size);
+  // Leaving the simulation: the design as it was, bit for bit, and no simulation.
+  frame.simulation.reset();
+  frame.time += 1.0 / 60.0;
+  core.process(frame);
+  EXPECT_EQ(core.simulation(), nullptr);
+  EXPECT_TRUE(identical(session.fixed(), cylinder));
 }
 
 }  // namespace

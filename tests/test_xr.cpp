@@ -19,6 +19,7 @@
 #include <stb/stb_image.h>
 #include <nlohmann/json.hpp>
 
+#include "app/studio_replay.hpp"
 #include "interaction/xr/xr_check.hpp"
 #include "interaction/xr/xr_input.hpp"
 #include "interaction/xr/xr_program.hpp"
@@ -195,6 +196,47 @@ TEST_F(XrApp, TwoHandedScaleGoesThroughTheRuntime) {
   ASSERT_EQ(reference["folds"].size(), 1u);
   expectClose(load("xr.curvefold.json")["folds"], reference["folds"], 1e-5, "folds");
   EXPECT_NE(slurp(path("xr.jsonl")).find("\"grip\":1"), std::string::npos);
+}
+
+// Issue 39, 4: the live simulation through the loader and the simulated runtime. A studio script
+// ticks "simulate" on the held panel, waits while the sheet folds, then "drags" a corner, which
+// while simulating pulls it (a spring to the tip) instead of folding. The XR session's own
+// recording carries the fold amount, steps and pulls, replays through the studio to the very same
+// simulated vertex arrays twice, and the design stays without a fold.
+TEST_F(XrApp, TheSimulatedSheetIsPulledThroughTheRuntimeAndReplaysBitForBit) {
+  std::ofstream(path("simulate.gesture.json")) << R"({"format": "curvefold-gesture-script",
+    "version": 1, "rate": 60, "studio": {},
+    "surface": {"generator": "cylinder", "parameters": {"resolution": 8}},
+    "gestures": [{"wait": 0.2},
+                 {"sheet_hand": {"to": {"position": [-0.22, 0.92, -0.42]}, "duration": 0.3}},
+                 {"point_at": {"item": "simulate", "duration": 0.3}},
+                 {"wait": 0.3},
+                 {"drag": {"grab": [0.05, 0.05, 0], "to": [0.05, 0.02, 0.05], "duration": 0.4}},
+                 {"wait": 0.2}]})";
+  const std::string script = path("simulate.jsonl").string();
+  const CommandResult recordedScript =
+      run("record-script " + path("simulate.gesture.json").string() + " -o " + script);
+  ASSERT_EQ(recordedScript.exitCode, 0) << recordedScript.err;
+  const CommandResult result =
+      run("xr " + script + " --headless --record xr.jsonl --autosave xr.curvefold.json",
+          simulated(script));
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const Recording recorded = readRecording(path("xr.jsonl"));
+  std::size_t simulatedFrames = 0, pulledFrames = 0;
+  for (const InputFrame& frame : recorded.frames) {
+    simulatedFrames += frame.simulation.has_value();
+    pulledFrames += frame.simulation && frame.simulation->pull;
+  }
+  EXPECT_GT(simulatedFrames, 30u);
+  EXPECT_GT(pulledFrames, 5u);
+  const ReplayResult first = studio::replayStudioRecording(recorded);
+  const ReplayResult second = studio::replayStudioRecording(recorded);
+  ASSERT_FALSE(first.simulated.empty());
+  ASSERT_EQ(second.simulated.size(), first.simulated.size());
+  EXPECT_EQ(std::memcmp(first.simulated.data(), second.simulated.data(),
+                        first.simulated.size() * sizeof(glm::dvec3)),
+            0);
+  EXPECT_EQ(first.design.folds.size(), 0u);
 }
 
 // A FOLD file's folded form is isometric to its crease pattern (every face edge the same length

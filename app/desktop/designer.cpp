@@ -158,7 +158,7 @@ void runDesigner(const DesignerOptions& options) {
       samples);
   FrameRing frames(context);
   SceneRenderer renderer(context, target);
-  SessionSheetTracker tracker;
+  desktop::InteractionSheetTracker tracker;
 
   // ImGui, drawn in the scene pass (its MSAA sample count).
   const VkDescriptorPool imguiPool =
@@ -295,7 +295,7 @@ void runDesigner(const DesignerOptions& options) {
     doc = std::move(fresh);
     goal.documentReplaced();
     renderer.markSheetReplaced();
-    tracker = SessionSheetTracker();
+    tracker = desktop::InteractionSheetTracker();
     state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
     frameView();
     ground = groundBelow(worldBounds(doc.session->fixed()));
@@ -376,10 +376,13 @@ void runDesigner(const DesignerOptions& options) {
       }
     }
     InputFrame input = state.input.frame(time);
+    // The panel's simulation (issue 39, 4) is input like the mouse, so the recording keeps it.
+    if (const std::optional<double> percent = panel.simulationPercent())
+      input.simulation = liveSimulationInput(*percent, doc.session->fixed());
     goal.poll(doc, input);  // a finished search's folds join the frame, and its recording
     const Clock::time_point processStart = Clock::now();
     doc.core->process(input);
-    if (doc.session->dragging())
+    if (doc.session->dragging() || doc.core->simulation())
       stats.dragUpdateMs =
           std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
     outputs.frame(input, doc.core->events());
@@ -409,11 +412,11 @@ void runDesigner(const DesignerOptions& options) {
             size.y);
       }
     }
-    tracker.update(*doc.session, renderer);
+    tracker.update(*doc.core, renderer);
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
                                     {creasePatternPanel, /*handMarkers=*/false, &panelCache,
                                      goal.mesh(), goal.offeredResult(*doc.core)});
-    tracker.describe(lastScene.sheet);
+    tracker.describe(*doc.core, lastScene.sheet);
     stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
     drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {

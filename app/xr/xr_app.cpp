@@ -102,7 +102,7 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   program_ = std::make_unique<XrProgram>(programOptions, graphics_.get());
   input_ = std::make_unique<XrInput>(program_->instance(), program_->handTrackingEnabled(),
                                      options.hands);
-  tracker_ = std::make_unique<SessionSheetTracker>();
+  tracker_ = std::make_unique<desktop::InteractionSheetTracker>();
   if (graphics_) {
     graphics_->setBeforeEyes([this](VkCommandBuffer commands) {
       if (panelTexture_ && studio_->drawData())
@@ -141,7 +141,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
   };
   host.documentReplaced = [this] {
     if (graphics_ && graphics_->renderer()) graphics_->renderer()->markSheetReplaced();
-    tracker_ = std::make_unique<SessionSheetTracker>();
+    tracker_ = std::make_unique<desktop::InteractionSheetTracker>();
     summary_.autosave = outputs_->autosavePath();
   };
   host.writeFile = [](const std::string& path,
@@ -243,7 +243,7 @@ void XrApp::startRecording() {
 
 void XrApp::buildScene() {
   if (SceneRenderer* renderer = graphics_->renderer()) {
-    tracker_->update(*doc_.session, *renderer);
+    tracker_->update(*doc_.core, *renderer);
     if (!panelTexture_) {
       const glm::ivec2 pixels = studio_->pixels();
       panelTexture_ = std::make_unique<PanelTexture>(
@@ -278,7 +278,7 @@ void XrApp::buildScene() {
     desktop::addPinchPoint(scene_, lastInput_.pointHand.position, input_->handInput().pinched(),
                            input_->handInput().pinchOpenness());
   }
-  tracker_->describe(scene_.sheet);
+  tracker_->describe(*doc_.core, scene_.sheet);
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   addStudio(scene_);
   if (lastInput_.sheetHand.tracked && studio_->creasePattern()) {

@@ -101,7 +101,7 @@ class XrApp {
   std::unique_ptr<XrVulkanGraphics> graphics_;
   std::unique_ptr<XrProgram> program_;
   std::unique_ptr<XrInput> input_;
-  std::unique_ptr<SessionSheetTracker> tracker_;
+  std::unique_ptr<desktop::InteractionSheetTracker> tracker_;
   std::string autosave_;
   RecordingHeader recordingHeader_;  // its rate is set from the runtime's frame period
   // After doc_: finishes (saves) before doc_ goes.

@@ -1,0 +1,79 @@
+// The live window's frame while simulating (issue 39, 4): on whatever Vulkan device the loader
+// finds (lavapipe without a GPU), 1280x720 at 1 sample per pixel (the designer's CPU-device
+// default), a cylinder design of about 10k vertices in design mode at 100%, each frame what the
+// designer's loop does for the sheet: InteractionCore::process with the frame's simulation
+// (liveStepsPerFrame dynamic steps and the rigid placement), the renderer told the sheet moved
+// (InteractionSheetTracker), sceneForInteraction (the simulated sheet and its creases) and the
+// frame drawn to its fence. Not counted: the ImGui panel's few hundred triangles and the
+// swapchain's present. Second argument: 0 the whole frame, 1 the simulation alone (process, no
+// drawing), 2 the drawing alone (process with 0 steps: the placement, the upload, the frame).
+// Counters: fps (frames per second of real time), vertices, steps per frame.
+//
+//   build/bench/bench_live_simulation --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
+#include <memory>
+
+#include <benchmark/benchmark.h>
+
+#include "app/interaction_scene.hpp"
+#include "engine/geometry/fold_session.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "interaction/interaction_core.hpp"
+
+namespace curvefold {
+namespace {
+
+// The smallest cylinder resolution with at least this many vertices.
+Sheet cylinderWithVertices(std::size_t vertices) {
+  for (int resolution = 16;; resolution += 2) {
+    Sheet sheet = makeSurface("cylinder", {{"resolution", resolution}});
+    if (sheet.vertexCount() >= vertices) return sheet;
+  }
+}
+
+void BM_SimulatingWindowFrame(benchmark::State& state) {
+  FoldSession session(cylinderWithVertices(std::size_t(state.range(0))));
+  InteractionCore core(session, Pose{});
+  HeadlessOptions options;
+  options.width = 1280;
+  options.height = 720;
+  options.samples = VK_SAMPLE_COUNT_1_BIT;
+  HeadlessRenderer r(options);
+  desktop::InteractionSheetTracker tracker;
+  const Camera camera =
+      frameBounds(worldBounds(session.initial()), ViewPreset::Iso, 1280.0f / 720.0f);
+  const Ground ground = groundBelow(worldBounds(session.initial()));
+  InputFrame input;
+  const long part = state.range(1);
+  auto frame = [&] {
+    input.time += 1.0 / 60.0;
+    input.simulation = liveSimulationInput(100.0, session.fixed());
+    if (part == 2) input.simulation->steps = 0;
+    core.process(input);
+    if (part == 1) return;
+    tracker.update(core, r.sceneRenderer());
+    Scene scene = desktop::sceneForInteraction(core, input, camera, ground);
+    tracker.describe(core, scene.sheet);
+    r.draw(scene);
+  };
+  frame();
+  frame();
+  for (auto _ : state) frame();
+  state.counters["fps"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["vertices"] = double(session.fixed().vertexCount());
+  state.counters["steps_per_frame"] = double(liveStepsPerFrame(session.fixed().vertexCount()));
+  state.SetLabel(r.context().deviceName());
+}
+BENCHMARK(BM_SimulatingWindowFrame)
+    ->ArgsProduct({{10'000}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3.0);
+
+}  // namespace
+}  // namespace curvefold
+
+BENCHMARK_MAIN();

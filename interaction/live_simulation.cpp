@@ -1,0 +1,103 @@
+#include "interaction/live_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "engine/simulation/design_input.hpp"
+
+namespace curvefold {
+
+std::uint32_t liveStepsPerFrame(std::size_t vertexCount) {
+  constexpr std::size_t kVertexStepsPerFrame = 100000;
+  const std::size_t steps = kVertexStepsPerFrame / std::max<std::size_t>(vertexCount, 1);
+  return std::uint32_t(std::clamp<std::size_t>(steps, 4, 60));
+}
+
+SimulationInput liveSimulationInput(double percent, const Sheet& design) {
+  return {std::clamp(percent, 0.0, 100.0), liveStepsPerFrame(design.vertexCount()), std::nullopt};
+}
+
+std::optional<SimulationPull> SimulationPuller::update(const InputFrame::PointHand& hand,
+                                                       bool onSheet,
+                                                       const LiveSimulation* simulation,
+                                                       const Pose& worldFromSheet, double viewScale,
+                                                       double press, double release, double reach) {
+  const bool wasHeld = held_;
+  if (!hand.tracked || hand.select <= release) held_ = false;
+  if (hand.tracked && hand.select >= press) held_ = true;
+  if (!held_ || !simulation) {
+    pulled_.reset();
+    return std::nullopt;
+  }
+  const glm::dvec3 tip = worldFromSheet.inverse().apply(hand.position) / viewScale;
+  if (!wasHeld && onSheet) {
+    const std::uint32_t nearest = simulation->nearestVertex(tip);
+    if (glm::distance(simulation->sheet().positions[nearest], tip) * viewScale <= reach)
+      pulled_ = nearest;
+  }
+  if (!pulled_) return std::nullopt;
+  return SimulationPull{*pulled_, tip};
+}
+
+LiveSimulation::LiveSimulation(const Sheet& design) : design_(design.positions), shown_(design) {
+  model_ = buildModel(designPattern(design).pattern);
+  state_ = flatState(model_);
+  timeStep_ = stableTimeStep(model_);
+  show();
+}
+
+void LiveSimulation::advance(const SimulationInput& input) {
+  percent_ = std::clamp(input.percent, 0.0, 100.0);
+  pull_ = input.pull;
+  if (pull_ && pull_->vertex >= model_.vertexCount()) pull_.reset();
+  DynamicOptions options;
+  options.timeStep = timeStep_;
+  const double amount = percent_ / 100.0;
+  if (!pull_ || model_.pinned[pull_->vertex]) {
+    stepDynamic(model_, amount, state_, input.steps, options);
+  } else {
+    // The target in the model's frame: the inverse of this frame's placement.
+    const glm::dvec3 to =
+        glm::transpose(placement_.rotation) * (pull_->to - placement_.translation);
+    const std::uint32_t v = pull_->vertex;
+    const double impulse = kPullStiffness / timeStep_;  // dt k / m with k = c m / dt^2
+    for (std::uint32_t step = 0; step < input.steps; ++step) {
+      state_.velocities[v] += impulse * (to - state_.positions[v]);
+      stepDynamic(model_, amount, state_, 1, options);
+    }
+  }
+  show();
+}
+
+void LiveSimulation::show() {
+  placement_ = bestRigidPlacement(state_.positions, design_);
+  shown_.positions = placed(placement_, state_.positions);
+}
+
+std::uint32_t LiveSimulation::nearestVertex(const glm::dvec3& sheetPoint) const {
+  std::uint32_t best = 0;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < shown_.positions.size(); ++v) {
+    const double d = glm::distance(shown_.positions[v], sheetPoint);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = std::uint32_t(v);
+    }
+  }
+  return best;
+}
+
+std::vector<double> LiveSimulation::vertexStrain() const {
+  const std::vector<double> strain = edgeStrain(model_, state_.positions);
+  std::vector<double> perVertex(model_.vertexCount(), 0.0);
+  for (std::size_t e = 0; e < model_.bars.size(); ++e)
+    for (std::uint32_t v : model_.bars[e])
+      perVertex[v] = std::max(perVertex[v], std::abs(strain[e]));
+  return perVertex;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,104 @@
+// The live simulation (issue 39, 4; docs/design.md "Simulating the fold"): the committed design's
+// sheet folded by the bar-and-hinge model in design mode (engine/simulation), from its flat
+// development (0%) toward the design (100%), a fixed number of dynamic steps per frame, and
+// optionally one vertex pulled toward a hand by a spring. The design itself is never changed: the
+// simulation keeps its own copy of the sheet, whose positions it replaces.
+//
+// The model floats free (nothing is pinned), so each frame the simulated positions are shown
+// after their best rigid placement onto the design (engine/simulation/rigid_placement.hpp): the
+// simulated sheet sits where the design does and follows the sheet hand as the design does. A
+// pull's target, given in sheet coordinates, is taken into the model's frame through that same
+// placement.
+//
+// Deterministic: the same design and the same sequence of SimulationInput give the same positions
+// bit for bit (stepDynamic is; the spring is applied step by step in a fixed order), which is what
+// lets a recording replay the simulation.
+//
+// The spring: force k (to - x) on the pulled vertex, applied as the velocity impulse dt k (to -
+// x) / m before each step, which is the same as adding it to that step's force in the solver's
+// semi-implicit Euler. k = kPullStiffness m / dt^2 keeps it well inside explicit stability.
+//
+// Known limits: design mode only (every edge driven toward the design; paper mode's very stiff
+// bars need far more steps than a frame allows); no self-contact (the model has none).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "engine/geometry/sheet.hpp"
+#include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/rigid_placement.hpp"
+#include "interaction/input_frame.hpp"
+
+namespace curvefold {
+
+// The spring's stiffness as a fraction of m / dt^2 (explicit Euler is stable below 4).
+inline constexpr double kPullStiffness = 0.05;
+
+// Dynamic steps per frame for a sheet of this many vertices: about 100k vertex-steps a frame
+// (2 ms at 10k vertices on two cores, bench_simulation), at least 4 and at most 60.
+std::uint32_t liveStepsPerFrame(std::size_t vertexCount);
+
+class LiveSimulation;
+
+// A frame's simulation input toward `percent` at liveStepsPerFrame of the design, with no pull.
+SimulationInput liveSimulationInput(double percent, const Sheet& design);
+
+// The hand's side of pulling (the headset's dominant hand): the trigger, pressed within
+// `reach` (metres) of the simulated sheet, takes its nearest vertex, which follows the hand until
+// the trigger is released. Thresholds as the core's (InteractionThresholds::selectPress and
+// selectRelease).
+class SimulationPuller {
+ public:
+  // The pull this frame, from the hand's tip (world) and trigger, the sheet's placement and
+  // the simulation as it is before this frame (none yet: no pull).
+  std::optional<SimulationPull> update(const InputFrame::PointHand& hand, bool onSheet,
+                                       const LiveSimulation* simulation, const Pose& worldFromSheet,
+                                       double viewScale, double press, double release,
+                                       double reach);
+  void reset() { pulled_.reset(), held_ = false; }
+
+ private:
+  std::optional<std::uint32_t> pulled_;
+  bool held_ = false;
+};
+
+class LiveSimulation {
+ public:
+  // Builds the model of `design` (design mode) and starts flat. Throws SimulationInputError or
+  // InvalidSheet for a sheet the model cannot be built from.
+  explicit LiveSimulation(const Sheet& design);
+
+  // One frame: input.steps dynamic steps toward input.percent, pulled by input.pull if any.
+  void advance(const SimulationInput& input);
+
+  // The design's sheet at the simulated positions, placed onto the design (sheet coordinates).
+  const Sheet& sheet() const { return shown_; }
+  double percent() const { return percent_; }
+  std::size_t steps() const { return state_.steps; }
+  const std::optional<SimulationPull>& pull() const { return pull_; }
+  const BarHingeModel& model() const { return model_; }
+  const SimulationState& state() const { return state_; }
+
+  // The shown vertex nearest a point (sheet coordinates).
+  std::uint32_t nearestVertex(const glm::dvec3& sheetPoint) const;
+  // Per vertex: the largest |strain| of its edges (edgeStrain), for a picture to colour (a
+  // renderer with per-vertex colour; see docs/design.md).
+  std::vector<double> vertexStrain() const;
+
+ private:
+  void show();
+
+  BarHingeModel model_;
+  SimulationState state_;
+  std::vector<glm::dvec3> design_;  // the design's positions, which the state is placed onto
+  Sheet shown_;
+  RigidPlacement placement_;  // model frame -> sheet coordinates
+  double timeStep_ = 0.0;
+  double percent_ = 0.0;
+  std::optional<SimulationPull> pull_;
+};
+
+}  // namespace curvefold
