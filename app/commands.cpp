@@ -197,14 +197,14 @@ Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* c
       const std::optional<int> order = rotationOrder(options.symmetry);
       if (!generated || !order || generated->parameters.count("rotations") > 0 ||
           !hasParameter(generated->generator, "rotations"))
-        throw UsageError("--symmetry " + std::string(e.what()));
+        throw UsageError("--symmetry " + session::symmetryProblem(e));
       GeneratedSurface meshed = *generated;
       meshed.parameters["rotations"] = *order;
       try {
         const Sheet sheet = makeSurface(meshed.generator, meshed.parameters);
         design.symmetry = parseSymmetry(options.symmetry, sheet).name();
       } catch (const std::invalid_argument&) {
-        throw UsageError("--symmetry " + std::string(e.what()));
+        throw UsageError("--symmetry " + session::symmetryProblem(e));
       }
       design.surface = meshed;
     }

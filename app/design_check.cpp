@@ -129,7 +129,7 @@ DesignCheck checkDesign(const Design& design, std::string_view name, const Sheet
     try {
       line(true, "symmetry: " + parseSymmetry(design.symmetry, initial).name());
     } catch (const InvalidSymmetry& e) {
-      line(false, std::string("symmetry: ") + e.what());
+      line(false, "symmetry: " + session::symmetryProblem(e));
     }
   }
   return check;

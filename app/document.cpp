@@ -3,7 +3,6 @@
 #include <cstring>
 #include <filesystem>
 
-#include "app/commands.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "engine/text/excerpt.hpp"
@@ -82,12 +81,16 @@ std::string surfaceName(const Design& design) {
   return "embedded mesh";
 }
 
+std::string symmetryProblem(const InvalidSymmetry& error) {
+  return std::string(error.what()) + (error.surfaceLacksIt() ? " (see `curvefold surfaces`)" : "");
+}
+
 Design designFor(const std::string& input, const std::string& fallbackSurface) {
   if (input.empty()) return {GeneratedSurface{fallbackSurface, {}}, {}};
   if (fs::exists(input)) return loadDesign(input);
   for (const SurfaceInfo& info : surfaceCatalog())
     if (info.name == input) return {GeneratedSurface{input, {}}, {}};
-  throw cli::UsageError(quotedExcerpt(input) + " is neither a design file nor a surface name");
+  throw UnknownInput(quotedExcerpt(input) + " is neither a design file nor a surface name");
 }
 
 std::string defaultAutosave(const std::string& input, const std::string& fallbackSurface) {

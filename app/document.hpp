@@ -4,9 +4,11 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/io/design_document.hpp"
 #include "interaction/interaction_core.hpp"
 
@@ -46,11 +48,21 @@ Document makeDocument(const Design& design, const std::string& name,
 // "designs/bowl.curvefold.json" (or its autosave); "design" for none.
 std::string designName(const std::string& name);
 
-// The design a command line INPUT names: a design file, a surface name (default parameters), or
-// empty for `fallbackSurface`. Throws UsageError for anything else.
 // The design's surface for a person: the generator's name, or "embedded mesh".
 std::string surfaceName(const Design& design);
 
+// What is wrong with a symmetry, for a person: the engine's line, and where a surface lacks it,
+// where the surfaces' symmetries are listed.
+std::string symmetryProblem(const InvalidSymmetry& error);
+
+// An INPUT that names neither a design file nor a surface (one line naming it).
+class UnknownInput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The design a command line INPUT names: a design file, a surface name (default parameters), or
+// empty for `fallbackSurface`. Throws UnknownInput for anything else.
 Design designFor(const std::string& input, const std::string& fallbackSurface);
 
 // "<name>.autosave.curvefold.json" beside the working directory, <name> from INPUT.

@@ -15,7 +15,6 @@
 #include "app/commands.hpp"
 #include "app/document.hpp"
 #include "app/interrupt_guard.hpp"
-#include "app/studio_target.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
@@ -30,6 +29,7 @@
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/obj_surface.hpp"
+#include "engine/text/distance_text.hpp"
 #include "engine/text/input_path.hpp"
 #include "sim_input/player.hpp"
 
@@ -100,7 +100,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       try {
         design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
       } catch (const InvalidSymmetry& e) {
-        throw UsageError("--symmetry " + std::string(e.what()));
+        throw UsageError("--symmetry " + session::symmetryProblem(e));
       }
     }
   }
@@ -220,7 +220,7 @@ void addFitCommand(CLI::App& app) {
     fit.cancelled = &InterruptGuard::flag();
     fit.progress = [&](const FitProgress& step) {
       if (step.fold == 0) {
-        std::cout << "start: " << studio::distanceText(step.hausdorff, step.chamfer, step.diagonal)
+        std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
                   << " of the target's " << step.diagonal << " m diagonal" << std::endl;
         return;
       }
@@ -248,13 +248,13 @@ void addFitCommand(CLI::App& app) {
       std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
       std::cout << "fold " << step.fold
                 << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
-                << seconds << ": "
-                << studio::distanceText(step.hausdorff, step.chamfer, step.diagonal) << std::endl;
+                << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+                << std::endl;
     };
     fit.searching = [](std::size_t depth, double distance, double seconds) {
       char text[96];
       std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
-                    studio::millimetresText(distance).c_str(), seconds);
+                    millimetresText(distance).c_str(), seconds);
       std::cout << text << std::endl;
     };
     // The outputs, checked before the search: a path that cannot be written fails now.
@@ -306,7 +306,7 @@ void addFitCommand(CLI::App& app) {
               << (design.folds.size() > result.steps.size() - 1
                       ? ", " + std::to_string(design.folds.size()) + " with images"
                       : "")
-              << "; " << studio::distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+              << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
     if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
     if (!options->png.empty()) std::cout << "wrote " << options->png << "\n";
     // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
@@ -322,8 +322,8 @@ void addFitCommand(CLI::App& app) {
       std::snprintf(text, sizeof text,
                     "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
                     "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
-                    far.onA.x, far.onA.y, far.onA.z, studio::millimetresText(far.fromA).c_str(),
-                    far.onB.x, far.onB.y, far.onB.z, studio::millimetresText(far.fromB).c_str());
+                    far.onA.x, far.onA.y, far.onA.z, millimetresText(far.fromA).c_str(), far.onB.x,
+                    far.onB.y, far.onB.z, millimetresText(far.fromB).c_str());
       std::cout << text;
     }
     std::cout.flush();
@@ -379,15 +379,15 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << studio::millimetresText(d.fromAMax) << ", mean "
-              << studio::millimetresText(d.fromAMean) << "\n"
-              << "B -> A: max " << studio::millimetresText(d.fromBMax) << ", mean "
-              << studio::millimetresText(d.fromBMean) << "\n"
-              << "Hausdorff (two-sided): " << studio::millimetresText(d.hausdorff) << " ("
-              << studio::percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
+    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
+              << millimetresText(d.fromAMean) << "\n"
+              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
+              << millimetresText(d.fromBMean) << "\n"
+              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
               << " m)\n"
-              << "Chamfer (mean two-sided): " << studio::millimetresText(d.chamfer) << " ("
-              << studio::percentText(d.relativeChamfer()) << ")\n";
+              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
+              << percentText(d.relativeChamfer()) << ")\n";
     if (renderer) {
       outputs.write();
       std::cout << "wrote " << options->png << "\n";

@@ -34,23 +34,6 @@ TriangleMesh movedPart(const Sheet& before, const Sheet& folded) {
 
 }  // namespace
 
-std::string millimetresText(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g mm", std::abs(metres) < 1e-9 ? 0.0 : metres * 1000.0);
-  return text;
-}
-
-std::string percentText(double fraction) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g%%", std::abs(fraction) < 1e-9 ? 0.0 : fraction * 100.0);
-  return text;
-}
-
-std::string distanceText(double hausdorff, double chamfer, double diagonal) {
-  return "Hausdorff " + millimetresText(hausdorff) + " (" + percentText(hausdorff / diagonal) +
-         "), Chamfer " + millimetresText(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
-}
-
 Design startForTarget(const std::string& path) {
   const TriangleMesh target = readObjMesh(path);
   try {

@@ -25,14 +25,9 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/text/distance_text.hpp"
 
 namespace curvefold::studio {
-
-// "12.3 mm" and "4.1%": three digits; what lies below a nanometre is rounding, printed as 0.
-std::string millimetresText(double metres);
-std::string percentText(double fraction);
-// "Hausdorff 4.2 mm (1.3%), Chamfer 1.1 mm (0.35%)": each also relative to the target's diagonal.
-std::string distanceText(double hausdorff, double chamfer, double diagonal);
 
 // The design to start from when the designer chose no sheet but brought a target (issue 38, 4):
 // the catalogue surface sized to it as `fit` chooses one without --from (start_surface.hpp),

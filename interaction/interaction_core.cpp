@@ -1,6 +1,7 @@
 #include "interaction/interaction_core.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -191,7 +192,7 @@ glm::dquat rotationBetween(const glm::dvec3& u, const glm::dvec3& v) {
   if (cosine < -1.0 + 1e-12) {
     glm::dvec3 axis = glm::cross(glm::dvec3(1, 0, 0), u);
     if (glm::dot(axis, axis) < 1e-12) axis = glm::cross(glm::dvec3(0, 1, 0), u);
-    return glm::angleAxis(3.14159265358979323846, glm::normalize(axis));
+    return glm::angleAxis(std::numbers::pi, glm::normalize(axis));
   }
   const glm::dvec3 axis = glm::cross(u, v);
   return glm::normalize(glm::dquat(1.0 + cosine, axis.x, axis.y, axis.z));

@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
 #include "app/design_check.hpp"
 #include "app/document.hpp"
 #include "app/guarded_design.hpp"
@@ -295,7 +294,7 @@ PyDesign newDesign(const py::object& surfaceName, const py::object& symmetryName
     try {
       design.symmetry = parseSymmetry(*symmetry, initialSheet(design, surface)).name();
     } catch (const InvalidSymmetry& e) {
-      throw cli::UsageError("symmetry " + std::string(e.what()));
+      throw std::invalid_argument("symmetry " + session::symmetryProblem(e));
     }
   }
   return PyDesign(std::move(design), surface);
@@ -747,8 +746,6 @@ PYBIND11_MODULE(_curvefold, m) {
       PyErr_SetString(argumentError, e.what());
     } catch (const FileError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
-    } catch (const cli::UsageError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const DesignError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const ObjError& e) {

@@ -194,6 +194,9 @@ TEST_F(XrHands, HandsFlagUsesHandsOnlyAndNeedsHandTracking) {
   EXPECT_EQ(none.exitCode, 1);
   EXPECT_EQ(std::count(none.err.begin(), none.err.end(), '\n'), 1) << none.err;
   EXPECT_NE(none.err.find("XR_EXT_hand_tracking"), std::string::npos) << none.err;
+  // The XR program says what is missing; `curvefold xr` names the option that asked for it.
+  EXPECT_NE(none.err.find("lacks XR_EXT_hand_tracking (needed for --hands)"), std::string::npos)
+      << none.err;
   EXPECT_FALSE(fs::exists(path("r.jsonl")));
   EXPECT_FALSE(fs::exists(path("n.json")));
   // A jitter or seed the runtime cannot read, loose forms included (issue 29: "0x10" was read as

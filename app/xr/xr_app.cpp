@@ -5,7 +5,6 @@
 #include <iostream>
 #include <thread>
 
-#include "app/commands.hpp"
 #include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/recent_designs.hpp"
@@ -30,6 +29,14 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDefaultSurface = "square";
+
+// What the runtime lacks, naming the option of `curvefold xr` that asked for it.
+[[noreturn]] void throwNamingOption(const XrMissingFeature& e) {
+  throw XrError(
+      std::string(e.what()) + (e.feature() == XrFeature::Headless ? " (needed for --headless)"
+                                                                  : " (needed for --hands)"),
+      e.result());
+}
 
 // The crease pattern on a card held beside the non-dominant hand, outside it so it never covers
 // the sheet: 16 cm across, in the plane of the hand's x and y axes.
@@ -99,7 +106,11 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   XrProgramOptions programOptions;
   programOptions.handTracking =
       options.hands ? XrHandTrackingUse::Required : XrHandTrackingUse::Auto;
-  program_ = std::make_unique<XrProgram>(programOptions, graphics_.get());
+  try {
+    program_ = std::make_unique<XrProgram>(programOptions, graphics_.get());
+  } catch (const XrMissingFeature& e) {
+    throwNamingOption(e);
+  }
   input_ = std::make_unique<XrInput>(program_->instance(), program_->handTrackingEnabled(),
                                      options.hands);
   tracker_ = std::make_unique<desktop::InteractionSheetTracker>();
@@ -187,7 +198,11 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
 }
 
 bool XrApp::startSession() {
-  if (!program_->findSystem()) return false;
+  try {
+    if (!program_->findSystem()) return false;
+  } catch (const XrMissingFeature& e) {
+    throwNamingOption(e);
+  }
   program_->createSession();
   input_->attach(program_->session(), program_->tracksHands());
   ++summary_.sessions;

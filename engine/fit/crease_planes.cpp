@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <random>
 
 #include <glm/geometric.hpp>
+
+#include "engine/fit/unit_draw.hpp"
 
 namespace curvefold {
 namespace {
@@ -16,30 +19,17 @@ struct SharpEdge {
   double length = 0.0;
 };
 
-glm::dvec3 faceNormal(const TriangleMesh& mesh, const std::array<std::uint32_t, 3>& t) {
-  const glm::dvec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                  mesh.positions[t[2]] - mesh.positions[t[0]]);
-  const double length = glm::length(n);
-  return length > 0.0 ? n / length : glm::dvec3(0.0);
-}
-
 // Each edge with exactly two faces, with the angle its faces turn by (degrees).
 template <typename Visit>
 void forEachInteriorEdge(const TriangleMesh& mesh, Visit visit) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> faces;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t u = mesh.triangles[t][i], v = mesh.triangles[t][(i + 1) % 3];
-      faces[{std::min(u, v), std::max(u, v)}].push_back(t);
-    }
-  for (const auto& [edge, around] : faces) {
+  for (const auto& [edge, around] : edgeFaces(mesh)) {
     if (around.size() != 2) continue;
-    const glm::dvec3 n1 = faceNormal(mesh, mesh.triangles[around[0]]);
-    const glm::dvec3 n2 = faceNormal(mesh, mesh.triangles[around[1]]);
+    const glm::dvec3 n1 = faceNormal(mesh.positions, mesh.triangles[around[0]]);
+    const glm::dvec3 n2 = faceNormal(mesh.positions, mesh.triangles[around[1]]);
     if (n1 == glm::dvec3(0.0) || n2 == glm::dvec3(0.0)) continue;
     // Two faces that share an edge the same way up have the same normal when flat.
     const double degrees =
-        std::acos(std::clamp(glm::dot(n1, n2), -1.0, 1.0)) * 180.0 / 3.14159265358979;
+        std::acos(std::clamp(glm::dot(n1, n2), -1.0, 1.0)) * 180.0 / std::numbers::pi;
     visit(edge.first, edge.second, n1, n2, degrees);
   }
 }
@@ -47,10 +37,6 @@ void forEachInteriorEdge(const TriangleMesh& mesh, Visit visit) {
 constexpr double kMinimumSharpDegrees = 4.0;
 // A crease this long (of the diagonal) names a plane: a fold of a corner makes a short one.
 constexpr double kMinimumSupport = 0.005;
-
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
 
 }  // namespace
 
@@ -91,7 +77,7 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
   // lies along both, but mirrors neither. Within the threshold, not less: where a crease runs
   // along an edge of a curved sheet's facets, its faces come from two facets, which bent apart
   // by up to two thirds of it before the fold.
-  const double consistent = std::cos(options.minDihedralDegrees * 3.14159265358979 / 180.0);
+  const double consistent = std::cos(options.minDihedralDegrees * std::numbers::pi / 180.0);
   auto holds = [&](const ReflectionPlane& plane, const SharpEdge& e) {
     if (std::abs(plane.signedDistance(e.a)) > tolerance ||
         std::abs(plane.signedDistance(e.b)) > tolerance)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -27,7 +29,6 @@ namespace curvefold {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 // Seeds tried on each side of a crease plane: parts the plane leaves apart are each a fold.
 constexpr std::size_t kSeedsPerCreasePlane = 6;
 // Crease planes mirrored through each other: of the best this many (at most n(n-1) more planes).
@@ -67,11 +68,6 @@ double nearSurface(const glm::dvec3& p, const glm::dvec3& s, const glm::dvec3& n
   const double normal = glm::dot(d, n);
   const double tangent = std::max(0.0, glm::length(d - normal * n) - radius);
   return std::sqrt(normal * normal + tangent * tangent);
-}
-
-// The top 53 bits of one draw in [0, 1): the same on every standard library.
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
 }
 
 // An index drawn with probability proportional to its weight (cumulative: running sums).
@@ -165,7 +161,7 @@ struct Worker {
 };
 
 bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double size) {
-  return glm::dot(a.normal, b.normal) > std::cos(5.0 * 3.14159265358979 / 180.0) &&
+  return glm::dot(a.normal, b.normal) > std::cos(5.0 * std::numbers::pi / 180.0) &&
          std::abs(glm::dot(a.point - b.point, a.normal)) < 0.02 * size;
 }
 
@@ -328,7 +324,7 @@ const std::vector<ReflectionPlane>& FoldFitter::creasePlanesAbove(double degrees
                                     n - 2.0 * glm::dot(n, mirror.normal) * mirror.normal};
         auto same = [&](const ReflectionPlane& p) {
           return std::abs(glm::dot(p.normal, image.normal)) >
-                     std::cos(2.0 * 3.14159265358979 / 180) &&
+                     std::cos(2.0 * std::numbers::pi / 180) &&
                  std::abs(p.signedDistance(image.point)) < 1e-3 * target_->diagonal;
         };
         if (std::none_of(planes.begin(), planes.end(), same)) planes.push_back(image);
@@ -750,7 +746,8 @@ class FitRun {
     auto madeAlready = [&](const ReflectionPlane& plane) {
       for (std::size_t f = first; f < branch.foldCount(); ++f) {
         const ReflectionPlane& made = branch.folds()[f].plane;
-        if (std::abs(glm::dot(made.normal, plane.normal)) > std::cos(0.5 * kPi / 180.0) &&
+        if (std::abs(glm::dot(made.normal, plane.normal)) >
+                std::cos(0.5 * std::numbers::pi / 180.0) &&
             std::abs(made.signedDistance(plane.point)) < 1e-4 * size)
           return true;
       }

@@ -23,9 +23,11 @@
 //     scored again on the real folded form, and taken back.
 //
 // Deterministic: proposals come from a seeded generator, every evaluation lands in its own slot
-// and ties go to the lower index, so the result does not depend on the threads' timing. The only
-// exception is a deadline that cuts a step short (the result says so); a budget of evaluations
-// (FitOptions::maxEvaluations) is checked between steps and repeats exactly.
+// and ties go to the lower index, so the result does not depend on the threads' timing. The
+// exceptions are the clock and a cancel (FitOptions::cancelled), either of which can cut a step
+// short (FitResult::timedOut and cancelled say which); a budget of evaluations
+// (FitOptions::maxEvaluations) is checked between steps, where the count is the same on every
+// run, so a fit it stops repeats exactly.
 //
 // Known limits: each fold of a sequence must bring the sheet closer on its own; a target that
 // needs a fold that makes it worse before a later one makes it better is not reached.

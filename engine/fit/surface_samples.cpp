@@ -6,15 +6,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/fit/unit_draw.hpp"
+
 namespace curvefold {
-namespace {
-
-// The top 53 bits of one draw as a double in [0, 1): the same on every standard library.
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
-
-}  // namespace
 
 std::vector<SurfaceSample> sampleSurface(const TriangleMesh& mesh, std::size_t count,
                                          std::uint64_t seed) {

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -15,7 +16,7 @@
 namespace curvefold {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 // How much more than the sheet's own facets an edge may bend and still count as smooth.
 constexpr double kBendMarginDegrees = 0.5;
 // The least crease (of the diagonal) one unfolding step must take away: a fold of a thin tip
@@ -35,12 +36,7 @@ struct Connectivity {
 };
 
 Connectivity connectivityOf(const TriangleMesh& mesh) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> faces;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t u = mesh.triangles[t][i], v = mesh.triangles[t][(i + 1) % 3];
-      faces[{std::min(u, v), std::max(u, v)}].push_back(t);
-    }
+  const EdgeFaces faces = edgeFaces(mesh);
   Connectivity c;
   c.neighbours.resize(mesh.positions.size());
   c.onBoundary.assign(mesh.positions.size(), 0);
@@ -51,12 +47,6 @@ Connectivity connectivityOf(const TriangleMesh& mesh) {
     if (around.size() == 2) c.interior.push_back({edge.first, edge.second, {around[0], around[1]}});
   }
   return c;
-}
-
-glm::dvec3 faceNormal(const std::vector<glm::dvec3>& p, const std::array<std::uint32_t, 3>& t) {
-  const glm::dvec3 n = glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
-  const double length = glm::length(n);
-  return length > 0.0 ? n / length : glm::dvec3(0.0);
 }
 
 // Total length of the edges whose faces turn by more than the threshold.

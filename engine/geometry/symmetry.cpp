@@ -324,15 +324,16 @@ Symmetry parseSymmetry(const std::string& text, const Sheet& initial) {
       for (symmetry.axis = 0; symmetry.axis < 3; ++symmetry.axis)
         if (hasThroughACentre(index, symmetry)) return symmetry;
       throw InvalidSymmetry(quoted + ": the surface has no " + std::to_string(n) +
-                            "-fold rotational symmetry about x, y or z through its centre (see "
-                            "`curvefold surfaces`)");
+                                "-fold rotational symmetry about x, y or z through its centre",
+                            /*surfaceLacksIt=*/true);
     }
   } else {
     throw InvalidSymmetry(quoted + ": " + expected);
   }
   if (!hasThroughACentre(SymmetryIndex(initial, nullptr), symmetry))
-    throw InvalidSymmetry(quoted + ": the surface does not have " + symmetry.name() +
-                          " through its centre (see `curvefold surfaces`)");
+    throw InvalidSymmetry(
+        quoted + ": the surface does not have " + symmetry.name() + " through its centre",
+        /*surfaceLacksIt=*/true);
   return symmetry;
 }
 

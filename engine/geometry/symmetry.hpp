@@ -24,7 +24,14 @@ namespace curvefold {
 
 class InvalidSymmetry : public std::invalid_argument {
  public:
-  using std::invalid_argument::invalid_argument;
+  // surfaceLacksIt: the text was a symmetry, but the surface does not have it (the front end can
+  // say where the surfaces' symmetries are listed); otherwise the text was not one.
+  explicit InvalidSymmetry(const std::string& message, bool surfaceLacksIt = false)
+      : std::invalid_argument(message), surfaceLacksIt_(surfaceLacksIt) {}
+  bool surfaceLacksIt() const { return surfaceLacksIt_; }
+
+ private:
+  bool surfaceLacksIt_;
 };
 
 // x -> linear * x + offset, with linear orthogonal.

@@ -1,5 +1,6 @@
 #include "engine/geometry/triangle_mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -7,6 +8,24 @@
 #include <glm/geometric.hpp>
 
 namespace curvefold {
+
+glm::dvec3 faceNormal(const std::vector<glm::dvec3>& positions,
+                      const std::array<std::uint32_t, 3>& t) {
+  const glm::dvec3 n =
+      glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : glm::dvec3(0.0);
+}
+
+EdgeFaces edgeFaces(const TriangleMesh& mesh) {
+  EdgeFaces faces;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = mesh.triangles[t][i], v = mesh.triangles[t][(i + 1) % 3];
+      faces[{std::min(u, v), std::max(u, v)}].push_back(t);
+    }
+  return faces;
+}
 
 TriangleMesh meshOf(const Sheet& sheet) {
   TriangleMesh mesh;

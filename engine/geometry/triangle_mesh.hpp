@@ -5,8 +5,10 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,6 +21,15 @@ struct TriangleMesh {
   std::vector<glm::dvec3> positions;
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
+
+// Triangle t's unit normal (right-handed from its corner order), or zero for a degenerate one.
+glm::dvec3 faceNormal(const std::vector<glm::dvec3>& positions,
+                      const std::array<std::uint32_t, 3>& t);
+
+// Each edge (lower vertex first, in that order) with the triangles that have it, in index order:
+// one for a boundary edge, two inside a manifold, more where a mesh is not one.
+using EdgeFaces = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>;
+EdgeFaces edgeFaces(const TriangleMesh& mesh);
 
 // The sheet's folded form as a plain mesh.
 TriangleMesh meshOf(const Sheet& sheet);

@@ -6,6 +6,7 @@
 #include <climits>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <unordered_map>
 
@@ -20,8 +21,6 @@
 
 namespace curvefold {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A 2D affine map: x' = a x + c y + e, y' = b x + d y + f (SVG's matrix(a b c d e f)).
 struct Affine {
@@ -420,17 +419,17 @@ class SvgReader {
         step.d = v.size() > 1 ? v[1] : v[0];
       } else if (kind == "rotate") {
         if (v.size() != 1 && v.size() != 3) need(1, 1);
-        const double angle = v[0] * kPi / 180.0;
+        const double angle = v[0] * std::numbers::pi / 180.0;
         Affine rotation{std::cos(angle), std::sin(angle), -std::sin(angle), std::cos(angle), 0, 0};
         if (v.size() == 3)
           rotation = Affine{1, 0, 0, 1, v[1], v[2]} * rotation * Affine{1, 0, 0, 1, -v[1], -v[2]};
         step = rotation;
       } else if (kind == "skewX") {
         need(1, 1);
-        step.c = std::tan(v[0] * kPi / 180.0);
+        step.c = std::tan(v[0] * std::numbers::pi / 180.0);
       } else if (kind == "skewY") {
         need(1, 1);
-        step.b = std::tan(v[0] * kPi / 180.0);
+        step.b = std::tan(v[0] * std::numbers::pi / 180.0);
       } else {
         fail(node, "unknown transform " + quotedExcerpt(kind));
       }
@@ -596,7 +595,7 @@ class SvgReader {
         }
         case 'A': {
           double rx = std::abs(number()), ry = std::abs(number());
-          const double rotation = number() * kPi / 180.0;
+          const double rotation = number() * std::numbers::pi / 180.0;
           const auto large = scanner.flag();
           const auto sweep = large ? scanner.flag() : std::nullopt;
           if (!large || !sweep) bad("an arc flag expected");
@@ -621,10 +620,10 @@ class SvgReader {
               glm::dvec2(cs * cq.x - sn * cq.y, sn * cq.x + cs * cq.y) + (p0 + p1) * 0.5;
           const double theta0 = std::atan2((q.y - cq.y) / ry, (q.x - cq.x) / rx);
           double delta = std::atan2((-q.y - cq.y) / ry, (-q.x - cq.x) / rx) - theta0;
-          if (*sweep == 0.0 && delta > 0) delta -= 2 * kPi;
-          if (*sweep == 1.0 && delta < 0) delta += 2 * kPi;
-          const int pieces =
-              static_cast<int>(std::clamp(std::ceil(std::abs(delta) / (kPi / 24)), 1.0, 64.0));
+          if (*sweep == 0.0 && delta > 0) delta -= 2 * std::numbers::pi;
+          if (*sweep == 1.0 && delta < 0) delta += 2 * std::numbers::pi;
+          const int pieces = static_cast<int>(
+              std::clamp(std::ceil(std::abs(delta) / (std::numbers::pi / 24)), 1.0, 64.0));
           sampleCurve(out.back(), pieces, [&](double t) {
             if (t >= 1.0) return p1;
             const double angle = theta0 + delta * t;
@@ -675,7 +674,7 @@ class SvgReader {
       loop.closed = true;
       constexpr int kPieces = 64;
       for (int k = 0; k < kPieces; ++k) {
-        const double angle = 2.0 * kPi * k / kPieces;
+        const double angle = 2.0 * std::numbers::pi * k / kPieces;
         loop.points.emplace_back(cx + rx * std::cos(angle), cy + ry * std::sin(angle));
       }
       ++flattenedCurves_;

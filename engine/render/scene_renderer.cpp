@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -552,7 +553,7 @@ void SceneRenderer::prepare(const Frame& frame, const Scene& scene, VkExtent2D e
     const glm::vec3 e1 = glm::normalize(glm::cross(n, helper));
     const glm::vec3 e2 = glm::cross(n, e1);
     auto rim = [&](std::uint32_t i) {
-      const float angle = 2.0f * 3.14159265f * float(i) / float(kDiskSegments);
+      const float angle = 2.0f * std::numbers::pi_v<float> * float(i) / float(kDiskSegments);
       return p.centre + p.radius * (std::cos(angle) * e1 + std::sin(angle) * e2);
     };
     const glm::vec4 rimColor(glm::vec3(p.color) * 0.8f, std::min(1.0f, p.color.a * 2.5f));

@@ -19,6 +19,20 @@ class XrError : public std::runtime_error {
   XrResult result_;
 };
 
+// What a program was asked for that the runtime or headset lacks: a headless session
+// (XR_MND_headless) or tracked hands. The program reports which; the front end says which of its
+// options asked for it.
+enum class XrFeature { Headless, HandTracking };
+class XrMissingFeature : public XrError {
+ public:
+  XrMissingFeature(const std::string& message, XrResult result, XrFeature feature)
+      : XrError(message, result), feature_(feature) {}
+  XrFeature feature() const { return feature_; }
+
+ private:
+  XrFeature feature_;
+};
+
 // "XR_ERROR_SESSION_LOST", or the number for a result this header version does not know. Needs
 // no instance (xrResultToString does), so it works before and after one exists.
 std::string xrResultName(XrResult result);

@@ -147,11 +147,13 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics)
       graphics_ ? graphics_->instanceExtensions() : std::vector<std::string>{"XR_MND_headless"};
   std::vector<const char*> names;
   for (const std::string& name : wanted) {
-    if (std::find(offered.begin(), offered.end(), name) == offered.end())
-      throw XrError(
-          "the OpenXR runtime lacks " + name +
-              (graphics_ ? " (needed to render with Vulkan)" : " (needed for --headless)"),
-          XR_ERROR_EXTENSION_NOT_PRESENT);
+    if (std::find(offered.begin(), offered.end(), name) == offered.end()) {
+      if (!graphics_)
+        throw XrMissingFeature("the OpenXR runtime lacks " + name, XR_ERROR_EXTENSION_NOT_PRESENT,
+                               XrFeature::Headless);
+      throw XrError("the OpenXR runtime lacks " + name + " (needed to render with Vulkan)",
+                    XR_ERROR_EXTENSION_NOT_PRESENT);
+    }
     names.push_back(name.c_str());
   }
   // Depth for the compositor's reprojection, where the runtime takes it.
@@ -166,8 +168,8 @@ XrProgram::XrProgram(const XrProgramOptions& options, XrGraphics* graphics)
       names.push_back(hands);
       handTrackingExtension_ = true;
     } else if (handTracking_ == XrHandTrackingUse::Required) {
-      throw XrError(std::string("the OpenXR runtime lacks ") + hands + " (needed for --hands)",
-                    XR_ERROR_EXTENSION_NOT_PRESENT);
+      throw XrMissingFeature(std::string("the OpenXR runtime lacks ") + hands,
+                             XR_ERROR_EXTENSION_NOT_PRESENT, XrFeature::HandTracking);
     }
   }
 
@@ -223,8 +225,8 @@ bool XrProgram::findSystem() {
   blendMode_ = modes.front();  // the runtime's preference
   tracksHands_ = handTrackingExtension_ && xrSystemTracksHands(instance_, system_);
   if (handTracking_ == XrHandTrackingUse::Required && !tracksHands_)
-    throw XrError("the headset does not track hands (needed for --hands)",
-                  XR_ERROR_FEATURE_UNSUPPORTED);
+    throw XrMissingFeature("the headset does not track hands", XR_ERROR_FEATURE_UNSUPPORTED,
+                           XrFeature::HandTracking);
   if (graphics_) graphics_->initializeDevice(instance_, system_);
   return true;
 }

@@ -19,19 +19,10 @@
 #include "engine/io/obj_writer.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "tests/support/fold_steps.hpp"
 
 namespace curvefold::testing {
 namespace {
-
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
-
-glm::dvec3 uniformDirection(std::mt19937_64& random) {
-  const double z = 2.0 * unit(random) - 1.0, phi = 2.0 * 3.14159265358979 * unit(random);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
 
 // The vertices a recipe may grab: all, or those in the outer third from the box's centre.
 std::vector<VertexIndex> grabbable(const Sheet& sheet, bool outerThird) {
@@ -143,12 +134,7 @@ std::optional<FoldTarget> makeFoldTarget(const FoldTargetRecipe& recipe, const s
         session.cancel();
         continue;
       }
-      if (!session.commit()) continue;
-      if (!findSelfIntersections(session.fixed()).intersections.empty()) {
-        session.undo();
-        continue;
-      }
-      made = true;
+      made = commitUnlessSelfIntersecting(session);
     }
     if (!made) return std::nullopt;
   }

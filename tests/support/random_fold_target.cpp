@@ -7,16 +7,9 @@
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/self_intersection.hpp"
+#include "tests/support/fold_steps.hpp"
 
 namespace curvefold {
-namespace {
-
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
-
-}  // namespace
-
 RandomFoldTarget makeRandomFoldTarget(const std::string& surface,
                                       const SurfaceParameters& parameters, std::size_t folds,
                                       std::uint64_t seed) {
@@ -33,9 +26,7 @@ RandomFoldTarget makeRandomFoldTarget(const std::string& surface,
       const VertexIndex v = static_cast<VertexIndex>(
           std::min<std::size_t>(fixed.vertexCount() - 1, unit(random) * fixed.vertexCount()));
       // A direction uniform on the sphere, a drag of 15% to 60% of the size.
-      const double z = 2.0 * unit(random) - 1.0, phi = 2.0 * 3.14159265358979 * unit(random);
-      const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-      const glm::dvec3 direction(r * std::cos(phi), r * std::sin(phi), z);
+      const glm::dvec3 direction = uniformDirection(random);
       const double length = size * (0.15 + 0.45 * unit(random));
       const glm::dvec3 grab = session.beginDragAtDevelopment(fixed.development[v]);
       session.updateDrag(grab + length * direction);
@@ -46,12 +37,7 @@ RandomFoldTarget makeRandomFoldTarget(const std::string& surface,
         session.cancel();
         continue;
       }
-      if (!session.commit()) continue;
-      if (!findSelfIntersections(session.fixed()).intersections.empty()) {
-        session.undo();
-        continue;
-      }
-      made = true;
+      made = commitUnlessSelfIntersecting(session);
     }
     if (!made)
       throw std::runtime_error("no random fold of " + surface + " met the rules in " +

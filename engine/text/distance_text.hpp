@@ -1,0 +1,16 @@
+// Distances for a person: millimetres and percentages in three digits, the same in the command
+// line's `fit` and `distance` lines and the studio panel's distance line, which both word what
+// engine/fit/surface_distance.hpp measures.
+#pragma once
+
+#include <string>
+
+namespace curvefold {
+
+// "12.3 mm" and "4.1%": three digits; what lies below a nanometre is rounding, printed as 0.
+std::string millimetresText(double metres);
+std::string percentText(double fraction);
+// "Hausdorff 4.2 mm (1.3%), Chamfer 1.1 mm (0.35%)": each also relative to the target's diagonal.
+std::string distanceText(double hausdorff, double chamfer, double diagonal);
+
+}  // namespace curvefold
