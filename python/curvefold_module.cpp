@@ -768,6 +768,7 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   report["timed_out"] = result.timedOut;
   report["out_of_evaluations"] = result.outOfEvaluations;
   report["evaluations"] = result.evaluations;
+  report["dropped_samples"] = result.droppedSamples;
   return report;
 }
 
@@ -988,7 +989,8 @@ PYBIND11_MODULE(_curvefold, m) {
            "closer, within `time` seconds (default 60; none when only `evaluations` is given), "
            "scoring at most about `evaluations` candidate folds (the same seed then gives the "
            "same folds on any machine). Returns {folds, hausdorff, chamfer, diagonal (metres), "
-           "steps, stop, timed_out, out_of_evaluations, evaluations}; the design holds the "
+           "steps, stop, timed_out, out_of_evaluations, evaluations, dropped_samples}; the design "
+           "holds the "
            "folds kept.")
       .def("render", &renderDesign, py::arg("width") = 800, py::arg("height") = 600, py::kw_only(),
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
