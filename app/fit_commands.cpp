@@ -286,6 +286,7 @@ void addFitCommand(CLI::App& app) {
               {"stop", result.stopReason},
               {"folds", result.steps.size() - 1},
               {"evaluations", result.evaluations},
+              {"dropped_samples", result.droppedSamples},
               {"timed_out", result.timedOut},
               {"out_of_evaluations", result.outOfEvaluations},
               {"interrupted", interrupted},
@@ -296,6 +297,10 @@ void addFitCommand(CLI::App& app) {
     const FitProgress& last = result.steps.back();
     std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
               << " candidate folds scored\n";
+    if (result.droppedSamples > 0)
+      std::cout << "note: " << result.droppedSamples
+                << " sheet samples fell outside the sheet's development (rounding: its coordinates "
+                   "are large for its size) and were left out of the search\n";
     if (result.timedOut)
       std::cout << "the time limit cut the search short: another run may find other folds (give "
                    "--evaluations to repeat a fit exactly)\n";

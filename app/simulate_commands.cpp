@@ -1,12 +1,13 @@
 // `curvefold simulate`: folds a design's flat sheet (or a crease pattern) with the bar-and-hinge
 // simulation (engine/simulation) to a fold amount or through a sequence of them, and writes the
-// folded state as OBJ, FOLD, glTF and PNG, or a folder of frames.
+// folded state as OBJ, FOLD, glTF and PNG, a folder of frames or an animated GIF of the folding.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
 #include "engine/render/color_legend.hpp"
+#include "engine/render/gif_animation.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/image.hpp"
 #include "engine/render/scene_builder.hpp"
@@ -178,9 +180,44 @@ ColorLegend stateLegend(StateColor color, const std::vector<std::vector<double>>
           "degrees"};
 }
 
+// A picture of one state. The renderer keeps what it last uploaded of a sheet unless told it was
+// replaced: each state is a new sheet to it (without this, frames after the first two showed
+// stale states).
+RgbaImage renderState(const Sheet& sheet, HeadlessRenderer& renderer, float aspect,
+                      const std::optional<Bounds>& framing = std::nullopt) {
+  Scene scene = sceneForSheet(sheet, ViewPreset::Iso, aspect, false);
+  if (framing) {
+    scene.camera = frameBounds(*framing, ViewPreset::Iso, aspect);
+    scene.ground = groundBelow(*framing);
+  }
+  renderer.sceneRenderer().markSheetReplaced();
+  return renderer.render(scene);
+}
+
 void writePng(const Sheet& sheet, const fs::path& path, HeadlessRenderer& renderer, float aspect) {
-  writeFileAtomically(
-      path, encodePng(renderer.render(sceneForSheet(sheet, ViewPreset::Iso, aspect, false))));
+  writeFileAtomically(path, encodePng(renderState(sheet, renderer, aspect)));
+}
+
+// The GIF of the folding: every state rendered by one still camera (framing all states), at half
+// the PNG's size, 10 states a second and the last held a second.
+void writeGif(Sheet sheet, const std::vector<std::vector<glm::dvec3>>& states, const fs::path& path,
+              HeadlessRenderer& renderer, float aspect) {
+  constexpr unsigned kFrameCentiseconds = 10, kLastFrameCentiseconds = 100;
+  Bounds framing;
+  for (const std::vector<glm::dvec3>& positions : states) {
+    sheet.positions = positions;
+    const Bounds bounds = worldBounds(sheet);
+    framing.add(bounds.min);
+    framing.add(bounds.max);
+  }
+  GifAnimation gif;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    sheet.positions = states[i];
+    const RgbaImage image = renderState(sheet, renderer, aspect, framing);
+    gif.addFrame(resizedImage(image, image.width / 2, image.height / 2),
+                 i + 1 < states.size() ? kFrameCentiseconds : kLastFrameCentiseconds);
+  }
+  writeFileAtomically(path, gif.finish());
 }
 
 }  // namespace
@@ -190,14 +227,17 @@ void addSimulateCommand(CLI::App& app) {
       "simulate",
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
-    std::string input, percent, obj, fold, gltf, png, frames, color;
+    std::string input, percent, obj, fold, gltf, png, frames, color, gif;
     bool settle = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
   };
   auto options = std::make_shared<Options>();
-  command->add_option("INPUT", options->input, "Design (*.curvefold.json)")->required();
+  command
+      ->add_option("INPUT", options->input,
+                   "Design (*.curvefold.json) or crease pattern (.fold, .svg)")
+      ->required();
   command
       ->add_option("--percent", options->percent,
                    "Fold amount in percent, P, or a sequence FROM:TO:N (N states, both ends)")
@@ -230,14 +270,23 @@ void addSimulateCommand(CLI::App& app) {
       "--color", options->color,
       "Colour the pictures (--png, --frames) by `strain` (each edge's length change) or "
       "`angle-error` (each crease's fold angle minus its target), with a legend");
-  command->callback([options, paper, obj, fold, gltf, png, frames, colorOption] {
+  CLI::Option* gif = command->add_option(
+      "--gif", options->gif,
+      "Animated GIF of the folding: one frame per state of --percent FROM:TO:N (headless Vulkan)");
+  command->callback([options, paper, obj, fold, gltf, png, frames, colorOption, gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =
         colorOption->count() ? parseStateColor(options->color) : StateColor::None;
     if (color != StateColor::None && png->count() + frames->count() == 0)
       throw UsageError("--color: colours a picture; name --png or --frames too");
-    if (obj->count() + fold->count() + gltf->count() + png->count() + frames->count() == 0)
-      throw UsageError("simulate: name at least one of --obj, --fold, --gltf, --png, --frames");
+    if (obj->count() + fold->count() + gltf->count() + png->count() + frames->count() +
+            gif->count() ==
+        0)
+      throw UsageError(
+          "simulate: name at least one of --obj, --fold, --gltf, --png, --frames, --gif");
+    if (gif->count() && percents.size() < 2)
+      throw UsageError("--gif: an animation needs a sequence of states, --percent FROM:TO:N; got " +
+                       quotedExcerpt(options->percent));
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
@@ -250,7 +299,8 @@ void addSimulateCommand(CLI::App& app) {
       modelOptions.paper.thickness = options->paperMm * 1e-3;
       modelOptions.paper.youngsModulus = options->modulusGpa * 1e9;
     }
-    for (const std::string* output : {&options->obj, &options->fold, &options->gltf, &options->png})
+    for (const std::string* output :
+         {&options->obj, &options->fold, &options->gltf, &options->png, &options->gif})
       if (!output->empty() && *output != "-" && sameFile(*output, options->input))
         throw UsageError("simulate: " + *output + " is the input; write to another file");
 
@@ -284,7 +334,7 @@ void addSimulateCommand(CLI::App& app) {
     // The renderer first: a machine without Vulkan fails before any work.
     std::unique_ptr<HeadlessRenderer> renderer;
     constexpr std::uint32_t kWidth = 1280, kHeight = 720;
-    if (png->count() || frames->count()) {
+    if (png->count() || frames->count() || gif->count()) {
       HeadlessOptions renderOptions;
       renderOptions.width = kWidth;
       renderOptions.height = kHeight;
@@ -296,6 +346,8 @@ void addSimulateCommand(CLI::App& app) {
     std::vector<Sheet> frameSheets;
     frameSheets.reserve(frames->count() ? percents.size() : 0);
     std::vector<std::vector<double>> fields;  // --color's, one per state kept
+    std::vector<std::vector<glm::dvec3>> gifStates;
+    gifStates.reserve(gif->count() ? percents.size() : 0);
     Sheet sheet = input.sheet;
     for (std::size_t i = 0; i < percents.size(); ++i) {
       const double amount = percents[i] / 100.0;
@@ -317,11 +369,12 @@ void addSimulateCommand(CLI::App& app) {
           "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees\n", percents[i],
           solved.c_str(), largestMagnitude(edgeStrain(model, state.positions)),
           largestMagnitude(creaseAngleError(model, state.positions, amount, state.hingeAngles)));
-      statusFor({options->obj, options->fold, options->gltf, options->png}) << line;
+      statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);
       if (color != StateColor::None && (frames->count() || i + 1 == percents.size()))
         fields.push_back(stateField(color, model, state, amount));
+      if (gif->count()) gifStates.push_back(state.positions);
     }
     const ColorLegend legend =
         color == StateColor::None ? ColorLegend{} : stateLegend(color, fields);
@@ -337,6 +390,9 @@ void addSimulateCommand(CLI::App& app) {
         else
           writeFieldPng(*renderer, sheet, fields.back(), legend, at);
       });
+    if (gif->count())
+      outputs.add(options->gif,
+                  [&](const auto& at) { writeGif(sheet, gifStates, at, *renderer, aspect); });
     const fs::path folder = options->frames;
     for (std::size_t i = 0; i < frameSheets.size(); ++i) {
       char name[32];
@@ -352,10 +408,10 @@ void addSimulateCommand(CLI::App& app) {
       });
     }
     outputs.write(frames->count() ? folder : fs::path());
-    for (const std::string* path :
-         {&options->obj, &options->fold, &options->gltf, &options->png, &options->frames})
+    for (const std::string* path : {&options->obj, &options->fold, &options->gltf, &options->png,
+                                    &options->frames, &options->gif})
       if (!path->empty())
-        statusFor({options->obj, options->fold, options->gltf, options->png})
+        statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
             << "wrote " << *path << "\n";
   });
 }

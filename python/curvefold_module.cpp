@@ -37,7 +37,10 @@
 #include "engine/geometry/topology.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/io/crease_pattern_graph.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/input_limits.hpp"
@@ -444,63 +447,148 @@ void exportDesign(const PyDesign& design, const py::object& foldArg, const py::o
   outputs.write();
 }
 
-// Design.simulate: the bar-and-hinge simulation (engine/simulation) of the design's flat sheet at
-// a fold amount, as numpy arrays.
-py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
-                        const py::object& settleArg, const py::object& paperArg,
-                        const py::object& stepsArg) {
-  const double percent = number(percentArg, "percent");
-  const bool settleState = flag(settleArg, "settle");
+// What a simulation is asked for (Design.simulate and curvefold.simulate), checked by name.
+struct SimulateArguments {
+  double percent = 100.0;
+  bool settle = true;
+  std::size_t steps = 2000;
+  ModelOptions model;
+};
+
+SimulateArguments simulateArguments(const py::object& percentArg, const py::object& settleArg,
+                                    const py::object& paperArg, const py::object& stepsArg) {
+  SimulateArguments arguments;
+  arguments.percent = number(percentArg, "percent");
+  arguments.settle = flag(settleArg, "settle");
   std::optional<double> paperMm;
   if (!paperArg.is_none()) paperMm = number(paperArg, "paper");
   const std::int64_t steps = integer(stepsArg, "steps");
-  if (!(percent >= 0.0 && percent <= 100.0))
+  if (!(arguments.percent >= 0.0 && arguments.percent <= 100.0))
     throw std::invalid_argument("percent: must be from 0 to 100");
   if (steps < 0 || steps > 10'000'000)
     throw std::invalid_argument("steps: must lie in 0 to 10000000");
-  ModelOptions options;
+  arguments.steps = static_cast<std::size_t>(steps);
   if (paperMm) {
     if (!(*paperMm > 0.0 && *paperMm <= 10.0))
       throw std::invalid_argument("paper: the thickness must be above 0 and at most 10 mm");
-    options.mode = SimulationMode::Paper;
-    options.paper.thickness = *paperMm * 1e-3;
+    arguments.model.mode = SimulationMode::Paper;
+    arguments.model.paper.thickness = *paperMm * 1e-3;
   }
-  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
+  return arguments;
+}
+
+// The bar-and-hinge simulation (engine/simulation) of a crease pattern from flat to the fold
+// amount, as numpy arrays: vertices (n, 3), development (n, 2), triangles (m, 3), edges (e, 2)
+// with their assignment letters, strain and crease angle error per edge, converged, residual.
+// Call with the GIL held; it is released while the model is built and solved.
+py::dict simulatePattern(const CreasePattern& pattern, const SimulateArguments& arguments) {
   BarHingeModel model;
   SimulationState state;
   StaticResult result;
+  const double amount = arguments.percent / 100.0;
+  std::vector<double> strain, angleError;
+  double residual = 0.0;
   {
     py::gil_scoped_release release;
-    model = buildModel(designPattern(*sheet).pattern, options);
+    model = buildModel(pattern, arguments.model);
     state = flatState(model);
-    if (settleState)
-      result = settle(model, percent / 100.0, state);
+    if (arguments.settle)
+      result = settle(model, amount, state);
     else
-      stepDynamic(model, percent / 100.0, state, static_cast<std::size_t>(steps));
+      stepDynamic(model, amount, state, arguments.steps);
+    strain = edgeStrain(model, state.positions);
+    angleError = creaseAngleError(model, state.positions, amount, state.hingeAngles);
+    residual = arguments.settle ? result.residual
+                                : staticResidual(model, state.positions, amount, state.hingeAngles);
   }
-  const std::size_t n = state.positions.size(), e = model.bars.size();
+  const std::size_t n = state.positions.size(), e = model.bars.size(), m = pattern.triangles.size();
   py::array_t<double> vertices({py::ssize_t(n), py::ssize_t(3)});
+  py::array_t<double> development({py::ssize_t(n), py::ssize_t(2)});
   auto v = vertices.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < n; ++i)
+  auto d = development.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < n; ++i) {
     for (int c = 0; c < 3; ++c) v(i, c) = state.positions[i][c];
+    d(i, 0) = pattern.vertices[i].x;
+    d(i, 1) = pattern.vertices[i].y;
+  }
+  py::array_t<std::uint32_t> triangles({py::ssize_t(m), py::ssize_t(3)});
+  auto t = triangles.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < m; ++i)
+    for (int c = 0; c < 3; ++c) t(i, c) = pattern.triangles[i][c];
   py::array_t<std::uint32_t> edges({py::ssize_t(e), py::ssize_t(2)});
   auto ed = edges.mutable_unchecked<2>();
+  std::string assignment;
   for (std::size_t i = 0; i < e; ++i) {
     ed(i, 0) = model.bars[i][0];
     ed(i, 1) = model.bars[i][1];
+    assignment += foldLetter(pattern.edges[i].assignment);
   }
   py::dict out;
   out["vertices"] = vertices;
+  out["development"] = development;
+  out["triangles"] = triangles;
   out["edges"] = edges;
-  out["strain"] = py::array_t<double>(py::ssize_t(e), edgeStrain(model, state.positions).data());
-  out["crease_angle_error"] = py::array_t<double>(
-      py::ssize_t(e),
-      creaseAngleError(model, state.positions, percent / 100.0, state.hingeAngles).data());
-  out["converged"] = settleState ? result.converged : false;
-  out["residual"] =
-      settleState ? result.residual
-                  : staticResidual(model, state.positions, percent / 100.0, state.hingeAngles);
+  out["assignment"] = assignment;
+  out["strain"] = py::array_t<double>(py::ssize_t(e), strain.data());
+  out["crease_angle_error"] = py::array_t<double>(py::ssize_t(e), angleError.data());
+  out["converged"] = arguments.settle ? result.converged : false;
+  out["residual"] = residual;
+  out["notes"] = pattern.notes;
   return out;
+}
+
+// Design.simulate: the design's flat sheet folded toward the design.
+py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
+                        const py::object& settleArg, const py::object& paperArg,
+                        const py::object& stepsArg) {
+  const SimulateArguments arguments = simulateArguments(percentArg, settleArg, paperArg, stepsArg);
+  const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
+  CreasePattern pattern;
+  {
+    py::gil_scoped_release release;
+    pattern = designPattern(*sheet).pattern;
+  }
+  return simulatePattern(pattern, arguments);
+}
+
+// curvefold.simulate: a crease pattern from another tool, as a FOLD dict (what json.load gives;
+// numpy arrays in it are taken as lists) or a path to a FOLD or SVG file, read as `curvefold
+// simulate` reads it. Messages about a dict start "pattern: ".
+py::dict simulateCreasePattern(const py::object& source, const py::object& percentArg,
+                               const py::object& settleArg, const py::object& paperArg,
+                               const py::object& stepsArg) {
+  const SimulateArguments arguments = simulateArguments(percentArg, settleArg, paperArg, stepsArg);
+  CreasePattern pattern;
+  if (py::isinstance<py::dict>(source)) {
+    const py::cpp_function asList([](const py::object& value) -> py::object {
+      if (py::hasattr(value, "tolist")) return value.attr("tolist")();
+      throw py::type_error(std::string(Py_TYPE(value.ptr())->tp_name) + " is not a JSON value");
+    });
+    std::string text;
+    try {
+      text = py::module_::import("json")
+                 .attr("dumps")(source, py::arg("allow_nan") = false, py::arg("default") = asList)
+                 .cast<std::string>();
+    } catch (const py::error_already_set& e) {
+      if (e.matches(PyExc_ValueError))  // allow_nan=False
+        throw std::invalid_argument("pattern: holds a NaN or infinite number");
+      std::string why = py::str(e.value());
+      why = why.substr(0, why.find('\n'));
+      throw std::invalid_argument("pattern: not a FOLD dict (" + why + ")");
+    }
+    py::gil_scoped_release release;
+    pattern = readFoldCreasePatternText(text, "pattern");
+  } else if (py::isinstance<py::str>(source) || py::isinstance<py::bytes>(source) ||
+             py::hasattr(source, "__fspath__")) {
+    const std::filesystem::path path = filePath(source, "pattern");
+    py::gil_scoped_release release;
+    checkInputFile(path, kMaxCreasePatternBytes, "crease pattern");
+    pattern = readCreasePattern(path);
+  } else {
+    throw ArgumentTypeError(
+        "pattern: expected a FOLD dict or the path of a .fold or .svg file, got " + given(source));
+  }
+  return simulatePattern(pattern, arguments);
 }
 
 py::array_t<std::uint8_t> renderDesign(const PyDesign& design, const py::object& widthArg,
@@ -705,6 +793,7 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   report["timed_out"] = result.timedOut;
   report["out_of_evaluations"] = result.outOfEvaluations;
   report["evaluations"] = result.evaluations;
+  report["dropped_samples"] = result.droppedSamples;
   return report;
 }
 
@@ -751,6 +840,10 @@ PYBIND11_MODULE(_curvefold, m) {
     } catch (const ObjError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const InvalidSheet& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const CreasePatternError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const SimulationInputError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const RecordingError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
@@ -846,8 +939,8 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("settle") = true, py::arg("paper") = py::none(), py::arg("steps") = 2000,
            "Folds the design's flat sheet to `percent` with the bar-and-hinge simulation: to "
            "equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM for "
-           "paper mode. Returns a dict: vertices (n, 3), edges (e, 2), strain (e,), "
-           "crease_angle_error (e,) in degrees, converged, residual")
+           "paper mode. Returns a dict as curvefold.simulate does (vertices numbered as the "
+           "design's)")
       .def(
           "fold",
           [](PyDesign& d, const py::object& grab, const py::object& to) {
@@ -919,7 +1012,8 @@ PYBIND11_MODULE(_curvefold, m) {
            "closer, within `time` seconds (default 60; none when only `evaluations` is given), "
            "scoring at most about `evaluations` candidate folds (the same seed then gives the "
            "same folds on any machine). Returns {folds, hausdorff, chamfer, diagonal (metres), "
-           "steps, stop, timed_out, out_of_evaluations, evaluations}; the design holds the "
+           "steps, stop, timed_out, out_of_evaluations, evaluations, dropped_samples}; the design "
+           "holds the "
            "folds kept.")
       .def("render", &renderDesign, py::arg("width") = 800, py::arg("height") = 600, py::kw_only(),
            py::arg("view") = "iso", py::arg("crease_pattern") = false,
@@ -956,6 +1050,19 @@ PYBIND11_MODULE(_curvefold, m) {
         "distance A B`: {hausdorff, chamfer, diagonal (of b), hausdorff_relative, "
         "chamfer_relative, a_to_b_max, a_to_b_mean, b_to_a_max, b_to_a_mean}, metres; with "
         "png=PATH also a picture of a coloured by its distance to b (1280x720, legend in mm)");
+  m.def(
+      "simulate", &simulateCreasePattern, py::arg("pattern"), py::kw_only(),
+      py::arg("percent") = 100.0, py::arg("settle") = true, py::arg("paper") = py::none(),
+      py::arg("steps") = 2000,
+      "Folds a crease pattern from another tool (a FOLD dict as json.load gives it, or the path "
+      "of a FOLD or SVG file in Origami Simulator's convention) with the bar-and-hinge "
+      "simulation, as `curvefold simulate` does: from flat to `percent` of every crease's "
+      "angle, to equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM "
+      "for paper mode. Returns a dict: vertices (n, 3) and development (n, 2) (the pattern's "
+      "flat vertices, after crossings are split, faces triangulated and cuts opened), triangles "
+      "(m, 3), edges (e, 2), assignment (a str, one FOLD letter per edge), strain (e,), "
+      "crease_angle_error (e,) in degrees, converged, residual, notes (what was read but not "
+      "used)");
   m.def("surfaces", &surfacesInfo,
         "The catalogue: {name: {description, parameters: {name: {default, min, max, integer, "
         "description}}, symmetries}}");

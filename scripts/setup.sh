@@ -21,6 +21,8 @@ packages=(
   libcairo2-dev
   # the main job's animated picture of a replay (GIF)
   imagemagick
+  # `simulate --gif`: giflib's colour quantizer and GIF encoder
+  libgif-dev
   # sanitizer build and fuzzers: clang with its runtime libraries (libFuzzer, ASan, UBSan)
   clang libclang-rt-14-dev
   # renderer and desktop window: Vulkan with Mesa's lavapipe and the Khronos validation layer,

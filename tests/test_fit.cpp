@@ -495,3 +495,39 @@ TEST(SuggestionWorker, EndsPromptlyWhileSearching) {
 
 }  // namespace
 }  // namespace curvefold
+
+namespace curvefold {
+namespace {
+
+// Issue 40, 4: the samples a search cannot place on its sheet are counted, not dropped unsaid.
+// A sheet whose development lies far from its origin (at 2^36, some 10^11 times its size: an
+// OBJ's vt in some large frame) has samples that rounding puts outside it by more than the snap
+// distance (1e-6 of its size); the same sheet at the origin loses none.
+TEST(FoldFit, CountsTheSamplesItCannotPlaceOnTheSheet) {
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 300;
+  settings.denseTargetSamples = 2000;
+  settings.proposals = 40;
+  FitOptions options;
+  options.maxFolds = 1;
+  options.maxEvaluations = 100;
+  options.distanceSamples = 1000;
+  std::uint64_t dropped[2] = {0, 0};
+  for (int far = 0; far < 2; ++far) {
+    Sheet sheet = testing::flatGrid(4, 4, 0.25);
+    if (far)
+      for (glm::dvec2& p : sheet.development) p += glm::dvec2(std::ldexp(1.0, 36));
+    // A smooth bend (no crease for the unfolding to read): the search itself runs.
+    TriangleMesh target = meshOf(testing::flatGrid(8, 8, 0.125));
+    for (glm::dvec3& p : target.positions) p.z = 0.2 * std::sin(3.0 * p.x);
+    const FoldFitter fitter(target, settings);
+    FoldSession session(sheet);
+    dropped[far] = fitFolds(session, fitter, options).droppedSamples;
+  }
+  EXPECT_EQ(dropped[0], 0u);
+  EXPECT_GT(dropped[1], 0u);
+}
+
+}  // namespace
+}  // namespace curvefold

@@ -129,6 +129,7 @@ TEST_F(FitCli, TheSeedChoosesTheDesignAndEvaluationsRepeatIt) {
   const nlohmann::json end = nlohmann::json::parse(last);
   EXPECT_EQ(end["out_of_evaluations"], true);
   EXPECT_GE(end["evaluations"].get<std::uint64_t>(), 1200u);
+  EXPECT_EQ(end["dropped_samples"], 0u);  // a sane sheet: every sample placed
 }
 
 // A fine square (23k triangles) folded 24 times by short drags (drawn at random once, kept

@@ -1,8 +1,12 @@
-// `curvefold simulate` (issue 39, 3): outputs all or none, one-line errors.
+// `curvefold simulate` (issue 39, 3): outputs all or none, one-line errors, the folding as frames
+// and as an animated GIF.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
+#include <gif_lib.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -45,6 +49,123 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
   const CommandResult fold = run("simulate other.fold --percent 50 --obj s.obj");
   EXPECT_EQ(fold.exitCode, 1);
   EXPECT_NE(fold.err.find("other.fold"), std::string::npos) << fold.err;
+}
+
+// A GIF decoded by giflib: its screen size, each frame's RGB pixels and delay (centiseconds), and
+// whether it loops (NETSCAPE2.0). Empty frames when it is no GIF.
+struct DecodedGif {
+  int width = 0, height = 0;
+  bool loops = false;
+  std::vector<std::vector<std::uint8_t>> frames;
+  std::vector<int> delays;
+};
+
+DecodedGif decodeGif(const fs::path& path) {
+  DecodedGif decoded;
+  int error = 0;
+  GifFileType* gif = DGifOpenFileName(path.c_str(), &error);
+  if (!gif) return decoded;
+  if (DGifSlurp(gif) == GIF_OK) {
+    decoded.width = gif->SWidth;
+    decoded.height = gif->SHeight;
+    for (int i = 0; i < gif->ImageCount; ++i) {
+      const SavedImage& image = gif->SavedImages[i];
+      const ColorMapObject* map =
+          image.ImageDesc.ColorMap ? image.ImageDesc.ColorMap : gif->SColorMap;
+      if (!map || image.ImageDesc.Width != gif->SWidth || image.ImageDesc.Height != gif->SHeight)
+        return {};
+      std::vector<std::uint8_t> rgb;
+      for (int p = 0; p < gif->SWidth * gif->SHeight; ++p) {
+        const GifColorType c = map->Colors[image.RasterBits[p]];
+        rgb.insert(rgb.end(), {c.Red, c.Green, c.Blue});
+      }
+      decoded.frames.push_back(std::move(rgb));
+      GraphicsControlBlock control{};
+      decoded.delays.push_back(
+          DGifSavedExtensionToGCB(gif, i, &control) == GIF_OK ? control.DelayTime : -1);
+      for (int e = 0; e < image.ExtensionBlockCount; ++e)
+        if (image.ExtensionBlocks[e].Function == APPLICATION_EXT_FUNC_CODE &&
+            image.ExtensionBlocks[e].ByteCount == 11 &&
+            std::string(reinterpret_cast<const char*>(image.ExtensionBlocks[e].Bytes), 11) ==
+                "NETSCAPE2.0")
+          decoded.loops = true;
+    }
+  }
+  DGifCloseFile(gif, &error);
+  return decoded;
+}
+
+// The share of pixels that differ by more than a little between two frames.
+double changedShare(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  std::size_t changed = 0;
+  for (std::size_t p = 0; p + 2 < a.size(); p += 3)
+    if (std::abs(a[p] - b[p]) + std::abs(a[p + 1] - b[p + 1]) + std::abs(a[p + 2] - b[p + 2]) > 24)
+      ++changed;
+  return double(changed) / double(a.size() / 3);
+}
+
+// The GIF holds one frame per state, of half the PNG's size, looping, 0.1 s a frame and the last
+// held a second; each frame shows its own state (the sheet folds from frame to frame: none repeats
+// another, which the renderer's stale upload did after the first two).
+TEST_F(SimulateCli, WritesTheFoldingAsAnAnimatedGif) {
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  const CommandResult result =
+      run("simulate c.curvefold.json --percent 0:100:5 --steps 300 --gif c.gif");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote c.gif"), std::string::npos) << result.out;
+  const DecodedGif gif = decodeGif(path("c.gif"));
+  ASSERT_EQ(gif.frames.size(), 5u);
+  EXPECT_EQ(gif.width, 640);
+  EXPECT_EQ(gif.height, 360);
+  EXPECT_TRUE(gif.loops);
+  EXPECT_EQ(gif.delays, (std::vector<int>{10, 10, 10, 10, 100}));
+  for (std::size_t i = 0; i < gif.frames.size(); ++i)
+    for (std::size_t j = i + 1; j < gif.frames.size(); ++j)
+      EXPECT_GT(changedShare(gif.frames[i], gif.frames[j]), 0.002)
+          << "frames " << i << " and " << j << " show the same state";
+  // The flat sheet and the folded cone cover different pixels (the camera holds still).
+  EXPECT_GT(changedShare(gif.frames.front(), gif.frames.back()), 0.02);
+}
+
+// Each frame of --frames shows its own state: the last frame is the same picture as --png of the
+// same (last) state.
+TEST_F(SimulateCli, EveryFramePictureShowsItsOwnState) {
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  const CommandResult result =
+      run("simulate c.curvefold.json --percent 0:100:3 --settle --frames f --png last.png");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const std::string last = slurp(path("last.png"));
+  ASSERT_FALSE(last.empty());
+  EXPECT_TRUE(slurp(path("f/frame_0002.png")) == last);
+  EXPECT_FALSE(slurp(path("f/frame_0001.png")) == last);
+}
+
+// --gif: one line and exit 1 for a single state, the input, a folder or a missing folder; nothing
+// written, and an existing GIF is left as it was when another output fails.
+TEST_F(SimulateCli, BadGifOutputsAreOneLineAndWriteNothing) {
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  fs::create_directory(path("folder"));
+  for (const auto& [options, fragment] : std::vector<std::pair<std::string, std::string>>{
+           {"--percent 50 --gif s.gif", "--gif"},
+           {"--percent 0:100:3 --gif s.curvefold.json", "s.curvefold.json"},
+           {"--percent 0:100:3 --gif folder", "folder"},
+           {"--percent 0:100:3 --gif missing/s.gif", "missing"},
+           {"--percent 0:100:3 --gif s.gif --obj missing/s.obj", "missing"}}) {
+    const CommandResult result = run("simulate s.curvefold.json --steps 10 " + options);
+    EXPECT_EQ(result.exitCode, 1) << options;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1)
+        << options << ": " << result.err;
+    EXPECT_NE(result.err.find(fragment), std::string::npos) << options << ": " << result.err;
+    EXPECT_FALSE(fs::exists(path("s.gif"))) << options;
+    EXPECT_FALSE(fs::exists(path("missing"))) << options;
+  }
+  { std::ofstream(path("old.gif")) << "before"; }
+  const CommandResult failed = run(
+      "simulate s.curvefold.json --steps 10 --percent 0:100:3 --gif old.gif --obj missing/x.obj");
+  EXPECT_EQ(failed.exitCode, 1);
+  EXPECT_EQ(slurp(path("old.gif")), "before");
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
 }  // namespace

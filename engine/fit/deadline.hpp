@@ -13,11 +13,13 @@ namespace curvefold {
 
 // The moment a search stops (the default never comes), or earlier when `cancelled` is set from
 // another thread. `evaluations`, when set, counts the candidate folds a search scores (a budget
-// that does not depend on the clock: fitFolds checks it between steps).
+// that does not depend on the clock: fitFolds checks it between steps); `droppedSamples`, when set,
+// counts the sheet samples a search could not place on its evaluation copy (FitResult says them).
 struct Deadline {
   std::chrono::steady_clock::time_point at = std::chrono::steady_clock::time_point::max();
   const std::atomic<bool>* cancelled = nullptr;
   std::atomic<std::uint64_t>* evaluations = nullptr;
+  std::atomic<std::uint64_t>* droppedSamples = nullptr;
   // When the time passes (a cancel is not this), a search still answers with the best it has
   // scored (the studio's worker, whose time limit must not leave the designer with nothing);
   // otherwise it answers nothing (the fit drops a step the clock cut short whole).
@@ -43,6 +45,9 @@ struct Deadline {
   }
   void countEvaluation() const {
     if (evaluations) evaluations->fetch_add(1, std::memory_order_relaxed);
+  }
+  void countDroppedSamples(std::uint64_t count) const {
+    if (droppedSamples && count > 0) droppedSamples->fetch_add(count, std::memory_order_relaxed);
   }
 };
 

@@ -99,7 +99,8 @@ struct EvaluationCopy {
   double size = 0.0;
   std::vector<VertexIndex> samples;
   std::vector<glm::dvec3> normals;
-  double radius = 0.0;  // half the samples' spacing
+  double radius = 0.0;      // half the samples' spacing
+  std::size_t dropped = 0;  // samples that could not be placed (FitResult::droppedSamples)
 };
 
 EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::uint64_t seed) {
@@ -123,7 +124,8 @@ EvaluationCopy makeEvaluationCopy(const Sheet& sheet, std::size_t count, std::ui
       copy.samples.push_back(v);
       copy.normals.push_back(glm::normalize(n));
     } catch (const InvalidSheet&) {
-      // A sample on the development's very edge that rounding puts outside: one fewer.
+      // A sample on the development's very edge that rounding puts outside: one fewer, counted.
+      ++copy.dropped;
     }
   }
   copy.adjacency = buildAdjacency(copy.sheet);
@@ -479,6 +481,7 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   if (deadline.givesUp()) return {};
   const EvaluationCopy copy = makeEvaluationCopy(session.fixed(), settings_.sheetSamples,
                                                  settings_.seed * 0x9e3779b97f4a7c15ull + step);
+  deadline.countDroppedSamples(copy.dropped);
   if (copy.samples.empty() || deadline.givesUp()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
@@ -620,6 +623,7 @@ class FitRun {
               session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount())) {
     deadline_.cancelled = options.cancelled;
     deadline_.evaluations = &evaluations_;
+    deadline_.droppedSamples = &droppedSamples_;
   }
 
   FitResult run() {
@@ -641,6 +645,7 @@ class FitRun {
         session_.folds().begin(),
         session_.folds().begin() + static_cast<std::ptrdiff_t>(session_.foldCount()));
     result_.evaluations = evaluations_.load();
+    result_.droppedSamples = droppedSamples_.load();
     if (result_.cancelled) result_.stopReason = "interrupted";
     return std::move(result_);
   }
@@ -823,6 +828,7 @@ class FitRun {
     }
     const FitResult innerResult = FitRun(*branch, *toward, inner, false).run();
     evaluations_ += innerResult.evaluations;
+    droppedSamples_ += innerResult.droppedSamples;
     if (innerResult.cancelled) result_.cancelled = true;
     FoldSequence sequence;
     sequence.folds.assign(
@@ -980,6 +986,7 @@ class FitRun {
   const std::chrono::steady_clock::time_point end_;  // of the whole fit (max: no clock)
   Deadline deadline_;                                // the cancel and the evaluation count
   std::atomic<std::uint64_t> evaluations_{0};
+  std::atomic<std::uint64_t> droppedSamples_{0};
   double startedAt_ = 0.0;              // seconds from start_ to the start's measure
   double foldCost_ = 0.0;               // seconds one fold kept costs at the end
   const std::vector<FoldRecord> base_;  // the session's folds before the fit

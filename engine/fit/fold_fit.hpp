@@ -178,6 +178,10 @@ struct FitResult {
   bool cancelled = false;          // FitOptions::cancelled cut it short
   bool outOfEvaluations = false;   // maxEvaluations cut it short (the same on every run)
   std::uint64_t evaluations = 0;   // candidate folds scored
+  // Sheet samples the search drew but could not place on the sheet (rounding put them outside
+  // its development), summed over the search's steps: each step scores its folds on that many
+  // fewer samples than FitSettings::sheetSamples. 0 on any sane sheet.
+  std::uint64_t droppedSamples = 0;
 };
 
 // Folds `session`'s design toward the fitter's target: a beam search over fold sequences (the

@@ -1,4 +1,4 @@
-// RGBA8 pixels read back from a render, and their PNG encoding.
+// RGBA8 pixels read back from a render, their PNG encoding and resizing (stb).
 #pragma once
 
 #include <cstdint>
@@ -19,5 +19,10 @@ struct RgbaImage {
 
 // The PNG file's bytes (stb_image_write); write them with writeFileAtomically.
 std::string encodePng(const RgbaImage& image);
+
+// The image resampled to width x height (stb_image_resize's default filters: a box-like filter
+// when shrinking, so a half-size frame is antialiased). Throws std::invalid_argument for an empty
+// or inconsistent image or size.
+RgbaImage resizedImage(const RgbaImage& image, std::uint32_t width, std::uint32_t height);
 
 }  // namespace curvefold

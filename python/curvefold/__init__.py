@@ -11,6 +11,8 @@ and hand its meshes to numpy, trimesh or polyscope without files.
     design.export(svg="cylinder.svg", pdf="cylinder.pdf")
     report = curvefold.Design.new("cylinder").fit("target.obj", folds=4, evaluations=20000)
     curvefold.distance(design, "target.obj")["hausdorff"]   # metres, as `curvefold distance`
+    state = curvefold.simulate("pattern.fold", percent=50)   # any crease pattern, folded halfway
+    state["vertices"], state["triangles"], state["strain"]
 
 Errors are one line each. A bad argument raises ValueError naming its parameter ("size: expected
 a number, got NoneType None"); one of the wrong type is curvefold.ArgumentError, both a ValueError
@@ -27,10 +29,12 @@ import functools as _functools
 import re as _re
 
 from . import _curvefold
-from ._curvefold import ArgumentError, CheckResult, Design, FoldResult, distance, replay, surfaces
+from ._curvefold import (ArgumentError, CheckResult, Design, FoldResult, distance, replay, simulate,
+                         surfaces)
 
 __all__ = [
-    "ArgumentError", "CheckResult", "Design", "FoldResult", "distance", "replay", "surfaces"
+    "ArgumentError", "CheckResult", "Design", "FoldResult", "distance", "replay", "simulate",
+    "surfaces"
 ]
 
 
@@ -64,6 +68,7 @@ for _name, _member in list(vars(_curvefold.Design).items()):
                 staticmethod(_one_line_call_errors(_member.__func__, f"Design.{_name}")))
     elif type(_member).__name__ == "instancemethod":
         setattr(Design, _name, _one_line_call_errors(_member.__func__, f"Design.{_name}"))
-for _name in ("distance", "replay", "surfaces"):
+for _name in ("distance", "replay", "simulate", "surfaces"):
     globals()[_name] = _one_line_call_errors(getattr(_curvefold, _name), _name)
 distance, replay, surfaces = globals()["distance"], globals()["replay"], globals()["surfaces"]
+simulate = globals()["simulate"]

@@ -132,4 +132,17 @@ def distance(
     png: str | PathLike[str] | None = None,
 ) -> dict[str, float]: ...
 def surfaces() -> dict[str, dict[str, Any]]: ...
+
+# What Design.simulate and simulate return: vertices (n, 3) float64, development (n, 2) float64,
+# triangles (m, 3) uint32, edges (e, 2) uint32, assignment (str, one FOLD letter per edge), strain
+# (e,) float64, crease_angle_error (e,) float64 degrees, converged (bool), residual (float), notes
+# (list[str]).
+def simulate(
+    pattern: dict[str, Any] | str | PathLike[str],
+    *,
+    percent: float = 100.0,
+    settle: bool = True,
+    paper: float | None = None,
+    steps: int = 2000,
+) -> dict[str, Any]: ...
 def replay(recording: str | PathLike[str]) -> Design: ...

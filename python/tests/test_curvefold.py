@@ -372,6 +372,7 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     assert report["folds"] >= 1 and len(design.folds) == report["folds"]
     assert report["out_of_evaluations"] and not report["timed_out"]
     assert report["evaluations"] >= 1200
+    assert report["dropped_samples"] == 0
     design.save(tmp_path / "python.curvefold.json")
     out = cli("fit", target, "--from", "square", "--resolution", "12", "--folds", "2",
               "--evaluations", "1200", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout

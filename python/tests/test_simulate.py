@@ -1,5 +1,8 @@
 """Design.simulate: the bar-and-hinge simulation from Python (issue 39, 5)."""
 
+import json
+import os
+
 import numpy as np
 import pytest
 
@@ -30,3 +33,138 @@ def test_simulate_refuses_a_percent_out_of_range():
     design = curvefold.Design.new("square")
     with pytest.raises(ValueError, match="percent"):
         design.simulate(percent=150)
+
+
+# curvefold.simulate: crease patterns from other tools (issue 39, 5), made here two ways.
+
+def square_with_crease(angle=90.0, assignment="V"):
+    """A FOLD dict as json.load gives it: a 2 x 1 sheet with one crease down its middle."""
+    return {
+        "file_spec": 1.1,
+        "vertices_coords": [[0, 0], [1, 0], [2, 0], [2, 1], [1, 1], [0, 1]],
+        "edges_vertices": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+        "edges_assignment": ["B", "B", "B", "B", "B", "B", assignment],
+        "edges_foldAngle": [0, 0, 0, 0, 0, 0, angle],
+    }
+
+
+def fold_angle_degrees(result):
+    """The angle between the normals of the triangles on either side of the one crease edge."""
+    vertices, triangles = result["vertices"], result["triangles"]
+    crease = [i for i, letter in enumerate(result["assignment"]) if letter in "MV"]
+    assert len(crease) == 1
+    a, b = result["edges"][crease[0]]
+    sides = [t for t in triangles if a in t and b in t]
+    assert len(sides) == 2
+    normals = []
+    for t in sides:
+        p, q, r = vertices[t]
+        n = np.cross(q - p, r - p)
+        normals.append(n / np.linalg.norm(n))
+    return np.degrees(np.arccos(np.clip(np.dot(*normals), -1, 1)))
+
+
+def test_simulate_folds_a_fold_dict_to_the_percent_of_its_crease():
+    for percent in (0, 25, 50, 100):
+        result = curvefold.simulate(square_with_crease(), percent=percent)
+        assert result["converged"]
+        n = result["vertices"].shape[0]
+        assert result["vertices"].shape == (n, 3) and result["development"].shape == (n, 2)
+        assert result["triangles"].shape[1] == 3 and result["triangles"].dtype == np.uint32
+        assert result["strain"].shape == (len(result["assignment"]),)
+        assert np.abs(result["strain"]).max() < 1e-6
+        assert abs(fold_angle_degrees(result) - 0.9 * percent) < 0.5, percent
+        assert np.abs(result["crease_angle_error"]).max() < 0.5
+    # At 0% the state is the flat pattern itself.
+    flat = curvefold.simulate(square_with_crease(), percent=0)
+    assert np.array_equal(flat["vertices"][:, :2], flat["development"])
+    assert np.all(flat["vertices"][:, 2] == 0)
+
+
+def test_simulate_reads_fold_and_svg_files_and_numpy_arrays(tmp_path):
+    pattern = square_with_crease(angle=-180.0, assignment="M")
+    fold_path = tmp_path / "crease.fold"
+    fold_path.write_text(json.dumps(pattern))
+    # The same sheet drawn as Origami Simulator draws it: black border, red mountain, full opacity
+    # (180 degrees); 100 user units to the metre of the FOLD file's 1.
+    svg_path = tmp_path / "crease.svg"
+    svg_path.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100">'
+        '<rect x="0" y="0" width="200" height="100" fill="none" stroke="#000000"/>'
+        '<line x1="100" y1="0" x2="100" y2="100" stroke="#ff0000"/></svg>')
+    as_arrays = dict(pattern, vertices_coords=np.array(pattern["vertices_coords"], float),
+                     edges_vertices=np.array(pattern["edges_vertices"]))
+    for source in (fold_path, str(fold_path), svg_path, as_arrays):
+        result = curvefold.simulate(source, percent=50, settle=True)
+        assert result["converged"], source
+        assert abs(fold_angle_degrees(result) - 90.0) < 0.5, source
+        assert np.abs(result["strain"]).max() < 1e-6
+    # The dynamic solver gets there too, given steps.
+    moving = curvefold.simulate(fold_path, percent=50, settle=False, steps=5000)
+    assert not moving["converged"]
+    assert abs(fold_angle_degrees(moving) - 90.0) < 2.0
+
+
+def test_simulate_paper_mode_bends_the_facets_freely():
+    result = curvefold.simulate(square_with_crease(), percent=50, paper=0.1)
+    assert result["converged"]
+    assert abs(fold_angle_degrees(result) - 45.0) < 0.5
+
+
+def one_line(error):
+    message = str(error.value)
+    assert "\n" not in message, message
+    return message
+
+
+def test_simulate_bad_values_are_value_errors_naming_the_parameter():
+    crossing = square_with_crease()
+    crossing["edges_vertices"].append([0, 3])  # crosses the crease without a vertex
+    crossing["edges_assignment"].append("M")
+    crossing["edges_foldAngle"].append(-90)
+    not_a_number = square_with_crease()
+    not_a_number["vertices_coords"][2] = [float("nan"), 0]
+    cases = [
+        (lambda: curvefold.simulate(crossing), "pattern: "),
+        (lambda: curvefold.simulate(not_a_number), "pattern: holds a NaN"),
+        (lambda: curvefold.simulate({"vertices_coords": 5}), "pattern: "),
+        (lambda: curvefold.simulate({"vertices_coords": [[0, 0]], "x": object()}), "pattern: "),
+        (lambda: curvefold.simulate(square_with_crease(), percent=150), "percent: "),
+        (lambda: curvefold.simulate(square_with_crease(), percent=float("nan")), "percent: "),
+        (lambda: curvefold.simulate(square_with_crease(), paper=0), "paper: "),
+        (lambda: curvefold.simulate(square_with_crease(), steps=-1), "steps: "),
+    ]
+    for call, prefix in cases:
+        with pytest.raises(ValueError) as error:
+            call()
+        assert one_line(error).startswith(prefix), (prefix, str(error.value))
+    for call, parameter in [
+        (lambda: curvefold.simulate(3), "pattern"),
+        (lambda: curvefold.simulate([1, 2]), "pattern"),
+        (lambda: curvefold.simulate(square_with_crease(), percent="50"), "percent"),
+        (lambda: curvefold.simulate(square_with_crease(), settle="yes"), "settle"),
+        (lambda: curvefold.simulate(square_with_crease(), steps=2.5), "steps"),
+    ]:
+        with pytest.raises(curvefold.ArgumentError) as error:
+            call()
+        assert one_line(error).startswith(parameter + ": "), (parameter, str(error.value))
+    with pytest.raises(TypeError, match="^simulate\\(\\): missing or unexpected arguments"):
+        curvefold.simulate(square_with_crease(), amount=50)
+
+
+def test_simulate_files_that_cannot_be_read_are_os_errors_naming_the_path(tmp_path):
+    for path in (tmp_path / "missing.fold", tmp_path):
+        with pytest.raises(OSError) as error:
+            curvefold.simulate(path)
+        assert str(path) in one_line(error)
+    fifo = tmp_path / "pipe.fold"
+    os.mkfifo(fifo)
+    with pytest.raises(OSError) as error:
+        curvefold.simulate(fifo)  # refused, not read (it would block)
+    assert str(fifo) in one_line(error)
+    # A file that is there but is no crease pattern: its content is wrong, a ValueError naming it.
+    text = tmp_path / "notes.txt"
+    text.write_text("hello")
+    with pytest.raises(ValueError) as error:
+        curvefold.simulate(text)
+    assert str(text) in one_line(error)
