@@ -755,11 +755,34 @@ class FitRun {
     const std::optional<RigidMotion> motion = registerSheetOnto(
         meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal());
     if (!motion || deadline.passed()) return false;
-    const std::vector<ReflectionPlane> planes =
+    // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
+    // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
+    // time may cut it at the other.
+    const RigidMotion back{glm::inverse(motion->linear),
+                           -(glm::inverse(motion->linear) * motion->offset)};
+    TargetUnfolding moved = plan;
+    for (glm::dvec3& p : moved.unfolded) p = back(p);
+    for (UnfoldedFold& fold : moved.folds)
+      fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
+    const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
+    const FoldSequence readFirst =
+        replay(moved, *lastBranch, session_.initial(), deadline, options_.maxFolds);
+    const std::vector<ReflectionPlane> first =
         wholeSheetReflections(*motion, session_.initial().positions);
-    if (planes.empty() || planes.size() >= options_.maxFolds) return false;
+    const std::vector<ReflectionPlane> last =
+        readFirst.groups.size() == plan.folds.size()
+            ? wholeSheetReflections(*motion, lastBranch->fixed().positions)
+            : std::vector<ReflectionPlane>{};
+    const bool atEnd = !last.empty() && (first.empty() || last.size() < first.size());
+    const std::vector<ReflectionPlane>& planes = atEnd ? last : first;
+    if (planes.empty() || planes.size() + plan.folds.size() > options_.maxFolds) return false;
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence sequence;
+    if (atEnd) {
+      const FoldSequence read = replay(moved, *branch, session_.initial(), deadline);
+      sequence.folds = read.folds;
+      sequence.groups = read.groups;
+    }
     for (const ReflectionPlane& plane : planes) {
       const std::size_t before = branch->foldCount();
       const glm::dvec3 grabbed = branch->beginDragAtDevelopment(branch->fixed().development[0]);
@@ -770,11 +793,13 @@ class FitRun {
           branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
       sequence.groups.push_back(branch->foldCount() - before);
     }
-    const Sheet reached = branch->fixed();
-    const FoldSequence read =
-        replay(plan, *branch, reached, deadline, options_.maxFolds - sequence.groups.size());
-    sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
-    sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
+    if (!atEnd) {
+      const Sheet reached = branch->fixed();
+      const FoldSequence read =
+          replay(plan, *branch, reached, deadline, options_.maxFolds - sequence.groups.size());
+      sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
+      sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
+    }
     return offer(std::move(sequence), *branch);
   }
 
