@@ -3,6 +3,7 @@
 // each a case the unfolding once misread, found again exactly; the start surface sized to a
 // shape, and the shape's rotational symmetry.
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -91,6 +92,43 @@ TEST(FitReading, ACreaseAlongACylindersFacetsIsAPlaneToo) {
 TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
   expectFoundExactly({"anywhere-long", "square", 6, 620580,
                       "its unfolding ends on the sheet only after more than 160 orders tried"});
+}
+
+// A fold whose plane misses the sheet moves all of it and leaves no crease (a drag away from the
+// sheet's edge): the target unfolds to a moved copy of the sheet, which folds of the whole sheet
+// put back (whole_sheet_folds.hpp), and the folds read follow. The search toward the moved copy,
+// in the same evaluations, did not find two such folds.
+TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  FoldSession folding(initial);
+  folding.beginDragNear({0.1, 0.1, 0.0});
+  folding.updateDrag({0.03, 0.05, 0.06});  // a corner folded up
+  ASSERT_TRUE(folding.commit());
+  // Then the sheet's farthest point along a direction dragged on along it: the plane lies past
+  // the sheet, and all of it moves.
+  for (const glm::dvec3& along : {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)}) {
+    const Sheet before = folding.fixed();
+    glm::dvec3 farthest = before.positions.front();
+    for (const glm::dvec3& p : before.positions)
+      if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
+    folding.beginDragNear(farthest);
+    folding.updateDrag(farthest + 0.15 * glm::normalize(along));
+    ASSERT_TRUE(folding.commit());
+    for (std::size_t v = 0; v < before.vertexCount(); ++v)
+      ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  }
+  const TriangleMesh target = meshOf(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  FitOptions options;
+  options.maxFolds = 6;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 2000;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
 }
 
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.

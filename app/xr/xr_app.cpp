@@ -141,7 +141,8 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
     options.exportDir = fs::path(autosave_).parent_path().string();
     if (options.exportDir.empty()) options.exportDir = ".";
   }
-  options.name = options_.input.empty() ? kDefaultSurface : options_.input;
+  // A string on both sides: GCC 12 inlines assign(const char*) here into a false -Wrestrict.
+  options.name = options_.input.empty() ? std::string(kDefaultSurface) : options_.input;
   options.recent = session::loadRecentDesigns();
   options.target = options_.target;
   options.sheetFrame = sheetFrame;

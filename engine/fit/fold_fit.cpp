@@ -20,6 +20,7 @@
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/fit/unit_draw.hpp"
+#include "engine/fit/whole_sheet_folds.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -39,6 +40,11 @@ constexpr double kCreaseSlack = 1.1;
 // An unfolded target's folds that bring the sheet this close (Hausdorff, of the target's
 // diagonal) end the fit.
 constexpr double kUnfoldedCloseEnough = 1e-3;
+// An unfolding that ends with less crease than this (of the diagonal) is smooth: a rigid copy of
+// the sheet where folds that left no crease moved it whole.
+constexpr double kSmoothLeft = 0.01;
+// How close (of the diagonal) the sheet must lie on that copy, both ways, once moved onto it.
+constexpr double kWholeSheetTolerance = 1e-4;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -730,11 +736,72 @@ class FitRun {
     // unfolding that ends off it), what it read is used still: the search folds the sheet
     // toward where the unfolding stopped, and the folds read follow.
     const TriangleMesh unfolded{plan.unfolded, fitter_.target().triangles};
-    if (plan.folds.empty() || planned.groups.size() >= options_.maxFolds ||
+    if (planned.groups.size() >= options_.maxFolds ||
         surfaceDistance(unfolded, meshOf(session_.initial()), options_.distanceSamples)
                 .relativeHausdorff() <= kUnfoldedCloseEnough)
       return false;
+    // Smooth but off the sheet: folds that left no crease (their planes missed the sheet) moved
+    // it whole. That motion, as such folds, then the folds read.
+    if (plan.sharpLengthLeft <= kSmoothLeft * fitter_.targetDiagonal() && base_.empty() &&
+        foldWholeSheetFirst(plan, unfolded, deadline))
+      return true;
+    if (plan.folds.empty() || deadline.passed()) return false;
     return searchTowardUnfolded(plan, unfolded, planned.groups.size());
+  }
+
+  // The rigid motion from the sheet to the smooth unfolded target, made as folds of the whole
+  // sheet (whole_sheet_folds.hpp), then the unfolding's folds: true when that reaches the target.
+  bool foldWholeSheetFirst(const TargetUnfolding& plan, const TriangleMesh& unfolded,
+                           const Deadline& deadline) {
+    const std::optional<RigidMotion> motion = registerSheetOnto(
+        meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal());
+    if (!motion || deadline.passed()) return false;
+    // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
+    // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
+    // time may cut it at the other.
+    const RigidMotion back{glm::inverse(motion->linear),
+                           -(glm::inverse(motion->linear) * motion->offset)};
+    TargetUnfolding moved = plan;
+    for (glm::dvec3& p : moved.unfolded) p = back(p);
+    for (UnfoldedFold& fold : moved.folds)
+      fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
+    const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
+    const FoldSequence readFirst =
+        replay(moved, *lastBranch, session_.initial(), deadline, options_.maxFolds);
+    const std::vector<ReflectionPlane> first =
+        wholeSheetReflections(*motion, session_.initial().positions);
+    const std::vector<ReflectionPlane> last =
+        readFirst.groups.size() == plan.folds.size()
+            ? wholeSheetReflections(*motion, lastBranch->fixed().positions)
+            : std::vector<ReflectionPlane>{};
+    const bool atEnd = !last.empty() && (first.empty() || last.size() < first.size());
+    const std::vector<ReflectionPlane>& planes = atEnd ? last : first;
+    if (planes.empty() || planes.size() + plan.folds.size() > options_.maxFolds) return false;
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    FoldSequence sequence;
+    if (atEnd) {
+      const FoldSequence read = replay(moved, *branch, session_.initial(), deadline);
+      sequence.folds = read.folds;
+      sequence.groups = read.groups;
+    }
+    for (const ReflectionPlane& plane : planes) {
+      const std::size_t before = branch->foldCount();
+      const glm::dvec3 grabbed = branch->beginDragAtDevelopment(branch->fixed().development[0]);
+      branch->updateDrag(plane.reflect(grabbed));
+      if (!branch->commit()) return false;
+      sequence.folds.insert(
+          sequence.folds.end(), branch->folds().begin() + static_cast<std::ptrdiff_t>(before),
+          branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
+      sequence.groups.push_back(branch->foldCount() - before);
+    }
+    if (!atEnd) {
+      const Sheet reached = branch->fixed();
+      const FoldSequence read =
+          replay(plan, *branch, reached, deadline, options_.maxFolds - sequence.groups.size());
+      sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
+      sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
+    }
+    return offer(std::move(sequence), *branch);
   }
 
   // The unfolding's folds made on `branch` (the session's folds and maybe more), each seeded at
@@ -744,7 +811,8 @@ class FitRun {
   // fold brings its images, which the unfolding reads as folds of their own: a fold read whose
   // plane an image already made is skipped.
   FoldSequence replay(const TargetUnfolding& plan, FoldSession& branch, const Sheet& seedsOn,
-                      const Deadline& deadline) const {
+                      const Deadline& deadline, std::size_t most = 0) const {
+    if (most == 0) most = options_.maxFolds;
     const Symmetry* symmetry = session_.symmetry();
     const double size = sheetSize(session_.initial());
     const std::size_t first = branch.foldCount();
@@ -765,7 +833,7 @@ class FitRun {
     FoldSequence planned;
     for (std::size_t k = 0; k < plan.folds.size(); ++k) {
       if (symmetry && madeAlready(plan.folds[k].plane)) continue;
-      if (planned.groups.size() >= options_.maxFolds || deadline.passed()) break;
+      if (planned.groups.size() >= most || deadline.passed()) break;
       const std::size_t before = branch.foldCount();
       const glm::dvec3 grabbed = branch.beginDragAtDevelopment(seeds[k]);
       branch.updateDrag(plan.folds[k].plane.reflect(grabbed));

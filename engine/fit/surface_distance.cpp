@@ -34,6 +34,11 @@ struct SurfaceDistanceQuery::Tree {
     return std::sqrt(tree_.tree.squared_distance(cgalPoint(p)));
   }
 
+  glm::dvec3 closest(const glm::dvec3& p) const {
+    const auto q = tree_.tree.closest_point(cgalPoint(p));
+    return {CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
+  }
+
   CgalTriangleTree tree_;
 };
 
@@ -42,6 +47,9 @@ SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& mesh, const char*
 SurfaceDistanceQuery::~SurfaceDistanceQuery() = default;
 double SurfaceDistanceQuery::distance(const glm::dvec3& p) const {
   return tree_->distance(p);
+}
+glm::dvec3 SurfaceDistanceQuery::closestPoint(const glm::dvec3& p) const {
+  return tree_->closest(p);
 }
 
 std::vector<double> pointDistances(std::span<const glm::dvec3> points,

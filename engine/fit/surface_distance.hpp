@@ -49,6 +49,7 @@ class SurfaceDistanceQuery {
   SurfaceDistanceQuery(const SurfaceDistanceQuery&) = delete;
   SurfaceDistanceQuery& operator=(const SurfaceDistanceQuery&) = delete;
   double distance(const glm::dvec3& p) const;
+  glm::dvec3 closestPoint(const glm::dvec3& p) const;  // the surface's point nearest p
 
  private:
   struct Tree;

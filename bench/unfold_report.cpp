@@ -1,0 +1,100 @@
+// Why a reachable target's unfolding misses (issue 38, 1): for a target OBJ and the design that
+// made it, the design's fold planes, the crease planes read off the target (crease_planes.hpp) and
+// which fold each names, and what the unfolding (target_unfolding.hpp) read.
+//
+//   build/bench/unfold_report TARGET.obj DESIGN.curvefold.json
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "engine/fit/crease_planes.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/whole_sheet_folds.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/surfaces/obj_surface.hpp"
+
+namespace curvefold {
+namespace {
+
+bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double size) {
+  return std::abs(std::abs(glm::dot(a.normal, b.normal)) - 1.0) < 1e-4 &&
+         std::abs(a.signedDistance(b.point)) < 1e-4 * size;
+}
+
+int run(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: unfold_report TARGET.obj DESIGN.curvefold.json\n");
+    return 2;
+  }
+  const TriangleMesh target = readObjMesh(argv[1]);
+  const Design design = loadDesign(argv[2]);
+  const Sheet initial = initialSheet(design);
+  const TriangleMesh sheet = meshOf(initial);
+  const double size = boundingDiagonal(target);
+  const double threshold = sharpEdgeThreshold(sheet);
+  std::printf("target: %zu vertices, diagonal %.4f; threshold %.2f deg; %zu folds%s%s\n",
+              target.positions.size(), size, threshold, design.folds.size(),
+              design.symmetry.empty() ? "" : ", symmetry ", design.symmetry.c_str());
+  CreasePlaneOptions options;
+  options.minDihedralDegrees = threshold;
+  const std::vector<CreasePlane> planes = findCreasePlanes(target, options);
+  for (std::size_t f = 0; f < design.folds.size(); ++f) {
+    int found = -1;
+    for (std::size_t p = 0; p < planes.size(); ++p)
+      if (samePlane(planes[p].plane, design.folds[f].plane, size)) found = int(p);
+    std::printf("fold %zu (group %u): plane n=(%.3f %.3f %.3f) d=%.4f  crease plane %d\n", f + 1,
+                design.folds[f].group, design.folds[f].plane.normal.x,
+                design.folds[f].plane.normal.y, design.folds[f].plane.normal.z,
+                glm::dot(design.folds[f].plane.normal, design.folds[f].plane.point), found);
+  }
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    int fold = -1;
+    for (std::size_t f = 0; f < design.folds.size(); ++f)
+      if (samePlane(planes[p].plane, design.folds[f].plane, size)) fold = int(f) + 1;
+    std::printf("crease plane %zu: support %.4f (%.2f%%), fold %d\n", p, planes[p].support,
+                100 * planes[p].support / size, fold);
+  }
+  const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, 12);
+  const TriangleMesh unfolded{plan.unfolded, target.triangles};
+  std::printf("unfolding: %zu folds, sharp left %.4f (%.2f%%), off sheet Hausdorff %.3f%%\n",
+              plan.folds.size(), plan.sharpLengthLeft, 100 * plan.sharpLengthLeft / size,
+              100 * surfaceDistance(unfolded, sheet, 5000).relativeHausdorff());
+  for (const UnfoldedFold& u : plan.folds) {
+    int fold = -1;
+    for (std::size_t f = 0; f < design.folds.size(); ++f)
+      if (samePlane(u.plane, design.folds[f].plane, size)) fold = int(f) + 1;
+    std::printf("  read n=(%.3f %.3f %.3f) d=%.4f = fold %d\n", u.plane.normal.x, u.plane.normal.y,
+                u.plane.normal.z, glm::dot(u.plane.normal, u.plane.point), fold);
+  }
+  if (plan.sharpLengthLeft < 0.01 * size) {
+    const std::optional<RigidMotion> motion = registerSheetOnto(sheet, unfolded, 1e-4 * size);
+    std::printf("rigid copy of the sheet: %s", motion ? "yes" : "no");
+    if (motion) {
+      for (int r = 0; r < 3; ++r)
+        std::printf("\n  [%.6f %.6f %.6f | %.6f]", motion->linear[0][r], motion->linear[1][r],
+                    motion->linear[2][r], motion->offset[r]);
+      std::printf("\n  det %.6f", glm::determinant(motion->linear));
+    }
+    if (motion)
+      std::printf(", %zu whole-sheet folds",
+                  wholeSheetReflections(*motion, initial.positions).size());
+    std::printf("\n");
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace curvefold
+
+int main(int argc, char** argv) {
+  try {
+    return curvefold::run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "unfold_report: %s\n", e.what());
+    return 1;
+  }
+}

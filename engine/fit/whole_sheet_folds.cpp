@@ -1,0 +1,398 @@
+#include "engine/fit/whole_sheet_folds.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::Vector3d eigenOf(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+glm::dvec3 glmOf(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+Eigen::Matrix3d eigenOf(const glm::dmat3& m) {
+  Eigen::Matrix3d e;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) e(r, c) = m[c][r];
+  return e;
+}
+glm::dmat3 glmOf(const Eigen::Matrix3d& e) {
+  glm::dmat3 m;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) m[c][r] = e(r, c);
+  return m;
+}
+
+double diagonalOf(const std::vector<glm::dvec3>& points) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return points.empty() ? 0.0 : glm::distance(lo, hi);
+}
+
+struct Frame {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // principal axes, columns
+};
+
+Frame principalFrame(const TriangleMesh& mesh) {
+  const std::vector<SurfaceSample> samples = sampleSurface(mesh, 4000, 11);
+  Frame frame;
+  for (const SurfaceSample& s : samples) frame.centre += eigenOf(s.position);
+  frame.centre /= double(std::max<std::size_t>(1, samples.size()));
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const SurfaceSample& s : samples) {
+    const Eigen::Vector3d d = eigenOf(s.position) - frame.centre;
+    covariance += d * d.transpose();
+  }
+  frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
+  return frame;
+}
+
+// A proper motion after a fixed mirror (or none): what ICP refines.
+struct Pose {
+  bool mirrored = false;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  double residual = 1e300;
+};
+
+const Eigen::Matrix3d kMirror = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+
+Eigen::Vector3d apply(const Pose& pose, const Eigen::Vector3d& x) {
+  return pose.rotation * (pose.mirrored ? Eigen::Vector3d(kMirror * x) : x) + pose.offset;
+}
+
+double meanDistance(const Pose& pose, const std::vector<Eigen::Vector3d>& points,
+                    const SurfaceDistanceQuery& moved) {
+  double sum = 0.0;
+  for (const Eigen::Vector3d& p : points) sum += moved.distance(glmOf(apply(pose, p)));
+  return sum / double(std::max<std::size_t>(1, points.size()));
+}
+
+// Point-to-point ICP against the exact closest points, Umeyama's closed form each step.
+Pose refine(Pose pose, const std::vector<Eigen::Vector3d>& points,
+            const SurfaceDistanceQuery& moved, double scale) {
+  Eigen::Matrix3Xd source(3, points.size()), target(3, points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    source.col(Eigen::Index(i)) = pose.mirrored ? Eigen::Vector3d(kMirror * points[i]) : points[i];
+  double last = 1e300;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector3d at = pose.rotation * source.col(Eigen::Index(i)) + pose.offset;
+      const Eigen::Vector3d q = eigenOf(moved.closestPoint(glmOf(at)));
+      target.col(Eigen::Index(i)) = q;
+      sum += (q - at).norm();
+    }
+    pose.residual = sum / double(std::max<std::size_t>(1, points.size()));
+    if (pose.residual < 1e-12 * scale || !(pose.residual < last - 1e-14 * scale)) break;
+    last = pose.residual;
+    const Eigen::Matrix4d m = Eigen::umeyama(source, target, false);
+    pose.rotation = m.topLeftCorner<3, 3>();
+    pose.offset = m.topRightCorner<3, 1>();
+  }
+  return pose;
+}
+
+RigidMotion motionOf(const Pose& pose) {
+  const Eigen::Matrix3d linear =
+      pose.mirrored ? Eigen::Matrix3d(pose.rotation * kMirror) : pose.rotation;
+  return {glmOf(linear), glmOf(pose.offset)};
+}
+
+Eigen::Matrix3d turn(int axis, double radians) {
+  return Eigen::AngleAxisd(radians, Eigen::Vector3d::Unit(axis)).toRotationMatrix();
+}
+
+// x -> H x + 2 (n.p) n, the reflection through the plane.
+RigidMotion reflectionOf(const ReflectionPlane& plane) {
+  const glm::dvec3 n = plane.normal;
+  return {glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n), 2.0 * glm::dot(n, plane.point) * n};
+}
+
+RigidMotion then(const RigidMotion& first, const RigidMotion& second) {
+  return {second.linear * first.linear, second.linear * first.offset + second.offset};
+}
+
+bool sameMotion(const RigidMotion& a, const RigidMotion& b, double scale) {
+  double linear = 0.0;
+  for (int c = 0; c < 3; ++c) linear = std::max(linear, glm::length(a.linear[c] - b.linear[c]));
+  return linear < 1e-7 && glm::distance(a.offset, b.offset) < 1e-7 * std::max(scale, 1e-9);
+}
+
+// Whether the plane leaves every point on one side, `margin` clear.
+bool misses(const ReflectionPlane& plane, const std::vector<glm::dvec3>& points, double margin) {
+  bool above = false, below = false;
+  for (const glm::dvec3& p : points) {
+    const double d = plane.signedDistance(p);
+    if (std::abs(d) < margin) return false;
+    (d > 0.0 ? above : below) = true;
+    if (above && below) return false;
+  }
+  return true;
+}
+
+// Every plane misses the sheet where the planes before it left it, and together they make
+// `motion`.
+bool folds(const std::vector<ReflectionPlane>& planes, const RigidMotion& motion,
+           std::vector<glm::dvec3> points, double margin, double scale) {
+  RigidMotion made;
+  for (const ReflectionPlane& plane : planes) {
+    if (!misses(plane, points, margin)) return false;
+    for (glm::dvec3& p : points) p = plane.reflect(p);
+    made = then(made, reflectionOf(plane));
+  }
+  return sameMotion(made, motion, scale);
+}
+
+double highest(const glm::dvec3& n, const std::vector<glm::dvec3>& points) {
+  double h = -1e300;
+  for (const glm::dvec3& p : points) h = std::max(h, glm::dot(n, p));
+  return h;
+}
+
+}  // namespace
+
+std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,
+                                             double tolerance) {
+  if (sheet.triangles.empty() || moved.triangles.empty()) return std::nullopt;
+  const SurfaceDistanceQuery movedSurface(moved, "target");
+  const double scale = boundingDiagonal(sheet);
+  const Frame from = principalFrame(sheet), to = principalFrame(moved);
+  std::vector<Eigen::Vector3d> coarse, fine, all;
+  for (const SurfaceSample& s : sampleSurface(sheet, 64, 5)) coarse.push_back(eigenOf(s.position));
+  for (const glm::dvec3& p : sheet.positions) all.push_back(eigenOf(p));
+  for (std::size_t i = 0; i < all.size(); i += 1 + all.size() / 600) fine.push_back(all[i]);
+
+  // Starts: the principal axes matched with every sign, and turned about each of the sheet's
+  // axes (a square's or a disk's axes are any in its plane).
+  std::vector<Pose> starts;
+  for (int signs = 0; signs < 8; ++signs) {
+    const Eigen::Vector3d s(signs & 1 ? -1.0 : 1.0, signs & 2 ? -1.0 : 1.0, signs & 4 ? -1.0 : 1.0);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int step = 0; step < 24; ++step) {
+        if (step == 0 && axis > 0) continue;
+        const Eigen::Matrix3d linear =
+            to.axes * s.asDiagonal() * turn(axis, step * kPi / 12.0) * from.axes.transpose();
+        Pose pose;
+        pose.mirrored = linear.determinant() < 0.0;
+        pose.rotation = pose.mirrored ? Eigen::Matrix3d(linear * kMirror) : linear;
+        pose.offset = to.centre - linear * from.centre;
+        pose.residual = meanDistance(pose, coarse, movedSurface);
+        starts.push_back(pose);
+      }
+  }
+  std::stable_sort(starts.begin(), starts.end(),
+                   [](const Pose& a, const Pose& b) { return a.residual < b.residual; });
+  Pose best;
+  for (std::size_t k = 0; k < std::min<std::size_t>(4, starts.size()); ++k) {
+    Pose pose = refine(starts[k], fine, movedSurface, scale);
+    if (pose.residual < best.residual) best = pose;
+    if (best.residual < 1e-9 * scale) break;
+  }
+  best = refine(best, all, movedSurface, scale);
+  const RigidMotion motion = motionOf(best);
+  // Both ways within the tolerance: the sheet on the copy and the copy on the sheet.
+  TriangleMesh placed = sheet;
+  for (glm::dvec3& p : placed.positions) p = motion(p);
+  const SurfaceDistanceQuery placedSurface(placed, "sheet");
+  for (const glm::dvec3& p : placed.positions)
+    if (!(movedSurface.distance(p) <= tolerance)) return std::nullopt;
+  for (const glm::dvec3& p : moved.positions)
+    if (!(placedSurface.distance(p) <= tolerance)) return std::nullopt;
+  return motion;
+}
+
+namespace {
+
+// The turn of a proper linear part: its axis (unit) and angle.
+void axisAngle(const Eigen::Matrix3d& rotation, glm::dvec3& axis, double& angle) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 *
+                                                              (rotation + rotation.transpose()));
+  axis = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(2))));
+  angle = std::acos(std::clamp(0.5 * (rotation.trace() - 1.0), -1.0, 1.0));
+}
+
+Eigen::Matrix3d orthogonalPart(const glm::dmat3& m) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(eigenOf(m),
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  return svd.matrixU() * svd.matrixV().transpose();
+}
+
+// Two planes, both missing the sheet where each acts, making a proper motion: parallel planes
+// for a shift, else planes through the motion's fixed line (a turn with a shift along its axis
+// has none: nothing).
+std::optional<std::vector<ReflectionPlane>> twoPlanes(const RigidMotion& motion,
+                                                      const std::vector<glm::dvec3>& points,
+                                                      double margin, double scale) {
+  const Eigen::Matrix3d A = orthogonalPart(motion.linear);
+  if (A.determinant() < 0.0) return std::nullopt;
+  const glm::dvec3 t = motion.offset;
+  glm::dvec3 axis;
+  double angle = 0.0;
+  axisAngle(A, axis, angle);
+  if (angle < 1e-9) {
+    const double length = glm::length(t);
+    if (length < 1e-12 * scale) return std::nullopt;
+    const glm::dvec3 n = t / length;
+    const double d1 = highest(n, points) + 0.5 * length + 10.0 * margin;
+    const std::vector<ReflectionPlane> pair{{d1 * n, n}, {(d1 + 0.5 * length) * n, n}};
+    if (folds(pair, motion, points, margin, scale)) return pair;
+    return std::nullopt;
+  }
+  if (std::abs(glm::dot(t, axis)) > 1e-9 * scale) return std::nullopt;
+  // The fixed line: (I - A) q = t, least squares across the axis.
+  const glm::dvec3 through = glmOf(Eigen::Vector3d(
+      (Eigen::Matrix3d::Identity() - A).completeOrthogonalDecomposition().solve(eigenOf(t))));
+  const glm::dvec3 u = glm::normalize(
+      glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+  const glm::dvec3 w = glm::cross(axis, u);
+  for (int step = 0; step < 720; ++step) {
+    const double phi = step * kPi / 360.0;
+    const glm::dvec3 n1 = std::cos(phi) * u + std::sin(phi) * w;
+    if (!misses({through, n1}, points, margin)) continue;
+    for (const double sign : {1.0, -1.0}) {
+      const double psi = phi + sign * 0.5 * angle;
+      const std::vector<ReflectionPlane> pair{{through, n1},
+                                              {through, std::cos(psi) * u + std::sin(psi) * w}};
+      if (folds(pair, motion, points, margin, scale)) return pair;
+    }
+  }
+  return std::nullopt;
+}
+
+// Three planes for an improper motion: one plane chosen so that the rest is a turn about a line
+// (no shift along it), which two planes make; that plane acting first or last.
+std::optional<std::vector<ReflectionPlane>> threePlanes(const RigidMotion& motion,
+                                                        const std::vector<glm::dvec3>& points,
+                                                        double margin, double scale) {
+  const Eigen::Matrix3d A = orthogonalPart(motion.linear);
+  if (A.determinant() > 0.0) return std::nullopt;
+  const glm::dmat3 linear = glmOf(A);
+  const glm::dvec3 t = motion.offset;
+  constexpr int kDirections = 300;
+  for (int k = 0; k < kDirections; ++k) {
+    // Directions spread over the half sphere (a normal and its opposite are one plane).
+    const double z = 1.0 - (k + 0.5) / kDirections;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = k * 2.39996322972865332;
+    const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
+    const glm::dmat3 H = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
+    glm::dvec3 axis;
+    double angle = 0.0;
+    // The plane first: the rest is T after it, linear A H, shift A (2 d n) + t.
+    axisAngle(eigenOf(linear * H), axis, angle);
+    if (std::abs(glm::dot(linear * n, axis)) > 1e-3) {
+      const double d = -glm::dot(t, axis) / (2.0 * glm::dot(linear * n, axis));
+      const ReflectionPlane first{d * n, n};
+      if (misses(first, points, margin)) {
+        std::vector<glm::dvec3> after = points;
+        for (glm::dvec3& p : after) p = first.reflect(p);
+        const RigidMotion rest{linear * H, linear * (2.0 * d * n) + t};
+        if (const auto pair = twoPlanes(rest, after, margin, scale)) {
+          const std::vector<ReflectionPlane> planes{first, (*pair)[0], (*pair)[1]};
+          if (folds(planes, motion, points, margin, scale)) return planes;
+        }
+      }
+    }
+    // The plane last: the rest is linear H A, shift H t + 2 d n.
+    axisAngle(eigenOf(H * linear), axis, angle);
+    if (std::abs(glm::dot(n, axis)) > 1e-3) {
+      const double d = -glm::dot(H * t, axis) / (2.0 * glm::dot(n, axis));
+      const RigidMotion rest{H * linear, H * t + 2.0 * d * n};
+      if (const auto pair = twoPlanes(rest, points, margin, scale)) {
+        const std::vector<ReflectionPlane> planes{(*pair)[0], (*pair)[1], {d * n, n}};
+        if (folds(planes, motion, points, margin, scale)) return planes;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
+                                                   const std::vector<glm::dvec3>& points) {
+  const double scale = std::max(diagonalOf(points), 1e-9);
+  const double margin = 1e-3 * scale;  // how far a plane keeps clear of the sheet
+  if (sameMotion(motion, RigidMotion{}, scale)) return {};
+  const Eigen::Matrix3d A = orthogonalPart(motion.linear);
+  const glm::dvec3 t = motion.offset;
+
+  // One plane: a mirror, shifted along its normal.
+  if (A.determinant() < 0.0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (A + A.transpose()));
+    const glm::dvec3 n = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(0))));
+    const ReflectionPlane plane{0.5 * glm::dot(t, n) * n, n};
+    if (folds({plane}, motion, points, margin, scale)) return {plane};
+    if (const auto planes = threePlanes(motion, points, margin, scale)) return *planes;
+  } else if (const auto pair = twoPlanes(motion, points, margin, scale)) {
+    return *pair;
+  }
+
+  // Otherwise: the linear part as reflections through planes pushed off the sheet (a mirror
+  // across the axis for an improper part, then a turn as two), and the shift left as two
+  // parallel planes.
+  std::vector<glm::dvec3> normals;  // in the order they act
+  Eigen::Matrix3d B = A;
+  if (A.determinant() < 0.0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (A + A.transpose()));
+    const Eigen::Vector3d a = solver.eigenvectors().col(0);
+    normals.push_back(glmOf(a));
+    B = A * (Eigen::Matrix3d::Identity() - 2.0 * a * a.transpose());  // A = B H_a
+  }
+  glm::dvec3 axis;
+  double angle = 0.0;
+  axisAngle(B, axis, angle);
+  if (angle > 1e-12) {
+    const glm::dvec3 u = glm::normalize(
+        glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 w = glm::cross(axis, u);
+    // H(n2) H(n1) turns by twice the angle from n1 to n2: the sign that makes B.
+    for (const double sign : {1.0, -1.0}) {
+      const glm::dvec3 n2 = std::cos(0.5 * angle) * u + sign * std::sin(0.5 * angle) * w;
+      const glm::dmat3 made = (glm::dmat3(1.0) - 2.0 * glm::outerProduct(n2, n2)) *
+                              (glm::dmat3(1.0) - 2.0 * glm::outerProduct(u, u));
+      if ((eigenOf(made) - B).norm() < 1e-7) {
+        normals.push_back(u);
+        normals.push_back(n2);
+        break;
+      }
+    }
+  }
+  std::vector<ReflectionPlane> planes;
+  std::vector<glm::dvec3> at = points;
+  RigidMotion made;
+  for (const glm::dvec3& n : normals) {
+    const ReflectionPlane plane{(highest(n, at) + 50.0 * margin) * n, n};
+    for (glm::dvec3& p : at) p = plane.reflect(p);
+    made = then(made, reflectionOf(plane));
+    planes.push_back(plane);
+  }
+  const glm::dvec3 shift = motion.offset - made.offset;
+  const double length = glm::length(shift);
+  if (length > 1e-12 * scale) {
+    const glm::dvec3 n = shift / length;
+    const double d1 = highest(n, at) + 0.5 * length + 10.0 * margin;
+    planes.push_back({d1 * n, n});
+    planes.push_back({(d1 + 0.5 * length) * n, n});
+  }
+  if (folds(planes, motion, points, margin, scale)) return planes;
+  return {};
+}
+
+}  // namespace curvefold

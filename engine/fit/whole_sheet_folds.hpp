@@ -1,0 +1,51 @@
+// Folds that move the whole sheet (issue 38, 1). A fold whose plane misses the sheet reflects all
+// of it and leaves no crease (a drag away from the sheet's edge does this often), so a target
+// made with such folds unfolds (target_unfolding.hpp) to a smooth copy of the sheet moved by a
+// rigid motion: the product of those folds, proper or improper. Its creases are read all the
+// same; what is missing is the motion, found here and written back as folds.
+//
+// registerSheetOnto: the rigid motion that lays the sheet on a moved copy of itself. Started from
+// the principal axes of area-uniform samples (every sign, and turns about each axis, since a
+// square's or a disk's axes are not unique), the best starts refined by ICP [Besl & McKay 1992]
+// against exact closest points, each step Umeyama's closed form [Umeyama 1991] (an improper
+// motion as a proper one after a fixed mirror).
+//
+// wholeSheetReflections: reflections whose product is the motion, each plane missing the sheet as
+// it lies then, so each is a fold of the whole sheet: one plane (a mirror), two (a turn about a
+// line off the sheet, or a shift), else the motion's linear part as Householder reflections
+// [Cartan-Dieudonne] through planes pushed off the sheet and a shift by two parallel planes (at
+// most five).
+//
+// Known limits: a sheet with a symmetry lies on its copy several ways; any is returned (each
+// lays the sheet where the copy is). A copy that is not rigid (creases left) is refused.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "engine/geometry/reflection.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+
+namespace curvefold {
+
+// x -> linear x + offset, linear orthogonal.
+struct RigidMotion {
+  glm::dmat3 linear{1.0};
+  glm::dvec3 offset{0.0};
+  glm::dvec3 operator()(const glm::dvec3& x) const { return linear * x + offset; }
+};
+
+// The motion taking `sheet` onto `moved`, when every vertex of each lies within `tolerance`
+// (metres) of the other after it; nothing otherwise.
+std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,
+                                             double tolerance);
+
+// Planes, in folding order, whose reflections make `motion` and each miss the sheet (`points`:
+// its vertices) where the earlier ones left it. Empty for the identity.
+std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
+                                                   const std::vector<glm::dvec3>& points);
+
+}  // namespace curvefold
