@@ -144,9 +144,15 @@ void jitterJoints(HandJoints& hand, double radius, std::mt19937_64& random) {
   if (!(radius > 0.0)) return;
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (Pose& joint : hand.joints) {
+    // One draw per statement: the order in which a call's arguments are evaluated is unspecified
+    // (GCC went right to left, clang left to right), so dvec3(unit(random), ...) jittered the
+    // hands differently in the two compilers' builds (issue 40, 4).
     glm::dvec3 offset;
-    do offset = glm::dvec3(unit(random), unit(random), unit(random));
-    while (glm::dot(offset, offset) > 1.0);
+    do {
+      offset.x = unit(random);
+      offset.y = unit(random);
+      offset.z = unit(random);
+    } while (glm::dot(offset, offset) > 1.0);
     joint.position += radius * offset;
   }
 }

@@ -137,11 +137,12 @@ XrApp::~XrApp() = default;
 void XrApp::makeStudio(const Pose& sheetFrame) {
   studio::HeadsetStudioOptions options;
   options.exportDir = options_.exportDir;
+  // Strings moved in, not assigned from const char*: GCC 12 inlines assign(const char*) here into
+  // a false -Wrestrict.
   if (options.exportDir.empty()) {
-    options.exportDir = fs::path(autosave_).parent_path().string();
-    if (options.exportDir.empty()) options.exportDir = ".";
+    std::string parent = fs::path(autosave_).parent_path().string();
+    options.exportDir = parent.empty() ? std::string(".") : std::move(parent);
   }
-  // A string on both sides: GCC 12 inlines assign(const char*) here into a false -Wrestrict.
   options.name = options_.input.empty() ? std::string(kDefaultSurface) : options_.input;
   options.recent = session::loadRecentDesigns();
   options.target = options_.target;
