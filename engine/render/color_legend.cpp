@@ -48,6 +48,14 @@ void drawColorLegend(RgbaImage& image, const ColorLegend& legend) {
   cairo_surface_mark_dirty(surface);
 
   cairo_t* cr = cairo_create(surface);
+  // Fixed font options: left to the defaults, the glyphs depend on what Cairo drew before in the
+  // process (a PDF export's unhinted fonts changed a later legend's pixels).
+  cairo_font_options_t* fontOptions = cairo_font_options_create();
+  cairo_font_options_set_antialias(fontOptions, CAIRO_ANTIALIAS_GRAY);
+  cairo_font_options_set_hint_style(fontOptions, CAIRO_HINT_STYLE_NONE);
+  cairo_font_options_set_hint_metrics(fontOptions, CAIRO_HINT_METRICS_OFF);
+  cairo_set_font_options(cr, fontOptions);
+  cairo_font_options_destroy(fontOptions);
   const double strip = legendWidth(image.width);
   const double left = width - strip;
   const double font = std::clamp(height / 40.0, 10.0, 18.0);
