@@ -389,8 +389,7 @@ void addDistanceCommand(CLI::App& app) {
               << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
               << millimetresText(d.fromBMean) << "\n"
               << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
-              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
-              << " m)\n"
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
               << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
               << percentText(d.relativeChamfer()) << ")\n";
     if (renderer) {

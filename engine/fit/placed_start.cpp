@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <optional>
 
 #include <Eigen/Dense>
@@ -12,8 +13,6 @@
 
 namespace curvefold {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A right-handed frame: catalogue x, y, z go to x, y, z here, the origin to `origin`.
 struct Frame {
@@ -24,6 +23,18 @@ struct Frame {
 Sheet placedSheet(Sheet sheet, const Frame& frame) {
   for (glm::dvec3& p : sheet.positions) p = frame.apply(p);
   return sheet;
+}
+
+// The catalogue surface at these parameters placed by the frame, as a candidate; sizes the
+// generator refuses (a cone too slender to taper) are no candidate.
+void addPlaced(std::vector<PlacedStart>& out, const std::string& surface,
+               const SurfaceParameters& parameters, const std::string& placement,
+               const Frame& frame) {
+  try {
+    out.push_back(
+        {surface, parameters, placement, placedSheet(makeSurface(surface, parameters), frame)});
+  } catch (const SurfaceError&) {
+  }
 }
 
 std::string vectorText(const glm::dvec3& v) {
@@ -114,12 +125,8 @@ void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& cen
   frame.z = glm::cross(frame.x, frame.y);
   const SurfaceParameters parameters{
       {"base_radius", bottom}, {"top_radius", top}, {"height", b.x - a.x}};
-  try {
-    out.push_back({"cone", parameters,
-                   "axis " + vectorText(up) + " through " + vectorText(frame.origin),
-                   placedSheet(makeSurface("cone", parameters), frame)});
-  } catch (const SurfaceError&) {
-  }
+  addPlaced(out, "cone", parameters,
+            "axis " + vectorText(up) + " through " + vectorText(frame.origin), frame);
 }
 
 void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3& centroid,
@@ -158,13 +165,7 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   frame.z = glm::cross(frame.x, frame.y);
   const std::string placement = "axis " + vectorText(up) + " through " + vectorText(frame.origin);
   auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
-    if (!kind.empty() && kind != surface) return;
-    try {
-      out.push_back(
-          {surface, parameters, placement, placedSheet(makeSurface(surface, parameters), frame)});
-    } catch (const SurfaceError&) {
-      // Sizes the generator refuses (a cone too slender to taper): not a candidate.
-    }
+    if (kind.empty() || kind == surface) addPlaced(out, surface, parameters, placement, frame);
   };
   add("cylinder", {{"radius", mean}, {"height", height}});
   if (top < 0.98 * bottom)
@@ -321,14 +322,9 @@ void flatIn(const Principal& principal, double area, const std::string& kind,
   const std::string placement =
       "in the plane through " + vectorText(frame.origin) + " normal " + vectorText(frame.z);
   auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
-    if (!kind.empty() && kind != surface) return;
-    try {
-      out.push_back(
-          {surface, parameters, placement, placedSheet(makeSurface(surface, parameters), frame)});
-    } catch (const SurfaceError&) {
-    }
+    if (kind.empty() || kind == surface) addPlaced(out, surface, parameters, placement, frame);
   };
-  add("disk", {{"radius", std::sqrt(area / kPi)}});
+  add("disk", {{"radius", std::sqrt(area / std::numbers::pi)}});
   add("square", {{"size", std::sqrt(area)}});
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -16,7 +17,6 @@
 namespace curvefold {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kChoiceSamples = 4000;
 // Edges of a gridded smooth shape bend a few degrees; a reflection fold's crease, far more.
 constexpr double kSmoothBendDegrees = 12.0;
@@ -73,7 +73,7 @@ std::vector<StartChoice> candidatesFor(const TriangleMesh& target, const std::st
   std::vector<StartChoice> out;
   auto want = [&](const char* name) { return kind.empty() || kind == name; };
   if (want("square")) out.push_back(choice("square", {{"size", std::sqrt(area)}}));
-  if (want("disk")) out.push_back(choice("disk", {{"radius", std::sqrt(area / kPi)}}));
+  if (want("disk")) out.push_back(choice("disk", {{"radius", std::sqrt(area / std::numbers::pi)}}));
   if (want("rectangle")) {
     const double aspect = std::clamp((hi.x - lo.x) / std::max(1e-12, hi.y - lo.y), 0.2, 5.0);
     out.push_back(choice(
@@ -108,7 +108,7 @@ bool creasedFor(const TriangleMesh& target, const Sheet& sheet, double floorDegr
 // The share of the target's edge length bent more than `degrees` between its two triangles.
 double sharpShare(const TriangleMesh& target, double degrees) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, glm::dvec3> firstNormal;
-  const double cosine = std::cos(degrees * kPi / 180.0);
+  const double cosine = std::cos(degrees * std::numbers::pi / 180.0);
   double all = 0.0, sharp = 0.0;
   for (const auto& t : target.triangles) {
     const glm::dvec3 a = target.positions[t[0]], b = target.positions[t[1]],

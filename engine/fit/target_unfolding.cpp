@@ -16,7 +16,6 @@
 namespace curvefold {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // How much more than the sheet's own facets an edge may bend and still count as smooth.
 constexpr double kBendMarginDegrees = 0.5;
 // The least crease (of the diagonal) one unfolding step must take away: a fold of a thin tip
@@ -343,16 +342,17 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                              const Deadline& deadline) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
-  Unfolder unfolder{target,
-                    connectivityOf(target),
-                    diagonal,
-                    1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
-                    std::cos(minDihedralDegrees * kPi / 180.0),
-                    minDihedralDegrees,
-                    std::cos((largestDihedralDegrees(sheet) + kBendMarginDegrees) * kPi / 180.0),
-                    sheetSurface,
-                    maxFolds,
-                    deadline};
+  Unfolder unfolder{
+      target,
+      connectivityOf(target),
+      diagonal,
+      1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
+      std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
+      minDihedralDegrees,
+      std::cos((largestDihedralDegrees(sheet) + kBendMarginDegrees) * std::numbers::pi / 180.0),
+      sheetSurface,
+      maxFolds,
+      deadline};
   const double sharp =
       sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
   TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -13,8 +14,6 @@
 
 namespace curvefold {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Vector3d eigenOf(const glm::dvec3& v) {
   return {v.x, v.y, v.z};
@@ -187,8 +186,9 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
     for (int axis = 0; axis < 3; ++axis)
       for (int step = 0; step < 24; ++step) {
         if (step == 0 && axis > 0) continue;
-        const Eigen::Matrix3d linear =
-            to.axes * s.asDiagonal() * turn(axis, step * kPi / 12.0) * from.axes.transpose();
+        const Eigen::Matrix3d linear = to.axes * s.asDiagonal() *
+                                       turn(axis, step * std::numbers::pi / 12.0) *
+                                       from.axes.transpose();
         Pose pose;
         pose.mirrored = linear.determinant() < 0.0;
         pose.rotation = pose.mirrored ? Eigen::Matrix3d(linear * kMirror) : linear;
@@ -263,7 +263,7 @@ std::optional<std::vector<ReflectionPlane>> twoPlanes(const RigidMotion& motion,
       glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
   const glm::dvec3 w = glm::cross(axis, u);
   for (int step = 0; step < 720; ++step) {
-    const double phi = step * kPi / 360.0;
+    const double phi = step * std::numbers::pi / 360.0;
     const glm::dvec3 n1 = std::cos(phi) * u + std::sin(phi) * w;
     if (!misses({through, n1}, points, margin)) continue;
     for (const double sign : {1.0, -1.0}) {
