@@ -106,8 +106,13 @@ std::string nextAutosave(const std::string& current, const std::string& name) {
   std::string stem = defaultAutosave(name, name);
   stem.resize(stem.size() - std::strlen(".autosave.curvefold.json"));
   for (int i = 1;; ++i) {
-    const fs::path candidate =
-        dir / (stem + (i == 1 ? "" : "-" + std::to_string(i)) + ".autosave.curvefold.json");
+    // Appended piece by piece: GCC 12 inlines "-" + std::to_string(i) into a false -Wrestrict.
+    std::string numbered = stem;
+    if (i > 1) {
+      numbered += '-';
+      numbered += std::to_string(i);
+    }
+    const fs::path candidate = dir / (numbered + ".autosave.curvefold.json");
     std::error_code error;
     if (!fs::exists(candidate, error) && candidate.string() != current) return candidate.string();
   }

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "engine/render/color_map.hpp"
 #include "engine/render/scene_builder.hpp"
 
 namespace curvefold::desktop {
@@ -124,8 +125,20 @@ void InteractionSheetTracker::update(const InteractionCore& core, SceneRenderer&
   tracker_.update(core.session(), renderer);
 }
 
-void InteractionSheetTracker::describe(const InteractionCore& core, SceneSheet& sheet) const {
-  if (!core.simulation()) tracker_.describe(sheet);
+void InteractionSheetTracker::describe(const InteractionCore& core, SceneSheet& sheet,
+                                       bool strainColours) {
+  const LiveSimulation* simulation = core.simulation();
+  if (!simulation) {
+    tracker_.describe(sheet);
+    return;
+  }
+  if (!strainColours) return;
+  const std::vector<double> strain = simulation->vertexStrain();
+  double largest = 0.0;
+  for (double s : strain) largest = std::max(largest, s);
+  // A sheet with no strain at all is drawn in the low colour, not the middle of the map.
+  colors_ = colorsOf(strain, 0.0, std::max(largest, 1e-12), ColorMap::Viridis);
+  sheet.vertexColors = colors_;
 }
 
 Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
@@ -133,8 +146,7 @@ Scene sceneForInteraction(const InteractionCore& core, const InputFrame& input,
                           const InteractionSceneOptions& options) {
   const FoldSession& session = core.session();
   // While simulating (issue 39, 4) the simulated sheet is drawn instead of the design, its creases
-  // where they have folded to. Strain colours hook here once SceneSheet takes a colour per vertex
-  // (LiveSimulation::vertexStrain through a colour map).
+  // where they have folded to (its strain colours: InteractionSheetTracker::describe).
   const LiveSimulation* simulation = core.simulation();
   const Sheet& sheet = simulation ? simulation->sheet() : session.current();
   const Pose& worldFromSheet = core.worldFromSheet();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 
@@ -46,13 +47,17 @@ class InteractionSheetTracker {
       : simplify_(simplify), tracker_(simplify) {}
   // Once per frame, before the scene is built.
   void update(const InteractionCore& core, SceneRenderer& renderer);
-  // After sceneForInteraction: the sheet to draw (the tracker's, unless simulating).
-  void describe(const InteractionCore& core, SceneSheet& sheet) const;
+  // After sceneForInteraction: the sheet to draw (the tracker's, unless simulating). While
+  // simulating with strainColours (the panel's "strain"), each vertex coloured by the largest
+  // strain of its edges (LiveSimulation::vertexStrain), viridis from 0 to the sheet's largest;
+  // the colours live in the tracker until the next describe.
+  void describe(const InteractionCore& core, SceneSheet& sheet, bool strainColours = false);
 
  private:
   bool simplify_;
   SessionSheetTracker tracker_;
   bool simulated_ = false;
+  std::vector<glm::u8vec4> colors_;
 };
 
 struct InteractionSceneOptions {

@@ -5,9 +5,11 @@
 
 #include "app/desktop/desktop_input.hpp"
 #include "app/interaction_scene.hpp"
+#include "engine/render/color_map.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
+#include "interaction/live_simulation.hpp"
 #include "sim_input/simulated_hand.hpp"
 
 namespace curvefold::desktop {
@@ -111,6 +113,39 @@ TEST(DesktopInput, AFoldThatTakesTheSheetOutOfViewFramesItAgain) {
   EXPECT_FALSE(followSheet(zoomed, false, moved, both, width, height));
   EXPECT_EQ(zoomed.distance, before.distance);
   EXPECT_EQ(zoomed.target, before.target);
+}
+
+// The panel's "strain" colours the simulated sheet (issue 39, 4): a colour per vertex, the most
+// strained in the map's high end and the least in its low end; nothing without "strain" or while
+// the design is shown.
+TEST(InteractionSheetTracker, StrainColoursTheSimulatedSheet) {
+  const Sheet cylinder = makeSurface("cylinder", {{"resolution", 8}});
+  FoldSession session(cylinder);
+  InteractionCore core(session, Pose{});
+  InteractionSheetTracker tracker;
+  SceneSheet shown;
+  tracker.describe(core, shown, /*strainColours=*/true);
+  EXPECT_TRUE(shown.vertexColors.empty());  // the design, not simulated: paper
+  InputFrame frame;
+  for (int i = 0; i < 3; ++i) {  // a few frames from flat toward the design: strained
+    frame.time += 1.0 / 60.0;
+    frame.simulation = liveSimulationInput(60.0, session.fixed());
+    core.process(frame);
+  }
+  ASSERT_NE(core.simulation(), nullptr);
+  SceneSheet plain;
+  tracker.describe(core, plain, /*strainColours=*/false);
+  EXPECT_TRUE(plain.vertexColors.empty());
+  SceneSheet coloured;
+  tracker.describe(core, coloured, /*strainColours=*/true);
+  const std::vector<double> strain = core.simulation()->vertexStrain();
+  ASSERT_EQ(coloured.vertexColors.size(), core.simulation()->sheet().vertexCount());
+  ASSERT_EQ(strain.size(), coloured.vertexColors.size());
+  const auto most = std::max_element(strain.begin(), strain.end()) - strain.begin();
+  const auto least = std::min_element(strain.begin(), strain.end()) - strain.begin();
+  ASSERT_GT(strain[most], strain[least]);
+  EXPECT_EQ(coloured.vertexColors[most], colorAt(ColorMap::Viridis, 1.0));
+  EXPECT_EQ(coloured.vertexColors[least], colorAt(ColorMap::Viridis, strain[least] / strain[most]));
 }
 
 TEST(DesktopInput, PressOffTheSheetDoesNothing) {

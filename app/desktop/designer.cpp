@@ -416,7 +416,7 @@ void runDesigner(const DesignerOptions& options) {
     lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
                                     {creasePatternPanel, /*handMarkers=*/false, &panelCache,
                                      goal.mesh(), goal.offeredResult(*doc.core)});
-    tracker.describe(*doc.core, lastScene.sheet);
+    tracker.describe(*doc.core, lastScene.sheet, panel.strainColours());
     stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
     ImDrawData* panel = ImGui::GetDrawData();
     drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {

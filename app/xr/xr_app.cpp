@@ -295,7 +295,7 @@ void XrApp::buildScene() {
     desktop::addPinchPoint(scene_, lastInput_.pointHand.position, input_->handInput().pinched(),
                            input_->handInput().pinchOpenness());
   }
-  tracker_->describe(*doc_.core, scene_.sheet);
+  tracker_->describe(*doc_.core, scene_.sheet, studio_->panel().strainColours());
   scene_.light = Light{};  // fixed in the room, so both eyes see the same shading
   addStudio(scene_);
   if (lastInput_.sheetHand.tracked && studio_->creasePattern()) {
