@@ -1,8 +1,10 @@
 // The folding simulation's Vulkan compute path (engine/simulation_vk) against the CPU path
 // (engine/simulation), on whatever Vulkan device the loader finds (lavapipe on a machine without a
-// GPU) with the Khronos validation layer on: any validation message fails the test.
+// GPU) with the Khronos validation layer and its synchronization checks on: any validation message
+// fails the test.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <numbers>
@@ -45,6 +47,9 @@ double largestDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::
 class SimulationVk : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
+    // The layer's synchronization checks too: a missing barrier between the kernels is a hazard
+    // it reports (lavapipe runs dispatches in order, so the state alone would not show it).
+    setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT", 0);
     ContextOptions options;
     options.instance.validation = true;
     context_ = std::make_unique<VulkanContext>(options);
