@@ -401,6 +401,7 @@ void addSimulateCommand(CLI::App& app) {
         fields.push_back(stateField(color, model, state, amount));
       if (gif->count()) gifStates.push_back(state.positions);
     }
+    if (gpuSolver) checkValidation(renderer ? renderer->context() : *gpuContext);
     const ColorLegend legend =
         color == StateColor::None ? ColorLegend{} : stateLegend(color, fields);
 
