@@ -19,6 +19,7 @@ struct Sheet;
 struct PdfPicture;
 struct ColorLegend;
 class HeadlessRenderer;
+class VulkanContext;
 }  // namespace curvefold
 
 namespace curvefold::cli {
@@ -85,6 +86,9 @@ bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture);
 // with its legend: the renderer is made first, so a machine without Vulkan fails before any work;
 // writeFieldPng renders one value per vertex and writes the PNG at `at` (an OutputSet's writer).
 std::unique_ptr<HeadlessRenderer> makePictureRenderer();
+// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error (VulkanError naming the first),
+// so tests of the command line catch them too.
+void checkValidation(const VulkanContext& context);
 void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at);

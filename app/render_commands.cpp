@@ -76,6 +76,12 @@ RgbaImage besideEachOther(const RgbaImage& left, const RgbaImage& right) {
   return image;
 }
 
+void writePng(const fs::path& path, const RgbaImage& image) {
+  writeFileAtomically(path, encodePng(image));
+}
+
+}  // namespace
+
 // With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
 // catch them too.
 void checkValidation(const VulkanContext& context) {
@@ -85,12 +91,6 @@ void checkValidation(const VulkanContext& context) {
   throw VulkanError(std::to_string(context.validationMessageCount()) +
                     " Vulkan validation messages, the first: " + first);
 }
-
-void writePng(const fs::path& path, const RgbaImage& image) {
-  writeFileAtomically(path, encodePng(image));
-}
-
-}  // namespace
 
 std::unique_ptr<HeadlessRenderer> makePictureRenderer() {
   HeadlessOptions options;

@@ -3,6 +3,7 @@
 // folded state as OBJ, FOLD, glTF and PNG, a folder of frames or an animated GIF of the folding.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -31,6 +32,7 @@
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/static_solver.hpp"
+#include "engine/simulation_vk/gpu_dynamic_solver.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
 #include "engine/text/input_path.hpp"
@@ -228,7 +230,7 @@ void addSimulateCommand(CLI::App& app) {
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif;
-    bool settle = false;
+    bool settle = false, gpu = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -247,6 +249,9 @@ void addSimulateCommand(CLI::App& app) {
                     "the damped dynamic solver");
   command->add_option("--steps", options->steps,
                       "Dynamic steps per state without --settle (default 2000)");
+  command->add_flag("--gpu", options->gpu,
+                    "Take the dynamic steps in Vulkan compute shaders (single precision) on the "
+                    "Vulkan device instead of on the CPU (double)");
   CLI::Option* paper = command->add_option(
       "--paper", options->paperMm,
       "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
@@ -287,6 +292,8 @@ void addSimulateCommand(CLI::App& app) {
     if (gif->count() && percents.size() < 2)
       throw UsageError("--gif: an animation needs a sequence of states, --percent FROM:TO:N; got " +
                        quotedExcerpt(options->percent));
+    if (options->gpu && options->settle)
+      throw UsageError("--gpu: takes dynamic steps; --settle solves on the CPU, name one");
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
@@ -342,6 +349,20 @@ void addSimulateCommand(CLI::App& app) {
     }
     const float aspect = float(kWidth) / float(kHeight);
 
+    // The compute path on the renderer's device, or a context of its own.
+    std::unique_ptr<VulkanContext> gpuContext;
+    std::unique_ptr<GpuDynamicSolver> gpuSolver;
+    if (options->gpu) {
+      if (!renderer) {
+        ContextOptions contextOptions;
+        const char* validation = std::getenv("CURVEFOLD_VK_VALIDATION");
+        contextOptions.instance.validation = validation && std::string(validation) == "1";
+        gpuContext = std::make_unique<VulkanContext>(contextOptions);
+      }
+      gpuSolver =
+          std::make_unique<GpuDynamicSolver>(renderer ? renderer->context() : *gpuContext, model);
+    }
+
     SimulationState state = flatState(model);
     std::vector<Sheet> frameSheets;
     frameSheets.reserve(frames->count() ? percents.size() : 0);
@@ -359,6 +380,10 @@ void addSimulateCommand(CLI::App& app) {
                       result.converged ? "settled" : "NOT settled", result.iterations,
                       result.residual);
         solved = text;
+      } else if (gpuSolver) {
+        gpuSolver->step(amount, options->steps);
+        gpuSolver->state(state);
+        solved = std::to_string(options->steps) + " dynamic steps on the GPU";
       } else {
         stepDynamic(model, amount, state, options->steps);
         solved = std::to_string(options->steps) + " dynamic steps";
@@ -376,6 +401,7 @@ void addSimulateCommand(CLI::App& app) {
         fields.push_back(stateField(color, model, state, amount));
       if (gif->count()) gifStates.push_back(state.positions);
     }
+    if (gpuSolver) checkValidation(renderer ? renderer->context() : *gpuContext);
     const ColorLegend legend =
         color == StateColor::None ? ColorLegend{} : stateLegend(color, fields);
 

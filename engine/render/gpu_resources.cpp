@@ -61,6 +61,40 @@ void HostBuffer::reset() {
   size_ = 0;
 }
 
+DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize size,
+                           VkBufferUsageFlags usage)
+    : device_(context.device()), size_(size) {
+  const ScopeFail cleanup([this] { reset(); });
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device_, buffer_, &needs);
+  memory_ = allocateMemory(
+      device_, needs,
+      context.memoryTypePreferring(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
+  vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+}
+
+DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
+  if (this != &other) {
+    reset();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+void DeviceBuffer::reset() {
+  destroyHandle(device_, buffer_, vkDestroyBuffer);
+  destroyHandle(device_, memory_, vkFreeMemory);
+  size_ = 0;
+}
+
 GpuImage::GpuImage(const VulkanContext& context, VkExtent2D extent, VkFormat format,
                    VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                    VkImageAspectFlags aspect, std::uint32_t layers)

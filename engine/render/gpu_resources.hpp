@@ -36,6 +36,30 @@ class HostBuffer {
   std::byte* mapped_ = nullptr;
 };
 
+// A buffer in device memory (device-local where the device has it: a GPU's own memory), which
+// only the GPU reads and writes; the CPU fills and reads it by copies through a HostBuffer.
+class DeviceBuffer {
+ public:
+  DeviceBuffer() = default;
+  DeviceBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage);
+  ~DeviceBuffer() { reset(); }
+  DeviceBuffer(DeviceBuffer&& other) noexcept { *this = std::move(other); }
+  DeviceBuffer& operator=(DeviceBuffer&& other) noexcept;
+  DeviceBuffer(const DeviceBuffer&) = delete;
+  DeviceBuffer& operator=(const DeviceBuffer&) = delete;
+
+  void reset();
+  VkBuffer buffer() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+};
+
 // A 2D image in device memory (preferably device-local) with one view; with layers > 1 an array
 // (a multiview pass's, one layer per view) and an array view.
 class GpuImage {

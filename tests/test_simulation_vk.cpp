@@ -1,0 +1,231 @@
+// The folding simulation's Vulkan compute path (engine/simulation_vk) against the CPU path
+// (engine/simulation), on whatever Vulkan device the loader finds (lavapipe on a machine without a
+// GPU) with the Khronos validation layer and its synchronization checks on: any validation message
+// fails the test.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation_vk/gpu_dynamic_solver.hpp"
+#include "tests/cli_test_support.hpp"
+#include "tests/simulation_test_support.hpp"
+
+namespace curvefold {
+namespace {
+
+using testing::creasedSquare;
+using testing::miuraOri;
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+double diagonal(const BarHingeModel& model) {
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : model.flatPositions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  return glm::distance(low, high);
+}
+
+double largestDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  double largest = 0.0;
+  for (std::size_t v = 0; v < a.size(); ++v) largest = std::max(largest, glm::distance(a[v], b[v]));
+  return largest;
+}
+
+// One context for the suite (instance creation with validation takes a while); every test checks
+// that no validation message arrived during it.
+class SimulationVk : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // The layer's synchronization checks too: a missing barrier between the kernels is a hazard
+    // it reports (lavapipe runs dispatches in order, so the state alone would not show it).
+    setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT", 0);
+    ContextOptions options;
+    options.instance.validation = true;
+    context_ = std::make_unique<VulkanContext>(options);
+  }
+  static void TearDownTestSuite() { context_.reset(); }
+  void SetUp() override { messagesBefore_ = context_->validationMessageCount(); }
+  void TearDown() override {
+    EXPECT_EQ(context_->validationMessageCount(), messagesBefore_) << [&] {
+      std::string all;
+      for (const std::string& m : context_->validationMessages()) all += m + "\n";
+      return all;
+    }();
+  }
+
+  static std::unique_ptr<VulkanContext> context_;
+  std::size_t messagesBefore_ = 0;
+};
+std::unique_ptr<VulkanContext> SimulationVk::context_;
+
+// From the same flat state, N steps on each path end within a stated tolerance of each other:
+// the device runs in float (about 7 digits), the CPU in double, and float's rounding of each
+// step's forces moves the state by a few parts in 1e7 of the sheet; the damped step does not
+// amplify it, so after hundreds of steps the paths stay within 1e-5 of the sheet's diagonal and
+// 0.01 degree of every hinge angle. Bars, hinges, glue and pins all take part.
+TEST_F(SimulationVk, GpuAndCpuPathsAgreeAfterTheSameSteps) {
+  struct Case {
+    const char* name;
+    CreasePattern pattern;
+    ModelOptions options;
+    double amount;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"crease", creasedSquare(12, 6, 90.0, 0.2), {}, 0.6});
+  ModelOptions pinnedAndGlued;
+  pinnedAndGlued.pins = {0, 1};
+  pinnedAndGlued.glue = {{6, 20}};  // the right side's corner to its middle
+  cases.push_back(
+      {"miura, pins and glue", miuraOri(6, 4, 0.02, 0.02, 0.006, 2.0), pinnedAndGlued, 0.5});
+  ModelOptions paper;
+  paper.mode = SimulationMode::Paper;
+  cases.push_back({"paper", creasedSquare(10, 4, -120.0, 0.2), paper, 0.8});
+  for (const Case& c : cases) {
+    const BarHingeModel model = buildModel(c.pattern, c.options);
+    SimulationState cpu = flatState(model);
+    constexpr std::size_t kSteps = 400;
+    stepDynamic(model, c.amount, cpu, kSteps);
+    GpuDynamicSolver gpu(*context_, model);
+    gpu.step(c.amount, kSteps);
+    SimulationState device;
+    gpu.state(device);
+    EXPECT_EQ(device.steps, kSteps);
+    // The fold moved the sheet: agreement of two states still at rest would say nothing.
+    const double travel = largestDistance(cpu.positions, model.flatPositions);
+    EXPECT_GT(travel, 1e-3 * diagonal(model)) << c.name;
+    EXPECT_LE(largestDistance(device.positions, cpu.positions), 1e-5 * diagonal(model)) << c.name;
+    double angleError = 0.0;
+    for (std::size_t j = 0; j < model.hinges.size(); ++j)
+      angleError = std::max(angleError, std::abs(device.hingeAngles[j] - cpu.hingeAngles[j]));
+    EXPECT_LE(angleError * kDegrees, 0.01) << c.name;
+  }
+}
+
+// At 0% the flat development is at rest on the device exactly: the bars' rest lengths are
+// measured there by the step's own expression, so no force rounds away from zero.
+TEST_F(SimulationVk, AtZeroPercentTheFlatStateStaysExactlyFlat) {
+  const BarHingeModel model = buildModel(miuraOri(5, 5, 0.021, 0.017, 0.007, 2.0));
+  GpuDynamicSolver gpu(*context_, model);
+  SimulationState start, device;
+  gpu.state(start);  // the development as the device holds it, in float
+  EXPECT_LE(largestDistance(start.positions, model.flatPositions), 1e-7 * diagonal(model));
+  gpu.step(0.0, 300);
+  gpu.state(device);
+  for (std::size_t v = 0; v < model.vertexCount(); ++v) {
+    EXPECT_EQ(device.positions[v], start.positions[v]) << "vertex " << v;
+    EXPECT_EQ(device.positions[v].z, 0.0) << "vertex " << v;
+    EXPECT_EQ(device.velocities[v], glm::dvec3(0.0)) << "vertex " << v;
+  }
+}
+
+// A single straight crease folds to its share of the target within 0.5 degrees on the device,
+// and the facets stay flat.
+TEST_F(SimulationVk, SingleCreaseReachesItsShareOfTheTarget) {
+  for (double target : {-120.0}) {  // one crease: thousands of steps on lavapipe take seconds
+    const BarHingeModel model = buildModel(creasedSquare(6, 3, target, 0.2));
+    GpuDynamicSolver gpu(*context_, model);
+    constexpr double kAmount = 0.5;
+    gpu.step(kAmount, 6000);
+    SimulationState device;
+    gpu.state(device);
+    for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+      const double expected = model.hingeCrease[j] ? target * kAmount : 0.0;
+      EXPECT_NEAR(device.hingeAngles[j] * kDegrees, expected, 0.5) << target << " hinge " << j;
+    }
+  }
+}
+
+// The same input and step count give the same state bit for bit on one device, however the steps
+// are split among calls.
+TEST_F(SimulationVk, SameInputAndStepsGiveTheSameStateBitForBit) {
+  const BarHingeModel model = buildModel(creasedSquare(16, 8, 100.0, 0.2));  // 289 vertices
+  auto run = [&](std::vector<std::size_t> calls) {
+    GpuDynamicSolver gpu(*context_, model);
+    for (std::size_t steps : calls) gpu.step(0.8, steps);
+    SimulationState state;
+    gpu.state(state);
+    return state;
+  };
+  const SimulationState once = run({300}), again = run({300}), split = run({120, 1, 179});
+  const double moved = largestDistance(once.positions, model.flatPositions);
+  EXPECT_GT(moved, 1e-4);
+  for (const SimulationState* other : {&again, &split}) {
+    EXPECT_EQ(other->positions, once.positions);
+    EXPECT_EQ(other->velocities, once.velocities);
+    EXPECT_EQ(other->hingeAngles, once.hingeAngles);
+  }
+}
+
+// setState replaces the device's state: a CPU state handed over mid-fold continues on the device
+// as it would have on the CPU.
+TEST_F(SimulationVk, AStateHandedOverContinuesOnTheDevice) {
+  const BarHingeModel model = buildModel(creasedSquare(12, 6, -90.0, 0.2));
+  SimulationState cpu = flatState(model);
+  stepDynamic(model, 0.7, cpu, 200);
+  GpuDynamicSolver gpu(*context_, model);
+  gpu.setState(cpu);
+  EXPECT_EQ(gpu.steps(), 200u);
+  gpu.step(0.7, 100);
+  stepDynamic(model, 0.7, cpu, 100);
+  SimulationState device;
+  gpu.state(device);
+  EXPECT_EQ(device.steps, 300u);
+  EXPECT_LE(largestDistance(device.positions, cpu.positions), 1e-5 * diagonal(model));
+}
+
+// The OBJ's vertex positions ("v x y z" lines).
+std::vector<glm::dvec3> objVertices(const std::string& text) {
+  std::vector<glm::dvec3> vertices;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream fields(line.substr(2));
+      glm::dvec3 p;
+      fields >> p.x >> p.y >> p.z;
+      vertices.push_back(p);
+    }
+  return vertices;
+}
+
+using SimulateGpuCli = testing::CliTest;
+
+// `simulate --gpu` takes the same steps on the Vulkan device: its state is the CPU's within the
+// float tolerance above, and --gpu with --settle is refused in one line.
+TEST_F(SimulateGpuCli, GpuStepsMatchTheCpuStepsAndSettleIsRefused) {
+  const std::string pattern =
+      std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/waterbomb_base.fold";
+  const std::string common = "simulate " + pattern + " --percent 40 --steps 300 --obj ";
+  const testing::CommandResult cpu = run(common + "cpu.obj");
+  ASSERT_EQ(cpu.exitCode, 0) << cpu.err;
+  const testing::CommandResult gpu = run(common + "gpu.obj --gpu", "CURVEFOLD_VK_VALIDATION=1");
+  ASSERT_EQ(gpu.exitCode, 0) << gpu.err;
+  EXPECT_NE(gpu.out.find("300 dynamic steps on the GPU"), std::string::npos) << gpu.out;
+  const std::vector<glm::dvec3> a = objVertices(testing::slurp(path("cpu.obj")));
+  const std::vector<glm::dvec3> b = objVertices(testing::slurp(path("gpu.obj")));
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 4u);
+  double size = 0.0, moved = 0.0;
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    size = std::max(size, glm::distance(a[v], a[0]));
+    moved = std::max(moved, std::abs(a[v].z));
+  }
+  EXPECT_GT(moved, 0.05 * size);  // folded, not flat
+  EXPECT_LE(largestDistance(a, b), 1e-5 * 2.0 * size);
+  expectFailure(common + "settled.obj --gpu --settle", "--gpu", path("settled.obj"));
+}
+
+}  // namespace
+}  // namespace curvefold
