@@ -99,23 +99,25 @@ struct Start {
 };
 
 Start chooseStart(const DesignerOptions& options) {
-  // With a target and no sheet named, the sheet is chosen to match the target (issue 38, 4),
-  // before any window: the catalogue surface `fit` would start from.
-  const bool startFromTarget = !options.resume && options.input.empty() && !options.target.empty();
   Start start;
-  if (startFromTarget) start.design = studio::startForTarget(options.target);
-  start.name = startFromTarget ? std::get<GeneratedSurface>(start.design.surface).generator
-                               : kDefaultSurface;
-  start.autosavePath = options.autosave.empty()
-                           ? session::defaultAutosave(options.input, start.name)
-                           : options.autosave;
   if (options.resume) {
+    start.name = kDefaultSurface;
+    start.autosavePath = options.autosave.empty()
+                             ? session::defaultAutosave(options.input, start.name)
+                             : options.autosave;
     if (!fs::exists(start.autosavePath))
       throw cli::UsageError("--resume: no autosave at " + start.autosavePath);
     start.design = loadDesign(start.autosavePath);
-  } else if (!startFromTarget) {
-    start.design = session::designFor(options.input, kDefaultSurface);
+    return start;
   }
+  // With a target and no sheet named, the sheet is chosen to match the target (issue 38, 4),
+  // before any window: the catalogue surface `fit` would start from.
+  studio::StudioStart chosen = studio::studioStart(options.input, options.target, kDefaultSurface);
+  start.design = std::move(chosen.design);
+  start.name = chosen.surfaceName;
+  start.autosavePath = options.autosave.empty()
+                           ? session::defaultAutosave(options.input, start.name)
+                           : options.autosave;
   return start;
 }
 
