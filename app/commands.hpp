@@ -92,7 +92,7 @@ void checkValidation(const VulkanContext& context);
 void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at);
-// desktop/designer.cpp: the desktop designer window.
+// desktop/design_command.cpp: the desktop designer window (desktop/designer.cpp).
 class NoDisplayError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -233,7 +233,30 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
                        const StudioStats& stats, bool& creasePattern) {
   items_.clear();
   takePicked();
-  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
+  beginWindow();
+  drawNewSheet(actions);
+  drawEditButtons(actions, creasePattern);
+  // Null while recording (no open).
+  const std::function<void(const std::string&)> openRecent = drawSaveAndOpen(doc, actions);
+  drawExports(doc, actions);
+  if (actions.loadTarget && actions.suggest) drawTarget(doc, actions, stats);
+  // After every other item, and drawn whether or not the list is empty: what this machine has
+  // recently opened moves nothing else, so a recorded session's pointing replays onto the same
+  // items on any machine.
+  if (openRecent) drawRecentDesigns(openRecent);
+  drawSimulation(doc);
+  if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+  drawFacts(doc, stats);
+  ImGui::End();
+}
+
+bool StudioPanel::button(const char* label) {
+  const bool pressed = ImGui::Button(label);
+  item(label);
+  return pressed;
+}
+
+void StudioPanel::beginWindow() {
   ImGuiWindowFlags flags = 0;
   if (fillsDisplay_) {
     ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -244,68 +267,70 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
     ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
   }
   ImGui::Begin("curvefold", nullptr, flags);
-  if (ImGui::CollapsingHeader("New sheet", recording_ ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (recording_) {
-      ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
-    } else {
-      if (ImGui::BeginCombo("surface", catalog[surfaceIndex_].name.c_str())) {
-        for (int i = 0; i < int(catalog.size()); ++i) {
-          if (ImGui::Selectable(catalog[i].name.c_str(), i == surfaceIndex_)) {
-            surfaceIndex_ = i;
-            resetParameters();
-            symmetry_ = kNoSymmetry;
-          }
-          item(catalog[i].name.c_str());
-        }
-        ImGui::EndCombo();
-      }
-      item("surface");
-      // The sliders stay within the catalog's ranges.
-      const auto& parameters = catalog[surfaceIndex_].parameters;
-      for (std::size_t i = 0; i < parameters.size(); ++i) {
-        ImGui::SliderFloat(parameters[i].name.c_str(), &parameterValues_[i],
-                           float(parameters[i].min), float(parameters[i].max), "%.4g");
-        item(parameters[i].name.c_str());
-      }
-      // The symmetries the new sheet has, found in the background as the surface and its
-      // parameters change: symmetryChoices takes 1.3 ms on the default cylinder (resolution 48)
-      // but 17 ms at resolution 200 and 0.14 s at 500 (BM_SymmetryChoices), besides making the
-      // sheet: more than a frame.
-      findSymmetries();
-      const bool listing = ImGui::BeginCombo("symmetry", symmetry_.c_str());
-      if (listing) {
-        refreshSymmetries();
-        for (const std::string& choice : symmetryChoices_) {
-          if (isReason(choice)) {
-            ImGui::TextDisabled("%s", choice.c_str());
-            item("no symmetries");
-            message_ = choice;
-            continue;
-          }
-          if (ImGui::Selectable(choice.c_str(), choice == symmetry_)) symmetry_ = choice;
-          item(choice.c_str());
-        }
-        ImGui::EndCombo();
-      }
-      item("symmetry");
-      const bool create = ImGui::Button("Create");
-      item("Create");
-      if (create) {
-        const GeneratedSurface surface = chosenSurface();
-        const std::string symmetry = symmetry_ == kNoSymmetry ? "" : symmetry_;
-        guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry),
-                [&] {
-                  actions.replaceDocument({surface, {}, symmetry}, surface.generator);
-                  nameDesign(surface.generator);
-                });
-      }
-    }
+}
+
+void StudioPanel::drawNewSheet(const StudioActions& actions) {
+  if (!ImGui::CollapsingHeader("New sheet", recording_ ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
+    return;
+  if (recording_) {
+    ImGui::TextWrapped("Recording: the sheet is fixed by the recording's header.");
+    return;
   }
-  auto button = [&](const char* label) {
-    const bool pressed = ImGui::Button(label);
-    item(label);
-    return pressed;
-  };
+  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
+  if (ImGui::BeginCombo("surface", catalog[surfaceIndex_].name.c_str())) {
+    for (int i = 0; i < int(catalog.size()); ++i) {
+      if (ImGui::Selectable(catalog[i].name.c_str(), i == surfaceIndex_)) {
+        surfaceIndex_ = i;
+        resetParameters();
+        symmetry_ = kNoSymmetry;
+      }
+      item(catalog[i].name.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  item("surface");
+  // The sliders stay within the catalog's ranges.
+  const auto& parameters = catalog[surfaceIndex_].parameters;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    ImGui::SliderFloat(parameters[i].name.c_str(), &parameterValues_[i], float(parameters[i].min),
+                       float(parameters[i].max), "%.4g");
+    item(parameters[i].name.c_str());
+  }
+  drawSymmetryChoice();
+  if (button("Create")) {
+    const GeneratedSurface surface = chosenSurface();
+    const std::string symmetry = symmetry_ == kNoSymmetry ? "" : symmetry_;
+    guarded(actions, "new " + surface.generator + (symmetry.empty() ? "" : ", " + symmetry), [&] {
+      actions.replaceDocument({surface, {}, symmetry}, surface.generator);
+      nameDesign(surface.generator);
+    });
+  }
+}
+
+void StudioPanel::drawSymmetryChoice() {
+  // The symmetries the new sheet has, found in the background as the surface and its
+  // parameters change: symmetryChoices takes 1.3 ms on the default cylinder (resolution 48)
+  // but 17 ms at resolution 200 and 0.14 s at 500 (BM_SymmetryChoices), besides making the
+  // sheet: more than a frame.
+  findSymmetries();
+  if (ImGui::BeginCombo("symmetry", symmetry_.c_str())) {
+    refreshSymmetries();
+    for (const std::string& choice : symmetryChoices_) {
+      if (isReason(choice)) {
+        ImGui::TextDisabled("%s", choice.c_str());
+        item("no symmetries");
+        message_ = choice;
+        continue;
+      }
+      if (ImGui::Selectable(choice.c_str(), choice == symmetry_)) symmetry_ = choice;
+      item(choice.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  item("symmetry");
+}
+
+void StudioPanel::drawEditButtons(const StudioActions& actions, bool& creasePattern) {
   if (button("Undo")) actions.press(Button::Undo);
   ImGui::SameLine();
   if (button("Redo")) actions.press(Button::Redo);
@@ -319,6 +344,19 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
     ImGui::SameLine();
     if (button("Reset view")) actions.resetView();
   }
+}
+
+void StudioPanel::browseButton(const char* label, bool save) {
+  // On the Save or Open line, after its button: the desktop's items move nothing the headset has.
+  if (!picker_) return;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(picker_->busy());
+  if (button(label)) browse(save);
+  ImGui::EndDisabled();
+}
+
+std::function<void(const std::string&)> StudioPanel::drawSaveAndOpen(session::Document& doc,
+                                                                     const StudioActions& actions) {
   ImGui::InputText("save as", &savePath_);
   item("save as");
   if (button("Save")) {
@@ -328,55 +366,52 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
       remember(path, actions);
     });
   }
-  // On the Save line, after Save: the desktop's items move nothing the headset has.
-  auto browseButton = [&](const char* label, bool save) {
-    if (!picker_) return;
-    ImGui::SameLine();
-    ImGui::BeginDisabled(picker_->busy());
-    if (button(label)) browse(save);
-    ImGui::EndDisabled();
-  };
   browseButton("Browse...##save", true);
-  std::function<void(const std::string&)> openRecent;  // null while recording (no open)
-  if (!recording_) {
-    ImGui::InputText("open", &openPath_);
-    item("open");
-    auto open = [&](const std::string& path) {
-      guarded(actions, "opened " + path, [&] {
-        // A FIFO or a device named here (a recent entry from another machine's recording) would
-        // block the open or never end: only regular files are read.
-        if (const std::optional<std::string> why = notRegularFile(path))
-          throw std::runtime_error("cannot open " + path + ": " + *why);
-        actions.replaceDocument(loadDesign(path), path);
-        nameDesign(path);  // Save and the exports follow the opened design
-        remember(path, actions);
-      });
-    };
-    if (button("Open")) open(openPath_);
-    openRecent = open;
-    if (desktop_) {
-      browseButton("Browse...##open", false);
-      // The recent designs, one click from Open (the list at the bottom holds them too).
-      ImGui::SameLine();
-      const char* preview = "Recent";
-      ImGui::SetNextItemWidth(ImGui::CalcTextSize(preview).x + ImGui::GetFrameHeight() +
-                              2.0f * ImGui::GetStyle().FramePadding.x);
-      std::optional<std::string> chosen;
-      if (ImGui::BeginCombo("##recent beside open", preview)) {
-        if (recent_.empty()) ImGui::TextDisabled("none yet");
-        for (std::size_t i = 0; i < recent_.size(); ++i) {
-          const std::string name = std::filesystem::path(recent_[i]).filename().string();
-          if (ImGui::Selectable((name + "##open recent" + std::to_string(i)).c_str()))
-            chosen = recent_[i];
-          if (!items_.count(name)) item(name.c_str());
-          if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent_[i].c_str());
-        }
-        ImGui::EndCombo();
-      }
-      item("Recent");
-      if (chosen) open(*chosen);
-    }
+  if (recording_) return {};
+  ImGui::InputText("open", &openPath_);
+  item("open");
+  auto open = [this, &actions](const std::string& path) {
+    guarded(actions, "opened " + path, [&] {
+      // A FIFO or a device named here (a recent entry from another machine's recording) would
+      // block the open or never end: only regular files are read.
+      if (const std::optional<std::string> why = notRegularFile(path))
+        throw std::runtime_error("cannot open " + path + ": " + *why);
+      actions.replaceDocument(loadDesign(path), path);
+      nameDesign(path);  // Save and the exports follow the opened design
+      remember(path, actions);
+    });
+  };
+  if (button("Open")) open(openPath_);
+  if (desktop_) {
+    browseButton("Browse...##open", false);
+    if (const std::optional<std::string> chosen = drawRecentBesideOpen()) open(*chosen);
   }
+  return open;
+}
+
+std::optional<std::string> StudioPanel::drawRecentBesideOpen() {
+  // The recent designs, one click from Open (the list at the bottom holds them too).
+  ImGui::SameLine();
+  const char* preview = "Recent";
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize(preview).x + ImGui::GetFrameHeight() +
+                          2.0f * ImGui::GetStyle().FramePadding.x);
+  std::optional<std::string> chosen;
+  if (ImGui::BeginCombo("##recent beside open", preview)) {
+    if (recent_.empty()) ImGui::TextDisabled("none yet");
+    for (std::size_t i = 0; i < recent_.size(); ++i) {
+      const std::string name = std::filesystem::path(recent_[i]).filename().string();
+      if (ImGui::Selectable((name + "##open recent" + std::to_string(i)).c_str()))
+        chosen = recent_[i];
+      if (!items_.count(name)) item(name.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent_[i].c_str());
+    }
+    ImGui::EndCombo();
+  }
+  item("Recent");
+  return chosen;
+}
+
+void StudioPanel::drawExports(session::Document& doc, const StudioActions& actions) {
   ImGui::InputText("export to", &exportBase_);
   item("export to");
   const std::string base = exportBase_;
@@ -410,50 +445,50 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
       writeCreasePatternPdf(fixed, to, print);
     });
   }
-  if (actions.loadTarget && actions.suggest) {
-    // The same items whatever the lines say: the lines wrap inside a box of fixed height, so the
-    // items keep their places and a recorded session's pointing replays onto the same buttons.
-    ImGui::Separator();
-    ImGui::InputText("target", &targetPath_);
-    item("target");
-    if (button("Load target")) {
-      const std::string path = targetPath_;
-      guarded(actions, "", [&] { actions.loadTarget(path); });  // the target line says how it went
-    }
-    ImGui::SameLine();
-    if (button("Suggest")) guarded(actions, "", [&] { actions.suggest(); });
-    targetLines(stats);
-    const bool offered = doc.core->offeredFold() != nullptr;
-    ImGui::BeginDisabled(!offered);
-    if (button("Take")) actions.press(Button::TakeSuggestion);
-    ImGui::SameLine();
-    if (button("Another")) actions.press(Button::NextSuggestion);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    ImGui::TextWrapped("or grab the marked point");
+}
+
+void StudioPanel::drawTarget(session::Document& doc, const StudioActions& actions,
+                             const StudioStats& stats) {
+  // The same items whatever the lines say: the lines wrap inside a box of fixed height, so the
+  // items keep their places and a recorded session's pointing replays onto the same buttons.
+  ImGui::Separator();
+  ImGui::InputText("target", &targetPath_);
+  item("target");
+  if (button("Load target")) {
+    const std::string path = targetPath_;
+    guarded(actions, "", [&] { actions.loadTarget(path); });  // the target line says how it went
   }
-  // After every other item, and drawn whether or not the list is empty: what this machine has
-  // recently opened moves nothing else, so a recorded session's pointing replays onto the same
-  // items on any machine.
-  if (openRecent) {
-    ImGui::Separator();
-    const bool showRecent = ImGui::CollapsingHeader("Recent designs");
-    item("Recent designs");
-    if (showRecent && recent_.empty()) ImGui::TextDisabled("none yet");
-    if (showRecent) {
-      // Copied: opening one reorders the list.
-      const std::vector<std::string> recent = recent_;
-      for (std::size_t i = 0; i < recent.size(); ++i) {
-        const std::string name = std::filesystem::path(recent[i]).filename().string();
-        const bool chosen = ImGui::Selectable((name + "##recent" + std::to_string(i)).c_str());
-        if (!items_.count(name)) item(name.c_str());
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent[i].c_str());
-        if (chosen) openRecent(recent[i]);
-      }
-    }
+  ImGui::SameLine();
+  if (button("Suggest")) guarded(actions, "", [&] { actions.suggest(); });
+  targetLines(stats);
+  const bool offered = doc.core->offeredFold() != nullptr;
+  ImGui::BeginDisabled(!offered);
+  if (button("Take")) actions.press(Button::TakeSuggestion);
+  ImGui::SameLine();
+  if (button("Another")) actions.press(Button::NextSuggestion);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::TextWrapped("or grab the marked point");
+}
+
+void StudioPanel::drawRecentDesigns(const std::function<void(const std::string&)>& open) {
+  ImGui::Separator();
+  const bool showRecent = ImGui::CollapsingHeader("Recent designs");
+  item("Recent designs");
+  if (!showRecent) return;
+  if (recent_.empty()) ImGui::TextDisabled("none yet");
+  // Copied: opening one reorders the list.
+  const std::vector<std::string> recent = recent_;
+  for (std::size_t i = 0; i < recent.size(); ++i) {
+    const std::string name = std::filesystem::path(recent[i]).filename().string();
+    const bool chosen = ImGui::Selectable((name + "##recent" + std::to_string(i)).c_str());
+    if (!items_.count(name)) item(name.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", recent[i].c_str());
+    if (chosen) open(recent[i]);
   }
-  drawSimulation(doc);
-  if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+}
+
+void StudioPanel::drawFacts(const session::Document& doc, const StudioStats& stats) {
   ImGui::Separator();
   // The isometry error walks every edge: measured again only when the committed sheet changes.
   if (statsSession_ != doc.session.get() || statsRevision_ != doc.session->fixedRevision()) {
@@ -481,7 +516,6 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
   }
   ImGui::TextWrapped("drag update %.2f ms, frame %.2f ms", stats.dragUpdateMs, stats.frameMs);
   ImGui::TextWrapped("%s", help_.c_str());
-  ImGui::End();
 }
 
 std::optional<double> StudioPanel::simulationPercent() const {

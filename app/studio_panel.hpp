@@ -132,6 +132,21 @@ class StudioPanel {
   // A finished dialog's path goes into the field it was opened for.
   void takePicked();
   void browse(bool save);
+  // The steps of draw(), top to bottom.
+  bool button(const char* label);  // a button whose rectangle item() records
+  void beginWindow();
+  void drawNewSheet(const StudioActions& actions);
+  void drawSymmetryChoice();
+  void drawEditButtons(const StudioActions& actions, bool& creasePattern);
+  void browseButton(const char* label, bool save);
+  // Save and Open; returns how to open a design (null while recording, which opens none).
+  std::function<void(const std::string&)> drawSaveAndOpen(session::Document& doc,
+                                                          const StudioActions& actions);
+  std::optional<std::string> drawRecentBesideOpen();  // the desktop's combo; the one chosen
+  void drawExports(session::Document& doc, const StudioActions& actions);
+  void drawTarget(session::Document& doc, const StudioActions& actions, const StudioStats& stats);
+  void drawRecentDesigns(const std::function<void(const std::string&)>& open);
+  void drawFacts(const session::Document& doc, const StudioStats& stats);
   // The "Simulate" section: its own items, after every item a recorded session points at.
   void drawSimulation(const session::Document& doc);
   void writeThrough(const StudioActions& actions, const std::string& path,

@@ -48,6 +48,16 @@ Design startForTarget(const std::string& path) {
   }
 }
 
+StudioStart studioStart(const std::string& input, const std::string& target,
+                        const std::string& defaultSurface) {
+  if (input.empty() && !target.empty()) {
+    Design design = startForTarget(target);
+    const std::string name = std::get<GeneratedSurface>(design.surface).generator;
+    return {std::move(design), name};
+  }
+  return {session::designFor(input, defaultSurface), defaultSurface};
+}
+
 StudioTarget::StudioTarget(bool replaying, double suggestionSeconds, MeshReader reader)
     : replaying_(replaying),
       suggestionSeconds_(suggestionSeconds),

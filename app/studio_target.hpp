@@ -35,6 +35,17 @@ namespace curvefold::studio {
 // throws a one-line error naming the file.
 Design startForTarget(const std::string& path);
 
+// What a studio (the desktop window, the headset) opens: the input named (a design file or a
+// surface), else, with a target, the start chosen to match it (startForTarget), else
+// defaultSurface; surfaceName is what the autosave and the exports are named after without an
+// input.
+struct StudioStart {
+  Design design;
+  std::string surfaceName;
+};
+StudioStart studioStart(const std::string& input, const std::string& target,
+                        const std::string& defaultSurface);
+
 class StudioTarget {
  public:
   // How many suggestions one request asks for (the panel's "Another" goes round them).

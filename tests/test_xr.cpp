@@ -392,6 +392,20 @@ TEST_F(XrApp, ATargetIsAGhostInBothEyes) {
   }
 }
 
+// Issue 38, 4: with a target and no sheet named, the headset opens on the catalogue surface that
+// matches the target, as `design --target` does (studio::studioStart): a target folded from a
+// cylinder opens a cylinder, not the default square.
+TEST_F(XrApp, ATargetAloneChoosesTheSheet) {
+  const std::string hands = kExamples + "crown_vessel.jsonl";  // the shortest: 3.5 s of hands
+  const std::string target =
+      std::string(CURVEFOLD_SOURCE_DIR) + "/examples/targets/tube_tucked.obj";
+  const CommandResult result = run(
+      "xr --headless --target " + target + " --autosave alone.curvefold.json", simulated(hands));
+  ASSERT_EQ(result.exitCode, 0) << result.err << result.out;
+  const json saved = load("alone.curvefold.json");
+  EXPECT_NE(saved["surface"].dump().find("cylinder"), std::string::npos) << saved["surface"];
+}
+
 TEST_F(XrApp, EveryControllerProfileFoldsTheSame) {
   const std::string input = kExamples + "half_cylinder.jsonl";  // folds, undo and redo
   const json reference = replayed(input, "reference");

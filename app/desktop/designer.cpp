@@ -1,4 +1,4 @@
-// `curvefold design` and plain `curvefold`: the desktop designer (docs/design.md 5 and 7). A GLFW
+// The desktop designer window (docs/design.md 5 and 7; the command is design_command.cpp). A GLFW
 // window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
 // feeding the one InteractionCore; recorded with --record, autosaved after every committed fold.
 // GLFW declares glfwCreateWindowSurface only with Vulkan's header.
@@ -19,6 +19,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/desktop/designer.hpp"
 #include "app/desktop/desktop_input.hpp"
 #include "app/document.hpp"
 #include "app/interaction_scene.hpp"
@@ -54,17 +55,10 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kNoDisplay =
     "no display for the designer window; use `curvefold replay` or `curvefold render` instead";
 constexpr const char* kDefaultSurface = "square";
-
-struct DesignerOptions {
-  std::string input;  // design file, surface name, or empty for the default surface
-  std::string record, autosave, screenshotOnExit, size = "1280x720";
-  std::string target;      // a target shape (OBJ) to fold toward
-  std::string frameTimes;  // where to write each frame's duration when the window closes
-  bool resume = false;
-  bool validation = false;
-  bool creasePatternPanel = false;
-  int msaa = 0;  // samples per pixel; 0: the device's interactive default
-};
+constexpr const char* kHelp =
+    "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
+    "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
+    "suggests a fold, T takes it, N offers another.";
 
 // GLFW's window, created and destroyed with glfwInit/glfwTerminate around it.
 struct Glfw {
@@ -77,6 +71,12 @@ struct Glfw {
       glfwTerminate();
       throw std::runtime_error("no Vulkan loader usable with the window system");
     }
+  }
+  // Delegating: a window that cannot be made still terminates GLFW (the destructor runs).
+  Glfw(unsigned width, unsigned height) : Glfw() {
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
+    if (!window) throw cli::NoDisplayError(kNoDisplay);
   }
   ~Glfw() {
     if (window) glfwDestroyWindow(window);
@@ -91,52 +91,45 @@ void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D exte
   writeFileAtomically(path, encodePng(renderSceneOnce(context, scene, extent)));
 }
 
-void runDesigner(const DesignerOptions& options) {
-  unsigned width = 1280, height = 720;
-  if (!readSize(options.size, 64u, 8192u, width, height))
-    throw cli::UsageError("--size: expected WxH from 64 to 8192, got " +
-                          quotedExcerpt(options.size));
+// The design the window opens with, and where it autosaves.
+struct Start {
+  Design design;
+  std::string name;  // the surface's, for the autosave and the exports, without an input
+  std::string autosavePath;
+};
+
+Start chooseStart(const DesignerOptions& options) {
+  Start start;
+  if (options.resume) {
+    start.name = kDefaultSurface;
+    start.autosavePath = options.autosave.empty()
+                             ? session::defaultAutosave(options.input, start.name)
+                             : options.autosave;
+    if (!fs::exists(start.autosavePath))
+      throw cli::UsageError("--resume: no autosave at " + start.autosavePath);
+    start.design = loadDesign(start.autosavePath);
+    return start;
+  }
   // With a target and no sheet named, the sheet is chosen to match the target (issue 38, 4),
   // before any window: the catalogue surface `fit` would start from.
-  const bool startFromTarget = !options.resume && options.input.empty() && !options.target.empty();
-  Design design;
-  if (startFromTarget) design = studio::startForTarget(options.target);
-  const std::string startName =
-      startFromTarget ? std::get<GeneratedSurface>(design.surface).generator : kDefaultSurface;
-  const std::string autosavePath = options.autosave.empty()
-                                       ? session::defaultAutosave(options.input, startName)
-                                       : options.autosave;
-  if (options.resume) {
-    if (!fs::exists(autosavePath))
-      throw cli::UsageError("--resume: no autosave at " + autosavePath);
-    design = loadDesign(autosavePath);
-  } else if (!startFromTarget) {
-    design = session::designFor(options.input, kDefaultSurface);
-  }
-  session::Document doc =
-      session::makeDocument(design, options.resume ? autosavePath : options.input);
-  // Read and checked before any window or file: a bad target is one line and nothing else.
-  studio::StudioTarget goal;
-  if (!options.target.empty()) goal.loadNow(options.target, doc);
-  // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
-  session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); },
-                                  {{options.target, "the target"}});
-  if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
+  studio::StudioStart chosen = studio::studioStart(options.input, options.target, kDefaultSurface);
+  start.design = std::move(chosen.design);
+  start.name = chosen.surfaceName;
+  start.autosavePath = options.autosave.empty()
+                           ? session::defaultAutosave(options.input, start.name)
+                           : options.autosave;
+  return start;
+}
 
-  Glfw glfw;
-  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-  glfw.window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
-  if (!glfw.window) throw cli::NoDisplayError(kNoDisplay);
-  GLFWwindow* window = glfw.window;
-
+ContextOptions contextOptionsFor(GLFWwindow* window, bool validation) {
   ContextOptions contextOptions;
   std::uint32_t extensionCount = 0;
   const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
   for (std::uint32_t i = 0; i < extensionCount; ++i)
     contextOptions.instance.extensions.push_back(extensions[i]);
   contextOptions.instance.validation =
-      options.validation || (std::getenv("CURVEFOLD_VK_VALIDATION") &&
-                             std::string(std::getenv("CURVEFOLD_VK_VALIDATION")) == "1");
+      validation || (std::getenv("CURVEFOLD_VK_VALIDATION") &&
+                     std::string(std::getenv("CURVEFOLD_VK_VALIDATION")) == "1");
   contextOptions.device.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   contextOptions.createSurface = [window](VkInstance instance) {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
@@ -144,64 +137,36 @@ void runDesigner(const DesignerOptions& options) {
             "glfwCreateWindowSurface");
     return surface;
   };
-  VulkanContext context(contextOptions);
-  const VkSampleCountFlagBits samples =
-      options.msaa > 0 ? context.sampleCountUpTo(static_cast<VkSampleCountFlagBits>(options.msaa))
-                       : context.interactiveSampleCount();
-  SwapchainTarget target(
-      context,
-      [window] {
-        int w = 0, h = 0;
-        glfwGetFramebufferSize(window, &w, &h);
-        return VkExtent2D{std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
-      },
-      samples);
-  FrameRing frames(context);
-  SceneRenderer renderer(context, target);
-  desktop::InteractionSheetTracker tracker;
+  return contextOptions;
+}
 
-  // ImGui, drawn in the scene pass (its MSAA sample count).
-  const VkDescriptorPool imguiPool =
-      createDescriptorPool(context.device(), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16,
-                           VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
-  ImGui::StyleColorsLight();
+VkSampleCountFlagBits samplesFor(const VulkanContext& context, int msaa) {
+  return msaa > 0 ? context.sampleCountUpTo(static_cast<VkSampleCountFlagBits>(msaa))
+                  : context.interactiveSampleCount();
+}
 
-  // The 2D crease pattern as a side view on the right (docs/design.md 7), toggled in the panel.
-  bool creasePatternPanel = options.creasePatternPanel;
-  CreasePatternCache panelCache;
+glm::dvec2 windowSize(GLFWwindow* window) {
+  int x = 0, y = 0;
+  glfwGetWindowSize(window, &x, &y);
+  return glm::dvec2(std::max(x, 1), std::max(y, 1));
+}
 
-  // Input state shared with the GLFW callbacks.
-  struct State {
-    OrbitCamera camera;
-    DesktopInput input;
-    session::Document* doc = nullptr;
-    glm::dvec2 mouse{0.0};
-    bool orbiting = false, panning = false, quit = false;
-    bool suggest = false;  // S: the panel's Suggest
-    double pendingWheel = 0.0;
-  } state;
-  state.doc = &doc;
-  // The sheet and the target together (issue 38, 4).
-  auto frameView = [&] {
-    int w = 0, h = 0;
-    glfwGetWindowSize(window, &w, &h);
-    const float aspect = w > 0 && h > 0 ? float(w) / float(h) : float(width) / float(height);
-    state.camera = OrbitCamera::framing(
-        studioBounds(doc.session->fixed(), goal.mesh(), doc.core->worldFromSheet()), aspect);
-  };
-  frameView();
-  state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
+// Input state shared with the GLFW callbacks.
+struct InputState {
+  OrbitCamera camera;
+  DesktopInput input;
+  session::Document* doc = nullptr;
+  glm::dvec2 mouse{0.0};
+  bool orbiting = false, panning = false, quit = false;
+  bool suggest = false;  // S: the panel's Suggest
+  double pendingWheel = 0.0;
+};
+
+// The mouse, wheel and keys into state; installed before ImGui's, so ImGui chains to them.
+void installInputCallbacks(GLFWwindow* window, InputState& state) {
   glfwSetWindowUserPointer(window, &state);
-  auto windowSize = [](GLFWwindow* w) {
-    int x = 0, y = 0;
-    glfwGetWindowSize(w, &x, &y);
-    return glm::dvec2(std::max(x, 1), std::max(y, 1));
-  };
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
-    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
     if (action == GLFW_PRESS && ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)
       return;
     int x = 0, y = 0;
@@ -220,7 +185,7 @@ void runDesigner(const DesignerOptions& options) {
     }
   });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
-    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
     const glm::dvec2 delta = glm::dvec2(x, y) - s.mouse;
     s.mouse = {x, y};
     int width = 0, height = 0;
@@ -229,7 +194,7 @@ void runDesigner(const DesignerOptions& options) {
     if (s.panning) s.camera.pan(delta.x, delta.y, height);
   });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
-    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
     if (s.input.dragging())
       s.input.wheel(-dy);  // wheel towards the user brings the point nearer
@@ -237,7 +202,7 @@ void runDesigner(const DesignerOptions& options) {
       s.camera.zoom(dy);
   });
   glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-    auto& s = *static_cast<State*>(glfwGetWindowUserPointer(w));
+    auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
     if (action != GLFW_PRESS) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
     const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
@@ -250,240 +215,355 @@ void runDesigner(const DesignerOptions& options) {
     if (!ctrl && key == GLFW_KEY_T) s.input.pulse(Button::TakeSuggestion);
     if (!ctrl && key == GLFW_KEY_N) s.input.pulse(Button::NextSuggestion);
   });
-  // Installed after ours, so ImGui chains to them.
-  ImGui_ImplGlfw_InitForVulkan(window, true);
-  ImGui_ImplVulkan_InitInfo imguiInfo{};
-  imguiInfo.Instance = context.instance();
-  imguiInfo.PhysicalDevice = context.physicalDevice();
-  imguiInfo.Device = context.device();
-  imguiInfo.QueueFamily = context.graphicsFamily();
-  imguiInfo.Queue = context.graphicsQueue();
-  imguiInfo.DescriptorPool = imguiPool;
-  imguiInfo.MinImageCount = std::max(2u, target.minImageCount());
-  imguiInfo.ImageCount = std::max(imguiInfo.MinImageCount, target.imageCount());
-  imguiInfo.MSAASamples = target.format().samples;
-  ImGui_ImplVulkan_Init(&imguiInfo, target.renderPass());
-  {
-    // The font atlas, uploaded once with a one-off command buffer.
-    Frame& frame = frames.begin();
-    ImGui_ImplVulkan_CreateFontsTexture(frame.commands);
-    frames.submit(frame);
-    frames.wait(frame);
-    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+void writeFrameTimes(const std::string& path, const std::vector<float>& frameTimes) {
+  std::string text;
+  char line[32];
+  for (const float ms : frameTimes) {
+    std::snprintf(line, sizeof line, "%.3f\n", ms);
+    text += line;
   }
+  writeFileAtomically(path, text);
+}
 
-  // The panel (shared with the headset) and what the window measures for it.
-  studio::StudioPanel panel(
-      outputs.wantsRecording(),
-      "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
-      "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
-      "suggests a fold, T takes it, N offers another.");
-  panel.setRecent(session::loadRecentDesigns());
-  panel.setTargetPath(options.target);
-  panel.setDesktop(true);
-  // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
-  panel.nameDesign(options.resume          ? autosavePath
-                   : options.input.empty() ? startName
-                                           : options.input);
-  studio::StudioStats stats;
-  Ground ground = groundBelow(worldBounds(doc.session->fixed()));
-  Scene lastScene;
+void throwOnValidationMessages(const VulkanContext& context) {
+  if (context.validationMessageCount() == 0) return;
+  throw VulkanError(std::to_string(context.validationMessageCount()) +
+                    " Vulkan validation messages, the first: " +
+                    context.validationMessages().front().substr(
+                        0, context.validationMessages().front().find('\n')));
+}
 
-  auto replaceDocument = [&](Design next, const std::string& name) {
-    session::Document fresh = session::makeDocument(next, name);
-    doc.core.reset();
-    doc = std::move(fresh);
-    goal.documentReplaced();
-    renderer.markSheetReplaced();
-    tracker = desktop::InteractionSheetTracker();
-    state.input = DesktopInput(0.02 * sheetSize(doc.session->initial()));
-    frameView();
-    ground = groundBelow(worldBounds(doc.session->fixed()));
-  };
+// The window, its device and panel over a document the caller keeps (with its target and
+// files), which outlive it.
+class DesignerWindow {
+ public:
+  DesignerWindow(const DesignerOptions& options, unsigned width, unsigned height,
+                 const Start& start, session::Document& doc, studio::StudioTarget& goal,
+                 session::SessionOutputs& outputs);
+  // Frames until the window closes or Ctrl+Q.
+  void run();
+  // After run: the last frame's screenshot, the frame times, the session's files.
+  void finish();
 
-  // The window and the device exist: now the recording may be created (B8 of issue 13).
-  if (outputs.wantsRecording()) {
-    RecordingHeader header;
-    header.source = "desktop";
-    header.surface = doc.recordingSurface();
-    header.symmetry = doc.recordingSymmetry();
-    // The display's refresh rate paces the frames (informative; each frame carries its time).
-    const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
-    header.rate = mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
-    outputs.startRecording(header);
-  }
+ private:
+  void initImGui();
+  void startRecording();
+  void frameView();  // the sheet and the target together (issue 38, 4)
+  void replaceDocument(Design next, const std::string& name);
+  // One frame's steps, in order.
+  void drawPanel();
+  studio::StudioActions panelActions();
+  InputFrame nextInput();
+  void process(InputFrame& input);
+  void followView();
+  void drawScene(const InputFrame& input);
+  void timeFrame();
 
+  const DesignerOptions& options_;
+  const unsigned width_, height_;
+  session::Document& doc_;
+  studio::StudioTarget& goal_;
+  session::SessionOutputs& outputs_;
+  Glfw glfw_;
+  GLFWwindow* const window_;
+  VulkanContext context_;
+  SwapchainTarget target_;
+  FrameRing frames_;
+  SceneRenderer renderer_;
+  desktop::InteractionSheetTracker tracker_;
+  VkDescriptorPool imguiPool_ = VK_NULL_HANDLE;
+  // The 2D crease pattern as a side view on the right (docs/design.md 7), toggled in the panel.
+  bool creasePatternPanel_;
+  CreasePatternCache panelCache_;
+  InputState state_;
+  studio::StudioPanel panel_;  // shared with the headset
+  studio::StudioStats stats_;  // what the window measures for the panel
+  Ground ground_;
+  Scene lastScene_;
   // What the view showed of the committed sheet: a fold that takes a sheet the view showed whole
   // out of it (a suggestion taken toward a target elsewhere) frames the view again; a view the
   // user zoomed into stays theirs.
-  std::uint64_t viewedRevision = doc.session->fixedRevision();
-  const void* viewedSession = doc.session.get();
-  bool sheetShown = true;
-  const TriangleMesh* framedTarget = goal.mesh();
-  std::vector<float> frameTimes;
+  std::uint64_t viewedRevision_ = 0;
+  const void* viewedSession_ = nullptr;
+  bool sheetShown_ = true;
+  const TriangleMesh* framedTarget_ = nullptr;
+  std::vector<float> frameTimes_;
+  // Input time, which never goes backwards.
+  Clock::time_point start_, lastFrame_;
+  double lastTime_ = 0.0;
+};
 
-  const Clock::time_point start = Clock::now();
-  double lastTime = 0.0;
-  Clock::time_point lastFrame = Clock::now();
-  while (!glfwWindowShouldClose(window) && !state.quit) {
+DesignerWindow::DesignerWindow(const DesignerOptions& options, unsigned width, unsigned height,
+                               const Start& start, session::Document& doc,
+                               studio::StudioTarget& goal, session::SessionOutputs& outputs)
+    : options_(options),
+      width_(width),
+      height_(height),
+      doc_(doc),
+      goal_(goal),
+      outputs_(outputs),
+      glfw_(width, height),
+      window_(glfw_.window),
+      context_(contextOptionsFor(window_, options.validation)),
+      target_(
+          context_,
+          [window = window_] {
+            int w = 0, h = 0;
+            glfwGetFramebufferSize(window, &w, &h);
+            return VkExtent2D{std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
+          },
+          samplesFor(context_, options.msaa)),
+      frames_(context_),
+      renderer_(context_, target_),
+      creasePatternPanel_(options.creasePatternPanel),
+      panel_(outputs.wantsRecording(), kHelp),
+      ground_(groundBelow(worldBounds(doc.session->fixed()))) {
+  // ImGui, drawn in the scene pass (its MSAA sample count).
+  imguiPool_ = createDescriptorPool(context_.device(), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                    16, VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
+  ImGui::StyleColorsLight();
+  state_.doc = &doc_;
+  frameView();
+  state_.input = DesktopInput(0.02 * sheetSize(doc_.session->initial()));
+  installInputCallbacks(window_, state_);
+  initImGui();
+  panel_.setRecent(session::loadRecentDesigns());
+  panel_.setTargetPath(options_.target);
+  panel_.setDesktop(true);
+  // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
+  panel_.nameDesign(options_.resume          ? start.autosavePath
+                    : options_.input.empty() ? start.name
+                                             : options_.input);
+  // The window and the device exist: now the recording may be created (B8 of issue 13).
+  if (outputs_.wantsRecording()) startRecording();
+  viewedRevision_ = doc_.session->fixedRevision();
+  viewedSession_ = doc_.session.get();
+  framedTarget_ = goal_.mesh();
+}
+
+void DesignerWindow::initImGui() {
+  // Installed after ours, so ImGui chains to them.
+  ImGui_ImplGlfw_InitForVulkan(window_, true);
+  ImGui_ImplVulkan_InitInfo imguiInfo{};
+  imguiInfo.Instance = context_.instance();
+  imguiInfo.PhysicalDevice = context_.physicalDevice();
+  imguiInfo.Device = context_.device();
+  imguiInfo.QueueFamily = context_.graphicsFamily();
+  imguiInfo.Queue = context_.graphicsQueue();
+  imguiInfo.DescriptorPool = imguiPool_;
+  imguiInfo.MinImageCount = std::max(2u, target_.minImageCount());
+  imguiInfo.ImageCount = std::max(imguiInfo.MinImageCount, target_.imageCount());
+  imguiInfo.MSAASamples = target_.format().samples;
+  ImGui_ImplVulkan_Init(&imguiInfo, target_.renderPass());
+  // The font atlas, uploaded once with a one-off command buffer.
+  Frame& frame = frames_.begin();
+  ImGui_ImplVulkan_CreateFontsTexture(frame.commands);
+  frames_.submit(frame);
+  frames_.wait(frame);
+  ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+void DesignerWindow::startRecording() {
+  RecordingHeader header;
+  header.source = "desktop";
+  header.surface = doc_.recordingSurface();
+  header.symmetry = doc_.recordingSymmetry();
+  // The display's refresh rate paces the frames (informative; each frame carries its time).
+  const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor());
+  header.rate = mode && mode->refreshRate > 0 ? double(mode->refreshRate) : 60.0;
+  outputs_.startRecording(header);
+}
+
+void DesignerWindow::frameView() {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  const float aspect = w > 0 && h > 0 ? float(w) / float(h) : float(width_) / float(height_);
+  state_.camera = OrbitCamera::framing(
+      studioBounds(doc_.session->fixed(), goal_.mesh(), doc_.core->worldFromSheet()), aspect);
+}
+
+void DesignerWindow::replaceDocument(Design next, const std::string& name) {
+  session::Document fresh = session::makeDocument(next, name);
+  doc_.core.reset();
+  doc_ = std::move(fresh);
+  goal_.documentReplaced();
+  renderer_.markSheetReplaced();
+  tracker_ = desktop::InteractionSheetTracker();
+  state_.input = DesktopInput(0.02 * sheetSize(doc_.session->initial()));
+  frameView();
+  ground_ = groundBelow(worldBounds(doc_.session->fixed()));
+}
+
+void DesignerWindow::run() {
+  start_ = Clock::now();
+  lastFrame_ = Clock::now();
+  while (!glfwWindowShouldClose(window_) && !state_.quit) {
     glfwPollEvents();
     {
-      const glm::dvec2 size = windowSize(window);
-      state.input.mouseRay(state.camera.ray(state.mouse, size.x, size.y), doc.session->current(),
-                           doc.core->worldFromSheet());
+      const glm::dvec2 size = windowSize(window_);
+      state_.input.mouseRay(state_.camera.ray(state_.mouse, size.x, size.y),
+                            doc_.session->current(), doc_.core->worldFromSheet());
     }
-    ImGui_ImplVulkan_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    studio::StudioActions actions{
-        [&](const Design& next, const std::string& name) { replaceDocument(next, name); },
-        [&](Button button) { state.input.pulse(button); },
-        [&](const std::string& path) { exportPng(context, lastScene, target.extent(), path); }};
-    actions.foldedForm = [&]() -> std::optional<PdfPicture> {
-      const RgbaImage image = renderSceneOnce(
-          context,
-          sceneForSheet(doc.session->fixed(), ViewPreset::Iso, 1.5f, /*creasePatternPanel=*/false),
-          {1200, 800});
-      return PdfPicture{image.width, image.height, image.pixels};
-    };
-    actions.loadTarget = [&](const std::string& path) { goal.load(path, doc); };
-    actions.suggest = [&] { goal.suggest(doc); };
-    stats.targetLine = goal.distanceLine();
-    stats.suggestionLine = goal.suggestionLine(*doc.core);
-    actions.recentChanged = [&panel](const std::vector<std::string>& recent) {
-      try {
-        session::saveRecentDesigns(recent);
-      } catch (const std::exception& e) {
-        panel.setMessage(std::string("recent designs not kept: ") + e.what());
-      }
-    };
-    actions.failed = [](const std::string& problem) {
-      std::cerr << "curvefold: warning: " << problem << std::endl;
-    };
-    panel.draw(doc, actions, stats, creasePatternPanel);
-    ImGui::Render();
-
-    // Input into the core; time never goes backwards.
-    const double time =
-        std::max(lastTime, std::chrono::duration<double>(Clock::now() - start).count());
-    lastTime = time;
-    if (state.suggest) {
-      state.suggest = false;
-      try {
-        goal.suggest(doc);
-      } catch (const std::exception& e) {
-        panel.setMessage(e.what());
-      }
-    }
-    InputFrame input = state.input.frame(time);
-    // The panel's simulation (issue 39, 4) is input like the mouse, so the recording keeps it.
-    if (const std::optional<double> percent = panel.simulationPercent())
-      input.simulation = liveSimulationInput(*percent, doc.session->fixed());
-    goal.poll(doc, input);  // a finished search's folds join the frame, and its recording
-    const Clock::time_point processStart = Clock::now();
-    doc.core->process(input);
-    if (doc.session->dragging() || doc.core->simulation())
-      stats.dragUpdateMs =
-          std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
-    outputs.frame(input, doc.core->events());
-    for (const std::string& problem : outputs.takeNewProblems()) {
-      panel.setMessage(problem);
-      std::cerr << "curvefold: warning: " << problem << std::endl;
-    }
-
-    {
-      const glm::dvec2 size = windowSize(window);
-      if (goal.mesh() != framedTarget) {
-        // A target swapped in (loaded off the frame): framed with the sheet.
-        framedTarget = goal.mesh();
-        frameView();
-      } else if (viewedSession == doc.session.get() &&
-                 viewedRevision != doc.session->fixedRevision()) {
-        followSheet(state.camera, sheetShown,
-                    studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()),
-                    studioBounds(doc.session->fixed(), goal.mesh(), doc.core->worldFromSheet()),
-                    size.x, size.y);
-      }
-      if (viewedSession != doc.session.get() || viewedRevision != doc.session->fixedRevision()) {
-        viewedSession = doc.session.get();
-        viewedRevision = doc.session->fixedRevision();
-        sheetShown = state.camera.shows(
-            studioBounds(doc.session->fixed(), nullptr, doc.core->worldFromSheet()), size.x,
-            size.y);
-      }
-    }
-    tracker.update(*doc.core, renderer);
-    lastScene = sceneForInteraction(*doc.core, input, state.camera.camera(), ground,
-                                    {creasePatternPanel, /*handMarkers=*/false, &panelCache,
-                                     goal.mesh(), goal.offeredResult(*doc.core)});
-    tracker.describe(*doc.core, lastScene.sheet, panel.strainColours());
-    stats.drawnTriangles = lastScene.sheet.sheet->triangleCount();
-    ImDrawData* panel = ImGui::GetDrawData();
-    drawFrame(frames, target, renderer, lastScene, [panel](VkCommandBuffer commands) {
-      ImGui_ImplVulkan_RenderDrawData(panel, commands);
-    });
-    const Clock::time_point now = Clock::now();
-    stats.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
-    lastFrame = now;
-    if (!options.frameTimes.empty()) frameTimes.push_back(float(stats.frameMs));
+    drawPanel();
+    InputFrame input = nextInput();
+    process(input);
+    followView();
+    drawScene(input);
+    timeFrame();
   }
-  frames.waitAll();
-  if (!options.screenshotOnExit.empty())
-    exportPng(context, lastScene, target.extent(), options.screenshotOnExit);
+  frames_.waitAll();
+}
+
+studio::StudioActions DesignerWindow::panelActions() {
+  studio::StudioActions actions{
+      [this](const Design& next, const std::string& name) { replaceDocument(next, name); },
+      [this](Button button) { state_.input.pulse(button); },
+      [this](const std::string& path) { exportPng(context_, lastScene_, target_.extent(), path); }};
+  actions.foldedForm = [this]() -> std::optional<PdfPicture> {
+    const RgbaImage image = renderSceneOnce(
+        context_,
+        sceneForSheet(doc_.session->fixed(), ViewPreset::Iso, 1.5f, /*creasePatternPanel=*/false),
+        {1200, 800});
+    return PdfPicture{image.width, image.height, image.pixels};
+  };
+  actions.loadTarget = [this](const std::string& path) { goal_.load(path, doc_); };
+  actions.suggest = [this] { goal_.suggest(doc_); };
+  actions.recentChanged = [this](const std::vector<std::string>& recent) {
+    try {
+      session::saveRecentDesigns(recent);
+    } catch (const std::exception& e) {
+      panel_.setMessage(std::string("recent designs not kept: ") + e.what());
+    }
+  };
+  actions.failed = [](const std::string& problem) {
+    std::cerr << "curvefold: warning: " << problem << std::endl;
+  };
+  return actions;
+}
+
+void DesignerWindow::drawPanel() {
+  ImGui_ImplVulkan_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const studio::StudioActions actions = panelActions();
+  stats_.targetLine = goal_.distanceLine();
+  stats_.suggestionLine = goal_.suggestionLine(*doc_.core);
+  panel_.draw(doc_, actions, stats_, creasePatternPanel_);
+  ImGui::Render();
+}
+
+InputFrame DesignerWindow::nextInput() {
+  const double time =
+      std::max(lastTime_, std::chrono::duration<double>(Clock::now() - start_).count());
+  lastTime_ = time;
+  if (state_.suggest) {
+    state_.suggest = false;
+    try {
+      goal_.suggest(doc_);
+    } catch (const std::exception& e) {
+      panel_.setMessage(e.what());
+    }
+  }
+  InputFrame input = state_.input.frame(time);
+  // The panel's simulation (issue 39, 4) is input like the mouse, so the recording keeps it.
+  if (const std::optional<double> percent = panel_.simulationPercent())
+    input.simulation = liveSimulationInput(*percent, doc_.session->fixed());
+  return input;
+}
+
+void DesignerWindow::process(InputFrame& input) {
+  goal_.poll(doc_, input);  // a finished search's folds join the frame, and its recording
+  const Clock::time_point processStart = Clock::now();
+  doc_.core->process(input);
+  if (doc_.session->dragging() || doc_.core->simulation())
+    stats_.dragUpdateMs =
+        std::chrono::duration<double, std::milli>(Clock::now() - processStart).count();
+  outputs_.frame(input, doc_.core->events());
+  for (const std::string& problem : outputs_.takeNewProblems()) {
+    panel_.setMessage(problem);
+    std::cerr << "curvefold: warning: " << problem << std::endl;
+  }
+}
+
+void DesignerWindow::followView() {
+  const glm::dvec2 size = windowSize(window_);
+  const Sheet& fixed = doc_.session->fixed();
+  if (goal_.mesh() != framedTarget_) {
+    // A target swapped in (loaded off the frame): framed with the sheet.
+    framedTarget_ = goal_.mesh();
+    frameView();
+  } else if (viewedSession_ == doc_.session.get() &&
+             viewedRevision_ != doc_.session->fixedRevision()) {
+    followSheet(state_.camera, sheetShown_,
+                studioBounds(fixed, nullptr, doc_.core->worldFromSheet()),
+                studioBounds(fixed, goal_.mesh(), doc_.core->worldFromSheet()), size.x, size.y);
+  }
+  if (viewedSession_ != doc_.session.get() || viewedRevision_ != doc_.session->fixedRevision()) {
+    viewedSession_ = doc_.session.get();
+    viewedRevision_ = doc_.session->fixedRevision();
+    sheetShown_ = state_.camera.shows(
+        studioBounds(doc_.session->fixed(), nullptr, doc_.core->worldFromSheet()), size.x, size.y);
+  }
+}
+
+void DesignerWindow::drawScene(const InputFrame& input) {
+  tracker_.update(*doc_.core, renderer_);
+  lastScene_ = sceneForInteraction(*doc_.core, input, state_.camera.camera(), ground_,
+                                   {creasePatternPanel_, /*handMarkers=*/false, &panelCache_,
+                                    goal_.mesh(), goal_.offeredResult(*doc_.core)});
+  tracker_.describe(*doc_.core, lastScene_.sheet, panel_.strainColours());
+  stats_.drawnTriangles = lastScene_.sheet.sheet->triangleCount();
+  ImDrawData* panel = ImGui::GetDrawData();
+  drawFrame(frames_, target_, renderer_, lastScene_, [panel](VkCommandBuffer commands) {
+    ImGui_ImplVulkan_RenderDrawData(panel, commands);
+  });
+}
+
+void DesignerWindow::timeFrame() {
+  const Clock::time_point now = Clock::now();
+  stats_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
+  lastFrame_ = now;
+  if (!options_.frameTimes.empty()) frameTimes_.push_back(float(stats_.frameMs));
+}
+
+void DesignerWindow::finish() {
+  if (!options_.screenshotOnExit.empty())
+    exportPng(context_, lastScene_, target_.extent(), options_.screenshotOnExit);
   ImGui_ImplVulkan_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  vkDestroyDescriptorPool(context.device(), imguiPool, nullptr);
-  if (!options.frameTimes.empty()) {
-    std::string text;
-    char line[32];
-    for (const float ms : frameTimes) {
-      std::snprintf(line, sizeof line, "%.3f\n", ms);
-      text += line;
-    }
-    writeFileAtomically(options.frameTimes, text);
-  }
-  if (!outputs.finish()) throw FileError(outputs.problems().back());
-  if (context.validationMessageCount() > 0)
-    throw VulkanError(std::to_string(context.validationMessageCount()) +
-                      " Vulkan validation messages, the first: " +
-                      context.validationMessages().front().substr(
-                          0, context.validationMessages().front().find('\n')));
+  vkDestroyDescriptorPool(context_.device(), imguiPool_, nullptr);
+  if (!options_.frameTimes.empty()) writeFrameTimes(options_.frameTimes, frameTimes_);
+  if (!outputs_.finish()) throw FileError(outputs_.problems().back());
+  throwOnValidationMessages(context_);
 }
 
 }  // namespace
 
+void runDesigner(const DesignerOptions& options) {
+  unsigned width = 1280, height = 720;
+  if (!readSize(options.size, 64u, 8192u, width, height))
+    throw cli::UsageError("--size: expected WxH from 64 to 8192, got " +
+                          quotedExcerpt(options.size));
+  const Start start = chooseStart(options);
+  session::Document doc =
+      session::makeDocument(start.design, options.resume ? start.autosavePath : options.input);
+  // Read and checked before any window or file: a bad target is one line and nothing else.
+  studio::StudioTarget goal;
+  if (!options.target.empty()) goal.loadNow(options.target, doc);
+  // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
+  session::SessionOutputs outputs(start.autosavePath, options.record,
+                                  [&doc] { return doc.design(); },
+                                  {{options.target, "the target"}});
+  if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
+  DesignerWindow window(options, width, height, start, doc, goal, outputs);
+  window.run();
+  window.finish();
+}
+
 }  // namespace curvefold::desktop
-
-// The command line's entry points into the window.
-namespace curvefold::cli {
-
-void addDesignCommand(CLI::App& app) {
-  CLI::App* command =
-      app.add_subcommand("design", "Open the desktop designer window (needs a display)");
-  auto options = std::make_shared<desktop::DesignerOptions>();
-  command->add_option("INPUT", options->input,
-                      "Design file (*.curvefold.json) or surface name (default: square)");
-  addSessionFileOptions(command, options->record, options->autosave, options->target,
-                        "after every committed fold");
-  command->add_flag("--resume", options->resume, "Start from the autosaved design");
-  command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
-                    "Show the crease pattern as a side view (also a checkbox in the panel)");
-  command->add_option("--size", options->size, "Window size WxH (default 1280x720)");
-  command
-      ->add_option("--msaa", options->msaa,
-                   "Samples per pixel (default: 4 on a GPU, 1 on a CPU driver such as lavapipe)")
-      ->check(CLI::IsMember({1, 2, 4, 8}));
-  command->add_option("--screenshot-on-exit", options->screenshotOnExit,
-                      "Write the last frame's scene to this PNG when the window closes");
-  command->add_option("--frame-times", options->frameTimes,
-                      "Write each frame's duration (ms, one a line) to this file when the window "
-                      "closes");
-  command->callback([options] { desktop::runDesigner(*options); });
-}
-
-void runDefaultDesigner() {
-  desktop::runDesigner(desktop::DesignerOptions{});
-}
-
-}  // namespace curvefold::cli

@@ -8,6 +8,7 @@
 #include "app/headset_studio.hpp"
 #include "app/interaction_scene.hpp"
 #include "app/recent_designs.hpp"
+#include "app/studio_target.hpp"
 #include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -69,6 +70,7 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   Design design;
   Pose sheetFrame = defaultSheetFrame();
   HandSide handedness = options.leftHanded ? HandSide::Left : HandSide::Right;
+  startName_ = kDefaultSurface;
   if (hasExtension(options.input, ".jsonl")) {
     // A recording: its surface, sheet frame and hands, to watch it through the XR path.
     const Recording recording = readRecording(options.input, {.allowTruncated = true});
@@ -76,10 +78,14 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     sheetFrame = recording.header.sheetFrame;
     if (!options.leftHanded) handedness = recording.header.handedness;
   } else {
-    design = session::designFor(options.input, kDefaultSurface);
+    // With a target and no sheet named, the sheet matches the target, as in the desktop window
+    // (issue 38, 4).
+    studio::StudioStart start = studio::studioStart(options.input, options.target, kDefaultSurface);
+    design = std::move(start.design);
+    startName_ = std::move(start.surfaceName);
   }
   doc_ = session::makeDocument(design, options.input, sheetFrame, handedness);
-  autosave_ = options.autosave.empty() ? session::defaultAutosave(options.input, kDefaultSurface)
+  autosave_ = options.autosave.empty() ? session::defaultAutosave(options.input, startName_)
                                        : options.autosave;
   outputs_ = std::make_unique<session::SessionOutputs>(
       autosave_, options.record, [this] { return doc_.design(); },
@@ -143,7 +149,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
     std::string parent = fs::path(autosave_).parent_path().string();
     options.exportDir = parent.empty() ? std::string(".") : std::move(parent);
   }
-  options.name = options_.input.empty() ? std::string(kDefaultSurface) : options_.input;
+  options.name = options_.input.empty() ? startName_ : options_.input;
   options.recent = session::loadRecentDesigns();
   options.target = options_.target;
   options.sheetFrame = sheetFrame;

@@ -103,6 +103,7 @@ class XrApp {
   std::unique_ptr<XrInput> input_;
   std::unique_ptr<desktop::InteractionSheetTracker> tracker_;
   std::string autosave_;
+  std::string startName_;  // what the autosave and exports are named after without an input
   RecordingHeader recordingHeader_;  // its rate is set from the runtime's frame period
   // After doc_: finishes (saves) before doc_ goes.
   std::unique_ptr<session::SessionOutputs> outputs_;
