@@ -273,6 +273,18 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* gif = command->add_option(
       "--gif", options->gif,
       "Animated GIF of the folding: one frame per state of --percent FROM:TO:N (headless Vulkan)");
+  // CLI11 gives an option still short of its value the next word even when that is another
+  // option (`--color --png x.png` set the colour to "--png", then refused x.png as an extra
+  // argument without naming --color): such a value is refused here, naming the option.
+  const CLI::Validator notAnOption(
+      [](std::string& text) -> std::string {
+        if (text.starts_with("--"))
+          return "expected a value, got the option " + quotedExcerpt(text);
+        return "";
+      },
+      "", "value");
+  for (CLI::Option* option : command->get_options())
+    if (option->get_expected_min() > 0) option->check(notAnOption);
   command->callback([options, paper, obj, fold, gltf, png, frames, colorOption, gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =

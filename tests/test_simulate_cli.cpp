@@ -51,6 +51,33 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
   EXPECT_NE(fold.err.find("other.fold"), std::string::npos) << fold.err;
 }
 
+// Every option of simulate left without its value (or given one CLI11 refuses) exits 1 with one
+// line naming it, never CLI11's own exit codes (106 for a missing option, 109 for an extra
+// argument, 114 for a missing value).
+TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  const std::string base = "simulate s.curvefold.json --percent 50 --obj s.obj ";
+  std::vector<std::pair<std::string, std::string>> cases = {
+      {"simulate s.curvefold.json --obj s.obj", "--percent"},
+      {"simulate --percent 50 --obj s.obj", "INPUT"},
+      {"simulate s.curvefold.json --obj s.obj --percent", "--percent"},
+      {base + "--bogus", "--bogus"},
+      {base + "--steps x", "--steps"}};
+  for (const char* option : {"--steps", "--paper", "--modulus", "--pin", "--glue", "--fold",
+                             "--gltf", "--png", "--frames", "--color", "--gif"})
+    cases.emplace_back(base + option, option);
+  cases.emplace_back("simulate s.curvefold.json --percent 50 --png s.png --color", "--color");
+  cases.emplace_back("simulate s.curvefold.json --percent 50 --color --png s.png", "--color");
+  for (const auto& [arguments, fragment] : cases) {
+    const CommandResult result = run(arguments);
+    EXPECT_EQ(result.exitCode, 1) << arguments << ": " << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1)
+        << arguments << ": " << result.err;
+    EXPECT_NE(result.err.find(fragment), std::string::npos) << arguments << ": " << result.err;
+    EXPECT_FALSE(fs::exists(path("s.obj"))) << arguments;
+  }
+}
+
 // A GIF decoded by giflib: its screen size, each frame's RGB pixels and delay (centiseconds), and
 // whether it loops (NETSCAPE2.0). Empty frames when it is no GIF.
 struct DecodedGif {
