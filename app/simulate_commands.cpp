@@ -30,6 +30,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/folding_motion.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/text/decimal.hpp"
 #include "engine/text/excerpt.hpp"
@@ -42,6 +43,7 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMaxFrames = 1000;
 constexpr std::size_t kMaxSteps = 10'000'000;
+constexpr std::size_t kMaxMotionVertices = 20'000;  // a static solve per step of the motion
 
 // What is simulated: the pattern, and for a design its sheet (tags, seams).
 struct SimulationInput {
@@ -228,7 +230,7 @@ void addSimulateCommand(CLI::App& app) {
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif;
-    bool settle = false;
+    bool settle = false, motion = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -247,6 +249,9 @@ void addSimulateCommand(CLI::App& app) {
                     "the damped dynamic solver");
   command->add_option("--steps", options->steps,
                       "Dynamic steps per state without --settle (default 2000)");
+  command->add_flag("--motion", options->motion,
+                    "Targets along the pattern's folding motion (for patterns whose creases do not "
+                    "fold in proportion, as a waterbomb's), not scaled with --percent");
   CLI::Option* paper = command->add_option(
       "--paper", options->paperMm,
       "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
@@ -341,6 +346,20 @@ void addSimulateCommand(CLI::App& app) {
     } catch (const SimulationInputError& e) {
       throw UsageError("simulate: " + fs::path(options->input).filename().string() + ": " +
                        e.what());
+    }
+
+    if (options->motion) {
+      if (model.vertexCount() > kMaxMotionVertices)
+        throw UsageError("--motion: the pattern has " + std::to_string(model.vertexCount()) +
+                         " vertices; the motion is found for at most " +
+                         std::to_string(kMaxMotionVertices));
+      const FoldingMotion motion = foldingMotion(model);
+      setFoldingMotion(model, motion);
+      char line[160];
+      std::snprintf(line, sizeof line, "folding motion: %zu states, followed to %.1f%%%s\n",
+                    motion.amounts.size(), 100.0 * motion.amounts[motion.amounts.size() - 2],
+                    motion.reachedFull ? " (the 100% angles)" : ", then linear to 100%");
+      statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
     }
 
     // The renderer first: a machine without Vulkan fails before any work.

@@ -78,6 +78,26 @@ TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
   }
 }
 
+// --motion: the waterbomb base settles on its targets at 50% (about 44 degrees off them with the
+// targets scaled linearly), and says how far its motion was followed.
+TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {
+  const std::string pattern =
+      std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/waterbomb_base.fold";
+  auto worstError = [&](const std::string& extra) {
+    const CommandResult result =
+        run("simulate " + pattern + " --percent 50 --settle --obj w.obj" + extra);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    const std::size_t at = result.out.find("largest crease angle error ");
+    EXPECT_NE(at, std::string::npos) << result.out;
+    return at == std::string::npos ? 1e9 : std::stod(result.out.substr(at + 27));
+  };
+  EXPECT_GT(worstError(""), 20.0);
+  EXPECT_LT(worstError(" --motion"), 0.5);
+  const CommandResult result =
+      run("simulate " + pattern + " --percent 50 --settle --motion --obj w.obj");
+  EXPECT_NE(result.out.find("folding motion: "), std::string::npos) << result.out;
+}
+
 // A GIF decoded by giflib: its screen size, each frame's RGB pixels and delay (centiseconds), and
 // whether it loops (NETSCAPE2.0). Empty frames when it is no GIF.
 struct DecodedGif {
