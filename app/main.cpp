@@ -77,7 +77,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) curvefold::cli::runDefault();
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the line (failure_message) or the help; its own codes (106, 109, ...) are not
+    // this program's: every refused command line exits 1, as every other bad input does.
+    return app.exit(e) == 0 ? 0 : 1;
   } catch (const curvefold::cli::ExitStatus& e) {
     return e.status;
   } catch (const std::bad_alloc&) {

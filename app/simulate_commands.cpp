@@ -31,6 +31,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/folding_motion.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/simulation_vk/gpu_dynamic_solver.hpp"
 #include "engine/text/decimal.hpp"
@@ -44,6 +45,7 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMaxFrames = 1000;
 constexpr std::size_t kMaxSteps = 10'000'000;
+constexpr std::size_t kMaxMotionVertices = 20'000;  // a static solve per step of the motion
 
 // What is simulated: the pattern, and for a design its sheet (tags, seams).
 struct SimulationInput {
@@ -230,7 +232,7 @@ void addSimulateCommand(CLI::App& app) {
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif;
-    bool settle = false, gpu = false;
+    bool settle = false, gpu = false, motion = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -252,6 +254,9 @@ void addSimulateCommand(CLI::App& app) {
   command->add_flag("--gpu", options->gpu,
                     "Take the dynamic steps in Vulkan compute shaders (single precision) on the "
                     "Vulkan device instead of on the CPU (double)");
+  command->add_flag("--motion", options->motion,
+                    "Targets along the pattern's folding motion (for patterns whose creases do not "
+                    "fold in proportion, as a waterbomb's), not scaled with --percent");
   CLI::Option* paper = command->add_option(
       "--paper", options->paperMm,
       "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
@@ -278,6 +283,18 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* gif = command->add_option(
       "--gif", options->gif,
       "Animated GIF of the folding: one frame per state of --percent FROM:TO:N (headless Vulkan)");
+  // CLI11 gives an option still short of its value the next word even when that is another
+  // option (`--color --png x.png` set the colour to "--png", then refused x.png as an extra
+  // argument without naming --color): such a value is refused here, naming the option.
+  const CLI::Validator notAnOption(
+      [](std::string& text) -> std::string {
+        if (text.starts_with("--"))
+          return "expected a value, got the option " + quotedExcerpt(text);
+        return "";
+      },
+      "", "value");
+  for (CLI::Option* option : command->get_options())
+    if (option->get_expected_min() > 0) option->check(notAnOption);
   command->callback([options, paper, obj, fold, gltf, png, frames, colorOption, gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =
@@ -294,6 +311,9 @@ void addSimulateCommand(CLI::App& app) {
                        quotedExcerpt(options->percent));
     if (options->gpu && options->settle)
       throw UsageError("--gpu: takes dynamic steps; --settle solves on the CPU, name one");
+    if (options->gpu && options->motion)
+      throw UsageError("--gpu: scales the targets with --percent; --motion follows the pattern's "
+                       "motion on the CPU, name one");
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
@@ -336,6 +356,20 @@ void addSimulateCommand(CLI::App& app) {
     } catch (const SimulationInputError& e) {
       throw UsageError("simulate: " + fs::path(options->input).filename().string() + ": " +
                        e.what());
+    }
+
+    if (options->motion) {
+      if (model.vertexCount() > kMaxMotionVertices)
+        throw UsageError("--motion: the pattern has " + std::to_string(model.vertexCount()) +
+                         " vertices; the motion is found for at most " +
+                         std::to_string(kMaxMotionVertices));
+      const FoldingMotion motion = foldingMotion(model);
+      setFoldingMotion(model, motion);
+      char line[160];
+      std::snprintf(line, sizeof line, "folding motion: %zu states, followed to %.1f%%%s\n",
+                    motion.amounts.size(), 100.0 * motion.amounts[motion.amounts.size() - 2],
+                    motion.reachedFull ? " (the 100% angles)" : ", then linear to 100%");
+      statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
     }
 
     // The renderer first: a machine without Vulkan fails before any work.

@@ -51,6 +51,53 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
   EXPECT_NE(fold.err.find("other.fold"), std::string::npos) << fold.err;
 }
 
+// Every option of simulate left without its value (or given one CLI11 refuses) exits 1 with one
+// line naming it, never CLI11's own exit codes (106 for a missing option, 109 for an extra
+// argument, 114 for a missing value).
+TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  const std::string base = "simulate s.curvefold.json --percent 50 --obj s.obj ";
+  std::vector<std::pair<std::string, std::string>> cases = {
+      {"simulate s.curvefold.json --obj s.obj", "--percent"},
+      {"simulate --percent 50 --obj s.obj", "INPUT"},
+      {"simulate s.curvefold.json --obj s.obj --percent", "--percent"},
+      {base + "--bogus", "--bogus"},
+      {base + "--steps x", "--steps"}};
+  for (const char* option : {"--steps", "--paper", "--modulus", "--pin", "--glue", "--fold",
+                             "--gltf", "--png", "--frames", "--color", "--gif"})
+    cases.emplace_back(base + option, option);
+  cases.emplace_back("simulate s.curvefold.json --percent 50 --png s.png --color", "--color");
+  cases.emplace_back("simulate s.curvefold.json --percent 50 --color --png s.png", "--color");
+  for (const auto& [arguments, fragment] : cases) {
+    const CommandResult result = run(arguments);
+    EXPECT_EQ(result.exitCode, 1) << arguments << ": " << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1)
+        << arguments << ": " << result.err;
+    EXPECT_NE(result.err.find(fragment), std::string::npos) << arguments << ": " << result.err;
+    EXPECT_FALSE(fs::exists(path("s.obj"))) << arguments;
+  }
+}
+
+// --motion: the waterbomb base settles on its targets at 50% (about 44 degrees off them with the
+// targets scaled linearly), and says how far its motion was followed.
+TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {
+  const std::string pattern =
+      std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/waterbomb_base.fold";
+  auto worstError = [&](const std::string& extra) {
+    const CommandResult result =
+        run("simulate " + pattern + " --percent 50 --settle --obj w.obj" + extra);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    const std::size_t at = result.out.find("largest crease angle error ");
+    EXPECT_NE(at, std::string::npos) << result.out;
+    return at == std::string::npos ? 1e9 : std::stod(result.out.substr(at + 27));
+  };
+  EXPECT_GT(worstError(""), 20.0);
+  EXPECT_LT(worstError(" --motion"), 0.5);
+  const CommandResult result =
+      run("simulate " + pattern + " --percent 50 --settle --motion --obj w.obj");
+  EXPECT_NE(result.out.find("folding motion: "), std::string::npos) << result.out;
+}
+
 // A GIF decoded by giflib: its screen size, each frame's RGB pixels and delay (centiseconds), and
 // whether it loops (NETSCAPE2.0). Empty frames when it is no GIF.
 struct DecodedGif {

@@ -17,6 +17,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/folding_motion.hpp"
 #include "engine/simulation/hinge_unfolding.hpp"
 #include "engine/simulation/rigid_placement.hpp"
 #include "engine/simulation/static_solver.hpp"
@@ -157,6 +158,77 @@ TEST(Simulation, StaticSolverReachesItsToleranceOnTheWaterbombBase) {
     for (std::size_t j = 0; j < model.hinges.size(); ++j)
       EXPECT_NEAR(state.hingeAngles[j], moving.hingeAngles[j], 1e-3) << amount << " hinge " << j;
   }
+}
+
+// Along its folding motion (folding_motion.hpp) the waterbomb base reaches its targets at every
+// fold amount, every crease within 0.5 degrees, unstretched, P% of the way along (with the
+// targets scaled linearly it settled 44 degrees off at 50%: no state has them all).
+TEST(Simulation, WaterbombBaseFollowsItsFoldingMotionToEveryTarget) {
+  BarHingeModel model = buildModel(readFoldCreasePattern(
+      std::filesystem::path(CURVEFOLD_TEST_DATA) / "crease_patterns/waterbomb_base.fold"));
+  const FoldingMotion motion = foldingMotion(model);
+  // Its four-fold symmetric motion ends with the diagonals folded flat (four flaps, midlines at
+  // -90 degrees) at about 79%: from there to the base one pair of flaps must go first.
+  EXPECT_FALSE(motion.reachedFull);
+  ASSERT_GE(motion.amounts.size(), 3u);
+  EXPECT_GE(motion.amounts[motion.amounts.size() - 2], 0.75);
+  setFoldingMotion(model, motion);
+  SimulationState state = flatState(model);
+  for (double percent : {25.0, 50.0, 75.0, 100.0}) {
+    const double amount = percent / 100.0;
+    const StaticResult result = settle(model, amount, state);
+    EXPECT_TRUE(result.converged) << percent;
+    double worstError = 0.0, worstStrain = 0.0;
+    for (double error : creaseAngleError(model, state.positions, amount, state.hingeAngles))
+      worstError = std::max(worstError, std::abs(error));
+    for (double strain : edgeStrain(model, state.positions))
+      worstStrain = std::max(worstStrain, std::abs(strain));
+    EXPECT_LE(worstError, 0.5) << percent << "%";
+    EXPECT_LE(worstStrain, 1e-3) << percent << "%";
+    EXPECT_NEAR(foldProgress(model, state.hingeAngles), amount, 0.01) << percent << "%";
+    // Every crease folds its own way, the midlines too (the linear compromise left them at half
+    // the diagonals' angle).
+    for (std::size_t j = 0; j < model.hinges.size(); ++j)
+      EXPECT_GT(state.hingeAngles[j] * model.hingeTarget[j], 0.0) << percent << "% hinge " << j;
+    std::fprintf(stderr, "waterbomb %g%%: worst crease error %.3f degrees, strain %.1e, angles",
+                 percent, worstError, worstStrain);
+    for (double angle : state.hingeAngles) std::fprintf(stderr, " %.1f", angle * kDegrees);
+    std::fprintf(stderr, "\n");
+  }
+}
+
+// The largest crease angle error (degrees) of the settled states at 25, 50 and 75%.
+double worstCreaseErrorAlong(const BarHingeModel& model) {
+  SimulationState state = flatState(model);
+  double worst = 0.0;
+  for (double amount : {0.25, 0.5, 0.75}) {
+    EXPECT_TRUE(settle(model, amount, state).converged) << amount;
+    for (double error : creaseAngleError(model, state.positions, amount, state.hingeAngles))
+      worst = std::max(worst, std::abs(error));
+  }
+  return worst;
+}
+
+// Patterns whose targets do scale together keep their linear targets on the motion (a straight
+// crease: P% of its angle); the Miura-ori, whose vertical creases fold non-linearly in the zigzag
+// angle, reaches every target of its motion (a degree or more off with linear targets).
+TEST(Simulation, FoldingMotionKeepsLinearTargetsAndMakesTheMiuraOrisReachable) {
+  BarHingeModel crease = buildModel(creasedSquare(6, 3, 120.0, 0.2));
+  setFoldingMotion(crease, foldingMotion(crease));
+  for (std::size_t j = 0; j < crease.hinges.size(); ++j)
+    EXPECT_NEAR(crease.target(j, 0.5), 0.5 * crease.hingeTarget[j], 0.5 / kDegrees) << j;
+  EXPECT_LE(worstCreaseErrorAlong(crease), 0.5);
+
+  BarHingeModel miura = buildModel(testing::miuraOri(4, 4, 1.0, 1.0, 0.5, 150.0 / kDegrees));
+  const double linear = worstCreaseErrorAlong(miura);
+  const FoldingMotion motion = foldingMotion(miura);
+  EXPECT_TRUE(motion.reachedFull);
+  setFoldingMotion(miura, motion);
+  const double along = worstCreaseErrorAlong(miura);
+  EXPECT_LE(along, 0.5);
+  std::fprintf(stderr,
+               "Miura-ori worst crease error at 25-75%%: linear %.2f, motion %.3f degrees\n",
+               linear, along);
 }
 
 TEST(Simulation, SameInputAndStepsGiveTheSameStateBitForBit) {

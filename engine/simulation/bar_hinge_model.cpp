@@ -322,6 +322,20 @@ std::vector<double> hingeAngles(const BarHingeModel& model,
   return angles;
 }
 
+double BarHingeModel::motionTarget(std::size_t hinge, double foldAmount) const {
+  const std::size_t rows = motionAmounts.size(), width = hinges.size();
+  if (foldAmount <= motionAmounts.front()) return motionTargets[hinge];
+  if (foldAmount >= motionAmounts.back()) return motionTargets[(rows - 1) * width + hinge];
+  const std::size_t upper = static_cast<std::size_t>(
+      std::upper_bound(motionAmounts.begin(), motionAmounts.end(), foldAmount) -
+      motionAmounts.begin());
+  const double from = motionAmounts[upper - 1], to = motionAmounts[upper];
+  const double t = (foldAmount - from) / (to - from);
+  const double a = motionTargets[(upper - 1) * width + hinge],
+               b = motionTargets[upper * width + hinge];
+  return a + (b - a) * t;
+}
+
 std::vector<double> hingeTargets(const BarHingeModel& model, double foldAmount) {
   std::vector<double> targets(model.hinges.size());
   for (std::size_t j = 0; j < targets.size(); ++j) targets[j] = model.target(j, foldAmount);

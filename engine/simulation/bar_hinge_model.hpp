@@ -117,11 +117,20 @@ struct BarHingeModel {
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;
 
+  // A folding motion (folding_motion.hpp), when one is set: every hinge's target at increasing
+  // fold amounts from 0 to 1, motionTargets row by row (hinges.size() a row). Between two rows
+  // the targets are interpolated linearly. Empty: the targets scale linearly with the amount.
+  std::vector<double> motionAmounts;
+  std::vector<double> motionTargets;
+
   std::size_t vertexCount() const { return flatPositions.size(); }
-  // The hinge's target at a fold amount (0..1): driven hinges scale, the others keep theirs.
+  // The hinge's target at a fold amount (0..1): along the motion when one is set, else driven
+  // hinges scale and the others keep theirs.
   double target(std::size_t hinge, double foldAmount) const {
+    if (!motionAmounts.empty()) return motionTarget(hinge, foldAmount);
     return hingeDriven[hinge] ? hingeTarget[hinge] * foldAmount : hingeTarget[hinge];
   }
+  double motionTarget(std::size_t hinge, double foldAmount) const;
 };
 
 // Builds the model. In design mode every interior edge is driven to its foldAngleDegrees times

@@ -28,6 +28,10 @@ struct Placement {
 }  // namespace
 
 SimulationState unfoldedState(const BarHingeModel& model, double foldAmount) {
+  return unfoldedState(model, hingeTargets(model, foldAmount));
+}
+
+SimulationState unfoldedState(const BarHingeModel& model, const std::vector<double>& targets) {
   const std::size_t triangleCount = model.triangles.size();
   // The hinges of each triangle.
   std::vector<std::vector<std::uint32_t>> triangleHinges(triangleCount);
@@ -61,7 +65,7 @@ SimulationState unfoldedState(const BarHingeModel& model, double foldAmount) {
         const std::uint32_t next = left == t ? right : left;
         if (isPlaced[next]) continue;
         const Hinge& h = model.hinges[j];
-        const double target = model.target(j, foldAmount);
+        const double target = targets[j];
         // Turn the neighbour about the edge as it lies in t's placement; the sense of the turn is
         // whichever gives the hinge its target (the two differ in sign unless the target is 0).
         const glm::dvec3 a = placement[t].apply(flat[h.a]);
@@ -105,7 +109,7 @@ SimulationState unfoldedState(const BarHingeModel& model, double foldAmount) {
       if (model.pinned[v]) state.positions[v] = flat[v];
   }
   state.velocities.assign(model.vertexCount(), glm::dvec3(0.0));
-  state.hingeAngles = hingeAngles(model, state.positions, hingeTargets(model, foldAmount));
+  state.hingeAngles = hingeAngles(model, state.positions, targets);
   return state;
 }
 

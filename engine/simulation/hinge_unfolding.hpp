@@ -13,5 +13,7 @@ namespace curvefold {
 
 // The state (at rest) with every hinge of the breadth-first tree at its target.
 SimulationState unfoldedState(const BarHingeModel& model, double foldAmount);
+// The same for explicit hinge targets (one per hinge, radians).
+SimulationState unfoldedState(const BarHingeModel& model, const std::vector<double>& targets);
 
 }  // namespace curvefold

@@ -179,15 +179,19 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
 
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
                     const StaticOptions& options) {
+  return settleToTargets(model, hingeTargets(model, foldAmount), state, options);
+}
+
+StaticResult settleToTargets(const BarHingeModel& model, const std::vector<double>& goal,
+                             SimulationState& state, const StaticOptions& options) {
   StaticResult result;
   const std::size_t n = model.vertexCount();
   state.velocities.assign(n, glm::dvec3(0.0));
   if (state.hingeAngles.size() != model.hinges.size())
     state.hingeAngles = hingeAngles(model, state.positions);
   const double scale = forceScale(model);
-  const std::vector<double> goal = hingeTargets(model, foldAmount);
   if (options.predictor && !model.hinges.empty()) {
-    SimulationState guess = unfoldedState(model, foldAmount);
+    SimulationState guess = unfoldedState(model, goal);
     bool anyPinned = false;
     for (std::uint8_t p : model.pinned) anyPinned = anyPinned || p;
     // In the state's frame (pins already hold the guess where they hold the state).

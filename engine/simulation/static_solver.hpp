@@ -72,4 +72,8 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
                     const StaticOptions& options = {});
 
+// The same toward explicit hinge targets (one per hinge, radians) instead of a fold amount's.
+StaticResult settleToTargets(const BarHingeModel& model, const std::vector<double>& targets,
+                             SimulationState& state, const StaticOptions& options = {});
+
 }  // namespace curvefold
