@@ -30,7 +30,8 @@
 // run, so a fit it stops repeats exactly.
 //
 // Known limits: each fold of a sequence must bring the sheet closer on its own; a target that
-// needs a fold that makes it worse before a later one makes it better is not reached.
+// needs a fold that makes it worse before a later one makes it better is not reached, except a
+// pleat (pleat_folds.hpp: two folds offered as one step, in a design without symmetry).
 // A symmetric design's images are scored as a display previews them (without the pieces a slit
 // cuts off an image), and checked for self-intersection only when the drags are made.
 #pragma once
