@@ -101,5 +101,25 @@ TEST(FoldFit, KeepsAPleatWhereNoSingleFoldTurnsACurvedEnd) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
+// A saddle z = 4 x^2 - 2 (y - 0.1)^2 from the trough z = 4 x^2 (the swept parabola nearest it):
+// pleats across the rulings, on either side, give the other curvature.
+TEST(FoldFit, PleatsBringATroughCloserToASaddleThanItsStart) {
+  TriangleMesh saddle = meshOf(trough());
+  for (glm::dvec3& p : saddle.positions) p.z -= 2.0 * (p.y - 0.1) * (p.y - 0.1);
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(trough());
+  FitOptions options;
+  options.maxFolds = 2;
+  options.distanceSamples = 4000;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 3000;  // no clock: the same under the sanitizers
+  const FitResult result = fitFolds(session, fitter, options);
+  ASSERT_GE(result.steps.size(), 2u) << result.stopReason;
+  EXPECT_LT(result.steps.back().chamfer, 0.7 * result.steps.front().chamfer)
+      << result.steps.front().chamfer << " -> " << result.steps.back().chamfer;
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
 }  // namespace
 }  // namespace curvefold
