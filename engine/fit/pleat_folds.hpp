@@ -3,8 +3,9 @@
 //
 // Method: two reflections compose to a rotation about the line where their planes meet, by twice
 // the angle between them (the classical theorem of plane reflections, as in any text on
-// isometries; used for folding in Demaine & O'Rourke, "Geometric Folding Algorithms", 2007,
-// Ch. 11, and the pleated hypar of Demaine et al., "(Non)existence of pleated folds", 2011). A
+// isometries; see Demaine & O'Rourke, "Geometric Folding Algorithms", 2007, on folding, and
+// on the pleated hypar Demaine, Demaine, Hart, Price & Tachi, "(Non)existence of Pleated Folds",
+// Graphs and Combinatorics 2011). A
 // paper artist bends a cylinder's ends down this way to approximate a saddle: the sheet's own
 // curvature (a swept parabola's) stays, and pleats across the other direction add the other,
 // opposite curvature that no developable sheet has. Here the first fold turns the end back over
