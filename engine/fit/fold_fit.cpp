@@ -16,6 +16,7 @@
 #include <nlopt.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -934,8 +935,14 @@ class FitRun {
           break;
         }
         const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
-        for (FoldSuggestion& next :
-             fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k)) {
+        std::vector<FoldSuggestion> nexts =
+            fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
+        // Pleats (pleat_folds.hpp): two folds as one step, the first of which alone no search
+        // of single folds keeps.
+        for (FoldSuggestion& pleat :
+             suggestPleats(*branch, fitter_, options_.pleats, deadline, 16 * (depth + 1) + k))
+          nexts.push_back(std::move(pleat));
+        for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
           child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
           child.groups.push_back(next.folds.size());

@@ -30,7 +30,8 @@
 // run, so a fit it stops repeats exactly.
 //
 // Known limits: each fold of a sequence must bring the sheet closer on its own; a target that
-// needs a fold that makes it worse before a later one makes it better is not reached.
+// needs a fold that makes it worse before a later one makes it better is not reached, except a
+// pleat (pleat_folds.hpp: two folds offered as one step, in a design without symmetry).
 // A symmetric design's images are scored as a display previews them (without the pieces a slit
 // cuts off an image), and checked for self-intersection only when the drags are made.
 #pragma once
@@ -163,6 +164,7 @@ struct FitOptions {
   std::size_t beamWidth = 3;    // fold sequences kept at each depth, the best
   std::size_t creaseWidth = 3;  // and this many more whose last fold is through a crease plane
   std::size_t branching = 3;    // next folds tried from each (and as many through crease planes)
+  std::size_t pleats = 2;       // and this many pleats (pleat_folds.hpp: two folds as one step)
   // After the start, then after each fold kept, with the session holding it.
   std::function<void(const FitProgress&)> progress;
   // While searching, after the unfolding and after each depth of the beam: folds, the best

@@ -1,0 +1,261 @@
+#include "engine/fit/pleat_folds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <utility>
+
+#include <Eigen/Dense>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/self_intersection.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+// Bends tried at each hinge (degrees), and the flap's rise above the bend (2 eps = theta + this).
+constexpr double kBends[] = {4.0, 9.0, 16.0, 25.0, 35.0};
+constexpr double kFlapMargin = 4.0;
+// Hinges on the way from the sheet's centre to a far point, as fractions of the way.
+constexpr double kHingeAt[] = {0.25, 0.45, 0.65, 0.8};
+// Far points tried, at least this far apart (of the sheet's size).
+constexpr std::size_t kFarPoints = 3;
+constexpr double kFarApart = 0.2;
+// The pleat's width, of the target's diagonal.
+constexpr double kWidth = 0.01;
+// Vertices measured to the target to find where the sheet is far.
+constexpr std::size_t kMeasured = 800;
+// The best pleats of the grid refined.
+constexpr std::size_t kRefined = 2;
+constexpr double kNone = std::numeric_limits<double>::infinity();
+
+std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
+  std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
+  for (const Triangle& t : sheet.triangles) {
+    const glm::dvec3 n = glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
+                                    sheet.positions[t[2]] - sheet.positions[t[0]]);
+    for (const VertexIndex v : t) normals[v] += n;  // area-weighted
+  }
+  for (glm::dvec3& n : normals) {
+    const double length = glm::length(n);
+    n = length > 0.0 ? n / length : glm::dvec3(0.0);
+  }
+  return normals;
+}
+
+}  // namespace
+
+PleatPlanes pleatPlanes(const glm::dvec3& hinge, const glm::dvec3& along,
+                        const glm::dvec3& bendToward, double theta, double flapTilt, double width) {
+  // In the plane of `along` (x) and `up` (z, away from the bend): the first plane's normal is
+  // `along` tilted by -eps, so the end reflects back over the sheet rising at 2 eps (`flap`); the
+  // second, through the flap at `width`, is the bisector of the flap's direction and the wanted
+  // one (forward, turned by theta toward the bend).
+  const glm::dvec3 up = -bendToward;
+  const glm::dvec3 n1 = std::cos(flapTilt) * along - std::sin(flapTilt) * up;
+  const glm::dvec3 flap = -std::cos(2 * flapTilt) * along + std::sin(2 * flapTilt) * up;
+  const glm::dvec3 wanted = std::cos(theta) * along - std::sin(theta) * up;
+  return {{hinge, n1}, {hinge + width * flap, glm::normalize(flap - wanted)}};
+}
+
+std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter& fitter,
+                                          std::size_t count, const Deadline& deadline,
+                                          std::uint64_t step) {
+  session.cancel();
+  std::vector<FoldSuggestion> out;
+  if (count == 0 || session.symmetricFolder() || deadline.passed()) return out;
+  const Sheet sheet = session.fixed();
+  const std::size_t n = sheet.vertexCount();
+  if (n < 4) return out;
+  const std::vector<glm::dvec3> normals = vertexNormals(sheet);
+  glm::dvec3 centre(0.0), lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : sheet.positions) {
+    centre += p;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  centre /= static_cast<double>(n);
+  const double size = glm::length(hi - lo);
+  const double width = kWidth * fitter.targetDiagonal();
+
+  // Where the sheet is far from the target: a spread of its vertices measured.
+  const SurfaceDistanceQuery query(fitter.target(), "target");
+  const std::size_t stride = std::max<std::size_t>(1, n / kMeasured);
+  std::vector<VertexIndex> measured;
+  std::vector<glm::dvec3> points;
+  for (std::size_t v = (step * 7919) % stride; v < n; v += stride) {
+    measured.push_back(static_cast<VertexIndex>(v));
+    points.push_back(sheet.positions[v]);
+  }
+  const std::vector<double> distances = pointDistances(points, query);
+  std::vector<std::size_t> order(measured.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return distances[a] > distances[b]; });
+  std::vector<glm::dvec3> far;
+  for (const std::size_t i : order) {
+    if (far.size() == kFarPoints) break;
+    const glm::dvec3 p = points[i];
+    if (std::all_of(far.begin(), far.end(),
+                    [&](const glm::dvec3& q) { return glm::distance(p, q) > kFarApart * size; }))
+      far.push_back(p);
+  }
+
+  const double before = fitter.approximateDistance(sheet);
+  const std::size_t crossingsBefore = findSelfIntersections(sheet).intersections.size();
+  const std::size_t foldsBefore = session.foldCount();
+  std::uint32_t group = 1;
+  for (std::size_t f = 0; f < foldsBefore; ++f)
+    group = std::max(group, session.folds()[f].group + 1);
+  auto undoAll = [&] {
+    while (session.foldCount() > foldsBefore) session.undo();
+  };
+  // Directions to pleat along: toward the far point, and the sheet's own principal direction
+  // nearest it (a swept sheet's rulings or profile, across which a hinge is straight).
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const glm::dvec3& q : sheet.positions) {
+    const Eigen::Vector3d e(q.x - centre.x, q.y - centre.y, q.z - centre.z);
+    covariance += e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  std::vector<glm::dvec3> axes;
+  for (int i = 1; i < 3; ++i) {
+    const Eigen::Vector3d v = solver.eigenvectors().col(i);
+    axes.emplace_back(v.x(), v.y(), v.z());
+  }
+  // A hinge: where the pleat turns the end, given by a far point, a direction toward it and how
+  // far along the way from the centre.
+  struct Hinge {
+    glm::dvec3 middle{0.0}, along{0.0}, bend{0.0};
+    VertexIndex seed = 0;
+    double reach = 0.0, spread = 0.0;
+  };
+  auto hingeAt = [&](const glm::dvec3& p, const glm::dvec3& direction,
+                     double t) -> std::optional<Hinge> {
+    const glm::dvec3 wanted = centre + t * glm::dot(p - centre, direction) * direction;
+    VertexIndex at = 0;
+    double nearestHinge = 1e300;
+    for (std::size_t v = 0; v < n; ++v)
+      if (const double d = glm::distance(sheet.positions[v], wanted); d < nearestHinge) {
+        nearestHinge = d;
+        at = static_cast<VertexIndex>(v);
+      }
+    const glm::dvec3 h = sheet.positions[at], m = normals[at];
+    Hinge hinge;
+    hinge.along = direction - glm::dot(direction, m) * m;
+    if (!(glm::length(hinge.along) > 1e-6) || !(glm::length(m) > 0.5)) return {};
+    hinge.along = glm::normalize(hinge.along);
+    hinge.bend = glm::dot(query.closestPoint(p) - p, m) >= 0.0 ? m : -m;
+    // The seed: the end's vertex farthest beyond the hinge (on the part both folds move).
+    for (std::size_t v = 0; v < n; ++v)
+      if (const double d = glm::dot(sheet.positions[v] - h, hinge.along); d > hinge.reach) {
+        hinge.reach = d;
+        hinge.seed = static_cast<VertexIndex>(v);
+      }
+    // The planes tilt about the hinge by eps and eps + theta / 2, so where the sheet rises or
+    // falls along the hinge (a trough across it) the pleat is narrower or wider by that height
+    // times tan(theta / 2): the planes pass at mid-height, and the pleat is widened so it is
+    // nowhere narrower than `width` (else the second plane cuts the sheet under the flap).
+    double low = 0.0, high = 0.0;
+    for (std::size_t v = 0; v < n; ++v)
+      if (std::abs(glm::dot(sheet.positions[v] - h, hinge.along)) < 0.02 * size) {
+        const double height = glm::dot(sheet.positions[v] - h, m);
+        low = std::min(low, height);
+        high = std::max(high, height);
+      }
+    hinge.middle = h + 0.5 * (low + high) * m;
+    hinge.spread = high - low;
+    return hinge;
+  };
+  // The pleat made, scored, kept among the best when it brings the sheet closer, and taken back.
+  auto tryPleat = [&](const Hinge& hinge, double degrees) {
+    const double theta = degrees * kDegree, eps = 0.5 * (degrees + kFlapMargin) * kDegree;
+    const double wide = width + 0.6 * hinge.spread * std::tan(0.5 * theta);
+    if (!(hinge.reach > 4.0 * wide)) return kNone;
+    const PleatPlanes planes = pleatPlanes(hinge.middle, hinge.along, hinge.bend, theta, eps, wide);
+    deadline.countEvaluation();
+    for (const ReflectionPlane& plane : {planes.first, planes.second}) {
+      const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[hinge.seed]);
+      session.updateDrag(plane.reflect(grab));
+      if (!session.commit()) {
+        undoAll();
+        return kNone;
+      }
+    }
+    const double after = fitter.approximateDistance(session.fixed());
+    const bool keeps = after < before && (out.size() < count || after < out.back().after);
+    if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore) {
+      FoldSuggestion pleat;
+      pleat.folds.assign(
+          session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
+          session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+      // One group, as a symmetric fold and its images are: undo takes the pleat at once, and a
+      // fit counts it as one step.
+      for (FoldRecord& fold : pleat.folds) fold.group = group;
+      pleat.sheet = session.fixed();
+      pleat.before = before;
+      pleat.after = after;
+      out.push_back(std::move(pleat));
+      std::stable_sort(out.begin(), out.end(),
+                       [](const auto& a, const auto& b) { return a.after < b.after; });
+      if (out.size() > count) out.pop_back();
+    }
+    undoAll();
+    return after;
+  };
+
+  struct Tried {
+    glm::dvec3 far{0.0}, direction{0.0};
+    double t = 0.0, degrees = 0.0, after = kNone;
+  };
+  std::vector<Tried> tried;
+  std::vector<std::pair<VertexIndex, glm::dvec3>> seen;  // hinges tried: a vertex, a direction
+  for (const glm::dvec3& p : far) {
+    std::vector<glm::dvec3> directions{glm::normalize(p - centre)};
+    glm::dvec3 axis = axes[0];
+    for (const glm::dvec3& a : axes)
+      if (std::abs(glm::dot(a, p - centre)) > std::abs(glm::dot(axis, p - centre))) axis = a;
+    if (glm::dot(axis, p - centre) < 0.0) axis = -axis;
+    if (glm::dot(axis, directions[0]) < 0.995) directions.push_back(axis);
+    for (const glm::dvec3& direction : directions)
+      for (const double t : kHingeAt) {
+        const std::optional<Hinge> hinge = hingeAt(p, direction, t);
+        if (!hinge) continue;
+        const auto key = std::make_pair(hinge->seed, glm::round(hinge->middle / (0.01 * size)));
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(key);
+        for (const double degrees : kBends) {
+          if (deadline.passed()) return out;
+          tried.push_back({p, direction, t, degrees, tryPleat(*hinge, degrees)});
+        }
+      }
+  }
+  // The best few refined: the bend and the hinge nudged, a step that helps kept, halved twice.
+  std::stable_sort(tried.begin(), tried.end(),
+                   [](const Tried& a, const Tried& b) { return a.after < b.after; });
+  if (tried.size() > kRefined) tried.resize(kRefined);
+  for (Tried& best : tried) {
+    if (!(best.after < before)) break;
+    double dt = 0.06, scale = 0.25;
+    for (int round = 0; round < 2; ++round, dt *= 0.5, scale *= 0.5)
+      for (const auto& [t, degrees] :
+           {std::pair{best.t - dt, best.degrees}, std::pair{best.t + dt, best.degrees},
+            std::pair{best.t, best.degrees * (1 - scale)},
+            std::pair{best.t, best.degrees * (1 + scale)}}) {
+        if (deadline.passed()) return out;
+        const std::optional<Hinge> hinge = hingeAt(best.far, best.direction, t);
+        if (!hinge) continue;
+        const double after = tryPleat(*hinge, degrees);
+        if (after < best.after) best = {best.far, best.direction, t, degrees, after};
+      }
+  }
+  return out;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,59 @@
+// Pleats toward a doubly curved target (issue 38, 2): a pair of reflection folds that turns the
+// end of the sheet beyond a line by a small angle about that line, keeping the end's own shape.
+//
+// Method: two reflections compose to a rotation about the line where their planes meet, by twice
+// the angle between them (the classical theorem of plane reflections, as in any text on
+// isometries; see Demaine & O'Rourke, "Geometric Folding Algorithms", 2007, on folding, and
+// on the pleated hypar Demaine, Demaine, Hart, Price & Tachi, "(Non)existence of Pleated Folds",
+// Graphs and Combinatorics 2011). A
+// paper artist bends a cylinder's ends down this way to approximate a saddle: the sheet's own
+// curvature (a swept parabola's) stays, and pleats across the other direction add the other,
+// opposite curvature that no developable sheet has. Here the first fold turns the end back over
+// the sheet (a flap rising at a small angle, 2 eps, from a plane through the hinge point tilted
+// by eps), the second turns the flap's far part forward again (a plane through the flap at the
+// pleat's width, the bisector of the flap's direction and the wanted one): the end leaves the
+// pleat turned by theta (< 2 eps, so it passes over the first crease) toward the target. The
+// first fold alone takes the sheet far from the target: a search of single folds, each of which
+// must bring the sheet closer, never finds it (fold_fit.hpp's known limit).
+//
+// Where: the sheet's vertices farthest from the target (SurfaceDistanceQuery), the hinge on the
+// way from the sheet's centre toward one, the end bent toward the target's point nearest it;
+// each pleat made on the real sheet (FoldSession: a sliver is refused as a designer's drag is),
+// scored with FoldFitter::approximateDistance, checked for self-intersection, and taken back.
+//
+// Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
+// would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each
+// a FoldSuggestion of two folds, best first, each bringing the sheet closer. Known limits: the
+// hinge is straight only where the sheet is ruled across it (a swept sheet across its rulings,
+// a flat one); each pleat shortens the sheet by twice its width (1% of the target's diagonal);
+// the angles are tried on a grid, not refined.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "engine/fit/deadline.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/geometry/fold_session.hpp"
+
+namespace curvefold {
+
+// The two planes of a pleat at `hinge` (a point of the sheet), turning the part beyond it along
+// the unit tangent `along` by `theta` radians toward `bendToward` (a unit vector across the
+// sheet, perpendicular to `along`), with the flap at 2 * `flapTilt` (> theta) and `width` wide.
+// Reflecting a point beyond the hinge in `first`, then in `second`, turns it about a line along the
+// hinge.
+struct PleatPlanes {
+  ReflectionPlane first, second;
+};
+PleatPlanes pleatPlanes(const glm::dvec3& hinge, const glm::dvec3& along,
+                        const glm::dvec3& bendToward, double theta, double flapTilt, double width);
+
+// Up to `count` pleats for the design `session` holds, best first (see above). The session is
+// left as it was. `step` varies which far points are tried.
+std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter& fitter,
+                                          std::size_t count, const Deadline& deadline,
+                                          std::uint64_t step = 0);
+
+}  // namespace curvefold

@@ -1,0 +1,125 @@
+// Pleats toward a doubly curved target (issue 38, 2: engine/fit/pleat_folds.hpp): two folds that
+// turn a curved sheet's end about a hinge across it, keeping the end's own curvature, which no
+// single reflection does.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/placed_start.hpp"
+#include "engine/fit/pleat_folds.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "sheet_fixtures.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// A parabolic trough (curved along x, ruled along y, 20 cm), and the same with the part beyond
+// y = 0.03 turned 12 degrees down about the line there: an isometric target only a pleat reaches
+// (a single reflection through a plane across the trough flips the end's curvature).
+Sheet trough() {
+  return sweptParabola(4.0, 0.0, -0.1, 0.1, 0.2, 32);
+}
+
+TriangleMesh troughWithEndTurned() {
+  Sheet sheet = trough();
+  const double hinge = 0.1 + 0.03, angle = 12.0 * kDegree;  // rulings run over y in [0, 0.2]
+  for (glm::dvec3& p : sheet.positions)
+    if (p.y > hinge) {
+      const double y = p.y - hinge, z = p.z;
+      p.y = hinge + y * std::cos(angle) + z * std::sin(angle);
+      p.z = -y * std::sin(angle) + z * std::cos(angle);
+    }
+  return meshOf(sheet);
+}
+
+FitSettings quickSettings() {
+  FitSettings settings;
+  settings.sheetSamples = 700;
+  settings.targetSamples = 700;
+  settings.denseTargetSamples = 8000;
+  settings.proposals = 160;
+  return settings;
+}
+
+TEST(PleatPlanes, TurnTheEndAboutTheHingeByTheBendOverTheFirstCrease) {
+  const glm::dvec3 hinge(0.0), along(1, 0, 0), down(0, 0, -1);
+  const double theta = 10.0 * kDegree, eps = 7.0 * kDegree, width = 0.01;
+  const PleatPlanes planes = pleatPlanes(hinge, along, down, theta, eps, width);
+  // A direction reflected in both planes (the vector part of each reflection).
+  auto twice = [&](const glm::dvec3& v) {
+    const glm::dvec3 once = v - 2.0 * glm::dot(v, planes.first.normal) * planes.first.normal;
+    return once - 2.0 * glm::dot(once, planes.second.normal) * planes.second.normal;
+  };
+  const glm::dvec3 turned = twice(along);
+  EXPECT_NEAR(turned.x, std::cos(theta), 1e-12);
+  EXPECT_NEAR(turned.y, 0.0, 1e-12);
+  EXPECT_NEAR(turned.z, -std::sin(theta), 1e-12);
+  EXPECT_NEAR(glm::length(twice({0, 1, 0}) - glm::dvec3(0, 1, 0)), 0.0, 1e-12);  // the hinge
+  // The end leaves the pleat above the first crease (it does not pass through the sheet there),
+  // and the flap rises over the sheet.
+  const glm::dvec3 end = planes.second.reflect(planes.first.reflect({0.05, 0.0, 0.0}));
+  const glm::dvec3 flap = planes.first.reflect({0.005, 0.0, 0.0});
+  EXPECT_GT(flap.z, 0.0);
+  const double atCrease = end.z + (0.0 - end.x) * (turned.z / turned.x);
+  EXPECT_GT(atCrease, 0.0);
+}
+
+TEST(PleatFolds, TurnATroughsEndTowardATargetTurnedThere) {
+  const FoldFitter fitter(troughWithEndTurned(), quickSettings());
+  FoldSession session(trough());
+  const double before = fitter.approximateDistance(session.fixed());
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 2, {});
+  EXPECT_EQ(session.foldCount(), 0u);  // left as it was
+  ASSERT_FALSE(pleats.empty());
+  const FoldSuggestion& best = pleats.front();
+  ASSERT_EQ(best.folds.size(), 2u);
+  EXPECT_EQ(best.folds[0].group, best.folds[1].group);
+  EXPECT_NE(best.folds[0].group, 0u);
+  EXPECT_LT(best.after, 0.5 * before) << before;
+  testing::expectInvariants(best.sheet, session.initial());
+  EXPECT_TRUE(findSelfIntersections(best.sheet).intersections.empty());
+  EXPECT_TRUE(identical(replayFolds(session.initial(), best.folds), best.sheet));
+}
+
+TEST(FoldFit, KeepsAPleatWhereNoSingleFoldTurnsACurvedEnd) {
+  const FoldFitter fitter(troughWithEndTurned(), quickSettings());
+  FoldSession session(trough());
+  FitOptions options;
+  options.maxFolds = 1;
+  options.distanceSamples = 4000;
+  options.seconds = std::numeric_limits<double>::infinity();
+  const FitResult result = fitFolds(session, fitter, options);
+  ASSERT_EQ(result.steps.size(), 2u) << result.stopReason;
+  EXPECT_EQ(session.foldCount(), 2u);  // one step: the pleat's two folds
+  EXPECT_LT(result.steps[1].chamfer, 0.5 * result.steps[0].chamfer);
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
+// A saddle z = 4 x^2 - 2 (y - 0.1)^2 from the trough z = 4 x^2 (the swept parabola nearest it):
+// pleats across the rulings, on either side, give the other curvature.
+TEST(FoldFit, PleatsBringATroughCloserToASaddleThanItsStart) {
+  TriangleMesh saddle = meshOf(trough());
+  for (glm::dvec3& p : saddle.positions) p.z -= 2.0 * (p.y - 0.1) * (p.y - 0.1);
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(trough());
+  FitOptions options;
+  options.maxFolds = 2;
+  options.distanceSamples = 4000;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 3000;  // no clock: the same under the sanitizers
+  const FitResult result = fitFolds(session, fitter, options);
+  ASSERT_GE(result.steps.size(), 2u) << result.stopReason;
+  EXPECT_LT(result.steps.back().chamfer, 0.7 * result.steps.front().chamfer)
+      << result.steps.front().chamfer << " -> " << result.steps.back().chamfer;
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
+}  // namespace
+}  // namespace curvefold
