@@ -181,6 +181,9 @@ std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamp
                         : (unit(random) - 0.5) * (160.0 / 180.0) * std::numbers::pi;
     shape.order = across ? 1 : kOrders[static_cast<std::size_t>(unit(random) * kOrders.size())];
     shape.turn = unit(random) * 2.0 * std::numbers::pi / shape.order;
+    // A plane across the axis anywhere over both: one past the sheet's end moves it whole along
+    // the axis (a disk placed at a bowl's centroid, lowered toward its bottom).
+    if (across) shape.height = lo + span * unit(random);
     rings.push_back(shape);
   }
   return rings;

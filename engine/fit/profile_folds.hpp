@@ -22,7 +22,8 @@
 // only one of them reaches): plane k of a ring of n passes through the point at height h and
 // distance rho from the axis at angle phi + 2 pi k / n, with normal cos(beta) e_k + sin(beta) a
 // (e_k radial, a the axis), and folds the part of the sheet on the side its normal points to;
-// beta = 90 degrees is the single plane across the axis. Heights where the sheet lies, rho up to
+// beta = 90 degrees is the single plane across the axis (drawn at any height over both: past the
+// sheet's end it moves the sheet whole along the axis). Heights where the sheet lies, rho up to
 // the sheet's radius there, beta, n (4 to 16) and phi drawn from the generator. suggestRings
 // scores many on sheet samples (previewRing), refines the best few by NLopt's Subplex over
 // (h, rho, beta, phi), and makes those on the sheet.
