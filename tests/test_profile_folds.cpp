@@ -145,6 +145,7 @@ TEST(RingFolds, BringADiskCloserToADishThanAnySingleFold) {
   FitSettings settings;
   settings.proposals = testing::kSanitized ? 24 : 48;
   settings.rings = testing::kSanitized ? 64 : 256;
+  settings.refineEvaluations = 30;  // the single folds' refinement: a few seconds in all
   FitSettings single = settings;
   single.rings = 0;
   const FoldFitter withRings(target, settings), singleFolds(target, single);
