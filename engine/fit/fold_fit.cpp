@@ -17,6 +17,7 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/pleat_folds.hpp"
+#include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -196,7 +197,8 @@ struct FoldFitter::Target {
   double denseRadius = 0.0;
   std::vector<SurfaceSample> queries;
   std::unique_ptr<KdTree> tree;
-  double robust = kInfinity;  // metres: where a distance stops counting in full
+  double robust = kInfinity;           // metres: where a distance stops counting in full
+  std::optional<RevolutionAxis> axis;  // a surface of revolution's (profile_folds.hpp)
 
   // What the search lowers, for sheet samples (points, normals, spaced 2 * radius): the mean
   // two-sided distance, each distance cut at `robust` and a tenth of it kept beyond, so a fold
@@ -251,6 +253,7 @@ FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
   t.queries = sampleSurface(t.mesh, settings.targetSamples, settings.seed + 1);
   t.tree = std::make_unique<KdTree>(3, t.dense, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   t.robust = settings.robustDistance * t.diagonal;
+  if (settings.rings > 0) t.axis = revolutionAxis(t.queries);
 }
 
 FoldFitter::~FoldFitter() = default;
@@ -355,6 +358,12 @@ double FoldFitter::approximateDistance(const Sheet& sheet) const {
   const double radius =
       0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
   return target_->score(points, normals, radius);
+}
+
+double FoldFitter::approximateDistance(const std::vector<glm::dvec3>& points,
+                                       const std::vector<glm::dvec3>& normals,
+                                       double radius) const {
+  return target_->score(PointCloud{points}, normals, radius);
 }
 
 namespace {
@@ -597,6 +606,12 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   refineFinalists(finalists, workers, evaluate, deadline, copy, settings_.refineEvaluations);
   std::vector<FoldSuggestion> suggestions =
       makeSuggestions(session, finalists, copy, *this, deadline);
+  // About a surface of revolution's axis, rings of folds (a symmetric design's images are rings
+  // of its own).
+  if (target.axis && !symmetric)
+    for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
+                                             settings_.rings, deadline, random))
+      suggestions.push_back(std::move(ring));
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
   return bestAndCrease(std::move(suggestions), count);

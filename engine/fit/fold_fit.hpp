@@ -78,6 +78,9 @@ struct FitSettings {
   std::size_t refineEvaluations = 90;       // per refined drag
   // Distances count in full up to this fraction of the target's diagonal, a tenth beyond.
   double robustDistance = 0.01;
+  // Rings of folds about a target of revolution's axis drawn per step (profile_folds.hpp); 0:
+  // none.
+  std::size_t rings = 256;
   bool allowSelfIntersection = false;
   // Read folds from the target's creases (proposals through crease planes, and the unfolding
   // fitFolds tries first); off: search alone.
@@ -111,6 +114,9 @@ class FoldFitter {
 
   // The approximate Chamfer distance of a folded form to the target (what the search lowers).
   double approximateDistance(const Sheet& sheet) const;
+  // The same for sheet samples given as points with unit normals, spaced about 2 * radius.
+  double approximateDistance(const std::vector<glm::dvec3>& points,
+                             const std::vector<glm::dvec3>& normals, double radius) const;
 
   // Up to `count` next folds for the design `session` holds (its symmetry, if any, makes each
   // fold's images), best first, each bringing it closer to the target; none when no fold found

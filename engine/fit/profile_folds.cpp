@@ -1,0 +1,374 @@
+#include "engine/fit/profile_folds.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Dense>
+#include <glm/geometric.hpp>
+#include <memory>
+#include <nlopt.hpp>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "engine/fit/unit_draw.hpp"
+#include "engine/geometry/self_intersection.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr int kBins = 24;
+// Sheet samples a ring is previewed on, rings refined per step, and evaluations each.
+constexpr std::size_t kPreviewSamples = 800;
+constexpr std::size_t kRefinedRings = 4;
+constexpr std::size_t kRingRefineEvaluations = 60;
+
+// A unit vector perpendicular to `a`.
+glm::dvec3 perpendicular(const glm::dvec3& a) {
+  const glm::dvec3 other = std::abs(a.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return glm::normalize(glm::cross(other, a));
+}
+
+// Height along the axis and distance from it.
+glm::dvec2 heightAndRadius(const glm::dvec3& p, const RevolutionAxis& axis) {
+  const glm::dvec3 d = p - axis.point;
+  const double t = glm::dot(d, axis.direction);
+  return {t, glm::length(d - t * axis.direction)};
+}
+
+// The root mean square deviation of `value` within bins of `key`, over the mean radius.
+double spreadWithin(const std::vector<glm::dvec2>& profile, bool byHeight, double meanRadius) {
+  double lo = 1e300, hi = -1e300;
+  for (const glm::dvec2& p : profile) {
+    const double key = byHeight ? p.x : p.y;
+    lo = std::min(lo, key);
+    hi = std::max(hi, key);
+  }
+  if (!(hi > lo)) return 0.0;  // every sample at one key: constant within its one bin? measured
+  std::array<double, kBins> sum{}, sumSquares{};
+  std::array<int, kBins> count{};
+  auto bin = [&](double key) {
+    return std::clamp(static_cast<int>((key - lo) / (hi - lo) * kBins), 0, kBins - 1);
+  };
+  for (const glm::dvec2& p : profile) {
+    const int b = bin(byHeight ? p.x : p.y);
+    const double value = byHeight ? p.y : p.x;
+    sum[b] += value;
+    sumSquares[b] += value * value;
+    ++count[b];
+  }
+  double squares = 0.0;
+  int counted = 0;
+  for (int b = 0; b < kBins; ++b) {
+    if (count[b] < 3) continue;
+    const double mean = sum[b] / count[b];
+    squares += std::max(0.0, sumSquares[b] - count[b] * mean * mean);
+    counted += count[b];
+  }
+  if (counted == 0) return 1e300;
+  return std::sqrt(squares / counted) / meanRadius;
+}
+
+}  // namespace
+
+std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& samples,
+                                             double maxSpread) {
+  if (samples.size() < 50) return {};
+  glm::dvec3 centroid(0.0);
+  for (const SurfaceSample& s : samples) centroid += s.position;
+  centroid /= static_cast<double>(samples.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - centroid;
+    const Eigen::Vector3d e(d.x, d.y, d.z);
+    covariance += e * e.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  std::optional<RevolutionAxis> best;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d v = solver.eigenvectors().col(i);
+    RevolutionAxis axis{centroid, glm::normalize(glm::dvec3(v.x(), v.y(), v.z())), 0.0};
+    std::vector<glm::dvec2> profile;
+    double meanRadius = 0.0;
+    for (const SurfaceSample& s : samples) {
+      profile.push_back(heightAndRadius(s.position, axis));
+      meanRadius += profile.back().y;
+    }
+    meanRadius /= static_cast<double>(samples.size());
+    if (!(meanRadius > 0.0)) continue;
+    // Radius by height (a tube, a vase), or height by radius (a disk, a shallow dish, whose
+    // radius runs over its whole range within a thin band of heights).
+    axis.spread =
+        std::min(spreadWithin(profile, true, meanRadius), spreadWithin(profile, false, meanRadius));
+    if (!best || axis.spread < best->spread) best = axis;
+  }
+  if (!best || !(best->spread <= maxSpread)) return {};
+  return best;
+}
+
+std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamples,
+                                     const std::vector<SurfaceSample>& targetSamples,
+                                     const RevolutionAxis& axis, std::size_t count,
+                                     std::mt19937_64& random) {
+  std::vector<RingShape> rings;
+  if (sheetSamples.empty() || targetSamples.empty() || count == 0) return rings;
+  std::vector<glm::dvec2> sheet, target;
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : sheetSamples) sheet.push_back(heightAndRadius(s.position, axis));
+  for (const SurfaceSample& s : targetSamples) target.push_back(heightAndRadius(s.position, axis));
+  for (const auto* profile : {&sheet, &target})
+    for (const glm::dvec2& p : *profile) {
+      lo = std::min(lo, p.x);
+      hi = std::max(hi, p.x);
+    }
+  // A flat sheet across the axis lies at one height: its bins still span a little.
+  const double span = std::max(hi - lo, 1e-9);
+  auto bin = [&](double t) {
+    return std::clamp(static_cast<int>((t - lo) / span * kBins), 0, kBins - 1);
+  };
+  std::array<double, kBins> sheetSum{}, sheetMax{}, targetSum{};
+  std::array<int, kBins> sheetCount{}, targetCount{};
+  for (const glm::dvec2& p : sheet) {
+    const int b = bin(p.x);
+    sheetSum[b] += p.y;
+    sheetMax[b] = std::max(sheetMax[b], p.y);
+    ++sheetCount[b];
+  }
+  for (const glm::dvec2& p : target) {
+    const int b = bin(p.x);
+    targetSum[b] += p.y;
+    ++targetCount[b];
+  }
+  // Each bin where the sheet lies, weighted by how far its radius is from the target's there;
+  // a target's bin the sheet does not reach adds its radius to the nearest bin the sheet does.
+  std::array<double, kBins> weight{};
+  double meanRadius = 0.0;
+  for (const glm::dvec2& p : sheet) meanRadius += p.y;
+  meanRadius /= static_cast<double>(sheet.size());
+  for (int b = 0; b < kBins; ++b) {
+    if (sheetCount[b] < 2) continue;
+    const double sheetRadius = sheetSum[b] / sheetCount[b];
+    weight[b] =
+        0.05 * meanRadius +
+        (targetCount[b] > 0 ? std::abs(targetSum[b] / targetCount[b] - sheetRadius) : sheetRadius);
+  }
+  for (int b = 0; b < kBins; ++b) {
+    if (sheetCount[b] >= 2 || targetCount[b] == 0) continue;
+    int nearest = -1;
+    for (int c = 0; c < kBins; ++c)
+      if (sheetCount[c] >= 2 && (nearest < 0 || std::abs(c - b) < std::abs(nearest - b)))
+        nearest = c;
+    if (nearest >= 0) weight[nearest] += targetSum[b] / targetCount[b];
+  }
+  std::array<double, kBins> cumulative{};
+  double total = 0.0;
+  for (int b = 0; b < kBins; ++b) cumulative[b] = total += weight[b];
+  if (!(total > 0.0)) return rings;
+
+  constexpr std::array<int, 6> kOrders{4, 6, 8, 10, 12, 16};
+  for (std::size_t r = 0; r < count; ++r) {
+    const double at = unit(random) * total;
+    const int b = static_cast<int>(std::min<std::ptrdiff_t>(
+        std::upper_bound(cumulative.begin(), cumulative.end(), at) - cumulative.begin(),
+        kBins - 1));
+    RingShape shape;
+    shape.height = lo + span * (b + unit(random)) / kBins;
+    shape.radius = sheetMax[b] * (0.3 + 0.75 * unit(random));
+    const bool across = unit(random) < 0.1;  // a single plane across the axis
+    shape.tilt = across ? (unit(random) < 0.5 ? 0.5 : -0.5) * std::numbers::pi
+                        : (unit(random) - 0.5) * (160.0 / 180.0) * std::numbers::pi;
+    shape.order = across ? 1 : kOrders[static_cast<std::size_t>(unit(random) * kOrders.size())];
+    shape.turn = unit(random) * 2.0 * std::numbers::pi / shape.order;
+    // A plane across the axis anywhere over both: one past the sheet's end moves it whole along
+    // the axis (a disk placed at a bowl's centroid, lowered toward its bottom).
+    if (across) shape.height = lo + span * unit(random);
+    rings.push_back(shape);
+  }
+  return rings;
+}
+
+Ring ringOf(const RingShape& shape, const RevolutionAxis& axis) {
+  const glm::dvec3 u = perpendicular(axis.direction), v = glm::cross(axis.direction, u);
+  const bool across = shape.order == 1;
+  Ring ring;
+  for (int k = 0; k < shape.order; ++k) {
+    const double angle = shape.turn + 2.0 * std::numbers::pi * k / shape.order;
+    const glm::dvec3 e = std::cos(angle) * u + std::sin(angle) * v;
+    const glm::dvec3 normal =
+        across ? (shape.tilt >= 0.0 ? 1.0 : -1.0) * axis.direction
+               : glm::normalize(std::cos(shape.tilt) * e + std::sin(shape.tilt) * axis.direction);
+    ring.planes.push_back(
+        {axis.point + shape.height * axis.direction + (across ? 0.0 : shape.radius) * e, normal});
+  }
+  return ring;
+}
+
+void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
+                 std::vector<glm::dvec3>& normals) {
+  for (const ReflectionPlane& plane : ring.planes)
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (plane.signedDistance(points[i]) > 0.0) {
+        points[i] = plane.reflect(points[i]);
+        normals[i] -= 2.0 * glm::dot(normals[i], plane.normal) * plane.normal;
+      }
+}
+
+std::size_t makeRing(FoldSession& session, const Ring& ring) {
+  session.cancel();
+  std::size_t made = 0;
+  for (const ReflectionPlane& plane : ring.planes) {
+    const Sheet& sheet = session.fixed();
+    std::size_t farthest = 0;
+    double most = -1e300;
+    for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
+      const double d = plane.signedDistance(sheet.positions[i]);
+      if (d > most) {
+        most = d;
+        farthest = i;
+      }
+    }
+    if (!(most > 2.0 * session.minimumDrag())) continue;  // the plane misses the sheet
+    const glm::dvec2 seed = sheet.development[farthest];  // a copy: the drag changes the sheets
+    const glm::dvec3 grabbed = session.beginDragAtDevelopment(seed);
+    session.updateDrag(plane.reflect(grabbed));
+    if (session.commit()) ++made;
+  }
+  return made;
+}
+
+std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldFitter& fitter,
+                                         const RevolutionAxis& axis,
+                                         const std::vector<SurfaceSample>& targetSamples,
+                                         std::size_t count, std::size_t proposals,
+                                         const Deadline& deadline, std::mt19937_64& random) {
+  if (count == 0 || proposals == 0 || deadline.givesUp()) return {};
+  const TriangleMesh mesh = meshOf(session.fixed());
+  const std::vector<SurfaceSample> sheetSamples = sampleSurface(mesh, kPreviewSamples, random());
+  if (sheetSamples.empty()) return {};
+  std::vector<glm::dvec3> points, normals;
+  for (const SurfaceSample& s : sheetSamples) {
+    points.push_back(s.position);
+    normals.push_back(s.normal);
+  }
+  const double spacing =
+      0.5 * std::sqrt(surfaceArea(mesh) / static_cast<double>(sheetSamples.size()));
+  auto preview = [&](const RingShape& shape) {
+    deadline.countEvaluation();
+    std::vector<glm::dvec3> p = points, n = normals;
+    previewRing(ringOf(shape, axis), p, n);
+    return fitter.approximateDistance(p, n, spacing);
+  };
+  std::vector<RingShape> shapes =
+      ringProposals(sheetSamples, targetSamples, axis, proposals, random);
+  std::vector<double> scores(shapes.size(), 1e300);
+  tbb::parallel_for(std::size_t(0), shapes.size(), [&](std::size_t r) {
+    if (!deadline.passed()) scores[r] = preview(shapes[r]);
+  });
+  if (deadline.givesUp()) return {};
+  std::vector<std::size_t> order(shapes.size());
+  for (std::size_t r = 0; r < order.size(); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return scores[a] < scores[b]; });
+  // The best few of different orders (one plane across the axis, which a preview cannot tell
+  // lays the sheet on itself, takes one place at most) refined by Subplex over (height, radius,
+  // tilt, turn), the order kept.
+  std::vector<RingShape> refined;
+  for (std::size_t r : order) {
+    if (refined.size() >= kRefinedRings) break;
+    if (std::none_of(refined.begin(), refined.end(),
+                     [&](const RingShape& kept) { return kept.order == shapes[r].order; }))
+      refined.push_back(shapes[r]);
+  }
+  const double size = glm::length(points.front() - axis.point) + spacing;
+  tbb::parallel_for(std::size_t(0), refined.size(), [&](std::size_t k) {
+    RingShape& best = refined[k];
+    double bestScore = preview(best);
+    const bool across = best.order == 1;
+    struct Objective {
+      RingShape* best;
+      double* bestScore;
+      const decltype(preview)* score;
+      const Deadline* deadline;
+      nlopt::opt* optimizer;
+      bool across;
+    };
+    nlopt::opt optimizer(nlopt::LN_SBPLX, across ? 1 : 4);
+    Objective objective{&best, &bestScore, &preview, &deadline, &optimizer, across};
+    optimizer.set_min_objective(
+        [](const std::vector<double>& x, std::vector<double>&, void* data) {
+          auto& o = *static_cast<Objective*>(data);
+          if (o.deadline->passed()) o.optimizer->force_stop();
+          RingShape shape = *o.best;
+          shape.height = x[0];
+          if (!o.across) {
+            shape.radius = x[1];
+            shape.tilt = x[2];
+            shape.turn = x[3];
+          }
+          const double score = (*o.score)(shape);
+          if (score < *o.bestScore) {
+            *o.bestScore = score;
+            *o.best = shape;
+          }
+          return std::isfinite(score) ? score : 1e30;
+        },
+        &objective);
+    std::vector<double> x{best.height}, step{0.02 * size};
+    if (!across) {
+      x.insert(x.end(), {best.radius, best.tilt, best.turn});
+      step.insert(step.end(), {0.05 * size, 0.1, 0.5 * std::numbers::pi / best.order});
+    }
+    optimizer.set_initial_step(step);
+    optimizer.set_maxeval(static_cast<int>(kRingRefineEvaluations));
+    double value = 0.0;
+    try {
+      optimizer.optimize(x, value);
+    } catch (const nlopt::forced_stop&) {
+    } catch (const nlopt::roundoff_limited&) {
+    }
+  });
+  if (deadline.givesUp()) return {};
+
+  // Each refined ring made on the sheet itself (a session of each thread's own), scored, checked
+  // for passing through itself, and taken back.
+  const std::vector<FoldRecord> base(
+      session.folds().begin(),
+      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+  const double before = fitter.approximateDistance(session.fixed());
+  const bool allowCrossing = fitter.settings().allowSelfIntersection;
+  const std::size_t crossingsBefore =
+      allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
+  std::vector<FoldSuggestion> made(refined.size());
+  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
+  tbb::parallel_for(std::size_t(0), refined.size(), [&](std::size_t r) {
+    if (deadline.passed()) return;
+    std::unique_ptr<FoldSession>& local = sessions.local();
+    if (!local) {
+      local = std::make_unique<FoldSession>(session.initial());
+      local->applyRecords(base);
+    }
+    if (makeRing(*local, ringOf(refined[r], axis)) > 0 &&
+        (allowCrossing ||
+         findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore)) {
+      made[r].folds.assign(
+          local->folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
+          local->folds().begin() + static_cast<std::ptrdiff_t>(local->foldCount()));
+      made[r].sheet = local->fixed();
+      made[r].before = before;
+      made[r].after = fitter.approximateDistance(made[r].sheet);
+    }
+    while (local->foldCount() > base.size()) local->undo();
+  });
+  if (deadline.givesUp()) return {};
+  std::vector<FoldSuggestion> out;
+  for (FoldSuggestion& ring : made)
+    if (!ring.folds.empty() && ring.after < before) out.push_back(std::move(ring));
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& a, const auto& b) { return a.after < b.after; });
+  if (out.size() > count) out.resize(count);
+  return out;
+}
+
+}  // namespace curvefold

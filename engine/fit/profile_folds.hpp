@@ -1,0 +1,110 @@
+// Rings of folds toward a surface of revolution (issue 38, 2: vases, bowls, lampshades), as a
+// paper artist shapes a cup or a lampshade from a tube or a disk: the same fold made at n
+// turns about the axis, so the sheet bends in or out all around it at once.
+//
+// A single reflection keeps a shape of revolution only through a plane across its axis (which
+// turns the part beyond back on itself: a rim turned over) or through the axis itself (no
+// change). Any other fold leaves one flap; approaching a vase's waist, a bowl's rim or a
+// lampshade's bulge needs the fold repeated around the axis: the axisymmetric curved origami of
+// Mitani ("A design method for 3D origami based on rotational sweep", CAD&A 2009, [Mit09] in
+// Mitani & Igarashi, whose planar curved folds reflection reconstructs). The ring is built about
+// the target's axis, wherever the sheet was placed on it (placed_start.hpp), as plain folds made
+// one after another (a symmetric design's images need the sheet's own frame, symmetry.hpp).
+//
+// revolutionAxis: the target's axis, among its principal axes through its centroid (PCA), the
+// one about which the distance of samples from the axis varies least at each height (its
+// samples binned by height; the spread is the root mean square deviation from each bin's mean
+// radius, over the mean radius). A target that is not a surface of revolution (spread above the
+// bound) has none.
+//
+// ringProposals: rings drawn where the sheet's radius profile r(h) departs from the target's (both
+// binned along the axis, the bins weighted by the gap, and by the radius of the one alone where
+// only one of them reaches): plane k of a ring of n passes through the point at height h and
+// distance rho from the axis at angle phi + 2 pi k / n, with normal cos(beta) e_k + sin(beta) a
+// (e_k radial, a the axis), and folds the part of the sheet on the side its normal points to;
+// beta = 90 degrees is the single plane across the axis (drawn at any height over both: past the
+// sheet's end it moves the sheet whole along the axis). Heights where the sheet lies, rho up to
+// the sheet's radius there, beta, n (4 to 16) and phi drawn from the generator. suggestRings
+// scores many on sheet samples (previewRing), refines the best few by NLopt's Subplex over
+// (h, rho, beta, phi), and makes those on the sheet.
+//
+// makeRing: a ring made on a session, each plane's fold seeded at the sheet vertex farthest on
+// its side (the fold takes the part connected to it); the folds a session refuses (a sliver, a
+// plane missing the sheet as it lies by then) are left out.
+//
+// Known limits: the axis passes through the target's centroid (a half vase's does not); the
+// rings are plain folds, not a symmetric design's images, so a design saves them one by one and
+// undo takes them one at a time; a ring whose folds reach each other's flaps folds those flaps
+// again (the search scores what results and keeps it only when closer and not self-crossing).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "engine/fit/deadline.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/fold_session.hpp"
+#include "engine/geometry/reflection.hpp"
+#include "engine/geometry/sheet.hpp"
+
+namespace curvefold {
+
+struct RevolutionAxis {
+  glm::dvec3 point{0.0};                // on the axis (the samples' centroid)
+  glm::dvec3 direction{0.0, 1.0, 0.0};  // unit
+  double spread = 0.0;                  // radius deviation within heights, of the mean radius
+};
+
+// The axis of a target given by area-uniform samples (at least a few hundred), when its radius
+// varies by at most `maxSpread` (of the mean radius) at each height; none otherwise.
+std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& samples,
+                                             double maxSpread = 0.1);
+
+// A ring: its planes in folding order; each folds the part of the sheet its normal points to.
+struct Ring {
+  std::vector<ReflectionPlane> planes;
+};
+
+// A ring's shape about an axis (see above): height h along it, distance rho from it, tilt beta
+// (radians; +-pi/2: one plane across the axis), turn phi of the first plane, n planes.
+struct RingShape {
+  double height = 0.0, radius = 0.0, tilt = 0.0, turn = 0.0;
+  int order = 1;
+};
+
+Ring ringOf(const RingShape& shape, const RevolutionAxis& axis);
+
+// `count` ring shapes for the sheet `sheetSamples` describes toward the target `targetSamples`
+// describes, both area-uniform, about `axis`.
+std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamples,
+                                     const std::vector<SurfaceSample>& targetSamples,
+                                     const RevolutionAxis& axis, std::size_t count,
+                                     std::mt19937_64& random);
+
+// Sheet samples (points and unit normals) as a ring leaves them, approximately: each point on
+// the side a plane's normal points to reflected, plane after plane (which parts connect is not
+// asked: what makeRing does where each plane's side is one part). Cheap enough to refine a ring
+// on; the search scores the rings it keeps on the sheet itself.
+void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
+                 std::vector<glm::dvec3>& normals);
+
+// The ring's folds made on `session` (committed); returns how many were made. The session's
+// drag in progress, if any, is cancelled first.
+std::size_t makeRing(FoldSession& session, const Ring& ring);
+
+// Up to `count` rings of `proposals` drawn (ringProposals, toward the fitter's target whose
+// samples are `targetSamples`) that bring the session's design closer (the fitter's distance)
+// and pass nothing through itself (unless the fitter allows it), best first. The session is not
+// changed; rings are scored on sessions of their own, on all cores.
+std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldFitter& fitter,
+                                         const RevolutionAxis& axis,
+                                         const std::vector<SurfaceSample>& targetSamples,
+                                         std::size_t count, std::size_t proposals,
+                                         const Deadline& deadline, std::mt19937_64& random);
+
+}  // namespace curvefold

@@ -1,0 +1,165 @@
+// Rings of folds toward surfaces of revolution (issue 38, 2; engine/fit/profile_folds.hpp).
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/placed_start.hpp"
+#include "engine/fit/profile_folds.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/validate.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "tests/sanitizer_support.hpp"
+
+namespace curvefold {
+namespace {
+
+// A surface of revolution about z: radius(h) for h over [low, high], rings of `around`.
+template <typename Radius>
+TriangleMesh revolved(Radius radius, double low, double high, int around, int along) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double h = low + (high - low) * j / along, a = 2.0 * std::numbers::pi * i / around;
+      mesh.positions.emplace_back(radius(h) * std::cos(a), radius(h) * std::sin(a), h);
+    }
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto at = [&](int ii, int jj) {
+        return static_cast<std::uint32_t>(jj * around + (ii % around));
+      };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// A surface of revolution about z given as height(r) for r over [inner, outer].
+template <typename Height>
+TriangleMesh revolvedByRadius(Height height, double inner, double outer, int around, int rings) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double r = inner + (outer - inner) * j / rings, a = 2.0 * std::numbers::pi * i / around;
+      mesh.positions.emplace_back(r * std::cos(a), r * std::sin(a), height(r));
+    }
+  for (int j = 0; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto at = [&](int ii, int jj) {
+        return static_cast<std::uint32_t>(jj * around + (ii % around));
+      };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// Turned by `degrees` about `axis` (Rodrigues).
+glm::dvec3 turned(const glm::dvec3& p, glm::dvec3 axis, double degrees) {
+  axis = glm::normalize(axis);
+  const double a = degrees * std::numbers::pi / 180.0;
+  return p * std::cos(a) + glm::cross(axis, p) * std::sin(a) +
+         axis * glm::dot(axis, p) * (1.0 - std::cos(a));
+}
+
+TEST(RevolutionAxis, IsFoundOnATiltedVaseAndNotOnASaddle) {
+  TriangleMesh vase =
+      revolved([](double h) { return 0.05 + 0.02 * std::sin(20.0 * h); }, -0.1, 0.1, 48, 30);
+  const glm::dvec3 tilt(1.0, 0.4, 0.0), shift(0.03, -0.02, 0.01);
+  for (glm::dvec3& p : vase.positions) p = turned(p, tilt, 50.0) + shift;
+  const std::optional<RevolutionAxis> axis = revolutionAxis(sampleSurface(vase, 2000, 3));
+  ASSERT_TRUE(axis);
+  const glm::dvec3 expected = turned({0, 0, 1}, tilt, 50.0);
+  EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
+  // Through the vase's axis (its centroid lies on it).
+  const glm::dvec3 off = axis->point - shift;
+  EXPECT_LT(glm::length(off - glm::dot(off, expected) * expected), 0.002);
+
+  // A saddle z = xy / 0.2 over a square of 20 cm turns onto itself only by half turns.
+  TriangleMesh saddle;
+  const int cells = 30;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = 0.2 * (double(i) / cells - 0.5), y = 0.2 * (double(j) / cells - 0.5);
+      saddle.positions.emplace_back(x, y, x * y / 0.2);
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * (cells + 1) + ii); };
+      saddle.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      saddle.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  EXPECT_FALSE(revolutionAxis(sampleSurface(saddle, 2000, 3)));
+}
+
+// Four planes tilted 30 degrees from the axis, each cutting a sector of the top rim off a
+// cylinder along y (20 cm tall, 5 cm radius): four flaps turned in.
+Ring fourFlapRim() {
+  Ring ring;
+  const glm::dvec3 up(0, 1, 0);  // the catalogue cylinder's axis
+  const double beta = 30.0 * std::numbers::pi / 180;
+  for (int k = 0; k < 4; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 4 + 0.3;
+    const glm::dvec3 e(std::cos(a), 0.0, std::sin(a));
+    ring.planes.push_back(
+        {0.1 * up + 0.036 * e, glm::normalize(std::cos(beta) * e + std::sin(beta) * up)});
+  }
+  return ring;
+}
+
+Sheet tubeSheet() {
+  return makeSurface("cylinder", {{"radius", 0.05}, {"height", 0.2}});
+}
+
+TEST(RingFolds, ARingIsMadeAllAroundAndKeepsTheSheetValid) {
+  FoldSession session(tubeSheet());
+  EXPECT_EQ(makeRing(session, fourFlapRim()), 4u);
+  EXPECT_EQ(session.foldCount(), 4u);
+  validate(session.fixed());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+  // Every flap was turned in: rim vertices lie inside the cylinder in each quarter.
+  std::vector<int> inside(4, 0);
+  for (const glm::dvec3& p : session.fixed().positions)
+    if (p.y > 0.08 && std::hypot(p.x, p.z) < 0.045) {
+      const double a = std::atan2(p.z, p.x) - 0.3 + 4.0 * std::numbers::pi + std::numbers::pi / 4;
+      ++inside[static_cast<int>(a / (std::numbers::pi / 2)) % 4];
+    }
+  for (int k = 0; k < 4; ++k) EXPECT_GT(inside[k], 0) << "flap " << k;
+}
+
+TEST(RingFolds, BringADiskCloserToADishThanAnySingleFold) {
+  // A dish about z: a flat bottom of 6 cm radius rising to a rim 2.5 cm high, 14 cm out.
+  const TriangleMesh target = revolvedByRadius(
+      [](double r) { return r < 0.06 ? 0.0 : 0.025 * std::pow((r - 0.06) / 0.08, 2.0); }, 0.005,
+      0.14, 48, 16);
+  // From a disk of its area in its principal plane (the start fit places).
+  const std::vector<PlacedStart> disks =
+      placedStarts(sampleSurface(target, 1500, 2), surfaceArea(target), "disk");
+  ASSERT_EQ(disks.size(), 1u);
+  FitSettings settings;
+  settings.proposals = testing::kSanitized ? 24 : 48;
+  settings.rings = testing::kSanitized ? 64 : 256;
+  settings.refineEvaluations = 30;  // the single folds' refinement: a few seconds in all
+  FitSettings single = settings;
+  single.rings = 0;
+  const FoldFitter withRings(target, settings), singleFolds(target, single);
+  FoldSession session(disks.front().sheet);
+  const double before = withRings.approximateDistance(session.fixed());
+  const std::vector<FoldSuggestion> one = singleFolds.suggest(session, 1);
+  const std::vector<FoldSuggestion> ring = withRings.suggest(session, 1);
+  ASSERT_FALSE(ring.empty());
+  EXPECT_GT(ring.front().folds.size(), 1u);  // a ring, not one fold
+  EXPECT_LT(ring.front().after, 0.8 * before);
+  if (!one.empty()) EXPECT_LT(ring.front().after, one.front().after);
+  validate(ring.front().sheet);
+  EXPECT_EQ(session.foldCount(), 0u);  // the session is left as it was
+}
+
+}  // namespace
+}  // namespace curvefold
