@@ -18,6 +18,7 @@
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -199,6 +200,7 @@ struct FoldFitter::Target {
   std::unique_ptr<KdTree> tree;
   double robust = kInfinity;           // metres: where a distance stops counting in full
   std::optional<RevolutionAxis> axis;  // a surface of revolution's (profile_folds.hpp)
+  bool smooth = false;                 // isSmoothOrScanned (start_surface.hpp)
 
   // What the search lowers, for sheet samples (points, normals, spaced 2 * radius): the mean
   // two-sided distance, each distance cut at `robust` and a tenth of it kept beyond, so a fold
@@ -253,13 +255,19 @@ FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
   t.queries = sampleSurface(t.mesh, settings.targetSamples, settings.seed + 1);
   t.tree = std::make_unique<KdTree>(3, t.dense, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   t.robust = settings.robustDistance * t.diagonal;
-  if (settings.rings > 0) t.axis = revolutionAxis(t.queries);
+  // Rings and pleats are for shapes reflections do not reach; a folded tube is no vase.
+  t.smooth = isSmoothOrScanned(t.mesh);
+  if (settings.rings > 0 && t.smooth) t.axis = revolutionAxis(t.queries);
 }
 
 FoldFitter::~FoldFitter() = default;
 
 const TriangleMesh& FoldFitter::target() const {
   return target_->mesh;
+}
+
+bool FoldFitter::smoothTarget() const {
+  return target_->smooth;
 }
 
 double FoldFitter::targetDiagonal() const {
@@ -737,6 +745,7 @@ class FitRun {
         sharpEdgeThreshold(meshOf(session_.initial())),
         std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
         deadline);
+    creasesRead_ = !plan.folds.empty();
     if (plan.cutShort) {
       noteCut(deadline);
       return false;
@@ -893,6 +902,7 @@ class FitRun {
     inner.minimumGain = options_.minimumGain;
     inner.distanceSamples = options_.distanceSamples;
     inner.cancelled = options_.cancelled;
+    inner.pleats = 0;  // toward a sheet unfolded from reflections: single folds make it
     // Half of what is left of each budget: the clock's (less the reserve for measuring at the
     // end) and the evaluations', so a fit with a count repeats bit for bit.
     const Deadline deadline = searchDeadline(groupsRead + 1);
@@ -953,9 +963,11 @@ class FitRun {
         std::vector<FoldSuggestion> nexts =
             fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
         // Pleats (pleat_folds.hpp): two folds as one step, the first of which alone no search
-        // of single folds keeps.
-        for (FoldSuggestion& pleat :
-             suggestPleats(*branch, fitter_, options_.pleats, deadline, 16 * (depth + 1) + k))
+        // of single folds keeps. Only toward a target whose creases were not read (a smooth
+        // shape): a target folded by reflections is made by single folds, and pleats cost time.
+        for (FoldSuggestion& pleat : suggestPleats(
+                 *branch, fitter_, fitter_.smoothTarget() && !creasesRead_ ? options_.pleats : 0,
+                 deadline, 16 * (depth + 1) + k))
           nexts.push_back(std::move(pleat));
         for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
@@ -1069,6 +1081,7 @@ class FitRun {
   }
 
   const bool readCreases_;
+  bool creasesRead_ = false;  // the unfolding named folds: the target was folded by reflections
   FoldSession& session_;
   const FoldFitter& fitter_;
   const FitOptions& options_;

@@ -107,6 +107,9 @@ class FoldFitter {
 
   const TriangleMesh& target() const;
   double targetDiagonal() const;
+  // Whether the target is smooth or a scan (isSmoothOrScanned): the search then adds rings and
+  // pleats to its single folds.
+  bool smoothTarget() const;
   const FitSettings& settings() const { return settings_; }
 
   // checkTargetAgainst with this target.
@@ -170,7 +173,8 @@ struct FitOptions {
   std::size_t beamWidth = 3;    // fold sequences kept at each depth, the best
   std::size_t creaseWidth = 3;  // and this many more whose last fold is through a crease plane
   std::size_t branching = 3;    // next folds tried from each (and as many through crease planes)
-  std::size_t pleats = 2;       // and this many pleats (pleat_folds.hpp: two folds as one step)
+  std::size_t pleats = 2;       // and this many pleats (pleat_folds.hpp: two folds as one step),
+                                // toward a smooth target whose creases named no fold
   // After the start, then after each fold kept, with the session holding it.
   std::function<void(const FitProgress&)> progress;
   // While searching, after the unfolding and after each depth of the beam: folds, the best

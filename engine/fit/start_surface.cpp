@@ -129,10 +129,9 @@ double sharpShare(const TriangleMesh& target, double degrees) {
   return all > 0.0 ? sharp / all : 0.0;
 }
 
-// Whether sheets moved onto the target may start it: a smooth target (no plane of edges bent
-// more than a gridded smooth shape bends), or a noisy one (a scan: sharp edges everywhere, not
-// along the few curves a fold makes). A target folded from the catalogue's sheet is neither.
-bool mayPlace(const TriangleMesh& target) {
+}  // namespace
+
+bool isSmoothOrScanned(const TriangleMesh& target) {
   try {
     if (!creasedFor(target, makeSurface("square"), kSmoothBendDegrees)) return true;
   } catch (const SurfaceError&) {
@@ -140,8 +139,6 @@ bool mayPlace(const TriangleMesh& target) {
   }
   return sharpShare(target, kSmoothBendDegrees) > kNoisySharpShare;
 }
-
-}  // namespace
 
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   StartChoice best;
@@ -171,9 +168,9 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     if (!any || candidate.chamfer < best.chamfer) best = candidate;
     any = true;
   }
-  // Sheets moved onto the target: only for a smooth or noisy one (mayPlace; a creased target
-  // was folded from the catalogue's sheet where it lies).
-  const bool smooth = mayPlace(target);
+  // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
+  // target was folded from the catalogue's sheet where it lies).
+  const bool smooth = isSmoothOrScanned(target);
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest;
   double nearestChamfer = 0.0, nearestScore = 0.0;

@@ -49,6 +49,12 @@ struct StartChoice {
 // when the named kind cannot be sized to the target.
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "");
 
+// Whether the target is a shape no reflection design reaches exactly: smooth (no plane of edges
+// bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
+// the few curves a fold makes). A target folded from a catalogue sheet is neither. Such a target
+// gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp).
+bool isSmoothOrScanned(const TriangleMesh& target);
+
 // The target's rotational symmetry among the sheet's ("rotational:12:y"), or "" for none.
 std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial);
 
