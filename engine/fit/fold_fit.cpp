@@ -776,7 +776,7 @@ class FitRun {
         if (deadline.passed()) return false;
         motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
                                        kWholeSheetTolerance * fitter_.targetDiagonal(),
-                                       kMostRegistrations);
+                                       kMostRegistrations, deadline);
         lastAt.assign(motions.size(), std::nullopt);
       }
       // Each count tried on the sheet for every motion, then on the sheet folded by the folds read

@@ -169,7 +169,8 @@ double highest(const glm::dvec3& n, const std::vector<glm::dvec3>& points) {
 }  // namespace
 
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
-                                              double tolerance, std::size_t most) {
+                                              double tolerance, std::size_t most,
+                                              const Deadline& deadline) {
   if (sheet.triangles.empty() || moved.triangles.empty() || most == 0) return {};
   const SurfaceDistanceQuery movedSurface(moved, "target");
   const double scale = boundingDiagonal(sheet);
@@ -223,7 +224,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   const std::size_t kFirst = 4, kMostRefined = 64;
   const double coarseEnough = 3.0 * starts.front().residual + 2e-3 * scale;
   for (std::size_t k = 0, refined = 0; k < starts.size() && refined < kMostRefined; ++k) {
-    if (found.size() >= most) break;
+    if (found.size() >= most || (k > 0 && deadline.passed())) break;
     if (k >= kFirst && starts[k].residual > coarseEnough) break;
     const bool begunNear = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
       return f.mirrored == starts[k].mirrored && near(f.rotation, starts[k].rotation, 0.15);

@@ -32,6 +32,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/geometry/reflection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
@@ -51,8 +52,10 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
 
 // Every distinct motion taking `sheet` onto `moved` within `tolerance` as above, at most `most`,
 // the best start's first.
+// Stops at `deadline` with the ways found by then.
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
-                                              double tolerance, std::size_t most);
+                                              double tolerance, std::size_t most,
+                                              const Deadline& deadline = {});
 
 // Planes, in folding order, whose reflections make `motion` and each miss the sheet (`points`:
 // its vertices) where the earlier ones left it. Empty for the identity.
