@@ -22,6 +22,14 @@ bucket; a fold kept only when it moves part of the sheet and the design still pa
               (flaps laid over the sheet: folds of 150-180 degrees).
   symmetric   a design with one of the surface's symmetries (drawn from `surfaces()`), any
               vertex grabbed, dragged 5-30%; a fold counts once with its images.
+  outer-third issue 38's own: default parameters; a vertex in the outer third of the sheet as it
+              lies (its distance from the bounding box's centre at least 2/3 of the farthest's)
+              dropped 10-35% of the diagonal away in a uniform 3D direction.
+  cuts        default parameters; after the first fold (as outer-third), each fold's plane is put
+              through a point of an earlier crease (a uniform normal) and any vertex 5-50% of the
+              diagonal from it grabbed and dropped at its mirror image: folds that cut creases.
+  short-long  default parameters; any vertex; each drag either short (3-8% of the diagonal) or
+              long (40-60%), evenly.
 Each target is written as `export --obj` writes it, less its `vt` lines (the development), with a
 line of manifest.jsonl naming its surface, parameters, symmetry and fold count.
 """
@@ -36,7 +44,7 @@ import sys
 import time
 
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
-RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric"]
+RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric", "outer-third", "cuts", "short-long"]
 
 
 def diagonal(vertices):
@@ -115,7 +123,35 @@ def make_one(cf, recipe, surface, folds, rng):
     while made < folds and tries < 40 * folds:
         tries += 1
         vertices = design.vertices.tolist()
-        if recipe == "onto-sheet":
+        if recipe == "outer-third" or (recipe == "cuts" and made == 0):
+            lo_box = [min(v[i] for v in vertices) for i in range(3)]
+            hi_box = [max(v[i] for v in vertices) for i in range(3)]
+            centre = [(lo_box[i] + hi_box[i]) / 2 for i in range(3)]
+            far = max(math.dist(v, centre) for v in vertices)
+            outer = [v for v in vertices if math.dist(v, centre) >= 2.0 / 3.0 * far]
+            grab = rng.choice(outer)
+            direction = unit_vector(rng)
+            length = rng.uniform(0.10, 0.35) * diag
+            drop = [grab[i] + length * direction[i] for i in range(3)]
+        elif recipe == "cuts":
+            edges = design.creases()["edges"].tolist()
+            if not edges:
+                return None
+            a, b = rng.choice(edges)
+            t = rng.random()
+            on_crease = [vertices[a][i] + t * (vertices[b][i] - vertices[a][i]) for i in range(3)]
+            normal = unit_vector(rng)
+            grab = vertices[rng.randrange(len(vertices))]
+            side = sum((grab[i] - on_crease[i]) * normal[i] for i in range(3))
+            drop = [grab[i] - 2.0 * side * normal[i] for i in range(3)]
+            if not 0.05 * diag <= math.dist(grab, drop) <= 0.5 * diag:
+                continue
+        elif recipe == "short-long":
+            grab = vertices[rng.randrange(len(vertices))]
+            direction = unit_vector(rng)
+            length = (rng.uniform(0.03, 0.08) if rng.random() < 0.5 else rng.uniform(0.40, 0.60)) * diag
+            drop = [grab[i] + length * direction[i] for i in range(3)]
+        elif recipe == "onto-sheet":
             rim = boundary_vertices(design.triangles.tolist())
             if not rim:
                 return None

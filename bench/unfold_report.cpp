@@ -3,6 +3,7 @@
 // which fold each names, and what the unfolding (target_unfolding.hpp) read.
 //
 //   build/bench/unfold_report TARGET.obj DESIGN.curvefold.json
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -82,6 +83,13 @@ int run(int argc, char** argv) {
     if (motion)
       std::printf(", %zu whole-sheet folds",
                   wholeSheetReflections(*motion, initial.positions).size());
+    // Every way the sheet lies on the copy (its symmetries), and the folds each takes.
+    const auto started = std::chrono::steady_clock::now();
+    const std::vector<RigidMotion> all = registerSheetOntoAll(sheet, unfolded, 1e-4 * size, 24);
+    std::printf("\n  %zu ways (%.2f s), whole-sheet folds each (first):", all.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+    for (const RigidMotion& m : all)
+      std::printf(" %zu", wholeSheetReflections(m, initial.positions).size());
     std::printf("\n");
   }
   return 0;

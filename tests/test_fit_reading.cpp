@@ -131,6 +131,43 @@ TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
 }
 
+// A symmetric sheet (a star) lies on a moved copy of itself several ways, one its symmetry times
+// another: registered any way, the fold that mirrored it whole took up to five whole-sheet folds
+// (the star's turn as well as the mirror) and no longer fitted in the folds allowed. Of every way,
+// the one with the fewest folds: a tip folded, then the star mirrored whole, is two folds again.
+TEST(FitReading, ASymmetricSheetMirroredWholeTakesOneFold) {
+  const Sheet initial = makeSurface("star", {{"resolution", 12}});
+  FoldSession folding(initial);
+  glm::dvec3 tip = initial.positions.front();
+  for (const glm::dvec3& p : initial.positions)
+    if (p.x > tip.x) tip = p;
+  folding.beginDragNear(tip);
+  folding.updateDrag(0.75 * tip + glm::dvec3(0.0, 0.0, 0.3 * tip.x));  // a tip folded up
+  ASSERT_TRUE(folding.commit());
+  const glm::dvec3 along = glm::normalize(glm::dvec3(-0.3, 0.8, 0.5));
+  const Sheet before = folding.fixed();
+  glm::dvec3 farthest = before.positions.front();
+  for (const glm::dvec3& p : before.positions)
+    if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
+  folding.beginDragNear(farthest);
+  folding.updateDrag(farthest + 0.1 * along);  // the plane past the sheet: all of it mirrored
+  ASSERT_TRUE(folding.commit());
+  for (std::size_t v = 0; v < before.vertexCount(); ++v)
+    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  const TriangleMesh target = meshOf(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 500;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_EQ(session.foldCount(), 2u);
+}
+
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.
 TriangleMesh tube(double radius, double height, int around, int along) {
   TriangleMesh mesh;

@@ -48,6 +48,8 @@ constexpr double kUnfoldedCloseEnough = 1e-3;
 constexpr double kSmoothLeft = 0.01;
 // How close (of the diagonal) the sheet must lie on that copy, both ways, once moved onto it.
 constexpr double kWholeSheetTolerance = 1e-4;
+// At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
+constexpr std::size_t kMostRegistrations = 24;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -778,30 +780,63 @@ class FitRun {
   // sheet (whole_sheet_folds.hpp), then the unfolding's folds: true when that reaches the target.
   bool foldWholeSheetFirst(const TargetUnfolding& plan, const TriangleMesh& unfolded,
                            const Deadline& deadline) {
-    const std::optional<RigidMotion> motion = registerSheetOnto(
-        meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal());
-    if (!motion || deadline.passed()) return false;
+    // Every way the sheet lies on the copy (a symmetric sheet's symmetries): each its own motion
+    // and its own count of whole-sheet folds. The first way found first, and every way (dearer:
+    // each registered) only where that one takes more folds than are left.
+    std::vector<RigidMotion> motions = registerSheetOntoAll(
+        meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal(), 1);
+    if (motions.empty()) return false;
     // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
-    // time may cut it at the other.
-    const RigidMotion back{glm::inverse(motion->linear),
-                           -(glm::inverse(motion->linear) * motion->offset)};
-    TargetUnfolding moved = plan;
-    for (glm::dvec3& p : moved.unfolded) p = back(p);
-    for (UnfoldedFold& fold : moved.folds)
-      fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
-    const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
-    const FoldSequence readFirst =
-        replay(moved, *lastBranch, session_.initial(), deadline, options_.maxFolds);
-    const std::vector<ReflectionPlane> first =
-        wholeSheetReflections(*motion, session_.initial().positions);
-    const std::vector<ReflectionPlane> last =
-        readFirst.groups.size() == plan.folds.size()
-            ? wholeSheetReflections(*motion, lastBranch->fixed().positions)
-            : std::vector<ReflectionPlane>{};
-    const bool atEnd = !last.empty() && (first.empty() || last.size() < first.size());
-    const std::vector<ReflectionPlane>& planes = atEnd ? last : first;
-    if (planes.empty() || planes.size() + plan.folds.size() > options_.maxFolds) return false;
+    // time may cut it at the other; of every motion, the fewest.
+    // Fewest planes first, over every motion: one plane is cheap to try, three a search.
+    bool atEnd = false;
+    std::vector<ReflectionPlane> planes;
+    TargetUnfolding moved;
+    std::vector<std::optional<std::vector<glm::dvec3>>> lastAt(motions.size());
+    const std::size_t most = std::min<std::size_t>(
+        5, options_.maxFolds > plan.folds.size() ? options_.maxFolds - plan.folds.size() : 0);
+    for (int pass = 0; pass < 2 && planes.empty(); ++pass) {
+      if (pass == 1) {
+        if (deadline.passed()) return false;
+        motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
+                                       kWholeSheetTolerance * fitter_.targetDiagonal(),
+                                       kMostRegistrations, deadline);
+        lastAt.assign(motions.size(), std::nullopt);
+      }
+      // Each count tried on the sheet for every motion, then on the sheet folded by the folds read
+      // (a replay, dearer) for every motion.
+      for (std::size_t count = 1; count <= most && planes.empty(); ++count)
+        for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
+          if (deadline.passed()) return false;
+          const bool last = k >= motions.size();
+          const RigidMotion& motion = motions[k % motions.size()];
+          const RigidMotion back{glm::inverse(motion.linear),
+                                 -(glm::inverse(motion.linear) * motion.offset)};
+          TargetUnfolding movedBack = plan;
+          for (glm::dvec3& p : movedBack.unfolded) p = back(p);
+          for (UnfoldedFold& fold : movedBack.folds)
+            fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
+          std::optional<std::vector<glm::dvec3>>& folded = lastAt[k % motions.size()];
+          if (last && !folded) {  // the sheet folded by the folds read, once per motion
+            const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
+            const FoldSequence readFirst =
+                replay(movedBack, *lastBranch, session_.initial(), deadline, options_.maxFolds);
+            folded = readFirst.groups.size() == plan.folds.size() ? lastBranch->fixed().positions
+                                                                  : std::vector<glm::dvec3>{};
+          }
+          if (last && folded->empty()) continue;
+          planes =
+              wholeSheetReflections(motion, last ? *folded : session_.initial().positions, count);
+          if (!planes.empty()) {
+            atEnd = last;
+            moved = std::move(movedBack);
+          }
+        }
+    }
+    if (planes.empty() || planes.size() + plan.folds.size() > options_.maxFolds ||
+        deadline.passed())
+      return false;
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence sequence;
     if (atEnd) {

@@ -85,12 +85,12 @@ double meanDistance(const Pose& pose, const std::vector<Eigen::Vector3d>& points
 
 // Point-to-point ICP against the exact closest points, Umeyama's closed form each step.
 Pose refine(Pose pose, const std::vector<Eigen::Vector3d>& points,
-            const SurfaceDistanceQuery& moved, double scale) {
+            const SurfaceDistanceQuery& moved, double scale, int iterations = 200) {
   Eigen::Matrix3Xd source(3, points.size()), target(3, points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     source.col(Eigen::Index(i)) = pose.mirrored ? Eigen::Vector3d(kMirror * points[i]) : points[i];
   double last = 1e300;
-  for (int iteration = 0; iteration < 200; ++iteration) {
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     double sum = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Eigen::Vector3d at = pose.rotation * source.col(Eigen::Index(i)) + pose.offset;
@@ -99,7 +99,8 @@ Pose refine(Pose pose, const std::vector<Eigen::Vector3d>& points,
       sum += (q - at).norm();
     }
     pose.residual = sum / double(std::max<std::size_t>(1, points.size()));
-    if (pose.residual < 1e-12 * scale || !(pose.residual < last - 1e-14 * scale)) break;
+    // Far below any tolerance a caller checks (1e-4 of the diagonal): more is time only.
+    if (pose.residual < 1e-8 * scale || !(pose.residual < last - 1e-14 * scale)) break;
     last = pose.residual;
     const Eigen::Matrix4d m = Eigen::umeyama(source, target, false);
     pose.rotation = m.topLeftCorner<3, 3>();
@@ -167,9 +168,10 @@ double highest(const glm::dvec3& n, const std::vector<glm::dvec3>& points) {
 
 }  // namespace
 
-std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,
-                                             double tolerance) {
-  if (sheet.triangles.empty() || moved.triangles.empty()) return std::nullopt;
+std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
+                                              double tolerance, std::size_t most,
+                                              const Deadline& deadline) {
+  if (sheet.triangles.empty() || moved.triangles.empty() || most == 0) return {};
   const SurfaceDistanceQuery movedSurface(moved, "target");
   const double scale = boundingDiagonal(sheet);
   const Frame from = principalFrame(sheet), to = principalFrame(moved);
@@ -199,23 +201,71 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
   }
   std::stable_sort(starts.begin(), starts.end(),
                    [](const Pose& a, const Pose& b) { return a.residual < b.residual; });
-  Pose best;
-  for (std::size_t k = 0; k < std::min<std::size_t>(4, starts.size()); ++k) {
-    Pose pose = refine(starts[k], fine, movedSurface, scale);
-    if (pose.residual < best.residual) best = pose;
-    if (best.residual < 1e-9 * scale) break;
-  }
-  best = refine(best, all, movedSurface, scale);
-  const RigidMotion motion = motionOf(best);
   // Both ways within the tolerance: the sheet on the copy and the copy on the sheet.
-  TriangleMesh placed = sheet;
-  for (glm::dvec3& p : placed.positions) p = motion(p);
-  const SurfaceDistanceQuery placedSurface(placed, "sheet");
-  for (const glm::dvec3& p : placed.positions)
-    if (!(movedSurface.distance(p) <= tolerance)) return std::nullopt;
-  for (const glm::dvec3& p : moved.positions)
-    if (!(placedSurface.distance(p) <= tolerance)) return std::nullopt;
-  return motion;
+  auto lays = [&](const RigidMotion& motion) {
+    TriangleMesh placed = sheet;
+    for (glm::dvec3& p : placed.positions) p = motion(p);
+    const SurfaceDistanceQuery placedSurface(placed, "sheet");
+    for (const glm::dvec3& p : placed.positions)
+      if (!(movedSurface.distance(p) <= tolerance)) return false;
+    for (const glm::dvec3& p : moved.positions)
+      if (!(placedSurface.distance(p) <= tolerance)) return false;
+    return true;
+  };
+  auto near = [](const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, double radians) {
+    // The angle of a^T b's turn (a and b of one handedness).
+    return std::acos(std::clamp(0.5 * ((a.transpose() * b).trace() - 1.0), -1.0, 1.0)) < radians;
+  };
+  // The best few starts refined first (the best registration); then, where the sheet lies on the
+  // copy several ways (its symmetries), every other start that lies about as well, skipping one
+  // that begins near a motion found.
+  std::vector<RigidMotion> found;
+  std::vector<Pose> foundPoses;
+  const std::size_t kFirst = 4, kMostRefined = 64;
+  const double coarseEnough = 3.0 * starts.front().residual + 2e-3 * scale;
+  for (std::size_t k = 0, refined = 0; k < starts.size() && refined < kMostRefined; ++k) {
+    if (found.size() >= most || (k > 0 && deadline.passed())) break;
+    if (k >= kFirst && starts[k].residual > coarseEnough) break;
+    const bool begunNear = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
+      return f.mirrored == starts[k].mirrored && near(f.rotation, starts[k].rotation, 0.15);
+    });
+    if (begunNear) continue;
+    ++refined;
+    // Refined on few points first (cheap), on more only where that lies on the copy; each
+    // checked exactly (`lays`) before it counts.
+    Pose pose = refine(starts[k], coarse, movedSurface, scale, 60);
+    if (!(pose.residual < std::max(tolerance, 3e-3 * scale))) continue;  // not near a way yet
+    // One that comes near a way found leads to it again: not refined further.
+    const bool nearFound = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
+      return f.mirrored == pose.mirrored && near(f.rotation, pose.rotation, 0.05) &&
+             (f.offset - pose.offset).norm() < 0.02 * scale;
+    });
+    if (nearFound) continue;
+    pose = refine(pose, fine, movedSurface, scale);
+    RigidMotion motion = motionOf(pose);
+    const bool again = std::any_of(found.begin(), found.end(), [&](const RigidMotion& f) {
+      double linear = 0.0;
+      for (int c = 0; c < 3; ++c)
+        linear = std::max(linear, glm::length(f.linear[c] - motion.linear[c]));
+      return linear < 1e-3 && glm::distance(f.offset, motion.offset) < 1e-3 * scale;
+    });
+    foundPoses.push_back(pose);
+    if (again) continue;
+    if (!lays(motion)) {
+      pose = refine(pose, all, movedSurface, scale);
+      motion = motionOf(pose);
+      if (!lays(motion)) continue;
+    }
+    found.push_back(motion);
+  }
+  return found;
+}
+
+std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,
+                                             double tolerance) {
+  const std::vector<RigidMotion> motions = registerSheetOntoAll(sheet, moved, tolerance, 1);
+  if (motions.empty()) return std::nullopt;
+  return motions.front();
 }
 
 namespace {
@@ -327,22 +377,37 @@ std::optional<std::vector<ReflectionPlane>> threePlanes(const RigidMotion& motio
 
 std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
                                                    const std::vector<glm::dvec3>& points) {
+  for (std::size_t count = 1; count <= 5; ++count) {
+    std::vector<ReflectionPlane> planes = wholeSheetReflections(motion, points, count);
+    if (!planes.empty()) return planes;
+  }
+  return {};
+}
+
+std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
+                                                   const std::vector<glm::dvec3>& points,
+                                                   std::size_t count) {
   const double scale = std::max(diagonalOf(points), 1e-9);
   const double margin = 1e-3 * scale;  // how far a plane keeps clear of the sheet
-  if (sameMotion(motion, RigidMotion{}, scale)) return {};
+  if (sameMotion(motion, RigidMotion{}, scale) || count == 0) return {};
   const Eigen::Matrix3d A = orthogonalPart(motion.linear);
   const glm::dvec3 t = motion.offset;
 
   // One plane: a mirror, shifted along its normal.
-  if (A.determinant() < 0.0) {
+  if (A.determinant() < 0.0 && count == 1) {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (A + A.transpose()));
     const glm::dvec3 n = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(0))));
     const ReflectionPlane plane{0.5 * glm::dot(t, n) * n, n};
     if (folds({plane}, motion, points, margin, scale)) return {plane};
-    if (const auto planes = threePlanes(motion, points, margin, scale)) return *planes;
-  } else if (const auto pair = twoPlanes(motion, points, margin, scale)) {
-    return *pair;
+    return {};
   }
+  if (A.determinant() < 0.0 && count == 3) {
+    if (const auto planes = threePlanes(motion, points, margin, scale)) return *planes;
+  } else if (A.determinant() > 0.0 && count == 2) {
+    if (const auto pair = twoPlanes(motion, points, margin, scale)) return *pair;
+    return {};
+  }
+  if (count < 3) return {};
 
   // Otherwise: the linear part as reflections through planes pushed off the sheet (a mirror
   // across the axis for an improper part, then a turn as two), and the shift left as two
@@ -391,7 +456,7 @@ std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
     planes.push_back({d1 * n, n});
     planes.push_back({(d1 + 0.5 * length) * n, n});
   }
-  if (folds(planes, motion, points, margin, scale)) return planes;
+  if (planes.size() == count && folds(planes, motion, points, margin, scale)) return planes;
   return {};
 }
 

@@ -16,8 +16,14 @@
 // [Cartan-Dieudonne] through planes pushed off the sheet and a shift by two parallel planes (at
 // most five).
 //
-// Known limits: a sheet with a symmetry lies on its copy several ways; any is returned (each
-// lays the sheet where the copy is). A copy that is not rigid (creases left) is refused.
+// registerSheetOntoAll: every way the sheet lies on the copy (a symmetric sheet, a square, a disk
+// or a star, lies on it several ways, one its symmetry times another), as the starts above find
+// them: each needs its own number of whole-sheet folds, and the fit takes the fewest (a fold
+// that mirrors a star whole is one plane; the star's symmetry times it may take five).
+//
+// Known limits: a sheet with a continuous symmetry (a disk) lies on its copy in infinitely many
+// ways; those found are the ones the starts (every 15 degrees) lead to. A copy that is not rigid
+// (creases left) is refused.
 #pragma once
 
 #include <optional>
@@ -26,6 +32,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/geometry/reflection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
@@ -43,9 +50,21 @@ struct RigidMotion {
 std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,
                                              double tolerance);
 
+// Every distinct motion taking `sheet` onto `moved` within `tolerance` as above, at most `most`,
+// the best start's first.
+// Stops at `deadline` with the ways found by then.
+std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
+                                              double tolerance, std::size_t most,
+                                              const Deadline& deadline = {});
+
 // Planes, in folding order, whose reflections make `motion` and each miss the sheet (`points`:
 // its vertices) where the earlier ones left it. Empty for the identity.
 std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
                                                    const std::vector<glm::dvec3>& points);
+// The same, only `count` planes (1 to 5): empty where this finds no way with that many. Cheap for
+// 1 and 2; 3 searches (the fit asks for fewer first, over every way the sheet lies on its copy).
+std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
+                                                   const std::vector<glm::dvec3>& points,
+                                                   std::size_t count);
 
 }  // namespace curvefold
