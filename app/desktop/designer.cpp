@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -85,6 +86,12 @@ struct Glfw {
   GLFWwindow* window = nullptr;
 };
 
+// The sheet the window shows, which the mouse picks on: the simulated one while simulating.
+const Sheet& shownSheet(const session::Document& doc) {
+  const LiveSimulation* simulation = doc.core->simulation();
+  return simulation ? simulation->sheet() : doc.session->current();
+}
+
 // PNG of a scene through the offscreen path, on the window's device.
 void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
                const fs::path& path) {
@@ -122,6 +129,8 @@ void runDesigner(const DesignerOptions& options) {
   session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); },
                                   {{options.target, "the target"}});
   if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
+  // The live simulation steps while the window draws (issue 39, 4); a replay steps in turn.
+  doc.core->setSimulationOnWorker(true);
 
   Glfw glfw;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
@@ -209,8 +218,7 @@ void runDesigner(const DesignerOptions& options) {
     const Ray ray = s.camera.ray(s.mouse, std::max(x, 1), std::max(y, 1));
     if (button == GLFW_MOUSE_BUTTON_LEFT) {
       if (action == GLFW_PRESS)
-        s.input.press(ray, s.doc->session->current(), s.doc->core->worldFromSheet(),
-                      s.camera.forward());
+        s.input.press(ray, shownSheet(*s.doc), s.doc->core->worldFromSheet(), s.camera.forward());
       else
         s.input.release();
     } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
@@ -275,7 +283,8 @@ void runDesigner(const DesignerOptions& options) {
   // The panel (shared with the headset) and what the window measures for it.
   studio::StudioPanel panel(
       outputs.wantsRecording(),
-      "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
+      "Left drag: fold (simulating: pull the paper; wheel: depth). Right: orbit, middle: pan, "
+      "wheel: zoom. Esc "
       "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
       "suggests a fold, T takes it, N offers another.");
   panel.setRecent(session::loadRecentDesigns());
@@ -293,6 +302,7 @@ void runDesigner(const DesignerOptions& options) {
     session::Document fresh = session::makeDocument(next, name);
     doc.core.reset();
     doc = std::move(fresh);
+    doc.core->setSimulationOnWorker(true);
     goal.documentReplaced();
     renderer.markSheetReplaced();
     tracker = desktop::InteractionSheetTracker();
@@ -321,6 +331,7 @@ void runDesigner(const DesignerOptions& options) {
   bool sheetShown = true;
   const TriangleMesh* framedTarget = goal.mesh();
   std::vector<float> frameTimes;
+  SimulationPuller puller;  // the mouse's pull of the simulated sheet
 
   const Clock::time_point start = Clock::now();
   double lastTime = 0.0;
@@ -329,7 +340,7 @@ void runDesigner(const DesignerOptions& options) {
     glfwPollEvents();
     {
       const glm::dvec2 size = windowSize(window);
-      state.input.mouseRay(state.camera.ray(state.mouse, size.x, size.y), doc.session->current(),
+      state.input.mouseRay(state.camera.ray(state.mouse, size.x, size.y), shownSheet(doc),
                            doc.core->worldFromSheet());
     }
     ImGui_ImplVulkan_NewFrame();
@@ -377,8 +388,17 @@ void runDesigner(const DesignerOptions& options) {
     }
     InputFrame input = state.input.frame(time);
     // The panel's simulation (issue 39, 4) is input like the mouse, so the recording keeps it.
-    if (const std::optional<double> percent = panel.simulationPercent())
+    // A left drag on the simulated sheet pulls its nearest vertex toward the mouse's point (as
+    // the headset's trigger does), recorded in the frame's pull.
+    if (const std::optional<double> percent = panel.simulationPercent()) {
       input.simulation = liveSimulationInput(*percent, doc.session->fixed());
+      input.simulation->pull = puller.update(
+          input.pointHand, input.pointHand.tracked, doc.core->simulation(),
+          doc.core->worldFromSheet(), doc.core->viewScale(), doc.core->thresholds().selectPress,
+          doc.core->thresholds().selectRelease, std::numeric_limits<double>::infinity());
+    } else {
+      puller.reset();
+    }
     goal.poll(doc, input);  // a finished search's folds join the frame, and its recording
     const Clock::time_point processStart = Clock::now();
     doc.core->process(input);
