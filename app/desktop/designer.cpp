@@ -129,8 +129,6 @@ void runDesigner(const DesignerOptions& options) {
   session::SessionOutputs outputs(autosavePath, options.record, [&doc] { return doc.design(); },
                                   {{options.target, "the target"}});
   if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
-  // The live simulation steps while the window draws (issue 39, 4); a replay steps in turn.
-  doc.core->setSimulationOnWorker(true);
 
   Glfw glfw;
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
@@ -302,7 +300,6 @@ void runDesigner(const DesignerOptions& options) {
     session::Document fresh = session::makeDocument(next, name);
     doc.core.reset();
     doc = std::move(fresh);
-    doc.core->setSimulationOnWorker(true);
     goal.documentReplaced();
     renderer.markSheetReplaced();
     tracker = desktop::InteractionSheetTracker();
