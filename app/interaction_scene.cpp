@@ -112,8 +112,15 @@ void addTranslucentMesh(Scene& scene, const std::vector<glm::dvec3>& positions,
 }  // namespace
 
 void InteractionSheetTracker::update(const InteractionCore& core, SceneRenderer& renderer) {
-  if (core.simulation()) {
-    renderer.markSheetReplaced();
+  if (const LiveSimulation* simulation = core.simulation()) {
+    if (simulated_ && simulation == simulation_ &&
+        simulationRevision_ == core.session().fixedRevision()) {
+      renderer.markSheetMoved();
+    } else {
+      renderer.markSheetReplaced();
+      simulation_ = simulation;
+      simulationRevision_ = core.session().fixedRevision();
+    }
     simulated_ = true;
     return;
   }
@@ -133,7 +140,7 @@ void InteractionSheetTracker::describe(const InteractionCore& core, SceneSheet& 
     return;
   }
   if (!strainColours) return;
-  const std::vector<double> strain = simulation->vertexStrain();
+  const std::vector<double>& strain = simulation->vertexStrain();
   double largest = 0.0;
   for (double s : strain) largest = std::max(largest, s);
   // A sheet with no strain at all is drawn in the low colour, not the middle of the map.

@@ -39,8 +39,9 @@ class CreasePatternCache {
 
 // The renderer's copy of what sceneForInteraction draws, frame by frame: the session's sheet
 // through a SessionSheetTracker (its merged display sheet), or, while the core simulates, the
-// simulated sheet, which moves everywhere each frame. Leaving the simulation starts the tracker
-// afresh, so the design comes back whole.
+// simulated sheet, which moves everywhere each frame: its vertices are uploaded again, its
+// triangles only when a simulation starts. Leaving the simulation starts the tracker afresh, so
+// the design comes back whole.
 class InteractionSheetTracker {
  public:
   explicit InteractionSheetTracker(bool simplify = true)
@@ -57,6 +58,9 @@ class InteractionSheetTracker {
   bool simplify_;
   SessionSheetTracker tracker_;
   bool simulated_ = false;
+  // The simulation last drawn and the design it was made from: another is a new sheet.
+  const LiveSimulation* simulation_ = nullptr;
+  std::uint64_t simulationRevision_ = 0;
   std::vector<glm::u8vec4> colors_;
 };
 

@@ -547,7 +547,7 @@ void StudioPanel::drawSimulation(const session::Document& doc) {
     ImGui::TextColored(ImVec4(0.8f, 0.2f, 0.1f, 1.0f), "cannot simulate: %s",
                        doc.core->simulationProblem().c_str());
   } else if (strainColours_) {
-    const std::vector<double> strain = simulation->vertexStrain();
+    const std::vector<double>& strain = simulation->vertexStrain();
     const double largest = strain.empty() ? 0.0 : *std::max_element(strain.begin(), strain.end());
     ImGui::Text("%.0f%%, %zu steps, largest strain %.2e", simulation->percent(),
                 simulation->steps(), largest);

@@ -119,7 +119,7 @@ bool InteractionCore::handleSimulation(const InputFrame& frame) {
     simulation_.reset();
     simulationRevision_ = session_.fixedRevision();
     try {
-      simulation_ = std::make_unique<LiveSimulation>(session_.fixed());
+      simulation_ = std::make_unique<LiveSimulation>(session_.fixed(), simulationOnWorker_);
       simulationProblem_.clear();
     } catch (const std::exception& e) {
       simulationProblem_ = e.what();

@@ -159,6 +159,9 @@ class InteractionCore {
   // dropped when one comes without. While it runs the point hand neither hovers nor folds (a
   // drag under way is cancelled); the sheet hand holds the sheet as ever. The design is untouched.
   const LiveSimulation* simulation() const { return simulation_.get(); }
+  // Simulations made from now on step on a worker thread (LiveSimulation's onWorker: the live
+  // window draws while the next state is computed, one frame behind); replays leave it off.
+  void setSimulationOnWorker(bool on) { simulationOnWorker_ = on; }
   // Why the last frame's simulation could not be made (a sheet the model refuses), else empty.
   const std::string& simulationProblem() const { return simulationProblem_; }
 
@@ -233,6 +236,7 @@ class InteractionCore {
   // The design's fixedRevision it was made from (or failed to be made from).
   std::optional<std::uint64_t> simulationRevision_;
   std::string simulationProblem_;
+  bool simulationOnWorker_ = false;
 };
 
 }  // namespace curvefold

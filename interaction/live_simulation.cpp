@@ -43,39 +43,69 @@ std::optional<SimulationPull> SimulationPuller::update(const InputFrame::PointHa
   return SimulationPull{*pulled_, tip};
 }
 
-LiveSimulation::LiveSimulation(const Sheet& design) : design_(design.positions), shown_(design) {
+LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker)
+    : design_(design.positions), shown_(design), onWorker_(onWorker) {
   model_ = buildModel(designPattern(design).pattern);
   state_ = flatState(model_);
   timeStep_ = stableTimeStep(model_);
+  nextPlacement_ = bestRigidPlacement(state_.positions, design_);
+  nextPositions_ = placed(nextPlacement_, state_.positions);
   show();
 }
 
+LiveSimulation::~LiveSimulation() {
+  if (job_.valid()) job_.wait();
+}
+
 void LiveSimulation::advance(const SimulationInput& input) {
+  finish();
   percent_ = std::clamp(input.percent, 0.0, 100.0);
   pull_ = input.pull;
   if (pull_ && pull_->vertex >= model_.vertexCount()) pull_.reset();
+  SimulationInput frame = input;
+  frame.percent = percent_;
+  frame.pull = pull_;
+  if (!onWorker_) {
+    step(frame, placement_);
+    show();
+    return;
+  }
+  job_ =
+      std::async(std::launch::async, [this, frame, before = placement_] { step(frame, before); });
+}
+
+void LiveSimulation::finish() {
+  if (!job_.valid()) return;
+  job_.get();
+  show();
+}
+
+void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& before) {
   DynamicOptions options;
   options.timeStep = timeStep_;
-  const double amount = percent_ / 100.0;
-  if (!pull_ || model_.pinned[pull_->vertex]) {
+  const double amount = input.percent / 100.0;
+  if (!input.pull || model_.pinned[input.pull->vertex]) {
     stepDynamic(model_, amount, state_, input.steps, options);
   } else {
-    // The target in the model's frame: the inverse of this frame's placement.
-    const glm::dvec3 to =
-        glm::transpose(placement_.rotation) * (pull_->to - placement_.translation);
-    const std::uint32_t v = pull_->vertex;
+    // The target in the model's frame: the inverse of the shown state's placement.
+    const glm::dvec3 to = glm::transpose(before.rotation) * (input.pull->to - before.translation);
+    const std::uint32_t v = input.pull->vertex;
     const double impulse = kPullStiffness / timeStep_;  // dt k / m with k = c m / dt^2
     for (std::uint32_t step = 0; step < input.steps; ++step) {
       state_.velocities[v] += impulse * (to - state_.positions[v]);
       stepDynamic(model_, amount, state_, 1, options);
     }
   }
-  show();
+  nextPlacement_ = bestRigidPlacement(state_.positions, design_);
+  nextPositions_ = placed(nextPlacement_, state_.positions);
 }
 
 void LiveSimulation::show() {
-  placement_ = bestRigidPlacement(state_.positions, design_);
-  shown_.positions = placed(placement_, state_.positions);
+  placement_ = nextPlacement_;
+  std::swap(shown_.positions, nextPositions_);
+  shownModel_ = state_.positions;
+  shownSteps_ = state_.steps;
+  strainCurrent_ = false;
 }
 
 std::uint32_t LiveSimulation::nearestVertex(const glm::dvec3& sheetPoint) const {
@@ -91,13 +121,14 @@ std::uint32_t LiveSimulation::nearestVertex(const glm::dvec3& sheetPoint) const 
   return best;
 }
 
-std::vector<double> LiveSimulation::vertexStrain() const {
-  const std::vector<double> strain = edgeStrain(model_, state_.positions);
-  std::vector<double> perVertex(model_.vertexCount(), 0.0);
+const std::vector<double>& LiveSimulation::vertexStrain() const {
+  if (strainCurrent_) return strain_;
+  const std::vector<double> strain = edgeStrain(model_, shownModel_);
+  strain_.assign(model_.vertexCount(), 0.0);
   for (std::size_t e = 0; e < model_.bars.size(); ++e)
-    for (std::uint32_t v : model_.bars[e])
-      perVertex[v] = std::max(perVertex[v], std::abs(strain[e]));
-  return perVertex;
+    for (std::uint32_t v : model_.bars[e]) strain_[v] = std::max(strain_[v], std::abs(strain[e]));
+  strainCurrent_ = true;
+  return strain_;
 }
 
 }  // namespace curvefold

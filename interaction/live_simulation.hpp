@@ -18,12 +18,19 @@
 // x) / m before each step, which is the same as adding it to that step's force in the solver's
 // semi-implicit Euler. k = kPullStiffness m / dt^2 keeps it well inside explicit stability.
 //
+// On a worker (the live window, issue 39, 4): advance() starts the frame's steps on a worker
+// thread and returns at once, showing the state after the previous frame's input while the
+// window draws; the next advance() (or finish()) waits for them. The states are the very same
+// (the same inputs in the same order; stepDynamic is bit for bit the same on any thread), only
+// shown a frame later, so a recording still replays bit for bit (replays step synchronously).
+//
 // Known limits: design mode only (every edge driven toward the design; paper mode's very stiff
 // bars need far more steps than a frame allows); no self-contact (the model has none).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <vector>
 
 #include "engine/geometry/sheet.hpp"
@@ -68,37 +75,60 @@ class SimulationPuller {
 class LiveSimulation {
  public:
   // Builds the model of `design` (design mode) and starts flat. Throws SimulationInputError or
-  // InvalidSheet for a sheet the model cannot be built from.
-  explicit LiveSimulation(const Sheet& design);
+  // InvalidSheet for a sheet the model cannot be built from. onWorker: see above.
+  explicit LiveSimulation(const Sheet& design, bool onWorker = false);
+  ~LiveSimulation();
+  LiveSimulation(const LiveSimulation&) = delete;
+  LiveSimulation& operator=(const LiveSimulation&) = delete;
 
-  // One frame: input.steps dynamic steps toward input.percent, pulled by input.pull if any.
+  // One frame: input.steps dynamic steps toward input.percent, pulled by input.pull if any
+  // (on a worker: started; shown from the next frame).
   void advance(const SimulationInput& input);
+  // Waits for the steps under way, if any, and shows their state.
+  void finish();
 
-  // The design's sheet at the simulated positions, placed onto the design (sheet coordinates).
+  // The design's sheet at the shown simulated positions, placed onto the design (sheet
+  // coordinates).
   const Sheet& sheet() const { return shown_; }
+  // The last frame's input.
   double percent() const { return percent_; }
-  std::size_t steps() const { return state_.steps; }
   const std::optional<SimulationPull>& pull() const { return pull_; }
+  // Steps taken to the shown state.
+  std::size_t steps() const { return shownSteps_; }
   const BarHingeModel& model() const { return model_; }
+  // The model's state; on a worker, only after finish() (the worker writes it meanwhile).
   const SimulationState& state() const { return state_; }
 
   // The shown vertex nearest a point (sheet coordinates).
   std::uint32_t nearestVertex(const glm::dvec3& sheetPoint) const;
-  // Per vertex: the largest |strain| of its edges (edgeStrain), for a picture to colour (a
-  // renderer with per-vertex colour; see docs/design.md).
-  std::vector<double> vertexStrain() const;
+  // Per vertex of the shown state: the largest |strain| of its edges (edgeStrain), for a picture
+  // to colour (a renderer with per-vertex colour; see docs/design.md). Computed once per shown
+  // state (the panel and the picture both ask).
+  const std::vector<double>& vertexStrain() const;
 
  private:
+  // The steps of one frame and the placement of their state (the worker's part).
+  void step(const SimulationInput& input, const RigidPlacement& before);
+  // The worker's state becomes the shown one.
   void show();
 
   BarHingeModel model_;
   SimulationState state_;
   std::vector<glm::dvec3> design_;  // the design's positions, which the state is placed onto
   Sheet shown_;
-  RigidPlacement placement_;  // model frame -> sheet coordinates
+  std::vector<glm::dvec3> shownModel_;  // the shown state's positions in the model's frame
+  std::size_t shownSteps_ = 0;
+  RigidPlacement placement_;  // the shown state's: model frame -> sheet coordinates
+  // The worker's results, shown by show().
+  std::vector<glm::dvec3> nextPositions_;
+  RigidPlacement nextPlacement_;
   double timeStep_ = 0.0;
   double percent_ = 0.0;
   std::optional<SimulationPull> pull_;
+  bool onWorker_ = false;
+  std::future<void> job_;
+  mutable std::vector<double> strain_;
+  mutable bool strainCurrent_ = false;
 };
 
 }  // namespace curvefold

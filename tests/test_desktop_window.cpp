@@ -4,6 +4,7 @@
 // display, plain `curvefold` says so in one line and exits non-zero.
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <map>
 
@@ -19,6 +20,8 @@
 #include "desktop_test_support.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recording.hpp"
 
 namespace curvefold {
 namespace {
@@ -217,7 +220,8 @@ TEST_F(DesktopWindow, ResizedWindowDrawsAndPicksAtItsNewSize) {
 // Where the designer's panel draws these items in a window of this size: the same panel, run
 // headless with the designer's items (a target section, the desktop's own items).
 std::map<std::string, glm::dvec2> designerPanelItems(const fs::path& design, int width, int height,
-                                                     const std::vector<std::string>& labels) {
+                                                     const std::vector<std::string>& labels,
+                                                     bool recording = false) {
   ImGuiContext* context = ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
@@ -226,7 +230,7 @@ std::map<std::string, glm::dvec2> designerPanelItems(const fs::path& design, int
   int w = 0, h = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
   session::Document doc = session::makeDocument(loadDesign(design), design.string());
-  studio::StudioPanel panel(false, "help");
+  studio::StudioPanel panel(recording, "help");
   panel.setDesktop(true);
   studio::StudioActions actions;
   actions.loadTarget = [](const std::string&) {};
@@ -269,6 +273,83 @@ TEST_F(DesktopWindow, SaveAndExportsFollowTheOpenedDesign) {
   EXPECT_EQ(slurp(log), "");
   EXPECT_TRUE(fs::exists(vase));
   EXPECT_TRUE(fs::exists(dir() / "vase.svg"));
+}
+
+// Issue 39, 4: while simulating, a left drag on the sheet pulls its nearest vertex toward the
+// mouse (a spring, as the headset's trigger pulls), folds nothing, and is recorded: the recording
+// replays the pull to the same vertex arrays, twice, and the pulled vertex comes toward the mouse.
+TEST_F(DesktopWindow, ADragOnTheSimulatedSheetPullsItAndReplays) {
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
+  ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
+  ::setenv("XDG_STATE_HOME", (dir() / "state").c_str(), 1);
+  const fs::path square = dir() / "square.curvefold.json", log = dir() / "designer.log",
+                 recording = dir() / "session.jsonl", autosave = dir() / "auto.curvefold.json";
+  ASSERT_EQ(
+      shell(std::string(CURVEFOLD_BINARY) + " new square -o " + square.string() + " >/dev/null"),
+      0);
+  std::map<std::string, glm::dvec2> at =
+      designerPanelItems(square, kWidth, kHeight, {"simulate"}, /*recording=*/true);
+  ASSERT_EQ(at.size(), 1u);
+  ASSERT_LT(at["simulate"].y, kHeight) << "the checkbox lies below the window";
+  // The square at 100% in design mode is the flat square; a vertex right of the panel.
+  const Sheet sheet = makeSurface("square");
+  const desktop::OrbitCamera camera =
+      desktop::OrbitCamera::framing(sheet, Pose{}, float(kWidth) / kHeight);
+  const glm::dvec3 aim(0.07, -0.05, 0.0);
+  std::uint32_t vertex = 0;
+  for (std::uint32_t i = 0; i < sheet.positions.size(); ++i)
+    if (glm::length(sheet.positions[i] - aim) < glm::length(sheet.positions[vertex] - aim))
+      vertex = i;
+  const glm::dvec2 from = camera.project(sheet.positions[vertex], kWidth, kHeight);
+  const glm::dvec2 to = camera.project({0.09, -0.07, 0.0}, kWidth, kHeight);
+
+  const std::string window = startDesigner(
+      square.string() + " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+          " --record " + recording.string() + " --autosave " + autosave.string(),
+      log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  const std::string click = move(at["simulate"]) + move(at["simulate"]) + env() +
+                            "xdotool mousedown 1 && sleep 0.2 && " + env() +
+                            "xdotool mouseup 1 && sleep 1 && ";
+  ASSERT_EQ(shell("sleep 1 && " + click + drag(from, to) + quit()), 0);
+  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+  EXPECT_EQ(slurp(log), "");
+  // Pulled, not folded (the autosave is written after a committed fold).
+  if (fs::exists(autosave)) EXPECT_EQ(nlohmann::json::parse(slurp(autosave))["folds"].size(), 0u);
+
+  // The pull is in the recording, on the vertex under the mouse.
+  const Recording read = readRecording(recording);
+  std::size_t pulledFrames = 0;
+  for (const InputFrame& frame : read.frames)
+    if (frame.simulation && frame.simulation->pull) {
+      ++pulledFrames;
+      EXPECT_EQ(frame.simulation->pull->vertex, vertex);
+    }
+  ASSERT_GT(pulledFrames, 3u) << slurp(recording).substr(0, 2000);
+
+  // Replayed beside the same frames without their pulls: the pulled vertex is nearer the mouse's
+  // point at the last pulled frame, and the recording replays to the same arrays twice.
+  Recording unpulledRecording = read;
+  for (InputFrame& frame : unpulledRecording.frames)
+    if (frame.simulation) frame.simulation->pull.reset();
+  Player pulled(read), unpulled(unpulledRecording);
+  double pulledDistance = -1.0, unpulledDistance = -1.0;
+  while (!pulled.done()) {
+    const InputFrame& frame = pulled.step();
+    unpulled.step();
+    if (!frame.simulation || !frame.simulation->pull) continue;
+    const glm::dvec3 mouse = frame.simulation->pull->to;
+    pulledDistance = glm::distance(pulled.core().simulation()->sheet().positions[vertex], mouse);
+    unpulledDistance =
+        glm::distance(unpulled.core().simulation()->sheet().positions[vertex], mouse);
+  }
+  EXPECT_LT(pulledDistance, unpulledDistance - 1e-4)
+      << "pulled " << pulledDistance << ", unpulled " << unpulledDistance;
+  const ReplayResult a = replayRecording(read), b = replayRecording(read);
+  ASSERT_EQ(a.simulated.size(), sheet.vertexCount());
+  EXPECT_EQ(
+      std::memcmp(a.simulated.data(), b.simulated.data(), a.simulated.size() * sizeof(glm::dvec3)),
+      0);
 }
 
 TEST_F(DesktopWindow, NoDisplayIsOneLineAndNonZero) {

@@ -896,6 +896,31 @@ TEST_F(TempDir, ARecordedSimulationReplaysBitForBit) {
   EXPECT_FALSE(sameArrays(unpulled.simulated, shown));
 }
 
+// The live window steps on a worker (LiveSimulation's onWorker): each frame shows the state after
+// the previous frame's input, and that state is the very one stepping in turn shows, bit for bit
+// (pulls included: the pull's target goes into the model's frame by the shown state's placement).
+TEST(LiveSimulation, OnAWorkerShowsTheSameStatesOneFrameLater) {
+  const Sheet cylinder = makeSurface("cylinder", {{"resolution", 8}});
+  LiveSimulation inTurn(cylinder), onWorker(cylinder, /*onWorker=*/true);
+  std::vector<std::vector<glm::dvec3>> shownInTurn{inTurn.sheet().positions};
+  std::vector<std::size_t> stepsInTurn{inTurn.steps()};
+  const std::vector<InputFrame> frames = simulatedFrames(true);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    inTurn.advance(*frames[i].simulation);
+    onWorker.advance(*frames[i].simulation);
+    // Frame i on the worker shows what frame i - 1 in turn showed.
+    EXPECT_TRUE(sameArrays(onWorker.sheet().positions, shownInTurn[i])) << "frame " << i;
+    EXPECT_EQ(onWorker.steps(), stepsInTurn[i]) << "frame " << i;
+    shownInTurn.push_back(inTurn.sheet().positions);
+    stepsInTurn.push_back(inTurn.steps());
+  }
+  onWorker.finish();
+  EXPECT_TRUE(sameArrays(onWorker.sheet().positions, inTurn.sheet().positions));
+  EXPECT_TRUE(sameArrays(onWorker.state().positions, inTurn.state().positions));
+  EXPECT_EQ(onWorker.vertexStrain(), inTurn.vertexStrain());
+  EXPECT_GT(inTurn.steps(), 0u);
+}
+
 // Simulating never changes the design: leaving it gives back the design bit for bit, and the
 // simulation folds from flat (0%) to the design (100%) and back.
 TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {

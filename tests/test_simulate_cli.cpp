@@ -1,8 +1,10 @@
 // `curvefold simulate` (issue 39, 3): outputs all or none, one-line errors, the folding as frames
 // and as an animated GIF.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,41 @@ TEST_F(SimulateCli, WritesTheSettledStateAsObjAndFoldWithItsFoldedFrame) {
   for (const auto& p : folded) zRange = std::max(zRange, std::abs(p[2].get<double>()));
   EXPECT_GT(zRange, 1e-3);
   EXPECT_NE(slurp(path("c.obj")).find("\nf "), std::string::npos);
+}
+
+// Issue 39, 1: design mode is the command's default for a curvefold design, as in the live
+// window and Python's Design.simulate: at 100% the settled state is the design itself, up to a
+// rigid motion (every pairwise vertex distance as in the design's own OBJ).
+TEST_F(SimulateCli, ADesignAtFullAmountIsTheDesignItself) {
+  ASSERT_EQ(run("new cone --resolution 12 -o c.curvefold.json").exitCode, 0);
+  ASSERT_EQ(run("export c.curvefold.json --obj design.obj").exitCode, 0);
+  const CommandResult result = run("simulate c.curvefold.json --percent 100 --settle --obj s.obj");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  auto vertices = [&](const std::string& name) {
+    std::vector<std::array<double, 3>> out;
+    std::istringstream in(slurp(path(name)));
+    for (std::string line; std::getline(in, line);) {
+      std::istringstream words(line);
+      std::string tag;
+      std::array<double, 3> p{};
+      if (words >> tag && tag == "v" && words >> p[0] >> p[1] >> p[2]) out.push_back(p);
+    }
+    return out;
+  };
+  const auto design = vertices("design.obj"), simulated = vertices("s.obj");
+  ASSERT_EQ(simulated.size(), design.size());
+  ASSERT_GT(design.size(), 10u);
+  auto distance = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  };
+  double size = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < design.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      size = std::max(size, distance(design[i], design[j]));
+      largest = std::max(
+          largest, std::abs(distance(design[i], design[j]) - distance(simulated[i], simulated[j])));
+    }
+  EXPECT_LT(largest, 1e-6 * size) << "largest change of a vertex distance " << largest;
 }
 
 TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {

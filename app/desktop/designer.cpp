@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -56,7 +57,8 @@ constexpr const char* kNoDisplay =
     "no display for the designer window; use `curvefold replay` or `curvefold render` instead";
 constexpr const char* kDefaultSurface = "square";
 constexpr const char* kHelp =
-    "Left drag: fold (wheel: depth). Right: orbit, middle: pan, wheel: zoom. Esc "
+    "Left drag: fold (simulating: pull the paper; wheel: depth). Right: orbit, middle: pan, "
+    "wheel: zoom. Esc "
     "cancels, Ctrl+Z / Ctrl+Shift+Z undo/redo, Ctrl+Q quits. With a target: S "
     "suggests a fold, T takes it, N offers another.";
 
@@ -84,6 +86,12 @@ struct Glfw {
   }
   GLFWwindow* window = nullptr;
 };
+
+// The sheet the window shows, which the mouse picks on: the simulated one while simulating.
+const Sheet& shownSheet(const session::Document& doc) {
+  const LiveSimulation* simulation = doc.core->simulation();
+  return simulation ? simulation->sheet() : doc.session->current();
+}
 
 // PNG of a scene through the offscreen path, on the window's device.
 void exportPng(const VulkanContext& context, const Scene& scene, VkExtent2D extent,
@@ -174,8 +182,7 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
     const Ray ray = s.camera.ray(s.mouse, std::max(x, 1), std::max(y, 1));
     if (button == GLFW_MOUSE_BUTTON_LEFT) {
       if (action == GLFW_PRESS)
-        s.input.press(ray, s.doc->session->current(), s.doc->core->worldFromSheet(),
-                      s.camera.forward());
+        s.input.press(ray, shownSheet(*s.doc), s.doc->core->worldFromSheet(), s.camera.forward());
       else
         s.input.release();
     } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
@@ -290,6 +297,7 @@ class DesignerWindow {
   bool sheetShown_ = true;
   const TriangleMesh* framedTarget_ = nullptr;
   std::vector<float> frameTimes_;
+  SimulationPuller puller_;  // the mouse's pull of the simulated sheet
   // Input time, which never goes backwards.
   Clock::time_point start_, lastFrame_;
   double lastTime_ = 0.0;
@@ -406,8 +414,8 @@ void DesignerWindow::run() {
     glfwPollEvents();
     {
       const glm::dvec2 size = windowSize(window_);
-      state_.input.mouseRay(state_.camera.ray(state_.mouse, size.x, size.y),
-                            doc_.session->current(), doc_.core->worldFromSheet());
+      state_.input.mouseRay(state_.camera.ray(state_.mouse, size.x, size.y), shownSheet(doc_),
+                            doc_.core->worldFromSheet());
     }
     drawPanel();
     InputFrame input = nextInput();
@@ -471,8 +479,17 @@ InputFrame DesignerWindow::nextInput() {
   }
   InputFrame input = state_.input.frame(time);
   // The panel's simulation (issue 39, 4) is input like the mouse, so the recording keeps it.
-  if (const std::optional<double> percent = panel_.simulationPercent())
+  // A left drag on the simulated sheet pulls its nearest vertex toward the mouse's point (as
+  // the headset's trigger does), recorded in the frame's pull.
+  if (const std::optional<double> percent = panel_.simulationPercent()) {
     input.simulation = liveSimulationInput(*percent, doc_.session->fixed());
+    input.simulation->pull = puller_.update(
+        input.pointHand, input.pointHand.tracked, doc_.core->simulation(),
+        doc_.core->worldFromSheet(), doc_.core->viewScale(), doc_.core->thresholds().selectPress,
+        doc_.core->thresholds().selectRelease, std::numeric_limits<double>::infinity());
+  } else {
+    puller_.reset();
+  }
   return input;
 }
 

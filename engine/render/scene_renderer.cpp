@@ -374,6 +374,11 @@ void SceneRenderer::markSheetReplaced() {
   }
 }
 
+void SceneRenderer::markSheetMoved() {
+  for (Slot& slot : slots_)
+    if (!slot.dirtyAll) slot.dirtyVertices.add(0, kNoIndex);
+}
+
 void SceneRenderer::markSheetChanged(const ReflectionChanges& changes) {
   const bool cleared = changes.firstNewVertex == 0 && changes.firstNewTriangle == 0 &&
                        changes.movedVertices.empty() && changes.rewrittenTriangles.empty();

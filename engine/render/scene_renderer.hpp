@@ -77,6 +77,8 @@ class SceneRenderer {
 
   // The next scene's sheet may differ everywhere (a new sheet, commit, undo, cancel).
   void markSheetReplaced();
+  // The next scene's sheet has the same triangles, every vertex moved (a simulated sheet).
+  void markSheetMoved();
   // The next scene's sheet differs from the previous one only in these vertices and triangles
   // (and in what is appended). A cleared record (firstNewVertex == 0, nothing moved) marks nothing.
   void markSheetChanged(const ReflectionChanges& changes);
