@@ -25,6 +25,7 @@
 #include "app/design_check.hpp"
 #include "app/document.hpp"
 #include "app/guarded_design.hpp"
+#include "app/printed_cover.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
@@ -427,24 +428,33 @@ void exportDesign(const PyDesign& design, const py::object& foldArg, const py::o
     sheet = design.snapshot(guard.lock);
     whole = design.design(guard.lock);
   }
+  // The cover `curvefold export --pdf` prints: the facts with the date, the folded form.
   PdfOptions print;
   print.paper = *paperSize;
   print.angles = angles;
-  print.title = design.name();
-  print.facts = {"surface: " + session::surfaceName(whole) +
-                     (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
-                 "folds: " + std::to_string(whole.folds.size())};
-  py::gil_scoped_release release;
-  // All named files or none, as `curvefold export` writes them.
-  OutputSet outputs;
-  if (fold) outputs.add(*fold, [&](const auto& at) { writeFold(*sheet, at); });
-  if (svg) outputs.add(*svg, [&](const auto& at) { writeSvgCreasePattern(*sheet, at); });
-  if (cutSvg)
-    outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
-  if (pdf) outputs.add(*pdf, [&](const auto& at) { writeCreasePatternPdf(*sheet, at, print); });
-  if (obj) outputs.add(*obj, [&](const auto& at) { writeObj(*sheet, at); });
-  if (gltf) outputs.add(*gltf, [&](const auto& at) { writeGlb(*sheet, at); });
-  outputs.write();
+  print.title = session::designName(design.name());  // "vase", not "vase.curvefold.json"
+  print.facts = session::coverFacts(whole);
+  std::string noPicture;
+  {
+    py::gil_scoped_release release;
+    if (pdf) print.picture = session::renderFoldedForm(*sheet, noPicture);
+    // All named files or none, as `curvefold export` writes them.
+    OutputSet outputs;
+    if (fold) outputs.add(*fold, [&](const auto& at) { writeFold(*sheet, at); });
+    if (svg) outputs.add(*svg, [&](const auto& at) { writeSvgCreasePattern(*sheet, at); });
+    if (cutSvg)
+      outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
+    if (pdf) outputs.add(*pdf, [&](const auto& at) { writeCreasePatternPdf(*sheet, at, print); });
+    if (obj) outputs.add(*obj, [&](const auto& at) { writeObj(*sheet, at); });
+    if (gltf) outputs.add(*gltf, [&](const auto& at) { writeGlb(*sheet, at); });
+    outputs.write();
+  }
+  // Written all the same, as the command line writes it (which says so on standard error).
+  if (!noPicture.empty() &&
+      PyErr_WarnEx(PyExc_RuntimeWarning,
+                   ("the PDF goes without the picture of the folded form: " + noPicture).c_str(),
+                   1) < 0)
+    throw py::error_already_set();  // warnings made errors (python -W error)
 }
 
 // What a simulation is asked for (Design.simulate and curvefold.simulate), checked by name.
@@ -1003,7 +1013,8 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("svg") = py::none(), py::arg("obj") = py::none(), py::arg("gltf") = py::none(),
            py::arg("pdf") = py::none(), py::arg("cut_svg") = py::none(),
            py::arg("perforate") = py::none(), py::arg("paper") = "a4", py::arg("angles") = false,
-           "Writes the named files, all or none (as `curvefold export`)")
+           "Writes the named files, all or none (as `curvefold export`; the PDF's cover with the "
+           "folded form and the date, a RuntimeWarning when there is no Vulkan device to draw it)")
       .def("fit", &fitDesign, py::arg("target"), py::kw_only(), py::arg("folds") = 6,
            py::arg("time") = py::none(), py::arg("seed") = 1, py::arg("evaluations") = py::none(),
            py::arg("allow_self_intersection") = false,
