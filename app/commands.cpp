@@ -1,10 +1,10 @@
 #include "app/commands.hpp"
 #include "app/design_check.hpp"
 #include "app/document.hpp"
+#include "app/printed_cover.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -68,16 +68,6 @@ std::string formatPoint(const glm::dvec3& p) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "%.6g,%.6g,%.6g", shown(p.x), shown(p.y), shown(p.z));
   return buffer;
-}
-
-// The local date, YYYY-MM-DD, for a printed page.
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char text[16];
-  std::strftime(text, sizeof text, "%Y-%m-%d", &local);
-  return text;
 }
 
 // N of "rotational:N" or "rotational:N:axis" written as parseSymmetry reads it, else nothing.
@@ -381,11 +371,12 @@ void addExportCommand(CLI::App& app) {
                          "); --paper fit prints it on one page");
       print.angles = options->angles;
       print.title = session::designName(options->design);  // "vase", not "vase.curvefold.json"
-      print.facts = {"surface: " + session::surfaceName(design) +
-                         (design.symmetry.empty() ? "" : ", " + design.symmetry),
-                     "folds: " + std::to_string(design.folds.size()), "date: " + today()};
-      PdfPicture picture;
-      if (renderFoldedForm(sheet, picture)) print.picture = std::move(picture);
+      print.facts = session::coverFacts(design);
+      std::string noPicture;
+      print.picture = session::renderFoldedForm(sheet, noPicture);
+      if (!print.picture)
+        std::cerr << "curvefold: the PDF goes without the picture of the folded form: " << noPicture
+                  << "\n";
     }
     // All named files or none: a failing OBJ leaves the SVG as it was.
     OutputSet outputs;

@@ -16,7 +16,6 @@ namespace curvefold {
 struct Design;
 struct Recording;
 struct Sheet;
-struct PdfPicture;
 struct ColorLegend;
 class HeadlessRenderer;
 class VulkanContext;
@@ -79,16 +78,10 @@ void addRecordScriptCommand(CLI::App& app);
 void addSimulateCommand(CLI::App& app);
 // render_commands.cpp: headless Vulkan renders.
 void addRenderCommand(CLI::App& app);
-// The folded form, iso view, for a printed page's cover: false (the reason on standard error)
-// when there is no Vulkan device to render it with.
-bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture);
 // A picture of a quantity coloured on a sheet (fit and distance --png, simulate --color), 1280x720
 // with its legend: the renderer is made first, so a machine without Vulkan fails before any work;
 // writeFieldPng renders one value per vertex and writes the PNG at `at` (an OutputSet's writer).
 std::unique_ptr<HeadlessRenderer> makePictureRenderer();
-// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error (VulkanError naming the first),
-// so tests of the command line catch them too.
-void checkValidation(const VulkanContext& context);
 void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at);

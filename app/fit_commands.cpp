@@ -128,212 +128,247 @@ void writeDistancePng(HeadlessRenderer& renderer, const Sheet& sheet,
   writeFieldPng(renderer, sheet, millimetres, legend, at);
 }
 
+// What `fit` is asked for.
+struct FitCommandOptions {
+  std::string target, output, log, png;
+  SurfaceOptions from;
+  std::size_t folds = 6;
+  double seconds = 60.0;
+  std::uint64_t evaluations = 0;
+  std::string seed = "1";
+  bool allowSelfIntersection = false;
+};
+
+// The options of `fit`, read into `options`.
+void addFitOptions(CLI::App* command, FitCommandOptions& options) {
+  command->add_option("TARGET", options.target, "The shape to fold toward: a triangle mesh (.obj)")
+      ->required();
+  command->add_option("--from", options.from.surface,
+                      "The surface to fold: a name (see `surfaces`) or an .obj file; a name "
+                      "without parameters, or none, is sized (and chosen) to the target");
+  addSurfaceOptions(command, options.from);
+  command->add_option("--folds", options.folds, "At most this many folds (each must help)")
+      ->check(CLI::Range(1, 64));
+  command
+      ->add_option("--time", options.seconds,
+                   "End within this many seconds, unfolding and measuring included (default 60, "
+                   "none with --evaluations alone)")
+      ->check(CLI::Range(0.1, 86400.0));
+  command
+      ->add_option("--evaluations", options.evaluations,
+                   "Score at most about this many candidate folds (a budget free of the clock: "
+                   "the same seed gives the same design on any machine)")
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1'000'000'000'000)));
+  command->add_option(
+      "--seed", options.seed,
+      "Seed of the search (with --evaluations, the same seed gives the same folds)");
+  command->add_flag("--allow-self-intersection", options.allowSelfIntersection,
+                    "Let a fold pass the sheet through itself");
+  command->add_option("--log", options.log,
+                      "Per-fold log (JSON lines) with each fold's distance to the target");
+  command->add_option("--png", options.png,
+                      "Picture of the fitted sheet coloured by its distance to the target "
+                      "(headless Vulkan)");
+  command->add_option("-o,--output", options.output, "Design file to write (*.curvefold.json)")
+      ->required();
+}
+
+// The log entry of the group of folds just committed (the fold and its images); `trianglesBefore`
+// is the count before it, and becomes the count after.
+FoldLogEntry logEntryOfLastGroup(const FoldSession& session, const FitProgress& step,
+                                 std::size_t& trianglesBefore) {
+  const std::vector<FoldRecord>& folds = session.folds();
+  std::size_t first = session.foldCount() - 1;
+  while (first > 0 && folds[first].group != 0 && folds[first - 1].group == folds[first].group)
+    --first;
+  const Sheet& sheet = session.fixed();
+  FoldLogEntry entry;
+  entry.time = step.seconds;
+  entry.fold = first + 1;
+  entry.foldCount = session.foldCount();
+  entry.plane = folds[first].plane;
+  entry.trianglesBefore = trianglesBefore;
+  entry.trianglesAfter = trianglesBefore = sheet.triangleCount();
+  entry.maxEdgeLengthError = maxEdgeLengthError(sheet);
+  entry.selfIntersections = findSelfIntersections(sheet).intersections.size();
+  entry.images = session.foldCount() - first - 1;
+  entry.hausdorff = step.hausdorff;
+  entry.chamfer = step.chamfer;
+  entry.targetDiagonal = step.diagonal;
+  return entry;
+}
+
+// What the finished fit says: why it stopped, what it wrote, and where a fit that does not reach
+// its target is farthest from it.
+void printFitSummary(const FitCommandOptions& options, const FitResult& result,
+                     const Design& design, const FoldSession& session, const FoldFitter& fitter,
+                     bool interrupted, bool timed, std::chrono::steady_clock::time_point started) {
+  const FitProgress& last = result.steps.back();
+  std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
+            << " candidate folds scored\n";
+  if (result.droppedSamples > 0)
+    std::cout << "note: " << result.droppedSamples
+              << " sheet samples fell outside the sheet's development (rounding: its coordinates "
+                 "are large for its size) and were left out of the search\n";
+  if (result.timedOut)
+    std::cout << "the time limit cut the search short: another run may find other folds (give "
+                 "--evaluations to repeat a fit exactly)\n";
+  if (interrupted)
+    std::cout << "interrupted: wrote the best design found so far to " << options.output << " ("
+              << result.steps.size() - 1 << " folds)\n";
+  std::cout << "wrote " << options.output << " (" << result.steps.size() - 1 << " folds"
+            << (design.folds.size() > result.steps.size() - 1
+                    ? ", " + std::to_string(design.folds.size()) + " with images"
+                    : "")
+            << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+  if (!options.log.empty()) std::cout << "wrote " << options.log << "\n";
+  if (!options.png.empty()) std::cout << "wrote " << options.png << "\n";
+  // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
+  // Within --time too: only when what is left exceeds what the start took to read and measure
+  // (more than this lighter measure costs); an interrupted fit says nothing more.
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const bool timeForFarthest = !timed || elapsed + result.steps.front().seconds < options.seconds;
+  if (last.hausdorff > 1e-3 * last.diagonal && !interrupted && timeForFarthest) {
+    const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter.target(), 5000);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
+                  "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
+                  far.onA.x, far.onA.y, far.onA.z, millimetresText(far.fromA).c_str(), far.onB.x,
+                  far.onB.y, far.onB.z, millimetresText(far.fromB).c_str());
+    std::cout << text;
+  }
+  std::cout.flush();
+}
+
+// The fitter of the target, with the search's seed; a target it refuses is a usage error.
+std::unique_ptr<FoldFitter> makeFitter(const FitCommandOptions& options) {
+  FitSettings settings;
+  settings.seed = parseSeed(options.seed);
+  settings.allowSelfIntersection = options.allowSelfIntersection;
+  try {
+    return std::make_unique<FoldFitter>(readObjMesh(options.target), settings);
+  } catch (const InvalidTarget& e) {
+    throw UsageError(options.target + ": " + e.what());
+  }
+}
+
+// The search's progress at each depth.
+void printSearching(std::size_t depth, double distance, double seconds) {
+  char text[96];
+  std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
+                millimetresText(distance).c_str(), seconds);
+  std::cout << text << std::endl;
+}
+
+// The log's last line: how the fit ended (a line of its own kind, after the folds').
+nlohmann::json fitEndLine(const FitResult& result, bool interrupted,
+                          std::chrono::steady_clock::time_point started) {
+  return {{"event", "fit_end"},
+          {"stop", result.stopReason},
+          {"folds", result.steps.size() - 1},
+          {"evaluations", result.evaluations},
+          {"dropped_samples", result.droppedSamples},
+          {"timed_out", result.timedOut},
+          {"out_of_evaluations", result.outOfEvaluations},
+          {"interrupted", interrupted},
+          {"seconds",
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+}
+
+// `fit` as asked: the search, then its outputs all or none, and what it found.
+void runFit(const FitCommandOptions& options, const CLI::App* command) {
+  // The time limit counts from here: reading the target and measuring are part of it.
+  const auto started = std::chrono::steady_clock::now();
+  // Ctrl+C or SIGTERM stops the search; the best design found is still written (below).
+  const InterruptGuard interrupt;
+  // Everything that can be refused is refused before the search (a NaN passes a range check).
+  if (!(options.seconds >= 0.1 && options.seconds <= 86400.0))
+    throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
+                     std::to_string(options.seconds));
+  if (command->count("--png") > 0 && options.png.empty())
+    throw UsageError("--png: needs a file name");
+  refuseOutputsOverInputs({options.output, options.log, options.png},
+                          {{options.target, "the target"},
+                           {hasExtension(options.from.surface, ".obj") ? options.from.surface : "",
+                            "the surface read (--from)"}});
+  const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
+  Design design = startDesign(options.from, command, *fitter, options.output, options.target);
+  const Sheet initial = initialSheet(design, options.output);
+  FoldSession session(initial);
+  if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
+  try {
+    fitter->checkAgainst(initial);
+  } catch (const InvalidTarget& e) {
+    throw UsageError(options.target + ": " + e.what());
+  }
+
+  std::vector<FoldLogEntry> log;
+  std::size_t trianglesBefore = initial.triangleCount();
+  FitOptions fit;
+  fit.maxFolds = options.folds;
+  // --evaluations alone: no clock, so nothing depends on the machine's speed.
+  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
+  fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
+  fit.started = started;
+  fit.maxEvaluations = options.evaluations;
+  fit.cancelled = &InterruptGuard::flag();
+  fit.progress = [&](const FitProgress& step) {
+    if (step.fold == 0) {
+      std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+                << " of the target's " << step.diagonal << " m diagonal" << std::endl;
+      return;
+    }
+    const FoldLogEntry entry = logEntryOfLastGroup(session, step, trianglesBefore);
+    log.push_back(entry);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
+    std::cout << "fold " << step.fold
+              << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
+              << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+              << std::endl;
+  };
+  fit.searching = printSearching;
+  // The outputs, checked before the search: a path that cannot be written fails now.
+  nlohmann::json fitEnd;
+  OutputSet outputs;
+  outputs.add(options.output, [&](const fs::path& at) { saveDesign(design, at); });
+  if (!options.log.empty())
+    outputs.add(options.log, [&](const fs::path& at) {
+      std::string text;
+      for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
+      text += fitEnd.dump() + "\n";
+      writeFileAtomically(at, text);
+    });
+  // The renderer before the search: a machine without Vulkan fails before any work.
+  std::unique_ptr<HeadlessRenderer> renderer;
+  if (!options.png.empty()) {
+    renderer = makePictureRenderer();
+    outputs.add(options.png, [&](const fs::path& at) {
+      const SurfaceDistanceQuery target(fitter->target(), "target");
+      writeDistancePng(*renderer, session.fixed(), target, "distance to the target", at);
+    });
+  }
+  outputs.checkWritable();
+  const FitResult result = fitFolds(session, *fitter, fit);
+  design.folds = result.folds;
+  const bool interrupted = InterruptGuard::flag().load();
+  fitEnd = fitEndLine(result, interrupted, started);
+
+  outputs.write();
+  printFitSummary(options, result, design, session, *fitter, interrupted, timed, started);
+  if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
+}
+
 }  // namespace
 
 void addFitCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fit", "Find reflection folds that bring a surface close to a target shape (an OBJ)");
-  struct Options {
-    std::string target, output, log, png;
-    SurfaceOptions from;
-    std::size_t folds = 6;
-    double seconds = 60.0;
-    std::uint64_t evaluations = 0;
-    std::string seed = "1";
-    bool allowSelfIntersection = false;
-  };
-  auto options = std::make_shared<Options>();
-  command->add_option("TARGET", options->target, "The shape to fold toward: a triangle mesh (.obj)")
-      ->required();
-  command->add_option("--from", options->from.surface,
-                      "The surface to fold: a name (see `surfaces`) or an .obj file; a name "
-                      "without parameters, or none, is sized (and chosen) to the target");
-  addSurfaceOptions(command, options->from);
-  command->add_option("--folds", options->folds, "At most this many folds (each must help)")
-      ->check(CLI::Range(1, 64));
-  command
-      ->add_option("--time", options->seconds,
-                   "End within this many seconds, unfolding and measuring included (default 60, "
-                   "none with --evaluations alone)")
-      ->check(CLI::Range(0.1, 86400.0));
-  command
-      ->add_option("--evaluations", options->evaluations,
-                   "Score at most about this many candidate folds (a budget free of the clock: "
-                   "the same seed gives the same design on any machine)")
-      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1'000'000'000'000)));
-  command->add_option(
-      "--seed", options->seed,
-      "Seed of the search (with --evaluations, the same seed gives the same folds)");
-  command->add_flag("--allow-self-intersection", options->allowSelfIntersection,
-                    "Let a fold pass the sheet through itself");
-  command->add_option("--log", options->log,
-                      "Per-fold log (JSON lines) with each fold's distance to the target");
-  command->add_option("--png", options->png,
-                      "Picture of the fitted sheet coloured by its distance to the target "
-                      "(headless Vulkan)");
-  command->add_option("-o,--output", options->output, "Design file to write (*.curvefold.json)")
-      ->required();
-  command->callback([options, command] {
-    // The time limit counts from here: reading the target and measuring are part of it.
-    const auto started = std::chrono::steady_clock::now();
-    // Ctrl+C or SIGTERM stops the search; the best design found is still written (below).
-    const InterruptGuard interrupt;
-    // Everything that can be refused is refused before the search (a NaN passes a range check).
-    if (!(options->seconds >= 0.1 && options->seconds <= 86400.0))
-      throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
-                       std::to_string(options->seconds));
-    if (command->count("--png") > 0 && options->png.empty())
-      throw UsageError("--png: needs a file name");
-    refuseOutputsOverInputs(
-        {options->output, options->log, options->png},
-        {{options->target, "the target"},
-         {hasExtension(options->from.surface, ".obj") ? options->from.surface : "",
-          "the surface read (--from)"}});
-    FitSettings settings;
-    settings.seed = parseSeed(options->seed);
-    settings.allowSelfIntersection = options->allowSelfIntersection;
-    std::unique_ptr<FoldFitter> fitter;
-    try {
-      fitter = std::make_unique<FoldFitter>(readObjMesh(options->target), settings);
-    } catch (const InvalidTarget& e) {
-      throw UsageError(options->target + ": " + e.what());
-    }
-    Design design = startDesign(options->from, command, *fitter, options->output, options->target);
-    const Sheet initial = initialSheet(design, options->output);
-    FoldSession session(initial);
-    if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
-    try {
-      fitter->checkAgainst(initial);
-    } catch (const InvalidTarget& e) {
-      throw UsageError(options->target + ": " + e.what());
-    }
-
-    std::vector<FoldLogEntry> log;
-    std::size_t trianglesBefore = initial.triangleCount();
-    FitOptions fit;
-    fit.maxFolds = options->folds;
-    // --evaluations alone: no clock, so nothing depends on the machine's speed.
-    const bool timed = command->count("--time") > 0 || options->evaluations == 0;
-    fit.seconds = timed ? options->seconds : std::numeric_limits<double>::infinity();
-    fit.started = started;
-    fit.maxEvaluations = options->evaluations;
-    fit.cancelled = &InterruptGuard::flag();
-    fit.progress = [&](const FitProgress& step) {
-      if (step.fold == 0) {
-        std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
-                  << " of the target's " << step.diagonal << " m diagonal" << std::endl;
-        return;
-      }
-      // The group just committed: the fold and its images.
-      const std::vector<FoldRecord>& folds = session.folds();
-      std::size_t first = session.foldCount() - 1;
-      while (first > 0 && folds[first].group != 0 && folds[first - 1].group == folds[first].group)
-        --first;
-      const Sheet& sheet = session.fixed();
-      FoldLogEntry entry;
-      entry.time = step.seconds;
-      entry.fold = first + 1;
-      entry.foldCount = session.foldCount();
-      entry.plane = folds[first].plane;
-      entry.trianglesBefore = trianglesBefore;
-      entry.trianglesAfter = trianglesBefore = sheet.triangleCount();
-      entry.maxEdgeLengthError = maxEdgeLengthError(sheet);
-      entry.selfIntersections = findSelfIntersections(sheet).intersections.size();
-      entry.images = session.foldCount() - first - 1;
-      entry.hausdorff = step.hausdorff;
-      entry.chamfer = step.chamfer;
-      entry.targetDiagonal = step.diagonal;
-      log.push_back(entry);
-      char seconds[32];
-      std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
-      std::cout << "fold " << step.fold
-                << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
-                << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
-                << std::endl;
-    };
-    fit.searching = [](std::size_t depth, double distance, double seconds) {
-      char text[96];
-      std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
-                    millimetresText(distance).c_str(), seconds);
-      std::cout << text << std::endl;
-    };
-    // The outputs, checked before the search: a path that cannot be written fails now.
-    nlohmann::json fitEnd;
-    OutputSet outputs;
-    outputs.add(options->output, [&](const fs::path& at) { saveDesign(design, at); });
-    if (!options->log.empty())
-      outputs.add(options->log, [&](const fs::path& at) {
-        std::string text;
-        for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
-        text += fitEnd.dump() + "\n";
-        writeFileAtomically(at, text);
-      });
-    // The renderer before the search: a machine without Vulkan fails before any work.
-    std::unique_ptr<HeadlessRenderer> renderer;
-    if (!options->png.empty()) {
-      renderer = makePictureRenderer();
-      outputs.add(options->png, [&](const fs::path& at) {
-        const SurfaceDistanceQuery target(fitter->target(), "target");
-        writeDistancePng(*renderer, session.fixed(), target, "distance to the target", at);
-      });
-    }
-    outputs.checkWritable();
-    const FitResult result = fitFolds(session, *fitter, fit);
-    design.folds = result.folds;
-    const bool interrupted = InterruptGuard::flag().load();
-    // The log's last line: how the fit ended (a line of its own kind, after the folds').
-    fitEnd = {{"event", "fit_end"},
-              {"stop", result.stopReason},
-              {"folds", result.steps.size() - 1},
-              {"evaluations", result.evaluations},
-              {"dropped_samples", result.droppedSamples},
-              {"timed_out", result.timedOut},
-              {"out_of_evaluations", result.outOfEvaluations},
-              {"interrupted", interrupted},
-              {"seconds",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
-
-    outputs.write();
-    const FitProgress& last = result.steps.back();
-    std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
-              << " candidate folds scored\n";
-    if (result.droppedSamples > 0)
-      std::cout << "note: " << result.droppedSamples
-                << " sheet samples fell outside the sheet's development (rounding: its coordinates "
-                   "are large for its size) and were left out of the search\n";
-    if (result.timedOut)
-      std::cout << "the time limit cut the search short: another run may find other folds (give "
-                   "--evaluations to repeat a fit exactly)\n";
-    if (interrupted)
-      std::cout << "interrupted: wrote the best design found so far to " << options->output << " ("
-                << result.steps.size() - 1 << " folds)\n";
-    std::cout << "wrote " << options->output << " (" << result.steps.size() - 1 << " folds"
-              << (design.folds.size() > result.steps.size() - 1
-                      ? ", " + std::to_string(design.folds.size()) + " with images"
-                      : "")
-              << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
-    if (!options->log.empty()) std::cout << "wrote " << options->log << "\n";
-    if (!options->png.empty()) std::cout << "wrote " << options->png << "\n";
-    // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
-    // Within --time too: only when what is left exceeds what the start took to read and measure
-    // (more than this lighter measure costs); an interrupted fit says nothing more.
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const bool timeForFarthest =
-        !timed || elapsed + result.steps.front().seconds < options->seconds;
-    if (last.hausdorff > 1e-3 * last.diagonal && !interrupted && timeForFarthest) {
-      const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter->target(), 5000);
-      char text[256];
-      std::snprintf(text, sizeof text,
-                    "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
-                    "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
-                    far.onA.x, far.onA.y, far.onA.z, millimetresText(far.fromA).c_str(), far.onB.x,
-                    far.onB.y, far.onB.z, millimetresText(far.fromB).c_str());
-      std::cout << text;
-    }
-    std::cout.flush();
-    if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
-  });
+  auto options = std::make_shared<FitCommandOptions>();
+  addFitOptions(command, *options);
+  command->callback([options, command] { runFit(*options, command); });
 }
 
 void addDistanceCommand(CLI::App& app) {

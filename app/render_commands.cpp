@@ -18,8 +18,8 @@
 
 #include "app/commands.hpp"
 #include "app/interaction_scene.hpp"
+#include "app/printed_cover.hpp"
 #include "app/studio_replay.hpp"
-#include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -82,16 +82,6 @@ void writePng(const fs::path& path, const RgbaImage& image) {
 
 }  // namespace
 
-// With CURVEFOLD_VK_VALIDATION=1 a validation message is an error, so tests of the command line
-// catch them too.
-void checkValidation(const VulkanContext& context) {
-  if (context.validationMessageCount() == 0) return;
-  std::string first = context.validationMessages().front();
-  first = first.substr(0, first.find('\n'));
-  throw VulkanError(std::to_string(context.validationMessageCount()) +
-                    " Vulkan validation messages, the first: " + first);
-}
-
 std::unique_ptr<HeadlessRenderer> makePictureRenderer() {
   HeadlessOptions options;
   options.width = 1280;
@@ -103,7 +93,7 @@ void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at) {
   const RgbaImage image = renderFieldPicture(renderer, sheet, vertexValues, legend);
-  checkValidation(renderer.context());
+  session::checkValidation(renderer.context());
   writePng(at, image);
 }
 
@@ -171,7 +161,7 @@ class ReplayFrameWriter {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06zu.png", index);
       const RgbaImage image = renderer_->render(scene);
-      checkValidation(renderer_->context());
+      session::checkValidation(renderer_->context());
       try {
         writePng(stage_ / name, image);
       } catch (const FileError& e) {
@@ -224,27 +214,6 @@ std::size_t writeReplayFrames(ReplayFrameWriter& writer, const Recording& record
 
 void commitReplayFrames(ReplayFrameWriter& writer) {
   writer.commit();
-}
-
-bool renderFoldedForm(const Sheet& sheet, PdfPicture& picture) {
-  try {
-    HeadlessOptions options;
-    options.width = 1200;
-    options.height = 800;
-    HeadlessRenderer renderer(options);
-    const RgbaImage image = renderer.render(
-        sceneForSheet(sheet, ViewPreset::Iso, float(options.width) / float(options.height), false));
-    checkValidation(renderer.context());
-    picture = {image.width, image.height, image.pixels};
-    return true;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "curvefold: the PDF goes without the picture of the folded form: out of memory\n";
-    return false;
-  } catch (const std::exception& e) {
-    std::cerr << "curvefold: the PDF goes without the picture of the folded form: " << e.what()
-              << "\n";
-    return false;
-  }
 }
 
 void addRenderCommand(CLI::App& app) {
@@ -322,7 +291,7 @@ void addRenderCommand(CLI::App& app) {
     } else {
       image = renderer.render(scene);
     }
-    checkValidation(renderer.context());
+    session::checkValidation(renderer.context());
     writePng(options->png, image);
     statusFor({options->png}) << "wrote " << options->png << " (" << size.width << "x"
                               << size.height << ", " << sheet.triangleCount() << " triangles, "

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/commands.hpp"
+#include "app/printed_cover.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
@@ -435,7 +436,7 @@ void addSimulateCommand(CLI::App& app) {
         fields.push_back(stateField(color, model, state, amount));
       if (gif->count()) gifStates.push_back(state.positions);
     }
-    if (gpuSolver) checkValidation(renderer ? renderer->context() : *gpuContext);
+    if (gpuSolver) session::checkValidation(renderer ? renderer->context() : *gpuContext);
     const ColorLegend legend =
         color == StateColor::None ? ColorLegend{} : stateLegend(color, fields);
 

@@ -25,6 +25,7 @@
 #include "app/design_check.hpp"
 #include "app/document.hpp"
 #include "app/guarded_design.hpp"
+#include "app/printed_cover.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
@@ -427,24 +428,33 @@ void exportDesign(const PyDesign& design, const py::object& foldArg, const py::o
     sheet = design.snapshot(guard.lock);
     whole = design.design(guard.lock);
   }
+  // The cover `curvefold export --pdf` prints: the facts with the date, the folded form.
   PdfOptions print;
   print.paper = *paperSize;
   print.angles = angles;
-  print.title = design.name();
-  print.facts = {"surface: " + session::surfaceName(whole) +
-                     (whole.symmetry.empty() ? "" : ", " + whole.symmetry),
-                 "folds: " + std::to_string(whole.folds.size())};
-  py::gil_scoped_release release;
-  // All named files or none, as `curvefold export` writes them.
-  OutputSet outputs;
-  if (fold) outputs.add(*fold, [&](const auto& at) { writeFold(*sheet, at); });
-  if (svg) outputs.add(*svg, [&](const auto& at) { writeSvgCreasePattern(*sheet, at); });
-  if (cutSvg)
-    outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
-  if (pdf) outputs.add(*pdf, [&](const auto& at) { writeCreasePatternPdf(*sheet, at, print); });
-  if (obj) outputs.add(*obj, [&](const auto& at) { writeObj(*sheet, at); });
-  if (gltf) outputs.add(*gltf, [&](const auto& at) { writeGlb(*sheet, at); });
-  outputs.write();
+  print.title = session::designName(design.name());  // "vase", not "vase.curvefold.json"
+  print.facts = session::coverFacts(whole);
+  std::string noPicture;
+  {
+    py::gil_scoped_release release;
+    if (pdf) print.picture = session::renderFoldedForm(*sheet, noPicture);
+    // All named files or none, as `curvefold export` writes them.
+    OutputSet outputs;
+    if (fold) outputs.add(*fold, [&](const auto& at) { writeFold(*sheet, at); });
+    if (svg) outputs.add(*svg, [&](const auto& at) { writeSvgCreasePattern(*sheet, at); });
+    if (cutSvg)
+      outputs.add(*cutSvg, [&](const auto& at) { writeCutterSvg(*sheet, at, perforation); });
+    if (pdf) outputs.add(*pdf, [&](const auto& at) { writeCreasePatternPdf(*sheet, at, print); });
+    if (obj) outputs.add(*obj, [&](const auto& at) { writeObj(*sheet, at); });
+    if (gltf) outputs.add(*gltf, [&](const auto& at) { writeGlb(*sheet, at); });
+    outputs.write();
+  }
+  // Written all the same, as the command line writes it (which says so on standard error).
+  if (!noPicture.empty() &&
+      PyErr_WarnEx(PyExc_RuntimeWarning,
+                   ("the PDF goes without the picture of the folded form: " + noPicture).c_str(),
+                   1) < 0)
+    throw py::error_already_set();  // warnings made errors (python -W error)
 }
 
 // What a simulation is asked for (Design.simulate and curvefold.simulate), checked by name.
@@ -797,21 +807,8 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   return report;
 }
 
-}  // namespace
-}  // namespace curvefold::python
-
-PYBIND11_MODULE(_curvefold, m) {
-  using namespace curvefold;
-  using namespace curvefold::python;
-  m.doc() = "curvefold: curved folding by reflection (the C++ engine)";
-
-  // Now, at import, with the GIL held: pybind11 2.10's npy_api::get() (the first numpy array)
-  // imports numpy inside a function-local static's initialisation guard, so two threads making
-  // their first array at once deadlock, one holding the GIL and waiting on the guard, the other
-  // holding the guard and waiting for the GIL (fixed upstream by gil_safe_call_once, pybind11
-  // PR 4877, which Debian 12's pybind11 lacks).
-  py::detail::npy_api::get();
-
+// The module's exceptions: ArgumentError, and the engine's one-line errors as Python's own.
+void defineErrors(py::module_& m) {
   // An argument of the wrong type: both a ValueError (the module's rule: a bad argument is
   // ValueError naming its parameter) and a TypeError (Python's), one line either way. Kept for the
   // interpreter's life (a static py::object would be released after it ends).
@@ -851,7 +848,10 @@ PYBIND11_MODULE(_curvefold, m) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
     }
   });
+}
 
+// What a fold and a check return.
+void defineResults(py::module_& m) {
   py::class_<FoldResult>(m, "FoldResult", "What one fold did.")
       .def_readonly("folded", &FoldResult::folded,
                     "False when the drop point lay within the shortest drag (nothing folded)")
@@ -904,8 +904,11 @@ PYBIND11_MODULE(_curvefold, m) {
         return "<curvefold.CheckResult " + std::string(check.passed() ? "passed" : "failed: ") +
                check.firstFailure() + ">";
       });
+}
 
-  py::class_<PyDesign>(m, "Design", "A design: an initial surface, its folds and a symmetry.")
+// Design's making and editing: new, from_obj, load, save, simulate, fold, undo, redo.
+void defineDesignEditing(py::class_<PyDesign>& design) {
+  design
       .def_static("new", &newDesign, py::arg("surface"), py::kw_only(),
                   py::arg("symmetry") = py::none(),
                   "A design from a catalogue surface: Design.new('cylinder', radius=0.05, "
@@ -964,7 +967,12 @@ PYBIND11_MODULE(_curvefold, m) {
             DesignGuard guard(d);
             return d.session(guard.lock).redo();
           },
-          "Makes the last undone fold again; False when there is none")
+          "Makes the last undone fold again; False when there is none");
+}
+
+// Design's reading and outputs: folds, surface, check, arrays, exports, fit, render.
+void defineDesignReading(py::class_<PyDesign>& design) {
+  design
       .def_property_readonly("folds", &foldsOf,
                              "The folds, each a dict: seed, plane_point, plane_normal, grabbed, "
                              "target, group")
@@ -1003,7 +1011,8 @@ PYBIND11_MODULE(_curvefold, m) {
            py::arg("svg") = py::none(), py::arg("obj") = py::none(), py::arg("gltf") = py::none(),
            py::arg("pdf") = py::none(), py::arg("cut_svg") = py::none(),
            py::arg("perforate") = py::none(), py::arg("paper") = "a4", py::arg("angles") = false,
-           "Writes the named files, all or none (as `curvefold export`)")
+           "Writes the named files, all or none (as `curvefold export`; the PDF's cover with the "
+           "folded form and the date, a RuntimeWarning when there is no Vulkan device to draw it)")
       .def("fit", &fitDesign, py::arg("target"), py::kw_only(), py::arg("folds") = 6,
            py::arg("time") = py::none(), py::arg("seed") = 1, py::arg("evaluations") = py::none(),
            py::arg("allow_self_intersection") = false,
@@ -1024,7 +1033,10 @@ PYBIND11_MODULE(_curvefold, m) {
                std::to_string(whole.folds.size()) + " folds" +
                (d.symmetry().empty() ? "" : ", " + d.symmetry()) + ">";
       });
+}
 
+// The module's functions: distance, simulate, surfaces, replay (and the benchmark's timer).
+void defineFunctions(py::module_& m) {
   // For the overhead benchmark (python/bench/fold_overhead.py): the same fold as Design.fold,
   // timed in C++ without the binding, each taken back; seconds per fold.
   m.def(
@@ -1076,4 +1088,28 @@ PYBIND11_MODULE(_curvefold, m) {
         return PyDesign(result.design, recording.string(), recording);
       },
       py::arg("recording"), "The design a recording (*.jsonl) makes, replayed headless");
+}
+
+}  // namespace
+}  // namespace curvefold::python
+
+PYBIND11_MODULE(_curvefold, m) {
+  using namespace curvefold;
+  using namespace curvefold::python;
+  m.doc() = "curvefold: curved folding by reflection (the C++ engine)";
+
+  // Now, at import, with the GIL held: pybind11 2.10's npy_api::get() (the first numpy array)
+  // imports numpy inside a function-local static's initialisation guard, so two threads making
+  // their first array at once deadlock, one holding the GIL and waiting on the guard, the other
+  // holding the guard and waiting for the GIL (fixed upstream by gil_safe_call_once, pybind11
+  // PR 4877, which Debian 12's pybind11 lacks).
+  py::detail::npy_api::get();
+
+  defineErrors(m);
+  defineResults(m);
+  py::class_<PyDesign> design(m, "Design",
+                              "A design: an initial surface, its folds and a symmetry.");
+  defineDesignEditing(design);
+  defineDesignReading(design);
+  defineFunctions(m);
 }

@@ -348,17 +348,11 @@ class ScriptReader : public JsonReader {
   }
 };
 
-// Runs the script; with a sink the frames stream out (`onHeader` first) and the returned
-// recording holds none.
-Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames,
-                           const std::function<void(const RecordingHeader&)>& onHeader = nullptr,
-                           const GestureRecorder::FrameSink& sink = nullptr,
-                           GestureStream* stream = nullptr,
-                           const GestureWorldFactory& world = nullptr) {
-  const ScriptReader reader(name);
-  const nlohmann::json document = parseJsonText(text, name);
-  reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
-
+// The recording's header from the script's: source, rate, handedness, the surface (built here, so
+// a parameter the engine does not know is refused before any symmetry is checked against it),
+// the symmetry, the sheet's frame and a studio script's recent designs.
+RecordingHeader readScriptHeader(const ScriptReader& reader, const nlohmann::json& document,
+                                 const std::string& name) {
   RecordingHeader header;
   header.source = reader.text(document, "source", "script");
   if (header.source != "script" && header.source != "desktop" && header.source != "synthetic")
@@ -406,11 +400,14 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
             reader.string((*recent)[k], JsonReader::item("studio.recent", k)));
     }
   }
+  return header;
+}
 
-  // The frames each gesture makes at least (its duration at the rate; a drag adds its approach),
-  // summed before any frame is made: a script far over the limit (200 waits of 600 s) is refused
-  // at once, not after generating a million frames. Values out of range are the pass below's.
-  const nlohmann::json& all = reader.array(reader.member(document, "gestures", ""), "gestures");
+// The frames each gesture makes at least (its duration at the rate; a drag adds its approach),
+// summed before any frame is made: a script far over the limit (200 waits of 600 s) is refused
+// at once, not after generating a million frames. Values out of range are the gestures' pass's.
+void refuseTooManyFrames(const ScriptReader& reader, const nlohmann::json& all, double rate,
+                         std::size_t maxFrames) {
   double leastFrames = 0.0;
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (!all[i].is_object() || all[i].size() != 1) continue;
@@ -430,13 +427,106 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
       continue;
     }
     if (!(seconds >= 0.0 && seconds <= kMaxGestureSeconds)) continue;
-    leastFrames += framesOf(seconds, header.rate);
+    leastFrames += framesOf(seconds, rate);
     if (leastFrames + 2.0 > static_cast<double>(maxFrames)) {
       const std::string kindText = kind.size() <= kJsonExcerptLength ? kind : quotedExcerpt(kind);
       reader.fail("gesture " + std::to_string(i + 1) + " (" + kindText + ")",
                   tooManyFrames(maxFrames));
     }
   }
+}
+
+// How long a press or click is held: "hold" seconds, or a person's click; a click too short for
+// a runtime to see is warned of.
+double holdOf(const ScriptReader& reader, const nlohmann::json& value, const std::string& at,
+              double rate, std::vector<std::string>& warnings) {
+  reader.object(value, at);
+  const double hold = reader.number(value, "hold", at, kClickSeconds);
+  if (!(hold > 0.0 && hold <= kMaxClickSeconds))
+    reader.fail(at, "\"hold\" must lie in (0, 10] seconds");
+  const double held = framesOf(hold, rate) / rate;
+  if (held < kShortestSeenClickSeconds - 1e-9)
+    warnings.push_back(at + ": a click held " + std::to_string(std::lround(held * 1000.0)) +
+                       " ms may be missed; a runtime syncing 20 times a second sees presses "
+                       "held 100 ms or more");
+  return hold;
+}
+
+// One gesture, `kind` with its `value`, made by the recorder (`at` names it in messages).
+void playGesture(const ScriptReader& reader, GestureRecorder& recorder,
+                 const RecordingHeader& header, const std::string& kind,
+                 const nlohmann::json& value, const std::string& at,
+                 std::vector<std::string>& warnings) {
+  if (kind == "wait") {
+    if (!value.is_number() || !(value.get<double>() >= 0.0) ||
+        value.get<double>() > kMaxGestureSeconds)
+      reader.fail(at, "must be a number of seconds in [0, 600]");
+    recorder.wait(value.get<double>());
+  } else if (kind == "turn_sheet") {
+    recorder.turnSheet(reader.turn(value, at), reader.duration(value, at, 0.5));
+  } else if (kind == "move_sheet") {
+    recorder.moveSheet(reader.vector(value, "by", at), reader.duration(value, at, 0.5));
+  } else if (kind == "scale_sheet") {
+    recorder.scaleSheet(reader.number(value, "by", at), reader.duration(value, at, 0.8));
+  } else if (kind == "sheet_hand") {
+    const nlohmann::json* clutch = reader.optionalMember(value, "clutch", at);
+    recorder.moveSheetHand(reader.pose(reader.member(value, "to", at), at + ".to"),
+                           reader.duration(value, at, 0.5),
+                           clutch && reader.boolean(*clutch, at + ".clutch"));
+  } else if (kind == "drag") {
+    reader.object(value, at);
+    std::vector<glm::dvec3> path;
+    if (const nlohmann::json* via = reader.optionalMember(value, "via", at)) {
+      reader.array(*via, at + ".via");
+      for (std::size_t k = 0; k < via->size(); ++k)
+        path.push_back(reader.vector3((*via)[k], JsonReader::item(at + ".via", k)));
+    }
+    path.push_back(reader.vector(value, "to", at));
+    std::optional<SheetTurn> turn;
+    if (const nlohmann::json* during = reader.optionalMember(value, "turn_sheet", at))
+      turn = reader.turn(*during, at + ".turn_sheet");
+    recorder.drag(reader.vector(value, "grab", at), path, reader.duration(value, at, 1.0), turn);
+  } else if (kind == "undo") {
+    recorder.press(Button::Undo, holdOf(reader, value, at, header.rate, warnings));
+  } else if (kind == "redo") {
+    recorder.press(Button::Redo, holdOf(reader, value, at, header.rate, warnings));
+  } else if (kind == "cancel") {
+    recorder.press(Button::Cancel, holdOf(reader, value, at, header.rate, warnings));
+  } else if (kind == "switch_hands") {
+    recorder.press(Button::SwitchHands, holdOf(reader, value, at, header.rate, warnings));
+  } else if (kind == "toggle_panel" && header.studio) {
+    recorder.press(Button::Panel, holdOf(reader, value, at, header.rate, warnings));
+  } else if (kind == "point_at" && header.studio) {
+    reader.object(value, at);
+    const nlohmann::json* click = reader.optionalMember(value, "click", at);
+    const bool clicks = !click || reader.boolean(*click, at + ".click");
+    const double hold = clicks ? holdOf(reader, value, at, header.rate, warnings) : kClickSeconds;
+    recorder.pointAt(reader.string(reader.member(value, "item", at), at + ".item"),
+                     reader.duration(value, at, 0.5), clicks, hold);
+  } else if (kind == "toggle_panel" || kind == "point_at") {
+    reader.fail(at, "needs a studio script (\"studio\":{} in its header)");
+  } else {
+    reader.fail(at,
+                "unknown gesture (wait, turn_sheet, move_sheet, scale_sheet, sheet_hand, "
+                "drag, undo, redo, cancel, switch_hands, point_at, toggle_panel)");
+  }
+}
+
+// Runs the script; with a sink the frames stream out (`onHeader` first) and the returned
+// recording holds none.
+Recording runGestureScript(std::string_view text, const std::string& name, std::size_t maxFrames,
+                           const std::function<void(const RecordingHeader&)>& onHeader = nullptr,
+                           const GestureRecorder::FrameSink& sink = nullptr,
+                           GestureStream* stream = nullptr,
+                           const GestureWorldFactory& world = nullptr) {
+  const ScriptReader reader(name);
+  const nlohmann::json document = parseJsonText(text, name);
+  reader.formatAndVersion(document, "curvefold-gesture-script", 1, "curvefold gesture script");
+
+  const RecordingHeader header = readScriptHeader(reader, document, name);
+
+  refuseTooManyFrames(reader, reader.array(reader.member(document, "gestures", ""), "gestures"),
+                      header.rate, maxFrames);
 
   if (onHeader) onHeader(header);
   std::optional<GestureRecorder> made;
@@ -447,19 +537,6 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
   }
   GestureRecorder& recorder = *made;
   std::vector<std::string> warnings;
-  // How long a press or click is held: "hold" seconds, or a person's click.
-  const auto holdOf = [&](const nlohmann::json& value, const std::string& at) {
-    reader.object(value, at);
-    const double hold = reader.number(value, "hold", at, kClickSeconds);
-    if (!(hold > 0.0 && hold <= kMaxClickSeconds))
-      reader.fail(at, "\"hold\" must lie in (0, 10] seconds");
-    const double held = framesOf(hold, header.rate) / header.rate;
-    if (held < kShortestSeenClickSeconds - 1e-9)
-      warnings.push_back(at + ": a click held " + std::to_string(std::lround(held * 1000.0)) +
-                         " ms may be missed; a runtime syncing 20 times a second sees presses "
-                         "held 100 ms or more");
-    return hold;
-  };
   const nlohmann::json* gestures =
       &reader.array(reader.member(document, "gestures", ""), "gestures");
   for (std::size_t i = 0; i < gestures->size(); ++i) {
@@ -473,60 +550,7 @@ Recording runGestureScript(std::string_view text, const std::string& name, std::
     const std::string at =
         where + " (" + (kind.size() <= kJsonExcerptLength ? kind : quotedExcerpt(kind)) + ")";
     try {
-      if (kind == "wait") {
-        if (!value.is_number() || !(value.get<double>() >= 0.0) ||
-            value.get<double>() > kMaxGestureSeconds)
-          reader.fail(at, "must be a number of seconds in [0, 600]");
-        recorder.wait(value.get<double>());
-      } else if (kind == "turn_sheet") {
-        recorder.turnSheet(reader.turn(value, at), reader.duration(value, at, 0.5));
-      } else if (kind == "move_sheet") {
-        recorder.moveSheet(reader.vector(value, "by", at), reader.duration(value, at, 0.5));
-      } else if (kind == "scale_sheet") {
-        recorder.scaleSheet(reader.number(value, "by", at), reader.duration(value, at, 0.8));
-      } else if (kind == "sheet_hand") {
-        const nlohmann::json* clutch = reader.optionalMember(value, "clutch", at);
-        recorder.moveSheetHand(reader.pose(reader.member(value, "to", at), at + ".to"),
-                               reader.duration(value, at, 0.5),
-                               clutch && reader.boolean(*clutch, at + ".clutch"));
-      } else if (kind == "drag") {
-        reader.object(value, at);
-        std::vector<glm::dvec3> path;
-        if (const nlohmann::json* via = reader.optionalMember(value, "via", at)) {
-          reader.array(*via, at + ".via");
-          for (std::size_t k = 0; k < via->size(); ++k)
-            path.push_back(reader.vector3((*via)[k], JsonReader::item(at + ".via", k)));
-        }
-        path.push_back(reader.vector(value, "to", at));
-        std::optional<SheetTurn> turn;
-        if (const nlohmann::json* during = reader.optionalMember(value, "turn_sheet", at))
-          turn = reader.turn(*during, at + ".turn_sheet");
-        recorder.drag(reader.vector(value, "grab", at), path, reader.duration(value, at, 1.0),
-                      turn);
-      } else if (kind == "undo") {
-        recorder.press(Button::Undo, holdOf(value, at));
-      } else if (kind == "redo") {
-        recorder.press(Button::Redo, holdOf(value, at));
-      } else if (kind == "cancel") {
-        recorder.press(Button::Cancel, holdOf(value, at));
-      } else if (kind == "switch_hands") {
-        recorder.press(Button::SwitchHands, holdOf(value, at));
-      } else if (kind == "toggle_panel" && header.studio) {
-        recorder.press(Button::Panel, holdOf(value, at));
-      } else if (kind == "point_at" && header.studio) {
-        reader.object(value, at);
-        const nlohmann::json* click = reader.optionalMember(value, "click", at);
-        const bool clicks = !click || reader.boolean(*click, at + ".click");
-        const double hold = clicks ? holdOf(value, at) : kClickSeconds;
-        recorder.pointAt(reader.string(reader.member(value, "item", at), at + ".item"),
-                         reader.duration(value, at, 0.5), clicks, hold);
-      } else if (kind == "toggle_panel" || kind == "point_at") {
-        reader.fail(at, "needs a studio script (\"studio\":{} in its header)");
-      } else {
-        reader.fail(at,
-                    "unknown gesture (wait, turn_sheet, move_sheet, scale_sheet, sheet_hand, "
-                    "drag, undo, redo, cancel, switch_hands, point_at, toggle_panel)");
-      }
+      playGesture(reader, recorder, header, kind, value, at, warnings);
     } catch (const GestureError& e) {
       if (std::string(e.what()).rfind(name, 0) == 0) throw;
       reader.fail(at, e.what());

@@ -496,6 +496,67 @@ std::vector<FoldSuggestion> makeSuggestions(FoldSession& session, const std::vec
   return suggestions;
 }
 
+// What folding the evaluation copy by a drag needs.
+struct DragFolding {
+  const EvaluationCopy& copy;
+  const SymmetricFolder* symmetric;  // a symmetric design's, or null
+  double minimumDrag = 0.0;
+  bool allowCrossing = false;
+};
+
+// The copy folded by one drag in the worker's scratch, its samples and their normals left in
+// worker.cloud and worker.normals (the copy itself restored); false when the drag folds nothing
+// or, unless allowed, passes the sheet through itself.
+bool foldCopy(const DragFolding& folding, Worker& worker, std::uint32_t sample,
+              const glm::dvec3& drop) {
+  const EvaluationCopy& copy = folding.copy;
+  if (!worker.ready) {
+    worker.out = copy.sheet;
+    worker.workspace.clear();
+    worker.ready = true;
+    worker.cloud.points.resize(copy.samples.size());
+    worker.normals.resize(copy.samples.size());
+    if (!folding.allowCrossing) worker.watch.begin(copy.sheet);
+  }
+  const VertexIndex seed = copy.samples[sample];
+  const glm::dvec3 grab = copy.sheet.positions[seed];
+  if (!(glm::distance(grab, drop) > folding.minimumDrag)) return false;
+  const ReflectionPlane plane = bisectorPlane(grab, drop);
+  worker.workspace.apply(copy.sheet, copy.adjacency, seed, plane, copy.epsilon, worker.out);
+  if (!folding.allowCrossing) {
+    worker.watch.update(worker.out, worker.workspace.changes(), plane,
+                        worker.workspace.reflectedTriangles(copy.adjacency));
+    if (worker.watch.pairCount() > 0) {
+      worker.workspace.restore(copy.sheet, worker.out);
+      return false;
+    }
+  }
+  // A symmetric design's fold brings its images (previewed on the copy as a display previews
+  // them; a sample they move keeps its normal, near enough for the distance).
+  const Sheet* folded = &worker.out;
+  if (folding.symmetric) {
+    worker.withImages = worker.out;
+    FoldRecord fold;
+    fold.seed = copy.sheet.development[seed];
+    fold.plane = plane;
+    fold.grabbed = grab;
+    fold.target = drop;
+    worker.reflected.clear();
+    folding.symmetric->previewImages(copy.sheet, worker.withImages, fold, worker.reflected);
+    folded = &worker.withImages;
+  }
+  for (std::size_t i = 0; i < copy.samples.size(); ++i) {
+    const glm::dvec3& y = folded->positions[copy.samples[i]];
+    glm::dvec3 n = copy.normals[i];
+    if (worker.out.positions[copy.samples[i]] != copy.sheet.positions[copy.samples[i]])
+      n -= 2.0 * glm::dot(n, plane.normal) * plane.normal;
+    worker.cloud.points[i] = y;
+    worker.normals[i] = n;
+  }
+  worker.workspace.restore(copy.sheet, worker.out);
+  return true;
+}
+
 }  // namespace
 
 std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_t count,
@@ -511,54 +572,12 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   if (copy.samples.empty() || deadline.givesUp()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
-  const SymmetricFolder* symmetric = session.symmetricFolder().get();
+  const DragFolding folding{copy, session.symmetricFolder().get(), session.minimumDrag(),
+                            settings_.allowSelfIntersection};
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
   auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
     deadline.countEvaluation();
-    if (!worker.ready) {
-      worker.out = copy.sheet;
-      worker.workspace.clear();
-      worker.ready = true;
-      worker.cloud.points.resize(copy.samples.size());
-      worker.normals.resize(copy.samples.size());
-      if (!settings_.allowSelfIntersection) worker.watch.begin(copy.sheet);
-    }
-    const VertexIndex seed = copy.samples[sample];
-    const glm::dvec3 grab = copy.sheet.positions[seed];
-    if (!(glm::distance(grab, drop) > session.minimumDrag())) return kInfinity;
-    const ReflectionPlane plane = bisectorPlane(grab, drop);
-    worker.workspace.apply(copy.sheet, copy.adjacency, seed, plane, copy.epsilon, worker.out);
-    if (!settings_.allowSelfIntersection) {
-      worker.watch.update(worker.out, worker.workspace.changes(), plane,
-                          worker.workspace.reflectedTriangles(copy.adjacency));
-      if (worker.watch.pairCount() > 0) {
-        worker.workspace.restore(copy.sheet, worker.out);
-        return kInfinity;
-      }
-    }
-    // A symmetric design's fold brings its images (previewed on the copy as a display previews
-    // them; a sample they move keeps its normal, near enough for the distance).
-    const Sheet* folded = &worker.out;
-    if (symmetric) {
-      worker.withImages = worker.out;
-      FoldRecord fold;
-      fold.seed = copy.sheet.development[seed];
-      fold.plane = plane;
-      fold.grabbed = grab;
-      fold.target = drop;
-      worker.reflected.clear();
-      symmetric->previewImages(copy.sheet, worker.withImages, fold, worker.reflected);
-      folded = &worker.withImages;
-    }
-    for (std::size_t i = 0; i < copy.samples.size(); ++i) {
-      const glm::dvec3& y = folded->positions[copy.samples[i]];
-      glm::dvec3 n = copy.normals[i];
-      if (worker.out.positions[copy.samples[i]] != copy.sheet.positions[copy.samples[i]])
-        n -= 2.0 * glm::dot(n, plane.normal) * plane.normal;
-      worker.cloud.points[i] = y;
-      worker.normals[i] = n;
-    }
-    worker.workspace.restore(copy.sheet, worker.out);
+    if (!foldCopy(folding, worker, sample, drop)) return kInfinity;
     return target.score(worker.cloud, worker.normals, copy.radius);
   };
 

@@ -280,6 +280,16 @@ void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency&
   cutMemory_.release();
   cuts_.emplace(2 * crossedTriangles_.size(), &cutMemory_);
   newTags_.clear();
+  tagHingeEdges(sheet, adjacency, epsilon);
+  splitCrossedTriangles(sheet, plane, epsilon, feature, out);
+  mergeTags(sheet, out);
+}
+
+// Each triangle the plane crosses clipped by it, both sides kept as triangles in the vertex
+// order (so the development stays CCW), with the cut vertices shared along each split edge and
+// the chord a new crease.
+void ReflectionWorkspace::splitCrossedTriangles(const Sheet& sheet, const ReflectionPlane& plane,
+                                                double epsilon, double feature, Sheet& out) {
   // The vertex where the plane cuts edge e, shared by both triangles of the edge. Interpolated
   // from the lower-numbered end so either triangle computes the same point; 3D and development
   // use the same parameter, which is exact because each triangle is congruent to its development.
@@ -347,21 +357,6 @@ void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency&
     }
   };
 
-  // An existing edge lying in the plane between a reflected triangle and one outside the reached
-  // part becomes a crease.
-  for (TriangleIndex t : hingeTriangles_) {
-    const Triangle& tri = sheet.triangles[t];
-    int i = 0;
-    while (sideOf(tri[i], epsilon) == 0) ++i;  // the one vertex off the plane
-    const VertexIndex u = tri[(i + 1) % 3], w = tri[(i + 2) % 3];
-    for (TriangleIndex other : adjacency.triangles.of(u)) {
-      if (other == t) continue;
-      const Triangle& o = sheet.triangles[other];
-      if (o[0] != w && o[1] != w && o[2] != w) continue;
-      if (!reached(o[0]) && !reached(o[1]) && !reached(o[2])) newTags_.push_back({Edge::of(u, w)});
-    }
-  }
-
   for (TriangleIndex t : crossedTriangles_) {
     const Triangle tri = sheet.triangles[t];
     std::array<int, 3> side;
@@ -390,8 +385,29 @@ void ReflectionWorkspace::applyThrough(const Sheet& sheet, const SheetAdjacency&
     emitPolygon(positive, positiveCount, false);
     newTags_.push_back({Edge::of(chord[0], chord[1])});
   }
+}
 
-  // Tags: the sheet's, less the edges that were split, plus the halves and the new creases.
+// An existing edge lying in the plane between a reflected triangle and one outside the reached
+// part becomes a crease.
+void ReflectionWorkspace::tagHingeEdges(const Sheet& sheet, const SheetAdjacency& adjacency,
+                                        double epsilon) {
+  for (TriangleIndex t : hingeTriangles_) {
+    const Triangle& tri = sheet.triangles[t];
+    int i = 0;
+    while (sideOf(tri[i], epsilon) == 0) ++i;  // the one vertex off the plane
+    const VertexIndex u = tri[(i + 1) % 3], w = tri[(i + 2) % 3];
+    for (TriangleIndex other : adjacency.triangles.of(u)) {
+      if (other == t) continue;
+      const Triangle& o = sheet.triangles[other];
+      if (o[0] != w && o[1] != w && o[2] != w) continue;
+      if (!reached(o[0]) && !reached(o[1]) && !reached(o[2])) newTags_.push_back({Edge::of(u, w)});
+    }
+  }
+}
+
+// The result's tags: the sheet's, less the edges that were split, plus the halves and the new
+// creases.
+void ReflectionWorkspace::mergeTags(const Sheet& sheet, Sheet& out) {
   std::size_t creases = 0;
   for (const TaggedEdge& tag : newTags_) creases += tag.kind == EdgeKind::Crease;
   changes_.newCreaseCount = creases;

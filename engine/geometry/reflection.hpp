@@ -102,6 +102,12 @@ class ReflectionWorkspace {
             const ReflectionPlane& plane, double epsilon, Sheet& out,
             std::span<const VertexIndex> moreSeeds);
   void classifyBoundary(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
+  // applyThrough's steps after the fill: the creases on hinge edges, the crossed triangles
+  // split, the result's tags.
+  void tagHingeEdges(const Sheet& sheet, const SheetAdjacency& adjacency, double epsilon);
+  void splitCrossedTriangles(const Sheet& sheet, const ReflectionPlane& plane, double epsilon,
+                             double feature, Sheet& out);
+  void mergeTags(const Sheet& sheet, Sheet& out);
   void restoreTopology(const Sheet& sheet, Sheet& out) const;
   // Marks of the current apply(): every visited vertex has at least visitedMark(); reached ones
   // (strictly on the seed's side, reflected) have reachedMark().

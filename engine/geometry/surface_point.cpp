@@ -195,28 +195,18 @@ bool deepInside(const Sheet& sheet, TriangleIndex t, const glm::dvec2& q, double
   return true;
 }
 
-}  // namespace
+// The triangle holding q: the hint when q lies deep inside it, else the located one.
+TriangleIndex triangleHolding(const Sheet& sheet, const glm::dvec2& q, const InsertionHints& hints,
+                              double snap) {
+  if (deepInside(sheet, hints.triangle, q, snap)) return hints.triangle;
+  const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
+  if (!located) throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
+  return located->triangle;
+}
 
-VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo,
-                                const InsertionHints& hints) {
-  const double size = hints.sheetSize > 0.0 ? hints.sheetSize : sheetSize(sheet);
-  const double snap = kRelativeGrabSnap * size;
-  // Nothing thinner than this is made: a point that would make it grabs the triangle's nearest
-  // corner instead (a point inside a thin triangle, next to one of its sharp corners).
-  const double thinnest = kRelativeCutFeatureSize * size;
-  TriangleIndex t = kNoIndex;
-  if (deepInside(sheet, hints.triangle, q, snap)) {
-    t = hints.triangle;
-  } else {
-    const std::optional<SurfacePoint> located = locateDevelopmentPoint(sheet, q, snap);
-    if (!located)
-      throw InvalidSheet("development point " + describe(q) + " lies outside the sheet");
-    t = located->triangle;
-  }
-  const Triangle tri = sheet.triangles[t];
-  if (undo) *undo = {sheet.vertexCount(), sheet.triangleCount(), {}, {}, false};
-
-  // An existing vertex within snap distance.
+// A corner of tri within snap distance of q (the nearest), else kNoIndex.
+VertexIndex cornerWithin(const Sheet& sheet, const Triangle& tri, const glm::dvec2& q,
+                         double snap) {
   VertexIndex nearest = kNoIndex;
   double nearestDistance = snap;
   for (VertexIndex v : tri) {
@@ -226,22 +216,64 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
       nearest = v;
     }
   }
-  if (nearest != kNoIndex) return nearest;
-  auto nearestCorner = [&] {
-    VertexIndex best = tri[0];
-    for (VertexIndex v : tri)
-      if (glm::distance(sheet.development[v], q) < glm::distance(sheet.development[best], q))
-        best = v;
-    return best;
-  };
+  return nearest;
+}
 
+void rewriteTriangle(Sheet& sheet, TriangleIndex k, const Triangle& replacement,
+                     InsertionUndo* undo) {
+  if (undo) undo->rewritten.emplace_back(k, sheet.triangles[k]);
+  sheet.triangles[k] = replacement;
+}
+
+// A triangle holding an edge, the edge's direction in it and its third corner.
+struct EdgeSplit {
+  TriangleIndex triangle;
+  VertexIndex from, to, apex;
+};
+
+// Each triangle holding the edge (u, w) in either direction: among the triangles around u when
+// known (ascending, as the scan would meet them), else among every triangle.
+std::vector<EdgeSplit> trianglesOnEdge(const Sheet& sheet, VertexIndex u, VertexIndex w,
+                                       const InsertionHints& hints) {
+  std::vector<TriangleIndex> candidates;
+  if (hints.around) {
+    const auto aroundU = hints.around->of(u);
+    candidates.assign(aroundU.begin(), aroundU.end());
+  } else {
+    candidates.resize(sheet.triangleCount());
+    std::iota(candidates.begin(), candidates.end(), TriangleIndex{0});
+  }
+  std::vector<EdgeSplit> splits;
+  for (TriangleIndex k : candidates) {
+    const Triangle& o = sheet.triangles[k];
+    for (int j = 0; j < 3; ++j)
+      if (Edge::of(o[j], o[(j + 1) % 3]) == Edge::of(u, w))
+        splits.push_back({k, o[j], o[(j + 1) % 3], o[(j + 2) % 3]});
+  }
+  return splits;
+}
+
+// The tag of edge (u, w), if any, carried onto its halves (u, m) and (m, w).
+void splitEdgeTag(Sheet& sheet, VertexIndex u, VertexIndex w, VertexIndex m, InsertionUndo* undo) {
+  const std::optional<EdgeKind> kind = sheet.edgeKind(Edge::of(u, w));
+  if (!kind) return;
+  if (undo) {
+    undo->tags = sheet.tags;
+    undo->tagsChanged = true;
+  }
+  std::erase_if(sheet.tags, [&](const TaggedEdge& tag) { return tag.edge == Edge::of(u, w); });
+  sheet.tags.push_back({Edge::of(u, m), *kind});
+  sheet.tags.push_back({Edge::of(m, w), *kind});
+  sheet.normalizeTags();
+}
+
+// An edge of tri within snap distance of q: split, and both of its triangles, at the point of it
+// nearest q (or that point's nearer end, when a split would be thinner than `thinnest`); nothing
+// when no edge is that near.
+std::optional<VertexIndex> splitEdgeNear(Sheet& sheet, const Triangle& tri, const glm::dvec2& q,
+                                         const InsertionHints& hints, double snap, double thinnest,
+                                         InsertionUndo* undo) {
   const auto m = static_cast<VertexIndex>(sheet.vertexCount());
-  auto rewrite = [&](TriangleIndex k, const Triangle& replacement) {
-    if (undo) undo->rewritten.emplace_back(k, sheet.triangles[k]);
-    sheet.triangles[k] = replacement;
-  };
-
-  // An edge within snap distance: split it and both of its triangles.
   for (int i = 0; i < 3; ++i) {
     const VertexIndex u = tri[i], w = tri[(i + 1) % 3];
     const auto [distance, s] = segmentDistance(q, sheet.development[u], sheet.development[w]);
@@ -249,28 +281,9 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
     const glm::dvec3 position = sheet.positions[u] + s * (sheet.positions[w] - sheet.positions[u]);
     const glm::dvec2 flat =
         sheet.development[u] + s * (sheet.development[w] - sheet.development[u]);
-    // Each triangle holding the edge (u, w) in either direction becomes two: the triangles around
-    // u when known (ascending, as the scan would meet them), else every triangle.
-    std::vector<TriangleIndex> candidates;
-    if (hints.around) {
-      const auto aroundU = hints.around->of(u);
-      candidates.assign(aroundU.begin(), aroundU.end());
-    } else {
-      candidates.resize(sheet.triangleCount());
-      std::iota(candidates.begin(), candidates.end(), TriangleIndex{0});
-    }
-    struct Split {
-      TriangleIndex triangle;
-      VertexIndex from, to, apex;
-    };
-    std::vector<Split> splits;
-    for (TriangleIndex k : candidates) {
-      const Triangle& o = sheet.triangles[k];
-      for (int j = 0; j < 3; ++j)
-        if (Edge::of(o[j], o[(j + 1) % 3]) == Edge::of(u, w))
-          splits.push_back({k, o[j], o[(j + 1) % 3], o[(j + 2) % 3]});
-    }
-    for (const Split& split : splits) {
+    // Each triangle holding the edge (u, w) in either direction becomes two.
+    const std::vector<EdgeSplit> splits = trianglesOnEdge(sheet, u, w, hints);
+    for (const EdgeSplit& split : splits) {
       const glm::dvec2 apex = sheet.development[split.apex];
       if (smallestHeight(sheet.development[split.from], flat, apex) < thinnest ||
           smallestHeight(flat, sheet.development[split.to], apex) < thinnest)
@@ -279,30 +292,32 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
     }
     sheet.positions.push_back(position);
     sheet.development.push_back(flat);
-    for (const Split& split : splits) {
-      rewrite(split.triangle, {split.from, m, split.apex});
+    for (const EdgeSplit& split : splits) {
+      rewriteTriangle(sheet, split.triangle, {split.from, m, split.apex}, undo);
       sheet.triangles.push_back({m, split.to, split.apex});
     }
-    if (const std::optional<EdgeKind> kind = sheet.edgeKind(Edge::of(u, w))) {
-      if (undo) {
-        undo->tags = sheet.tags;
-        undo->tagsChanged = true;
-      }
-      std::erase_if(sheet.tags, [&](const TaggedEdge& tag) { return tag.edge == Edge::of(u, w); });
-      sheet.tags.push_back({Edge::of(u, m), *kind});
-      sheet.tags.push_back({Edge::of(m, w), *kind});
-      sheet.normalizeTags();
-    }
+    splitEdgeTag(sheet, u, w, m, undo);
     return m;
   }
+  return std::nullopt;
+}
 
-  // Inside the triangle: three triangles around the new vertex, with barycentric coordinates from
-  // the development so the 3D point is the same point of the paper.
+// Inside triangle t (tri): three triangles around the new vertex, with barycentric coordinates
+// from the development so the 3D point is the same point of the paper; the nearest corner when
+// one of them would be thinner than `thinnest`.
+VertexIndex splitTriangleAt(Sheet& sheet, TriangleIndex t, const Triangle& tri, const glm::dvec2& q,
+                            double thinnest, InsertionUndo* undo) {
   const glm::dvec2 a = sheet.development[tri[0]], b = sheet.development[tri[1]],
                    c = sheet.development[tri[2]];
   if (smallestHeight(a, b, q) < thinnest || smallestHeight(b, c, q) < thinnest ||
-      smallestHeight(c, a, q) < thinnest)
-    return nearestCorner();
+      smallestHeight(c, a, q) < thinnest) {
+    VertexIndex best = tri[0];
+    for (VertexIndex v : tri)
+      if (glm::distance(sheet.development[v], q) < glm::distance(sheet.development[best], q))
+        best = v;
+    return best;
+  }
+  const auto m = static_cast<VertexIndex>(sheet.vertexCount());
   const double area = (b - a).x * (c - a).y - (b - a).y * (c - a).x;
   const double wb = ((q - a).x * (c - a).y - (q - a).y * (c - a).x) / area;
   const double wc = ((b - a).x * (q - a).y - (b - a).y * (q - a).x) / area;
@@ -310,10 +325,31 @@ VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo
   sheet.positions.push_back(wa * sheet.positions[tri[0]] + wb * sheet.positions[tri[1]] +
                             wc * sheet.positions[tri[2]]);
   sheet.development.push_back(q);
-  rewrite(t, {tri[0], tri[1], m});
+  rewriteTriangle(sheet, t, {tri[0], tri[1], m}, undo);
   sheet.triangles.push_back({tri[1], tri[2], m});
   sheet.triangles.push_back({tri[2], tri[0], m});
   return m;
+}
+
+}  // namespace
+
+VertexIndex insertVertexInPlace(Sheet& sheet, const glm::dvec2& q, InsertionUndo* undo,
+                                const InsertionHints& hints) {
+  const double size = hints.sheetSize > 0.0 ? hints.sheetSize : sheetSize(sheet);
+  const double snap = kRelativeGrabSnap * size;
+  // Nothing thinner than this is made: a point that would make it grabs the triangle's nearest
+  // corner instead (a point inside a thin triangle, next to one of its sharp corners).
+  const double thinnest = kRelativeCutFeatureSize * size;
+  const TriangleIndex t = triangleHolding(sheet, q, hints, snap);
+  const Triangle tri = sheet.triangles[t];
+  if (undo) *undo = {sheet.vertexCount(), sheet.triangleCount(), {}, {}, false};
+  // An existing vertex within snap distance, else an edge within it, else inside the triangle.
+  if (const VertexIndex corner = cornerWithin(sheet, tri, q, snap); corner != kNoIndex)
+    return corner;
+  if (const std::optional<VertexIndex> onEdge =
+          splitEdgeNear(sheet, tri, q, hints, snap, thinnest, undo))
+    return *onEdge;
+  return splitTriangleAt(sheet, t, tri, q, thinnest, undo);
 }
 
 void undoInsertion(Sheet& sheet, const InsertionUndo& undo) {

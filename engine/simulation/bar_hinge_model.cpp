@@ -136,21 +136,30 @@ double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const gl
   return angleWithGradient(a, b, c, d, previous, gradient);
 }
 
-BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
-  const std::size_t n = pattern.vertices.size();
-  BarHingeModel model;
-  model.mode = options.mode;
-  model.flatPositions.reserve(n);
+namespace {
+
+using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
+
+// The pattern's vertices at z = 0, each checked finite.
+std::vector<glm::dvec3> flatPositionsOf(const CreasePattern& pattern) {
+  std::vector<glm::dvec3> positions;
+  positions.reserve(pattern.vertices.size());
   for (const glm::dvec2& p : pattern.vertices) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
       throw SimulationInputError("a vertex position is not a finite number");
-    model.flatPositions.emplace_back(p.x, p.y, 0.0);
+    positions.emplace_back(p.x, p.y, 0.0);
   }
-  model.triangles = pattern.triangles;
+  return positions;
+}
 
-  // Which triangle runs each edge a->b (left) and b->a (right).
-  std::map<std::pair<std::uint32_t, std::uint32_t>, EdgeSides> sides;
-  std::vector<double> area(pattern.triangles.size());
+// Which triangle runs each edge a->b (left) and b->a (right), and each triangle's area; a
+// triangle that names no vertex, is degenerate or clockwise, or an edge with more than two
+// triangles is refused, and so is a pattern whose edge list leaves out an edge of its triangles.
+std::map<EdgeKey, EdgeSides> triangleSides(const CreasePattern& pattern,
+                                           std::vector<double>& area) {
+  const std::size_t n = pattern.vertices.size();
+  std::map<EdgeKey, EdgeSides> sides;
+  area.assign(pattern.triangles.size(), 0.0);
   for (std::size_t t = 0; t < pattern.triangles.size(); ++t) {
     const auto& tri = pattern.triangles[t];
     for (std::uint32_t v : tri)
@@ -175,88 +184,131 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
   if (sides.size() != pattern.edges.size())
     throw SimulationInputError("the pattern lists " + std::to_string(pattern.edges.size()) +
                                " edges but its triangles have " + std::to_string(sides.size()));
+  return sides;
+}
 
-  // Lumped masses, mean 1, so the explicit step depends on stiffness and shape, not on units.
-  model.mass.assign(n, 0.0);
+// Lumped masses, mean 1, so the explicit step depends on stiffness and shape, not on units.
+std::vector<double> lumpedMasses(const CreasePattern& pattern, const std::vector<double>& area) {
+  const std::size_t n = pattern.vertices.size();
+  std::vector<double> mass(n, 0.0);
   double totalArea = 0.0;
   for (std::size_t t = 0; t < pattern.triangles.size(); ++t) {
-    for (std::uint32_t v : pattern.triangles[t]) model.mass[v] += area[t] / 3.0;
+    for (std::uint32_t v : pattern.triangles[t]) mass[v] += area[t] / 3.0;
     totalArea += area[t];
   }
-  for (double& m : model.mass) {
+  for (double& m : mass) {
     m *= static_cast<double>(n) / totalArea;
     if (m == 0.0) m = 1.0;  // a vertex no triangle uses: it only drifts with glue
   }
+  return mass;
+}
 
+// The paper's bending stiffness (plate theory), after checking its properties in paper mode.
+double bendingStiffnessOf(const ModelOptions& options) {
   const PaperProperties& paper = options.paper;
-  const bool paperMode = options.mode == SimulationMode::Paper;
-  if (paperMode &&
+  if (options.mode == SimulationMode::Paper &&
       !(paper.thickness > 0.0 && paper.youngsModulus > 0.0 && paper.poissonRatio > -1.0 &&
         paper.poissonRatio < 0.5 && paper.creaseLength > 0.0))
     throw SimulationInputError("paper thickness, modulus and crease length must be positive");
-  const double bendingStiffness = paper.youngsModulus * std::pow(paper.thickness, 3) /
-                                  (12.0 * (1.0 - paper.poissonRatio * paper.poissonRatio));
+  return paper.youngsModulus * std::pow(paper.thickness, 3) /
+         (12.0 * (1.0 - paper.poissonRatio * paper.poissonRatio));
+}
 
-  model.bars.reserve(pattern.edges.size());
+// What the bars and hinges are built from, read once.
+struct ElementInputs {
+  const CreasePattern& pattern;
+  const ModelOptions& options;
+  const std::map<EdgeKey, EdgeSides>& sides;
+  const std::vector<double>& area;
+  double bendingStiffness = 0.0;
+  bool paperMode() const { return options.mode == SimulationMode::Paper; }
+};
+
+// Edge e's bar (every edge has one); returns its stiffness.
+double addBar(BarHingeModel& model, const ElementInputs& in, const EdgeKey& key,
+              const EdgeSides& s) {
+  const PaperProperties& paper = in.options.paper;
+  const double length =
+      glm::distance(model.flatPositions[key.first], model.flatPositions[key.second]);
+  const double adjacentArea = (s.left != EdgeSides::kNoTriangle ? in.area[s.left] : 0.0) +
+                              (s.right != EdgeSides::kNoTriangle ? in.area[s.right] : 0.0);
+  model.bars.push_back({key.first, key.second});
+  model.barLength.push_back(length);
+  const double barK = in.paperMode() ? paper.youngsModulus * paper.thickness *
+                                           (adjacentArea / 3.0) / (length * length)
+                                     : in.options.axialStiffness / length;
+  model.barStiffness.push_back(barK);
+  return barK;
+}
+
+// Edge e's hinge, for an edge between two triangles.
+void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, const EdgeKey& key,
+              const EdgeSides& s) {
+  const CreasePatternEdge& edge = in.pattern.edges[e];
+  const PaperProperties& paper = in.options.paper;
+  const bool paperMode = in.paperMode();
+  const double length = model.barLength[e];
+  const auto& left = in.pattern.triangles[s.left];
+  const auto& right = in.pattern.triangles[s.right];
+  auto opposite = [](const std::array<std::uint32_t, 3>& tri, std::uint32_t u, std::uint32_t v) {
+    for (std::uint32_t w : tri)
+      if (w != u && w != v) return w;
+    return tri[0];
+  };
+  Hinge hinge{key.first, key.second, opposite(left, key.first, key.second),
+              opposite(right, key.first, key.second)};
+  const bool crease =
+      edge.assignment == CreaseAssignment::Mountain || edge.assignment == CreaseAssignment::Valley;
+  double targetDegrees = edge.foldAngleDegrees;
+  if (crease && targetDegrees == 0.0)  // an M or V with no angle: folded flat, as FOLD says
+    targetDegrees = edge.assignment == CreaseAssignment::Valley ? 180.0 : -180.0;
+  // A sliver (a triangle lower than half its hinge edge) turns a lot for a small move of its
+  // wing; its hinge is weakened in proportion, or its forces would swamp every other.
+  const double sliver =
+      std::min(1.0, 4.0 * std::min(in.area[s.left], in.area[s.right]) / (length * length));
+  double stiffness = 0.0;
+  if (crease) {
+    stiffness = (paperMode ? in.bendingStiffness * length / paper.creaseLength
+                           : in.options.creaseStiffness * length) *
+                sliver;
+  } else {
+    if (paperMode) targetDegrees = 0.0;  // paper's rest state is flat
+    stiffness =
+        (paperMode ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) * sliver;
+  }
+  model.hinges.push_back(hinge);
+  model.hingeEdge.push_back(static_cast<std::uint32_t>(e));
+  model.hingeTriangles.push_back({s.left, s.right});
+  model.hingeTarget.push_back(targetDegrees / kDegrees);
+  model.hingeCrease.push_back(crease ? 1 : 0);
+  model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
+  model.hingeStiffness.push_back(stiffness);
+}
+
+// A bar per edge, in the pattern's edge order, and a hinge per interior edge; returns the
+// stiffest bar's stiffness.
+double addBarsAndHinges(BarHingeModel& model, const ElementInputs& in) {
+  model.bars.reserve(in.pattern.edges.size());
   double maxBar = 0.0;
-  for (std::size_t e = 0; e < pattern.edges.size(); ++e) {
-    const CreasePatternEdge& edge = pattern.edges[e];
-    const auto key = std::make_pair(std::min(edge.a, edge.b), std::max(edge.a, edge.b));
-    const auto found = sides.find(key);
-    if (found == sides.end())
+  for (std::size_t e = 0; e < in.pattern.edges.size(); ++e) {
+    const CreasePatternEdge& edge = in.pattern.edges[e];
+    const EdgeKey key = std::make_pair(std::min(edge.a, edge.b), std::max(edge.a, edge.b));
+    const auto found = in.sides.find(key);
+    if (found == in.sides.end())
       throw SimulationInputError(edgeName(edge.a, edge.b) + " is on no triangle");
     if (!std::isfinite(edge.foldAngleDegrees))
       throw SimulationInputError(edgeName(edge.a, edge.b) + " has a fold angle that is not finite");
     const EdgeSides& s = found->second;
-    const double length =
-        glm::distance(model.flatPositions[key.first], model.flatPositions[key.second]);
-    const double adjacentArea = (s.left != EdgeSides::kNoTriangle ? area[s.left] : 0.0) +
-                                (s.right != EdgeSides::kNoTriangle ? area[s.right] : 0.0);
-    model.bars.push_back({key.first, key.second});
-    model.barLength.push_back(length);
-    const double barK =
-        paperMode ? paper.youngsModulus * paper.thickness * (adjacentArea / 3.0) / (length * length)
-                  : options.axialStiffness / length;
-    model.barStiffness.push_back(barK);
-    maxBar = std::max(maxBar, barK);
-
+    maxBar = std::max(maxBar, addBar(model, in, key, s));
     if (s.left == EdgeSides::kNoTriangle || s.right == EdgeSides::kNoTriangle) continue;
-    const auto& left = pattern.triangles[s.left];
-    const auto& right = pattern.triangles[s.right];
-    auto opposite = [](const std::array<std::uint32_t, 3>& tri, std::uint32_t u, std::uint32_t v) {
-      for (std::uint32_t w : tri)
-        if (w != u && w != v) return w;
-      return tri[0];
-    };
-    Hinge hinge{key.first, key.second, opposite(left, key.first, key.second),
-                opposite(right, key.first, key.second)};
-    const bool crease = edge.assignment == CreaseAssignment::Mountain ||
-                        edge.assignment == CreaseAssignment::Valley;
-    double targetDegrees = edge.foldAngleDegrees;
-    if (crease && targetDegrees == 0.0)  // an M or V with no angle: folded flat, as FOLD says
-      targetDegrees = edge.assignment == CreaseAssignment::Valley ? 180.0 : -180.0;
-    // A sliver (a triangle lower than half its hinge edge) turns a lot for a small move of its
-    // wing; its hinge is weakened in proportion, or its forces would swamp every other.
-    const double sliver =
-        std::min(1.0, 4.0 * std::min(area[s.left], area[s.right]) / (length * length));
-    double stiffness = 0.0;
-    if (crease) {
-      stiffness = (paperMode ? bendingStiffness * length / paper.creaseLength
-                             : options.creaseStiffness * length) *
-                  sliver;
-    } else {
-      if (paperMode) targetDegrees = 0.0;  // paper's rest state is flat
-      stiffness = (paperMode ? 6.0 * bendingStiffness : options.facetStiffness * length) * sliver;
-    }
-    model.hinges.push_back(hinge);
-    model.hingeEdge.push_back(static_cast<std::uint32_t>(e));
-    model.hingeTriangles.push_back({s.left, s.right});
-    model.hingeTarget.push_back(targetDegrees / kDegrees);
-    model.hingeCrease.push_back(crease ? 1 : 0);
-    model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
-    model.hingeStiffness.push_back(stiffness);
+    addHinge(model, in, e, key, s);
   }
+  return maxBar;
+}
 
+// The options' pins and glue, each vertex checked.
+void addPinsAndGlue(BarHingeModel& model, const ModelOptions& options) {
+  const std::size_t n = model.vertexCount();
   model.pinned.assign(n, 0);
   for (std::uint32_t v : options.pins) {
     if (v >= n)
@@ -269,10 +321,11 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
                                  std::to_string(j));
     model.glue.push_back({i, j});
   }
-  // Glue as stiff as the stiffest bar: seams close to within bar strain.
-  model.glueStiffness = maxBar;
+}
 
-  // The gather lists: each vertex's slots in slot order (counting sort).
+// The gather lists: each vertex's slots in slot order (counting sort).
+void buildGatherLists(BarHingeModel& model) {
+  const std::size_t n = model.vertexCount();
   model.hingeSlot0 = 2 * model.bars.size();
   model.glueSlot0 = model.hingeSlot0 + 4 * model.hinges.size();
   model.slotCount = model.glueSlot0 + 2 * model.glue.size();
@@ -300,7 +353,24 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
   std::vector<std::uint32_t> fill(model.gatherOffsets.begin(), model.gatherOffsets.end() - 1);
   for (std::size_t s = 0; s < model.slotCount; ++s)
     model.gatherSlots[fill[slotVertex[s]]++] = static_cast<std::uint32_t>(s);
+}
 
+}  // namespace
+
+BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
+  BarHingeModel model;
+  model.mode = options.mode;
+  model.flatPositions = flatPositionsOf(pattern);
+  model.triangles = pattern.triangles;
+  std::vector<double> area;
+  const std::map<EdgeKey, EdgeSides> sides = triangleSides(pattern, area);
+  model.mass = lumpedMasses(pattern, area);
+  const ElementInputs inputs{pattern, options, sides, area, bendingStiffnessOf(options)};
+  const double maxBar = addBarsAndHinges(model, inputs);
+  addPinsAndGlue(model, options);
+  // Glue as stiff as the stiffest bar: seams close to within bar strain.
+  model.glueStiffness = maxBar;
+  buildGatherLists(model);
   model.barDamping.resize(model.bars.size());
   for (std::size_t i = 0; i < model.bars.size(); ++i)
     model.barDamping[i] =

@@ -190,153 +190,189 @@ void tagSeams(Sheet& sheet) {
   sheet.normalizeTags();
 }
 
-}  // namespace
-
-Sheet parseObjSurface(std::istream& in, const std::string& name) {
-  const ObjData data = Parser(name).parse(in);
-  const bool withVt = data.triangles.front().corners[0].vt >= 0;
-  auto lineText = [&](std::size_t line) { return name + ":" + std::to_string(line) + ": "; };
-
-  // Sheet vertices: one per distinct v (without vt) or (v, vt) pair.
+// A sheet read from an OBJ, with what its messages name: the file, each triangle's line and each
+// sheet vertex's 0-based OBJ v.
+struct ObjSheet {
+  std::string name;
   Sheet sheet;
-  std::map<std::pair<long, long>, VertexIndex> vertexOf;
   std::vector<long> objVertex;  // sheet vertex -> 0-based OBJ v
   std::vector<std::size_t> triangleLine;
+
+  std::string lineText(std::size_t line) const { return name + ":" + std::to_string(line) + ": "; }
+  std::string edgeText(VertexIndex a, VertexIndex b) const {
+    return "edge between vertices " + std::to_string(objVertex[a] + 1) + " and " +
+           std::to_string(objVertex[b] + 1);
+  }
+};
+
+// Sheet vertices: one per distinct v (without vt) or (v, vt) pair; a face that repeats a vertex
+// is refused.
+ObjSheet sheetOfObj(const ObjData& data, const std::string& name, bool withVt) {
+  ObjSheet obj{name, {}, {}, {}};
+  Sheet& sheet = obj.sheet;
+  std::map<std::pair<long, long>, VertexIndex> vertexOf;
   for (const ObjTriangle& t : data.triangles) {
     Triangle triangle;
     for (int i = 0; i < 3; ++i) {
       const Corner& c = t.corners[i];
       auto [it, added] =
-          vertexOf.emplace(std::pair{c.v, c.vt}, static_cast<VertexIndex>(objVertex.size()));
+          vertexOf.emplace(std::pair{c.v, c.vt}, static_cast<VertexIndex>(obj.objVertex.size()));
       if (added) {
-        objVertex.push_back(c.v);
+        obj.objVertex.push_back(c.v);
         sheet.positions.push_back(data.v[c.v]);
         sheet.development.push_back(withVt ? data.vt[c.vt] : glm::dvec2(0.0));
       }
       triangle[i] = it->second;
     }
     if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2])
-      throw ObjError(lineText(t.line) + "a face repeats a vertex");
+      throw ObjError(obj.lineText(t.line) + "a face repeats a vertex");
     sheet.triangles.push_back(triangle);
-    triangleLine.push_back(t.line);
+    obj.triangleLine.push_back(t.line);
   }
-  auto edgeText = [&](VertexIndex a, VertexIndex b) {
-    return "edge between vertices " + std::to_string(objVertex[a] + 1) + " and " +
-           std::to_string(objVertex[b] + 1);
-  };
+  return obj;
+}
 
-  // Each directed edge once, each undirected edge at most twice: a consistently oriented manifold.
+// Each directed edge once, each undirected edge at most twice: a consistently oriented manifold.
+void checkOrientedManifold(const ObjSheet& obj) {
+  const Sheet& sheet = obj.sheet;
   std::map<std::pair<VertexIndex, VertexIndex>, TriangleIndex> directed;
   std::map<Edge, int> uses;
   for (TriangleIndex t = 0; t < sheet.triangles.size(); ++t) {
     for (int i = 0; i < 3; ++i) {
       const VertexIndex a = sheet.triangles[t][i], b = sheet.triangles[t][(i + 1) % 3];
       if (++uses[Edge::of(a, b)] > 2)
-        throw ObjError(lineText(triangleLine[t]) + edgeText(a, b) +
+        throw ObjError(obj.lineText(obj.triangleLine[t]) + obj.edgeText(a, b) +
                        " belongs to more than two faces (non-manifold mesh)");
       if (!directed.emplace(std::pair{a, b}, t).second)
-        throw ObjError(lineText(triangleLine[t]) + edgeText(a, b) +
+        throw ObjError(obj.lineText(obj.triangleLine[t]) + obj.edgeText(a, b) +
                        " runs the same way in two faces (non-manifold or inconsistently "
                        "oriented mesh)");
     }
   }
+}
 
-  if (!(pointsDiagonal(sheet.positions) > 0.0)) throw ObjError(name + ": all vertices coincide");
-  {
-    // A mesh far from the origin (a survey's coordinates, 1e9 m out) keeps only a few digits of
-    // its size in each coordinate, and every reflection there rounds at that scale: recentre it.
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    for (const glm::dvec3& p : sheet.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    if (glm::length(centre) > kObjRecentreDistance * glm::length(hi - lo))
-      for (glm::dvec3& p : sheet.positions) p -= centre;
+// A mesh far from the origin (a survey's coordinates, 1e9 m out) keeps only a few digits of its
+// size in each coordinate, and every reflection there rounds at that scale: recentre it.
+void recentreFarMesh(std::vector<glm::dvec3>& positions) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const glm::dvec3& p : positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
   }
-  if (withVt) {
-    // Fit one scale factor from texture units to metres, and mirror clockwise texture layouts.
-    double length3 = 0.0, length2 = 0.0, area = 0.0;
-    for (const Triangle& t : sheet.triangles) {
-      for (int i = 0; i < 3; ++i) {
-        length3 += glm::distance(sheet.positions[t[i]], sheet.positions[t[(i + 1) % 3]]);
-        length2 += glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]);
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  if (glm::length(centre) > kObjRecentreDistance * glm::length(hi - lo))
+    for (glm::dvec3& p : positions) p -= centre;
+}
+
+// The development from the texture coordinates: one scale factor from texture units to metres
+// fitted, a clockwise layout mirrored, then every edge checked against its 3D length.
+void developmentFromTexture(ObjSheet& obj) {
+  Sheet& sheet = obj.sheet;
+  double length3 = 0.0, length2 = 0.0, area = 0.0;
+  for (const Triangle& t : sheet.triangles) {
+    for (int i = 0; i < 3; ++i) {
+      length3 += glm::distance(sheet.positions[t[i]], sheet.positions[t[(i + 1) % 3]]);
+      length2 += glm::distance(sheet.development[t[i]], sheet.development[t[(i + 1) % 3]]);
+    }
+    area += glm::cross(sheet.development[t[1]] - sheet.development[t[0]],
+                       sheet.development[t[2]] - sheet.development[t[0]]);
+  }
+  if (!(length2 > 0.0)) throw ObjError(obj.name + ": all texture coordinates coincide");
+  const double scale = length3 / length2;
+  const double mirror = area < 0.0 ? -1.0 : 1.0;
+  for (glm::dvec2& p : sheet.development) p = scale * glm::dvec2(mirror * p.x, p.y);
+  // Measured like validate(): relative to the development's size.
+  const double tolerance = kObjRelativeTolerance * sheetSize(sheet);
+  double worst = -1.0;
+  TriangleIndex worstTriangle = 0;
+  int worstCorner = 0;
+  for (TriangleIndex t = 0; t < sheet.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const VertexIndex a = sheet.triangles[t][i], b = sheet.triangles[t][(i + 1) % 3];
+      const double error = std::abs(glm::distance(sheet.positions[a], sheet.positions[b]) -
+                                    glm::distance(sheet.development[a], sheet.development[b]));
+      if (error > worst) {
+        worst = error;
+        worstTriangle = t;
+        worstCorner = i;
       }
-      area += glm::cross(sheet.development[t[1]] - sheet.development[t[0]],
-                         sheet.development[t[2]] - sheet.development[t[0]]);
-    }
-    if (!(length2 > 0.0)) throw ObjError(name + ": all texture coordinates coincide");
-    const double scale = length3 / length2;
-    const double mirror = area < 0.0 ? -1.0 : 1.0;
-    for (glm::dvec2& p : sheet.development) p = scale * glm::dvec2(mirror * p.x, p.y);
-    // Measured like validate(): relative to the development's size.
-    const double tolerance = kObjRelativeTolerance * sheetSize(sheet);
-    double worst = -1.0;
-    TriangleIndex worstTriangle = 0;
-    int worstCorner = 0;
-    for (TriangleIndex t = 0; t < sheet.triangles.size(); ++t) {
-      for (int i = 0; i < 3; ++i) {
-        const VertexIndex a = sheet.triangles[t][i], b = sheet.triangles[t][(i + 1) % 3];
-        const double error = std::abs(glm::distance(sheet.positions[a], sheet.positions[b]) -
-                                      glm::distance(sheet.development[a], sheet.development[b]));
-        if (error > worst) {
-          worst = error;
-          worstTriangle = t;
-          worstCorner = i;
-        }
-      }
-    }
-    if (worst > tolerance) {
-      const Triangle& t = sheet.triangles[worstTriangle];
-      const VertexIndex a = t[worstCorner], b = t[(worstCorner + 1) % 3];
-      std::ostringstream out;
-      out.precision(6);
-      out << lineText(triangleLine[worstTriangle])
-          << "texture coordinates are not a development of the mesh: " << edgeText(a, b) << " is "
-          << glm::distance(sheet.positions[a], sheet.positions[b]) << " long in 3D but "
-          << glm::distance(sheet.development[a], sheet.development[b]) << " in vt (scaled by "
-          << scale << "), more than " << kObjRelativeTolerance << " of the size";
-      throw ObjError(out.str());
-    }
-  } else {
-    try {
-      sheet.development =
-          unfoldDevelopment(sheet.positions, sheet.triangles, kObjRelativeTolerance);
-    } catch (const NotDevelopable& error) {
-      const AngleDefect defect = largestAngleDefect(sheet.positions, sheet.triangles);
-      if (defect.vertex == kNoIndex || std::abs(defect.radians) <= kObjRelativeTolerance)
-        throw ObjError(name + ": " + error.what());
-      std::ostringstream out;
-      out.precision(6);
-      out << name << ":" << data.vLine[objVertex[defect.vertex]]
-          << ": surface is not developable: largest angle defect "
-          << defect.radians * 180.0 / std::numbers::pi << " degrees (" << defect.radians
-          << " rad) at vertex " << objVertex[defect.vertex] + 1;
-      throw ObjError(out.str());
     }
   }
+  if (worst > tolerance) {
+    const Triangle& t = sheet.triangles[worstTriangle];
+    const VertexIndex a = t[worstCorner], b = t[(worstCorner + 1) % 3];
+    std::ostringstream out;
+    out.precision(6);
+    out << obj.lineText(obj.triangleLine[worstTriangle])
+        << "texture coordinates are not a development of the mesh: " << obj.edgeText(a, b) << " is "
+        << glm::distance(sheet.positions[a], sheet.positions[b]) << " long in 3D but "
+        << glm::distance(sheet.development[a], sheet.development[b]) << " in vt (scaled by "
+        << scale << "), more than " << kObjRelativeTolerance << " of the size";
+    throw ObjError(out.str());
+  }
+}
 
-  tagSeams(sheet);
+// The development unfolded from the mesh (no texture coordinates); a surface that is not
+// developable is refused naming its largest angle defect's vertex and line.
+void developmentByUnfolding(ObjSheet& obj, const ObjData& data) {
+  Sheet& sheet = obj.sheet;
+  try {
+    sheet.development = unfoldDevelopment(sheet.positions, sheet.triangles, kObjRelativeTolerance);
+  } catch (const NotDevelopable& error) {
+    const AngleDefect defect = largestAngleDefect(sheet.positions, sheet.triangles);
+    if (defect.vertex == kNoIndex || std::abs(defect.radians) <= kObjRelativeTolerance)
+      throw ObjError(obj.name + ": " + error.what());
+    std::ostringstream out;
+    out.precision(6);
+    out << obj.name << ":" << data.vLine[obj.objVertex[defect.vertex]]
+        << ": surface is not developable: largest angle defect "
+        << defect.radians * 180.0 / std::numbers::pi << " degrees (" << defect.radians
+        << " rad) at vertex " << obj.objVertex[defect.vertex] + 1;
+    throw ObjError(out.str());
+  }
+}
+
+// The sheet's invariants (validate), then a development that lies flat without overlapping.
+void checkFlatSheet(const ObjSheet& obj) {
+  const Sheet& sheet = obj.sheet;
   try {
     validate(sheet, ValidationOptions{.relativeLengthTolerance = kObjRelativeTolerance});
   } catch (const InvalidSheet& error) {
-    throw ObjError(name + ": " + error.what());
+    throw ObjError(obj.name + ": " + error.what());
   }
   // Developable piece by piece is not enough: the pieces must lie flat without overlapping, or
   // the crease pattern crosses itself and cannot be cut from one sheet.
   if (const std::optional<EdgeCrossing> crossing = findDevelopmentCrossing(sheet))
-    throw ObjError(name + ": the development overlaps itself: the " +
-                   edgeText(crossing->first.a, crossing->first.b) + " crosses the " +
-                   edgeText(crossing->second.a, crossing->second.b) +
+    throw ObjError(obj.name + ": the development overlaps itself: the " +
+                   obj.edgeText(crossing->first.a, crossing->first.b) + " crosses the " +
+                   obj.edgeText(crossing->second.a, crossing->second.b) +
                    " (cut the mesh open where it wraps over itself)");
   // Without crossing edges, a piece may still lie inside another or on it (coincident pieces).
   if (const std::optional<PieceOverlap> overlap = findPieceOverlap(sheet))
-    throw ObjError(lineText(triangleLine[overlap->inner]) +
+    throw ObjError(obj.lineText(obj.triangleLine[overlap->inner]) +
                    "the development overlaps itself: this face's piece lies on the piece of the "
                    "face on line " +
-                   std::to_string(triangleLine[overlap->outer]) +
+                   std::to_string(obj.triangleLine[overlap->outer]) +
                    " (lay the pieces' texture coordinates apart)");
-  return sheet;
+}
+
+}  // namespace
+
+Sheet parseObjSurface(std::istream& in, const std::string& name) {
+  const ObjData data = Parser(name).parse(in);
+  const bool withVt = data.triangles.front().corners[0].vt >= 0;
+  ObjSheet obj = sheetOfObj(data, name, withVt);
+  checkOrientedManifold(obj);
+  if (!(pointsDiagonal(obj.sheet.positions) > 0.0))
+    throw ObjError(name + ": all vertices coincide");
+  recentreFarMesh(obj.sheet.positions);
+  if (withVt)
+    developmentFromTexture(obj);
+  else
+    developmentByUnfolding(obj, data);
+  tagSeams(obj.sheet);
+  checkFlatSheet(obj);
+  return std::move(obj.sheet);
 }
 
 namespace {

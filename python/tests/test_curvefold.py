@@ -2,6 +2,7 @@
 
 import json
 import os
+import re
 import subprocess
 import sys
 import threading
@@ -188,6 +189,23 @@ def test_export_writes_every_format_or_none(tmp_path):
     with pytest.raises(ValueError, match="perforate"):
         design.export(cut_svg=str(tmp_path / "b.svg"), perforate=(0, 1))
     assert not (tmp_path / "b.pdf").exists() and not (tmp_path / "b.svg").exists()
+
+
+def undated(pdf):
+    """A PDF's bytes without the creation time Cairo writes into it."""
+    return re.sub(rb"/CreationDate \(D:[0-9Z+'-]*\)", b"", pdf.read_bytes())
+
+
+def test_the_pdf_is_the_command_lines_with_the_folded_form_and_the_date(tmp_path):
+    """Issue 41, 3: Design.export(pdf=...) prints the cover `curvefold export --pdf` prints: the
+    picture of the folded form and the facts with the date (the same bytes, but for the time)."""
+    folded_cylinder().save(tmp_path / "a.curvefold.json")
+    cli("export", tmp_path / "a.curvefold.json", "--pdf", tmp_path / "cli.pdf", "--paper", "fit")
+    curvefold.Design.load(tmp_path / "a.curvefold.json").export(pdf=str(tmp_path / "python.pdf"),
+                                                                paper="fit")
+    python = undated(tmp_path / "python.pdf")
+    assert b"/Subtype /Image" in python  # the folded form
+    assert python == undated(tmp_path / "cli.pdf")
 
 
 def test_render_is_an_rgba_image_of_the_design():

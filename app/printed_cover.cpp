@@ -1,0 +1,56 @@
+#include "app/printed_cover.hpp"
+
+#include <ctime>
+#include <exception>
+#include <new>
+
+#include "app/document.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/render/vulkan_context.hpp"
+#include "engine/render/vulkan_error.hpp"
+
+namespace curvefold::session {
+
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[16];
+  std::strftime(text, sizeof text, "%Y-%m-%d", &local);
+  return text;
+}
+
+std::vector<std::string> coverFacts(const Design& design) {
+  return {
+      "surface: " + surfaceName(design) + (design.symmetry.empty() ? "" : ", " + design.symmetry),
+      "folds: " + std::to_string(design.folds.size()), "date: " + today()};
+}
+
+std::optional<PdfPicture> renderFoldedForm(const Sheet& sheet, std::string& problem) {
+  try {
+    HeadlessOptions options;
+    options.width = 1200;
+    options.height = 800;
+    HeadlessRenderer renderer(options);
+    const RgbaImage image = renderer.render(
+        sceneForSheet(sheet, ViewPreset::Iso, float(options.width) / float(options.height), false));
+    checkValidation(renderer.context());
+    return PdfPicture{image.width, image.height, image.pixels};
+  } catch (const std::bad_alloc&) {
+    problem = "out of memory";
+  } catch (const std::exception& e) {
+    problem = e.what();
+  }
+  return std::nullopt;
+}
+
+void checkValidation(const VulkanContext& context) {
+  if (context.validationMessageCount() == 0) return;
+  std::string first = context.validationMessages().front();
+  first = first.substr(0, first.find('\n'));
+  throw VulkanError(std::to_string(context.validationMessageCount()) +
+                    " Vulkan validation messages, the first: " + first);
+}
+
+}  // namespace curvefold::session
