@@ -315,7 +315,9 @@ TEST_F(DesktopWindow, ADragOnTheSimulatedSheetPullsItAndReplays) {
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(log), "");
   // Pulled, not folded (the autosave is written after a committed fold).
-  if (fs::exists(autosave)) EXPECT_EQ(nlohmann::json::parse(slurp(autosave))["folds"].size(), 0u);
+  if (fs::exists(autosave)) {
+    EXPECT_EQ(nlohmann::json::parse(slurp(autosave))["folds"].size(), 0u);
+  }
 
   // The pull is in the recording, on the vertex under the mouse.
   const Recording read = readRecording(recording);

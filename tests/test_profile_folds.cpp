@@ -156,7 +156,9 @@ TEST(RingFolds, BringADiskCloserToADishThanAnySingleFold) {
   ASSERT_FALSE(ring.empty());
   EXPECT_GT(ring.front().folds.size(), 1u);  // a ring, not one fold
   EXPECT_LT(ring.front().after, 0.8 * before);
-  if (!one.empty()) EXPECT_LT(ring.front().after, one.front().after);
+  if (!one.empty()) {
+    EXPECT_LT(ring.front().after, one.front().after);
+  }
   validate(ring.front().sheet);
   EXPECT_EQ(session.foldCount(), 0u);  // the session is left as it was
 }

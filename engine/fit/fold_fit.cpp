@@ -637,7 +637,7 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       makeSuggestions(session, finalists, copy, *this, deadline);
   // About a surface of revolution's axis, rings of folds (a symmetric design's images are rings
   // of its own).
-  if (target.axis && !symmetric)
+  if (target.axis && !folding.symmetric)
     for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
