@@ -104,7 +104,10 @@ StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sh
   Loaded loaded;
   loaded.path = path;
   try {
-    auto fitter = std::make_shared<const FoldFitter>(reader(path));
+    // An offer is one drag (a hand can make it, a recording keeps it): no rings of folds.
+    FitSettings settings;
+    settings.rings = 0;
+    auto fitter = std::make_shared<const FoldFitter>(reader(path), settings);
     fitter->checkAgainst(sheet);
     loaded.fitter = std::move(fitter);
   } catch (const InvalidTarget& e) {
