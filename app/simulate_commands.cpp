@@ -313,8 +313,9 @@ void addSimulateCommand(CLI::App& app) {
     if (options->gpu && options->settle)
       throw UsageError("--gpu: takes dynamic steps; --settle solves on the CPU, name one");
     if (options->gpu && options->motion)
-      throw UsageError("--gpu: scales the targets with --percent; --motion follows the pattern's "
-                       "motion on the CPU, name one");
+      throw UsageError(
+          "--gpu: scales the targets with --percent; --motion follows the pattern's "
+          "motion on the CPU, name one");
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
