@@ -12,7 +12,7 @@
 namespace curvefold {
 
 std::uint32_t liveStepsPerFrame(std::size_t vertexCount) {
-  constexpr std::size_t kVertexStepsPerFrame = 100000;
+  constexpr std::size_t kVertexStepsPerFrame = 50000;
   const std::size_t steps = kVertexStepsPerFrame / std::max<std::size_t>(vertexCount, 1);
   return std::uint32_t(std::clamp<std::size_t>(steps, 4, 60));
 }
@@ -48,8 +48,7 @@ LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker)
   model_ = buildModel(designPattern(design).pattern);
   state_ = flatState(model_);
   timeStep_ = stableTimeStep(model_);
-  nextPlacement_ = bestRigidPlacement(state_.positions, design_);
-  nextPositions_ = placed(nextPlacement_, state_.positions);
+  placeNext();
   show();
 }
 
@@ -96,8 +95,15 @@ void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& be
       stepDynamic(model_, amount, state_, 1, options);
     }
   }
+  placeNext();
+}
+
+void LiveSimulation::placeNext() {
   nextPlacement_ = bestRigidPlacement(state_.positions, design_);
-  nextPositions_ = placed(nextPlacement_, state_.positions);
+  // Into the buffer the last show() gave back: no allocation a frame.
+  nextPositions_.resize(state_.positions.size());
+  for (std::size_t v = 0; v < state_.positions.size(); ++v)
+    nextPositions_[v] = nextPlacement_.apply(state_.positions[v]);
 }
 
 void LiveSimulation::show() {

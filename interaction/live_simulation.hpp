@@ -44,8 +44,9 @@ namespace curvefold {
 // The spring's stiffness as a fraction of m / dt^2 (explicit Euler is stable below 4).
 inline constexpr double kPullStiffness = 0.05;
 
-// Dynamic steps per frame for a sheet of this many vertices: about 100k vertex-steps a frame
-// (2 ms at 10k vertices on two cores, bench_simulation), at least 4 and at most 60.
+// Dynamic steps per frame for a sheet of this many vertices: about 50k vertex-steps a frame
+// (4 steps, about 6 ms of CPU at 10k vertices, bench_live_simulation; lavapipe's drawing of the
+// frame costs as much again), at least 4 and at most 60.
 std::uint32_t liveStepsPerFrame(std::size_t vertexCount);
 
 class LiveSimulation;
@@ -109,6 +110,8 @@ class LiveSimulation {
  private:
   // The steps of one frame and the placement of their state (the worker's part).
   void step(const SimulationInput& input, const RigidPlacement& before);
+  // The rigid placement of the model's state onto the design, and its placed positions.
+  void placeNext();
   // The worker's state becomes the shown one.
   void show();
 
