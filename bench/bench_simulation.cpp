@@ -8,26 +8,18 @@
 
 #include <tbb/task_arena.h>
 
+#include "bench/simulation_bench_support.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/surfaces.hpp"
-#include "tests/simulation_test_support.hpp"
 
 namespace curvefold {
 namespace {
 
 void BM_DynamicStep(benchmark::State& bench) {
-  const int cells = static_cast<int>(bench.range(0));
-  const BarHingeModel model = buildModel(testing::creasedSquare(cells, cells / 2, 90.0, 0.2));
-  SimulationState state = flatState(model);
-  stepDynamic(model, 0.5, state, 10);  // folding, not at rest
-  for (auto _ : bench) {
-    stepDynamic(model, 0.5, state, 1);
-    benchmark::DoNotOptimize(state.positions.data());
-  }
-  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  simbench::timeCpuDynamicStep(bench);
 }
 // 100 x 100 cells: 10,201 vertices; 316 x 316: 100,489.
 BENCHMARK(BM_DynamicStep)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -6,11 +6,11 @@
 // the loader picks (lavapipe without a GPU; CURVEFOLD_VK_DEVICE=substring picks another).
 #include <benchmark/benchmark.h>
 
+#include "bench/simulation_bench_support.hpp"
 #include "engine/render/vulkan_context.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation_vk/gpu_dynamic_solver.hpp"
-#include "tests/simulation_test_support.hpp"
 
 namespace curvefold {
 namespace {
@@ -20,24 +20,12 @@ const VulkanContext& context() {
   return instance;
 }
 
-BarHingeModel creasedGrid(const benchmark::State& bench) {
-  const int cells = static_cast<int>(bench.range(0));
-  return buildModel(testing::creasedSquare(cells, cells / 2, 90.0, 0.2));
-}
-
 void BM_CpuDynamicStep(benchmark::State& bench) {
-  const BarHingeModel model = creasedGrid(bench);
-  SimulationState state = flatState(model);
-  stepDynamic(model, 0.5, state, 10);  // folding, not at rest
-  for (auto _ : bench) {
-    stepDynamic(model, 0.5, state, 1);
-    benchmark::DoNotOptimize(state.positions.data());
-  }
-  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  simbench::timeCpuDynamicStep(bench);
 }
 
 void gpuSteps(benchmark::State& bench, std::size_t stepsPerSubmit) {
-  const BarHingeModel model = creasedGrid(bench);
+  const BarHingeModel model = simbench::creasedGrid(bench);
   GpuDynamicSolver solver(context(), model);
   solver.step(0.5, 10);
   for (auto _ : bench) solver.step(0.5, stepsPerSubmit);

@@ -135,6 +135,23 @@ TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {
   EXPECT_NE(result.out.find("folding motion: "), std::string::npos) << result.out;
 }
 
+// --gpu takes the dynamic steps with the targets scaled by --percent: with --motion (targets along
+// the pattern's motion, CPU only) or --settle (the CPU's static solver) it would silently do
+// something else than asked, so each pair is refused in one line naming both, writing nothing.
+TEST_F(SimulateCli, GpuWithMotionOrSettleIsRefusedInOneLine) {
+  const std::string pattern =
+      std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/waterbomb_base.fold";
+  for (const std::string other : {"--motion", "--settle"}) {
+    const CommandResult result =
+        run("simulate " + pattern + " --percent 50 --gpu " + other + " --obj w.obj");
+    EXPECT_EQ(result.exitCode, 1) << other << ": " << result.out << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_NE(result.err.find("--gpu"), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find(other), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(path("w.obj"))) << other;
+  }
+}
+
 // A GIF decoded by giflib: its screen size, each frame's RGB pixels and delay (centiseconds), and
 // whether it loops (NETSCAPE2.0). Empty frames when it is no GIF.
 struct DecodedGif {

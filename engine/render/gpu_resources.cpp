@@ -20,23 +20,35 @@ VkDeviceMemory allocateMemory(VkDevice device, const VkMemoryRequirements& needs
   return memory;
 }
 
+// A buffer of `size` bytes bound to its own memory of the type `memoryType` picks among those
+// the buffer allows (HostBuffer's and DeviceBuffer's one builder). Writes the handles as they
+// are made, so the owner's cleanup frees whatever a failure left.
+template <typename MemoryType>
+void createBoundBuffer(VkDevice device, VkDeviceSize size, VkBufferUsageFlags usage,
+                       const MemoryType& memoryType, VkBuffer& buffer, VkDeviceMemory& memory) {
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  vkCheck(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device, buffer, &needs);
+  memory = allocateMemory(device, needs, memoryType(needs.memoryTypeBits));
+  vkCheck(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
+}
+
 }  // namespace
 
 HostBuffer::HostBuffer(const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage)
     : device_(context.device()), size_(size) {
   const ScopeFail cleanup([this] { reset(); });
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = size;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
-  VkMemoryRequirements needs;
-  vkGetBufferMemoryRequirements(device_, buffer_, &needs);
-  memory_ = allocateMemory(
-      device_, needs,
-      context.memoryType(needs.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                   VK_MEMORY_PROPERTY_HOST_COHERENT_BIT));
-  vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+  createBoundBuffer(
+      device_, size, usage,
+      [&](std::uint32_t allowed) {
+        return context.memoryType(
+            allowed, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+      },
+      buffer_, memory_);
   void* mapped = nullptr;
   vkCheck(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
   mapped_ = static_cast<std::byte*>(mapped);
@@ -65,17 +77,12 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize size,
                            VkBufferUsageFlags usage)
     : device_(context.device()), size_(size) {
   const ScopeFail cleanup([this] { reset(); });
-  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  info.size = size;
-  info.usage = usage;
-  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  vkCheck(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
-  VkMemoryRequirements needs;
-  vkGetBufferMemoryRequirements(device_, buffer_, &needs);
-  memory_ = allocateMemory(
-      device_, needs,
-      context.memoryTypePreferring(needs.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
-  vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+  createBoundBuffer(
+      device_, size, usage,
+      [&](std::uint32_t allowed) {
+        return context.memoryTypePreferring(allowed, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+      },
+      buffer_, memory_);
 }
 
 DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
