@@ -142,6 +142,7 @@ TEST_F(SimulateCli, GpuWithMotionOrSettleIsRefusedInOneLine) {
   const std::string pattern =
       std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/waterbomb_base.fold";
   for (const std::string other : {"--motion", "--settle"}) {
+    fs::remove(path("w.obj"));
     const CommandResult result =
         run("simulate " + pattern + " --percent 50 --gpu " + other + " --obj w.obj");
     EXPECT_EQ(result.exitCode, 1) << other << ": " << result.out << result.err;
