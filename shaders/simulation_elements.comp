@@ -30,7 +30,7 @@ void barForce(uint i) {
     precise const float stretch = length - bar4.x;
     float pull = bar4.y * stretch;
     pull += step.dampingRatio * bar4.z *
-            dot(velocities[bar.y].xyz - velocities[bar.x].xyz, delta) / length;
+            dot(startVelocity(bar.y) - startVelocity(bar.x), delta) / length;
     force = (pull / length) * delta;
   }
   slotForces[2u * i] = vec4(force, 0.0);

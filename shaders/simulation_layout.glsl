@@ -14,6 +14,11 @@ layout(push_constant) uniform Step {
   float dampingRatio;   // of each bar
   float glueStiffness;
   uint restLengths;     // 1: the element kernel only measures the bars' rest lengths
+  // A spring pulling one vertex toward a point (interaction/live_simulation.hpp's pull), as the
+  // impulse pullImpulse (to - x) on its velocity before the step; pullVertex ~0u: none.
+  uint pullVertex;
+  float pullImpulse;
+  vec3 pullTo;
 } step;
 
 // State (xyz used; w 0).
@@ -40,3 +45,11 @@ uint glueSlot0() { return hingeSlot0() + 4u * step.hingeCount; }
 // Every invocation of a dispatch of N workgroups visits index, index + 64 N, ...: a dispatch
 // stays within the 65,535 workgroups every device allows however many elements there are.
 uint dispatchStride() { return gl_NumWorkGroups.x * gl_WorkGroupSize.x; }
+
+// The velocity a step starts from: the stored one, and the pulled vertex's with the spring's
+// impulse (the CPU path adds it to the stored velocity before the step, which both kernels read).
+vec3 startVelocity(uint v) {
+  vec3 velocity = velocities[v].xyz;
+  if (v == step.pullVertex) velocity += step.pullImpulse * (step.pullTo - positions[v].xyz);
+  return velocity;
+}

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Each vertex sums its slots in the gather list's fixed order and moves by semi-implicit Euler
 // (engine/simulation/dynamic_solver.cpp's stepDynamic): v = (v + dt F / m) keep, x += dt v.
-// Pinned vertices stay.
+// Pinned vertices stay. A pulled vertex starts from its velocity with the pull's impulse.
 #include "simulation_layout.glsl"
 
 void main() {
@@ -12,7 +12,7 @@ void main() {
     vec3 total = vec3(0.0);
     for (uint s = vertex.x; s < vertex.y; ++s) total += slotForces[gatherSlots[s]].xyz;
     const float mass = uintBitsToFloat(vertex.w);
-    const vec3 velocity = (velocities[v].xyz + (step.timeStep / mass) * total) * step.keep;
+    const vec3 velocity = (startVelocity(v) + (step.timeStep / mass) * total) * step.keep;
     velocities[v] = vec4(velocity, 0.0);
     positions[v] = vec4(positions[v].xyz + step.timeStep * velocity, 0.0);
   }

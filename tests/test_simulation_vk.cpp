@@ -114,6 +114,29 @@ TEST_F(SimulationVk, GpuAndCpuPathsAgreeAfterTheSameSteps) {
   }
 }
 
+// A pull (the live window's spring to the hand) on the device is the CPU path's: before each
+// step the pulled vertex's velocity gains impulse (to - x), as LiveSimulation does between
+// single CPU steps. Both end within the paths' tolerance, and the pull moved the sheet well past
+// it.
+TEST_F(SimulationVk, APullMovesTheSheetAsTheCpuPathsPull) {
+  const BarHingeModel model = buildModel(creasedSquare(12, 6, 90.0, 0.2));
+  const GpuPull pull{5, model.flatPositions[5] + glm::dvec3(0.0, 0.0, 0.05), 0.05 / model.timeStep};
+  constexpr std::size_t kSteps = 300;
+  SimulationState cpu = flatState(model), unpulled = flatState(model);
+  for (std::size_t s = 0; s < kSteps; ++s) {
+    cpu.velocities.resize(model.vertexCount(), glm::dvec3(0.0));
+    cpu.velocities[pull.vertex] += pull.impulse * (pull.to - cpu.positions[pull.vertex]);
+    stepDynamic(model, 0.3, cpu, 1);
+  }
+  stepDynamic(model, 0.3, unpulled, kSteps);
+  GpuDynamicSolver gpu(*context_, model);
+  gpu.step(0.3, kSteps, pull);
+  SimulationState device;
+  gpu.state(device);
+  EXPECT_GT(largestDistance(cpu.positions, unpulled.positions), 1e-2 * diagonal(model));
+  EXPECT_LE(largestDistance(device.positions, cpu.positions), 1e-5 * diagonal(model));
+}
+
 // At 0% the flat development is at rest on the device exactly: the bars' rest lengths are
 // measured there by the step's own expression, so no force rounds away from zero.
 TEST_F(SimulationVk, AtZeroPercentTheFlatStateStaysExactlyFlat) {

@@ -35,12 +35,18 @@ enum Binding : std::uint32_t {
   kBindingCount
 };
 
+constexpr std::uint32_t kNoPull = ~0u;
+
 // shaders/simulation_layout.glsl's push constants.
 struct StepConstants {
   std::uint32_t barCount, hingeCount, glueCount, vertexCount;
   float foldAmount, timeStep, keep, dampingRatio, glueStiffness;
   std::uint32_t restLengths;
+  std::uint32_t pullVertex = kNoPull;
+  float pullImpulse = 0.0f;
+  float pullTo[3] = {0.0f, 0.0f, 0.0f};  // the block's vec3, at offset 48 (std430: 16-aligned)
 };
+static_assert(sizeof(StepConstants) == 60);
 
 constexpr std::uint32_t kWorkgroupSize = 64;     // local_size_x
 constexpr std::uint32_t kMaxWorkgroups = 65535;  // every device's maxComputeWorkGroupCount[0]
@@ -95,7 +101,8 @@ GpuDynamicSolver::GpuDynamicSolver(const VulkanContext& context, const BarHingeM
       glueCount_(static_cast<std::uint32_t>(model.glue.size())),
       vertexCount_(static_cast<std::uint32_t>(model.vertexCount())),
       glueStiffness_(static_cast<float>(model.glueStiffness)),
-      hinges_(model.hinges) {
+      hinges_(model.hinges),
+      pinned_(model.pinned.begin(), model.pinned.end()) {
   const ScopeFail cleanup([this] { destroy(); });
   timeStep_ = options.timeStep > 0.0 ? options.timeStep
               : model.timeStep > 0.0 ? model.timeStep
@@ -208,8 +215,8 @@ GpuDynamicSolver::GpuDynamicSolver(const VulkanContext& context, const BarHingeM
   const std::vector<glm::vec4> flat = toFloat4(model.flatPositions, vertices.size());
   upload(buffers_[kPositions].buffer(), flat.data(), sizes[kPositions]);
   submitAndWait([&](VkCommandBuffer commands) {
-    StepConstants constants{barCount_, hingeCount_, glueCount_, vertexCount_, 0.0f,
-                            0.0f,      1.0f,        0.0f,       0.0f,         1u};
+    StepConstants constants{barCount_, hingeCount_, glueCount_, vertexCount_, 0.0f, 0.0f, 1.0f,
+                            0.0f,      0.0f,        1u,         kNoPull,      0.0f, {}};
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
                             &descriptorSet_, 0, nullptr);
     vkCmdPushConstants(commands, pipelineLayout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof constants,
@@ -312,17 +319,26 @@ void GpuDynamicSolver::setState(const SimulationState& state) {
   steps_ = state.steps;
 }
 
-void GpuDynamicSolver::step(double foldAmount, std::size_t steps) {
-  const StepConstants constants{barCount_,
-                                hingeCount_,
-                                glueCount_,
-                                vertexCount_,
-                                float(foldAmount),
-                                float(timeStep_),
-                                float(1.0 - options_.velocityDamping),
-                                float(options_.dampingRatio),
-                                glueStiffness_,
-                                0u};
+void GpuDynamicSolver::step(double foldAmount, std::size_t steps,
+                            const std::optional<GpuPull>& pull) {
+  StepConstants constants{barCount_,
+                          hingeCount_,
+                          glueCount_,
+                          vertexCount_,
+                          float(foldAmount),
+                          float(timeStep_),
+                          float(1.0 - options_.velocityDamping),
+                          float(options_.dampingRatio),
+                          glueStiffness_,
+                          0u,
+                          kNoPull,
+                          0.0f,
+                          {}};
+  if (pull && pull->vertex < vertexCount_ && !pinned_[pull->vertex]) {
+    constants.pullVertex = pull->vertex;
+    constants.pullImpulse = float(pull->impulse);
+    for (int k = 0; k < 3; ++k) constants.pullTo[k] = float(pull->to[k]);
+  }
   const std::size_t elements = std::size_t(barCount_) + hingeCount_ + glueCount_;
   for (std::size_t done = 0; done < steps;) {
     const std::size_t now = std::min(kStepsPerSubmit, steps - done);

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -33,6 +34,14 @@
 #include "engine/simulation/dynamic_solver.hpp"
 
 namespace curvefold {
+
+// One vertex pulled toward a point (the model's frame) by a spring, as the live simulation pulls
+// (interaction/live_simulation.hpp): before each step its velocity gains impulse (to - x).
+struct GpuPull {
+  std::uint32_t vertex = 0;
+  glm::dvec3 to{0.0};
+  double impulse = 0.0;  // dt k / m, per metre
+};
 
 class GpuDynamicSolver {
  public:
@@ -47,8 +56,9 @@ class GpuDynamicSolver {
   // Replaces the device's state: positions, velocities (zero when empty), hinge angles
   // (measured from the positions when their count is not the hinges'), and the step count.
   void setState(const SimulationState& state);
-  // Advances the device's state by `steps` fixed steps toward the fold amount (0..1).
-  void step(double foldAmount, std::size_t steps);
+  // Advances the device's state by `steps` fixed steps toward the fold amount (0..1), with the
+  // pull, if any, before each step (none on a pinned vertex).
+  void step(double foldAmount, std::size_t steps, const std::optional<GpuPull>& pull = {});
   // Copies the device's state into `state` (positions, velocities, hinge angles, steps).
   void state(SimulationState& state);
   // Only the positions (what a frame draws).
@@ -80,7 +90,8 @@ class GpuDynamicSolver {
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence done_ = VK_NULL_HANDLE;
-  std::vector<Hinge> hinges_;  // to measure angles when a state comes without them
+  std::vector<Hinge> hinges_;         // to measure angles when a state comes without them
+  std::vector<std::uint8_t> pinned_;  // a pull on a pinned vertex is none
 };
 
 }  // namespace curvefold
