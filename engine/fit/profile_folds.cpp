@@ -189,6 +189,137 @@ std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamp
   return rings;
 }
 
+double ringCutRadius(double q, int order) {
+  const double half = std::numbers::pi / std::max(order, 2);
+  q = std::clamp(q, std::cos(half), 1.0);
+  // A wedge |theta| < w of the circle reflected across its chord: at theta its distance from
+  // the axis is |(2q - cos theta, sin theta)|; the rest of [0, half] keeps radius 1. Simpson.
+  const double w = std::acos(q);
+  constexpr int kSteps = 32;
+  double integral = 0.0;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double t = w * i / kSteps;
+    const double f = std::sqrt(std::max(0.0, 4.0 * q * q - 4.0 * q * std::cos(t) + 1.0));
+    integral += f * (i == 0 || i == kSteps ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0));
+  }
+  integral *= w / (3.0 * kSteps);
+  return ((half - w) + integral) / half;
+}
+
+namespace {
+
+// The q whose cut leaves the tube at `fraction` of its radius (ringCutRadius inverted, clamped).
+double cutDepthFor(double fraction, int order) {
+  double lo = std::cos(std::numbers::pi / order), hi = 1.0;
+  if (fraction <= ringCutRadius(lo, order)) return lo;
+  if (fraction >= 1.0) return hi;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (ringCutRadius(mid, order) < fraction ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
+                                 const std::vector<SurfaceSample>& targetSamples,
+                                 const RevolutionAxis& axis, double turn) {
+  std::vector<RingShape> rings;
+  if (sheetSamples.empty() || targetSamples.empty()) return rings;
+  double lo = 1e300, hi = -1e300;
+  std::vector<glm::dvec2> sheet, target;
+  for (const SurfaceSample& s : sheetSamples) {
+    sheet.push_back(heightAndRadius(s.position, axis));
+    lo = std::min(lo, sheet.back().x);
+    hi = std::max(hi, sheet.back().x);
+  }
+  if (!(hi - lo > 1e-9)) return rings;  // a sheet across the axis: no tube to narrow
+  for (const SurfaceSample& s : targetSamples) target.push_back(heightAndRadius(s.position, axis));
+  auto bin = [&](double t) { return static_cast<int>((t - lo) / (hi - lo) * kBins); };
+  std::array<double, kBins> sheetSum{}, targetSum{};
+  std::array<int, kBins> sheetCount{}, targetCount{};
+  for (const glm::dvec2& p : sheet) {
+    const int b = std::clamp(bin(p.x), 0, kBins - 1);
+    sheetSum[b] += p.y;
+    ++sheetCount[b];
+  }
+  for (const glm::dvec2& p : target) {
+    const int b = bin(p.x);
+    if (b < 0 || b >= kBins) continue;  // beyond the sheet's length: no ring reaches it
+    targetSum[b] += p.y;
+    ++targetCount[b];
+  }
+  auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kBins; };
+  auto sheetRadius = [&](int b) { return sheetSum[b] / std::max(sheetCount[b], 1); };
+  // Runs of heights where the target lies inside the sheet (by more than half a percent).
+  std::vector<bool> inside(kBins, false);
+  for (int b = 0; b < kBins; ++b)
+    inside[b] = sheetCount[b] >= 3 && targetCount[b] >= 3 &&
+                targetSum[b] / targetCount[b] < 0.995 * sheetRadius(b);
+  std::vector<std::pair<int, int>> segments;  // [first, last] bins
+  for (int b = 0; b < kBins;) {
+    if (!inside[b]) {
+      ++b;
+      continue;
+    }
+    int e = b;
+    while (e + 1 < kBins && inside[e + 1]) ++e;
+    int narrowest = b;
+    for (int c = b; c <= e; ++c)
+      if (targetSum[c] / targetCount[c] / sheetRadius(c) <
+          targetSum[narrowest] / targetCount[narrowest] / sheetRadius(narrowest))
+        narrowest = c;
+    for (const auto& [first, last] :
+         {std::pair{b, e}, std::pair{b, narrowest}, std::pair{narrowest, e}})
+      if (last > first &&
+          std::find(segments.begin(), segments.end(), std::pair{first, last}) == segments.end())
+        segments.emplace_back(first, last);
+    b = e + 1;
+  }
+  // The sheet's radius at its ends, where a tilted ring cuts deepest outside its segment.
+  int first = 0, last = kBins - 1;
+  while (first < last && sheetCount[first] < 3) ++first;
+  while (last > first && sheetCount[last] < 3) --last;
+  for (const int order : {6, 8, 12, 16}) {
+    const double deepest = std::cos(std::numbers::pi / order);
+    for (const auto& [from, to] : segments) {
+      // Weighted least squares of the plane's distance rho(t) = c + g (t - mean) on the depths.
+      double sw = 0.0, st = 0.0;
+      for (int b = from; b <= to; ++b) {
+        sw += targetCount[b];
+        st += targetCount[b] * centre(b);
+      }
+      const double mean = st / sw;
+      double sv = 0.0, stt = 0.0, stv = 0.0;
+      for (int b = from; b <= to; ++b) {
+        const double depth =
+            cutDepthFor(targetSum[b] / targetCount[b] / sheetRadius(b), order) * sheetRadius(b);
+        const double d = centre(b) - mean;
+        sv += targetCount[b] * depth;
+        stt += targetCount[b] * d * d;
+        stv += targetCount[b] * d * depth;
+      }
+      double c = sv / sw, g = stt > 0.0 ? stv / stt : 0.0;
+      // Past the segment the line goes on: keep it off the depth where the wedges meet (they
+      // would fold over each other) at the sheet's ends.
+      for (const int end : {first, last}) {
+        const double floor = deepest * sheetRadius(end), at = centre(end) - mean;
+        c = std::max(c, deepest * sheetRadius(std::clamp(bin(mean), 0, kBins - 1)));
+        if (c + g * at < floor && std::abs(at) > 1e-12) g = (floor - c) / at;
+      }
+      RingShape shape;
+      shape.height = mean;
+      shape.radius = c;
+      shape.tilt = std::atan(-g);
+      shape.turn = turn;
+      shape.order = order;
+      rings.push_back(shape);
+    }
+  }
+  return rings;
+}
+
 Ring ringOf(const RingShape& shape, const RevolutionAxis& axis) {
   const glm::dvec3 u = perpendicular(axis.direction), v = glm::cross(axis.direction, u);
   const bool across = shape.order == 1;
@@ -262,6 +393,13 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
   };
   std::vector<RingShape> shapes =
       ringProposals(sheetSamples, targetSamples, axis, proposals, random);
+  // Rings solved on the radius profile (a tube's neck), at two turns: a second ring lines up with
+  // a first one's wedges or falls between them.
+  for (const double turn : {0.0, 0.5})
+    for (RingShape shape : neckRings(sheetSamples, targetSamples, axis)) {
+      shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
+      shapes.push_back(shape);
+    }
   std::vector<double> scores(shapes.size(), 1e300);
   tbb::parallel_for(std::size_t(0), shapes.size(), [&](std::size_t r) {
     if (!deadline.passed()) scores[r] = preview(shapes[r]);
