@@ -206,22 +206,6 @@ double ringCutRadius(double q, int order) {
   return ((half - w) + integral) / half;
 }
 
-namespace {
-
-// The q whose cut leaves the tube at `fraction` of its radius (ringCutRadius inverted, clamped).
-double cutDepthFor(double fraction, int order) {
-  double lo = std::cos(std::numbers::pi / order), hi = 1.0;
-  if (fraction <= ringCutRadius(lo, order)) return lo;
-  if (fraction >= 1.0) return hi;
-  for (int i = 0; i < 40; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (ringCutRadius(mid, order) < fraction ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-}  // namespace
-
 std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
                                  const std::vector<SurfaceSample>& targetSamples,
                                  const RevolutionAxis& axis, double turn) {
@@ -252,65 +236,55 @@ std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
   }
   auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kBins; };
   auto sheetRadius = [&](int b) { return sheetSum[b] / std::max(sheetCount[b], 1); };
-  // Runs of heights where the target lies inside the sheet (by more than half a percent).
-  std::vector<bool> inside(kBins, false);
+  // A tilted ring cuts from the height t0 where its planes meet the tube (rho(t0) = R) ever
+  // deeper toward one end, down to q_end R there (q_end at least cos(pi / n): deeper, the wedges
+  // would fold over each other). Each (t0, q_end, end) is scored on the profile itself: the
+  // predicted mean radius R ringCutRadius(rho(t) / R, n) against the target's, bin by bin.
+  std::vector<int> used;
   for (int b = 0; b < kBins; ++b)
-    inside[b] = sheetCount[b] >= 3 && targetCount[b] >= 3 &&
-                targetSum[b] / targetCount[b] < 0.995 * sheetRadius(b);
-  std::vector<std::pair<int, int>> segments;  // [first, last] bins
-  for (int b = 0; b < kBins;) {
-    if (!inside[b]) {
-      ++b;
-      continue;
+    if (sheetCount[b] >= 3 && targetCount[b] >= 3) used.push_back(b);
+  if (used.empty()) return rings;
+  auto radiusAt = [&](double t) {
+    return sheetRadius(std::clamp(bin(t), used.front(), used.back()));
+  };
+  auto gap = [&](int order, double t0, double rhoEnd, double tEnd) {
+    const double radius0 = radiusAt(t0);
+    double sum = 0.0;
+    for (const int b : used) {
+      const double radius = sheetRadius(b), t = centre(b);
+      const double rho = radius0 + (t - t0) / (tEnd - t0) * (rhoEnd - radius0);
+      const double predicted = radius * ringCutRadius(rho / radius, order);
+      sum += targetCount[b] * std::abs(predicted - targetSum[b] / targetCount[b]);
     }
-    int e = b;
-    while (e + 1 < kBins && inside[e + 1]) ++e;
-    int narrowest = b;
-    for (int c = b; c <= e; ++c)
-      if (targetSum[c] / targetCount[c] / sheetRadius(c) <
-          targetSum[narrowest] / targetCount[narrowest] / sheetRadius(narrowest))
-        narrowest = c;
-    for (const auto& [first, last] :
-         {std::pair{b, e}, std::pair{b, narrowest}, std::pair{narrowest, e}})
-      if (last > first &&
-          std::find(segments.begin(), segments.end(), std::pair{first, last}) == segments.end())
-        segments.emplace_back(first, last);
-    b = e + 1;
-  }
-  // The sheet's radius at its ends, where a tilted ring cuts deepest outside its segment.
-  int first = 0, last = kBins - 1;
-  while (first < last && sheetCount[first] < 3) ++first;
-  while (last > first && sheetCount[last] < 3) --last;
+    return sum;
+  };
+  double untouched = 0.0;
+  for (const int b : used)
+    untouched += targetCount[b] * std::abs(sheetRadius(b) - targetSum[b] / targetCount[b]);
   for (const int order : {6, 8, 12, 16}) {
     const double deepest = std::cos(std::numbers::pi / order);
-    for (const auto& [from, to] : segments) {
-      // Weighted least squares of the plane's distance rho(t) = c + g (t - mean) on the depths.
-      double sw = 0.0, st = 0.0;
-      for (int b = from; b <= to; ++b) {
-        sw += targetCount[b];
-        st += targetCount[b] * centre(b);
+    for (const int end : {used.front(), used.back()}) {
+      const double tEnd = end == used.front() ? lo : hi, radiusEnd = sheetRadius(end);
+      double best = untouched, bestT0 = 0.0, bestRho = 0.0;
+      for (int e = 0; e <= kBins; ++e) {
+        const double t0 = lo + (hi - lo) * e / kBins;
+        if (std::abs(t0 - tEnd) < 1e-12) continue;
+        for (int level = 0; level <= 8; ++level) {
+          const double rhoEnd = radiusEnd * (deepest + (1.0 - deepest) * level / 8.0);
+          if (const double g = gap(order, t0, rhoEnd, tEnd); g < best) {
+            best = g;
+            bestT0 = t0;
+            bestRho = rhoEnd;
+          }
+        }
       }
-      const double mean = st / sw;
-      double sv = 0.0, stt = 0.0, stv = 0.0;
-      for (int b = from; b <= to; ++b) {
-        const double depth =
-            cutDepthFor(targetSum[b] / targetCount[b] / sheetRadius(b), order) * sheetRadius(b);
-        const double d = centre(b) - mean;
-        sv += targetCount[b] * depth;
-        stt += targetCount[b] * d * d;
-        stv += targetCount[b] * d * depth;
-      }
-      double c = sv / sw, g = stt > 0.0 ? stv / stt : 0.0;
-      // Past the segment the line goes on: keep it off the depth where the wedges meet (they
-      // would fold over each other) at the sheet's ends.
-      for (const int end : {first, last}) {
-        const double floor = deepest * sheetRadius(end), at = centre(end) - mean;
-        c = std::max(c, deepest * sheetRadius(std::clamp(bin(mean), 0, kBins - 1)));
-        if (c + g * at < floor && std::abs(at) > 1e-12) g = (floor - c) / at;
-      }
+      if (!(best < untouched)) continue;
+      // The plane through (t0, R(t0)) and (tEnd, rhoEnd): rho(t) = R0 + g (t - t0).
+      const double radius0 = radiusAt(bestT0);
+      const double g = (bestRho - radius0) / (tEnd - bestT0);
       RingShape shape;
-      shape.height = mean;
-      shape.radius = c;
+      shape.height = bestT0;
+      shape.radius = radius0;
       shape.tilt = std::atan(-g);
       shape.turn = turn;
       shape.order = order;

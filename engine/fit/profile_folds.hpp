@@ -34,11 +34,12 @@
 // stay apart while q >= cos(pi / n), and the tube's mean radius at that height falls to
 // ringCutRadius(q, n) R (down to 0.83 R for n = 6, 0.90 R for n = 8, 0.97 R for n = 16). Tilting
 // the planes by beta makes that depth vary linearly along the axis, q R = rho - tan(beta) (t - h):
-// a neck or a taper. Where the target lies inside the sheet (its mean radius at height t below the
-// sheet's), the depth each height needs (ringCutRadius inverted) is fitted by weighted least
-// squares with a line, over the whole run of such heights and over each side of its narrowest
-// point (a waist is two tapers), and kept off the depth where the wedges would meet over the
-// sheet's length. What a tube cannot reach by reflection: a crease along a circle about the
+// a neck or a taper. The ring is solved on the radius profile, not drawn: for each n and each
+// end of the sheet, the height t0 where the cut begins and its depth at that end (from
+// cos(pi / n), past which the wedges would fold over each other, to 1) over a grid of 25 x 9,
+// the pair whose predicted mean radius by height (ringCutRadius) comes nearest the target's
+// (summed over the heights both reach) kept when nearer than the sheet as it is. A waist takes
+// one ring from each end. What a tube cannot reach by reflection: a crease along a circle about the
 // axis keeps the circle's geodesic curvature (dr/ds over r, s the profile's arc length), so past
 // it the radius goes on changing at the same rate and only the direction along the axis may flip
 // (the plane across the axis: the sheet heads back). A cone's profile stays monotone in radius
