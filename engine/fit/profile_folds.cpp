@@ -369,6 +369,7 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
       ringProposals(sheetSamples, targetSamples, axis, proposals, random);
   // Rings solved on the radius profile (a tube's neck), at two turns: a second ring lines up with
   // a first one's wedges or falls between them.
+  const std::size_t drawn = shapes.size();
   for (const double turn : {0.0, 0.5})
     for (RingShape shape : neckRings(sheetSamples, targetSamples, axis)) {
       shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
@@ -393,6 +394,11 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
                      [&](const RingShape& kept) { return kept.order == shapes[r].order; }))
       refined.push_back(shapes[r]);
   }
+  // The two solved rings that preview best are also made as solved (a drawn ring of the same
+  // order may preview better and then cross itself on the sheet, leaving none of that order).
+  std::vector<RingShape> solved;
+  for (std::size_t r : order)
+    if (r >= drawn && solved.size() < 2 && scores[r] < 1e300) solved.push_back(shapes[r]);
   const double size = glm::length(points.front() - axis.point) + spacing;
   tbb::parallel_for(std::size_t(0), refined.size(), [&](std::size_t k) {
     RingShape& best = refined[k];
@@ -442,6 +448,7 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
     }
   });
   if (deadline.givesUp()) return {};
+  refined.insert(refined.end(), solved.begin(), solved.end());
 
   // Each refined ring made on the sheet itself (a session of each thread's own), scored, checked
   // for passing through itself, and taken back.
