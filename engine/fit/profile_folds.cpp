@@ -237,8 +237,9 @@ std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
   auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kBins; };
   auto sheetRadius = [&](int b) { return sheetSum[b] / std::max(sheetCount[b], 1); };
   // A tilted ring cuts from the height t0 where its planes meet the tube (rho(t0) = R) ever
-  // deeper toward one end, down to q_end R there (q_end at least cos(pi / n): deeper, the wedges
-  // would fold over each other). Each (t0, q_end, end) is scored on the profile itself: the
+  // deeper toward one end, down to q_end R there (q_end short of cos(pi / n), where the wedges
+  // meet, by an eighth of the way to 1: a sheet a little off the axis, or wedges just touching,
+  // would cross). Each (t0, q_end, end) is scored on the profile itself: the
   // predicted mean radius R ringCutRadius(rho(t) / R, n) against the target's, bin by bin.
   std::vector<int> used;
   for (int b = 0; b < kBins; ++b)
@@ -269,7 +270,7 @@ std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
       for (int e = 0; e <= kBins; ++e) {
         const double t0 = lo + (hi - lo) * e / kBins;
         if (std::abs(t0 - tEnd) < 1e-12) continue;
-        for (int level = 0; level <= 8; ++level) {
+        for (int level = 1; level <= 8; ++level) {
           const double rhoEnd = radiusEnd * (deepest + (1.0 - deepest) * level / 8.0);
           if (const double g = gap(order, t0, rhoEnd, tEnd); g < best) {
             best = g;

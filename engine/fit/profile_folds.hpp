@@ -35,8 +35,8 @@
 // ringCutRadius(q, n) R (down to 0.83 R for n = 6, 0.90 R for n = 8, 0.97 R for n = 16). Tilting
 // the planes by beta makes that depth vary linearly along the axis, q R = rho - tan(beta) (t - h):
 // a neck or a taper. The ring is solved on the radius profile, not drawn: for each n and each
-// end of the sheet, the height t0 where the cut begins and its depth at that end (from
-// cos(pi / n), past which the wedges would fold over each other, to 1) over a grid of 25 x 9,
+// end of the sheet, the height t0 where the cut begins and its depth at that end (from just
+// short of cos(pi / n), where the wedges would meet and cross, to 1) over a grid of 25 x 8,
 // the pair whose predicted mean radius by height (ringCutRadius) comes nearest the target's
 // (summed over the heights both reach) kept when nearer than the sheet as it is. A waist takes
 // one ring from each end. What a tube cannot reach by reflection: a crease along a circle about the
