@@ -189,6 +189,112 @@ std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamp
   return rings;
 }
 
+double ringCutRadius(double q, int order) {
+  const double half = std::numbers::pi / std::max(order, 2);
+  q = std::clamp(q, std::cos(half), 1.0);
+  // A wedge |theta| < w of the circle reflected across its chord: at theta its distance from
+  // the axis is |(2q - cos theta, sin theta)|; the rest of [0, half] keeps radius 1. Simpson.
+  const double w = std::acos(q);
+  constexpr int kSteps = 32;
+  double integral = 0.0;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double t = w * i / kSteps;
+    const double f = std::sqrt(std::max(0.0, 4.0 * q * q - 4.0 * q * std::cos(t) + 1.0));
+    integral += f * (i == 0 || i == kSteps ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0));
+  }
+  integral *= w / (3.0 * kSteps);
+  return ((half - w) + integral) / half;
+}
+
+std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
+                                 const std::vector<SurfaceSample>& targetSamples,
+                                 const RevolutionAxis& axis, double turn) {
+  std::vector<RingShape> rings;
+  if (sheetSamples.empty() || targetSamples.empty()) return rings;
+  double lo = 1e300, hi = -1e300;
+  std::vector<glm::dvec2> sheet, target;
+  for (const SurfaceSample& s : sheetSamples) {
+    sheet.push_back(heightAndRadius(s.position, axis));
+    lo = std::min(lo, sheet.back().x);
+    hi = std::max(hi, sheet.back().x);
+  }
+  if (!(hi - lo > 1e-9)) return rings;  // a sheet across the axis: no tube to narrow
+  for (const SurfaceSample& s : targetSamples) target.push_back(heightAndRadius(s.position, axis));
+  auto bin = [&](double t) { return static_cast<int>((t - lo) / (hi - lo) * kBins); };
+  std::array<double, kBins> sheetSum{}, targetSum{};
+  std::array<int, kBins> sheetCount{}, targetCount{};
+  for (const glm::dvec2& p : sheet) {
+    const int b = std::clamp(bin(p.x), 0, kBins - 1);
+    sheetSum[b] += p.y;
+    ++sheetCount[b];
+  }
+  for (const glm::dvec2& p : target) {
+    const int b = bin(p.x);
+    if (b < 0 || b >= kBins) continue;  // beyond the sheet's length: no ring reaches it
+    targetSum[b] += p.y;
+    ++targetCount[b];
+  }
+  auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kBins; };
+  auto sheetRadius = [&](int b) { return sheetSum[b] / std::max(sheetCount[b], 1); };
+  // A tilted ring cuts from the height t0 where its planes meet the tube (rho(t0) = R) ever
+  // deeper toward one end, down to q_end R there (q_end short of cos(pi / n), where the wedges
+  // meet, by an eighth of the way to 1: a sheet a little off the axis, or wedges just touching,
+  // would cross). Each (t0, q_end, end) is scored on the profile itself: the
+  // predicted mean radius R ringCutRadius(rho(t) / R, n) against the target's, bin by bin.
+  std::vector<int> used;
+  for (int b = 0; b < kBins; ++b)
+    if (sheetCount[b] >= 3 && targetCount[b] >= 3) used.push_back(b);
+  if (used.empty()) return rings;
+  auto radiusAt = [&](double t) {
+    return sheetRadius(std::clamp(bin(t), used.front(), used.back()));
+  };
+  auto gap = [&](int order, double t0, double rhoEnd, double tEnd) {
+    const double radius0 = radiusAt(t0);
+    double sum = 0.0;
+    for (const int b : used) {
+      const double radius = sheetRadius(b), t = centre(b);
+      const double rho = radius0 + (t - t0) / (tEnd - t0) * (rhoEnd - radius0);
+      const double predicted = radius * ringCutRadius(rho / radius, order);
+      sum += targetCount[b] * std::abs(predicted - targetSum[b] / targetCount[b]);
+    }
+    return sum;
+  };
+  double untouched = 0.0;
+  for (const int b : used)
+    untouched += targetCount[b] * std::abs(sheetRadius(b) - targetSum[b] / targetCount[b]);
+  for (const int order : {6, 8, 12, 16}) {
+    const double deepest = std::cos(std::numbers::pi / order);
+    for (const int end : {used.front(), used.back()}) {
+      const double tEnd = end == used.front() ? lo : hi, radiusEnd = sheetRadius(end);
+      double best = untouched, bestT0 = 0.0, bestRho = 0.0;
+      for (int e = 0; e <= kBins; ++e) {
+        const double t0 = lo + (hi - lo) * e / kBins;
+        if (std::abs(t0 - tEnd) < 1e-12) continue;
+        for (int level = 1; level <= 8; ++level) {
+          const double rhoEnd = radiusEnd * (deepest + (1.0 - deepest) * level / 8.0);
+          if (const double g = gap(order, t0, rhoEnd, tEnd); g < best) {
+            best = g;
+            bestT0 = t0;
+            bestRho = rhoEnd;
+          }
+        }
+      }
+      if (!(best < untouched)) continue;
+      // The plane through (t0, R(t0)) and (tEnd, rhoEnd): rho(t) = R0 + g (t - t0).
+      const double radius0 = radiusAt(bestT0);
+      const double g = (bestRho - radius0) / (tEnd - bestT0);
+      RingShape shape;
+      shape.height = bestT0;
+      shape.radius = radius0;
+      shape.tilt = std::atan(-g);
+      shape.turn = turn;
+      shape.order = order;
+      rings.push_back(shape);
+    }
+  }
+  return rings;
+}
+
 Ring ringOf(const RingShape& shape, const RevolutionAxis& axis) {
   const glm::dvec3 u = perpendicular(axis.direction), v = glm::cross(axis.direction, u);
   const bool across = shape.order == 1;
@@ -262,6 +368,14 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
   };
   std::vector<RingShape> shapes =
       ringProposals(sheetSamples, targetSamples, axis, proposals, random);
+  // Rings solved on the radius profile (a tube's neck), at two turns: a second ring lines up with
+  // a first one's wedges or falls between them.
+  const std::size_t drawn = shapes.size();
+  for (const double turn : {0.0, 0.5})
+    for (RingShape shape : neckRings(sheetSamples, targetSamples, axis)) {
+      shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
+      shapes.push_back(shape);
+    }
   std::vector<double> scores(shapes.size(), 1e300);
   tbb::parallel_for(std::size_t(0), shapes.size(), [&](std::size_t r) {
     if (!deadline.passed()) scores[r] = preview(shapes[r]);
@@ -281,6 +395,11 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
                      [&](const RingShape& kept) { return kept.order == shapes[r].order; }))
       refined.push_back(shapes[r]);
   }
+  // The two solved rings that preview best are also made as solved (a drawn ring of the same
+  // order may preview better and then cross itself on the sheet, leaving none of that order).
+  std::vector<RingShape> solved;
+  for (std::size_t r : order)
+    if (r >= drawn && solved.size() < 2 && scores[r] < 1e300) solved.push_back(shapes[r]);
   const double size = glm::length(points.front() - axis.point) + spacing;
   tbb::parallel_for(std::size_t(0), refined.size(), [&](std::size_t k) {
     RingShape& best = refined[k];
@@ -330,6 +449,7 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
     }
   });
   if (deadline.givesUp()) return {};
+  refined.insert(refined.end(), solved.begin(), solved.end());
 
   // Each refined ring made on the sheet itself (a session of each thread's own), scored, checked
   // for passing through itself, and taken back.

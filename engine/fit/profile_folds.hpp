@@ -28,6 +28,25 @@
 // scores many on sheet samples (previewRing), refines the best few by NLopt's Subplex over
 // (h, rho, beta, phi), and makes those on the sheet.
 //
+// neckRings: rings solved on the radius profile rather than drawn (for a tube-like sheet: a
+// cylinder or a steep cone about the axis). A ring of n planes parallel to the axis at distance
+// q R from it turns each of n wedges of a tube of radius R inward about its chord; the wedges
+// stay apart while q >= cos(pi / n), and the tube's mean radius at that height falls to
+// ringCutRadius(q, n) R (down to 0.83 R for n = 6, 0.90 R for n = 8, 0.97 R for n = 16). Tilting
+// the planes by beta makes that depth vary linearly along the axis, q R = rho - tan(beta) (t - h):
+// a neck or a taper. The ring is solved on the radius profile, not drawn: for each n and each
+// end of the sheet, the height t0 where the cut begins and its depth at that end (from just
+// short of cos(pi / n), where the wedges would meet and cross, to 1) over a grid of 25 x 8,
+// the pair whose predicted mean radius by height (ringCutRadius) comes nearest the target's
+// (summed over the heights both reach) kept when nearer than the sheet as it is. A waist takes
+// one ring from each end. What a tube cannot reach by reflection: a crease along a circle about the
+// axis keeps the circle's geodesic curvature (dr/ds over r, s the profile's arc length), so past
+// it the radius goes on changing at the same rate and only the direction along the axis may flip
+// (the plane across the axis: the sheet heads back). A cone's profile stays monotone in radius
+// under such folds: no waist, no bulge, and a cylinder keeps its radius. Only rings of n flaps
+// (or pleats) narrow a tube, and the cut tube is a star of n lobes, not a circle (the lobes'
+// depth, about (1 - cos(pi / n)) R, bounds how close it comes).
+//
 // makeRing: a ring made on a session, each plane's fold seeded at the sheet vertex farthest on
 // its side (the fold takes the part connected to it); the folds a session refuses (a sliver, a
 // plane missing the sheet as it lies by then) are left out.
@@ -85,6 +104,16 @@ std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamp
                                      const std::vector<SurfaceSample>& targetSamples,
                                      const RevolutionAxis& axis, std::size_t count,
                                      std::mt19937_64& random);
+
+// The mean distance from the axis, over R, of a tube of radius R cut by a ring of `order`
+// planes parallel to its axis at q R from it (q in [cos(pi / order), 1]; clamped there).
+double ringCutRadius(double q, int order);
+
+// Rings solved on the radius profile (neckRings above): for each order of 6, 8, 12 and 16, up
+// to three rings (a whole neck, each side of a waist), turned by `turn`.
+std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
+                                 const std::vector<SurfaceSample>& targetSamples,
+                                 const RevolutionAxis& axis, double turn = 0.0);
 
 // Sheet samples (points and unit normals) as a ring leaves them, approximately: each point on
 // the side a plane's normal points to reflected, plane after plane (which parts connect is not
