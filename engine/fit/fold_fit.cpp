@@ -678,6 +678,7 @@ class FitRun {
   }
 
   FitResult run() {
+    measureSamples_ = samplesWithinTime();
     result_.steps.push_back(measureNow(0));
     // What one fold kept costs at the end (its exact measure and the caller's report of it):
     // about the start's measure, twice over (the report, and a sheet grown by folds).
@@ -733,10 +734,30 @@ class FitRun {
     }
   }
 
+  // The samples of every exact measure of this fit: all of distanceSamples, unless the start's
+  // measure with them would take more than a tenth of the time left (a large or far target under
+  // a short --time), judged by a measure of a few samples first; then as many as that tenth
+  // allows. With no clock, always all, so a fit by evaluations repeats bit for bit.
+  std::size_t samplesWithinTime() const {
+    const std::size_t all = options_.distanceSamples;
+    const std::size_t probe = std::min(all, kProbeSamples);
+    if (end_ == std::chrono::steady_clock::time_point::max() || probe == all) return all;
+    const auto before = std::chrono::steady_clock::now();
+    surfaceDistance(meshOf(session_.fixed()), fitter_.target(), probe);
+    const auto after = std::chrono::steady_clock::now();
+    const double cost = std::chrono::duration<double>(after - before).count();
+    const double share = kStartShare * std::chrono::duration<double>(end_ - after).count();
+    // The probe's cost holds the trees and the vertices, which fewer samples do not cut: the
+    // estimate errs long.
+    const double allowed = static_cast<double>(probe) * share / std::max(cost, 1e-9);
+    if (allowed >= static_cast<double>(all)) return all;
+    return std::max(probe, static_cast<std::size_t>(allowed));
+  }
+
   FitProgress measureNow(std::size_t folds) {
     if (folds == 0) startedAt_ = seconds();
     const SurfaceDistance d =
-        surfaceDistance(meshOf(session_.fixed()), fitter_.target(), options_.distanceSamples);
+        surfaceDistance(meshOf(session_.fixed()), fitter_.target(), measureSamples_);
     return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
   }
 
@@ -783,7 +804,7 @@ class FitRun {
     // toward where the unfolding stopped, and the folds read follow.
     const TriangleMesh unfolded{plan.unfolded, fitter_.target().triangles};
     if (planned.groups.size() >= options_.maxFolds ||
-        surfaceDistance(unfolded, meshOf(session_.initial()), options_.distanceSamples)
+        surfaceDistance(unfolded, meshOf(session_.initial()), measureSamples_)
                 .relativeHausdorff() <= kUnfoldedCloseEnough)
       return false;
     // Smooth but off the sheet: folds that left no crease (their planes missed the sheet) moved
@@ -935,9 +956,8 @@ class FitRun {
     if (options_.searching) options_.searching(sequence.groups.size(), sequence.score, seconds());
     const bool better = sequence.score < best_.score;
     if (better) best_ = sequence;
-    return better &&
-           surfaceDistance(meshOf(branch.fixed()), fitter_.target(), options_.distanceSamples)
-                   .relativeHausdorff() <= kUnfoldedCloseEnough;
+    return better && surfaceDistance(meshOf(branch.fixed()), fitter_.target(), measureSamples_)
+                             .relativeHausdorff() <= kUnfoldedCloseEnough;
   }
 
   // The folds the unfolding did not read, searched for toward the target as far as it unfolded
@@ -954,7 +974,7 @@ class FitRun {
     FitOptions inner;
     inner.maxFolds = options_.maxFolds - groupsRead;
     inner.minimumGain = options_.minimumGain;
-    inner.distanceSamples = options_.distanceSamples;
+    inner.distanceSamples = measureSamples_;
     inner.cancelled = options_.cancelled;
     inner.pleats = 0;  // toward a sheet unfolded from reflections: single folds make it
     // Half of what is left of each budget: the clock's (less the reserve for measuring at the
@@ -1144,6 +1164,11 @@ class FitRun {
   Deadline deadline_;                                // the cancel and the evaluation count
   std::atomic<std::uint64_t> evaluations_{0};
   std::atomic<std::uint64_t> droppedSamples_{0};
+  // The start's measure takes at most this share of the time left (samplesWithinTime), judged by
+  // a measure of this many samples.
+  static constexpr double kStartShare = 0.1;
+  static constexpr std::size_t kProbeSamples = 1000;
+  std::size_t measureSamples_ = 0;      // of every exact measure (samplesWithinTime)
   double startedAt_ = 0.0;              // seconds from start_ to the start's measure
   double foldCost_ = 0.0;               // seconds one fold kept costs at the end
   const std::vector<FoldRecord> base_;  // the session's folds before the fit
