@@ -50,6 +50,8 @@ constexpr double kSmoothLeft = 0.01;
 constexpr double kWholeSheetTolerance = 1e-4;
 // At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
 constexpr std::size_t kMostRegistrations = 24;
+// Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
+constexpr std::size_t kOtherSeeds = 12;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -823,8 +825,10 @@ class FitRun {
     // Every way the sheet lies on the copy (a symmetric sheet's symmetries): each its own motion
     // and its own count of whole-sheet folds. The first way found first, and every way (dearer:
     // each registered) only where that one takes more folds than are left.
-    std::vector<RigidMotion> motions = registerSheetOntoAll(
-        meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal(), 1);
+    // Within the deadline too: a copy that lies on the sheet no way refines every start (minutes).
+    std::vector<RigidMotion> motions =
+        registerSheetOntoAll(meshOf(session_.initial()), unfolded,
+                             kWholeSheetTolerance * fitter_.targetDiagonal(), 1, deadline);
     if (motions.empty()) return false;
     // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
@@ -935,15 +939,65 @@ class FitRun {
       if (symmetry && madeAlready(plan.folds[k].plane)) continue;
       if (planned.groups.size() >= most || deadline.passed()) break;
       const std::size_t before = branch.foldCount();
-      const glm::dvec3 grabbed = branch.beginDragAtDevelopment(seeds[k]);
-      branch.updateDrag(plan.folds[k].plane.reflect(grabbed));
-      if (!branch.commit()) break;
+      if (!makeRead(plan, k, seeds[k], branch)) break;
       planned.folds.insert(
           planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
           branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
       planned.groups.push_back(branch.foldCount() - before);
     }
     return planned;
+  }
+
+  // The unfolding's fold k made on `branch` from `seed`. A symmetric design's fold brings the
+  // images of its seed that it does not move itself, so the seed the unfolding names may bring
+  // images the target lacks (its designer grabbed elsewhere, and the fold moved the images of
+  // that grab): then other seeds on the same side of the plane, nearest the symmetry's centre
+  // first (their images the likeliest moved too), until every image made is a fold read.
+  bool makeRead(const TargetUnfolding& plan, std::size_t k, const glm::dvec2& seed,
+                FoldSession& branch) const {
+    const ReflectionPlane& plane = plan.folds[k].plane;
+    const std::size_t before = branch.foldCount();
+    const Symmetry* symmetry = session_.symmetry();
+    const double size = sheetSize(session_.initial());
+    auto imagesRead = [&] {
+      for (std::size_t f = before + 1; f < branch.foldCount(); ++f) {
+        const ReflectionPlane& image = branch.folds()[f].plane;
+        const bool read =
+            std::any_of(plan.folds.begin(), plan.folds.end(), [&](const UnfoldedFold& fold) {
+              return std::abs(glm::dot(fold.plane.normal, image.normal)) >
+                         std::cos(0.5 * std::numbers::pi / 180.0) &&
+                     std::abs(fold.plane.signedDistance(image.point)) < 1e-3 * size;
+            });
+        if (!read) return false;
+      }
+      return true;
+    };
+    const Sheet sheet = branch.fixed();  // before the fold
+    double side = 0.0;                   // where the seed lies, of the plane
+    auto make = [&](const glm::dvec2& at) {
+      const glm::dvec3 grabbed = branch.beginDragAtDevelopment(at);
+      if (side == 0.0) side = plane.signedDistance(grabbed);
+      branch.updateDrag(plane.reflect(grabbed));
+      return branch.commit();
+    };
+    if (!make(seed)) return false;
+    if (!symmetry || imagesRead()) return true;
+    branch.undo();
+    const Sheet& initial = session_.initial();
+    std::vector<std::pair<double, VertexIndex>> others;
+    for (VertexIndex v = 0; v < std::min(initial.vertexCount(), sheet.vertexCount()); ++v) {
+      const double d = plane.signedDistance(sheet.positions[v]);
+      if (d * side > 0.0 && std::abs(d) > 0.005 * size)
+        others.emplace_back(glm::distance(initial.positions[v], symmetry->centre), v);
+    }
+    std::sort(others.begin(), others.end());
+    for (std::size_t t = 0; t < kOtherSeeds && !others.empty(); ++t) {
+      const VertexIndex v = others[t * others.size() / kOtherSeeds].second;
+      if (!make(sheet.development[v])) continue;
+      if (imagesRead()) return true;
+      branch.undo();
+    }
+    return make(seed);  // the seed read, images and all: the search may mend it
   }
 
   // A sequence found outside the beam, made on `branch`: kept as the best when it is (and passes
@@ -1019,14 +1073,21 @@ class FitRun {
 
   // A beam over fold sequences: each kept sequence grown by its best few next folds, the best few
   // sequences (and the best few ending on a crease plane) kept at each depth.
+  // What the reading found (best_, when it is more than the start) grows beside the start: a
+  // search after a reading that fell short goes on from it rather than from the sheet alone.
   void beamSearch(const FoldSequence& root) {
     std::vector<FoldSequence> beam{root};
+    if (!best_.groups.empty() && best_.groups.size() < options_.maxFolds) {
+      beam.push_back(best_);
+      beam.back().monotone = false;  // not measured fold by fold
+    }
     if (result_.timedOut || result_.cancelled) return;  // the unfolding took the time
     for (std::size_t depth = 0; depth < options_.maxFolds; ++depth) {
       std::vector<FoldSequence> children;
       const Deadline deadline = searchDeadline(depth + 1);
       bool outOfEvaluations = false;
       for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {
+        if (beam[k].groups.size() >= options_.maxFolds) continue;  // grown as far as allowed
         // The budget is checked only here, between steps, where the count is the same on every
         // run (each step scores the same candidates).
         if (options_.maxEvaluations > 0 && evaluations_.load() >= options_.maxEvaluations) {
