@@ -17,6 +17,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "tests/support/random_fold_target.hpp"
 
@@ -286,6 +287,29 @@ TEST(FoldFit, StopsAtItsTimeLimit) {
   // few seconds even under the sanitizers.
   EXPECT_LT(seconds, 10.0);
   testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// The start's exact measure keeps to the time too (issue 38, 3): a target far off under a short
+// limit, with so many samples that measuring them all takes seconds, ends near its limit, the
+// start measured with as many as the time allows.
+TEST(FoldFit, TheStartsMeasureKeepsWithinTheTime) {
+  const Sheet sheet = makeSurface("square", {{"resolution", 8}});
+  TriangleMesh far = meshOf(sheet);
+  for (glm::dvec3& p : far.positions) p += glm::dvec3(1.5, 0.0, 0.4);
+  const FoldFitter fitter(far, quickSettings());
+  FoldSession session(sheet);
+  FitOptions options = quickOptions(2);
+  options.seconds = 1.0;
+  options.distanceSamples = 1'000'000;
+  const auto start = std::chrono::steady_clock::now();
+  const FitResult result = fitFolds(session, fitter, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_FALSE(result.steps.empty());
+  EXPECT_GT(result.steps.front().hausdorff, 1.0);  // measured, and far
+  EXPECT_LT(result.steps.front().hausdorff, 2.0);
+  // --time plus 5%, and a little for a loaded machine; the sanitizers slow the probe too.
+  EXPECT_LT(seconds, testing::kSanitized ? 3.0 : 1.05 * options.seconds + 0.15);
 }
 
 TEST(FoldFit, RefusesATargetFarAwayOrInOtherUnits) {

@@ -18,6 +18,7 @@
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sheet_fixtures.hpp"
 #include "tests/support/fold_target_generators.hpp"
 
 namespace curvefold {
@@ -166,6 +167,36 @@ TEST(FitReading, ASymmetricSheetMirroredWholeTakesOneFold) {
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_EQ(session.foldCount(), 2u);
+}
+
+// A symmetric design's fold brings the images of its seed that the fold itself does not move: a
+// fold of most of a square with rotational:4 moves every image of its grab, so it has none. The
+// unfolding names another seed, deep in the part, one of whose images the fold leaves in place:
+// made from it, the fold brought an image the target lacks (a 40 mm miss). Made from a seed whose
+// images are folds read, it is the target again.
+TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  const Symmetry symmetry = parseSymmetry("rotational:4:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({-0.0734, 0.0221, 0.0});
+  folding.updateDrag({-0.1318, -0.0478, 0.0187});
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 1u);  // every image's seed moved by the fold: none made
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 300;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_EQ(session.foldCount(), 1u);
+  testing::expectInvariants(session.fixed(), session.initial());
 }
 
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.

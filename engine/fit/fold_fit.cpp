@@ -50,6 +50,8 @@ constexpr double kSmoothLeft = 0.01;
 constexpr double kWholeSheetTolerance = 1e-4;
 // At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
 constexpr std::size_t kMostRegistrations = 24;
+// Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
+constexpr std::size_t kOtherSeeds = 12;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -678,6 +680,7 @@ class FitRun {
   }
 
   FitResult run() {
+    measureSamples_ = samplesWithinTime();
     result_.steps.push_back(measureNow(0));
     // What one fold kept costs at the end (its exact measure and the caller's report of it):
     // about the start's measure, twice over (the report, and a sheet grown by folds).
@@ -733,10 +736,30 @@ class FitRun {
     }
   }
 
+  // The samples of every exact measure of this fit: all of distanceSamples, unless the start's
+  // measure with them would take more than a tenth of the time left (a large or far target under
+  // a short --time), judged by a measure of a few samples first; then as many as that tenth
+  // allows. With no clock, always all, so a fit by evaluations repeats bit for bit.
+  std::size_t samplesWithinTime() const {
+    const std::size_t all = options_.distanceSamples;
+    const std::size_t probe = std::min(all, kProbeSamples);
+    if (end_ == std::chrono::steady_clock::time_point::max() || probe == all) return all;
+    const auto before = std::chrono::steady_clock::now();
+    surfaceDistance(meshOf(session_.fixed()), fitter_.target(), probe);
+    const auto after = std::chrono::steady_clock::now();
+    const double cost = std::chrono::duration<double>(after - before).count();
+    const double share = kStartShare * std::chrono::duration<double>(end_ - after).count();
+    // The probe's cost holds the trees and the vertices, which fewer samples do not cut: the
+    // estimate errs long.
+    const double allowed = static_cast<double>(probe) * share / std::max(cost, 1e-9);
+    if (allowed >= static_cast<double>(all)) return all;
+    return std::max(probe, static_cast<std::size_t>(allowed));
+  }
+
   FitProgress measureNow(std::size_t folds) {
     if (folds == 0) startedAt_ = seconds();
     const SurfaceDistance d =
-        surfaceDistance(meshOf(session_.fixed()), fitter_.target(), options_.distanceSamples);
+        surfaceDistance(meshOf(session_.fixed()), fitter_.target(), measureSamples_);
     return FitProgress{folds, d.hausdorff, d.chamfer, d.diagonal, seconds()};
   }
 
@@ -783,7 +806,7 @@ class FitRun {
     // toward where the unfolding stopped, and the folds read follow.
     const TriangleMesh unfolded{plan.unfolded, fitter_.target().triangles};
     if (planned.groups.size() >= options_.maxFolds ||
-        surfaceDistance(unfolded, meshOf(session_.initial()), options_.distanceSamples)
+        surfaceDistance(unfolded, meshOf(session_.initial()), measureSamples_)
                 .relativeHausdorff() <= kUnfoldedCloseEnough)
       return false;
     // Smooth but off the sheet: folds that left no crease (their planes missed the sheet) moved
@@ -802,8 +825,10 @@ class FitRun {
     // Every way the sheet lies on the copy (a symmetric sheet's symmetries): each its own motion
     // and its own count of whole-sheet folds. The first way found first, and every way (dearer:
     // each registered) only where that one takes more folds than are left.
-    std::vector<RigidMotion> motions = registerSheetOntoAll(
-        meshOf(session_.initial()), unfolded, kWholeSheetTolerance * fitter_.targetDiagonal(), 1);
+    // Within the deadline too: a copy that lies on the sheet no way refines every start (minutes).
+    std::vector<RigidMotion> motions =
+        registerSheetOntoAll(meshOf(session_.initial()), unfolded,
+                             kWholeSheetTolerance * fitter_.targetDiagonal(), 1, deadline);
     if (motions.empty()) return false;
     // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
@@ -914,15 +939,65 @@ class FitRun {
       if (symmetry && madeAlready(plan.folds[k].plane)) continue;
       if (planned.groups.size() >= most || deadline.passed()) break;
       const std::size_t before = branch.foldCount();
-      const glm::dvec3 grabbed = branch.beginDragAtDevelopment(seeds[k]);
-      branch.updateDrag(plan.folds[k].plane.reflect(grabbed));
-      if (!branch.commit()) break;
+      if (!makeRead(plan, k, seeds[k], branch)) break;
       planned.folds.insert(
           planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
           branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
       planned.groups.push_back(branch.foldCount() - before);
     }
     return planned;
+  }
+
+  // The unfolding's fold k made on `branch` from `seed`. A symmetric design's fold brings the
+  // images of its seed that it does not move itself, so the seed the unfolding names may bring
+  // images the target lacks (its designer grabbed elsewhere, and the fold moved the images of
+  // that grab): then other seeds on the same side of the plane, nearest the symmetry's centre
+  // first (their images the likeliest moved too), until every image made is a fold read.
+  bool makeRead(const TargetUnfolding& plan, std::size_t k, const glm::dvec2& seed,
+                FoldSession& branch) const {
+    const ReflectionPlane& plane = plan.folds[k].plane;
+    const std::size_t before = branch.foldCount();
+    const Symmetry* symmetry = session_.symmetry();
+    const double size = sheetSize(session_.initial());
+    auto imagesRead = [&] {
+      for (std::size_t f = before + 1; f < branch.foldCount(); ++f) {
+        const ReflectionPlane& image = branch.folds()[f].plane;
+        const bool read =
+            std::any_of(plan.folds.begin(), plan.folds.end(), [&](const UnfoldedFold& fold) {
+              return std::abs(glm::dot(fold.plane.normal, image.normal)) >
+                         std::cos(0.5 * std::numbers::pi / 180.0) &&
+                     std::abs(fold.plane.signedDistance(image.point)) < 1e-3 * size;
+            });
+        if (!read) return false;
+      }
+      return true;
+    };
+    const Sheet sheet = branch.fixed();  // before the fold
+    double side = 0.0;                   // where the seed lies, of the plane
+    auto make = [&](const glm::dvec2& at) {
+      const glm::dvec3 grabbed = branch.beginDragAtDevelopment(at);
+      if (side == 0.0) side = plane.signedDistance(grabbed);
+      branch.updateDrag(plane.reflect(grabbed));
+      return branch.commit();
+    };
+    if (!make(seed)) return false;
+    if (!symmetry || imagesRead()) return true;
+    branch.undo();
+    const Sheet& initial = session_.initial();
+    std::vector<std::pair<double, VertexIndex>> others;
+    for (VertexIndex v = 0; v < std::min(initial.vertexCount(), sheet.vertexCount()); ++v) {
+      const double d = plane.signedDistance(sheet.positions[v]);
+      if (d * side > 0.0 && std::abs(d) > 0.005 * size)
+        others.emplace_back(glm::distance(initial.positions[v], symmetry->centre), v);
+    }
+    std::sort(others.begin(), others.end());
+    for (std::size_t t = 0; t < kOtherSeeds && !others.empty(); ++t) {
+      const VertexIndex v = others[t * others.size() / kOtherSeeds].second;
+      if (!make(sheet.development[v])) continue;
+      if (imagesRead()) return true;
+      branch.undo();
+    }
+    return make(seed);  // the seed read, images and all: the search may mend it
   }
 
   // A sequence found outside the beam, made on `branch`: kept as the best when it is (and passes
@@ -935,9 +1010,8 @@ class FitRun {
     if (options_.searching) options_.searching(sequence.groups.size(), sequence.score, seconds());
     const bool better = sequence.score < best_.score;
     if (better) best_ = sequence;
-    return better &&
-           surfaceDistance(meshOf(branch.fixed()), fitter_.target(), options_.distanceSamples)
-                   .relativeHausdorff() <= kUnfoldedCloseEnough;
+    return better && surfaceDistance(meshOf(branch.fixed()), fitter_.target(), measureSamples_)
+                             .relativeHausdorff() <= kUnfoldedCloseEnough;
   }
 
   // The folds the unfolding did not read, searched for toward the target as far as it unfolded
@@ -954,7 +1028,7 @@ class FitRun {
     FitOptions inner;
     inner.maxFolds = options_.maxFolds - groupsRead;
     inner.minimumGain = options_.minimumGain;
-    inner.distanceSamples = options_.distanceSamples;
+    inner.distanceSamples = measureSamples_;
     inner.cancelled = options_.cancelled;
     inner.pleats = 0;  // toward a sheet unfolded from reflections: single folds make it
     // Half of what is left of each budget: the clock's (less the reserve for measuring at the
@@ -999,14 +1073,21 @@ class FitRun {
 
   // A beam over fold sequences: each kept sequence grown by its best few next folds, the best few
   // sequences (and the best few ending on a crease plane) kept at each depth.
+  // What the reading found (best_, when it is more than the start) grows beside the start: a
+  // search after a reading that fell short goes on from it rather than from the sheet alone.
   void beamSearch(const FoldSequence& root) {
     std::vector<FoldSequence> beam{root};
+    if (!best_.groups.empty() && best_.groups.size() < options_.maxFolds) {
+      beam.push_back(best_);
+      beam.back().monotone = false;  // not measured fold by fold
+    }
     if (result_.timedOut || result_.cancelled) return;  // the unfolding took the time
     for (std::size_t depth = 0; depth < options_.maxFolds; ++depth) {
       std::vector<FoldSequence> children;
       const Deadline deadline = searchDeadline(depth + 1);
       bool outOfEvaluations = false;
       for (std::size_t k = 0; k < beam.size() && !deadline.passed(); ++k) {
+        if (beam[k].groups.size() >= options_.maxFolds) continue;  // grown as far as allowed
         // The budget is checked only here, between steps, where the count is the same on every
         // run (each step scores the same candidates).
         if (options_.maxEvaluations > 0 && evaluations_.load() >= options_.maxEvaluations) {
@@ -1144,6 +1225,11 @@ class FitRun {
   Deadline deadline_;                                // the cancel and the evaluation count
   std::atomic<std::uint64_t> evaluations_{0};
   std::atomic<std::uint64_t> droppedSamples_{0};
+  // The start's measure takes at most this share of the time left (samplesWithinTime), judged by
+  // a measure of this many samples.
+  static constexpr double kStartShare = 0.1;
+  static constexpr std::size_t kProbeSamples = 1000;
+  std::size_t measureSamples_ = 0;      // of every exact measure (samplesWithinTime)
   double startedAt_ = 0.0;              // seconds from start_ to the start's measure
   double foldCost_ = 0.0;               // seconds one fold kept costs at the end
   const std::vector<FoldRecord> base_;  // the session's folds before the fit

@@ -169,6 +169,8 @@ struct FitOptions {
   // and by this fraction of the target's diagonal (a fit already as close as the samples tell
   // gains nothing from more folds).
   double minimumAbsoluteGain = 1e-4;
+  // Samples a side of each exact measure; under a clock, fewer when measuring the start with
+  // them all would take over a tenth of the time left (a large or far target, a short limit).
   std::size_t distanceSamples = 20'000;
   std::size_t beamWidth = 3;    // fold sequences kept at each depth, the best
   std::size_t creaseWidth = 3;  // and this many more whose last fold is through a crease plane
