@@ -217,6 +217,33 @@ TEST(FitReading, FlapsLaidFlatOnTheSheetNameThePlanesAcrossIt) {
   EXPECT_NO_THROW(validate(session.fixed()));
 }
 
+// Corners laid onto the centre itself, where the four flaps meet: the stubs of the creases that
+// meet there let a plane turned a degree about one crease hold a few micrometres more of edge than
+// the fold's own plane. Each crease's plane is read from its whole line, and refitted to it.
+TEST(CreasePlanes, AStraightCreaseIsReadFromItsWholeLine) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  FoldSession folding(initial);
+  int k = 0;
+  for (const glm::dvec2 corner :
+       {glm::dvec2(1, 1), glm::dvec2(-1, 1), glm::dvec2(-1, -1), glm::dvec2(1, -1)}) {
+    folding.beginDragNear({0.1 * corner.x, 0.1 * corner.y, 0.0});
+    folding.updateDrag({0.0, 0.0, 0.001 * ++k});
+    ASSERT_TRUE(folding.commit()) << "corner " << k;
+  }
+  const TriangleMesh target = meshOf(folding.fixed());
+  CreasePlaneOptions read;
+  read.minDihedralDegrees = sharpEdgeThreshold(meshOf(initial));
+  const std::vector<CreasePlane> planes = findCreasePlanes(target, read);
+  for (const FoldRecord& fold : folding.folds())
+    EXPECT_TRUE(std::any_of(
+        planes.begin(), planes.end(),
+        [&](const CreasePlane& c) {
+          return std::abs(std::abs(glm::dot(c.plane.normal, fold.plane.normal)) - 1.0) < 1e-6 &&
+                 std::abs(fold.plane.signedDistance(c.plane.point)) < 1e-6;
+        }))
+        << "fold " << (&fold - folding.folds().data()) + 1 << "'s plane was not read exactly";
+}
+
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.
 TriangleMesh tube(double radius, double height, int around, int along) {
   TriangleMesh mesh;
