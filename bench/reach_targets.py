@@ -30,6 +30,11 @@ bucket; a fold kept only when it moves part of the sheet and the design still pa
               diagonal from it grabbed and dropped at its mirror image: folds that cut creases.
   short-long  default parameters; any vertex; each drag either short (3-8% of the diagonal) or
               long (40-60%), evenly.
+  bases       default parameters; as origami bases are folded (a square in half, corners to the
+              centre: a blintz; an edge onto a crease: a kite): the form's farthest vertex along a
+              uniform direction laid onto its vertex nearest its centroid, its farthest vertex the
+              other way, or a point of an earlier crease, lifted off the form along its normal
+              there (either side) so the fold turns by 150-180 degrees (at least 0.5 mm).
 Each target is written as `export --obj` writes it, less its `vt` lines (the development), with a
 line of manifest.jsonl naming its surface, parameters, symmetry and fold count.
 """
@@ -44,7 +49,8 @@ import sys
 import time
 
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
-RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric", "outer-third", "cuts", "short-long"]
+RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric", "outer-third", "cuts", "short-long",
+           "bases"]
 
 
 def diagonal(vertices):
@@ -99,6 +105,49 @@ def varied_parameters(cf, surface, rng):
     if surface == "cone" and params.get("top_radius", 0.0) >= params.get("base_radius", 1.0):
         params["top_radius"] = 0.0
     return params
+
+
+def vertex_normal(vertices, triangles, index):
+    """The area-weighted normal of the faces around a vertex of the folded form."""
+    n = [0.0, 0.0, 0.0]
+    for t in triangles:
+        if index not in t:
+            continue
+        a, b, c = (vertices[int(i)] for i in t)
+        u = [b[i] - a[i] for i in range(3)]
+        w = [c[i] - a[i] for i in range(3)]
+        cross = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]
+        n = [n[i] + cross[i] for i in range(3)]
+    length = math.sqrt(sum(x * x for x in n))
+    return [x / length for x in n] if length > 0 else None
+
+
+def base_fold(design, vertices, rng, diag):
+    """One fold as origami bases make them: a far vertex laid onto the centre, the far side or a
+    crease, lifted off the form so the flap turns by 150-180 degrees."""
+    u = unit_vector(rng)
+    along = [sum(v[i] * u[i] for i in range(3)) for v in vertices]
+    grab = vertices[max(range(len(vertices)), key=lambda k: along[k])]
+    kind = rng.choice(["centre", "opposite", "crease"])
+    if kind == "centre":
+        centre = [sum(v[i] for v in vertices) / len(vertices) for i in range(3)]
+        onto_index = min(range(len(vertices)), key=lambda k: math.dist(vertices[k], centre))
+    elif kind == "opposite":
+        onto_index = min(range(len(vertices)), key=lambda k: along[k])
+    else:
+        edges = design.creases()["edges"].tolist()
+        if not edges:
+            return None, None
+        a, b = rng.choice(edges)
+        onto_index = rng.choice([a, b])
+    onto = vertices[onto_index]
+    normal = vertex_normal(vertices, design.triangles.tolist(), onto_index)
+    span = math.dist(grab, onto)
+    if normal is None or span < 0.05 * diag:
+        return None, None
+    turn = rng.uniform(150.0, 180.0)
+    lift = max(0.0005, span * math.tan(math.radians(180.0 - turn) / 2.0)) * rng.choice([-1.0, 1.0])
+    return grab, [onto[i] + lift * normal[i] for i in range(3)]
 
 
 def make_one(cf, recipe, surface, folds, rng):
@@ -161,6 +210,10 @@ def make_one(cf, recipe, surface, folds, rng):
             direction = unit_vector(rng)
             drop = [onto[i] + lift * direction[i] for i in range(3)]
             if math.dist(grab, drop) < 0.05 * diag:
+                continue
+        elif recipe == "bases":
+            grab, drop = base_fold(design, vertices, rng, diag)
+            if grab is None:
                 continue
         else:
             grab = vertices[rng.randrange(len(vertices))]

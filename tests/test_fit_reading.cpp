@@ -2,6 +2,7 @@
 // targets made by recipes unlike the fit's own tests' (tests/support/fold_target_generators.hpp),
 // each a case the unfolding once misread, found again exactly; the start surface sized to a
 // shape, and the shape's rotational symmetry.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -10,11 +11,13 @@
 #include <glm/geometric.hpp>
 
 #include "app/design_check.hpp"
+#include "engine/fit/crease_planes.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -197,6 +200,79 @@ TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_EQ(session.foldCount(), 1u);
   testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// A blintz (a square's four corners laid by its centre, 1-4 mm above the sheet: folds of about
+// 179 degrees; 1 cm short of the centre, so the flaps do not touch) leaves every crease in the
+// sheet's plane, which mirrors each crease's faces onto each other (not reversed, as a fold turns
+// a face over): read so, it took every crease and named no fold. Each crease names the plane
+// across the two layers it joins, and the blintz unfolds exactly.
+TEST(FitReading, FlapsLaidFlatOnTheSheetNameThePlanesAcrossIt) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  FoldSession folding(initial);
+  const double half = 0.1;  // the square is 0.2 m, centred on the origin
+  int k = 0;
+  for (const glm::dvec2 corner :
+       {glm::dvec2(1, 1), glm::dvec2(-1, 1), glm::dvec2(-1, -1), glm::dvec2(1, -1)}) {
+    folding.beginDragNear({half * corner.x, half * corner.y, 0.0});
+    folding.updateDrag({0.01 * corner.x, 0.01 * corner.y, 0.001 * ++k});
+    ASSERT_TRUE(folding.commit()) << "corner " << k;
+  }
+  ASSERT_TRUE(findSelfIntersections(folding.fixed()).intersections.empty());
+  const TriangleMesh target = meshOf(folding.fixed());
+  const double size = boundingDiagonal(target);
+
+  CreasePlaneOptions read;
+  read.minDihedralDegrees = sharpEdgeThreshold(meshOf(initial));
+  const std::vector<CreasePlane> planes = findCreasePlanes(target, read);
+  ASSERT_FALSE(planes.empty());
+  for (const CreasePlane& c : planes)
+    EXPECT_LT(std::abs(c.plane.normal.z), 0.1)
+        << "a plane along the sheet holds " << c.support << " m of creases";
+  for (const FoldRecord& fold : folding.folds())
+    EXPECT_TRUE(std::any_of(planes.begin(), planes.end(), [&](const CreasePlane& c) {
+      return std::abs(std::abs(glm::dot(c.plane.normal, fold.plane.normal)) - 1.0) < 1e-6 &&
+             std::abs(fold.plane.signedDistance(c.plane.point)) < 1e-6 * size;
+    })) << "a corner's fold plane was not read";
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  FitOptions options;
+  options.maxFolds = 6;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 500;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_EQ(session.foldCount(), 4u);
+  EXPECT_NO_THROW(validate(session.fixed()));
+}
+
+// Corners laid onto the centre itself, where the four flaps meet: the stubs of the creases that
+// meet there let a plane turned a degree about one crease hold a few micrometres more of edge than
+// the fold's own plane. Each crease's plane is read from its whole line, and refitted to it.
+TEST(CreasePlanes, AStraightCreaseIsReadFromItsWholeLine) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  FoldSession folding(initial);
+  int k = 0;
+  for (const glm::dvec2 corner :
+       {glm::dvec2(1, 1), glm::dvec2(-1, 1), glm::dvec2(-1, -1), glm::dvec2(1, -1)}) {
+    folding.beginDragNear({0.1 * corner.x, 0.1 * corner.y, 0.0});
+    folding.updateDrag({0.0, 0.0, 0.001 * ++k});
+    ASSERT_TRUE(folding.commit()) << "corner " << k;
+  }
+  const TriangleMesh target = meshOf(folding.fixed());
+  CreasePlaneOptions read;
+  read.minDihedralDegrees = sharpEdgeThreshold(meshOf(initial));
+  const std::vector<CreasePlane> planes = findCreasePlanes(target, read);
+  for (const FoldRecord& fold : folding.folds())
+    EXPECT_TRUE(std::any_of(
+        planes.begin(), planes.end(),
+        [&](const CreasePlane& c) {
+          return std::abs(std::abs(glm::dot(c.plane.normal, fold.plane.normal)) - 1.0) < 1e-6 &&
+                 std::abs(fold.plane.signedDistance(c.plane.point)) < 1e-6;
+        }))
+        << "fold " << (&fold - folding.folds().data()) + 1 << "'s plane was not read exactly";
 }
 
 // A tube of revolution about y (radius 5 cm, 18 cm tall), gridded.

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "engine/fit/unit_draw.hpp"
 
@@ -32,6 +35,113 @@ void forEachInteriorEdge(const TriangleMesh& mesh, Visit visit) {
         std::acos(std::clamp(glm::dot(n1, n2), -1.0, 1.0)) * 180.0 / std::numbers::pi;
     visit(edge.first, edge.second, n1, n2, degrees);
   }
+}
+
+// The normal of the plane through a sharp edge (direction `along`) that mirrors its faces: the
+// faces' normals are one another's mirror images reversed, so their sum lies along it and their
+// difference in it. Whichever is longer is read: at a fold of 180 degrees the sum vanishes (the
+// plane stands across the two layers), at a shallow one the difference does.
+glm::dvec3 mirroringNormal(const SharpEdge& e, const glm::dvec3& along) {
+  const glm::dvec3 sum = e.na + e.nb, difference = e.na - e.nb;
+  const glm::dvec3 n = glm::length(sum) >= glm::length(difference)
+                           ? sum - glm::dot(sum, along) * along
+                           : glm::cross(along, difference);
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : glm::dvec3(0.0);
+}
+
+// A straight crease: the line its sharp edges lie along and the normal of the plane through it
+// that mirrors their faces.
+struct CreaseLine {
+  glm::dvec3 point{0.0}, along{0.0}, normal{0.0};
+};
+
+// The line of least squares through `edges` (each a uniform segment, weighted by its length): their
+// centroid and the principal direction of their second moments (power iteration from the
+// farthest point).
+std::optional<CreaseLine> lineThrough(const std::vector<SharpEdge>& sharp,
+                                      const std::vector<std::size_t>& edges) {
+  double total = 0.0;
+  glm::dvec3 centroid(0.0);
+  for (std::size_t i : edges) {
+    total += sharp[i].length;
+    centroid += sharp[i].length * 0.5 * (sharp[i].a + sharp[i].b);
+  }
+  if (!(total > 0.0)) return std::nullopt;
+  centroid /= total;
+  glm::dmat3 moments(0.0);
+  glm::dvec3 along(0.0);
+  for (std::size_t i : edges) {
+    const glm::dvec3 a = sharp[i].a - centroid, b = sharp[i].b - centroid;
+    moments += sharp[i].length * ((glm::outerProduct(a, a) + glm::outerProduct(b, b)) / 3.0 +
+                                  (glm::outerProduct(a, b) + glm::outerProduct(b, a)) / 6.0);
+    for (const glm::dvec3& p : {a, b})
+      if (glm::length(p) > glm::length(along)) along = p;
+  }
+  for (int k = 0; k < 20 && glm::length(along) > 0.0; ++k) along = glm::normalize(moments * along);
+  if (!(glm::length(along) > 0.5)) return std::nullopt;
+  return CreaseLine{centroid, along, glm::dvec3(0.0)};
+}
+
+double offLine(const CreaseLine& line, const glm::dvec3& p) {
+  const glm::dvec3 d = p - line.point;
+  return glm::length(d - glm::dot(d, line.along) * line.along);
+}
+
+// The crease line of `edges` when nearly all of them (by length) lie along one line within
+// `tolerance`: fitted to all of them, far more exact than one short edge's direction, then again
+// to those on it (not the stub of a crease that meets it); and the mirroring normal averaged over
+// them by length, those more than half a degree off the first average left out (a sliver's face).
+// Its sign follows `reference`.
+std::optional<CreaseLine> straightCrease(const std::vector<SharpEdge>& sharp,
+                                         std::vector<std::size_t> edges, double tolerance,
+                                         const glm::dvec3& reference) {
+  if (edges.size() < 2) return std::nullopt;
+  double total = 0.0;
+  for (std::size_t i : edges) total += sharp[i].length;
+  std::optional<CreaseLine> line;
+  for (int pass = 0; pass < 2; ++pass) {
+    line = lineThrough(sharp, edges);
+    if (!line) return std::nullopt;
+    std::vector<std::size_t> on;
+    double kept = 0.0;
+    for (std::size_t i : edges)
+      if (offLine(*line, sharp[i].a) <= tolerance && offLine(*line, sharp[i].b) <= tolerance) {
+        on.push_back(i);
+        kept += sharp[i].length;
+      }
+    if (kept < 0.98 * total || on.size() < 2) return std::nullopt;
+    edges = std::move(on);
+  }
+  std::vector<glm::dvec3> normals;
+  for (std::size_t i : edges) {
+    glm::dvec3 n = mirroringNormal(sharp[i], line->along);
+    normals.push_back(glm::dot(n, reference) < 0.0 ? -n : n);
+  }
+  const double within = std::cos(0.5 * std::numbers::pi / 180.0);
+  for (int pass = 0; pass < 2; ++pass) {
+    const glm::dvec3 mean =
+        line->normal == glm::dvec3(0.0) ? glm::dvec3(0.0) : glm::normalize(line->normal);
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = 0; k < edges.size(); ++k)
+      if (pass == 0 || glm::dot(normals[k], mean) >= within)
+        sum += sharp[edges[k]].length * normals[k];
+    if (!(glm::length(sum) > 0.0)) return std::nullopt;
+    line->normal = sum;
+  }
+  line->normal = glm::normalize(line->normal - glm::dot(line->normal, line->along) * line->along);
+  return line;
+}
+
+// The open sharp edges within `tolerance` of `line`.
+std::vector<std::size_t> edgesAlong(const std::vector<SharpEdge>& sharp,
+                                    const std::vector<std::size_t>& open, const CreaseLine& line,
+                                    double tolerance) {
+  std::vector<std::size_t> on;
+  for (std::size_t i : open)
+    if (offLine(line, sharp[i].a) <= tolerance && offLine(line, sharp[i].b) <= tolerance)
+      on.push_back(i);
+  return on;
 }
 
 constexpr double kMinimumSharpDegrees = 4.0;
@@ -82,8 +192,12 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
     if (std::abs(plane.signedDistance(e.a)) > tolerance ||
         std::abs(plane.signedDistance(e.b)) > tolerance)
       return false;
+    // A reflection turns a face over: the fold's plane mirrors one face's normal onto the
+    // other's reversed. The plane across it through the crease mirrors it onto the other's
+    // unreversed; where flaps lie flat on the sheet, every crease lies in the sheet's plane,
+    // which would otherwise hold them all.
     const glm::dvec3 mirrored = e.na - 2.0 * glm::dot(e.na, plane.normal) * plane.normal;
-    return std::abs(glm::dot(mirrored, e.nb)) >= consistent;
+    return -glm::dot(mirrored, e.nb) >= consistent;
   };
   auto support = [&](const ReflectionPlane& plane) {
     double total = 0.0;
@@ -104,14 +218,21 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
       const double s = support(plane);
       if (s > best.support) best = {plane, s};
     };
-    // Straight creases: the bisectors of each sharp edge's faces, through it (of at most 400
-    // edges, spread over all).
+    // Straight creases: the plane through each sharp edge that mirrors its faces (of at most 400
+    // edges, spread over all), and through the line of the sharp edges collinear with it.
     const std::size_t stride = std::max<std::size_t>(1, open.size() / 400);
     for (std::size_t k = 0; k < open.size(); k += stride) {
       const SharpEdge& e = sharp[open[k]];
       const glm::dvec3 middle = 0.5 * (e.a + e.b), along = (e.b - e.a) / e.length;
-      for (const glm::dvec3 n : {e.na + e.nb, e.na - e.nb})
-        consider(middle, n - glm::dot(n, along) * along);
+      const glm::dvec3 normal = mirroringNormal(e, along);
+      consider(middle, normal);
+      // The edges along it, gathered again along the line they give (one short edge's
+      // direction may miss the far end of a long crease).
+      std::optional<CreaseLine> line = straightCrease(
+          sharp, edgesAlong(sharp, open, {middle, along, normal}, tolerance), tolerance, normal);
+      if (line)
+        line = straightCrease(sharp, edgesAlong(sharp, open, *line, tolerance), tolerance, normal);
+      if (line) consider(line->point, line->normal);
     }
     // Curved creases: three points of sharp edges.
     for (std::size_t k = 0; k < options.hypotheses; ++k) {
@@ -123,6 +244,17 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
       consider(e.a, n);
     }
     if (best.support < minSupport) break;
+    // Many planes turned slightly about a straight crease hold all of it: the one its edges
+    // name together, not whichever hypothesis came first.
+    std::vector<std::size_t> inside;
+    for (std::size_t i : open)
+      if (holds(best.plane, sharp[i])) inside.push_back(i);
+    if (const std::optional<CreaseLine> line =
+            straightCrease(sharp, inside, tolerance, best.plane.normal)) {
+      const ReflectionPlane refined{line->point, line->normal};
+      const double s = support(refined);
+      if (s >= 0.98 * best.support) best = {refined, s};
+    }
     for (std::size_t i : open)
       if (holds(best.plane, sharp[i])) used[i] = 1;
     planes.push_back(best);

@@ -4,13 +4,17 @@
 // planes exactly. Sharp edges are those whose faces meet at more than a threshold angle.
 //
 // Each plane is found by consensus among plane hypotheses: through three points of sharp edges
-// (a curved crease), and through each sharp edge at the bisectors of its two faces (a straight
-// crease, whose points alone leave the plane free to turn about it). The hypothesis that the
-// longest total of sharp edges lies in (within `tolerance`) is kept and its edges removed, and so
-// on. Deterministic for a seed.
+// (a curved crease), and through each sharp edge and each line of collinear sharp edges, turned
+// about it to mirror its faces (a straight crease, whose points alone leave the plane free to turn
+// about it). An edge lies in a plane when it lies in it and the plane mirrors one face's normal
+// onto the other's reversed, as a reflection turns a face over: a flap laid flat on the sheet
+// (a fold of 150-180 degrees) leaves its crease in the sheet's plane, but names the plane across
+// the two layers. The hypothesis that the longest total of sharp edges lies in (within
+// `tolerance`) is kept and its edges removed, and so on. Deterministic for a seed.
 //
 // Known limits: a crease of a fold whose faces meet at less than the threshold is not seen; the
-// bisector hypotheses assume the surface ran on smoothly across the crease before it was folded.
+// bisector hypotheses assume the surface ran on smoothly across the crease before it was folded;
+// the mesh must be consistently oriented (as a folded sheet written out is).
 #pragma once
 
 #include <cstddef>
