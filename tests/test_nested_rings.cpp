@@ -92,8 +92,8 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   FoldSession session(disk);
   const double before = fitter.approximateDistance(session.fixed());
   std::mt19937_64 random(5);
-  const std::vector<FoldSuggestion> steps =
-      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random);
+  const std::vector<FoldSuggestion> steps = suggestNestedRings(
+      session, fitter, *axis, samples, 1, {}, random, testing::kSanitized ? 2 : 3);
   ASSERT_EQ(steps.size(), 1u);
   const FoldSuggestion& step = steps.front();
   EXPECT_GE(step.folds.size(), 16u);  // rings, not a fold

@@ -19,7 +19,6 @@
 namespace curvefold {
 namespace {
 
-constexpr std::size_t kMostCreases = 4;
 constexpr std::size_t kProfilePoints = 300;  // target samples the profile is fitted to
 constexpr std::size_t kPolylinePoints = 48;  // along the sheet's radius
 constexpr int kRestarts = 5;                 // random starts per crease count
@@ -275,7 +274,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
                                                const RevolutionAxis& axis,
                                                const std::vector<SurfaceSample>& targetSamples,
                                                std::size_t count, const Deadline& deadline,
-                                               std::mt19937_64& random) {
+                                               std::mt19937_64& random, std::size_t mostCreases) {
   if (count == 0 || targetSamples.empty() || deadline.givesUp()) return {};
   // The sheet: flat across the axis? Its centre is the rings' axis point.
   const Sheet& sheet = session.fixed();
@@ -301,10 +300,10 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     profile.push_back({glm::length(d - h * axis.direction), h});
   }
 
-  // Fits with 1..kMostCreases creases, each grown from the one before (the random draws made
+  // Fits with 1..mostCreases creases, each grown from the one before (the random draws made
   // here, in order, so a seed repeats).
   std::vector<ProfileCreases> fits;
-  for (std::size_t k = 1; k <= kMostCreases && !deadline.passed(); ++k) {
+  for (std::size_t k = 1; k <= mostCreases && !deadline.passed(); ++k) {
     deadline.countEvaluation();
     fits.push_back(
         fitProfileCreases(profile, radius, k, fits.empty() ? nullptr : &fits.back(), random));

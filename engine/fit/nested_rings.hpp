@@ -76,12 +76,13 @@ std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int orde
                                          double sheetRadius);
 
 // Up to `count` nested-ring steps for the design `session` holds, toward the fitter's target of
-// revolution about `axis` whose samples are `targetSamples` (see above). The session is not
-// changed.
+// revolution about `axis` whose samples are `targetSamples` (see above), with 1 to `mostCreases`
+// creases. The session is not changed.
 std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const FoldFitter& fitter,
                                                const RevolutionAxis& axis,
                                                const std::vector<SurfaceSample>& targetSamples,
                                                std::size_t count, const Deadline& deadline,
-                                               std::mt19937_64& random);
+                                               std::mt19937_64& random,
+                                               std::size_t mostCreases = 4);
 
 }  // namespace curvefold
