@@ -332,12 +332,20 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
       own->applyRecords(base);
     }
     const Candidate& candidate = candidates[c];
-    std::size_t folds = 0;
+    // Ring after ring; one that passes the sheet through itself (on a steep profile a ring's
+    // planes can take the corner paper of the flaps beside their own) is taken back, and the
+    // rings before it kept.
     for (const NestedRing& ring :
-         nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius))
-      folds += makeNestedRing(*own, ring.shape, local, ring.flap);
-    if (folds > 0 && (allowCrossing || findSelfIntersections(own->fixed()).intersections.size() <=
-                                           crossingsBefore)) {
+         nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius)) {
+      const std::size_t foldsBefore = own->foldCount();
+      if (makeNestedRing(*own, ring.shape, local, ring.flap) == 0) continue;
+      if (!allowCrossing &&
+          findSelfIntersections(own->fixed()).intersections.size() > crossingsBefore) {
+        while (own->foldCount() > foldsBefore) own->undo();
+        break;
+      }
+    }
+    if (own->foldCount() > base.size()) {
       made[c].folds.assign(own->folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
                            own->folds().begin() + static_cast<std::ptrdiff_t>(own->foldCount()));
       made[c].sheet = own->fixed();

@@ -28,7 +28,9 @@
 // one step), best first, each closer than the sheet was. Known limits: where n flaps meet at the
 // polygon's corners the sheet has more paper than the bowl; a fold takes what lies beyond its
 // plane and is connected to its seed, so the corners fold with one flap and stand out (the
-// Hausdorff distance shows them); the model is exact only along each flap's centre line; the
+// Hausdorff distance shows them), and on a steep profile a second ring's planes take the corner
+// paper of the flaps beside their own and cross it: such a ring is taken back and the rings
+// before it kept; the model is exact only along each flap's centre line; the
 // sheet's centre is taken to lie on the axis (the sheet's own centroid is used as the axis point).
 #pragma once
 
