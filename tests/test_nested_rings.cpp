@@ -13,6 +13,7 @@
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -110,6 +111,37 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   for (std::size_t v = 0; v < step.sheet.positions.size(); ++v)
     moved = std::max(moved, glm::distance(step.sheet.positions[v], replayed.fixed().positions[v]));
   EXPECT_LT(moved, 1e-9);
+}
+
+TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
+  const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
+  FitSettings settings;
+  settings.sheetSamples = 800;
+  settings.targetSamples = 800;
+  settings.denseTargetSamples = 8000;
+  const FoldFitter fitter(target, settings);
+  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+  ASSERT_TRUE(axis);
+  FoldSession session(disk);
+  session.setSymmetry(parseSymmetry("rotational:12:z", disk));
+  const double before = fitter.approximateDistance(session.fixed());
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> steps =
+      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, 2);
+  ASSERT_EQ(steps.size(), 1u);
+  const FoldSuggestion& step = steps.front();
+  // Each ring is one fold and its images (one group), at most two rings and a plane across.
+  std::vector<int> groups;
+  for (const FoldRecord& fold : step.folds)
+    if (groups.empty() || groups.back() != int(fold.group)) groups.push_back(int(fold.group));
+  EXPECT_LE(groups.size(), 3u);
+  EXPECT_GT(step.folds.size(), groups.size());  // images beside the folds
+  EXPECT_LT(step.after, 0.5 * before) << "before " << before;
+  validate(step.sheet);
+  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
 }
 
 }  // namespace

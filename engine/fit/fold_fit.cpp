@@ -643,7 +643,8 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
   // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp).
-  if (target.axis && !folding.symmetric && settings_.nestedRings)
+  // (a symmetric design's when its rotation is about that axis: one fold and its images a ring).
+  if (target.axis && settings_.nestedRings)
     for (FoldSuggestion& rings :
          suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random))
       suggestions.push_back(std::move(rings));

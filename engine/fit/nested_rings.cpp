@@ -14,6 +14,7 @@
 
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
 namespace curvefold {
@@ -231,11 +232,13 @@ namespace {
 
 // Each plane of `shape` folded on the session, seeded at the sheet vertex on its side nearest to
 // where the flap beyond it lies (along `flap`, in the meridian: (r, z)), so the fold takes its
-// own flap and not another the plane reaches. Returns how many folds were made.
+// own flap and not another the plane reaches. On a session whose rotation makes the ring (its
+// images), only the first plane. Returns how many folds were made, images included.
 std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const RevolutionAxis& axis,
                            const glm::dvec2& flap) {
   std::size_t made = 0;
-  const Ring ring = ringOf(shape, axis);
+  Ring ring = ringOf(shape, axis);
+  if (session.symmetricFolder()) ring.planes.resize(1);
   for (const ReflectionPlane& plane : ring.planes) {
     const Sheet& sheet = session.fixed();
     glm::dvec3 radial = plane.point - axis.point;
@@ -258,7 +261,8 @@ std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const R
     const glm::dvec2 development = sheet.development[*seed];  // a copy: the drag changes sheets
     const glm::dvec3 grabbed = session.beginDragAtDevelopment(development);
     session.updateDrag(plane.reflect(grabbed));
-    if (session.commit()) ++made;
+    const std::size_t before = session.foldCount();
+    if (session.commit()) made += session.foldCount() - before;
   }
   return made;
 }
@@ -291,6 +295,20 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     radius = std::max(radius, glm::length((p - centre) - h * axis.direction));
   }
   if (!(radius > 0.0) || highest - lowest > kFlatSheet * radius) return {};
+  // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
+  // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
+  std::vector<int> orders(kOrders.begin(), kOrders.end());
+  if (session.symmetricFolder()) {
+    const Symmetry* symmetry = session.symmetry();
+    glm::dvec3 about(0.0);
+    about[symmetry->axis] = 1.0;
+    const glm::dvec3 off = symmetry->centre - centre;
+    if (symmetry->kind != Symmetry::Kind::Rotational ||
+        std::abs(glm::dot(about, axis.direction)) < 0.999 ||
+        glm::length(off - glm::dot(off, about) * about) > 0.01 * radius)
+      return {};
+    orders = {symmetry->order};
+  }
 
   std::vector<glm::dvec2> profile;
   const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
@@ -311,7 +329,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   if (deadline.givesUp()) return {};
   std::vector<Candidate> candidates;
   for (const ProfileCreases& fit : fits)
-    for (int order : kOrders) candidates.push_back({fit, order});
+    for (int order : orders) candidates.push_back({fit, order});
   const double turn = unit(random) * 2.0 * kPi;
 
   const std::vector<FoldRecord> base(
@@ -329,6 +347,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     std::unique_ptr<FoldSession>& own = sessions.local();
     if (!own) {
       own = std::make_unique<FoldSession>(session.initial());
+      if (session.symmetricFolder()) own->setSymmetry(*session.symmetry());
       own->applyRecords(base);
     }
     const Candidate& candidate = candidates[c];
