@@ -642,8 +642,8 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
-  // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp).
-  // (a symmetric design's when its rotation is about that axis: one fold and its images a ring).
+  // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp; on
+  // a symmetric design whose rotation is about that axis, each ring is one fold and its images).
   if (target.axis && settings_.nestedRings)
     for (FoldSuggestion& rings :
          suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random))
