@@ -150,6 +150,7 @@ TEST(RingFolds, BringADiskCloserToADishThanAnySingleFold) {
   settings.refineEvaluations = 30;  // the single folds' refinement: a few seconds in all
   FitSettings single = settings;
   single.rings = 0;
+  settings.nestedRings = false;  // the profile rings alone (nested_rings.hpp has its own tests)
   const FoldFitter withRings(target, settings), singleFolds(target, single);
   FoldSession session(disks.front().sheet);
   const double before = withRings.approximateDistance(session.fixed());

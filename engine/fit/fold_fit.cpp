@@ -16,6 +16,7 @@
 #include <nlopt.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/start_surface.hpp"
@@ -643,6 +644,12 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
+  // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp; on
+  // a symmetric design whose rotation is about that axis, each ring is one fold and its images).
+  if (target.axis && settings_.nestedRings)
+    for (FoldSuggestion& rings :
+         suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random))
+      suggestions.push_back(std::move(rings));
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
   return bestAndCrease(std::move(suggestions), count);

@@ -81,6 +81,9 @@ struct FitSettings {
   // Rings of folds about a target of revolution's axis drawn per step (profile_folds.hpp); 0:
   // none.
   std::size_t rings = 256;
+  // With rings, nested rings fitted to the profile of a target of revolution, from a flat sheet
+  // across its axis (nested_rings.hpp).
+  bool nestedRings = true;
   bool allowSelfIntersection = false;
   // Read folds from the target's creases (proposals through crease planes, and the unfolding
   // fitFolds tries first); off: search alone.

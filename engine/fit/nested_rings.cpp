@@ -1,0 +1,387 @@
+#include "engine/fit/nested_rings.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+#include <nlopt.hpp>
+
+#include "engine/fit/unit_draw.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr std::size_t kProfilePoints = 300;  // target samples the profile is fitted to
+constexpr std::size_t kPolylinePoints = 48;  // along the sheet's radius
+constexpr int kRestarts = 5;                 // random starts per crease count
+constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
+constexpr std::array<int, 3> kOrders{8, 12, 16};
+constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
+constexpr double kPi = std::numbers::pi;
+
+double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+  const glm::dvec2 ab = b - a;
+  const double length2 = glm::dot(ab, ab);
+  const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * ab));
+}
+
+// The mean two-sided distance between the polyline and the target's profile points, the
+// polyline's points weighted by their distance from the centre (the area of the sheet there).
+double profileDistance(const std::vector<glm::dvec2>& polyline,
+                       const std::vector<glm::dvec2>& target, double sheetRadius) {
+  double toPolyline = 0.0;
+  for (const glm::dvec2& p : target) {
+    double best = 1e300;
+    for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+      best = std::min(best, segmentDistance(p, polyline[i], polyline[i + 1]));
+    toPolyline += best;
+  }
+  toPolyline /= static_cast<double>(target.size());
+  // Points along the polyline by their distance s from the centre (its length is the radius).
+  double toTarget = 0.0, weights = 0.0;
+  std::size_t segment = 0;
+  double segmentStart = 0.0;
+  for (std::size_t j = 0; j < kPolylinePoints; ++j) {
+    const double s = sheetRadius * (static_cast<double>(j) + 0.5) / kPolylinePoints;
+    while (segment + 2 < polyline.size() &&
+           s > segmentStart + glm::length(polyline[segment + 1] - polyline[segment])) {
+      segmentStart += glm::length(polyline[segment + 1] - polyline[segment]);
+      ++segment;
+    }
+    const glm::dvec2 a = polyline[segment], b = polyline[segment + 1];
+    const double length = glm::length(b - a);
+    const glm::dvec2 point = length > 0.0 ? a + (s - segmentStart) / length * (b - a) : a;
+    double best = 1e300;
+    for (const glm::dvec2& q : target) best = std::min(best, glm::dot(point - q, point - q));
+    toTarget += s * std::sqrt(best);
+    weights += s;
+  }
+  return 0.5 * (toPolyline + toTarget / weights);
+}
+
+// A fit's parameters as Subplex sees them: the shift, then the creases' distances from the
+// centre as fractions of the radius, then their angles.
+std::vector<double> packed(const ProfileCreases& creases, double sheetRadius) {
+  std::vector<double> x{creases.shift};
+  for (double s : creases.arcs) x.push_back(s / sheetRadius);
+  x.insert(x.end(), creases.angles.begin(), creases.angles.end());
+  return x;
+}
+
+ProfileCreases unpacked(const std::vector<double>& x, double sheetRadius) {
+  const std::size_t k = (x.size() - 1) / 2;
+  ProfileCreases creases;
+  creases.shift = x[0];
+  std::vector<std::pair<double, double>> pairs;
+  for (std::size_t i = 0; i < k; ++i) pairs.emplace_back(x[1 + i], x[1 + k + i]);
+  std::sort(pairs.begin(), pairs.end());
+  for (const auto& [s, angle] : pairs) {
+    creases.arcs.push_back(sheetRadius * s);
+    creases.angles.push_back(angle);
+  }
+  return creases;
+}
+
+}  // namespace
+
+std::vector<glm::dvec2> profilePolyline(const ProfileCreases& creases, double sheetRadius) {
+  std::vector<glm::dvec2> polyline{{0.0, creases.shift}};
+  double s = 0.0, angle = 0.0;
+  for (std::size_t i = 0; i < creases.arcs.size(); ++i) {
+    const double next = std::clamp(creases.arcs[i], s, sheetRadius);
+    polyline.push_back(polyline.back() + (next - s) * glm::dvec2(std::cos(angle), std::sin(angle)));
+    s = next;
+    angle = creases.angles[i];
+  }
+  polyline.push_back(polyline.back() +
+                     (sheetRadius - s) * glm::dvec2(std::cos(angle), std::sin(angle)));
+  return polyline;
+}
+
+ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
+                                 std::size_t creaseCount, const ProfileCreases* start,
+                                 std::mt19937_64& random) {
+  double low = 1e300, high = -1e300;
+  for (const glm::dvec2& p : target) {
+    low = std::min(low, p.y);
+    high = std::max(high, p.y);
+  }
+  // The starts: the fit with fewer creases grown by one that turns nothing, then random ones.
+  std::vector<ProfileCreases> starts;
+  if (start && start->arcs.size() < creaseCount) {
+    ProfileCreases grown = *start;
+    while (grown.arcs.size() < creaseCount) {
+      const double s = sheetRadius * (0.1 + 0.85 * unit(random));
+      const auto at = std::upper_bound(grown.arcs.begin(), grown.arcs.end(), s);
+      const auto i = at - grown.arcs.begin();
+      const double angle = i == 0 ? 0.0 : grown.angles[static_cast<std::size_t>(i - 1)];
+      grown.arcs.insert(at, s);
+      grown.angles.insert(grown.angles.begin() + i, angle);
+    }
+    starts.push_back(grown);
+  }
+  for (int r = 0; r < kRestarts; ++r) {
+    ProfileCreases random_start;
+    random_start.shift = low + (high - low) * unit(random);
+    const double side = unit(random) < 0.5 ? -1.0 : 1.0;
+    for (std::size_t i = 0; i < creaseCount; ++i)
+      random_start.arcs.push_back(sheetRadius * (0.05 + 0.9 * unit(random)));
+    std::sort(random_start.arcs.begin(), random_start.arcs.end());
+    double angle = 0.0;
+    for (std::size_t i = 0; i < creaseCount; ++i) {
+      angle += side * unit(random) * 0.5 * kPi / static_cast<double>(creaseCount) * 1.5;
+      random_start.angles.push_back(angle);
+    }
+    starts.push_back(random_start);
+  }
+
+  ProfileCreases best;
+  best.score = 1e300;
+  struct Objective {
+    const std::vector<glm::dvec2>* target;
+    double radius;
+  };
+  for (const ProfileCreases& from : starts) {
+    std::vector<double> x = packed(from, sheetRadius);
+    const std::size_t k = creaseCount;
+    nlopt::opt optimizer(nlopt::LN_SBPLX, static_cast<unsigned>(x.size()));
+    std::vector<double> lower(x.size()), upper(x.size()), step(x.size());
+    const double extent = std::max(high - low, 0.05 * sheetRadius);
+    lower[0] = low - sheetRadius;
+    upper[0] = high + sheetRadius;
+    step[0] = 0.1 * extent;
+    for (std::size_t i = 0; i < k; ++i) {
+      lower[1 + i] = 0.02;
+      upper[1 + i] = 0.98;
+      step[1 + i] = 0.05;
+      lower[1 + k + i] = -kPi;
+      upper[1 + k + i] = kPi;
+      step[1 + k + i] = 0.15;
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], lower[i], upper[i]);
+    optimizer.set_lower_bounds(lower);
+    optimizer.set_upper_bounds(upper);
+    optimizer.set_initial_step(step);
+    optimizer.set_maxeval(kProfileEvaluations);
+    Objective objective{&target, sheetRadius};
+    optimizer.set_min_objective(
+        [](const std::vector<double>& y, std::vector<double>&, void* data) {
+          const auto& o = *static_cast<Objective*>(data);
+          return profileDistance(profilePolyline(unpacked(y, o.radius), o.radius), *o.target,
+                                 o.radius);
+        },
+        &objective);
+    double value = 1e300;
+    try {
+      optimizer.optimize(x, value);
+    } catch (const nlopt::roundoff_limited&) {
+    } catch (const std::runtime_error&) {
+    }
+    ProfileCreases fitted = unpacked(x, sheetRadius);
+    fitted.score = profileDistance(profilePolyline(fitted, sheetRadius), target, sheetRadius);
+    if (fitted.score < best.score) best = fitted;
+  }
+  return best;
+}
+
+std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int order, double turn,
+                                         double sheetRadius) {
+  std::vector<NestedRing> rings;
+  // The sheet lies at height 0; a plane across the axis halfway to the shift moves it there,
+  // folding the side its normal points to (the sheet's).
+  if (std::abs(creases.shift) > 0.005 * sheetRadius) {
+    NestedRing across;
+    across.shape.height = 0.5 * creases.shift;
+    across.shape.tilt = (creases.shift < 0.0 ? 0.5 : -0.5) * kPi;
+    across.shape.order = 1;
+    rings.push_back(across);
+  }
+  const std::vector<glm::dvec2> polyline = profilePolyline(creases, sheetRadius);
+  double before = 0.0;
+  for (std::size_t i = 0; i < creases.arcs.size(); ++i) {
+    const double after = creases.angles[i];
+    const glm::dvec2 from(std::cos(before), std::sin(before));
+    const glm::dvec2 normal = from - glm::dvec2(std::cos(after), std::sin(after));
+    before = after;
+    // A crease that turns nothing, or one at the centre, makes no ring.
+    if (!(glm::length(normal) > 1e-3) || !(polyline[i + 1].x > 1e-6 * sheetRadius)) continue;
+    NestedRing ring;
+    ring.shape.height = polyline[i + 1].y;
+    ring.shape.radius = polyline[i + 1].x;
+    ring.shape.tilt = std::atan2(normal.y, normal.x);
+    ring.shape.turn = turn;
+    ring.shape.order = order;
+    // Before this ring the sheet beyond the crease runs straight on to the rim.
+    ring.flap = 0.5 * (sheetRadius - std::min(creases.arcs[i], sheetRadius)) * from;
+    rings.push_back(ring);
+  }
+  return rings;
+}
+
+namespace {
+
+// Each plane of `shape` folded on the session, seeded at the sheet vertex on its side nearest to
+// where the flap beyond it lies (along `flap`, in the meridian: (r, z)), so the fold takes its
+// own flap and not another the plane reaches. On a session whose rotation makes the ring (its
+// images), only the first plane. Returns how many folds were made, images included.
+std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const RevolutionAxis& axis,
+                           const glm::dvec2& flap) {
+  std::size_t made = 0;
+  Ring ring = ringOf(shape, axis);
+  if (session.symmetricFolder()) ring.planes.resize(1);
+  for (const ReflectionPlane& plane : ring.planes) {
+    const Sheet& sheet = session.fixed();
+    glm::dvec3 radial = plane.point - axis.point;
+    radial -= glm::dot(radial, axis.direction) * axis.direction;
+    const double r = glm::length(radial);
+    const glm::dvec3 want = shape.order == 1 || !(r > 0.0)
+                                ? axis.point
+                                : plane.point + flap.x * (radial / r) + flap.y * axis.direction;
+    std::optional<std::size_t> seed;
+    double nearest = 1e300;
+    for (std::size_t v = 0; v < sheet.positions.size(); ++v) {
+      if (!(plane.signedDistance(sheet.positions[v]) > 2.0 * session.minimumDrag())) continue;
+      const double d = glm::distance(sheet.positions[v], want);
+      if (d < nearest) {
+        nearest = d;
+        seed = v;
+      }
+    }
+    if (!seed) continue;                                      // the plane misses the sheet
+    const glm::dvec2 development = sheet.development[*seed];  // a copy: the drag changes sheets
+    const glm::dvec3 grabbed = session.beginDragAtDevelopment(development);
+    session.updateDrag(plane.reflect(grabbed));
+    const std::size_t before = session.foldCount();
+    if (session.commit()) made += session.foldCount() - before;
+  }
+  return made;
+}
+
+struct Candidate {
+  ProfileCreases creases;
+  int order = 8;
+};
+
+}  // namespace
+
+std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const FoldFitter& fitter,
+                                               const RevolutionAxis& axis,
+                                               const std::vector<SurfaceSample>& targetSamples,
+                                               std::size_t count, const Deadline& deadline,
+                                               std::mt19937_64& random, std::size_t mostCreases) {
+  if (count == 0 || targetSamples.empty() || deadline.givesUp()) return {};
+  // The sheet: flat across the axis? Its centre is the rings' axis point.
+  const Sheet& sheet = session.fixed();
+  if (sheet.positions.empty()) return {};
+  glm::dvec3 centre(0.0);
+  for (const glm::dvec3& p : sheet.positions) centre += p;
+  centre /= static_cast<double>(sheet.positions.size());
+  const RevolutionAxis local{centre, axis.direction, 0.0};
+  double radius = 0.0, lowest = 1e300, highest = -1e300;
+  for (const glm::dvec3& p : sheet.positions) {
+    const double h = glm::dot(p - centre, axis.direction);
+    lowest = std::min(lowest, h);
+    highest = std::max(highest, h);
+    radius = std::max(radius, glm::length((p - centre) - h * axis.direction));
+  }
+  if (!(radius > 0.0) || highest - lowest > kFlatSheet * radius) return {};
+  // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
+  // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
+  std::vector<int> orders(kOrders.begin(), kOrders.end());
+  if (session.symmetricFolder()) {
+    const Symmetry* symmetry = session.symmetry();
+    glm::dvec3 about(0.0);
+    about[symmetry->axis] = 1.0;
+    const glm::dvec3 off = symmetry->centre - centre;
+    if (symmetry->kind != Symmetry::Kind::Rotational ||
+        std::abs(glm::dot(about, axis.direction)) < 0.999 ||
+        glm::length(off - glm::dot(off, about) * about) > 0.01 * radius)
+      return {};
+    orders = {symmetry->order};
+  }
+
+  std::vector<glm::dvec2> profile;
+  const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
+  for (std::size_t i = 0; i < targetSamples.size(); i += stride) {
+    const glm::dvec3 d = targetSamples[i].position - centre;
+    const double h = glm::dot(d, axis.direction);
+    profile.push_back({glm::length(d - h * axis.direction), h});
+  }
+
+  // Fits with 1..mostCreases creases, each grown from the one before (the random draws made
+  // here, in order, so a seed repeats).
+  std::vector<ProfileCreases> fits;
+  for (std::size_t k = 1; k <= mostCreases && !deadline.passed(); ++k) {
+    deadline.countEvaluation();
+    fits.push_back(
+        fitProfileCreases(profile, radius, k, fits.empty() ? nullptr : &fits.back(), random));
+  }
+  if (deadline.givesUp()) return {};
+  std::vector<Candidate> candidates;
+  for (const ProfileCreases& fit : fits)
+    for (int order : orders) candidates.push_back({fit, order});
+  const double turn = unit(random) * 2.0 * kPi;
+
+  const std::vector<FoldRecord> base(
+      session.folds().begin(),
+      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+  const double before = fitter.approximateDistance(sheet);
+  const bool allowCrossing = fitter.settings().allowSelfIntersection;
+  const std::size_t crossingsBefore =
+      allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
+  std::vector<FoldSuggestion> made(candidates.size());
+  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
+  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t c) {
+    if (deadline.passed()) return;
+    deadline.countEvaluation();
+    std::unique_ptr<FoldSession>& own = sessions.local();
+    if (!own) {
+      own = std::make_unique<FoldSession>(session.initial());
+      if (session.symmetricFolder()) own->setSymmetry(*session.symmetry());
+      own->applyRecords(base);
+    }
+    const Candidate& candidate = candidates[c];
+    // Ring after ring; one that passes the sheet through itself (on a steep profile a ring's
+    // planes can take the corner paper of the flaps beside their own) is taken back, and the
+    // rings before it kept.
+    for (const NestedRing& ring :
+         nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius)) {
+      const std::size_t foldsBefore = own->foldCount();
+      if (makeNestedRing(*own, ring.shape, local, ring.flap) == 0) continue;
+      if (!allowCrossing &&
+          findSelfIntersections(own->fixed()).intersections.size() > crossingsBefore) {
+        while (own->foldCount() > foldsBefore) own->undo();
+        break;
+      }
+    }
+    if (own->foldCount() > base.size()) {
+      made[c].folds.assign(own->folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
+                           own->folds().begin() + static_cast<std::ptrdiff_t>(own->foldCount()));
+      made[c].sheet = own->fixed();
+      made[c].before = before;
+      made[c].after = fitter.approximateDistance(made[c].sheet);
+    }
+    while (own->foldCount() > base.size()) own->undo();
+  });
+  if (deadline.givesUp()) return {};
+  std::vector<FoldSuggestion> out;
+  for (FoldSuggestion& suggestion : made)
+    if (!suggestion.folds.empty() && suggestion.after < before)
+      out.push_back(std::move(suggestion));
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& a, const auto& b) { return a.after < b.after; });
+  if (out.size() > count) out.resize(count);
+  return out;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,148 @@
+// Nested rings fitted to a bowl's profile, from a flat disk (issue 38, 2;
+// engine/fit/nested_rings.hpp).
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/nested_rings.hpp"
+#include "engine/fit/profile_folds.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+#include "engine/geometry/validate.hpp"
+#include "engine/surfaces/surfaces.hpp"
+#include "tests/sanitizer_support.hpp"
+
+namespace curvefold {
+namespace {
+
+// A cap of revolution about z given as height(r) for r over (0, outer], a fan at the centre.
+template <typename Height>
+TriangleMesh capOf(Height height, double outer, int around, int rings) {
+  TriangleMesh mesh;
+  mesh.positions.emplace_back(0.0, 0.0, height(0.0));
+  for (int j = 1; j <= rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double r = outer * j / rings, a = 2.0 * std::numbers::pi * i / around;
+      mesh.positions.emplace_back(r * std::cos(a), r * std::sin(a), height(r));
+    }
+  const auto at = [&](int i, int j) {
+    return j == 0 ? 0u : static_cast<std::uint32_t>(1 + (j - 1) * around + (i % around));
+  };
+  for (int i = 0; i < around; ++i) mesh.triangles.push_back({at(i, 0), at(i, 1), at(i + 1, 1)});
+  for (int j = 1; j < rings; ++j)
+    for (int i = 0; i < around; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  return mesh;
+}
+
+// The profile (r, z) of a paraboloid bowl 16 cm across and 4 cm deep, its bottom at z = -0.02.
+std::vector<glm::dvec2> paraboloidProfile() {
+  std::vector<glm::dvec2> profile;
+  for (int i = 0; i < 300; ++i) {
+    const double r = 0.08 * i / 299.0;
+    profile.push_back({r, r * r / 0.16 - 0.02});
+  }
+  return profile;
+}
+
+TEST(NestedRings, ProfileCreasesFollowAParaboloidCloserWithEachCrease) {
+  const std::vector<glm::dvec2> profile = paraboloidProfile();
+  const double radius = 0.088;  // a disk of about the bowl's area
+  std::mt19937_64 random(5);
+  // The flat sheet at its best height, and the fits with one and three creases.
+  const double flatScore = fitProfileCreases(profile, radius, 0, nullptr, random).score;
+  const ProfileCreases one = fitProfileCreases(profile, radius, 1, nullptr, random);
+  const ProfileCreases three = fitProfileCreases(profile, radius, 3, &one, random);
+  ASSERT_EQ(three.arcs.size(), 3u);
+  EXPECT_LT(one.score, 0.6 * flatScore);
+  EXPECT_LT(three.score, 0.5 * one.score);
+  EXPECT_LT(three.score, 0.004 * 0.18);  // under 0.4% of the bowl's size
+  // The polyline keeps the sheet's length (the meridian of a flat disk folded isometrically), and
+  // the bowl opens upward: the rim above the centre.
+  const std::vector<glm::dvec2> polyline = profilePolyline(three, radius);
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+    length += glm::length(polyline[i + 1] - polyline[i]);
+  EXPECT_NEAR(length, radius, 1e-12);
+  EXPECT_GT(polyline.back().y, polyline.front().y + 0.02);
+}
+
+TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
+  // The paraboloid about z, a fan at its centre, from a disk of about its area at its bottom
+  // (coarser under the sanitizers: each candidate folds the whole sheet dozens of times).
+  const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
+  FitSettings settings;
+  settings.sheetSamples = 800;
+  settings.targetSamples = 800;
+  settings.denseTargetSamples = 8000;
+  const FoldFitter fitter(target, settings);
+  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+  ASSERT_TRUE(axis);
+  FoldSession session(disk);
+  const double before = fitter.approximateDistance(session.fixed());
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> steps = suggestNestedRings(
+      session, fitter, *axis, samples, 1, {}, random, testing::kSanitized ? 2 : 3);
+  ASSERT_EQ(steps.size(), 1u);
+  const FoldSuggestion& step = steps.front();
+  EXPECT_GE(step.folds.size(), 16u);  // rings, not a fold
+  EXPECT_LT(step.after, 0.45 * before) << "before " << before;
+  EXPECT_NEAR(step.after, fitter.approximateDistance(step.sheet), 1e-12);
+  validate(step.sheet);
+  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
+  EXPECT_EQ(session.foldCount(), 0u);  // the session is left as it was
+  // The folds replay on a session of their own to the same sheet (a design keeps them).
+  FoldSession replayed(disk);
+  replayed.applyRecords(step.folds);
+  EXPECT_EQ(replayed.foldCount(), step.folds.size());
+  double moved = 0.0;
+  for (std::size_t v = 0; v < step.sheet.positions.size(); ++v)
+    moved = std::max(moved, glm::distance(step.sheet.positions[v], replayed.fixed().positions[v]));
+  EXPECT_LT(moved, 1e-9);
+}
+
+TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
+  const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
+  FitSettings settings;
+  settings.sheetSamples = 800;
+  settings.targetSamples = 800;
+  settings.denseTargetSamples = 8000;
+  const FoldFitter fitter(target, settings);
+  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+  ASSERT_TRUE(axis);
+  FoldSession session(disk);
+  session.setSymmetry(parseSymmetry("rotational:12:z", disk));
+  const double before = fitter.approximateDistance(session.fixed());
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> steps =
+      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, 2);
+  ASSERT_EQ(steps.size(), 1u);
+  const FoldSuggestion& step = steps.front();
+  // Each ring is one fold and its images (one group), at most two rings and a plane across.
+  std::vector<int> groups;
+  for (const FoldRecord& fold : step.folds)
+    if (groups.empty() || groups.back() != int(fold.group)) groups.push_back(int(fold.group));
+  EXPECT_LE(groups.size(), 3u);
+  EXPECT_GT(step.folds.size(), groups.size());  // images beside the folds
+  EXPECT_LT(step.after, 0.5 * before) << "before " << before;
+  validate(step.sheet);
+  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
+}
+
+}  // namespace
+}  // namespace curvefold
