@@ -41,6 +41,12 @@ struct StaticOptions {
   // all at once (a design at 100% in design mode, a single crease) that is the equilibrium itself,
   // and no continuation is needed.
   bool predictor = true;
+  // Design mode, far from the goal: the continuation's stages run with every hinge that is not a
+  // crease and has a target (the design's own bending; flat facets stay stiff) this much softer,
+  // then a last stage at the goal with the model's stiffnesses (0 or 1: off). Creases first, as a
+  // hand folds them: the facets follow the creases' branch.
+  double foldingFacetScale = 1.0 / 200.0;
+  std::size_t maxSoftStageIterations = 30;  // each such stage stops there if not converged
 };
 
 struct StaticIteration {
