@@ -1,19 +1,29 @@
 // The folding simulation (engine/simulation): one damped dynamic step at 10k and 100k vertices
 // (targets 1 ms and 10 ms on 2 cores), and a 10k-vertex design from flat to settled at 100% by the
-// static solver (target 2 s). The patterns: a square grid with one crease through the middle; the
-// design: the cylinder surface bent to its shape (design mode drives every edge to its dihedral).
+// static solver (target 2 s), and every bundled and showcase design from flat by the solvers alone
+// (BM_DesignFromFlatBySolvers/NAME). The patterns: a square grid with one crease through the
+// middle; the design: the cylinder surface bent to its shape (design mode drives every edge to its
+// dihedral).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include <tbb/task_arena.h>
 
 #include "bench/simulation_bench_support.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/rigid_placement.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sim_input/player.hpp"
+#include "sim_input/recording.hpp"
 
 namespace curvefold {
 namespace {
@@ -67,7 +77,61 @@ BENCHMARK(BM_SettleDesignFromFlatByContinuation)
     ->UseRealTime()
     ->Iterations(1);
 
+// Every bundled and showcase design (the final sheet of each recording in examples/recordings and
+// examples/showcase/recordings) from flat to 100% in design mode by the solvers alone (no
+// predictor), then compared with the design after the best rigid placement: the two-sided
+// Hausdorff distance over the diagonal (check: <= 0.5%) and the worst edge strain (<= 0.1%).
+void designFromFlatBySolvers(benchmark::State& bench, const std::filesystem::path& recording) {
+  const Sheet sheet = replayRecording(readRecording(recording)).sheet;
+  const BarHingeModel model = buildModel(designPattern(sheet).pattern);
+  StaticOptions options;
+  options.predictor = false;
+  StaticResult result;
+  SimulationState state;
+  for (auto _ : bench) {
+    state = flatState(model);
+    result = settle(model, 1.0, state, options);
+    benchmark::DoNotOptimize(state.positions.data());
+  }
+  Sheet simulated = sheet;
+  simulated.positions =
+      placed(bestRigidPlacement(state.positions, sheet.positions), state.positions);
+  double worstStrain = 0.0;
+  for (double strain : edgeStrain(model, state.positions))
+    worstStrain = std::max(worstStrain, std::abs(strain));
+  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  bench.counters["converged"] = result.converged ? 1 : 0;
+  bench.counters["iterations"] = static_cast<double>(result.iterations);
+  bench.counters["hausdorff_pct"] =
+      100.0 * surfaceDistance(meshOf(simulated), meshOf(sheet)).relativeHausdorff();
+  bench.counters["strain_pct"] = 100.0 * worstStrain;
+}
+
+void registerDesigns() {
+  for (const char* folder : {"/examples/recordings", "/examples/showcase/recordings"}) {
+    std::vector<std::filesystem::path> paths;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(CURVEFOLD_SOURCE_DIR + std::string(folder)))
+      if (entry.path().extension() == ".jsonl") paths.push_back(entry.path());
+    std::sort(paths.begin(), paths.end());
+    for (const auto& path : paths)
+      benchmark::RegisterBenchmark(
+          ("BM_DesignFromFlatBySolvers/" + path.stem().string()).c_str(),
+          [path](benchmark::State& bench) { designFromFlatBySolvers(bench, path); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+  }
+}
+
 }  // namespace
 }  // namespace curvefold
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  curvefold::registerDesigns();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -6,9 +6,11 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <glm/gtx/rotate_vector.hpp>
 
 namespace curvefold {
 namespace {
@@ -306,6 +308,136 @@ double addBarsAndHinges(BarHingeModel& model, const ElementInputs& in) {
   return maxBar;
 }
 
+// A wing lower than this share of its hinge's edge makes a sliver (reflection cuts leave them: a
+// 1e-6 edge beside 1e-2 ones).
+constexpr double kSliverHeight = 0.05;
+
+// The triangle's vertex that is on neither end of the edge.
+std::uint32_t oppositeVertex(const std::array<std::uint32_t, 3>& tri, std::uint32_t u,
+                             std::uint32_t v) {
+  for (std::uint32_t w : tri)
+    if (w != u && w != v) return w;
+  return tri[0];
+}
+
+// Bridges across slivers. A sliver's plane is ill-defined: a move of its low wing by its height
+// (1e-6 of the sheet) turns it half a turn, so its hinges are weakened (addHinge) and the two
+// good triangles on either side of it are left nearly free to turn about the line between them,
+// and in 3D the sliver collapses and its hinges' angles jump, which stalls the solvers. Each
+// chain of slivers between two good triangles T1 and Tk (entered across a long edge, left across
+// its other long edge) gets one hinge from T1 straight to Tk, about the first crossed edge, with
+// Tk's far vertex as its wing: its target is the angle T1 and Tk make when every crossed hinge is
+// at its own target (the triangles turned about their flat edges in turn, so it is exact for
+// targets the sheet can take), and its stiffness is that of an unweakened hinge of the edge.
+// The crossed hinges, whose angles jump, are then left with no stiffness.
+void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
+  const std::size_t hingeCount = model.hinges.size();
+  std::map<EdgeKey, std::uint32_t> hingeOf;
+  for (std::size_t j = 0; j < hingeCount; ++j) {
+    const Hinge& h = model.hinges[j];
+    hingeOf[{std::min(h.a, h.b), std::max(h.a, h.b)}] = static_cast<std::uint32_t>(j);
+  }
+  const auto& flat = model.flatPositions;
+  auto edgeLength = [&](std::size_t j) { return model.barLength[model.hingeEdge[j]]; };
+  // The height of triangle t's wing over hinge j's edge, as a share of the edge.
+  auto wingHeight = [&](std::size_t j, std::uint32_t t) {
+    return 2.0 * in.area[t] / (edgeLength(j) * edgeLength(j));
+  };
+  std::set<std::pair<std::uint32_t, std::uint32_t>> bridged;
+  std::vector<std::uint8_t> crossed(hingeCount, 0);
+  for (std::size_t j = 0; j < hingeCount; ++j)
+    for (int side = 0; side < 2; ++side) {
+      const std::uint32_t first = model.hingeTriangles[j][side];
+      std::uint32_t current = model.hingeTriangles[j][1 - side];
+      if (wingHeight(j, first) < kSliverHeight || wingHeight(j, current) >= kSliverHeight) continue;
+      std::vector<std::uint32_t> path{static_cast<std::uint32_t>(j)};
+      std::uint32_t u = model.hinges[j].a, v = model.hinges[j].b, last = 0;
+      bool reached = false;
+      for (int step = 0; step < 8 && !reached; ++step) {
+        const std::uint32_t w = oppositeVertex(model.triangles[current], u, v);
+        // Out across the longer of the sliver's other two edges.
+        if (glm::distance(flat[u], flat[w]) > glm::distance(flat[v], flat[w]))
+          v = w;
+        else
+          u = w;
+        const auto found = hingeOf.find({std::min(u, v), std::max(u, v)});
+        if (found == hingeOf.end()) break;  // a boundary: nothing to bridge to
+        const std::uint32_t k = found->second;
+        path.push_back(k);
+        const auto& pair = model.hingeTriangles[k];
+        const std::uint32_t next = pair[0] == current ? pair[1] : pair[0];
+        if (wingHeight(k, next) >= kSliverHeight) {
+          last = next;
+          reached = true;
+        }
+        current = next;
+      }
+      if (!reached || !bridged.insert({std::min(first, last), std::max(first, last)}).second)
+        continue;
+      // The far wing, turned about each crossed edge (last first, all still flat) so the crossed
+      // hinges sit at their targets; the sense of each turn is the one that gives its target.
+      const Hinge& lastHinge = model.hinges[path.back()];
+      const std::uint32_t farWing = oppositeVertex(model.triangles[last], lastHinge.a, lastHinge.b);
+      glm::dvec3 wing = flat[farWing];
+      double sum = 0.0;
+      bool crease = false, driven = false;
+      for (std::size_t i = path.size(); i-- > 0;) {
+        const Hinge& h = model.hinges[path[i]];
+        const double target = model.hingeTarget[path[i]];
+        sum += target;
+        crease = crease || model.hingeCrease[path[i]];
+        driven = driven || model.hingeDriven[path[i]];
+        const glm::dvec3 axis = glm::normalize(flat[h.b] - flat[h.a]);
+        const std::uint32_t nearTriangle =
+            i == 0 ? first
+                   : [&] {  // the triangle this hinge shares with the previous one on the path
+                       const auto& mine = model.hingeTriangles[path[i]];
+                       const auto& before = model.hingeTriangles[path[i - 1]];
+                       return mine[0] == before[0] || mine[0] == before[1] ? mine[0] : mine[1];
+                     }();
+        const bool nearIsLeft = model.hingeTriangles[path[i]][0] == nearTriangle;
+        const glm::dvec3 farVertex = flat[nearIsLeft ? h.d : h.c];
+        double bestError = INFINITY, sense = 1.0;
+        for (double candidate : {1.0, -1.0}) {
+          const glm::dvec3 turned =
+              flat[h.a] + glm::rotate(farVertex - flat[h.a], candidate * target, axis);
+          const double angle = nearIsLeft
+                                   ? hingeAngle(flat[h.a], flat[h.b], flat[h.c], turned, target)
+                                   : hingeAngle(flat[h.a], flat[h.b], turned, flat[h.d], target);
+          if (std::abs(angle - target) < bestError) {
+            bestError = std::abs(angle - target);
+            sense = candidate;
+          }
+        }
+        wing = flat[h.a] + glm::rotate(wing - flat[h.a], sense * target, axis);
+      }
+      const Hinge& h = model.hinges[j];
+      const bool firstIsLeft = side == 0;
+      const Hinge bridge =
+          firstIsLeft ? Hinge{h.a, h.b, h.c, farWing} : Hinge{h.a, h.b, farWing, h.d};
+      const double target = firstIsLeft ? hingeAngle(flat[h.a], flat[h.b], flat[h.c], wing, sum)
+                                        : hingeAngle(flat[h.a], flat[h.b], wing, flat[h.d], sum);
+      const double length = edgeLength(j);
+      const double base =
+          crease
+              ? (in.paperMode() ? in.bendingStiffness * length / in.options.paper.creaseLength
+                                : in.options.creaseStiffness * length)
+              : (in.paperMode() ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length);
+      const double weakest = std::min(wingHeight(j, first), wingHeight(path.back(), last));
+      model.hinges.push_back(bridge);
+      model.hingeEdge.push_back(model.hingeEdge[j]);
+      model.hingeTriangles.push_back(firstIsLeft ? std::array<std::uint32_t, 2>{first, last}
+                                                 : std::array<std::uint32_t, 2>{last, first});
+      model.hingeTarget.push_back(target);
+      model.hingeCrease.push_back(0);  // the crossed creases report their own angle errors
+      model.hingeDriven.push_back(driven ? 1 : 0);
+      model.hingeStiffness.push_back(base * std::min(1.0, 2.0 * weakest));
+      for (std::uint32_t k : path) crossed[k] = 1;
+    }
+  for (std::size_t j = 0; j < hingeCount; ++j)
+    if (crossed[j]) model.hingeStiffness[j] = 0.0;
+}
+
 // The options' pins and glue, each vertex checked.
 void addPinsAndGlue(BarHingeModel& model, const ModelOptions& options) {
   const std::size_t n = model.vertexCount();
@@ -367,6 +499,7 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
   model.mass = lumpedMasses(pattern, area);
   const ElementInputs inputs{pattern, options, sides, area, bendingStiffnessOf(options)};
   const double maxBar = addBarsAndHinges(model, inputs);
+  addSliverBridges(model, inputs);
   addPinsAndGlue(model, options);
   // Glue as stiff as the stiffest bar: seams close to within bar strain.
   model.glueStiffness = maxBar;

@@ -1,5 +1,6 @@
 #include "engine/simulation/hinge_unfolding.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 
@@ -65,6 +66,13 @@ SimulationState unfoldedState(const BarHingeModel& model, const std::vector<doub
         const std::uint32_t next = left == t ? right : left;
         if (isPlaced[next]) continue;
         const Hinge& h = model.hinges[j];
+        // A bridge across slivers (bar_hinge_model.cpp) joins triangles with no common edge.
+        auto hasEdge = [&](std::uint32_t triangle) {
+          const auto& vertices = model.triangles[triangle];
+          return std::count(vertices.begin(), vertices.end(), h.a) == 1 &&
+                 std::count(vertices.begin(), vertices.end(), h.b) == 1;
+        };
+        if (!hasEdge(t) || !hasEdge(next)) continue;
         const double target = targets[j];
         // Turn the neighbour about the edge as it lies in t's placement; the sense of the turn is
         // whichever gives the hinge its target (the two differ in sign unless the target is 0).

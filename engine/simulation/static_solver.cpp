@@ -212,7 +212,27 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   const double stageRadians = options.maxStageDegrees * std::numbers::pi / 180.0;
   const std::size_t stages =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(largestChange / stageRadians)));
-  result.stages = stages;
+  // Design mode from a state the goal is far from: the stages run first with the bent facets as
+  // soft as the creases (their stiffness x options.foldingFacetScale), then one more stage at the
+  // goal with the model's own. With facets 200 times stiffer, a curved crease whose targets lag
+  // the facets' is held on the wrong branch (wave_chevrons: a crease at -18.6 degrees of its
+  // -145.8, behind facets already at their shape); driven by its crease first, the sheet takes
+  // the design's branch, and at the goal, which the sheet can take, the stiffnesses' ratio no
+  // longer matters.
+  bool softFacets = options.foldingFacetScale > 0.0 && options.foldingFacetScale < 1.0 &&
+                    model.mode == SimulationMode::Design && largestChange > stageRadians;
+  BarHingeModel softModel;
+  if (softFacets) {
+    softModel = model;
+    softFacets = false;  // unless some facet bends (a crease pattern's flat facets stay stiff)
+    for (std::size_t j = 0; j < model.hinges.size(); ++j)
+      if (!model.hingeCrease[j] && model.hingeTarget[j] != 0.0) {
+        softModel.hingeStiffness[j] *= options.foldingFacetScale;
+        softFacets = true;
+      }
+  }
+  const std::size_t allStages = stages + (softFacets ? 1 : 0);
+  result.stages = allStages;
 
   // Laid out and analysed once per call, and only when an iteration needs it (a predicted state
   // that already meets the tolerance needs none).
@@ -223,23 +243,40 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces;
   std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
 
-  for (std::size_t stage = 1; stage <= stages; ++stage) {
-    const bool last = stage == stages;
-    const double t = static_cast<double>(stage) / static_cast<double>(stages);
+  for (std::size_t stage = 1; stage <= allStages; ++stage) {
+    const bool last = stage == allStages;
+    const BarHingeModel& m = softFacets && !last ? softModel : model;
+    const double t = std::min(1.0, static_cast<double>(stage) / static_cast<double>(stages));
     for (std::size_t j = 0; j < goal.size(); ++j)
-      targets[j] = last ? goal[j] : start[j] + (goal[j] - start[j]) * t;
+      targets[j] = t == 1.0 ? goal[j] : start[j] + (goal[j] - start[j]) * t;
+    if (last) {
+      // A (nearly) flat fold reached from the other side, a few degrees short (a mountain at
+      // -176 degrees whose target is a valley at 180), is within those degrees of the goal's
+      // sheet but counted a turn away; counted the near way, the last stage closes it instead of
+      // unfolding it back through flat. (No self-contact: the flap passes the layer it lies on.)
+      for (std::size_t j = 0; j < goal.size(); ++j) {
+        const double away = state.hingeAngles[j] - goal[j];
+        const double near = std::remainder(away, 2.0 * std::numbers::pi);
+        if (std::abs(away) > std::numbers::pi && std::abs(near) < std::numbers::pi / 6.0)
+          state.hingeAngles[j] = goal[j] + near;
+      }
+    }
     const double tolerance =
         last ? options.tolerance : std::max(options.tolerance, options.stageTolerance);
-    double energy = modelEnergy(model, state.positions, targets, state.hingeAngles);
+    double energy = modelEnergy(m, state.positions, targets, state.hingeAngles);
     double damping = 1e-6;  // mu, relative to the Hessian's diagonal
+    const std::size_t stageStart = result.iterations;
     while (true) {
-      elementForces(model, state.positions, targets, state.hingeAngles, state.hingeAngles,
+      elementForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
                     state.slotForces);
       gatherForces(model, state.slotForces, forces);
       const double residual = maxForce(forces) / scale;
       result.history.push_back({stage, energy, residual});
       result.residual = residual;
       if (residual <= tolerance) break;
+      // A soft stage only has to bring the sheet onto the creases' branch, not to equilibrium.
+      if (softFacets && !last && result.iterations - stageStart >= options.maxSoftStageIterations)
+        break;
       if (result.iterations >= options.maxIterations) {
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
         return result;
@@ -252,7 +289,7 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
         solver.analyzePattern(layout.matrix);
         analysed = true;
       }
-      assemble(model, state.positions, layout);
+      assemble(m, state.positions, layout);
       double* values = layout.matrix.valuePtr();
       double largestDiagonal = 0.0;
       for (std::size_t d = 0; d < 3 * n; ++d) {
@@ -276,13 +313,13 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
           for (std::size_t v = 0; v < n; ++v)
             trial[v] = state.positions[v] +
                        alpha * glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
-          const double trialEnergy = modelEnergy(model, trial, targets, state.hingeAngles);
+          const double trialEnergy = modelEnergy(m, trial, targets, state.hingeAngles);
           bool lower = trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope;
           // Near equilibrium the decrease (about residual^2 / stiffness) falls below the
           // rounding of the energy's sum, and no step measurably lowers it: a step that leaves
           // the energy where it was (not above) is then taken if it lowers the residual.
           if (!lower && trialEnergy <= energy && energy - trialEnergy <= 1e-12 * std::abs(energy)) {
-            elementForces(model, trial, targets, state.hingeAngles, trialAngles, trialSlots);
+            elementForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots);
             gatherForces(model, trialSlots, trialForces);
             lower = maxForce(trialForces) < maxForce(forces);
           }

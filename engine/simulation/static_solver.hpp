@@ -8,9 +8,10 @@
 // a step that leaves the energy equal, never above, is taken if it lowers the residual).
 // Large angle changes are reached by continuation: the hinge targets go from the state's angles
 // to the goal in stages of at most maxStageDegrees, each solved loosely, the last
-// to the tolerance. Before all that, a predictor (StaticOptions::predictor) places the
-// triangles across the hinges at their goal angles and starts from there if that is lower in
-// energy than the state.
+// to the tolerance; in design mode the stages run with the bent facets as soft as the creases
+// and one more stage at the goal restores them (StaticOptions::foldingFacetScale). Before all that,
+// a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
+// angles and starts from there if that is lower in energy than the state.
 //
 // Residual (the stated convergence test): the largest force on a free vertex divided by
 // forceScale(model), the force a hinge exerts at one radian of error through a lever of its own
@@ -41,6 +42,12 @@ struct StaticOptions {
   // all at once (a design at 100% in design mode, a single crease) that is the equilibrium itself,
   // and no continuation is needed.
   bool predictor = true;
+  // Design mode, far from the goal: the continuation's stages run with every hinge that is not a
+  // crease and has a target (the design's own bending; flat facets stay stiff) this much softer,
+  // then a last stage at the goal with the model's stiffnesses (0 or 1: off). Creases first, as a
+  // hand folds them: the facets follow the creases' branch.
+  double foldingFacetScale = 1.0 / 200.0;
+  std::size_t maxSoftStageIterations = 30;  // each such stage stops there if not converged
 };
 
 struct StaticIteration {
