@@ -1,8 +1,12 @@
 // Pleats toward a doubly curved target (issue 38, 2: engine/fit/pleat_folds.hpp): two folds that
 // turn a curved sheet's end about a hinge across it, keeping the end's own curvature, which no
 // single reflection does.
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <numbers>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -10,6 +14,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/pleat_folds.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -99,6 +104,67 @@ TEST(FoldFit, KeepsAPleatWhereNoSingleFoldTurnsACurvedEnd) {
   EXPECT_LT(result.steps[1].chamfer, 0.5 * result.steps[0].chamfer);
   testing::expectInvariants(session.fixed(), session.initial());
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
+// The pleat is solved from the target's heights over the sheet (a least-squares turn beyond each
+// hinge), not searched: a handful of pleats scored, where the blind grid scores over a hundred.
+TEST(PleatFolds, SolveTheHingeAndTurnFromTheTargetsHeightsInAFewTries) {
+  const FoldFitter fitter(troughWithEndTurned(), quickSettings());
+  FoldSession session(trough());
+  const double before = fitter.approximateDistance(session.fixed());
+  std::atomic<std::uint64_t> evaluations{0};
+  Deadline deadline;
+  deadline.evaluations = &evaluations;
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 2, deadline);
+  ASSERT_FALSE(pleats.empty());
+  EXPECT_LT(pleats.front().after, 0.5 * before) << before;
+  EXPECT_LE(evaluations.load(), 20u);
+  // Its creases run across the trough near the hinge (y = 0.13, rulings along y).
+  const ReflectionPlane& first = pleats.front().folds.front().plane;
+  EXPECT_GT(std::abs(first.normal.y), 0.9);
+  EXPECT_NEAR(first.point.y, 0.13, 0.012);
+}
+
+// A regular grid of a height field over a square `size` across, centred on the origin.
+TriangleMesh heightGrid(double size, int cells, const std::function<double(double, double)>& f) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = size * (double(i) / cells - 0.5), y = size * (double(j) / cells - 0.5);
+      mesh.positions.emplace_back(x, y, f(x, y));
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * (cells + 1) + ii); };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// A saddle's grid bends a degree or two, which a flat sheet's threshold reads as creases: the
+// square asked for is still sized to it (not left at its defaults, as for a folded target).
+TEST(StartSurface, ASquareAskedForASaddleIsSizedToIt) {
+  const TriangleMesh saddle =
+      heightGrid(0.4, 40, [](double x, double y) { return (x * x - y * y) / 0.6; });
+  EXPECT_TRUE(isSmoothOrScanned(saddle));
+  const StartChoice start = chooseStart(saddle, "square");
+  EXPECT_EQ(start.surface, "square");
+  EXPECT_FALSE(start.parameters.empty() && !start.placed);
+}
+
+// A scan's noise bends a few edges sharply everywhere (under a fifth of its edge length): no
+// plane holds more than a few of them, as a fold's crease would.
+TEST(StartSurface, AScanWhoseNoiseBendsFewEdgesSharplyIsNoFoldedTarget) {
+  std::mt19937_64 random(38);
+  auto noise = [&] {  // Box-Muller: the same on every library
+    const double u = (double(random() >> 11) + 0.5) * 0x1.0p-53;
+    const double v = double(random() >> 11) * 0x1.0p-53;
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+  };
+  TriangleMesh scan = heightGrid(0.3, 40, [](double x, double y) { return x * y / 0.25; });
+  for (glm::dvec3& p : scan.positions) p.z += 0.0005 * noise();
+  EXPECT_TRUE(isSmoothOrScanned(scan));
 }
 
 // A saddle z = 4 x^2 - 2 (y - 0.1)^2 from the trough z = 4 x^2 (the swept parabola nearest it):

@@ -50,6 +50,9 @@ constexpr double kSmoothLeft = 0.01;
 constexpr double kWholeSheetTolerance = 1e-4;
 // At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
 constexpr std::size_t kMostRegistrations = 24;
+// Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
+// the start's or the fold before's (FitRun::measure).
+constexpr double kHausdorffSlack = 1.1;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -766,7 +769,6 @@ class FitRun {
         sharpEdgeThreshold(meshOf(session_.initial())),
         std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
         deadline);
-    creasesRead_ = !plan.folds.empty();
     if (plan.cutShort) {
       noteCut(deadline);
       return false;
@@ -1017,11 +1019,12 @@ class FitRun {
         std::vector<FoldSuggestion> nexts =
             fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
         // Pleats (pleat_folds.hpp): two folds as one step, the first of which alone no search
-        // of single folds keeps. Only toward a target whose creases were not read (a smooth
-        // shape): a target folded by reflections is made by single folds, and pleats cost time.
-        for (FoldSuggestion& pleat : suggestPleats(
-                 *branch, fitter_, fitter_.smoothTarget() && !creasesRead_ ? options_.pleats : 0,
-                 deadline, 16 * (depth + 1) + k))
+        // of single folds keeps. Only toward a smooth shape (or a scan): a target folded by
+        // reflections is made by single folds, and pleats cost time. A coarse smooth grid's bends
+        // may pass for shallow creases the unfolding reads; it still gets pleats.
+        for (FoldSuggestion& pleat :
+             suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
+                           16 * (depth + 1) + k))
           nexts.push_back(std::move(pleat));
         for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
@@ -1092,14 +1095,24 @@ class FitRun {
     auto before = [&](std::size_t g) {
       return (g > 0 ? m.steps[g - 1] : result_.steps.front()).chamfer;
     };
+    // Toward a smooth shape the search's robust distance may lay a flap near the target and
+    // leave an end uncovered: a fold there gains only while the farthest point stays within
+    // kHausdorffSlack of where the start or the fold before left it.
+    auto bounded = [&](std::size_t g) {
+      if (!fitter_.smoothTarget()) return true;
+      const double start = result_.steps.front().hausdorff;
+      return m.steps[g].hausdorff <=
+             kHausdorffSlack * std::max(start, g > 0 ? m.steps[g - 1].hausdorff : start);
+    };
     auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
       return m.steps[g].chamfer < (1.0 - options_.minimumGain) * before(g) &&
-             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal;
+             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal &&
+             bounded(g);
     };
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
     } else {
-      for (std::size_t g = 0; g < m.steps.size(); ++g)
+      for (std::size_t g = 0; g < m.steps.size() && bounded(g); ++g)
         if (m.steps[g].chamfer < before(m.keep)) m.keep = g + 1;
       while (m.keep > 0 && !gains(m.keep - 1)) --m.keep;
     }
@@ -1135,7 +1148,6 @@ class FitRun {
   }
 
   const bool readCreases_;
-  bool creasesRead_ = false;  // the unfolding named folds: the target was folded by reflections
   FoldSession& session_;
   const FoldFitter& fitter_;
   const FitOptions& options_;
