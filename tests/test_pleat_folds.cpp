@@ -146,7 +146,7 @@ TriangleMesh heightGrid(double size, int cells, const std::function<double(doubl
 // square asked for is still sized to it (not left at its defaults, as for a folded target).
 TEST(StartSurface, ASquareAskedForASaddleIsSizedToIt) {
   const TriangleMesh saddle =
-      heightGrid(0.4, 40, [](double x, double y) { return (x * x - y * y) / 0.6; });
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
   EXPECT_TRUE(isSmoothOrScanned(saddle));
   const StartChoice start = chooseStart(saddle, "square");
   EXPECT_EQ(start.surface, "square");
