@@ -142,15 +142,24 @@ TriangleMesh heightGrid(double size, int cells, const std::function<double(doubl
   return mesh;
 }
 
-// A saddle's grid bends a degree or two, which a flat sheet's threshold reads as creases: the
-// square asked for is still sized to it (not left at its defaults, as for a folded target).
-TEST(StartSurface, ASquareAskedForASaddleIsSizedToIt) {
+// The start says a square is kept at its defaults for the target's creases only where it has
+// some: not for a saddle (there the defaults are simply nearest), but for a folded square.
+TEST(StartSurface, OnlyAFoldedTargetKeepsTheSquaresDefaultsForItsCreases) {
   const TriangleMesh saddle =
       heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
   EXPECT_TRUE(isSmoothOrScanned(saddle));
-  const StartChoice start = chooseStart(saddle, "square");
-  EXPECT_EQ(start.surface, "square");
-  EXPECT_FALSE(start.parameters.empty() && !start.placed);
+  EXPECT_FALSE(chooseStart(saddle, "square").creased);
+  FoldSession folded(makeSurface("square"));
+  const Sheet& flat = folded.initial();
+  VertexIndex end = 0;
+  for (VertexIndex v = 0; v < flat.vertexCount(); ++v)
+    if (flat.positions[v].x > flat.positions[end].x) end = v;
+  const ReflectionPlane plane{{0.03, 0.0, 0.0}, glm::normalize(glm::dvec3(1.0, 0.0, 0.4))};
+  folded.updateDrag(plane.reflect(folded.beginDragAtDevelopment(flat.development[end])));
+  ASSERT_TRUE(folded.commit());
+  const StartChoice start = chooseStart(meshOf(folded.fixed()), "square");
+  EXPECT_TRUE(start.creased);
+  EXPECT_TRUE(start.parameters.empty());
 }
 
 // A scan's noise bends a few edges sharply everywhere (under a fifth of its edge length): no

@@ -194,7 +194,10 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   const bool smooth = isSmoothOrScanned(target);
   for (StartChoice& candidate : candidatesFor(target, kind)) {
     // A folded design was folded from the sheet as the catalogue makes it.
-    if (!smooth && creasedKind(candidate.surface)) candidate.parameters.clear();
+    if (!smooth && creasedKind(candidate.surface)) {
+      candidate.parameters.clear();
+      candidate.creased = true;
+    }
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
       candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
@@ -227,6 +230,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     best.parameters = nearest->parameters;
     best.chamfer = nearestChamfer;
     best.placement = nearest->placement;
+    best.creased = false;
     best.placed = std::move(nearest->sheet);
     any = true;
   }

@@ -43,6 +43,9 @@ struct StartChoice {
   // it starts closer than every sheet in the catalogue's frame.
   std::optional<Sheet> placed;
   std::string placement;  // how, for the user
+  // The target has creases this kind's sheet would not have (a fold's): the kind keeps its
+  // defaults. Unset where the defaults were simply nearest.
+  bool creased = false;
 };
 
 // `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError
