@@ -53,6 +53,9 @@ constexpr std::size_t kMostRegistrations = 24;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
 // the start's or the fold before's (FitRun::measure).
 constexpr double kHausdorffSlack = 1.1;
+// A pleat that brings the sheet this much closer (the search's distance) stands for the step
+// toward a smooth target that is no surface of revolution (FitRun::beamSearch).
+constexpr double kPleatEnough = 0.05;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -273,6 +276,10 @@ const TriangleMesh& FoldFitter::target() const {
 
 bool FoldFitter::smoothTarget() const {
   return target_->smooth;
+}
+
+bool FoldFitter::revolutionTarget() const {
+  return target_->axis.has_value();
 }
 
 double FoldFitter::targetDiagonal() const {
@@ -1016,16 +1023,23 @@ class FitRun {
           break;
         }
         const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
-        std::vector<FoldSuggestion> nexts =
-            fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
         // Pleats (pleat_folds.hpp): two folds as one step, the first of which alone no search
         // of single folds keeps. Only toward a smooth shape (or a scan): a target folded by
         // reflections is made by single folds, and pleats cost time. A coarse smooth grid's bends
-        // may pass for shallow creases the unfolding reads; it still gets pleats.
-        for (FoldSuggestion& pleat :
-             suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
-                           16 * (depth + 1) + k))
-          nexts.push_back(std::move(pleat));
+        // may pass for shallow creases the unfolding reads; it still gets pleats. Toward a
+        // smooth shape that is no surface of revolution (a saddle), where a pleat brings the
+        // sheet closer by kPleatEnough, the single folds' search (tens of times dearer, and on a
+        // saddle seldom better) is left out of the step, so the clock leaves room for more.
+        std::vector<FoldSuggestion> pleats =
+            suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
+                          16 * (depth + 1) + k);
+        const bool pleatEnough = !pleats.empty() && !fitter_.revolutionTarget() &&
+                                 pleats.front().after < (1.0 - kPleatEnough) * beam[k].score;
+        std::vector<FoldSuggestion> nexts =
+            pleatEnough
+                ? std::vector<FoldSuggestion>{}
+                : fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
+        for (FoldSuggestion& pleat : pleats) nexts.push_back(std::move(pleat));
         for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
           child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
