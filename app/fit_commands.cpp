@@ -91,9 +91,10 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       text += number;
     }
     std::cout << text
-              << (start.placed ? " (sized and placed on the target: " + start.placement + ")"
+              << (start.placed    ? " (sized and placed on the target: " + start.placement + ")"
+                  : start.creased ? std::string(" (its defaults: the target has creases)")
                   : start.parameters.empty()
-                      ? std::string(" (its defaults: the target has creases)")
+                      ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
     if (command->get_option("--symmetry")->count() > 0) {

@@ -1,8 +1,12 @@
 // Pleats toward a doubly curved target (issue 38, 2: engine/fit/pleat_folds.hpp): two folds that
 // turn a curved sheet's end about a hinge across it, keeping the end's own curvature, which no
 // single reflection does.
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <numbers>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -10,6 +14,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/pleat_folds.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -101,6 +106,76 @@ TEST(FoldFit, KeepsAPleatWhereNoSingleFoldTurnsACurvedEnd) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
+// The pleat is solved from the target's heights over the sheet (a least-squares turn beyond each
+// hinge), not searched: a handful of pleats scored, where the blind grid scores over a hundred.
+TEST(PleatFolds, SolveTheHingeAndTurnFromTheTargetsHeightsInAFewTries) {
+  const FoldFitter fitter(troughWithEndTurned(), quickSettings());
+  FoldSession session(trough());
+  const double before = fitter.approximateDistance(session.fixed());
+  std::atomic<std::uint64_t> evaluations{0};
+  Deadline deadline;
+  deadline.evaluations = &evaluations;
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 2, deadline);
+  ASSERT_FALSE(pleats.empty());
+  EXPECT_LT(pleats.front().after, 0.5 * before) << before;
+  EXPECT_LE(evaluations.load(), 20u);
+  // Its creases run across the trough near the hinge (y = 0.13, rulings along y).
+  const ReflectionPlane& first = pleats.front().folds.front().plane;
+  EXPECT_GT(std::abs(first.normal.y), 0.9);
+  EXPECT_NEAR(first.point.y, 0.13, 0.012);
+}
+
+// A regular grid of a height field over a square `size` across, centred on the origin.
+TriangleMesh heightGrid(double size, int cells, const std::function<double(double, double)>& f) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = size * (double(i) / cells - 0.5), y = size * (double(j) / cells - 0.5);
+      mesh.positions.emplace_back(x, y, f(x, y));
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const auto at = [&](int ii, int jj) { return std::uint32_t(jj * (cells + 1) + ii); };
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// The start says a square is kept at its defaults for the target's creases only where it has
+// some: not for a saddle (there the defaults are simply nearest), but for a folded square.
+TEST(StartSurface, OnlyAFoldedTargetKeepsTheSquaresDefaultsForItsCreases) {
+  const TriangleMesh saddle =
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  EXPECT_TRUE(isSmoothOrScanned(saddle));
+  EXPECT_FALSE(chooseStart(saddle, "square").creased);
+  FoldSession folded(makeSurface("square"));
+  const Sheet& flat = folded.initial();
+  VertexIndex end = 0;
+  for (VertexIndex v = 0; v < flat.vertexCount(); ++v)
+    if (flat.positions[v].x > flat.positions[end].x) end = v;
+  const ReflectionPlane plane{{0.03, 0.0, 0.0}, glm::normalize(glm::dvec3(1.0, 0.0, 0.4))};
+  folded.updateDrag(plane.reflect(folded.beginDragAtDevelopment(flat.development[end])));
+  ASSERT_TRUE(folded.commit());
+  const StartChoice start = chooseStart(meshOf(folded.fixed()), "square");
+  EXPECT_TRUE(start.creased);
+  EXPECT_TRUE(start.parameters.empty());
+}
+
+// A scan's noise bends a few edges sharply everywhere (under a fifth of its edge length): no
+// plane holds more than a few of them, as a fold's crease would.
+TEST(StartSurface, AScanWhoseNoiseBendsFewEdgesSharplyIsNoFoldedTarget) {
+  std::mt19937_64 random(38);
+  auto noise = [&] {  // Box-Muller: the same on every library
+    const double u = (double(random() >> 11) + 0.5) * 0x1.0p-53;
+    const double v = double(random() >> 11) * 0x1.0p-53;
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
+  };
+  TriangleMesh scan = heightGrid(0.3, 40, [](double x, double y) { return x * y / 0.25; });
+  for (glm::dvec3& p : scan.positions) p.z += 0.0005 * noise();
+  EXPECT_TRUE(isSmoothOrScanned(scan));
+}
+
 // A saddle z = 4 x^2 - 2 (y - 0.1)^2 from the trough z = 4 x^2 (the swept parabola nearest it):
 // pleats across the rulings, on either side, give the other curvature.
 TEST(FoldFit, PleatsBringATroughCloserToASaddleThanItsStart) {
@@ -117,6 +192,9 @@ TEST(FoldFit, PleatsBringATroughCloserToASaddleThanItsStart) {
   ASSERT_GE(result.steps.size(), 2u) << result.stopReason;
   EXPECT_LT(result.steps.back().chamfer, 0.7 * result.steps.front().chamfer)
       << result.steps.front().chamfer << " -> " << result.steps.back().chamfer;
+  // No end left uncovered on the way (the Hausdorff bound toward a smooth target).
+  EXPECT_LE(result.steps.back().hausdorff, 1.1 * result.steps.front().hausdorff)
+      << result.steps.front().hausdorff << " -> " << result.steps.back().hausdorff;
   testing::expectInvariants(session.fixed(), session.initial());
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }

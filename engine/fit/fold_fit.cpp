@@ -53,6 +53,12 @@ constexpr double kWholeSheetTolerance = 1e-4;
 constexpr std::size_t kMostRegistrations = 24;
 // Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
 constexpr std::size_t kOtherSeeds = 12;
+// Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
+// the start's or the fold before's (FitRun::measure).
+constexpr double kHausdorffSlack = 1.1;
+// A pleat that brings the sheet this much closer (the search's distance) stands for the step
+// toward a smooth target that is no surface of revolution (FitRun::beamSearch).
+constexpr double kPleatEnough = 0.05;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -273,6 +279,10 @@ const TriangleMesh& FoldFitter::target() const {
 
 bool FoldFitter::smoothTarget() const {
   return target_->smooth;
+}
+
+bool FoldFitter::revolutionTarget() const {
+  return target_->axis.has_value();
 }
 
 double FoldFitter::targetDiagonal() const {
@@ -796,7 +806,6 @@ class FitRun {
         sharpEdgeThreshold(meshOf(session_.initial())),
         std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
         deadline);
-    creasesRead_ = !plan.folds.empty();
     if (plan.cutShort) {
       noteCut(deadline);
       return false;
@@ -1102,15 +1111,23 @@ class FitRun {
           break;
         }
         const std::unique_ptr<FoldSession> branch = sessionFor(beam[k]);
-        std::vector<FoldSuggestion> nexts =
-            fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
         // Pleats (pleat_folds.hpp): two folds as one step, the first of which alone no search
-        // of single folds keeps. Only toward a target whose creases were not read (a smooth
-        // shape): a target folded by reflections is made by single folds, and pleats cost time.
-        for (FoldSuggestion& pleat : suggestPleats(
-                 *branch, fitter_, fitter_.smoothTarget() && !creasesRead_ ? options_.pleats : 0,
-                 deadline, 16 * (depth + 1) + k))
-          nexts.push_back(std::move(pleat));
+        // of single folds keeps. Only toward a smooth shape (or a scan): a target folded by
+        // reflections is made by single folds, and pleats cost time. A coarse smooth grid's bends
+        // may pass for shallow creases the unfolding reads; it still gets pleats. Toward a
+        // smooth shape that is no surface of revolution (a saddle), where a pleat brings the
+        // sheet closer by kPleatEnough, the single folds' search (tens of times dearer, and on a
+        // saddle seldom better) is left out of the step, so the clock leaves room for more.
+        std::vector<FoldSuggestion> pleats =
+            suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
+                          16 * (depth + 1) + k);
+        const bool pleatEnough = !pleats.empty() && !fitter_.revolutionTarget() &&
+                                 pleats.front().after < (1.0 - kPleatEnough) * beam[k].score;
+        std::vector<FoldSuggestion> nexts =
+            pleatEnough
+                ? std::vector<FoldSuggestion>{}
+                : fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
+        for (FoldSuggestion& pleat : pleats) nexts.push_back(std::move(pleat));
         for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
           child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());
@@ -1180,14 +1197,24 @@ class FitRun {
     auto before = [&](std::size_t g) {
       return (g > 0 ? m.steps[g - 1] : result_.steps.front()).chamfer;
     };
+    // Toward a smooth shape the search's robust distance may lay a flap near the target and
+    // leave an end uncovered: a fold there gains only while the farthest point stays within
+    // kHausdorffSlack of where the start or the fold before left it.
+    auto bounded = [&](std::size_t g) {
+      if (!fitter_.smoothTarget()) return true;
+      const double start = result_.steps.front().hausdorff;
+      return m.steps[g].hausdorff <=
+             kHausdorffSlack * std::max(start, g > 0 ? m.steps[g - 1].hausdorff : start);
+    };
     auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
       return m.steps[g].chamfer < (1.0 - options_.minimumGain) * before(g) &&
-             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal;
+             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal &&
+             bounded(g);
     };
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
     } else {
-      for (std::size_t g = 0; g < m.steps.size(); ++g)
+      for (std::size_t g = 0; g < m.steps.size() && bounded(g); ++g)
         if (m.steps[g].chamfer < before(m.keep)) m.keep = g + 1;
       while (m.keep > 0 && !gains(m.keep - 1)) --m.keep;
     }
@@ -1223,7 +1250,6 @@ class FitRun {
   }
 
   const bool readCreases_;
-  bool creasesRead_ = false;  // the unfolding named folds: the target was folded by reflections
   FoldSession& session_;
   const FoldFitter& fitter_;
   const FitOptions& options_;

@@ -113,6 +113,8 @@ class FoldFitter {
   // Whether the target is smooth or a scan (isSmoothOrScanned): the search then adds rings and
   // pleats to its single folds.
   bool smoothTarget() const;
+  // Whether rings are drawn about the target's axis (a smooth surface of revolution).
+  bool revolutionTarget() const;
   const FitSettings& settings() const { return settings_; }
 
   // checkTargetAgainst with this target.

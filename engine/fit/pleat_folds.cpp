@@ -28,12 +28,21 @@ constexpr double kHingeAt[] = {0.25, 0.45, 0.65, 0.8};
 constexpr std::size_t kFarPoints = 3;
 constexpr double kFarApart = 0.2;
 // The pleat's width, of the target's diagonal.
-constexpr double kWidth = 0.01;
+constexpr double kWidth = 0.003;
 // Vertices measured to the target to find where the sheet is far.
 constexpr std::size_t kMeasured = 800;
 // The best pleats of the grid refined.
 constexpr std::size_t kRefined = 2;
 constexpr double kNone = std::numeric_limits<double>::infinity();
+// Solved pleats: directions tried over a half turn, hinges across each (fractions of the way from
+// the centre to the sheet's end), turns kept (radians), the best few made, each at these shares
+// of its solved turn (the model ignores the width a pleat folds away).
+constexpr int kDirections = 8;
+constexpr double kSolvedHinges[] = {-0.6, -0.45, -0.3, -0.15, 0.0, 0.1, 0.2,
+                                    0.3,  0.4,   0.5,  0.6,   0.7, 0.8};
+constexpr double kMostSolvedTurn = 35.0 * kDegree, kLeastSolvedTurn = 1.0 * kDegree;
+constexpr std::size_t kSolvedTried = 4;
+constexpr double kSolvedShares[] = {1.0, 0.7};
 
 std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
   std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
@@ -47,6 +56,61 @@ std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
     n = length > 0.0 ? n / length : glm::dvec3(0.0);
   }
   return normals;
+}
+
+// A pleat solved from the target's heights: the end beyond `at` (metres from the sheet's centre
+// along the unit `direction`) turned by `turn` radians toward `up` (negative: away).
+struct SolvedPleat {
+  glm::dvec3 direction{0.0}, up{0.0};
+  double at = 0.0, turn = 0.0, gain = 0.0;
+};
+
+// For every direction in the sheet's plane (kDirections about its normal, both ways) and every
+// hinge across it, the target's height over the sheet beyond the hinge (r, along the sheet's
+// normal) fitted by a turn about the hinge, r = turn * (s - at) (least squares: a pleat turns
+// the end rigidly, so the height it adds grows with the distance from the hinge); the gain is
+// the squared height that turn removes. The best hinge of each direction, best first.
+std::vector<SolvedPleat> solvePleats(const std::vector<glm::dvec3>& points,
+                                     const std::vector<double>& distances,
+                                     const SurfaceDistanceQuery& query, const glm::dvec3& centre,
+                                     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
+                                     double width) {
+  auto column = [&](int i) {
+    const Eigen::Vector3d v = axes.eigenvectors().col(i);
+    return glm::dvec3(v.x(), v.y(), v.z());
+  };
+  const glm::dvec3 up = column(0), e1 = column(2), e2 = column(1);
+  std::vector<double> heights(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    heights[i] = distances[i] > 0.0 ? glm::dot(query.closestPoint(points[i]) - points[i], up) : 0.0;
+  std::vector<SolvedPleat> best;
+  for (int k = 0; k < 2 * kDirections; ++k) {
+    const double angle = std::numbers::pi * k / kDirections;
+    const glm::dvec3 direction = std::cos(angle) * e1 + std::sin(angle) * e2;
+    double reach = 0.0;
+    for (const glm::dvec3& p : points) reach = std::max(reach, glm::dot(p - centre, direction));
+    SolvedPleat found;
+    for (const double fraction : kSolvedHinges) {
+      const double at = fraction * reach;
+      double rs = 0.0, ss = 0.0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const double s = glm::dot(points[i] - centre, direction) - at;
+        if (s < 2.0 * width) continue;  // the pleat's own width is folded away
+        rs += heights[i] * s;
+        ss += s * s;
+      }
+      if (!(ss > 0.0)) continue;
+      const double turn = std::clamp(rs / ss, -kMostSolvedTurn, kMostSolvedTurn);
+      const double gain = 2.0 * turn * rs - turn * turn * ss;
+      if (gain > found.gain && std::abs(turn) > kLeastSolvedTurn)
+        found = {direction, up, at, turn, gain};
+    }
+    if (found.gain > 0.0) best.push_back(found);
+  }
+  std::stable_sort(best.begin(), best.end(),
+                   [](const auto& a, const auto& b) { return a.gain > b.gain; });
+  if (best.size() > kSolvedTried) best.resize(kSolvedTried);
+  return best;
 }
 
 }  // namespace
@@ -173,15 +237,12 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     hinge.spread = high - low;
     return hinge;
   };
-  // The pleat made, scored, kept among the best when it brings the sheet closer, and taken back.
-  auto tryPleat = [&](const Hinge& hinge, double degrees) {
-    const double theta = degrees * kDegree, eps = 0.5 * (degrees + kFlapMargin) * kDegree;
-    const double wide = width + 0.6 * hinge.spread * std::tan(0.5 * theta);
-    if (!(hinge.reach > 4.0 * wide)) return kNone;
-    const PleatPlanes planes = pleatPlanes(hinge.middle, hinge.along, hinge.bend, theta, eps, wide);
+  // Folds through `planes`, each grabbing the sheet at `seed`, made, scored, kept among the best
+  // when they bring the sheet closer (as one group), and taken back.
+  auto tryFolds = [&](const std::vector<ReflectionPlane>& planes, VertexIndex seed) {
     deadline.countEvaluation();
-    for (const ReflectionPlane& plane : {planes.first, planes.second}) {
-      const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[hinge.seed]);
+    for (const ReflectionPlane& plane : planes) {
+      const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[seed]);
       session.updateDrag(plane.reflect(grab));
       if (!session.commit()) {
         undoAll();
@@ -209,6 +270,55 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     undoAll();
     return after;
   };
+  // The pleat at `hinge` turning its end by `degrees`, tried as above.
+  auto tryPleat = [&](const Hinge& hinge, double degrees) {
+    const double theta = degrees * kDegree, eps = 0.5 * (degrees + kFlapMargin) * kDegree;
+    const double wide = width + 0.6 * hinge.spread * std::tan(0.5 * theta);
+    if (!(hinge.reach > 4.0 * wide)) return kNone;
+    const PleatPlanes planes = pleatPlanes(hinge.middle, hinge.along, hinge.bend, theta, eps, wide);
+    return tryFolds({planes.first, planes.second}, hinge.seed);
+  };
+
+  // Pleats placed from the target (a corrugation solved, not searched): each turns the end
+  // beyond its hinge by the least-squares slope of the target's height over the sheet there.
+  auto trySolved = [&](const SolvedPleat& solved) {
+    std::optional<Hinge> hinge =
+        hingeAt(centre + solved.at * solved.direction, solved.direction, 1.0);
+    if (!hinge) return kNone;
+    const glm::dvec3 m = hinge->bend;
+    hinge->bend = glm::dot(m, solved.up) * solved.turn >= 0.0 ? m : -m;
+    return tryPleat(*hinge, std::abs(solved.turn) / kDegree);
+  };
+  SolvedPleat bestSolved;
+  double bestAfter = kNone;
+  for (const SolvedPleat& solved : solvePleats(points, distances, query, centre, solver, width))
+    for (const double share : kSolvedShares) {
+      if (deadline.passed()) return out;
+      SolvedPleat tried = solved;
+      tried.turn *= share;
+      if (const double after = trySolved(tried); after < bestAfter) {
+        bestAfter = after;
+        bestSolved = tried;
+      }
+    }
+  // The best refined (the model leaves out the width a pleat folds away): its hinge and turn
+  // nudged, a step that helps kept, halved once.
+  if (bestAfter < before)
+    for (double shift = 0.04 * size, scale = 0.2; shift > 0.015 * size; shift *= 0.5, scale *= 0.5)
+      for (const auto& [at, turn] : {std::pair{bestSolved.at - shift, bestSolved.turn},
+                                     std::pair{bestSolved.at + shift, bestSolved.turn},
+                                     std::pair{bestSolved.at, bestSolved.turn * (1 - scale)},
+                                     std::pair{bestSolved.at, bestSolved.turn * (1 + scale)}}) {
+        if (deadline.passed()) return out;
+        SolvedPleat tried = bestSolved;
+        tried.at = at;
+        tried.turn = turn;
+        if (const double after = trySolved(tried); after < bestAfter) {
+          bestAfter = after;
+          bestSolved = tried;
+        }
+      }
+  if (!out.empty()) return out;
 
   struct Tried {
     glm::dvec3 far{0.0}, direction{0.0};

@@ -16,17 +16,27 @@
 // first fold alone takes the sheet far from the target: a search of single folds, each of which
 // must bring the sheet closer, never finds it (fold_fit.hpp's known limit).
 //
-// Where: the sheet's vertices farthest from the target (SurfaceDistanceQuery), the hinge on the
-// way from the sheet's centre toward one, the end bent toward the target's point nearest it;
-// each pleat made on the real sheet (FoldSession: a sliver is refused as a designer's drag is),
-// scored with FoldFitter::approximateDistance, checked for self-intersection, and taken back.
+// Where (solved, as a corrugation is laid out): the target's height over the sheet, along the
+// sheet's normal, at a spread of its vertices; for each direction in the sheet's plane (8 over a
+// half turn, both ways) and each hinge across it, the turn of the end beyond the hinge that best
+// fits that height in least squares (a rigid turn adds height in proportion to the distance from
+// the hinge, so the fit is linear); the hinges that remove the most squared height made, then the
+// best nudged (hinge and turn) a few times, since the model leaves out the width a pleat folds
+// away. Repeated step by step, the pleats approximate the target's second curvature piecewise.
+// Only where no solved pleat helps, the blind way of before: hinges on the way from the sheet's
+// centre toward its vertices farthest from the target, bends on a grid. Each pleat is made on the
+// real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
+// FoldFitter::approximateDistance, checked for self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
 // would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each
 // a FoldSuggestion of two folds, best first, each bringing the sheet closer. Known limits: the
 // hinge is straight only where the sheet is ruled across it (a swept sheet across its rulings,
-// a flat one); each pleat shortens the sheet by twice its width (1% of the target's diagonal);
-// the angles are tried on a grid, not refined.
+// a flat one); each pleat shortens the sheet by twice its width (0.3% of the target's diagonal,
+// more where the sheet rises across the hinge), and turning a curved end about a straight hinge
+// shears it (its high points move in, its low ones out), which costs Hausdorff distance at the
+// ends; parallel pleats give one direction's curvature, not a twist (a hypar z = xy is fitted along
+// its principal directions, not its rulings).
 #pragma once
 
 #include <cstddef>

@@ -22,6 +22,14 @@ constexpr std::size_t kChoiceSamples = 4000;
 constexpr double kSmoothBendDegrees = 12.0;
 // A fold's creases are a few curves: a target with more of its edge length bent so is a noisy scan.
 constexpr double kNoisySharpShare = 0.2;
+// Or its sharp edges scatter: the plane holding the most holds under this share of them (a
+// folded target's longest crease holds far more; a scan's noise puts a few edges in any plane).
+constexpr double kScatteredCreaseShare = 0.02;
+// Or the plane holding most of its sharp edges has under this share of its edges sharp (a
+// fold's crease is bent all along; noise bends a few edges of a row of a scan's grid).
+constexpr double kNoisyCreaseShare = 0.5;
+// Edges within this much of the diagonal of a plane lie in it (crease_planes.hpp's tolerance).
+constexpr double kCreaseTolerance = 1e-4;
 // A placed sheet replaces one in the catalogue's frame when this much nearer (Chamfer).
 constexpr double kPlacedGain = 0.95;
 // How much a placed sheet's Hausdorff distance counts beside its Chamfer distance.
@@ -105,8 +113,22 @@ bool creasedFor(const TriangleMesh& target, const Sheet& sheet, double floorDegr
   return !findCreasePlanes(target, options).empty();
 }
 
-// The share of the target's edge length bent more than `degrees` between its two triangles.
-double sharpShare(const TriangleMesh& target, double degrees) {
+// The total length of the target's edges between two triangles.
+double edgeLength(const TriangleMesh& target) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> faces;
+  for (const auto& t : target.triangles)
+    for (int k = 0; k < 3; ++k) ++faces[std::minmax(t[k], t[(k + 1) % 3])];
+  double length = 0.0;
+  for (const auto& [edge, count] : faces)
+    if (count >= 2)
+      length += glm::distance(target.positions[edge.first], target.positions[edge.second]);
+  return length;
+}
+
+// The share of the target's edge length bent more than `degrees` between its two triangles, of
+// its edges lying in `plane` when given (within `tolerance`, metres).
+double sharpShare(const TriangleMesh& target, double degrees,
+                  const ReflectionPlane* plane = nullptr, double tolerance = 0.0) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, glm::dvec3> firstNormal;
   const double cosine = std::cos(degrees * std::numbers::pi / 180.0);
   double all = 0.0, sharp = 0.0;
@@ -121,6 +143,9 @@ double sharpShare(const TriangleMesh& target, double degrees) {
       const auto key = std::minmax(u, v);
       const auto [found, added] = firstNormal.emplace(key, normal);
       if (added) continue;
+      if (plane && !(std::abs(plane->signedDistance(target.positions[u])) <= tolerance &&
+                     std::abs(plane->signedDistance(target.positions[v])) <= tolerance))
+        continue;
       const double length = glm::distance(target.positions[u], target.positions[v]);
       all += length;
       if (glm::dot(found->second, normal) < cosine) sharp += length;
@@ -132,12 +157,22 @@ double sharpShare(const TriangleMesh& target, double degrees) {
 }  // namespace
 
 bool isSmoothOrScanned(const TriangleMesh& target) {
-  try {
-    if (!creasedFor(target, makeSurface("square"), kSmoothBendDegrees)) return true;
-  } catch (const SurfaceError&) {
-    return true;
-  }
-  return sharpShare(target, kSmoothBendDegrees) > kNoisySharpShare;
+  CreasePlaneOptions options;
+  options.minDihedralDegrees = kSmoothBendDegrees;
+  options.minSupport = 0.03 * boundingDiagonal(target);
+  options.maxPlanes = 1;
+  options.hypotheses = 200;
+  const std::vector<CreasePlane> planes = findCreasePlanes(target, options);
+  if (planes.empty()) return true;
+  // A fold's crease holds a good share of the sharp edges, and along it every edge is bent.
+  // Noise scatters sharp edges, a few per plane, and where it bends some edges of a row of a
+  // depth scan's grid (a plane of edges), most edges of that row are not bent.
+  const double sharp = sharpShare(target, kSmoothBendDegrees);
+  const double tolerance = kCreaseTolerance * boundingDiagonal(target);
+  return sharp > kNoisySharpShare ||
+         planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
+         sharpShare(target, kSmoothBendDegrees, &planes.front().plane, tolerance) <
+             kNoisyCreaseShare;
 }
 
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
@@ -155,9 +190,14 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     }
     return creased[surface] = result;
   };
+  // A smooth target's grid bends are no creases, though a flat sheet's threshold reads them so.
+  const bool smooth = isSmoothOrScanned(target);
   for (StartChoice& candidate : candidatesFor(target, kind)) {
     // A folded design was folded from the sheet as the catalogue makes it.
-    if (creasedKind(candidate.surface)) candidate.parameters.clear();
+    if (!smooth && creasedKind(candidate.surface)) {
+      candidate.parameters.clear();
+      candidate.creased = true;
+    }
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
       candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
@@ -170,7 +210,6 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   }
   // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
   // target was folded from the catalogue's sheet where it lies).
-  const bool smooth = isSmoothOrScanned(target);
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest;
   double nearestChamfer = 0.0, nearestScore = 0.0;
@@ -191,6 +230,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     best.parameters = nearest->parameters;
     best.chamfer = nearestChamfer;
     best.placement = nearest->placement;
+    best.creased = false;
     best.placed = std::move(nearest->sheet);
     any = true;
   }

@@ -43,6 +43,9 @@ struct StartChoice {
   // it starts closer than every sheet in the catalogue's frame.
   std::optional<Sheet> placed;
   std::string placement;  // how, for the user
+  // The target has creases this kind's sheet would not have (a fold's): the kind keeps its
+  // defaults. Unset where the defaults were simply nearest.
+  bool creased = false;
 };
 
 // `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError
@@ -51,7 +54,9 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = ""
 
 // Whether the target is a shape no reflection design reaches exactly: smooth (no plane of edges
 // bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
-// the few curves a fold makes). A target folded from a catalogue sheet is neither. Such a target
+// the few curves a fold makes: over a fifth of its edge length sharp, or the plane holding most
+// sharp edges holds under 2% of them, or under half of the edges in that plane are sharp, as in a
+// row of a depth scan's grid). A target folded from a catalogue sheet is neither. Such a target
 // gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp).
 bool isSmoothOrScanned(const TriangleMesh& target);
 
