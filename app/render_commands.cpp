@@ -17,7 +17,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands.hpp"
-#include "app/interaction_scene.hpp"
+#include "app/desktop/interaction_scene.hpp"
 #include "app/printed_cover.hpp"
 #include "app/studio_replay.hpp"
 #include "engine/fit/fold_fit.hpp"

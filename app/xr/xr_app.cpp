@@ -5,8 +5,8 @@
 #include <iostream>
 #include <thread>
 
+#include "app/desktop/interaction_scene.hpp"
 #include "app/headset_studio.hpp"
-#include "app/interaction_scene.hpp"
 #include "app/recent_designs.hpp"
 #include "app/studio_target.hpp"
 #include "app/xr/panel_texture.hpp"

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "app/desktop/interaction_scene.hpp"
 #include "app/document.hpp"
-#include "app/interaction_scene.hpp"
 #include "app/session_outputs.hpp"
 #include "app/studio_panel.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"

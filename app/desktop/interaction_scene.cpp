@@ -1,4 +1,4 @@
-#include "app/interaction_scene.hpp"
+#include "app/desktop/interaction_scene.hpp"
 
 #include <algorithm>
 
