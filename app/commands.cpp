@@ -1,7 +1,7 @@
 #include "app/commands.hpp"
-#include "app/design_check.hpp"
-#include "app/document.hpp"
-#include "app/printed_cover.hpp"
+#include "app/session/design_check.hpp"
+#include "app/session/document.hpp"
+#include "app/session/printed_cover.hpp"
 
 #include <cmath>
 #include <cstdio>

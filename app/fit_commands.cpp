@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/document.hpp"
 #include "app/interrupt_guard.hpp"
+#include "app/session/document.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"

@@ -18,7 +18,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
 #include "interaction/live_simulation.hpp"

@@ -15,7 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/commands.hpp"
-#include "app/printed_cover.hpp"
+#include "app/session/printed_cover.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern.hpp"
 #include "engine/io/crease_pattern_reader.hpp"

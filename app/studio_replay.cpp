@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/document.hpp"
 #include "app/headset_studio.hpp"
+#include "app/session/document.hpp"
 
 namespace curvefold::studio {
 

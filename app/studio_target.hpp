@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/suggestion_worker.hpp"
 #include "engine/fit/surface_distance.hpp"

@@ -20,7 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "app/studio_target.hpp"
 #include "tests/support/random_fold_target.hpp"
 

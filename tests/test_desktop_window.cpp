@@ -15,7 +15,7 @@
 #include <imgui.h>
 
 #include "app/desktop/desktop_input.hpp"
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "app/studio_panel.hpp"
 #include "desktop_test_support.hpp"
 #include "engine/io/design_document.hpp"

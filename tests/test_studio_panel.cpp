@@ -23,9 +23,9 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
-#include "app/document.hpp"
 #include "app/file_picker.hpp"
 #include "app/headset_studio.hpp"
+#include "app/session/document.hpp"
 #include "app/studio_panel.hpp"
 #include "app/studio_target.hpp"
 #include "engine/io/design_document.hpp"

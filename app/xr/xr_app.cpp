@@ -7,7 +7,7 @@
 
 #include "app/desktop/interaction_scene.hpp"
 #include "app/headset_studio.hpp"
-#include "app/recent_designs.hpp"
+#include "app/session/recent_designs.hpp"
 #include "app/studio_target.hpp"
 #include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"

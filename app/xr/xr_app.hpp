@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "app/desktop/interaction_scene.hpp"
-#include "app/document.hpp"
-#include "app/session_outputs.hpp"
+#include "app/session/document.hpp"
+#include "app/session/session_outputs.hpp"
 #include "app/studio_panel.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/render/scene.hpp"

@@ -1,4 +1,4 @@
-#include "app/session_outputs.hpp"
+#include "app/session/session_outputs.hpp"
 
 #include "engine/io/output_set.hpp"
 
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "app/state_folder.hpp"
+#include "app/session/state_folder.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "sim_input/recorder.hpp"
 

@@ -1,10 +1,10 @@
-#include "app/printed_cover.hpp"
+#include "app/session/printed_cover.hpp"
 
 #include <ctime>
 #include <exception>
 #include <new>
 
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/vulkan_context.hpp"

@@ -1,4 +1,4 @@
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 
 #include <cstring>
 #include <filesystem>

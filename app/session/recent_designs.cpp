@@ -1,6 +1,6 @@
-#include "app/recent_designs.hpp"
+#include "app/session/recent_designs.hpp"
 
-#include "app/state_folder.hpp"
+#include "app/session/state_folder.hpp"
 
 #include <cstdlib>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "app/state_folder.hpp"
+#include "app/session/state_folder.hpp"
 
 #include <cstdlib>
 

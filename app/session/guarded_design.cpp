@@ -1,8 +1,8 @@
-#include "app/guarded_design.hpp"
+#include "app/session/guarded_design.hpp"
 
 #include <stdexcept>
 
-#include "app/design_check.hpp"
+#include "app/session/design_check.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 

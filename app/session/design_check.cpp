@@ -1,9 +1,9 @@
-#include "app/design_check.hpp"
+#include "app/session/design_check.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "app/document.hpp"
+#include "app/session/document.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/self_intersection.hpp"
