@@ -19,7 +19,7 @@
 #include "app/commands.hpp"
 #include "app/desktop/interaction_scene.hpp"
 #include "app/session/printed_cover.hpp"
-#include "app/studio_replay.hpp"
+#include "app/studio/studio_replay.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"

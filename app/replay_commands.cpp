@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/studio_replay.hpp"
+#include "app/studio/studio_replay.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"

@@ -21,7 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include "app/session/document.hpp"
-#include "app/studio_target.hpp"
+#include "app/studio/studio_target.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {

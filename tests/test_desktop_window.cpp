@@ -16,7 +16,7 @@
 
 #include "app/desktop/desktop_input.hpp"
 #include "app/session/document.hpp"
-#include "app/studio_panel.hpp"
+#include "app/studio/studio_panel.hpp"
 #include "desktop_test_support.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/surfaces/surfaces.hpp"

@@ -23,11 +23,11 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
-#include "app/file_picker.hpp"
-#include "app/headset_studio.hpp"
 #include "app/session/document.hpp"
-#include "app/studio_panel.hpp"
-#include "app/studio_target.hpp"
+#include "app/studio/file_picker.hpp"
+#include "app/studio/headset_studio.hpp"
+#include "app/studio/studio_panel.hpp"
+#include "app/studio/studio_target.hpp"
 #include "engine/io/design_document.hpp"
 
 namespace curvefold::studio {

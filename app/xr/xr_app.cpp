@@ -6,9 +6,9 @@
 #include <thread>
 
 #include "app/desktop/interaction_scene.hpp"
-#include "app/headset_studio.hpp"
 #include "app/session/recent_designs.hpp"
-#include "app/studio_target.hpp"
+#include "app/studio/headset_studio.hpp"
+#include "app/studio/studio_target.hpp"
 #include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"

@@ -1,4 +1,4 @@
-#include "app/file_picker.hpp"
+#include "app/studio/file_picker.hpp"
 
 #include <fcntl.h>
 #include <poll.h>

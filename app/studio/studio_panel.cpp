@@ -1,4 +1,4 @@
-#include "app/studio_panel.hpp"
+#include "app/studio/studio_panel.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

@@ -1,11 +1,11 @@
-#include "app/headset_studio.hpp"
+#include "app/studio/headset_studio.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "app/imgui_context_scope.hpp"
+#include "app/studio/imgui_context_scope.hpp"
 
 namespace curvefold::studio {
 

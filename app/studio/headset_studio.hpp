@@ -1,9 +1,9 @@
-// The studio in the headset (issue 14): the studio panel (app/studio_panel.hpp) on a card held
-// by the non-dominant hand and worked by the dominant hand's aim ray, the trigger as its button
-// and the thumbstick as its wheel; the panel button (Button::Panel) shows and hides it, and it is
-// shown at start. Each input frame goes to the panel first, then to the interaction core, which
-// then gets the buttons the panel pressed (undo, redo, ...) and is told whether the point hand is
-// on the panel (so the tip does not grab through it).
+// The studio in the headset (issue 14): the studio panel (app/studio/studio_panel.hpp) on a card
+// held by the non-dominant hand and worked by the dominant hand's aim ray, the trigger as its
+// button and the thumbstick as its wheel; the panel button (Button::Panel) shows and hides it, and
+// it is shown at start. Each input frame goes to the panel first, then to the interaction core,
+// which then gets the buttons the panel pressed (undo, redo, ...) and is told whether the point
+// hand is on the panel (so the tip does not grab through it).
 //
 // The studio runs the same with or without drawing: the headset draws its draw data into a
 // texture, while a replay or a gesture script only runs it. Since the panel's actions come from
@@ -19,8 +19,8 @@
 #include <glm/vec2.hpp>
 
 #include "app/session/document.hpp"
-#include "app/studio_panel.hpp"
-#include "app/studio_target.hpp"
+#include "app/studio/studio_panel.hpp"
+#include "app/studio/studio_target.hpp"
 #include "interaction/live_simulation.hpp"
 #include "interaction/panel_pointer.hpp"
 

@@ -1,4 +1,4 @@
-#include "app/studio_target.hpp"
+#include "app/studio/studio_target.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "app/file_picker.hpp"
+#include "app/studio/file_picker.hpp"
 
 namespace curvefold::studio {
 

@@ -1,4 +1,4 @@
-#include "app/studio_replay.hpp"
+#include "app/studio/studio_replay.hpp"
 
 #include <functional>
 #include <memory>
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/headset_studio.hpp"
 #include "app/session/document.hpp"
+#include "app/studio/headset_studio.hpp"
 
 namespace curvefold::studio {
 

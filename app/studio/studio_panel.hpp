@@ -18,8 +18,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/file_picker.hpp"
 #include "app/session/document.hpp"
+#include "app/studio/file_picker.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "interaction/input_frame.hpp"
 
