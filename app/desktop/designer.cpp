@@ -1,5 +1,5 @@
-// The desktop designer window (docs/design.md 5 and 7; the command is design_command.cpp). A GLFW
-// window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
+// The desktop designer window (docs/design.md 5 and 7; the command is app/cli/design_command.cpp).
+// A GLFW window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
 // feeding the one InteractionCore; recorded with --record, autosaved after every committed fold.
 // GLFW declares glfwCreateWindowSurface only with Vulkan's header.
 #define GLFW_INCLUDE_VULKAN
@@ -19,7 +19,7 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/desktop/designer.hpp"
 #include "app/desktop/desktop_input.hpp"
 #include "app/desktop/interaction_scene.hpp"

@@ -1,5 +1,5 @@
 // The desktop designer window (docs/design.md 5 and 7): what `curvefold design` and plain
-// `curvefold` open. The command's options are read in design_command.cpp; the window is
+// `curvefold` open. The command's options are read in app/cli/design_command.cpp; the window is
 // designer.cpp.
 #pragma once
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/studio/studio_replay.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/atomic_file.hpp"

@@ -1,4 +1,4 @@
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/session/design_check.hpp"
 #include "app/session/document.hpp"
 #include "app/session/printed_cover.hpp"

@@ -2,7 +2,7 @@
 // DesignerOptions for the window (designer.cpp).
 #include <memory>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/desktop/designer.hpp"
 
 namespace curvefold::cli {

@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/commands.hpp"
-#include "app/interrupt_guard.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/interrupt_guard.hpp"
 #include "app/session/document.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"

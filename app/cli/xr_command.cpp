@@ -5,8 +5,8 @@
 #include <iostream>
 #include <memory>
 
-#include "app/commands.hpp"
-#include "app/interrupt_guard.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/interrupt_guard.hpp"
 #include "app/xr/xr_app.hpp"
 #include "interaction/xr/xr_check.hpp"
 

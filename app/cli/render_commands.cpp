@@ -16,7 +16,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/desktop/interaction_scene.hpp"
 #include "app/session/printed_cover.hpp"
 #include "app/studio/studio_replay.hpp"

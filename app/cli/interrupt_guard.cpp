@@ -1,4 +1,4 @@
-#include "app/interrupt_guard.hpp"
+#include "app/cli/interrupt_guard.hpp"
 
 namespace curvefold::cli {
 

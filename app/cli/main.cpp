@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "engine/text/excerpt.hpp"
 
 namespace {

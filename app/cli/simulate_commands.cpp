@@ -14,7 +14,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/commands.hpp"
+#include "app/cli/commands.hpp"
 #include "app/session/printed_cover.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern.hpp"
