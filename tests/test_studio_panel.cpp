@@ -24,10 +24,10 @@
 #include <imgui.h>
 
 #include "app/session/document.hpp"
-#include "app/studio/file_picker.hpp"
 #include "app/studio/headset_studio.hpp"
 #include "app/studio/studio_panel.hpp"
 #include "app/studio/studio_target.hpp"
+#include "app/studio/zenity_picker.hpp"
 #include "engine/io/design_document.hpp"
 
 namespace curvefold::studio {

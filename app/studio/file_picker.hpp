@@ -2,7 +2,8 @@
 // portal's FileChooser when the session bus has one (GNOME, KDE and the others draw their own
 // dialog, sandboxes included), else zenity when it is on PATH. The dialog is waited on by a worker
 // thread, so frames go on while it is open. Without either the panel keeps its path fields only
-// (the headset never has one).
+// (the headset never has one). This is the base both pickers share (the worker, its cancel pipe,
+// the result); each picker is its own pair: zenity_picker.hpp, portal_picker.hpp.
 #pragma once
 
 #include <functional>
@@ -17,7 +18,8 @@ namespace curvefold::studio {
 class FilePicker {
  public:
   // The desktop's picker: the portal when a session bus names one, else zenity found on PATH;
-  // null when there is neither.
+  // null when there is neither. Defined beside the portal (portal_picker.cpp, curvefold_panel):
+  // only what links GDBus may choose it, so curvefold_studio stays free of GLib.
   static std::unique_ptr<FilePicker> find();
 
   // Ends a dialog still open (the window is closing): never waits for a person.
@@ -52,35 +54,6 @@ class FilePicker {
   int cancel_[2] = {-1, -1};  // written to end the dialog
   std::mutex mutex_;
   std::optional<Picked> done_;  // set by the worker, under mutex_
-};
-
-// zenity's --file-selection, run as a child process in its own process group.
-class ZenityPicker : public FilePicker {
- public:
-  // zenity's full path when it is on PATH, or empty.
-  static std::string find();
-  explicit ZenityPicker(std::string program) : program_(std::move(program)) {}
-  void start(bool save, const std::string& current) override;
-  std::string name() const override { return "zenity"; }
-
- private:
-  std::string program_;
-};
-
-// org.freedesktop.portal.FileChooser over D-Bus (GLib's GDBus), on a connection of the worker's
-// own: OpenFile or SaveFile, then the Request's Response signal; a closing window closes the
-// request, which ends the dialog.
-class PortalPicker : public FilePicker {
- public:
-  // The session bus's address when the portal is on it (running or activatable), or empty. Never
-  // starts a bus: a session without DBUS_SESSION_BUS_ADDRESS or $XDG_RUNTIME_DIR/bus has none.
-  static std::string find();
-  explicit PortalPicker(std::string busAddress) : address_(std::move(busAddress)) {}
-  void start(bool save, const std::string& current) override;
-  std::string name() const override { return "the desktop portal"; }
-
- private:
-  std::string address_;
 };
 
 }  // namespace curvefold::studio

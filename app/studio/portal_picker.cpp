@@ -13,7 +13,8 @@
 #include <memory>
 #include <string>
 
-#include "app/studio/file_picker.hpp"
+#include "app/studio/portal_picker.hpp"
+#include "app/studio/zenity_picker.hpp"
 
 namespace curvefold::studio {
 
