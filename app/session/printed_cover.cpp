@@ -1,31 +1,14 @@
 #include "app/session/printed_cover.hpp"
 
-#include <ctime>
 #include <exception>
 #include <new>
 
-#include "app/session/document.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/vulkan_context.hpp"
 #include "engine/render/vulkan_error.hpp"
 
 namespace curvefold::session {
-
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char text[16];
-  std::strftime(text, sizeof text, "%Y-%m-%d", &local);
-  return text;
-}
-
-std::vector<std::string> coverFacts(const Design& design) {
-  return {
-      "surface: " + surfaceName(design) + (design.symmetry.empty() ? "" : ", " + design.symmetry),
-      "folds: " + std::to_string(design.folds.size()), "date: " + today()};
-}
 
 std::optional<PdfPicture> renderFoldedForm(const Sheet& sheet, std::string& problem) {
   try {

@@ -1,13 +1,13 @@
 // A design's printed cover (the first page of `writeCreasePatternPdf`), the same from every
 // front end that prints one: the command line's `export --pdf` and the Python module's
-// Design.export(pdf=...) (issue 41, 3): the facts (surface and symmetry, folds, today's date) and
-// the folded form in the iso view, rendered headless (Vulkan).
+// Design.export(pdf=...) (issue 41, 3): the facts (cover_facts.hpp: surface and symmetry, folds,
+// today's date) and the folded form in the iso view, rendered headless (Vulkan).
 #pragma once
 
 #include <optional>
 #include <string>
-#include <vector>
 
+#include "app/session/cover_facts.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/io/design_document.hpp"
@@ -17,12 +17,6 @@ class VulkanContext;
 }
 
 namespace curvefold::session {
-
-// The local date, YYYY-MM-DD, for a printed page.
-std::string today();
-
-// What the cover says of a design: "surface: NAME[, SYMMETRY]", "folds: N", "date: YYYY-MM-DD".
-std::vector<std::string> coverFacts(const Design& design);
 
 // The folded form, iso view, 1200x800, for the cover; nothing when it cannot be rendered (no
 // Vulkan device, out of memory), and why in `problem` (the front end words it).

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <utility>
 
+#include "app/session/cover_facts.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/design_document.hpp"
@@ -437,9 +438,7 @@ void StudioPanel::drawExports(session::Document& doc, const StudioActions& actio
     const Design design = doc.design();
     PdfOptions print;
     print.title = std::filesystem::path(base).filename().string();
-    print.facts = {"surface: " + session::surfaceName(design) +
-                       (design.symmetry.empty() ? "" : ", " + design.symmetry),
-                   "folds: " + std::to_string(design.folds.size())};
+    print.facts = session::coverFacts(design);  // the command line's, with the date
     exportAs(".pdf", [&](const std::string& to) {
       if (actions.foldedForm) print.picture = actions.foldedForm();
       writeCreasePatternPdf(fixed, to, print);
