@@ -105,6 +105,16 @@ void requireDecimalNumbers(CLI::App& app) {
     }
 }
 
+void requireAnOutput(const std::string& command,
+                     std::initializer_list<const CLI::Option*> outputs) {
+  std::string names;
+  for (const CLI::Option* output : outputs) {
+    if (output->count() > 0) return;
+    names += (names.empty() ? "" : ", ") + output->get_name();
+  }
+  throw UsageError(command + ": name at least one of " + names);
+}
+
 std::ostream& statusFor(std::initializer_list<std::string_view> outputs) {
   for (std::string_view output : outputs)
     if (output == "-") return std::cerr;
@@ -338,11 +348,7 @@ void addExportCommand(CLI::App& app) {
   CLI::Option* obj = command->add_option("--obj", options->obj, "OBJ with the development as vt");
   CLI::Option* gltf = command->add_option("--gltf", options->gltf, "glTF 2.0 binary (.glb)");
   command->callback([options, fold, svg, cutSvg, pdf, obj, gltf] {
-    if (fold->count() + svg->count() + cutSvg->count() + pdf->count() + obj->count() +
-            gltf->count() ==
-        0)
-      throw UsageError(
-          "export: name at least one of --fold, --svg, --cut-svg, --pdf, --obj, --gltf");
+    requireAnOutput("export", {fold, svg, cutSvg, pdf, obj, gltf});
     std::optional<Perforation> perforation;
     if (!options->perforate.empty()) {
       Perforation p;

@@ -37,6 +37,10 @@ class ExitStatus : public std::runtime_error {
   int status;
 };
 
+// Refuses a command that names none of `outputs` (its output options):
+// "COMMAND: name at least one of --a, --b, ..." in the order given.
+void requireAnOutput(const std::string& command, std::initializer_list<const CLI::Option*> outputs);
+
 // Where a command's "wrote ..." line goes: standard error when one of its outputs is standard
 // output ("-"), so that what is piped is the file alone; else standard output.
 std::ostream& statusFor(std::initializer_list<std::string_view> outputs);

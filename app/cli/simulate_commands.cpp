@@ -302,11 +302,7 @@ void addSimulateCommand(CLI::App& app) {
         colorOption->count() ? parseStateColor(options->color) : StateColor::None;
     if (color != StateColor::None && png->count() + frames->count() == 0)
       throw UsageError("--color: colours a picture; name --png or --frames too");
-    if (obj->count() + fold->count() + gltf->count() + png->count() + frames->count() +
-            gif->count() ==
-        0)
-      throw UsageError(
-          "simulate: name at least one of --obj, --fold, --gltf, --png, --frames, --gif");
+    requireAnOutput("simulate", {obj, fold, gltf, png, frames, gif});
     if (gif->count() && percents.size() < 2)
       throw UsageError("--gif: an animation needs a sequence of states, --percent FROM:TO:N; got " +
                        quotedExcerpt(options->percent));
