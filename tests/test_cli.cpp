@@ -279,6 +279,15 @@ TEST_F(Cli, BadDesignerOptionsAreRefusedBeforeAWindowOpens) {
   const std::string a = " --autosave " + autosave.string();
   expectFailure("design square --msaa 3" + a, "--msaa", autosave);
   expectFailure("design square --msaa four" + a, "--msaa", autosave);
+  // Worded by the command, not the window (issue 41, 1: the desktop names no option).
+  expectFailure("design square --size 10x10" + a,
+                "error: --size: expected WxH from 64 to 8192, got \"10x10\"\n", autosave);
+  expectFailure("design --resume" + a,
+                "error: --resume: no autosave at " + autosave.string() + "\n", autosave);
+  const CommandResult noDisplay = run("design square" + a, "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(noDisplay.err,
+            "curvefold: error: no display for the designer window; use `curvefold replay` or "
+            "`curvefold render` instead\n");
 }
 
 TEST_F(Cli, BadPointsAreRefused) {
