@@ -20,7 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/interaction_scene.hpp"
+#include "app/desktop/interaction_scene.hpp"
 #include "engine/geometry/development_overlap.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/self_intersection.hpp"

@@ -18,7 +18,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/interaction_scene.hpp"
+#include "app/desktop/interaction_scene.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"

@@ -20,8 +20,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/document.hpp"
-#include "app/studio_target.hpp"
+#include "app/session/document.hpp"
+#include "app/studio/studio_target.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {

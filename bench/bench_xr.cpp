@@ -18,7 +18,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "app/headset_studio.hpp"
+#include "app/studio/headset_studio.hpp"
 #include "app/xr/xr_app.hpp"
 #include "bench/dragging_session.hpp"
 #include "sim_input/recording.hpp"

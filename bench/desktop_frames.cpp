@@ -27,8 +27,8 @@
 
 #include <imgui.h>
 
-#include "app/document.hpp"
-#include "app/studio_panel.hpp"
+#include "app/session/document.hpp"
+#include "app/studio/studio_panel.hpp"
 #include "engine/io/design_document.hpp"
 #include "tests/support/random_fold_target.hpp"
 

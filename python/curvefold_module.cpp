@@ -22,11 +22,11 @@
 #include <string>
 #include <vector>
 
-#include "app/design_check.hpp"
-#include "app/document.hpp"
-#include "app/guarded_design.hpp"
-#include "app/printed_cover.hpp"
-#include "app/studio_replay.hpp"
+#include "app/session/design_check.hpp"
+#include "app/session/document.hpp"
+#include "app/session/guarded_design.hpp"
+#include "app/session/printed_cover.hpp"
+#include "app/studio/studio_replay.hpp"
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"

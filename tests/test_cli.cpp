@@ -113,6 +113,18 @@ TEST_F(Cli, ExportRefusesAnUnknownPaper) {
                 path("c.pdf"));
 }
 
+// A command that writes files, given none to write, names every output it has, in its help's
+// order (one helper words it for export and simulate).
+TEST_F(Cli, ExportAndSimulateGivenNoOutputNameEveryOne) {
+  const std::string design = newDesign("square --size 0.15", "a.curvefold.json");
+  expectFailure("export " + design,
+                "export: name at least one of --fold, --svg, --cut-svg, --pdf, --obj, --gltf\n",
+                path("a.fold"));
+  expectFailure("simulate " + design + " --percent 50",
+                "simulate: name at least one of --obj, --fold, --gltf, --png, --frames, --gif\n",
+                path("a.obj"));
+}
+
 // Issue 31, 1: the PDF's title (its cover's, and the document's) is the design's name, without
 // the file's extension. No Vulkan driver here: the cover goes without its picture.
 TEST_F(Cli, ExportedPdfIsTitledByTheDesignsName) {
@@ -267,6 +279,15 @@ TEST_F(Cli, BadDesignerOptionsAreRefusedBeforeAWindowOpens) {
   const std::string a = " --autosave " + autosave.string();
   expectFailure("design square --msaa 3" + a, "--msaa", autosave);
   expectFailure("design square --msaa four" + a, "--msaa", autosave);
+  // Worded by the command, not the window (issue 41, 1: the desktop names no option).
+  expectFailure("design square --size 10x10" + a,
+                "error: --size: expected WxH from 64 to 8192, got \"10x10\"\n", autosave);
+  expectFailure("design --resume" + a,
+                "error: --resume: no autosave at " + autosave.string() + "\n", autosave);
+  const CommandResult noDisplay = run("design square" + a, "env -u DISPLAY -u WAYLAND_DISPLAY");
+  EXPECT_EQ(noDisplay.err,
+            "curvefold: error: no display for the designer window; use `curvefold replay` or "
+            "`curvefold render` instead\n");
 }
 
 TEST_F(Cli, BadPointsAreRefused) {

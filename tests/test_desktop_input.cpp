@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "app/desktop/desktop_input.hpp"
-#include "app/interaction_scene.hpp"
+#include "app/desktop/interaction_scene.hpp"
 #include "engine/render/color_map.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"

@@ -15,8 +15,8 @@
 #include <imgui.h>
 
 #include "app/desktop/desktop_input.hpp"
-#include "app/document.hpp"
-#include "app/studio_panel.hpp"
+#include "app/session/document.hpp"
+#include "app/studio/studio_panel.hpp"
 #include "desktop_test_support.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/surfaces/surfaces.hpp"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "app/design_check.hpp"
+#include "app/session/design_check.hpp"
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/design_check.hpp"
-#include "app/guarded_design.hpp"
+#include "app/session/design_check.hpp"
+#include "app/session/guarded_design.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/fold_format.hpp"
 

@@ -17,8 +17,8 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
 
-#include "app/headset_studio.hpp"
-#include "app/studio_replay.hpp"
+#include "app/studio/headset_studio.hpp"
+#include "app/studio/studio_replay.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"

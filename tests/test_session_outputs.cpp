@@ -15,9 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "app/document.hpp"
-#include "app/recent_designs.hpp"
-#include "app/session_outputs.hpp"
+#include "app/session/document.hpp"
+#include "app/session/recent_designs.hpp"
+#include "app/session/session_outputs.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "io_test_support.hpp"
 #include "recording_fixtures.hpp"

@@ -12,10 +12,13 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -23,11 +26,12 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
-#include "app/document.hpp"
-#include "app/file_picker.hpp"
-#include "app/headset_studio.hpp"
-#include "app/studio_panel.hpp"
-#include "app/studio_target.hpp"
+#include "app/session/cover_facts.hpp"
+#include "app/session/document.hpp"
+#include "app/studio/headset_studio.hpp"
+#include "app/studio/studio_panel.hpp"
+#include "app/studio/studio_target.hpp"
+#include "app/studio/zenity_picker.hpp"
 #include "engine/io/design_document.hpp"
 
 namespace curvefold::studio {
@@ -305,6 +309,48 @@ TEST_F(StudioPanelTest, ExportsWriteBesideTheExportBaseAndFailuresAreShown) {
   EXPECT_EQ(pictures, 1);
   ASSERT_TRUE(fs::exists(base + ".pdf"));
   EXPECT_GT(fs::file_size(base + ".pdf"), 1000u);
+}
+
+// A PDF's bytes without the creation time Cairo writes into it.
+std::string undated(const std::string& pdf) {
+  static const std::regex kCreationDate(R"(/CreationDate \(D:[0-9Z+'-]*\))");
+  return std::regex_replace(pdf, kCreationDate, "");
+}
+
+// Issue 41: the studio's PDF carries the cover the command line's `export --pdf` and Python's
+// print (session::coverFacts: surface, folds and the date), not a list of its own without the
+// date; the host's picture is the folded form.
+TEST_F(StudioPanelTest, ThePdfCoverHasTheCommandLinesFactsAndTheDate) {
+  const std::string base = (dir_ / "made").string();
+  panel_.setExportBase(base);
+  const PdfPicture picture{2, 2, std::vector<std::uint8_t>(16, 128)};
+  actions_.foldedForm = [&picture]() -> std::optional<PdfPicture> { return picture; };
+  click("PDF");
+  ASSERT_EQ(panel_.message(), "wrote " + base + ".pdf");
+
+  PdfOptions print;  // what `curvefold export made.curvefold.json --pdf` prints
+  print.title = "made";
+  print.facts = session::coverFacts(doc_.design());
+  print.picture = picture;
+  writeCreasePatternPdf(doc_.session->fixed(), (dir_ / "expected.pdf").string(), print);
+  EXPECT_EQ(undated(slurp(base + ".pdf")), undated(slurp(dir_ / "expected.pdf")));
+}
+
+// The cover's facts end with today's local date, read here apart from session::today().
+TEST(StudioCoverFacts, SaySurfaceSymmetryFoldsAndTodaysDate) {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char date[32];
+  std::snprintf(date, sizeof date, "%04d-%02d-%02d", local.tm_year + 1900, local.tm_mon + 1,
+                local.tm_mday);
+  Design design{GeneratedSurface{"cylinder", {}}, {}};
+  design.symmetry = "mirror:x";
+  const std::vector<std::string> facts = session::coverFacts(design);
+  ASSERT_EQ(facts.size(), 3u);
+  EXPECT_EQ(facts[0], "surface: cylinder, mirror:x");
+  EXPECT_EQ(facts[1], "folds: 0");
+  EXPECT_EQ(facts[2], std::string("date: ") + date);
 }
 
 // Issue 29, 3: paths are kept whole (a 512-byte buffer cut a 600-character export path and the

@@ -19,7 +19,7 @@
 #include <stb/stb_image.h>
 #include <nlohmann/json.hpp>
 
-#include "app/studio_replay.hpp"
+#include "app/studio/studio_replay.hpp"
 #include "interaction/xr/xr_check.hpp"
 #include "interaction/xr/xr_input.hpp"
 #include "interaction/xr/xr_program.hpp"

@@ -1,5 +1,5 @@
-// The desktop designer window (docs/design.md 5 and 7; the command is design_command.cpp). A GLFW
-// window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
+// The desktop designer window (docs/design.md 5 and 7; the command is app/cli/design_command.cpp).
+// A GLFW window with a SwapchainTarget, the shared SceneRenderer, an ImGui panel, and DesktopInput
 // feeding the one InteractionCore; recorded with --record, autosaved after every committed fold.
 // GLFW declares glfwCreateWindowSurface only with Vulkan's header.
 #define GLFW_INCLUDE_VULKAN
@@ -19,15 +19,14 @@
 #include <memory>
 #include <string>
 
-#include "app/commands.hpp"
 #include "app/desktop/designer.hpp"
 #include "app/desktop/desktop_input.hpp"
-#include "app/document.hpp"
-#include "app/interaction_scene.hpp"
-#include "app/recent_designs.hpp"
-#include "app/session_outputs.hpp"
-#include "app/studio_panel.hpp"
-#include "app/studio_target.hpp"
+#include "app/desktop/interaction_scene.hpp"
+#include "app/session/document.hpp"
+#include "app/session/recent_designs.hpp"
+#include "app/session/session_outputs.hpp"
+#include "app/studio/studio_panel.hpp"
+#include "app/studio/studio_target.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/design_document.hpp"
@@ -42,8 +41,6 @@
 #include "engine/render/swapchain_target.hpp"
 #include "engine/render/vulkan_objects.hpp"
 #include "engine/surfaces/surfaces.hpp"
-#include "engine/text/decimal.hpp"
-#include "engine/text/excerpt.hpp"
 #include "sim_input/player.hpp"
 
 namespace curvefold::desktop {
@@ -53,8 +50,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kNoDisplay =
-    "no display for the designer window; use `curvefold replay` or `curvefold render` instead";
+constexpr const char* kNoDisplay = "no display for the designer window";
 constexpr const char* kDefaultSurface = "square";
 constexpr const char* kHelp =
     "Left drag: fold (simulating: pull the paper; wheel: depth). Right: orbit, middle: pan, "
@@ -66,9 +62,9 @@ constexpr const char* kHelp =
 struct Glfw {
   Glfw() {
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr)
-      throw cli::NoDisplayError(kNoDisplay);
+      throw NoDisplayError(kNoDisplay);
     glfwSetErrorCallback([](int, const char*) {});  // glfwInit's failure is reported below
-    if (!glfwInit()) throw cli::NoDisplayError(kNoDisplay);
+    if (!glfwInit()) throw NoDisplayError(kNoDisplay);
     if (!glfwVulkanSupported()) {
       glfwTerminate();
       throw std::runtime_error("no Vulkan loader usable with the window system");
@@ -78,7 +74,7 @@ struct Glfw {
   Glfw(unsigned width, unsigned height) : Glfw() {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     window = glfwCreateWindow(int(width), int(height), "curvefold", nullptr, nullptr);
-    if (!window) throw cli::NoDisplayError(kNoDisplay);
+    if (!window) throw NoDisplayError(kNoDisplay);
   }
   ~Glfw() {
     if (window) glfwDestroyWindow(window);
@@ -113,8 +109,7 @@ Start chooseStart(const DesignerOptions& options) {
     start.autosavePath = options.autosave.empty()
                              ? session::defaultAutosave(options.input, start.name)
                              : options.autosave;
-    if (!fs::exists(start.autosavePath))
-      throw cli::UsageError("--resume: no autosave at " + start.autosavePath);
+    if (!fs::exists(start.autosavePath)) throw NoAutosaveError(start.autosavePath);
     start.design = loadDesign(start.autosavePath);
     return start;
   }
@@ -563,10 +558,7 @@ void DesignerWindow::finish() {
 }  // namespace
 
 void runDesigner(const DesignerOptions& options) {
-  unsigned width = 1280, height = 720;
-  if (!readSize(options.size, 64u, 8192u, width, height))
-    throw cli::UsageError("--size: expected WxH from 64 to 8192, got " +
-                          quotedExcerpt(options.size));
+  const unsigned width = options.width, height = options.height;
   const Start start = chooseStart(options);
   session::Document doc =
       session::makeDocument(start.design, options.resume ? start.autosavePath : options.input);

@@ -3,7 +3,7 @@
 #include <imgui.h>
 #include <imgui_impl_vulkan.h>
 
-#include "app/imgui_context_scope.hpp"
+#include "app/studio/imgui_context_scope.hpp"
 #include "engine/render/frames.hpp"
 #include "engine/render/scope_fail.hpp"
 #include "engine/render/vulkan_error.hpp"

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <thread>
 
-#include "app/headset_studio.hpp"
-#include "app/interaction_scene.hpp"
-#include "app/recent_designs.hpp"
-#include "app/studio_target.hpp"
+#include "app/desktop/interaction_scene.hpp"
+#include "app/session/recent_designs.hpp"
+#include "app/studio/headset_studio.hpp"
+#include "app/studio/studio_target.hpp"
 #include "app/xr/panel_texture.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/io/atomic_file.hpp"

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "app/document.hpp"
-#include "app/interaction_scene.hpp"
-#include "app/session_outputs.hpp"
-#include "app/studio_panel.hpp"
+#include "app/desktop/interaction_scene.hpp"
+#include "app/session/document.hpp"
+#include "app/session/session_outputs.hpp"
+#include "app/studio/studio_panel.hpp"
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "engine/render/scene.hpp"
 #include "interaction/input_frame.hpp"

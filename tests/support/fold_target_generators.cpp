@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/design_check.hpp"
+#include "app/session/design_check.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/self_intersection.hpp"

@@ -1,0 +1,438 @@
+// `curvefold fit` and `curvefold distance` (issue 27): folding toward a target shape, and how far
+// two shapes lie apart.
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/commands.hpp"
+#include "app/cli/interrupt_guard.hpp"
+#include "app/session/document.hpp"
+#include "engine/fit/farthest_points.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/start_surface.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/symmetry.hpp"
+#include "engine/io/atomic_file.hpp"
+#include "engine/io/design_document.hpp"
+#include "engine/io/output_set.hpp"
+#include "engine/io/sheet_cache.hpp"
+#include "engine/render/color_legend.hpp"
+#include "engine/render/headless_renderer.hpp"
+#include "engine/render/scene_builder.hpp"
+#include "engine/surfaces/obj_surface.hpp"
+#include "engine/text/distance_text.hpp"
+#include "engine/text/input_path.hpp"
+#include "sim_input/player.hpp"
+
+namespace curvefold::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A seed: a whole number from 0 to 2^64 - 1, digits only.
+std::uint64_t parseSeed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size())
+    throw UsageError("--seed: expected a whole number from 0 to 18446744073709551615, got '" +
+                     text.substr(0, 40) + (text.size() > 40 ? "...'" : "'"));
+  return seed;
+}
+
+// A shape to measure: an OBJ, or a design's folded form.
+TriangleMesh shapeOf(const std::string& path) {
+  if (hasExtension(path, ".obj")) return readObjMesh(path);
+  const Design design = loadDesign(path);
+  return meshOf(buildSheetCached(design, path));
+}
+
+// The design a fit starts from: as given, or (no --from, or a surface name without parameters)
+// the catalogue surface sized to the target (start_surface.hpp); the target's rotational
+// symmetry is printed when --symmetry is not given.
+// A target far from the catalogue's frame or in other units is refused as it would be from the
+// surface's defaults, not sized to.
+Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
+                   const std::string& output, const std::string& targetName) {
+  const TriangleMesh& target = fitter.target();
+  bool parametersGiven = false;
+  for (const auto& [name, value] : from.values)
+    parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
+  const bool isObj = fs::path(from.surface).extension() == ".obj";
+  Design design;
+  if (isObj || parametersGiven) {
+    design = designFromSurfaceOptions(from, command, output);
+  } else {
+    try {
+      // An unknown name is refused as such.
+      fitter.checkAgainst(makeSurface(from.surface.empty() ? "square" : from.surface));
+    } catch (const InvalidTarget& e) {
+      throw UsageError(targetName + ": " + e.what());
+    }
+    const StartChoice start = chooseStart(target, from.surface);
+    if (start.placed)
+      design.surface = *start.placed;  // moved onto the target: embedded as it lies
+    else
+      design.surface = GeneratedSurface{start.surface, start.parameters};
+    std::string text =
+        "from: " +
+        (start.placed && start.surface == "swept_curve" ? "a swept parabola" : start.surface);
+    for (const auto& [name, value] : start.parameters) {
+      char number[32];
+      std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
+      text += number;
+    }
+    std::cout << text
+              << (start.placed    ? " (sized and placed on the target: " + start.placement + ")"
+                  : start.creased ? std::string(" (its defaults: the target has creases)")
+                  : start.parameters.empty()
+                      ? std::string(" (its defaults: nearer the target than one sized to it)")
+                      : std::string(" (sized to the target)"))
+              << std::endl;
+    if (command->get_option("--symmetry")->count() > 0) {
+      try {
+        design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
+      } catch (const InvalidSymmetry& e) {
+        throw UsageError("--symmetry " + session::symmetryProblem(e));
+      }
+    }
+  }
+  // The target's rotation is said, not used: measured (docs/performance.md), a ring of images
+  // per fold has not yet brought a smooth shape closer than single folds in the same time.
+  if (command->get_option("--symmetry")->count() == 0 && !isObj) {
+    const std::string turn = detectRotationalSymmetry(target, initialSheet(design, output));
+    if (!turn.empty())
+      std::cout << "symmetry: the target turns onto itself by " << turn << " (--symmetry " << turn
+                << " folds rings of it)" << std::endl;
+  }
+  return design;
+}
+
+// The picture of `sheet` coloured by each vertex's distance to `reference` (fit and distance
+// --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres.
+void writeDistancePng(HeadlessRenderer& renderer, const Sheet& sheet,
+                      const SurfaceDistanceQuery& reference, const std::string& title,
+                      const std::string& at) {
+  std::vector<double> millimetres = pointDistances(sheet.positions, reference);
+  double largest = 0.0;
+  for (double& d : millimetres) largest = std::max(largest, d *= 1e3);
+  // An exact fit is all dark, not all the map's middle.
+  const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), title, "mm"};
+  writeFieldPng(renderer, sheet, millimetres, legend, at);
+}
+
+// What `fit` is asked for.
+struct FitCommandOptions {
+  std::string target, output, log, png;
+  SurfaceOptions from;
+  std::size_t folds = 6;
+  double seconds = 60.0;
+  std::uint64_t evaluations = 0;
+  std::string seed = "1";
+  bool allowSelfIntersection = false;
+};
+
+// The options of `fit`, read into `options`.
+void addFitOptions(CLI::App* command, FitCommandOptions& options) {
+  command->add_option("TARGET", options.target, "The shape to fold toward: a triangle mesh (.obj)")
+      ->required();
+  command->add_option("--from", options.from.surface,
+                      "The surface to fold: a name (see `surfaces`) or an .obj file; a name "
+                      "without parameters, or none, is sized (and chosen) to the target");
+  addSurfaceOptions(command, options.from);
+  command->add_option("--folds", options.folds, "At most this many folds (each must help)")
+      ->check(CLI::Range(1, 64));
+  command
+      ->add_option("--time", options.seconds,
+                   "End within this many seconds, unfolding and measuring included (default 60, "
+                   "none with --evaluations alone)")
+      ->check(CLI::Range(0.1, 86400.0));
+  command
+      ->add_option("--evaluations", options.evaluations,
+                   "Score at most about this many candidate folds (a budget free of the clock: "
+                   "the same seed gives the same design on any machine)")
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1'000'000'000'000)));
+  command->add_option(
+      "--seed", options.seed,
+      "Seed of the search (with --evaluations, the same seed gives the same folds)");
+  command->add_flag("--allow-self-intersection", options.allowSelfIntersection,
+                    "Let a fold pass the sheet through itself");
+  command->add_option("--log", options.log,
+                      "Per-fold log (JSON lines) with each fold's distance to the target");
+  command->add_option("--png", options.png,
+                      "Picture of the fitted sheet coloured by its distance to the target "
+                      "(headless Vulkan)");
+  command->add_option("-o,--output", options.output, "Design file to write (*.curvefold.json)")
+      ->required();
+}
+
+// The log entry of the group of folds just committed (the fold and its images); `trianglesBefore`
+// is the count before it, and becomes the count after.
+FoldLogEntry logEntryOfLastGroup(const FoldSession& session, const FitProgress& step,
+                                 std::size_t& trianglesBefore) {
+  const std::vector<FoldRecord>& folds = session.folds();
+  std::size_t first = session.foldCount() - 1;
+  while (first > 0 && folds[first].group != 0 && folds[first - 1].group == folds[first].group)
+    --first;
+  const Sheet& sheet = session.fixed();
+  FoldLogEntry entry;
+  entry.time = step.seconds;
+  entry.fold = first + 1;
+  entry.foldCount = session.foldCount();
+  entry.plane = folds[first].plane;
+  entry.trianglesBefore = trianglesBefore;
+  entry.trianglesAfter = trianglesBefore = sheet.triangleCount();
+  entry.maxEdgeLengthError = maxEdgeLengthError(sheet);
+  entry.selfIntersections = findSelfIntersections(sheet).intersections.size();
+  entry.images = session.foldCount() - first - 1;
+  entry.hausdorff = step.hausdorff;
+  entry.chamfer = step.chamfer;
+  entry.targetDiagonal = step.diagonal;
+  return entry;
+}
+
+// What the finished fit says: why it stopped, what it wrote, and where a fit that does not reach
+// its target is farthest from it.
+void printFitSummary(const FitCommandOptions& options, const FitResult& result,
+                     const Design& design, const FoldSession& session, const FoldFitter& fitter,
+                     bool interrupted, bool timed, std::chrono::steady_clock::time_point started) {
+  const FitProgress& last = result.steps.back();
+  std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
+            << " candidate folds scored\n";
+  if (result.droppedSamples > 0)
+    std::cout << "note: " << result.droppedSamples
+              << " sheet samples fell outside the sheet's development (rounding: its coordinates "
+                 "are large for its size) and were left out of the search\n";
+  if (result.timedOut)
+    std::cout << "the time limit cut the search short: another run may find other folds (give "
+                 "--evaluations to repeat a fit exactly)\n";
+  if (interrupted)
+    std::cout << "interrupted: wrote the best design found so far to " << options.output << " ("
+              << result.steps.size() - 1 << " folds)\n";
+  std::cout << "wrote " << options.output << " (" << result.steps.size() - 1 << " folds"
+            << (design.folds.size() > result.steps.size() - 1
+                    ? ", " + std::to_string(design.folds.size()) + " with images"
+                    : "")
+            << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+  if (!options.log.empty()) std::cout << "wrote " << options.log << "\n";
+  if (!options.png.empty()) std::cout << "wrote " << options.png << "\n";
+  // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
+  // Within --time too: only when what is left exceeds what the start took to read and measure
+  // (more than this lighter measure costs); an interrupted fit says nothing more.
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const bool timeForFarthest = !timed || elapsed + result.steps.front().seconds < options.seconds;
+  if (last.hausdorff > 1e-3 * last.diagonal && !interrupted && timeForFarthest) {
+    const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter.target(), 5000);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
+                  "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
+                  far.onA.x, far.onA.y, far.onA.z, millimetresText(far.fromA).c_str(), far.onB.x,
+                  far.onB.y, far.onB.z, millimetresText(far.fromB).c_str());
+    std::cout << text;
+  }
+  std::cout.flush();
+}
+
+// The fitter of the target, with the search's seed; a target it refuses is a usage error.
+std::unique_ptr<FoldFitter> makeFitter(const FitCommandOptions& options) {
+  FitSettings settings;
+  settings.seed = parseSeed(options.seed);
+  settings.allowSelfIntersection = options.allowSelfIntersection;
+  try {
+    return std::make_unique<FoldFitter>(readObjMesh(options.target), settings);
+  } catch (const InvalidTarget& e) {
+    throw UsageError(options.target + ": " + e.what());
+  }
+}
+
+// The search's progress at each depth.
+void printSearching(std::size_t depth, double distance, double seconds) {
+  char text[96];
+  std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
+                millimetresText(distance).c_str(), seconds);
+  std::cout << text << std::endl;
+}
+
+// The log's last line: how the fit ended (a line of its own kind, after the folds').
+nlohmann::json fitEndLine(const FitResult& result, bool interrupted,
+                          std::chrono::steady_clock::time_point started) {
+  return {{"event", "fit_end"},
+          {"stop", result.stopReason},
+          {"folds", result.steps.size() - 1},
+          {"evaluations", result.evaluations},
+          {"dropped_samples", result.droppedSamples},
+          {"timed_out", result.timedOut},
+          {"out_of_evaluations", result.outOfEvaluations},
+          {"interrupted", interrupted},
+          {"seconds",
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()}};
+}
+
+// `fit` as asked: the search, then its outputs all or none, and what it found.
+void runFit(const FitCommandOptions& options, const CLI::App* command) {
+  // The time limit counts from here: reading the target and measuring are part of it.
+  const auto started = std::chrono::steady_clock::now();
+  // Ctrl+C or SIGTERM stops the search; the best design found is still written (below).
+  const InterruptGuard interrupt;
+  // Everything that can be refused is refused before the search (a NaN passes a range check).
+  if (!(options.seconds >= 0.1 && options.seconds <= 86400.0))
+    throw UsageError("--time: expected seconds from 0.1 to 86400, got " +
+                     std::to_string(options.seconds));
+  if (command->count("--png") > 0 && options.png.empty())
+    throw UsageError("--png: needs a file name");
+  refuseOutputsOverInputs({options.output, options.log, options.png},
+                          {{options.target, "the target"},
+                           {hasExtension(options.from.surface, ".obj") ? options.from.surface : "",
+                            "the surface read (--from)"}});
+  const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
+  Design design = startDesign(options.from, command, *fitter, options.output, options.target);
+  const Sheet initial = initialSheet(design, options.output);
+  FoldSession session(initial);
+  if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
+  try {
+    fitter->checkAgainst(initial);
+  } catch (const InvalidTarget& e) {
+    throw UsageError(options.target + ": " + e.what());
+  }
+
+  std::vector<FoldLogEntry> log;
+  std::size_t trianglesBefore = initial.triangleCount();
+  FitOptions fit;
+  fit.maxFolds = options.folds;
+  // --evaluations alone: no clock, so nothing depends on the machine's speed.
+  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
+  fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
+  fit.started = started;
+  fit.maxEvaluations = options.evaluations;
+  fit.cancelled = &InterruptGuard::flag();
+  fit.progress = [&](const FitProgress& step) {
+    if (step.fold == 0) {
+      std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+                << " of the target's " << step.diagonal << " m diagonal" << std::endl;
+      return;
+    }
+    const FoldLogEntry entry = logEntryOfLastGroup(session, step, trianglesBefore);
+    log.push_back(entry);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
+    std::cout << "fold " << step.fold
+              << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
+              << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
+              << std::endl;
+  };
+  fit.searching = printSearching;
+  // The outputs, checked before the search: a path that cannot be written fails now.
+  nlohmann::json fitEnd;
+  OutputSet outputs;
+  outputs.add(options.output, [&](const fs::path& at) { saveDesign(design, at); });
+  if (!options.log.empty())
+    outputs.add(options.log, [&](const fs::path& at) {
+      std::string text;
+      for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
+      text += fitEnd.dump() + "\n";
+      writeFileAtomically(at, text);
+    });
+  // The renderer before the search: a machine without Vulkan fails before any work.
+  std::unique_ptr<HeadlessRenderer> renderer;
+  if (!options.png.empty()) {
+    renderer = makePictureRenderer();
+    outputs.add(options.png, [&](const fs::path& at) {
+      const SurfaceDistanceQuery target(fitter->target(), "target");
+      writeDistancePng(*renderer, session.fixed(), target, "distance to the target", at);
+    });
+  }
+  outputs.checkWritable();
+  const FitResult result = fitFolds(session, *fitter, fit);
+  design.folds = result.folds;
+  const bool interrupted = InterruptGuard::flag().load();
+  fitEnd = fitEndLine(result, interrupted, started);
+
+  outputs.write();
+  printFitSummary(options, result, design, session, *fitter, interrupted, timed, started);
+  if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
+}
+
+}  // namespace
+
+void addFitCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "fit", "Find reflection folds that bring a surface close to a target shape (an OBJ)");
+  auto options = std::make_shared<FitCommandOptions>();
+  addFitOptions(command, *options);
+  command->callback([options, command] { runFit(*options, command); });
+}
+
+void addDistanceCommand(CLI::App& app) {
+  CLI::App* command = app.add_subcommand(
+      "distance",
+      "How far two shapes (designs or OBJs) lie apart: Hausdorff and Chamfer distances");
+  struct Options {
+    std::string a, b, png;
+    std::size_t samples = kDefaultDistanceSamples;
+    std::string seed = "1";
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("A", options->a, "A design (*.curvefold.json, its folded form) or an .obj")
+      ->required();
+  command->add_option("B", options->b, "The reference shape (a target): a design or an .obj")
+      ->required();
+  command->add_option("--samples", options->samples, "Area-uniform samples on each surface")
+      ->check(CLI::Range(100, 10'000'000));
+  command->add_option("--seed", options->seed, "Seed of the samples");
+  command->add_option("--png", options->png,
+                      "Picture of A coloured by its distance to B (headless Vulkan)");
+  command->callback([options, command] {
+    parseSeed(options->seed);  // refused before the shapes are read
+    if (command->count("--png") > 0 && options->png.empty())
+      throw UsageError("--png: needs a file name");
+    refuseOutputsOverInputs({options->png}, {{options->a, "A"}, {options->b, "B"}});
+    // A machine without Vulkan fails before any work.
+    const std::unique_ptr<HeadlessRenderer> renderer =
+        options->png.empty() ? nullptr : makePictureRenderer();
+    const TriangleMesh a = shapeOf(options->a);
+    const TriangleMesh b = shapeOf(options->b);
+    OutputSet outputs;
+    if (renderer) {
+      outputs.add(options->png, [&](const fs::path& at) {
+        const Sheet sheet = hasExtension(options->a, ".obj")
+                                ? meshSheet(a)
+                                : buildSheetCached(loadDesign(options->a), options->a);
+        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at);
+      });
+      outputs.checkWritable();
+    }
+    SurfaceDistance d;
+    try {
+      d = surfaceDistance(a, b, options->samples, parseSeed(options->seed));
+    } catch (const DegenerateMesh& e) {
+      throw UsageError(
+          std::string(e.what()) + " (" +
+          (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
+          ")");
+    }
+    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
+              << millimetresText(d.fromAMean) << "\n"
+              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
+              << millimetresText(d.fromBMean) << "\n"
+              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
+              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
+              << percentText(d.relativeChamfer()) << ")\n";
+    if (renderer) {
+      outputs.write();
+      std::cout << "wrote " << options->png << "\n";
+    }
+  });
+}
+
+}  // namespace curvefold::cli

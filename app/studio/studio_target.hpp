@@ -1,0 +1,161 @@
+// The studio's target shape (issue 27, docs/design.md 9): a mesh the designer folds toward, shown
+// as a ghost in the sheet's frame with its distance to the design, and the next folds toward it
+// suggested on request. The target is read, checked and sampled on another thread (issue 38, 3),
+// the search runs on a worker thread (SuggestionWorker) and the distances are measured off the
+// frame too, so frames never wait for any of them: the frame only swaps in what is ready, and a
+// load, a change of the design or of the document abandons the search in flight
+// (SuggestionWorker::cancel, retarget) and leaves an old load or measure to finish unread.
+// One measure throughout (issue 38, 4): the design's distance and what a suggestion would make it
+// are both surfaceDistance with kDistanceSamples, so the suggestion's "before" is the distance
+// line's figure and its "after" the figure the line shows once it is taken. A suggestion reaches
+// the interaction core as input (InputFrame::suggestions), where it is recorded like the hands: a
+// replay offers the same folds at the same moment without searching, so it makes the same design.
+// The desktop window and the headset's panel share it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/session/document.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/suggestion_worker.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/text/distance_text.hpp"
+
+namespace curvefold::studio {
+
+// The design to start from when the designer chose no sheet but brought a target (issue 38, 4):
+// the catalogue surface sized to it as `fit` chooses one without --from (start_surface.hpp),
+// after the same check of its units and place against the default square. Reads the target;
+// throws a one-line error naming the file.
+Design startForTarget(const std::string& path);
+
+// What a studio (the desktop window, the headset) opens: the input named (a design file or a
+// surface), else, with a target, the start chosen to match it (startForTarget), else
+// defaultSurface; surfaceName is what the autosave and the exports are named after without an
+// input.
+struct StudioStart {
+  Design design;
+  std::string surfaceName;
+};
+StudioStart studioStart(const std::string& input, const std::string& target,
+                        const std::string& defaultSurface);
+
+class StudioTarget {
+ public:
+  // How many suggestions one request asks for (the panel's "Another" goes round them).
+  static constexpr std::size_t kSuggestionsPerRequest = 3;
+  // The samples the panel's distance is measured on (a tenth of a second at 10k triangles, off
+  // the frame); `curvefold distance` takes more and is the one to quote.
+  static constexpr std::size_t kDistanceSamples = 5'000;
+
+  // Reads a target file (readObjMesh; a test slows it down).
+  using MeshReader = std::function<TriangleMesh(const std::string& path)>;
+
+  // replaying: suggestions come from the frames (a replay's), and nothing is searched or measured;
+  // a load is made at once (a replay runs as fast as it can, and the same way every time).
+  // suggestionSeconds: how long a search may take before it answers with what it has.
+  explicit StudioTarget(bool replaying = false,
+                        double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit,
+                        MeshReader reader = {});
+  ~StudioTarget();
+  StudioTarget(const StudioTarget&) = delete;
+  StudioTarget& operator=(const StudioTarget&) = delete;
+
+  // Starts reading the target (an OBJ in the sheet's frame), checking it against the document's
+  // sheet and sampling it, on another thread; poll swaps it in when it is ready. The search in
+  // flight is abandoned now. A failed load is one line in distanceLine (unreadable, no area, far
+  // away or in other units), and the target before stays. A newer load replaces one under way.
+  void load(const std::string& path, const session::Document& doc);
+  // The same, on this thread, before any frame (the command line's --target): throws the line.
+  void loadNow(const std::string& path, const session::Document& doc);
+  bool loaded() const { return fitter_ != nullptr; }
+  bool loading() const { return loading_.valid(); }
+  // The target (sheet coordinates), for the ghost; null without one.
+  const TriangleMesh* mesh() const;
+  const std::string& path() const { return path_; }
+
+  // Starts the search for the next folds of the document's committed design (a drag in
+  // progress is not part of it); while a target loads, once it is there. Throws when there is no
+  // target and none loading.
+  void suggest(const session::Document& doc);
+  // The worker (null without a target or while replaying), for tests and benchmarks.
+  const SuggestionWorker* worker() const { return worker_.get(); }
+  bool searching() const { return searching_; }
+
+  // Once a frame, before the frame reaches the core and the recorder: a search that finished for
+  // the design as it still is puts its folds into frame.suggestions (a replay's frame brings its
+  // own). Also starts measuring the distance when the design changed.
+  void poll(const session::Document& doc, InputFrame& frame);
+
+  // The part the suggestion the core offers moves, where it goes (sheet coordinates), for the
+  // preview; null when unknown (a replay's suggestions come without their results).
+  const TriangleMesh* offeredResult(const InteractionCore& core) const;
+
+  // One line each for the panel: the distance ("no target", "loading ...", "measuring ...", a
+  // failed load) and the suggestion ("searching ...", "suggestion 1 of 3: Chamfer 8.1 mm -> 5.2
+  // mm", "no fold brings it closer", ...).
+  std::string distanceLine() const;
+  std::string suggestionLine(const InteractionCore& core) const;
+
+  // The document was replaced (a new sheet, an opened design): what was found for the old one
+  // goes; the target stays.
+  void documentReplaced();
+
+ private:
+  struct Measured {
+    std::uint64_t revision = 0;
+    const void* session = nullptr;
+    SurfaceDistance distance;
+  };
+  // A target read, checked and sampled, or why not.
+  struct Loaded {
+    std::string path;
+    std::shared_ptr<const FoldFitter> fitter;
+    std::string error;
+  };
+  static Loaded read(const std::string& path, const Sheet& sheet, const MeshReader& reader);
+  void swapIn(Loaded loaded, const session::Document& doc);
+  void startSearch(const session::Document& doc);
+
+  bool replaying_;
+  double suggestionSeconds_;
+  MeshReader reader_;
+  std::string path_;
+  std::future<Loaded> loading_;
+  std::string loadingPath_;
+  std::string loadError_;          // the last load's failure, until the next load
+  bool suggestAfterLoad_ = false;  // Suggest was asked while the target loaded
+  // Superseded loads, left to finish unread (never waited for on a frame).
+  std::vector<std::future<Loaded>> retiredLoads_;
+  std::shared_ptr<const FoldFitter> fitter_;
+  std::unique_ptr<SuggestionWorker> worker_;
+  bool searching_ = false;
+  std::uint64_t request_ = 0;
+  // The design a search or the offers are for: its session and revision.
+  const void* requestSession_ = nullptr;
+  std::uint64_t requestRevision_ = 0;
+  std::string answerNote_;              // why the last search offered nothing
+  std::vector<FoldSuggestion> found_;   // the last answer, best first
+  std::vector<TriangleMesh> moved_;     // each one's moved part, folded
+  std::vector<SuggestedFold> offered_;  // what the last answer put into a frame
+  // Each found suggestion measured as the design is (the panel's "after"), off the frame.
+  std::future<std::vector<double>> measuringFound_;
+  std::vector<double> foundChamfer_;
+  std::optional<Measured> measured_;
+  bool measuredCurrent_ = false;  // measured_ is of the design as it is
+  std::future<Measured> measuring_;
+  // Measures of a design or target no longer shown, left to finish (never waited for on a frame).
+  std::vector<std::future<Measured>> retired_;
+  std::vector<std::future<std::vector<double>>> retiredFound_;
+  void retireMeasuring();
+  void retireFound();
+  void reapRetired();
+};
+
+}  // namespace curvefold::studio
