@@ -1,4 +1,5 @@
 // curvefold: design curved-fold origami by reflection (Mitani & Igarashi 2011).
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdio>
@@ -35,14 +36,22 @@ std::string oneLine(const std::string& message) {
 
 // Memory held back for the way out of an allocation that fails. nlohmann's json allocates while it
 // is destroyed (a stack as long as the array), so an exception unwinding through a large document
-// with no memory left ended in std::terminate (`export --fold` under `ulimit -v`). The first
-// failure hands the reserve back and throws std::bad_alloc; the unwinding frees with it, and
-// main() says what ran out in one line.
-constexpr std::size_t kUnwindReserveBytes = 32u << 20;
-std::atomic<char*> unwindReserve{nullptr};
+// with no memory left ended in std::terminate (`export --fold` under `ulimit -v`). A failure hands
+// back one part of the reserve: while an exception unwinds (a destructor allocating) the
+// allocation is tried again, else std::bad_alloc is thrown and main() says what ran out in one
+// line. In parts, because a failure some code survives (the sheet cache treats one as a miss)
+// must not spend the whole reserve that a later one needs.
+constexpr std::size_t kUnwindReserveParts = 8;
+constexpr std::size_t kUnwindReservePartBytes = 4u << 20;
+std::array<std::atomic<char*>, kUnwindReserveParts> unwindReserve{};
 
 void releaseUnwindReserve() {
-  delete[] unwindReserve.exchange(nullptr);
+  for (std::atomic<char*>& part : unwindReserve)
+    if (char* held = part.exchange(nullptr)) {
+      delete[] held;
+      if (std::uncaught_exceptions() > 0) return;  // unwinding: operator new tries again
+      throw std::bad_alloc();
+    }
   std::set_new_handler(nullptr);
   throw std::bad_alloc();
 }
@@ -50,8 +59,9 @@ void releaseUnwindReserve() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  unwindReserve = new (std::nothrow) char[kUnwindReserveBytes];
-  if (unwindReserve) std::set_new_handler(releaseUnwindReserve);
+  for (std::atomic<char*>& part : unwindReserve)
+    part = new (std::nothrow) char[kUnwindReservePartBytes];
+  std::set_new_handler(releaseUnwindReserve);
   CLI::App app{"curvefold: design curved-fold origami by mirror reflection", "curvefold"};
   // No subcommand: XR with a headset, else the designer window, else a one-line pointer to
   // replay/render.

@@ -30,6 +30,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kDefaultSurface = "square";
+constexpr const char* kDesktopInstead = "; `curvefold design` opens the desktop window instead";
 
 // What the runtime lacks, naming the option of `curvefold xr` that asked for it.
 [[noreturn]] void throwNamingOption(const XrMissingFeature& e) {
@@ -116,6 +117,11 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
     program_ = std::make_unique<XrProgram>(programOptions, graphics_.get());
   } catch (const XrMissingFeature& e) {
     throwNamingOption(e);
+  } catch (const XrError& e) {
+    // The interaction layer names no command; the front end says where else to fold.
+    if (std::string(e.what()) == kNoXrRuntime)
+      throw XrError(std::string(kNoXrRuntime) + kDesktopInstead, e.result());
+    throw;
   }
   input_ = std::make_unique<XrInput>(program_->instance(), program_->handTrackingEnabled(),
                                      options.hands);
@@ -368,10 +374,9 @@ XrAppSummary XrApp::run(const std::atomic<bool>& interrupt) {
 XrAppSummary XrApp::runSessions(const std::atomic<bool>& interrupt) {
   using namespace std::chrono_literals;
   if (!startSession())
-    throw XrError(
-        "the OpenXR runtime (" + program_->runtimeName() +
-            ") has no headset connected; `curvefold design` opens the desktop window instead",
-        XR_ERROR_FORM_FACTOR_UNAVAILABLE);
+    throw XrError("the OpenXR runtime (" + program_->runtimeName() + ") has no headset connected" +
+                      kDesktopInstead,
+                  XR_ERROR_FORM_FACTOR_UNAVAILABLE);
   for (;;) {
     bool exitAsked = false;
     restart_ = false;

@@ -765,7 +765,9 @@ class FitRun {
     surfaceDistance(meshOf(session_.fixed()), fitter_.target(), probe);
     const auto after = std::chrono::steady_clock::now();
     const double cost = std::chrono::duration<double>(after - before).count();
-    const double share = kStartShare * std::chrono::duration<double>(end_ - after).count();
+    // A deadline already passed leaves no share (a negative count cast to size_t is undefined).
+    const double share =
+        kStartShare * std::max(0.0, std::chrono::duration<double>(end_ - after).count());
     // The probe's cost holds the trees and the vertices, which fewer samples do not cut: the
     // estimate errs long.
     const double allowed = static_cast<double>(probe) * share / std::max(cost, 1e-9);

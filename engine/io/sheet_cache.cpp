@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <vector>
 
 #include "engine/io/atomic_file.hpp"
@@ -149,6 +150,10 @@ std::optional<Sheet> loadCachedSheet(const Design& design) {
     // Used: the oldest entries are the ones evicted.
     std::filesystem::last_write_time(entry, std::filesystem::file_time_type::clock::now(), error);
     return sheet;
+  } catch (const std::bad_alloc&) {
+    // Not a bad entry: the process is out of memory, which the front end must hear of (its
+    // reserve for the way out is spent on this failure; swallowed here, the next one aborts).
+    throw;
   } catch (...) {
     return std::nullopt;
   }

@@ -35,7 +35,8 @@ std::uint64_t sheetCacheBudget();
 // The folder entries go to, or empty when there is none (no HOME, an unwritable folder).
 std::filesystem::path sheetCacheDirectory();
 
-// The cached sheet of exactly this design, or nothing.
+// The cached sheet of exactly this design, or nothing (a missing or damaged entry). Throws
+// std::bad_alloc when memory runs out while reading one: that is no bad entry.
 std::optional<Sheet> loadCachedSheet(const Design& design);
 // Stores the sheet of this design (best effort; never throws).
 void storeCachedSheet(const Design& design, const Sheet& sheet) noexcept;

@@ -15,7 +15,7 @@ namespace curvefold {
 
 const char* const kNoXrRuntime =
     "no OpenXR runtime: install one (Monado, SteamVR, ...) or point XR_RUNTIME_JSON at a "
-    "runtime's manifest; `curvefold design` opens the desktop window instead";
+    "runtime's manifest";
 
 namespace {
 
