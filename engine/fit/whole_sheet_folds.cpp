@@ -260,7 +260,6 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     foundPoses.push_back(pose);
     if (again) continue;
     if (!lays(motion)) {
-      if (deadline.passed()) break;
       pose = refine(pose, all, movedSurface, scale, deadline);
       if (deadline.passed()) break;
       motion = motionOf(pose);
