@@ -3,9 +3,12 @@
 // each a case the unfolding once misread, found again exactly; the start surface sized to a
 // shape, and the shape's rotational symmetry.
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -17,10 +20,12 @@
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/whole_sheet_folds.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "tests/support/fold_target_generators.hpp"
 
@@ -133,6 +138,43 @@ TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
+}
+
+// Registration toward a copy that nearly lies on the sheet (moved whole, and bent by 1 mm, which
+// no rigid motion takes away) finds no way, and uncancelled takes minutes on a large sheet (527 s
+// here: 560 starts measured, then start after start refined on every vertex). Its deadline was
+// checked only between refinements, and not while the starts were measured (5 s on this sheet):
+// a cancel (or the fit's --time) waited for them. It is checked at every step.
+TEST(WholeSheetFolds, RegistrationStopsSoonAfterItsDeadline) {
+  const Sheet initial = makeSurface("square", {{"resolution", 96}});
+  const TriangleMesh sheet = meshOf(initial);
+  TriangleMesh moved = sheet;
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+  for (glm::dvec3& p : moved.positions) {
+    p.z += 1e-3 * std::cos(10.0 * p.x) * std::cos(7.0 * p.y);  // not rigid: never laid on
+    // A turn of 0.6 radians about `axis` (Rodrigues), then a shift.
+    const double c = std::cos(0.6), s = std::sin(0.6);
+    p = c * p + s * glm::cross(axis, p) + (1.0 - c) * glm::dot(axis, p) * axis +
+        glm::dvec3(0.05, 0.02, 0.1);
+  }
+  std::atomic<bool> cancelled{false};
+  Deadline deadline;
+  deadline.cancelled = &cancelled;
+  const double cancelAfter = 0.3;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::duration<double>(cancelAfter));
+    cancelled = true;
+  });
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<RigidMotion> ways =
+      registerSheetOntoAll(sheet, moved, 1e-4 * boundingDiagonal(sheet), 24, deadline);
+  const double took =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  canceller.join();
+  EXPECT_TRUE(ways.empty());
+  // One step is one closest-point pass over the sheet's 9,409 vertices: milliseconds (tens under
+  // the sanitizers); a refinement is up to 200 of them.
+  EXPECT_LT(took, cancelAfter + (testing::kSanitized ? 1.5 : 0.25)) << took << " s";
 }
 
 // A symmetric sheet (a star) lies on a moved copy of itself several ways, one its symmetry times

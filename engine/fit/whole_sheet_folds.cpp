@@ -83,14 +83,18 @@ double meanDistance(const Pose& pose, const std::vector<Eigen::Vector3d>& points
   return sum / double(std::max<std::size_t>(1, points.size()));
 }
 
-// Point-to-point ICP against the exact closest points, Umeyama's closed form each step.
+// Point-to-point ICP against the exact closest points, Umeyama's closed form each step. Stops
+// at `deadline` too, checked every step: one refinement on every vertex of a large sheet takes
+// seconds, so a check between refinements alone overran the fit's --time.
 Pose refine(Pose pose, const std::vector<Eigen::Vector3d>& points,
-            const SurfaceDistanceQuery& moved, double scale, int iterations = 200) {
+            const SurfaceDistanceQuery& moved, double scale, const Deadline& deadline,
+            int iterations = 200) {
   Eigen::Matrix3Xd source(3, points.size()), target(3, points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     source.col(Eigen::Index(i)) = pose.mirrored ? Eigen::Vector3d(kMirror * points[i]) : points[i];
   double last = 1e300;
   for (int iteration = 0; iteration < iterations; ++iteration) {
+    if (deadline.passed()) break;
     double sum = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const Eigen::Vector3d at = pose.rotation * source.col(Eigen::Index(i)) + pose.offset;
@@ -188,6 +192,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     for (int axis = 0; axis < 3; ++axis)
       for (int step = 0; step < 24; ++step) {
         if (step == 0 && axis > 0) continue;
+        if (deadline.passed()) return {};  // each start's measure is 64 closest points
         const Eigen::Matrix3d linear = to.axes * s.asDiagonal() *
                                        turn(axis, step * std::numbers::pi / 12.0) *
                                        from.axes.transpose();
@@ -224,7 +229,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   const std::size_t kFirst = 4, kMostRefined = 64;
   const double coarseEnough = 3.0 * starts.front().residual + 2e-3 * scale;
   for (std::size_t k = 0, refined = 0; k < starts.size() && refined < kMostRefined; ++k) {
-    if (found.size() >= most || (k > 0 && deadline.passed())) break;
+    if (found.size() >= most || deadline.passed()) break;
     if (k >= kFirst && starts[k].residual > coarseEnough) break;
     const bool begunNear = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
       return f.mirrored == starts[k].mirrored && near(f.rotation, starts[k].rotation, 0.15);
@@ -233,7 +238,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     ++refined;
     // Refined on few points first (cheap), on more only where that lies on the copy; each
     // checked exactly (`lays`) before it counts.
-    Pose pose = refine(starts[k], coarse, movedSurface, scale, 60);
+    Pose pose = refine(starts[k], coarse, movedSurface, scale, deadline, 60);
     if (!(pose.residual < std::max(tolerance, 3e-3 * scale))) continue;  // not near a way yet
     // One that comes near a way found leads to it again: not refined further.
     const bool nearFound = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
@@ -241,7 +246,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
              (f.offset - pose.offset).norm() < 0.02 * scale;
     });
     if (nearFound) continue;
-    pose = refine(pose, fine, movedSurface, scale);
+    pose = refine(pose, fine, movedSurface, scale, deadline);
     RigidMotion motion = motionOf(pose);
     const bool again = std::any_of(found.begin(), found.end(), [&](const RigidMotion& f) {
       double linear = 0.0;
@@ -249,10 +254,14 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
         linear = std::max(linear, glm::length(f.linear[c] - motion.linear[c]));
       return linear < 1e-3 && glm::distance(f.offset, motion.offset) < 1e-3 * scale;
     });
+    // A refinement the deadline cut short is no way found (and `lays` costs a tree and a pass
+    // over every vertex).
+    if (deadline.passed()) break;
     foundPoses.push_back(pose);
     if (again) continue;
     if (!lays(motion)) {
-      pose = refine(pose, all, movedSurface, scale);
+      pose = refine(pose, all, movedSurface, scale, deadline);
+      if (deadline.passed()) break;
       motion = motionOf(pose);
       if (!lays(motion)) continue;
     }

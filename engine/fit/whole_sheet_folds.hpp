@@ -52,7 +52,9 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
 
 // Every distinct motion taking `sheet` onto `moved` within `tolerance` as above, at most `most`,
 // the best start's first.
-// Stops at `deadline` with the ways found by then.
+// Stops at `deadline` with the ways found by then: checked at every step of each refinement (a
+// refinement on every vertex of a large sheet takes seconds), so it returns within about one
+// step (one closest-point pass) of the deadline; a refinement cut short counts no way.
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
                                               double tolerance, std::size_t most,
                                               const Deadline& deadline = {});
