@@ -3,9 +3,10 @@
 // length placed on it (as `fit --from cylinder` sizes one), then up to N rings taken greedily,
 // each the neck ring (both turns) that brings the sheet closest (the fitter's approximate
 // distance) without passing it through itself. Prints the exact distance (20,000 samples a side)
-// after each: what the search could keep if it chose these rings at every step.
+// after each: what the search could keep if it chose these rings at every step. RADIUS_SCALE
+// (default 1) widens the tube past the mean radius: rings only narrow it.
 //
-//   build/bench/neck_rings TARGET.obj [RINGS]
+//   build/bench/neck_rings TARGET.obj [RINGS [RADIUS_SCALE]]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -54,11 +55,14 @@ void print(const char* what, const Sheet& sheet, const TriangleMesh& target) {
 }
 
 int run(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: neck_rings TARGET.obj [RINGS]\n");
+  if (argc < 2 || argc > 4) {
+    std::fprintf(stderr, "usage: neck_rings TARGET.obj [RINGS [RADIUS_SCALE]]\n");
     return 2;
   }
-  const int rings = argc == 3 ? std::atoi(argv[2]) : 3;
+  const int rings = argc >= 3 ? std::atoi(argv[2]) : 3;
+  // The tube's radius against the target's mean (rings only narrow a tube: a wider start leaves
+  // them the belly to cut from).
+  const double radiusScale = argc == 4 ? std::atof(argv[3]) : 1.0;
   const TriangleMesh target = readObjMesh(argv[1]);
   const std::vector<SurfaceSample> targetSamples = sampleSurface(target, 3000, 5);
   const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
@@ -74,7 +78,7 @@ int run(int argc, char** argv) {
     hi = std::max(hi, t);
     radius += glm::length(d - t * axis->direction);
   }
-  radius /= static_cast<double>(targetSamples.size());
+  radius *= radiusScale / static_cast<double>(targetSamples.size());
   const Sheet tube = placedCylinder(radius, hi - lo, *axis, 0.5 * (lo + hi));
   std::printf("cylinder: radius %.4g m, length %.4g m on the axis\n", radius, hi - lo);
   const FoldFitter fitter(target);

@@ -12,6 +12,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
+#include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -117,6 +118,20 @@ Ring fourFlapRim() {
 
 Sheet tubeSheet() {
   return makeSurface("cylinder", {{"radius", 0.05}, {"height", 0.2}});
+}
+
+// An urn 30 cm long with a waist symmetric about its middle, its axis tilted: the waist bends its
+// ring of edges by about 13 degrees (more than a gridded smooth shape's 12) and mirrors its faces
+// as a fold's crease would, but the rings beside it bend nearly as much: smooth, not a design
+// folded from the cylinder (which would keep the cylinder's defaults, placed nowhere).
+TEST(StartSurface, ASmoothUrnsWaistIsNoCrease) {
+  TriangleMesh urn = revolved([](double h) { return 0.1 - 0.05 * std::exp(-h * h / 0.0043); },
+                              -0.15, 0.15, 48, 30);
+  for (glm::dvec3& p : urn.positions) p = turned(p, {1.0, 0.3, 0.0}, 35.0);
+  EXPECT_TRUE(isSmoothOrScanned(urn));
+  const StartChoice start = chooseStart(urn, "cylinder");
+  EXPECT_FALSE(start.creased);
+  EXPECT_FALSE(start.parameters.empty());
 }
 
 TEST(RingFolds, ARingIsMadeAllAroundAndKeepsTheSheetValid) {
