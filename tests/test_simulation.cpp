@@ -231,6 +231,38 @@ TEST(Simulation, WaterbombBaseFollowsItsFoldingMotionToEveryTarget) {
   }
 }
 
+// The waterbomb base as it is folded (six creases: testing::waterbombBase) folds flat along its
+// motion: the pursuit reaches the 100% angles, and the settled states at 25 to 100% keep every
+// crease within 0.5 degrees of its target, unstretched; at 100% every crease is at +-180.
+TEST(Simulation, WaterbombBaseFoldsFlatAlongItsMotion) {
+  for (bool quarterTurn : {false, true}) {
+    BarHingeModel model = buildModel(testing::waterbombBase(quarterTurn));
+    const FoldingMotion motion = foldingMotion(model);
+    EXPECT_TRUE(motion.reachedFull)
+        << quarterTurn << ": followed to " << motion.amounts[motion.amounts.size() - 2];
+    setFoldingMotion(model, motion);
+    SimulationState state = flatState(model);
+    for (double percent : {25.0, 50.0, 75.0, 100.0}) {
+      const double amount = percent / 100.0;
+      EXPECT_TRUE(settle(model, amount, state).converged) << percent;
+      double worstError = 0.0, worstStrain = 0.0;
+      for (double error : creaseAngleError(model, state.positions, amount, state.hingeAngles))
+        worstError = std::max(worstError, std::abs(error));
+      for (double strain : edgeStrain(model, state.positions))
+        worstStrain = std::max(worstStrain, std::abs(strain));
+      EXPECT_LE(worstError, 0.5) << quarterTurn << " " << percent << "%";
+      EXPECT_LE(worstStrain, 1e-3) << quarterTurn << " " << percent << "%";
+      std::fprintf(stderr, "waterbomb (6 creases) %g%%: worst crease error %.3f degrees, angles",
+                   percent, worstError);
+      for (double angle : state.hingeAngles) std::fprintf(stderr, " %.1f", angle * kDegrees);
+      std::fprintf(stderr, "\n");
+    }
+    for (std::size_t j = 0; j < model.hinges.size(); ++j)
+      if (model.hingeCrease[j])
+        EXPECT_NEAR(std::abs(state.hingeAngles[j]) * kDegrees, 180.0, 0.5) << "hinge " << j;
+  }
+}
+
 // The largest crease angle error (degrees) of the settled states at 25, 50 and 75%.
 double worstCreaseErrorAlong(const BarHingeModel& model) {
   SimulationState state = flatState(model);
