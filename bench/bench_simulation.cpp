@@ -117,7 +117,12 @@ void designFromFlatBySolvers(benchmark::State& bench, const std::filesystem::pat
 // Hausdorff, checked every kCheckEvery frames), up to kMaxFrames. The second argument picks the
 // stiffnesses: 0 the project's design-mode defaults, 1 Origami Simulator's published ones (axial
 // 20, crease 0.7, facet 0.2; its damping ratio 0.45 is the solver's default either way).
-constexpr std::size_t kSliderFrames = 30, kCheckEvery = 10, kMaxFrames = 3000;
+constexpr std::size_t kSliderFrames = 30, kCheckEvery = 10;
+// $CURVEFOLD_BENCH_MAX_FRAMES, else 3000 (100 s at 30 frames a second).
+const std::size_t kMaxFrames = [] {
+  const char* text = std::getenv("CURVEFOLD_BENCH_MAX_FRAMES");
+  return text ? std::size_t(std::max(1L, std::atol(text))) : std::size_t(3000);
+}();
 
 void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& recording,
                         bool simulatorStiffness) {
