@@ -116,7 +116,8 @@ void designFromFlatBySolvers(benchmark::State& bench, const std::filesystem::pat
 // the state (after the best rigid placement) is within 0.5% of the design's diagonal (two-sided
 // Hausdorff, checked every kCheckEvery frames), up to kMaxFrames. The second argument picks the
 // stiffnesses: 0 the project's design-mode defaults, 1 Origami Simulator's published ones (axial
-// 20, crease 0.7, facet 0.2; its damping ratio 0.45 is the solver's default either way).
+// 20, crease 0.7, facet 0.2; its damping ratio 0.45 is the solver's default either way), 2 the
+// defaults with facets 200 times softer than creases (the static solver's "creases first").
 constexpr std::size_t kSliderFrames = 30, kCheckEvery = 10;
 // $CURVEFOLD_BENCH_MAX_FRAMES, else 3000 (100 s at 30 frames a second).
 const std::size_t kMaxFrames = [] {
@@ -125,10 +126,11 @@ const std::size_t kMaxFrames = [] {
 }();
 
 void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& recording,
-                        bool simulatorStiffness) {
+                        int stiffness) {
   const Sheet sheet = replayRecording(readRecording(recording)).sheet;
   ModelOptions modelOptions;
-  if (simulatorStiffness) modelOptions = simulatorModelOptions();
+  if (stiffness == 1) modelOptions = simulatorModelOptions();
+  if (stiffness == 2) modelOptions.facetStiffness = modelOptions.creaseStiffness / 200.0;
   const BarHingeModel model = buildModel(designPattern(sheet).pattern, modelOptions);
   const std::uint32_t steps = liveStepsPerFrame(model.vertexCount());
   std::size_t frames = 0;
@@ -236,12 +238,12 @@ void registerDesigns() {
           ->UseRealTime()
           ->Iterations(1);
     for (const auto& path : paths)
-      for (int simulator : {0, 1})
+      for (int stiffness : {0, 1, 2})
         benchmark::RegisterBenchmark(
-            ("BM_DesignFromFlatLive/" + path.stem().string() + "/" + std::to_string(simulator))
+            ("BM_DesignFromFlatLive/" + path.stem().string() + "/" + std::to_string(stiffness))
                 .c_str(),
-            [path, simulator](benchmark::State& bench) {
-              designFromFlatLive(bench, path, simulator == 1);
+            [path, stiffness](benchmark::State& bench) {
+              designFromFlatLive(bench, path, stiffness);
             })
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime()
