@@ -149,6 +149,18 @@ void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& re
       if (!std::isfinite(distance) || distance <= 0.005) break;
     }
   }
+  // $CURVEFOLD_BENCH_POLISH: then the static solver (no predictor) from the dynamic state.
+  if (std::getenv("CURVEFOLD_BENCH_POLISH") && distance > 0.005) {
+    StaticOptions options;
+    options.predictor = false;
+    const StaticResult result = settle(model, 1.0, state, options);
+    Sheet simulated = sheet;
+    simulated.positions =
+        placed(bestRigidPlacement(state.positions, sheet.positions), state.positions);
+    bench.counters["static_iterations"] = static_cast<double>(result.iterations);
+    bench.counters["static_hausdorff_pct"] =
+        100.0 * surfaceDistance(meshOf(simulated), meshOf(sheet)).relativeHausdorff();
+  }
   double worstStrain = 0.0;
   for (double strain : edgeStrain(model, state.positions))
     worstStrain = std::max(worstStrain, std::abs(strain));
