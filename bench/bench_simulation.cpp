@@ -1,9 +1,10 @@
 // The folding simulation (engine/simulation): one damped dynamic step at 10k and 100k vertices
 // (targets 1 ms and 10 ms on 2 cores), and a 10k-vertex design from flat to settled at 100% by the
 // static solver (target 2 s), and every bundled and showcase design from flat by the solvers alone
-// (BM_DesignFromFlatBySolvers/NAME). The patterns: a square grid with one crease through the
-// middle; the design: the cylinder surface bent to its shape (design mode drives every edge to its
-// dihedral).
+// (BM_DesignFromFlatBySolvers/NAME), and by the dynamic solver alone as the live window steps it
+// (BM_DesignFromFlatLive/NAME/S; crease patterns: BM_PatternFromFlatLive/NAME/S). The patterns: a
+// square grid with one crease through the middle; the design: the cylinder surface bent to its
+// shape (design mode drives every edge to its dihedral).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
