@@ -137,11 +137,15 @@ void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& re
   std::size_t frames = 0;
   double distance = 1.0;
   SimulationState state;
+  // $CURVEFOLD_BENCH_VELOCITY_DAMPING: the share of every velocity lost per step (default 0.01).
+  DynamicOptions dynamic;
+  if (const char* text = std::getenv("CURVEFOLD_BENCH_VELOCITY_DAMPING"))
+    dynamic.velocityDamping = std::atof(text);
   for (auto _ : bench) {
     state = flatState(model);
     for (frames = 1; frames <= kMaxFrames; ++frames) {
       const double amount = std::min(1.0, double(frames) / kSliderFrames);
-      stepDynamic(model, amount, state, steps);
+      stepDynamic(model, amount, state, steps, dynamic);
       if (frames % kCheckEvery != 0) continue;
       Sheet simulated = sheet;
       simulated.positions =
