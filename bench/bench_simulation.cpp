@@ -1,13 +1,15 @@
 // The folding simulation (engine/simulation): one damped dynamic step at 10k and 100k vertices
 // (targets 1 ms and 10 ms on 2 cores), and a 10k-vertex design from flat to settled at 100% by the
 // static solver (target 2 s), and every bundled and showcase design from flat by the solvers alone
-// (BM_DesignFromFlatBySolvers/NAME). The patterns: a square grid with one crease through the
-// middle; the design: the cylinder surface bent to its shape (design mode drives every edge to its
-// dihedral).
+// (BM_DesignFromFlatBySolvers/NAME), and by the dynamic solver alone as the live window steps it
+// (BM_DesignFromFlatLive/NAME/S; crease patterns: BM_PatternFromFlatLive/NAME/S). The patterns: a
+// square grid with one crease through the middle; the design: the cylinder surface bent to its
+// shape (design mode drives every edge to its dihedral).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -16,12 +18,14 @@
 #include "bench/simulation_bench_support.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
+#include "engine/io/crease_pattern_reader.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/rigid_placement.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "interaction/live_simulation.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
 
@@ -107,6 +111,135 @@ void designFromFlatBySolvers(benchmark::State& bench, const std::filesystem::pat
   bench.counters["strain_pct"] = 100.0 * worstStrain;
 }
 
+// Every bundled and showcase design folded from flat as the live window folds it: the dynamic
+// solver alone (no predictor, no static solve), liveStepsPerFrame steps a frame, the fold slider
+// moved from 0 to 100% over the first kSliderFrames frames and then held. Counts the frames until
+// the state (after the best rigid placement) is within 0.5% of the design's diagonal (two-sided
+// Hausdorff, checked every kCheckEvery frames), up to kMaxFrames. The second argument picks the
+// stiffnesses: 0 the project's design-mode defaults, 1 Origami Simulator's published ones (axial
+// 20, crease 0.7, facet 0.2; its damping ratio 0.45 is the solver's default either way), 2 the
+// defaults with facets 200 times softer than creases (the static solver's "creases first").
+constexpr std::size_t kSliderFrames = 30, kCheckEvery = 10;
+// $CURVEFOLD_BENCH_MAX_FRAMES, else 3000 (100 s at 30 frames a second).
+const std::size_t kMaxFrames = [] {
+  const char* text = std::getenv("CURVEFOLD_BENCH_MAX_FRAMES");
+  return text ? std::size_t(std::max(1L, std::atol(text))) : std::size_t(3000);
+}();
+
+void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& recording,
+                        int stiffness) {
+  const Sheet sheet = replayRecording(readRecording(recording)).sheet;
+  ModelOptions modelOptions;
+  if (stiffness == 1) modelOptions = simulatorModelOptions();
+  if (stiffness == 2) modelOptions.facetStiffness = modelOptions.creaseStiffness / 200.0;
+  const BarHingeModel model = buildModel(designPattern(sheet).pattern, modelOptions);
+  const std::uint32_t steps = liveStepsPerFrame(model.vertexCount());
+  std::size_t frames = 0;
+  double distance = 1.0;
+  SimulationState state;
+  // $CURVEFOLD_BENCH_VELOCITY_DAMPING: the share of every velocity lost per step (default 0.01).
+  DynamicOptions dynamic;
+  if (const char* text = std::getenv("CURVEFOLD_BENCH_VELOCITY_DAMPING"))
+    dynamic.velocityDamping = std::atof(text);
+  for (auto _ : bench) {
+    state = flatState(model);
+    for (frames = 1; frames <= kMaxFrames; ++frames) {
+      const double amount = std::min(1.0, double(frames) / kSliderFrames);
+      stepDynamic(model, amount, state, steps, dynamic);
+      if (frames % kCheckEvery != 0) continue;
+      Sheet simulated = sheet;
+      simulated.positions =
+          placed(bestRigidPlacement(state.positions, sheet.positions), state.positions);
+      distance = surfaceDistance(meshOf(simulated), meshOf(sheet)).relativeHausdorff();
+      if (!std::isfinite(distance) || distance <= 0.005) break;
+    }
+  }
+  // $CURVEFOLD_BENCH_POLISH: then the static solver (no predictor) from the dynamic state.
+  if (std::getenv("CURVEFOLD_BENCH_POLISH") && distance > 0.005) {
+    StaticOptions options;
+    options.predictor = false;
+    const StaticResult result = settle(model, 1.0, state, options);
+    Sheet simulated = sheet;
+    simulated.positions =
+        placed(bestRigidPlacement(state.positions, sheet.positions), state.positions);
+    bench.counters["static_iterations"] = static_cast<double>(result.iterations);
+    bench.counters["static_hausdorff_pct"] =
+        100.0 * surfaceDistance(meshOf(simulated), meshOf(sheet)).relativeHausdorff();
+  }
+  double worstStrain = 0.0;
+  for (double strain : edgeStrain(model, state.positions))
+    worstStrain = std::max(worstStrain, std::abs(strain));
+  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  bench.counters["steps_per_frame"] = steps;
+  bench.counters["frames"] = static_cast<double>(std::min(frames, kMaxFrames));
+  bench.counters["reached"] = distance <= 0.005 ? 1 : 0;
+  bench.counters["hausdorff_pct"] = 100.0 * distance;
+  bench.counters["strain_pct"] = 100.0 * worstStrain;
+}
+
+// Crease patterns (tests/data/crease_patterns, and every .fold and .svg in the folder
+// $CURVEFOLD_BENCH_PATTERNS when set, e.g. Origami Simulator's assets) folded from flat the same
+// way, in design mode: frames until every crease is within 0.5 degrees of its 100% angle, up to
+// kMaxFrames (then the largest error left). Second argument as above.
+void patternFromFlatLive(benchmark::State& bench, const std::filesystem::path& file,
+                         bool simulatorStiffness) {
+  ModelOptions modelOptions;
+  if (simulatorStiffness) modelOptions = simulatorModelOptions();
+  const BarHingeModel model = buildModel(readCreasePattern(file), modelOptions);
+  const std::uint32_t steps = liveStepsPerFrame(model.vertexCount());
+  std::size_t frames = 0;
+  double worstError = 180.0;
+  SimulationState state;
+  for (auto _ : bench) {
+    state = flatState(model);
+    for (frames = 1; frames <= kMaxFrames; ++frames) {
+      const double amount = std::min(1.0, double(frames) / kSliderFrames);
+      stepDynamic(model, amount, state, steps);
+      if (frames % kCheckEvery != 0 || amount < 1.0) continue;
+      worstError = 0.0;
+      for (double error : creaseAngleError(model, state.positions, 1.0, state.hingeAngles))
+        worstError = std::max(worstError, std::abs(error));
+      if (!std::isfinite(worstError) || worstError <= 0.5) break;
+    }
+  }
+  double worstStrain = 0.0;
+  for (double strain : edgeStrain(model, state.positions))
+    worstStrain = std::max(worstStrain, std::abs(strain));
+  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  bench.counters["steps_per_frame"] = steps;
+  bench.counters["frames"] = static_cast<double>(std::min(frames, kMaxFrames));
+  bench.counters["reached"] = worstError <= 0.5 ? 1 : 0;
+  bench.counters["crease_error_deg"] = worstError;
+  bench.counters["strain_pct"] = 100.0 * worstStrain;
+}
+
+void registerPatterns() {
+  std::vector<std::filesystem::path> folders = {CURVEFOLD_SOURCE_DIR "/tests/data/crease_patterns"};
+  if (const char* more = std::getenv("CURVEFOLD_BENCH_PATTERNS")) folders.emplace_back(more);
+  for (const auto& folder : folders) {
+    std::vector<std::filesystem::path> paths;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
+      if (entry.path().extension() == ".fold" || entry.path().extension() == ".svg")
+        paths.push_back(entry.path());
+    std::sort(paths.begin(), paths.end());
+    for (const auto& path : paths)
+      for (int simulator : {0, 1})
+        benchmark::RegisterBenchmark(
+            ("BM_PatternFromFlatLive/" + path.stem().string() + "/" + std::to_string(simulator))
+                .c_str(),
+            [path, simulator](benchmark::State& bench) {
+              try {
+                patternFromFlatLive(bench, path, simulator == 1);
+              } catch (const std::exception& e) {
+                bench.SkipWithError(e.what());
+              }
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->Iterations(1);
+  }
+}
+
 void registerDesigns() {
   for (const char* folder : {"/examples/recordings", "/examples/showcase/recordings"}) {
     std::vector<std::filesystem::path> paths;
@@ -121,6 +254,17 @@ void registerDesigns() {
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(1);
+    for (const auto& path : paths)
+      for (int stiffness : {0, 1, 2})
+        benchmark::RegisterBenchmark(
+            ("BM_DesignFromFlatLive/" + path.stem().string() + "/" + std::to_string(stiffness))
+                .c_str(),
+            [path, stiffness](benchmark::State& bench) {
+              designFromFlatLive(bench, path, stiffness);
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->Iterations(1);
   }
 }
 
@@ -129,6 +273,7 @@ void registerDesigns() {
 
 int main(int argc, char** argv) {
   curvefold::registerDesigns();
+  curvefold::registerPatterns();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -104,4 +104,23 @@ inline CreasePattern miuraOri(int nx, int ny, double w, double h, double s, doub
   return pattern;
 }
 
+// The waterbomb base as it is folded: a square with its centre, the four half-diagonals valleys,
+// the two halves of one midline (along y) mountains, the other midline's halves flat (Maekawa:
+// |M - V| = 2, so it folds flat, every crease at 180 degrees; with all eight creases folded, as
+// tests/data/crease_patterns/waterbomb_base.fold has them, no flat state exists). `quarterTurn`
+// rotates which midline is creased, so a test can check no result depends on the axis.
+inline CreasePattern waterbombBase(bool quarterTurn = false) {
+  CreasePattern pattern;
+  pattern.vertices = {{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {0, 0}};
+  for (std::uint32_t k = 0; k < 8; ++k) pattern.triangles.push_back({8, k, (k + 1) % 8});
+  addEdges(pattern, [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t rim = a == 8 ? b : a;  // every interior edge runs from the centre, 8
+    if (rim % 2 == 0) return CreasePatternEdge{a, b, CreaseAssignment::Valley, 180.0};
+    const bool creased = quarterTurn ? (rim == 3 || rim == 7) : (rim == 1 || rim == 5);
+    return creased ? CreasePatternEdge{a, b, CreaseAssignment::Mountain, -180.0}
+                   : CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
+  });
+  return pattern;
+}
+
 }  // namespace curvefold::testing

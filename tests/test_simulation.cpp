@@ -231,6 +231,67 @@ TEST(Simulation, WaterbombBaseFollowsItsFoldingMotionToEveryTarget) {
   }
 }
 
+// The waterbomb base as it is folded (six creases: testing::waterbombBase) folds flat along its
+// motion: the pursuit reaches the 100% angles, and the settled states at 25 to 100% keep every
+// crease within 0.5 degrees of its target, unstretched; at 100% every crease is at +-180.
+TEST(Simulation, WaterbombBaseFoldsFlatAlongItsMotion) {
+  for (bool quarterTurn : {false, true}) {
+    BarHingeModel model = buildModel(testing::waterbombBase(quarterTurn));
+    const FoldingMotion motion = foldingMotion(model);
+    EXPECT_TRUE(motion.reachedFull)
+        << quarterTurn << ": followed to " << motion.amounts[motion.amounts.size() - 2];
+    setFoldingMotion(model, motion);
+    SimulationState state = flatState(model);
+    for (double percent : {25.0, 50.0, 75.0, 100.0}) {
+      const double amount = percent / 100.0;
+      EXPECT_TRUE(settle(model, amount, state).converged) << percent;
+      double worstError = 0.0, worstStrain = 0.0;
+      for (double error : creaseAngleError(model, state.positions, amount, state.hingeAngles))
+        worstError = std::max(worstError, std::abs(error));
+      for (double strain : edgeStrain(model, state.positions))
+        worstStrain = std::max(worstStrain, std::abs(strain));
+      EXPECT_LE(worstError, 0.5) << quarterTurn << " " << percent << "%";
+      EXPECT_LE(worstStrain, 1e-3) << quarterTurn << " " << percent << "%";
+      std::fprintf(stderr, "waterbomb (6 creases) %g%%: worst crease error %.3f degrees, angles",
+                   percent, worstError);
+      for (double angle : state.hingeAngles) std::fprintf(stderr, " %.1f", angle * kDegrees);
+      std::fprintf(stderr, "\n");
+    }
+    for (std::size_t j = 0; j < model.hinges.size(); ++j)
+      if (model.hingeCrease[j])
+        EXPECT_NEAR(std::abs(state.hingeAngles[j]) * kDegrees, 180.0, 0.5) << "hinge " << j;
+  }
+}
+
+// The dynamic solver alone, as the live window steps it (60 steps a frame, the slider from 0 to
+// 100% over 30 frames), folds the waterbomb base flat from the flat sheet, every crease within
+// 0.5 degrees of +-180, unstretched, within 60 frames (bench_simulation's BM_PatternFromFlatLive
+// measures 30 to 40 frames; Origami Simulator's own waterbombBase.svg the same).
+TEST(Simulation, DynamicSolverAloneFoldsTheWaterbombBaseFlatFromFlat) {
+  const BarHingeModel model = buildModel(testing::waterbombBase());
+  SimulationState state = flatState(model);
+  double worstError = 180.0;
+  std::size_t frame = 1;
+  for (; frame <= 60 && worstError > 0.5; ++frame) {
+    const double amount = std::min(1.0, frame / 30.0);
+    stepDynamic(model, amount, state, 60);
+    if (amount < 1.0) continue;
+    worstError = 0.0;
+    for (double error : creaseAngleError(model, state.positions, 1.0, state.hingeAngles))
+      worstError = std::max(worstError, std::abs(error));
+  }
+  EXPECT_LE(worstError, 0.5) << "after " << frame - 1 << " frames";
+  double worstStrain = 0.0;
+  for (double strain : edgeStrain(model, state.positions))
+    worstStrain = std::max(worstStrain, std::abs(strain));
+  EXPECT_LE(worstStrain, 1e-3);
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j])
+      EXPECT_NEAR(std::abs(state.hingeAngles[j]) * kDegrees, 180.0, 0.5) << "hinge " << j;
+  std::fprintf(stderr, "waterbomb (6 creases), dynamic: %zu frames, worst crease error %.3f\n",
+               frame - 1, worstError);
+}
+
 // The largest crease angle error (degrees) of the settled states at 25, 50 and 75%.
 double worstCreaseErrorAlong(const BarHingeModel& model) {
   SimulationState state = flatState(model);

@@ -489,6 +489,14 @@ void buildGatherLists(BarHingeModel& model) {
 
 }  // namespace
 
+ModelOptions simulatorModelOptions() {
+  ModelOptions options;
+  options.axialStiffness = 20.0;
+  options.creaseStiffness = 0.7;
+  options.facetStiffness = 0.2;
+  return options;
+}
+
 BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& options) {
   BarHingeModel model;
   model.mode = options.mode;
