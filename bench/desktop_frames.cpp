@@ -3,8 +3,8 @@
 // runs `curvefold design` on a private Xvfb, on the default cylinder at resolution 82 (10,004
 // triangles) with a 2-fold target, and drives it as a person would (xdotool). Each round clicks
 // "Load target" (the field holds the target's path: it is read, checked and sampled anew) and at
-// once presses S (a suggestion asked while the target loads), waits 4 s for the suggestion, then
-// presses S twice 0.3 s apart (a newer request abandons the search in flight) and waits 4 s.
+// once presses S (a suggestion asked while the target loads), waits 10 s for the suggestion, then
+// presses S twice 0.3 s apart (a newer request abandons the search in flight) and waits 10 s.
 // The window writes each frame's duration, the frame thread's CPU time in it, and the frames a
 // suggestion was asked and offered in (--frame-times); this prints the median, 99th percentile and
 // longest of both, and each suggestion's latency (from the frame that asked to the frame it joined,
@@ -13,7 +13,8 @@
 // the panel, what lavapipe does on that thread); the duration adds lavapipe's rasteriser threads
 // and whatever else shares the cores (the search's threads, other processes).
 //
-//   build/bench/desktop_frames [ROUNDS] [--idle]   (default 4 rounds; needs Xvfb and xdotool)
+//   build/bench/desktop_frames [ROUNDS] [--idle]   (default 4 rounds; needs Xvfb and xdotool;
+//   CURVEFOLD=path/to/curvefold measures another build)
 //
 // --idle: the same rounds with neither a suggestion nor a load (the pointer only moves), to tell
 // what the machine's load does to the frames from what the studio does.
@@ -101,7 +102,8 @@ int main(int argc, char** argv) {
   const bool idle = argc > 2 && std::string(argv[2]) == "--idle";
   const fs::path dir = fs::temp_directory_path() / ("curvefold-frames-" + std::to_string(getpid()));
   fs::create_directories(dir);
-  const std::string binary = CURVEFOLD_BINARY;
+  // CURVEFOLD names another build of curvefold to measure (a before and after on one machine).
+  const std::string binary = std::getenv("CURVEFOLD") ? std::getenv("CURVEFOLD") : CURVEFOLD_BINARY;
   const fs::path design = dir / "cylinder.curvefold.json";
   if (shell(binary + " new cylinder --resolution 82 -o " + design.string() + " >/dev/null") != 0) {
     std::cerr << "desktop_frames: `curvefold new` failed\n";
@@ -146,14 +148,14 @@ int main(int argc, char** argv) {
   shell("sleep 2");
   for (int round = 0; round < rounds; ++round) {
     if (idle) {
-      shell(at({kWidth * 0.75f, kHeight * 0.5f}) + "sleep 0.3 && " + at(load) + "sleep 4");
+      shell(at({kWidth * 0.75f, kHeight * 0.5f}) + "sleep 0.3 && " + at(load) + "sleep 20");
       continue;
     }
     // Load the target again and ask while it loads, then (the pointer off the panel, so the
     // keys reach the window) ask twice: the second request abandons the first's search.
     const std::string suggest = env + "xdotool key --window " + window + " s && ";
-    shell(click(load) + at({kWidth * 0.75f, kHeight * 0.5f}) + suggest + "sleep 4 && " + suggest +
-          "sleep 0.3 && " + suggest + "sleep 4");
+    shell(click(load) + at({kWidth * 0.75f, kHeight * 0.5f}) + suggest + "sleep 10 && " + suggest +
+          "sleep 0.3 && " + suggest + "sleep 10");
   }
   shell(env + "xdotool key --window " + window + " ctrl+q || true");
   for (int i = 0; i < 300 && !fs::exists(times); ++i)

@@ -164,7 +164,10 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
     if (worker_)
       worker_->retarget(fitter_);
     else
-      worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_);
+      // The frame and the renderer before the search (issue 38, 3: on two cores the search took
+      // them from lavapipe as an equal, and frames waited).
+      worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_,
+                                                   SuggestionWorker::kYieldToFrames);
   }
   measured_.reset();
   measuredCurrent_ = false;
