@@ -596,7 +596,9 @@ void runDesigner(const DesignerOptions& options) {
   session::Document doc =
       session::makeDocument(start.design, options.resume ? start.autosavePath : options.input);
   // Read and checked before any window or file: a bad target is one line and nothing else.
-  studio::StudioTarget goal;
+  // The search below the frame: lavapipe draws on the same cores (docs/performance.md).
+  studio::StudioTarget goal(false, SuggestionWorker::kDefaultTimeLimit, {},
+                            SuggestionWorker::kYieldToFrames);
   if (!options.target.empty()) goal.loadNow(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
   session::SessionOutputs outputs(start.autosavePath, options.record,
