@@ -56,7 +56,9 @@ const fs::path& targetFile() {
 // A studio with the target loaded and a search running `intoSearch` seconds.
 struct Searching {
   session::Document doc = session::makeDocument(Design{kCylinder, {}}, "cylinder");
-  StudioTarget goal;
+  // As the desktop window and the headset have it: the search below the frame.
+  StudioTarget goal{
+      false, SuggestionWorker::kDefaultTimeLimit, {}, SuggestionWorker::kYieldToFrames};
   explicit Searching(double intoSearch) {
     goal.loadNow(targetFile().string(), doc);
     InputFrame frame;

@@ -1,13 +1,20 @@
 // The designer window's frames while a target loads and a suggestion is searched (issue 38, 3:
 // "no frame over 50 ms while suggesting, on a 10k sheet, lavapipe"). Not a Google Benchmark: it
 // runs `curvefold design` on a private Xvfb, on the default cylinder at resolution 82 (10,004
-// triangles) with a 2-fold target, and drives it as a person would (xdotool): each round presses
-// S (suggest) and, while the search runs, "Load target" (the field holds the target's path: it is
-// read, checked and sampled anew), then waits 4 s. The window writes each frame's duration
-// (--frame-times); this prints their median, 99th percentile and the longest, leaving out the
-// first second (the window's start: pipelines, the font atlas).
+// triangles) with a 2-fold target, and drives it as a person would (xdotool). Each round clicks
+// "Load target" (the field holds the target's path: it is read, checked and sampled anew) and at
+// once presses S (a suggestion asked while the target loads), waits 10 s for the suggestion, then
+// presses S twice 0.3 s apart (a newer request abandons the search in flight) and waits 10 s.
+// The window writes each frame's duration, the frame thread's CPU time in it, and the frames a
+// suggestion was asked and offered in (--frame-times); this prints the median, 99th percentile and
+// longest of both, and each suggestion's latency (from the frame that asked to the frame it joined,
+// in window time), leaving out the first second (the window's start: pipelines, the font atlas).
+// The frame thread's CPU time is the frame's own work (the studio's calls, the scene, the upload,
+// the panel, what lavapipe does on that thread); the duration adds lavapipe's rasteriser threads
+// and whatever else shares the cores (the search's threads, other processes).
 //
-//   build/bench/desktop_frames [ROUNDS] [--idle]   (default 4 rounds; needs Xvfb and xdotool)
+//   build/bench/desktop_frames [ROUNDS] [--idle]   (default 4 rounds; needs Xvfb and xdotool;
+//   CURVEFOLD=path/to/curvefold measures another build)
 //
 // --idle: the same rounds with neither a suggestion nor a load (the pointer only moves), to tell
 // what the machine's load does to the frames from what the studio does.
@@ -20,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -94,7 +102,8 @@ int main(int argc, char** argv) {
   const bool idle = argc > 2 && std::string(argv[2]) == "--idle";
   const fs::path dir = fs::temp_directory_path() / ("curvefold-frames-" + std::to_string(getpid()));
   fs::create_directories(dir);
-  const std::string binary = CURVEFOLD_BINARY;
+  // CURVEFOLD names another build of curvefold to measure (a before and after on one machine).
+  const std::string binary = std::getenv("CURVEFOLD") ? std::getenv("CURVEFOLD") : CURVEFOLD_BINARY;
   const fs::path design = dir / "cylinder.curvefold.json";
   if (shell(binary + " new cylinder --resolution 82 -o " + design.string() + " >/dev/null") != 0) {
     std::cerr << "desktop_frames: `curvefold new` failed\n";
@@ -139,13 +148,14 @@ int main(int argc, char** argv) {
   shell("sleep 2");
   for (int round = 0; round < rounds; ++round) {
     if (idle) {
-      shell(at({kWidth * 0.75f, kHeight * 0.5f}) + "sleep 0.3 && " + at(load) + "sleep 4");
+      shell(at({kWidth * 0.75f, kHeight * 0.5f}) + "sleep 0.3 && " + at(load) + "sleep 20");
       continue;
     }
-    // Suggest (the pointer off the panel, so the key reaches the window), then load the target
-    // again (the field holds its path: read, checked and sampled anew) while the search runs.
-    shell(at({kWidth * 0.75f, kHeight * 0.5f}) + env + "xdotool key --window " + window +
-          " s && sleep 0.3 && " + click(load) + "sleep 4");
+    // Load the target again and ask while it loads, then (the pointer off the panel, so the
+    // keys reach the window) ask twice: the second request abandons the first's search.
+    const std::string suggest = env + "xdotool key --window " + window + " s && ";
+    shell(click(load) + at({kWidth * 0.75f, kHeight * 0.5f}) + suggest + "sleep 10 && " + suggest +
+          "sleep 0.3 && " + suggest + "sleep 10");
   }
   shell(env + "xdotool key --window " + window + " ctrl+q || true");
   for (int i = 0; i < 300 && !fs::exists(times); ++i)
@@ -153,28 +163,72 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   shell("kill " + slurp(xvfbPid) + " 2>/dev/null");
 
-  std::vector<double> all;
-  std::istringstream in(slurp(times));
-  for (double ms = 0.0; in >> ms;) all.push_back(ms);
+  // Each line: the frame's duration, the frame thread's CPU time (ms), and a note.
+  struct FrameTime {
+    double wallMs = 0.0, cpuMs = 0.0;
+    std::string note;
+  };
+  std::vector<FrameTime> all;
+  {
+    std::istringstream in(slurp(times));
+    for (std::string line; std::getline(in, line);) {
+      std::istringstream fields(line);
+      FrameTime frame;
+      if (fields >> frame.wallMs >> frame.cpuMs) {
+        fields >> frame.note;
+        all.push_back(frame);
+      }
+    }
+  }
   // The first second is the window's start.
   std::size_t first = 0;
-  for (double sum = 0.0; first < all.size() && sum < 1000.0; ++first) sum += all[first];
-  std::vector<double> frames(all.begin() + std::ptrdiff_t(first), all.end());
+  for (double sum = 0.0; first < all.size() && sum < 1000.0; ++first) sum += all[first].wallMs;
+  const std::vector<FrameTime> frames(all.begin() + std::ptrdiff_t(first), all.end());
   if (frames.empty()) {
     std::cerr << "desktop_frames: no frames measured; the designer said: " << slurp(log) << "\n";
     return 1;
   }
-  std::vector<double> sorted = frames;
-  std::sort(sorted.begin(), sorted.end());
-  const auto quantile = [&](double q) {
-    return sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
-  };
   std::printf("frames %zu (after the first second), rounds %d%s\n", frames.size(), rounds,
               idle ? " (idle: no suggestion, no load)" : "");
-  std::printf("median %.2f ms, 99th percentile %.2f ms, longest %.2f ms\n", quantile(0.5),
-              quantile(0.99), sorted.back());
-  std::printf("frames over 50 ms: %zd\n",
-              std::count_if(frames.begin(), frames.end(), [](double ms) { return ms > 50.0; }));
+  const auto summary = [](const char* what, std::vector<double> ms) {
+    std::sort(ms.begin(), ms.end());
+    const auto quantile = [&](double q) {
+      return ms[std::min(ms.size() - 1, std::size_t(q * double(ms.size())))];
+    };
+    std::printf("%s: median %.2f ms, 99th percentile %.2f ms, longest %.2f ms, over 50 ms: %zd\n",
+                what, quantile(0.5), quantile(0.99), ms.back(),
+                std::count_if(ms.begin(), ms.end(), [](double v) { return v > 50.0; }));
+  };
+  std::vector<double> wall, cpu;
+  for (const FrameTime& frame : frames) {
+    wall.push_back(frame.wallMs);
+    cpu.push_back(frame.cpuMs);
+  }
+  summary("frame duration", wall);
+  summary("frame thread CPU", cpu);
+  // A suggestion's latency: the frames after the one that asked, up to the one it joined. A
+  // request followed by a newer one before its answer was abandoned (not counted).
+  std::vector<double> latencies;
+  std::optional<double> sinceAsked;
+  for (const FrameTime& frame : frames) {
+    if (sinceAsked) *sinceAsked += frame.wallMs;
+    if (frame.note == "suggest") sinceAsked = 0.0;
+    if (frame.note == "offered" && sinceAsked) {
+      latencies.push_back(*sinceAsked);
+      sinceAsked.reset();
+    }
+  }
+  std::printf(
+      "frames that asked for a suggestion %zd, started a load %zd, took in a suggestion %zd\n",
+      std::count_if(frames.begin(), frames.end(), [](auto& f) { return f.note == "suggest"; }),
+      std::count_if(frames.begin(), frames.end(), [](auto& f) { return f.note == "load"; }),
+      std::count_if(frames.begin(), frames.end(), [](auto& f) { return f.note == "offered"; }));
+  std::sort(latencies.begin(), latencies.end());
+  if (!latencies.empty())
+    std::printf("suggestions offered %zu: latency median %.0f ms, longest %.0f ms\n",
+                latencies.size(), latencies[latencies.size() / 2], latencies.back());
+  else if (!idle)
+    std::printf("no suggestion offered\n");
   std::printf("the designer said: %s\n", slurp(log).empty() ? "nothing" : slurp(log).c_str());
   fs::remove_all(dir);
   return 0;

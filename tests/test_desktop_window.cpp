@@ -7,6 +7,9 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
@@ -105,11 +108,11 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
   const fs::path target =
       fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj";
   const fs::path recording = dir() / "session.jsonl", autosave = dir() / "auto.curvefold.json",
-                 log = dir() / "designer.log";
-  const std::string window =
-      startDesigner("cylinder --size 640x480 --target " + target.string() + " --record " +
-                        recording.string() + " --autosave " + autosave.string(),
-                    log);
+                 log = dir() / "designer.log", times = dir() / "frames.txt";
+  const std::string window = startDesigner(
+      "cylinder --size 640x480 --target " + target.string() + " --record " + recording.string() +
+          " --autosave " + autosave.string() + " --frame-times " + times.string(),
+      log);
   ASSERT_FALSE(window.empty()) << slurp(log);
   ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
   // T takes nothing until the suggestion is there; the autosave says when a fold was made.
@@ -126,6 +129,22 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
   const std::string frames = slurp(recording);
   EXPECT_NE(frames.find("\"suggestions\":[{\"seed\""), std::string::npos);
   EXPECT_NE(frames.find("take_suggestion"), std::string::npos);
+
+  // --frame-times (what bench/desktop_frames reads): each frame's duration and its thread's CPU
+  // time, the frame that asked for the suggestion and, later, the one it joined.
+  std::istringstream lines(slurp(times));
+  std::vector<std::string> notes;
+  std::size_t frameCount = 0;
+  for (std::string line; std::getline(lines, line); ++frameCount) {
+    std::istringstream fields(line);
+    double wallMs = -1.0, cpuMs = -1.0;
+    ASSERT_TRUE(fields >> wallMs >> cpuMs) << line;
+    EXPECT_GE(cpuMs, 0.0) << line;
+    EXPECT_LE(cpuMs, wallMs + 1.0) << line;  // one thread's time, within the clocks' steps
+    if (std::string note; fields >> note) notes.push_back(note);
+  }
+  EXPECT_GT(frameCount, 10u);
+  EXPECT_EQ(notes, (std::vector<std::string>{"suggest", "offered"}));
 
   const fs::path design = replay(recording);
   ASSERT_FALSE(design.empty()) << "the recording did not replay";

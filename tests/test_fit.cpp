@@ -1,8 +1,18 @@
 // Folding toward a goal (issue 27): distances between surfaces, the target's crease planes, its
 // unfolding, and the fold search, on targets made from known folds.
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -494,6 +504,46 @@ TEST(SuggestionWorker, AnswersWithinItsTimeLimit) {
   const double answered = secondsUntil([&] { return !worker.busy(); });
   EXPECT_LT(answered, 0.6 * searched);
   EXPECT_TRUE(worker.take().has_value());
+}
+
+// The nice of each of this process's threads (/proc/self/task/*/stat, the 19th field).
+std::vector<int> threadNices() {
+  std::vector<int> nices;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "stat");
+    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t afterName = stat.rfind(')');
+    if (afterName == std::string::npos) continue;
+    std::istringstream fields(stat.substr(afterName + 1));
+    std::string field;
+    for (int k = 3; k <= 19 && fields >> field; ++k)
+      if (k == 19) nices.push_back(std::stoi(field));
+  }
+  return nices;
+}
+
+// A frame loop's search gives the cores to the frame first (issue 38, 3: on two cores it took them
+// from the window's renderer as an equal): it runs at the nice asked, the caller's thread stays.
+TEST(SuggestionWorker, SearchesBelowItsCallersPriority) {
+  errno = 0;
+  const int callerNice = getpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)));
+  ASSERT_EQ(errno, 0);
+  const RandomFoldTarget target = makeRandomFoldTarget("rectangle", {{"resolution", 24}}, 1, 1000);
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet), quickSettings());
+  SuggestionWorker worker(fitter, SuggestionWorker::kDefaultTimeLimit,
+                          SuggestionWorker::kYieldToFrames);
+  worker.request({std::make_shared<const Sheet>(target.initial), {}, ""}, 2);
+  // The highest nice among the threads while it searches (a second at most: its thread lowers
+  // itself as it starts).
+  int highestNice = callerNice;
+  const auto start = std::chrono::steady_clock::now();
+  while (highestNice < 10 && std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) {
+    for (const int nice : threadNices()) highestNice = std::max(highestNice, nice);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_GE(highestNice, std::max(callerNice, 10));
+  EXPECT_EQ(getpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid))), callerNice);
+  EXPECT_TRUE(waitForAnswer(worker).has_value());
 }
 
 TEST(SuggestionWorker, EndsPromptlyWhileSearching) {

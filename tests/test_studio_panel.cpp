@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 
 #include <cerrno>
 #include <chrono>
@@ -789,6 +790,28 @@ TEST_F(StudioPanelTest, EveryLineIsWholeAtThePanelsWidth) {
                            << suggestion;
       }
     }
+}
+
+// Issue 38, 4: ImGui's own wrap also breaks after a '.', and the desktop's panel showed
+// "Chamfer 0." on one row and "474 mm" on the next. The target's lines break at spaces only, each
+// row within the width.
+TEST_F(StudioPanelTest, TheTargetLinesBreakAtSpacesNotInAFigure) {
+  frame();  // a font for CalcTextSize
+  const std::string line = "Hausdorff 24.9 mm (10.2%), Chamfer 0.474 mm (0.193%)";
+  const float whole = ImGui::CalcTextSize(line.c_str()).x;
+  for (const float part : {0.35f, 0.5f, 0.62f, 0.8f}) {
+    const float width = part * whole;
+    const std::string wrapped = studio::wrapAtSpaces(line, width);
+    std::string unwrapped = wrapped;
+    std::replace(unwrapped.begin(), unwrapped.end(), '\n', ' ');
+    EXPECT_EQ(unwrapped, line) << wrapped;
+    EXPECT_NE(wrapped.find('\n'), std::string::npos) << wrapped;
+    std::istringstream rows(wrapped);
+    for (std::string row; std::getline(rows, row);)
+      EXPECT_LE(ImGui::CalcTextSize(row.c_str()).x, width) << "at " << width << ": " << row;
+  }
+  // A word wider than the width stays whole, on a row of its own.
+  EXPECT_EQ(studio::wrapAtSpaces("a /very/long/path.obj b", 20.0f), "a\n/very/long/path.obj\nb");
 }
 
 // The wrapped lines keep the items where they are, as long as they fit the box's rows: a replay,

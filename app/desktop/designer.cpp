@@ -9,6 +9,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
 
+#include <time.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -219,11 +221,27 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
   });
 }
 
-void writeFrameTimes(const std::string& path, const std::vector<float>& frameTimes) {
+// One frame for --frame-times: its duration, the frame thread's CPU time in it (what the frame's
+// own work costs, apart from the other threads and processes sharing the cores), and what the
+// studio did in it ("suggest": a suggestion asked, "offered": one joined the frame).
+struct FrameTime {
+  float wallMs = 0.0f;
+  float cpuMs = 0.0f;
+  const char* note = "";
+};
+
+double threadCpuMs() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
+}
+
+void writeFrameTimes(const std::string& path, const std::vector<FrameTime>& frameTimes) {
   std::string text;
-  char line[32];
-  for (const float ms : frameTimes) {
-    std::snprintf(line, sizeof line, "%.3f\n", ms);
+  char line[64];
+  for (const FrameTime& frame : frameTimes) {
+    std::snprintf(line, sizeof line, "%.3f %.3f%s%s\n", frame.wallMs, frame.cpuMs,
+                  *frame.note ? " " : "", frame.note);
     text += line;
   }
   writeFileAtomically(path, text);
@@ -291,8 +309,10 @@ class DesignerWindow {
   const void* viewedSession_ = nullptr;
   bool sheetShown_ = true;
   const TriangleMesh* framedTarget_ = nullptr;
-  std::vector<float> frameTimes_;
-  SimulationPuller puller_;  // the mouse's pull of the simulated sheet
+  std::vector<FrameTime> frameTimes_;
+  double lastFrameCpuMs_ = 0.0;
+  const char* frameNote_ = "";  // what the studio did this frame, for --frame-times
+  SimulationPuller puller_;     // the mouse's pull of the simulated sheet
   // Input time, which never goes backwards.
   Clock::time_point start_, lastFrame_;
   double lastTime_ = 0.0;
@@ -405,6 +425,7 @@ void DesignerWindow::replaceDocument(Design next, const std::string& name) {
 void DesignerWindow::run() {
   start_ = Clock::now();
   lastFrame_ = Clock::now();
+  lastFrameCpuMs_ = threadCpuMs();
   while (!glfwWindowShouldClose(window_) && !state_.quit) {
     glfwPollEvents();
     {
@@ -434,8 +455,14 @@ studio::StudioActions DesignerWindow::panelActions() {
         {1200, 800});
     return PdfPicture{image.width, image.height, image.pixels};
   };
-  actions.loadTarget = [this](const std::string& path) { goal_.load(path, doc_); };
-  actions.suggest = [this] { goal_.suggest(doc_); };
+  actions.loadTarget = [this](const std::string& path) {
+    goal_.load(path, doc_);
+    frameNote_ = "load";
+  };
+  actions.suggest = [this] {
+    goal_.suggest(doc_);
+    frameNote_ = "suggest";
+  };
   actions.recentChanged = [this](const std::vector<std::string>& recent) {
     try {
       session::saveRecentDesigns(recent);
@@ -468,6 +495,7 @@ InputFrame DesignerWindow::nextInput() {
     state_.suggest = false;
     try {
       goal_.suggest(doc_);
+      frameNote_ = "suggest";
     } catch (const std::exception& e) {
       panel_.setMessage(e.what());
     }
@@ -490,6 +518,7 @@ InputFrame DesignerWindow::nextInput() {
 
 void DesignerWindow::process(InputFrame& input) {
   goal_.poll(doc_, input);  // a finished search's folds join the frame, and its recording
+  if (!input.suggestions.empty()) frameNote_ = "offered";
   const Clock::time_point processStart = Clock::now();
   doc_.core->process(input);
   if (doc_.session->dragging() || doc_.core->simulation())
@@ -540,7 +569,11 @@ void DesignerWindow::timeFrame() {
   const Clock::time_point now = Clock::now();
   stats_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
   lastFrame_ = now;
-  if (!options_.frameTimes.empty()) frameTimes_.push_back(float(stats_.frameMs));
+  const double cpuMs = threadCpuMs();
+  if (!options_.frameTimes.empty())
+    frameTimes_.push_back({float(stats_.frameMs), float(cpuMs - lastFrameCpuMs_), frameNote_});
+  lastFrameCpuMs_ = cpuMs;
+  frameNote_ = "";
 }
 
 void DesignerWindow::finish() {
@@ -563,7 +596,9 @@ void runDesigner(const DesignerOptions& options) {
   session::Document doc =
       session::makeDocument(start.design, options.resume ? start.autosavePath : options.input);
   // Read and checked before any window or file: a bad target is one line and nothing else.
-  studio::StudioTarget goal;
+  // The search below the frame: lavapipe draws on the same cores (docs/performance.md).
+  studio::StudioTarget goal(false, SuggestionWorker::kDefaultTimeLimit, {},
+                            SuggestionWorker::kYieldToFrames);
   if (!options.target.empty()) goal.loadNow(options.target, doc);
   // Declared after doc, so that it finishes (saves) before doc goes away, on every way out.
   session::SessionOutputs outputs(start.autosavePath, options.record,

@@ -33,7 +33,7 @@ HeadsetStudio::HeadsetStudio(session::Document& doc, HeadsetStudioOptions option
              "Ray + trigger: panel. Grip: hold the sheet; both grips: move, turn, scale. Trigger "
              "at the tip: fold (simulating: pull the paper). Panel button: show or hide this "
              "panel."),
-      target_(options_.replaying, options_.suggestionSeconds) {
+      target_(options_.replaying, options_.suggestionSeconds, {}, options_.searchNice) {
   context_ = ImGui::CreateContext();
   ImGuiContextScope scope(context_);
   ImGuiIO& io = ImGui::GetIO();

@@ -58,6 +58,8 @@ struct HeadsetStudioOptions {
   bool replaying = false;  // a replay: suggestions come from the frames, nothing is searched
   // How long a suggestion may search before it answers with the best it has.
   double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit;
+  // The nice the search runs at (SuggestionWorker): the headset's frames ask kYieldToFrames.
+  int searchNice = 0;
 };
 
 class HeadsetStudio {

@@ -27,6 +27,24 @@
 
 namespace curvefold::studio {
 
+std::string wrapAtSpaces(const std::string& text, float width) {
+  std::string wrapped, line;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t space = std::min(text.find(' ', at), text.size());
+    const std::string word = text.substr(at, space - at);
+    const std::string longer = line.empty() ? word : line + ' ' + word;
+    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+      wrapped += line + '\n';
+      line = word;
+    } else {
+      line = longer;
+    }
+    at = space + 1;
+  }
+  return wrapped + line;
+}
+
 StudioPanel::StudioPanel(bool recording, std::string help, std::string exportBase)
     : recording_(recording), help_(std::move(help)), exportBase_(std::move(exportBase)) {
   resetParameters();
@@ -218,15 +236,18 @@ void StudioPanel::targetLines(const StudioStats& stats) {
   // that no line is ever cut or hidden.
   const float width = ImGui::GetContentRegionAvail().x;
   const ImGuiStyle& style = ImGui::GetStyle();
+  // Broken at spaces, so that a figure is never split at its decimal point.
+  const std::string target = wrapAtSpaces(stats.targetLine, width),
+                    suggestion = wrapAtSpaces(stats.suggestionLine, width);
   float needed = 0.0f;
-  for (const std::string* line : {&stats.targetLine, &stats.suggestionLine})
+  for (const std::string* line : {&target, &suggestion})
     needed += ImGui::CalcTextSize(line->c_str(), nullptr, false, width).y + style.ItemSpacing.y;
   const float height =
       std::max(float(kTargetLineRows) * ImGui::GetTextLineHeightWithSpacing(), needed);
   ImGui::BeginChild("##target lines", ImVec2(0.0f, height), false,
                     ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar);
-  ImGui::TextWrapped("%s", stats.targetLine.c_str());
-  ImGui::TextWrapped("%s", stats.suggestionLine.c_str());
+  ImGui::TextWrapped("%s", target.c_str());
+  ImGui::TextWrapped("%s", suggestion.c_str());
   ImGui::EndChild();
 }
 

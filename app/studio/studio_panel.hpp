@@ -60,6 +60,11 @@ struct StudioStats {
   std::string targetLine, suggestionLine;
 };
 
+// `text` broken at its spaces so that each line fits `width` in the current ImGui font (ImGui's
+// own wrap also breaks after a '.', which split "Chamfer 0.474 mm" as "0." / "474"); a word wider
+// than `width` is left whole on a line of its own, for ImGui to wrap.
+std::string wrapAtSpaces(const std::string& text, float width);
+
 class StudioPanel {
  public:
   // recording: the session is being recorded, so its sheet is fixed by the recording's header (no

@@ -58,9 +58,11 @@ StudioStart studioStart(const std::string& input, const std::string& target,
   return {session::designFor(input, defaultSurface), defaultSurface};
 }
 
-StudioTarget::StudioTarget(bool replaying, double suggestionSeconds, MeshReader reader)
+StudioTarget::StudioTarget(bool replaying, double suggestionSeconds, MeshReader reader,
+                           int searchNice)
     : replaying_(replaying),
       suggestionSeconds_(suggestionSeconds),
+      searchNice_(searchNice),
       reader_(reader ? std::move(reader) : MeshReader(readObjMesh)) {}
 
 // The worker, the loads and the measures still running are waited for here, when the studio ends
@@ -164,7 +166,7 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
     if (worker_)
       worker_->retarget(fitter_);
     else
-      worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_);
+      worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_, searchNice_);
   }
   measured_.reset();
   measuredCurrent_ = false;

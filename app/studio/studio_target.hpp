@@ -60,9 +60,11 @@ class StudioTarget {
   // replaying: suggestions come from the frames (a replay's), and nothing is searched or measured;
   // a load is made at once (a replay runs as fast as it can, and the same way every time).
   // suggestionSeconds: how long a search may take before it answers with what it has.
+  // searchNice: the nice its threads run at (a window's or headset's frames ask
+  // SuggestionWorker::kYieldToFrames, so that the frame and a CPU renderer get the cores first).
   explicit StudioTarget(bool replaying = false,
                         double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit,
-                        MeshReader reader = {});
+                        MeshReader reader = {}, int searchNice = 0);
   ~StudioTarget();
   StudioTarget(const StudioTarget&) = delete;
   StudioTarget& operator=(const StudioTarget&) = delete;
@@ -125,6 +127,7 @@ class StudioTarget {
 
   bool replaying_;
   double suggestionSeconds_;
+  int searchNice_;
   MeshReader reader_;
   std::string path_;
   std::future<Loaded> loading_;

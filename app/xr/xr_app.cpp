@@ -158,6 +158,7 @@ void XrApp::makeStudio(const Pose& sheetFrame) {
   options.name = options_.input.empty() ? startName_ : options_.input;
   options.recent = session::loadRecentDesigns();
   options.target = options_.target;
+  options.searchNice = SuggestionWorker::kYieldToFrames;  // the frame and the eyes first
   options.sheetFrame = sheetFrame;
   studio::HeadsetStudioHost host;
   host.documentReplacing = [this](const std::string& name) {

@@ -1,13 +1,66 @@
 #include "engine/fit/suggestion_worker.hpp"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <exception>
+
+#include <tbb/task_arena.h>
+#include <tbb/task_scheduler_observer.h>
 
 #include "engine/geometry/symmetry.hpp"
 
 namespace curvefold {
 
-SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter, double timeLimit)
-    : fitter_(std::move(fitter)), timeLimit_(timeLimit), thread_([this] { run(); }) {}
+namespace {
+
+pid_t threadId() {
+  return pid_t(syscall(SYS_gettid));
+}
+
+int threadNice() {
+  errno = 0;
+  const int nice = getpriority(PRIO_PROCESS, id_t(threadId()));
+  return errno == 0 ? nice : 0;
+}
+
+void setThreadNice(int nice) {
+  setpriority(PRIO_PROCESS, id_t(threadId()), nice);
+}
+
+// TBB's workers that join the search's arena run at `nice` while in it, and go back to their own
+// when they leave where the system lets them (going back up needs CAP_SYS_NICE or RLIMIT_NICE:
+// without, a worker stays at `nice`, which only slows other parallel work when the cores are
+// contended).
+class NiceWhileSearching : public tbb::task_scheduler_observer {
+ public:
+  NiceWhileSearching(tbb::task_arena& arena, int nice)
+      : tbb::task_scheduler_observer(arena), nice_(nice) {
+    observe(true);
+  }
+  ~NiceWhileSearching() override { observe(false); }
+  void on_scheduler_entry(bool worker) override {
+    if (!worker) return;
+    before_ = threadNice();
+    if (before_ < nice_) setThreadNice(nice_);
+  }
+  void on_scheduler_exit(bool worker) override {
+    if (worker && before_ < nice_) setThreadNice(before_);
+  }
+
+ private:
+  const int nice_;
+  static thread_local int before_;
+};
+thread_local int NiceWhileSearching::before_ = 0;
+
+}  // namespace
+
+SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter, double timeLimit,
+                                   int nice)
+    : fitter_(std::move(fitter)), timeLimit_(timeLimit), nice_(nice), thread_([this] { run(); }) {}
 
 SuggestionWorker::~SuggestionWorker() {
   {
@@ -67,6 +120,11 @@ std::optional<SuggestionWorker::Answer> SuggestionWorker::take() {
 }
 
 void SuggestionWorker::run() {
+  // This thread only searches: it stays at nice_, and the TBB workers in its arena go to it.
+  if (threadNice() < nice_) setThreadNice(nice_);
+  tbb::task_arena arena;
+  arena.initialize();
+  NiceWhileSearching lowered(arena, nice_);
   while (true) {
     std::pair<DesignSnapshot, std::size_t> job;
     std::shared_ptr<const FoldFitter> fitter;
@@ -92,7 +150,7 @@ void SuggestionWorker::run() {
       Deadline deadline = Deadline::in(timeLimit_);
       deadline.cancelled = &abandon_;
       deadline.answerLate = true;  // out of time, the best scored so far
-      answer.suggestions = fitter->suggest(session, job.second, deadline);
+      arena.execute([&] { answer.suggestions = fitter->suggest(session, job.second, deadline); });
     } catch (const std::exception& e) {
       answer.error = e.what();
     }

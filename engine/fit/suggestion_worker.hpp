@@ -4,7 +4,10 @@
 // cancel (the design changed) or a new target abandons the one in flight: its search stops at its
 // next check (well within 100 ms: bench/bench_fit.cpp) and its result is dropped; none of these
 // calls waits for the search. Each search has a time limit; only the destructor waits (for the
-// search to see it is abandoned), so a frame loop keeps its worker until it ends.
+// search to see it is abandoned), so a frame loop keeps its worker until it ends. A frame loop
+// gives the search a nice (kYieldToFrames) so that on a machine of few cores the frame and a CPU
+// renderer get the cores first (docs/performance.md, "The window itself"); its result does not
+// depend on it, its time does: beside a renderer that keeps the cores busy it takes longer.
 #pragma once
 
 #include <atomic>
@@ -33,8 +36,13 @@ class SuggestionWorker {
   // Seconds a search may take before it answers with the best it has scored (at least one
   // suggestion when any candidate brings the design closer).
   static constexpr double kDefaultTimeLimit = 10.0;
+  // The nice a frame loop's search runs at: about a tenth of a contended core beside a thread at
+  // nice 0, all of an idle one.
+  static constexpr int kYieldToFrames = 10;
+  // nice: the search's threads (this worker's and TBB's while they search for it) run at it, or
+  // at their own when that is higher; the caller's thread is left as it is.
   explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter,
-                            double timeLimit = kDefaultTimeLimit);
+                            double timeLimit = kDefaultTimeLimit, int nice = 0);
   ~SuggestionWorker();  // abandons the request in flight and waits for the thread
   SuggestionWorker(const SuggestionWorker&) = delete;
   SuggestionWorker& operator=(const SuggestionWorker&) = delete;
@@ -63,6 +71,7 @@ class SuggestionWorker {
 
   std::shared_ptr<const FoldFitter> fitter_;  // guarded by mutex_
   const double timeLimit_;
+  const int nice_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<std::pair<DesignSnapshot, std::size_t>> pending_;
