@@ -244,6 +244,44 @@ TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
   testing::expectInvariants(session.fixed(), session.initial());
 }
 
+// A whole-sheet fold made after a symmetric fold with its images (four corners folded up by
+// rotational:4, then the sheet moved whole along a drag): the target is two groups, the corners'
+// and the whole sheet's (whose images are none: it moves every image of its grab).
+TEST(FitReading, AWholeSheetFoldAfterASymmetricFoldIsFoundToo) {
+  const Sheet initial = makeSurface("square", {{"resolution", 16}});
+  const Symmetry symmetry = parseSymmetry("rotational:4:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({0.1, 0.1, 0.0});
+  folding.updateDrag({0.03, 0.05, 0.06});  // a corner folded up, and its three images
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 4u);
+  const Sheet before = folding.fixed();
+  const glm::dvec3 along = glm::normalize(glm::dvec3(0.6, -0.3, 0.74));
+  glm::dvec3 farthest = before.positions.front();
+  for (const glm::dvec3& p : before.positions)
+    if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
+  folding.beginDragNear(farthest);
+  folding.updateDrag(farthest + 0.15 * along);
+  ASSERT_TRUE(folding.commit());
+  for (std::size_t v = 0; v < before.vertexCount(); ++v)
+    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 6;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 2000;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
 // A blintz (a square's four corners laid by its centre, 1-4 mm above the sheet: folds of about
 // 179 degrees; 1 cm short of the centre, so the flaps do not touch) leaves every crease in the
 // sheet's plane, which mirrors each crease's faces onto each other (not reversed, as a fold turns

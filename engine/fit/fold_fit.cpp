@@ -856,8 +856,13 @@ class FitRun {
     std::vector<ReflectionPlane> planes;
     TargetUnfolding moved;
     std::vector<std::optional<std::vector<glm::dvec3>>> lastAt(motions.size());
+    // A symmetric design's fold brings its images, read as folds of their own: the folds read
+    // take at least one group per `perFold` of them (the sequence is counted once made, below).
+    const std::size_t perFold =
+        session_.symmetry() ? static_cast<std::size_t>(session_.symmetry()->order) : 1;
+    const std::size_t readGroups = (plan.folds.size() + perFold - 1) / perFold;
     const std::size_t most = std::min<std::size_t>(
-        5, options_.maxFolds > plan.folds.size() ? options_.maxFolds - plan.folds.size() : 0);
+        5, options_.maxFolds > readGroups ? options_.maxFolds - readGroups : 0);
     for (int pass = 0; pass < 2 && planes.empty(); ++pass) {
       if (pass == 1) {
         if (deadline.passed()) return false;
@@ -868,10 +873,17 @@ class FitRun {
       }
       // Each count tried on the sheet for every motion, then on the sheet folded by the folds read
       // (a replay, dearer) for every motion.
-      for (std::size_t count = 1; count <= most && planes.empty(); ++count)
+      // A symmetric design lies on its copy only the ways its symmetry keeps (its folds read
+      // onto their images): the first way found, if not one of them, takes more planes, and
+      // those folds make images the target lacks. Every way then, past one plane.
+      const std::size_t upTo =
+          pass == 0 && session_.symmetry() ? std::min<std::size_t>(most, 1) : most;
+      for (std::size_t count = 1; count <= upTo && planes.empty(); ++count)
         for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
           if (deadline.passed()) return false;
-          const bool last = k >= motions.size();
+          // A symmetric design's images are made about the sheet's own centre and axis, which
+          // a whole-sheet fold made first moves: last for it, then.
+          const bool last = (k >= motions.size()) != (session_.symmetry() != nullptr);
           const RigidMotion& motion = motions[k % motions.size()];
           const RigidMotion back{glm::inverse(motion.linear),
                                  -(glm::inverse(motion.linear) * motion.offset)};
@@ -882,10 +894,10 @@ class FitRun {
           std::optional<std::vector<glm::dvec3>>& folded = lastAt[k % motions.size()];
           if (last && !folded) {  // the sheet folded by the folds read, once per motion
             const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
-            const FoldSequence readFirst =
-                replay(movedBack, *lastBranch, session_.initial(), deadline, options_.maxFolds);
-            folded = readFirst.groups.size() == plan.folds.size() ? lastBranch->fixed().positions
-                                                                  : std::vector<glm::dvec3>{};
+            bool everyFoldRead = false;
+            replay(movedBack, *lastBranch, session_.initial(), deadline, options_.maxFolds,
+                   &everyFoldRead);
+            folded = everyFoldRead ? lastBranch->fixed().positions : std::vector<glm::dvec3>{};
           }
           if (last && folded->empty()) continue;
           planes =
@@ -896,8 +908,7 @@ class FitRun {
           }
         }
     }
-    if (planes.empty() || planes.size() + plan.folds.size() > options_.maxFolds ||
-        deadline.passed())
+    if (planes.empty() || planes.size() + readGroups > options_.maxFolds || deadline.passed())
       return false;
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence sequence;
@@ -923,6 +934,7 @@ class FitRun {
       sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
       sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
     }
+    if (sequence.groups.size() > options_.maxFolds) return false;
     return offer(std::move(sequence), *branch);
   }
 
@@ -931,9 +943,11 @@ class FitRun {
   // unfolded target lies on, as `branch` holds it now): a point in 3D may name two (a slit's
   // sides, layers a flat fold laid together); the development names one. A symmetric design's
   // fold brings its images, which the unfolding reads as folds of their own: a fold read whose
-  // plane an image already made is skipped.
+  // plane an image already made is skipped. `everyFoldRead`, when given: whether every fold read
+  // was made (or an image made it), none left for a failure, the deadline or `most`.
   FoldSequence replay(const TargetUnfolding& plan, FoldSession& branch, const Sheet& seedsOn,
-                      const Deadline& deadline, std::size_t most = 0) const {
+                      const Deadline& deadline, std::size_t most = 0,
+                      bool* everyFoldRead = nullptr) const {
     if (most == 0) most = options_.maxFolds;
     const Symmetry* symmetry = session_.symmetry();
     const double size = sheetSize(session_.initial());
@@ -953,16 +967,18 @@ class FitRun {
       seeds.push_back(
           developmentOf(seedsOn, closestSurfacePoint(seedsOn, plan.unfolded[fold.seedVertex])));
     FoldSequence planned;
+    if (everyFoldRead) *everyFoldRead = false;
     for (std::size_t k = 0; k < plan.folds.size(); ++k) {
       if (symmetry && madeAlready(plan.folds[k].plane)) continue;
-      if (planned.groups.size() >= most || deadline.passed()) break;
+      if (planned.groups.size() >= most || deadline.passed()) return planned;
       const std::size_t before = branch.foldCount();
-      if (!makeRead(plan, k, seeds[k], branch)) break;
+      if (!makeRead(plan, k, seeds[k], branch)) return planned;
       planned.folds.insert(
           planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
           branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
       planned.groups.push_back(branch.foldCount() - before);
     }
+    if (everyFoldRead) *everyFoldRead = true;
     return planned;
   }
 

@@ -21,6 +21,8 @@ constexpr double kBendMarginDegrees = 0.5;
 // The least crease (of the diagonal) one unfolding step must take away: a fold of a thin tip
 // leaves a crease a few millimetres long.
 constexpr double kLeastCrease = 0.003;
+// How far (of the diagonal, on average) an unfolding may end from the sheet and still lie on it.
+constexpr double kOffSheet = 1e-3;
 
 struct MeshEdge {
   std::uint32_t a = 0, b = 0;
@@ -229,6 +231,11 @@ struct Unfolder {
         }
       }
     }
+    // No choice ends on the sheet: folds that missed it moved it whole, and which choice lies
+    // nearest it says nothing. The pieces then (each step's smaller side moved), so the largest
+    // part stays and the folds read are the folds made (a symmetric design's read as the images
+    // of one another); the whole motion is found apart (whole_sheet_folds.hpp).
+    if (bestOff > kOffSheet * diagonal * static_cast<double>(probe.size())) bestRest.assign(n, 0);
     TargetUnfolding result;
     Motion motion;
     for (std::size_t u = 0; u < n; ++u) {
