@@ -125,6 +125,30 @@ TEST(PleatFolds, SolveTheHingeAndTurnFromTheTargetsHeightsInAFewTries) {
   EXPECT_NEAR(first.point.y, 0.13, 0.012);
 }
 
+// A saddle falls on both sides of its middle: one step pleats both ends of the trough (four
+// folds, one group), closer than a pleat at either end alone.
+TEST(PleatFolds, TurnBothEndsOfASaddleInOneStep) {
+  TriangleMesh saddle = meshOf(trough());
+  for (glm::dvec3& p : saddle.positions) p.z -= 2.0 * (p.y - 0.1) * (p.y - 0.1);
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(trough());
+  const double before = fitter.approximateDistance(session.fixed());
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 4, {});
+  EXPECT_EQ(session.foldCount(), 0u);
+  ASSERT_FALSE(pleats.empty());
+  const FoldSuggestion& best = pleats.front();
+  ASSERT_EQ(best.folds.size(), 4u) << best.after << " from " << before;
+  for (const FoldRecord& fold : best.folds) EXPECT_EQ(fold.group, best.folds[0].group);
+  // One pleat on each side of the middle (y = 0.1), across the rulings.
+  EXPECT_LT((best.folds[0].plane.point.y - 0.1) * (best.folds[2].plane.point.y - 0.1), 0.0);
+  for (const FoldSuggestion& other : pleats)
+    if (other.folds.size() == 2) EXPECT_LT(best.after, other.after);
+  EXPECT_LT(best.after, 0.7 * before) << before;
+  testing::expectInvariants(best.sheet, session.initial());
+  EXPECT_TRUE(findSelfIntersections(best.sheet).intersections.empty());
+  EXPECT_TRUE(identical(replayFolds(session.initial(), best.folds), best.sheet));
+}
+
 // A regular grid of a height field over a square `size` across, centred on the origin.
 TriangleMesh heightGrid(double size, int cells, const std::function<double(double, double)>& f) {
   TriangleMesh mesh;
