@@ -15,6 +15,7 @@
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/start_surface.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -184,6 +185,28 @@ TEST(StartSurface, OnlyAFoldedTargetKeepsTheSquaresDefaultsForItsCreases) {
   const StartChoice start = chooseStart(meshOf(folded.fixed()), "square");
   EXPECT_TRUE(start.creased);
   EXPECT_TRUE(start.parameters.empty());
+}
+
+// A hypar z = xy over a disk: the swept parabola along one diagonal is flat along the other,
+// where the target's rim falls 7 cm below it. The start is cut to the target's outline as seen
+// across the sheet, not by distance in space (that cut dropped the sheet's ends above the falling
+// rim, leaving it uncovered: Hausdorff 12.8% of the diagonal) and nothing for pleats to turn.
+TEST(StartSurface, AHyparOverADiskKeepsTheSheetOverItsFallingRim) {
+  TriangleMesh target = heightGrid(0.26, 36, [](double x, double y) { return x * y / 0.2; });
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (const auto& t : target.triangles) {
+    const glm::dvec3 c =
+        (target.positions[t[0]] + target.positions[t[1]] + target.positions[t[2]]) / 3.0;
+    if (std::hypot(c.x, c.y) < 0.12) inside.push_back(t);
+  }
+  target.triangles.assign(inside.begin(), inside.end());
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "swept_curve");
+  validate(*start.placed);
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.hausdorff, 0.09 * distance.diagonal)
+      << distance.relativeHausdorff() << " " << start.placement;
 }
 
 // A scan's noise bends a few edges sharply everywhere (under a fifth of its edge length): no
