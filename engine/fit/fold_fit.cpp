@@ -1123,13 +1123,8 @@ class FitRun {
         std::vector<FoldSuggestion> pleats =
             suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
                           16 * (depth + 1) + k);
-        // Judged by single pleats: a pair of them (both ends at once) gains more in one step
-        // but may leave nothing after it where a single fold first would (a flat square).
-        const auto single = std::find_if(pleats.begin(), pleats.end(), [](const FoldSuggestion& p) {
-          return p.folds.size() == 2;
-        });
-        const bool pleatEnough = single != pleats.end() && !fitter_.revolutionTarget() &&
-                                 single->after < (1.0 - kPleatEnough) * beam[k].score;
+        const bool pleatEnough = !pleats.empty() && !fitter_.revolutionTarget() &&
+                                 pleats.front().after < (1.0 - kPleatEnough) * beam[k].score;
         std::vector<FoldSuggestion> nexts =
             pleatEnough
                 ? std::vector<FoldSuggestion>{}

@@ -337,8 +337,12 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   };
   const std::vector<SolvedPleat> solved =
       solvePleats(points, distances, query, centre, solver, width);
-  // Pairs first: toward a saddle one step turns both ends.
-  for (const auto& [a, b] : solvedPairs(solved, 4.0 * width))
+  // Pairs first: toward a saddle one step turns both ends of a curved sheet. Not on a flat one
+  // (a square): there a pair wins the first step and leaves no step after it, where a single
+  // fold first would (example saddle from the square: 3.01% Chamfer against 1.80%).
+  const bool flat = solver.eigenvalues()(0) < 1e-4 * solver.eigenvalues()(2);
+  for (const auto& [a, b] :
+       flat ? decltype(solvedPairs(solved, 0.0)){} : solvedPairs(solved, 4.0 * width))
     for (const double share : kSolvedShares) {
       if (deadline.passed()) return out;
       SolvedPleat x = a, y = b;
