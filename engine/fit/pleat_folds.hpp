@@ -22,13 +22,14 @@
 // fits that height in least squares (a rigid turn adds height in proportion to the distance from
 // the hinge, so the fit is linear); the hinges that remove the most squared height made, then the
 // best nudged (hinge and turn) a few times, since the model leaves out the width a pleat folds
-// away. Both ends of a line through the sheet (a direction and its opposite) are also pleated
-// as one step of four folds, each end's hinge and turn solved as above (their ends do not
-// overlap, so the gains add): a saddle falls (or rises) on both sides of its middle, and one
-// end's pleat alone leaves the other as far, costing the search a step and the clock its time. Repeated step by step, the pleats approximate the target's second curvature piecewise.
-// Only where no solved pleat helps, the blind way of before: hinges on the way from the sheet's
-// centre toward its vertices farthest from the target, bends on a grid. Each pleat is made on the
-// real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
+// away. On a curved sheet (not a flat one) both ends of a line through it (a direction and its
+// opposite) are also pleated as one step of four folds, each end's hinge and turn solved as above
+// (their ends do not overlap, so the gains add): a saddle falls (or rises) on both sides of its
+// middle, and one end's pleat alone leaves the other as far, costing the search a step and the
+// clock its time. Repeated step by step, the pleats approximate the target's second curvature
+// piecewise. Only where no solved pleat helps, the blind way of before: hinges on the way from the
+// sheet's centre toward its vertices farthest from the target, bends on a grid. Each pleat is made
+// on the real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
 // FoldFitter::approximateDistance, checked for self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
