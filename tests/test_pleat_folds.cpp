@@ -15,6 +15,7 @@
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/start_surface.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -125,6 +126,30 @@ TEST(PleatFolds, SolveTheHingeAndTurnFromTheTargetsHeightsInAFewTries) {
   EXPECT_NEAR(first.point.y, 0.13, 0.012);
 }
 
+// A saddle falls on both sides of its middle: one step pleats both ends of the trough (four
+// folds, one group), closer than a pleat at either end alone.
+TEST(PleatFolds, TurnBothEndsOfASaddleInOneStep) {
+  TriangleMesh saddle = meshOf(trough());
+  for (glm::dvec3& p : saddle.positions) p.z -= 2.0 * (p.y - 0.1) * (p.y - 0.1);
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(trough());
+  const double before = fitter.approximateDistance(session.fixed());
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 4, {});
+  EXPECT_EQ(session.foldCount(), 0u);
+  ASSERT_FALSE(pleats.empty());
+  const FoldSuggestion& best = pleats.front();
+  ASSERT_EQ(best.folds.size(), 4u) << best.after << " from " << before;
+  for (const FoldRecord& fold : best.folds) EXPECT_EQ(fold.group, best.folds[0].group);
+  // One pleat on each side of the middle (y = 0.1), across the rulings.
+  EXPECT_LT((best.folds[0].plane.point.y - 0.1) * (best.folds[2].plane.point.y - 0.1), 0.0);
+  for (const FoldSuggestion& other : pleats)
+    if (other.folds.size() == 2) EXPECT_LT(best.after, other.after);
+  EXPECT_LT(best.after, 0.7 * before) << before;
+  testing::expectInvariants(best.sheet, session.initial());
+  EXPECT_TRUE(findSelfIntersections(best.sheet).intersections.empty());
+  EXPECT_TRUE(identical(replayFolds(session.initial(), best.folds), best.sheet));
+}
+
 // A regular grid of a height field over a square `size` across, centred on the origin.
 TriangleMesh heightGrid(double size, int cells, const std::function<double(double, double)>& f) {
   TriangleMesh mesh;
@@ -160,6 +185,28 @@ TEST(StartSurface, OnlyAFoldedTargetKeepsTheSquaresDefaultsForItsCreases) {
   const StartChoice start = chooseStart(meshOf(folded.fixed()), "square");
   EXPECT_TRUE(start.creased);
   EXPECT_TRUE(start.parameters.empty());
+}
+
+// A hypar z = xy over a disk: the swept parabola along one diagonal is flat along the other,
+// where the target's rim falls 7 cm below it. The start is cut to the target's outline as seen
+// across the sheet, not by distance in space (that cut dropped the sheet's ends above the falling
+// rim, leaving it uncovered: Hausdorff 12.8% of the diagonal) and nothing for pleats to turn.
+TEST(StartSurface, AHyparOverADiskKeepsTheSheetOverItsFallingRim) {
+  TriangleMesh target = heightGrid(0.26, 36, [](double x, double y) { return x * y / 0.2; });
+  std::vector<std::array<std::uint32_t, 3>> inside;
+  for (const auto& t : target.triangles) {
+    const glm::dvec3 c =
+        (target.positions[t[0]] + target.positions[t[1]] + target.positions[t[2]]) / 3.0;
+    if (std::hypot(c.x, c.y) < 0.12) inside.push_back(t);
+  }
+  target.triangles.assign(inside.begin(), inside.end());
+  const StartChoice start = chooseStart(target);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "swept_curve");
+  validate(*start.placed);
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), target, 4000);
+  EXPECT_LT(distance.hausdorff, 0.09 * distance.diagonal)
+      << distance.relativeHausdorff() << " " << start.placement;
 }
 
 // A scan's noise bends a few edges sharply everywhere (under a fifth of its edge length): no

@@ -187,12 +187,14 @@ Eigen::Vector4d profileFit(const std::vector<SurfaceSample>& samples, const Fram
   return a.colPivHouseholderQr().solve(w);
 }
 
-// `sheet` less the triangles whose centres lie farther than `reach` from every sample: a
+// `sheet` less the triangles whose centres lie farther than `reach` from every sample (measured
+// across `across`, a unit vector, when given: the outline as seen along the sheet's normal, so a
+// swept parabola keeps its ends over a saddle's falling rim, for pleats to turn down): a
 // rectangle cut to a round target's outline, its corners no longer sticking out past it. Nothing
 // when what is left is not a valid sheet (a vertex where two kept parts only touch) or is most of
 // the sheet anyway.
 std::optional<Sheet> trimmedTo(const Sheet& sheet, const std::vector<SurfaceSample>& samples,
-                               double reach) {
+                               double reach, const glm::dvec3& across = glm::dvec3(0.0)) {
   std::vector<char> keep(sheet.triangles.size(), 0);
   std::size_t kept = 0;
   for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
@@ -200,7 +202,8 @@ std::optional<Sheet> trimmedTo(const Sheet& sheet, const std::vector<SurfaceSamp
     const glm::dvec3 centre =
         (sheet.positions[tri[0]] + sheet.positions[tri[1]] + sheet.positions[tri[2]]) / 3.0;
     for (const SurfaceSample& sample : samples)
-      if (glm::distance(centre, sample.position) <= reach) {
+      if (const glm::dvec3 d = centre - sample.position;
+          glm::length(d - glm::dot(d, across) * across) <= reach) {
         keep[t] = 1;
         ++kept;
         break;
@@ -304,7 +307,7 @@ void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& prin
                  placedSheet(sweptParabola(profile(0), profile(1), sLo, sHi, tHi - tLo), frame)});
   // The same cut to the target's outline, for a target that does not fill its rectangle.
   const double reach = 0.03 * std::max(sHi - sLo, tHi - tLo);
-  if (std::optional<Sheet> trimmed = trimmedTo(out.back().sheet, samples, reach)) {
+  if (std::optional<Sheet> trimmed = trimmedTo(out.back().sheet, samples, reach, frame.z)) {
     PlacedStart cut = out.back();
     cut.placement += ", cut to the target's outline";
     cut.sheet = std::move(*trimmed);

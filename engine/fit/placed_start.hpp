@@ -14,7 +14,8 @@
 //    curvature; along it the profile w = k s^2 + b s + f is fitted (the rulings tilted to absorb
 //    a slope along them) and swept over the target's extent across it, meshed with an exact
 //    development (arc length along the profile, distance along the rulings); and the same cut to
-//    the target's outline (triangles farther than 3% of its size from every sample dropped, kept
+//    the target's outline (triangles farther than 3% of its size from every sample, measured
+//    across the sheet's normal so the sheet over a saddle's falling rim stays, dropped, kept
 //    parts that would only touch at a vertex filled back; offered when valid);
 //  - flat: a disk and a square of the target's area in the plane of its two largest axes.
 // Each is a catalogue sheet (or the swept one) moved rigidly, so its development is exact.

@@ -22,15 +22,20 @@
 // fits that height in least squares (a rigid turn adds height in proportion to the distance from
 // the hinge, so the fit is linear); the hinges that remove the most squared height made, then the
 // best nudged (hinge and turn) a few times, since the model leaves out the width a pleat folds
-// away. Repeated step by step, the pleats approximate the target's second curvature piecewise.
-// Only where no solved pleat helps, the blind way of before: hinges on the way from the sheet's
-// centre toward its vertices farthest from the target, bends on a grid. Each pleat is made on the
-// real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
+// away. On a curved sheet (not a flat one) both ends of a line through it (a direction and its
+// opposite) are also pleated as one step of four folds, each end's hinge and turn solved as above
+// (their ends do not overlap, so the gains add): a saddle falls (or rises) on both sides of its
+// middle, and one end's pleat alone leaves the other as far, costing the search a step and the
+// clock its time. Repeated step by step, the pleats approximate the target's second curvature
+// piecewise. Only where no solved pleat helps, the blind way of before: hinges on the way from the
+// sheet's centre toward its vertices farthest from the target, bends on a grid. Each pleat is made
+// on the real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
 // FoldFitter::approximateDistance, checked for self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
 // would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each
-// a FoldSuggestion of two folds, best first, each bringing the sheet closer. Known limits: the
+// a FoldSuggestion of two folds (four for both ends' pair, one group), best first, each bringing
+// the sheet closer. Known limits: the
 // hinge is straight only where the sheet is ruled across it (a swept sheet across its rulings,
 // a flat one); each pleat shortens the sheet by twice its width (0.3% of the target's diagonal,
 // more where the sheet rises across the hinge), and turning a curved end about a straight hinge
