@@ -572,6 +572,10 @@ bool foldCopy(const DragFolding& folding, Worker& worker, std::uint32_t sample,
 
 }  // namespace
 
+bool FoldFitter::nestedRingsFrom(const Sheet& sheet) const {
+  return target_->axis && settings_.nestedRings && liesFlatAcross(sheet, *target_->axis);
+}
+
 std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& session,
                                                                 std::size_t count,
                                                                 const Deadline& deadline,
@@ -579,9 +583,7 @@ std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& ses
                                                                 bool& tried) const {
   tried = false;
   const Target& target = *target_;
-  if (count == 0 || !target.axis || !settings_.nestedRings ||
-      !liesFlatAcross(session.fixed(), *target.axis))
-    return {};
+  if (count == 0 || !nestedRingsFrom(session.fixed())) return {};
   tried = true;
   session.cancel();
   std::mt19937_64 random(settings_.seed ^ (0xd1b54a32d192ed03ull * (step + 1)));
@@ -722,7 +724,9 @@ class FitRun {
     FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
     best_ = bestMonotone_ = root;
     result_.stopReason = "reached the most folds asked for";
-    if (readCreases_ && unfoldTarget()) {
+    // A bowl from a flat sheet (the nested rings' start) has no creases to read: on a scan the
+    // unfolding reads its noise, and took the whole time.
+    if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) && unfoldTarget()) {
       result_.stopReason = "the target unfolded: its creases named every fold";
     } else {
       beamSearch(root);

@@ -140,6 +140,8 @@ class FoldFitter {
   // target's axis: the fit tries them before the single folds, which from a flat sheet seldom
   // bring it as close to a bowl and cost more time. `tried`: set when the sheet lies so (the
   // rings were drawn), whether or not any brought it closer.
+  // Whether the nested rings are drawn from `sheet` (it lies flat across the target's axis).
+  bool nestedRingsFrom(const Sheet& sheet) const;
   std::vector<FoldSuggestion> suggestNestedRingsFirst(FoldSession& session, std::size_t count,
                                                       const Deadline& deadline, std::uint64_t step,
                                                       bool& tried) const;
