@@ -1,6 +1,7 @@
 // Nested rings fitted to a bowl's profile, from a flat disk (issue 38, 2;
 // engine/fit/nested_rings.hpp).
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -197,6 +198,33 @@ TEST(NestedRings, ACoarseHemisphereIsSmoothAndAFoldedDiskIsNot) {
   folded.updateDrag(plane.reflect(folded.beginDragAtDevelopment(flat.development[end])));
   ASSERT_TRUE(folded.commit());
   EXPECT_FALSE(isSmoothOrScanned(meshOf(folded.fixed())));
+}
+
+// From a flat disk toward a bowl the fit's first step is the nested rings alone: tried before
+// the single folds' search (hundreds of candidates), which does not run in that step, so the
+// rings fit a short --time. One step, without a clock: the count of candidates scored says it.
+TEST(NestedRings, TheFitsFirstStepFromADiskIsTheRingsWithoutTheSingleFoldsSearch) {
+  const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
+  // Coarser under the sanitizers: each ring candidate folds the whole sheet dozens of times.
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 8.0 : 12.0}});
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 600;
+  settings.denseTargetSamples = 4000;
+  const FoldFitter fitter(target, settings);
+  ASSERT_TRUE(fitter.nestedRingsFrom(disk));
+  FoldSession session(disk);
+  FitOptions options;
+  options.maxFolds = 1;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.distanceSamples = 2000;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_GE(result.folds.size(), 8u);  // a ring at least, as one step
+  // The profile fits and the ring candidates only (4 + 4 * 3), not the single folds' hundreds.
+  EXPECT_LE(result.evaluations, 16u);
+  EXPECT_LT(result.steps.back().chamfer, 0.6 * result.steps.front().chamfer);
+  validate(session.fixed());
 }
 
 }  // namespace
