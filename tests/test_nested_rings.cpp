@@ -221,8 +221,8 @@ TEST(NestedRings, TheFitsFirstStepFromADiskIsTheRingsWithoutTheSingleFoldsSearch
   options.distanceSamples = 2000;
   const FitResult result = fitFolds(session, fitter, options);
   EXPECT_GE(result.folds.size(), 8u);  // a ring at least, as one step
-  // The profile fits and the ring candidates only (4 + 4 * 4), not the single folds' hundreds.
-  EXPECT_LE(result.evaluations, 20u);
+  // The profile fits and the ring candidates only (4 + 4 * 3), not the single folds' hundreds.
+  EXPECT_LE(result.evaluations, 16u);
   EXPECT_LT(result.steps.back().chamfer, 0.6 * result.steps.front().chamfer);
   validate(session.fixed());
 }

@@ -24,7 +24,7 @@ constexpr std::size_t kProfilePoints = 300;  // target samples the profile is fi
 constexpr std::size_t kPolylinePoints = 48;  // along the sheet's radius
 constexpr int kRestarts = 5;                 // random starts per crease count
 constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
-constexpr std::array<int, 4> kOrders{8, 12, 16, 24};
+constexpr std::array<int, 3> kOrders{8, 12, 16};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 constexpr double kPi = std::numbers::pi;
 

@@ -18,8 +18,7 @@
 // plane through its polyline vertex with normal d_{i-1} - d_i (the bisector: the reflection takes
 // one direction to the other), made at n turns about the axis (a RingShape each, innermost first,
 // so each plane is drawn where the rings before it left the flap). Each fit with k = 1..4
-// creases and n in {8, 12, 16, 24} (24: less corner paper, which a steep cup's next
-// ring crosses) is made on the sheet itself (each plane's fold seeded on its own
+// creases and n in {8, 12, 16} is made on the sheet itself (each plane's fold seeded on its own
 // flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
 // through itself, and taken back.
 //
