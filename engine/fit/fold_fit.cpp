@@ -572,9 +572,27 @@ bool foldCopy(const DragFolding& folding, Worker& worker, std::uint32_t sample,
 
 }  // namespace
 
+bool FoldFitter::nestedRingsFrom(const Sheet& sheet) const {
+  return target_->axis && settings_.nestedRings && liesFlatAcross(sheet, *target_->axis);
+}
+
+std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& session,
+                                                                std::size_t count,
+                                                                const Deadline& deadline,
+                                                                std::uint64_t step,
+                                                                bool& tried) const {
+  tried = false;
+  const Target& target = *target_;
+  if (count == 0 || !nestedRingsFrom(session.fixed())) return {};
+  tried = true;
+  session.cancel();
+  std::mt19937_64 random(settings_.seed ^ (0xd1b54a32d192ed03ull * (step + 1)));
+  return suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random);
+}
+
 std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_t count,
-                                                const Deadline& deadline,
-                                                std::uint64_t step) const {
+                                                const Deadline& deadline, std::uint64_t step,
+                                                bool nestedRings) const {
   session.cancel();
   if (count == 0) return {};
   const Target& target = *target_;
@@ -656,7 +674,7 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       suggestions.push_back(std::move(ring));
   // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp; on
   // a symmetric design whose rotation is about that axis, each ring is one fold and its images).
-  if (target.axis && settings_.nestedRings)
+  if (target.axis && settings_.nestedRings && nestedRings)
     for (FoldSuggestion& rings :
          suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random))
       suggestions.push_back(std::move(rings));
@@ -706,7 +724,9 @@ class FitRun {
     FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
     best_ = bestMonotone_ = root;
     result_.stopReason = "reached the most folds asked for";
-    if (readCreases_ && unfoldTarget()) {
+    // A bowl from a flat sheet (the nested rings' start) has no creases to read: on a scan the
+    // unfolding reads its noise, and took the whole time.
+    if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) && unfoldTarget()) {
       result_.stopReason = "the target unfolded: its creases named every fold";
     } else {
       beamSearch(root);
@@ -1136,16 +1156,22 @@ class FitRun {
         // smooth shape that is no surface of revolution (a saddle), where a pleat brings the
         // sheet closer by kPleatEnough, the single folds' search (tens of times dearer, and on a
         // saddle seldom better) is left out of the step, so the clock leaves room for more.
-        std::vector<FoldSuggestion> pleats =
-            suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0, deadline,
-                          16 * (depth + 1) + k);
-        const bool pleatEnough = !pleats.empty() && !fitter_.revolutionTarget() &&
-                                 pleats.front().after < (1.0 - kPleatEnough) * beam[k].score;
-        std::vector<FoldSuggestion> nexts =
-            pleatEnough
-                ? std::vector<FoldSuggestion>{}
-                : fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k);
-        for (FoldSuggestion& pleat : pleats) nexts.push_back(std::move(pleat));
+        // From a flat sheet across a bowl's axis, the nested rings first: where they bring it
+        // closer they are the step, and the clock is not spent on single folds before them.
+        bool ringsTried = false;
+        std::vector<FoldSuggestion> nexts = fitter_.suggestNestedRingsFirst(
+            *branch, options_.branching, deadline, 16 * (depth + 1) + k, ringsTried);
+        if (nexts.empty()) {
+          std::vector<FoldSuggestion> pleats =
+              suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0,
+                            deadline, 16 * (depth + 1) + k);
+          const bool pleatEnough = !pleats.empty() && !fitter_.revolutionTarget() &&
+                                   pleats.front().after < (1.0 - kPleatEnough) * beam[k].score;
+          if (!pleatEnough)
+            nexts = fitter_.suggest(*branch, options_.branching, deadline, 16 * (depth + 1) + k,
+                                    !ringsTried);
+          for (FoldSuggestion& pleat : pleats) nexts.push_back(std::move(pleat));
+        }
         for (FoldSuggestion& next : nexts) {
           FoldSequence child = beam[k];
           child.folds.insert(child.folds.end(), next.folds.begin(), next.folds.end());

@@ -132,9 +132,19 @@ class FoldFitter {
   // the best (a fold that lays one part exactly, which the next fold may complete; such a fold
   // may leave the sheet up to 10% farther on its own). The session is dragged, committed and undone
   // on, and left as it was (a drag in progress is cancelled). `step` varies the proposals (a fit's
-  // fold number).
+  // fold number). `nestedRings` false: without the nested rings (the fit tried them first).
   std::vector<FoldSuggestion> suggest(FoldSession& session, std::size_t count,
-                                      const Deadline& deadline = {}, std::uint64_t step = 0) const;
+                                      const Deadline& deadline = {}, std::uint64_t step = 0,
+                                      bool nestedRings = true) const;
+  // The nested rings alone (nested_rings.hpp), when the session's sheet lies flat across the
+  // target's axis: the fit tries them before the single folds, which from a flat sheet seldom
+  // bring it as close to a bowl and cost more time. `tried`: set when the sheet lies so (the
+  // rings were drawn), whether or not any brought it closer.
+  // Whether the nested rings are drawn from `sheet` (it lies flat across the target's axis).
+  bool nestedRingsFrom(const Sheet& sheet) const;
+  std::vector<FoldSuggestion> suggestNestedRingsFirst(FoldSession& session, std::size_t count,
+                                                      const Deadline& deadline, std::uint64_t step,
+                                                      bool& tried) const;
 
  private:
   struct Target;

@@ -267,12 +267,37 @@ std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const R
   return made;
 }
 
+// The sheet's centre and radius about `direction` when it lies flat across it.
+struct FlatSheet {
+  glm::dvec3 centre{0.0};
+  double radius = 0.0;
+};
+std::optional<FlatSheet> flatSheetAcross(const Sheet& sheet, const glm::dvec3& direction) {
+  if (sheet.positions.empty()) return std::nullopt;
+  FlatSheet flat;
+  for (const glm::dvec3& p : sheet.positions) flat.centre += p;
+  flat.centre /= static_cast<double>(sheet.positions.size());
+  double lowest = 1e300, highest = -1e300;
+  for (const glm::dvec3& p : sheet.positions) {
+    const double h = glm::dot(p - flat.centre, direction);
+    lowest = std::min(lowest, h);
+    highest = std::max(highest, h);
+    flat.radius = std::max(flat.radius, glm::length((p - flat.centre) - h * direction));
+  }
+  if (!(flat.radius > 0.0) || highest - lowest > kFlatSheet * flat.radius) return std::nullopt;
+  return flat;
+}
+
 struct Candidate {
   ProfileCreases creases;
   int order = 8;
 };
 
 }  // namespace
+
+bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis) {
+  return flatSheetAcross(sheet, axis.direction).has_value();
+}
 
 std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const FoldFitter& fitter,
                                                const RevolutionAxis& axis,
@@ -282,19 +307,11 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   if (count == 0 || targetSamples.empty() || deadline.givesUp()) return {};
   // The sheet: flat across the axis? Its centre is the rings' axis point.
   const Sheet& sheet = session.fixed();
-  if (sheet.positions.empty()) return {};
-  glm::dvec3 centre(0.0);
-  for (const glm::dvec3& p : sheet.positions) centre += p;
-  centre /= static_cast<double>(sheet.positions.size());
+  const std::optional<FlatSheet> flat = flatSheetAcross(sheet, axis.direction);
+  if (!flat) return {};
+  const glm::dvec3 centre = flat->centre;
+  const double radius = flat->radius;
   const RevolutionAxis local{centre, axis.direction, 0.0};
-  double radius = 0.0, lowest = 1e300, highest = -1e300;
-  for (const glm::dvec3& p : sheet.positions) {
-    const double h = glm::dot(p - centre, axis.direction);
-    lowest = std::min(lowest, h);
-    highest = std::max(highest, h);
-    radius = std::max(radius, glm::length((p - centre) - h * axis.direction));
-  }
-  if (!(radius > 0.0) || highest - lowest > kFlatSheet * radius) return {};
   // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
   // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
   std::vector<int> orders(kOrders.begin(), kOrders.end());

@@ -77,6 +77,9 @@ struct NestedRing {
 std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int order, double turn,
                                          double sheetRadius);
 
+// Whether `sheet` lies flat across `axis` (the nested rings' start, below).
+bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis);
+
 // Up to `count` nested-ring steps for the design `session` holds, toward the fitter's target of
 // revolution about `axis` whose samples are `targetSamples` (see above), with 1 to `mostCreases`
 // creases. The session is not changed.

@@ -13,6 +13,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/unfold.hpp"
 
 namespace curvefold {
 namespace {
@@ -28,6 +29,12 @@ constexpr double kScatteredCreaseShare = 0.02;
 // Or the plane holding most of its sharp edges has under this share of its edges sharp (a
 // fold's crease is bent all along; noise bends a few edges of a row of a scan's grid).
 constexpr double kNoisyCreaseShare = 0.5;
+// A sheet folded by reflections is isometric to its development: every interior vertex's angle
+// defect is zero, to the 1e-5 rad an OBJ's six digits leave. A coarse grid of a curved shape (a
+// hemisphere of 7 rings bends each ring's edges as much as a crease) has one at most vertices:
+// over this share of its interior vertices with a defect above kCurvedDefect makes it smooth.
+constexpr double kCurvedDefect = 1e-3;  // radians
+constexpr double kCurvedVertexShare = 0.25;
 // Edges within this much of the diagonal of a plane lie in it (crease_planes.hpp's tolerance).
 constexpr double kCreaseTolerance = 1e-4;
 // A placed sheet replaces one in the catalogue's frame when this much nearer (Chamfer).
@@ -154,6 +161,21 @@ double sharpShare(const TriangleMesh& target, double degrees,
   return all > 0.0 ? sharp / all : 0.0;
 }
 
+// Whether over kCurvedVertexShare of the target's interior vertices are curved (see above).
+bool curvedAtMostVertices(const TriangleMesh& target) {
+  std::vector<Triangle> triangles;
+  triangles.reserve(target.triangles.size());
+  for (const auto& t : target.triangles)
+    triangles.push_back({VertexIndex(t[0]), VertexIndex(t[1]), VertexIndex(t[2])});
+  std::size_t interior = 0, curved = 0;
+  for (const double defect : angleDefects(target.positions, triangles)) {
+    if (std::isnan(defect)) continue;
+    ++interior;
+    if (std::abs(defect) > kCurvedDefect) ++curved;
+  }
+  return interior > 0 && static_cast<double>(curved) > kCurvedVertexShare * interior;
+}
+
 }  // namespace
 
 bool isSmoothOrScanned(const TriangleMesh& target) {
@@ -169,7 +191,7 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
   // depth scan's grid (a plane of edges), most edges of that row are not bent.
   const double sharp = sharpShare(target, kSmoothBendDegrees);
   const double tolerance = kCreaseTolerance * boundingDiagonal(target);
-  return sharp > kNoisySharpShare ||
+  return sharp > kNoisySharpShare || curvedAtMostVertices(target) ||
          planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
          sharpShare(target, kSmoothBendDegrees, &planes.front().plane, tolerance) <
              kNoisyCreaseShare;

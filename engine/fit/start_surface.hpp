@@ -56,7 +56,9 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = ""
 // bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
 // the few curves a fold makes: over a fifth of its edge length sharp, or the plane holding most
 // sharp edges holds under 2% of them, or under half of the edges in that plane are sharp, as in a
-// row of a depth scan's grid). A target folded from a catalogue sheet is neither. Such a target
+// row of a depth scan's grid), or curved (not developable: a quarter of its interior vertices
+// have an angle defect, as on a coarse grid of a hemisphere whose rings bend like creases). A
+// target folded from a catalogue sheet is none of these. Such a target
 // gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp).
 bool isSmoothOrScanned(const TriangleMesh& target);
 

@@ -56,8 +56,8 @@ std::string describeDefect(const AngleDefect& defect) {
 
 }  // namespace
 
-AngleDefect largestAngleDefect(const std::vector<glm::dvec3>& positions,
-                               const std::vector<Triangle>& triangles) {
+std::vector<double> angleDefects(const std::vector<glm::dvec3>& positions,
+                                 const std::vector<Triangle>& triangles) {
   // A vertex is interior when each of its directed edges has a twin running the other way.
   std::unordered_map<std::uint64_t, std::uint32_t> directed;
   directed.reserve(triangles.size() * 3);
@@ -80,12 +80,20 @@ AngleDefect largestAngleDefect(const std::vector<glm::dvec3>& positions,
       used[v] = true;
     }
   }
+  std::vector<double> defects(positions.size(), std::numeric_limits<double>::quiet_NaN());
+  for (VertexIndex v = 0; v < positions.size(); ++v)
+    if (used[v] && !boundary[v]) defects[v] = 2.0 * std::numbers::pi - angleSum[v];
+  return defects;
+}
+
+AngleDefect largestAngleDefect(const std::vector<glm::dvec3>& positions,
+                               const std::vector<Triangle>& triangles) {
+  const std::vector<double> defects = angleDefects(positions, triangles);
   AngleDefect largest;
-  for (VertexIndex v = 0; v < positions.size(); ++v) {
-    if (!used[v] || boundary[v]) continue;
-    const double defect = 2.0 * std::numbers::pi - angleSum[v];
-    if (largest.vertex == kNoIndex || std::abs(defect) > std::abs(largest.radians))
-      largest = {v, defect};
+  for (VertexIndex v = 0; v < defects.size(); ++v) {
+    if (std::isnan(defects[v])) continue;
+    if (largest.vertex == kNoIndex || std::abs(defects[v]) > std::abs(largest.radians))
+      largest = {v, defects[v]};
   }
   return largest;
 }

@@ -18,6 +18,11 @@ struct AngleDefect {
   double radians = 0.0;  // 2*pi minus the sum of the angles around an interior vertex
 };
 
+// Each vertex's angle defect (2*pi minus the sum of its corner angles), NaN for a vertex on the
+// boundary or in no triangle.
+std::vector<double> angleDefects(const std::vector<glm::dvec3>& positions,
+                                 const std::vector<Triangle>& triangles);
+
 // Largest |angle defect| over interior vertices (vertex kNoIndex when there are none).
 AngleDefect largestAngleDefect(const std::vector<glm::dvec3>& positions,
                                const std::vector<Triangle>& triangles);
