@@ -129,7 +129,8 @@ bool InteractionCore::handleSimulation(const InputFrame& frame) {
       if (solver == LiveSolverKind::Gpu && !gpuSolver_)
         throw std::runtime_error("no GPU solver here (a Vulkan device with compute)");
       simulation_ = std::make_unique<LiveSimulation>(
-          session_.fixed(), simulationOnWorker_,
+          // The GPU's solver shares the drawing queue: it steps in turn.
+          session_.fixed(), simulationOnWorker_ && solver == LiveSolverKind::Cpu,
           solver == LiveSolverKind::Gpu ? gpuSolver_ : LiveSolverFactory{});
       simulationProblem_.clear();
     } catch (const std::exception& e) {

@@ -508,6 +508,8 @@ void DesignerWindow::process(InputFrame& input) {
   goal_.poll(doc_, input);  // a finished search's folds join the frame, and its recording
   const Clock::time_point processStart = Clock::now();
   if (gpuSolver_) doc_.core->setGpuSolver(gpuSolver_);  // the core is new after Open or New
+  // The CPU's steps overlap the drawing (one frame behind, the same states; performance.md).
+  doc_.core->setSimulationOnWorker(true);
   doc_.core->process(input);
   if (doc_.session->dragging() || doc_.core->simulation())
     stats_.dragUpdateMs =
