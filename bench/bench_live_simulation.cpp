@@ -9,7 +9,9 @@
 // drawing), 2 the drawing alone (process with 0 steps: the placement, the upload, the frame).
 // Third argument: 1 steps the simulation on a worker while the frame draws (the designer's way,
 // LiveSimulation's onWorker), 0 in turn. The CPU column is the whole process's (every thread:
-// the solver's, lavapipe's), the frame's work whatever the machine's load.
+// the solver's, lavapipe's), the frame's work whatever the machine's load. Fourth argument: 1
+// steps on the Vulkan compute solver on the renderer's device (app/desktop/gpu_live_solver.hpp,
+// the panel's "GPU"; in turn, as it must), 0 the CPU's.
 // Counters: fps (frames per second of real time), vertices, steps per frame.
 //
 //   build/bench/bench_live_simulation --benchmark_repetitions=5
@@ -18,6 +20,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "app/desktop/gpu_live_solver.hpp"
 #include "app/desktop/interaction_scene.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/render/headless_renderer.hpp"
@@ -45,6 +48,8 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
   options.height = 720;
   options.samples = VK_SAMPLE_COUNT_1_BIT;
   HeadlessRenderer r(options);
+  const bool gpu = state.range(3) != 0;
+  if (gpu) core.setGpuSolver(desktop::gpuLiveSolver(r.context()));
   desktop::InteractionSheetTracker tracker;
   const Camera camera =
       frameBounds(worldBounds(session.initial()), ViewPreset::Iso, 1280.0f / 720.0f);
@@ -55,6 +60,7 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
     input.time += 1.0 / 60.0;
     input.simulation = liveSimulationInput(100.0, session.fixed());
     if (part == 2) input.simulation->steps = 0;
+    if (gpu) input.simulation->solver = LiveSolverKind::Gpu;
     core.process(input);
     if (part == 1) return;
     tracker.update(core, r.sceneRenderer());
@@ -64,7 +70,13 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
   };
   frame();
   frame();
+  if (!core.simulation()) {
+    state.SkipWithError(core.simulationProblem().c_str());
+    core.endSimulation();
+    return;
+  }
   for (auto _ : state) frame();
+  core.endSimulation();  // a GPU solver goes before the renderer's device
   state.counters["fps"] =
       benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["vertices"] = double(session.fixed().vertexCount());
@@ -72,10 +84,12 @@ void BM_SimulatingWindowFrame(benchmark::State& state) {
   state.SetLabel(r.context().deviceName());
 }
 BENCHMARK(BM_SimulatingWindowFrame)
-    ->Args({10'000, 0, 0})
-    ->Args({10'000, 0, 1})
-    ->Args({10'000, 1, 0})
-    ->Args({10'000, 2, 0})
+    ->Args({10'000, 0, 0, 0})
+    ->Args({10'000, 0, 1, 0})
+    ->Args({10'000, 1, 0, 0})
+    ->Args({10'000, 2, 0, 0})
+    ->Args({10'000, 0, 0, 1})
+    ->Args({10'000, 1, 0, 1})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime()

@@ -69,10 +69,16 @@ struct SimulationPull {
   bool operator==(const SimulationPull&) const = default;
 };
 
+// Which solver steps the live simulation: the CPU's dynamic solver (double, bit for bit on any
+// machine) or the Vulkan compute one (float, bit for bit on one device only, so a recording of a
+// GPU run is not replayed: sim_input/recording.hpp).
+enum class LiveSolverKind : std::uint8_t { Cpu, Gpu };
+
 struct SimulationInput {
   double percent = 0.0;     // fold amount, 0 (flat) to 100 (the design)
   std::uint32_t steps = 0;  // dynamic steps this frame
   std::optional<SimulationPull> pull;
+  LiveSolverKind solver = LiveSolverKind::Cpu;
   bool operator==(const SimulationInput&) const = default;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -106,20 +107,31 @@ void InteractionCore::process(const InputFrame& frame, PointTarget target) {
   handlePointHand(frame, target);
 }
 
+void InteractionCore::endSimulation() {
+  simulation_.reset();
+  simulationRevision_.reset();
+  simulationProblem_.clear();
+}
+
 bool InteractionCore::handleSimulation(const InputFrame& frame) {
   if (!frame.simulation) {
-    simulation_.reset();
-    simulationRevision_.reset();
-    simulationProblem_.clear();
+    endSimulation();
     return false;
   }
   endDrag(false, frame.time);
   hover_.reset();
-  if (simulationRevision_ != session_.fixedRevision()) {
+  const LiveSolverKind solver = frame.simulation->solver;
+  if (simulationRevision_ != session_.fixedRevision() || simulationSolver_ != solver) {
     simulation_.reset();
     simulationRevision_ = session_.fixedRevision();
+    simulationSolver_ = solver;
     try {
-      simulation_ = std::make_unique<LiveSimulation>(session_.fixed(), simulationOnWorker_);
+      if (solver == LiveSolverKind::Gpu && !gpuSolver_)
+        throw std::runtime_error("no GPU solver here (a Vulkan device with compute)");
+      simulation_ = std::make_unique<LiveSimulation>(
+          // The GPU's solver shares the drawing queue: it steps in turn.
+          session_.fixed(), simulationOnWorker_ && solver == LiveSolverKind::Cpu,
+          solver == LiveSolverKind::Gpu ? gpuSolver_ : LiveSolverFactory{});
       simulationProblem_.clear();
     } catch (const std::exception& e) {
       simulationProblem_ = e.what();

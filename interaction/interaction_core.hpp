@@ -162,6 +162,14 @@ class InteractionCore {
   // Simulations made from now on step on a worker thread (LiveSimulation's onWorker: the live
   // window draws while the next state is computed, one frame behind); replays leave it off.
   void setSimulationOnWorker(bool on) { simulationOnWorker_ = on; }
+  // What makes the solver of frames asking for the GPU (SimulationInput::solver): the host's
+  // Vulkan compute solver (app/desktop/gpu_live_solver.hpp). Without one such frames simulate
+  // nothing and simulationProblem() says so (a replay never has one). Changing the solver a frame
+  // asks for starts the simulation again from flat.
+  void setGpuSolver(LiveSolverFactory factory) { gpuSolver_ = std::move(factory); }
+  // Drops the simulation (the next frame with one starts again from flat): a host whose device
+  // goes before the core lets its GPU solver go first.
+  void endSimulation();
   // Why the last frame's simulation could not be made (a sheet the model refuses), else empty.
   const std::string& simulationProblem() const { return simulationProblem_; }
 
@@ -237,6 +245,8 @@ class InteractionCore {
   std::optional<std::uint64_t> simulationRevision_;
   std::string simulationProblem_;
   bool simulationOnWorker_ = false;
+  LiveSolverKind simulationSolver_ = LiveSolverKind::Cpu;
+  LiveSolverFactory gpuSolver_;
 };
 
 }  // namespace curvefold

@@ -43,11 +43,37 @@ std::optional<SimulationPull> SimulationPuller::update(const InputFrame::PointHa
   return SimulationPull{*pulled_, tip};
 }
 
-LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker)
+namespace {
+
+class CpuLiveSolver final : public LiveSolver {
+ public:
+  void advance(const BarHingeModel& model, double timeStep, double amount, std::uint32_t steps,
+               const std::optional<LivePull>& pull, SimulationState& state) override {
+    DynamicOptions options;
+    options.timeStep = timeStep;
+    if (!pull) {
+      stepDynamic(model, amount, state, steps, options);
+      return;
+    }
+    for (std::uint32_t step = 0; step < steps; ++step) {
+      state.velocities[pull->vertex] += pull->impulse * (pull->to - state.positions[pull->vertex]);
+      stepDynamic(model, amount, state, 1, options);
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<LiveSolver> cpuLiveSolver() {
+  return std::make_unique<CpuLiveSolver>();
+}
+
+LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker, const LiveSolverFactory& solver)
     : design_(design.positions), shown_(design), onWorker_(onWorker) {
   model_ = buildModel(designPattern(design).pattern);
   state_ = flatState(model_);
   timeStep_ = stableTimeStep(model_);
+  solver_ = solver ? solver(model_, state_) : cpuLiveSolver();
   placeNext();
   show();
 }
@@ -80,21 +106,14 @@ void LiveSimulation::finish() {
 }
 
 void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& before) {
-  DynamicOptions options;
-  options.timeStep = timeStep_;
-  const double amount = input.percent / 100.0;
-  if (!input.pull || model_.pinned[input.pull->vertex]) {
-    stepDynamic(model_, amount, state_, input.steps, options);
-  } else {
+  std::optional<LivePull> pull;
+  if (input.pull && !model_.pinned[input.pull->vertex]) {
     // The target in the model's frame: the inverse of the shown state's placement.
     const glm::dvec3 to = glm::transpose(before.rotation) * (input.pull->to - before.translation);
-    const std::uint32_t v = input.pull->vertex;
-    const double impulse = kPullStiffness / timeStep_;  // dt k / m with k = c m / dt^2
-    for (std::uint32_t step = 0; step < input.steps; ++step) {
-      state_.velocities[v] += impulse * (to - state_.positions[v]);
-      stepDynamic(model_, amount, state_, 1, options);
-    }
+    // dt k / m with k = c m / dt^2
+    pull = LivePull{input.pull->vertex, to, kPullStiffness / timeStep_};
   }
+  solver_->advance(model_, timeStep_, input.percent / 100.0, input.steps, pull, state_);
   placeNext();
 }
 

@@ -24,13 +24,21 @@
 // (the same inputs in the same order; stepDynamic is bit for bit the same on any thread), only
 // shown a frame later, so a recording still replays bit for bit (replays step synchronously).
 //
+// The solver (issue 39, 4): the frame's steps are taken by a LiveSolver, the CPU's dynamic
+// solver (cpuLiveSolver, the default and the only one a replay uses) or one the host makes, such
+// as the Vulkan compute solver (app/desktop/gpu_live_solver.hpp), whose state stays on its device
+// and comes back as positions each frame. Which one is input (SimulationInput::solver), so a
+// recording says which solver made it.
+//
 // Known limits: design mode only (every edge driven toward the design; paper mode's very stiff
 // bars need far more steps than a frame allows); no self-contact (the model has none).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <future>
+#include <memory>
 #include <vector>
 
 #include "engine/geometry/sheet.hpp"
@@ -50,6 +58,33 @@ inline constexpr double kPullStiffness = 0.05;
 std::uint32_t liveStepsPerFrame(std::size_t vertexCount);
 
 class LiveSimulation;
+
+// One vertex pulled toward a point in the model's frame: before each step its velocity gains
+// impulse (to - x) (dt k / m per metre; see above).
+struct LivePull {
+  std::uint32_t vertex = 0;
+  glm::dvec3 to{0.0};
+  double impulse = 0.0;
+};
+
+// What steps the live simulation's model. advance() takes `steps` fixed steps of `timeStep`
+// toward the fold amount (0..1) with the pull, if any (never on a pinned vertex), and leaves at
+// least the positions and the step count in `state` (the CPU solver the whole state).
+class LiveSolver {
+ public:
+  virtual ~LiveSolver() = default;
+  virtual void advance(const BarHingeModel& model, double timeStep, double amount,
+                       std::uint32_t steps, const std::optional<LivePull>& pull,
+                       SimulationState& state) = 0;
+};
+
+// The CPU's dynamic solver (stepDynamic): bit for bit on any machine and thread count.
+std::unique_ptr<LiveSolver> cpuLiveSolver();
+
+// Makes a solver for a model and its flat state (the host's, e.g. on its Vulkan device); throws
+// what it cannot (the simulation then reports it, as a model it cannot build).
+using LiveSolverFactory =
+    std::function<std::unique_ptr<LiveSolver>(const BarHingeModel&, const SimulationState&)>;
 
 // A frame's simulation input toward `percent` at liveStepsPerFrame of the design, with no pull.
 SimulationInput liveSimulationInput(double percent, const Sheet& design);
@@ -76,8 +111,10 @@ class SimulationPuller {
 class LiveSimulation {
  public:
   // Builds the model of `design` (design mode) and starts flat. Throws SimulationInputError or
-  // InvalidSheet for a sheet the model cannot be built from. onWorker: see above.
-  explicit LiveSimulation(const Sheet& design, bool onWorker = false);
+  // InvalidSheet for a sheet the model cannot be built from, and what `solver` throws. onWorker:
+  // see above (the host's solver must allow stepping from a worker then). No factory: the CPU's.
+  explicit LiveSimulation(const Sheet& design, bool onWorker = false,
+                          const LiveSolverFactory& solver = {});
   ~LiveSimulation();
   LiveSimulation(const LiveSimulation&) = delete;
   LiveSimulation& operator=(const LiveSimulation&) = delete;
@@ -97,7 +134,8 @@ class LiveSimulation {
   // Steps taken to the shown state.
   std::size_t steps() const { return shownSteps_; }
   const BarHingeModel& model() const { return model_; }
-  // The model's state; on a worker, only after finish() (the worker writes it meanwhile).
+  // The model's state; on a worker, only after finish() (the worker writes it meanwhile). With a
+  // host's solver, perhaps only the positions and the step count (LiveSolver).
   const SimulationState& state() const { return state_; }
 
   // The shown vertex nearest a point (sheet coordinates).
@@ -117,6 +155,7 @@ class LiveSimulation {
 
   BarHingeModel model_;
   SimulationState state_;
+  std::unique_ptr<LiveSolver> solver_;
   std::vector<glm::dvec3> design_;  // the design's positions, which the state is placed onto
   Sheet shown_;
   std::vector<glm::dvec3> shownModel_;  // the shown state's positions in the model's frame

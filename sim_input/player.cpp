@@ -10,6 +10,7 @@
 
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/io/json_reader.hpp"
 
 namespace curvefold {
 namespace {
@@ -77,6 +78,12 @@ Player::Player(const Recording& recording, const InteractionThresholds& threshol
       core_(session_, recording.header.sheetFrame, recording.header.handedness, thresholds) {
   if (!recording.header.symmetry.empty())
     session_.setSymmetry(parseSymmetry(recording.header.symmetry, session_.initial()));
+  for (const InputFrame& frame : recording.frames)
+    if (frame.simulation && frame.simulation->solver == LiveSolverKind::Gpu)
+      throw RecordingError("the frame at t=" + shortestDouble(frame.time) +
+                           " was simulated on the GPU solver, which is bit for bit only on the "
+                           "device that ran it: a GPU run is not replayed (simulate on the CPU to "
+                           "record a run that replays)");
 }
 
 const InputFrame& Player::step() {

@@ -61,7 +61,8 @@ void appendFoldLog(std::vector<FoldLogEntry>& log, const FoldSession& session,
 class Player {
  public:
   // Builds the initial sheet; throws DesignError when the engine refuses the header's surface
-  // (parseRecording has already checked it).
+  // (parseRecording has already checked it), RecordingError for a recording with frames the GPU
+  // solver simulated (SimulationInput::solver), which cannot be replayed bit for bit.
   explicit Player(const Recording& recording, const InteractionThresholds& thresholds = {});
   Player(const Player&) = delete;
   Player& operator=(const Player&) = delete;

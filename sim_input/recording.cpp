@@ -233,6 +233,12 @@ class LineReader : public JsonReader {
           SimulationPull{std::uint32_t(vertex),
                          vector3(member(*pull, "to", "simulation.pull"), "simulation.pull.to")};
     }
+    if (const json* solver = optionalMember(value, "solver", "simulation")) {
+      if (*solver == "gpu")
+        simulation.solver = LiveSolverKind::Gpu;
+      else if (*solver != "cpu")
+        fail("simulation.solver", "must be \"cpu\" or \"gpu\"");
+    }
     return simulation;
   }
 
@@ -331,6 +337,7 @@ std::string frameLine(const InputFrame& frame) {
                                {"steps", frame.simulation->steps}};
     if (const std::optional<SimulationPull>& pull = frame.simulation->pull)
       simulation["pull"] = {{"vertex", pull->vertex}, {"to", positionJson(pull->to)}};
+    if (frame.simulation->solver == LiveSolverKind::Gpu) simulation["solver"] = "gpu";
     value["simulation"] = std::move(simulation);
   }
   std::string line = value.dump();

@@ -19,7 +19,9 @@
 // suggested folds that arrived in that frame (docs/design.md 9), so a replay offers the same ones.
 // "simulation" ({"percent":P,"steps":N,"pull":{"vertex":i,"to":[x,y,z]}}, version 2) is present
 // while the sheet is simulated (InputFrame::simulation): the fold amount (0..100), the dynamic
-// steps the frame takes, and the vertex a hand pulls toward `to` (sheet coordinates), if any.
+// steps the frame takes, and the vertex a hand pulls toward `to` (sheet coordinates), if any;
+// "solver":"gpu" when the Vulkan compute solver stepped it (absent: the CPU's). A Player refuses
+// a recording with GPU frames (float, bit for bit only on the device that ran it).
 // "buttons" lists what is held and is omitted when nothing is. Every double is written in its
 // shortest exact form, so parsing a line gives back the very bits that were written.
 #pragma once

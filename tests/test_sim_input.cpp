@@ -896,6 +896,39 @@ TEST_F(TempDir, ARecordedSimulationReplaysBitForBit) {
   EXPECT_FALSE(sameArrays(unpulled.simulated, shown));
 }
 
+// A run the GPU solver stepped (the panel's "GPU", issue 39, 4) says so in its recording, which
+// reads back as written; a replay refuses it in one line (float on one device: not bit for bit
+// elsewhere), and a core with no GPU solver (a replay's) simulates nothing and says why.
+TEST_F(TempDir, AGpuSimulationIsRecordedAndItsReplayRefused) {
+  std::vector<InputFrame> frames = simulatedFrames(false);
+  frames[3].simulation->solver = LiveSolverKind::Gpu;
+  writeRecording({cylinderHeader(), frames}, dir_ / "gpu.jsonl");
+  const std::string text = slurp(dir_ / "gpu.jsonl");
+  EXPECT_NE(text.find("\"solver\":\"gpu\""), std::string::npos);
+  EXPECT_EQ(text.find("\"solver\":\"gpu\""), text.rfind("\"solver\":\"gpu\""));  // one frame
+  const Recording read = readRecording(dir_ / "gpu.jsonl");
+  ASSERT_EQ(read.frames.size(), frames.size());
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(read.frames[i].simulation, frames[i].simulation) << "frame " << i;
+  try {
+    Player player(read);
+    ADD_FAILURE() << "a GPU run was replayed";
+  } catch (const RecordingError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("GPU"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // The CPU's frames alone replay as ever.
+  EXPECT_NO_THROW(Player(Recording{cylinderHeader(), simulatedFrames(false)}));
+
+  FoldSession session(makeSurface("cylinder", {{"resolution", 8}}));
+  InteractionCore core(session, Pose{});
+  InputFrame frame = frames[3];
+  core.process(frame);
+  EXPECT_EQ(core.simulation(), nullptr);
+  EXPECT_NE(core.simulationProblem().find("GPU"), std::string::npos) << core.simulationProblem();
+}
+
 // The live window steps on a worker (LiveSimulation's onWorker): each frame shows the state after
 // the previous frame's input, and that state is the very one stepping in turn shows, bit for bit
 // (pulls included: the pull's target goes into the model's frame by the shown state's placement).

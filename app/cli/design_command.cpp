@@ -39,6 +39,8 @@ void addDesignCommand(CLI::App& app) {
   command->add_flag("--crease-pattern-panel", options->creasePatternPanel,
                     "Show the crease pattern as a side view (also a checkbox in the panel)");
   command->add_option("--size", *size, "Window size WxH (default 1280x720)");
+  command->add_flag("--gpu", options->gpu,
+                    "Simulate live on the Vulkan compute solver (also the panel's GPU checkbox)");
   command
       ->add_option("--msaa", options->msaa,
                    "Samples per pixel (default: 4 on a GPU, 1 on a CPU driver such as lavapipe)")

@@ -23,6 +23,7 @@
 
 #include "app/desktop/designer.hpp"
 #include "app/desktop/desktop_input.hpp"
+#include "app/desktop/gpu_live_solver.hpp"
 #include "app/desktop/interaction_scene.hpp"
 #include "app/session/document.hpp"
 #include "app/session/recent_designs.hpp"
@@ -262,6 +263,10 @@ class DesignerWindow {
   DesignerWindow(const DesignerOptions& options, unsigned width, unsigned height,
                  const Start& start, session::Document& doc, studio::StudioTarget& goal,
                  session::SessionOutputs& outputs);
+  // The simulation's GPU solver goes before the device it runs on (doc_ outlives the window).
+  ~DesignerWindow() {
+    if (doc_.core) doc_.core->endSimulation();
+  }
   // Frames until the window closes or Ctrl+Q.
   void run();
   // After run: the last frame's screenshot, the frame times, the session's files.
@@ -311,8 +316,9 @@ class DesignerWindow {
   const TriangleMesh* framedTarget_ = nullptr;
   std::vector<FrameTime> frameTimes_;
   double lastFrameCpuMs_ = 0.0;
-  const char* frameNote_ = "";  // what the studio did this frame, for --frame-times
-  SimulationPuller puller_;     // the mouse's pull of the simulated sheet
+  const char* frameNote_ = "";   // what the studio did this frame, for --frame-times
+  SimulationPuller puller_;      // the mouse's pull of the simulated sheet
+  LiveSolverFactory gpuSolver_;  // none: the device cannot run compute
   // Input time, which never goes backwards.
   Clock::time_point start_, lastFrame_;
   double lastTime_ = 0.0;
@@ -358,6 +364,15 @@ DesignerWindow::DesignerWindow(const DesignerOptions& options, unsigned width, u
   panel_.setRecent(session::loadRecentDesigns());
   panel_.setTargetPath(options_.target);
   panel_.setDesktop(true);
+  // The live simulation's Vulkan compute solver on the window's device (issue 39, 4).
+  if (supportsLiveCompute(context_)) {
+    gpuSolver_ = gpuLiveSolver(context_);
+    panel_.setGpuSolverAvailable(true);
+    panel_.setGpuSolver(options.gpu);
+  } else if (options.gpu) {
+    panel_.setMessage("--gpu: " + context_.deviceName() +
+                      " cannot run compute shaders; simulating on the CPU");
+  }
   // Save and the exports are named after the design: vase.curvefold.json opened saves to itself.
   panel_.nameDesign(options_.resume          ? start.autosavePath
                     : options_.input.empty() ? start.name
@@ -506,6 +521,7 @@ InputFrame DesignerWindow::nextInput() {
   // the headset's trigger does), recorded in the frame's pull.
   if (const std::optional<double> percent = panel_.simulationPercent()) {
     input.simulation = liveSimulationInput(*percent, doc_.session->fixed());
+    input.simulation->solver = panel_.simulationSolver();
     input.simulation->pull = puller_.update(
         input.pointHand, input.pointHand.tracked, doc_.core->simulation(),
         doc_.core->worldFromSheet(), doc_.core->viewScale(), doc_.core->thresholds().selectPress,
@@ -520,6 +536,9 @@ void DesignerWindow::process(InputFrame& input) {
   goal_.poll(doc_, input);  // a finished search's folds join the frame, and its recording
   if (!input.suggestions.empty()) frameNote_ = "offered";
   const Clock::time_point processStart = Clock::now();
+  if (gpuSolver_) doc_.core->setGpuSolver(gpuSolver_);  // the core is new after Open or New
+  // The CPU's steps overlap the drawing (one frame behind, the same states; performance.md).
+  doc_.core->setSimulationOnWorker(true);
   doc_.core->process(input);
   if (doc_.session->dragging() || doc_.core->simulation())
     stats_.dragUpdateMs =

@@ -17,7 +17,8 @@ struct DesignerOptions {
   bool resume = false;
   bool validation = false;
   bool creasePatternPanel = false;
-  int msaa = 0;  // samples per pixel; 0: the device's interactive default
+  bool gpu = false;  // the live simulation starts on the Vulkan compute solver (the panel's "GPU")
+  int msaa = 0;      // samples per pixel; 0: the device's interactive default
 };
 
 // What the window cannot open without; the command words it for its user (the desktop room

@@ -170,6 +170,7 @@ void HeadsetStudio::process(InputFrame& frame, const StudioStats& measured) {
   frame.simulation.reset();
   if (const std::optional<double> percent = panel_.simulationPercent()) {
     SimulationInput simulation = liveSimulationInput(*percent, doc_.session->fixed());
+    simulation.solver = panel_.simulationSolver();
     const InteractionThresholds& thresholds = doc_.core->thresholds();
     simulation.pull = puller_.update(point, target == PointTarget::Sheet, doc_.core->simulation(),
                                      doc_.core->worldFromSheet(), doc_.core->viewScale(),

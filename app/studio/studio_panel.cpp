@@ -555,6 +555,11 @@ void StudioPanel::drawSimulation(const session::Document& doc) {
   ImGui::SameLine();
   ImGui::Checkbox("strain", &strainColours_);
   item("strain");
+  if (gpuAvailable_) {
+    ImGui::SameLine();
+    ImGui::Checkbox("GPU", &gpuSolver_);
+    item("GPU");
+  }
   ImGui::BeginDisabled(!simulating_);
   ImGui::SliderFloat("fold %", &foldPercent_, 0.0f, 100.0f, "%.0f%%", ImGuiSliderFlags_AlwaysClamp);
   item("fold %");

@@ -111,6 +111,13 @@ class StudioPanel {
   bool strainColours() const { return simulating_ && strainColours_; }
   // Sets the section's state (a test, or a host restoring it).
   void setSimulation(bool on, double percent);
+  // The solver the host puts into the frame (SimulationInput::solver): the "GPU" checkbox, shown
+  // only where the host has a device that can (setGpuSolverAvailable; `design --gpu` ticks it).
+  LiveSolverKind simulationSolver() const {
+    return gpuAvailable_ && gpuSolver_ ? LiveSolverKind::Gpu : LiveSolverKind::Cpu;
+  }
+  void setGpuSolverAvailable(bool available) { gpuAvailable_ = available; }
+  void setGpuSolver(bool on) { gpuSolver_ = on; }
 
   const std::string& message() const { return message_; }
   void setMessage(std::string message) { message_ = std::move(message); }
@@ -186,6 +193,7 @@ class StudioPanel {
   bool simulating_ = false;
   float foldPercent_ = 100.0f;  // a new simulation folds from flat to the design
   bool strainColours_ = false;
+  bool gpuAvailable_ = false, gpuSolver_ = false;
 };
 
 }  // namespace curvefold::studio

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <thread>
 
+#include "app/desktop/gpu_live_solver.hpp"
 #include "app/desktop/interaction_scene.hpp"
 #include "app/session/recent_designs.hpp"
 #include "app/studio/headset_studio.hpp"
@@ -144,7 +145,9 @@ XrApp::XrApp(const XrAppOptions& options) : options_(options) {
   summary_.autosave = autosave_;
 }
 
-XrApp::~XrApp() = default;
+XrApp::~XrApp() {
+  if (doc_.core) doc_.core->endSimulation();  // a GPU solver goes before the device (graphics_)
+}
 
 void XrApp::makeStudio(const Pose& sheetFrame) {
   studio::HeadsetStudioOptions options;
@@ -249,6 +252,17 @@ void XrApp::processInput(XrTime displayTime) {
     return;
   const HandSide handedness = doc_.core->handedness();
   startRecording();
+  // The live simulation's Vulkan compute solver on the headset's device (issue 39, 4), offered
+  // in the panel once the device exists; the core is new after Open or New.
+  if (const VulkanContext* context = graphics_->context(); context != gpuContext_) {
+    doc_.core->endSimulation();  // its solver may be on the device that went
+    gpuContext_ = context;
+    gpuSolver_ = {};
+    if (context && desktop::supportsLiveCompute(*context))
+      gpuSolver_ = desktop::gpuLiveSolver(*context);
+    studio_->panel().setGpuSolverAvailable(bool(gpuSolver_));
+  }
+  if (gpuSolver_) doc_.core->setGpuSolver(gpuSolver_);
   studio_->process(input, stats_);
   lastInput_ = input;
   ++summary_.framesProcessed;

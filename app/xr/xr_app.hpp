@@ -122,6 +122,9 @@ class XrApp {
   studio::StudioStats stats_;
   bool restart_ = false;
   XrAppSummary summary_;
+  // The live simulation's GPU solver on graphics_'s device (none: no device, or no compute).
+  const VulkanContext* gpuContext_ = nullptr;
+  LiveSolverFactory gpuSolver_;
 };
 
 }  // namespace curvefold::xr
