@@ -143,7 +143,9 @@ TEST(PleatFolds, TurnBothEndsOfASaddleInOneStep) {
   // One pleat on each side of the middle (y = 0.1), across the rulings.
   EXPECT_LT((best.folds[0].plane.point.y - 0.1) * (best.folds[2].plane.point.y - 0.1), 0.0);
   for (const FoldSuggestion& other : pleats)
-    if (other.folds.size() == 2) EXPECT_LT(best.after, other.after);
+    if (other.folds.size() == 2) {
+      EXPECT_LT(best.after, other.after);
+    }
   EXPECT_LT(best.after, 0.7 * before) << before;
   testing::expectInvariants(best.sheet, session.initial());
   EXPECT_TRUE(findSelfIntersections(best.sheet).intersections.empty());

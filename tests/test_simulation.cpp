@@ -258,8 +258,9 @@ TEST(Simulation, WaterbombBaseFoldsFlatAlongItsMotion) {
       std::fprintf(stderr, "\n");
     }
     for (std::size_t j = 0; j < model.hinges.size(); ++j)
-      if (model.hingeCrease[j])
+      if (model.hingeCrease[j]) {
         EXPECT_NEAR(std::abs(state.hingeAngles[j]) * kDegrees, 180.0, 0.5) << "hinge " << j;
+      }
   }
 }
 
@@ -286,8 +287,9 @@ TEST(Simulation, DynamicSolverAloneFoldsTheWaterbombBaseFlatFromFlat) {
     worstStrain = std::max(worstStrain, std::abs(strain));
   EXPECT_LE(worstStrain, 1e-3);
   for (std::size_t j = 0; j < model.hinges.size(); ++j)
-    if (model.hingeCrease[j])
+    if (model.hingeCrease[j]) {
       EXPECT_NEAR(std::abs(state.hingeAngles[j]) * kDegrees, 180.0, 0.5) << "hinge " << j;
+    }
   std::fprintf(stderr, "waterbomb (6 creases), dynamic: %zu frames, worst crease error %.3f\n",
                frame - 1, worstError);
 }
