@@ -254,7 +254,8 @@ void XrApp::processInput(XrTime displayTime) {
   startRecording();
   // The live simulation's Vulkan compute solver on the headset's device (issue 39, 4), offered
   // in the panel once the device exists; the core is new after Open or New.
-  if (const VulkanContext* context = graphics_->context(); context != gpuContext_) {
+  const VulkanContext* context = graphics_ ? graphics_->context() : nullptr;  // none: headless
+  if (context != gpuContext_) {
     doc_.core->endSimulation();  // its solver may be on the device that went
     gpuContext_ = context;
     gpuSolver_ = {};
