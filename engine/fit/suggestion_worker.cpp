@@ -6,6 +6,8 @@
 
 #include <cerrno>
 #include <exception>
+#include <map>
+#include <mutex>
 
 #include <tbb/task_arena.h>
 #include <tbb/task_scheduler_observer.h>
@@ -40,7 +42,6 @@ class NiceWhileSearching : public tbb::task_scheduler_observer {
       : tbb::task_scheduler_observer(arena), nice_(nice) {
     observe(true);
   }
-  ~NiceWhileSearching() override { observe(false); }
   void on_scheduler_entry(bool worker) override {
     if (!worker) return;
     before_ = threadNice();
@@ -55,6 +56,24 @@ class NiceWhileSearching : public tbb::task_scheduler_observer {
   static thread_local int before_;
 };
 thread_local int NiceWhileSearching::before_ = 0;
+
+// The arena the searches at `nice` run in, with its observer: one per nice for the whole process,
+// never taken down. TBB (2021.8) can lose an observer's record when observe(false) or the arena's
+// end races a worker still leaving it (LeakSanitizer caught it in CI), and an arena that lives on
+// has no such end.
+tbb::task_arena& searchArena(int nice) {
+  struct Lowered {
+    explicit Lowered(int nice) : observer(arena, nice) {}
+    tbb::task_arena arena{};
+    NiceWhileSearching observer;
+  };
+  static std::mutex mutex;
+  static std::map<int, Lowered*>& arenas = *new std::map<int, Lowered*>;  // never destroyed
+  const std::lock_guard lock(mutex);
+  Lowered*& lowered = arenas[nice];
+  if (lowered == nullptr) lowered = new Lowered(nice);
+  return lowered->arena;
+}
 
 }  // namespace
 
@@ -122,9 +141,7 @@ std::optional<SuggestionWorker::Answer> SuggestionWorker::take() {
 void SuggestionWorker::run() {
   // This thread only searches: it stays at nice_, and the TBB workers in its arena go to it.
   if (threadNice() < nice_) setThreadNice(nice_);
-  tbb::task_arena arena;
-  arena.initialize();
-  NiceWhileSearching lowered(arena, nice_);
+  tbb::task_arena& arena = searchArena(nice_);
   while (true) {
     std::pair<DesignSnapshot, std::size_t> job;
     std::shared_ptr<const FoldFitter> fitter;
