@@ -56,6 +56,8 @@ constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
 // the start's or the fold before's (FitRun::measure).
 constexpr double kHausdorffSlack = 1.1;
+// A fit within this much of the diagonal (Hausdorff) reaches the target.
+constexpr double kReached = 0.01;
 // A pleat that brings the sheet this much closer (the search's distance) stands for the step
 // toward a smooth target that is no surface of revolution (FitRun::beamSearch).
 constexpr double kPleatEnough = 0.05;
@@ -1250,10 +1252,19 @@ class FitRun {
       return m.steps[g].hausdorff <=
              kHausdorffSlack * std::max(start, g > 0 ? m.steps[g - 1].hausdorff : start);
     };
+    // A fold that brings the farthest point within reach (1% of the diagonal) from beyond it
+    // gains, however little the Chamfer distance falls: a small flap read last moves a sliver of
+    // the area, not of the shape.
+    auto reaches = [&](std::size_t g) {
+      const FitProgress& previous = g > 0 ? m.steps[g - 1] : result_.steps.front();
+      return m.steps[g].hausdorff <= kReached * m.steps[g].diagonal &&
+             previous.hausdorff > kReached * previous.diagonal;
+    };
     auto gains = [&](std::size_t g) {  // whether group g (from 0) brings the sheet closer enough
-      return m.steps[g].chamfer < (1.0 - options_.minimumGain) * before(g) &&
-             before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal &&
-             bounded(g);
+      return (m.steps[g].chamfer < (1.0 - options_.minimumGain) * before(g) &&
+              before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal &&
+              bounded(g)) ||
+             reaches(g);
     };
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
@@ -1271,8 +1282,9 @@ class FitRun {
   void commitBest() {
     const FoldSequence* chosen = &best_;
     Measured measured = measure(best_, false);
-    const bool reaches = measured.keep > 0 && measured.steps[measured.keep - 1].hausdorff <=
-                                                  0.01 * measured.steps[measured.keep - 1].diagonal;
+    const bool reaches =
+        measured.keep > 0 && measured.steps[measured.keep - 1].hausdorff <=
+                                 kReached * measured.steps[measured.keep - 1].diagonal;
     bool falls = true;
     for (std::size_t g = 0; g < measured.keep; ++g)
       falls = falls && measured.steps[g].chamfer <

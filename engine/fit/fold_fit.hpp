@@ -179,7 +179,8 @@ struct FitOptions {
   // Set from another thread (or a signal handler) to stop the search at its next check; the
   // folds found are still measured and committed.
   const std::atomic<bool>* cancelled = nullptr;
-  // Each fold kept must lower the exact Chamfer distance by this fraction at least.
+  // Each fold kept must lower the exact Chamfer distance by this fraction at least (or bring the
+  // sheet within 1% of the diagonal, Hausdorff, from beyond it: a small flap read last).
   double minimumGain = 0.01;
   // and by this fraction of the target's diagonal (a fit already as close as the samples tell
   // gains nothing from more folds).

@@ -129,18 +129,35 @@ struct Unfolder {
             Candidate candidate;
             candidate.plane = plane;
             const bool positive = d[seed] > 0.0;
+            const int piece = static_cast<int>(candidates.size());
             std::vector<std::uint32_t> stack{seed};
-            component[seed] = 1;
+            component[seed] = piece;
             while (!stack.empty()) {
               const std::uint32_t v = stack.back();
               stack.pop_back();
               candidate.part.push_back(v);
               for (std::uint32_t w : connectivity.neighbours[v])
                 if (component[w] < 0 && std::abs(d[w]) > onPlane && (d[w] > 0.0) == positive) {
-                  component[w] = 1;
+                  component[w] = piece;
                   stack.push_back(w);
                 }
             }
+            // A vertex of the sheet that happens to lie within `onPlane` of the plane but off
+            // the crease (a crease passing a grid vertex by a micrometre) stops the growth:
+            // left behind, its slivers of triangles stay bent. It moves with the piece when every
+            // neighbour off the plane is in it (a crease vertex has neighbours on both sides).
+            const std::size_t grown = candidate.part.size();
+            for (std::size_t k = 0; k < grown; ++k)
+              for (std::uint32_t w : connectivity.neighbours[candidate.part[k]]) {
+                if (component[w] >= 0 || std::abs(d[w]) > onPlane) continue;
+                const auto& around = connectivity.neighbours[w];
+                const bool inside = std::all_of(around.begin(), around.end(), [&](std::uint32_t u) {
+                  return std::abs(d[u]) <= onPlane || component[u] == piece;
+                });
+                if (!inside) continue;
+                component[w] = piece;
+                candidate.part.push_back(w);
+              }
             std::vector<glm::dvec3> moved = positions;
             for (std::uint32_t v : candidate.part) moved[v] = plane.reflect(moved[v]);
             candidate.sharpAfter = sharpLength(target, connectivity, moved, cosBent);

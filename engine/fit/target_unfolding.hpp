@@ -2,7 +2,8 @@
 // the sheet. The last fold's crease is never moved after it is made, so it lies whole in that
 // fold's plane [Mitani & Igarashi 2011, Sec. 3.3], and the part the fold reflected meets the rest
 // only along it: the target's vertices strictly on one side of the plane, grown from a vertex
-// next to the crease, are that part (or the rest). Reflecting it back through the plane makes the
+// next to the crease, are that part (or the rest), with any vertex within the plane's tolerance
+// whose neighbours off the plane all lie in it (a grid vertex a crease passed by a micrometre). Reflecting it back through the plane makes the
 // crease smooth again, and the target is as it was before its last fold; repeated, the target
 // unfolds to the sheet it was folded from, and its folds, read backwards, fold the sheet onto it.
 //
