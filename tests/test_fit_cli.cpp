@@ -112,10 +112,9 @@ std::string saddleTarget() {
 TEST_F(FitCli, TheSeedChoosesTheDesignAndEvaluationsRepeatIt) {
   const std::string a = path("a.curvefold.json").string(), b = path("b.curvefold.json").string(),
                     c = path("c.curvefold.json").string();
-  // Under sanitizers (20 times slower here) a smaller budget, still past the first depth. Below
-  // the two steps' cost (a fold, then a solved pleat: some 990 evaluations), so the budget stops
-  // it.
-  const unsigned evaluations = curvefold::testing::kSanitized ? 300 : 600;
+  // Past the first step's cost and below the two steps' (some 110 and 100 evaluations), so the
+  // budget stops it after the first.
+  const unsigned evaluations = 100;
   const std::string fit = "fit " + saddleTarget() +
                           " --from square --resolution 12 --folds 2 --evaluations " +
                           std::to_string(evaluations) + " --seed ";

@@ -16,6 +16,7 @@
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -223,6 +224,38 @@ TEST(StartSurface, AScanWhoseNoiseBendsFewEdgesSharplyIsNoFoldedTarget) {
   TriangleMesh scan = heightGrid(0.3, 40, [](double x, double y) { return x * y / 0.25; });
   for (glm::dvec3& p : scan.positions) p.z += 0.0005 * noise();
   EXPECT_TRUE(isSmoothOrScanned(scan));
+}
+
+// The search's distance toward a smooth shape must see the target's parts the sheet leaves
+// uncovered: a sheet lying exactly on a hypar's middle, its rim 4 cm beyond the sheet's edge,
+// is farther from it (Chamfer and Hausdorff) than the whole hypar lifted 1% of its diagonal off
+// itself, and the search must rank them so (its distance cut at 1% once saw the rim barely, and
+// ranked the middle first, so no fold or pleat toward the rim was ever kept).
+TEST(FoldFit, TheSearchsDistanceSeesATargetsUncoveredRim) {
+  auto height = [](double x, double y) { return x * y / 0.2; };
+  const TriangleMesh hypar = heightGrid(0.26, 36, height);
+  const FoldFitter fitter(hypar, quickSettings());
+  ASSERT_TRUE(fitter.smoothTarget());
+  ASSERT_FALSE(fitter.revolutionTarget());
+  const double lift = 0.01 * fitter.targetDiagonal();
+  TriangleMesh lifted = hypar;
+  for (glm::dvec3& p : lifted.positions)
+    p += lift * glm::normalize(glm::dvec3(-p.y / 0.2, -p.x / 0.2, 1.0));
+  TriangleMesh middle = heightGrid(0.18, 24, height);
+  auto searchDistance = [&](const TriangleMesh& sheet) {
+    std::vector<glm::dvec3> points, normals;
+    for (const SurfaceSample& s : sampleSurface(sheet, 1500, 5)) {
+      points.push_back(s.position);
+      normals.push_back(s.normal);
+    }
+    return fitter.approximateDistance(points, normals, 0.5 * std::sqrt(surfaceArea(sheet) / 1500));
+  };
+  const SurfaceDistance toMiddle = surfaceDistance(middle, hypar, 4000);
+  const SurfaceDistance toLifted = surfaceDistance(lifted, hypar, 4000);
+  ASSERT_LT(toLifted.chamfer, 0.8 * toMiddle.chamfer);  // the premise: exactly, the rim costs
+  ASSERT_LT(toLifted.hausdorff, 0.5 * toMiddle.hausdorff);
+  EXPECT_LT(searchDistance(lifted), searchDistance(middle))
+      << "lifted " << searchDistance(lifted) << ", middle " << searchDistance(middle);
 }
 
 // A saddle z = 4 x^2 - 2 (y - 0.1)^2 from the trough z = 4 x^2 (the swept parabola nearest it):

@@ -214,17 +214,25 @@ struct FoldFitter::Target {
   double robust = kInfinity;           // metres: where a distance stops counting in full
   std::optional<RevolutionAxis> axis;  // a surface of revolution's (profile_folds.hpp)
   bool smooth = false;                 // isSmoothOrScanned (start_surface.hpp)
+  // Toward a smooth shape with no axis (a saddle), the target's side counted in full (score).
+  bool coverInFull = false;
 
   // What the search lowers, for sheet samples (points, normals, spaced 2 * radius): the mean
   // two-sided distance, each distance cut at `robust` and a tenth of it kept beyond, so a fold
   // that lays part of the sheet exactly onto the target counts for more than one that brings
   // all of it somewhat closer (the inlier count of RANSAC and robust ICP); each side's plain
-  // distances when asked for.
+  // distances when asked for. Toward a smooth shape with no axis (a saddle, which no sheet
+  // reaches, so nothing lies on it exactly) the target's side is not cut: a rim the sheet leaves
+  // uncovered costs its whole distance, as in the exact Chamfer distance that keeps a step, and a
+  // pleat that turns an end over it scores as it measures (cut, a hypar's rim 5-10% of the
+  // diagonal off the sheet cost little more than 1%, and no step toward it was kept).
+  // Surfaces of revolution keep the cut: their rings and nested rings are tuned to it.
   double score(const PointCloud& points, const std::vector<glm::dvec3>& normals, double radius,
                std::vector<double>* fromSheet = nullptr,
                std::vector<double>* fromTarget = nullptr) const {
     if (points.points.empty()) return kInfinity;
     auto cost = [&](double d) { return std::min(d, robust) + 0.1 * d; };
+    auto targetCost = [&](double d) { return coverInFull ? d : cost(d); };
     double sheetSum = 0.0, targetSum = 0.0;
     if (fromSheet) fromSheet->resize(points.points.size());
     for (std::size_t i = 0; i < points.points.size(); ++i) {
@@ -238,7 +246,7 @@ struct FoldFitter::Target {
     for (std::size_t k = 0; k < queries.size(); ++k) {
       const std::uint32_t i = nearest(sheetTree, queries[k].position);
       const double d = nearSurface(queries[k].position, points.points[i], normals[i], radius);
-      targetSum += cost(d);
+      targetSum += targetCost(d);
       if (fromTarget) (*fromTarget)[k] = d;
     }
     return 0.5 * (sheetSum / static_cast<double>(points.points.size()) +
@@ -270,7 +278,11 @@ FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
   t.robust = settings.robustDistance * t.diagonal;
   // Rings and pleats are for shapes reflections do not reach; a folded tube is no vase.
   t.smooth = isSmoothOrScanned(t.mesh);
-  if (settings.rings > 0 && t.smooth) t.axis = revolutionAxis(t.queries);
+  // The axis decides the score too, with rings or without (the studio's one-drag offers).
+  const std::optional<RevolutionAxis> axis =
+      t.smooth ? revolutionAxis(t.queries) : std::optional<RevolutionAxis>();
+  if (settings.rings > 0) t.axis = axis;
+  t.coverInFull = t.smooth && !axis;
 }
 
 FoldFitter::~FoldFitter() = default;
