@@ -2,7 +2,8 @@
 // (targets 1 ms and 10 ms on 2 cores), and a 10k-vertex design from flat to settled at 100% by the
 // static solver (target 2 s), and every bundled and showcase design from flat by the solvers alone
 // (BM_DesignFromFlatBySolvers/NAME), and by the dynamic solver alone as the live window steps it
-// (BM_DesignFromFlatLive/NAME/S; crease patterns: BM_PatternFromFlatLive/NAME/S). The patterns: a
+// (BM_DesignFromFlatLive/NAME/S; crease patterns: BM_PatternFromFlatLive/NAME/S), and through the
+// live window's own path, predictor included (BM_DesignFromFlatLiveWindow/NAME). The patterns: a
 // square grid with one crease through the middle; the design: the cylinder surface bent to its
 // shape (design mode drives every edge to its dihedral).
 #include <benchmark/benchmark.h>
@@ -177,6 +178,40 @@ void designFromFlatLive(benchmark::State& bench, const std::filesystem::path& re
   bench.counters["strain_pct"] = 100.0 * worstStrain;
 }
 
+// The same through the live window's own path (interaction/live_simulation.hpp, as the window's
+// fold-amount slider drives it: liveSimulationInput, liveStepsPerFrame steps a frame, the
+// predictor whenever the amount changes; the project's design-mode stiffnesses): the slider moved
+// from 0 to 100% over the first kSliderFrames frames and then held; counts the frames until the
+// shown sheet is within 0.5% of the design's diagonal (two-sided Hausdorff), checked every frame
+// from the slider's last frame for ten frames, then every kCheckEvery, up to kMaxFrames.
+void designFromFlatLiveWindow(benchmark::State& bench, const std::filesystem::path& recording) {
+  const Sheet sheet = replayRecording(readRecording(recording)).sheet;
+  std::size_t frames = 0, predictions = 0;
+  double distance = 1.0, worstStrain = 0.0;
+  for (auto _ : bench) {
+    LiveSimulation live(sheet);
+    for (frames = 1; frames <= kMaxFrames; ++frames) {
+      live.advance(liveSimulationInput(
+          100.0 * std::min(1.0, double(frames) / double(kSliderFrames)), sheet));
+      if (frames < kSliderFrames || (frames >= kSliderFrames + 10 && frames % kCheckEvery != 0))
+        continue;
+      distance = surfaceDistance(meshOf(live.sheet()), meshOf(sheet)).relativeHausdorff();
+      if (!std::isfinite(distance) || distance <= 0.005) break;
+    }
+    worstStrain = 0.0;
+    for (double strain : edgeStrain(live.model(), live.state().positions))
+      worstStrain = std::max(worstStrain, std::abs(strain));
+    predictions = live.predictions();
+  }
+  bench.counters["vertices"] = static_cast<double>(sheet.vertexCount());
+  bench.counters["steps_per_frame"] = liveStepsPerFrame(sheet.vertexCount());
+  bench.counters["frames"] = static_cast<double>(std::min(frames, kMaxFrames));
+  bench.counters["reached"] = distance <= 0.005 ? 1 : 0;
+  bench.counters["hausdorff_pct"] = 100.0 * distance;
+  bench.counters["strain_pct"] = 100.0 * worstStrain;
+  bench.counters["predictions"] = static_cast<double>(predictions);
+}
+
 // Crease patterns (tests/data/crease_patterns, and every .fold and .svg in the folder
 // $CURVEFOLD_BENCH_PATTERNS when set, e.g. Origami Simulator's assets) folded from flat the same
 // way, in design mode: frames until every crease is within 0.5 degrees of its 100% angle, up to
@@ -251,6 +286,13 @@ void registerDesigns() {
       benchmark::RegisterBenchmark(
           ("BM_DesignFromFlatBySolvers/" + path.stem().string()).c_str(),
           [path](benchmark::State& bench) { designFromFlatBySolvers(bench, path); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+    for (const auto& path : paths)
+      benchmark::RegisterBenchmark(
+          ("BM_DesignFromFlatLiveWindow/" + path.stem().string()).c_str(),
+          [path](benchmark::State& bench) { designFromFlatLiveWindow(bench, path); })
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(1);

@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "engine/simulation/design_input.hpp"
+#include "engine/simulation/hinge_unfolding.hpp"
 
 namespace curvefold {
 
@@ -113,8 +114,27 @@ void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& be
     // dt k / m with k = c m / dt^2
     pull = LivePull{input.pull->vertex, to, kPullStiffness / timeStep_};
   }
-  solver_->advance(model_, timeStep_, input.percent / 100.0, input.steps, pull, state_);
+  const double amount = input.percent / 100.0;
+  if (!input.pull && amount != predictedAmount_ && tryPredictor(amount)) solver_->setState(state_);
+  if (!input.pull) predictedAmount_ = amount;
+  solver_->advance(model_, timeStep_, amount, input.steps, pull, state_);
   placeNext();
+}
+
+bool LiveSimulation::tryPredictor(double amount) {
+  const std::vector<double> targets = hingeTargets(model_, amount);
+  SimulationState predicted = unfoldedState(model_, targets);
+  const double current = modelEnergy(model_, state_.positions, targets, state_.hingeAngles);
+  if (!(modelEnergy(model_, predicted.positions, targets, predicted.hingeAngles) < current))
+    return false;
+  // Where the sheet is now, so only its shape changes; at rest.
+  const RigidPlacement onto = bestRigidPlacement(predicted.positions, state_.positions);
+  for (std::size_t v = 0; v < predicted.positions.size(); ++v)
+    state_.positions[v] = onto.apply(predicted.positions[v]);
+  state_.velocities.assign(model_.vertexCount(), glm::dvec3(0.0));
+  state_.hingeAngles = predicted.hingeAngles;  // a rigid motion keeps every angle
+  ++predictions_;
+  return true;
 }
 
 void LiveSimulation::placeNext() {

@@ -30,6 +30,20 @@
 // and comes back as positions each frame. Which one is input (SimulationInput::solver), so a
 // recording says which solver made it.
 //
+// The predictor (issue 39, 4): whenever the fold amount changes, and no pull is held, the state
+// unfoldedState makes at the new amount (engine/simulation/hinge_unfolding.hpp: every hinge of a
+// spanning tree at its target) is tried, as the static solver's settle tries it, and taken,
+// rigidly placed onto the state and at rest, when its energy at the new targets is lower than
+// the state's. For a design in design mode at 100% that state is the design itself, so the sheet
+// reaches it on the frame the slider does. Without it the dynamic steps alone crept for
+// thousands of frames (docs/performance.md, "From flat by the dynamic solver alone"): the step is
+// set by the sliver triangles of reflection cuts (25 to 300 times shorter than the median
+// vertex's), and the per-step velocity damping overdamps the sheet's soft bending, which had to
+// pull creases 50 degrees short of their angle back through stretched bars. Between 0 and 100%
+// the targets of a curved design cannot all be met at once; there the predicted state tears
+// (vertices placed by the first triangle to reach them) and is higher in energy, and the dynamic
+// state stays.
+//
 // Known limits: design mode only (every edge driven toward the design; paper mode's very stiff
 // bars need far more steps than a frame allows); no self-contact (the model has none).
 #pragma once
@@ -76,6 +90,8 @@ class LiveSolver {
   virtual void advance(const BarHingeModel& model, double timeStep, double amount,
                        std::uint32_t steps, const std::optional<LivePull>& pull,
                        SimulationState& state) = 0;
+  // The state was replaced (the predictor's, above): a solver that keeps its own copy takes it.
+  virtual void setState(const SimulationState& /*state*/) {}
 };
 
 // The CPU's dynamic solver (stepDynamic): bit for bit on any machine and thread count.
@@ -133,6 +149,8 @@ class LiveSimulation {
   const std::optional<SimulationPull>& pull() const { return pull_; }
   // Steps taken to the shown state.
   std::size_t steps() const { return shownSteps_; }
+  // How often the predictor's state was taken (on a worker: after finish()).
+  std::size_t predictions() const { return predictions_; }
   const BarHingeModel& model() const { return model_; }
   // The model's state; on a worker, only after finish() (the worker writes it meanwhile). With a
   // host's solver, perhaps only the positions and the step count (LiveSolver).
@@ -152,6 +170,8 @@ class LiveSimulation {
   void placeNext();
   // The worker's state becomes the shown one.
   void show();
+  // The predictor at the fold amount (0..1), taken when lower in energy (see above); true if so.
+  bool tryPredictor(double amount);
 
   BarHingeModel model_;
   SimulationState state_;
@@ -166,6 +186,8 @@ class LiveSimulation {
   RigidPlacement nextPlacement_;
   double timeStep_ = 0.0;
   double percent_ = 0.0;
+  double predictedAmount_ = 0.0;  // the last amount the predictor was tried at (flat: 0)
+  std::size_t predictions_ = 0;   // how often it was taken
   std::optional<SimulationPull> pull_;
   bool onWorker_ = false;
   std::future<void> job_;

@@ -127,9 +127,13 @@ TEST(InteractionSheetTracker, StrainColoursTheSimulatedSheet) {
   tracker.describe(core, shown, /*strainColours=*/true);
   EXPECT_TRUE(shown.vertexColors.empty());  // the design, not simulated: paper
   InputFrame frame;
-  for (int i = 0; i < 3; ++i) {  // a few frames from flat toward the design: strained
+  // A few frames from flat toward the design with a corner pulled: strained (a pull also keeps
+  // the live predictor off, which would give the cylinder's unstrained shape at 60% at once).
+  for (int i = 0; i < 3; ++i) {
     frame.time += 1.0 / 60.0;
     frame.simulation = liveSimulationInput(60.0, session.fixed());
+    frame.simulation->pull =
+        SimulationPull{0, session.fixed().positions[0] + glm::dvec3(0.0, 0.0, 0.05)};
     core.process(frame);
   }
   ASSERT_NE(core.simulation(), nullptr);

@@ -25,6 +25,8 @@ class GpuLiveSolver final : public LiveSolver {
     state.steps = solver_.steps();
   }
 
+  void setState(const SimulationState& state) override { solver_.setState(state); }
+
  private:
   GpuDynamicSolver solver_;
 };
