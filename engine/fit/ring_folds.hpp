@@ -10,15 +10,15 @@
 // each ring's planes tilted so its cut deepens toward one end, to the profile's radius there.
 //
 // Method: several rings along the axis, chosen as a chain on the target's radius profile r(h)
-// rather than one ring per step of the search. Five chains of up to `mostRings` rings:
+// rather than one ring per step of the search. Two chains of up to `mostRings` rings:
 //  - grown on the sheet itself: at each step every ring neckRings solves for the sheet as the
 //    rings before it left it (4 orders, each end, two turns: 16) is made, checked for passing
 //    the sheet through itself, and measured; the closest is kept while it brings the sheet closer;
-//  - four previewed (previewRing: each sample on a plane's far side reflected, plane after
-//    plane), one of mixed orders and one each of 6, 8 and 12 planes, grown the same way on the
-//    preview, then refined as a whole by NLopt's Subplex over every ring's height, depth and tilt
-//    at once (no ring cut deeper than solved), then made ring after ring (a ring that crosses the
-//    sheet is tried again shallower, then given up with those after it).
+//  - solved jointly on a preview (previewRing: each sample on a plane's far side reflected, plane
+//    after plane): grown the same way on the preview, then refined as a whole by NLopt's Subplex
+//    over every ring's height, depth and tilt at once (no ring cut deeper than solved), then made
+//    ring after ring (a ring that crosses the sheet is tried again shallower, then given up with
+//    those after it).
 // Rings are chosen, and the chains ranked, by the Chamfer distance (surface_distance.hpp, 1500
 // samples a side), not the search's robust distance, which caps far points: a tube's untouched
 // neck is all far points. Each chain's closest prefix is its suggestion, its `after` the search's
@@ -29,11 +29,11 @@
 // bounding box, at least half a radius long; any other sheet gets none: a folded tube's profile
 // is no longer one radius per height) and the target's area-uniform samples. Output: up to
 // `count` FoldSuggestions (all rings of one chain as one step), best first, each closer than the
-// sheet was by both distances. Measured (docs/performance.md): the grown chain is nearly always
-// the best; the previews ignore which parts each fold takes and often score far better than what
-// is made. Known limits: a ring's wedges stay apart only down to about cos(pi / n) of the radius,
-// so a neck narrower than about 0.7 of the tube is approached, not reached; the cut tube is a star
-// of n lobes, not a circle; greedy: a first ring is never cut shallower to let a second go deeper.
+// sheet was by both distances. The preview ignores which parts each fold takes: on the example
+// vase the joint chain previews far closer than it is made, and the grown chain wins. Known limits:
+// a ring's wedges stay apart only down to about cos(pi / n) of the radius, so a neck narrower than
+// about 0.7 of the tube is approached, not reached; the cut tube is a star of n lobes, not a
+// circle; greedy: a first ring is never cut shallower to let a second go deeper.
 #pragma once
 
 #include <cstddef>
