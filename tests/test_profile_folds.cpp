@@ -1,6 +1,7 @@
 // Rings of folds toward surfaces of revolution (issue 38, 2; engine/fit/profile_folds.hpp).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
+#include "engine/fit/ring_folds.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
@@ -261,6 +263,55 @@ TEST(NeckRings, ARingSolvedOnTheProfileFollowsATaperingNeck) {
   // Made on the sheet, the ring keeps it valid and passes nothing through itself.
   FoldSession session(tube);
   EXPECT_EQ(makeRing(session, ringOf(chosen, *axis)), static_cast<std::size_t>(chosen.order));
+  validate(session.fixed());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
+}
+
+// A vase about z, 20 cm tall: a belly of 5.5 cm at its middle narrowing to 4 cm at the foot and
+// the neck (rings narrow a tube: the belly is where the tube starts).
+TriangleMesh bellyVase() {
+  return revolved([](double h) { return 0.04 + 0.015 * std::cos(std::numbers::pi * h / 0.2); },
+                  -0.1, 0.1, 64, 40);
+}
+
+TEST(StartSurface, AVasesCylinderIsAsWideAsItsBelly) {
+  const StartChoice start = chooseStart(bellyVase(), "cylinder");
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "cylinder");
+  // The widest of 16 bands of height: 5.5 cm less the band's own narrowing (the mean radius of
+  // the whole vase is about 4.95 cm).
+  EXPECT_NEAR(start.parameters.at("radius"), 0.0549, 0.0006);
+  EXPECT_NEAR(start.parameters.at("height"), 0.2, 0.002);
+}
+
+// From the widest tube, the fit's first step is a chain of rings solved together on the
+// profile (ring_folds.hpp), narrowing the tube toward the foot and the neck: one step, without a
+// clock, more than 1.6 times closer, every ring valid and free of self-intersections.
+TEST(TubeRings, TheFitsFirstStepNarrowsTheWidestTubeTowardAVase) {
+  const TriangleMesh vase = bellyVase();
+  const StartChoice start = chooseStart(vase, "cylinder");
+  ASSERT_TRUE(start.placed);
+  // The same tube, coarser (each ring is made and measured 20 times a step), turned onto z.
+  Sheet tube = makeSurface("cylinder", {{"radius", start.parameters.at("radius")},
+                                        {"height", start.parameters.at("height")},
+                                        {"resolution", testing::kSanitized ? 16.0 : 24.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 1500;
+  settings.denseTargetSamples = 4000;
+  const FoldFitter fitter(vase, settings);
+  ASSERT_TRUE(fitter.revolutionTarget());
+  ASSERT_TRUE(tubeAbout(tube, {0.0, 0.0, 1.0}));
+  FoldSession session(tube);
+  FitOptions options;
+  options.maxFolds = 1;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.distanceSamples = 4000;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_GE(result.folds.size(), 12u);  // two rings at least, as one step
+  EXPECT_LT(result.steps.back().chamfer, result.steps.front().chamfer / 1.6)
+      << result.steps.front().chamfer << " -> " << result.steps.back().chamfer << " m";
   validate(session.fixed());
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }

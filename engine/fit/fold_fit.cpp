@@ -19,6 +19,7 @@
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
+#include "engine/fit/ring_folds.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
@@ -597,10 +598,17 @@ std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& ses
                                                                 bool& tried) const {
   tried = false;
   const Target& target = *target_;
-  if (count == 0 || !nestedRingsFrom(session.fixed())) return {};
+  if (count == 0 || !target.axis || !settings_.nestedRings) return {};
+  std::mt19937_64 random(settings_.seed ^ (0xd1b54a32d192ed03ull * (step + 1)));
+  // From a bare tube on the axis (a vase's cylinder), the rings solved together on the target's
+  // profile (ring_folds.hpp) likewise come first; a symmetric design makes its own rings.
+  if (!session.symmetricFolder() && tubeAbout(session.fixed(), target.axis->direction)) {
+    session.cancel();
+    return suggestTubeRings(session, *this, *target.axis, target.queries, count, deadline, random);
+  }
+  if (!nestedRingsFrom(session.fixed())) return {};
   tried = true;
   session.cancel();
-  std::mt19937_64 random(settings_.seed ^ (0xd1b54a32d192ed03ull * (step + 1)));
   return suggestNestedRings(session, *this, *target.axis, target.queries, count, deadline, random);
 }
 

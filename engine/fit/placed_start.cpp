@@ -173,6 +173,49 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   coneAcross(samples, centroid, axis, kind, out);
 }
 
+}  // namespace
+
+std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
+                                          const glm::dvec3& point, const glm::dvec3& direction) {
+  constexpr int kHeightBins = 16;
+  constexpr int kFewestInBin = 8;
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : samples) {
+    const double t = glm::dot(s.position - point, direction);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  if (!(hi > lo)) return std::nullopt;
+  std::vector<double> sum(kHeightBins, 0.0);
+  std::vector<int> count(kHeightBins, 0);
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - point;
+    const double t = glm::dot(d, direction);
+    const int b =
+        std::clamp(static_cast<int>((t - lo) / (hi - lo) * kHeightBins), 0, kHeightBins - 1);
+    sum[b] += glm::length(d - t * direction);
+    ++count[b];
+  }
+  double widest = 0.0;
+  for (int b = 0; b < kHeightBins; ++b)
+    if (count[b] >= kFewestInBin) widest = std::max(widest, sum[b] / count[b]);
+  if (!(widest > 0.0)) return std::nullopt;
+  Frame frame;
+  frame.origin = point + 0.5 * (lo + hi) * direction;
+  frame.y = direction;
+  frame.x = perpendicular(direction);
+  frame.z = glm::cross(frame.x, frame.y);
+  std::vector<PlacedStart> out;
+  addPlaced(out, "cylinder", {{"radius", widest}, {"height", hi - lo}},
+            "axis " + vectorText(direction) + " through " + vectorText(frame.origin) +
+                ", its widest radius",
+            frame);
+  if (out.empty()) return std::nullopt;
+  return std::move(out.front());
+}
+
+namespace {
+
 // Least squares w = k s^2 + b s + e t + f over samples in the frame (x: s, y: t, z: w).
 Eigen::Vector4d profileFit(const std::vector<SurfaceSample>& samples, const Frame& frame) {
   const std::size_t n = samples.size();

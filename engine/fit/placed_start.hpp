@@ -25,6 +25,7 @@
 // refined after the least-squares fits (no ICP): the caller keeps whichever is nearest.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,14 @@ struct PlacedStart {
 // (area-uniform, at least a few hundred). Candidates a kind's generator refuses are left out.
 std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
                                       const std::string& kind = "");
+
+// The cylinder of the samples' widest radius about the line through `point` along `direction`
+// (unit), as long as they reach along it: the largest mean distance from the line over 16 bins
+// of height (bins of under 8 samples left out). The start of a vase's joint ring fit
+// (ring_folds.hpp): rings only narrow a tube, so it starts as wide as the belly. None where the
+// samples do not spread along the line.
+std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
+                                          const glm::dvec3& point, const glm::dvec3& direction);
 
 // A swept profile w = curvature s^2 + slope s over s in [from, to], ruled over [0, length],
 // `resolution` segments along the longer side, in the catalogue's frame (s along x, rulings

@@ -10,6 +10,7 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/placed_start.hpp"
+#include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -256,6 +257,19 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     best.placed = std::move(nearest->sheet);
     any = true;
   }
+  // A tube toward a smooth target of revolution is as wide as its belly: the rings that fold
+  // it toward the target only narrow it (ring_folds.hpp).
+  if (kind == "cylinder" && smooth)
+    if (const std::optional<RevolutionAxis> axis = revolutionAxis(samples))
+      if (std::optional<PlacedStart> tube = widestCylinder(samples, axis->point, axis->direction)) {
+        best.surface = tube->surface;
+        best.parameters = tube->parameters;
+        best.chamfer = surfaceDistance(meshOf(tube->sheet), target, kChoiceSamples).chamfer;
+        best.placement = tube->placement;
+        best.creased = false;
+        best.placed = std::move(tube->sheet);
+        any = true;
+      }
   if (!any) throw SurfaceError(lastError);
   return best;
 }
