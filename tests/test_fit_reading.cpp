@@ -168,6 +168,7 @@ TEST(FitReading, AnUnfoldingOnTheSheetStopsTryingOrders) {
                                             Deadline::in(testing::kSanitized ? 150.0 : 15.0));
   EXPECT_FALSE(plan.cutShort);
   EXPECT_EQ(plan.folds.size(), 8u);
+  ASSERT_EQ(plan.unfolded.size(), t.target.positions.size());
   EXPECT_LE(
       surfaceDistance(TriangleMesh{plan.unfolded, t.target.triangles}, sheet).relativeHausdorff(),
       1e-3);
