@@ -25,6 +25,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/validate.hpp"
+#include "engine/io/design_document.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
@@ -139,6 +140,67 @@ TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
+}
+
+// A target from a design kept in tests/data/reach (README.md there): its sheet, and the target
+// (the design replayed, as `export --obj` writes it).
+struct ReachTarget {
+  Design design;
+  Sheet initial;
+  TriangleMesh target;
+};
+ReachTarget reachTarget(const std::string& name) {
+  ReachTarget t;
+  t.design = loadDesign(std::string(CURVEFOLD_TEST_DATA "/reach/") + name + ".curvefold.json");
+  t.initial = initialSheet(t.design);
+  t.target = meshOf(buildSheet(t.design));
+  return t;
+}
+
+// Eight folds, each through an earlier crease: the first unfolding lies on the sheet with 0.08%
+// of the diagonal left bent (the half cylinder's own facets), over the 0.01% the unfolding
+// stopped at, so it tried 359 more orders (40 s of CPU) for nothing it could prefer. Less crease
+// left than one step must take away, on the sheet, ends it.
+TEST(FitReading, AnUnfoldingOnTheSheetStopsTryingOrders) {
+  const ReachTarget t = reachTarget("cuts_half_cylinder_8");
+  const TriangleMesh sheet = meshOf(t.initial);
+  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 8,
+                                            Deadline::in(testing::kSanitized ? 150.0 : 15.0));
+  EXPECT_FALSE(plan.cutShort);
+  EXPECT_EQ(plan.folds.size(), 8u);
+  ASSERT_EQ(plan.unfolded.size(), t.target.positions.size());
+  EXPECT_LE(
+      surfaceDistance(TriangleMesh{plan.unfolded, t.target.triangles}, sheet).relativeHausdorff(),
+      1e-3);
+}
+
+// An unfolding longer than the fit's time (a symmetric disk's 8 folds, which leave it moved
+// whole: 600 orders tried, a minute) ran to the search's deadline and, cut short, answered
+// nothing: the whole time passed with no candidate scored and no fold kept. Cut short, it names
+// what it read by then (an unfolding ended where it was), and the reading has only a share of the
+// fit's time: the search after it scores candidates.
+TEST(FitReading, AnUnfoldingCutShortLeavesTheSearchTimeAndWhatItRead) {
+  const ReachTarget t = reachTarget("symmetric_disk_8");
+  const TriangleMesh sheet = meshOf(t.initial);
+  const auto started = std::chrono::steady_clock::now();
+  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 12,
+                                            Deadline::in(testing::kSanitized ? 6.0 : 1.5));
+  const double took =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_TRUE(plan.cutShort);
+  EXPECT_FALSE(plan.folds.empty()) << took << " s";
+  EXPECT_EQ(plan.unfolded.size(), t.target.positions.size());
+
+  const FoldFitter fitter(t.target);
+  FoldSession session(t.initial);
+  session.setSymmetry(parseSymmetry(t.design.symmetry, t.initial));
+  FitOptions options;
+  options.maxFolds = 8;
+  options.seconds = testing::kSanitized ? 8.0 : 3.0;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_GT(result.evaluations, 0u) << result.stopReason;
+  EXPECT_TRUE(result.timedOut);
+  EXPECT_NO_THROW(validate(session.fixed()));
 }
 
 // Registration toward a copy that nearly lies on the sheet (moved whole, and bent by 1 mm, which

@@ -750,6 +750,7 @@ class FitRun {
     // unfolding reads its noise, and took the whole time.
     if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) && unfoldTarget()) {
       result_.stopReason = "the target unfolded: its creases named every fold";
+      readingCut_ = false;  // what it read reached the target: no run finds more
     } else {
       beamSearch(root);
     }
@@ -760,6 +761,8 @@ class FitRun {
     result_.evaluations = evaluations_.load();
     result_.droppedSamples = droppedSamples_.load();
     if (result_.cancelled) result_.stopReason = "interrupted";
+    // The clock ended the reading: another run may read more, and find other folds.
+    if (readingCut_) result_.timedOut = true;
     return std::move(result_);
   }
 
@@ -783,6 +786,16 @@ class FitRun {
     return deadline_.notAfter(end_ -
                               std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                   std::chrono::duration<double>(reserve)));
+  }
+
+  // The reading's deadline (the unfolding, and the motion of the whole sheet): a share of the
+  // search's time left, so that the search after it, from what it read, always has the rest.
+  Deadline readingDeadline() const {
+    const Deadline search = searchDeadline(1);
+    const auto now = std::chrono::steady_clock::now();
+    if (end_ == std::chrono::steady_clock::time_point::max() || search.at <= now) return search;
+    return search.notAfter(now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                     kReadingShare * (search.at - now)));
   }
 
   // Whether the clock (or a cancel) cut the search short: said in the result.
@@ -845,14 +858,20 @@ class FitRun {
     // Room for one fold's measure after it (its own check and measure below); the folds it
     // names are measured within the time at the end, or not kept.
     const Deadline deadline = searchDeadline(1);
+    const Deadline reading = readingDeadline();
     const TargetUnfolding plan = curvefold::unfoldTarget(
         fitter_.target(), meshOf(session_.initial()),
         sharpEdgeThreshold(meshOf(session_.initial())),
         std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
-        deadline);
+        reading);
+    // Cut short by its share of the time, the unfolding still names the folds it read (as far
+    // as it got): made, and searched on from, like those of an unfolding that stopped short.
     if (plan.cutShort) {
-      noteCut(deadline);
-      return false;
+      if (deadline.passed()) {
+        noteCut(deadline);
+        return false;
+      }
+      readingCut_ = true;
     }
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     const FoldSequence planned = replay(plan, *branch, session_.initial(), deadline);
@@ -872,7 +891,7 @@ class FitRun {
     // Smooth but off the sheet: folds that left no crease (their planes missed the sheet) moved
     // it whole. That motion, as such folds, then the folds read.
     if (plan.sharpLengthLeft <= kSmoothLeft * fitter_.targetDiagonal() && base_.empty() &&
-        foldWholeSheetFirst(plan, unfolded, deadline))
+        foldWholeSheetFirst(plan, unfolded, reading, deadline))
       return true;
     if (plan.folds.empty() || deadline.passed()) return false;
     return searchTowardUnfolded(plan, unfolded, planned.groups.size());
@@ -880,15 +899,16 @@ class FitRun {
 
   // The rigid motion from the sheet to the smooth unfolded target, made as folds of the whole
   // sheet (whole_sheet_folds.hpp), then the unfolding's folds: true when that reaches the target.
+  // Found within `reading` (the reading's share of the time), made within `deadline`.
   bool foldWholeSheetFirst(const TargetUnfolding& plan, const TriangleMesh& unfolded,
-                           const Deadline& deadline) {
+                           const Deadline& reading, const Deadline& deadline) {
     // Every way the sheet lies on the copy (a symmetric sheet's symmetries): each its own motion
     // and its own count of whole-sheet folds. The first way found first, and every way (dearer:
     // each registered) only where that one takes more folds than are left.
     // Within the deadline too: a copy that lies on the sheet no way refines every start (minutes).
     std::vector<RigidMotion> motions =
         registerSheetOntoAll(meshOf(session_.initial()), unfolded,
-                             kWholeSheetTolerance * fitter_.targetDiagonal(), 1, deadline);
+                             kWholeSheetTolerance * fitter_.targetDiagonal(), 1, reading);
     if (motions.empty()) return false;
     // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
@@ -907,10 +927,10 @@ class FitRun {
         5, options_.maxFolds > readGroups ? options_.maxFolds - readGroups : 0);
     for (int pass = 0; pass < 2 && planes.empty(); ++pass) {
       if (pass == 1) {
-        if (deadline.passed()) return false;
+        if (reading.passed()) return false;
         motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
                                        kWholeSheetTolerance * fitter_.targetDiagonal(),
-                                       kMostRegistrations, deadline);
+                                       kMostRegistrations, reading);
         lastAt.assign(motions.size(), std::nullopt);
       }
       // Each count tried on the sheet for every motion, then on the sheet folded by the folds read
@@ -922,7 +942,7 @@ class FitRun {
           pass == 0 && session_.symmetry() ? std::min<std::size_t>(most, 1) : most;
       for (std::size_t count = 1; count <= upTo && planes.empty(); ++count)
         for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
-          if (deadline.passed()) return false;
+          if (reading.passed()) return false;
           // A symmetric design's images are made about the sheet's own centre and axis, which
           // a whole-sheet fold made first moves: last for it, then.
           const bool last = (k >= motions.size()) != (session_.symmetry() != nullptr);
@@ -937,7 +957,7 @@ class FitRun {
           if (last && !folded) {  // the sheet folded by the folds read, once per motion
             const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
             bool everyFoldRead = false;
-            replay(movedBack, *lastBranch, session_.initial(), deadline, options_.maxFolds,
+            replay(movedBack, *lastBranch, session_.initial(), reading, options_.maxFolds,
                    &everyFoldRead);
             folded = everyFoldRead ? lastBranch->fixed().positions : std::vector<glm::dvec3>{};
           }
@@ -1338,6 +1358,9 @@ class FitRun {
   // a measure of this many samples.
   static constexpr double kStartShare = 0.1;
   static constexpr std::size_t kProbeSamples = 1000;
+  // The reading (readingDeadline) takes at most this share of the search's time.
+  static constexpr double kReadingShare = 0.6;
+  bool readingCut_ = false;             // the reading's share of the time ran out before it ended
   std::size_t measureSamples_ = 0;      // of every exact measure (samplesWithinTime)
   double startedAt_ = 0.0;              // seconds from start_ to the start's measure
   double foldCost_ = 0.0;               // seconds one fold kept costs at the end

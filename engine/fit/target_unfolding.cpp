@@ -86,7 +86,9 @@ struct Unfolder {
   std::size_t maxFolds;
   const Deadline& deadline;
   std::size_t leaves = 0;  // unfoldings finished, to bound the branching
-  bool cutShort = false;   // the deadline passed: every answer from here on is dropped
+  // The deadline passed: each unfolding under way ends where it is (its steps so far, read off
+  // as a finished one is), and the best of those and of the finished ones is kept.
+  bool cutShort = false;
 
   bool outOfTime() {
     cutShort = cutShort || deadline.passed();
@@ -111,7 +113,7 @@ struct Unfolder {
     std::vector<Candidate> candidates;
     std::vector<int> component(positions.size());
     for (const CreasePlane& crease : planes) {
-      if (deadline.passed()) break;  // the caller sees it and drops what comes back
+      if (deadline.passed()) break;  // the caller sees it and ends the unfolding here
       const ReflectionPlane& plane = crease.plane;
       std::vector<double> d(positions.size());
       for (std::size_t v = 0; v < positions.size(); ++v) d[v] = plane.signedDistance(positions[v]);
@@ -226,7 +228,9 @@ struct Unfolder {
       }
       return false;
     };
-    if (n <= kExhaustiveSides) {
+    // Past the deadline (an unfolding cut short ends here), the quick choice below, in two rounds.
+    const bool late = deadline.passed();
+    if (n <= kExhaustiveSides && !late) {
       std::uint32_t allowed = 0;
       for (std::size_t u = 0; u < n; ++u)
         if (steps[u].restReplayable) allowed |= 1u << u;
@@ -238,9 +242,11 @@ struct Unfolder {
     } else {
       // Too many for every choice: one step flipped at a time while that brings the result
       // closer to the sheet (at most n rounds of n tries).
-      for (std::size_t round = 0, better = 1; round < n && better && !deadline.passed(); ++round) {
+      const std::size_t rounds = late ? std::min<std::size_t>(n, 2) : n;
+      for (std::size_t round = 0, better = 1;
+           round < rounds && better && (late || !deadline.passed()); ++round) {
         better = 0;
-        for (std::size_t u = 0; u < n && !deadline.passed(); ++u) {
+        for (std::size_t u = 0; u < n && (late || !deadline.passed()); ++u) {
           if (!steps[u].restReplayable) continue;
           rest = bestRest;
           rest[u] = !rest[u];
@@ -272,9 +278,9 @@ struct Unfolder {
   // Unfolds from `positions` (the steps so far in `steps`); returns the best unfolding.
   TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
     std::vector<Candidate> candidates;
-    if (outOfTime()) return {};
+    if (outOfTime()) return bestSides(steps, positions, sharp);
     if (steps.size() < maxFolds) candidates = candidatesAt(positions);
-    if (outOfTime()) return {};
+    if (outOfTime()) return bestSides(steps, positions, sharp);
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
@@ -308,8 +314,7 @@ struct Unfolder {
     double bestOff = kInfinitySharp;
     bool first = true;
     for (const Candidate* chosen : choices) {
-      if (!first && leaves >= kMaxUnfoldings) break;
-      if (outOfTime()) return {};
+      if (!first && (leaves >= kMaxUnfoldings || outOfTime())) break;
       std::vector<char> inPiece(positions.size(), 0);
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
@@ -348,8 +353,10 @@ struct Unfolder {
         bestOff = off;
       }
       first = false;
-      // Smooth and on the sheet: the target's folds, read whole.
-      if (best.sharpLengthLeft <= 1e-4 * diagonal && bestOff <= 1e-5 * diagonal) break;
+      // On the sheet, with less crease left than one step must take away (so none could take
+      // more, and what is left is the sheet's own bends, or a flap laid on it): the target's
+      // folds, read whole. Nothing later wins but by lying closer still.
+      if (best.sharpLengthLeft < kLeastCrease * diagonal && bestOff <= 1e-5 * diagonal) break;
     }
     return best;
   }
@@ -380,10 +387,7 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
   const double sharp =
       sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
   TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);
-  if (unfolder.outOfTime()) {
-    unfolding = {};
-    unfolding.cutShort = true;
-  }
+  unfolding.cutShort = unfolder.outOfTime();
   return unfolding;
 }
 

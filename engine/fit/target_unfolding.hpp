@@ -52,7 +52,9 @@ struct TargetUnfolding {
   std::vector<UnfoldedFold> folds;   // in folding order: the first fold first
   std::vector<glm::dvec3> unfolded;  // the target's vertices before its first fold
   double sharpLengthLeft = 0.0;      // sharp edges the unfolded target still has, metres
-  bool cutShort = false;             // the deadline came first: no folds
+  // The deadline came first: the folds are those of the unfolding that had taken away the most
+  // crease by then (it may stop short of the sheet, like one that cannot place a crease).
+  bool cutShort = false;
 };
 
 // Creases whose sides are tried every way (2^n choices); more are chosen one at a time.
@@ -60,7 +62,8 @@ constexpr std::size_t kExhaustiveSides = 10;
 
 // `sheet`: the initial sheet the target was folded from (the part that stays is found on it);
 // `minDihedralDegrees`: the sharp-edge threshold (above the sheet's own bends). Stops at its next
-// check once `deadline` passes, with no folds and cutShort set.
+// check once `deadline` passes, with what it read by then and cutShort set (within one step:
+// finding one node's crease planes and pieces).
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
                              double minDihedralDegrees, std::size_t maxFolds,
                              const Deadline& deadline = {});
