@@ -82,6 +82,37 @@ BENCHMARK(BM_SettleDesignFromFlatByContinuation)
     ->UseRealTime()
     ->Iterations(1);
 
+// What the live predictor costs a frame (LiveSimulation, interaction/live_simulation.hpp): a
+// frame with no dynamic steps (the rigid placement alone) on a cylinder design of 10k vertices,
+// with the slider held (second argument 0), moving a percent a frame between 50 and 90% (1: not
+// tried while it moves), or coming to rest at a new amount every second frame (2: tried, and
+// taken, every second frame; the time is per frame).
+void BM_LiveFramePredictor(benchmark::State& bench) {
+  const Sheet sheet =
+      makeSurface("cylinder", {{"resolution", static_cast<double>(bench.range(0))}});
+  LiveSimulation live(sheet);
+  const long mode = bench.range(1);
+  int frame = 0;
+  for (auto _ : bench) {
+    ++frame;
+    const double percent = mode == 0   ? 70.0
+                           : mode == 1 ? 50.0 + frame % 40
+                                       : 50.0 + (frame / 2) % 40;
+    SimulationInput input = liveSimulationInput(percent, sheet);
+    input.steps = 0;
+    live.advance(input);
+    benchmark::DoNotOptimize(live.sheet().positions.data());
+  }
+  bench.counters["vertices"] = static_cast<double>(sheet.vertexCount());
+  bench.counters["predictions"] = static_cast<double>(live.predictions());
+}
+BENCHMARK(BM_LiveFramePredictor)
+    ->Args({116, 0})
+    ->Args({116, 1})
+    ->Args({116, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // Every bundled and showcase design (the final sheet of each recording in examples/recordings and
 // examples/showcase/recordings) from flat to 100% in design mode by the solvers alone (no
 // predictor), then compared with the design after the best rigid placement: the two-sided

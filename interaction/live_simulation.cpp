@@ -115,8 +115,14 @@ void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& be
     pull = LivePull{input.pull->vertex, to, kPullStiffness / timeStep_};
   }
   const double amount = input.percent / 100.0;
-  if (!input.pull && amount != predictedAmount_ && tryPredictor(amount)) solver_->setState(state_);
-  if (!input.pull) predictedAmount_ = amount;
+  // Tried where the slider rests (its last frame's amount again, or either end), not while it
+  // moves: a try costs about as much as the frame's steps at 10k vertices.
+  const bool atRest = amount == previousAmount_ || amount == 0.0 || amount == 1.0;
+  previousAmount_ = amount;
+  if (!input.pull && atRest && amount != predictedAmount_) {
+    predictedAmount_ = amount;
+    if (tryPredictor(amount)) solver_->setState(state_);
+  }
   solver_->advance(model_, timeStep_, amount, input.steps, pull, state_);
   placeNext();
 }

@@ -30,7 +30,8 @@
 // and comes back as positions each frame. Which one is input (SimulationInput::solver), so a
 // recording says which solver made it.
 //
-// The predictor (issue 39, 4): whenever the fold amount changes, and no pull is held, the state
+// The predictor (issue 39, 4): whenever the fold amount comes to rest at a new value (a frame
+// with the previous frame's amount, or 0 or 100%), and no pull is held, the state
 // unfoldedState makes at the new amount (engine/simulation/hinge_unfolding.hpp: every hinge of a
 // spanning tree at its target) is tried, as the static solver's settle tries it, and taken,
 // rigidly placed onto the state and at rest, when its energy at the new targets is lower than
@@ -187,6 +188,7 @@ class LiveSimulation {
   double timeStep_ = 0.0;
   double percent_ = 0.0;
   double predictedAmount_ = 0.0;  // the last amount the predictor was tried at (flat: 0)
+  double previousAmount_ = 0.0;   // the last frame's
   std::size_t predictions_ = 0;   // how often it was taken
   std::optional<SimulationPull> pull_;
   bool onWorker_ = false;
