@@ -7,7 +7,7 @@ curvefold`, built in build/python), by rules of its own, and measures with the c
 (`curvefold fit`, `curvefold distance`). It is a benchmark, never a unit test's oracle.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/reach_targets.py make OUT [--per-bucket K] [--seed S]
-        [--recipes a,b] [--buckets 1-2,3-4,5-8]
+        [--recipes a,b] [--buckets 1-2,3-4,5-8] [--surfaces swept_curve,cone]
     /usr/bin/python3 bench/reach_targets.py fit OUT [--time 20] [--curvefold build/app/curvefold]
         [--only RECIPE] [--bucket 5-8]
 
@@ -264,6 +264,8 @@ def command_make(args):
             rng = random.Random(f"{args.seed}/{recipe}/{bucket}")
             order = surfaces[:]
             rng.shuffle(order)  # each bucket its own surfaces first
+            if args.surfaces:
+                order = [s for s in order if s in args.surfaces.split(",")]
             made, k = 0, 0
             while made < args.per_bucket and k < 8 * args.per_bucket:
                 surface = order[k % len(order)]
@@ -366,6 +368,7 @@ def main():
     make.add_argument("--seed", default="1")
     make.add_argument("--recipes", default=",".join(RECIPES))
     make.add_argument("--buckets", default="1-2,3-4,5-8")
+    make.add_argument("--surfaces", default="", help="only these catalogue surfaces (a,b)")
     fit = sub.add_parser("fit")
     fit.add_argument("out")
     fit.add_argument("--time", type=float, default=20.0)

@@ -3,9 +3,10 @@
 // fold's plane [Mitani & Igarashi 2011, Sec. 3.3], and the part the fold reflected meets the rest
 // only along it: the target's vertices strictly on one side of the plane, grown from a vertex
 // next to the crease, are that part (or the rest), with any vertex within the plane's tolerance
-// whose neighbours off the plane all lie in it (a grid vertex a crease passed by a micrometre). Reflecting it back through the plane makes the
-// crease smooth again, and the target is as it was before its last fold; repeated, the target
-// unfolds to the sheet it was folded from, and its folds, read backwards, fold the sheet onto it.
+// whose neighbours off the plane all lie in it (a grid vertex a crease passed by a micrometre).
+// Reflecting it back through the plane makes the crease smooth again, and the target is as it was
+// before its last fold; repeated, the target unfolds to the sheet it was folded from, and its
+// folds, read backwards, fold the sheet onto it.
 //
 // Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
 // their creases, a reflection that takes crease away (any bend beyond the sheet's own facets is
