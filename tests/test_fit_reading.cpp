@@ -244,6 +244,40 @@ TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
   testing::expectInvariants(session.fixed(), session.initial());
 }
 
+// A fold of most of a rectangle with rotational:2 (a corner side folded up past the middle)
+// leaves its image's plane clear of the folded sheet: the image mirrors the whole of it and
+// leaves no crease. Then a fold of most of it again (all but a tip). Read without the symmetry,
+// the unfolding ended on a copy of the sheet mirrored and turned (73% of the diagonal off it) and
+// the fit ended 30% away; read with it, the image is undone before its fold.
+TEST(FitReading, AnImageThatMovedTheWholeSheetIsUndoneWithItsFold) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 16}});
+  const Symmetry symmetry = parseSymmetry("rotational:2:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({-0.0696, 0.0068, 0.0});
+  folding.updateDrag({-0.0268, 0.0635, 0.0440});
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 2u);                      // the fold and its image
+  for (std::size_t v = 0; v < initial.vertexCount(); ++v)  // the image moved every vertex
+    ASSERT_GT(glm::distance(initial.positions[v], folding.fixed().positions[v]), 1e-4);
+  folding.beginDragNear({0.0239, 0.0418, 0.1169});
+  folding.updateDrag({0.0499, 0.0587, 0.1174});
+  ASSERT_TRUE(folding.commit());
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 4;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 100 : 400;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
 // A whole-sheet fold made after a symmetric fold with its images (four corners folded up by
 // rotational:4, then the sheet moved whole along a drag): the target is two groups, the corners'
 // and the whole sheet's (whose images are none: it moves every image of its grab).

@@ -827,7 +827,7 @@ class FitRun {
         fitter_.target(), meshOf(session_.initial()),
         sharpEdgeThreshold(meshOf(session_.initial())),
         std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
-        deadline);
+        deadline, symmetry ? symmetry->images() : std::vector<Isometry>{});
     if (plan.cutShort) {
       noteCut(deadline);
       return false;
@@ -1016,11 +1016,15 @@ class FitRun {
     auto imagesRead = [&] {
       for (std::size_t f = before + 1; f < branch.foldCount(); ++f) {
         const ReflectionPlane& image = branch.folds()[f].plane;
+        auto same = [&](const ReflectionPlane& p) {
+          return std::abs(glm::dot(p.normal, image.normal)) >
+                     std::cos(0.5 * std::numbers::pi / 180.0) &&
+                 std::abs(p.signedDistance(image.point)) < 1e-3 * size;
+        };
+        // A fold read, or the image the unfolding found had moved the whole sheet.
         const bool read =
             std::any_of(plan.folds.begin(), plan.folds.end(), [&](const UnfoldedFold& fold) {
-              return std::abs(glm::dot(fold.plane.normal, image.normal)) >
-                         std::cos(0.5 * std::numbers::pi / 180.0) &&
-                     std::abs(fold.plane.signedDistance(image.point)) < 1e-3 * size;
+              return same(fold.plane) || (fold.wholeImage && same(*fold.wholeImage));
             });
         if (!read) return false;
       }
