@@ -44,6 +44,9 @@ constexpr double kCreaseSlack = 1.1;
 // An unfolded target's folds that bring the sheet this close (Hausdorff, of the target's
 // diagonal) end the fit.
 constexpr double kUnfoldedCloseEnough = 1e-3;
+// A sequence whose last fold brings the sheet this close (Hausdorff, of the diagonal) is kept
+// whole, whatever its folds on the way (FitRun::measure).
+constexpr double kReached = 1e-3;
 // An unfolding that ends with less crease than this (of the diagonal) is smooth: a rigid copy of
 // the sheet where folds that left no crease moved it whole.
 constexpr double kSmoothLeft = 0.01;
@@ -1259,6 +1262,13 @@ class FitRun {
              before(g) - m.steps[g].chamfer > options_.minimumAbsoluteGain * m.steps[g].diagonal &&
              bounded(g);
     };
+    // A sequence that reaches the target is kept whole: folds of the whole sheet (a target with
+    // no crease left, which reads as smooth) may each move it farther before the last lays it on.
+    if (!strict && !m.steps.empty() && m.steps.size() == sequence.groups.size() &&
+        m.steps.back().hausdorff <= kReached * m.steps.back().diagonal) {
+      m.keep = m.steps.size();
+      return m;
+    }
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
     } else {
