@@ -899,8 +899,11 @@ class FitRun {
       // A symmetric design lies on its copy only the ways its symmetry keeps (its folds read
       // onto their images): the first way found, if not one of them, takes more planes, and
       // those folds make images the target lacks. Every way then, past one plane.
-      const std::size_t upTo =
-          pass == 0 && session_.symmetry() ? std::min<std::size_t>(most, 1) : most;
+      // With no fold read (the whole target a moved copy), any way is right: whole-sheet folds
+      // move their grabs' images too and bring none.
+      const std::size_t upTo = pass == 0 && session_.symmetry() && !plan.folds.empty()
+                                   ? std::min<std::size_t>(most, 1)
+                                   : most;
       for (std::size_t count = 1; count <= upTo && planes.empty(); ++count)
         for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
           if (deadline.passed()) return false;
