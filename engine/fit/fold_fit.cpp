@@ -826,22 +826,43 @@ class FitRun {
     // Room for one fold's measure after it (its own check and measure below); the folds it
     // names are measured within the time at the end, or not kept.
     const Deadline deadline = searchDeadline(1);
-    const TargetUnfolding plan = curvefold::unfoldTarget(
-        fitter_.target(), meshOf(session_.initial()),
-        sharpEdgeThreshold(meshOf(session_.initial())),
-        std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
-        deadline, symmetry ? symmetry->images() : std::vector<Isometry>{});
-    if (plan.cutShort) {
+    auto unfold = [&](bool withImages) {
+      return curvefold::unfoldTarget(
+          fitter_.target(), meshOf(session_.initial()),
+          sharpEdgeThreshold(meshOf(session_.initial())),
+          std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
+          deadline, withImages && symmetry ? symmetry->images() : std::vector<Isometry>{});
+    };
+    TargetUnfolding plan = unfold(true);
+    FoldSequence planned;
+    // The unfolding, its folds made and offered: true when they reach the target; false with
+    // the cut noted when the deadline came first.
+    bool cut = false;
+    auto tryPlan = [&] {
+      if (plan.cutShort) {
+        cut = true;
+        return false;
+      }
+      const std::unique_ptr<FoldSession> branch = sessionFor({});
+      planned = replay(plan, *branch, session_.initial(), deadline);
+      if (deadline.passed()) {
+        cut = true;
+        return false;
+      }
+      return offer(planned, *branch);
+    };
+    if (tryPlan()) return true;
+    // A fold whose image moved the whole sheet that does not reach the target (a fold's image
+    // read as a fold of its own beside it): the unfolding read without images, as it was.
+    if (!cut && std::any_of(plan.folds.begin(), plan.folds.end(),
+                            [](const UnfoldedFold& f) { return f.wholeImage.has_value(); })) {
+      plan = unfold(false);
+      if (tryPlan()) return true;
+    }
+    if (cut) {
       noteCut(deadline);
       return false;
     }
-    const std::unique_ptr<FoldSession> branch = sessionFor({});
-    const FoldSequence planned = replay(plan, *branch, session_.initial(), deadline);
-    if (deadline.passed()) {
-      noteCut(deadline);
-      return false;
-    }
-    if (offer(planned, *branch)) return true;
     // Where the unfolding stopped short of the sheet (a crease it could not read, or an
     // unfolding that ends off it), what it read is used still: the search folds the sheet
     // toward where the unfolding stopped, and the folds read follow.
