@@ -21,7 +21,8 @@ bucket; a fold kept only when it moves part of the sheet and the design still pa
               another vertex of the folded form, lifted 1-5 mm off it along a random direction
               (flaps laid over the sheet: folds of 150-180 degrees).
   symmetric   a design with one of the surface's symmetries (drawn from `surfaces()`), any
-              vertex grabbed, dragged 5-30%; a fold counts once with its images.
+              vertex grabbed, dragged 5-30%; a fold counts once with its images. Its parameters
+              (the defaults) are written out, so `fit` starts from the sheet the symmetry is of.
   outer-third issue 38's own: default parameters; a vertex in the outer third of the sheet as it
               lies (its distance from the bounding box's centre at least 2/3 of the farthest's)
               dropped 10-35% of the diagonal away in a uniform 3D direction.
@@ -160,6 +161,10 @@ def make_one(cf, recipe, surface, folds, rng):
         if not symmetries:
             return None
         symmetry = rng.choice(symmetries)
+        # Named in full: a symmetry is the catalogue sheet's, through its centre, and `fit`
+        # without parameters may place a sheet on the target that lacks it (a cone's mirror:x).
+        params = {name: p["default"] for name, p in cf.surfaces()[surface]["parameters"].items()
+                  if name != "resolution"}
     try:
         design = cf.Design.new(surface, symmetry=symmetry, **params)
     except ValueError:

@@ -59,7 +59,11 @@ int run(int argc, char** argv) {
     std::printf("crease plane %zu: support %.4f (%.2f%%), fold %d\n", p, planes[p].support,
                 100 * planes[p].support / size, fold);
   }
-  const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, 12);
+  // A symmetric design's images, as the fit reads them (a fold's image may move the whole sheet).
+  const std::vector<Isometry> images = design.symmetry.empty()
+                                           ? std::vector<Isometry>{}
+                                           : parseSymmetry(design.symmetry, initial).images();
+  const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, 12, {}, images);
   const TriangleMesh unfolded{plan.unfolded, target.triangles};
   std::printf("unfolding: %zu folds, sharp left %.4f (%.2f%%), off sheet Hausdorff %.3f%%\n",
               plan.folds.size(), plan.sharpLengthLeft, 100 * plan.sharpLengthLeft / size,
@@ -68,8 +72,9 @@ int run(int argc, char** argv) {
     int fold = -1;
     for (std::size_t f = 0; f < design.folds.size(); ++f)
       if (samePlane(u.plane, design.folds[f].plane, size)) fold = int(f) + 1;
-    std::printf("  read n=(%.3f %.3f %.3f) d=%.4f = fold %d\n", u.plane.normal.x, u.plane.normal.y,
-                u.plane.normal.z, glm::dot(u.plane.normal, u.plane.point), fold);
+    std::printf("  read n=(%.3f %.3f %.3f) d=%.4f = fold %d%s\n", u.plane.normal.x,
+                u.plane.normal.y, u.plane.normal.z, glm::dot(u.plane.normal, u.plane.point), fold,
+                u.wholeImage ? " (its image moved the whole sheet)" : "");
   }
   if (plan.sharpLengthLeft < 0.01 * size) {
     const std::optional<RigidMotion> motion = registerSheetOnto(sheet, unfolded, 1e-4 * size);

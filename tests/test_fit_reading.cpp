@@ -240,6 +240,41 @@ TEST(WholeSheetFolds, RegistrationStopsSoonAfterItsDeadline) {
   EXPECT_LT(took, cancelAfter + (testing::kSanitized ? 1.5 : 0.25)) << took << " s";
 }
 
+// A cone moved whole by two folds (each plane past the sheet) has no crease left, so the fit
+// reads it as a smooth shape, and a fold toward a smooth shape is kept only while the farthest
+// point stays near: the first whole-sheet fold moves it farther, and the two folds that laid the
+// cone on the target were both dropped (0 folds, 112% off). A sequence that reaches the target
+// is kept whole.
+TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
+  const Sheet initial = makeSurface("cone", {{"resolution", 24}});
+  FoldSession folding(initial);
+  for (const glm::dvec3& along : {glm::dvec3(0.6, 0.6, 0.3), glm::dvec3(0.4, 0.0, 0.9)}) {
+    const glm::dvec3 unit = glm::normalize(along);
+    const Sheet before = folding.fixed();
+    glm::dvec3 farthest = before.positions.front();
+    for (const glm::dvec3& p : before.positions)
+      if (glm::dot(p, unit) > glm::dot(farthest, unit)) farthest = p;
+    folding.beginDragNear(farthest);
+    folding.updateDrag(farthest + 0.12 * unit);
+    ASSERT_TRUE(folding.commit());
+    for (std::size_t v = 0; v < before.vertexCount(); ++v)
+      ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  }
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  ASSERT_TRUE(fitter.smoothTarget());  // no crease: the case the bound on the way tripped
+  FoldSession session(initial);
+  FitOptions options;
+  options.maxFolds = 3;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 300;
+  fitFolds(session, fitter, options);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_GE(session.foldCount(), 1u);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
 // A symmetric sheet (a star) lies on a moved copy of itself several ways, one its symmetry times
 // another: registered any way, the fold that mirrored it whole took up to five whole-sheet folds
 // (the star's turn as well as the mirror) and no longer fitted in the folds allowed. Of every way,
@@ -304,6 +339,40 @@ TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_EQ(session.foldCount(), 1u);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// A fold of most of a rectangle with rotational:2 (a corner side folded up past the middle)
+// leaves its image's plane clear of the folded sheet: the image mirrors the whole of it and
+// leaves no crease. Then a fold of most of it again (all but a tip). Read without the symmetry,
+// the unfolding ended on a copy of the sheet mirrored and turned (73% of the diagonal off it) and
+// the fit ended 30% away; read with it, the image is undone before its fold.
+TEST(FitReading, AnImageThatMovedTheWholeSheetIsUndoneWithItsFold) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 16}});
+  const Symmetry symmetry = parseSymmetry("rotational:2:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({-0.0696, 0.0068, 0.0});
+  folding.updateDrag({-0.0268, 0.0635, 0.0440});
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 2u);                      // the fold and its image
+  for (std::size_t v = 0; v < initial.vertexCount(); ++v)  // the image moved every vertex
+    ASSERT_GT(glm::distance(initial.positions[v], folding.fixed().positions[v]), 1e-4);
+  folding.beginDragNear({0.0239, 0.0418, 0.1169});
+  folding.updateDrag({0.0499, 0.0587, 0.1174});
+  ASSERT_TRUE(folding.commit());
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 4;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 100 : 400;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   testing::expectInvariants(session.fixed(), session.initial());
 }
 

@@ -45,6 +45,9 @@ constexpr double kCreaseSlack = 1.1;
 // An unfolded target's folds that bring the sheet this close (Hausdorff, of the target's
 // diagonal) end the fit.
 constexpr double kUnfoldedCloseEnough = 1e-3;
+// A sequence whose last fold brings the sheet this close (Hausdorff, of the diagonal) is kept
+// whole, whatever its folds on the way (FitRun::measure).
+constexpr double kKeptWhole = 1e-3;
 // An unfolding that ends with less crease than this (of the diagonal) is smooth: a rigid copy of
 // the sheet where folds that left no crease moved it whole.
 constexpr double kSmoothLeft = 0.01;
@@ -859,27 +862,49 @@ class FitRun {
     // names are measured within the time at the end, or not kept.
     const Deadline deadline = searchDeadline(1);
     const Deadline reading = readingDeadline();
-    const TargetUnfolding plan = curvefold::unfoldTarget(
-        fitter_.target(), meshOf(session_.initial()),
-        sharpEdgeThreshold(meshOf(session_.initial())),
-        std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
-        reading);
-    // Cut short by its share of the time, the unfolding still names the folds it read (as far
-    // as it got): made, and searched on from, like those of an unfolding that stopped short.
-    if (plan.cutShort) {
+    auto unfold = [&](bool withImages) {
+      return curvefold::unfoldTarget(
+          fitter_.target(), meshOf(session_.initial()),
+          sharpEdgeThreshold(meshOf(session_.initial())),
+          std::min(options_.maxFolds * perFold, std::max<std::size_t>(options_.maxFolds, 12)),
+          reading, withImages && symmetry ? symmetry->images() : std::vector<Isometry>{});
+    };
+    TargetUnfolding plan = unfold(true);
+    FoldSequence planned;
+    // The unfolding, its folds made and offered: true when they reach the target; false with
+    // the cut noted when the deadline came first.
+    bool cut = false;
+    auto tryPlan = [&] {
+      // Cut short by its share of the time, the unfolding still names the folds it read (as far
+      // as it got): made, and searched on from, like those of an unfolding that stopped short.
+      if (plan.cutShort) {
+        if (deadline.passed()) {
+          cut = true;
+          return false;
+        }
+        readingCut_ = true;
+      }
+      const std::unique_ptr<FoldSession> branch = sessionFor({});
+      planned = replay(plan, *branch, session_.initial(), deadline);
       if (deadline.passed()) {
-        noteCut(deadline);
+        cut = true;
         return false;
       }
-      readingCut_ = true;
+      return offer(planned, *branch);
+    };
+    if (tryPlan()) return true;
+    // A fold whose image moved the whole sheet that does not reach the target (a fold's image
+    // read as a fold of its own beside it): the unfolding read without images, as it was.
+    if (!cut && !reading.passed() &&
+        std::any_of(plan.folds.begin(), plan.folds.end(),
+                    [](const UnfoldedFold& f) { return f.wholeImage.has_value(); })) {
+      plan = unfold(false);
+      if (tryPlan()) return true;
     }
-    const std::unique_ptr<FoldSession> branch = sessionFor({});
-    const FoldSequence planned = replay(plan, *branch, session_.initial(), deadline);
-    if (deadline.passed()) {
+    if (cut) {
       noteCut(deadline);
       return false;
     }
-    if (offer(planned, *branch)) return true;
     // Where the unfolding stopped short of the sheet (a crease it could not read, or an
     // unfolding that ends off it), what it read is used still: the search folds the sheet
     // toward where the unfolding stopped, and the folds read follow.
@@ -938,8 +963,11 @@ class FitRun {
       // A symmetric design lies on its copy only the ways its symmetry keeps (its folds read
       // onto their images): the first way found, if not one of them, takes more planes, and
       // those folds make images the target lacks. Every way then, past one plane.
-      const std::size_t upTo =
-          pass == 0 && session_.symmetry() ? std::min<std::size_t>(most, 1) : most;
+      // With no fold read (the whole target a moved copy), any way is right: whole-sheet folds
+      // move their grabs' images too and bring none.
+      const std::size_t upTo = pass == 0 && session_.symmetry() && !plan.folds.empty()
+                                   ? std::min<std::size_t>(most, 1)
+                                   : most;
       for (std::size_t count = 1; count <= upTo && planes.empty(); ++count)
         for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
           if (reading.passed()) return false;
@@ -1058,11 +1086,15 @@ class FitRun {
     auto imagesRead = [&] {
       for (std::size_t f = before + 1; f < branch.foldCount(); ++f) {
         const ReflectionPlane& image = branch.folds()[f].plane;
+        auto same = [&](const ReflectionPlane& p) {
+          return std::abs(glm::dot(p.normal, image.normal)) >
+                     std::cos(0.5 * std::numbers::pi / 180.0) &&
+                 std::abs(p.signedDistance(image.point)) < 1e-3 * size;
+        };
+        // A fold read, or the image the unfolding found had moved the whole sheet.
         const bool read =
             std::any_of(plan.folds.begin(), plan.folds.end(), [&](const UnfoldedFold& fold) {
-              return std::abs(glm::dot(fold.plane.normal, image.normal)) >
-                         std::cos(0.5 * std::numbers::pi / 180.0) &&
-                     std::abs(fold.plane.signedDistance(image.point)) < 1e-3 * size;
+              return same(fold.plane) || (fold.wholeImage && same(*fold.wholeImage));
             });
         if (!read) return false;
       }
@@ -1306,6 +1338,13 @@ class FitRun {
               bounded(g)) ||
              reaches(g);
     };
+    // A sequence that reaches the target is kept whole: folds of the whole sheet (a target with
+    // no crease left, which reads as smooth) may each move it farther before the last lays it on.
+    if (!strict && !m.steps.empty() && m.steps.size() == sequence.groups.size() &&
+        m.steps.back().hausdorff <= kKeptWhole * m.steps.back().diagonal) {
+      m.keep = m.steps.size();
+      return m;
+    }
     if (strict) {
       while (m.keep < m.steps.size() && gains(m.keep)) ++m.keep;
     } else {

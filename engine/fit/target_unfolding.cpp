@@ -71,6 +71,64 @@ struct Candidate {
 
 }  // namespace
 
+std::vector<ReflectionPlane> planesBeforeWholeImage(const ReflectionPlane& moved,
+                                                    const Isometry& g) {
+  // a: n.x = d, b = g(a): m.x = e with m = L n, e = d + m.o. R_b(a) has the normal
+  // n - 2 (n.m) m, and an offset linear in d: the normal is solved for, then d.
+  auto normalAfter = [&](const glm::dvec3& n) {
+    const glm::dvec3 m = g.linear * n;
+    return n - 2.0 * glm::dot(n, m) * m;
+  };
+  const glm::dvec3 want = glm::normalize(moved.normal);
+  auto residual = [&](const glm::dvec3& n) { return normalAfter(n) - want; };
+  // Candidates: the normals of a Fibonacci grid nearest a solution, each refined.
+  constexpr int kGrid = 2000;
+  std::vector<std::pair<double, glm::dvec3>> grid;
+  grid.reserve(kGrid);
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (int k = 0; k < kGrid; ++k) {
+    const double z = 1.0 - 2.0 * (k + 0.5) / kGrid, r = std::sqrt(1.0 - z * z);
+    const glm::dvec3 n(r * std::cos(golden * k), r * std::sin(golden * k), z);
+    grid.emplace_back(glm::length(residual(n)), n);
+  }
+  std::partial_sort(grid.begin(), grid.begin() + 40, grid.end(),
+                    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ReflectionPlane> planes;
+  for (int c = 0; c < 40; ++c) {
+    glm::dvec3 n = grid[std::size_t(c)].second;
+    // Gauss-Newton on the sphere: two tangent directions, a numeric Jacobian.
+    for (int it = 0; it < 30; ++it) {
+      const glm::dvec3 t1 = glm::normalize(
+          glm::cross(n, std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+      const glm::dvec3 t2 = glm::cross(n, t1);
+      const glm::dvec3 r = residual(n);
+      constexpr double h = 1e-7;
+      const glm::dvec3 j1 = (residual(glm::normalize(n + h * t1)) - r) / h;
+      const glm::dvec3 j2 = (residual(glm::normalize(n + h * t2)) - r) / h;
+      const double a11 = glm::dot(j1, j1), a12 = glm::dot(j1, j2), a22 = glm::dot(j2, j2);
+      const double b1 = -glm::dot(j1, r), b2 = -glm::dot(j2, r);
+      const double det = a11 * a22 - a12 * a12;
+      if (!(std::abs(det) > 1e-30)) break;
+      const double u = (b1 * a22 - b2 * a12) / det, v = (a11 * b2 - a12 * b1) / det;
+      n = glm::normalize(n + u * t1 + v * t2);
+      if (std::abs(u) + std::abs(v) < 1e-14) break;
+    }
+    if (!(glm::length(residual(n)) < 1e-9)) continue;
+    const glm::dvec3 m = g.linear * n, after = normalAfter(n);
+    const double slope = glm::dot(after, n) - 2.0 * (glm::dot(m, n) - 1.0) * glm::dot(after, m);
+    if (!(std::abs(slope) > 1e-6)) continue;  // every offset, or none: no one plane
+    const double rise = 2.0 * glm::dot(m, g.offset) * glm::dot(after, m);
+    const double d = (glm::dot(want, moved.point) - rise) / slope;
+    const ReflectionPlane plane{d * n, n};
+    const bool known = std::any_of(planes.begin(), planes.end(), [&](const ReflectionPlane& p) {
+      return std::abs(std::abs(glm::dot(p.normal, n)) - 1.0) < 1e-9 &&
+             std::abs(p.signedDistance(plane.point)) < 1e-9;
+    });
+    if (!known) planes.push_back(plane);
+  }
+  return planes;
+}
+
 namespace {
 
 struct Unfolder {
@@ -85,7 +143,8 @@ struct Unfolder {
   const SurfaceDistanceQuery& sheetSurface;
   std::size_t maxFolds;
   const Deadline& deadline;
-  std::size_t leaves = 0;  // unfoldings finished, to bound the branching
+  const std::vector<Isometry>& images;  // a symmetric design's; empty: none
+  std::size_t leaves = 0;               // unfoldings finished, to bound the branching
   // The deadline passed: each unfolding under way ends where it is (its steps so far, read off
   // as a finished one is), and the best of those and of the finished ones is kept.
   bool cutShort = false;
@@ -188,6 +247,17 @@ struct Unfolder {
       const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
       return {linear * mirror, linear * (2.0 * glm::dot(p.point, p.normal) * p.normal) + offset};
     }
+    Motion before(const ReflectionPlane& p) const {  // the reflection through p after this
+      const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
+      return {mirror * linear, mirror * offset + 2.0 * glm::dot(p.point, p.normal) * p.normal};
+    }
+  };
+
+  // One fold whose symmetric image moved the whole sheet: at unfolding step `step`, the fold's
+  // plane before the image and the image's plane.
+  struct WholeImage {
+    std::size_t step = 0;
+    ReflectionPlane plane, image;
   };
 
   // Reflecting the piece or the rest of the target unfolds a crease alike, the two results one
@@ -254,11 +324,57 @@ struct Unfolder {
         }
       }
     }
+    // No choice ends on the sheet, but the design is symmetric: a fold's image may have moved
+    // the whole sheet (and left no crease). Each step's fold then lay, before the image, in a
+    // plane a whose image b = g(a) reflects it onto the crease's plane: b undone before the fold.
+    WholeImage bestImage;  // used where imageFound
+    bool imageFound = false;
+    const double offSheetLimit = kOffSheet * diagonal * static_cast<double>(probe.size());
+    if (bestOff > offSheetLimit && !images.empty() && n <= kImageSteps) {
+      std::uint32_t allowed = 0;
+      for (std::size_t u = 0; u < n; ++u)
+        if (steps[u].restReplayable) allowed |= 1u << u;
+      double imageOff = kInfinitySharp;
+      std::vector<char> imageRest;
+      for (std::uint32_t bits = 0; bits < (1u << n) && !deadline.passed(); ++bits) {
+        if (bits & ~allowed) continue;
+        for (std::size_t u = 0; u < n; ++u) rest[u] = bits >> u & 1u;
+        Motion upTo;  // the motion before step u
+        for (std::size_t u = 0; u < n; ++u) {
+          const ReflectionPlane crease{upTo(steps[u].plane.point),
+                                       upTo.linear * steps[u].plane.normal};
+          const Motion plain = rest[u] ? upTo.then(steps[u].plane) : upTo;
+          for (const Isometry& g : images)
+            for (const ReflectionPlane& plane : planesBeforeWholeImage(crease, g)) {
+              const ReflectionPlane image{g.apply(plane.point), g.linear * plane.normal};
+              Motion motion = plain.before(image);
+              for (std::size_t w = u + 1; w < n; ++w)
+                if (rest[w]) motion = motion.then(steps[w].plane);
+              double off = 0.0;
+              for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
+              if (off < imageOff - tie ||
+                  (off <= imageOff + tie && rests(rest) < rests(imageRest))) {
+                imageOff = std::min(off, imageOff);
+                imageRest = rest;
+                bestImage = WholeImage{u, plane, image};
+                imageFound = true;
+              }
+            }
+          upTo = plain;
+        }
+      }
+      if (imageOff <= offSheetLimit && imageOff < bestOff) {
+        bestOff = imageOff;
+        bestRest = imageRest;
+      } else {
+        imageFound = false;
+      }
+    }
     // No choice ends on the sheet: folds that missed it moved it whole, and which choice lies
     // nearest it says nothing. The pieces then (each step's smaller side moved), so the largest
     // part stays and the folds read are the folds made (a symmetric design's read as the images
     // of one another); the whole motion is found apart (whole_sheet_folds.hpp).
-    if (bestOff > kOffSheet * diagonal * static_cast<double>(probe.size())) bestRest.assign(n, 0);
+    if (bestOff > offSheetLimit) bestRest.assign(n, 0);
     TargetUnfolding result;
     Motion motion;
     for (std::size_t u = 0; u < n; ++u) {
@@ -266,6 +382,11 @@ struct Unfolder {
       UnfoldedFold fold;
       fold.plane = {motion(steps[u].plane.point), motion.linear * steps[u].plane.normal};
       if (rest) motion = motion.then(steps[u].plane);
+      if (imageFound && bestImage.step == u) {
+        fold.plane = bestImage.plane;
+        fold.wholeImage = bestImage.image;
+        motion = motion.before(bestImage.image);
+      }
       fold.seedBefore = motion(rest ? steps[u].seedRest : steps[u].seedPiece);
       fold.seedVertex = rest ? steps[u].seedRestVertex : steps[u].seedPieceVertex;
       result.folds.insert(result.folds.begin(), fold);  // unfolding runs backwards
@@ -370,7 +491,8 @@ struct Unfolder {
 
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
                              double minDihedralDegrees, std::size_t maxFolds,
-                             const Deadline& deadline) {
+                             const Deadline& deadline,
+                             const std::vector<Isometry>& symmetryImages) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
   Unfolder unfolder{
@@ -383,7 +505,8 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
       std::cos((largestDihedralDegrees(sheet) + kBendMarginDegrees) * std::numbers::pi / 180.0),
       sheetSurface,
       maxFolds,
-      deadline};
+      deadline,
+      symmetryImages};
   const double sharp =
       sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
   TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);

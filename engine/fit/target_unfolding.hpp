@@ -29,12 +29,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "engine/fit/deadline.hpp"
 #include "engine/geometry/reflection.hpp"
+#include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
 namespace curvefold {
@@ -47,6 +49,9 @@ struct UnfoldedFold {
   // one place: a point there names either).
   glm::dvec3 seedBefore{0.0};
   std::uint32_t seedVertex = 0;
+  // A symmetric design's fold whose image moved the whole sheet (its plane missed the folded
+  // sheet, so it left no crease): that image's plane, which the fold brings when made.
+  std::optional<ReflectionPlane> wholeImage;
 };
 
 struct TargetUnfolding {
@@ -64,9 +69,23 @@ constexpr std::size_t kExhaustiveSides = 10;
 // `sheet`: the initial sheet the target was folded from (the part that stays is found on it);
 // `minDihedralDegrees`: the sharp-edge threshold (above the sheet's own bends). Stops at its next
 // check once `deadline` passes, with what it read by then and cutShort set (within one step:
-// finding one node's crease planes and pieces).
+// finding one node's crease planes and pieces). `symmetryImages`: a symmetric design's
+// isometries (Symmetry::images()): where no choice of sides ends on the sheet, one fold whose
+// image moved the whole sheet (a fold of most of a sheet with rotational:2 mirrors the rest of it
+// through the image plane, which then cuts nothing) is tried at each step, for up to kImageSteps
+// creases.
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
                              double minDihedralDegrees, std::size_t maxFolds,
-                             const Deadline& deadline = {});
+                             const Deadline& deadline = {},
+                             const std::vector<Isometry>& symmetryImages = {});
+
+// Creases up to which one fold's whole-sheet image is looked for (2^n sides, times n images).
+constexpr std::size_t kImageSteps = 6;
+
+// The planes a whose image b = g(a) reflects a onto `moved` (R_b(a) = moved): where a fold
+// through a made the image through b move the whole sheet, its crease then lies in `moved`.
+// Found on a grid of normals and refined (Gauss-Newton); each plane once.
+std::vector<ReflectionPlane> planesBeforeWholeImage(const ReflectionPlane& moved,
+                                                    const Isometry& g);
 
 }  // namespace curvefold
