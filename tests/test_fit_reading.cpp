@@ -72,6 +72,21 @@ void expectFoundExactly(const ReadCase& c) {
   EXPECT_TRUE(check.passed()) << check.firstFailure();
 }
 
+// The sheet's farthest point along `along` dragged on `distance` along it: the plane lies past the
+// sheet, and all of it moves (no crease left).
+void foldTheWholeSheetAlong(FoldSession& folding, glm::dvec3 along, double distance) {
+  along = glm::normalize(along);
+  const Sheet before = folding.fixed();
+  glm::dvec3 farthest = before.positions.front();
+  for (const glm::dvec3& p : before.positions)
+    if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
+  folding.beginDragNear(farthest);
+  folding.updateDrag(farthest + distance * along);
+  ASSERT_TRUE(folding.commit());
+  for (std::size_t v = 0; v < before.vertexCount(); ++v)
+    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+}
+
 TEST(FitReading, ASlitDoesNotHideWhichSideASeedIsOn) {
   expectFoundExactly(
       {"anywhere-long", "cylinder", 4, 7932,
@@ -117,17 +132,8 @@ TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   ASSERT_TRUE(folding.commit());
   // Then the sheet's farthest point along a direction dragged on along it: the plane lies past
   // the sheet, and all of it moves.
-  for (const glm::dvec3& along : {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)}) {
-    const Sheet before = folding.fixed();
-    glm::dvec3 farthest = before.positions.front();
-    for (const glm::dvec3& p : before.positions)
-      if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
-    folding.beginDragNear(farthest);
-    folding.updateDrag(farthest + 0.15 * glm::normalize(along));
-    ASSERT_TRUE(folding.commit());
-    for (std::size_t v = 0; v < before.vertexCount(); ++v)
-      ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
-  }
+  for (const glm::dvec3& along : {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)})
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.15));
   const TriangleMesh target = meshOf(folding.fixed());
 
   const FoldFitter fitter(target);
@@ -248,18 +254,8 @@ TEST(WholeSheetFolds, RegistrationStopsSoonAfterItsDeadline) {
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   const Sheet initial = makeSurface("cone", {{"resolution", 24}});
   FoldSession folding(initial);
-  for (const glm::dvec3& along : {glm::dvec3(0.6, 0.6, 0.3), glm::dvec3(0.4, 0.0, 0.9)}) {
-    const glm::dvec3 unit = glm::normalize(along);
-    const Sheet before = folding.fixed();
-    glm::dvec3 farthest = before.positions.front();
-    for (const glm::dvec3& p : before.positions)
-      if (glm::dot(p, unit) > glm::dot(farthest, unit)) farthest = p;
-    folding.beginDragNear(farthest);
-    folding.updateDrag(farthest + 0.12 * unit);
-    ASSERT_TRUE(folding.commit());
-    for (std::size_t v = 0; v < before.vertexCount(); ++v)
-      ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
-  }
+  for (const glm::dvec3& along : {glm::dvec3(0.6, 0.6, 0.3), glm::dvec3(0.4, 0.0, 0.9)})
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.12));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
   const FoldFitter fitter(target);
@@ -288,16 +284,8 @@ TEST(FitReading, ASymmetricSheetMirroredWholeTakesOneFold) {
   folding.beginDragNear(tip);
   folding.updateDrag(0.75 * tip + glm::dvec3(0.0, 0.0, 0.3 * tip.x));  // a tip folded up
   ASSERT_TRUE(folding.commit());
-  const glm::dvec3 along = glm::normalize(glm::dvec3(-0.3, 0.8, 0.5));
-  const Sheet before = folding.fixed();
-  glm::dvec3 farthest = before.positions.front();
-  for (const glm::dvec3& p : before.positions)
-    if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
-  folding.beginDragNear(farthest);
-  folding.updateDrag(farthest + 0.1 * along);  // the plane past the sheet: all of it mirrored
-  ASSERT_TRUE(folding.commit());
-  for (std::size_t v = 0; v < before.vertexCount(); ++v)
-    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  // The plane past the sheet: all of it mirrored.
+  ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {-0.3, 0.8, 0.5}, 0.1));
   const TriangleMesh target = meshOf(folding.fixed());
 
   const FoldFitter fitter(target);
@@ -388,16 +376,7 @@ TEST(FitReading, AWholeSheetFoldAfterASymmetricFoldIsFoundToo) {
   folding.updateDrag({0.03, 0.05, 0.06});  // a corner folded up, and its three images
   ASSERT_TRUE(folding.commit());
   ASSERT_EQ(folding.foldCount(), 4u);
-  const Sheet before = folding.fixed();
-  const glm::dvec3 along = glm::normalize(glm::dvec3(0.6, -0.3, 0.74));
-  glm::dvec3 farthest = before.positions.front();
-  for (const glm::dvec3& p : before.positions)
-    if (glm::dot(p, along) > glm::dot(farthest, along)) farthest = p;
-  folding.beginDragNear(farthest);
-  folding.updateDrag(farthest + 0.15 * along);
-  ASSERT_TRUE(folding.commit());
-  for (std::size_t v = 0; v < before.vertexCount(); ++v)
-    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {0.6, -0.3, 0.74}, 0.15));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
   const FoldFitter fitter(target);
