@@ -230,6 +230,32 @@ TEST(CreasePatternFold, CutIsOpenedAndCanSplitThePaper) {
   EXPECT_EQ(across.vertices.size(), 8u);
 }
 
+TEST(CreasePatternFold, ASlitWithBothEndsInsideThePaperStaysJoinedAsAFreeHinge) {
+  // One cut edge from (0.3, 0.5) to (0.7, 0.5): neither end can double, so it cannot open.
+  const CreasePattern p = readFoldCreasePatternText(
+      R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1],[0.3,0.5],[0.7,0.5]],
+          "edges_vertices": [[0,1],[1,2],[2,3],[3,0],[4,5]],
+          "edges_assignment": ["B","B","B","B","C"]})",
+      "inner_slit.fold");
+  expectValid(p);
+  EXPECT_EQ(p.vertices.size(), 6u);
+  EXPECT_EQ(counts(p)[CreaseAssignment::Cut], 0);
+  ASSERT_TRUE(edgeBetween(p, {0.3, 0.5}, {0.7, 0.5}));
+  EXPECT_EQ(edgeBetween(p, {0.3, 0.5}, {0.7, 0.5})->assignment, CreaseAssignment::Unassigned);
+  EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& note) {
+    return note.find("cannot open") != std::string::npos;
+  }));
+  // Two edges: the middle vertex doubles and the slit opens.
+  const CreasePattern opens = readFoldCreasePatternText(
+      R"({"vertices_coords": [[0,0],[1,0],[1,1],[0,1],[0.3,0.5],[0.5,0.5],[0.7,0.5]],
+          "edges_vertices": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6]],
+          "edges_assignment": ["B","B","B","B","C","C"]})",
+      "inner_slit2.fold");
+  expectValid(opens);
+  EXPECT_EQ(opens.vertices.size(), 8u);
+  EXPECT_EQ(counts(opens)[CreaseAssignment::Cut], 4);
+}
+
 TEST(CreasePatternFold, BadInputGetsOneLineNamingTheProblem) {
   EXPECT_NE(foldError("{\"vertices_coords\": [[0,0],").find("not valid JSON"), std::string::npos);
   EXPECT_NE(

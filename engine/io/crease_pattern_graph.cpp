@@ -636,6 +636,25 @@ CreasePattern triangulateCreaseDrawing(const CreaseDrawing& drawing,
       pattern.edges.push_back(edge);
     }
   }
+  // A cut that cannot open: one edge whose both ends stay single vertices (a slit with both
+  // ends inside the paper, no vertex on its way to double). A triangle mesh cannot hold it open
+  // without a non-manifold edge, so the paper stays joined there as a free hinge.
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const auto& triangle : pattern.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[pairKey(triangle[k], triangle[(k + 1) % 3])];
+  std::size_t closedCuts = 0;
+  for (CreasePatternEdge& edge : pattern.edges)
+    if ((edge.assignment == CreaseAssignment::Cut ||
+         edge.assignment == CreaseAssignment::Boundary) &&
+        uses[pairKey(edge.a, edge.b)] == 2) {
+      ++closedCuts;
+      edge.assignment = CreaseAssignment::Unassigned;
+      edge.foldAngleDegrees = 0.0;
+    }
+  if (closedCuts > 0)
+    pattern.notes.push_back(std::to_string(closedCuts) +
+                            " cut edges with both ends inside the paper cannot open; read as "
+                            "unassigned (free) hinges");
   return pattern;
 }
 
