@@ -77,7 +77,14 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     } catch (const InvalidTarget& e) {
       throw UsageError(targetName + ": " + e.what());
     }
-    const StartChoice start = chooseStart(target, from.surface);
+    // A symmetry asked for is kept: only sheets that have it are sized or placed.
+    const bool symmetric = command->get_option("--symmetry")->count() > 0;
+    StartChoice start;
+    try {
+      start = chooseStart(target, from.surface, symmetric ? from.symmetry : "");
+    } catch (const InvalidSymmetry& e) {
+      throw UsageError("--symmetry " + session::symmetryProblem(e));
+    }
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -93,11 +100,13 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     std::cout << text
               << (start.placed    ? " (sized and placed on the target: " + start.placement + ")"
                   : start.creased ? std::string(" (its defaults: the target has creases)")
+                  : start.symmetryDefaults
+                      ? " (its defaults: no sheet sized to the target has " + from.symmetry + ")"
                   : start.parameters.empty()
                       ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
-    if (command->get_option("--symmetry")->count() > 0) {
+    if (symmetric) {
       try {
         design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
       } catch (const InvalidSymmetry& e) {

@@ -46,11 +46,18 @@ struct StartChoice {
   // The target has creases this kind's sheet would not have (a fold's): the kind keeps its
   // defaults. Unset where the defaults were simply nearest.
   bool creased = false;
+  // A symmetry was asked for and every sheet sized or placed to the target lacked it: the kind
+  // at its defaults (which has it) instead.
+  bool symmetryDefaults = false;
 };
 
-// `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError
-// when the named kind cannot be sized to the target.
-StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "");
+// `kind`: a catalogue surface name, or "" for any of the candidates above. `symmetry` (as
+// parseSymmetry reads it, "" none): only sheets that have it are candidates, so a design asking
+// for a mirror or a rotation keeps it (a sheet placed on the target's axes seldom has one; the
+// kind at its defaults is the last resort). Throws SurfaceError when the named kind cannot be
+// sized to the target, InvalidSymmetry when `symmetry` is no symmetry or no candidate has it.
+StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "",
+                        const std::string& symmetry = "");
 
 // Whether the target is a shape no reflection design reaches exactly: smooth (no plane of edges
 // bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
