@@ -335,6 +335,24 @@ TEST_F(FitCli, TheStartKeepsTheSymmetryAskedFor) {
   }
 }
 
+// A pleat (two folds made as one step, pleat_folds.hpp) is printed as a pleat of its two folds,
+// numbered in the design, not as a fold with an image (issue 38): images are a symmetric
+// design's, and the log counts none for it. --evaluations alone: no clock, the same steps on any
+// machine.
+TEST_F(FitCli, APleatIsPrintedAsAPleatOfTwoFolds) {
+  const CommandResult fit = run(
+      "fit " + saddleTarget() + " --from square --resolution 12 --folds 2 --evaluations 300 -o " +
+      path("pleated.curvefold.json").string() + " --log " + path("pleated.jsonl").string());
+  ASSERT_EQ(fit.exitCode, 0) << fit.err;
+  EXPECT_NE(fit.out.find("\npleat: folds 1 and 2, "), std::string::npos) << fit.out;
+  EXPECT_EQ(fit.out.find("image"), std::string::npos) << fit.out;
+  const nlohmann::json design = nlohmann::json::parse(slurp(path("pleated.curvefold.json")));
+  EXPECT_NE(fit.out.find(" steps, " + std::to_string(design["folds"].size()) + " folds;"),
+            std::string::npos)
+      << fit.out;
+  EXPECT_EQ(slurp(path("pleated.jsonl")).find("images"), std::string::npos);
+}
+
 TEST_F(FitCli, TheSameSeedFitsTheSameDesign) {
   const std::string target = makeTarget();
   const std::string a = path("a.curvefold.json").string(), b = path("b.curvefold.json").string();
