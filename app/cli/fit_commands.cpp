@@ -60,8 +60,10 @@ TriangleMesh shapeOf(const std::string& path) {
 // symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is refused as it would be from the
 // surface's defaults, not sized to.
+// `deadline`: when the choice stops measuring more sheets (a share of --time).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const std::string& targetName) {
+                   const std::string& output, const std::string& targetName,
+                   const Deadline& deadline) {
   const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -81,7 +83,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
     StartChoice start;
     try {
-      start = chooseStart(target, from.surface, symmetric ? from.symmetry : "");
+      start = chooseStart(target, from.surface, symmetric ? from.symmetry : "", deadline);
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
@@ -106,6 +108,10 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
                       ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
+    if (start.cutShort)
+      std::cout << "the time limit cut the choice of the start short: the nearest of the sheets "
+                   "measured (a longer --time, or --evaluations alone, measures them all)"
+                << std::endl;
     if (symmetric) {
       try {
         design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
@@ -237,9 +243,11 @@ FoldLogEntry logEntryOfStep(const FoldSession& session, const FitProgress& step,
 // "3 folds", or where steps made more folds than one each: "3 folds, 18 with images" (a
 // symmetric design) or "3 steps, 8 folds" (pleats, rings).
 std::string foldCountText(std::size_t steps, std::size_t folds, bool symmetric) {
-  if (folds <= steps) return std::to_string(steps) + " folds";
-  return symmetric ? std::to_string(steps) + " folds, " + std::to_string(folds) + " with images"
-                   : std::to_string(steps) + " steps, " + std::to_string(folds) + " folds";
+  if (folds <= steps) return std::to_string(steps) + (steps == 1 ? " fold" : " folds");
+  return symmetric ? std::to_string(steps) + (steps == 1 ? " fold, " : " folds, ") +
+                         std::to_string(folds) + " with images"
+                   : std::to_string(steps) + (steps == 1 ? " step, " : " steps, ") +
+                         std::to_string(folds) + " folds";
 }
 
 // What the finished fit says: why it stopped, what it wrote, and where a fit that does not reach
@@ -337,7 +345,18 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                            {hasExtension(options.from.surface, ".obj") ? options.from.surface : "",
                             "the surface read (--from)"}});
   const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
-  Design design = startDesign(options.from, command, *fitter, options.output, options.target);
+  // --evaluations alone: no clock, so nothing depends on the machine's speed.
+  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
+  // The start's choice takes at most this share of --time (on a large target each sheet it
+  // measures costs a second or more), leaving the rest to the search.
+  constexpr double kStartShare = 0.25;
+  const Deadline startDeadline =
+      timed ? Deadline{}.notAfter(started +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(kStartShare * options.seconds)))
+            : Deadline{};
+  Design design =
+      startDesign(options.from, command, *fitter, options.output, options.target, startDeadline);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
@@ -352,8 +371,6 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
   FitOptions fit;
   fit.maxFolds = options.folds;
-  // --evaluations alone: no clock, so nothing depends on the machine's speed.
-  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
   fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
   fit.started = started;
   fit.maxEvaluations = options.evaluations;

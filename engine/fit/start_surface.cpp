@@ -199,7 +199,7 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
 }
 
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
-                        const std::string& symmetry) {
+                        const std::string& symmetry, const Deadline& deadline) {
   StartChoice best;
   bool any = false;
   std::string lastError;
@@ -231,7 +231,11 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   };
   // A smooth target's grid bends are no creases, though a flat sheet's threshold reads them so.
   const bool smooth = isSmoothOrScanned(target);
+  bool cutShort = false;
+  // Once one sheet is measured, the rest only while the deadline allows.
+  auto outOfTime = [&] { return any && (cutShort = cutShort || deadline.passed()); };
   for (StartChoice& candidate : candidatesFor(target, kind)) {
+    if (outOfTime()) break;
     // A folded design was folded from the sheet as the catalogue makes it.
     if (!smooth && creasedKind(candidate.surface)) {
       candidate.parameters.clear();
@@ -257,8 +261,10 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest;
   double nearestChamfer = 0.0, nearestScore = 0.0;
-  for (PlacedStart& placed :
-       smooth ? placedStarts(samples, surfaceArea(target), kind) : std::vector<PlacedStart>{}) {
+  for (PlacedStart& placed : smooth && !outOfTime()
+                                 ? placedStarts(samples, surfaceArea(target), kind)
+                                 : std::vector<PlacedStart>{}) {
+    if (outOfTime()) break;
     if (!keeps(placed.sheet)) {
       sizedDropped = true;
       continue;
@@ -284,7 +290,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   }
   // A tube toward a smooth target of revolution is as wide as its belly: the rings that fold
   // it toward the target only narrow it (ring_folds.hpp).
-  if (kind == "cylinder" && smooth) {
+  if (kind == "cylinder" && smooth && !outOfTime()) {
     const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
     std::optional<PlacedStart> tube =
         axis ? widestCylinder(samples, axis->point, axis->direction) : std::nullopt;
@@ -303,6 +309,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   // Every sheet of the kind lacks the symmetry, its defaults too: the surface does not have it.
   if (!any && lacked) throw *lacked;
   if (!any) throw SurfaceError(lastError);
+  best.cutShort = cutShort;
   best.symmetryDefaults = sizedDropped && !sizedKept && best.parameters.empty() && !best.placed;
   return best;
 }
