@@ -223,7 +223,7 @@ FoldLogEntry logEntryOfStep(const FoldSession& session, const FitProgress& step,
   entry.time = step.seconds;
   entry.fold = first + 1;
   entry.foldCount = session.foldCount();
-  entry.plane = folds[first].plane;
+  if (count > 0) entry.plane = folds[first].plane;
   entry.trianglesBefore = trianglesBefore;
   entry.trianglesAfter = trianglesBefore = sheet.triangleCount();
   entry.maxEdgeLengthError = maxEdgeLengthError(sheet);
