@@ -681,6 +681,19 @@ TEST(StartSurface, ATiltedTubeStartsFromACylinderPlacedOnItsAxis) {
   EXPECT_LT(named.chamfer, 0.005 * boundingDiagonal(target));
 }
 
+// A symmetry asked for (issue 38): a cylinder placed on a tilted tube's axis has none of the
+// catalogue's mirrors, so the start is one in the catalogue's frame that has it.
+TEST(StartSurface, ASymmetryAskedForIsKeptByTheStart) {
+  const TriangleMesh target =
+      moved(tube(0.05, 0.18, 96, 30), {1.0, 0.3, 0.5}, 65.0, {0.02, -0.01, 0.03});
+  ASSERT_TRUE(chooseStart(target, "cylinder").placed);
+  const StartChoice start = chooseStart(target, "cylinder", "mirror:y");
+  EXPECT_FALSE(start.placed);
+  EXPECT_EQ(parseSymmetry("mirror:y", makeSurface(start.surface, start.parameters)).name(),
+            "mirror:y");
+  EXPECT_THROW(chooseStart(target, "cylinder", "mirror:q"), InvalidSymmetry);
+}
+
 // The choice of the start keeps to its deadline (issue 38, 3: --time bounds the whole fit): past
 // it, no sheet is measured after the first, and the choice says it was cut short.
 TEST(StartSurface, TheChoiceStopsMeasuringAtItsDeadline) {
