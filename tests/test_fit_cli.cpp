@@ -305,6 +305,54 @@ TEST_F(FitCli, AnInterruptedFitWritesTheBestDesignFoundSoFar) {
   }
 }
 
+// --symmetry without surface parameters (issue 38): the start is sized and placed only in ways
+// that keep the symmetry asked for (a cone placed on the vase's principal axes has no mirror:x),
+// or is the catalogue's sheet at its defaults, said in one line; never refused for it.
+TEST_F(FitCli, TheStartKeepsTheSymmetryAskedFor) {
+  const std::string targets = std::string(CURVEFOLD_SOURCE_DIR) + "/examples/targets/";
+  // A slim tube: a cylinder sized to it has too few segments around for a quarter turn.
+  const std::string slim = path("slim.curvefold.json").string();
+  ASSERT_EQ(run("new cylinder --radius 0.015 --height 0.3 --resolution 12 -o " + slim).exitCode, 0);
+  ASSERT_EQ(run("export " + slim + " --obj " + path("slim.obj").string()).exitCode, 0);
+  struct Case {
+    std::string target, from, symmetry, start;
+  };
+  for (const Case& c :
+       {Case{targets + "vase.obj", "cone", "mirror:x", "from: cone --base_radius"},
+        Case{targets + "bowl.obj", "square", "rotational:4:z", "from: square --size"},
+        Case{path("slim.obj").string(), "cylinder", "rotational:4:y",
+             "from: cylinder (its defaults: no sheet sized to the target has "
+             "rotational:4:y)"}}) {
+    const std::string design = path("symmetric.curvefold.json").string();
+    const CommandResult fit = run("fit " + c.target + " --from " + c.from + " --symmetry " +
+                                  c.symmetry + " --folds 1 --time 0.1 -o " + design);
+    ASSERT_EQ(fit.exitCode, 0) << c.target << "\n" << fit.out << fit.err;
+    EXPECT_NE(fit.out.find(c.start), std::string::npos) << fit.out;
+    EXPECT_EQ(fit.out.find("placed"), std::string::npos) << fit.out;
+    const nlohmann::json saved = nlohmann::json::parse(slurp(design));
+    EXPECT_EQ(saved["symmetry"], c.symmetry) << c.target;
+    EXPECT_EQ(run("check " + design).exitCode, 0) << c.target;
+  }
+}
+
+// A pleat (two folds made as one step, pleat_folds.hpp) is printed as a pleat of its two folds,
+// numbered in the design, not as a fold with an image (issue 38): images are a symmetric
+// design's, and the log counts none for it. --evaluations alone: no clock, the same steps on any
+// machine.
+TEST_F(FitCli, APleatIsPrintedAsAPleatOfTwoFolds) {
+  const CommandResult fit = run(
+      "fit " + saddleTarget() + " --from square --resolution 12 --folds 2 --evaluations 300 -o " +
+      path("pleated.curvefold.json").string() + " --log " + path("pleated.jsonl").string());
+  ASSERT_EQ(fit.exitCode, 0) << fit.err;
+  EXPECT_NE(fit.out.find("\npleat: folds 1 and 2, "), std::string::npos) << fit.out;
+  EXPECT_EQ(fit.out.find("image"), std::string::npos) << fit.out;
+  const nlohmann::json design = nlohmann::json::parse(slurp(path("pleated.curvefold.json")));
+  EXPECT_NE(fit.out.find(" steps, " + std::to_string(design["folds"].size()) + " folds;"),
+            std::string::npos)
+      << fit.out;
+  EXPECT_EQ(slurp(path("pleated.jsonl")).find("images"), std::string::npos);
+}
+
 TEST_F(FitCli, TheSameSeedFitsTheSameDesign) {
   const std::string target = makeTarget();
   const std::string a = path("a.curvefold.json").string(), b = path("b.curvefold.json").string();

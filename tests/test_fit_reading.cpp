@@ -681,6 +681,33 @@ TEST(StartSurface, ATiltedTubeStartsFromACylinderPlacedOnItsAxis) {
   EXPECT_LT(named.chamfer, 0.005 * boundingDiagonal(target));
 }
 
+// A symmetry asked for (issue 38): a cylinder placed on a tilted tube's axis has none of the
+// catalogue's mirrors, so the start is one in the catalogue's frame that has it.
+TEST(StartSurface, ASymmetryAskedForIsKeptByTheStart) {
+  const TriangleMesh target =
+      moved(tube(0.05, 0.18, 96, 30), {1.0, 0.3, 0.5}, 65.0, {0.02, -0.01, 0.03});
+  ASSERT_TRUE(chooseStart(target, "cylinder").placed);
+  const StartChoice start = chooseStart(target, "cylinder", "mirror:y");
+  EXPECT_FALSE(start.placed);
+  EXPECT_EQ(parseSymmetry("mirror:y", makeSurface(start.surface, start.parameters)).name(),
+            "mirror:y");
+  EXPECT_THROW(chooseStart(target, "cylinder", "mirror:q"), InvalidSymmetry);
+}
+
+// The choice of the start keeps to its deadline (issue 38, 3: --time bounds the whole fit): past
+// it, no sheet is measured after the first, and the choice says it was cut short.
+TEST(StartSurface, TheChoiceStopsMeasuringAtItsDeadline) {
+  const TriangleMesh target =
+      moved(tube(0.05, 0.18, 96, 30), {1.0, 0.3, 0.5}, 65.0, {0.02, -0.01, 0.03});
+  const StartChoice cut = chooseStart(target, "", "", Deadline::in(0.0));
+  EXPECT_TRUE(cut.cutShort);
+  EXPECT_FALSE(cut.placed) << "a sheet placed on the axis was measured past the deadline";
+  EXPECT_EQ(cut.surface, "square");  // the first candidate, the only one measured
+  const StartChoice whole = chooseStart(target, "");
+  EXPECT_FALSE(whole.cutShort);
+  EXPECT_TRUE(whole.placed);
+}
+
 TEST(StartSurface, ASaddleStartsFromASweptParabolaNearerThanAFlatSheet) {
   // Turned off the catalogue's axes: the swept parabola follows the strongest curvature.
   const TriangleMesh target =

@@ -60,8 +60,10 @@ TriangleMesh shapeOf(const std::string& path) {
 // symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is refused as it would be from the
 // surface's defaults, not sized to.
+// `deadline`: when the choice stops measuring more sheets (a share of --time).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const std::string& targetName) {
+                   const std::string& output, const std::string& targetName,
+                   const Deadline& deadline) {
   const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -77,7 +79,14 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     } catch (const InvalidTarget& e) {
       throw UsageError(targetName + ": " + e.what());
     }
-    const StartChoice start = chooseStart(target, from.surface);
+    // A symmetry asked for is kept: only sheets that have it are sized or placed.
+    const bool symmetric = command->get_option("--symmetry")->count() > 0;
+    StartChoice start;
+    try {
+      start = chooseStart(target, from.surface, symmetric ? from.symmetry : "", deadline);
+    } catch (const InvalidSymmetry& e) {
+      throw UsageError("--symmetry " + session::symmetryProblem(e));
+    }
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -93,11 +102,17 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     std::cout << text
               << (start.placed    ? " (sized and placed on the target: " + start.placement + ")"
                   : start.creased ? std::string(" (its defaults: the target has creases)")
+                  : start.symmetryDefaults
+                      ? " (its defaults: no sheet sized to the target has " + from.symmetry + ")"
                   : start.parameters.empty()
                       ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
-    if (command->get_option("--symmetry")->count() > 0) {
+    if (start.cutShort)
+      std::cout << "the time limit cut the choice of the start short: the nearest of the sheets "
+                   "measured (a longer --time, or --evaluations alone, measures them all)"
+                << std::endl;
+    if (symmetric) {
       try {
         design.symmetry = parseSymmetry(from.symmetry, initialSheet(design, output)).name();
       } catch (const InvalidSymmetry& e) {
@@ -174,29 +189,65 @@ void addFitOptions(CLI::App* command, FitCommandOptions& options) {
       ->required();
 }
 
-// The log entry of the group of folds just committed (the fold and its images); `trianglesBefore`
-// is the count before it, and becomes the count after.
-FoldLogEntry logEntryOfLastGroup(const FoldSession& session, const FitProgress& step,
-                                 std::size_t& trianglesBefore) {
+// What one step of the fit made, in the words of `fold` (folds numbered in the design, from 1):
+// "fold 3", a symmetric design's "fold 3 and 5 images", a pleat's "pleat: folds 3 and 4", both
+// ends' "pleats at both ends: folds 3-6", rings' "rings: folds 3-28 (26 folds)". `first` (from 0)
+// and `count`: the step's folds in the session. Only a pleat groups folds in a design without
+// symmetry (pleat_folds.hpp); rings are plain folds (profile_folds.hpp), or in a symmetric
+// design each ring a fold and its images.
+std::string stepText(const FoldSession& session, std::size_t first, std::size_t count) {
   const std::vector<FoldRecord>& folds = session.folds();
-  std::size_t first = session.foldCount() - 1;
-  while (first > 0 && folds[first].group != 0 && folds[first - 1].group == folds[first].group)
-    --first;
+  const std::string from = std::to_string(first + 1), to = std::to_string(first + count);
+  if (count <= 1) return "fold " + from;
+  bool oneGroup = folds[first].group != 0;
+  for (std::size_t f = first + 1; f < first + count; ++f)
+    oneGroup = oneGroup && folds[f].group == folds[first].group;
+  if (session.symmetry() && oneGroup)
+    return "fold " + from + " and " + std::to_string(count - 1) +
+           (count == 2 ? " image" : " images");
+  if (oneGroup && count == 2) return "pleat: folds " + from + " and " + to;
+  if (oneGroup && count == 4) return "pleats at both ends: folds " + from + "-" + to;
+  if (oneGroup) return "pleats: folds " + from + "-" + to;
+  return std::string(session.symmetry() ? "rings of a fold and its images" : "rings") + ": folds " +
+         from + "-" + to + " (" + std::to_string(count) + " folds)";
+}
+
+// The log entry of the step just committed: `count` folds from `first` (from 0; a fold and its
+// images, a pleat or rings); `trianglesBefore` is the count before it, and becomes the count
+// after.
+FoldLogEntry logEntryOfStep(const FoldSession& session, const FitProgress& step, std::size_t first,
+                            std::size_t count, std::size_t& trianglesBefore) {
+  const std::vector<FoldRecord>& folds = session.folds();
   const Sheet& sheet = session.fixed();
   FoldLogEntry entry;
   entry.time = step.seconds;
   entry.fold = first + 1;
   entry.foldCount = session.foldCount();
-  entry.plane = folds[first].plane;
+  if (count > 0) entry.plane = folds[first].plane;
   entry.trianglesBefore = trianglesBefore;
   entry.trianglesAfter = trianglesBefore = sheet.triangleCount();
   entry.maxEdgeLengthError = maxEdgeLengthError(sheet);
   entry.selfIntersections = findSelfIntersections(sheet).intersections.size();
-  entry.images = session.foldCount() - first - 1;
+  // Images are a symmetric design's: a pleat's second fold or a ring's others are folds of
+  // their own (the log's "folds" counts them).
+  entry.images = session.symmetry() && count > 1 && folds[first].group != 0 &&
+                         folds[first + count - 1].group == folds[first].group
+                     ? count - 1
+                     : 0;
   entry.hausdorff = step.hausdorff;
   entry.chamfer = step.chamfer;
   entry.targetDiagonal = step.diagonal;
   return entry;
+}
+
+// "3 folds", or where steps made more folds than one each: "3 folds, 18 with images" (a
+// symmetric design) or "3 steps, 8 folds" (pleats, rings).
+std::string foldCountText(std::size_t steps, std::size_t folds, bool symmetric) {
+  if (folds <= steps) return std::to_string(steps) + (steps == 1 ? " fold" : " folds");
+  return symmetric ? std::to_string(steps) + (steps == 1 ? " fold, " : " folds, ") +
+                         std::to_string(folds) + " with images"
+                   : std::to_string(steps) + (steps == 1 ? " step, " : " steps, ") +
+                         std::to_string(folds) + " folds";
 }
 
 // What the finished fit says: why it stopped, what it wrote, and where a fit that does not reach
@@ -214,14 +265,13 @@ void printFitSummary(const FitCommandOptions& options, const FitResult& result,
   if (result.timedOut)
     std::cout << "the time limit cut the search short: another run may find other folds (give "
                  "--evaluations to repeat a fit exactly)\n";
+  const std::string count =
+      foldCountText(result.steps.size() - 1, design.folds.size(), !design.symmetry.empty());
   if (interrupted)
     std::cout << "interrupted: wrote the best design found so far to " << options.output << " ("
-              << result.steps.size() - 1 << " folds)\n";
-  std::cout << "wrote " << options.output << " (" << result.steps.size() - 1 << " folds"
-            << (design.folds.size() > result.steps.size() - 1
-                    ? ", " + std::to_string(design.folds.size()) + " with images"
-                    : "")
-            << "; " << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+              << count << ")\n";
+  std::cout << "wrote " << options.output << " (" << count << "; "
+            << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
   if (!options.log.empty()) std::cout << "wrote " << options.log << "\n";
   if (!options.png.empty()) std::cout << "wrote " << options.png << "\n";
   // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
@@ -295,7 +345,18 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                            {hasExtension(options.from.surface, ".obj") ? options.from.surface : "",
                             "the surface read (--from)"}});
   const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
-  Design design = startDesign(options.from, command, *fitter, options.output, options.target);
+  // --evaluations alone: no clock, so nothing depends on the machine's speed.
+  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
+  // The start's choice takes at most this share of --time (on a large target each sheet it
+  // measures costs a second or more), leaving the rest to the search.
+  constexpr double kStartShare = 0.25;
+  const Deadline startDeadline =
+      timed ? Deadline{}.notAfter(started +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(kStartShare * options.seconds)))
+            : Deadline{};
+  Design design =
+      startDesign(options.from, command, *fitter, options.output, options.target, startDeadline);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
@@ -307,10 +368,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
 
   std::vector<FoldLogEntry> log;
   std::size_t trianglesBefore = initial.triangleCount();
+  std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
   FitOptions fit;
   fit.maxFolds = options.folds;
-  // --evaluations alone: no clock, so nothing depends on the machine's speed.
-  const bool timed = command->count("--time") > 0 || options.evaluations == 0;
   fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
   fit.started = started;
   fit.maxEvaluations = options.evaluations;
@@ -321,14 +381,13 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                 << " of the target's " << step.diagonal << " m diagonal" << std::endl;
       return;
     }
-    const FoldLogEntry entry = logEntryOfLastGroup(session, step, trianglesBefore);
-    log.push_back(entry);
+    const std::size_t first = foldsBefore, count = session.foldCount() - foldsBefore;
+    foldsBefore = session.foldCount();
+    log.push_back(logEntryOfStep(session, step, first, count, trianglesBefore));
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
-    std::cout << "fold " << step.fold
-              << (entry.images ? " (+" + std::to_string(entry.images) + " images)" : "") << ", "
-              << seconds << ": " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
-              << std::endl;
+    std::cout << stepText(session, first, count) << ", " << seconds << ": "
+              << distanceText(step.hausdorff, step.chamfer, step.diagonal) << std::endl;
   };
   fit.searching = printSearching;
   // The outputs, checked before the search: a path that cannot be written fails now.

@@ -198,10 +198,26 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
              kNoisyCreaseShare;
 }
 
-StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
+StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
+                        const std::string& symmetry, const Deadline& deadline) {
   StartChoice best;
   bool any = false;
   std::string lastError;
+  // Whether a sheet has the symmetry asked for; text that is no symmetry is refused at once.
+  std::optional<InvalidSymmetry> lacked;
+  auto keeps = [&](const Sheet& sheet) {
+    if (symmetry.empty()) return true;
+    try {
+      parseSymmetry(symmetry, sheet);
+      return true;
+    } catch (const InvalidSymmetry& e) {
+      if (!e.surfaceLacksIt()) throw;
+      lacked = e;
+      return false;
+    }
+  };
+  bool sizedDropped = false;            // a sized or placed sheet lacked the symmetry
+  bool sizedKept = false;               // a sheet sized in the catalogue's frame had it
   std::map<std::string, bool> creased;  // per kind, at its defaults
   auto creasedKind = [&](const std::string& surface) {
     const auto found = creased.find(surface);
@@ -215,7 +231,11 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   };
   // A smooth target's grid bends are no creases, though a flat sheet's threshold reads them so.
   const bool smooth = isSmoothOrScanned(target);
+  bool cutShort = false;
+  // Once one sheet is measured, the rest only while the deadline allows.
+  auto outOfTime = [&] { return any && (cutShort = cutShort || deadline.passed()); };
   for (StartChoice& candidate : candidatesFor(target, kind)) {
+    if (outOfTime()) break;
     // A folded design was folded from the sheet as the catalogue makes it.
     if (!smooth && creasedKind(candidate.surface)) {
       candidate.parameters.clear();
@@ -223,6 +243,11 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
     }
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
+      if (!keeps(sheet)) {
+        sizedDropped = sizedDropped || !candidate.parameters.empty();
+        continue;
+      }
+      sizedKept = sizedKept || !candidate.parameters.empty();
       candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
     } catch (const SurfaceError& e) {
       lastError = e.what();
@@ -236,8 +261,14 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest;
   double nearestChamfer = 0.0, nearestScore = 0.0;
-  for (PlacedStart& placed :
-       smooth ? placedStarts(samples, surfaceArea(target), kind) : std::vector<PlacedStart>{}) {
+  for (PlacedStart& placed : smooth && !outOfTime()
+                                 ? placedStarts(samples, surfaceArea(target), kind)
+                                 : std::vector<PlacedStart>{}) {
+    if (outOfTime()) break;
+    if (!keeps(placed.sheet)) {
+      sizedDropped = true;
+      continue;
+    }
     // Among placed sheets, the farthest point counts too: of two as near on average, the one
     // that covers the whole target (a cone down to a bowl's bottom) folds to it better.
     const SurfaceDistance distance = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples);
@@ -259,18 +290,27 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind) {
   }
   // A tube toward a smooth target of revolution is as wide as its belly: the rings that fold
   // it toward the target only narrow it (ring_folds.hpp).
-  if (kind == "cylinder" && smooth)
-    if (const std::optional<RevolutionAxis> axis = revolutionAxis(samples))
-      if (std::optional<PlacedStart> tube = widestCylinder(samples, axis->point, axis->direction)) {
-        best.surface = tube->surface;
-        best.parameters = tube->parameters;
-        best.chamfer = surfaceDistance(meshOf(tube->sheet), target, kChoiceSamples).chamfer;
-        best.placement = tube->placement;
-        best.creased = false;
-        best.placed = std::move(tube->sheet);
-        any = true;
-      }
+  if (kind == "cylinder" && smooth && !outOfTime()) {
+    const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+    std::optional<PlacedStart> tube =
+        axis ? widestCylinder(samples, axis->point, axis->direction) : std::nullopt;
+    if (tube && keeps(tube->sheet)) {
+      best.surface = tube->surface;
+      best.parameters = tube->parameters;
+      best.chamfer = surfaceDistance(meshOf(tube->sheet), target, kChoiceSamples).chamfer;
+      best.placement = tube->placement;
+      best.creased = false;
+      best.placed = std::move(tube->sheet);
+      any = true;
+    } else if (tube) {
+      sizedDropped = true;
+    }
+  }
+  // Every sheet of the kind lacks the symmetry, its defaults too: the surface does not have it.
+  if (!any && lacked) throw *lacked;
   if (!any) throw SurfaceError(lastError);
+  best.cutShort = cutShort;
+  best.symmetryDefaults = sizedDropped && !sizedKept && best.parameters.empty() && !best.placed;
   return best;
 }
 

@@ -29,6 +29,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -46,11 +47,22 @@ struct StartChoice {
   // The target has creases this kind's sheet would not have (a fold's): the kind keeps its
   // defaults. Unset where the defaults were simply nearest.
   bool creased = false;
+  // A symmetry was asked for and every sheet sized or placed to the target lacked it: the kind
+  // at its defaults (which has it) instead.
+  bool symmetryDefaults = false;
+  // The deadline passed before every candidate was measured: the nearest of those measured.
+  bool cutShort = false;
 };
 
-// `kind`: a catalogue surface name, or "" for any of the candidates above. Throws SurfaceError
-// when the named kind cannot be sized to the target.
-StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "");
+// `kind`: a catalogue surface name, or "" for any of the candidates above. `symmetry` (as
+// parseSymmetry reads it, "" none): only sheets that have it are candidates, so a design asking
+// for a mirror or a rotation keeps it (a sheet placed on the target's axes seldom has one; the
+// kind at its defaults is the last resort). Throws SurfaceError when the named kind cannot be
+// sized to the target, InvalidSymmetry when `symmetry` is no symmetry or no candidate has it.
+// Past `deadline` (a share of a fit's time) no further candidate is measured once one is: each
+// costs two distance measures, seconds on a target of 30,000 triangles (docs/performance.md).
+StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "",
+                        const std::string& symmetry = "", const Deadline& deadline = {});
 
 // Whether the target is a shape no reflection design reaches exactly: smooth (no plane of edges
 // bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
