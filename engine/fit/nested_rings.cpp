@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <nlopt.hpp>
 
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -27,6 +28,18 @@ constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
 constexpr std::array<int, 3> kOrders{8, 12, 16};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 constexpr double kPi = std::numbers::pi;
+// A step whose farthest point stands farther than this times the sheet's before it is not
+// offered: the fit keeps no step toward a smooth shape that does so (fold_fit.cpp's
+// kHausdorffSlack), and a better one by the search's mean distance would hide those it keeps (on
+// a steep cup, rings whose corner paper stands out past the rim).
+constexpr double kFarthestSlack = 1.1;
+constexpr std::size_t kFarthestSamples = 3000;
+
+// The farthest either of the sheet and the target lies from the other, among samples.
+double farthestApart(const Sheet& sheet, const TriangleMesh& target) {
+  const FarthestPoints far = farthestPoints(meshOf(sheet), target, kFarthestSamples, 7);
+  return std::max(far.fromA, far.fromB);
+}
 
 double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
   const glm::dvec2 ab = b - a;
@@ -397,7 +410,9 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
+  const double farthestBefore = farthestApart(sheet, fitter.target());
   std::vector<FoldSuggestion> made(candidates.size());
+  std::vector<double> farthest(candidates.size(), 0.0);
   tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
   tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t c) {
     if (deadline.passed()) return;
@@ -430,14 +445,16 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
       made[c].sheet = own->fixed();
       made[c].before = before;
       made[c].after = fitter.approximateDistance(made[c].sheet);
+      farthest[c] = farthestApart(made[c].sheet, fitter.target());
     }
     while (own->foldCount() > base.size()) own->undo();
   });
   if (deadline.givesUp()) return {};
   std::vector<FoldSuggestion> out;
-  for (FoldSuggestion& suggestion : made)
-    if (!suggestion.folds.empty() && suggestion.after < before)
-      out.push_back(std::move(suggestion));
+  for (std::size_t c = 0; c < made.size(); ++c)
+    if (!made[c].folds.empty() && made[c].after < before &&
+        farthest[c] <= kFarthestSlack * farthestBefore)
+      out.push_back(std::move(made[c]));
   std::stable_sort(out.begin(), out.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
   if (out.size() > count) out.resize(count);
