@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <nlopt.hpp>
 
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -27,6 +28,18 @@ constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
 constexpr std::array<int, 3> kOrders{8, 12, 16};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 constexpr double kPi = std::numbers::pi;
+// A step whose farthest point stands farther than this times the sheet's before it is not
+// offered: the fit keeps no step toward a smooth shape that does so (fold_fit.cpp's
+// kHausdorffSlack), and a better one by the search's mean distance would hide those it keeps (on
+// a steep cup, rings whose corner paper stands out past the rim).
+constexpr double kFarthestSlack = 1.1;
+constexpr std::size_t kFarthestSamples = 3000;
+
+// The farthest either of the sheet and the target lies from the other, among samples.
+double farthestApart(const Sheet& sheet, const TriangleMesh& target) {
+  const FarthestPoints far = farthestPoints(meshOf(sheet), target, kFarthestSamples, 7);
+  return std::max(far.fromA, far.fromB);
+}
 
 double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
   const glm::dvec2 ab = b - a;
@@ -194,8 +207,31 @@ ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double s
   return best;
 }
 
+bool outermostFirstHolds(const ProfileCreases& creases, double sheetRadius) {
+  const std::vector<NestedRing> rings = nestedRingShapes(creases, 3, 0.0, sheetRadius, true);
+  // The centre line's points, at height 0 (the shift moves them all alike).
+  std::vector<double> arcs;
+  std::vector<glm::dvec2> line;
+  for (std::size_t i = 0; i <= kPolylinePoints; ++i) {
+    arcs.push_back(sheetRadius * static_cast<double>(i) / kPolylinePoints);
+    line.push_back({arcs.back(), 0.0});
+  }
+  for (const NestedRing& ring : rings) {
+    if (ring.shape.order == 1) continue;
+    const glm::dvec2 normal(std::cos(ring.shape.tilt), std::sin(ring.shape.tilt));
+    const glm::dvec2 at(ring.shape.radius, 0.0);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (!(arcs[i] > ring.shape.radius)) continue;
+      const double side = glm::dot(normal, line[i] - at);
+      if (side < -1e-9 * sheetRadius) return false;
+      line[i] -= 2.0 * side * normal;
+    }
+  }
+  return true;
+}
+
 std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int order, double turn,
-                                         double sheetRadius) {
+                                         double sheetRadius, bool outerFirst) {
   std::vector<NestedRing> rings;
   // The sheet lies at height 0; a plane across the axis halfway to the shift moves it there,
   // folding the side its normal points to (the sheet's).
@@ -207,24 +243,36 @@ std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int orde
     rings.push_back(across);
   }
   const std::vector<glm::dvec2> polyline = profilePolyline(creases, sheetRadius);
+  std::vector<NestedRing> nested;
   double before = 0.0;
   for (std::size_t i = 0; i < creases.arcs.size(); ++i) {
     const double after = creases.angles[i];
-    const glm::dvec2 from(std::cos(before), std::sin(before));
-    const glm::dvec2 normal = from - glm::dvec2(std::cos(after), std::sin(after));
+    // Inner first, each crease turns the flap where the rings before it left it: from `before`
+    // to `after`. Outer first, each is drawn on the flat sheet, turned by the same angle with the
+    // sign each later (inner) ring's reflection flips: the i-th crease's flap is reflected by
+    // the i - 1 rings inside it.
+    const double flat = (i % 2 == 0 ? 1.0 : -1.0) * (after - before);
+    const glm::dvec2 from =
+        outerFirst ? glm::dvec2(1.0, 0.0) : glm::dvec2(std::cos(before), std::sin(before));
+    const glm::dvec2 to = outerFirst ? glm::dvec2(std::cos(flat), std::sin(flat))
+                                     : glm::dvec2(std::cos(after), std::sin(after));
+    const glm::dvec2 normal = from - to;
     before = after;
     // A crease that turns nothing, or one at the centre, makes no ring.
     if (!(glm::length(normal) > 1e-3) || !(polyline[i + 1].x > 1e-6 * sheetRadius)) continue;
+    const double arc = std::min(creases.arcs[i], sheetRadius);
     NestedRing ring;
-    ring.shape.height = polyline[i + 1].y;
-    ring.shape.radius = polyline[i + 1].x;
+    ring.shape.height = outerFirst ? creases.shift : polyline[i + 1].y;
+    ring.shape.radius = outerFirst ? arc : polyline[i + 1].x;
     ring.shape.tilt = std::atan2(normal.y, normal.x);
     ring.shape.turn = turn;
     ring.shape.order = order;
     // Before this ring the sheet beyond the crease runs straight on to the rim.
-    ring.flap = 0.5 * (sheetRadius - std::min(creases.arcs[i], sheetRadius)) * from;
-    rings.push_back(ring);
+    ring.flap = 0.5 * (sheetRadius - arc) * from;
+    nested.push_back(ring);
   }
+  if (outerFirst) std::reverse(nested.begin(), nested.end());
+  rings.insert(rings.end(), nested.begin(), nested.end());
   return rings;
 }
 
@@ -291,6 +339,7 @@ std::optional<FlatSheet> flatSheetAcross(const Sheet& sheet, const glm::dvec3& d
 struct Candidate {
   ProfileCreases creases;
   int order = 8;
+  bool outerFirst = false;
 };
 
 }  // namespace
@@ -346,7 +395,12 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   if (deadline.givesUp()) return {};
   std::vector<Candidate> candidates;
   for (const ProfileCreases& fit : fits)
-    for (int order : orders) candidates.push_back({fit, order});
+    for (int order : orders) candidates.push_back({fit, order, false});
+  // With two creases or more, the same rings outermost first (each on the flat sheet, see the
+  // header), after every inner-first candidate so the inner-first ones keep their order.
+  for (const ProfileCreases& fit : fits)
+    if (fit.arcs.size() >= 2 && outermostFirstHolds(fit, radius))
+      for (int order : orders) candidates.push_back({fit, order, true});
   const double turn = unit(random) * 2.0 * kPi;
 
   const std::vector<FoldRecord> base(
@@ -356,7 +410,9 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
+  const double farthestBefore = farthestApart(sheet, fitter.target());
   std::vector<FoldSuggestion> made(candidates.size());
+  std::vector<double> farthest(candidates.size(), 0.0);
   tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
   tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t c) {
     if (deadline.passed()) return;
@@ -372,12 +428,14 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     // planes can take the corner paper of the flaps beside their own) is taken back, and the
     // rings before it kept.
     for (const NestedRing& ring :
-         nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius)) {
+         nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius,
+                          candidate.outerFirst)) {
       const std::size_t foldsBefore = own->foldCount();
       if (makeNestedRing(*own, ring.shape, local, ring.flap) == 0) continue;
       if (!allowCrossing &&
           findSelfIntersections(own->fixed()).intersections.size() > crossingsBefore) {
         while (own->foldCount() > foldsBefore) own->undo();
+        if (candidate.outerFirst) continue;
         break;
       }
     }
@@ -387,14 +445,16 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
       made[c].sheet = own->fixed();
       made[c].before = before;
       made[c].after = fitter.approximateDistance(made[c].sheet);
+      farthest[c] = farthestApart(made[c].sheet, fitter.target());
     }
     while (own->foldCount() > base.size()) own->undo();
   });
   if (deadline.givesUp()) return {};
   std::vector<FoldSuggestion> out;
-  for (FoldSuggestion& suggestion : made)
-    if (!suggestion.folds.empty() && suggestion.after < before)
-      out.push_back(std::move(suggestion));
+  for (std::size_t c = 0; c < made.size(); ++c)
+    if (!made[c].folds.empty() && made[c].after < before &&
+        farthest[c] <= kFarthestSlack * farthestBefore)
+      out.push_back(std::move(made[c]));
   std::stable_sort(out.begin(), out.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
   if (out.size() > count) out.resize(count);

@@ -30,7 +30,10 @@
 // plane and is connected to its seed, so the corners fold with one flap and stand out (the
 // Hausdorff distance shows them), and on a steep profile a second ring's planes take the corner
 // paper of the flaps beside their own and cross it: such a ring is taken back and the rings
-// before it kept; the model is exact only along each flap's centre line; the
+// before it kept. Fits with two creases or more are also made outermost first, each ring on the
+// flat sheet (nestedRingShapes' outerFirst), where outermostFirstHolds: no ring meets corner
+// paper an inner one left, so a lip turning back out is made (a ring drawn so that crosses is
+// taken back alone). The model is exact only along each flap's centre line; the
 // sheet's centre is taken to lie on the axis (the sheet's own centroid is used as the axis point).
 #pragma once
 
@@ -74,8 +77,17 @@ struct NestedRing {
   RingShape shape;
   glm::dvec2 flap{0.0};
 };
+// `outerFirst`: the rings outermost first, each drawn on the flat sheet (at the crease's distance
+// s_i from the centre, turned by the crease's turn with the sign flipped once for each ring inside
+// it: a reflection reverses a turn), so no ring's planes meet the corner paper an inner ring left.
 std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int order, double turn,
-                                         double sheetRadius);
+                                         double sheetRadius, bool outerFirst = false);
+
+// Whether the rings drawn outermost first fold the sheet's centre line into `creases`' polyline:
+// each inner ring's fold takes what lies beyond its plane, and the flap beyond it, turned the
+// other way by the rings outside, can reach back across that plane (a lip turning down more than
+// half the turn inside it), where the fold would cut it.
+bool outermostFirstHolds(const ProfileCreases& creases, double sheetRadius);
 
 // Whether `sheet` lies flat across `axis` (the nested rings' start, below).
 bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis);
