@@ -1369,17 +1369,8 @@ class FitRun {
       falls = falls && measured.steps[g].chamfer <
                            (g > 0 ? measured.steps[g - 1] : result_.steps.front()).chamfer;
     if (!reaches && !falls) {
-      // Toward a target folded by reflections (creases, not a smooth shape) the best may pass
-      // farther on its way (folds of the whole sheet, a flap read before the search's) and still
-      // end much closer than any sequence whose every fold gains: the one that ends closer wins.
-      Measured monotone = measure(bestMonotone_, true);
-      auto ends = [&](const Measured& m) {
-        return m.keep > 0 ? m.steps[m.keep - 1].hausdorff : result_.steps.front().hausdorff;
-      };
-      if (fitter_.smoothTarget() || ends(monotone) <= ends(measured)) {
-        chosen = &bestMonotone_;
-        measured = std::move(monotone);
-      }
+      chosen = &bestMonotone_;
+      measured = measure(bestMonotone_, true);
     }
     if (measured.keep < measured.steps.size())
       result_.stopReason = "the next fold found brings the sheet closer by less than " +
