@@ -63,11 +63,15 @@ int run(int argc, char** argv) {
   const std::vector<Isometry> images = design.symmetry.empty()
                                            ? std::vector<Isometry>{}
                                            : parseSymmetry(design.symmetry, initial).images();
+  const auto unfoldingStarted = std::chrono::steady_clock::now();
   const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, 12, {}, images);
+  const double unfoldingSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - unfoldingStarted).count();
   const TriangleMesh unfolded{plan.unfolded, target.triangles};
-  std::printf("unfolding: %zu folds, sharp left %.4f (%.2f%%), off sheet Hausdorff %.3f%%\n",
-              plan.folds.size(), plan.sharpLengthLeft, 100 * plan.sharpLengthLeft / size,
-              100 * surfaceDistance(unfolded, sheet, 5000).relativeHausdorff());
+  std::printf(
+      "unfolding (%.2f s): %zu folds, sharp left %.4f (%.2f%%), off sheet Hausdorff %.3f%%\n",
+      unfoldingSeconds, plan.folds.size(), plan.sharpLengthLeft, 100 * plan.sharpLengthLeft / size,
+      100 * surfaceDistance(unfolded, sheet, 5000).relativeHausdorff());
   for (const UnfoldedFold& u : plan.folds) {
     int fold = -1;
     for (std::size_t f = 0; f < design.folds.size(); ++f)
@@ -77,8 +81,13 @@ int run(int argc, char** argv) {
                 u.wholeImage ? " (its image moved the whole sheet)" : "");
   }
   if (plan.sharpLengthLeft < 0.01 * size) {
+    const auto registering = std::chrono::steady_clock::now();
     const std::optional<RigidMotion> motion = registerSheetOnto(sheet, unfolded, 1e-4 * size);
-    std::printf("rigid copy of the sheet: %s", motion ? "yes" : "no");
+    std::printf(
+        "rigid copy of the sheet (%.2f s): %s",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - registering).count(),
+        motion ? "yes" : "no");
+    std::fflush(stdout);
     if (motion) {
       for (int r = 0; r < 3; ++r)
         std::printf("\n  [%.6f %.6f %.6f | %.6f]", motion->linear[0][r], motion->linear[1][r],
