@@ -52,6 +52,8 @@ constexpr int kFamilyHinges[] = {3, 4, 5, 6, 8};
 constexpr double kFamilyLast[] = {0.85, 0.7};
 constexpr std::size_t kFamiliesTried = 4;
 constexpr double kFamilyShares[] = {0.9, 0.65};
+// Samples of the exact distance a family's farthest point is measured with.
+constexpr std::size_t kFarthestSamples = 3000;
 
 std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
   std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
@@ -409,7 +411,11 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   };
   // Folds through `planes`, each grabbing the sheet at `seed`, made, scored, kept among the best
   // when they bring the sheet closer (as one group), and taken back.
-  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds) {
+  // `farthestWithin`: kept only where the sheet's farthest point (two-sided, exact) stays within
+  // this (a family, whose pleats fold away paper its model does not see, may lay the sheet nearer
+  // on the whole and leave an end short of the target's).
+  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds,
+                      double farthestWithin = kNone) {
     deadline.countEvaluation();
     for (const auto& [plane, seed] : folds) {
       const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[seed]);
@@ -421,7 +427,10 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     }
     const double after = fitter.approximateDistance(session.fixed());
     const bool keeps = after < before && (out.size() < count || after < out.back().after);
-    if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore) {
+    if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore &&
+        (farthestWithin == kNone ||
+         surfaceDistance(meshOf(session.fixed()), fitter.target(), kFarthestSamples).hausdorff <=
+             farthestWithin)) {
       FoldSuggestion pleat;
       pleat.folds.assign(
           session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
@@ -496,6 +505,7 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   // Families first, toward a saddle (no axis: a vase or a bowl gets rings) from a curved sheet:
   // each end's pleats made from the middle out, each pleat's planes (solved on the sheet as it
   // was) moved with its end by the pleats made before it there.
+  double farthestBefore = kNone;  // measured once, for the first family made
   auto tryFamily = [&](const PleatFamily& family, double share) {
     Folds folds;
     Motion moved;
@@ -511,7 +521,9 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
       folds.emplace_back(second, made[1].second);
       moved = reflectedAfter(second, reflectedAfter(first, moved));
     }
-    return folds.size() > 4 ? tryFolds(folds) : kNone;
+    if (farthestBefore == kNone)
+      farthestBefore = surfaceDistance(meshOf(sheet), fitter.target(), kFarthestSamples).hausdorff;
+    return folds.size() > 4 ? tryFolds(folds, farthestBefore) : kNone;
   };
   if (!flat && !fitter.revolutionTarget())
     for (const PleatFamily& family : solveFamilies(
