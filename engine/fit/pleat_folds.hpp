@@ -34,11 +34,13 @@
 // where a saddle's ends fall steeply) as a paper artist lays parallel pleats; each pleat's planes,
 // solved on the sheet as it was, moved with its end by the pleats made before it there; the best
 // family of each count (3 to 8 hinges) made at 0.9 and 0.65 of its turns (each pleat folds away
-// paper the model leaves out). Repeated step by step, the pleats approximate the target's second
-// curvature piecewise. Only where no solved pleat helps, the blind way of before: hinges on the way
-// from the sheet's centre toward its vertices farthest from the target, bends on a grid. Each pleat
-// is made on the real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
-// FoldFitter::approximateDistance, checked for self-intersection, and taken back.
+// paper the model leaves out), kept only where the sheet's exact farthest point does not move away
+// (that paper can leave an end short of the target's). Repeated step by step, the pleats
+// approximate the target's second curvature piecewise. Only where no solved pleat helps, the blind
+// way of before: hinges on the way from the sheet's centre toward its vertices farthest from the
+// target, bends on a grid. Each pleat is made on the real sheet (FoldSession: a sliver is refused
+// as a designer's drag is), scored with FoldFitter::approximateDistance, checked for
+// self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
 // would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each
