@@ -11,6 +11,8 @@
 #include <Eigen/Dense>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -44,6 +46,14 @@ constexpr double kMostSolvedTurn = 35.0 * kDegree, kLeastSolvedTurn = 1.0 * kDeg
 constexpr std::size_t kSolvedTried = 4;
 constexpr double kSolvedShares[] = {1.0, 0.7};
 constexpr std::size_t kSolvedPairs = 2;
+// Families of pleats: hinges along a line, the farthest hinge's place (of the way from the centre
+// to the end), the families made (the best by the model) and the shares of their turns tried.
+constexpr int kFamilyHinges[] = {3, 4, 5, 6, 8};
+constexpr double kFamilyLast[] = {0.85, 0.7};
+constexpr std::size_t kFamiliesTried = 4;
+constexpr double kFamilyShares[] = {0.9, 0.65};
+// Samples of the exact distance a family's farthest point is measured with.
+constexpr std::size_t kFarthestSamples = 3000;
 
 std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
   std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
@@ -71,19 +81,52 @@ struct SolvedPleat {
 // normal) fitted by a turn about the hinge, r = turn * (s - at) (least squares: a pleat turns
 // the end rigidly, so the height it adds grows with the distance from the hinge); the gain is
 // the squared height that turn removes. The best hinge of each direction, best first.
-std::vector<SolvedPleat> solvePleats(const std::vector<glm::dvec3>& points,
-                                     const std::vector<double>& distances,
-                                     const SurfaceDistanceQuery& query, const glm::dvec3& centre,
-                                     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
-                                     double width) {
-  auto column = [&](int i) {
-    const Eigen::Vector3d v = axes.eigenvectors().col(i);
-    return glm::dvec3(v.x(), v.y(), v.z());
-  };
-  const glm::dvec3 up = column(0), e1 = column(2), e2 = column(1);
+glm::dvec3 axisOf(const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes, int i) {
+  const Eigen::Vector3d v = axes.eigenvectors().col(i);
+  return glm::dvec3(v.x(), v.y(), v.z());
+}
+
+// The target's height over each point along the sheet's normal `up` (0 where a point lies on it).
+std::vector<double> heightsOver(const std::vector<glm::dvec3>& points,
+                                const std::vector<double>& distances,
+                                const SurfaceDistanceQuery& query, const glm::dvec3& up) {
   std::vector<double> heights(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     heights[i] = distances[i] > 0.0 ? glm::dot(query.closestPoint(points[i]) - points[i], up) : 0.0;
+  return heights;
+}
+
+// The target's height over each point straight along `up` (the sheet's mean normal), as a
+// corrugation's turns are solved: each step moves along `up` to the plane tangent to the target
+// at the closest point (exact over a tilted plane, where the closest point lies sideways and its
+// height alone says too little: a saddle's steep ends). Where the closest point lies mostly
+// sideways (beyond the target's rim) the height of the closest point is kept.
+std::vector<double> heightsAlong(const std::vector<glm::dvec3>& points,
+                                 const SurfaceDistanceQuery& query, const glm::dvec3& up) {
+  std::vector<double> heights(points.size(), 0.0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    double h = 0.0;
+    for (int step = 0; step < 4; ++step) {
+      const glm::dvec3 q = points[i] + h * up, d = query.closestPoint(q) - q;
+      const double length = glm::length(d);
+      if (!(length > 1e-12)) break;
+      const double cosine = glm::dot(d, up) / length;
+      if (std::abs(cosine) < 0.4) {
+        if (step == 0) h = glm::dot(d, up);
+        break;
+      }
+      h += length / cosine;
+    }
+    heights[i] = h;
+  }
+  return heights;
+}
+
+std::vector<SolvedPleat> solvePleats(const std::vector<glm::dvec3>& points,
+                                     const std::vector<double>& heights, const glm::dvec3& centre,
+                                     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
+                                     double width) {
+  const glm::dvec3 up = axisOf(axes, 0), e1 = axisOf(axes, 2), e2 = axisOf(axes, 1);
   std::vector<SolvedPleat> best(2 * kDirections);
   for (int k = 0; k < 2 * kDirections; ++k) {
     const double angle = std::numbers::pi * k / kDirections;
@@ -137,6 +180,109 @@ std::vector<std::pair<SolvedPleat, SolvedPleat>> solvedPairs(const std::vector<S
   });
   if (pairs.size() > kSolvedPairs) pairs.resize(kSolvedPairs);
   return pairs;
+}
+
+// A family of pleats: hinges along one line through the sheet, the piece between two of them
+// (the anchor) kept where it is, each hinge turning all of the sheet beyond it (away from the
+// anchor) by its own turn (SolvedPleat: toward the line's positive end, or with the opposite
+// direction toward its negative one), ordered from the anchor out on each side.
+struct PleatFamily {
+  std::vector<SolvedPleat> pleats;
+  double gain = 0.0;
+};
+
+// Families solved from the target's heights as a corrugation is laid out: along each line through
+// the sheet's centre (kDirections over a half turn), for each count and spread of hinges (evenly
+// spaced along the line) and each piece between them kept in place, the height over the sheet
+// fitted in least squares by a sum of ramps, one per hinge, r(s) = turn_j * max(0, s - at_j) on
+// the anchor's positive side and turn_j * max(0, at_j - s) on its negative side (a pleat turns
+// all of the sheet beyond it rigidly). A paper artist's parallel pleats toward a hypar are these.
+// The anchor matters: a least-squares start lies between a saddle's high middle and its low ends,
+// so keeping the middle leaves it too high; keeping a piece where the target crosses the sheet
+// lets the pleats raise the middle and lower the ends. The best kFamiliesTried.
+std::vector<PleatFamily> solveFamilies(const std::vector<glm::dvec3>& points,
+                                       const std::vector<double>& heights, const glm::dvec3& centre,
+                                       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes,
+                                       double width) {
+  const glm::dvec3 up = axisOf(axes, 0), e1 = axisOf(axes, 2), e2 = axisOf(axes, 1);
+  std::vector<PleatFamily> families;
+  for (int k = 0; k < kDirections; ++k) {
+    const double angle = std::numbers::pi * k / kDirections;
+    const glm::dvec3 direction = std::cos(angle) * e1 + std::sin(angle) * e2;
+    std::vector<double> s(points.size());
+    double reachUp = 0.0, reachDown = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      s[i] = glm::dot(points[i] - centre, direction);
+      reachUp = std::max(reachUp, s[i]);
+      reachDown = std::max(reachDown, -s[i]);
+    }
+    for (const int hinges : kFamilyHinges)
+      for (const double last : kFamilyLast) {
+        std::vector<double> at(hinges);  // from the negative end to the positive one
+        for (int j = 0; j < hinges; ++j) {
+          const double fraction = -last + 2.0 * last * (j + 0.5) / hinges;
+          at[j] = fraction * (fraction < 0.0 ? reachDown : reachUp);
+        }
+        for (int anchor = 0; anchor <= hinges; ++anchor) {  // the piece after hinge anchor - 1
+          auto ramp = [&](std::size_t i, int j) {
+            return j >= anchor ? std::max(0.0, s[i] - at[j]) : std::max(0.0, at[j] - s[i]);
+          };
+          Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(hinges, hinges);
+          Eigen::VectorXd right = Eigen::VectorXd::Zero(hinges), row(hinges);
+          for (std::size_t i = 0; i < points.size(); ++i) {
+            for (int j = 0; j < hinges; ++j) row(j) = ramp(i, j);
+            normal.noalias() += row * row.transpose();
+            right += heights[i] * row;
+          }
+          normal.diagonal().array() += 1e-9 * (normal.trace() + 1e-30);
+          Eigen::VectorXd turn = normal.ldlt().solve(right);
+          for (int j = 0; j < hinges; ++j) {
+            turn(j) = std::clamp(turn(j), -kMostSolvedTurn, kMostSolvedTurn);
+            if (!(std::abs(turn(j)) >= kLeastSolvedTurn)) turn(j) = 0.0;  // too small to pleat
+          }
+          PleatFamily family;
+          family.gain = 2.0 * turn.dot(right) - turn.dot(normal * turn);
+          if (!(family.gain > 0.0)) continue;
+          for (int j = anchor; j < hinges; ++j)  // the positive side, from the anchor out
+            if (turn(j) != 0.0 && at[j] + 4.0 * width < reachUp)
+              family.pleats.push_back({direction, up, at[j], turn(j), 0.0});
+          for (int j = anchor - 1; j >= 0; --j)  // the negative side
+            if (turn(j) != 0.0 && -at[j] + 4.0 * width < reachDown)
+              family.pleats.push_back({-direction, up, -at[j], turn(j), 0.0});
+          if (family.pleats.size() > 2) families.push_back(std::move(family));
+        }
+      }
+  }
+  // The best of each count of pleats, best first: the model leaves out the length each pleat folds
+  // away (twice its width, more where the sheet rises across the hinge), so more pleats are not
+  // always closer; the sheet says which is.
+  std::stable_sort(families.begin(), families.end(),
+                   [](const auto& a, const auto& b) { return a.gain > b.gain; });
+  std::vector<PleatFamily> best;
+  for (PleatFamily& family : families)
+    if (best.size() < kFamiliesTried &&
+        std::none_of(best.begin(), best.end(), [&](const PleatFamily& other) {
+          return other.pleats.size() == family.pleats.size();
+        }))
+      best.push_back(std::move(family));
+  return best;
+}
+
+// A rigid motion, x -> linear * x + shift: where the pleats made so far on an end have moved it.
+struct Motion {
+  glm::dmat3 linear{1.0};
+  glm::dvec3 shift{0.0};
+  glm::dvec3 operator()(const glm::dvec3& x) const { return linear * x + shift; }
+  ReflectionPlane operator()(const ReflectionPlane& plane) const {
+    return {(*this)(plane.point), glm::normalize(linear * plane.normal)};
+  }
+};
+
+// The reflection in `plane`, then `before`.
+Motion reflectedAfter(const ReflectionPlane& plane, const Motion& before) {
+  const glm::dvec3 n = plane.normal;
+  const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
+  return {mirror * before.linear, mirror * before.shift + 2.0 * glm::dot(plane.point, n) * n};
 }
 
 }  // namespace
@@ -265,7 +411,11 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   };
   // Folds through `planes`, each grabbing the sheet at `seed`, made, scored, kept among the best
   // when they bring the sheet closer (as one group), and taken back.
-  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds) {
+  // `farthestWithin`: kept only where the sheet's farthest point (two-sided, exact) stays within
+  // this (a family, whose pleats fold away paper its model does not see, may lay the sheet nearer
+  // on the whole and leave an end short of the target's).
+  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds,
+                      double farthestWithin = kNone) {
     deadline.countEvaluation();
     for (const auto& [plane, seed] : folds) {
       const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[seed]);
@@ -277,7 +427,10 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     }
     const double after = fitter.approximateDistance(session.fixed());
     const bool keeps = after < before && (out.size() < count || after < out.back().after);
-    if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore) {
+    if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore &&
+        (farthestWithin == kNone ||
+         surfaceDistance(meshOf(session.fixed()), fitter.target(), kFarthestSamples).hausdorff <=
+             farthestWithin)) {
       FoldSuggestion pleat;
       pleat.folds.assign(
           session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
@@ -314,12 +467,20 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
 
   // Pleats placed from the target (a corrugation solved, not searched): each turns the end
   // beyond its hinge by the least-squares slope of the target's height over the sheet there.
-  auto solvedFolds = [&](const SolvedPleat& solved) {
+  // `sheetFrame`: the turn about the hinge's line across the sheet's normal where the hinge lies
+  // (else about the line across the sheet's mean normal, as the heights were solved: on a
+  // trough, a hinge on its flank turns the end sideways about the flank's own normal).
+  auto solvedFolds = [&](const SolvedPleat& solved, bool sheetFrame = true) {
     std::optional<Hinge> hinge =
         hingeAt(centre + solved.at * solved.direction, solved.direction, 1.0);
     if (!hinge) return Folds{};
-    const glm::dvec3 m = hinge->bend;
-    hinge->bend = glm::dot(m, solved.up) * solved.turn >= 0.0 ? m : -m;
+    if (!sheetFrame) {
+      hinge->along = solved.direction;
+      hinge->bend = solved.turn >= 0.0 ? solved.up : -solved.up;
+    } else {
+      const glm::dvec3 m = hinge->bend;
+      hinge->bend = glm::dot(m, solved.up) * solved.turn >= 0.0 ? m : -m;
+    }
     return pleatAt(*hinge, std::abs(solved.turn) / kDegree);
   };
   auto trySolved = [&](const SolvedPleat& solved) {
@@ -335,12 +496,42 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     folds.insert(folds.end(), other.begin(), other.end());
     return tryFolds(folds);
   };
-  const std::vector<SolvedPleat> solved =
-      solvePleats(points, distances, query, centre, solver, width);
+  const std::vector<double> heights = heightsOver(points, distances, query, axisOf(solver, 0));
+  const std::vector<SolvedPleat> solved = solvePleats(points, heights, centre, solver, width);
   // Pairs first: toward a saddle one step turns both ends of a curved sheet. Not on a flat one
   // (a square): there a pair wins the first step and leaves no step after it, where a single
   // fold first would (example saddle from the square: 3.01% Chamfer against 1.80%).
   const bool flat = solver.eigenvalues()(0) < 1e-4 * solver.eigenvalues()(2);
+  // Families first, toward a saddle (no axis: a vase or a bowl gets rings) from a curved sheet:
+  // each end's pleats made from the middle out, each pleat's planes (solved on the sheet as it
+  // was) moved with its end by the pleats made before it there.
+  double farthestBefore = kNone;  // measured once, for the first family made
+  auto tryFamily = [&](const PleatFamily& family, double share) {
+    Folds folds;
+    Motion moved;
+    glm::dvec3 end(0.0);
+    for (SolvedPleat pleat : family.pleats) {
+      if (pleat.direction != end) moved = Motion{};  // the other end: the middle has not moved
+      end = pleat.direction;
+      pleat.turn *= share;
+      const Folds made = solvedFolds(pleat, false);
+      if (made.size() != 2) continue;
+      const ReflectionPlane first = moved(made[0].first), second = moved(made[1].first);
+      folds.emplace_back(first, made[0].second);
+      folds.emplace_back(second, made[1].second);
+      moved = reflectedAfter(second, reflectedAfter(first, moved));
+    }
+    if (farthestBefore == kNone)
+      farthestBefore = surfaceDistance(meshOf(sheet), fitter.target(), kFarthestSamples).hausdorff;
+    return folds.size() > 4 ? tryFolds(folds, farthestBefore) : kNone;
+  };
+  if (!flat && !fitter.revolutionTarget())
+    for (const PleatFamily& family : solveFamilies(
+             points, heightsAlong(points, query, axisOf(solver, 0)), centre, solver, width))
+      for (const double share : kFamilyShares) {
+        if (deadline.passed()) return out;
+        tryFamily(family, share);
+      }
   for (const auto& [a, b] :
        flat ? decltype(solvedPairs(solved, 0.0)){} : solvedPairs(solved, 4.0 * width))
     for (const double share : kSolvedShares) {

@@ -26,22 +26,32 @@
 // opposite) are also pleated as one step of four folds, each end's hinge and turn solved as above
 // (their ends do not overlap, so the gains add): a saddle falls (or rises) on both sides of its
 // middle, and one end's pleat alone leaves the other as far, costing the search a step and the
-// clock its time. Repeated step by step, the pleats approximate the target's second curvature
-// piecewise. Only where no solved pleat helps, the blind way of before: hinges on the way from the
-// sheet's centre toward its vertices farthest from the target, bends on a grid. Each pleat is made
-// on the real sheet (FoldSession: a sliver is refused as a designer's drag is), scored with
-// FoldFitter::approximateDistance, checked for self-intersection, and taken back.
+// clock its time. Before them, from a curved sheet toward a target with no axis (a saddle), a
+// family: several hinges evenly spaced along one line through the sheet, the piece between two
+// of them kept in place and each hinge turning all of the sheet beyond it, the turns solved
+// together in least squares from the target's height straight over the sheet (along its mean
+// normal, stepped to the target's tangent plane: the closest point's height alone says too little
+// where a saddle's ends fall steeply) as a paper artist lays parallel pleats; each pleat's planes,
+// solved on the sheet as it was, moved with its end by the pleats made before it there; the best
+// family of each count (3 to 8 hinges) made at 0.9 and 0.65 of its turns (each pleat folds away
+// paper the model leaves out), kept only where the sheet's exact farthest point does not move away
+// (that paper can leave an end short of the target's). Repeated step by step, the pleats
+// approximate the target's second curvature piecewise. Only where no solved pleat helps, the blind
+// way of before: hinges on the way from the sheet's centre toward its vertices farthest from the
+// target, bends on a grid. Each pleat is made on the real sheet (FoldSession: a sliver is refused
+// as a designer's drag is), scored with FoldFitter::approximateDistance, checked for
+// self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
 // would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each
-// a FoldSuggestion of two folds (four for both ends' pair, one group), best first, each bringing
-// the sheet closer. Known limits: the
-// hinge is straight only where the sheet is ruled across it (a swept sheet across its rulings,
-// a flat one); each pleat shortens the sheet by twice its width (0.3% of the target's diagonal,
-// more where the sheet rises across the hinge), and turning a curved end about a straight hinge
-// shears it (its high points move in, its low ones out), which costs Hausdorff distance at the
-// ends; parallel pleats give one direction's curvature, not a twist (a hypar z = xy is fitted along
-// its principal directions, not its rulings).
+// a FoldSuggestion of two folds (four for both ends' pair, more for a family, one group), best
+// first, each bringing the sheet closer. Known limits: the hinge is straight only where the sheet
+// is ruled across it (a swept sheet across its rulings, a flat one); each pleat shortens the sheet
+// by twice its width (0.3% of the target's diagonal, more where the sheet rises across the hinge: a
+// family of n pleats shortens it n times that, which its model does not see), and turning a curved
+// end about a straight hinge shears it (its high points move in, its low ones out), which costs
+// Hausdorff distance at the ends; parallel pleats give one direction's curvature, not a twist (a
+// hypar z = xy is fitted along its principal directions, not its rulings).
 #pragma once
 
 #include <cstddef>
