@@ -208,7 +208,8 @@ double ringCutRadius(double q, int order) {
 
 std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
                                  const std::vector<SurfaceSample>& targetSamples,
-                                 const RevolutionAxis& axis, double turn) {
+                                 const RevolutionAxis& axis, double turn,
+                                 std::span<const int> orders) {
   std::vector<RingShape> rings;
   if (sheetSamples.empty() || targetSamples.empty()) return rings;
   double lo = 1e300, hi = -1e300;
@@ -262,7 +263,7 @@ std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
   double untouched = 0.0;
   for (const int b : used)
     untouched += targetCount[b] * std::abs(sheetRadius(b) - targetSum[b] / targetCount[b]);
-  for (const int order : {6, 8, 12, 16}) {
+  for (const int order : orders) {
     const double deepest = std::cos(std::numbers::pi / order);
     for (const int end : {used.front(), used.back()}) {
       const double tEnd = end == used.front() ? lo : hi, radiusEnd = sheetRadius(end);
