@@ -3,7 +3,7 @@
 //
 //   build/bench/fit_quality [--recipes a,b] [--buckets 1-2,3-4,5-8] [--per-bucket K]
 //                           [--seconds S] [--seed-offset K] [--shapes | --shapes-only]
-//                           [--shape-folds N]
+//                           [--shape-folds N] [--shape-evaluations E]
 //                           [--shape-file OBJ[:KIND]]... [--no-symmetry] [--any-start]
 //                           [--no-own-shapes] [--write-targets DIR]
 //
@@ -15,7 +15,10 @@
 // sequence reaches (--shapes): the distance after each fold, against a random search given the
 // same time (random drags of random samples, each kept when it brings the sheet closer).
 // --any-start: the benchmark's own shapes start from any kind (as `fit` without --from), not the
-// kind each names; --no-own-shapes: only the --shape-file shapes.
+// kind each names; --no-own-shapes: only the --shape-file shapes. --shape-evaluations E: each
+// shape's fit stops after E candidate folds scored (`fit --evaluations`: the same design on a
+// loaded machine as on an idle one, while --seconds is not reached); the random search then gets
+// the fit's own wall time.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -226,7 +229,7 @@ void reachableTable(const std::vector<std::string>& recipes, const std::vector<B
 
 int run(int argc, char** argv) {
   std::size_t perBucket = 4, shapeFolds = 16;
-  std::uint64_t seedOffset = 0;
+  std::uint64_t seedOffset = 0, shapeEvaluations = 0;
   std::vector<std::string> shapeFiles;
   std::vector<std::string> kinds;
   kinds.reserve(64);
@@ -274,6 +277,8 @@ int run(int argc, char** argv) {
       shapeFiles.push_back(next());
     else if (arg == "--shape-folds")
       shapeFolds = std::stoul(next());
+    else if (arg == "--shape-evaluations")
+      shapeEvaluations = std::stoull(next());
     else if (arg == "--shapes")
       shapes = true;
     else if (arg == "--shapes-only")
@@ -325,6 +330,7 @@ int run(int argc, char** argv) {
       FitOptions options;
       options.maxFolds = shapeFolds;
       options.seconds = seconds;
+      options.maxEvaluations = shapeEvaluations;
       const FitResult result = fitFolds(session, fitter, options);
       std::string trail;
       for (const FitProgress& step : result.steps) {

@@ -316,5 +316,62 @@ TEST(TubeRings, TheFitsFirstStepNarrowsTheWidestTubeTowardAVase) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
+// The tube rings' one step (ring_folds.hpp) from a coarse tube of radius `radius` and `length`
+// about z toward `target`: the distance before and after (4000 samples a side) of the best
+// chain, which must be valid and free of self-intersections.
+struct TubeStep {
+  SurfaceDistance before, after;
+};
+TubeStep tubeRingsStep(const TriangleMesh& target, double radius, double length) {
+  Sheet tube = makeSurface(
+      "cylinder",
+      {{"radius", radius}, {"height", length}, {"resolution", testing::kSanitized ? 16.0 : 24.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 1500;
+  settings.denseTargetSamples = 4000;
+  const FoldFitter fitter(target, settings);
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(target, 1500, 11);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  TubeStep step;
+  step.before = step.after = surfaceDistance(meshOf(tube), target, 4000);
+  if (!axis) {
+    ADD_FAILURE() << "no axis";
+    return step;
+  }
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> rings =
+      suggestTubeRings(FoldSession(tube), fitter, *axis, targetSamples, 1,
+                       Deadline::in(std::numeric_limits<double>::infinity()), random);
+  if (rings.size() != 1) {
+    ADD_FAILURE() << rings.size() << " chains";
+    return step;
+  }
+  step.after = surfaceDistance(meshOf(rings.front().sheet), target, 4000);
+  validate(rings.front().sheet);
+  EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
+  return step;
+}
+
+// A bottle whose shoulder narrows to half its body, below what a ring of 6 reaches (0.83 of the
+// tube): rings of 4 and 5 cut deeper (with rings of 6 to 16 only, the step ends 1.7 times closer
+// by Chamfer; with them, 3.9 times), and corner rings fold in the creases a ring leaves on the
+// tube's radius, where the Hausdorff distance lies (without them it falls from 25 to 21 mm; with
+// them, to 15 mm).
+TEST(TubeRings, ANeckOfHalfTheTubeIsCutByCoarseRingsAndTheirCreasesFoldedIn) {
+  const TriangleMesh bottle = revolved(
+      [](double h) {
+        const double s = std::clamp((h + 0.02) / 0.1, 0.0, 1.0);  // the shoulder, smoothstep
+        return 0.05 - 0.025 * s * s * (3.0 - 2.0 * s);
+      },
+      -0.1, 0.1, 64, 40);
+  const TubeStep step = tubeRingsStep(bottle, 0.05, 0.2);
+  EXPECT_LT(step.after.chamfer, step.before.chamfer / 2.5)
+      << step.before.chamfer << " -> " << step.after.chamfer << " m";
+  EXPECT_LT(step.after.hausdorff, 0.7 * step.before.hausdorff)
+      << step.before.hausdorff << " -> " << step.after.hausdorff << " m";
+}
+
 }  // namespace
 }  // namespace curvefold

@@ -10,9 +10,9 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
-#include <nlopt.hpp>
 
 #include "engine/fit/farthest_points.hpp"
+#include "engine/fit/subplex.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -160,14 +160,9 @@ ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double s
 
   ProfileCreases best;
   best.score = 1e300;
-  struct Objective {
-    const std::vector<glm::dvec2>* target;
-    double radius;
-  };
   for (const ProfileCreases& from : starts) {
     std::vector<double> x = packed(from, sheetRadius);
     const std::size_t k = creaseCount;
-    nlopt::opt optimizer(nlopt::LN_SBPLX, static_cast<unsigned>(x.size()));
     std::vector<double> lower(x.size()), upper(x.size()), step(x.size());
     const double extent = std::max(high - low, 0.05 * sheetRadius);
     lower[0] = low - sheetRadius;
@@ -182,24 +177,14 @@ ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double s
       step[1 + k + i] = 0.15;
     }
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], lower[i], upper[i]);
-    optimizer.set_lower_bounds(lower);
-    optimizer.set_upper_bounds(upper);
-    optimizer.set_initial_step(step);
-    optimizer.set_maxeval(kProfileEvaluations);
-    Objective objective{&target, sheetRadius};
-    optimizer.set_min_objective(
-        [](const std::vector<double>& y, std::vector<double>&, void* data) {
-          const auto& o = *static_cast<Objective*>(data);
-          return profileDistance(profilePolyline(unpacked(y, o.radius), o.radius), *o.target,
-                                 o.radius);
+    const SubplexBounds bounds{lower, upper};
+    minimizeSubplex(
+        x, step, kProfileEvaluations,
+        [&](const std::vector<double>& y) {
+          return profileDistance(profilePolyline(unpacked(y, sheetRadius), sheetRadius), target,
+                                 sheetRadius);
         },
-        &objective);
-    double value = 1e300;
-    try {
-      optimizer.optimize(x, value);
-    } catch (const nlopt::roundoff_limited&) {
-    } catch (const std::runtime_error&) {
-    }
+        nullptr, &bounds);
     ProfileCreases fitted = unpacked(x, sheetRadius);
     fitted.score = profileDistance(profilePolyline(fitted, sheetRadius), target, sheetRadius);
     if (fitted.score < best.score) best = fitted;

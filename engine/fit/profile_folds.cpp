@@ -8,11 +8,11 @@
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
 #include <memory>
-#include <nlopt.hpp>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/fit/subplex.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 
@@ -208,7 +208,8 @@ double ringCutRadius(double q, int order) {
 
 std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
                                  const std::vector<SurfaceSample>& targetSamples,
-                                 const RevolutionAxis& axis, double turn) {
+                                 const RevolutionAxis& axis, double turn,
+                                 std::span<const int> orders) {
   std::vector<RingShape> rings;
   if (sheetSamples.empty() || targetSamples.empty()) return rings;
   double lo = 1e300, hi = -1e300;
@@ -262,7 +263,7 @@ std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
   double untouched = 0.0;
   for (const int b : used)
     untouched += targetCount[b] * std::abs(sheetRadius(b) - targetSum[b] / targetCount[b]);
-  for (const int order : {6, 8, 12, 16}) {
+  for (const int order : orders) {
     const double deepest = std::cos(std::numbers::pi / order);
     for (const int end : {used.front(), used.back()}) {
       const double tEnd = end == used.front() ? lo : hi, radiusEnd = sheetRadius(end);
@@ -405,48 +406,29 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
     RingShape& best = refined[k];
     double bestScore = preview(best);
     const bool across = best.order == 1;
-    struct Objective {
-      RingShape* best;
-      double* bestScore;
-      const decltype(preview)* score;
-      const Deadline* deadline;
-      nlopt::opt* optimizer;
-      bool across;
-    };
-    nlopt::opt optimizer(nlopt::LN_SBPLX, across ? 1 : 4);
-    Objective objective{&best, &bestScore, &preview, &deadline, &optimizer, across};
-    optimizer.set_min_objective(
-        [](const std::vector<double>& x, std::vector<double>&, void* data) {
-          auto& o = *static_cast<Objective*>(data);
-          if (o.deadline->passed()) o.optimizer->force_stop();
-          RingShape shape = *o.best;
-          shape.height = x[0];
-          if (!o.across) {
-            shape.radius = x[1];
-            shape.tilt = x[2];
-            shape.turn = x[3];
-          }
-          const double score = (*o.score)(shape);
-          if (score < *o.bestScore) {
-            *o.bestScore = score;
-            *o.best = shape;
-          }
-          return std::isfinite(score) ? score : 1e30;
-        },
-        &objective);
     std::vector<double> x{best.height}, step{0.02 * size};
     if (!across) {
       x.insert(x.end(), {best.radius, best.tilt, best.turn});
       step.insert(step.end(), {0.05 * size, 0.1, 0.5 * std::numbers::pi / best.order});
     }
-    optimizer.set_initial_step(step);
-    optimizer.set_maxeval(static_cast<int>(kRingRefineEvaluations));
-    double value = 0.0;
-    try {
-      optimizer.optimize(x, value);
-    } catch (const nlopt::forced_stop&) {
-    } catch (const nlopt::roundoff_limited&) {
-    }
+    minimizeSubplex(
+        x, step, static_cast<int>(kRingRefineEvaluations),
+        [&](const std::vector<double>& y) {
+          RingShape shape = best;
+          shape.height = y[0];
+          if (!across) {
+            shape.radius = y[1];
+            shape.tilt = y[2];
+            shape.turn = y[3];
+          }
+          const double score = preview(shape);
+          if (score < bestScore) {
+            bestScore = score;
+            best = shape;
+          }
+          return score;
+        },
+        &deadline);
   });
   if (deadline.givesUp()) return {};
   refined.insert(refined.end(), solved.begin(), solved.end());

@@ -60,6 +60,7 @@
 #include <cstddef>
 #include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -109,11 +110,15 @@ std::vector<RingShape> ringProposals(const std::vector<SurfaceSample>& sheetSamp
 // planes parallel to its axis at q R from it (q in [cos(pi / order), 1]; clamped there).
 double ringCutRadius(double q, int order);
 
-// Rings solved on the radius profile (neckRings above): for each order of 6, 8, 12 and 16, up
-// to three rings (a whole neck, each side of a waist), turned by `turn`.
+// Rings solved on the radius profile (neckRings above): for each of `orders` (at least 3), one
+// ring from each end of the sheet, turned by `turn`. Fewer planes cut deeper (a ring of n narrows
+// a tube to ringCutRadius(cos(pi / n), n): 0.65 R for 4, 0.76 R for 5, 0.83 R for 6, 0.97 R for
+// 16) and leave a coarser star.
+inline constexpr int kNeckRingOrders[] = {6, 8, 12, 16};
 std::vector<RingShape> neckRings(const std::vector<SurfaceSample>& sheetSamples,
                                  const std::vector<SurfaceSample>& targetSamples,
-                                 const RevolutionAxis& axis, double turn = 0.0);
+                                 const RevolutionAxis& axis, double turn = 0.0,
+                                 std::span<const int> orders = kNeckRingOrders);
 
 // Sheet samples (points and unit normals) as a ring leaves them, approximately: each point on
 // the side a plane's normal points to reflected, plane after plane (which parts connect is not
