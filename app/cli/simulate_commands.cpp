@@ -142,6 +142,18 @@ double largestMagnitude(const std::vector<double>& values) {
   return largest;
 }
 
+// The mean magnitude of a per-edge value over the crease hinges (0 when there is none).
+double meanCreaseMagnitude(const BarHingeModel& model, const std::vector<double>& edgeValues) {
+  double sum = 0.0;
+  std::size_t creases = 0;
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j]) {
+      sum += std::abs(edgeValues[model.hingeEdge[j]]);
+      ++creases;
+    }
+  return creases ? sum / static_cast<double>(creases) : 0.0;
+}
+
 // What --color paints on the sheet.
 enum class StateColor { None, Strain, AngleError };
 
@@ -420,12 +432,15 @@ void addSimulateCommand(CLI::App& app) {
         stepDynamic(model, amount, state, options->steps);
         solved = std::to_string(options->steps) + " dynamic steps";
       }
-      char line[200];
-      std::snprintf(
-          line, sizeof line,
-          "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees\n", percents[i],
-          solved.c_str(), largestMagnitude(edgeStrain(model, state.positions)),
-          largestMagnitude(creaseAngleError(model, state.positions, amount, state.hingeAngles)));
+      const std::vector<double> angleError =
+          creaseAngleError(model, state.positions, amount, state.hingeAngles);
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "
+                    "(mean %.2f)\n",
+                    percents[i], solved.c_str(),
+                    largestMagnitude(edgeStrain(model, state.positions)),
+                    largestMagnitude(angleError), meanCreaseMagnitude(model, angleError));
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);

@@ -48,6 +48,12 @@ struct StaticOptions {
   // hand folds them: the facets follow the creases' branch.
   double foldingFacetScale = 1.0 / 200.0;
   std::size_t maxSoftStageIterations = 30;  // each such stage stops there if not converged
+  // Paper mode: the folding stages run with the bars at most this many times as stiff as the
+  // creases (median k L^2 against the median crease hinge), then stiffening stages multiply them
+  // by barStiffening until the model's own (0: off). Each such stage stops at
+  // maxSoftStageIterations.
+  double softBarRatio = 100.0;
+  double barStiffening = 100.0;
 };
 
 struct StaticIteration {
