@@ -244,7 +244,7 @@ void addSimulateCommand(CLI::App& app) {
       "simulate",
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
-    std::string input, percent, obj, fold, gltf, png, frames, color, gif;
+    std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
     bool settle = false, gpu = false, motion = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
@@ -273,6 +273,10 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* paper = command->add_option(
       "--paper", options->paperMm,
       "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
+  CLI::Option* stiffness = command->add_option(
+      "--stiffness", options->stiffness,
+      "Design mode's stiffnesses: `curvefold` (default: stiff bars and facets, soft creases) or "
+      "`origami-simulator` (Origami Simulator's: axial 20, crease 0.7, facet 0.7)");
   command->add_option("--modulus", options->modulusGpa,
                       "With --paper: the paper's Young's modulus in GPa (default 4)");
   command->add_option(
@@ -308,7 +312,7 @@ void addSimulateCommand(CLI::App& app) {
       "", "value");
   for (CLI::Option* option : command->get_options())
     if (option->get_expected_min() > 0) option->check(notAnOption);
-  command->callback([options, paper, obj, fold, gltf, png, frames, colorOption, gif] {
+  command->callback([options, paper, stiffness, obj, fold, gltf, png, frames, colorOption, gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =
         colorOption->count() ? parseStateColor(options->color) : StateColor::None;
@@ -327,6 +331,17 @@ void addSimulateCommand(CLI::App& app) {
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
+    if (stiffness->count()) {
+      if (options->stiffness == "origami-simulator")
+        modelOptions = simulatorModelOptions();
+      else if (options->stiffness != "curvefold")
+        throw UsageError("--stiffness: expected curvefold or origami-simulator, got " +
+                         quotedExcerpt(options->stiffness));
+      if (paper->count())
+        throw UsageError(
+            "--stiffness: sets design mode's stiffnesses; --paper takes paper's, "
+            "name one");
+    }
     if (paper->count()) {
       if (!(options->paperMm > 0.0 && options->paperMm <= 10.0))
         throw UsageError("--paper: the thickness must be above 0 and at most 10 mm");
