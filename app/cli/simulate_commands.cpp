@@ -142,6 +142,18 @@ double largestMagnitude(const std::vector<double>& values) {
   return largest;
 }
 
+// The mean magnitude of a per-edge value over the crease hinges (0 when there is none).
+double meanCreaseMagnitude(const BarHingeModel& model, const std::vector<double>& edgeValues) {
+  double sum = 0.0;
+  std::size_t creases = 0;
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j]) {
+      sum += std::abs(edgeValues[model.hingeEdge[j]]);
+      ++creases;
+    }
+  return creases ? sum / static_cast<double>(creases) : 0.0;
+}
+
 // What --color paints on the sheet.
 enum class StateColor { None, Strain, AngleError };
 
@@ -232,7 +244,7 @@ void addSimulateCommand(CLI::App& app) {
       "simulate",
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
-    std::string input, percent, obj, fold, gltf, png, frames, color, gif;
+    std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
     bool settle = false, gpu = false, motion = false;
     double paperMm = 0.0, modulusGpa = 4.0;
     std::size_t steps = 2000;
@@ -261,6 +273,10 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* paper = command->add_option(
       "--paper", options->paperMm,
       "Paper mode: only creases are driven and the sheet bends as paper THICKNESS mm thick");
+  CLI::Option* stiffness = command->add_option(
+      "--stiffness", options->stiffness,
+      "Design mode's stiffnesses: `curvefold` (default: stiff bars and facets, soft creases) or "
+      "`origami-simulator` (Origami Simulator's: axial 20, crease 0.7, facet 0.7)");
   command->add_option("--modulus", options->modulusGpa,
                       "With --paper: the paper's Young's modulus in GPa (default 4)");
   command->add_option(
@@ -296,7 +312,7 @@ void addSimulateCommand(CLI::App& app) {
       "", "value");
   for (CLI::Option* option : command->get_options())
     if (option->get_expected_min() > 0) option->check(notAnOption);
-  command->callback([options, paper, obj, fold, gltf, png, frames, colorOption, gif] {
+  command->callback([options, paper, stiffness, obj, fold, gltf, png, frames, colorOption, gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =
         colorOption->count() ? parseStateColor(options->color) : StateColor::None;
@@ -315,6 +331,17 @@ void addSimulateCommand(CLI::App& app) {
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
+    if (stiffness->count()) {
+      if (options->stiffness == "origami-simulator")
+        modelOptions = simulatorModelOptions();
+      else if (options->stiffness != "curvefold")
+        throw UsageError("--stiffness: expected curvefold or origami-simulator, got " +
+                         quotedExcerpt(options->stiffness));
+      if (paper->count())
+        throw UsageError(
+            "--stiffness: sets design mode's stiffnesses; --paper takes paper's, "
+            "name one");
+    }
     if (paper->count()) {
       if (!(options->paperMm > 0.0 && options->paperMm <= 10.0))
         throw UsageError("--paper: the thickness must be above 0 and at most 10 mm");
@@ -420,12 +447,15 @@ void addSimulateCommand(CLI::App& app) {
         stepDynamic(model, amount, state, options->steps);
         solved = std::to_string(options->steps) + " dynamic steps";
       }
-      char line[200];
-      std::snprintf(
-          line, sizeof line,
-          "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees\n", percents[i],
-          solved.c_str(), largestMagnitude(edgeStrain(model, state.positions)),
-          largestMagnitude(creaseAngleError(model, state.positions, amount, state.hingeAngles)));
+      const std::vector<double> angleError =
+          creaseAngleError(model, state.positions, amount, state.hingeAngles);
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "
+                    "(mean %.2f)\n",
+                    percents[i], solved.c_str(),
+                    largestMagnitude(edgeStrain(model, state.positions)),
+                    largestMagnitude(angleError), meanCreaseMagnitude(model, angleError));
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);

@@ -493,7 +493,7 @@ ModelOptions simulatorModelOptions() {
   ModelOptions options;
   options.axialStiffness = 20.0;
   options.creaseStiffness = 0.7;
-  options.facetStiffness = 0.2;
+  options.facetStiffness = 0.7;
   return options;
 }
 

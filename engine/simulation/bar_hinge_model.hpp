@@ -77,10 +77,12 @@ struct ModelOptions {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> glue;  // vertex pairs pulled together
 };
 
-// Origami Simulator's published stiffnesses (Ghassaei et al. 2018; its defaults: axial 20,
-// crease 0.7, facet 0.2, with the damping ratio 0.45 of DynamicOptions): soft bars and facets
-// softer than creases, so curved creases bend the paper between them and a pattern folds at once
-// from flat; in design mode. The project's own defaults above keep faces rigid instead.
+// Origami Simulator's published stiffnesses (Ghassaei et al. 2018; js/globals.js and crease.js:
+// axialStiffness 20 / L, creaseStiffness 0.7 L, panelStiffness 0.7 L for facet hinges, with the
+// damping ratio 0.45 of DynamicOptions; its faceStiffness 0.2 holds each triangle's angles, a
+// constraint this model does not have, and was taken here for the facets before): soft bars and
+// facets as stiff as creases, so curved creases bend the paper between them and a pattern folds
+// at once from flat; in design mode. The project's own defaults above keep faces rigid instead.
 ModelOptions simulatorModelOptions();
 
 // The hinge of an interior edge: a -> b is the edge as its left triangle (a, b, c) runs it; the

@@ -156,6 +156,26 @@ double maxForce(const std::vector<glm::dvec3>& forces) {
   return largest;
 }
 
+// The factor that brings the bars' median stiffness (k L^2, per radian-equivalent) down to
+// softBarRatio times the creases' median hinge stiffness, or 1 when they are already no stiffer
+// than that, outside paper mode, or with the option off.
+double paperBarScale(const BarHingeModel& model, const StaticOptions& options) {
+  if (model.mode != SimulationMode::Paper || !(options.softBarRatio > 0.0)) return 1.0;
+  std::vector<double> bars, creases;
+  for (std::size_t i = 0; i < model.bars.size(); ++i)
+    bars.push_back(model.barStiffness[i] * model.barLength[i] * model.barLength[i]);
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j] && model.hingeStiffness[j] > 0.0)
+      creases.push_back(model.hingeStiffness[j]);
+  if (bars.empty() || creases.empty()) return 1.0;
+  const auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  const double bar = median(bars), crease = median(creases);
+  return std::min(1.0, options.softBarRatio * crease / bar);
+}
+
 }  // namespace
 
 double forceScale(const BarHingeModel& model) {
@@ -231,7 +251,24 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
         softFacets = true;
       }
   }
-  const std::size_t allStages = stages + (softFacets ? 1 : 0);
+  // Paper mode: bars far stiffer than the creases (paper is nearly inextensible) make the energy a
+  // narrow curved valley around the sheet's isometric motions, and Newton steps along straight
+  // lines in it crawl from the flat sheet (a curved pleat ended 160 degrees short after 400
+  // iterations). The folding stages run with the bars softened to softBarRatio times the creases
+  // (as Origami Simulator's stiffnesses are), then stiffening stages at the goal multiply them by
+  // barStiffening each until the model's own: each starts near its valley's floor.
+  std::vector<double> barScales;  // one per stage
+  const double softBars = paperBarScale(model, options);
+  if (softBars < 1.0 && options.barStiffening > 1.0) {
+    barScales.assign(stages, softBars);
+    for (double s = softBars * options.barStiffening; s < 1.0; s *= options.barStiffening)
+      barScales.push_back(s);
+    barScales.push_back(1.0);
+  }
+  BarHingeModel barModel;
+  if (!barScales.empty()) barModel = model;
+  const std::size_t allStages =
+      barScales.empty() ? stages + (softFacets ? 1 : 0) : barScales.size();
   result.stages = allStages;
 
   // Laid out and analysed once per call, and only when an iteration needs it (a predicted state
@@ -245,7 +282,11 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
 
   for (std::size_t stage = 1; stage <= allStages; ++stage) {
     const bool last = stage == allStages;
-    const BarHingeModel& m = softFacets && !last ? softModel : model;
+    if (!barScales.empty())
+      for (std::size_t i = 0; i < model.bars.size(); ++i)
+        barModel.barStiffness[i] = model.barStiffness[i] * barScales[stage - 1];
+    const BarHingeModel& m =
+        !barScales.empty() && !last ? barModel : (softFacets && !last ? softModel : model);
     const double t = std::min(1.0, static_cast<double>(stage) / static_cast<double>(stages));
     for (std::size_t j = 0; j < goal.size(); ++j)
       targets[j] = t == 1.0 ? goal[j] : start[j] + (goal[j] - start[j]) * t;
@@ -275,7 +316,8 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
       result.residual = residual;
       if (residual <= tolerance) break;
       // A soft stage only has to bring the sheet onto the creases' branch, not to equilibrium.
-      if (softFacets && !last && result.iterations - stageStart >= options.maxSoftStageIterations)
+      if ((softFacets || !barScales.empty()) && !last &&
+          result.iterations - stageStart >= options.maxSoftStageIterations)
         break;
       if (result.iterations >= options.maxIterations) {
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);

@@ -9,7 +9,9 @@
 // Large angle changes are reached by continuation: the hinge targets go from the state's angles
 // to the goal in stages of at most maxStageDegrees, each solved loosely, the last
 // to the tolerance; in design mode the stages run with the bent facets as soft as the creases
-// and one more stage at the goal restores them (StaticOptions::foldingFacetScale). Before all that,
+// and one more stage at the goal restores them (StaticOptions::foldingFacetScale); in paper mode
+// they run with the bars softened to a hundred times the creases and stiffening stages at the goal
+// restore paper's (StaticOptions::softBarRatio). Before all that,
 // a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
 // angles and starts from there if that is lower in energy than the state.
 //
@@ -48,6 +50,12 @@ struct StaticOptions {
   // hand folds them: the facets follow the creases' branch.
   double foldingFacetScale = 1.0 / 200.0;
   std::size_t maxSoftStageIterations = 30;  // each such stage stops there if not converged
+  // Paper mode: the folding stages run with the bars at most this many times as stiff as the
+  // creases (median k L^2 against the median crease hinge), then stiffening stages multiply them
+  // by barStiffening until the model's own (0: off). Each such stage stops at
+  // maxSoftStageIterations.
+  double softBarRatio = 100.0;
+  double barStiffening = 100.0;
 };
 
 struct StaticIteration {
