@@ -197,6 +197,12 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
   return maxForce(forces) / forceScale(model);
 }
 
+namespace {
+// The stages of settleToTargets (below), with the options as given.
+StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
+                            SimulationState& state, const StaticOptions& options);
+}  // namespace
+
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
                     const StaticOptions& options) {
   return settleToTargets(model, hingeTargets(model, foldAmount), state, options);
@@ -204,6 +210,30 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
 
 StaticResult settleToTargets(const BarHingeModel& model, const std::vector<double>& goal,
                              SimulationState& state, const StaticOptions& options) {
+  if (paperBarScale(model, options) == 1.0) return settleInStages(model, goal, state, options);
+  // Soft bars can let a triangle turn inside out on the way; stiffened again it cannot turn
+  // back, and the sheet ends strained far above where it began (one of Origami Simulator's
+  // examples, Crossing_curves: 33%). Then the settle is made again with the paper's own bars.
+  const SimulationState before = state;
+  const double startEnergy = modelEnergy(model, before.positions, goal,
+                                         before.hingeAngles.size() == model.hinges.size()
+                                             ? before.hingeAngles
+                                             : hingeAngles(model, before.positions));
+  StaticResult soft = settleInStages(model, goal, state, options);
+  if (std::isfinite(soft.energy) && soft.energy <= startEnergy) return soft;
+  state = before;
+  StaticOptions stiff = options;
+  stiff.softBarRatio = 0.0;
+  StaticResult result = settleInStages(model, goal, state, stiff);
+  result.iterations += soft.iterations;
+  result.softBarsUndone = true;
+  return result;
+}
+
+namespace {
+
+StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
+                            SimulationState& state, const StaticOptions& options) {
   StaticResult result;
   const std::size_t n = model.vertexCount();
   state.velocities.assign(n, glm::dvec3(0.0));
@@ -392,5 +422,7 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
   return result;
 }
+
+}  // namespace
 
 }  // namespace curvefold

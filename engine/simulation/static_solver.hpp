@@ -68,7 +68,10 @@ struct StaticResult {
   bool converged = false;
   std::size_t iterations = 0;
   std::size_t stages = 0;
-  bool predicted = false;                // started from the predictor (StaticOptions::predictor)
+  bool predicted = false;  // started from the predictor (StaticOptions::predictor)
+  // Paper mode: the soft-bar stages ended above the start's energy (a triangle turned inside
+  // out), so the settle was made again with the paper's own bars (iterations count both).
+  bool softBarsUndone = false;
   double energy = 0.0;                   // at the goal's targets
   double residual = 0.0;                 // at the end
   std::vector<StaticIteration> history;  // one entry per iteration, and one for each stage's start
