@@ -206,6 +206,12 @@ std::vector<Candidate> bestAndCrease(std::vector<Candidate> sorted, std::size_t 
 
 }  // namespace
 
+// A sheet's samples and the nearest dense target point of each (Target::score).
+struct KnownNearest {
+  std::vector<glm::dvec3> points;
+  std::vector<std::uint32_t> nearest;
+};
+
 struct FoldFitter::Target {
   TriangleMesh mesh;
   double diagonal = 0.0;
@@ -231,16 +237,26 @@ struct FoldFitter::Target {
   // pleat that turns an end over it scores as it measures (cut, a hypar's rim 5-10% of the
   // diagonal off the sheet cost little more than 1%, and no step toward it was kept).
   // Surfaces of revolution keep the cut: their rings and nested rings are tuned to it.
+  //
+  // known: the samples of the sheet before a fold and their nearest dense points; a sample the
+  // fold left exactly in place has the same nearest point, so it is not searched again (the
+  // score is the same, bit for bit). nearestOut: each sample's nearest dense point.
   double score(const PointCloud& points, const std::vector<glm::dvec3>& normals, double radius,
-               std::vector<double>* fromSheet = nullptr,
-               std::vector<double>* fromTarget = nullptr) const {
+               std::vector<double>* fromSheet = nullptr, std::vector<double>* fromTarget = nullptr,
+               const KnownNearest* known = nullptr,
+               std::vector<std::uint32_t>* nearestOut = nullptr) const {
     if (points.points.empty()) return kInfinity;
     auto cost = [&](double d) { return std::min(d, robust) + 0.1 * d; };
     auto targetCost = [&](double d) { return coverInFull ? d : cost(d); };
     double sheetSum = 0.0, targetSum = 0.0;
     if (fromSheet) fromSheet->resize(points.points.size());
+    if (nearestOut) nearestOut->resize(points.points.size());
+    const bool reuse = known && known->points.size() == points.points.size();
     for (std::size_t i = 0; i < points.points.size(); ++i) {
-      const std::uint32_t j = nearest(*tree, points.points[i]);
+      const std::uint32_t j = reuse && known->points[i] == points.points[i]
+                                  ? known->nearest[i]
+                                  : nearest(*tree, points.points[i]);
+      if (nearestOut) (*nearestOut)[i] = j;
       const double d = nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
       sheetSum += cost(d);
       if (fromSheet) (*fromSheet)[i] = d;
@@ -628,13 +644,14 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   if (copy.samples.empty() || deadline.givesUp()) return {};
 
   tbb::enumerable_thread_specific<Worker> workers;
+  KnownNearest unfolded;  // the copy's samples before any fold (filled below, before any drag)
   const DragFolding folding{copy, session.symmetricFolder().get(), session.minimumDrag(),
                             settings_.allowSelfIntersection};
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
   auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
     deadline.countEvaluation();
     if (!foldCopy(folding, worker, sample, drop)) return kInfinity;
-    return target.score(worker.cloud, worker.normals, copy.radius);
+    return target.score(worker.cloud, worker.normals, copy.radius, nullptr, nullptr, &unfolded);
   };
 
   // Where the sheet and the target are apart now.
@@ -643,7 +660,9 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   {
     PointCloud points;
     for (VertexIndex v : copy.samples) points.points.push_back(copy.sheet.positions[v]);
-    current = target.score(points, copy.normals, copy.radius, &fromSheet, &fromTarget);
+    current = target.score(points, copy.normals, copy.radius, &fromSheet, &fromTarget, nullptr,
+                           &unfolded.nearest);
+    unfolded.points = std::move(points.points);
   }
   const double floor = 2.0 * std::max(copy.radius, target.denseRadius);
   const std::vector<double> grabWeights = cumulativeOf(fromSheet, floor);
