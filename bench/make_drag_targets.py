@@ -31,6 +31,8 @@ import math
 import os
 import random
 
+from target_folds import fold_if_whole, write_target
+
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
 VARIANTS = ["outer", "centre", "remeshed"]
 
@@ -77,34 +79,10 @@ def make_one(cf, surface, variant, folds, rng):
         direction = uniform_direction(rng)
         length = rng.uniform(0.10, 0.35) * diag
         drop = [grab[i] + length * direction[i] for i in range(3)]
-        before = design.vertices
-        try:
-            result = design.fold(grab=grab, to=drop)
-        except ValueError:
-            continue
-        if not result.folded:
-            continue
-        after = design.vertices
-        moved = before.shape != after.shape or bool((abs(after[: len(before)] - before) > 1e-9).any())
-        if not moved or not design.check().passed:
-            design.undo()
+        if not fold_if_whole(design, grab, drop):
             continue
         made += 1
     return design if made == folds else None
-
-
-def write_exported(design, path):
-    """`export --obj` less its vt lines; faces keep only their vertex indices."""
-    tmp = path + ".full.obj"
-    design.export(obj=tmp)
-    with open(tmp) as f, open(path, "w") as out:
-        for line in f:
-            if line.startswith("vt "):
-                continue
-            if line.startswith("f "):
-                line = "f " + " ".join(p.split("/")[0] for p in line.split()[1:]) + "\n"
-            out.write(line)
-    os.remove(tmp)
 
 
 def write_remeshed(design, path, rng):
@@ -170,7 +148,7 @@ def main():
                         if variant == "remeshed":
                             write_remeshed(design, target, rng)
                         else:
-                            write_exported(design, target)
+                            write_target(design, target)
                         design.save(os.path.join(args.out, name + ".curvefold.json"))
                         entry = {"name": name, "recipe": recipe, "bucket": bucket,
                                  "surface": surface, "parameters": {}, "symmetry": None,

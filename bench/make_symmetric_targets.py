@@ -22,6 +22,8 @@ import math
 import os
 import random
 
+from target_folds import fold_if_whole, write_target
+
 SYMMETRIES = {
     "sym-mirror": {
         "square": ["mirror:x", "mirror:y"],
@@ -69,34 +71,10 @@ def make_one(cf, surface, symmetry, folds, rng):
         k = rng.choice(grabbable)
         grab = vertices[k]
         drop = [grab[i] - 2.0 * side[k] * normal[i] for i in range(3)]
-        before = design.vertices
-        try:
-            result = design.fold(grab=grab, to=drop)
-        except ValueError:
-            continue
-        if not result.folded:
-            continue
-        after = design.vertices
-        moved = before.shape != after.shape or bool((abs(after[: len(before)] - before) > 1e-9).any())
-        if not moved or not design.check().passed:
-            design.undo()
+        if not fold_if_whole(design, grab, drop):
             continue
         made += 1
     return design if made == folds else None
-
-
-def write_target(design, path):
-    """`export --obj` less its vt lines; faces keep only their vertex indices."""
-    tmp = path + ".full.obj"
-    design.export(obj=tmp)
-    with open(tmp) as f, open(path, "w") as out:
-        for line in f:
-            if line.startswith("vt "):
-                continue
-            if line.startswith("f "):
-                line = "f " + " ".join(p.split("/")[0] for p in line.split()[1:]) + "\n"
-            out.write(line)
-    os.remove(tmp)
 
 
 def main():

@@ -49,6 +49,8 @@ import subprocess
 import sys
 import time
 
+from target_folds import fold_if_whole, write_target
+
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
 RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric", "outer-third", "cuts", "short-long",
            "bases"]
@@ -225,36 +227,12 @@ def make_one(cf, recipe, surface, folds, rng):
             direction = unit_vector(rng)
             length = rng.uniform(lo, hi) * diag
             drop = [grab[i] + length * direction[i] for i in range(3)]
-        before = design.vertices
-        try:
-            result = design.fold(grab=grab, to=drop)
-        except ValueError:
-            continue
-        if not result.folded:
-            continue
-        after = design.vertices
-        moved = before.shape != after.shape or bool((abs(after[: len(before)] - before) > 1e-9).any())
-        if not moved or not design.check().passed:
-            design.undo()
+        if not fold_if_whole(design, grab, drop):
             continue
         made += 1
     if made < folds:
         return None
     return design, params, symmetry
-
-
-def write_target(design, path):
-    """`export --obj` less its vt lines; faces keep only their vertex indices."""
-    tmp = path + ".full.obj"
-    design.export(obj=tmp)
-    with open(tmp) as f, open(path, "w") as out:
-        for line in f:
-            if line.startswith("vt "):
-                continue
-            if line.startswith("f "):
-                line = "f " + " ".join(p.split("/")[0] for p in line.split()[1:]) + "\n"
-            out.write(line)
-    os.remove(tmp)
 
 
 def command_make(args):
