@@ -10,6 +10,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 #include <glm/gtx/exterior_product.hpp>
 #include <nanoflann.hpp>
@@ -65,6 +66,9 @@ constexpr double kReached = 0.01;
 // A pleat that brings the sheet this much closer (the search's distance) stands for the step
 // toward a smooth target that is no surface of revolution (FitRun::beamSearch).
 constexpr double kPleatEnough = 0.05;
+// Nearest-point queries of a score handed to one task (Target::score): a few tens of
+// microseconds of work, well above a task's cost.
+constexpr std::size_t kQueriesPerTask = 128;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -84,6 +88,38 @@ std::uint32_t nearest(const KdTree& tree, const glm::dvec3& p) {
   double squared = 0.0;
   tree.knnSearch(query, 1, &index, &squared);
   return index;
+}
+
+// A nearest-point search that starts from a guess: only what lies closer than the guess is
+// visited, and the guess comes back when nothing does. The result is the plain search's (up to
+// a tie of distances, to the last bit); a guess near the answer prunes most of the tree.
+struct CloserThanGuess {
+  double squared;
+  std::uint32_t index;
+  std::size_t size() const { return 1; }
+  bool full() const { return true; }
+  bool addPoint(double distance, std::uint32_t i) {
+    if (distance < squared) {
+      squared = distance;
+      index = i;
+    }
+    return true;
+  }
+  double worstDist() const { return squared; }
+};
+
+std::uint32_t nearestFrom(const KdTree& tree, const PointCloud& cloud, const glm::dvec3& p,
+                          std::uint32_t guess) {
+  const double query[3] = {p.x, p.y, p.z};
+  // As the tree measures (L2_Simple_Adaptor: squared differences summed in axis order).
+  double squared = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = query[axis] - cloud.points[guess][axis];
+    squared += d * d;
+  }
+  CloserThanGuess result{squared, guess};
+  tree.findNeighbors(result, query, nanoflann::SearchParams());
+  return result.index;
 }
 
 // Distance from p to a surface that holds sample s (unit normal n), its samples about `radius`
@@ -176,6 +212,14 @@ struct Drag {
   bool crease = false;
 };
 
+// Where a score found each nearest point, as guesses for the next score (Target::score): each
+// sheet sample's dense target point, each target query's sheet sample. The search's drags, a
+// refinement's above all, move the sheet little from one score to the next.
+struct NearestGuesses {
+  std::vector<std::uint32_t> onTarget;
+  std::vector<std::uint32_t> onSheet;
+};
+
 // One thread's scratch: the copy's folded form and the sheet samples' tree.
 struct Worker {
   bool ready = false;  // `out` and `watch` are set up on the evaluation copy
@@ -186,6 +230,7 @@ struct Worker {
   std::vector<TriangleIndex> reflected;
   PointCloud cloud;
   std::vector<glm::dvec3> normals;
+  NearestGuesses guesses;  // the last drag's nearest points (Target::score)
 };
 
 bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double size) {
@@ -240,35 +285,62 @@ struct FoldFitter::Target {
   //
   // known: the samples of the sheet before a fold and their nearest dense points; a sample the
   // fold left exactly in place has the same nearest point, so it is not searched again (the
-  // score is the same, bit for bit). nearestOut: each sample's nearest dense point.
+  // score is the same, bit for bit). guesses: where the last score found the nearest points,
+  // searched from (when of this score's sizes) and replaced by this score's (the same score).
   double score(const PointCloud& points, const std::vector<glm::dvec3>& normals, double radius,
                std::vector<double>* fromSheet = nullptr, std::vector<double>* fromTarget = nullptr,
-               const KnownNearest* known = nullptr,
-               std::vector<std::uint32_t>* nearestOut = nullptr) const {
+               const KnownNearest* known = nullptr, NearestGuesses* guesses = nullptr) const {
     if (points.points.empty()) return kInfinity;
     auto cost = [&](double d) { return std::min(d, robust) + 0.1 * d; };
     auto targetCost = [&](double d) { return coverInFull ? d : cost(d); };
+    const std::size_t n = points.points.size();
+    if (fromSheet) fromSheet->resize(n);
+    const bool reuse = known && known->points.size() == n;
+    const bool guessOnTarget = guesses && guesses->onTarget.size() == n;
+    const bool guessOnSheet = guesses && guesses->onSheet.size() == queries.size();
+    if (guesses) guesses->onTarget.resize(n);
+    if (guesses) guesses->onSheet.resize(queries.size());
+    // The nearest-point queries run on the idle cores (a suggestion refines fewer drags than
+    // there are cores); each cost lands in its slot and the sums run in index order after, so
+    // the score is the same bit for bit however the work was split. Isolated: a thread waiting
+    // here takes no other drag, whose scratch (Worker) it may share.
+    std::vector<double> costs(std::max(n, queries.size()));
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kQueriesPerTask), [&](const auto& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const std::uint32_t j =
+              reuse && known->points[i] == points.points[i] ? known->nearest[i]
+              : guessOnTarget ? nearestFrom(*tree, dense, points.points[i], guesses->onTarget[i])
+                              : nearest(*tree, points.points[i]);
+          if (guesses) guesses->onTarget[i] = j;
+          const double d =
+              nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
+          costs[i] = cost(d);
+          if (fromSheet) (*fromSheet)[i] = d;
+        }
+      });
+    });
     double sheetSum = 0.0, targetSum = 0.0;
-    if (fromSheet) fromSheet->resize(points.points.size());
-    if (nearestOut) nearestOut->resize(points.points.size());
-    const bool reuse = known && known->points.size() == points.points.size();
-    for (std::size_t i = 0; i < points.points.size(); ++i) {
-      const std::uint32_t j = reuse && known->points[i] == points.points[i]
-                                  ? known->nearest[i]
-                                  : nearest(*tree, points.points[i]);
-      if (nearestOut) (*nearestOut)[i] = j;
-      const double d = nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
-      sheetSum += cost(d);
-      if (fromSheet) (*fromSheet)[i] = d;
-    }
+    for (std::size_t i = 0; i < n; ++i) sheetSum += costs[i];
     const KdTree sheetTree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     if (fromTarget) fromTarget->resize(queries.size());
-    for (std::size_t k = 0; k < queries.size(); ++k) {
-      const std::uint32_t i = nearest(sheetTree, queries[k].position);
-      const double d = nearSurface(queries[k].position, points.points[i], normals[i], radius);
-      targetSum += targetCost(d);
-      if (fromTarget) (*fromTarget)[k] = d;
-    }
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, queries.size(), kQueriesPerTask), [&](const auto& r) {
+            for (std::size_t k = r.begin(); k != r.end(); ++k) {
+              const std::uint32_t i =
+                  guessOnSheet
+                      ? nearestFrom(sheetTree, points, queries[k].position, guesses->onSheet[k])
+                      : nearest(sheetTree, queries[k].position);
+              if (guesses) guesses->onSheet[k] = i;
+              const double d =
+                  nearSurface(queries[k].position, points.points[i], normals[i], radius);
+              costs[k] = targetCost(d);
+              if (fromTarget) (*fromTarget)[k] = d;
+            }
+          });
+    });
+    for (std::size_t k = 0; k < queries.size(); ++k) targetSum += costs[k];
     return 0.5 * (sheetSum / static_cast<double>(points.points.size()) +
                   targetSum / static_cast<double>(queries.size()));
   }
@@ -645,13 +717,16 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
 
   tbb::enumerable_thread_specific<Worker> workers;
   KnownNearest unfolded;  // the copy's samples before any fold (filled below, before any drag)
+  NearestGuesses unfoldedGuesses;  // the same score's: each worker's first guesses
   const DragFolding folding{copy, session.symmetricFolder().get(), session.minimumDrag(),
                             settings_.allowSelfIntersection};
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
   auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
     deadline.countEvaluation();
     if (!foldCopy(folding, worker, sample, drop)) return kInfinity;
-    return target.score(worker.cloud, worker.normals, copy.radius, nullptr, nullptr, &unfolded);
+    if (worker.guesses.onSheet.empty()) worker.guesses = unfoldedGuesses;
+    return target.score(worker.cloud, worker.normals, copy.radius, nullptr, nullptr, &unfolded,
+                        &worker.guesses);
   };
 
   // Where the sheet and the target are apart now.
@@ -661,8 +736,9 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     PointCloud points;
     for (VertexIndex v : copy.samples) points.points.push_back(copy.sheet.positions[v]);
     current = target.score(points, copy.normals, copy.radius, &fromSheet, &fromTarget, nullptr,
-                           &unfolded.nearest);
+                           &unfoldedGuesses);
     unfolded.points = std::move(points.points);
+    unfolded.nearest = unfoldedGuesses.onTarget;
   }
   const double floor = 2.0 * std::max(copy.radius, target.denseRadius);
   const std::vector<double> grabWeights = cumulativeOf(fromSheet, floor);
