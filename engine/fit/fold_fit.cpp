@@ -69,6 +69,14 @@ constexpr double kPleatEnough = 0.05;
 // Nearest-point queries of a score handed to one task (Target::score): a few tens of
 // microseconds of work, well above a task's cost.
 constexpr std::size_t kQueriesPerTask = 128;
+// A suggestion's drags are first scored on every kCoarseStride-th sample (FoldFitter::suggest);
+// the best kContendersPerFinalist times as many as are refined, with distinct planes and within
+// kCoarseSlack of the sheet's distance, are then scored in full.
+constexpr std::size_t kCoarseStride = 3;
+constexpr std::size_t kContendersPerFinalist = 4;
+constexpr double kCoarseSlack = 1.2;
+// Of a finalist's refinement (refineFinalists), the share in percent scored coarsely first.
+constexpr std::size_t kCoarseRefinement = 60;
 
 struct PointCloud {
   std::vector<glm::dvec3> points;
@@ -287,13 +295,19 @@ struct FoldFitter::Target {
   // fold left exactly in place has the same nearest point, so it is not searched again (the
   // score is the same, bit for bit). guesses: where the last score found the nearest points,
   // searched from (when of this score's sizes) and replaced by this score's (the same score).
+  // stride: every stride-th sample of each side only (a coarse score, for ranking many drags;
+  // the distances asked for are then left out).
   double score(const PointCloud& points, const std::vector<glm::dvec3>& normals, double radius,
                std::vector<double>* fromSheet = nullptr, std::vector<double>* fromTarget = nullptr,
-               const KnownNearest* known = nullptr, NearestGuesses* guesses = nullptr) const {
+               const KnownNearest* known = nullptr, NearestGuesses* guesses = nullptr,
+               std::size_t stride = 1) const {
     if (points.points.empty()) return kInfinity;
     auto cost = [&](double d) { return std::min(d, robust) + 0.1 * d; };
     auto targetCost = [&](double d) { return coverInFull ? d : cost(d); };
     const std::size_t n = points.points.size();
+    const std::size_t sheetCount = (n + stride - 1) / stride;
+    const std::size_t targetCount = (queries.size() + stride - 1) / stride;
+    if (stride != 1) fromSheet = fromTarget = nullptr;
     if (fromSheet) fromSheet->resize(n);
     const bool reuse = known && known->points.size() == n;
     const bool guessOnTarget = guesses && guesses->onTarget.size() == n;
@@ -304,30 +318,34 @@ struct FoldFitter::Target {
     // there are cores); each cost lands in its slot and the sums run in index order after, so
     // the score is the same bit for bit however the work was split. Isolated: a thread waiting
     // here takes no other drag, whose scratch (Worker) it may share.
-    std::vector<double> costs(std::max(n, queries.size()));
+    std::vector<double> costs(std::max(sheetCount, targetCount));
     tbb::this_task_arena::isolate([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kQueriesPerTask), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i != r.end(); ++i) {
-          const std::uint32_t j =
-              reuse && known->points[i] == points.points[i] ? known->nearest[i]
-              : guessOnTarget ? nearestFrom(*tree, dense, points.points[i], guesses->onTarget[i])
-                              : nearest(*tree, points.points[i]);
-          if (guesses) guesses->onTarget[i] = j;
-          const double d =
-              nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
-          costs[i] = cost(d);
-          if (fromSheet) (*fromSheet)[i] = d;
-        }
-      });
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, sheetCount, kQueriesPerTask), [&](const auto& r) {
+            for (std::size_t m = r.begin(); m != r.end(); ++m) {
+              const std::size_t i = m * stride;
+              const std::uint32_t j =
+                  reuse && known->points[i] == points.points[i] ? known->nearest[i]
+                  : guessOnTarget
+                      ? nearestFrom(*tree, dense, points.points[i], guesses->onTarget[i])
+                      : nearest(*tree, points.points[i]);
+              if (guesses) guesses->onTarget[i] = j;
+              const double d =
+                  nearSurface(points.points[i], dense.points[j], denseNormals[j], denseRadius);
+              costs[m] = cost(d);
+              if (fromSheet) (*fromSheet)[i] = d;
+            }
+          });
     });
     double sheetSum = 0.0, targetSum = 0.0;
-    for (std::size_t i = 0; i < n; ++i) sheetSum += costs[i];
+    for (std::size_t m = 0; m < sheetCount; ++m) sheetSum += costs[m];
     const KdTree sheetTree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     if (fromTarget) fromTarget->resize(queries.size());
     tbb::this_task_arena::isolate([&] {
       tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, queries.size(), kQueriesPerTask), [&](const auto& r) {
-            for (std::size_t k = r.begin(); k != r.end(); ++k) {
+          tbb::blocked_range<std::size_t>(0, targetCount, kQueriesPerTask), [&](const auto& r) {
+            for (std::size_t m = r.begin(); m != r.end(); ++m) {
+              const std::size_t k = m * stride;
               const std::uint32_t i =
                   guessOnSheet
                       ? nearestFrom(sheetTree, points, queries[k].position, guesses->onSheet[k])
@@ -335,14 +353,14 @@ struct FoldFitter::Target {
               if (guesses) guesses->onSheet[k] = i;
               const double d =
                   nearSurface(queries[k].position, points.points[i], normals[i], radius);
-              costs[k] = targetCost(d);
+              costs[m] = targetCost(d);
               if (fromTarget) (*fromTarget)[k] = d;
             }
           });
     });
-    for (std::size_t k = 0; k < queries.size(); ++k) targetSum += costs[k];
-    return 0.5 * (sheetSum / static_cast<double>(points.points.size()) +
-                  targetSum / static_cast<double>(queries.size()));
+    for (std::size_t m = 0; m < targetCount; ++m) targetSum += costs[m];
+    return 0.5 * (sheetSum / static_cast<double>(sheetCount) +
+                  targetSum / static_cast<double>(targetCount));
   }
 };
 
@@ -529,49 +547,60 @@ std::vector<Drag> chooseFinalists(const std::vector<Drag>& drags, std::size_t cr
 }
 
 // Each drag's drop point refined by NLopt's Subplex (crease-plane drags are exact already, and
-// left so), on all cores; the finalists come back best first.
+// left so), on all cores; the finalists come back best first. Coarse to fine: the first part of
+// the evaluations scores every kCoarseStride-th sample, the rest score them all from the best
+// drop the coarse part found (its scores are the full ones).
 template <typename Evaluate>
 void refineFinalists(std::vector<Drag>& finalists, tbb::enumerable_thread_specific<Worker>& workers,
                      const Evaluate& evaluate, const Deadline& deadline, const EvaluationCopy& copy,
                      std::size_t evaluations) {
+  const std::size_t coarse = evaluations * kCoarseRefinement / 100;
   tbb::parallel_for(std::size_t(0), finalists.size(), [&](std::size_t k) {
     Worker& worker = workers.local();
     Drag& best = finalists[k];
     if (best.crease) return;
     const glm::dvec3 grab = copy.sheet.positions[copy.samples[best.sample]];
+    const double initialStep = std::max(0.1 * glm::distance(grab, best.drop), 0.005 * copy.size);
     struct Objective {
       Drag* best;
       Worker* worker;
       const Deadline* deadline;
       const Evaluate* score;
       nlopt::opt* optimizer;
+      std::size_t stride;
     };
-    nlopt::opt optimizer(nlopt::LN_SBPLX, 3);
-    Objective objective{&best, &worker, &deadline, &evaluate, &optimizer};
-    optimizer.set_min_objective(
-        [](const std::vector<double>& x, std::vector<double>&, void* data) {
-          auto& o = *static_cast<Objective*>(data);
-          if (o.deadline->passed()) o.optimizer->force_stop();
-          const glm::dvec3 drop(x[0], x[1], x[2]);
-          const double score = (*o.score)(*o.worker, o.best->sample, drop);
-          if (score < o.best->score) {
-            o.best->score = score;
-            o.best->drop = drop;
-          }
-          return std::isfinite(score) ? score : 1e30;
-        },
-        &objective);
-    optimizer.set_initial_step(std::max(0.1 * glm::distance(grab, best.drop), 0.005 * copy.size));
-    optimizer.set_maxeval(static_cast<int>(evaluations));
-    optimizer.set_xtol_abs(1e-6 * copy.size);
-    std::vector<double> x{best.drop.x, best.drop.y, best.drop.z};
-    double value = 0.0;
-    try {
-      optimizer.optimize(x, value);
-    } catch (const nlopt::forced_stop&) {
-      // The deadline: the best drag seen is kept. Out of memory and the rest go on up.
-    } catch (const nlopt::roundoff_limited&) {
-      // As close as rounding lets it get: the best drag seen is kept.
+    for (const auto& [stride, stageEvaluations] :
+         {std::pair{kCoarseStride, coarse}, std::pair{std::size_t(1), evaluations - coarse}}) {
+      if (stageEvaluations == 0) continue;
+      // The scores of one stage compare with each other only.
+      best.score = kInfinity;
+      nlopt::opt optimizer(nlopt::LN_SBPLX, 3);
+      Objective objective{&best, &worker, &deadline, &evaluate, &optimizer, stride};
+      optimizer.set_min_objective(
+          [](const std::vector<double>& x, std::vector<double>&, void* data) {
+            auto& o = *static_cast<Objective*>(data);
+            if (o.deadline->passed()) o.optimizer->force_stop();
+            const glm::dvec3 drop(x[0], x[1], x[2]);
+            const double score = (*o.score)(*o.worker, o.best->sample, drop, o.stride);
+            if (score < o.best->score) {
+              o.best->score = score;
+              o.best->drop = drop;
+            }
+            return std::isfinite(score) ? score : 1e30;
+          },
+          &objective);
+      optimizer.set_initial_step(initialStep);
+      optimizer.set_maxeval(static_cast<int>(stageEvaluations));
+      optimizer.set_xtol_abs(1e-6 * copy.size);
+      std::vector<double> x{best.drop.x, best.drop.y, best.drop.z};
+      double value = 0.0;
+      try {
+        optimizer.optimize(x, value);
+      } catch (const nlopt::forced_stop&) {
+        // The deadline: the best drag seen is kept. Out of memory and the rest go on up.
+      } catch (const nlopt::roundoff_limited&) {
+        // As close as rounding lets it get: the best drag seen is kept.
+      }
     }
   });
   std::stable_sort(finalists.begin(), finalists.end(),
@@ -721,12 +750,13 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   const DragFolding folding{copy, session.symmetricFolder().get(), session.minimumDrag(),
                             settings_.allowSelfIntersection};
   // The copy folded by one drag, scored (infinity when the drag folds nothing).
-  auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop) {
+  auto evaluate = [&](Worker& worker, std::uint32_t sample, const glm::dvec3& drop,
+                      std::size_t stride = 1) {
     deadline.countEvaluation();
     if (!foldCopy(folding, worker, sample, drop)) return kInfinity;
     if (worker.guesses.onSheet.empty()) worker.guesses = unfoldedGuesses;
     return target.score(worker.cloud, worker.normals, copy.radius, nullptr, nullptr, &unfolded,
-                        &worker.guesses);
+                        &worker.guesses, stride);
   };
 
   // Where the sheet and the target are apart now.
@@ -772,17 +802,35 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     drags.push_back({sample, k % 2 ? target.dense.points[nearest(*target.tree, grab)]
                                    : target.queries[draw(dropWeights, random)].position});
   }
+  // Coarse to fine: every drag scored on a third of the samples, then the best few with distinct
+  // planes (several times as many as are refined, and a little above the sheet's distance) scored
+  // in full; the finalists are chosen on the full scores.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, drags.size(), 8), [&](const auto& range) {
     Worker& worker = workers.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i)
-      if (!deadline.passed()) drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop);
+      if (!deadline.passed())
+        drags[i].score = evaluate(worker, drags[i].sample, drags[i].drop, kCoarseStride);
   });
-
   if (deadline.givesUp()) return {};  // the scores are partial: nothing to choose from
+  const std::size_t creaseDrags = drags.size() - settings_.proposals;
+  std::vector<Drag> contenders = chooseFinalists(drags, creaseDrags, kCoarseSlack * current, copy,
+                                                 kContendersPerFinalist * settings_.refined);
+  std::stable_partition(contenders.begin(), contenders.end(),
+                        [](const Drag& d) { return d.crease; });
+  const auto contendingCreases = static_cast<std::size_t>(
+      std::count_if(contenders.begin(), contenders.end(), [](const Drag& d) { return d.crease; }));
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, contenders.size(), 1), [&](const auto& range) {
+        Worker& worker = workers.local();
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+          if (!deadline.passed())
+            contenders[i].score = evaluate(worker, contenders[i].sample, contenders[i].drop);
+      });
+  if (deadline.givesUp()) return {};
 
   // The best few with distinct planes, each refined, then made on the real sheet.
   std::vector<Drag> finalists =
-      chooseFinalists(drags, drags.size() - settings_.proposals, current, copy, settings_.refined);
+      chooseFinalists(contenders, contendingCreases, current, copy, settings_.refined);
   refineFinalists(finalists, workers, evaluate, deadline, copy, settings_.refineEvaluations);
   std::vector<FoldSuggestion> suggestions =
       makeSuggestions(session, finalists, copy, *this, deadline);
