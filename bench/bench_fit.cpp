@@ -41,8 +41,8 @@ void BM_SuggestFold(benchmark::State& state) {
 BENCHMARK(BM_SuggestFold)->Unit(benchmark::kMillisecond)->Iterations(1)->MeasureProcessCPUTime();
 
 // The suggestion's quality and cost toward targets unlike the bench's own (issue 38, 3): a
-// 3-fold cone and a 2-fold swept curve, 10k triangles each; after_over_before: the best suggestion's distance
-// (the search's) over the sheet's before it, lower is better.
+// 3-fold cone and a 2-fold swept curve, 10k triangles each; after_over_before: the best
+// suggestion's distance (the search's) over the sheet's before it, lower is better.
 void BM_SuggestFoldOn(benchmark::State& state) {
   static const RandomFoldTarget cone = makeRandomFoldTarget("cone", {{"resolution", 135}}, 3, 3000);
   static const RandomFoldTarget swept =
