@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "engine/fit/deadline.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
@@ -125,6 +126,10 @@ class FoldFitter {
   // The same for sheet samples given as points with unit normals, spaced about 2 * radius.
   double approximateDistance(const std::vector<glm::dvec3>& points,
                              const std::vector<glm::dvec3>& normals, double radius) const;
+  // What the search's samples say of a folded form, without the cut the score makes: each side's
+  // largest and mean distance, and their Hausdorff and Chamfer distances, as surfaceDistance
+  // measures them exactly (surface_distance.hpp).
+  SurfaceDistance approximateMeasure(const Sheet& sheet) const;
 
   // Up to `count` next folds for the design `session` holds (its symmetry, if any, makes each
   // fold's images), best first, each bringing it closer to the target; none when no fold found
@@ -196,7 +201,7 @@ struct FitOptions {
   // After the start, then after each fold kept, with the session holding it.
   std::function<void(const FitProgress&)> progress;
   // While searching, after the unfolding and after each depth of the beam: folds, the best
-  // approximate distance, seconds.
+  // sequence's Chamfer distance as the search's samples measure it (approximateMeasure), seconds.
   std::function<void(std::size_t, double, double)> searching;
 };
 
