@@ -1182,11 +1182,12 @@ class FitRun {
                          !findSelfIntersections(branch.fixed()).intersections.empty();
     if (sequence.groups.empty() || crosses) return false;
     sequence.score = fitter_.approximateDistance(branch.fixed());
-    if (options_.searching)
-      options_.searching(sequence.groups.size(), fitter_.approximateMeasure(branch.fixed()).chamfer,
-                         seconds());
     const bool better = sequence.score < best_.score;
     if (better) best_ = sequence;
+    // Said only when it is the best so far: the line says "best".
+    if (better && options_.searching)
+      options_.searching(sequence.groups.size(), fitter_.approximateMeasure(branch.fixed()).chamfer,
+                         seconds());
     return better && surfaceDistance(meshOf(branch.fixed()), fitter_.target(), measureSamples_)
                              .relativeHausdorff() <= kUnfoldedCloseEnough;
   }
