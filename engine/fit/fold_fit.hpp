@@ -96,7 +96,7 @@ struct FitSettings {
 struct FoldSuggestion {
   std::vector<FoldRecord> folds;  // the fold, then its symmetric images (one group)
   Sheet sheet;                    // the sheet with them
-  double before = 0.0;            // the search's distance (approximate) before and after, metres
+  double before = 0.0;            // the search's score before and after (approximateDistance)
   double after = 0.0;
   bool crease = false;  // through a plane of the target's creases
 };
@@ -121,7 +121,10 @@ class FoldFitter {
   // checkTargetAgainst with this target.
   void checkAgainst(const Sheet& sheet) const;
 
-  // The approximate Chamfer distance of a folded form to the target (what the search lowers).
+  // The search's score of a folded form (what it lowers): a robust Chamfer distance, whose
+  // distances count at a tenth past 1% of the target's diagonal (FitSettings::robustDistance;
+  // toward a smooth target with no axis, the target's side in full), so it is no distance to
+  // print (a sheet 25 mm off scores 4 mm): approximateMeasure gives that.
   double approximateDistance(const Sheet& sheet) const;
   // The same for sheet samples given as points with unit normals, spaced about 2 * radius.
   double approximateDistance(const std::vector<glm::dvec3>& points,
