@@ -507,6 +507,34 @@ double FoldFitter::approximateDistance(const Sheet& sheet) const {
   return target_->score(points, normals, radius);
 }
 
+SurfaceDistance FoldFitter::approximateMeasure(const Sheet& sheet) const {
+  const TriangleMesh mesh = meshOf(sheet);
+  const std::vector<SurfaceSample> samples =
+      sampleSurface(mesh, settings_.sheetSamples, settings_.seed + 2);
+  PointCloud points;
+  std::vector<glm::dvec3> normals;
+  for (const SurfaceSample& s : samples) {
+    points.points.push_back(s.position);
+    normals.push_back(s.normal);
+  }
+  const double radius =
+      0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
+  std::vector<double> fromSheet, fromTarget;
+  target_->score(points, normals, radius, &fromSheet, &fromTarget);
+  SurfaceDistance d;
+  d.diagonal = target_->diagonal;
+  if (fromSheet.empty() || fromTarget.empty()) return d;
+  d.fromAMax = *std::max_element(fromSheet.begin(), fromSheet.end());
+  d.fromBMax = *std::max_element(fromTarget.begin(), fromTarget.end());
+  d.fromAMean = std::accumulate(fromSheet.begin(), fromSheet.end(), 0.0) /
+                static_cast<double>(fromSheet.size());
+  d.fromBMean = std::accumulate(fromTarget.begin(), fromTarget.end(), 0.0) /
+                static_cast<double>(fromTarget.size());
+  d.hausdorff = std::max(d.fromAMax, d.fromBMax);
+  d.chamfer = 0.5 * (d.fromAMean + d.fromBMean);
+  return d;
+}
+
 double FoldFitter::approximateDistance(const std::vector<glm::dvec3>& points,
                                        const std::vector<glm::dvec3>& normals,
                                        double radius) const {
@@ -1278,9 +1306,12 @@ class FitRun {
                          !findSelfIntersections(branch.fixed()).intersections.empty();
     if (sequence.groups.empty() || crosses) return false;
     sequence.score = fitter_.approximateDistance(branch.fixed());
-    if (options_.searching) options_.searching(sequence.groups.size(), sequence.score, seconds());
     const bool better = sequence.score < best_.score;
     if (better) best_ = sequence;
+    // Said only when it is the best so far: the line says "best".
+    if (better && options_.searching)
+      options_.searching(sequence.groups.size(), fitter_.approximateMeasure(branch.fixed()).chamfer,
+                         seconds());
     return better && surfaceDistance(meshOf(branch.fixed()), fitter_.target(), measureSamples_)
                              .relativeHausdorff() <= kUnfoldedCloseEnough;
   }
@@ -1422,7 +1453,12 @@ class FitRun {
       if (beam.front().score < best_.score) best_ = beam.front();
       for (const FoldSequence& sequence : beam)
         if (sequence.monotone && sequence.score < bestMonotone_.score) bestMonotone_ = sequence;
-      if (options_.searching) options_.searching(depth + 1, beam.front().score, seconds());
+      // Reported as the Chamfer distance the search's samples measure: the score it ranks by cuts
+      // far distances, so it is no distance (a sheet 25 mm off scores 4 mm).
+      if (options_.searching)
+        options_.searching(depth + 1,
+                           fitter_.approximateMeasure(sessionFor(beam.front())->fixed()).chamfer,
+                           seconds());
     }
   }
 
