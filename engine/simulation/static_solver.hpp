@@ -56,6 +56,12 @@ struct StaticOptions {
   // maxSoftStageIterations.
   double softBarRatio = 100.0;
   double barStiffening = 100.0;
+  // The last stage: Newton's step with the energy's exact Hessian (the hinges' k (theta - target) Hess(theta), by
+  // differences of their exact gradients, and the bars' compressive part) wherever it is positive
+  // definite, Gauss-Newton's elsewhere. False: Gauss-Newton's always, which converges only
+  // linearly where the hinges' errors stay large at the equilibrium (targets the sheet cannot
+  // take together, as a curved crease's 180 degrees in paper mode).
+  bool exactHessian = true;
 };
 
 struct StaticIteration {
