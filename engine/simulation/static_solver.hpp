@@ -56,11 +56,11 @@ struct StaticOptions {
   // maxSoftStageIterations.
   double softBarRatio = 100.0;
   double barStiffening = 100.0;
-  // The last stage: Newton's step with the energy's exact Hessian (the hinges' k (theta - target) Hess(theta), by
-  // differences of their exact gradients, and the bars' compressive part) wherever it is positive
-  // definite, Gauss-Newton's elsewhere. False: Gauss-Newton's always, which converges only
-  // linearly where the hinges' errors stay large at the equilibrium (targets the sheet cannot
-  // take together, as a curved crease's 180 degrees in paper mode).
+  // The last stage: Newton's step with the energy's exact Hessian (the hinges' k (theta - target)
+  // Hess(theta), by differences of their exact gradients, and the bars' compressive part) wherever
+  // it is positive definite, Gauss-Newton's elsewhere. False: Gauss-Newton's always, which
+  // converges only linearly where the hinges' errors stay large at the equilibrium (targets the
+  // sheet cannot take together, as a curved crease's 180 degrees in paper mode).
   bool exactHessian = true;
 };
 
@@ -76,7 +76,8 @@ struct StaticResult {
   std::size_t stages = 0;
   bool predicted = false;  // started from the predictor (StaticOptions::predictor)
   // Paper mode: the soft-bar stages ended above the start's energy (a triangle turned inside
-  // out), so the settle was made again with the paper's own bars (iterations count both).
+  // out), or short of equilibrium (a residual above stageTolerance) where the paper's own bars
+  // came nearer, so the settle was made again with those (iterations count both).
   bool softBarsUndone = false;
   double energy = 0.0;                   // at the goal's targets
   double residual = 0.0;                 // at the end
