@@ -11,7 +11,8 @@
 // to the tolerance; in design mode the stages run with the bent facets as soft as the creases
 // and one more stage at the goal restores them (StaticOptions::foldingFacetScale); in paper mode
 // they run with the bars softened to a hundred times the creases and stiffening stages at the goal
-// restore paper's (StaticOptions::softBarRatio). Before all that,
+// restore paper's (StaticOptions::softBarRatio). The last stage steps with the energy's exact
+// Hessian where it is positive definite (StaticOptions::exactHessian). Before all that,
 // a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
 // angles and starts from there if that is lower in energy than the state.
 //
