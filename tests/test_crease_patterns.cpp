@@ -516,6 +516,31 @@ TEST(CreasePatternSvg, WidthHeightAndViewBoxGiveTheSheetsSizeInMetres) {
   std::filesystem::remove_all(directory);
 }
 
+// FOLD's frame_unit scales to metres (mm, cm, m, um, nm, in, pt); "unit", FOLD's default, and
+// none leave the coordinates as metres. Before, every unit was read as metres.
+TEST(CreasePatternFold, FrameUnitGivesTheSizeInMetres) {
+  const auto directory = std::filesystem::temp_directory_path() / "curvefold_fold_units";
+  std::filesystem::create_directories(directory);
+  const auto side = [&](const std::string& more) {
+    const auto path = directory / "p.fold";
+    std::ofstream(path) << squareFold("", "", "", more);
+    const CreasePattern p = readCreasePattern(path);
+    double largest = 0.0;
+    for (const glm::dvec2& v : p.vertices) largest = std::max({largest, v.x, v.y});
+    return largest;
+  };
+  EXPECT_NEAR(side(R"(, "frame_unit": "mm")"), 1e-3, 1e-18);
+  EXPECT_NEAR(side(R"(, "frame_unit": "in")"), 0.0254, 1e-17);
+  EXPECT_NEAR(side(R"(, "frame_unit": "pt")"), 0.0254 / 72, 1e-18);
+  EXPECT_EQ(side(R"(, "frame_unit": "unit")"), 1.0);
+  EXPECT_EQ(side(""), 1.0);
+  const CreasePattern asRead =
+      readFoldCreasePatternText(squareFold("", "", "", R"(, "frame_unit": "cm")"), "cm.fold");
+  EXPECT_EQ(asRead.metresPerUnit, 1e-2);
+  EXPECT_NE(asRead.unitSource.find("cm"), std::string::npos) << asRead.unitSource;
+  std::filesystem::remove_all(directory);
+}
+
 TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {
   EXPECT_NE(svgError("<svg><line").find("not valid XML at line 1"), std::string::npos);
   EXPECT_NE(svgError("<html/>").find("not an SVG file"), std::string::npos);

@@ -21,6 +21,7 @@
 #include "engine/io/crease_pattern.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
@@ -80,17 +81,12 @@ SimulationInput readInput(const fs::path& path, double sizeMm, std::string& size
   SimulationInput input;
   // A crease pattern from another tool (docs/formats.md); anything else is a curvefold design.
   if (hasExtension(path, ".fold") || hasExtension(path, ".svg")) {
-    std::string source;
-    if (hasExtension(path, ".svg")) {
-      // The units as read, before readCreasePattern scales them away.
-      CreasePattern asRead = readSvgCreasePattern(path);
-      source = asRead.unitSource;
-      scaleToMetres(asRead);
-      input.pattern = std::move(asRead);
-    } else {
-      input.pattern = readCreasePattern(path);
-      source = "FOLD coordinates read as metres";
-    }
+    // The units as read (how they were found is said), then in metres.
+    CreasePattern asRead =
+        hasExtension(path, ".svg") ? readSvgCreasePattern(path) : readFoldCreasePattern(path);
+    std::string source = asRead.unitSource;
+    scaleToMetres(asRead);
+    input.pattern = std::move(asRead);
     if (sizeMm > 0.0) {
       scaleToSize(input.pattern, sizeMm * 1e-3);
       source = "--size";
@@ -308,7 +304,7 @@ void addSimulateCommand(CLI::App& app) {
   CLI::Option* size = command->add_option(
       "--size", options->sizeMm,
       "A crease pattern's larger side in mm (default: as its file states; an SVG's px at 96 per "
-      "inch, a FOLD file's units as metres)");
+      "inch, a FOLD file's by its frame_unit, else metres)");
   command->add_option("--modulus", options->modulusGpa,
                       "With --paper: the paper's Young's modulus in GPa (default 4)");
   command->add_option(

@@ -12,7 +12,7 @@ namespace curvefold {
 // (after white space) and SVG when with '<'. Throws FileError when the file cannot be read and
 // CreasePatternError for everything else, "<path>: neither FOLD nor SVG" included. The vertices
 // are in metres (scaleToMetres below): an SVG's by its width and height (svg_crease_pattern.hpp),
-// a FOLD file's taken as metres.
+// a FOLD file's by its frame_unit, else as metres (fold_crease_pattern.cpp).
 CreasePattern readCreasePattern(const std::filesystem::path& path);
 
 // Multiplies the vertices by pattern.metresPerUnit, which is then 1.
