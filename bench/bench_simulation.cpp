@@ -279,6 +279,43 @@ void patternFromFlatLive(benchmark::State& bench, const std::filesystem::path& f
   bench.counters["strain_pct"] = 100.0 * worstStrain;
 }
 
+// Crease patterns settled from flat at 100% in paper mode (0.1 mm, 4 GPa: `simulate P --percent
+// 100 --settle --paper 0.1`), the static solver's last stage with Gauss-Newton steps (0) or the
+// exact Hessian (1, StaticOptions::exactHessian): iterations, final residual, converged, largest
+// and mean crease angle error (degrees), largest strain.
+void patternPaperSettle(benchmark::State& bench, const std::filesystem::path& file, bool exact) {
+  ModelOptions modelOptions;
+  modelOptions.mode = SimulationMode::Paper;
+  modelOptions.paper.thickness = 1e-4;
+  const BarHingeModel model = buildModel(readCreasePattern(file), modelOptions);
+  StaticOptions options;
+  options.exactHessian = exact;
+  StaticResult result;
+  SimulationState state;
+  for (auto _ : bench) {
+    state = flatState(model);
+    result = settle(model, 1.0, state, options);
+  }
+  double largest = 0.0, sum = 0.0, strain = 0.0;
+  std::size_t creases = 0;
+  const std::vector<double> error =
+      creaseAngleError(model, state.positions, 1.0, state.hingeAngles);
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j]) {
+      largest = std::max(largest, std::abs(error[model.hingeEdge[j]]));
+      sum += std::abs(error[model.hingeEdge[j]]);
+      ++creases;
+    }
+  for (double e : edgeStrain(model, state.positions)) strain = std::max(strain, std::abs(e));
+  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  bench.counters["iterations"] = static_cast<double>(result.iterations);
+  bench.counters["residual"] = result.residual;
+  bench.counters["converged"] = result.converged ? 1 : 0;
+  bench.counters["error_max_deg"] = largest;
+  bench.counters["error_mean_deg"] = creases ? sum / static_cast<double>(creases) : 0.0;
+  bench.counters["strain"] = strain;
+}
+
 void registerPatterns() {
   std::vector<std::filesystem::path> folders = {CURVEFOLD_SOURCE_DIR "/tests/data/crease_patterns"};
   if (const char* more = std::getenv("CURVEFOLD_BENCH_PATTERNS")) folders.emplace_back(more);
@@ -288,6 +325,20 @@ void registerPatterns() {
       if (entry.path().extension() == ".fold" || entry.path().extension() == ".svg")
         paths.push_back(entry.path());
     std::sort(paths.begin(), paths.end());
+    for (const auto& path : paths)
+      for (int exact : {0, 1})
+        benchmark::RegisterBenchmark(
+            ("BM_PatternPaperSettle/" + path.stem().string() + "/" + std::to_string(exact)).c_str(),
+            [path, exact](benchmark::State& bench) {
+              try {
+                patternPaperSettle(bench, path, exact == 1);
+              } catch (const std::exception& e) {
+                bench.SkipWithError(e.what());
+              }
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->Iterations(1);
     for (const auto& path : paths)
       for (int simulator : {0, 1})
         benchmark::RegisterBenchmark(

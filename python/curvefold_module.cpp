@@ -588,6 +588,7 @@ py::dict simulateCreasePattern(const py::object& source, const py::object& perce
     }
     py::gil_scoped_release release;
     pattern = readFoldCreasePatternText(text, "pattern");
+    scaleToMetres(pattern);  // its frame_unit, as a file's
   } else if (py::isinstance<py::str>(source) || py::isinstance<py::bytes>(source) ||
              py::hasattr(source, "__fspath__")) {
     const std::filesystem::path path = filePath(source, "pattern");

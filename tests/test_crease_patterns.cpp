@@ -14,6 +14,8 @@
 #include <set>
 #include <string>
 
+#include <glm/common.hpp>
+
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern_graph.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
@@ -453,6 +455,90 @@ TEST(CreasePatternSvg, StyleSheetClassesAndUnknownColoursAreNoted) {
   EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& n) {
     return n.find("\"#231f20\" (1)") != std::string::npos;
   }));
+}
+
+// An SVG's size is its root's width and height against its viewBox, SVG's px being 1/96 inch:
+// read by readCreasePattern (what simulate and the Python module call) in metres. Before, the
+// user units were taken as metres, and a pattern 20 mm wide drawn in mm became a 20 m sheet.
+TEST(CreasePatternSvg, WidthHeightAndViewBoxGiveTheSheetsSizeInMetres) {
+  const auto directory = std::filesystem::temp_directory_path() / "curvefold_svg_units";
+  std::filesystem::create_directories(directory);
+  const auto sizeOf = [&](const std::string& root, const std::string& drawing) {
+    const auto path = directory / "p.svg";
+    std::ofstream(path) << "<svg xmlns=\"http://www.w3.org/2000/svg\" " << root << ">" << drawing
+                        << "</svg>";
+    const CreasePattern p = readCreasePattern(path);
+    glm::dvec2 low(INFINITY), high(-INFINITY);
+    for (const glm::dvec2& v : p.vertices) {
+      low = glm::min(low, v);
+      high = glm::max(high, v);
+    }
+    EXPECT_EQ(p.metresPerUnit, 1.0);
+    return high - low;
+  };
+  // A 20 x 10 drawing with one valley across it.
+  const std::string wide = R"(<rect width="20" height="10" stroke="black" fill="none"/>
+      <line x1="10" y1="0" x2="10" y2="10" stroke="blue"/>)";
+  const auto expectSize = [&](const std::string& root, double x, double y) {
+    const glm::dvec2 size = sizeOf(root, wide);
+    EXPECT_NEAR(size.x, x, 1e-12 * x) << root;
+    EXPECT_NEAR(size.y, y, 1e-12 * y) << root;
+  };
+  expectSize(R"(width="200mm" height="100mm" viewBox="0 0 20 10")", 0.2, 0.1);
+  expectSize(R"(width="20cm" height="10cm" viewBox="0 0 20 10")", 0.2, 0.1);
+  expectSize(R"(width="2in" height="1in" viewBox="0 0 20 10")", 0.0508, 0.0254);
+  expectSize(R"(width="144pt" height="72pt" viewBox="0 0 20 10")", 0.0508, 0.0254);
+  expectSize(R"(width="192px" height="96px" viewBox="0 0 20 10")", 0.0508, 0.0254);
+  expectSize(R"(width="192" height="96" viewBox="0 0 20 10")", 0.0508, 0.0254);  // unitless: px
+  // Only one of them: it scales both; a viewBox of another aspect: the smaller scale (meet).
+  expectSize(R"(width="200mm" viewBox="0 0 20 10")", 0.2, 0.1);
+  expectSize(R"(width="200mm" height="200mm" viewBox="0 0 20 10")", 0.2, 0.1);
+  expectSize(R"(width="400mm" height="100mm" viewBox="0 0 20 10")", 0.2, 0.1);
+  // No size of its own, or no viewBox: a user unit is a px.
+  expectSize(R"(viewBox="0 0 20 10")", 20 * 0.0254 / 96, 10 * 0.0254 / 96);
+  expectSize("", 20 * 0.0254 / 96, 10 * 0.0254 / 96);
+  expectSize(R"(width="100%" height="100%" viewBox="0 0 20 10")", 20 * 0.0254 / 96,
+             10 * 0.0254 / 96);
+
+  // The reader itself keeps the file's user units and says how it sized them.
+  const CreasePattern asRead = readSvgCreasePatternText(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="100mm" viewBox="0 0 20 10">)" +
+          wide + "</svg>",
+      "mm.svg");
+  EXPECT_NEAR(asRead.metresPerUnit, 0.01, 1e-15);
+  EXPECT_NE(asRead.unitSource.find("mm"), std::string::npos) << asRead.unitSource;
+  EXPECT_NEAR(area(asRead), 200.0, 1e-9);
+
+  // scaleToSize: the larger side as asked, the shape kept.
+  CreasePattern sized = asRead;
+  scaleToSize(sized, 0.5);
+  EXPECT_NEAR(area(sized), 0.5 * 0.25, 1e-12);
+  std::filesystem::remove_all(directory);
+}
+
+// FOLD's frame_unit scales to metres (mm, cm, m, um, nm, in, pt); "unit", FOLD's default, and
+// none leave the coordinates as metres. Before, every unit was read as metres.
+TEST(CreasePatternFold, FrameUnitGivesTheSizeInMetres) {
+  const auto directory = std::filesystem::temp_directory_path() / "curvefold_fold_units";
+  std::filesystem::create_directories(directory);
+  const auto side = [&](const std::string& more) {
+    const auto path = directory / "p.fold";
+    std::ofstream(path) << squareFold("", "", "", more);
+    const CreasePattern p = readCreasePattern(path);
+    double largest = 0.0;
+    for (const glm::dvec2& v : p.vertices) largest = std::max({largest, v.x, v.y});
+    return largest;
+  };
+  EXPECT_NEAR(side(R"(, "frame_unit": "mm")"), 1e-3, 1e-18);
+  EXPECT_NEAR(side(R"(, "frame_unit": "in")"), 0.0254, 1e-17);
+  EXPECT_NEAR(side(R"(, "frame_unit": "pt")"), 0.0254 / 72, 1e-18);
+  EXPECT_EQ(side(R"(, "frame_unit": "unit")"), 1.0);
+  EXPECT_EQ(side(""), 1.0);
+  const CreasePattern asRead =
+      readFoldCreasePatternText(squareFold("", "", "", R"(, "frame_unit": "cm")"), "cm.fold");
+  EXPECT_EQ(asRead.metresPerUnit, 1e-2);
+  EXPECT_NE(asRead.unitSource.find("cm"), std::string::npos) << asRead.unitSource;
+  std::filesystem::remove_all(directory);
 }
 
 TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -88,6 +89,33 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
   const CommandResult fold = run("simulate other.fold --percent 50 --obj s.obj");
   EXPECT_EQ(fold.exitCode, 1);
   EXPECT_NE(fold.err.find("other.fold"), std::string::npos) << fold.err;
+}
+
+// A crease pattern is simulated at the size its file states (an SVG's width and height against
+// its viewBox), said on the first line, or at --size's; --size is refused for a design (in metres
+// already) and outside (0, 1 km], in one line, writing nothing.
+TEST_F(SimulateCli, ACreasePatternIsSimulatedAtItsStatedSizeOrAtSizes) {
+  std::ofstream(path("p.svg"))
+      << R"(<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="100mm" viewBox="0 0 20 10">
+      <rect width="20" height="10" stroke="black" fill="none"/>
+      <line x1="10" y1="0" x2="10" y2="10" stroke="blue" stroke-opacity="0.5"/></svg>)";
+  const CommandResult stated = run("simulate p.svg --percent 50 --settle --obj p.obj");
+  ASSERT_EQ(stated.exitCode, 0) << stated.err;
+  EXPECT_EQ(stated.out.rfind("sheet 200 x 100 mm (width and height in mm", 0), 0u) << stated.out;
+  const CommandResult sized = run("simulate p.svg --percent 50 --settle --size 50 --obj p.obj");
+  ASSERT_EQ(sized.exitCode, 0) << sized.err;
+  EXPECT_EQ(sized.out.rfind("sheet 50 x 25 mm (--size)", 0), 0u) << sized.out;
+  fs::remove(path("p.obj"));
+  ASSERT_EQ(run("new square -o s.curvefold.json").exitCode, 0);
+  for (const std::string arguments :
+       {"s.curvefold.json --percent 50 --size 100 --obj p.obj",
+        "p.svg --percent 50 --size 0 --obj p.obj", "p.svg --percent 50 --size nan --obj p.obj"}) {
+    const CommandResult result = run("simulate " + arguments);
+    EXPECT_EQ(result.exitCode, 1) << arguments;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_NE(result.err.find("--size"), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(path("p.obj"))) << arguments;
+  }
 }
 
 // Every option of simulate left without its value (or given one CLI11 refuses) exits 1 with one

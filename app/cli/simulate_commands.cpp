@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "app/cli/commands.hpp"
@@ -20,10 +21,12 @@
 #include "engine/io/crease_pattern.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/fold_format.hpp"
 #include "engine/io/gltf_writer.hpp"
 #include "engine/io/obj_writer.hpp"
 #include "engine/io/output_set.hpp"
+#include "engine/io/svg_crease_pattern.hpp"
 #include "engine/render/color_legend.hpp"
 #include "engine/render/gif_animation.hpp"
 #include "engine/render/headless_renderer.hpp"
@@ -73,14 +76,35 @@ Sheet sheetOfPattern(const CreasePattern& pattern) {
   return sheet;
 }
 
-SimulationInput readInput(const fs::path& path) {
+// sizeMm > 0: a crease pattern's larger side in millimetres (--size).
+SimulationInput readInput(const fs::path& path, double sizeMm, std::string& sizeLine) {
   SimulationInput input;
   // A crease pattern from another tool (docs/formats.md); anything else is a curvefold design.
   if (hasExtension(path, ".fold") || hasExtension(path, ".svg")) {
-    input.pattern = readCreasePattern(path);
+    // The units as read (how they were found is said), then in metres.
+    CreasePattern asRead =
+        hasExtension(path, ".svg") ? readSvgCreasePattern(path) : readFoldCreasePattern(path);
+    std::string source = asRead.unitSource;
+    scaleToMetres(asRead);
+    input.pattern = std::move(asRead);
+    if (sizeMm > 0.0) {
+      scaleToSize(input.pattern, sizeMm * 1e-3);
+      source = "--size";
+    }
+    glm::dvec2 low(INFINITY), high(-INFINITY);
+    for (const glm::dvec2& v : input.pattern.vertices) {
+      low = glm::min(low, v);
+      high = glm::max(high, v);
+    }
+    char line[240];
+    std::snprintf(line, sizeof line, "sheet %.4g x %.4g mm (%s)\n", (high.x - low.x) * 1e3,
+                  (high.y - low.y) * 1e3, source.c_str());
+    sizeLine = line;
     input.sheet = sheetOfPattern(input.pattern);
     return input;
   }
+  if (sizeMm > 0.0)
+    throw UsageError("--size: sizes a crease pattern (.fold, .svg); a design is in metres already");
   input.sheet = buildSheet(loadDesign(path), path.string());
   DesignPattern design = designPattern(input.sheet);
   input.pattern = std::move(design.pattern);
@@ -246,7 +270,7 @@ void addSimulateCommand(CLI::App& app) {
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
     bool settle = false, gpu = false, motion = false;
-    double paperMm = 0.0, modulusGpa = 4.0;
+    double paperMm = 0.0, modulusGpa = 4.0, sizeMm = 0.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
   };
@@ -277,6 +301,10 @@ void addSimulateCommand(CLI::App& app) {
       "--stiffness", options->stiffness,
       "Design mode's stiffnesses: `curvefold` (default: stiff bars and facets, soft creases) or "
       "`origami-simulator` (Origami Simulator's: axial 20, crease 0.7, facet 0.7)");
+  CLI::Option* size = command->add_option(
+      "--size", options->sizeMm,
+      "A crease pattern's larger side in mm (default: as its file states; an SVG's px at 96 per "
+      "inch, a FOLD file's by its frame_unit, else metres)");
   command->add_option("--modulus", options->modulusGpa,
                       "With --paper: the paper's Young's modulus in GPa (default 4)");
   command->add_option(
@@ -312,7 +340,8 @@ void addSimulateCommand(CLI::App& app) {
       "", "value");
   for (CLI::Option* option : command->get_options())
     if (option->get_expected_min() > 0) option->check(notAnOption);
-  command->callback([options, paper, stiffness, obj, fold, gltf, png, frames, colorOption, gif] {
+  command->callback([options, paper, size, stiffness, obj, fold, gltf, png, frames, colorOption,
+                     gif] {
     const std::vector<double> percents = parsePercents(options->percent);
     const StateColor color =
         colorOption->count() ? parseStateColor(options->color) : StateColor::None;
@@ -356,7 +385,14 @@ void addSimulateCommand(CLI::App& app) {
       if (!output->empty() && *output != "-" && sameFile(*output, options->input))
         throw UsageError("simulate: " + *output + " is the input; write to another file");
 
-    SimulationInput input = readInput(options->input);
+    if (size->count() && !(options->sizeMm > 0.0 && options->sizeMm <= 1e6))
+      throw UsageError("--size: must be above 0 and at most 1000000 mm (1 km)");
+    std::string sizeLine;
+    SimulationInput input =
+        readInput(options->input, size->count() ? options->sizeMm : 0.0, sizeLine);
+    if (!sizeLine.empty())
+      statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
+          << sizeLine;
     for (const std::string& pin : options->pins)
       modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin")));
     for (const std::string& glue : options->glue) {

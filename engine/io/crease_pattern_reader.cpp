@@ -4,6 +4,8 @@
 #include <cctype>
 #include <string>
 
+#include <glm/common.hpp>
+
 #include "engine/io/crease_pattern_graph.hpp"
 #include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/input_limits.hpp"
@@ -27,8 +29,28 @@ CreasePattern readCreasePattern(const std::filesystem::path& path) {
       throw CreasePatternError(path.string() + ": neither FOLD nor SVG (name it .fold or .svg)");
     svg = start == '<';
   }
-  return svg ? readSvgCreasePatternText(text, path.string())
-             : readFoldCreasePatternText(text, path.string());
+  CreasePattern pattern = svg ? readSvgCreasePatternText(text, path.string())
+                              : readFoldCreasePatternText(text, path.string());
+  scaleToMetres(pattern);
+  return pattern;
+}
+
+void scaleToMetres(CreasePattern& pattern) {
+  if (pattern.metresPerUnit == 1.0) return;
+  for (glm::dvec2& v : pattern.vertices) v *= pattern.metresPerUnit;
+  pattern.metresPerUnit = 1.0;
+}
+
+void scaleToSize(CreasePattern& pattern, double largerSide) {
+  if (pattern.vertices.empty()) return;
+  glm::dvec2 low = pattern.vertices.front(), high = low;
+  for (const glm::dvec2& v : pattern.vertices) {
+    low = glm::min(low, v);
+    high = glm::max(high, v);
+  }
+  const double side = std::max(high.x - low.x, high.y - low.y);
+  if (!(side > 0.0)) return;
+  for (glm::dvec2& v : pattern.vertices) v *= largerSide / side;
 }
 
 }  // namespace curvefold

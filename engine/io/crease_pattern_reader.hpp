@@ -10,7 +10,16 @@ namespace curvefold {
 
 // .fold (any case) is FOLD, .svg is SVG; any other name is FOLD when its text starts with '{'
 // (after white space) and SVG when with '<'. Throws FileError when the file cannot be read and
-// CreasePatternError for everything else, "<path>: neither FOLD nor SVG" included.
+// CreasePatternError for everything else, "<path>: neither FOLD nor SVG" included. The vertices
+// are in metres (scaleToMetres below): an SVG's by its width and height (svg_crease_pattern.hpp),
+// a FOLD file's by its frame_unit, else as metres (fold_crease_pattern.cpp).
 CreasePattern readCreasePattern(const std::filesystem::path& path);
+
+// Multiplies the vertices by pattern.metresPerUnit, which is then 1.
+void scaleToMetres(CreasePattern& pattern);
+
+// Scales the vertices about the origin so the larger side of their bounding box is largerSide
+// (a pattern whose file states no size, or one printed at another size).
+void scaleToSize(CreasePattern& pattern, double largerSide);
 
 }  // namespace curvefold

@@ -1,6 +1,7 @@
 #include "engine/io/fold_crease_pattern.hpp"
 
 #include <cmath>
+#include <unordered_map>
 #include <unordered_set>
 
 #include <glm/common.hpp>
@@ -250,14 +251,15 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
                               std::to_string(value.is_array() ? value.size() : 0) +
                               " frames) ignored: only the key frame is read");
     else if (key.rfind("frame_", 0) == 0)
-      frameKeys.push_back(key);  // title, classes, attributes, unit: said in a note
-    else if (key.rfind("file_", 0) == 0)
-      continue;  // spec, creator, author, title, classes: about the file, nothing to fold
-    else
-      ignored.push_back(key);
+      if (key != "frame_unit")
+        frameKeys.push_back(key);  // title, classes, attributes: a note
+      else if (key.rfind("file_", 0) == 0)
+        continue;  // spec, creator, author, title, classes: about the file, nothing to fold
+      else
+        ignored.push_back(key);
   }
   if (!frameKeys.empty()) {
-    std::string line = "key frame metadata ignored (coordinates kept in the file's units):";
+    std::string line = "key frame metadata ignored:";
     for (std::size_t k = 0; k < frameKeys.size() && k < 8; ++k)
       line += (k ? ", " : " ") + quotedExcerpt(frameKeys[k], 40);
     drawing.notes.push_back(line);
@@ -282,7 +284,21 @@ CreasePattern readFoldCreasePatternText(std::string_view text, std::string_view 
     PlanarizeOptions options;
     options.strict = true;
     planarize(drawing, options);
-    return triangulateCreaseDrawing(drawing);
+    CreasePattern pattern = triangulateCreaseDrawing(drawing);
+    // FOLD's frame_unit: the units it names scale to metres; "unit" (FOLD's default: no physical
+    // size) and anything else leave the coordinates as metres, the stated default.
+    static const std::unordered_map<std::string, double> metres = {
+        {"m", 1.0},   {"cm", 1e-2},   {"mm", 1e-3},       {"um", 1e-6},
+        {"nm", 1e-9}, {"in", 0.0254}, {"pt", 0.0254 / 72}};
+    pattern.unitSource = "FOLD coordinates read as metres";
+    if (const auto unit = document.find("frame_unit");
+        unit != document.end() && unit->is_string()) {
+      if (const auto found = metres.find(unit->get<std::string>()); found != metres.end()) {
+        pattern.metresPerUnit = found->second;
+        pattern.unitSource = "FOLD frame_unit " + found->first;
+      }
+    }
+    return pattern;
   } catch (const JsonReadError& error) {
     throw CreasePatternError(error.what());
   } catch (const CreasePatternError& error) {

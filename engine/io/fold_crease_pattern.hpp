@@ -8,7 +8,8 @@
 // assignment without edges_assignment is U), faces_vertices (optional: without it the faces are
 // found from the planar graph of the edges; with it, exactly those faces are paper and a face side
 // that is no edge is added as a Flat edge). The older edges_foldAngles (FOLD 1.0) is read too.
-// Ignored, each with a note: file_frames, the key frame's frame_* and any other *_ arrays
+// frame_unit (m, cm, mm, um, nm, in, pt) gives CreasePattern::metresPerUnit; "unit" or none: 1.
+// Ignored, each with a note: file_frames, the key frame's other frame_* and any other *_ arrays
 // (faces_edges, vertices_vertices...), which are derived from the above.
 //
 // Refused with one line (CreasePatternError, or FileError when the file cannot be read): malformed

@@ -727,6 +727,85 @@ class SvgReader {
   std::size_t noStroke_ = 0, flattenedCurves_ = 0;
 };
 
+// SVG's absolute units in px (CSS Values 3: 96 px to the inch).
+std::optional<double> pxPerUnit(std::string_view unit) {
+  const std::string u = lower(unit);
+  if (u.empty() || u == "px") return 1.0;
+  if (u == "in") return 96.0;
+  if (u == "cm") return 96.0 / 2.54;
+  if (u == "mm") return 96.0 / 25.4;
+  if (u == "q") return 96.0 / 101.6;
+  if (u == "pt") return 96.0 / 72.0;
+  if (u == "pc") return 16.0;
+  return std::nullopt;  // %, em, ex, vw: relative to a viewport the file does not fix
+}
+
+struct RootLength {
+  double px = 0.0;  // > 0 when given in an absolute unit
+  std::string unit;
+};
+
+// The root's width or height in px; 0 when absent, relative or not positive.
+RootLength rootLength(const xmlNode* root, const char* name) {
+  RootLength out;
+  xmlChar* value = xmlGetProp(root, reinterpret_cast<const xmlChar*>(name));
+  if (!value) return out;
+  const std::string text = trim(reinterpret_cast<const char*>(value));
+  xmlFree(value);
+  NumberScanner scanner(text);
+  const auto number = scanner.number();
+  if (!number) return out;
+  std::size_t end = text.size();
+  while (end > 0 && !std::isdigit(static_cast<unsigned char>(text[end - 1])) &&
+         text[end - 1] != '.')
+    --end;
+  out.unit = lower(trim(std::string_view(text).substr(end)));
+  if (const auto factor = pxPerUnit(out.unit); factor && *number > 0.0) out.px = *number * *factor;
+  return out;
+}
+
+// One user unit of the drawing in metres, as a browser sizes the root (SVG 1.1, 7.7-7.8): width
+// and height in px (96 to the inch; unitless is px) over the viewBox's, the smaller of the two
+// when they differ (preserveAspectRatio's default, meet); one of them alone scales both; no
+// viewBox: a user unit is a px. With neither size given the drawing has no size of its own, and
+// a user unit is taken as a px too (the stated default, docs/formats.md).
+double svgUserUnitMetres(const xmlNode* root, std::string& source) {
+  constexpr double kMetresPerPx = 0.0254 / 96.0;
+  const RootLength width = rootLength(root, "width"), height = rootLength(root, "height");
+  std::array<double, 4> box{};
+  bool hasBox = false;
+  xmlChar* value = xmlGetProp(root, reinterpret_cast<const xmlChar*>("viewBox"));
+  if (value) {
+    NumberScanner scanner(reinterpret_cast<const char*>(value));
+    hasBox = true;
+    for (double& v : box) {
+      const auto number = scanner.number();
+      hasBox = hasBox && number.has_value();
+      v = number.value_or(0.0);
+    }
+    hasBox = hasBox && scanner.atEnd() && box[2] > 0.0 && box[3] > 0.0;
+    xmlFree(value);
+  }
+  const auto named = [](const RootLength& a, const RootLength& b) {
+    const std::string& unit = a.px > 0.0 ? a.unit : b.unit;
+    return unit.empty()   ? std::string("unitless, read as px at 96 per inch")
+           : unit == "px" ? std::string("in px at 96 per inch")
+                          : "in " + unit;
+  };
+  if (width.px <= 0.0 && height.px <= 0.0) {
+    source = "no width or height in an absolute unit: one user unit read as one px, 96 per inch";
+    return kMetresPerPx;
+  }
+  if (!hasBox) {
+    source = "no viewBox: one user unit is one px, 96 per inch";
+    return kMetresPerPx;
+  }
+  const double sx = width.px > 0.0 ? width.px / box[2] : height.px / box[3];
+  const double sy = height.px > 0.0 ? height.px / box[3] : sx;
+  source = "width and height " + named(width, height) + " over the viewBox";
+  return std::min(sx, sy) * kMetresPerPx;
+}
+
 struct XmlDocument {
   xmlParserCtxtPtr context = nullptr;
   xmlDocPtr document = nullptr;
@@ -781,7 +860,9 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
     TriangulateOptions triangulate;
     triangulate.dropLinesWithoutFace = true;
     triangulate.innerBorderAsHinge = true;
-    return triangulateCreaseDrawing(drawing, triangulate);
+    CreasePattern pattern = triangulateCreaseDrawing(drawing, triangulate);
+    pattern.metresPerUnit = svgUserUnitMetres(root, pattern.unitSource);
+    return pattern;
   } catch (const CreasePatternError& error) {
     const std::string message = error.what();
     if (message.rfind(prefix + ": ", 0) == 0) throw;

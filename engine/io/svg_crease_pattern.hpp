@@ -17,8 +17,10 @@
 // style="..." and the document's <style> rules of the forms .class, tag and tag.class. stroke and
 // stroke-opacity are inherited, opacity is not (as a browser computes them). display:none hides an
 // element and its children. Ignored (with a note): text, image, use and other elements; everything
-// inside defs, symbol, clipPath, mask, marker, pattern, metadata. Units after numbers are dropped
-// (the file's user units are kept).
+// inside defs, symbol, clipPath, mask, marker, pattern, metadata. Units after numbers inside the
+// drawing are dropped (coordinates stay in the file's user units); the root's width and height
+// against its viewBox give CreasePattern::metresPerUnit, SVG's px being 1/96 inch (unitless is px,
+// and a file with no absolute width or height, or no viewBox, is read at one px a user unit).
 //
 // Then, as Origami Simulator does: points within SvgReadOptions::relativeSnap of each other are
 // one, lines are split where they cross or where a line's end touches another, and the planar

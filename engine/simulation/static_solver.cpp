@@ -115,7 +115,40 @@ void addElementBlocks(double* values, const int* blocks,
   });
 }
 
-void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, HessianLayout& layout) {
+// The hinge angle's second derivatives (12 x 12, symmetric: [p][q] the 3x3 block of vertices p
+// and q), by central differences of its exact gradient: 24 gradients, relative error about 1e-10.
+std::array<std::array<glm::dmat3, 4>, 4> hingeAngleHessian(std::array<glm::dvec3, 4> x) {
+  std::array<std::array<glm::dmat3, 4>, 4> out{};
+  const double step = 1e-6 * glm::length(x[1] - x[0]);
+  if (!(step > 0.0)) return out;
+  for (int q = 0; q < 4; ++q)
+    for (int c = 0; c < 3; ++c) {
+      const double kept = x[q][c];
+      x[q][c] = kept + step;
+      const auto plus = hingeAngleGradient(x[0], x[1], x[2], x[3]);
+      x[q][c] = kept - step;
+      const auto minus = hingeAngleGradient(x[0], x[1], x[2], x[3]);
+      x[q][c] = kept;
+      for (int p = 0; p < 4; ++p)
+        for (int r = 0; r < 3; ++r) out[p][q][c][r] = (plus[p][r] - minus[p][r]) / (2.0 * step);
+    }
+  for (int p = 0; p < 4; ++p)  // symmetric, as the true Hessian is
+    for (int q = p; q < 4; ++q)
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) {
+          const double mean = 0.5 * (out[p][q][c][r] + out[q][p][r][c]);
+          out[p][q][c][r] = out[q][p][r][c] = mean;
+        }
+  return out;
+}
+
+// The energy's Hessian. Gauss-Newton (hingeErrors null): the bars' without their compressive
+// part and the hinges' k grad grad^T, positive semidefinite. Exact (hingeErrors: each hinge's angle
+// minus its target): the bars' whole and the hinges' plus k (theta - target) Hess(theta); where
+// targets cannot all be met (a curved crease driven to 180 degrees) the errors stay large at the
+// equilibrium, and Gauss-Newton without that term converges only linearly there.
+void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, HessianLayout& layout,
+              const std::vector<double>* hingeErrors = nullptr) {
   double* values = layout.matrix.valuePtr();
   std::fill(values, values + layout.matrix.nonZeros(), 0.0);
   for (std::size_t i = 0; i < model.bars.size(); ++i) {
@@ -125,9 +158,10 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
     if (length == 0.0) continue;
     const glm::dvec3 u = delta / length;
     const double k = model.barStiffness[i];
-    // Along the bar k; across it k (1 - L / l) when stretched (dropped when compressed: it would
-    // make the matrix indefinite).
-    const double across = k * std::max(0.0, 1.0 - model.barLength[i] / length);
+    // Along the bar k; across it k (1 - L / l) (Gauss-Newton: dropped when compressed, where it
+    // would make the matrix indefinite).
+    const double across = hingeErrors ? k * (1.0 - model.barLength[i] / length)
+                                      : k * std::max(0.0, 1.0 - model.barLength[i] / length);
     const glm::dmat3 block = (k - across) * glm::outerProduct(u, u) + across * glm::dmat3(1.0);
     addElementBlocks(values, layout.barBlocks.data() + 9 * i, bar, model.pinned,
                      [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
@@ -136,9 +170,13 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
     const Hinge& h = model.hinges[j];
     const auto g = hingeAngleGradient(x[h.a], x[h.b], x[h.c], x[h.d]);
     const double k = model.hingeStiffness[j];
-    addElementBlocks(
-        values, layout.hingeBlocks.data() + 30 * j, hingeVertices(h), model.pinned,
-        [&](std::size_t p, std::size_t q) { return k * glm::outerProduct(g[p], g[q]); });
+    const double torque = hingeErrors ? k * (*hingeErrors)[j] : 0.0;
+    std::array<std::array<glm::dmat3, 4>, 4> second{};
+    if (torque != 0.0) second = hingeAngleHessian({x[h.a], x[h.b], x[h.c], x[h.d]});
+    addElementBlocks(values, layout.hingeBlocks.data() + 30 * j, hingeVertices(h), model.pinned,
+                     [&](std::size_t p, std::size_t q) {
+                       return k * glm::outerProduct(g[p], g[q]) + torque * second[p][q];
+                     });
   }
   for (std::size_t i = 0; i < model.glue.size(); ++i) {
     const glm::dmat3 block = model.glueStiffness * glm::dmat3(1.0);
@@ -220,11 +258,29 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
                                              ? before.hingeAngles
                                              : hingeAngles(model, before.positions));
   StaticResult soft = settleInStages(model, goal, state, options);
-  if (std::isfinite(soft.energy) && soft.energy <= startEnergy) return soft;
+  const bool softUsable = std::isfinite(soft.energy) && soft.energy <= startEnergy;
+  // Left stretched and far from any equilibrium (strain above 0.1%, a residual above the stages'
+  // tolerance), the soft stages tangled the sheet without raising its energy past the start's
+  // (whirlpool at its stated size: strain 11%, residual 4e9; wavy_pleats 1%, 7e7): the paper's
+  // own bars are tried too, and the state nearer equilibrium kept. (Unstretched and short of
+  // equilibrium, the soft result stays: stiff bars from flat crawl, and their smaller residual
+  // there is the flat sheet's.)
+  double softStrain = 0.0;
+  for (double strain : edgeStrain(model, state.positions))
+    softStrain = std::max(softStrain, std::abs(strain));
+  if (softUsable &&
+      (soft.converged || soft.residual <= options.stageTolerance || softStrain <= 1e-3))
+    return soft;
+  const SimulationState softState = state;
   state = before;
   StaticOptions stiff = options;
   stiff.softBarRatio = 0.0;
   StaticResult result = settleInStages(model, goal, state, stiff);
+  if (softUsable && !(result.residual < soft.residual)) {
+    state = softState;
+    soft.iterations += result.iterations;
+    return soft;
+  }
   result.iterations += soft.iterations;
   result.softBarsUndone = true;
   return result;
@@ -308,7 +364,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
   Eigen::VectorXd gradient(3 * n), step(3 * n);
   std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces;
-  std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
+  std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n), hingeErrors(goal.size());
 
   for (std::size_t stage = 1; stage <= allStages; ++stage) {
     const bool last = stage == allStages;
@@ -361,19 +417,34 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
         solver.analyzePattern(layout.matrix);
         analysed = true;
       }
-      assemble(m, state.positions, layout);
+      // The exact Hessian where it is positive definite (near a minimum: quadratic convergence),
+      // else Gauss-Newton's (StaticOptions::exactHessian).
+      bool exact = options.exactHessian && last;
+      for (std::size_t j = 0; j < goal.size(); ++j)
+        hingeErrors[j] = state.hingeAngles[j] - targets[j];
       double* values = layout.matrix.valuePtr();
       double largestDiagonal = 0.0;
-      for (std::size_t d = 0; d < 3 * n; ++d) {
-        diagonal[d] = values[layout.diagonal[d]];
-        largestDiagonal = std::max(largestDiagonal, diagonal[d]);
-      }
+      const auto assembleHessian = [&] {
+        assemble(m, state.positions, layout, exact ? &hingeErrors : nullptr);
+        largestDiagonal = 0.0;
+        for (std::size_t d = 0; d < 3 * n; ++d) {
+          diagonal[d] = values[layout.diagonal[d]];
+          largestDiagonal = std::max(largestDiagonal, diagonal[d]);
+        }
+      };
+      assembleHessian();
       bool accepted = false;
       for (int attempt = 0; attempt < 10 && !accepted; ++attempt) {
         // The tiny absolute term keeps rigid motions (no stiffness at all) solvable.
         for (std::size_t d = 0; d < 3 * n; ++d)
           values[layout.diagonal[d]] = diagonal[d] * (1.0 + damping) + 1e-12 * largestDiagonal;
         solver.factorize(layout.matrix);
+        if (exact && (solver.info() != Eigen::Success || (solver.vectorD().array() <= 0.0).any())) {
+          exact = false;  // indefinite here: Gauss-Newton's, positive semidefinite
+          assembleHessian();
+          --attempt;
+          continue;
+        }
         if (solver.info() != Eigen::Success) {
           damping = std::max(damping * 10.0, 1e-6);
           continue;

@@ -11,7 +11,8 @@
 // to the tolerance; in design mode the stages run with the bent facets as soft as the creases
 // and one more stage at the goal restores them (StaticOptions::foldingFacetScale); in paper mode
 // they run with the bars softened to a hundred times the creases and stiffening stages at the goal
-// restore paper's (StaticOptions::softBarRatio). Before all that,
+// restore paper's (StaticOptions::softBarRatio). The last stage steps with the energy's exact
+// Hessian where it is positive definite (StaticOptions::exactHessian). Before all that,
 // a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
 // angles and starts from there if that is lower in energy than the state.
 //
@@ -56,6 +57,12 @@ struct StaticOptions {
   // maxSoftStageIterations.
   double softBarRatio = 100.0;
   double barStiffening = 100.0;
+  // The last stage: Newton's step with the energy's exact Hessian (the hinges' k (theta - target)
+  // Hess(theta), by differences of their exact gradients, and the bars' compressive part) wherever
+  // it is positive definite, Gauss-Newton's elsewhere. False: Gauss-Newton's always, which
+  // converges only linearly where the hinges' errors stay large at the equilibrium (targets the
+  // sheet cannot take together, as a curved crease's 180 degrees in paper mode).
+  bool exactHessian = true;
 };
 
 struct StaticIteration {
@@ -70,7 +77,8 @@ struct StaticResult {
   std::size_t stages = 0;
   bool predicted = false;  // started from the predictor (StaticOptions::predictor)
   // Paper mode: the soft-bar stages ended above the start's energy (a triangle turned inside
-  // out), so the settle was made again with the paper's own bars (iterations count both).
+  // out), or short of equilibrium (a residual above stageTolerance) where the paper's own bars
+  // came nearer, so the settle was made again with those (iterations count both).
   bool softBarsUndone = false;
   double energy = 0.0;                   // at the goal's targets
   double residual = 0.0;                 // at the end

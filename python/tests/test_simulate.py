@@ -168,3 +168,10 @@ def test_simulate_files_that_cannot_be_read_are_os_errors_naming_the_path(tmp_pa
     with pytest.raises(ValueError) as error:
         curvefold.simulate(text)
     assert str(text) in one_line(error)
+
+
+def test_simulate_reads_a_fold_dicts_frame_unit_as_a_files():
+    # The 2 x 1 sheet in mm: 0.002 m wide, as the same FOLD file would be read (docs/formats.md).
+    pattern = dict(square_with_crease(), frame_unit="mm")
+    result = curvefold.simulate(pattern, percent=50, settle=True)
+    assert abs(np.abs(result["development"]).max() - 0.002) < 1e-15
