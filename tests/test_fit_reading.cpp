@@ -366,6 +366,36 @@ TEST(FitReading, AnImageThatMovedTheWholeSheetIsUndoneWithItsFold) {
   testing::expectInvariants(session.fixed(), session.initial());
 }
 
+// A fold of most of a rectangle with rotational:2 whose image mirrors the whole sheet (as above),
+// then the sheet moved whole by one more fold: the unfolding ends on a turned copy of the sheet,
+// and the fold read, replayed, brings its whole-sheet image again. Taking the copy's motion for
+// what is left to make after the replay, the fit missed by 30-75% of the diagonal; what is left
+// is measured on the replayed sheet (one mirror: two groups).
+TEST(FitReading, AFoldWhoseImageMovedTheSheetThenMovedWholeIsFoundToo) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  const Symmetry symmetry = parseSymmetry("rotational:2:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({-0.0696, 0.0068, 0.0});
+  folding.updateDrag({-0.0268, 0.0635, 0.0440});
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 2u);  // the fold and its image, which moved every vertex
+  ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {0.5, -0.4, 0.77}, 0.12));
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 3;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 50 : 200;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
 // A whole-sheet fold made after a symmetric fold with its images (four corners folded up by
 // rotational:4, then the sheet moved whole along a drag): the target is two groups, the corners'
 // and the whole sheet's (whose images are none: it moves every image of its grab).
