@@ -18,6 +18,7 @@
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
+#include "engine/fit/replayed_motion.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -253,6 +254,31 @@ TEST(WholeSheetFolds, RegistrationStopsSoonAfterItsDeadline) {
 // point stays near: the first whole-sheet fold moves it farther, and the two folds that laid the
 // cone on the target were both dropped (0 folds, 112% off). A sequence that reaches the target
 // is kept whole.
+// A motion measured on a replay is about 1e-6 off: a turn with that much shift along its axis is
+// no longer two planes (they make no shift along it). Snapped, it is again, and a mirror stays one.
+TEST(WholeSheetFolds, AMeasuredMotionNearOneOrTwoPlanesIsMadeWithThem) {
+  const Sheet initial = makeSurface("square", {{"resolution", 6}});
+  auto mirrorThrough = [](glm::dvec3 n, double d) {  // the plane n.x = d
+    n = glm::normalize(n);
+    return RigidMotion{glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n), 2.0 * d * n};
+  };
+  const RigidMotion first = mirrorThrough({0.3, -0.5, 0.8}, 0.15);
+  const RigidMotion second = mirrorThrough({0.1, 0.2, 1.0}, 0.3);
+  const RigidMotion turn{second.linear * first.linear,
+                         second.linear * first.offset + second.offset};
+  for (const RigidMotion& exact : {first, turn}) {
+    const std::size_t planes = glm::determinant(exact.linear) < 0.0 ? 1 : 2;
+    ASSERT_EQ(wholeSheetReflections(exact, initial.positions, planes).size(), planes);
+    RigidMotion measured = exact;
+    measured.offset += glm::dvec3(2e-6, -1e-6, 3e-6);  // a few micrometres off
+    if (planes == 2) EXPECT_TRUE(wholeSheetReflections(measured, initial.positions, 2).empty());
+    const RigidMotion snapped = snappedToFewPlanes(measured, 1e-3, 1e-3);
+    EXPECT_EQ(wholeSheetReflections(snapped, initial.positions, planes).size(), planes);
+    for (const glm::dvec3& p : initial.positions)
+      EXPECT_LT(glm::distance(snapped(p), exact(p)), 1e-5);
+  }
+}
+
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   const Sheet initial = makeSurface("cone", {{"resolution", 24}});
   FoldSession folding(initial);
@@ -360,6 +386,36 @@ TEST(FitReading, AnImageThatMovedTheWholeSheetIsUndoneWithItsFold) {
   options.maxFolds = 4;
   options.seconds = std::numeric_limits<double>::infinity();
   options.maxEvaluations = testing::kSanitized ? 100 : 400;
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// A fold of most of a rectangle with rotational:2 whose image mirrors the whole sheet (as above),
+// then the sheet moved whole by one more fold: the unfolding ends on a turned copy of the sheet,
+// and the fold read, replayed, brings its whole-sheet image again. Taking the copy's motion for
+// what is left to make after the replay, the fit missed by 30-75% of the diagonal; what is left
+// is measured on the replayed sheet (one mirror: two groups).
+TEST(FitReading, AFoldWhoseImageMovedTheSheetThenMovedWholeIsFoundToo) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  const Symmetry symmetry = parseSymmetry("rotational:2:z", initial);
+  FoldSession folding(initial);
+  folding.setSymmetry(symmetry);
+  folding.beginDragNear({-0.0696, 0.0068, 0.0});
+  folding.updateDrag({-0.0268, 0.0635, 0.0440});
+  ASSERT_TRUE(folding.commit());
+  ASSERT_EQ(folding.foldCount(), 2u);  // the fold and its image, which moved every vertex
+  ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {0.5, -0.4, 0.77}, 0.12));
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FoldSession session(initial);
+  session.setSymmetry(symmetry);
+  FitOptions options;
+  options.maxFolds = 3;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 50 : 200;
   const FitResult result = fitFolds(session, fitter, options);
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);

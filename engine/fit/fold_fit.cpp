@@ -20,6 +20,7 @@
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
+#include "engine/fit/replayed_motion.hpp"
 #include "engine/fit/ring_folds.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -56,6 +57,14 @@ constexpr double kSmoothLeft = 0.01;
 constexpr double kWholeSheetTolerance = 1e-4;
 // At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
 constexpr std::size_t kMostRegistrations = 24;
+// How far a replayed sheet may lie from the target, after the motion left, in target diagonals.
+constexpr double kRestTolerance = 1e-3;
+// How near (radians, and of the diagonal) a motion left is taken for one of one or two planes.
+constexpr double kRestSnap = 1e-3;
+// Whole-sheet folds made and measured, at most, before the unfolding gives way to the search.
+constexpr std::size_t kWholeSheetTries = 6;
+// Seeds spread over the sheet that the last fold read is made from, each its own images.
+constexpr std::size_t kLastSeeds = 16;
 // Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
 constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
@@ -1110,10 +1119,98 @@ class FitRun {
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
     // time may cut it at the other; of every motion, the fewest.
     // Fewest planes first, over every motion: one plane is cheap to try, three a search.
-    bool atEnd = false;
-    std::vector<ReflectionPlane> planes;
-    TargetUnfolding moved;
-    std::vector<std::optional<std::vector<glm::dvec3>>> lastAt(motions.size());
+    const Symmetry* symmetry = session_.symmetry();
+    const double tolerance = kRestTolerance * fitter_.targetDiagonal();
+    // The plan moved back by `motion` (onto the sheet).
+    auto movedBackBy = [&](const RigidMotion& motion) {
+      const RigidMotion back{glm::inverse(motion.linear),
+                             -(glm::inverse(motion.linear) * motion.offset)};
+      TargetUnfolding movedBack = plan;
+      for (glm::dvec3& p : movedBack.unfolded) p = back(p);
+      for (UnfoldedFold& fold : movedBack.folds)
+        fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
+      return movedBack;
+    };
+    // Where the whole-sheet folds come last: the sheet folded by the folds read (moved back by
+    // a motion), and the motion left to make on it.
+    struct FoldedFirst {
+      std::vector<glm::dvec3> positions;
+      RigidMotion rest;
+      TargetUnfolding movedBack;
+      std::optional<glm::dvec2> lastSeed;  // the last fold read made from this seed
+    };
+    auto foldedFirst = [&](const RigidMotion& motion,
+                           std::optional<glm::dvec2> lastSeed) -> std::optional<FoldedFirst> {
+      TargetUnfolding movedBack = movedBackBy(motion);
+      const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
+      bool everyFoldRead = false;
+      replay(movedBack, *lastBranch, session_.initial(), reading, options_.maxFolds, &everyFoldRead,
+             lastSeed);
+      if (!everyFoldRead) return std::nullopt;
+      if (!symmetry)
+        return FoldedFirst{lastBranch->fixed().positions, motion, std::move(movedBack)};
+      // A symmetric fold's image may have moved the whole sheet (its plane missed it), and the
+      // replay brings it again: what is left to move is measured, not the copy's motion.
+      std::vector<ReflectionPlane> read;
+      for (const UnfoldedFold& fold : movedBack.folds) read.push_back(fold.plane);
+      const std::optional<RigidMotion> rest =
+          restOntoTarget(session_.initial(), lastBranch->fixed(), movedBack.unfolded,
+                         fitter_.target(), read, tolerance);
+      if (!rest) return std::nullopt;
+      // Measured, it is about 1e-6 off: made exactly what one or two planes make where it lies
+      // that near (the sequence made is measured before it is kept).
+      return FoldedFirst{lastBranch->fixed().positions,
+                         snappedToFewPlanes(*rest, kRestSnap, kRestSnap * fitter_.targetDiagonal()),
+                         std::move(movedBack), lastSeed};
+    };
+    // Each way's options: the replay itself, and (symmetric) the same folds moved by a symmetry
+    // of the sheet where that leaves fewer whole-sheet folds to make (replayed_motion.hpp).
+    // A seed that makes a form other than the target's leaves no motion (restOntoTarget).
+    auto optionsFor = [&](const RigidMotion& motion) {
+      std::vector<FoldedFirst> options;
+      // The last fold read made from its own seed, then from seeds spread over the sheet: a
+      // symmetric fold brings the images of its seed it does not move itself, and one whose
+      // image moved the sheet whole is made again only from a seed whose images do the same
+      // (the images, and the side the fold moves, make what is left to move).
+      std::vector<std::optional<glm::dvec2>> seeds{std::nullopt};
+      if (symmetry && !plan.folds.empty()) {
+        const Sheet& initial = session_.initial();
+        const std::size_t stride = 1 + initial.vertexCount() / kLastSeeds;
+        for (VertexIndex v = stride / 2; v < initial.vertexCount(); v += stride)
+          seeds.push_back(initial.development[v]);
+      }
+      for (const std::optional<glm::dvec2>& seed : seeds) {
+        if (reading.passed()) break;
+        std::optional<FoldedFirst> first = foldedFirst(motion, seed);
+        if (!first) continue;
+        const RigidMotion rest = first->rest;
+        options.push_back(std::move(*first));
+        if (!symmetry) continue;
+        for (const FewerPlaneRest& fewer :
+             fewerPlaneRests(rest, symmetry->centre, symmetry->images())) {
+          if (reading.passed()) break;
+          if (!isSymmetryOf(fewer.symmetry, session_.initial(), tolerance)) continue;
+          const RigidMotion& s = fewer.symmetry;
+          const glm::dmat3 sBack = glm::transpose(s.linear);
+          // T s^-1: the folds read moved by s (the seed with them).
+          const RigidMotion moved{motion.linear * sBack,
+                                  motion.offset - motion.linear * (sBack * s.offset)};
+          std::optional<glm::dvec2> movedSeed;
+          const Sheet& initial = session_.initial();
+          if (seed) {
+            const std::optional<SurfacePoint> at =
+                locateDevelopmentPoint(initial, *seed, 1e-6 * sheetSize(initial));
+            if (!at) continue;
+            movedSeed =
+                developmentOf(initial, closestSurfacePoint(initial, s(positionOf(initial, *at))));
+          }
+          if (std::optional<FoldedFirst> other = foldedFirst(moved, movedSeed))
+            options.push_back(std::move(*other));
+        }
+      }
+      return options;
+    };
+    std::vector<std::optional<std::vector<FoldedFirst>>> lastAt(motions.size());
     // A symmetric design's fold brings its images, read as folds of their own: the folds read
     // take at least one group per `perFold` of them (the sequence is counted once made, below).
     const std::size_t perFold =
@@ -1121,7 +1218,16 @@ class FitRun {
     const std::size_t readGroups = (plan.folds.size() + perFold - 1) / perFold;
     const std::size_t most = std::min<std::size_t>(
         5, options_.maxFolds > readGroups ? options_.maxFolds - readGroups : 0);
-    for (int pass = 0; pass < 2 && planes.empty(); ++pass) {
+    // Each way found is made and measured: one that does not reach (a symmetric design's images
+    // made about the centre a first whole-sheet fold moved) leaves the next its turn.
+    std::size_t tries = 0;
+    auto tryPlanes = [&](const std::vector<ReflectionPlane>& planes, bool atEnd,
+                         const TargetUnfolding& read, std::optional<glm::dvec2> lastSeed) {
+      if (planes.empty() || planes.size() + readGroups > options_.maxFolds) return false;
+      ++tries;
+      return makeWholeSheetFolds(planes, atEnd, plan, read, lastSeed, deadline);
+    };
+    for (int pass = 0; pass < 2 && tries < kWholeSheetTries; ++pass) {
       if (pass == 1) {
         if (reading.passed()) return false;
         motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
@@ -1136,47 +1242,49 @@ class FitRun {
       // those folds make images the target lacks. Every way then, past one plane.
       // With no fold read (the whole target a moved copy), any way is right: whole-sheet folds
       // move their grabs' images too and bring none.
+      // Where they come last (a symmetric design's), what is left is measured on the replayed
+      // sheet, which has the target's form: any count, then.
       const std::size_t upTo = pass == 0 && session_.symmetry() && !plan.folds.empty()
                                    ? std::min<std::size_t>(most, 1)
                                    : most;
-      for (std::size_t count = 1; count <= upTo && planes.empty(); ++count)
-        for (std::size_t k = 0; k < 2 * motions.size() && planes.empty(); ++k) {
-          if (reading.passed()) return false;
+      for (std::size_t count = 1; count <= most && tries < kWholeSheetTries; ++count)
+        for (std::size_t k = 0; k < 2 * motions.size() && tries < kWholeSheetTries; ++k) {
+          if (reading.passed() || deadline.passed()) return false;
           // A symmetric design's images are made about the sheet's own centre and axis, which
           // a whole-sheet fold made first moves: last for it, then.
           const bool last = (k >= motions.size()) != (session_.symmetry() != nullptr);
           const RigidMotion& motion = motions[k % motions.size()];
-          const RigidMotion back{glm::inverse(motion.linear),
-                                 -(glm::inverse(motion.linear) * motion.offset)};
-          TargetUnfolding movedBack = plan;
-          for (glm::dvec3& p : movedBack.unfolded) p = back(p);
-          for (UnfoldedFold& fold : movedBack.folds)
-            fold.plane = {back(fold.plane.point), glm::normalize(back.linear * fold.plane.normal)};
-          std::optional<std::vector<glm::dvec3>>& folded = lastAt[k % motions.size()];
-          if (last && !folded) {  // the sheet folded by the folds read, once per motion
-            const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
-            bool everyFoldRead = false;
-            replay(movedBack, *lastBranch, session_.initial(), reading, options_.maxFolds,
-                   &everyFoldRead);
-            folded = everyFoldRead ? lastBranch->fixed().positions : std::vector<glm::dvec3>{};
+          if (!last) {
+            if (count > upTo) continue;
+            if (tryPlanes(wholeSheetReflections(motion, session_.initial().positions, count), false,
+                          plan, std::nullopt))
+              return true;
+            continue;
           }
-          if (last && folded->empty()) continue;
-          planes =
-              wholeSheetReflections(motion, last ? *folded : session_.initial().positions, count);
-          if (!planes.empty()) {
-            atEnd = last;
-            moved = std::move(movedBack);
-          }
+          std::optional<std::vector<FoldedFirst>>& options = lastAt[k % motions.size()];
+          if (!options) options = optionsFor(motion);  // replays, once per motion
+          for (const FoldedFirst& option : *options)
+            if (tryPlanes(wholeSheetReflections(option.rest, option.positions, count), true,
+                          option.movedBack, option.lastSeed))
+              return true;
         }
     }
-    if (planes.empty() || planes.size() + readGroups > options_.maxFolds || deadline.passed())
-      return false;
+    return false;
+  }
+
+  // The whole-sheet folds `planes` and the folds read (`read`, moved back onto the sheet where the
+  // planes come last, its last fold from `lastSeed` where given), made and offered: true when
+  // they reach.
+  bool makeWholeSheetFolds(const std::vector<ReflectionPlane>& planes, bool atEnd,
+                           const TargetUnfolding& plan, const TargetUnfolding& read,
+                           std::optional<glm::dvec2> lastSeed, const Deadline& deadline) {
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence sequence;
     if (atEnd) {
-      const FoldSequence read = replay(moved, *branch, session_.initial(), deadline);
-      sequence.folds = read.folds;
-      sequence.groups = read.groups;
+      const FoldSequence made =
+          replay(read, *branch, session_.initial(), deadline, 0, nullptr, lastSeed);
+      sequence.folds = made.folds;
+      sequence.groups = made.groups;
     }
     for (const ReflectionPlane& plane : planes) {
       const std::size_t before = branch->foldCount();
@@ -1190,10 +1298,10 @@ class FitRun {
     }
     if (!atEnd) {
       const Sheet reached = branch->fixed();
-      const FoldSequence read =
+      const FoldSequence made =
           replay(plan, *branch, reached, deadline, options_.maxFolds - sequence.groups.size());
-      sequence.folds.insert(sequence.folds.end(), read.folds.begin(), read.folds.end());
-      sequence.groups.insert(sequence.groups.end(), read.groups.begin(), read.groups.end());
+      sequence.folds.insert(sequence.folds.end(), made.folds.begin(), made.folds.end());
+      sequence.groups.insert(sequence.groups.end(), made.groups.begin(), made.groups.end());
     }
     if (sequence.groups.size() > options_.maxFolds) return false;
     return offer(std::move(sequence), *branch);
@@ -1207,8 +1315,8 @@ class FitRun {
   // plane an image already made is skipped. `everyFoldRead`, when given: whether every fold read
   // was made (or an image made it), none left for a failure, the deadline or `most`.
   FoldSequence replay(const TargetUnfolding& plan, FoldSession& branch, const Sheet& seedsOn,
-                      const Deadline& deadline, std::size_t most = 0,
-                      bool* everyFoldRead = nullptr) const {
+                      const Deadline& deadline, std::size_t most = 0, bool* everyFoldRead = nullptr,
+                      std::optional<glm::dvec2> lastSeed = std::nullopt) const {
     if (most == 0) most = options_.maxFolds;
     const Symmetry* symmetry = session_.symmetry();
     const double size = sheetSize(session_.initial());
@@ -1233,7 +1341,8 @@ class FitRun {
       if (symmetry && madeAlready(plan.folds[k].plane)) continue;
       if (planned.groups.size() >= most || deadline.passed()) return planned;
       const std::size_t before = branch.foldCount();
-      if (!makeRead(plan, k, seeds[k], branch)) return planned;
+      const bool seedGiven = lastSeed && k + 1 == plan.folds.size();
+      if (!makeRead(plan, k, seedGiven ? *lastSeed : seeds[k], branch, seedGiven)) return planned;
       planned.folds.insert(
           planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
           branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
@@ -1249,7 +1358,7 @@ class FitRun {
   // that grab): then other seeds on the same side of the plane, nearest the symmetry's centre
   // first (their images the likeliest moved too), until every image made is a fold read.
   bool makeRead(const TargetUnfolding& plan, std::size_t k, const glm::dvec2& seed,
-                FoldSession& branch) const {
+                FoldSession& branch, bool seedGiven = false) const {
     const ReflectionPlane& plane = plan.folds[k].plane;
     const std::size_t before = branch.foldCount();
     const Symmetry* symmetry = session_.symmetry();
@@ -1280,7 +1389,7 @@ class FitRun {
       return branch.commit();
     };
     if (!make(seed)) return false;
-    if (!symmetry || imagesRead()) return true;
+    if (!symmetry || seedGiven || imagesRead()) return true;
     branch.undo();
     const Sheet& initial = session_.initial();
     std::vector<std::pair<double, VertexIndex>> others;
