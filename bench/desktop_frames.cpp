@@ -163,10 +163,11 @@ int main(int argc, char** argv) {
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   shell("kill " + slurp(xvfbPid) + " 2>/dev/null");
 
-  // Each line: the frame's duration, the frame thread's CPU time (ms), and a note.
+  // Each line: the frame's duration, the frame thread's CPU time (ms), the wall time of each step
+  // of the frame loop (phases=, in kPhases' order), and a note.
   struct FrameTime {
     double wallMs = 0.0, cpuMs = 0.0;
-    std::string note;
+    std::string note, phases;
   };
   std::vector<FrameTime> all;
   {
@@ -175,7 +176,8 @@ int main(int argc, char** argv) {
       std::istringstream fields(line);
       FrameTime frame;
       if (fields >> frame.wallMs >> frame.cpuMs) {
-        fields >> frame.note;
+        for (std::string token; fields >> token;)
+          (token.rfind("phases=", 0) == 0 ? frame.phases : frame.note) = token;
         all.push_back(frame);
       }
     }
@@ -206,6 +208,14 @@ int main(int argc, char** argv) {
   }
   summary("frame duration", wall);
   summary("frame thread CPU", cpu);
+  // Where each frame over 50 ms spent its time: the loop's steps (the designer's --frame-times).
+  std::printf(
+      "frames over 50 ms, each step's wall time (ms; events,panel,input,process,view,"
+      "scene,draw):\n");
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    if (frames[i].wallMs > 50.0)
+      std::printf("  frame %zu: %.1f ms, thread CPU %.1f ms, %s %s\n", i, frames[i].wallMs,
+                  frames[i].cpuMs, frames[i].phases.c_str(), frames[i].note.c_str());
   // A suggestion's latency: the frames after the one that asked, up to the one it joined. A
   // request followed by a newer one before its answer was abandoned (not counted).
   std::vector<double> latencies;

@@ -131,7 +131,8 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
   EXPECT_NE(frames.find("take_suggestion"), std::string::npos);
 
   // --frame-times (what bench/desktop_frames reads): each frame's duration and its thread's CPU
-  // time, the frame that asked for the suggestion and, later, the one it joined.
+  // time, the wall time of the frame loop's seven steps (within the frame), the frame that
+  // asked for the suggestion and, later, the one it joined.
   std::istringstream lines(slurp(times));
   std::vector<std::string> notes;
   std::size_t frameCount = 0;
@@ -141,6 +142,19 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
     ASSERT_TRUE(fields >> wallMs >> cpuMs) << line;
     EXPECT_GE(cpuMs, 0.0) << line;
     EXPECT_LE(cpuMs, wallMs + 1.0) << line;  // one thread's time, within the clocks' steps
+    std::string phases;
+    ASSERT_TRUE(fields >> phases && phases.rfind("phases=", 0) == 0) << line;
+    std::istringstream steps(phases.substr(7));
+    double sum = 0.0;
+    std::size_t stepCount = 0;
+    for (std::string step; std::getline(steps, step, ','); ++stepCount) {
+      EXPECT_GE(std::stod(step), 0.0) << line;
+      sum += std::stod(step);
+    }
+    EXPECT_EQ(stepCount, 7u) << line;
+    // Within the frame (the steps run between two of its clock reads; printed to 0.01 ms).
+    EXPECT_LE(sum, wallMs + 0.1) << line;
+    EXPECT_GT(sum, 0.0) << line;
     if (std::string note; fields >> note) notes.push_back(note);
   }
   EXPECT_GT(frameCount, 10u);

@@ -253,6 +253,48 @@ TEST(FoldFit, BringsASquareCloserToASaddleWithEveryFold) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
+// The distance the search reports while it runs (`fit`'s "searching" line) is the Chamfer distance
+// its samples measure, not the score it ranks folds by: that cuts every distance past 1% of the
+// diagonal to a tenth, and read as a distance it called a sheet 4 mm from a target 25 mm away.
+// One fold toward a saddle leaves most of the sheet well past that cut.
+TEST(FoldFit, ReportsWhileSearchingTheChamferDistanceItsSamplesMeasure) {
+  TriangleMesh saddle;
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = 0.2 * (double(i) / n - 0.5), y = 0.2 * (double(j) / n - 0.5);
+      saddle.positions.push_back({x, y, (x * x - y * y) / 0.15});
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = j * (n + 1) + i;
+      saddle.triangles.push_back({a, a + 1, a + n + 2});
+      saddle.triangles.push_back({a, a + n + 2, a + n + 1});
+    }
+  FitSettings settings = quickSettings();
+  settings.useCreases = false;
+  settings.proposals = 60;  // few candidates: any fold kept is measured the same way
+  settings.refineEvaluations = 30;
+  const FoldFitter fitter(saddle, settings);
+  FoldSession session(makeSurface("square", {{"resolution", 20}}));
+  FitOptions options = quickOptions(1);
+  options.pleats = 0;
+  std::vector<double> reported;
+  options.searching = [&](std::size_t, double distance, double) { reported.push_back(distance); };
+  const FitResult result = fitFolds(session, fitter, options);
+  ASSERT_EQ(result.steps.size(), 2u);
+  ASSERT_FALSE(reported.empty());
+  // The sheet stays centimetres off the saddle's corners: far past the score's cut.
+  const FitProgress& fold = result.steps.back();
+  ASSERT_GT(fold.chamfer, 0.01 * fold.diagonal);
+  EXPECT_NEAR(reported.back(), fold.chamfer, 0.15 * fold.chamfer);
+  // The same for the search's measure of any sheet, against the exact one.
+  const SurfaceDistance exact = surfaceDistance(meshOf(session.fixed()), saddle, 4000);
+  const SurfaceDistance approximate = fitter.approximateMeasure(session.fixed());
+  EXPECT_NEAR(approximate.chamfer, exact.chamfer, 0.15 * exact.chamfer);
+  EXPECT_NEAR(approximate.hausdorff, exact.hausdorff, 0.15 * exact.hausdorff);
+}
+
 // The target passes the tube through itself; the fit does not, unless allowed.
 TEST(FoldFit, NeverPassesTheSheetThroughItselfUnlessAllowed) {
   const Sheet tube = makeSurface("cylinder", {{"resolution", 16}});

@@ -11,11 +11,13 @@
 
 #include <time.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -229,6 +231,9 @@ struct FrameTime {
   float wallMs = 0.0f;
   float cpuMs = 0.0f;
   const char* note = "";
+  // Wall time of each step of the frame loop (DesignerWindow::run), to tell which one a slow
+  // frame waited in.
+  std::array<float, 7> phaseMs{};
 };
 
 double threadCpuMs() {
@@ -239,9 +244,11 @@ double threadCpuMs() {
 
 void writeFrameTimes(const std::string& path, const std::vector<FrameTime>& frameTimes) {
   std::string text;
-  char line[64];
+  char line[160];
   for (const FrameTime& frame : frameTimes) {
-    std::snprintf(line, sizeof line, "%.3f %.3f%s%s\n", frame.wallMs, frame.cpuMs,
+    std::snprintf(line, sizeof line, "%.3f %.3f phases=%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f%s%s\n",
+                  frame.wallMs, frame.cpuMs, frame.phaseMs[0], frame.phaseMs[1], frame.phaseMs[2],
+                  frame.phaseMs[3], frame.phaseMs[4], frame.phaseMs[5], frame.phaseMs[6],
                   *frame.note ? " " : "", frame.note);
     text += line;
   }
@@ -283,7 +290,8 @@ class DesignerWindow {
   InputFrame nextInput();
   void process(InputFrame& input);
   void followView();
-  void drawScene(const InputFrame& input);
+  // sceneMade: called between making the scene and drawing it (--frame-times' phases).
+  void drawScene(const InputFrame& input, const std::function<void()>& sceneMade);
   void timeFrame();
 
   const DesignerOptions& options_;
@@ -315,6 +323,7 @@ class DesignerWindow {
   bool sheetShown_ = true;
   const TriangleMesh* framedTarget_ = nullptr;
   std::vector<FrameTime> frameTimes_;
+  std::array<float, 7> phaseMs_{};  // this frame's steps (FrameTime::phaseMs)
   double lastFrameCpuMs_ = 0.0;
   const char* frameNote_ = "";   // what the studio did this frame, for --frame-times
   SimulationPuller puller_;      // the mouse's pull of the simulated sheet
@@ -442,17 +451,31 @@ void DesignerWindow::run() {
   lastFrame_ = Clock::now();
   lastFrameCpuMs_ = threadCpuMs();
   while (!glfwWindowShouldClose(window_) && !state_.quit) {
+    Clock::time_point phaseStart = Clock::now();
+    std::size_t phase = 0;
+    const auto endPhase = [&] {
+      const Clock::time_point now = Clock::now();
+      phaseMs_[phase++] =
+          float(std::chrono::duration<double, std::milli>(now - phaseStart).count());
+      phaseStart = now;
+    };
     glfwPollEvents();
     {
       const glm::dvec2 size = windowSize(window_);
       state_.input.mouseRay(state_.camera.ray(state_.mouse, size.x, size.y), shownSheet(doc_),
                             doc_.core->worldFromSheet());
     }
+    endPhase();
     drawPanel();
+    endPhase();
     InputFrame input = nextInput();
+    endPhase();
     process(input);
+    endPhase();
     followView();
-    drawScene(input);
+    endPhase();
+    drawScene(input, endPhase);
+    endPhase();
     timeFrame();
   }
   frames_.waitAll();
@@ -571,13 +594,14 @@ void DesignerWindow::followView() {
   }
 }
 
-void DesignerWindow::drawScene(const InputFrame& input) {
+void DesignerWindow::drawScene(const InputFrame& input, const std::function<void()>& sceneMade) {
   tracker_.update(*doc_.core, renderer_);
   lastScene_ = sceneForInteraction(*doc_.core, input, state_.camera.camera(), ground_,
                                    {creasePatternPanel_, /*handMarkers=*/false, &panelCache_,
                                     goal_.mesh(), goal_.offeredResult(*doc_.core)});
   tracker_.describe(*doc_.core, lastScene_.sheet, panel_.strainColours());
   stats_.drawnTriangles = lastScene_.sheet.sheet->triangleCount();
+  sceneMade();
   ImDrawData* panel = ImGui::GetDrawData();
   drawFrame(frames_, target_, renderer_, lastScene_, [panel](VkCommandBuffer commands) {
     ImGui_ImplVulkan_RenderDrawData(panel, commands);
@@ -590,7 +614,8 @@ void DesignerWindow::timeFrame() {
   lastFrame_ = now;
   const double cpuMs = threadCpuMs();
   if (!options_.frameTimes.empty())
-    frameTimes_.push_back({float(stats_.frameMs), float(cpuMs - lastFrameCpuMs_), frameNote_});
+    frameTimes_.push_back(
+        {float(stats_.frameMs), float(cpuMs - lastFrameCpuMs_), frameNote_, phaseMs_});
   lastFrameCpuMs_ = cpuMs;
   frameNote_ = "";
 }

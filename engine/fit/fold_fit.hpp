@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "engine/fit/deadline.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
@@ -95,7 +96,7 @@ struct FitSettings {
 struct FoldSuggestion {
   std::vector<FoldRecord> folds;  // the fold, then its symmetric images (one group)
   Sheet sheet;                    // the sheet with them
-  double before = 0.0;            // the search's distance (approximate) before and after, metres
+  double before = 0.0;            // the search's score before and after (approximateDistance)
   double after = 0.0;
   bool crease = false;  // through a plane of the target's creases
 };
@@ -129,11 +130,18 @@ class FoldFitter {
   // checkTargetAgainst with this target.
   void checkAgainst(const Sheet& sheet) const;
 
-  // The approximate Chamfer distance of a folded form to the target (what the search lowers).
+  // The search's score of a folded form (what it lowers): a robust Chamfer distance, whose
+  // distances count at a tenth past 1% of the target's diagonal (FitSettings::robustDistance;
+  // toward a smooth target with no axis, the target's side in full), so it is no distance to
+  // print (a sheet 25 mm off scores 4 mm): approximateMeasure gives that.
   double approximateDistance(const Sheet& sheet) const;
   // The same for sheet samples given as points with unit normals, spaced about 2 * radius.
   double approximateDistance(const std::vector<glm::dvec3>& points,
                              const std::vector<glm::dvec3>& normals, double radius) const;
+  // What the search's samples say of a folded form, without the cut the score makes: each side's
+  // largest and mean distance, and their Hausdorff and Chamfer distances, as surfaceDistance
+  // measures them exactly (surface_distance.hpp).
+  SurfaceDistance approximateMeasure(const Sheet& sheet) const;
 
   // Up to `count` next folds for the design `session` holds (its symmetry, if any, makes each
   // fold's images), best first, each bringing it closer to the target; none when no fold found
@@ -205,7 +213,7 @@ struct FitOptions {
   // After the start, then after each fold kept, with the session holding it.
   std::function<void(const FitProgress&)> progress;
   // While searching, after the unfolding and after each depth of the beam: folds, the best
-  // approximate distance, seconds.
+  // sequence's Chamfer distance as the search's samples measure it (approximateMeasure), seconds.
   std::function<void(std::size_t, double, double)> searching;
 };
 
