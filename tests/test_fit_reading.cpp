@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <thread>
 
@@ -297,6 +298,60 @@ TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
   EXPECT_GE(session.foldCount(), 1u);
   testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// What a fit reads of a smooth target: only what could be the sheet moved whole. A curved shape
+// (a vase: no reflection design has an angle defect) or a flat one of another area (every fold
+// keeps the area) has no creases to read, and reading it cost a third of a fit's time (half on a
+// scan's noise) for nothing; the cone moved whole above, a flat sheet moved whole and a folded
+// target are read as before.
+TEST(FitReading, ASmoothTargetIsReadOnlyWhereItMayBeTheSheetMovedWhole) {
+  const Sheet cylinder = makeSurface("cylinder");
+  TriangleMesh vase;  // about y: a belly between a narrower foot and neck, 48 around, 30 along
+  const int around = 48, along = 30;
+  for (int j = 0; j <= along; ++j) {
+    const double h = -0.1 + 0.2 * j / along;
+    const double r = 0.04 + 0.015 * std::cos(std::numbers::pi * h / 0.2);
+    for (int i = 0; i < around; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / around;
+      vase.positions.push_back({r * std::cos(a), h, r * std::sin(a)});
+    }
+  }
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const auto v = [&](int jj, int ii) { return std::uint32_t(jj * around + ii % around); };
+      vase.triangles.push_back({v(j, i), v(j + 1, i), v(j + 1, i + 1)});
+      vase.triangles.push_back({v(j, i), v(j + 1, i + 1), v(j, i + 1)});
+    }
+  const FoldFitter toVase(vase);
+  ASSERT_TRUE(toVase.smoothTarget());
+  EXPECT_FALSE(toVase.readsCreasesFrom(cylinder));
+
+  const Sheet square = makeSurface("square");
+  TriangleMesh wider = meshOf(makeSurface("square", {{"size", 1.5 * sheetSize(square)}}));
+  const FoldFitter toWider(wider);
+  ASSERT_TRUE(toWider.smoothTarget());
+  EXPECT_FALSE(toWider.readsCreasesFrom(square));
+  // The square itself, moved whole (turned and shifted): it may be the sheet moved whole.
+  TriangleMesh moved = meshOf(square);
+  for (glm::dvec3& p : moved.positions) p = glm::dvec3(p.y, p.z + 0.03, p.x);
+  EXPECT_TRUE(FoldFitter(moved).readsCreasesFrom(square));
+
+  const Sheet cone = makeSurface("cone", {{"resolution", 24}});
+  FoldSession folding(cone);
+  for (const glm::dvec3& along : {glm::dvec3(0.6, 0.6, 0.3), glm::dvec3(0.4, 0.0, 0.9)})
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.12));
+  const FoldFitter toMovedCone(testing::exportedWithoutDevelopment(folding.fixed()));
+  ASSERT_TRUE(toMovedCone.smoothTarget());
+  EXPECT_TRUE(toMovedCone.readsCreasesFrom(cone));
+
+  FoldSession creasing(square);  // a corner folded over: creased, read
+  creasing.beginDragNear(square.positions.front());
+  creasing.updateDrag(0.6 * square.positions.front() + glm::dvec3(0.0, 0.0, 0.05));
+  ASSERT_TRUE(creasing.commit());
+  const FoldFitter toFolded(meshOf(creasing.fixed()));
+  ASSERT_FALSE(toFolded.smoothTarget());
+  EXPECT_TRUE(toFolded.readsCreasesFrom(square));
 }
 
 // A symmetric sheet (a star) lies on a moved copy of itself several ways, one its symmetry times

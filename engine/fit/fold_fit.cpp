@@ -70,6 +70,9 @@ constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
 // the start's or the fold before's (FitRun::measure).
 constexpr double kHausdorffSlack = 1.1;
+// A smooth target within this share of the sheet's area may be the sheet moved whole
+// (FoldFitter::readsCreasesFrom): a catalogue sheet at another resolution differs by about 1%.
+constexpr double kSameArea = 0.05;
 // A fit within this much of the diagonal (Hausdorff) reaches the target.
 constexpr double kReached = 0.01;
 // A pleat that brings the sheet this much closer (the search's distance) stands for the step
@@ -286,6 +289,8 @@ struct FoldFitter::Target {
   double robust = kInfinity;           // metres: where a distance stops counting in full
   std::optional<RevolutionAxis> axis;  // a surface of revolution's (profile_folds.hpp)
   bool smooth = false;                 // isSmoothOrScanned (start_surface.hpp)
+  bool curved = false;                 // isCurved (start_surface.hpp)
+  double area = 0.0;
   // Toward a smooth shape with no axis (a saddle), the target's side counted in full (score).
   bool coverInFull = false;
 
@@ -397,6 +402,8 @@ FoldFitter::FoldFitter(TriangleMesh target, const FitSettings& settings)
   t.robust = settings.robustDistance * t.diagonal;
   // Rings and pleats are for shapes reflections do not reach; a folded tube is no vase.
   t.smooth = isSmoothOrScanned(t.mesh);
+  t.curved = t.smooth && isCurved(t.mesh);
+  t.area = area;
   // The axis decides the score too, with rings or without (the studio's one-drag offers).
   const std::optional<RevolutionAxis> axis =
       t.smooth ? revolutionAxis(t.queries) : std::optional<RevolutionAxis>();
@@ -416,6 +423,14 @@ bool FoldFitter::smoothTarget() const {
 
 bool FoldFitter::revolutionTarget() const {
   return target_->axis.has_value();
+}
+
+bool FoldFitter::readsCreasesFrom(const Sheet& initial) const {
+  if (!settings_.useCreases) return false;
+  const Target& t = *target_;
+  if (!t.smooth) return true;
+  const double sheetArea = surfaceArea(meshOf(initial));
+  return !t.curved && std::abs(t.area - sheetArea) <= kSameArea * sheetArea;
 }
 
 double FoldFitter::targetDiagonal() const {
@@ -817,8 +832,9 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
   std::vector<Drag> drags;
   const std::vector<ReflectionPlane> noPlanes;
   for (const ReflectionPlane& crease :
-       settings_.useCreases ? creasePlanesAbove(sharpEdgeThreshold(meshOf(session.initial())))
-                            : noPlanes) {
+       readsCreasesFrom(session.initial())
+           ? creasePlanesAbove(sharpEdgeThreshold(meshOf(session.initial())))
+           : noPlanes) {
     for (const double side : {-1.0, 1.0}) {
       const ReflectionPlane plane{crease.point, side * crease.normal};
       std::vector<std::uint32_t> behind;
@@ -930,8 +946,10 @@ class FitRun {
     best_ = bestMonotone_ = root;
     result_.stopReason = "reached the most folds asked for";
     // A bowl from a flat sheet (the nested rings' start) has no creases to read: on a scan the
-    // unfolding reads its noise, and took the whole time.
-    if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) && unfoldTarget()) {
+    // unfolding reads its noise, and took the whole time; nor has a curved shape (a vase, a
+    // saddle) or one of another area than the sheet (readsCreasesFrom).
+    if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) &&
+        fitter_.readsCreasesFrom(session_.initial()) && unfoldTarget()) {
       result_.stopReason = "the target unfolded: its creases named every fold";
       readingCut_ = false;  // what it read reached the target: no run finds more
     } else {

@@ -116,6 +116,15 @@ class FoldFitter {
   bool smoothTarget() const;
   // Whether rings are drawn about the target's axis (a smooth surface of revolution).
   bool revolutionTarget() const;
+  // Whether a fit from `initial` (a design's sheet before its folds) reads the target's creases
+  // (the unfolding fitFolds tries first, and proposals through crease planes). A target folded
+  // by reflections has creases to read. A smooth target or a scan may still be the sheet moved
+  // whole (folds whose planes missed it), which the unfolding registers, so it is read too
+  // unless it cannot be one: it is curved (isCurved: every reflection design is isometric to
+  // its development) or its area differs from the sheet's by over 5% (every fold keeps the
+  // area). Reading a vase, a bowl or a saddle finds nothing and took a third of a fit's time
+  // (the whole-sheet registration), reading a scan's noise half of it (its crease planes).
+  bool readsCreasesFrom(const Sheet& initial) const;
   const FitSettings& settings() const { return settings_; }
 
   // checkTargetAgainst with this target.

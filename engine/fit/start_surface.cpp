@@ -179,6 +179,10 @@ bool curvedAtMostVertices(const TriangleMesh& target) {
 
 }  // namespace
 
+bool isCurved(const TriangleMesh& target) {
+  return curvedAtMostVertices(target);
+}
+
 bool isSmoothOrScanned(const TriangleMesh& target) {
   CreasePlaneOptions options;
   options.minDihedralDegrees = kSmoothBendDegrees;

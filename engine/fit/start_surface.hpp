@@ -74,6 +74,12 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = ""
 // gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp).
 bool isSmoothOrScanned(const TriangleMesh& target);
 
+// Whether the target is curved like no reflection design is: a quarter of its interior vertices
+// have an angle defect (a folded sheet, creases and all, is isometric to its flat development,
+// so it has none; a vase, a bowl, a saddle or a scan's noise has one nearly everywhere). A fine
+// grid of a gentle shape may fall under the defect's floor (1e-3 rad) and read as not curved.
+bool isCurved(const TriangleMesh& target);
+
 // The target's rotational symmetry among the sheet's ("rotational:12:y"), or "" for none.
 std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial);
 
