@@ -55,9 +55,11 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
 // Stops at `deadline` with the ways found by then: checked at every step of each refinement (a
 // refinement on every vertex of a large sheet takes seconds), so it returns within about one
 // step (one closest-point pass) of the deadline; a refinement cut short counts no way.
+// `steps`, when given, counts the refinement steps taken (each one closest-point pass over the
+// points refined): a measure of the work that does not depend on the clock.
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
                                               double tolerance, std::size_t most,
-                                              const Deadline& deadline = {});
+                                              const Deadline& deadline = {}, int* steps = nullptr);
 
 // Planes, in folding order, whose reflections make `motion` and each miss the sheet (`points`:
 // its vertices) where the earlier ones left it. Empty for the identity.
