@@ -6,9 +6,13 @@
 //
 // registerSheetOnto: the rigid motion that lays the sheet on a moved copy of itself. Started from
 // the principal axes of area-uniform samples (every sign, and turns about each axis, since a
-// square's or a disk's axes are not unique), the best starts refined by ICP [Besl & McKay 1992]
-// against exact closest points, each step Umeyama's closed form [Umeyama 1991] (an improper
-// motion as a proper one after a fixed mirror).
+// square's or a disk's axes are not unique), the best starts refined by ICP against exact
+// closest points, each step point-to-plane [Chen & Medioni 1992] Gauss-Newton damped as
+// Levenberg-Marquardt, with a second row along the surface for a point past the copy's boundary
+// (an improper motion as a proper one after a fixed mirror). Refined on every boundary vertex:
+// on a sheet with a near-continuous symmetry (a disk, a 96-gon, turned about its normal; a slit
+// cylinder about its axis) only the corners or the slit hold the turn, and point-to-point steps
+// [Besl & McKay 1992], which the interior pins where it is, slid there for hundreds of steps.
 //
 // wholeSheetReflections: reflections whose product is the motion, each plane missing the sheet as
 // it lies then, so each is a fold of the whole sheet: one plane (a mirror), two (a turn about a
