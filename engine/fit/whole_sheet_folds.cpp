@@ -83,33 +83,123 @@ double meanDistance(const Pose& pose, const std::vector<Eigen::Vector3d>& points
   return sum / double(std::max<std::size_t>(1, points.size()));
 }
 
-// Point-to-point ICP against the exact closest points, Umeyama's closed form each step. Stops
-// at `deadline` too, checked every step: one refinement on every vertex of a large sheet takes
-// seconds, so a check between refinements alone overran the fit's --time.
-Pose refine(Pose pose, const std::vector<Eigen::Vector3d>& points,
-            const SurfaceDistanceQuery& moved, double scale, const Deadline& deadline,
-            int iterations = 200) {
-  Eigen::Matrix3Xd source(3, points.size()), target(3, points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    source.col(Eigen::Index(i)) = pose.mirrored ? Eigen::Vector3d(kMirror * points[i]) : points[i];
-  double last = 1e300;
-  for (int iteration = 0; iteration < iterations; ++iteration) {
-    if (deadline.passed()) break;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const Eigen::Vector3d at = pose.rotation * source.col(Eigen::Index(i)) + pose.offset;
-      const Eigen::Vector3d q = eigenOf(moved.closestPoint(glmOf(at)));
-      target.col(Eigen::Index(i)) = q;
-      sum += (q - at).norm();
-    }
-    pose.residual = sum / double(std::max<std::size_t>(1, points.size()));
-    // Far below any tolerance a caller checks (1e-4 of the diagonal): more is time only.
-    if (pose.residual < 1e-8 * scale || !(pose.residual < last - 1e-14 * scale)) break;
-    last = pose.residual;
-    const Eigen::Matrix4d m = Eigen::umeyama(source, target, false);
-    pose.rotation = m.topLeftCorner<3, 3>();
-    pose.offset = m.topRightCorner<3, 1>();
+// Points of the sheet with its unit normals there: what a refinement lays on the copy.
+struct Anchors {
+  std::vector<Eigen::Vector3d> points, normals;
+  void add(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+    points.push_back(point);
+    normals.push_back(normal);
   }
+};
+
+// The vertices' area-weighted normals.
+std::vector<Eigen::Vector3d> vertexNormals(const TriangleMesh& mesh) {
+  std::vector<Eigen::Vector3d> normals(mesh.positions.size(), Eigen::Vector3d::Zero());
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                    mesh.positions[t[2]] - mesh.positions[t[0]]);
+    for (const std::uint32_t v : t) normals[v] += eigenOf(n);
+  }
+  for (Eigen::Vector3d& n : normals)
+    n = n.norm() > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::UnitZ();
+  return normals;
+}
+
+// Gauss-Newton on the distance to the copy [Chen & Medioni 1992, point to plane], damped as
+// Levenberg-Marquardt [Marquardt 1963], each step against the exact closest points. A point
+// off the copy across its surface is held along the sheet's normal there; one off it along the
+// surface (past the copy's boundary: a corner of a 96-gon turned, a slit's edge) along the way
+// back too. Point-to-point steps [Besl & McKay 1992] hold every point to its closest point, so
+// on a sheet with a near-continuous symmetry (a disk turned about its normal, a cylinder about
+// its axis) the interior pinned the turn and only the few corners or the slit moved it: hundreds
+// of steps, seconds to a minute. Here the interior holds no turn it does not see, and a handful
+// of steps lands the corners. Stops at `deadline` too, checked every step: one step on every
+// vertex of a large sheet takes milliseconds to tens of them.
+Pose refine(Pose pose, const Anchors& anchors, const SurfaceDistanceQuery& moved, double scale,
+            const Deadline& deadline, int iterations = 100, int* steps = nullptr) {
+  const std::size_t count = anchors.points.size();
+  std::vector<Eigen::Vector3d> source(count), normal(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    source[i] = pose.mirrored ? Eigen::Vector3d(kMirror * anchors.points[i]) : anchors.points[i];
+    normal[i] = pose.mirrored ? Eigen::Vector3d(kMirror * anchors.normals[i]) : anchors.normals[i];
+  }
+  using Vector6d = Eigen::Matrix<double, 6, 1>;
+  using Matrix6d = Eigen::Matrix<double, 6, 6>;
+  struct Linearized {
+    Matrix6d normal = Matrix6d::Zero();
+    Vector6d gradient = Vector6d::Zero();
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  };
+  // The mean distance at `at`, and the normal equations of its rows about their centroid.
+  auto linearize = [&](const Pose& at, Linearized& system) {
+    std::vector<Eigen::Vector3d> placed(count);
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < count; ++i) {
+      placed[i] = at.rotation * source[i] + at.offset;
+      centre += placed[i];
+    }
+    centre /= double(std::max<std::size_t>(1, count));
+    system = {};
+    system.centre = centre;
+    double sum = 0.0;
+    auto row = [&](const Eigen::Vector3d& arm, const Eigen::Vector3d& direction, double value) {
+      Vector6d j;
+      j << arm.cross(direction), direction;
+      system.normal += j * j.transpose();
+      system.gradient += j * value;
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      // A pass on every vertex of a large sheet takes tens of milliseconds under load.
+      if (i % 512 == 511 && deadline.passed()) return 1e300;
+      const Eigen::Vector3d q = eigenOf(moved.closestPoint(glmOf(placed[i])));
+      const Eigen::Vector3d off = placed[i] - q, n = at.rotation * normal[i];
+      const double distance = off.norm();
+      sum += distance;
+      const Eigen::Vector3d arm = placed[i] - centre;
+      row(arm, n, n.dot(off));
+      // Off along the surface: its way back too (across it, the normal's row says it all).
+      const Eigen::Vector3d along = off - n * n.dot(off);
+      if (along.norm() > 0.3 * distance && along.norm() > 1e-12 * scale)
+        row(arm, along.normalized(), along.norm());
+    }
+    return sum / double(std::max<std::size_t>(1, count));
+  };
+  Linearized best;
+  if (deadline.passed()) return pose;
+  pose.residual = linearize(pose, best);
+  double damping = 1e-6;
+  int taken = 0;
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    // Far below any tolerance a caller checks (1e-4 of the diagonal): more is time only.
+    if (deadline.passed() || pose.residual < 1e-8 * scale || damping > 1e6) break;
+    ++taken;
+    // Marquardt's damping, and a floor for a turn no row sees (a disk on few points: any turn
+    // about its normal lies as well), which then stays as it is.
+    Matrix6d a = best.normal;
+    const double floor = 1e-12 * std::max(1e-300, a.diagonal().maxCoeff());
+    for (int k = 0; k < 6; ++k) a(k, k) += damping * a(k, k) + floor;
+    const Vector6d step = a.ldlt().solve(-best.gradient);
+    if (!step.allFinite()) break;
+    const Eigen::Vector3d w = step.head<3>();
+    const Eigen::Matrix3d turnBy =
+        w.norm() > 0.0 ? Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()
+                       : Eigen::Matrix3d::Identity();
+    Pose next = pose;
+    next.rotation = turnBy * pose.rotation;
+    next.offset = turnBy * (pose.offset - best.centre) + best.centre + step.tail<3>();
+    Linearized system;
+    next.residual = linearize(next, system);
+    if (next.residual < pose.residual) {
+      const bool stalled = next.residual > pose.residual - 1e-14 * scale;
+      pose = next;
+      best = system;
+      damping = std::max(1e-9, damping / 4.0);
+      if (stalled) break;
+    } else {
+      damping *= 8.0;
+    }
+  }
+  if (steps) *steps += taken;
   return pose;
 }
 
@@ -177,15 +267,28 @@ double highest(const glm::dvec3& n, const std::vector<glm::dvec3>& points) {
 
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
                                               double tolerance, std::size_t most,
-                                              const Deadline& deadline) {
+                                              const Deadline& deadline, int* steps) {
   if (sheet.triangles.empty() || moved.triangles.empty() || most == 0) return {};
   const SurfaceDistanceQuery movedSurface(moved, "target");
   const double scale = boundingDiagonal(sheet);
   const Frame from = principalFrame(sheet), to = principalFrame(moved);
-  std::vector<Eigen::Vector3d> coarse, fine, all;
-  for (const SurfaceSample& s : sampleSurface(sheet, 64, 5)) coarse.push_back(eigenOf(s.position));
-  for (const glm::dvec3& p : sheet.positions) all.push_back(eigenOf(p));
-  for (std::size_t i = 0; i < all.size(); i += 1 + all.size() / 600) fine.push_back(all[i]);
+  // Few area samples to tell the starts apart; then every boundary vertex (the corners and the
+  // slit, which hold a near-symmetric sheet's turn) and some 600 others; then every vertex.
+  Anchors coarse, fine, all;
+  std::vector<Eigen::Vector3d> coarsePoints;
+  for (const SurfaceSample& s : sampleSurface(sheet, 64, 5)) {
+    coarse.add(eigenOf(s.position), eigenOf(s.normal));
+    coarsePoints.push_back(eigenOf(s.position));
+  }
+  const std::vector<Eigen::Vector3d> normals = vertexNormals(sheet);
+  std::vector<char> onBoundary(sheet.positions.size(), 0);
+  for (const auto& [edge, faces] : edgeFaces(sheet))
+    if (faces.size() == 1) onBoundary[edge.first] = onBoundary[edge.second] = 1;
+  for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
+    all.add(eigenOf(sheet.positions[i]), normals[i]);
+    if (onBoundary[i] || i % (1 + sheet.positions.size() / 600) == 0)
+      fine.add(eigenOf(sheet.positions[i]), normals[i]);
+  }
 
   // Starts: the principal axes matched with every sign, and turned about each of the sheet's
   // axes (a square's or a disk's axes are any in its plane).
@@ -203,7 +306,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
         pose.mirrored = linear.determinant() < 0.0;
         pose.rotation = pose.mirrored ? Eigen::Matrix3d(linear * kMirror) : linear;
         pose.offset = to.centre - linear * from.centre;
-        pose.residual = meanDistance(pose, coarse, movedSurface);
+        pose.residual = meanDistance(pose, coarsePoints, movedSurface);
         starts.push_back(pose);
       }
   }
@@ -214,10 +317,14 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     TriangleMesh placed = sheet;
     for (glm::dvec3& p : placed.positions) p = motion(p);
     const SurfaceDistanceQuery placedSurface(placed, "sheet");
-    for (const glm::dvec3& p : placed.positions)
-      if (!(movedSurface.distance(p) <= tolerance)) return false;
-    for (const glm::dvec3& p : moved.positions)
-      if (!(placedSurface.distance(p) <= tolerance)) return false;
+    for (std::size_t i = 0; i < placed.positions.size(); ++i)
+      if ((i % 512 == 511 && deadline.passed()) ||
+          !(movedSurface.distance(placed.positions[i]) <= tolerance))
+        return false;
+    for (std::size_t i = 0; i < moved.positions.size(); ++i)
+      if ((i % 512 == 511 && deadline.passed()) ||
+          !(placedSurface.distance(moved.positions[i]) <= tolerance))
+        return false;
     return true;
   };
   auto near = [](const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, double radians) {
@@ -241,7 +348,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     ++refined;
     // Refined on few points first (cheap), on more only where that lies on the copy; each
     // checked exactly (`lays`) before it counts.
-    Pose pose = refine(starts[k], coarse, movedSurface, scale, deadline, 60);
+    Pose pose = refine(starts[k], coarse, movedSurface, scale, deadline, 30, steps);
     if (!(pose.residual < std::max(tolerance, 3e-3 * scale))) continue;  // not near a way yet
     // One that comes near a way found leads to it again: not refined further.
     const bool nearFound = std::any_of(foundPoses.begin(), foundPoses.end(), [&](const Pose& f) {
@@ -249,7 +356,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
              (f.offset - pose.offset).norm() < 0.02 * scale;
     });
     if (nearFound) continue;
-    pose = refine(pose, fine, movedSurface, scale, deadline);
+    pose = refine(pose, fine, movedSurface, scale, deadline, 100, steps);
     RigidMotion motion = motionOf(pose);
     const bool again = std::any_of(found.begin(), found.end(), [&](const RigidMotion& f) {
       double linear = 0.0;
@@ -263,7 +370,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
     foundPoses.push_back(pose);
     if (again) continue;
     if (!lays(motion)) {
-      pose = refine(pose, all, movedSurface, scale, deadline);
+      pose = refine(pose, all, movedSurface, scale, deadline, 100, steps);
       if (deadline.passed()) break;
       motion = motionOf(pose);
       if (!lays(motion)) continue;

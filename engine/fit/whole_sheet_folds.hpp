@@ -6,9 +6,13 @@
 //
 // registerSheetOnto: the rigid motion that lays the sheet on a moved copy of itself. Started from
 // the principal axes of area-uniform samples (every sign, and turns about each axis, since a
-// square's or a disk's axes are not unique), the best starts refined by ICP [Besl & McKay 1992]
-// against exact closest points, each step Umeyama's closed form [Umeyama 1991] (an improper
-// motion as a proper one after a fixed mirror).
+// square's or a disk's axes are not unique), the best starts refined by ICP against exact
+// closest points, each step point-to-plane [Chen & Medioni 1992] Gauss-Newton damped as
+// Levenberg-Marquardt, with a second row along the surface for a point past the copy's boundary
+// (an improper motion as a proper one after a fixed mirror). Refined on every boundary vertex:
+// on a sheet with a near-continuous symmetry (a disk, a 96-gon, turned about its normal; a slit
+// cylinder about its axis) only the corners or the slit hold the turn, and point-to-point steps
+// [Besl & McKay 1992], which the interior pins where it is, slid there for hundreds of steps.
 //
 // wholeSheetReflections: reflections whose product is the motion, each plane missing the sheet as
 // it lies then, so each is a fold of the whole sheet: one plane (a mirror), two (a turn about a
@@ -55,9 +59,11 @@ std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const Tr
 // Stops at `deadline` with the ways found by then: checked at every step of each refinement (a
 // refinement on every vertex of a large sheet takes seconds), so it returns within about one
 // step (one closest-point pass) of the deadline; a refinement cut short counts no way.
+// `steps`, when given, counts the refinement steps taken (each one closest-point pass over the
+// points refined): a measure of the work that does not depend on the clock.
 std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const TriangleMesh& moved,
                                               double tolerance, std::size_t most,
-                                              const Deadline& deadline = {});
+                                              const Deadline& deadline = {}, int* steps = nullptr);
 
 // Planes, in folding order, whose reflections make `motion` and each miss the sheet (`points`:
 // its vertices) where the earlier ones left it. Empty for the identity.
