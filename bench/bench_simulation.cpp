@@ -243,6 +243,75 @@ void designFromFlatLiveWindow(benchmark::State& bench, const std::filesystem::pa
   bench.counters["predictions"] = static_cast<double>(predictions);
 }
 
+// The live slider's ramp (issue 39, 4: "the sheet folds from flat to the design and back as it
+// moves"): the live window's path (LiveSimulation, liveStepsPerFrame steps a frame) with the
+// slider moved from 0 to 100% over kRampFrames frames and then held for kRestFrames. Counters:
+// the crease hinges' mean |angle - target| at the frame's amount (degrees), its mean over the
+// ramp's frames (lag_mean_deg) and its largest (lag_max_deg); the worst crease's error at
+// mid-ramp (worst_mid_deg); the largest edge strain over the ramp (ramp_strain_pct); the largest
+// move of any shown vertex in one frame during the ramp (ramp_step_pct) and while the slider
+// rests at 100% (rest_jump_pct, rest_jump_m), in % of the design's diagonal or metres.
+constexpr std::size_t kRampFrames = 60, kRestFrames = 10;
+
+void liveSliderRamp(benchmark::State& bench, const std::filesystem::path& recording) {
+  const Sheet sheet = replayRecording(readRecording(recording)).sheet;
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : sheet.positions) low = glm::min(low, p), high = glm::max(high, p);
+  const double diagonal = glm::distance(low, high);
+  double lagSum = 0.0, lagMax = 0.0, worstMid = 0.0, rampStrain = 0.0, rampStep = 0.0,
+         restJump = 0.0, rampStrainMedian = 0.0, rampStrain99 = 0.0;
+  for (auto _ : bench) {
+    LiveSimulation live(sheet);
+    lagSum = lagMax = worstMid = rampStrain = rampStep = restJump = 0.0;
+    rampStrainMedian = rampStrain99 = 0.0;
+    std::vector<glm::dvec3> before = live.sheet().positions;
+    for (std::size_t frame = 1; frame <= kRampFrames + kRestFrames; ++frame) {
+      const double amount = std::min(1.0, double(frame) / double(kRampFrames));
+      live.advance(liveSimulationInput(100.0 * amount, sheet));
+      double move = 0.0;
+      for (std::size_t v = 0; v < before.size(); ++v)
+        move = std::max(move, glm::distance(before[v], live.sheet().positions[v]));
+      before = live.sheet().positions;
+      if (frame >= kRampFrames) {
+        restJump = std::max(restJump, move);
+        continue;
+      }
+      rampStep = std::max(rampStep, move);
+      const BarHingeModel& model = live.model();
+      const std::vector<double> angles =
+          hingeAngles(model, live.state().positions, live.state().hingeAngles);
+      double sum = 0.0, worst = 0.0;
+      std::size_t creases = 0;
+      for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+        if (!model.hingeCrease[j]) continue;
+        const double error = std::abs(angles[j] - model.target(j, amount)) * 180.0 / M_PI;
+        sum += error, worst = std::max(worst, error), ++creases;
+      }
+      const double lag = creases ? sum / double(creases) : 0.0;
+      lagSum += lag, lagMax = std::max(lagMax, lag);
+      if (frame == kRampFrames / 2) worstMid = worst;
+      std::vector<double> strains = edgeStrain(model, live.state().positions);
+      for (double& strain : strains) strain = std::abs(strain);
+      std::sort(strains.begin(), strains.end());
+      if (!strains.empty()) {
+        rampStrain = std::max(rampStrain, strains.back());
+        rampStrainMedian = std::max(rampStrainMedian, strains[strains.size() / 2]);
+        rampStrain99 = std::max(rampStrain99, strains[strains.size() * 99 / 100]);
+      }
+    }
+  }
+  bench.counters["vertices"] = static_cast<double>(sheet.vertexCount());
+  bench.counters["lag_mean_deg"] = lagSum / double(kRampFrames - 1);
+  bench.counters["lag_max_deg"] = lagMax;
+  bench.counters["worst_mid_deg"] = worstMid;
+  bench.counters["ramp_strain_pct"] = 100.0 * rampStrain;
+  bench.counters["ramp_strain_median_pct"] = 100.0 * rampStrainMedian;
+  bench.counters["ramp_strain_p99_pct"] = 100.0 * rampStrain99;
+  bench.counters["ramp_step_pct"] = 100.0 * rampStep / diagonal;
+  bench.counters["rest_jump_pct"] = 100.0 * restJump / diagonal;
+  bench.counters["rest_jump_m"] = restJump;
+}
+
 // Crease patterns (tests/data/crease_patterns, and every .fold and .svg in the folder
 // $CURVEFOLD_BENCH_PATTERNS when set, e.g. Origami Simulator's assets) folded from flat the same
 // way, in design mode: frames until every crease is within 0.5 degrees of its 100% angle, up to
@@ -324,6 +393,12 @@ void registerDesigns() {
       benchmark::RegisterBenchmark(
           ("BM_DesignFromFlatLiveWindow/" + path.stem().string()).c_str(),
           [path](benchmark::State& bench) { designFromFlatLiveWindow(bench, path); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+    for (const auto& path : paths)
+      benchmark::RegisterBenchmark(("BM_LiveSliderRamp/" + path.stem().string()).c_str(),
+                                   [path](benchmark::State& bench) { liveSliderRamp(bench, path); })
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(1);
