@@ -86,7 +86,8 @@ BENCHMARK(BM_SettleDesignFromFlatByContinuation)
 // frame with no dynamic steps (the rigid placement alone) on a cylinder design of 10k vertices,
 // with the slider held (second argument 0), moving a percent a frame between 50 and 90% (1: not
 // tried while it moves), or coming to rest at a new amount every second frame (2: tried, and
-// taken, every second frame; the time is per frame).
+// taken, every second frame; the time is per frame); 3: moving as 1 with the frame's
+// liveStepsPerFrame steps, as the window steps it (the fold path's update in their place).
 void BM_LiveFramePredictor(benchmark::State& bench) {
   const Sheet sheet =
       makeSurface("cylinder", {{"resolution", static_cast<double>(bench.range(0))}});
@@ -95,11 +96,11 @@ void BM_LiveFramePredictor(benchmark::State& bench) {
   int frame = 0;
   for (auto _ : bench) {
     ++frame;
-    const double percent = mode == 0   ? 70.0
-                           : mode == 1 ? 50.0 + frame % 40
-                                       : 50.0 + (frame / 2) % 40;
+    const double percent = mode == 0                ? 70.0
+                           : mode == 1 || mode == 3 ? 50.0 + frame % 40
+                                                    : 50.0 + (frame / 2) % 40;
     SimulationInput input = liveSimulationInput(percent, sheet);
-    input.steps = 0;
+    if (mode != 3) input.steps = 0;
     live.advance(input);
     benchmark::DoNotOptimize(live.sheet().positions.data());
   }
@@ -110,6 +111,7 @@ BENCHMARK(BM_LiveFramePredictor)
     ->Args({116, 0})
     ->Args({116, 1})
     ->Args({116, 2})
+    ->Args({116, 3})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
