@@ -75,7 +75,7 @@ LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker, const LiveSol
   state_ = flatState(model_);
   timeStep_ = stableTimeStep(model_);
   if (design_.size() == model_.vertexCount())
-    path_ = std::make_unique<FoldInterpolation>(model_.flatPositions, design_, model_.triangles);
+    path_ = std::make_unique<FoldInterpolation>(model_, design_);
   solver_ = solver ? solver(model_, state_) : cpuLiveSolver();
   placeNext();
   show();

@@ -23,6 +23,10 @@ namespace {
 // it only fixes each piece's place, not its shape.
 constexpr double kAnchorWeight = 1e-6;
 
+// |q . r| below this (rotations more than about 150 degrees apart): which sign of r goes with q
+// is told by the hinge between them, where known (see the constructor).
+constexpr double kAmbiguousTurn = 0.25;
+
 // A right-handed frame of a triangle: its first edge's direction, the in-plane normal, the
 // normal.
 glm::dmat3 triangleFrame(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -53,9 +57,14 @@ struct FoldInterpolation::Solver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
 };
 
+FoldInterpolation::FoldInterpolation(const BarHingeModel& model,
+                                     const std::vector<glm::dvec3>& folded)
+    : FoldInterpolation(model.flatPositions, folded, model.triangles, &model) {}
+
 FoldInterpolation::FoldInterpolation(const std::vector<glm::dvec3>& flat,
                                      const std::vector<glm::dvec3>& folded,
-                                     const std::vector<std::array<std::uint32_t, 3>>& triangles)
+                                     const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                     const BarHingeModel* model)
     : flat_(flat), triangles_(triangles), solver_(std::make_unique<Solver>()) {
   if (flat.size() != folded.size())
     throw std::invalid_argument("fold interpolation: the flat and folded states differ in size");
@@ -85,6 +94,14 @@ FoldInterpolation::FoldInterpolation(const std::vector<glm::dvec3>& flat,
     for (std::uint32_t t : sharing)
       for (std::uint32_t u : sharing)
         if (t != u) neighbours[t].push_back(u);
+  // Where a model is given: its hinge between two triangles, which tells the way a flap folded
+  // flat turns (its rotation's two signs are then about as near its neighbour's).
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> hingeOf;
+  if (model)
+    for (std::uint32_t j = 0; j < model->hinges.size(); ++j) {
+      const auto& [left, right] = model->hingeTriangles[j];
+      hingeOf[{std::min(left, right), std::max(left, right)}] = j;
+    }
   std::vector<char> reached(triangles.size(), 0);
   for (std::uint32_t first = 0; first < triangles.size(); ++first) {
     if (reached[first]) continue;
@@ -97,7 +114,28 @@ FoldInterpolation::FoldInterpolation(const std::vector<glm::dvec3>& flat,
       for (std::uint32_t u : neighbours[t]) {
         if (reached[u]) continue;
         reached[u] = 1;
-        if (glm::dot(rotations[u], rotations[t]) < 0.0) rotations[u] = -rotations[u];
+        const double alike = glm::dot(rotations[u], rotations[t]);
+        const auto hinge = hingeOf.find({std::min(t, u), std::max(t, u)});
+        if (std::abs(alike) < kAmbiguousTurn && hinge != hingeOf.end()) {
+          // Halfway, the hinge's angle with either sign of u, against half its target.
+          const std::uint32_t j = hinge->second;
+          const Hinge& h = model->hinges[j];
+          const auto& [left, right] = model->hingeTriangles[j];
+          auto halfwayError = [&](const glm::dquat& qu) {
+            const glm::dquat halfT = partOf(axisAndHalfAngle(rotations[t]), 0.5);
+            const glm::dquat halfU = partOf(axisAndHalfAngle(qu), 0.5);
+            const glm::dquat& l = left == t ? halfT : halfU;
+            const glm::dquat& r = left == t ? halfU : halfT;
+            const glm::dvec3 shift = l * flat_[h.a] - r * flat_[h.a];
+            const double angle = hingeAngle(l * flat_[h.a], l * flat_[h.b], l * flat_[h.c],
+                                            r * flat_[h.d] + shift, 0.5 * model->target(j, 1.0));
+            return std::abs(angle - 0.5 * model->target(j, 1.0));
+          };
+          if (halfwayError(-rotations[u]) < halfwayError(rotations[u]))
+            rotations[u] = -rotations[u];
+        } else if (alike < 0.0) {
+          rotations[u] = -rotations[u];
+        }
         queue.push_back(u);
       }
     }

@@ -40,6 +40,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "engine/simulation/bar_hinge_model.hpp"
+
 namespace curvefold {
 
 class FoldInterpolation {
@@ -48,7 +50,11 @@ class FoldInterpolation {
   // counter-clockwise in the flat sheet. Throws std::invalid_argument on mismatched sizes or
   // an index out of range.
   FoldInterpolation(const std::vector<glm::dvec3>& flat, const std::vector<glm::dvec3>& folded,
-                    const std::vector<std::array<std::uint32_t, 3>>& triangles);
+                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                    const BarHingeModel* model = nullptr);
+  // The model's flat sheet and triangles; its hinges' targets at 100% tell which way a flap
+  // folded flat (a rotation of 180 degrees, the same either way round) turns.
+  FoldInterpolation(const BarHingeModel& model, const std::vector<glm::dvec3>& folded);
   ~FoldInterpolation();
   FoldInterpolation(FoldInterpolation&&) noexcept;
   FoldInterpolation& operator=(FoldInterpolation&&) noexcept;
