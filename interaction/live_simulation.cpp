@@ -126,7 +126,7 @@ void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& be
     predictedAmount_ = amount;
     if (tryPredictor(amount)) solver_->setState(state_);
   } else if (!input.pull && !atRest && path_) {
-    // The path's update is the frame's work in place of its steps (about as costly at 10k).
+    // The path's update is the frame's work in place of its steps (1.6 times their CPU at 10k).
     takePath(fromAmount, amount);
     solver_->setState(state_);
     placeNext();

@@ -51,11 +51,12 @@
 // on about its own axis by its share of the change of amount and kPathPull of the way back toward
 // its rotation on the path from flat to the design, then kPathRelaxations local-global
 // (as-rigid-as-possible) iterations toward the flat triangles' shapes, rigidly placed onto the
-// state and at rest; that update replaces the frame's dynamic steps (it costs about as much at
-// 10k vertices). Without it the dynamic steps left a curved design's creases 20 to 65 degrees
+// state and at rest; that update replaces the frame's dynamic steps (about 1.6 times their CPU
+// at 10k vertices). Without it the dynamic steps left a curved design's creases 22 to 75 degrees
 // (mean) behind the slider and the predictor then jumped the sheet to the design in one frame
 // where the slider came to rest (docs/performance.md, "The live slider's ramp"); with it the
-// creases stay within a few degrees of their targets and the sheet moves a little each frame.
+// creases stay within a few degrees of their targets and the sheet moves a little each frame. A
+// flap folded flat turns the way its hinge's target says (FoldInterpolation(model, design)).
 // The price: between flat and the design a curved design's targets cannot all be met at once,
 // and the path's states are only nearly isometric (median edge strain about 0.1 to 0.5% mid-ramp,
 // a few percent on the worst sliver edges). Where the slider rests, the dynamic steps (and at the
