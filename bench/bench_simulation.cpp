@@ -86,7 +86,8 @@ BENCHMARK(BM_SettleDesignFromFlatByContinuation)
 // frame with no dynamic steps (the rigid placement alone) on a cylinder design of 10k vertices,
 // with the slider held (second argument 0), moving a percent a frame between 50 and 90% (1: not
 // tried while it moves), or coming to rest at a new amount every second frame (2: tried, and
-// taken, every second frame; the time is per frame).
+// taken, every second frame; the time is per frame); 3: moving as 1 with the frame's
+// liveStepsPerFrame steps, as the window steps it (the fold path's update in their place).
 void BM_LiveFramePredictor(benchmark::State& bench) {
   const Sheet sheet =
       makeSurface("cylinder", {{"resolution", static_cast<double>(bench.range(0))}});
@@ -95,11 +96,11 @@ void BM_LiveFramePredictor(benchmark::State& bench) {
   int frame = 0;
   for (auto _ : bench) {
     ++frame;
-    const double percent = mode == 0   ? 70.0
-                           : mode == 1 ? 50.0 + frame % 40
-                                       : 50.0 + (frame / 2) % 40;
+    const double percent = mode == 0                ? 70.0
+                           : mode == 1 || mode == 3 ? 50.0 + frame % 40
+                                                    : 50.0 + (frame / 2) % 40;
     SimulationInput input = liveSimulationInput(percent, sheet);
-    input.steps = 0;
+    if (mode != 3) input.steps = 0;
     live.advance(input);
     benchmark::DoNotOptimize(live.sheet().positions.data());
   }
@@ -110,6 +111,7 @@ BENCHMARK(BM_LiveFramePredictor)
     ->Args({116, 0})
     ->Args({116, 1})
     ->Args({116, 2})
+    ->Args({116, 3})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -241,6 +243,75 @@ void designFromFlatLiveWindow(benchmark::State& bench, const std::filesystem::pa
   bench.counters["hausdorff_pct"] = 100.0 * distance;
   bench.counters["strain_pct"] = 100.0 * worstStrain;
   bench.counters["predictions"] = static_cast<double>(predictions);
+}
+
+// The live slider's ramp (issue 39, 4: "the sheet folds from flat to the design and back as it
+// moves"): the live window's path (LiveSimulation, liveStepsPerFrame steps a frame) with the
+// slider moved from 0 to 100% over kRampFrames frames and then held for kRestFrames. Counters:
+// the crease hinges' mean |angle - target| at the frame's amount (degrees), its mean over the
+// ramp's frames (lag_mean_deg) and its largest (lag_max_deg); the worst crease's error at
+// mid-ramp (worst_mid_deg); the largest edge strain over the ramp (ramp_strain_pct); the largest
+// move of any shown vertex in one frame during the ramp (ramp_step_pct) and while the slider
+// rests at 100% (rest_jump_pct, rest_jump_m), in % of the design's diagonal or metres.
+constexpr std::size_t kRampFrames = 60, kRestFrames = 10;
+
+void liveSliderRamp(benchmark::State& bench, const std::filesystem::path& recording) {
+  const Sheet sheet = replayRecording(readRecording(recording)).sheet;
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : sheet.positions) low = glm::min(low, p), high = glm::max(high, p);
+  const double diagonal = glm::distance(low, high);
+  double lagSum = 0.0, lagMax = 0.0, worstMid = 0.0, rampStrain = 0.0, rampStep = 0.0,
+         restJump = 0.0, rampStrainMedian = 0.0, rampStrain99 = 0.0;
+  for (auto _ : bench) {
+    LiveSimulation live(sheet);
+    lagSum = lagMax = worstMid = rampStrain = rampStep = restJump = 0.0;
+    rampStrainMedian = rampStrain99 = 0.0;
+    std::vector<glm::dvec3> before = live.sheet().positions;
+    for (std::size_t frame = 1; frame <= kRampFrames + kRestFrames; ++frame) {
+      const double amount = std::min(1.0, double(frame) / double(kRampFrames));
+      live.advance(liveSimulationInput(100.0 * amount, sheet));
+      double move = 0.0;
+      for (std::size_t v = 0; v < before.size(); ++v)
+        move = std::max(move, glm::distance(before[v], live.sheet().positions[v]));
+      before = live.sheet().positions;
+      if (frame >= kRampFrames) {
+        restJump = std::max(restJump, move);
+        continue;
+      }
+      rampStep = std::max(rampStep, move);
+      const BarHingeModel& model = live.model();
+      const std::vector<double> angles =
+          hingeAngles(model, live.state().positions, live.state().hingeAngles);
+      double sum = 0.0, worst = 0.0;
+      std::size_t creases = 0;
+      for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+        if (!model.hingeCrease[j]) continue;
+        const double error = std::abs(angles[j] - model.target(j, amount)) * 180.0 / M_PI;
+        sum += error, worst = std::max(worst, error), ++creases;
+      }
+      const double lag = creases ? sum / double(creases) : 0.0;
+      lagSum += lag, lagMax = std::max(lagMax, lag);
+      if (frame == kRampFrames / 2) worstMid = worst;
+      std::vector<double> strains = edgeStrain(model, live.state().positions);
+      for (double& strain : strains) strain = std::abs(strain);
+      std::sort(strains.begin(), strains.end());
+      if (!strains.empty()) {
+        rampStrain = std::max(rampStrain, strains.back());
+        rampStrainMedian = std::max(rampStrainMedian, strains[strains.size() / 2]);
+        rampStrain99 = std::max(rampStrain99, strains[strains.size() * 99 / 100]);
+      }
+    }
+  }
+  bench.counters["vertices"] = static_cast<double>(sheet.vertexCount());
+  bench.counters["lag_mean_deg"] = lagSum / double(kRampFrames - 1);
+  bench.counters["lag_max_deg"] = lagMax;
+  bench.counters["worst_mid_deg"] = worstMid;
+  bench.counters["ramp_strain_pct"] = 100.0 * rampStrain;
+  bench.counters["ramp_strain_median_pct"] = 100.0 * rampStrainMedian;
+  bench.counters["ramp_strain_p99_pct"] = 100.0 * rampStrain99;
+  bench.counters["ramp_step_pct"] = 100.0 * rampStep / diagonal;
+  bench.counters["rest_jump_pct"] = 100.0 * restJump / diagonal;
+  bench.counters["rest_jump_m"] = restJump;
 }
 
 // Crease patterns (tests/data/crease_patterns, and every .fold and .svg in the folder
@@ -375,6 +446,12 @@ void registerDesigns() {
       benchmark::RegisterBenchmark(
           ("BM_DesignFromFlatLiveWindow/" + path.stem().string()).c_str(),
           [path](benchmark::State& bench) { designFromFlatLiveWindow(bench, path); })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime()
+          ->Iterations(1);
+    for (const auto& path : paths)
+      benchmark::RegisterBenchmark(("BM_LiveSliderRamp/" + path.stem().string()).c_str(),
+                                   [path](benchmark::State& bench) { liveSliderRamp(bench, path); })
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(1);

@@ -74,6 +74,8 @@ LiveSimulation::LiveSimulation(const Sheet& design, bool onWorker, const LiveSol
   model_ = buildModel(designPattern(design).pattern);
   state_ = flatState(model_);
   timeStep_ = stableTimeStep(model_);
+  if (design_.size() == model_.vertexCount())
+    path_ = std::make_unique<FoldInterpolation>(model_, design_);
   solver_ = solver ? solver(model_, state_) : cpuLiveSolver();
   placeNext();
   show();
@@ -118,10 +120,17 @@ void LiveSimulation::step(const SimulationInput& input, const RigidPlacement& be
   // Tried where the slider rests (its last frame's amount again, or either end), not while it
   // moves: a try costs about as much as the frame's steps at 10k vertices.
   const bool atRest = amount == previousAmount_ || amount == 0.0 || amount == 1.0;
+  const double fromAmount = previousAmount_;
   previousAmount_ = amount;
   if (!input.pull && atRest && amount != predictedAmount_) {
     predictedAmount_ = amount;
     if (tryPredictor(amount)) solver_->setState(state_);
+  } else if (!input.pull && !atRest && path_) {
+    // The path's update is the frame's work in place of its steps (1.6 times their CPU at 10k).
+    takePath(fromAmount, amount);
+    solver_->setState(state_);
+    placeNext();
+    return;
   }
   solver_->advance(model_, timeStep_, amount, input.steps, pull, state_);
   placeNext();
@@ -141,6 +150,17 @@ bool LiveSimulation::tryPredictor(double amount) {
   state_.hingeAngles = predicted.hingeAngles;  // a rigid motion keeps every angle
   ++predictions_;
   return true;
+}
+
+void LiveSimulation::takePath(double fromAmount, double amount) {
+  const std::vector<glm::dvec3> along =
+      path_->onward(state_.positions, fromAmount, amount, kPathRelaxations, kPathPull);
+  // Where the sheet is now, so only its shape changes; at rest.
+  const RigidPlacement onto = bestRigidPlacement(along, state_.positions);
+  for (std::size_t v = 0; v < along.size(); ++v) state_.positions[v] = onto.apply(along[v]);
+  state_.velocities.assign(model_.vertexCount(), glm::dvec3(0.0));
+  state_.hingeAngles = hingeAngles(model_, state_.positions, state_.hingeAngles);
+  ++pathFrames_;
 }
 
 void LiveSimulation::placeNext() {

@@ -45,6 +45,23 @@
 // (vertices placed by the first triangle to reach them) and is higher in energy, and the dynamic
 // state stays.
 //
+// The fold path (issue 39, 4): while the fold amount moves (a frame whose amount differs from
+// the last frame's, not at either end) and no pull is held, the frame's state is the fold path's
+// (engine/simulation/fold_interpolation.hpp): each triangle's rotation in the state now, turned
+// on about its own axis by its share of the change of amount and kPathPull of the way back toward
+// its rotation on the path from flat to the design, then kPathRelaxations local-global
+// (as-rigid-as-possible) iterations toward the flat triangles' shapes, rigidly placed onto the
+// state and at rest; that update replaces the frame's dynamic steps (about 1.6 times their CPU
+// at 10k vertices). Without it the dynamic steps left a curved design's creases 22 to 75 degrees
+// (mean) behind the slider and the predictor then jumped the sheet to the design in one frame
+// where the slider came to rest (docs/performance.md, "The live slider's ramp"); with it the
+// creases stay within a few degrees of their targets and the sheet moves a little each frame. A
+// flap folded flat turns the way its hinge's target says (FoldInterpolation(model, design)).
+// The price: between flat and the design a curved design's targets cannot all be met at once,
+// and the path's states are only nearly isometric (median edge strain about 0.1 to 0.5% mid-ramp,
+// a few percent on the worst sliver edges). Where the slider rests, the dynamic steps (and at the
+// ends the predictor) take over from the path's state.
+//
 // Known limits: design mode only (every edge driven toward the design; paper mode's very stiff
 // bars need far more steps than a frame allows); no self-contact (the model has none).
 #pragma once
@@ -59,6 +76,7 @@
 #include "engine/geometry/sheet.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/fold_interpolation.hpp"
 #include "engine/simulation/rigid_placement.hpp"
 #include "interaction/input_frame.hpp"
 
@@ -66,6 +84,11 @@ namespace curvefold {
 
 // The spring's stiffness as a fraction of m / dt^2 (explicit Euler is stable below 4).
 inline constexpr double kPullStiffness = 0.05;
+
+// The fold path's update while the slider moves (above): local-global iterations, and the share
+// of each triangle's rotation returned toward the path's in one frame.
+inline constexpr std::size_t kPathRelaxations = 2;
+inline constexpr double kPathPull = 0.1;
 
 // Dynamic steps per frame for a sheet of this many vertices: about 50k vertex-steps a frame
 // (4 steps, about 6 ms of CPU at 10k vertices, bench_live_simulation; lavapipe's drawing of the
@@ -152,6 +175,8 @@ class LiveSimulation {
   std::size_t steps() const { return shownSteps_; }
   // How often the predictor's state was taken (on a worker: after finish()).
   std::size_t predictions() const { return predictions_; }
+  // How many frames took the fold path's state (on a worker: after finish()).
+  std::size_t pathFrames() const { return pathFrames_; }
   const BarHingeModel& model() const { return model_; }
   // The model's state; on a worker, only after finish() (the worker writes it meanwhile). With a
   // host's solver, perhaps only the positions and the step count (LiveSolver).
@@ -173,6 +198,9 @@ class LiveSimulation {
   void show();
   // The predictor at the fold amount (0..1), taken when lower in energy (see above); true if so.
   bool tryPredictor(double amount);
+  // The state becomes the fold path's on from fromAmount to amount (0..1; above), placed onto
+  // it, at rest.
+  void takePath(double fromAmount, double amount);
 
   BarHingeModel model_;
   SimulationState state_;
@@ -187,9 +215,12 @@ class LiveSimulation {
   RigidPlacement nextPlacement_;
   double timeStep_ = 0.0;
   double percent_ = 0.0;
-  double predictedAmount_ = 0.0;  // the last amount the predictor was tried at (flat: 0)
-  double previousAmount_ = 0.0;   // the last frame's
-  std::size_t predictions_ = 0;   // how often it was taken
+  double predictedAmount_ = 0.0;             // the last amount the predictor was tried at (flat: 0)
+  double previousAmount_ = 0.0;              // the last frame's
+  std::size_t predictions_ = 0;              // how often it was taken
+  std::unique_ptr<FoldInterpolation> path_;  // flat to the design (fold_interpolation.hpp)
+  // (none where the design's vertices are not the model's)
+  std::size_t pathFrames_ = 0;  // frames the path's state was taken
   std::optional<SimulationPull> pull_;
   bool onWorker_ = false;
   std::future<void> job_;
