@@ -47,7 +47,9 @@ def main():
     coords, edges, assignment, faces = miura()
     write_fold("miura_ori.fold", coords, edges, assignment, faces=faces,
                comment="Miura-ori, 4 x 3 parallelograms")
-    lines = ['<svg xmlns="http://www.w3.org/2000/svg" viewBox="-1 -4 6 5">']
+    # 2 cm to a unit: a sheet of paper's size, as a drawing program states it.
+    lines = ['<svg xmlns="http://www.w3.org/2000/svg" width="120mm" height="100mm" '
+             'viewBox="-1 -4 6 5">']
     for (u, v), kind in zip(edges, assignment):
         (x1, y1), (x2, y2) = coords[u], coords[v]
         # y negated: the reader negates SVG's downward y, so both files give the same vertices.
