@@ -90,6 +90,22 @@ void foldTheWholeSheetAlong(FoldSession& folding, glm::dvec3 along, double dista
     ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
 }
 
+// Fits `target` from `session`'s sheet (its symmetry set) with no time limit, and expects the
+// unfolding to name every fold and the fit to reach the target; returns what the fit did.
+FitResult expectFoundByUnfolding(FoldSession& session, const TriangleMesh& target,
+                                 std::size_t maxFolds, std::size_t evaluations) {
+  const FoldFitter fitter(target);
+  FitOptions options;
+  options.maxFolds = maxFolds;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = evaluations;
+  FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+  return result;
+}
+
 TEST(FitReading, ASlitDoesNotHideWhichSideASeedIsOn) {
   expectFoundExactly(
       {"anywhere-long", "cylinder", 4, 7932,
@@ -454,18 +470,10 @@ TEST(FitReading, ASymmetricFoldIsMadeWithTheImagesTheTargetHas) {
   ASSERT_EQ(folding.foldCount(), 1u);  // every image's seed moved by the fold: none made
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
-  const FoldFitter fitter(target);
   FoldSession session(initial);
   session.setSymmetry(symmetry);
-  FitOptions options;
-  options.maxFolds = 2;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = 300;
-  const FitResult result = fitFolds(session, fitter, options);
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  expectFoundByUnfolding(session, target, 2, 300);
   EXPECT_EQ(session.foldCount(), 1u);
-  testing::expectInvariants(session.fixed(), session.initial());
 }
 
 // A fold of most of a rectangle with rotational:2 (a corner side folded up past the middle)
@@ -489,17 +497,9 @@ TEST(FitReading, AnImageThatMovedTheWholeSheetIsUndoneWithItsFold) {
   ASSERT_TRUE(folding.commit());
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
-  const FoldFitter fitter(target);
   FoldSession session(initial);
   session.setSymmetry(symmetry);
-  FitOptions options;
-  options.maxFolds = 4;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = testing::kSanitized ? 100 : 400;
-  const FitResult result = fitFolds(session, fitter, options);
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
-  testing::expectInvariants(session.fixed(), session.initial());
+  expectFoundByUnfolding(session, target, 4, testing::kSanitized ? 100 : 400);
 }
 
 // A fold of most of a rectangle with rotational:2 whose image mirrors the whole sheet (as above),
@@ -519,17 +519,9 @@ TEST(FitReading, AFoldWhoseImageMovedTheSheetThenMovedWholeIsFoundToo) {
   ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {0.5, -0.4, 0.77}, 0.12));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
-  const FoldFitter fitter(target);
   FoldSession session(initial);
   session.setSymmetry(symmetry);
-  FitOptions options;
-  options.maxFolds = 3;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = testing::kSanitized ? 50 : 200;
-  const FitResult result = fitFolds(session, fitter, options);
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
-  testing::expectInvariants(session.fixed(), session.initial());
+  expectFoundByUnfolding(session, target, 3, testing::kSanitized ? 50 : 200);
 }
 
 // A whole-sheet fold made after a symmetric fold with its images (four corners folded up by
@@ -547,18 +539,10 @@ TEST(FitReading, AWholeSheetFoldAfterASymmetricFoldIsFoundToo) {
   ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, {0.6, -0.3, 0.74}, 0.15));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
-  const FoldFitter fitter(target);
   FoldSession session(initial);
   session.setSymmetry(symmetry);
-  FitOptions options;
-  options.maxFolds = 6;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = 2000;
-  const FitResult result = fitFolds(session, fitter, options);
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  const FitResult result = expectFoundByUnfolding(session, target, 6, 2000);
   EXPECT_TRUE(identical(replayFolds(initial, result.folds), session.fixed()));
-  testing::expectInvariants(session.fixed(), session.initial());
 }
 
 // A blintz (a square's four corners laid by its centre, 1-4 mm above the sheet: folds of about

@@ -1009,6 +1009,20 @@ TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {
   EXPECT_TRUE(identical(session.fixed(), cylinder));
 }
 
+// crown_vessel, a curved fold with sliver triangles: the bundled design the live slider finds
+// hardest.
+Sheet crownVessel() {
+  return replayRecording(
+             readRecording(CURVEFOLD_SOURCE_DIR "/examples/recordings/crown_vessel.jsonl"))
+      .sheet;
+}
+
+double diagonalOf(const Sheet& sheet) {
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : sheet.positions) low = glm::min(low, p), high = glm::max(high, p);
+  return glm::distance(low, high);
+}
+
 // A reflection design driven live from flat to 100%, as the window's slider drives it (issue 39,
 // the check "at 100% in design mode every bundled design comes within 0.5% of its diagonal"):
 // within the frame the slider reaches 100% the shown sheet is the design, every vertex within
@@ -1016,12 +1030,8 @@ TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {
 // there while the slider is held. crown_vessel: a curved fold whose sliver triangles set a step
 // so short that the dynamic steps alone stayed 60% of the diagonal off after 600 frames.
 TEST(LiveSimulation, ReachesABundledDesignOnTheFrameTheSliderReachesFull) {
-  const Sheet design =
-      replayRecording(readRecording(CURVEFOLD_SOURCE_DIR "/examples/recordings/crown_vessel.jsonl"))
-          .sheet;
-  glm::dvec3 low(1e300), high(-1e300);
-  for (const glm::dvec3& p : design.positions) low = glm::min(low, p), high = glm::max(high, p);
-  const double diagonal = glm::distance(low, high);
+  const Sheet design = crownVessel();
+  const double diagonal = diagonalOf(design);
   LiveSimulation live(design);
   auto offDesign = [&] {
     double largest = 0.0;
@@ -1052,12 +1062,8 @@ TEST(LiveSimulation, ReachesABundledDesignOnTheFrameTheSliderReachesFull) {
 // alone left its creases 20 to 40 degrees behind and the sheet then jumped 80% of its diagonal
 // to the design on that frame.
 TEST(LiveSimulation, FollowsTheSliderOnACurvedDesignWithoutAJump) {
-  const Sheet design =
-      replayRecording(readRecording(CURVEFOLD_SOURCE_DIR "/examples/recordings/crown_vessel.jsonl"))
-          .sheet;
-  glm::dvec3 low(1e300), high(-1e300);
-  for (const glm::dvec3& p : design.positions) low = glm::min(low, p), high = glm::max(high, p);
-  const double diagonal = glm::distance(low, high);
+  const Sheet design = crownVessel();
+  const double diagonal = diagonalOf(design);
   LiveSimulation live(design);
   const BarHingeModel& model = live.model();
   const int rampFrames = testing::kSanitized ? 8 : 20;

@@ -516,35 +516,39 @@ const std::vector<ReflectionPlane>& FoldFitter::creasePlanesAbove(double degrees
   return it->second;
 }
 
-double FoldFitter::approximateDistance(const Sheet& sheet) const {
-  const TriangleMesh mesh = meshOf(sheet);
-  const std::vector<SurfaceSample> samples =
-      sampleSurface(mesh, settings_.sheetSamples, settings_.seed + 2);
+namespace {
+
+// A sheet's samples as the search scores them: area-uniform points, their normals, and the radius
+// each stands for.
+struct ScoredSamples {
   PointCloud points;
   std::vector<glm::dvec3> normals;
+  double radius = 0.0;
+};
+
+ScoredSamples scoredSamples(const Sheet& sheet, std::size_t count, std::uint64_t seed) {
+  const TriangleMesh mesh = meshOf(sheet);
+  const std::vector<SurfaceSample> samples = sampleSurface(mesh, count, seed);
+  ScoredSamples out;
   for (const SurfaceSample& s : samples) {
-    points.points.push_back(s.position);
-    normals.push_back(s.normal);
+    out.points.points.push_back(s.position);
+    out.normals.push_back(s.normal);
   }
-  const double radius =
-      0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
-  return target_->score(points, normals, radius);
+  out.radius = 0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
+  return out;
+}
+
+}  // namespace
+
+double FoldFitter::approximateDistance(const Sheet& sheet) const {
+  const ScoredSamples s = scoredSamples(sheet, settings_.sheetSamples, settings_.seed + 2);
+  return target_->score(s.points, s.normals, s.radius);
 }
 
 SurfaceDistance FoldFitter::approximateMeasure(const Sheet& sheet) const {
-  const TriangleMesh mesh = meshOf(sheet);
-  const std::vector<SurfaceSample> samples =
-      sampleSurface(mesh, settings_.sheetSamples, settings_.seed + 2);
-  PointCloud points;
-  std::vector<glm::dvec3> normals;
-  for (const SurfaceSample& s : samples) {
-    points.points.push_back(s.position);
-    normals.push_back(s.normal);
-  }
-  const double radius =
-      0.5 * std::sqrt(surfaceArea(mesh) / std::max<std::size_t>(1, samples.size()));
+  const ScoredSamples s = scoredSamples(sheet, settings_.sheetSamples, settings_.seed + 2);
   std::vector<double> fromSheet, fromTarget;
-  target_->score(points, normals, radius, &fromSheet, &fromTarget);
+  target_->score(s.points, s.normals, s.radius, &fromSheet, &fromTarget);
   SurfaceDistance d;
   d.diagonal = target_->diagonal;
   if (fromSheet.empty() || fromTarget.empty()) return d;
