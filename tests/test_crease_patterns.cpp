@@ -541,6 +541,25 @@ TEST(CreasePatternFold, FrameUnitGivesTheSizeInMetres) {
   std::filesystem::remove_all(directory);
 }
 
+// Keys the reader does not use are each said in a note, by kind: the key frame's metadata, and
+// anything else; the file's own keys and the unit it reads are not. (With frame_unit read, an
+// unbraced if took the file_ and unknown keys' branches into the frame_ branch, and no unknown
+// key was noted.)
+TEST(CreasePatternFold, KeysNotReadAreNotedAndTheUnitIsNot) {
+  const CreasePattern p = readFoldCreasePatternText(
+      squareFold("", "", "",
+                 R"(, "frame_title": "t", "frame_unit": "mm", "file_creator": "x", "my_key": 1)"),
+      "keys.fold");
+  auto noted = [&](const std::string& text) {
+    return std::any_of(p.notes.begin(), p.notes.end(),
+                       [&](const std::string& n) { return n.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(noted("ignored: \"my_key\""));
+  EXPECT_TRUE(noted("frame_title"));
+  EXPECT_FALSE(noted("frame_unit"));
+  EXPECT_FALSE(noted("file_creator"));
+}
+
 TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {
   EXPECT_NE(svgError("<svg><line").find("not valid XML at line 1"), std::string::npos);
   EXPECT_NE(svgError("<html/>").find("not an SVG file"), std::string::npos);

@@ -250,13 +250,13 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
       drawing.notes.push_back("file_frames (" +
                               std::to_string(value.is_array() ? value.size() : 0) +
                               " frames) ignored: only the key frame is read");
-    else if (key.rfind("frame_", 0) == 0)
-      if (key != "frame_unit")
+    else if (key.rfind("frame_", 0) == 0) {
+      if (key != "frame_unit")     // read with the size
         frameKeys.push_back(key);  // title, classes, attributes: a note
-      else if (key.rfind("file_", 0) == 0)
-        continue;  // spec, creator, author, title, classes: about the file, nothing to fold
-      else
-        ignored.push_back(key);
+    } else if (key.rfind("file_", 0) == 0)
+      continue;  // spec, creator, author, title, classes: about the file, nothing to fold
+    else
+      ignored.push_back(key);
   }
   if (!frameKeys.empty()) {
     std::string line = "key frame metadata ignored:";
