@@ -343,7 +343,9 @@ TEST(WholeSheetFolds, AMeasuredMotionNearOneOrTwoPlanesIsMadeWithThem) {
     ASSERT_EQ(wholeSheetReflections(exact, initial.positions, planes).size(), planes);
     RigidMotion measured = exact;
     measured.offset += glm::dvec3(2e-6, -1e-6, 3e-6);  // a few micrometres off
-    if (planes == 2) EXPECT_TRUE(wholeSheetReflections(measured, initial.positions, 2).empty());
+    if (planes == 2) {
+      EXPECT_TRUE(wholeSheetReflections(measured, initial.positions, 2).empty());
+    }
     const RigidMotion snapped = snappedToFewPlanes(measured, 1e-3, 1e-3);
     EXPECT_EQ(wholeSheetReflections(snapped, initial.positions, planes).size(), planes);
     for (const glm::dvec3& p : initial.positions)

@@ -1042,7 +1042,9 @@ TEST(LiveSimulation, ReachesABundledDesignOnTheFrameTheSliderReachesFull) {
   const int rampFrames = testing::kSanitized ? 5 : 30;  // the slider from 0 to 100% over these
   for (int frame = 1; frame < rampFrames; ++frame) {
     live.advance(liveSimulationInput(100.0 * frame / rampFrames, design));
-    if (frame == rampFrames / 2) EXPECT_GT(offDesign(), 0.05);  // not there before the slider is
+    if (frame == rampFrames / 2) {
+      EXPECT_GT(offDesign(), 0.05);  // not there before the slider is
+    }
   }
   for (int frame = 0; frame < (testing::kSanitized ? 3 : 10); ++frame) {
     live.advance(liveSimulationInput(100.0, design));

@@ -251,7 +251,9 @@ TEST(Simulation, PaperModeCurvedPleatAt180DegreesReachesTheStaticTolerance) {
   const std::vector<double> error =
       creaseAngleError(model, state.positions, 1.0, state.hingeAngles);
   for (std::size_t j = 0; j < model.hinges.size(); ++j)
-    if (model.hingeCrease[j]) EXPECT_LT(std::abs(error[model.hingeEdge[j]]), 90.0) << j;
+    if (model.hingeCrease[j]) {
+      EXPECT_LT(std::abs(error[model.hingeEdge[j]]), 90.0) << j;
+    }
 }
 
 // The waterbomb base's creases all at +-180 degrees, driven to half and three quarters: targets

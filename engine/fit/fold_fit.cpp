@@ -1170,7 +1170,7 @@ class FitRun {
              lastSeed);
       if (!everyFoldRead) return std::nullopt;
       if (!symmetry)
-        return FoldedFirst{lastBranch->fixed().positions, motion, std::move(movedBack)};
+        return FoldedFirst{lastBranch->fixed().positions, motion, std::move(movedBack), lastSeed};
       // A symmetric fold's image may have moved the whole sheet (its plane missed it), and the
       // replay brings it again: what is left to move is measured, not the copy's motion.
       std::vector<ReflectionPlane> read;

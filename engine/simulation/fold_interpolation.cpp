@@ -120,7 +120,7 @@ FoldInterpolation::FoldInterpolation(const std::vector<glm::dvec3>& flat,
           // Halfway, the hinge's angle with either sign of u, against half its target.
           const std::uint32_t j = hinge->second;
           const Hinge& h = model->hinges[j];
-          const auto& [left, right] = model->hingeTriangles[j];
+          const std::uint32_t left = model->hingeTriangles[j][0];  // a lambda cannot take a binding
           auto halfwayError = [&](const glm::dquat& qu) {
             const glm::dquat halfT = partOf(axisAndHalfAngle(rotations[t]), 0.5);
             const glm::dquat halfU = partOf(axisAndHalfAngle(qu), 0.5);
