@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <glm/geometric.hpp>
 
+#include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/surface_point.hpp"
 
@@ -16,19 +17,6 @@ namespace {
 
 // Pairs spread over the target: enough to fix a motion well, few enough to be cheap.
 constexpr std::size_t kPairs = 300;
-
-Eigen::Vector3d eigenOf(const glm::dvec3& v) {
-  return {v.x, v.y, v.z};
-}
-glm::dvec3 glmOf(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
-Eigen::Matrix3d eigenOfMatrix(const glm::dmat3& m) {
-  Eigen::Matrix3d e;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) e(r, c) = m[c][r];
-  return e;
-}
 
 // x -> a(b(x)).
 RigidMotion after(const RigidMotion& a, const RigidMotion& b) {
@@ -125,7 +113,7 @@ std::vector<FewerPlaneRest> fewerPlaneRests(const RigidMotion& rest, const glm::
 }
 
 RigidMotion snappedToFewPlanes(const RigidMotion& motion, double angle, double shift) {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(eigenOfMatrix(motion.linear),
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(eigenOf(motion.linear),
                                               Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::Matrix3d A = svd.matrixU() * svd.matrixV().transpose();
   const glm::dvec3 t = motion.offset;
@@ -136,7 +124,7 @@ RigidMotion snappedToFewPlanes(const RigidMotion& motion, double angle, double s
     const glm::dvec3 n = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(0))));
     const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
     const glm::dvec3 across = t - glm::dot(t, n) * n;
-    if ((eigenOfMatrix(mirror) - A).norm() > angle || glm::length(across) > shift) return motion;
+    if ((eigenOf(mirror) - A).norm() > angle || glm::length(across) > shift) return motion;
     return {mirror, glm::dot(t, n) * n};
   }
   const Eigen::AngleAxisd turn(A);

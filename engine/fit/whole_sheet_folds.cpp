@@ -9,30 +9,12 @@
 #include <Eigen/Geometry>
 #include <glm/geometric.hpp>
 
+#include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 
 namespace curvefold {
 namespace {
-
-Eigen::Vector3d eigenOf(const glm::dvec3& v) {
-  return {v.x, v.y, v.z};
-}
-glm::dvec3 glmOf(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
-}
-Eigen::Matrix3d eigenOf(const glm::dmat3& m) {
-  Eigen::Matrix3d e;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) e(r, c) = m[c][r];
-  return e;
-}
-glm::dmat3 glmOf(const Eigen::Matrix3d& e) {
-  glm::dmat3 m;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) m[c][r] = e(r, c);
-  return m;
-}
 
 double diagonalOf(const std::vector<glm::dvec3>& points) {
   glm::dvec3 lo(1e300), hi(-1e300);
