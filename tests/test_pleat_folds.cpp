@@ -318,5 +318,64 @@ TEST(FoldFit, PleatsBringATroughCloserToASaddleThanItsStart) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
+// A saddle z = (x^2 - y^2) / 0.3 from the flat square under it (`fit --from square`): its
+// ends rise along x and fall along y, 33 mm off the square's edges. One pleat turns one end and
+// leaves three as far (the farthest point unchanged); a cross (both ends of a line and both of
+// the line across it, as one step) turns all four, so the farthest point comes in, and without
+// the paper passing through itself where the two lines' creases cross.
+TEST(PleatFolds, TurnAllFourEndsOfASaddleFromAFlatSquareInOneStep) {
+  const TriangleMesh saddle =
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  const FoldFitter fitter(saddle, quickSettings());
+  FoldSession session(makeSurface("square", {{"size", 0.2}}));
+  const double start = surfaceDistance(meshOf(session.fixed()), saddle, 4000).hausdorff;
+  const std::vector<FoldSuggestion> pleats = suggestPleats(session, fitter, 4, {});
+  EXPECT_EQ(session.foldCount(), 0u);
+  ASSERT_FALSE(pleats.empty());
+  const FoldSuggestion& best = pleats.front();
+  // Two bends (a flat sheet turns an end with one fold) and two pleats (the bent sheet's ends
+  // keep their bend, which one reflection would flip), one group.
+  ASSERT_EQ(best.folds.size(), 6u) << best.after << " from " << best.before;
+  for (const FoldRecord& fold : best.folds) EXPECT_EQ(fold.group, best.folds[0].group);
+  // Each of the square's four sides' middles (33 mm off the target at the start) comes within
+  // half of that: the rising ends and the falling ones.
+  const SurfaceDistanceQuery query(saddle, "saddle");
+  for (const glm::dvec2 side :
+       {glm::dvec2(0.1, 0.0), glm::dvec2(-0.1, 0.0), glm::dvec2(0.0, 0.1), glm::dvec2(0.0, -0.1)}) {
+    VertexIndex nearest = 0;
+    for (VertexIndex v = 0; v < best.sheet.vertexCount(); ++v)
+      if (glm::distance(best.sheet.development[v], side) <
+          glm::distance(best.sheet.development[nearest], side))
+        nearest = v;
+    EXPECT_LT(query.distance(best.sheet.positions[nearest]), 0.016)
+        << "the side at (" << side.x << ", " << side.y << ")";
+  }
+  const double after = surfaceDistance(meshOf(best.sheet), saddle, 4000).hausdorff;
+  EXPECT_LT(after, 0.7 * start) << start << " -> " << after;
+  testing::expectInvariants(best.sheet, session.initial());
+  EXPECT_TRUE(findSelfIntersections(best.sheet).intersections.empty());
+  EXPECT_TRUE(identical(replayFolds(session.initial(), best.folds), best.sheet));
+}
+
+// A hypar over a square turned 30 degrees about its normal, asked for a square: the square
+// placed by the target's principal axes is turned anyhow (a square outline's two axes spread
+// alike) and sized by the target's area, so its corners stand out past the target's sides; the
+// square turned and sized to the footprint lies under it, only the heights apart.
+TEST(StartSurface, ASquareTowardASaddleIsTurnedAndSizedToItsFootprint) {
+  TriangleMesh saddle =
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  const double turn = 30.0 * kDegree, c = std::cos(turn), s = std::sin(turn);
+  for (glm::dvec3& p : saddle.positions) p = glm::dvec3(c * p.x - s * p.y, s * p.x + c * p.y, p.z);
+  const StartChoice start = chooseStart(saddle, "square");
+  ASSERT_TRUE(start.placed) << start.placement;
+  const SurfaceDistance distance = surfaceDistance(meshOf(*start.placed), saddle, 4000);
+  // The heights alone: the saddle's corners lie at 0, its sides' middles 33 mm off.
+  EXPECT_LT(distance.hausdorff, 0.0345) << start.placement;
+  double farthestCorner = 0.0;
+  for (const glm::dvec3& p : start.placed->positions)
+    farthestCorner = std::max(farthestCorner, std::hypot(p.x, p.y));
+  EXPECT_LT(farthestCorner, 0.1 * std::sqrt(2.0) + 0.004) << start.placement;
+}
+
 }  // namespace
 }  // namespace curvefold

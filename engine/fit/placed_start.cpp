@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -374,6 +375,80 @@ void flatIn(const Principal& principal, double area, const std::string& kind,
   add("square", {{"size", std::sqrt(area)}});
 }
 
+// The target's footprint in the plane of its two largest axes, boxed: at each turn of the box
+// (kFootprintTurns over a quarter turn) the samples' extents along its sides. Its square (the
+// turn whose larger side is least) and its rectangle (the least area), centred on the box.
+struct FootprintBox {
+  glm::dvec3 centre{0.0}, x{0.0}, y{0.0};
+  double width = 0.0, height = 0.0;
+};
+constexpr int kFootprintTurns = 90;
+
+FootprintBox footprintBox(const std::vector<SurfaceSample>& samples, const Principal& principal,
+                          bool square) {
+  const glm::dvec3 e1 = principal.axes[2], e2 = principal.axes[1];
+  std::vector<double> u(samples.size()), v(samples.size());
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const glm::dvec3 d = samples[i].position - principal.centroid;
+    u[i] = glm::dot(d, e1);
+    v[i] = glm::dot(d, e2);
+  }
+  FootprintBox best;
+  double bestMeasure = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kFootprintTurns; ++k) {
+    const double angle = 0.5 * std::numbers::pi * k / kFootprintTurns;
+    const double c = std::cos(angle), s = std::sin(angle);
+    double loX = 1e300, hiX = -1e300, loY = 1e300, hiY = -1e300;
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      const double x = c * u[i] + s * v[i], y = -s * u[i] + c * v[i];
+      loX = std::min(loX, x);
+      hiX = std::max(hiX, x);
+      loY = std::min(loY, y);
+      hiY = std::max(hiY, y);
+    }
+    const double w = hiX - loX, h = hiY - loY;
+    const double measure = square ? std::max(w, h) : w * h;
+    if (!(measure < bestMeasure)) continue;
+    bestMeasure = measure;
+    best.x = c * e1 + s * e2;
+    best.y = -s * e1 + c * e2;
+    best.centre = principal.centroid + 0.5 * (loX + hiX) * best.x + 0.5 * (loY + hiY) * best.y;
+    best.width = w;
+    best.height = h;
+  }
+  return best;
+}
+
+// Flat sheets cut to the target's footprint (a saddle's, a chip's): the sheet of the target's
+// area (flatIn) is turned by the principal axes, which a square outline leaves free (its corners
+// then stand out past the target's), and sized by area, which a curved target's exceeds its
+// outline's. The square of the footprint's box (and one of its mean side, for an oblong
+// footprint), and its rectangle.
+void footprintIn(const std::vector<SurfaceSample>& samples, const Principal& principal,
+                 const std::string& kind, std::vector<PlacedStart>& out) {
+  for (const bool square : {true, false}) {
+    const std::string surface = square ? "square" : "rectangle";
+    if (!kind.empty() && kind != surface) continue;
+    const FootprintBox box = footprintBox(samples, principal, square);
+    if (!(box.width > 0.0 && box.height > 0.0)) continue;
+    Frame frame;
+    frame.origin = box.centre;
+    frame.x = box.x;
+    frame.y = box.y;
+    frame.z = glm::cross(frame.x, frame.y);
+    const std::string placement = "on the target's footprint, centred at " +
+                                  vectorText(frame.origin) + " normal " + vectorText(frame.z);
+    if (square) {
+      const double larger = std::max(box.width, box.height);
+      const double mean = 0.5 * (box.width + box.height);
+      addPlaced(out, surface, {{"size", larger}}, placement, frame);
+      if (mean < 0.97 * larger) addPlaced(out, surface, {{"size", mean}}, placement, frame);
+    } else {
+      addPlaced(out, surface, {{"width", box.width}, {"height", box.height}}, placement, frame);
+    }
+  }
+}
+
 }  // namespace
 
 Sheet sweptParabola(double curvature, double slope, double from, double to, double length,
@@ -427,6 +502,7 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
       revolutionAbout(samples, principal.centroid, axis, kind, out);
   if (kind.empty() || kind == "swept_curve") sweptAbout(samples, principal, out);
   flatIn(principal, targetArea, kind, out);
+  footprintIn(samples, principal, kind, out);
   return out;
 }
 

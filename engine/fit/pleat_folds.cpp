@@ -1,6 +1,7 @@
 #include "engine/fit/pleat_folds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -52,6 +53,10 @@ constexpr int kFamilyHinges[] = {3, 4, 5, 6, 8};
 constexpr double kFamilyLast[] = {0.85, 0.7};
 constexpr std::size_t kFamiliesTried = 4;
 constexpr double kFamilyShares[] = {0.9, 0.65};
+// Crosses (two lines' ends pleated as one step, from a flat sheet): the hinges' places (of the
+// way from the centre to the end) and the crosses made, the best by the model.
+constexpr double kCrossHinges[] = {0.15, 0.3, 0.45, 0.6};
+constexpr std::size_t kCrossesTried = 2;
 // Samples of the exact distance a family's farthest point is measured with.
 constexpr std::size_t kFarthestSamples = 3000;
 
@@ -268,6 +273,69 @@ std::vector<PleatFamily> solveFamilies(const std::vector<glm::dvec3>& points,
   return best;
 }
 
+// Crosses of pleats, from a flat sheet toward a shape curved both ways (a saddle, a chip): both
+// ends of a line through the sheet's centre and both ends of the line across it, each end turned
+// about a hinge at the same share of the way to the sheet's end (kCrossHinges), the four turns
+// solved together in least squares from the target's height over the sheet (ramps, as a family's:
+// a turn adds height in proportion to the distance beyond its hinge; along two lines the ramps
+// overlap at the corners, where their heights add as the pleats' turns compose). The best
+// kCrossesTried (two directions, or two hinge places), best first; each the end along +line,
+// -line, +across, -across.
+std::vector<std::array<SolvedPleat, 4>> solveCrosses(
+    const std::vector<glm::dvec3>& points, const std::vector<double>& heights,
+    const glm::dvec3& centre, const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) {
+  const glm::dvec3 up = axisOf(axes, 0), e1 = axisOf(axes, 2), e2 = axisOf(axes, 1);
+  struct Cross {
+    std::array<SolvedPleat, 4> pleats;
+    double gain = 0.0;
+  };
+  std::vector<Cross> crosses;
+  for (int k = 0; k < kDirections / 2; ++k) {
+    const double angle = std::numbers::pi * k / kDirections;
+    const glm::dvec3 line = std::cos(angle) * e1 + std::sin(angle) * e2;
+    const glm::dvec3 across = glm::cross(up, line);
+    const std::array<glm::dvec3, 4> directions{line, -line, across, -across};
+    std::array<std::vector<double>, 4> s;
+    std::array<double, 4> reach{};
+    for (int j = 0; j < 4; ++j) {
+      s[j].resize(points.size());
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        s[j][i] = glm::dot(points[i] - centre, directions[j]);
+        reach[j] = std::max(reach[j], s[j][i]);
+      }
+    }
+    for (const double fraction : kCrossHinges) {
+      Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+      Eigen::Vector4d right = Eigen::Vector4d::Zero(), row;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        for (int j = 0; j < 4; ++j) row(j) = std::max(0.0, s[j][i] - fraction * reach[j]);
+        normal.noalias() += row * row.transpose();
+        right += heights[i] * row;
+      }
+      normal.diagonal().array() += 1e-9 * (normal.trace() + 1e-30);
+      Eigen::Vector4d turn = normal.ldlt().solve(right);
+      bool usable = true;
+      for (int j = 0; j < 4; ++j) {
+        turn(j) = std::clamp(turn(j), -kMostSolvedTurn, kMostSolvedTurn);
+        usable = usable && std::abs(turn(j)) >= kLeastSolvedTurn;
+      }
+      const double gain = 2.0 * turn.dot(right) - turn.dot(normal * turn);
+      if (!usable || !(gain > 0.0)) continue;
+      Cross cross;
+      cross.gain = gain;
+      for (int j = 0; j < 4; ++j)
+        cross.pleats[j] = {directions[j], up, fraction * reach[j], turn(j), 0.0};
+      crosses.push_back(cross);
+    }
+  }
+  std::stable_sort(crosses.begin(), crosses.end(),
+                   [](const Cross& a, const Cross& b) { return a.gain > b.gain; });
+  std::vector<std::array<SolvedPleat, 4>> best;
+  for (const Cross& cross : crosses)
+    if (best.size() < kCrossesTried) best.push_back(cross.pleats);
+  return best;
+}
+
 // A rigid motion, x -> linear * x + shift: where the pleats made so far on an end have moved it.
 struct Motion {
   glm::dmat3 linear{1.0};
@@ -372,25 +440,27 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     VertexIndex seed = 0;
     double reach = 0.0, spread = 0.0;
   };
-  auto hingeAt = [&](const glm::dvec3& p, const glm::dvec3& direction,
-                     double t) -> std::optional<Hinge> {
+  // On `on` (the sheet, or the sheet as pleats made so far left it), with its vertex normals.
+  auto hingeOn = [&](const Sheet& on, const std::vector<glm::dvec3>& onNormals, const glm::dvec3& p,
+                     const glm::dvec3& direction, double t) -> std::optional<Hinge> {
+    const std::size_t vertices = on.vertexCount();
     const glm::dvec3 wanted = centre + t * glm::dot(p - centre, direction) * direction;
     VertexIndex at = 0;
     double nearestHinge = 1e300;
-    for (std::size_t v = 0; v < n; ++v)
-      if (const double d = glm::distance(sheet.positions[v], wanted); d < nearestHinge) {
+    for (std::size_t v = 0; v < vertices; ++v)
+      if (const double d = glm::distance(on.positions[v], wanted); d < nearestHinge) {
         nearestHinge = d;
         at = static_cast<VertexIndex>(v);
       }
-    const glm::dvec3 h = sheet.positions[at], m = normals[at];
+    const glm::dvec3 h = on.positions[at], m = onNormals[at];
     Hinge hinge;
     hinge.along = direction - glm::dot(direction, m) * m;
     if (!(glm::length(hinge.along) > 1e-6) || !(glm::length(m) > 0.5)) return {};
     hinge.along = glm::normalize(hinge.along);
     hinge.bend = glm::dot(query.closestPoint(p) - p, m) >= 0.0 ? m : -m;
     // The seed: the end's vertex farthest beyond the hinge (on the part both folds move).
-    for (std::size_t v = 0; v < n; ++v)
-      if (const double d = glm::dot(sheet.positions[v] - h, hinge.along); d > hinge.reach) {
+    for (std::size_t v = 0; v < vertices; ++v)
+      if (const double d = glm::dot(on.positions[v] - h, hinge.along); d > hinge.reach) {
         hinge.reach = d;
         hinge.seed = static_cast<VertexIndex>(v);
       }
@@ -399,9 +469,9 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     // times tan(theta / 2): the planes pass at mid-height, and the pleat is widened so it is
     // nowhere narrower than `width` (else the second plane cuts the sheet under the flap).
     double low = 0.0, high = 0.0;
-    for (std::size_t v = 0; v < n; ++v)
-      if (std::abs(glm::dot(sheet.positions[v] - h, hinge.along)) < 0.02 * size) {
-        const double height = glm::dot(sheet.positions[v] - h, m);
+    for (std::size_t v = 0; v < vertices; ++v)
+      if (std::abs(glm::dot(on.positions[v] - h, hinge.along)) < 0.02 * size) {
+        const double height = glm::dot(on.positions[v] - h, m);
         low = std::min(low, height);
         high = std::max(high, height);
       }
@@ -409,22 +479,26 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     hinge.spread = high - low;
     return hinge;
   };
+  auto hingeAt = [&](const glm::dvec3& p, const glm::dvec3& direction, double t) {
+    return hingeOn(sheet, normals, p, direction, t);
+  };
   // Folds through `planes`, each grabbing the sheet at `seed`, made, scored, kept among the best
   // when they bring the sheet closer (as one group), and taken back.
   // `farthestWithin`: kept only where the sheet's farthest point (two-sided, exact) stays within
   // this (a family, whose pleats fold away paper its model does not see, may lay the sheet nearer
   // on the whole and leave an end short of the target's).
-  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds,
-                      double farthestWithin = kNone) {
-    deadline.countEvaluation();
+  // Each fold's seed is a vertex of `on`, the sheet the folds before it left.
+  auto makeFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds,
+                       const Sheet& on) {
     for (const auto& [plane, seed] : folds) {
-      const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[seed]);
+      const glm::dvec3 grab = session.beginDragAtDevelopment(on.development[seed]);
       session.updateDrag(plane.reflect(grab));
-      if (!session.commit()) {
-        undoAll();
-        return kNone;
-      }
+      if (!session.commit()) return false;
     }
+    return true;
+  };
+  // The folds made so far scored, kept when they help, and taken back.
+  auto scoreMade = [&](double farthestWithin) {
     const double after = fitter.approximateDistance(session.fixed());
     const bool keeps = after < before && (out.size() < count || after < out.back().after);
     if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore &&
@@ -449,6 +523,15 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     undoAll();
     return after;
   };
+  auto tryFolds = [&](const std::vector<std::pair<ReflectionPlane, VertexIndex>>& folds,
+                      double farthestWithin = kNone) {
+    deadline.countEvaluation();
+    if (!makeFolds(folds, sheet)) {
+      undoAll();
+      return kNone;
+    }
+    return scoreMade(farthestWithin);
+  };
   using Folds = std::vector<std::pair<ReflectionPlane, VertexIndex>>;
   // The two folds of the pleat at `hinge` turning its end by `degrees` (none where the end is
   // too short for it).
@@ -470,9 +553,10 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   // `sheetFrame`: the turn about the hinge's line across the sheet's normal where the hinge lies
   // (else about the line across the sheet's mean normal, as the heights were solved: on a
   // trough, a hinge on its flank turns the end sideways about the flank's own normal).
-  auto solvedFolds = [&](const SolvedPleat& solved, bool sheetFrame = true) {
+  auto solvedFoldsOn = [&](const Sheet& on, const std::vector<glm::dvec3>& onNormals,
+                           const SolvedPleat& solved, bool sheetFrame) {
     std::optional<Hinge> hinge =
-        hingeAt(centre + solved.at * solved.direction, solved.direction, 1.0);
+        hingeOn(on, onNormals, centre + solved.at * solved.direction, solved.direction, 1.0);
     if (!hinge) return Folds{};
     if (!sheetFrame) {
       hinge->along = solved.direction;
@@ -482,6 +566,9 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
       hinge->bend = glm::dot(m, solved.up) * solved.turn >= 0.0 ? m : -m;
     }
     return pleatAt(*hinge, std::abs(solved.turn) / kDegree);
+  };
+  auto solvedFolds = [&](const SolvedPleat& solved, bool sheetFrame = true) {
+    return solvedFoldsOn(sheet, normals, solved, sheetFrame);
   };
   auto trySolved = [&](const SolvedPleat& solved) {
     const Folds folds = solvedFolds(solved);
@@ -495,6 +582,42 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     if (folds.empty() || other.empty()) return kNone;
     folds.insert(folds.end(), other.begin(), other.end());
     return tryFolds(folds);
+  };
+  // Both ends of two lines across each other as one step, from a flat sheet (a saddle's rising
+  // ends along one, its falling ends along the other): the first line's ends bent, one fold each
+  // (on a flat sheet a reflection through a plane at half the turn about the hinge turns the
+  // end; a pleat there would stack three layers that the second line's pleats cross, and the
+  // paper passed through itself at every crossing: 160-200 triangle pairs on the example
+  // saddle), then the second line's ends pleated (the bent sheet's ends keep their bend, which one
+  // reflection would flip), their hinges found on the sheet the bends left (its ends now carry
+  // the raised flaps, so the pleat is widened by their height, and the seeds are its vertices).
+  auto tryCross = [&](const std::array<SolvedPleat, 4>& cross) {
+    Folds first;
+    for (int i = 0; i < 2; ++i) {
+      const std::optional<Hinge> hinge =
+          hingeAt(centre + cross[i].at * cross[i].direction, cross[i].direction, 1.0);
+      if (!hinge) return kNone;
+      // The end's direction once turned; the plane reflecting the along direction onto it.
+      const glm::dvec3 turned =
+          std::cos(cross[i].turn) * hinge->along + std::sin(cross[i].turn) * cross[i].up;
+      first.emplace_back(ReflectionPlane{hinge->middle, glm::normalize(hinge->along - turned)},
+                         hinge->seed);
+    }
+    deadline.countEvaluation();
+    if (!makeFolds(first, sheet)) {
+      undoAll();
+      return kNone;
+    }
+    const Sheet bent = session.fixed();
+    const std::vector<glm::dvec3> bentNormals = vertexNormals(bent);
+    for (int i = 2; i < 4; ++i) {
+      const Folds second = solvedFoldsOn(bent, bentNormals, cross[i], true);
+      if (second.empty() || !makeFolds(second, bent)) {
+        undoAll();
+        return kNone;
+      }
+    }
+    return scoreMade(kNone);
   };
   const std::vector<double> heights = heightsOver(points, distances, query, axisOf(solver, 0));
   const std::vector<SolvedPleat> solved = solvePleats(points, heights, centre, solver, width);
@@ -531,6 +654,15 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
       for (const double share : kFamilyShares) {
         if (deadline.passed()) return out;
         tryFamily(family, share);
+      }
+  if (flat && !fitter.revolutionTarget())
+    for (const std::array<SolvedPleat, 4>& cross :
+         solveCrosses(points, heightsAlong(points, query, axisOf(solver, 0)), centre, solver))
+      for (const double share : kSolvedShares) {
+        if (deadline.passed()) return out;
+        std::array<SolvedPleat, 4> tried = cross;
+        for (SolvedPleat& pleat : tried) pleat.turn *= share;
+        tryCross(tried);
       }
   for (const auto& [a, b] :
        flat ? decltype(solvedPairs(solved, 0.0)){} : solvedPairs(solved, 4.0 * width))
