@@ -56,7 +56,7 @@ constexpr double kFamilyShares[] = {0.9, 0.65};
 // Crosses (two lines' ends pleated as one step, from a flat sheet): the hinges' places (of the
 // way from the centre to the end) and the crosses made, the best by the model.
 constexpr double kCrossHinges[] = {0.15, 0.3, 0.45, 0.6};
-constexpr std::size_t kCrossesTried = 2;
+constexpr std::size_t kCrossesTried = 4;
 // Samples of the exact distance a family's farthest point is measured with.
 constexpr std::size_t kFarthestSamples = 3000;
 
@@ -275,11 +275,12 @@ std::vector<PleatFamily> solveFamilies(const std::vector<glm::dvec3>& points,
 
 // Crosses of pleats, from a flat sheet toward a shape curved both ways (a saddle, a chip): both
 // ends of a line through the sheet's centre and both ends of the line across it, each end turned
-// about a hinge at the same share of the way to the sheet's end (kCrossHinges), the four turns
+// about a hinge (both ends of a line at the same share of the way to the sheet's end, of
+// kCrossHinges; the line across at its own), the four turns
 // solved together in least squares from the target's height over the sheet (ramps, as a family's:
 // a turn adds height in proportion to the distance beyond its hinge; along two lines the ramps
 // overlap at the corners, where their heights add as the pleats' turns compose). The best
-// kCrossesTried (two directions, or two hinge places), best first; each the end along +line,
+// kCrossesTried (directions, hinge places), best first; each the end along +line,
 // -line, +across, -across.
 std::vector<std::array<SolvedPleat, 4>> solveCrosses(
     const std::vector<glm::dvec3>& points, const std::vector<double>& heights,
@@ -290,7 +291,9 @@ std::vector<std::array<SolvedPleat, 4>> solveCrosses(
     double gain = 0.0;
   };
   std::vector<Cross> crosses;
-  for (int k = 0; k < kDirections / 2; ++k) {
+  // A full half turn: each cross twice, its lines in either order (the first line's ends are
+  // bent, the second's pleated).
+  for (int k = 0; k < kDirections; ++k) {
     const double angle = std::numbers::pi * k / kDirections;
     const glm::dvec3 line = std::cos(angle) * e1 + std::sin(angle) * e2;
     const glm::dvec3 across = glm::cross(up, line);
@@ -304,29 +307,32 @@ std::vector<std::array<SolvedPleat, 4>> solveCrosses(
         reach[j] = std::max(reach[j], s[j][i]);
       }
     }
-    for (const double fraction : kCrossHinges) {
-      Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
-      Eigen::Vector4d right = Eigen::Vector4d::Zero(), row;
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        for (int j = 0; j < 4; ++j) row(j) = std::max(0.0, s[j][i] - fraction * reach[j]);
-        normal.noalias() += row * row.transpose();
-        right += heights[i] * row;
+    for (const double lineFraction : kCrossHinges)
+      for (const double acrossFraction : kCrossHinges) {
+        const std::array<double, 4> fraction{lineFraction, lineFraction, acrossFraction,
+                                             acrossFraction};
+        Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+        Eigen::Vector4d right = Eigen::Vector4d::Zero(), row;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+          for (int j = 0; j < 4; ++j) row(j) = std::max(0.0, s[j][i] - fraction[j] * reach[j]);
+          normal.noalias() += row * row.transpose();
+          right += heights[i] * row;
+        }
+        normal.diagonal().array() += 1e-9 * (normal.trace() + 1e-30);
+        Eigen::Vector4d turn = normal.ldlt().solve(right);
+        bool usable = true;
+        for (int j = 0; j < 4; ++j) {
+          turn(j) = std::clamp(turn(j), -kMostSolvedTurn, kMostSolvedTurn);
+          usable = usable && std::abs(turn(j)) >= kLeastSolvedTurn;
+        }
+        const double gain = 2.0 * turn.dot(right) - turn.dot(normal * turn);
+        if (!usable || !(gain > 0.0)) continue;
+        Cross cross;
+        cross.gain = gain;
+        for (int j = 0; j < 4; ++j)
+          cross.pleats[j] = {directions[j], up, fraction[j] * reach[j], turn(j), 0.0};
+        crosses.push_back(cross);
       }
-      normal.diagonal().array() += 1e-9 * (normal.trace() + 1e-30);
-      Eigen::Vector4d turn = normal.ldlt().solve(right);
-      bool usable = true;
-      for (int j = 0; j < 4; ++j) {
-        turn(j) = std::clamp(turn(j), -kMostSolvedTurn, kMostSolvedTurn);
-        usable = usable && std::abs(turn(j)) >= kLeastSolvedTurn;
-      }
-      const double gain = 2.0 * turn.dot(right) - turn.dot(normal * turn);
-      if (!usable || !(gain > 0.0)) continue;
-      Cross cross;
-      cross.gain = gain;
-      for (int j = 0; j < 4; ++j)
-        cross.pleats[j] = {directions[j], up, fraction * reach[j], turn(j), 0.0};
-      crosses.push_back(cross);
-    }
   }
   std::stable_sort(crosses.begin(), crosses.end(),
                    [](const Cross& a, const Cross& b) { return a.gain > b.gain; });
