@@ -17,7 +17,13 @@
 //    the target's outline (triangles farther than 3% of its size from every sample, measured
 //    across the sheet's normal so the sheet over a saddle's falling rim stays, dropped, kept
 //    parts that would only touch at a vertex filled back; offered when valid);
-//  - flat: a disk and a square of the target's area in the plane of its two largest axes.
+//  - flat: a disk and a square of the target's area in the plane of its two largest axes; and
+//    sheets cut to the target's footprint there (its samples boxed at 90 turns over a quarter
+//    turn): the square of the turn whose larger side is least, that side long (and one of the
+//    mean side, for an oblong footprint), and the rectangle of the least area, each centred on
+//    its box. A square outline spreads alike along any two axes in its plane, so the principal
+//    axes turn the square of the target's area anyhow, and a curved target's area exceeds its
+//    outline's: both put the sheet's corners past the target's sides.
 // Each is a catalogue sheet (or the swept one) moved rigidly, so its development is exact.
 //
 // Known limits: the axis of revolution passes through the centroid (a half vase is placed off

@@ -36,7 +36,16 @@
 // family of each count (3 to 8 hinges) made at 0.9 and 0.65 of its turns (each pleat folds away
 // paper the model leaves out), kept only where the sheet's exact farthest point does not move away
 // (that paper can leave an end short of the target's). Repeated step by step, the pleats
-// approximate the target's second curvature piecewise. Only where no solved pleat helps, the blind
+// approximate the target's second curvature piecewise. From a flat sheet (a square) toward a
+// target with no axis, first a cross as one step: both ends of a line through the sheet bent (one
+// fold each: on a flat sheet a reflection through a plane at half the turn about the hinge turns
+// the end), then both ends of the line across it pleated on the sheet the bends left (its ends
+// keep their bend, which one reflection would flip; pleats on both lines crossed each other's
+// layers, the paper passing through itself), the four turns solved together from the target's
+// heights (ramps beyond each hinge, as a family's), for 8 directions over a half turn (either
+// line bent first) and 4 x 4 hinge places, the best 4 made at their turns and at 0.7 of them: a
+// saddle rises at two opposite ends and falls at the other two, and a pleat per step leaves three
+// ends as far (the farthest point unchanged). Only where no solved pleat helps, the blind
 // way of before: hinges on the way from the sheet's centre toward its vertices farthest from the
 // target, bends on a grid. Each pleat is made on the real sheet (FoldSession: a sliver is refused
 // as a designer's drag is), scored with FoldFitter::approximateDistance, checked for
