@@ -1569,6 +1569,14 @@ class FitRun {
       }
       if (deadline.passed()) {
         // A depth the deadline cut short is dropped whole: what is kept does not depend on speed.
+        // Except the first, when nothing else would be kept: a step made whole before the clock
+        // ran out (the nested rings answer with the batches they finished, coarsest first) is
+        // kept rather than no fold at all on a loaded machine.
+        if (depth == 0 && best_.groups.empty() && !deadline.isCancelled())
+          for (const FoldSequence& child : children) {
+            if (child.score < best_.score) best_ = child;
+            if (child.monotone && child.score < bestMonotone_.score) bestMonotone_ = child;
+          }
         noteCut(deadline);
         return;
       }

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <optional>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
@@ -378,14 +377,29 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
         fitProfileCreases(profile, radius, k, fits.empty() ? nullptr : &fits.back(), random));
   }
   if (deadline.givesUp()) return {};
+  // Coarse to fine, in batches: first the fit nearest the profile at the coarsest order (a step
+  // of the fewest folds that follows the profile best), then that fit's other orders and its
+  // rings drawn outermost first (with two creases or more, where the centre line allows it: see
+  // the header), then each other fit by its distance to the profile. Between batches the clock
+  // is read, and a batch the time left would not finish (judged by the last batch's seconds per
+  // fold) is not started: the step still lands, coarser, on a loaded machine.
+  std::vector<std::size_t> byScore(fits.size());
+  for (std::size_t i = 0; i < fits.size(); ++i) byScore[i] = i;
+  std::stable_sort(byScore.begin(), byScore.end(),
+                   [&](std::size_t a, std::size_t b) { return fits[a].score < fits[b].score; });
   std::vector<Candidate> candidates;
-  for (const ProfileCreases& fit : fits)
-    for (int order : orders) candidates.push_back({fit, order, false});
-  // With two creases or more, the same rings outermost first (each on the flat sheet, see the
-  // header), after every inner-first candidate so the inner-first ones keep their order.
-  for (const ProfileCreases& fit : fits)
-    if (fit.arcs.size() >= 2 && outermostFirstHolds(fit, radius))
+  std::vector<std::size_t> batchEnds;
+  for (std::size_t f : byScore) {
+    const ProfileCreases& fit = fits[f];
+    const bool outerToo = fit.arcs.size() >= 2 && outermostFirstHolds(fit, radius);
+    for (int order : orders) {
+      candidates.push_back({fit, order, false});
+      if (batchEnds.empty()) batchEnds.push_back(candidates.size());  // the coarsest first
+    }
+    if (outerToo)
       for (int order : orders) candidates.push_back({fit, order, true});
+    if (batchEnds.back() != candidates.size()) batchEnds.push_back(candidates.size());
+  }
   const double turn = unit(random) * 2.0 * kPi;
 
   const std::vector<FoldRecord> base(
@@ -398,16 +412,21 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const double farthestBefore = farthestApart(sheet, fitter.target());
   std::vector<FoldSuggestion> made(candidates.size());
   std::vector<double> farthest(candidates.size(), 0.0);
-  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
-  tbb::parallel_for(std::size_t(0), candidates.size(), [&](std::size_t c) {
+  // Each candidate on a session made afresh at the base design: taking its folds back one undo at
+  // a time replayed the sheet from a keyframe and rebuilt its adjacency for each fold, several
+  // times what the folds themselves cost (the base is replayed once, and is short or empty).
+  const auto foldsOf = [&](std::size_t from, std::size_t to) {
+    double folds = 0.0;
+    for (std::size_t c = from; c < to; ++c)
+      folds += static_cast<double>(candidates[c].order * candidates[c].creases.arcs.size());
+    return folds;
+  };
+  const auto evaluate = [&](std::size_t c) {
     if (deadline.passed()) return;
     deadline.countEvaluation();
-    std::unique_ptr<FoldSession>& own = sessions.local();
-    if (!own) {
-      own = std::make_unique<FoldSession>(session.initial());
-      if (session.symmetricFolder()) own->setSymmetry(*session.symmetry());
-      own->applyRecords(base);
-    }
+    FoldSession own(session.initial());
+    if (session.symmetricFolder()) own.setSymmetry(*session.symmetry());
+    own.applyRecords(base);
     const Candidate& candidate = candidates[c];
     // Ring after ring; one that passes the sheet through itself (on a steep profile a ring's
     // planes can take the corner paper of the flaps beside their own) is taken back, and the
@@ -415,26 +434,37 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     for (const NestedRing& ring :
          nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius,
                           candidate.outerFirst)) {
-      const std::size_t foldsBefore = own->foldCount();
-      if (makeNestedRing(*own, ring.shape, local, ring.flap) == 0) continue;
+      const std::size_t foldsBefore = own.foldCount();
+      if (makeNestedRing(own, ring.shape, local, ring.flap) == 0) continue;
       if (!allowCrossing &&
-          findSelfIntersections(own->fixed()).intersections.size() > crossingsBefore) {
-        while (own->foldCount() > foldsBefore) own->undo();
+          findSelfIntersections(own.fixed()).intersections.size() > crossingsBefore) {
+        while (own.foldCount() > foldsBefore) own.undo();
         if (candidate.outerFirst) continue;
         break;
       }
     }
-    if (own->foldCount() > base.size()) {
-      made[c].folds.assign(own->folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
-                           own->folds().begin() + static_cast<std::ptrdiff_t>(own->foldCount()));
-      made[c].sheet = own->fixed();
+    if (own.foldCount() > base.size()) {
+      made[c].folds.assign(own.folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
+                           own.folds().begin() + static_cast<std::ptrdiff_t>(own.foldCount()));
+      made[c].sheet = own.fixed();
       made[c].before = before;
       made[c].after = fitter.approximateDistance(made[c].sheet);
       farthest[c] = farthestApart(made[c].sheet, fitter.target());
     }
-    while (own->foldCount() > base.size()) own->undo();
-  });
-  if (deadline.givesUp()) return {};
+  };
+  double secondsPerFold = 0.0;
+  for (std::size_t b = 0, from = 0; b < batchEnds.size(); from = batchEnds[b++]) {
+    const auto now = std::chrono::steady_clock::now();
+    const double left = std::chrono::duration<double>(deadline.at - now).count();
+    if (deadline.passed() || (b > 0 && secondsPerFold * foldsOf(from, batchEnds[b]) > left)) {
+      break;
+    }
+    tbb::parallel_for(from, batchEnds[b], evaluate);
+    secondsPerFold = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count() /
+                     std::max(1.0, foldsOf(from, batchEnds[b]));
+  }
+  // A cancel answers nothing; the clock, what the batches finished (each candidate is whole).
+  if (deadline.isCancelled()) return {};
   std::vector<FoldSuggestion> out;
   for (std::size_t c = 0; c < made.size(); ++c)
     if (!made[c].folds.empty() && made[c].after < before &&

@@ -25,16 +25,20 @@
 // Inputs: a session whose sheet lies flat across `axis` (height spread at most 2% of its radius;
 // any other sheet gets none: a folded sheet is no longer a segment in the meridian plane) and the
 // target's area-uniform samples. Output: up to `count` FoldSuggestions (all rings of one fit as
-// one step), best first, each closer than the sheet was. Known limits: where n flaps meet at the
-// polygon's corners the sheet has more paper than the bowl; a fold takes what lies beyond its
-// plane and is connected to its seed, so the corners fold with one flap and stand out (the
-// Hausdorff distance shows them), and on a steep profile a second ring's planes take the corner
-// paper of the flaps beside their own and cross it: such a ring is taken back and the rings
-// before it kept. Fits with two creases or more are also made outermost first, each ring on the
-// flat sheet (nestedRingShapes' outerFirst), where outermostFirstHolds: no ring meets corner
-// paper an inner one left, so a lip turning back out is made (a ring drawn so that crosses is
-// taken back alone). The model is exact only along each flap's centre line; the
-// sheet's centre is taken to lie on the axis (the sheet's own centroid is used as the axis point).
+// one step), best first, each closer than the sheet was. Within the deadline: the candidates are
+// made in batches, coarsest first (the fit nearest the profile at its fewest planes, alone), and a
+// batch the time left would not hold is not started; when the clock cuts the step, the candidates
+// made whole are answered (a cancel answers nothing), so which are made then depends on the
+// machine. Known limits: where n flaps meet at the polygon's corners the sheet has more paper than
+// the bowl; a fold takes what lies beyond its plane and is connected to its seed, so the corners
+// fold with one flap and stand out (the Hausdorff distance shows them), and on a steep profile a
+// second ring's planes take the corner paper of the flaps beside their own and cross it: such a
+// ring is taken back and the rings before it kept. Fits with two creases or more are also made
+// outermost first, each ring on the flat sheet (nestedRingShapes' outerFirst), where
+// outermostFirstHolds: no ring meets corner paper an inner one left, so a lip turning back out is
+// made (a ring drawn so that crosses is taken back alone). The model is exact only along each
+// flap's centre line; the sheet's centre is taken to lie on the axis (the sheet's own centroid is
+// used as the axis point).
 #pragma once
 
 #include <cstddef>
