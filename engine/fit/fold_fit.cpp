@@ -1271,6 +1271,13 @@ class FitRun {
     const std::size_t readGroups = (plan.folds.size() + perFold - 1) / perFold;
     const std::size_t most = std::min<std::size_t>(
         5, options_.maxFolds > readGroups ? options_.maxFolds - readGroups : 0);
+    // Per way: whether its motion was made within the planes left (first or last). Such a way
+    // missed for another reason than its count, which the flips below do not mend.
+    std::vector<char> withinCount(motions.size(), 0);
+    auto noted = [&](std::vector<ReflectionPlane> planes, std::size_t way) {
+      if (!planes.empty() && planes.size() <= most) withinCount[way] = 1;
+      return planes;
+    };
     // Each way found is made and measured: one that does not reach (a symmetric design's images
     // made about the centre a first whole-sheet fold moved) leaves the next its turn.
     std::size_t tries = 0;
@@ -1311,6 +1318,7 @@ class FitRun {
                                        kWholeSheetTolerance * fitter_.targetDiagonal(),
                                        kMostRegistrations, reading);
         lastAt.assign(motions.size(), std::nullopt);
+        withinCount.assign(motions.size(), 0);
       }
       // Each count tried on the sheet for every motion, then on the sheet folded by the folds read
       // (a replay, dearer) for every motion.
@@ -1333,20 +1341,22 @@ class FitRun {
           const RigidMotion& motion = motions[k % motions.size()];
           if (!last) {
             if (count > upTo) continue;
-            if (tryPlanes(wholeSheetReflections(motion, session_.initial().positions, count), false,
-                          plan, std::nullopt))
+            if (tryPlanes(noted(wholeSheetReflections(motion, session_.initial().positions, count),
+                                k % motions.size()),
+                          false, plan, std::nullopt))
               return true;
             continue;
           }
           std::optional<std::vector<FoldedFirst>>& options = lastAt[k % motions.size()];
           if (!options) options = optionsFor(motion);  // replays, once per motion
           for (const FoldedFirst& option : *options)
-            if (tryPlanes(wholeSheetReflections(option.rest, option.positions, count), true,
-                          option.movedBack, option.lastSeed))
+            if (tryPlanes(noted(wholeSheetReflections(option.rest, option.positions, count),
+                                k % motions.size()),
+                          true, option.movedBack, option.lastSeed))
               return true;
         }
-      for (const RigidMotion& motion : motions)
-        if (tryFlips(motion)) return true;
+      for (std::size_t way = 0; way < motions.size(); ++way)
+        if (!withinCount[way] && tryFlips(motions[way])) return true;
     }
     return false;
   }
