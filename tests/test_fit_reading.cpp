@@ -199,6 +199,26 @@ TEST(FitReading, AnUnfoldingOnTheSheetStopsTryingOrders) {
       1e-3);
 }
 
+// Whole-sheet folds made between creasing folds (issue 38's drag recipe on the helix's tangent
+// developable: 7 folds, 2 of them moved the whole sheet): read with the motion last, the 5 folds
+// read leave a turn and a shift along its axis, 4 whole-sheet folds, 9 in all, past 8. One fold
+// read made from its other side mirrors what is left to move through its plane, which then takes
+// 3: 8 folds, exactly the target.
+TEST(FitReading, WholeSheetFoldsBetweenCreasingFoldsFitWithinTheFolds) {
+  const ReachTarget t = reachTarget("drag_outer_helix_tangent_7");
+  const FoldFitter fitter(t.target);
+  FoldSession session(t.initial);
+  FitOptions options;
+  options.maxFolds = 8;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 300;  // the search, where the reading fails: short and blind
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_LE(session.foldCount(), 8u);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-3);
+  EXPECT_TRUE(identical(replayFolds(t.initial, result.folds), session.fixed()));
+}
+
 // An unfolding longer than the fit's time (a symmetric disk's 8 folds, which leave it moved
 // whole: 600 orders tried, a minute) ran to the search's deadline and, cut short, answered
 // nothing: the whole time passed with no candidate scored and no fold kept. Cut short, it names

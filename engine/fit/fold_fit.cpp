@@ -65,6 +65,8 @@ constexpr double kRestSnap = 1e-3;
 constexpr std::size_t kWholeSheetTries = 6;
 // Seeds spread over the sheet that the last fold read is made from, each its own images.
 constexpr std::size_t kLastSeeds = 16;
+// Folds read made from their other side, at most, where the whole-sheet folds take too many.
+constexpr std::size_t kFlipTries = 8;
 // Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
 constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
@@ -910,6 +912,24 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
 
 namespace {
 
+// The reflection through `plane` as a rigid motion.
+RigidMotion reflectionThrough(const ReflectionPlane& plane) {
+  const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(plane.normal, plane.normal);
+  return {mirror, 2.0 * glm::dot(plane.point, plane.normal) * plane.normal};
+}
+
+// The unfolding read with fold k made from the other side of its plane: the form after it is the
+// same one mirrored through that plane, so every later fold's plane is mirrored too (its seed, a
+// point of the development, names the same part).
+TargetUnfolding flippedAt(TargetUnfolding plan, std::size_t k) {
+  const RigidMotion mirror = reflectionThrough(plan.folds[k].plane);
+  for (std::size_t j = k + 1; j < plan.folds.size(); ++j) {
+    ReflectionPlane& plane = plan.folds[j].plane;
+    plane = {mirror(plane.point), mirror.linear * plane.normal};
+  }
+  return plan;
+}
+
 // A fold sequence of the beam, beyond the session's own folds.
 struct FoldSequence {
   std::vector<FoldRecord> folds;
@@ -1160,17 +1180,28 @@ class FitRun {
       RigidMotion rest;
       TargetUnfolding movedBack;
       std::optional<glm::dvec2> lastSeed;  // the last fold read made from this seed
+      std::optional<std::size_t> flip;     // this fold read made from its other side
     };
-    auto foldedFirst = [&](const RigidMotion& motion,
-                           std::optional<glm::dvec2> lastSeed) -> std::optional<FoldedFirst> {
+    auto foldedFirst = [&](const RigidMotion& motion, std::optional<glm::dvec2> lastSeed,
+                           std::optional<std::size_t> flip =
+                               std::nullopt) -> std::optional<FoldedFirst> {
       TargetUnfolding movedBack = movedBackBy(motion);
+      // Fold `flip` made from its other side leaves the form mirrored through its plane, and the
+      // later folds with it: the motion left takes that mirror first (one plane more or less).
+      RigidMotion left = motion;
+      if (flip) {
+        const RigidMotion mirror = reflectionThrough(movedBack.folds[*flip].plane);
+        left = {motion.linear * mirror.linear, motion.linear * mirror.offset + motion.offset};
+        movedBack = flippedAt(std::move(movedBack), *flip);
+      }
       const std::unique_ptr<FoldSession> lastBranch = sessionFor({});
       bool everyFoldRead = false;
       replay(movedBack, *lastBranch, session_.initial(), reading, options_.maxFolds, &everyFoldRead,
-             lastSeed);
+             lastSeed, flip);
       if (!everyFoldRead) return std::nullopt;
       if (!symmetry)
-        return FoldedFirst{lastBranch->fixed().positions, motion, std::move(movedBack), lastSeed};
+        return FoldedFirst{lastBranch->fixed().positions, left, std::move(movedBack), lastSeed,
+                           flip};
       // A symmetric fold's image may have moved the whole sheet (its plane missed it), and the
       // replay brings it again: what is left to move is measured, not the copy's motion.
       std::vector<ReflectionPlane> read;
@@ -1183,7 +1214,7 @@ class FitRun {
       // that near (the sequence made is measured before it is kept).
       return FoldedFirst{lastBranch->fixed().positions,
                          snappedToFewPlanes(*rest, kRestSnap, kRestSnap * fitter_.targetDiagonal()),
-                         std::move(movedBack), lastSeed};
+                         std::move(movedBack), lastSeed, std::nullopt};
     };
     // Each way's options: the replay itself, and (symmetric) the same folds moved by a symmetry
     // of the sheet where that leaves fewer whole-sheet folds to make (replayed_motion.hpp).
@@ -1240,14 +1271,45 @@ class FitRun {
     const std::size_t readGroups = (plan.folds.size() + perFold - 1) / perFold;
     const std::size_t most = std::min<std::size_t>(
         5, options_.maxFolds > readGroups ? options_.maxFolds - readGroups : 0);
+    // Per way: whether its motion was made within the planes left (first or last). Such a way
+    // missed for another reason than its count, which the flips below do not mend.
+    std::vector<char> withinCount(motions.size(), 0);
+    auto noted = [&](std::vector<ReflectionPlane> planes, std::size_t way) {
+      if (!planes.empty() && planes.size() <= most) withinCount[way] = 1;
+      return planes;
+    };
     // Each way found is made and measured: one that does not reach (a symmetric design's images
     // made about the centre a first whole-sheet fold moved) leaves the next its turn.
     std::size_t tries = 0;
     auto tryPlanes = [&](const std::vector<ReflectionPlane>& planes, bool atEnd,
-                         const TargetUnfolding& read, std::optional<glm::dvec2> lastSeed) {
+                         const TargetUnfolding& read, std::optional<glm::dvec2> lastSeed,
+                         std::optional<std::size_t> flip = std::nullopt) {
       if (planes.empty() || planes.size() + readGroups > options_.maxFolds) return false;
       ++tries;
-      return makeWholeSheetFolds(planes, atEnd, plan, read, lastSeed, deadline);
+      return makeWholeSheetFolds(planes, atEnd, plan, read, lastSeed, deadline, flip);
+    };
+    // A design without symmetry whose whole-sheet folds came between its creasing folds: read
+    // with every whole-sheet fold last, the motion may take more planes than are left (a turn
+    // and a shift along its axis, four). Each fold read made from its other side mirrors the
+    // motion through its plane, which then takes one plane fewer or more: each fold flipped in
+    // turn, its motion made last with the fewest planes that allow.
+    std::size_t flipTries = 0;
+    auto tryFlips = [&](const RigidMotion& motion) {
+      if (symmetry || plan.folds.empty()) return false;
+      for (std::size_t k = 0; k < plan.folds.size() && flipTries < kFlipTries; ++k) {
+        if (reading.passed() || deadline.passed()) return false;
+        const std::optional<FoldedFirst> option = foldedFirst(motion, std::nullopt, k);
+        if (!option) continue;
+        for (std::size_t count = 1; count <= most; ++count) {
+          const std::vector<ReflectionPlane> planes =
+              wholeSheetReflections(option->rest, option->positions, count);
+          if (planes.empty()) continue;
+          ++flipTries;
+          if (tryPlanes(planes, true, option->movedBack, std::nullopt, option->flip)) return true;
+          break;
+        }
+      }
+      return false;
     };
     for (int pass = 0; pass < 2 && tries < kWholeSheetTries; ++pass) {
       if (pass == 1) {
@@ -1256,6 +1318,7 @@ class FitRun {
                                        kWholeSheetTolerance * fitter_.targetDiagonal(),
                                        kMostRegistrations, reading);
         lastAt.assign(motions.size(), std::nullopt);
+        withinCount.assign(motions.size(), 0);
       }
       // Each count tried on the sheet for every motion, then on the sheet folded by the folds read
       // (a replay, dearer) for every motion.
@@ -1278,18 +1341,22 @@ class FitRun {
           const RigidMotion& motion = motions[k % motions.size()];
           if (!last) {
             if (count > upTo) continue;
-            if (tryPlanes(wholeSheetReflections(motion, session_.initial().positions, count), false,
-                          plan, std::nullopt))
+            if (tryPlanes(noted(wholeSheetReflections(motion, session_.initial().positions, count),
+                                k % motions.size()),
+                          false, plan, std::nullopt))
               return true;
             continue;
           }
           std::optional<std::vector<FoldedFirst>>& options = lastAt[k % motions.size()];
           if (!options) options = optionsFor(motion);  // replays, once per motion
           for (const FoldedFirst& option : *options)
-            if (tryPlanes(wholeSheetReflections(option.rest, option.positions, count), true,
-                          option.movedBack, option.lastSeed))
+            if (tryPlanes(noted(wholeSheetReflections(option.rest, option.positions, count),
+                                k % motions.size()),
+                          true, option.movedBack, option.lastSeed))
               return true;
         }
+      for (std::size_t way = 0; way < motions.size(); ++way)
+        if (!withinCount[way] && tryFlips(motions[way])) return true;
     }
     return false;
   }
@@ -1299,12 +1366,13 @@ class FitRun {
   // they reach.
   bool makeWholeSheetFolds(const std::vector<ReflectionPlane>& planes, bool atEnd,
                            const TargetUnfolding& plan, const TargetUnfolding& read,
-                           std::optional<glm::dvec2> lastSeed, const Deadline& deadline) {
+                           std::optional<glm::dvec2> lastSeed, const Deadline& deadline,
+                           std::optional<std::size_t> flip = std::nullopt) {
     const std::unique_ptr<FoldSession> branch = sessionFor({});
     FoldSequence sequence;
     if (atEnd) {
       const FoldSequence made =
-          replay(read, *branch, session_.initial(), deadline, 0, nullptr, lastSeed);
+          replay(read, *branch, session_.initial(), deadline, 0, nullptr, lastSeed, flip);
       sequence.folds = made.folds;
       sequence.groups = made.groups;
     }
@@ -1336,9 +1404,13 @@ class FitRun {
   // fold brings its images, which the unfolding reads as folds of their own: a fold read whose
   // plane an image already made is skipped. `everyFoldRead`, when given: whether every fold read
   // was made (or an image made it), none left for a failure, the deadline or `most`.
+  // `flip`, when given: that fold is made from the other side of its plane (the part the read
+  // fold kept moves instead), which leaves the form one reflection through that plane away
+  // (flippedAt, where the later planes are moved to match).
   FoldSequence replay(const TargetUnfolding& plan, FoldSession& branch, const Sheet& seedsOn,
                       const Deadline& deadline, std::size_t most = 0, bool* everyFoldRead = nullptr,
-                      std::optional<glm::dvec2> lastSeed = std::nullopt) const {
+                      std::optional<glm::dvec2> lastSeed = std::nullopt,
+                      std::optional<std::size_t> flip = std::nullopt) const {
     if (most == 0) most = options_.maxFolds;
     const Symmetry* symmetry = session_.symmetry();
     const double size = sheetSize(session_.initial());
@@ -1364,7 +1436,12 @@ class FitRun {
       if (planned.groups.size() >= most || deadline.passed()) return planned;
       const std::size_t before = branch.foldCount();
       const bool seedGiven = lastSeed && k + 1 == plan.folds.size();
-      if (!makeRead(plan, k, seedGiven ? *lastSeed : seeds[k], branch, seedGiven)) return planned;
+      if (flip && *flip == k) {
+        const std::optional<glm::dvec2> other = otherSide(plan.folds[k].plane, seeds[k], branch);
+        if (!other || !makeRead(plan, k, *other, branch, true)) return planned;
+      } else if (!makeRead(plan, k, seedGiven ? *lastSeed : seeds[k], branch, seedGiven)) {
+        return planned;
+      }
       planned.folds.insert(
           planned.folds.end(), branch.folds().begin() + static_cast<std::ptrdiff_t>(before),
           branch.folds().begin() + static_cast<std::ptrdiff_t>(branch.foldCount()));
@@ -1372,6 +1449,28 @@ class FitRun {
     }
     if (everyFoldRead) *everyFoldRead = true;
     return planned;
+  }
+
+  // A seed on the other side of `plane` from `seed` as `branch` lies now: the development point
+  // of the vertex farthest from the plane there (deep in the part the fold kept).
+  static std::optional<glm::dvec2> otherSide(const ReflectionPlane& plane, const glm::dvec2& seed,
+                                             const FoldSession& branch) {
+    const Sheet& sheet = branch.fixed();
+    const std::optional<SurfacePoint> at =
+        locateDevelopmentPoint(sheet, seed, 1e-6 * sheetSize(sheet));
+    if (!at) return std::nullopt;
+    const double side = plane.signedDistance(positionOf(sheet, *at));
+    std::optional<VertexIndex> farthest;
+    double most = 0.0;
+    for (VertexIndex v = 0; v < sheet.vertexCount(); ++v) {
+      const double d = -side * plane.signedDistance(sheet.positions[v]);
+      if (d > most) {
+        most = d;
+        farthest = v;
+      }
+    }
+    if (!farthest) return std::nullopt;
+    return sheet.development[*farthest];
   }
 
   // The unfolding's fold k made on `branch` from `seed`. A symmetric design's fold brings the
