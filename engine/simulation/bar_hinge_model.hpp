@@ -121,6 +121,14 @@ struct BarHingeModel {
   std::size_t hingeSlot0 = 0, glueSlot0 = 0, slotCount = 0;
   std::vector<std::uint32_t> gatherOffsets;
   std::vector<std::uint32_t> gatherSlots;
+  // The dynamic step's own gather (dynamic_solver.cpp): the terms of gatherSlots in the same
+  // order, each an index into a compact force buffer that keeps one force per bar and glue pair
+  // (bar i at i, hinge j's a, b, c, d at bars + 4j.., glue g at bars + 4 hinges + g), with
+  // kNegatedTerm set where the vertex takes the opposite force (a bar's or pair's second end).
+  // The same sums bit for bit (x + -f is x - f) from a third less memory.
+  static constexpr std::uint32_t kNegatedTerm = 0x80000000u;
+  std::vector<std::uint32_t> stepTerms;
+  std::size_t stepForceCount = 0;
 
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;
@@ -191,6 +199,19 @@ void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slo
 
 // Calls body(i) for i in [0, count) on all cores; for kernels that write only their own index,
 // whose result is then the same however TBB splits the range.
+// Calls body(begin, end) over [0, count) in ranges of about `grain` on all cores; for kernels
+// that write only their own indices (the result is the same however TBB splits the range).
+template <typename Body>
+void forEachRange(std::size_t count, std::size_t grain, const Body& body) {
+  if (count <= grain) {
+    body(std::size_t(0), count);
+    return;
+  }
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, count, grain),
+      [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
+}
+
 template <typename Body>
 void forEachIndex(std::size_t count, const Body& body) {
   constexpr std::size_t kGrain = 1024;
