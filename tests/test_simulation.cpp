@@ -436,10 +436,11 @@ TEST(Simulation, SameInputAndStepsGiveTheSameStateBitForBit) {
                            a.positions.size() * sizeof(glm::dvec3)));
 }
 
-// The dynamic step keeps one force per bar and glue pair and gathers it with its sign
-// (BarHingeModel::stepTerms); the scatter it replaced (elementForces into a slot per element end,
-// gatherForces, then the same semi-implicit Euler) is the reference, and the two must give the same
-// state bit for bit, pins, glue and two threads included.
+// The dynamic step writes each element's forces where each vertex reads them, in gather order
+// (BarHingeModel::scatterSlots), and sums them in one run; the slot layout it replaced
+// (elementForces into a slot per element end, gatherForces through gatherSlots, then the same
+// semi-implicit Euler) is the reference, and the two must give the same state bit for bit, pins,
+// glue and two threads included.
 TEST(Simulation, DynamicStepGivesTheBitsOfTheSlotScatterAndGather) {
   ModelOptions pinnedAndGlued;
   pinnedAndGlued.pins = {0, 1};

@@ -417,28 +417,11 @@ void buildGatherLists(BarHingeModel& model) {
   std::vector<std::uint32_t> fill(model.gatherOffsets.begin(), model.gatherOffsets.end() - 1);
   for (std::size_t s = 0; s < model.slotCount; ++s)
     model.gatherSlots[fill[slotVertex[s]]++] = static_cast<std::uint32_t>(s);
-  // The dynamic step's terms: each slot's place in the compact buffer, its sign in the top bit.
-  const std::size_t barCount = model.bars.size(), hingeCount = model.hinges.size();
-  model.stepForceCount = barCount + 4 * hingeCount + model.glue.size();
-  if (model.stepForceCount >= BarHingeModel::kNegatedTerm)
+  if (model.slotCount > 0xffffffffu)
     throw SimulationInputError("the pattern has more elements than the simulation can index");
-  model.stepTerms.resize(model.slotCount);
-  for (std::size_t k = 0; k < model.slotCount; ++k) {
-    const std::size_t s = model.gatherSlots[k];
-    std::size_t term = 0;
-    bool negated = false;
-    if (s < model.hingeSlot0) {
-      term = s / 2;
-      negated = s % 2 == 1;
-    } else if (s < model.glueSlot0) {
-      term = barCount + (s - model.hingeSlot0);
-    } else {
-      term = barCount + 4 * hingeCount + (s - model.glueSlot0) / 2;
-      negated = (s - model.glueSlot0) % 2 == 1;
-    }
-    model.stepTerms[k] =
-        static_cast<std::uint32_t>(term) | (negated ? BarHingeModel::kNegatedTerm : 0u);
-  }
+  model.scatterSlots.resize(model.slotCount);
+  for (std::size_t k = 0; k < model.slotCount; ++k)
+    model.scatterSlots[model.gatherSlots[k]] = static_cast<std::uint32_t>(k);
 }
 
 }  // namespace

@@ -121,14 +121,10 @@ struct BarHingeModel {
   std::size_t hingeSlot0 = 0, glueSlot0 = 0, slotCount = 0;
   std::vector<std::uint32_t> gatherOffsets;
   std::vector<std::uint32_t> gatherSlots;
-  // The dynamic step's own gather (dynamic_solver.cpp): the terms of gatherSlots in the same
-  // order, each an index into a compact force buffer that keeps one force per bar and glue pair
-  // (bar i at i, hinge j's a, b, c, d at bars + 4j.., glue g at bars + 4 hinges + g), with
-  // kNegatedTerm set where the vertex takes the opposite force (a bar's or pair's second end).
-  // The same sums bit for bit (x + -f is x - f) from a third less memory.
-  static constexpr std::uint32_t kNegatedTerm = 0x80000000u;
-  std::vector<std::uint32_t> stepTerms;
-  std::size_t stepForceCount = 0;
+  // The dynamic step's scatter (dynamic_solver.cpp): slot s's place in gather order (the inverse
+  // of gatherSlots), where the step writes its force so that each vertex then reads its forces
+  // in one run; the same sums bit for bit as gathering through gatherSlots.
+  std::vector<std::uint32_t> scatterSlots;
 
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;

@@ -41,15 +41,16 @@ namespace {
 constexpr std::size_t kElementGrain = 4096;
 constexpr std::size_t kVertexGrain = 2048;
 
-// Every element's force into the compact buffer (BarHingeModel::stepTerms): a bar's and a glue
-// pair's force on its first vertex, a hinge's on each of its four; every hinge's angle unwrapped
-// in place. The same expressions as elementForces, so the same bits.
-void compactElementForces(const BarHingeModel& model, const std::vector<double>& targets,
+// Every element's force on each of its vertices, written where that vertex reads it
+// (BarHingeModel::scatterSlots); every hinge's angle unwrapped in place. The same expressions as
+// elementForces, so the same bits.
+void scatterElementForces(const BarHingeModel& model, const std::vector<double>& targets,
                           double dampingRatio, SimulationState& state) {
   const glm::dvec3* x = state.positions.data();
   const glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* forces = state.slotForces.data();
   double* angles = state.hingeAngles.data();
+  const std::uint32_t* scatter = model.scatterSlots.data();
   const std::array<std::uint32_t, 2>* bars = model.bars.data();
   const double* barStiffness = model.barStiffness.data();
   const double* barLength = model.barLength.data();
@@ -59,8 +60,8 @@ void compactElementForces(const BarHingeModel& model, const std::vector<double>&
   const double* target = targets.data();
   const std::size_t barCount = model.bars.size(), hingeCount = model.hinges.size();
   const std::size_t hingeEnd = barCount + hingeCount;
-  glm::dvec3* hingeForces = forces + barCount;
-  glm::dvec3* glueForces = hingeForces + 4 * hingeCount;
+  const std::uint32_t* hingeScatter = scatter + model.hingeSlot0;
+  const std::uint32_t* glueScatter = scatter + model.glueSlot0;
   forEachRange(
       hingeEnd + model.glue.size(), kElementGrain, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < std::min(end, barCount); ++i) {
@@ -74,7 +75,8 @@ void compactElementForces(const BarHingeModel& model, const std::vector<double>&
                 dampingRatio * barDamping[i] * glm::dot(velocity[b] - velocity[a], delta) / length;
             force = (pull / length) * delta;
           }
-          forces[i] = force;
+          forces[scatter[2 * i]] = force;
+          forces[scatter[2 * i + 1]] = -force;
         }
         for (std::size_t e = std::max(begin, barCount); e < std::min(end, hingeEnd); ++e) {
           const std::size_t j = e - barCount;
@@ -84,35 +86,31 @@ void compactElementForces(const BarHingeModel& model, const std::vector<double>&
               hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], angles[j], gradient);
           angles[j] = angle;
           const double torque = -hingeStiffness[j] * (angle - target[j]);
-          glm::dvec3* slot = hingeForces + 4 * j;
-          for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];
+          for (int k = 0; k < 4; ++k) forces[hingeScatter[4 * j + k]] = torque * gradient[k];
         }
         for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
           const std::size_t g = e - hingeEnd;
           const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
-          glueForces[g] = model.glueStiffness * (x[b] - x[a]);
+          const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
+          forces[glueScatter[2 * g]] = force;
+          forces[glueScatter[2 * g + 1]] = -force;
         }
       });
 }
 
-// Each free vertex sums its terms in the gather order and moves by semi-implicit Euler.
+// Each free vertex sums its forces, one run in gather order, and moves by semi-implicit Euler.
 void moveVertices(const BarHingeModel& model, double dt, double keep, SimulationState& state) {
-  static constexpr double kSign[2] = {1.0, -1.0};  // times -1 is exact: x + -f is x - f
   const glm::dvec3* forces = state.slotForces.data();
   glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* positions = state.positions.data();
   const std::uint32_t* offsets = model.gatherOffsets.data();
-  const std::uint32_t* terms = model.stepTerms.data();
   const std::uint8_t* pinned = model.pinned.data();
   const double* mass = model.mass.data();
   forEachRange(model.vertexCount(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       if (pinned[v]) continue;
       glm::dvec3 total(0.0);
-      for (std::uint32_t s = offsets[v]; s < offsets[v + 1]; ++s) {
-        const std::uint32_t term = terms[s];
-        total += kSign[term >> 31] * forces[term & ~BarHingeModel::kNegatedTerm];
-      }
+      for (std::uint32_t s = offsets[v]; s < offsets[v + 1]; ++s) total += forces[s];
       velocity[v] = (velocity[v] + (dt / mass[v]) * total) * keep;
       positions[v] += dt * velocity[v];
     }
@@ -133,10 +131,10 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   if (state.hingeAngles.size() != model.hinges.size())
     state.hingeAngles = hingeAngles(model, state.positions);
   state.velocities.resize(model.vertexCount(), glm::dvec3(0.0));
-  state.slotForces.resize(model.stepForceCount);
+  state.slotForces.resize(model.slotCount);
 
   for (std::size_t step = 0; step < steps; ++step) {
-    compactElementForces(model, targets, options.dampingRatio, state);
+    scatterElementForces(model, targets, options.dampingRatio, state);
     moveVertices(model, dt, keep, state);
     ++state.steps;
   }
