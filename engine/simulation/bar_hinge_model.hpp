@@ -193,8 +193,6 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,
                   std::vector<glm::dvec3>& vertexForces);
 
-// Calls body(i) for i in [0, count) on all cores; for kernels that write only their own index,
-// whose result is then the same however TBB splits the range.
 // Calls body(begin, end) over [0, count) in ranges of about `grain` on all cores; for kernels
 // that write only their own indices (the result is the same however TBB splits the range).
 template <typename Body>
@@ -208,6 +206,8 @@ void forEachRange(std::size_t count, std::size_t grain, const Body& body) {
       [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
 }
 
+// Calls body(i) for i in [0, count) on all cores; for kernels that write only their own index,
+// whose result is then the same however TBB splits the range.
 template <typename Body>
 void forEachIndex(std::size_t count, const Body& body) {
   constexpr std::size_t kGrain = 1024;
