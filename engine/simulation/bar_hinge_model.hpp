@@ -121,6 +121,10 @@ struct BarHingeModel {
   std::size_t hingeSlot0 = 0, glueSlot0 = 0, slotCount = 0;
   std::vector<std::uint32_t> gatherOffsets;
   std::vector<std::uint32_t> gatherSlots;
+  // The dynamic step's scatter (dynamic_solver.cpp): slot s's place in gather order (the inverse
+  // of gatherSlots), where the step writes its force so that each vertex then reads its forces
+  // in one run; the same sums bit for bit as gathering through gatherSlots.
+  std::vector<std::uint32_t> scatterSlots;
 
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;
@@ -188,6 +192,19 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 // Each vertex's total force: the sum of its slots in gather order (0 for a pinned vertex).
 void gatherForces(const BarHingeModel& model, const std::vector<glm::dvec3>& slotForces,
                   std::vector<glm::dvec3>& vertexForces);
+
+// Calls body(begin, end) over [0, count) in ranges of about `grain` on all cores; for kernels
+// that write only their own indices (the result is the same however TBB splits the range).
+template <typename Body>
+void forEachRange(std::size_t count, std::size_t grain, const Body& body) {
+  if (count <= grain) {
+    body(std::size_t(0), count);
+    return;
+  }
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, count, grain),
+      [&](const tbb::blocked_range<std::size_t>& range) { body(range.begin(), range.end()); });
+}
 
 // Calls body(i) for i in [0, count) on all cores; for kernels that write only their own index,
 // whose result is then the same however TBB splits the range.

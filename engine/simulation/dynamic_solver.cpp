@@ -1,6 +1,9 @@
 #include "engine/simulation/dynamic_solver.hpp"
 
+#include "engine/simulation/hinge_kernel.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -31,6 +34,91 @@ double stableTimeStep(const BarHingeModel& model) {
   return 1.0 / std::sqrt(omegaSquared);
 }
 
+namespace {
+
+// Elements (bars, hinges, glue) and vertices a task takes: few enough tasks that two cores do not
+// spend a 10k-vertex step scheduling them, enough that a loaded core's share is taken by the other.
+constexpr std::size_t kElementGrain = 4096;
+constexpr std::size_t kVertexGrain = 2048;
+
+// Every element's force on each of its vertices, written where that vertex reads it
+// (BarHingeModel::scatterSlots); every hinge's angle unwrapped in place. The same expressions as
+// elementForces, so the same bits.
+void scatterElementForces(const BarHingeModel& model, const std::vector<double>& targets,
+                          double dampingRatio, SimulationState& state) {
+  const glm::dvec3* x = state.positions.data();
+  const glm::dvec3* velocity = state.velocities.data();
+  glm::dvec3* forces = state.slotForces.data();
+  double* angles = state.hingeAngles.data();
+  const std::uint32_t* scatter = model.scatterSlots.data();
+  const std::array<std::uint32_t, 2>* bars = model.bars.data();
+  const double* barStiffness = model.barStiffness.data();
+  const double* barLength = model.barLength.data();
+  const double* barDamping = model.barDamping.data();
+  const Hinge* hinges = model.hinges.data();
+  const double* hingeStiffness = model.hingeStiffness.data();
+  const double* target = targets.data();
+  const std::size_t barCount = model.bars.size(), hingeCount = model.hinges.size();
+  const std::size_t hingeEnd = barCount + hingeCount;
+  const std::uint32_t* hingeScatter = scatter + model.hingeSlot0;
+  const std::uint32_t* glueScatter = scatter + model.glueSlot0;
+  forEachRange(
+      hingeEnd + model.glue.size(), kElementGrain, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < std::min(end, barCount); ++i) {
+          const std::uint32_t a = bars[i][0], b = bars[i][1];
+          const glm::dvec3 delta = x[b] - x[a];
+          const double length = glm::length(delta);
+          glm::dvec3 force(0.0);  // on a; b takes the opposite
+          if (length > 0.0) {
+            double pull = barStiffness[i] * (length - barLength[i]);
+            pull +=
+                dampingRatio * barDamping[i] * glm::dot(velocity[b] - velocity[a], delta) / length;
+            force = (pull / length) * delta;
+          }
+          forces[scatter[2 * i]] = force;
+          forces[scatter[2 * i + 1]] = -force;
+        }
+        for (std::size_t e = std::max(begin, barCount); e < std::min(end, hingeEnd); ++e) {
+          const std::size_t j = e - barCount;
+          const Hinge& h = hinges[j];
+          std::array<glm::dvec3, 4> gradient;
+          const double angle =
+              hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], angles[j], gradient);
+          angles[j] = angle;
+          const double torque = -hingeStiffness[j] * (angle - target[j]);
+          for (int k = 0; k < 4; ++k) forces[hingeScatter[4 * j + k]] = torque * gradient[k];
+        }
+        for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
+          const std::size_t g = e - hingeEnd;
+          const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
+          const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
+          forces[glueScatter[2 * g]] = force;
+          forces[glueScatter[2 * g + 1]] = -force;
+        }
+      });
+}
+
+// Each free vertex sums its forces, one run in gather order, and moves by semi-implicit Euler.
+void moveVertices(const BarHingeModel& model, double dt, double keep, SimulationState& state) {
+  const glm::dvec3* forces = state.slotForces.data();
+  glm::dvec3* velocity = state.velocities.data();
+  glm::dvec3* positions = state.positions.data();
+  const std::uint32_t* offsets = model.gatherOffsets.data();
+  const std::uint8_t* pinned = model.pinned.data();
+  const double* mass = model.mass.data();
+  forEachRange(model.vertexCount(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      if (pinned[v]) continue;
+      glm::dvec3 total(0.0);
+      for (std::uint32_t s = offsets[v]; s < offsets[v + 1]; ++s) total += forces[s];
+      velocity[v] = (velocity[v] + (dt / mass[v]) * total) * keep;
+      positions[v] += dt * velocity[v];
+    }
+  });
+}
+
+}  // namespace
+
 void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState& state,
                  std::size_t steps, const DynamicOptions& options) {
   const double dt = options.timeStep > 0.0 ? options.timeStep
@@ -43,23 +131,11 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   if (state.hingeAngles.size() != model.hinges.size())
     state.hingeAngles = hingeAngles(model, state.positions);
   state.velocities.resize(model.vertexCount(), glm::dvec3(0.0));
+  state.slotForces.resize(model.slotCount);
 
   for (std::size_t step = 0; step < steps; ++step) {
-    elementForces(model, state.positions, targets, state.hingeAngles, state.hingeAngles,
-                  state.slotForces, state.velocities.data(), options.dampingRatio);
-    const glm::dvec3* forces = state.slotForces.data();
-    glm::dvec3* v = state.velocities.data();
-    glm::dvec3* positions = state.positions.data();
-    const std::uint32_t* offsets = model.gatherOffsets.data();
-    const std::uint32_t* slots = model.gatherSlots.data();
-    forEachIndex(model.vertexCount(), [&](std::size_t vertex) {
-      if (model.pinned[vertex]) return;
-      glm::dvec3 total(0.0);
-      for (std::uint32_t s = offsets[vertex]; s < offsets[vertex + 1]; ++s)
-        total += forces[slots[s]];
-      v[vertex] = (v[vertex] + (dt / model.mass[vertex]) * total) * keep;
-      positions[vertex] += dt * v[vertex];
-    });
+    scatterElementForces(model, targets, options.dampingRatio, state);
+    moveVertices(model, dt, keep, state);
     ++state.steps;
   }
 }

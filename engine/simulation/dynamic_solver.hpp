@@ -1,10 +1,11 @@
 // The damped dynamic solver of the bar-and-hinge model (bar_hinge_model.hpp), for live use:
 // explicit integration at a fixed step, as Origami Simulator does on the GPU (Ghassaei, Demaine &
-// Gershenfeld, 7OSME 2018): each step computes every element's forces into its own slots (one
-// kernel per element kind), then each vertex sums its slots in a fixed order and moves
-// (semi-implicit Euler: v += dt F / m, x += dt v). Bars are damped along their length (damping
-// ratio of Origami Simulator's form, 2 zeta sqrt(k m)); every velocity also loses a small fraction
-// per step so bending modes settle.
+// Gershenfeld, 7OSME 2018): each step computes every element's forces into its own slots, each
+// slot stored where its vertex reads it (BarHingeModel::scatterSlots: gather order), then each
+// vertex sums its run of slots and moves (semi-implicit Euler: v += dt F / m, x += dt v). The
+// same bits as elementForces then gatherForces; two parallel passes a step, no allocation. Bars are
+// damped along their length (damping ratio of Origami Simulator's form, 2 zeta sqrt(k m)); every
+// velocity also loses a small fraction per step so bending modes settle.
 //
 // Deterministic: the same model, fold amount, state and step count give the same state bit for
 // bit, whatever the thread count (no atomics, no reductions whose order depends on scheduling).
