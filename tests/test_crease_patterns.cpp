@@ -13,6 +13,7 @@
 #include <numeric>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include <glm/common.hpp>
 
@@ -558,6 +559,66 @@ TEST(CreasePatternFold, KeysNotReadAreNotedAndTheUnitIsNot) {
   EXPECT_TRUE(noted("frame_title"));
   EXPECT_FALSE(noted("frame_unit"));
   EXPECT_FALSE(noted("file_creator"));
+}
+
+// A malformed root width or height (not a number, not positive, a unit SVG does not know) is
+// ignored, as a browser and Origami Simulator ignore it, and said in a note naming the attribute
+// and its value; the size then comes from the other one or the stated default (96 px per inch).
+// Before, such a file was read at that other size without a word.
+TEST(CreasePatternSvg, AMalformedWidthOrHeightIsNotedByNameAndValue) {
+  const std::string drawing = R"(<rect width="20" height="10" stroke="black" fill="none"/>
+      <line x1="10" y1="0" x2="10" y2="10" stroke="blue"/></svg>)";
+  const auto read = [&](const std::string& root) {
+    return readSvgCreasePatternText(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" " + root + " viewBox=\"0 0 20 10\">" + drawing,
+        "p.svg");
+  };
+  const auto noteWith = [](const CreasePattern& p, const std::string& text) {
+    return std::count_if(p.notes.begin(), p.notes.end(),
+                         [&](const std::string& n) { return n.find(text) != std::string::npos; });
+  };
+  constexpr double kPx = 0.0254 / 96;
+  for (const auto& [root, noted, metresPerUnit] :
+       std::vector<std::tuple<std::string, std::string, double>>{
+           {R"(width="12qq" height="100mm")", R"(<svg width="12qq">: unknown unit "qq")", 0.01},
+           {R"(width="-5mm" height="100mm")", R"(<svg width="-5mm">: not a positive)", 0.01},
+           {R"(width="200mm" height="NaN")", R"(<svg height="NaN">: not a length)", 0.01},
+           {R"(width="0" height="100mm")", R"(<svg width="0">: not a positive)", 0.01},
+           {R"(width="200 mm wide")", R"(<svg width="200 mm wide">: unknown unit)", kPx},
+           {R"(width="1e999mm")", R"(<svg width="1e999mm">: not a length)", kPx}}) {
+    const CreasePattern p = read(root);
+    EXPECT_EQ(noteWith(p, noted), 1) << root << ": " << ::testing::PrintToString(p.notes);
+    EXPECT_NEAR(p.metresPerUnit, metresPerUnit, 1e-12) << root;
+  }
+  // Well-formed sizes, and relative ones (no size of their own, as documented), are not noted.
+  for (const std::string root : {R"(width="200mm" height="100mm")", R"(width="192" height="96")",
+                                 R"(width="100%" height="100%")", ""}) {
+    const CreasePattern p = read(root);
+    EXPECT_EQ(noteWith(p, "<svg "), 0) << root << ": " << ::testing::PrintToString(p.notes);
+  }
+}
+
+// FOLD's frame_unit that names no unit this reader knows (a misspelling, a number) is said in a
+// note, and the coordinates read as metres, as documented; before, silently metres.
+TEST(CreasePatternFold, AnUnknownFrameUnitIsNoted) {
+  for (const std::string unit : {R"("furlong")", R"("MM")", "5", "null"}) {
+    const CreasePattern p =
+        readFoldCreasePatternText(squareFold("", "", "", ", \"frame_unit\": " + unit), "u.fold");
+    EXPECT_EQ(p.metresPerUnit, 1.0) << unit;
+    EXPECT_EQ(std::count_if(p.notes.begin(), p.notes.end(),
+                            [&](const std::string& n) {
+                              return n.rfind("frame_unit " + unit + ": not a unit", 0) == 0;
+                            }),
+              1)
+        << unit << ": " << ::testing::PrintToString(p.notes);
+    EXPECT_NE(p.unitSource.find("unknown"), std::string::npos) << p.unitSource;
+  }
+  const CreasePattern unit =
+      readFoldCreasePatternText(squareFold("", "", "", R"(, "frame_unit": "unit")"), "u.fold");
+  EXPECT_TRUE(std::none_of(unit.notes.begin(), unit.notes.end(), [](const std::string& n) {
+    return n.find("frame_unit") != std::string::npos;
+  }));
+  EXPECT_NE(unit.unitSource.find("no physical size"), std::string::npos) << unit.unitSource;
 }
 
 TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {

@@ -91,6 +91,24 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
   EXPECT_NE(fold.err.find("other.fold"), std::string::npos) << fold.err;
 }
 
+// What the reader read otherwise than written reaches the user: each note of the crease pattern
+// on stderr, "note: ..." (a malformed width among them); the size line says what size it took.
+// Before, the notes were kept in the pattern and never shown by simulate.
+TEST_F(SimulateCli, ACreasePatternsNotesAreShown) {
+  std::ofstream(path("q.svg"))
+      << R"(<svg xmlns="http://www.w3.org/2000/svg" width="12qq" viewBox="0 0 20 10">
+      <rect width="20" height="10" stroke="black" fill="none"/>
+      <line x1="10" y1="0" x2="10" y2="10" stroke="blue" stroke-opacity="0.5"/></svg>)";
+  const CommandResult result = run("simulate q.svg --percent 50 --steps 10 --obj q.obj");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.err.find("note: <svg width=\"12qq\">: unknown unit \"qq\""), std::string::npos)
+      << result.err;
+  EXPECT_EQ(result.out.rfind("sheet 5.292 x 2.646 mm (no width or height in an absolute unit", 0),
+            0u)
+      << result.out;
+  fs::remove(path("q.obj"));
+}
+
 // A crease pattern is simulated at the size its file states (an SVG's width and height against
 // its viewBox), said on the first line, or at --size's; --size is refused for a design (in metres
 // already) and outside (0, 1 km], in one line, writing nothing.

@@ -393,6 +393,8 @@ void addSimulateCommand(CLI::App& app) {
     if (!sizeLine.empty())
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
           << sizeLine;
+    // What the reader read but did not use, or read otherwise than written (docs/formats.md).
+    for (const std::string& note : input.pattern.notes) std::cerr << "note: " << note << "\n";
     for (const std::string& pin : options->pins)
       modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin")));
     for (const std::string& glue : options->glue) {

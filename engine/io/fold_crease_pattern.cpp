@@ -286,16 +286,24 @@ CreasePattern readFoldCreasePatternText(std::string_view text, std::string_view 
     planarize(drawing, options);
     CreasePattern pattern = triangulateCreaseDrawing(drawing);
     // FOLD's frame_unit: the units it names scale to metres; "unit" (FOLD's default: no physical
-    // size) and anything else leave the coordinates as metres, the stated default.
+    // size) and anything else leave the coordinates as metres, the stated default. A value that
+    // is no unit this reader knows is said in a note, so the size it falls back to is not silent.
     static const std::unordered_map<std::string, double> metres = {
         {"m", 1.0},   {"cm", 1e-2},   {"mm", 1e-3},       {"um", 1e-6},
         {"nm", 1e-9}, {"in", 0.0254}, {"pt", 0.0254 / 72}};
     pattern.unitSource = "FOLD coordinates read as metres";
-    if (const auto unit = document.find("frame_unit");
-        unit != document.end() && unit->is_string()) {
-      if (const auto found = metres.find(unit->get<std::string>()); found != metres.end()) {
+    if (const auto unit = document.find("frame_unit"); unit != document.end()) {
+      const auto found = unit->is_string() ? metres.find(unit->get<std::string>()) : metres.end();
+      if (found != metres.end()) {
         pattern.metresPerUnit = found->second;
         pattern.unitSource = "FOLD frame_unit " + found->first;
+      } else if (unit->is_string() && unit->get<std::string>() == "unit") {
+        pattern.unitSource = "FOLD frame_unit \"unit\" (no physical size): read as metres";
+      } else {
+        pattern.notes.push_back("frame_unit " + jsonExcerpt(*unit) +
+                                ": not a unit this reader knows (m, cm, mm, um, nm, in, pt or "
+                                "unit); the coordinates are read as metres");
+        pattern.unitSource = "FOLD frame_unit " + jsonExcerpt(*unit) + " unknown: read as metres";
       }
     }
     return pattern;

@@ -52,6 +52,7 @@ class NumberScanner {
     return pos_ < text_.size() ? text_[pos_] : '\0';
   }
   void advance() { ++pos_; }
+  std::size_t position() const { return pos_; }
   bool startsNumber() {
     const char ch = peek();
     return std::isdigit(static_cast<unsigned char>(ch)) || ch == '-' || ch == '+' || ch == '.';
@@ -745,22 +746,45 @@ struct RootLength {
   std::string unit;
 };
 
-// The root's width or height in px; 0 when absent, relative or not positive.
-RootLength rootLength(const xmlNode* root, const char* name) {
+// Units relative to a viewport or a font the file does not fix: no size, as documented.
+bool relativeUnit(std::string_view unit) {
+  for (const char* relative : {"%", "em", "ex", "ch", "rem", "vw", "vh", "vmin", "vmax"})
+    if (unit == relative) return true;
+  return false;
+}
+
+// The root's width or height in px; 0 when absent, relative or malformed. A malformed value (not
+// a number, not positive, an unknown unit) is ignored, as a browser and Origami Simulator ignore
+// it, with a note naming the attribute and its value, so the size it falls back to is not silent.
+RootLength rootLength(const xmlNode* root, const char* name, std::vector<std::string>& notes) {
   RootLength out;
   xmlChar* value = xmlGetProp(root, reinterpret_cast<const xmlChar*>(name));
   if (!value) return out;
   const std::string text = trim(reinterpret_cast<const char*>(value));
   xmlFree(value);
+  const auto ignored = [&](const std::string& why) {
+    notes.push_back(std::string("<svg ") + name + "=" + quotedExcerpt(text, 40) + ">: " + why +
+                    "; ignored (the size then comes from the other attribute or the default, "
+                    "96 px per inch)");
+  };
   NumberScanner scanner(text);
   const auto number = scanner.number();
-  if (!number) return out;
-  std::size_t end = text.size();
-  while (end > 0 && !std::isdigit(static_cast<unsigned char>(text[end - 1])) &&
-         text[end - 1] != '.')
-    --end;
-  out.unit = lower(trim(std::string_view(text).substr(end)));
-  if (const auto factor = pxPerUnit(out.unit); factor && *number > 0.0) out.px = *number * *factor;
+  if (!number) {
+    ignored("not a length");
+    return out;
+  }
+  out.unit = lower(trim(std::string_view(text).substr(scanner.position())));
+  if (relativeUnit(out.unit)) return out;  // no size of its own (the size line says so)
+  const auto factor = pxPerUnit(out.unit);
+  if (!factor) {
+    ignored("unknown unit " + quotedExcerpt(out.unit, 20) + " (mm, cm, Q, in, pt, pc or px)");
+    return out;
+  }
+  if (!(*number > 0.0)) {
+    ignored("not a positive length");
+    return out;
+  }
+  out.px = *number * *factor;
   return out;
 }
 
@@ -769,9 +793,11 @@ RootLength rootLength(const xmlNode* root, const char* name) {
 // when they differ (preserveAspectRatio's default, meet); one of them alone scales both; no
 // viewBox: a user unit is a px. With neither size given the drawing has no size of its own, and
 // a user unit is taken as a px too (the stated default, docs/formats.md).
-double svgUserUnitMetres(const xmlNode* root, std::string& source) {
+double svgUserUnitMetres(const xmlNode* root, std::string& source,
+                         std::vector<std::string>& notes) {
   constexpr double kMetresPerPx = 0.0254 / 96.0;
-  const RootLength width = rootLength(root, "width"), height = rootLength(root, "height");
+  const RootLength width = rootLength(root, "width", notes),
+                   height = rootLength(root, "height", notes);
   std::array<double, 4> box{};
   bool hasBox = false;
   xmlChar* value = xmlGetProp(root, reinterpret_cast<const xmlChar*>("viewBox"));
@@ -861,7 +887,7 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
     triangulate.dropLinesWithoutFace = true;
     triangulate.innerBorderAsHinge = true;
     CreasePattern pattern = triangulateCreaseDrawing(drawing, triangulate);
-    pattern.metresPerUnit = svgUserUnitMetres(root, pattern.unitSource);
+    pattern.metresPerUnit = svgUserUnitMetres(root, pattern.unitSource, pattern.notes);
     return pattern;
   } catch (const CreasePatternError& error) {
     const std::string message = error.what();

@@ -24,8 +24,10 @@
 // and the solve are sequential; std::sin/cos/atan2 are libm's (as the predictor's).
 //
 // Known limits: the fit is to edge vectors (each weighted by 1 / its squared length), so the
-// state is only nearly isometric between the ends (median strain about 0.1-0.5% after onward's
-// few relaxations, a few percent on the worst sliver edges); several pieces (a cut sheet) keep
+// state is only nearly isometric between the ends (median strain up to 0.3% on the cones after
+// the live slider's six relaxations a frame, 0.5% after two; a few percent on the worst sliver
+// edges: more relaxations converge slowly, and projecting the edges onto their lengths
+// position-based flipped sliver triangles, docs/performance.md); several pieces (a cut sheet) keep
 // their places relative to each other by a weak pull toward the straight blend of flat and
 // folded positions.
 #pragma once
