@@ -47,6 +47,7 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   for (std::size_t step = 0; step < steps; ++step) {
     elementForces(model, state.positions, targets, state.hingeAngles, state.hingeAngles,
                   state.slotForces, state.velocities.data(), options.dampingRatio);
+    const glm::dvec3* contact = dynamicContactForces(model, state);  // null without contact
     const glm::dvec3* forces = state.slotForces.data();
     glm::dvec3* v = state.velocities.data();
     glm::dvec3* positions = state.positions.data();
@@ -57,6 +58,7 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
       glm::dvec3 total(0.0);
       for (std::uint32_t s = offsets[vertex]; s < offsets[vertex + 1]; ++s)
         total += forces[slots[s]];
+      if (contact) total += contact[vertex];
       v[vertex] = (v[vertex] + (dt / model.mass[vertex]) * total) * keep;
       positions[vertex] += dt * v[vertex];
     });
