@@ -191,7 +191,9 @@ BoxTree triangleTree(const BarHingeModel& model, const std::vector<glm::dvec3>& 
 }
 
 // The barrier b(s) and its first two derivatives (ContactParameters; header).
-void barrier(const ContactParameters& c, double s, double& b, double& slope, double& curvature) {
+void barrier(const ContactParameters& c, double s, double& b, double& slope, double& curvature,
+             bool dynamic = false) {
+  const double taylorBelow = dynamic ? std::max(c.minimumGap, c.dynamicMinimumGap) : c.minimumGap;
   const double sHat = c.activation, kappa = c.stiffness;
   const auto exact = [&](double at, double& e, double& d1, double& d2) {
     const double gap = at - sHat, log = std::log(at / sHat);
@@ -199,19 +201,34 @@ void barrier(const ContactParameters& c, double s, double& b, double& slope, dou
     d1 = -kappa * (2.0 * gap * log + gap * gap / at);
     d2 = -kappa * (2.0 * log + 4.0 * gap / at - gap * gap / (at * at));
   };
-  if (s >= c.minimumGap) {
+  if (s >= taylorBelow) {
     exact(s, b, slope, curvature);
     return;
   }
   double e0 = 0.0, d1 = 0.0, d2 = 0.0;
-  exact(c.minimumGap, e0, d1, d2);
-  const double ds = s - c.minimumGap;
+  exact(taylorBelow, e0, d1, d2);
+  const double ds = s - taylorBelow;
   b = e0 + d1 * ds + 0.5 * d2 * ds * ds;
   slope = d1 + d2 * ds;
   curvature = d2;
 }
 
 }  // namespace
+
+void setDynamicContactStep(ContactParameters& contact, double largestStiffness) {
+  contact.dynamicMinimumGap = contact.minimumGap;
+  if (!contact.enabled || !(largestStiffness > 0.0)) return;
+  // b'' falls as the gap grows: bisect for the gap where it equals the largest stiffness.
+  double low = contact.minimumGap, high = contact.activation, b = 0.0, d1 = 0.0, d2 = 0.0;
+  barrier(contact, low, b, d1, d2);
+  if (d2 <= largestStiffness) return;
+  for (int k = 0; k < 60; ++k) {
+    const double middle = 0.5 * (low + high);
+    barrier(contact, middle, b, d1, d2);
+    (d2 > largestStiffness ? low : high) = middle;
+  }
+  contact.dynamicMinimumGap = high;
+}
 
 ContactParameters contactParameters(const BarHingeModel& model, const ContactOptions& options,
                                     double paperThickness) {
@@ -266,7 +283,7 @@ std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
 }
 
 bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
-                 const ContactPair& pair, ContactTerm& term) {
+                 const ContactPair& pair, ContactTerm& term, bool dynamic) {
   const ContactParameters& c = model.contact;
   const auto& tri = model.triangles[pair.triangle];
   const glm::dvec3& p = positions[pair.vertex];
@@ -283,7 +300,7 @@ bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& posi
   }
   term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
   term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
-  barrier(c, s, term.energy, term.slope, term.curvature);
+  barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
   return true;
 }
 
@@ -297,14 +314,14 @@ double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& 
 }
 
 void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
-                      const std::vector<ContactPair>& pairs,
-                      std::vector<glm::dvec3>& vertexForces) {
+                      const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces,
+                      bool dynamic) {
   if (!model.contact.enabled || pairs.empty()) return;
   // Each pair's term on all cores, then summed in pair order: the same bits for any thread count.
   std::vector<ContactTerm> terms(pairs.size());
   std::vector<std::uint8_t> active(pairs.size(), 0);
   forEachIndex(pairs.size(), [&](std::size_t i) {
-    active[i] = contactTerm(model, positions, pairs[i], terms[i]);
+    active[i] = contactTerm(model, positions, pairs[i], terms[i], dynamic);
   });
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     if (!active[i]) continue;
@@ -370,7 +387,7 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
   refreshContactList(model, state.positions, state.contactPairs);
   if (state.contactPairs.pairs.empty()) return nullptr;
   state.contactForces.assign(model.vertexCount(), glm::dvec3(0.0));
-  addContactForces(model, state.positions, state.contactPairs.pairs, state.contactForces);
+  addContactForces(model, state.positions, state.contactPairs.pairs, state.contactForces, true);
   return state.contactForces.data();
 }
 

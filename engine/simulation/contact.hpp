@@ -57,7 +57,17 @@ struct ContactParameters {
   double minimumGap = 0.0;  // below this gap the barrier is its Taylor polynomial
   double stiffness = 0.0;   // kappa, N/m
   double exclusion = 0.0;   // pairs nearer than this on the flat sheet are never pairs
+  // The dynamic solver's barrier is its Taylor polynomial below this gap (setDynamicContactStep),
+  // so its stiffness stays within what the explicit step is stable at.
+  double dynamicMinimumGap = 0.0;
 };
+
+// Sets dynamicMinimumGap to the gap where the barrier's b'' is `largestStiffness` (N/m): buildModel
+// gives it 3/8 of the lightest vertex's mass over the step squared, the stiffness a vertex may add
+// (about 8 pairs on it, each up to 1 along the distance's gradient at it and 1 summed over the
+// others') and stay within the semi-implicit Euler step's stability (omega dt < 2, where the step
+// is 1 / omega of the elements alone). Recompute it after changing the step.
+void setDynamicContactStep(ContactParameters& contact, double largestStiffness);
 
 // The contact of a model already built (bars and hinges): off outside paper mode or when not
 // enabled.
@@ -82,8 +92,9 @@ struct ContactTerm {
   std::array<glm::dvec3, 4> gradient{};
   double energy = 0.0, slope = 0.0, curvature = 0.0;
 };
+// `dynamic`: the dynamic solver's barrier (dynamicMinimumGap).
 bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
-                 const ContactPair& pair, ContactTerm& term);
+                 const ContactPair& pair, ContactTerm& term, bool dynamic = false);
 
 // The barrier's energy at these positions (0 when contact is off). Summed in pair order.
 double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions);
@@ -91,7 +102,8 @@ double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& 
 // Adds each listed pair's force (minus the barrier's gradient) to vertexForces, in pair order;
 // pinned vertices get none. Without a list, the pairs within the activation gap are found.
 void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
-                      const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces);
+                      const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces,
+                      bool dynamic = false);
 void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                       std::vector<glm::dvec3>& vertexForces);
 
