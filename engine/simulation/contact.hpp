@@ -44,7 +44,10 @@ struct SimulationState;
 
 // What ModelOptions asks for.
 struct ContactOptions {
-  bool enabled = true;           // in paper mode; design mode never has contact
+  // Off unless asked for (`simulate --paper` asks unless --no-contact): with it the static
+  // solver ends short of its tolerance on patterns that fold in many layers (docs/performance.md,
+  // "Self-contact in paper mode"). Paper mode only; design mode never has contact.
+  bool enabled = false;
   double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
   double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
 };
