@@ -21,6 +21,7 @@
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/io/crease_pattern_reader.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/contact.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/rigid_placement.hpp"
@@ -46,6 +47,42 @@ void BM_DynamicStepOneThread(benchmark::State& bench) {
   arena.execute([&] { BM_DynamicStep(bench); });
 }
 BENCHMARK(BM_DynamicStepOneThread)->Arg(100)->Arg(316)->Unit(benchmark::kMillisecond);
+
+// The dynamic step in paper mode (0.1 mm) with self-contact off (second argument 0) or on (1), on
+// the grid 0.2 m a side with its right half folded over onto its left 1.9 thicknesses above it
+// (third argument 1: every vertex of both halves within the barrier's reach of the other layer,
+// which pushes gently there)
+// or left flat (0: the contact's list is kept, no pair pushes).
+void BM_DynamicStepPaper(benchmark::State& bench) {
+  const int cells = static_cast<int>(bench.range(0));
+  ModelOptions options;
+  options.mode = SimulationMode::Paper;
+  options.paper.thickness = 1e-4;
+  options.contact.enabled = bench.range(1) == 1;
+  const BarHingeModel model =
+      buildModel(testing::creasedSquare(cells, cells / 2, 180.0, 0.2), options);
+  SimulationState state = flatState(model);
+  if (bench.range(2) == 1) {
+    for (glm::dvec3& p : state.positions)
+      if (p.x > 0.1 + 1e-9) p = {0.2 - p.x, p.y, 1.9e-4};
+    state.hingeAngles = hingeAngles(model, state.positions);
+  }
+  stepDynamic(model, 1.0, state, 10);
+  for (auto _ : bench) {
+    stepDynamic(model, 1.0, state, 1);
+    benchmark::DoNotOptimize(state.positions.data());
+  }
+  bench.counters["vertices"] = static_cast<double>(model.vertexCount());
+  bench.counters["pairs"] = static_cast<double>(state.contactPairs.pairs.size());
+  bench.counters["rebuilds"] = static_cast<double>(state.contactPairs.rebuilds);
+}
+BENCHMARK(BM_DynamicStepPaper)
+    ->Args({100, 0, 0})
+    ->Args({100, 1, 0})
+    ->Args({100, 0, 1})
+    ->Args({100, 1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Flat to settled at 100% (predictor on: the default) or by continuation alone (predictor off,
 // the path a design takes when its targets are not reachable at once).
@@ -354,10 +391,12 @@ void patternFromFlatLive(benchmark::State& bench, const std::filesystem::path& f
 // 100 --settle --paper 0.1`), the static solver's last stage with Gauss-Newton steps (0) or the
 // exact Hessian (1, StaticOptions::exactHessian): iterations, final residual, converged, largest
 // and mean crease angle error (degrees), largest strain.
-void patternPaperSettle(benchmark::State& bench, const std::filesystem::path& file, bool exact) {
+void patternPaperSettle(benchmark::State& bench, const std::filesystem::path& file, bool exact,
+                        bool contact = false) {
   ModelOptions modelOptions;
   modelOptions.mode = SimulationMode::Paper;
   modelOptions.paper.thickness = 1e-4;
+  modelOptions.contact.enabled = contact;
   const BarHingeModel model = buildModel(readCreasePattern(file), modelOptions);
   StaticOptions options;
   options.exactHessian = exact;
@@ -385,6 +424,10 @@ void patternPaperSettle(benchmark::State& bench, const std::filesystem::path& fi
   bench.counters["error_max_deg"] = largest;
   bench.counters["error_mean_deg"] = creases ? sum / static_cast<double>(creases) : 0.0;
   bench.counters["strain"] = strain;
+  bench.counters["crossing_pairs"] =
+      static_cast<double>(crossingTrianglePairs(model, state.positions));
+  bench.counters["nearest_layers_mm"] =
+      1e3 * smallestLayerDistance(model, state.positions, 1e-4, 1e-2);
 }
 
 void registerPatterns() {
@@ -396,6 +439,22 @@ void registerPatterns() {
       if (entry.path().extension() == ".fold" || entry.path().extension() == ".svg")
         paths.push_back(entry.path());
     std::sort(paths.begin(), paths.end());
+    // Self-contact off (0: as before it was built) or on (1, the default), exact Hessian.
+    for (const auto& path : paths)
+      for (int contact : {0, 1})
+        benchmark::RegisterBenchmark(
+            ("BM_PatternPaperContact/" + path.stem().string() + "/" + std::to_string(contact))
+                .c_str(),
+            [path, contact](benchmark::State& bench) {
+              try {
+                patternPaperSettle(bench, path, true, contact == 1);
+              } catch (const std::exception& e) {
+                bench.SkipWithError(e.what());
+              }
+            })
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(1)
+            ->UseRealTime();
     for (const auto& path : paths)
       for (int exact : {0, 1})
         benchmark::RegisterBenchmark(

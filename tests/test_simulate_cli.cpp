@@ -163,6 +163,33 @@ TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
   }
 }
 
+// Paper mode's self-contact, said and checked: a 40 mm sheet with one valley folded flat keeps its
+// layers the thickness apart, says so and that the state does not pass through itself, and
+// `check` of the written state agrees; --no-contact turns it off, and is refused without --paper.
+TEST_F(SimulateCli, PaperModeSaysItsContactAndWhetherTheStatePassesThroughItself) {
+  std::ofstream(path("flat.fold"))
+      << R"({"file_spec": 1.1, "vertices_coords": [[0, 0], [0.02, 0], [0.04, 0], [0.04, 0.04],
+      [0.02, 0.04], [0, 0.04]], "faces_vertices": [[0, 1, 4, 5], [1, 2, 3, 4]],
+      "edges_vertices": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+      "edges_assignment": ["B", "B", "B", "B", "B", "B", "V"]})";
+  const CommandResult result =
+      run("simulate flat.fold --percent 100 --settle --paper 0.1 --obj folded.obj");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("self-contact: layers kept 0.1 mm apart"), std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find(", self-intersection: none"), std::string::npos) << result.out;
+  const CommandResult check = run("check folded.obj");
+  EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+  EXPECT_NE(check.out.find("no self-intersection"), std::string::npos) << check.out;
+  const CommandResult off =
+      run("simulate flat.fold --percent 100 --settle --paper 0.1 --no-contact --obj off.obj");
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  EXPECT_NE(off.out.find("self-contact: off"), std::string::npos) << off.out;
+  const CommandResult refused = run("simulate flat.fold --percent 100 --no-contact --obj d.obj");
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.err.find("--no-contact: only paper mode"), std::string::npos) << refused.err;
+}
+
 // --motion: the waterbomb base settles on its targets at 50% (about 44 degrees off them with the
 // targets scaled linearly), and says how far its motion was followed.
 TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {

@@ -33,6 +33,7 @@
 #include "engine/render/image.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/contact.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/folding_motion.hpp"
@@ -269,7 +270,7 @@ void addSimulateCommand(CLI::App& app) {
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
-    bool settle = false, gpu = false, motion = false;
+    bool settle = false, gpu = false, motion = false, noContact = false;
     double paperMm = 0.0, modulusGpa = 4.0, sizeMm = 0.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -305,6 +306,9 @@ void addSimulateCommand(CLI::App& app) {
       "--size", options->sizeMm,
       "A crease pattern's larger side in mm (default: as its file states; an SVG's px at 96 per "
       "inch, a FOLD file's by its frame_unit, else metres)");
+  command->add_flag("--no-contact", options->noContact,
+                    "With --paper: let the sheet pass through itself (no self-contact; by default "
+                    "layers keep the paper's thickness apart)");
   command->add_option("--modulus", options->modulusGpa,
                       "With --paper: the paper's Young's modulus in GPa (default 4)");
   command->add_option(
@@ -379,6 +383,10 @@ void addSimulateCommand(CLI::App& app) {
       modelOptions.mode = SimulationMode::Paper;
       modelOptions.paper.thickness = options->paperMm * 1e-3;
       modelOptions.paper.youngsModulus = options->modulusGpa * 1e9;
+      // The compute shaders have no contact: the GPU path folds through itself, as it says.
+      modelOptions.contact.enabled = !options->noContact && !options->gpu;
+    } else if (options->noContact) {
+      throw UsageError("--no-contact: only paper mode (--paper) has self-contact");
     }
     for (const std::string* output :
          {&options->obj, &options->fold, &options->gltf, &options->png, &options->gif})
@@ -435,6 +443,17 @@ void addSimulateCommand(CLI::App& app) {
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
     }
 
+    if (paper->count()) {
+      char line[160];
+      if (model.contact.enabled)
+        std::snprintf(line, sizeof line, "self-contact: layers kept %.3g mm apart\n",
+                      model.contact.thickness * 1e3);
+      else
+        std::snprintf(line, sizeof line, "self-contact: off%s\n",
+                      options->gpu ? " (not on the GPU path)" : "");
+      statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
+    }
+
     // The renderer first: a machine without Vulkan fails before any work.
     std::unique_ptr<HeadlessRenderer> renderer;
     constexpr std::uint32_t kWidth = 1280, kHeight = 720;
@@ -487,13 +506,18 @@ void addSimulateCommand(CLI::App& app) {
       }
       const std::vector<double> angleError =
           creaseAngleError(model, state.positions, amount, state.hingeAngles);
-      char line[240];
+      // Whether the state passes through itself, as `check` tests it.
+      const std::size_t crossing = crossingTrianglePairs(model, state.positions);
+      const std::string crossingText =
+          crossing == 0 ? "none" : std::to_string(crossing) + " triangle pairs cross";
+      char line[320];
       std::snprintf(line, sizeof line,
                     "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "
-                    "(mean %.2f)\n",
+                    "(mean %.2f), self-intersection: %s\n",
                     percents[i], solved.c_str(),
                     largestMagnitude(edgeStrain(model, state.positions)),
-                    largestMagnitude(angleError), meanCreaseMagnitude(model, angleError));
+                    largestMagnitude(angleError), meanCreaseMagnitude(model, angleError),
+                    crossingText.c_str());
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);

@@ -454,7 +454,11 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
     model.barDamping[i] =
         2.0 * std::sqrt(model.barStiffness[i] *
                         std::min(model.mass[model.bars[i][0]], model.mass[model.bars[i][1]]));
+  model.contact = contactParameters(model, options.contact, options.paper.thickness);
   model.timeStep = stableTimeStep(model);
+  double lightest = INFINITY;
+  for (double m : model.mass) lightest = std::min(lightest, m);
+  setDynamicContactStep(model.contact, 0.375 * lightest / (model.timeStep * model.timeStep));
   return model;
 }
 
@@ -509,7 +513,7 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
     const glm::dvec3 gap = positions[i] - positions[k];
     energy += 0.5 * model.glueStiffness * glm::dot(gap, gap);
   }
-  return energy;
+  return energy + contactEnergy(model, positions);
 }
 
 void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,

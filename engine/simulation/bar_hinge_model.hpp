@@ -24,7 +24,11 @@
 // reflection cuts make) is weakened by that ratio: its angle turns by 1 / height for a unit move of
 // the wing, and unweakened its forces would swamp every other and stall the solvers.
 //
-// Known limits: faces never collide (no self-contact); a hinge whose triangle degenerates has no
+// Self-contact (contact.hpp): in paper mode, layers keep at least the paper's thickness apart by
+// a barrier between each vertex and the triangles near it that are not its own (modelEnergy
+// includes it; the solvers add its force). Design mode has none.
+//
+// Known limits: a hinge whose triangle degenerates has no
 // angle (its force is 0 while it stays degenerate).
 #pragma once
 
@@ -40,6 +44,7 @@
 #include <glm/vec3.hpp>
 
 #include "engine/io/crease_pattern.hpp"
+#include "engine/simulation/contact.hpp"
 
 namespace curvefold {
 
@@ -75,6 +80,7 @@ struct ModelOptions {
   double creaseStiffness = 1.0;
   std::vector<std::uint32_t> pins;                            // vertices held where they start
   std::vector<std::pair<std::uint32_t, std::uint32_t>> glue;  // vertex pairs pulled together
+  ContactOptions contact;  // paper mode's self-contact (contact.hpp)
 };
 
 // Origami Simulator's published stiffnesses (Ghassaei et al. 2018; js/globals.js and crease.js:
@@ -115,6 +121,8 @@ struct BarHingeModel {
 
   std::vector<std::array<std::uint32_t, 2>> glue;
   double glueStiffness = 0.0;
+
+  ContactParameters contact;  // self-contact (contact.hpp); enabled in paper mode only
 
   // Force slots: bar i's ends at 2i, 2i+1; hinge j's a, b, c, d at hingeSlot0 + 4j..; glue g's at
   // glueSlot0 + 2g... Vertex v sums gatherSlots[gatherOffsets[v] .. gatherOffsets[v+1]) in order.
@@ -175,7 +183,7 @@ std::vector<double> hingeAngles(const BarHingeModel& model,
 std::vector<double> hingeTargets(const BarHingeModel& model, double foldAmount);
 
 // The model's energy at these positions toward these hinge targets, hinge angles unwrapped
-// against `previous`. Summed in a fixed order.
+// against `previous`, the contact barrier's included. Summed in a fixed order.
 double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                    const std::vector<double>& targets, const std::vector<double>& previous);
 
@@ -225,10 +233,12 @@ void forEachIndex(std::size_t count, const Body& body) {
 struct SimulationState {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> velocities;
-  std::vector<double> hingeAngles;     // unwrapped, as of the last step or iteration
-  std::size_t steps = 0;               // dynamic steps taken
-  std::vector<glm::dvec3> slotForces;  // scratch: one force per element slot
-  std::vector<double> targets;         // scratch: the hinge targets of the last step
+  std::vector<double> hingeAngles;        // unwrapped, as of the last step or iteration
+  std::size_t steps = 0;                  // dynamic steps taken
+  std::vector<glm::dvec3> slotForces;     // scratch: one force per element slot
+  std::vector<double> targets;            // scratch: the hinge targets of the last step
+  ContactList contactPairs;               // the dynamic solver's contact pairs (contact.hpp)
+  std::vector<glm::dvec3> contactForces;  // scratch: each vertex's contact force, last step
 };
 
 // The flat crease pattern at rest.

@@ -99,7 +99,9 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
 }
 
 // Each free vertex sums its forces, one run in gather order, and moves by semi-implicit Euler.
-void moveVertices(const BarHingeModel& model, double dt, double keep, SimulationState& state) {
+// `contact` is the self-contact force per vertex, null without contact (dynamicContactForces).
+void moveVertices(const BarHingeModel& model, double dt, double keep, const glm::dvec3* contact,
+                  SimulationState& state) {
   const glm::dvec3* forces = state.slotForces.data();
   glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* positions = state.positions.data();
@@ -111,6 +113,7 @@ void moveVertices(const BarHingeModel& model, double dt, double keep, Simulation
       if (pinned[v]) continue;
       glm::dvec3 total(0.0);
       for (std::uint32_t s = offsets[v]; s < offsets[v + 1]; ++s) total += forces[s];
+      if (contact) total += contact[v];
       velocity[v] = (velocity[v] + (dt / mass[v]) * total) * keep;
       positions[v] += dt * velocity[v];
     }
@@ -135,7 +138,7 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
 
   for (std::size_t step = 0; step < steps; ++step) {
     scatterElementForces(model, targets, options.dampingRatio, state);
-    moveVertices(model, dt, keep, state);
+    moveVertices(model, dt, keep, dynamicContactForces(model, state), state);
     ++state.steps;
   }
 }

@@ -10,6 +10,9 @@
 // Deterministic: the same model, fold amount, state and step count give the same state bit for
 // bit, whatever the thread count (no atomics, no reductions whose order depends on scheduling).
 //
+// Self-contact (paper mode, contact.hpp): each step adds the barrier's force from a list of
+// pairs kept in the state (found again when a vertex has moved half its skin).
+//
 // Known limits: the step is set by the stiffest element (stableTimeStep), so paper mode's very
 // stiff bars take many steps to settle; for equilibrium use the static solver (static_solver.hpp).
 #pragma once

@@ -26,7 +26,15 @@ struct HessianLayout {
   std::vector<int> hingeBlocks;  // per hinge: 10 blocks x 3 columns
   std::vector<int> glueBlocks;   // per glue pair: 3 blocks x 3 columns
   std::vector<int> diagonal;     // per dof: the value index of its diagonal entry
+  // Contact pairs the layout has room for (sorted; contact.hpp) and their blocks: 10 x 3 each.
+  std::vector<ContactPair> contactPairs;
+  std::vector<int> contactBlocks;
 };
+
+std::array<std::uint32_t, 4> pairVertices(const BarHingeModel& model, const ContactPair& pair) {
+  const auto& t = model.triangles[pair.triangle];
+  return {pair.vertex, t[0], t[1], t[2]};
+}
 
 // The element's lower-triangle block pairs (p, q) with vertex[p] >= vertex[q] (or p == q).
 template <std::size_t N>
@@ -46,7 +54,7 @@ std::array<std::uint32_t, 4> hingeVertices(const Hinge& h) {
   return {h.a, h.b, h.c, h.d};
 }
 
-HessianLayout buildLayout(const BarHingeModel& model) {
+HessianLayout buildLayout(const BarHingeModel& model, std::vector<ContactPair> contactPairs = {}) {
   const std::size_t n = model.vertexCount();
   const int dofs = static_cast<int>(3 * n);
   // The vertex pairs (row > column) that share an element, per column, sorted and unique; the
@@ -60,6 +68,7 @@ HessianLayout buildLayout(const BarHingeModel& model) {
   for (const auto& bar : model.bars) addElement(bar);
   for (const Hinge& h : model.hinges) addElement(hingeVertices(h));
   for (const auto& pair : model.glue) addElement(pair);
+  for (const ContactPair& pair : contactPairs) addElement(pairVertices(model, pair));
   std::size_t nonZeros = 0;
   for (auto& rows : below) {
     std::sort(rows.begin(), rows.end());
@@ -93,6 +102,9 @@ HessianLayout buildLayout(const BarHingeModel& model) {
   for (const auto& bar : model.bars) record(layout.barBlocks, bar);
   for (const Hinge& h : model.hinges) record(layout.hingeBlocks, hingeVertices(h));
   for (const auto& pair : model.glue) record(layout.glueBlocks, pair);
+  for (const ContactPair& pair : contactPairs)
+    record(layout.contactBlocks, pairVertices(model, pair));
+  layout.contactPairs = std::move(contactPairs);
   layout.diagonal.resize(dofs);
   for (int d = 0; d < dofs; ++d) layout.diagonal[d] = valueIndex(layout.matrix, d, d);
   return layout;
@@ -183,9 +195,29 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
     addElementBlocks(values, layout.glueBlocks.data() + 9 * i, model.glue[i], model.pinned,
                      [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
   }
+  // Contact: b'' grad(d) grad(d)^T, positive semidefinite (the b' Hess(d) term dropped).
+  ContactTerm term;
+  for (std::size_t i = 0; i < layout.contactPairs.size(); ++i) {
+    if (!contactTerm(model, x, layout.contactPairs[i], term)) continue;
+    addElementBlocks(values, layout.contactBlocks.data() + 30 * i, term.vertices, model.pinned,
+                     [&](std::size_t p, std::size_t q) {
+                       return term.curvature *
+                              glm::outerProduct(term.gradient[p], term.gradient[q]);
+                     });
+  }
   for (std::size_t v = 0; v < model.vertexCount(); ++v)
     if (model.pinned[v])
       for (int c = 0; c < 3; ++c) values[layout.diagonal[3 * v + c]] = 1.0;
+}
+
+// Every free vertex's total force: the elements' (elementForces, gatherForces) and the contact's.
+void totalForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                 const std::vector<double>& targets, const std::vector<double>& previous,
+                 std::vector<double>& angles, std::vector<glm::dvec3>& slots,
+                 std::vector<glm::dvec3>& forces) {
+  elementForces(model, positions, targets, previous, angles, slots);
+  gatherForces(model, slots, forces);
+  addContactForces(model, positions, forces);
 }
 
 double maxForce(const std::vector<glm::dvec3>& forces) {
@@ -230,8 +262,8 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
                       double foldAmount, const std::vector<double>& previousAngles) {
   std::vector<double> angles;
   std::vector<glm::dvec3> slots, forces;
-  elementForces(model, positions, hingeTargets(model, foldAmount), previousAngles, angles, slots);
-  gatherForces(model, slots, forces);
+  totalForces(model, positions, hingeTargets(model, foldAmount), previousAngles, angles, slots,
+              forces);
   return maxForce(forces) / forceScale(model);
 }
 
@@ -304,8 +336,11 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     if (!anyPinned)
       guess.positions =
           placed(bestRigidPlacement(guess.positions, state.positions), guess.positions);
+    // With contact, a guess that passes the sheet through itself is no start: the barrier cannot
+    // tell which side of a layer a vertex belongs on.
     if (modelEnergy(model, guess.positions, goal, guess.hingeAngles) <
-        modelEnergy(model, state.positions, goal, state.hingeAngles)) {
+            modelEnergy(model, state.positions, goal, state.hingeAngles) &&
+        (!model.contact.enabled || crossingTrianglePairs(model, guess.positions) == 0)) {
       state.positions.swap(guess.positions);
       state.hingeAngles.swap(guess.hingeAngles);
       result.predicted = true;
@@ -363,7 +398,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
   bool analysed = false;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
   Eigen::VectorXd gradient(3 * n), step(3 * n);
-  std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces;
+  std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces, stepVectors(n);
   std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n), hingeErrors(goal.size());
 
   for (std::size_t stage = 1; stage <= allStages; ++stage) {
@@ -394,9 +429,8 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     double damping = 1e-6;  // mu, relative to the Hessian's diagonal
     const std::size_t stageStart = result.iterations;
     while (true) {
-      elementForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
-                    state.slotForces);
-      gatherForces(model, state.slotForces, forces);
+      totalForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
+                  state.slotForces, forces);
       const double residual = maxForce(forces) / scale;
       result.history.push_back({stage, energy, residual});
       result.residual = residual;
@@ -412,8 +446,20 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
 
       for (std::size_t v = 0; v < n; ++v)
         for (int c = 0; c < 3; ++c) gradient[3 * v + c] = -forces[v][c];
+      // With contact the pattern has a block for each pair near enough to push, and is laid out
+      // again (with twice the activation gap's pairs, so it lasts) when one it lacks pushes.
+      std::vector<ContactPair> pushing;
+      if (model.contact.enabled) {
+        pushing = findContactPairs(model, state.positions, model.contact.activation);
+        if (analysed && !std::includes(layout.contactPairs.begin(), layout.contactPairs.end(),
+                                       pushing.begin(), pushing.end()))
+          analysed = false;
+      }
       if (!analysed) {
-        layout = buildLayout(model);
+        layout = buildLayout(
+            model, model.contact.enabled
+                       ? findContactPairs(model, state.positions, 2.0 * model.contact.activation)
+                       : std::vector<ContactPair>{});
         solver.analyzePattern(layout.matrix);
         analysed = true;
       }
@@ -451,7 +497,14 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
         }
         step = solver.solve(-gradient);
         const double slope = gradient.dot(step);
+        // No longer than lets a vertex pass through a layer (contact.hpp).
         double alpha = 1.0;
+        if (model.contact.enabled) {
+          for (std::size_t v = 0; v < n; ++v)
+            stepVectors[v] = glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
+          alpha = contactStepBound(model, state.positions, stepVectors);
+        }
+        const double longest = alpha;
         for (int halving = 0; halving < 30 && slope < 0.0 && !accepted; ++halving) {
           for (std::size_t v = 0; v < n; ++v)
             trial[v] = state.positions[v] +
@@ -462,8 +515,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           // rounding of the energy's sum, and no step measurably lowers it: a step that leaves
           // the energy where it was (not above) is then taken if it lowers the residual.
           if (!lower && trialEnergy <= energy && energy - trialEnergy <= 1e-12 * std::abs(energy)) {
-            elementForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots);
-            gatherForces(model, trialSlots, trialForces);
+            totalForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots, trialForces);
             lower = maxForce(trialForces) < maxForce(forces);
           }
           if (lower) {
@@ -477,7 +529,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           }
         }
         if (accepted)
-          damping = alpha == 1.0 ? std::max(1e-9, damping / 4.0) : damping * 2.0;
+          damping = alpha == longest ? std::max(1e-9, damping / 4.0) : damping * 2.0;
         else
           damping = std::max(damping * 10.0, 1e-4);
       }

@@ -23,9 +23,15 @@
 // Deterministic: sequential assembly and a sequential factorization; the forces are the
 // element-per-slot kernels of bar_hinge_model.hpp.
 //
+// Self-contact (paper mode, contact.hpp): the energy, forces and residual include the barrier
+// between layers, the Hessian its b'' grad(d) grad(d)^T for the pairs near enough to push (the
+// sparse pattern laid out again when a pair it lacks begins to push), each step is shortened so
+// that no vertex can pass through a layer along it, and the predictor's state is taken only when
+// it does not pass the sheet through itself.
+//
 // Known limits: a state between two stable equilibria may settle in either (the solver takes the
-// one downhill of its start, or the predictor's when that is lower); no self-contact; each
-// iteration is a sequential sparse factorization (about 0.6 s of CPU at 10k vertices).
+// one downhill of its start, or the predictor's when that is lower); each iteration is a
+// sequential sparse factorization (about 0.6 s of CPU at 10k vertices).
 #pragma once
 
 #include <cstddef>

@@ -1,0 +1,414 @@
+#include "engine/simulation/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "engine/geometry/self_intersection.hpp"
+#include "engine/simulation/bar_hinge_model.hpp"
+
+namespace curvefold {
+namespace {
+
+// The point of triangle (a, b, c) nearest p, as barycentric weights (Ericson, "Real-Time
+// Collision Detection", 5.1.5: the Voronoi regions of the corners, the edges, then the face).
+glm::dvec3 nearestWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                          const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0)) return {1.0, 0.0, 0.0};  // a degenerate triangle: its first corner
+  const double v = vb / sum, w = vc / sum;
+  return {1.0 - v - w, v, w};
+}
+
+double distanceToTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                          const glm::dvec3& c) {
+  const glm::dvec3 w = nearestWeights(p, a, b, c);
+  return glm::distance(p, w.x * a + w.y * b + w.z * c);
+}
+
+struct Box {
+  glm::dvec3 low{INFINITY}, high{-INFINITY};
+  void add(const glm::dvec3& p) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  void inflate(double by) {
+    low -= glm::dvec3(by);
+    high += glm::dvec3(by);
+  }
+  bool meets(const Box& other) const {
+    return low.x <= other.high.x && other.low.x <= high.x && low.y <= other.high.y &&
+           other.low.y <= high.y && low.z <= other.high.z && other.low.z <= high.z;
+  }
+};
+
+// A bounding-volume hierarchy over boxes, by median splits along the longest axis (nth_element
+// on the centres, ties by index: the same tree for the same boxes).
+class BoxTree {
+ public:
+  explicit BoxTree(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
+    order_.resize(boxes_.size());
+    for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    if (!boxes_.empty()) build(0, static_cast<std::uint32_t>(order_.size()));
+  }
+  // Calls visit(item) for every box that meets `query`.
+  template <typename Visit>
+  void query(const Box& query, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
+      if (!node.box.meets(query)) continue;
+      if (node.count > 0) {
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+          if (boxes_[order_[k]].meets(query)) visit(order_[k]);
+      } else {
+        stack[top++] = node.left;
+        stack[top++] = node.right;
+      }
+    }
+  }
+
+ private:
+  struct Node {
+    Box box;
+    std::uint32_t first = 0, count = 0;  // leaf: range of order_; inner: count 0
+    std::uint32_t left = 0, right = 0;   // inner: children
+  };
+  static constexpr std::uint32_t kLeaf = 4;
+
+  std::uint32_t build(std::uint32_t first, std::uint32_t count) {
+    const std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    Box box;
+    for (std::uint32_t k = first; k < first + count; ++k) {
+      box.add(boxes_[order_[k]].low);
+      box.add(boxes_[order_[k]].high);
+    }
+    nodes_[index].box = box;
+    if (count <= kLeaf) {
+      nodes_[index].first = first;
+      nodes_[index].count = count;
+      return index;
+    }
+    const glm::dvec3 size = box.high - box.low;
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    const std::uint32_t half = count / 2;
+    auto centre = [&](std::uint32_t i) { return boxes_[i].low[axis] + boxes_[i].high[axis]; };
+    std::nth_element(order_.begin() + first, order_.begin() + first + half,
+                     order_.begin() + first + count, [&](std::uint32_t a, std::uint32_t b) {
+                       const double ca = centre(a), cb = centre(b);
+                       return ca < cb || (ca == cb && a < b);
+                     });
+    const std::uint32_t left = build(first, half);
+    const std::uint32_t right = build(first + half, count - half);
+    nodes_[index].left = left;
+    nodes_[index].right = right;
+    return index;
+  }
+
+  std::vector<Box> boxes_;
+  std::vector<std::uint32_t> order_;
+  std::vector<Node> nodes_;
+};
+
+const glm::dvec3& corner(const BarHingeModel& model, const std::vector<glm::dvec3>& x,
+                         std::uint32_t t, int k) {
+  return x[model.triangles[t][k]];
+}
+
+bool ownTriangle(const BarHingeModel& model, std::uint32_t v, std::uint32_t t) {
+  const auto& tri = model.triangles[t];
+  return tri[0] == v || tri[1] == v || tri[2] == v;
+}
+
+// Whether the pair is the sheet's own neighbourhood (near on the flat sheet).
+bool excluded(const BarHingeModel& model, std::uint32_t v, std::uint32_t t, double exclusion) {
+  const auto& flat = model.flatPositions;
+  return distanceToTriangle(flat[v], corner(model, flat, t, 0), corner(model, flat, t, 1),
+                            corner(model, flat, t, 2)) < exclusion;
+}
+
+// Per vertex in order, the triangles `accept(v, t)` takes among those whose (already inflated)
+// box meets the vertex's box; concatenated in vertex order, each vertex's sorted.
+template <typename VertexBox, typename Accept>
+std::vector<ContactPair> collectPairs(const BarHingeModel& model, const BoxTree& tree,
+                                      const VertexBox& vertexBox, const Accept& accept) {
+  const std::size_t n = model.vertexCount();
+  std::vector<std::vector<std::uint32_t>> found(n);
+  forEachIndex(n, [&](std::size_t v) {
+    const std::uint32_t vertex = static_cast<std::uint32_t>(v);
+    tree.query(vertexBox(vertex), [&](std::uint32_t t) {
+      if (!ownTriangle(model, vertex, t) && accept(vertex, t)) found[v].push_back(t);
+    });
+    std::sort(found[v].begin(), found[v].end());
+  });
+  std::vector<ContactPair> pairs;
+  for (std::uint32_t v = 0; v < n; ++v)
+    for (std::uint32_t t : found[v]) pairs.push_back({v, t});
+  return pairs;
+}
+
+BoxTree triangleTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
+                     const std::vector<glm::dvec3>* step = nullptr) {
+  std::vector<Box> boxes(model.triangles.size());
+  for (std::size_t t = 0; t < boxes.size(); ++t) {
+    for (std::uint32_t v : model.triangles[t]) {
+      boxes[t].add(x[v]);
+      if (step) boxes[t].add(x[v] + (*step)[v]);
+    }
+    boxes[t].inflate(inflation);
+  }
+  return BoxTree(std::move(boxes));
+}
+
+// The barrier b(s) and its first two derivatives (ContactParameters; header).
+void barrier(const ContactParameters& c, double s, double& b, double& slope, double& curvature,
+             bool dynamic = false) {
+  const double taylorBelow = dynamic ? std::max(c.minimumGap, c.dynamicMinimumGap) : c.minimumGap;
+  const double sHat = c.activation, kappa = c.stiffness;
+  const auto exact = [&](double at, double& e, double& d1, double& d2) {
+    const double gap = at - sHat, log = std::log(at / sHat);
+    e = -kappa * gap * gap * log;
+    d1 = -kappa * (2.0 * gap * log + gap * gap / at);
+    d2 = -kappa * (2.0 * log + 4.0 * gap / at - gap * gap / (at * at));
+  };
+  if (s >= taylorBelow) {
+    exact(s, b, slope, curvature);
+    return;
+  }
+  double e0 = 0.0, d1 = 0.0, d2 = 0.0;
+  exact(taylorBelow, e0, d1, d2);
+  const double ds = s - taylorBelow;
+  b = e0 + d1 * ds + 0.5 * d2 * ds * ds;
+  slope = d1 + d2 * ds;
+  curvature = d2;
+}
+
+}  // namespace
+
+void setDynamicContactStep(ContactParameters& contact, double largestStiffness) {
+  contact.dynamicMinimumGap = contact.minimumGap;
+  if (!contact.enabled || !(largestStiffness > 0.0)) return;
+  // b'' falls as the gap grows: bisect for the gap where it equals the largest stiffness.
+  double low = contact.minimumGap, high = contact.activation, b = 0.0, d1 = 0.0, d2 = 0.0;
+  barrier(contact, low, b, d1, d2);
+  if (d2 <= largestStiffness) return;
+  for (int k = 0; k < 60; ++k) {
+    const double middle = 0.5 * (low + high);
+    barrier(contact, middle, b, d1, d2);
+    (d2 > largestStiffness ? low : high) = middle;
+  }
+  contact.dynamicMinimumGap = high;
+}
+
+ContactParameters contactParameters(const BarHingeModel& model, const ContactOptions& options,
+                                    double paperThickness) {
+  ContactParameters c;
+  if (model.mode != SimulationMode::Paper || !options.enabled) return c;
+  c.thickness = options.thickness > 0.0 ? options.thickness : paperThickness;
+  if (!(c.thickness > 0.0) || !(options.stiffnessScale > 0.0)) return c;
+  c.enabled = true;
+  c.activation = c.thickness;
+  c.minimumGap = 1e-3 * c.activation;
+  c.exclusion = 1.5 * (c.thickness + c.activation);
+  double scale = 0.0;  // the static solver's forceScale
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    scale = std::max(scale, model.hingeStiffness[j] / model.barLength[model.hingeEdge[j]]);
+  if (scale == 0.0)
+    for (std::size_t i = 0; i < model.bars.size(); ++i)
+      scale = std::max(scale, model.barStiffness[i] * model.barLength[i]);
+  c.stiffness = options.stiffnessScale * (scale > 0.0 ? scale : 1.0) / c.activation;
+  return c;
+}
+
+namespace {
+
+// The pairs (vertex, triangle not its own) nearer than `within`, those nearer than `exclusion` on
+// the flat sheet left out.
+std::vector<ContactPair> pairsWithin(const BarHingeModel& model,
+                                     const std::vector<glm::dvec3>& positions, double within,
+                                     double exclusion) {
+  if (model.triangles.empty()) return {};
+  const BoxTree tree = triangleTree(model, positions, within);
+  return collectPairs(
+      model, tree,
+      [&](std::uint32_t v) {
+        Box box;
+        box.add(positions[v]);
+        return box;
+      },
+      [&](std::uint32_t v, std::uint32_t t) {
+        return distanceToTriangle(positions[v], corner(model, positions, t, 0),
+                                  corner(model, positions, t, 1),
+                                  corner(model, positions, t, 2)) < within &&
+               !excluded(model, v, t, exclusion);
+      });
+}
+
+}  // namespace
+
+std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
+                                          const std::vector<glm::dvec3>& positions, double reach) {
+  if (!model.contact.enabled) return {};
+  return pairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
+}
+
+bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                 const ContactPair& pair, ContactTerm& term, bool dynamic) {
+  const ContactParameters& c = model.contact;
+  const auto& tri = model.triangles[pair.triangle];
+  const glm::dvec3& p = positions[pair.vertex];
+  const glm::dvec3 &a = positions[tri[0]], &b = positions[tri[1]], &cc = positions[tri[2]];
+  const glm::dvec3 w = nearestWeights(p, a, b, cc);
+  const glm::dvec3 away = p - (w.x * a + w.y * b + w.z * cc);
+  const double d = glm::length(away);
+  const double s = d - c.thickness;
+  if (s >= c.activation) return false;
+  glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(b - a, cc - a);
+  if (!(d > 0.0)) {
+    const double length = glm::length(normal);
+    normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
+  }
+  term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
+  term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
+  barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
+  return true;
+}
+
+double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions) {
+  if (!model.contact.enabled) return 0.0;
+  double energy = 0.0;
+  ContactTerm term;
+  for (const ContactPair& pair : findContactPairs(model, positions, model.contact.activation))
+    if (contactTerm(model, positions, pair, term)) energy += term.energy;
+  return energy;
+}
+
+void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces,
+                      bool dynamic) {
+  if (!model.contact.enabled || pairs.empty()) return;
+  // Each pair's term on all cores, then summed in pair order: the same bits for any thread count.
+  std::vector<ContactTerm> terms(pairs.size());
+  std::vector<std::uint8_t> active(pairs.size(), 0);
+  forEachIndex(pairs.size(), [&](std::size_t i) {
+    active[i] = contactTerm(model, positions, pairs[i], terms[i], dynamic);
+  });
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (!active[i]) continue;
+    for (int k = 0; k < 4; ++k)
+      if (!model.pinned[terms[i].vertices[k]])
+        vertexForces[terms[i].vertices[k]] -= terms[i].slope * terms[i].gradient[k];
+  }
+}
+
+void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      std::vector<glm::dvec3>& vertexForces) {
+  if (!model.contact.enabled) return;
+  addContactForces(model, positions, findContactPairs(model, positions, model.contact.activation),
+                   vertexForces);
+}
+
+double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                        const std::vector<glm::dvec3>& step) {
+  if (!model.contact.enabled || model.triangles.empty()) return 1.0;
+  const double thickness = model.contact.thickness;
+  const BoxTree tree = triangleTree(model, positions, thickness, &step);
+  const std::size_t n = model.vertexCount();
+  std::vector<double> bound(n, 1.0);
+  forEachIndex(n, [&](std::size_t v) {
+    Box box;
+    box.add(positions[v]);
+    box.add(positions[v] + step[v]);
+    tree.query(box, [&](std::uint32_t t) {
+      if (ownTriangle(model, static_cast<std::uint32_t>(v), t)) return;
+      const auto& tri = model.triangles[t];
+      double relative = 0.0;  // the gap changes at most by this over the whole step
+      for (std::uint32_t corner : tri)
+        relative = std::max(relative, glm::length(step[v] - step[corner]));
+      const double gap = distanceToTriangle(positions[v], positions[tri[0]], positions[tri[1]],
+                                            positions[tri[2]]) -
+                         thickness;
+      if (!(gap > 0.0) || 0.9 * gap >= relative * bound[v]) return;
+      if (excluded(model, static_cast<std::uint32_t>(v), t, model.contact.exclusion)) return;
+      bound[v] = 0.9 * gap / relative;
+    });
+  });
+  return *std::min_element(bound.begin(), bound.end());
+}
+
+void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                        ContactList& list) {
+  if (!model.contact.enabled) {
+    list.pairs.clear();
+    return;
+  }
+  const double skin = model.contact.activation;
+  bool stale = list.builtAt.size() != positions.size();
+  for (std::size_t v = 0; v < positions.size() && !stale; ++v)
+    stale = glm::distance(positions[v], list.builtAt[v]) > 0.5 * skin;
+  if (!stale) return;
+  list.pairs = findContactPairs(model, positions, model.contact.activation + skin);
+  list.builtAt = positions;
+  ++list.rebuilds;
+}
+
+const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationState& state) {
+  if (!model.contact.enabled) return nullptr;
+  refreshContactList(model, state.positions, state.contactPairs);
+  if (state.contactPairs.pairs.empty()) return nullptr;
+  state.contactForces.assign(model.vertexCount(), glm::dvec3(0.0));
+  addContactForces(model, state.positions, state.contactPairs.pairs, state.contactForces, true);
+  return state.contactForces.data();
+}
+
+double smallestLayerDistance(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                             double thickness, double reach) {
+  double smallest = reach;
+  for (const ContactPair& pair : pairsWithin(model, positions, reach, 3.0 * thickness)) {
+    const auto& tri = model.triangles[pair.triangle];
+    smallest = std::min(smallest, distanceToTriangle(positions[pair.vertex], positions[tri[0]],
+                                                     positions[tri[1]], positions[tri[2]]));
+  }
+  return smallest;
+}
+
+std::size_t crossingTrianglePairs(const BarHingeModel& model,
+                                  const std::vector<glm::dvec3>& positions) {
+  Sheet sheet;
+  sheet.positions = positions;
+  for (const glm::dvec3& p : model.flatPositions) sheet.development.emplace_back(p.x, p.y);
+  for (const auto& t : model.triangles) sheet.triangles.push_back({t[0], t[1], t[2]});
+  return findSelfIntersections(sheet).intersections.size();
+}
+
+}  // namespace curvefold

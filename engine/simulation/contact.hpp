@@ -1,0 +1,143 @@
+// Self-contact of the bar-and-hinge model (issue 39, paper mode): layers of paper keep at least
+// the paper's thickness apart. Each vertex and each triangle that is not its own are a pair; with
+// d the point-triangle distance, s = d - thickness the gap left, and s^ the activation gap (the
+// thickness again), a pair whose gap is below s^ adds the barrier of Incremental Potential
+// Contact (Li et al., SIGGRAPH 2020)
+//   b(s) = -kappa (s - s^)^2 ln(s / s^),  0 < s < s^,
+// smooth (C2) and infinite as the layers close, so that an energy that never rises cannot bring
+// two layers nearer than the thickness. Below minimumGap (1e-3 s^) it goes on as its own second
+// order Taylor polynomial, so a state that starts inside the thickness has a finite energy and is
+// pushed out.
+//
+// Pairs whose distance on the flat sheet is below `exclusion` (1.5 (thickness + s^)) are the
+// sheet's own neighbourhood, not layers, and are never pairs: on the flat sheet no pair is active.
+// Pairs are found with a bounding-volume hierarchy over the triangles, built for each query
+// (median splits, deterministic), and listed sorted (vertex, then triangle).
+//
+// Solvers: the static solver adds the barrier's energy, force and Hessian b'' grad(d) grad(d)^T
+// (positive semidefinite; the b' Hess(d) term is dropped) and limits each step so that no pair
+// can close more than 90% of its gap along it (contactStepBound: a gap changes at most by the
+// largest motion of the vertex relative to the triangle's corners), so no vertex passes through a
+// layer between iterations. The dynamic solver adds the same force from a list of pairs within the
+// activation gap plus a skin, found again when a vertex has moved half the skin (ContactList).
+//
+// Stiffness kappa: stiffnessScale x the hinges' force scale (the largest k / |e| over hinges, the
+// static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
+// that force.
+//
+// Known limits: point-triangle pairs only (an edge passing through an edge with no vertex
+// passing a triangle is not stopped; `check` still reports it); the dynamic solver's step is not
+// limited by the barrier's stiffness, which grows as 1 / s^2 deep in it; paper mode only (design
+// mode has no thickness and keeps none).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace curvefold {
+
+struct BarHingeModel;
+struct SimulationState;
+
+// What ModelOptions asks for.
+struct ContactOptions {
+  // Off unless asked for (`simulate --paper` asks unless --no-contact): with it the static
+  // solver ends short of its tolerance on patterns that fold in many layers (docs/performance.md,
+  // "Self-contact in paper mode"). Paper mode only; design mode never has contact.
+  bool enabled = false;
+  double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
+  double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
+};
+
+// What the model keeps (BarHingeModel::contact); enabled only in paper mode with contact on.
+struct ContactParameters {
+  bool enabled = false;
+  double thickness = 0.0;   // the smallest distance a vertex keeps from a triangle not its own
+  double activation = 0.0;  // s^: the gap below which a pair pushes
+  double minimumGap = 0.0;  // below this gap the barrier is its Taylor polynomial
+  double stiffness = 0.0;   // kappa, N/m
+  double exclusion = 0.0;   // pairs nearer than this on the flat sheet are never pairs
+  // The dynamic solver's barrier is its Taylor polynomial below this gap (setDynamicContactStep),
+  // so its stiffness stays within what the explicit step is stable at.
+  double dynamicMinimumGap = 0.0;
+};
+
+// Sets dynamicMinimumGap to the gap where the barrier's b'' is `largestStiffness` (N/m): buildModel
+// gives it 3/8 of the lightest vertex's mass over the step squared, the stiffness a vertex may add
+// (about 8 pairs on it, each up to 1 along the distance's gradient at it and 1 summed over the
+// others') and stay within the semi-implicit Euler step's stability (omega dt < 2, where the step
+// is 1 / omega of the elements alone). Recompute it after changing the step.
+void setDynamicContactStep(ContactParameters& contact, double largestStiffness);
+
+// The contact of a model already built (bars and hinges): off outside paper mode or when not
+// enabled.
+ContactParameters contactParameters(const BarHingeModel& model, const ContactOptions& options,
+                                    double paperThickness);
+
+struct ContactPair {
+  std::uint32_t vertex = 0, triangle = 0;
+  auto operator<=>(const ContactPair&) const = default;
+};
+
+// Every pair (excluded ones left out) whose vertex is within thickness + reach of its triangle,
+// sorted.
+std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
+                                          const std::vector<glm::dvec3>& positions, double reach);
+
+// One pair's barrier at these positions: its four vertices (the vertex, then the triangle's),
+// the distance's gradient with respect to each, and b, b' and b'' of its gap. False when the pair
+// pushes not at all (its gap at or above the activation).
+struct ContactTerm {
+  std::array<std::uint32_t, 4> vertices{};
+  std::array<glm::dvec3, 4> gradient{};
+  double energy = 0.0, slope = 0.0, curvature = 0.0;
+};
+// `dynamic`: the dynamic solver's barrier (dynamicMinimumGap).
+bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                 const ContactPair& pair, ContactTerm& term, bool dynamic = false);
+
+// The barrier's energy at these positions (0 when contact is off). Summed in pair order.
+double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions);
+
+// Adds each listed pair's force (minus the barrier's gradient) to vertexForces, in pair order;
+// pinned vertices get none. Without a list, the pairs within the activation gap are found.
+void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces,
+                      bool dynamic = false);
+void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      std::vector<glm::dvec3>& vertexForces);
+
+// The largest share (0..1] of the step positions + step that no pair can close more than 90% of
+// its gap along (pairs already inside the thickness are not counted). 1 when contact is off.
+double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                        const std::vector<glm::dvec3>& step);
+
+// The dynamic solver's pairs: those within the activation gap plus a skin (the activation gap
+// again), found again when some vertex has moved more than half the skin since.
+struct ContactList {
+  std::vector<ContactPair> pairs;
+  std::vector<glm::dvec3> builtAt;
+  std::size_t rebuilds = 0;
+};
+void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                        ContactList& list);
+
+// The dynamic step's hook: refreshes the state's list and returns each vertex's contact force
+// (state.contactForces), or null when contact is off or no pair is listed.
+const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationState& state);
+
+// The smallest distance between a vertex and a triangle not its own, among those nearer than
+// `reach`, leaving out pairs nearer than 3 x thickness on the flat sheet (the contact's exclusion
+// for that thickness); reach when there is none. Works with contact off (to measure without it).
+double smallestLayerDistance(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                             double thickness, double reach);
+
+// How many pairs of the model's triangles cross each other at these positions (the geometry
+// core's self-intersection test, as `curvefold check` runs it).
+std::size_t crossingTrianglePairs(const BarHingeModel& model,
+                                  const std::vector<glm::dvec3>& positions);
+
+}  // namespace curvefold
