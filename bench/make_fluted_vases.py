@@ -12,8 +12,8 @@ curves through (height, radius, slope) keys, axes tilted off every coordinate ax
 
 Usage: bench/make_fluted_vases.py OUTDIR
 Writes fluted_vase_tilted.obj (8 flutes of 5%: a foot of 4.5 cm, a belly of 7 cm, a neck of
-3.2 cm and a lip of 4 cm; 25 cm tall, axis tilted 25 degrees), and bottle_floor_x.obj (a
-bottle lying along x, 24 cm long: a body of 4.5 cm with a flat floor closing its end (a hole of 0.7 cm in its middle), a
+3.2 cm and a lip of 4 cm; 25 cm tall, axis tilted 23 degrees off y), and bottle_floor_x.obj (a
+bottle lying along x, 24 cm long: a body of 4.5 cm with a flat floor closing its end (a hole of 0.7 cm radius in its middle), a
 shoulder into a neck of 1.6 cm; 6 flutes of 3%; two holes).
 """
 import math
@@ -213,7 +213,7 @@ def main():
     v, f = vase_of_revolution(VASE_KEYS, 8, 0.05, (0.35, 1.0, -0.25), (0.03, -0.12, 0.02),
                               0.022, 0.009, 0.8, seed=11)
     write(os.path.join(sys.argv[1], "fluted_vase_tilted.obj"), v, f,
-          "a fluted vase, 8 flutes, axis tilted 25 degrees, uneven triangles")
+          "a fluted vase, 8 flutes, axis tilted 23 degrees, uneven triangles")
     v, f = vase_of_revolution(BOTTLE_KEYS, 6, 0.03, (1.0, 0.08, 0.05), (-0.12, 0.01, 0.0),
                               0.02, 0.007, 0.75, seed=5, floor=True, holes=2)
     write(os.path.join(sys.argv[1], "bottle_floor_x.obj"), v, f,
