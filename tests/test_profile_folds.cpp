@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -371,6 +372,59 @@ TEST(TubeRings, ANeckOfHalfTheTubeIsCutByCoarseRingsAndTheirCreasesFoldedIn) {
       << step.before.chamfer << " -> " << step.after.chamfer << " m";
   EXPECT_LT(step.after.hausdorff, 0.7 * step.before.hausdorff)
       << step.before.hausdorff << " -> " << step.after.hausdorff << " m";
+}
+
+// A cone about z, 20 cm tall, its radius 5.25 cm at the foot and 3.75 cm at the top, and a vase
+// inside it: the cone's radius at its middle, 0.8 of it at the foot and at the neck.
+double coneRadius(double h) {
+  return 0.045 - 0.075 * h;
+}
+TriangleMesh vaseInsideCone() {
+  return revolved(
+      [](double h) { return coneRadius(h) * (0.8 + 0.2 * std::cos(std::numbers::pi * h / 0.2)); },
+      -0.1, 0.1, 64, 40);
+}
+
+// A vase's cone is a tube the rings narrow as they narrow a cylinder (ring_folds.hpp): the tube
+// rings' chain from a cone about the vase's axis, toward the foot and the neck, more than 1.5
+// times closer by Chamfer and nearer its farthest point (with cones left out of tubeAbout there is
+// no chain at all: the fit's first step from the cone it places on a vase was single folds).
+TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
+  Sheet cone = makeSurface("cone", {{"base_radius", coneRadius(-0.1)},
+                                    {"top_radius", coneRadius(0.1)},
+                                    {"height", 0.2},
+                                    {"resolution", testing::kSanitized ? 16.0 : 32.0}});
+  for (glm::dvec3& p : cone.positions) p = {p.x, -p.z, p.y};  // its axis y onto z
+  const std::optional<TubeAxis> tube = tubeAbout(cone, {0.0, 0.0, 1.0});
+  ASSERT_TRUE(tube);
+  EXPECT_NEAR(tube->radius, 0.045, 0.002);
+
+  const TriangleMesh vase = vaseInsideCone();
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 1500;
+  settings.denseTargetSamples = 4000;
+  const FoldFitter fitter(vase, settings);
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(vase, 1500, 11);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  ASSERT_TRUE(axis);
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> rings =
+      suggestTubeRings(FoldSession(cone), fitter, *axis, targetSamples, 1,
+                       Deadline::in(std::numeric_limits<double>::infinity()), random);
+  ASSERT_EQ(rings.size(), 1u);
+  const SurfaceDistance before = surfaceDistance(meshOf(cone), vase, 4000);
+  const SurfaceDistance after = surfaceDistance(meshOf(rings.front().sheet), vase, 4000);
+  EXPECT_LT(after.chamfer, before.chamfer / 1.5) << before.chamfer << " -> " << after.chamfer;
+  EXPECT_LT(after.hausdorff, before.hausdorff) << before.hausdorff << " -> " << after.hausdorff;
+  validate(rings.front().sheet);
+  EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
+}
+
+// A bowl's flat cone is no tube: its radius changes faster than kTubeRingSteepestTaper.
+TEST(TubeRings, ABowlsFlatConeIsNoTube) {
+  Sheet cone = makeSurface("cone", {{"base_radius", 0.08}, {"top_radius", 0.01}, {"height", 0.05}});
+  EXPECT_FALSE(tubeAbout(cone, {0.0, 1.0, 0.0}));
 }
 
 }  // namespace

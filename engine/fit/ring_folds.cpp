@@ -5,12 +5,14 @@
 #include <memory>
 #include <numbers>
 #include <span>
+#include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <Eigen/Dense>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -66,18 +68,34 @@ std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& directio
   double bestSpread = 1e300;
   for (const glm::dvec3& d : candidates) {
     if (std::abs(glm::dot(d, glm::normalize(direction))) < kSameDirection) continue;
-    double lowest = 1e300, highest = -1e300, nearest = 1e300, farthest = 0.0, sum = 0.0;
+    // The radius as a line of the height (a cylinder's slope 0, a cone's its taper), by least
+    // squares; the spread is that of the radius about the line.
+    double lowest = 1e300, highest = -1e300, sum = 0.0, sumH = 0.0, sumHH = 0.0, sumHR = 0.0;
+    std::vector<glm::dvec2> profile;
+    profile.reserve(sheet.positions.size());
     for (const glm::dvec3& p : sheet.positions) {
       const double h = glm::dot(p - centre, d);
       const double r = glm::length((p - centre) - h * d);
+      profile.emplace_back(h, r);
       lowest = std::min(lowest, h);
       highest = std::max(highest, h);
-      nearest = std::min(nearest, r);
-      farthest = std::max(farthest, r);
       sum += r;
+      sumH += h;
+      sumHH += h * h;
+      sumHR += h * r;
     }
-    const double radius = sum / static_cast<double>(sheet.positions.size());
+    const auto n = static_cast<double>(sheet.positions.size());
+    const double radius = sum / n;
     if (!(radius > 0.0) || highest - lowest < 0.5 * radius) continue;
+    const double meanH = sumH / n, varianceH = sumHH / n - meanH * meanH;
+    const double slope = varianceH > 0.0 ? (sumHR / n - meanH * radius) / varianceH : 0.0;
+    if (std::abs(slope) > kTubeRingSteepestTaper) continue;
+    double nearest = 1e300, farthest = -1e300;
+    for (const glm::dvec2& hr : profile) {
+      const double off = hr.y - (radius + slope * (hr.x - meanH));
+      nearest = std::min(nearest, off);
+      farthest = std::max(farthest, off);
+    }
     const double spread = (farthest - nearest) / radius;
     if (spread <= kTubeSpread && spread < bestSpread) {
       bestSpread = spread;

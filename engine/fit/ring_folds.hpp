@@ -27,11 +27,16 @@
 // jointly on a preview of the sheet's samples and refined by Subplex was tried beside these: it
 // never came closer, 14 of 14 fits of 7 vases, and was removed.)
 //
-// Inputs: a session whose sheet is a tube about the target's axis direction (every vertex within
-// 3% of one radius from a line within 11 degrees of `axis.direction` through the middle of its
-// bounding box, at least half a radius long; any other sheet gets none: a folded tube's profile
-// is no longer one radius per height) and the target's area-uniform samples. Output: up to
-// `count` FoldSuggestions (all rings of one chain as one step), best first, each closer than the
+// Inputs: a session whose sheet is a tube or a cone about the target's axis direction (every
+// vertex's distance from a line within 11 degrees of `axis.direction` through the middle of its
+// bounding box within 3% of the mean radius of a least-squares line of radius against height,
+// whose slope is at most kTubeRingSteepestTaper; at least half a radius long; any other sheet
+// gets none: a folded tube's profile is no longer one radius per height) and the target's
+// area-uniform samples. A cone is cut as a tube is (neckRings reads the sheet's radius at each
+// height): the start `fit` places on a vase is a cone (start_surface.hpp), whose first step was
+// single folds that the exact measure rejected (the example vase: no fold kept in 3000
+// evaluations; with the chain from the cone, 1.59% -> 1.22% of the diagonal, Chamfer). Output: up
+// to `count` FoldSuggestions (all rings of one chain as one step), best first, each closer than the
 // sheet was by both measures. Known limits:
 // a ring's wedges stay apart only down to about cos(pi / n) of the radius, so a neck narrower than
 // about 0.65 of the tube is approached, not reached; the cut tube is a star of n lobes, not a
@@ -54,8 +59,12 @@
 
 namespace curvefold {
 
-// The tube `sheet` is about a line along `direction` (its axis through the sheet's centroid, its
-// mean radius), or none when it is no such tube (see above).
+// The steepest cone the rings narrow: its radius changes by at most this much per length along
+// its axis (about 20 degrees): a vase's cone (0.13 on the example vase), not a bowl's flat one.
+inline constexpr double kTubeRingSteepestTaper = 0.36;
+
+// The tube or cone `sheet` is about a line along `direction` (its axis through the middle of the
+// sheet's bounding box, its mean radius), or none when it is no such tube (see above).
 struct TubeAxis {
   RevolutionAxis axis;
   double radius = 0.0;
