@@ -386,15 +386,15 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     byte in the saved design, and reports the same distances; another seed searches otherwise."""
     target = TARGETS / "saddle.obj"
     design = curvefold.Design.new("square", resolution=12)
-    report = design.fit(target, folds=2, evaluations=100, seed=5)
+    report = design.fit(target, folds=2, evaluations=30, seed=5)
     # A step may be a pleat (two folds of one group): the report counts steps.
     assert report["folds"] >= 1 and len({f["group"] for f in design.folds}) == report["folds"]
     assert report["out_of_evaluations"] and not report["timed_out"]
-    assert report["evaluations"] >= 100
+    assert report["evaluations"] >= 30
     assert report["dropped_samples"] == 0
     design.save(tmp_path / "python.curvefold.json")
     out = cli("fit", target, "--from", "square", "--resolution", "12", "--folds", "2",
-              "--evaluations", "100", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
+              "--evaluations", "30", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
     assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
     wrote = [line for line in out.splitlines() if line.startswith("wrote ")][0]
     hausdorff_mm = float(wrote.split("Hausdorff ")[1].split(" mm")[0])
