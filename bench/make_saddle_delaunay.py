@@ -18,6 +18,8 @@ import os
 import random
 import sys
 
+from formula_meshes import place, write_obj
+
 
 def darts(inside, box, spacing, rng, tries=30000):
     """Points inside `inside(x, y)`, each at least spacing(x, y) from the others (dart throwing)."""
@@ -76,25 +78,6 @@ def boundary_points(curve, count):
     return [curve(2 * math.pi * k / count) for k in range(count)]
 
 
-def place(p, yaw, tilt, shift):
-    x, y, z = p
-    a, b = math.radians(yaw), math.radians(tilt)
-    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-    y, z = y * math.cos(b) - z * math.sin(b), y * math.sin(b) + z * math.cos(b)
-    return (x + shift[0], y + shift[1], z + shift[2])
-
-
-def write(path, comment, verts, tris):
-    used = sorted({i for t in tris for i in t})
-    index = {old: new for new, old in enumerate(used)}
-    with open(path, "w") as out:
-        out.write("# " + comment + " (bench/make_saddle_delaunay.py)\n")
-        for i in used:
-            out.write("v %.8f %.8f %.8f\n" % verts[i])
-        for t in tris:
-            out.write("f %d %d %d\n" % tuple(index[i] + 1 for i in t))
-
-
 def shape(rim, inside, box, spacing, rim_count, rng):
     # The rim's points moved inward at random by up to 0.3%: points on one circle make the
     # Delaunay test tie (and the triangulation overlap).
@@ -106,6 +89,10 @@ def shape(rim, inside, box, spacing, rim_count, rng):
     tris = [t for t in delaunay(pts)
             if inside(sum(pts[i][0] for i in t) / 3, sum(pts[i][1] for i in t) / 3)]
     return pts, tris
+
+
+def write(path, comment, verts, tris):
+    write_obj(path, comment, "bench/make_saddle_delaunay.py", verts, tris)
 
 
 def main():

@@ -13,14 +13,7 @@ import os
 import random
 import sys
 
-
-def place(p, yaw, tilt, shift):
-    """p turned `yaw` degrees about z, tilted `tilt` about x, moved by `shift`."""
-    x, y, z = p
-    a, b = math.radians(yaw), math.radians(tilt)
-    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-    y, z = y * math.cos(b) - z * math.sin(b), y * math.sin(b) + z * math.cos(b)
-    return (x + shift[0], y + shift[1], z + shift[2])
+from formula_meshes import place, write_obj
 
 
 def jittered(width, depth, nx, ny, jitter, rng):
@@ -72,14 +65,7 @@ def normal_at(f, x, y, e=1e-5):
 
 
 def write(path, comment, verts, tris):
-    used = sorted({v for t in tris for v in t})
-    renumber = {v: k for k, v in enumerate(used)}
-    with open(path, "w") as out:
-        out.write("# " + comment + " (bench/make_saddle_scatter.py)\n")
-        for v in used:
-            out.write("v %.8f %.8f %.8f\n" % verts[v])
-        for t in tris:
-            out.write("f %d %d %d\n" % tuple(renumber[v] + 1 for v in t))
+    write_obj(path, comment, "bench/make_saddle_scatter.py", verts, tris)
 
 
 def main():

@@ -12,15 +12,7 @@ import os
 import random
 import sys
 
-
-def turn(p, yaw_deg, tilt_deg, shift):
-    """p turned yaw about z, then tilted about x, then moved."""
-    x, y, z = p
-    a = math.radians(yaw_deg)
-    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-    b = math.radians(tilt_deg)
-    y, z = y * math.cos(b) - z * math.sin(b), y * math.sin(b) + z * math.cos(b)
-    return (x + shift[0], y + shift[1], z + shift[2])
+from formula_meshes import place, write_obj
 
 
 def disk(radius, rings, height):
@@ -72,12 +64,7 @@ def grid(width, depth, nx, ny, height, alternate=True):
 
 
 def write(path, comment, verts, tris):
-    with open(path, "w") as out:
-        out.write("# " + comment + " (bench/make_saddle_targets.py)\n")
-        for v in verts:
-            out.write("v %.9g %.9g %.9g\n" % v)
-        for t in tris:
-            out.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+    write_obj(path, comment, "bench/make_saddle_targets.py", verts, tris, number="%.9g", used_only=False)
 
 
 def main():
@@ -90,17 +77,17 @@ def main():
     # A hypar z = x y / c over a 24 cm disk, turned 30 degrees and tilted 15.
     v, t = disk(0.12, 14, lambda x, y: x * y / 0.2)
     write(os.path.join(outdir, "hypar_disk.obj"), "hypar z = xy/0.2 over a disk r 12 cm, turned 30, tilted 15",
-          [turn(p, 30, 15, (0.05, -0.02, 0.3)) for p in v], t)
+          [place(p, 30, 15, (0.05, -0.02, 0.3)) for p in v], t)
 
     # z = (x^2 - y^2) / 0.5 over a 40 cm square, coarse (8 x 8, alternating diagonals), turned 30.
     v, t = grid(0.4, 0.4, 8, 8, lambda x, y: (x * x - y * y) / 0.5)
     write(os.path.join(outdir, "saddle_coarse.obj"), "z = (x^2-y^2)/0.5 over 40 cm, 8x8, turned 30",
-          [turn(p, 30, 0, (0, 0, 0)) for p in v], t)
+          [place(p, 30, 0, (0, 0, 0)) for p in v], t)
 
     # A long gentle saddle z = (x^2 / 0.6 - y^2 / 0.3) over 30 x 15 cm, fine (90 x 45).
     v, t = grid(0.3, 0.15, 90, 45, lambda x, y: x * x / 0.6 - y * y / 0.3, alternate=False)
     write(os.path.join(outdir, "saddle_long.obj"), "z = x^2/0.6 - y^2/0.3 over 30 x 15 cm, 90x45",
-          [turn(p, -10, 25, (0, 0, 0)) for p in v], t)
+          [place(p, -10, 25, (0, 0, 0)) for p in v], t)
 
     # A monkey saddle z = (x^3 - 3 x y^2) / 0.03 over a disk r 10 cm.
     v, t = disk(0.1, 12, lambda x, y: (x ** 3 - 3 * x * y * y) / 0.03)
@@ -120,7 +107,7 @@ def main():
     used = sorted({i for tri in t for i in tri})
     index = {old: new for new, old in enumerate(used)}
     write(os.path.join(outdir, "hypar_scan.obj"), "hypar z = xy/0.25 over 30 cm, noise, two holes",
-          [turn(v[i], 55, -20, (0.1, 0.1, 0)) for i in used],
+          [place(v[i], 55, -20, (0.1, 0.1, 0)) for i in used],
           [tuple(index[i] for i in tri) for tri in t])
 
 
