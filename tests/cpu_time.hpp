@@ -1,0 +1,63 @@
+// CPU time, for the tests whose claim is about work: a step that stops soon after its deadline
+// or a cancel does little work after it. The wall clock measures that only on an idle machine (a
+// loaded one stretches every step), but the CPU a process spends after the moment is the same
+// under load; a step that ignores its deadline spends seconds of it.
+#pragma once
+
+#include <sys/resource.h>
+#include <time.h>
+
+#include <chrono>
+#include <functional>
+#include <thread>
+#include <utility>
+
+namespace curvefold::testing {
+
+// Seconds of CPU this process has used so far, all its threads together.
+inline double processCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Seconds of CPU of the children this process has waited for (std::system's commands and theirs),
+// user and system together.
+inline double childrenCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+// The CPU this process spends after a moment: a thread sleeps until `at`, reads the process's
+// CPU time, then runs `then` (a cancel, say). A thread woken late under load reads later, which
+// counts less, never more.
+class CpuAfter {
+ public:
+  explicit CpuAfter(std::chrono::steady_clock::time_point at, std::function<void()> then = {})
+      : thread_([this, at, then = std::move(then)] {
+          std::this_thread::sleep_until(at);
+          atMoment_ = processCpuSeconds();
+          if (then) then();
+        }) {}
+  CpuAfter(const CpuAfter&) = delete;
+  CpuAfter& operator=(const CpuAfter&) = delete;
+  ~CpuAfter() {
+    if (thread_.joinable()) thread_.join();
+  }
+
+  // Seconds of CPU since the moment (waits for it when it has not come: then about 0).
+  double seconds() {
+    if (thread_.joinable()) thread_.join();
+    return processCpuSeconds() - atMoment_;
+  }
+
+ private:
+  double atMoment_ = 0.0;
+  std::thread thread_;
+};
+
+}  // namespace curvefold::testing
