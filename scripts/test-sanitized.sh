@@ -10,6 +10,7 @@ werror=()
 [ "${CI:-}" = "true" ] && werror=(-DCURVEFOLD_WERROR=ON)  # as scripts/build.sh
 cmake --preset asan "${werror[@]}" >/dev/null
 cmake --build --preset asan -j"${CURVEFOLD_JOBS:-2}"
+scripts/seed-test-costs.sh build-asan tests/costs/asan.txt
 ctest --preset asan -j"${CURVEFOLD_JOBS:-2}"
 cmake --preset tsan "${werror[@]}" >/dev/null
 cmake --build --preset tsan -j"${CURVEFOLD_JOBS:-2}"
