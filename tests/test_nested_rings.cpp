@@ -22,6 +22,7 @@
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "tests/fit_settings_support.hpp"
 #include "tests/sanitizer_support.hpp"
 
 namespace curvefold {
@@ -152,11 +153,7 @@ TEST(NestedRings, ALippedBowlsRimIsReachedByRingsDrawnOutermostFirst) {
   const TriangleMesh target = capOf(height, outer, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.061}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  FitSettings settings;
-  settings.sheetSamples = 800;
-  settings.targetSamples = 800;
-  settings.denseTargetSamples = 8000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
   const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
   const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
   ASSERT_TRUE(axis);
@@ -190,11 +187,7 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  FitSettings settings;
-  settings.sheetSamples = 800;
-  settings.targetSamples = 800;
-  settings.denseTargetSamples = 8000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
   const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
   const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
   ASSERT_TRUE(axis);
@@ -225,11 +218,7 @@ TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  FitSettings settings;
-  settings.sheetSamples = 800;
-  settings.targetSamples = 800;
-  settings.denseTargetSamples = 8000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
   const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
   const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
   ASSERT_TRUE(axis);
@@ -317,11 +306,7 @@ TEST(NestedRings, AStepTheClockCutsStillAnswersTheCoarsestRingsMadeWhole) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 16.0 : 28.0}});
-  FitSettings settings;
-  settings.sheetSamples = 600;
-  settings.targetSamples = 600;
-  settings.denseTargetSamples = 4000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(600, 600, 4000));
   const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
   const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
   ASSERT_TRUE(axis);
@@ -371,11 +356,7 @@ TEST(NestedRings, TheFitsFirstStepFromADiskIsTheRingsWithoutTheSingleFoldsSearch
   // Coarser under the sanitizers: each ring candidate folds the whole sheet dozens of times.
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 8.0 : 12.0}});
-  FitSettings settings;
-  settings.sheetSamples = 400;
-  settings.targetSamples = 600;
-  settings.denseTargetSamples = 4000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(400, 600, 4000));
   ASSERT_TRUE(fitter.nestedRingsFrom(disk));
   FoldSession session(disk);
   FitOptions options;

@@ -21,6 +21,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "tests/fit_settings_support.hpp"
 #include "tests/sanitizer_support.hpp"
 
 namespace curvefold {
@@ -297,11 +298,7 @@ TEST(TubeRings, TheFitsFirstStepNarrowsTheWidestTubeTowardAVase) {
                                         {"height", start.parameters.at("height")},
                                         {"resolution", testing::kSanitized ? 16.0 : 24.0}});
   for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
-  FitSettings settings;
-  settings.sheetSamples = 400;
-  settings.targetSamples = 1500;
-  settings.denseTargetSamples = 4000;
-  const FoldFitter fitter(vase, settings);
+  const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
   ASSERT_TRUE(fitter.revolutionTarget());
   ASSERT_TRUE(tubeAbout(tube, {0.0, 0.0, 1.0}));
   FoldSession session(tube);
@@ -328,11 +325,7 @@ TubeStep tubeRingsStep(const TriangleMesh& target, double radius, double length)
       "cylinder",
       {{"radius", radius}, {"height", length}, {"resolution", testing::kSanitized ? 16.0 : 24.0}});
   for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
-  FitSettings settings;
-  settings.sheetSamples = 400;
-  settings.targetSamples = 1500;
-  settings.denseTargetSamples = 4000;
-  const FoldFitter fitter(target, settings);
+  const FoldFitter fitter(target, testing::sampledSettings(400, 1500, 4000));
   const std::vector<SurfaceSample> targetSamples = sampleSurface(target, 1500, 11);
   const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
   TubeStep step;
@@ -400,11 +393,7 @@ TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
   EXPECT_NEAR(tube->radius, 0.045, 0.002);
 
   const TriangleMesh vase = vaseInsideCone();
-  FitSettings settings;
-  settings.sheetSamples = 400;
-  settings.targetSamples = 1500;
-  settings.denseTargetSamples = 4000;
-  const FoldFitter fitter(vase, settings);
+  const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
   const std::vector<SurfaceSample> targetSamples = sampleSurface(vase, 1500, 11);
   const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
   ASSERT_TRUE(axis);

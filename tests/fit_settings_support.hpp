@@ -1,0 +1,21 @@
+// The fit's settings the ring and profile tests share (test_nested_rings.cpp,
+// test_profile_folds.cpp): the sample counts set, everything else the fit's defaults.
+#pragma once
+
+#include <cstddef>
+
+#include "engine/fit/fold_fit.hpp"
+
+namespace curvefold::testing {
+
+// FitSettings with `sheet` and `target` samples for the search's approximate distance and `dense`
+// target samples for its closest points; fewer than the defaults keep a step quick.
+inline FitSettings sampledSettings(std::size_t sheet, std::size_t target, std::size_t dense) {
+  FitSettings settings;
+  settings.sheetSamples = sheet;
+  settings.targetSamples = target;
+  settings.denseTargetSamples = dense;
+  return settings;
+}
+
+}  // namespace curvefold::testing
