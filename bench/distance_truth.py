@@ -20,21 +20,11 @@ import sys
 
 import numpy as np
 
+import target_folds
+
 
 def read_obj(path):
-    positions, faces = [], []
-    with open(path) as f:
-        for line in f:
-            parts = line.split()
-            if not parts:
-                continue
-            if parts[0] == "v":
-                positions.append([float(x) for x in parts[1:4]])
-            elif parts[0] == "f":
-                ids = [int(p.split("/")[0]) for p in parts[1:]]
-                ids = [i - 1 if i > 0 else len(positions) + i for i in ids]
-                for k in range(1, len(ids) - 1):  # a polygon as a fan
-                    faces.append([ids[0], ids[k], ids[k + 1]])
+    positions, faces = target_folds.read_obj(path)
     return np.array(positions, dtype=float), np.array(faces, dtype=np.int64)
 
 

@@ -29,11 +29,8 @@ import argparse
 import json
 import math
 import os
-import random
 
-from target_folds import fold_if_whole, write_target
-
-BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
+from target_folds import cases, fold_if_whole, unit_vector, write_target
 VARIANTS = ["outer", "centre", "remeshed"]
 
 
@@ -41,15 +38,6 @@ def bounding_box(vertices):
     lo = [min(v[i] for v in vertices) for i in range(3)]
     hi = [max(v[i] for v in vertices) for i in range(3)]
     return lo, hi
-
-
-def uniform_direction(rng):
-    # Normalised Gaussian: uniform on the sphere.
-    while True:
-        v = [rng.gauss(0.0, 1.0) for _ in range(3)]
-        n = math.sqrt(sum(x * x for x in v))
-        if n > 1e-9:
-            return [x / n for x in v]
 
 
 def grab_candidates(vertices, variant):
@@ -76,7 +64,7 @@ def make_one(cf, surface, variant, folds, rng):
         if not candidates:
             return None
         grab = rng.choice(candidates)
-        direction = uniform_direction(rng)
+        direction = unit_vector(rng)
         length = rng.uniform(0.10, 0.35) * diag
         drop = [grab[i] + length * direction[i] for i in range(3)]
         if not fold_if_whole(design, grab, drop):
@@ -129,34 +117,30 @@ def main():
         surfaces = [s for s in surfaces if s in args.surfaces.split(",")]
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
-        for variant in args.variants.split(","):
+        for variant, bucket, (lo, hi), surface, rng in cases(
+                args.seed, args.variants.split(","), args.buckets.split(","), surfaces):
             recipe = "drag-" + variant
-            for bucket in args.buckets.split(","):
-                lo, hi = BUCKETS[bucket]
-                for surface in surfaces:
-                    rng = random.Random(f"{args.seed}/{variant}/{bucket}/{surface}")
-                    made = 0
-                    for _ in range(4 * args.per_surface):
-                        if made >= args.per_surface:
-                            break
-                        folds = rng.randint(lo, hi)
-                        design = make_one(cf, surface, variant, folds, rng)
-                        if design is None:
-                            continue
-                        name = f"{recipe}-{bucket}-{made:02d}-{surface}"
-                        target = os.path.join(args.out, name + ".obj")
-                        if variant == "remeshed":
-                            write_remeshed(design, target, rng)
-                        else:
-                            write_target(design, target)
-                        design.save(os.path.join(args.out, name + ".curvefold.json"))
-                        entry = {"name": name, "recipe": recipe, "bucket": bucket,
-                                 "surface": surface, "parameters": {}, "symmetry": None,
-                                 "folds": folds}
-                        manifest.write(json.dumps(entry) + "\n")
-                        manifest.flush()
-                        print(name, folds, "folds", flush=True)
-                        made += 1
+            made = 0
+            for _ in range(4 * args.per_surface):
+                if made >= args.per_surface:
+                    break
+                folds = rng.randint(lo, hi)
+                design = make_one(cf, surface, variant, folds, rng)
+                if design is None:
+                    continue
+                name = f"{recipe}-{bucket}-{made:02d}-{surface}"
+                target = os.path.join(args.out, name + ".obj")
+                if variant == "remeshed":
+                    write_remeshed(design, target, rng)
+                else:
+                    write_target(design, target)
+                design.save(os.path.join(args.out, name + ".curvefold.json"))
+                entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
+                         "parameters": {}, "symmetry": None, "folds": folds}
+                manifest.write(json.dumps(entry) + "\n")
+                manifest.flush()
+                print(name, folds, "folds", flush=True)
+                made += 1
 
 
 if __name__ == "__main__":

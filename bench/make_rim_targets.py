@@ -27,47 +27,16 @@ import argparse
 import json
 import math
 import os
-import random
 import shutil
 import subprocess
 
-BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
+from target_folds import boundary_vertices, cases, diagonal, read_obj, strip_vt, unit_vector
+
 RECIPES = ["rim-short", "rim-tuck"]
 
 
 def run(cmd):
     return subprocess.run(cmd, capture_output=True, text=True)
-
-
-def read_obj(path):
-    vertices, faces = [], []
-    with open(path) as f:
-        for line in f:
-            parts = line.split()
-            if not parts:
-                continue
-            if parts[0] == "v":
-                vertices.append([float(x) for x in parts[1:4]])
-            elif parts[0] == "f":
-                faces.append([int(p.split("/")[0]) - 1 for p in parts[1:4]])
-    return vertices, faces
-
-
-def rim(faces):
-    count = {}
-    for t in faces:
-        for i in range(3):
-            key = tuple(sorted((t[i], t[(i + 1) % 3])))
-            count[key] = count.get(key, 0) + 1
-    return sorted({v for key, c in count.items() if c == 1 for v in key})
-
-
-def direction(rng):
-    while True:
-        v = [rng.gauss(0.0, 1.0) for _ in range(3)]
-        n = math.sqrt(sum(x * x for x in v))
-        if n > 1e-9:
-            return [x / n for x in v]
 
 
 def export_obj(cf, design, path):
@@ -76,14 +45,7 @@ def export_obj(cf, design, path):
     got = run([cf, "export", design, "--obj", full])
     if got.returncode != 0:
         raise RuntimeError(got.stderr)
-    with open(full) as f, open(path, "w") as out:
-        for line in f:
-            if line.startswith("vt "):
-                continue
-            if line.startswith("f "):
-                line = "f " + " ".join(p.split("/")[0] for p in line.split()[1:]) + "\n"
-            out.write(line)
-    os.remove(full)
+    strip_vt(full, path)
 
 
 def fmt(p):
@@ -98,24 +60,22 @@ def make_one(cf, work, surface, recipe, folds, rng):
         return None
     export_obj(cf, design, obj)
     vertices, faces = read_obj(obj)
-    lo = [min(v[i] for v in vertices) for i in range(3)]
-    hi = [max(v[i] for v in vertices) for i in range(3)]
-    diag = math.dist(lo, hi)
+    diag = diagonal(vertices)
     made, tries = 0, 0
     while made < folds and tries < 30 * folds:
         tries += 1
-        edge = rim(faces)
+        edge = boundary_vertices(faces)
         if not edge:
             return None
         grab = vertices[rng.choice(edge)]
         if recipe == "rim-short":
-            d = direction(rng)
+            d = unit_vector(rng)
             length = rng.uniform(0.03, 0.10) * diag
             drop = [grab[i] + length * d[i] for i in range(3)]
         else:
             centre = [sum(v[i] for v in vertices) / len(vertices) for i in range(3)]
             t = rng.uniform(0.2, 0.6)
-            d = direction(rng)
+            d = unit_vector(rng)
             lift = rng.uniform(0.0, 0.10) * diag
             drop = [grab[i] + t * (centre[i] - grab[i]) + lift * d[i] for i in range(3)]
         if math.dist(grab, drop) < 0.02 * diag:
@@ -156,29 +116,25 @@ def main():
     work = os.path.join(args.out, ".work")
     os.makedirs(work, exist_ok=True)
     with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
-        for recipe in args.recipes.split(","):
-            for bucket in args.buckets.split(","):
-                lo, hi = BUCKETS[bucket]
-                for surface in surfaces:
-                    rng = random.Random(f"{args.seed}/{recipe}/{bucket}/{surface}")
-                    made = 0
-                    for _ in range(3 * args.per_surface):
-                        if made >= args.per_surface:
-                            break
-                        folds = rng.randint(lo, hi)
-                        design = make_one(cf, work, surface, recipe, folds, rng)
-                        if design is None:
-                            continue
-                        name = f"{recipe}-{bucket}-{made:02d}-{surface}"
-                        export_obj(cf, design, os.path.join(args.out, name + ".obj"))
-                        shutil.copyfile(design, os.path.join(args.out, name + ".curvefold.json"))
-                        entry = {"name": name, "recipe": recipe, "bucket": bucket,
-                                 "surface": surface, "parameters": {}, "symmetry": None,
-                                 "folds": folds}
-                        manifest.write(json.dumps(entry) + "\n")
-                        manifest.flush()
-                        print(name, folds, "folds", flush=True)
-                        made += 1
+        for recipe, bucket, (lo, hi), surface, rng in cases(
+                args.seed, args.recipes.split(","), args.buckets.split(","), surfaces):
+            made = 0
+            for _ in range(3 * args.per_surface):
+                if made >= args.per_surface:
+                    break
+                folds = rng.randint(lo, hi)
+                design = make_one(cf, work, surface, recipe, folds, rng)
+                if design is None:
+                    continue
+                name = f"{recipe}-{bucket}-{made:02d}-{surface}"
+                export_obj(cf, design, os.path.join(args.out, name + ".obj"))
+                shutil.copyfile(design, os.path.join(args.out, name + ".curvefold.json"))
+                entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
+                         "parameters": {}, "symmetry": None, "folds": folds}
+                manifest.write(json.dumps(entry) + "\n")
+                manifest.flush()
+                print(name, folds, "folds", flush=True)
+                made += 1
     shutil.rmtree(work)
 
 

@@ -22,7 +22,7 @@ import math
 import os
 import random
 
-from target_folds import fold_if_whole, write_target
+from target_folds import BUCKETS, diagonal, fold_if_whole, write_target
 
 SYMMETRIES = {
     "sym-mirror": {
@@ -38,13 +38,6 @@ SYMMETRIES = {
         "cone": ["rotational:2:y", "rotational:4:y"],
     },
 }
-BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
-
-
-def diagonal(vertices):
-    lo = [min(v[i] for v in vertices) for i in range(3)]
-    hi = [max(v[i] for v in vertices) for i in range(3)]
-    return math.dist(lo, hi)
 
 
 def unit_vector(rng):

@@ -49,40 +49,10 @@ import subprocess
 import sys
 import time
 
-from target_folds import fold_if_whole, write_target
-
-BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
+from target_folds import (BUCKETS, boundary_vertices, diagonal, fold_if_whole, unit_vector,
+                          write_target)
 RECIPES = ["vertex-any", "params", "onto-sheet", "symmetric", "outer-third", "cuts", "short-long",
            "bases"]
-
-
-def diagonal(vertices):
-    lo = [min(v[i] for v in vertices) for i in range(3)]
-    hi = [max(v[i] for v in vertices) for i in range(3)]
-    return math.dist(lo, hi)
-
-
-def unit_vector(rng):
-    while True:
-        v = [rng.gauss(0.0, 1.0) for _ in range(3)]
-        n = math.sqrt(sum(x * x for x in v))
-        if n > 1e-9:
-            return [x / n for x in v]
-
-
-def boundary_vertices(triangles):
-    count = {}
-    for t in triangles:
-        for i in range(3):
-            a, b = int(t[i]), int(t[(i + 1) % 3])
-            key = (min(a, b), max(a, b))
-            count[key] = count.get(key, 0) + 1
-    out = set()
-    for (a, b), c in count.items():
-        if c == 1:
-            out.add(a)
-            out.add(b)
-    return sorted(out)
 
 
 def varied_parameters(cf, surface, rng):
