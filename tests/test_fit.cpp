@@ -366,9 +366,11 @@ TEST(FoldFit, TheStartsMeasureKeepsWithinTheTime) {
   ASSERT_FALSE(result.steps.empty());
   EXPECT_GT(result.steps.front().hausdorff, 1.0);  // measured, and far
   EXPECT_LT(result.steps.front().hausdorff, 2.0);
-  // 5% of --time and a little more, on each of the threads; the sanitizers slow the probe too.
+  // 5% of --time and a little more, on each of the threads; the sanitizers slow the probe and
+  // the last step too (2 s each, as the wall-clock bound had: the measure with every sample
+  // spends tens of seconds there).
   const double threads = std::max(1u, std::thread::hardware_concurrency());
-  EXPECT_LT(cpu, threads * (testing::kSanitized ? 1.0 : 0.05 * options.seconds + 0.1))
+  EXPECT_LT(cpu, threads * (testing::kSanitized ? 2.0 : 0.05 * options.seconds + 0.1))
       << cpu << " s of CPU after the limit; " << seconds << " s in all";
 }
 
