@@ -786,6 +786,31 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
 }
 
+// Issue 38's recipe (bench/make_outer_third_targets.sh): a fold that turns most of the half
+// cylinder about a corner leaves a crease of 1.7% of the diagonal, under the 3% a crease plane
+// needs, and one whose plane misses the disk moves it whole, leaving none. Both read as smooth,
+// and a sheet sized (radius 0.161, not 0.06) or placed on the target started nearer than the
+// one they were folded from, which the unfolding cannot read back onto: `fit` ended 88.4% away.
+TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {
+  FoldRecord fold;
+  fold.seed = {-0.0021913213800000032, -0.07875};
+  fold.plane = {{0.02885831870827024, -0.0908670455, 0.07829668305110718},
+                {0.8162094215265654, -0.3185237145727927, 0.48202160062181804}};
+  fold.grabbed = {-0.002191321383459527, -0.07875, 0.05995997090221436};
+  fold.target = {0.0599079588, -0.102984091, 0.0966333952};
+  FoldSession corner(makeSurface("half_cylinder"));
+  corner.applyRecords({fold});
+  const StartChoice turned = chooseStart(meshOf(corner.fixed()), "half_cylinder");
+  EXPECT_TRUE(turned.parameters.empty()) << turned.parameters.size() << " " << turned.chamfer;
+  EXPECT_FALSE(turned.placed);
+  TriangleMesh moved = meshOf(makeSurface("disk"));
+  for (glm::dvec3& p : moved.positions)
+    p = glm::dvec3(0.6 * p.x - 0.8 * p.z + 0.03, p.y - 0.02, 0.8 * p.x + 0.6 * p.z + 0.05);
+  const StartChoice whole = chooseStart(moved, "disk");
+  EXPECT_TRUE(whole.parameters.empty()) << whole.parameters.size() << " " << whole.chamfer;
+  EXPECT_FALSE(whole.placed) << whole.placement;
+}
+
 }  // namespace
 }  // namespace curvefold
 

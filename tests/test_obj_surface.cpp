@@ -247,6 +247,20 @@ TEST(ObjSurface, IndexFormsPolygonsAndMixedFaces) {
   EXPECT_THROW(parse("v 0 0\nf 1 1 1\n"), ObjError);
 }
 
+// Issue 38's judge exports a target with `export --obj` and deletes its vt lines: the faces keep
+// their `v/vt` corners, whose vt indices point at nothing. The target is read by its positions
+// (it was refused as "texture coordinate index out of range").
+TEST(ObjSurface, FacesWhoseVtLinesWereDeletedAreReadByTheirPositions) {
+  const Sheet withoutVt =
+      parse("v 0 0 0\nv 0.1 0 0\nv 0.1 0.1 0.05\nv 0 0.1 0.05\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+  const Sheet plain = parse("v 0 0 0\nv 0.1 0 0\nv 0.1 0.1 0.05\nv 0 0.1 0.05\nf 1 2 3\nf 1 3 4\n");
+  EXPECT_EQ(withoutVt.triangles, plain.triangles);
+  EXPECT_EQ(withoutVt.positions, plain.positions);
+  EXPECT_EQ(withoutVt.development, plain.development);
+  // A vt index past the vt lines a file does hold is still refused.
+  EXPECT_THROW(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/3\n"), ObjError);
+}
+
 TEST(Unfold, ConeUnfoldsCongruently) {
   const Sheet cone = makeSurface("cone", {{"resolution", 24}});
   Sheet unfolded = cone;

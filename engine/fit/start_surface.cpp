@@ -40,6 +40,9 @@ constexpr double kCurvedVertexShare = 0.25;
 constexpr double kCreaseTolerance = 1e-4;
 // A placed sheet replaces one in the catalogue's frame when this much nearer (Chamfer).
 constexpr double kPlacedGain = 0.95;
+// A developable target whose area is a kind's at its defaults within this share was folded from
+// it: every fold keeps the area (to rounding), a shape made from a formula seldom has it.
+constexpr double kSameArea = 1e-5;
 // How much a placed sheet's Hausdorff distance counts beside its Chamfer distance.
 constexpr double kPlacedHausdorffWeight = 0.2;
 
@@ -235,15 +238,35 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   };
   // A smooth target's grid bends are no creases, though a flat sheet's threshold reads them so.
   const bool smooth = isSmoothOrScanned(target);
+  // Folds that left short creases only (a corner turned: under the 3% a crease plane needs) or
+  // none (their planes missed the sheet: the sheet moved whole) read as smooth, and a sheet sized
+  // or placed on the target then starts nearer than the one it was folded from, which the
+  // unfolding cannot read back onto. Its area and its flatness name that sheet.
+  const double area = surfaceArea(target);
+  const bool developable = !isCurved(target);
+  std::map<std::string, bool> foldedFrom;  // per kind: the target has its defaults' area
+  auto foldedFromKind = [&](const std::string& surface) {
+    const auto found = foldedFrom.find(surface);
+    if (found != foldedFrom.end()) return found->second;
+    bool result = false;
+    try {
+      result = developable &&
+               std::abs(surfaceArea(meshOf(makeSurface(surface))) - area) <= kSameArea * area;
+    } catch (const SurfaceError&) {
+    }
+    return foldedFrom[surface] = result;
+  };
+  bool anyFoldedFrom = false, bestFrom = false;
   bool cutShort = false;
   // Once one sheet is measured, the rest only while the deadline allows.
   auto outOfTime = [&] { return any && (cutShort = cutShort || deadline.passed()); };
   for (StartChoice& candidate : candidatesFor(target, kind)) {
     if (outOfTime()) break;
     // A folded design was folded from the sheet as the catalogue makes it.
-    if (!smooth && creasedKind(candidate.surface)) {
+    if ((!smooth && creasedKind(candidate.surface)) || foldedFromKind(candidate.surface)) {
       candidate.parameters.clear();
       candidate.creased = true;
+      anyFoldedFrom = anyFoldedFrom || foldedFromKind(candidate.surface);
     }
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);
@@ -257,7 +280,12 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
       lastError = e.what();
       continue;
     }
-    if (!any || candidate.chamfer < best.chamfer) best = candidate;
+    // The kind it was folded from first, however far its defaults lie.
+    const bool from = foldedFromKind(candidate.surface);
+    if (!any || (from && !bestFrom) || (from == bestFrom && candidate.chamfer < best.chamfer)) {
+      best = candidate;
+      bestFrom = from;
+    }
     any = true;
   }
   // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
@@ -265,7 +293,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest;
   double nearestChamfer = 0.0, nearestScore = 0.0;
-  for (PlacedStart& placed : smooth && !outOfTime()
+  for (PlacedStart& placed : smooth && !anyFoldedFrom && !outOfTime()
                                  ? placedStarts(samples, surfaceArea(target), kind)
                                  : std::vector<PlacedStart>{}) {
     if (outOfTime()) break;
@@ -294,7 +322,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   }
   // A tube toward a smooth target of revolution is as wide as its belly: the rings that fold
   // it toward the target only narrow it (ring_folds.hpp).
-  if (kind == "cylinder" && smooth && !outOfTime()) {
+  if (kind == "cylinder" && smooth && !anyFoldedFrom && !outOfTime()) {
     const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
     std::optional<PlacedStart> tube =
         axis ? widestCylinder(samples, axis->point, axis->direction) : std::nullopt;

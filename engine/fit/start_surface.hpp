@@ -13,7 +13,10 @@
 // start. A target with
 // creases (a plane of its sharp edges, above the kind's own bends, holds 3% of its diagonal) was
 // folded from a sheet as the catalogue makes it: that kind keeps its defaults, which the
-// unfolding reads back onto.
+// unfolding reads back onto. So was a target that is not curved (isCurved) with a kind's area at
+// its defaults (within 1e-5: folds keep the area), though its creases are short (a corner turned)
+// or none (folds whose planes missed the sheet moved it whole) and it reads as smooth: that kind
+// at its defaults starts, before any nearer sheet, and no sheet is placed on it.
 //
 // The symmetry: of the rotations the start has (symmetryChoices), the highest order whose turn
 // maps the target onto itself, within 1% of its diagonal on average and 3% at most (measured at

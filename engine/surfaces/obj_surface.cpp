@@ -146,11 +146,13 @@ class Parser {
   }
 
   Corner corner(std::string_view token, std::size_t vCount, std::size_t vtCount) const {
-    // v, v/vt, v//vn or v/vt/vn; normals are ignored.
+    // v, v/vt, v//vn or v/vt/vn; normals are ignored. With no vt line before it, a face's vt
+    // indices are dropped: a file whose vt lines were deleted (its faces still `v/vt`) is read by
+    // its positions, as one written without them.
     const std::size_t slash = token.find('/');
     Corner c;
     c.v = index(token.substr(0, slash), vCount, "vertex");
-    if (slash != std::string_view::npos) {
+    if (slash != std::string_view::npos && vtCount > 0) {
       std::string_view rest = token.substr(slash + 1);
       const std::string_view vt = rest.substr(0, rest.find('/'));
       if (!vt.empty()) c.vt = index(vt, vtCount, "texture coordinate");
