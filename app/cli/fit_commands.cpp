@@ -16,9 +16,12 @@
 #include "app/cli/interrupt_guard.hpp"
 #include "app/session/document.hpp"
 #include "engine/fit/farthest_points.hpp"
+#include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/placed_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -87,6 +90,34 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
+    // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest
+    // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
+    // nearer, and gets the paper its pleats fold away given back.
+    std::optional<FirstStepStart> firstStep;
+    if (fitter.smoothTarget() && !fitter.revolutionTarget() && !symmetric &&
+        (from.surface.empty() || from.surface == "square" || from.surface == "rectangle")) {
+      std::vector<PlacedStart> candidates{
+          {start.surface, start.parameters, start.placement,
+           start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
+      if (from.surface.empty() && start.surface != "square" && start.surface != "rectangle")
+        for (PlacedStart& flat : footprintStarts(sampleSurface(target, 4000, 3)))
+          if (flat.surface == "square") {
+            candidates.push_back(std::move(flat));
+            break;
+          }
+      firstStep = startByFirstStep(candidates, fitter, deadline, from.surface == "square");
+      if (firstStep && (firstStep->grown ||
+                        firstStep->start.sheet.positions != candidates.front().sheet.positions)) {
+        start.surface = firstStep->start.surface;
+        start.parameters = firstStep->start.parameters;
+        start.placement = firstStep->start.placement;
+        start.placed = firstStep->start.sheet;
+        start.creased = false;
+        start.symmetryDefaults = false;
+      } else {
+        firstStep.reset();
+      }
+    }
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -108,6 +139,12 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
                       ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
+    if (firstStep)
+      std::cout << "start chosen by its first step: "
+                << (firstStep->grown ? "the paper that step folds away given back; " : "")
+                << "after it "
+                << distanceText(firstStep->hausdorff, firstStep->chamfer, fitter.targetDiagonal())
+                << std::endl;
     if (start.cutShort)
       std::cout << "the time limit cut the choice of the start short: the nearest of the sheets "
                    "measured (a longer --time, or --evaluations alone, measures them all)"
