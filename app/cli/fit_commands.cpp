@@ -18,10 +18,8 @@
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/placed_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
-#include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -93,31 +91,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest
     // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
     // nearer, and gets the paper its pleats fold away given back.
-    std::optional<FirstStepStart> firstStep;
-    if (fitter.smoothTarget() && !fitter.revolutionTarget() && !symmetric &&
-        (from.surface.empty() || from.surface == "square" || from.surface == "rectangle")) {
-      std::vector<PlacedStart> candidates{
-          {start.surface, start.parameters, start.placement,
-           start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
-      if (from.surface.empty() && start.surface != "square" && start.surface != "rectangle")
-        for (PlacedStart& flat : footprintStarts(sampleSurface(target, 4000, 3)))
-          if (flat.surface == "square") {
-            candidates.push_back(std::move(flat));
-            break;
-          }
-      firstStep = startByFirstStep(candidates, fitter, deadline, from.surface == "square");
-      if (firstStep && (firstStep->grown ||
-                        firstStep->start.sheet.positions != candidates.front().sheet.positions)) {
-        start.surface = firstStep->start.surface;
-        start.parameters = firstStep->start.parameters;
-        start.placement = firstStep->start.placement;
-        start.placed = firstStep->start.sheet;
-        start.creased = false;
-        start.symmetryDefaults = false;
-      } else {
-        firstStep.reset();
-      }
-    }
+    const std::optional<FirstStepStart> firstStep =
+        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else

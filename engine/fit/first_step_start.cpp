@@ -7,6 +7,7 @@
 
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/fold_session.hpp"
 
 namespace curvefold {
@@ -137,6 +138,32 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
   }
   if (best) best->cutShort = cutShort;
   return best;
+}
+
+std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                const std::string& kind, const Deadline& deadline) {
+  if (!fitter.smoothTarget() || fitter.revolutionTarget() ||
+      !(kind.empty() || kind == "square" || kind == "rectangle"))
+    return std::nullopt;
+  std::vector<PlacedStart> candidates{
+      {start.surface, start.parameters, start.placement,
+       start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
+  if (kind.empty() && !flatNormal(candidates.front().sheet))
+    for (PlacedStart& flat : footprintStarts(sampleSurface(fitter.target(), kSamples, 3)))
+      candidates.push_back(std::move(flat));
+  std::optional<FirstStepStart> chosen =
+      startByFirstStep(candidates, fitter, deadline, kind == "square");
+  if (!chosen ||
+      (!chosen->grown && chosen->start.sheet.positions == candidates.front().sheet.positions))
+    return std::nullopt;
+  start.surface = chosen->start.surface;
+  start.parameters = chosen->start.parameters;
+  start.placement = chosen->start.placement;
+  start.placed = chosen->start.sheet;
+  start.chamfer = chosen->startChamfer;
+  start.creased = false;
+  start.symmetryDefaults = false;
+  return chosen;
 }
 
 }  // namespace curvefold

@@ -29,6 +29,7 @@
 #include "engine/fit/deadline.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
+#include "engine/fit/start_surface.hpp"
 
 namespace curvefold {
 
@@ -53,5 +54,14 @@ struct FirstStepStart {
 std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
                                                const FoldFitter& fitter, const Deadline& deadline,
                                                bool square = false);
+
+// chooseStart's `start` toward a smooth target with no axis (fitter.smoothTarget(), not
+// revolutionTarget()), `kind` "", "square" or "rectangle": the start itself and, where it is not
+// flat and no kind was named, the square cut to the target's footprint (footprintStarts), each
+// with its paper given back, compared by their first steps; `start` becomes the winner (placed)
+// when that is not `start` itself. None (and `start` untouched) where the rule does not apply or
+// `start` won.
+std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                const std::string& kind, const Deadline& deadline);
 
 }  // namespace curvefold
