@@ -16,8 +16,8 @@
 // Inputs: candidate starts (placed or sized sheets; PlacedStart), the fitter of the target, a
 // deadline (the start's share of --time; the candidates after the first are tried only while it
 // allows). Output: each candidate's first step (suggestPleats, the best one) measured exactly
-// (surface_distance.hpp, kChoiceSamples), scored as the placed starts are (Chamfer + 0.2
-// Hausdorff), and the best. Known limits: the growth is measured once (not iterated); a grown
+// (surface_distance.hpp, kChoiceSamples), scored by Chamfer + 0.5 Hausdorff (the goal
+// bounds both), and the best. Known limits: the growth is measured once (not iterated); a grown
 // sheet's corners may stand past a round target's rim; the first step of a curved sheet is its
 // pleats alone here (the fit's search of single folds beside them is left out, for the time).
 #pragma once
@@ -57,10 +57,10 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 
 // chooseStart's `start` toward a smooth target with no axis (fitter.smoothTarget(), not
 // revolutionTarget()), `kind` "", "square" or "rectangle": the start itself and, where it is not
-// flat and no kind was named, the square cut to the target's footprint (footprintStarts), each
-// with its paper given back, compared by their first steps; `start` becomes the winner (placed)
-// when that is not `start` itself. None (and `start` untouched) where the rule does not apply or
-// `start` won.
+// flat and no kind was named, the squares and the rectangle cut to the target's footprint
+// (footprintStarts), each with its paper given back, compared by their first steps; `start` becomes
+// the winner (placed) when that is not `start` itself. None (and `start` untouched) where the rule
+// does not apply or `start` won.
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                 const std::string& kind, const Deadline& deadline);
 
