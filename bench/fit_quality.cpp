@@ -36,6 +36,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -320,7 +321,8 @@ int run(int argc, char** argv) {
         writeObj(shape.mesh,
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
-      const StartChoice start = chooseStart(shape.mesh, shape.from.surface);
+      StartChoice start = chooseStart(shape.mesh, shape.from.surface);
+      reviseByFirstStep(start, fitter, shape.from.surface, {});
       const Sheet initial =
           start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
       const std::string symmetry =

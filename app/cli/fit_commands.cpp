@@ -16,6 +16,7 @@
 #include "app/cli/interrupt_guard.hpp"
 #include "app/session/document.hpp"
 #include "engine/fit/farthest_points.hpp"
+#include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -87,6 +88,11 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
+    // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest
+    // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
+    // nearer, and gets the paper its pleats fold away given back.
+    const std::optional<FirstStepStart> firstStep =
+        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -108,6 +114,12 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
                       ? std::string(" (its defaults: nearer the target than one sized to it)")
                       : std::string(" (sized to the target)"))
               << std::endl;
+    if (firstStep)
+      std::cout << "start chosen by its first step: "
+                << (firstStep->grown ? "the paper that step folds away given back; " : "")
+                << "after it "
+                << distanceText(firstStep->hausdorff, firstStep->chamfer, fitter.targetDiagonal())
+                << std::endl;
     if (start.cutShort)
       std::cout << "the time limit cut the choice of the start short: the nearest of the sheets "
                    "measured (a longer --time, or --evaluations alone, measures them all)"

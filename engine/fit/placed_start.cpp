@@ -492,6 +492,12 @@ Sheet sweptParabola(double curvature, double slope, double from, double to, doub
   return sheet;
 }
 
+std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples) {
+  std::vector<PlacedStart> out;
+  if (samples.size() >= 10) footprintIn(samples, principalOf(samples), "", out);
+  return out;
+}
+
 std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
                                       const std::string& kind) {
   std::vector<PlacedStart> out;

@@ -53,6 +53,10 @@ struct PlacedStart {
 std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
                                       const std::string& kind = "");
 
+// The flat sheets cut to the target's footprint alone (the square of its box, the rectangle; see
+// above): a flat start for the cross of pleats (pleat_folds.hpp) where a curved one starts nearer.
+std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples);
+
 // The cylinder of the samples' widest radius about the line through `point` along `direction`
 // (unit), as long as they reach along it: the largest mean distance from the line over 16 bins
 // of height (bins of under 8 samples left out). The start of a vase's joint ring fit

@@ -1,0 +1,172 @@
+#include "engine/fit/first_step_start.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "engine/fit/pleat_folds.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/fold_session.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr std::size_t kSamples = 4000;
+// Chamfer + this times Hausdorff: the goal bounds both, and at the placed starts' 0.2 a pringle's
+// footprint rectangle (first step 1.19 / 12.7 mm) beat its swept parabola (2.07 / 8.46 mm), and
+// its fit ended 11.2% from the target (Hausdorff) where the parabola's ended 7.46%.
+constexpr double kHausdorffWeight = 0.5;
+constexpr double kLeastShortfall = 0.005;
+
+// The unit normal of a flat sheet (none when it is not flat within 1e-6 of its size).
+std::optional<glm::dvec3> flatNormal(const Sheet& sheet) {
+  glm::dvec3 n(0.0), lo(1e300), hi(-1e300);
+  for (const Triangle& t : sheet.triangles)
+    n += glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
+                    sheet.positions[t[2]] - sheet.positions[t[0]]);
+  for (const glm::dvec3& p : sheet.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  if (!(glm::length(n) > 0.0)) return std::nullopt;
+  n = glm::normalize(n);
+  const glm::dvec3 origin = sheet.positions.front();
+  for (const glm::dvec3& p : sheet.positions)
+    if (std::abs(glm::dot(p - origin, n)) > 1e-6 * glm::length(hi - lo)) return std::nullopt;
+  return n;
+}
+
+double reach(const std::vector<glm::dvec3>& points, const glm::dvec3& centre,
+             const glm::dvec3& direction) {
+  double most = -1e300;
+  for (const glm::dvec3& p : points) most = std::max(most, glm::dot(p - centre, direction));
+  return most;
+}
+
+std::string vectorText(const glm::dvec3& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
+  return text;
+}
+
+}  // namespace
+
+std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
+                                          const TriangleMesh& target, bool square) {
+  const std::optional<glm::dvec3> normal = flatNormal(flat);
+  if (!normal || step.folds.empty() || flat.positions.empty()) return std::nullopt;
+  glm::dvec3 centre(0.0), lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : flat.positions) {
+    centre += p;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  centre /= static_cast<double>(flat.positions.size());
+  const double size = glm::length(hi - lo);
+  // The cross's first line: its first fold bends that line's end, so its plane's normal lies
+  // along the line (tilted out of the sheet by half the bend).
+  glm::dvec3 line = step.folds.front().plane.normal;
+  line -= glm::dot(line, *normal) * *normal;
+  if (!(glm::length(line) > 1e-6)) return std::nullopt;
+  line = glm::normalize(line);
+  const glm::dvec3 across = glm::cross(*normal, line);
+  // Each end's reach: the flat sheet's, the sheet's after the step, the target's.
+  const glm::dvec3 ends[4] = {line, -line, across, -across};
+  double grown[4];
+  bool any = false;
+  for (int i = 0; i < 4; ++i) {
+    const double shortfall = std::max(0.0, reach(target.positions, centre, ends[i]) -
+                                               reach(step.sheet.positions, centre, ends[i]));
+    any = any || shortfall > kLeastShortfall * size;
+    grown[i] = reach(flat.positions, centre, ends[i]) + shortfall;
+  }
+  if (!any) return std::nullopt;
+  double width = grown[0] + grown[1], height = grown[2] + grown[3];
+  const glm::dvec3 middle =
+      centre + 0.5 * (grown[0] - grown[1]) * line + 0.5 * (grown[2] - grown[3]) * across;
+  if (square) width = height = std::max(width, height);
+  PlacedStart out;
+  out.surface = square ? "square" : "rectangle";
+  out.parameters = square ? SurfaceParameters{{"size", width}}
+                          : SurfaceParameters{{"width", width}, {"height", height}};
+  out.placement =
+      "on the target's footprint with the paper its first step folds away given back, "
+      "centred at " +
+      vectorText(middle) + " normal " + vectorText(*normal);
+  try {
+    out.sheet = makeSurface(out.surface, out.parameters);
+  } catch (const SurfaceError&) {
+    return std::nullopt;
+  }
+  for (glm::dvec3& p : out.sheet.positions) p = middle + p.x * line + p.y * across + p.z * *normal;
+  return out;
+}
+
+std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
+                                               const FoldFitter& fitter, const Deadline& deadline,
+                                               bool square) {
+  std::optional<FirstStepStart> best;
+  double bestScore = 0.0;
+  bool cutShort = false;
+  // The first step of `start` measured; kept when it lands nearest. Returns the step.
+  auto tryStart = [&](const PlacedStart& start, bool grown) {
+    FoldSession session(start.sheet);
+    std::vector<FoldSuggestion> steps = suggestPleats(session, fitter, 1, deadline);
+    const Sheet& landed = steps.empty() ? start.sheet : steps.front().sheet;
+    const SurfaceDistance distance = surfaceDistance(meshOf(landed), fitter.target(), kSamples);
+    const double score = distance.chamfer + kHausdorffWeight * distance.hausdorff;
+    if (!best || score < bestScore) {
+      bestScore = score;
+      best = FirstStepStart{start,
+                            distance.chamfer,
+                            distance.hausdorff,
+                            surfaceDistance(meshOf(start.sheet), fitter.target(), kSamples).chamfer,
+                            grown,
+                            false};
+    }
+    return steps;
+  };
+  for (const PlacedStart& candidate : candidates) {
+    if (best && deadline.passed()) {
+      cutShort = true;
+      break;
+    }
+    const std::vector<FoldSuggestion> steps = tryStart(candidate, false);
+    if (steps.empty() || deadline.passed()) continue;
+    if (const std::optional<PlacedStart> grown =
+            paperGivenBack(candidate.sheet, steps.front(), fitter.target(), square))
+      tryStart(*grown, true);
+  }
+  if (best) best->cutShort = cutShort;
+  return best;
+}
+
+std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                const std::string& kind, const Deadline& deadline) {
+  if (!fitter.smoothTarget() || fitter.revolutionTarget() ||
+      !(kind.empty() || kind == "square" || kind == "rectangle"))
+    return std::nullopt;
+  std::vector<PlacedStart> candidates{
+      {start.surface, start.parameters, start.placement,
+       start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
+  if (kind.empty() && !flatNormal(candidates.front().sheet))
+    for (PlacedStart& flat : footprintStarts(sampleSurface(fitter.target(), kSamples, 3)))
+      candidates.push_back(std::move(flat));
+  std::optional<FirstStepStart> chosen =
+      startByFirstStep(candidates, fitter, deadline, kind == "square");
+  if (!chosen ||
+      (!chosen->grown && chosen->start.sheet.positions == candidates.front().sheet.positions))
+    return std::nullopt;
+  start.surface = chosen->start.surface;
+  start.parameters = chosen->start.parameters;
+  start.placement = chosen->start.placement;
+  start.placed = chosen->start.sheet;
+  start.chamfer = chosen->startChamfer;
+  start.creased = false;
+  start.symmetryDefaults = false;
+  return chosen;
+}
+
+}  // namespace curvefold

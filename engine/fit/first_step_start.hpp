@@ -1,0 +1,67 @@
+// The start chosen by where its first step lands (issue 38, 2), toward a smooth target with no
+// axis of revolution (a saddle, a chip): a sheet that starts nearer is not always the one that
+// folds nearer. From a flat sheet the first step is a cross (pleat_folds.hpp: both ends of one
+// line bent, both ends of the line across pleated), which takes the example saddle from 3.62% to
+// 0.835% Chamfer, where the swept parabola, nearer at the start (2.71%), ends its fit at 1.81%.
+//
+// Paper given back: the cross's pleats fold paper away (twice each pleat's width, widened where
+// the bent sheet rises along the hinge) and its bends shorten their ends' reach across the sheet
+// (a turned end's projection), so a flat sheet cut to the target's footprint ends short of it
+// (the example saddle's pleated ends at x = +-0.080 of the target's +-0.1: its Hausdorff point).
+// paperGivenBack measures, after the first cross, how far each of the four ends falls short of
+// the target's reach along that end's direction (in the sheet's plane, from its centre) and grows
+// the sheet by as much there: a rectangle along the cross's first line (a square of its larger
+// side when the kind is fixed to a square), whose own first cross then lands at the target's ends.
+//
+// Inputs: candidate starts (placed or sized sheets; PlacedStart), the fitter of the target, a
+// deadline (the start's share of --time; the candidates after the first are tried only while it
+// allows). Output: each candidate's first step (suggestPleats, the best one) measured exactly
+// (surface_distance.hpp, kChoiceSamples), scored by Chamfer + 0.5 Hausdorff (the goal
+// bounds both), and the best. Known limits: the growth is measured once (not iterated); a grown
+// sheet's corners may stand past a round target's rim; the first step of a curved sheet is its
+// pleats alone here (the fit's search of single folds beside them is left out, for the time).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/fit/deadline.hpp"
+#include "engine/fit/fold_fit.hpp"
+#include "engine/fit/placed_start.hpp"
+#include "engine/fit/start_surface.hpp"
+
+namespace curvefold {
+
+// The flat sheet `flat` grown where its first step `step` (a cross from it) ended short of
+// `target` (see above): a rectangle along the cross's first line, or with `square` a square of
+// its larger side. None where no end fell short by over 0.5% of the sheet's size, or `flat` is
+// not flat.
+std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
+                                          const TriangleMesh& target, bool square);
+
+struct FirstStepStart {
+  PlacedStart start;
+  double chamfer = 0.0, hausdorff = 0.0;  // after its first step, metres
+  double startChamfer = 0.0;              // before it
+  bool grown = false;                     // paperGivenBack's sheet won
+  bool cutShort = false;                  // the deadline left candidates untried
+};
+
+// Of `candidates` (and, for each flat one whose first step is a fold, its sheet with the paper
+// given back; `square`: kept a square), the one whose first step lands nearest. None when
+// `candidates` is empty.
+std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
+                                               const FoldFitter& fitter, const Deadline& deadline,
+                                               bool square = false);
+
+// chooseStart's `start` toward a smooth target with no axis (fitter.smoothTarget(), not
+// revolutionTarget()), `kind` "", "square" or "rectangle": the start itself and, where it is not
+// flat and no kind was named, the squares and the rectangle cut to the target's footprint
+// (footprintStarts), each with its paper given back, compared by their first steps; `start` becomes
+// the winner (placed) when that is not `start` itself. None (and `start` untouched) where the rule
+// does not apply or `start` won.
+std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                const std::string& kind, const Deadline& deadline);
+
+}  // namespace curvefold
