@@ -145,7 +145,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                 const std::string& kind, const Deadline& deadline) {
-  if (!fitter.smoothTarget() || fitter.revolutionTarget() ||
+  // A creased start (folded from that kind at its defaults, start_surface.hpp) is read back by
+  // the unfolding onto that very sheet: another sheet would lose the reading.
+  if (start.creased || !fitter.smoothTarget() || fitter.revolutionTarget() ||
       !(kind.empty() || kind == "square" || kind == "rectangle"))
     return std::nullopt;
   std::vector<PlacedStart> candidates{

@@ -60,7 +60,7 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 // flat and no kind was named, the squares and the rectangle cut to the target's footprint
 // (footprintStarts), each with its paper given back, compared by their first steps; `start` becomes
 // the winner (placed) when that is not `start` itself. None (and `start` untouched) where the rule
-// does not apply or `start` won.
+// does not apply (a creased start: the target was folded from it) or `start` won.
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                 const std::string& kind, const Deadline& deadline);
 
