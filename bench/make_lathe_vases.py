@@ -8,8 +8,9 @@ edge runs along the axis), the ring's vertex count following the circumference, 
 jittered by a scan's noise, the axis tilted 35 degrees about (1, 0, 1) and moved off the origin.
 
 Usage: bench/make_lathe_vases.py OUTDIR
-Writes lathe_bulge_tilted.obj: 22 cm tall, a foot of 4 cm radius, a low bulge of 6.5 cm, a neck
-of 3 cm at 80% of the height and a lip flaring to 3.8 cm; noise 0.4 mm (seeded).
+Writes lathe_bulge_tilted.obj: 21 cm tall, a foot of 4.3 cm radius, a low bulge of 6.4 cm (at a
+third of the height), a neck of 3.2 cm (at 88%) and a lip flaring to 3.9 cm; noise 0.4 mm
+(seeded). The spline's radii are its control points smoothed, not the points themselves.
 """
 import math
 import os

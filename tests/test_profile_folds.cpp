@@ -7,9 +7,11 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -20,6 +22,7 @@
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/fit/timed_batches.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -421,6 +424,33 @@ TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
   EXPECT_LT(after.hausdorff, before.hausdorff) << before.hausdorff << " -> " << after.hausdorff;
   validate(rings.front().sheet);
   EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
+}
+
+// The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not
+// finish at the last batch's rate is not started (nor any after it). Two candidates of 60 ms
+// each, then four more of the same cost with 180 ms left at most: refused.
+TEST(TimedBatches, ABatchTheTimeLeftWouldNotFinishIsNotStarted) {
+  const Deadline deadline = Deadline::in(0.3);
+  TimedBatches batches(deadline);
+  std::atomic<int> ran{0};
+  const auto slow = [&](std::size_t) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    ++ran;
+  };
+  tbb::task_arena one(1);  // one at a time, whatever the machine's cores
+  one.execute([&] {
+    EXPECT_TRUE(batches.run(0, 2, 2.0, slow));
+    EXPECT_FALSE(batches.run(2, 6, 4.0, slow));
+    EXPECT_FALSE(batches.run(6, 7, 0.5, slow));  // none after a refusal
+  });
+  EXPECT_EQ(ran.load(), 2);
+  EXPECT_TRUE(batches.cut());
+  // Without a clock every batch runs.
+  TimedBatches never{Deadline{}};
+  EXPECT_TRUE(never.run(0, 1, 1.0, [&](std::size_t) { ++ran; }));
+  EXPECT_TRUE(never.run(1, 3, 100.0, [&](std::size_t) { ++ran; }));
+  EXPECT_EQ(ran.load(), 5);
+  EXPECT_FALSE(never.cut());
 }
 
 // The chains cut short by the clock (issue 38, 2: at --time 60 on a loaded machine a vase kept no

@@ -15,7 +15,8 @@ bool TimedBatches::run(std::size_t from, std::size_t to, double cost,
     cut_ = true;
     return false;
   }
-  if (to > from) tbb::parallel_for(from, to, evaluate);
+  if (to <= from) return true;  // nothing to time: the last batch's rate stands
+  tbb::parallel_for(from, to, evaluate);
   secondsPerUnit_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count() /
                     std::max(1.0, cost);
   ranOne_ = true;
