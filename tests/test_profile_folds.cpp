@@ -1,13 +1,17 @@
 // Rings of folds toward surfaces of revolution (issue 38, 2; engine/fit/profile_folds.hpp).
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -18,6 +22,7 @@
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/fit/timed_batches.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -408,6 +413,87 @@ TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
   EXPECT_LT(after.hausdorff, before.hausdorff) << before.hausdorff << " -> " << after.hausdorff;
   validate(rings.front().sheet);
   EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
+}
+
+// The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not
+// finish at the last batch's rate is not started (nor any after it). Two candidates of 60 ms
+// each, then four more of the same cost with 180 ms left at most: refused.
+TEST(TimedBatches, ABatchTheTimeLeftWouldNotFinishIsNotStarted) {
+  const Deadline deadline = Deadline::in(0.3);
+  TimedBatches batches(deadline);
+  std::atomic<int> ran{0};
+  const auto slow = [&](std::size_t) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    ++ran;
+  };
+  tbb::task_arena one(1);  // one at a time, whatever the machine's cores
+  one.execute([&] {
+    EXPECT_TRUE(batches.run(0, 2, 2.0, slow));
+    EXPECT_FALSE(batches.run(2, 6, 4.0, slow));
+    EXPECT_FALSE(batches.run(6, 7, 0.5, slow));  // none after a refusal
+  });
+  EXPECT_EQ(ran.load(), 2);
+  EXPECT_TRUE(batches.cut());
+  // Without a clock every batch runs.
+  TimedBatches never{Deadline{}};
+  EXPECT_TRUE(never.run(0, 1, 1.0, [&](std::size_t) { ++ran; }));
+  EXPECT_TRUE(never.run(1, 3, 100.0, [&](std::size_t) { ++ran; }));
+  EXPECT_EQ(ran.load(), 5);
+  EXPECT_FALSE(never.cut());
+}
+
+// The chains cut short by the clock (issue 38, 2: at --time 60 on a loaded machine a vase kept no
+// fold, the chain answering nothing until every ring of both chains was made): the step still
+// answers the rings the chains made whole. The deadline is a quarter of what the whole step took
+// here (timed first, so it holds under the sanitizers and under load): the first batch (the fine
+// chain's solved rings) always runs, later batches the time left would not hold do not start.
+TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
+  const TriangleMesh bottle = revolved(
+      [](double h) {
+        const double s = std::clamp((h + 0.02) / 0.1, 0.0, 1.0);
+        return 0.05 - 0.025 * s * s * (3.0 - 2.0 * s);
+      },
+      -0.1, 0.1, 48, 30);
+  Sheet tube = makeSurface(
+      "cylinder",
+      {{"radius", 0.05}, {"height", 0.2}, {"resolution", testing::kSanitized ? 16.0 : 24.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  FitSettings settings;
+  settings.sheetSamples = 400;
+  settings.targetSamples = 1500;
+  settings.denseTargetSamples = 4000;
+  const FoldFitter fitter(bottle, settings);
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(bottle, 1500, 11);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  ASSERT_TRUE(axis);
+  const FoldSession session(tube);
+  std::atomic<std::uint64_t> all{0};
+  Deadline never;
+  never.evaluations = &all;
+  std::mt19937_64 random(5);
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<FoldSuggestion> whole =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1, never, random, 2);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  ASSERT_EQ(whole.size(), 1u);
+
+  std::atomic<std::uint64_t> evaluations{0};
+  Deadline deadline = Deadline::in(0.25 * seconds);
+  deadline.evaluations = &evaluations;
+  std::mt19937_64 again(5);
+  const std::vector<FoldSuggestion> cut =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1, deadline, again, 2);
+  ASSERT_EQ(cut.size(), 1u) << "a step the clock cut answered nothing";
+  EXPECT_LT(evaluations.load(), all.load());  // the clock cut it
+  EXPECT_GE(cut.front().folds.size(), 6u);    // a ring at least
+  EXPECT_LT(cut.front().after, cut.front().before);
+  const SurfaceDistance before = surfaceDistance(meshOf(tube), bottle, 3000);
+  const SurfaceDistance after = surfaceDistance(meshOf(cut.front().sheet), bottle, 3000);
+  EXPECT_LT(after.chamfer, before.chamfer) << before.chamfer << " -> " << after.chamfer;
+  validate(cut.front().sheet);
+  EXPECT_TRUE(findSelfIntersections(cut.front().sheet).intersections.empty());
+  EXPECT_EQ(session.foldCount(), 0u);
 }
 
 // A bowl's flat cone is no tube: its radius changes faster than kTubeRingSteepestTaper.

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
-#include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/subplex.hpp"
+#include "engine/fit/timed_batches.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -452,17 +451,9 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
       farthest[c] = farthestApart(made[c].sheet, fitter.target());
     }
   };
-  double secondsPerFold = 0.0;
-  for (std::size_t b = 0, from = 0; b < batchEnds.size(); from = batchEnds[b++]) {
-    const auto now = std::chrono::steady_clock::now();
-    const double left = std::chrono::duration<double>(deadline.at - now).count();
-    if (deadline.passed() || (b > 0 && secondsPerFold * foldsOf(from, batchEnds[b]) > left)) {
-      break;
-    }
-    tbb::parallel_for(from, batchEnds[b], evaluate);
-    secondsPerFold = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count() /
-                     std::max(1.0, foldsOf(from, batchEnds[b]));
-  }
+  TimedBatches batches(deadline);
+  for (std::size_t b = 0, from = 0; b < batchEnds.size(); from = batchEnds[b++])
+    if (!batches.run(from, batchEnds[b], foldsOf(from, batchEnds[b]), evaluate)) break;
   // A cancel answers nothing; the clock, what the batches finished (each candidate is whole).
   if (deadline.isCancelled()) return {};
   std::vector<FoldSuggestion> out;

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 #include <Eigen/Dense>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/timed_batches.hpp"
 #include "engine/geometry/self_intersection.hpp"
 
 namespace curvefold {
@@ -128,31 +128,51 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
-  std::vector<FoldSuggestion> made;
-  std::vector<double> measured;
-
-  // A chain grown on the sheet: at each step every solved ring (neckRings on the sheet as the
-  // rings before it left it, at two turns) and every corner ring made on a session of its own,
-  // checked for passing the sheet through itself and measured; the closest kept while it brings
-  // the sheet closer.
-  auto grow = [&](std::span<const int> orders) {
-    FoldSession grown(session.initial());
-    grown.applyRecords(base);
-    double current = measuredBefore;
+  // The two chains (see the header), grown on sessions of their own.
+  struct Chain {
+    std::span<const int> orders;
+    std::unique_ptr<FoldSession> grown;
+    double current = 0.0;
     std::vector<RingShape> kept;
-    for (std::size_t step = 0; step < mostRings && !deadline.passed(); ++step) {
-      const std::vector<FoldRecord> chain(
+    bool done = false;
+  };
+  std::vector<Chain> chains;
+  for (const std::span<const int> orders :
+       {std::span<const int>(kFineOrders), std::span<const int>(kAllOrders)}) {
+    Chain chain;
+    chain.orders = orders;
+    chain.grown = std::make_unique<FoldSession>(session.initial());
+    chain.grown->applyRecords(base);
+    chain.current = measuredBefore;
+    chains.push_back(std::move(chain));
+  }
+
+  // The chains grow side by side, a ring each per step, so that a step the clock cuts answers
+  // both as far as they got. Each step's candidates are scored in two batches, the solved rings
+  // (neckRings on the sheet as the rings before it left it) first, then the same at half a turn
+  // and the corner rings (each ring of the chain turned by half a step); each is made on a
+  // session of its own, checked for passing the sheet through itself and measured, and the
+  // closest scored kept while it brings the sheet closer. Between batches the clock is read
+  // (timed_batches.hpp): a batch the time left would not finish is not started, and what the
+  // chains hold then, each ring made whole, is answered.
+  TimedBatches batches(deadline);
+  for (std::size_t step = 0; step < mostRings && !batches.cut(); ++step) {
+    for (Chain& chain : chains) {
+      if (chain.done || batches.cut()) continue;
+      FoldSession& grown = *chain.grown;
+      const std::vector<FoldRecord> records(
           grown.folds().begin(),
           grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
       const std::vector<SurfaceSample> samples =
           sampleSurface(meshOf(grown.fixed()), kProfileSamples, random());
       std::vector<RingShape> shapes;
       for (const double turn : {0.0, 0.5})
-        for (RingShape shape : neckRings(samples, targetSamples, axis, 0.0, orders)) {
+        for (RingShape shape : neckRings(samples, targetSamples, axis, 0.0, chain.orders)) {
           shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
           shapes.push_back(shape);
         }
-      for (const RingShape& ring : kept)
+      const std::size_t solved = shapes.size() / 2;  // those at turn 0
+      for (const RingShape& ring : chain.kept)
         for (const double inward : {1.0, 0.95}) {
           RingShape corner = ring;
           corner.turn += std::numbers::pi / ring.order;
@@ -161,29 +181,47 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
         }
       std::vector<double> scores(shapes.size(), 1e300);
       tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
-      tbb::parallel_for(std::size_t(0), shapes.size(), [&](std::size_t r) {
+      const auto evaluate = [&](std::size_t r) {
         if (deadline.passed()) return;
         deadline.countEvaluation();
         std::unique_ptr<FoldSession>& local = sessions.local();
         if (!local) {
           local = std::make_unique<FoldSession>(session.initial());
-          local->applyRecords(chain);
+          local->applyRecords(records);
         }
         if (makeRing(*local, ringOf(shapes[r], axis)) > 0 &&
             (allowCrossing ||
              findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
           scores[r] = measure(local->fixed());
-        while (local->foldCount() > chain.size()) local->undo();
-      });
+        while (local->foldCount() > records.size()) local->undo();
+      };
+      const auto foldsOf = [&](std::size_t from, std::size_t to) {
+        double folds = 0.0;
+        for (std::size_t r = from; r < to; ++r) folds += shapes[r].order;
+        return folds;
+      };
+      if (batches.run(0, solved, foldsOf(0, solved), evaluate))
+        batches.run(solved, shapes.size(), foldsOf(solved, shapes.size()), evaluate);
+      // The closest scored (a candidate the clock cut is unscored).
       const auto best = std::min_element(scores.begin(), scores.end());
-      if (best == scores.end() || !(*best < current)) break;
+      if (best == scores.end() || !(*best < chain.current)) {
+        chain.done = true;
+        continue;
+      }
       const RingShape& chosen = shapes[static_cast<std::size_t>(best - scores.begin())];
       makeRing(grown, ringOf(chosen, axis));
-      kept.push_back(chosen);
-      current = *best;
+      chain.kept.push_back(chosen);
+      chain.current = *best;
     }
-    if (deadline.givesUp() || grown.foldCount() == base.size() || !(current < measuredBefore))
-      return;
+    if (std::all_of(chains.begin(), chains.end(), [](const Chain& c) { return c.done; })) break;
+  }
+  if (deadline.isCancelled()) return {};
+
+  std::vector<FoldSuggestion> made;
+  std::vector<double> measured;
+  for (const Chain& chain : chains) {
+    const FoldSession& grown = *chain.grown;
+    if (grown.foldCount() == base.size() || !(chain.current < measuredBefore)) continue;
     FoldSuggestion suggestion;
     suggestion.folds.assign(grown.folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
                             grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
@@ -191,11 +229,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
     suggestion.before = before;
     suggestion.after = fitter.approximateDistance(suggestion.sheet);
     made.push_back(std::move(suggestion));
-    measured.push_back(current);
-  };
-  grow(kFineOrders);
-  grow(kAllOrders);
-  if (deadline.givesUp()) return {};
+    measured.push_back(chain.current);
+  }
 
   // Best first by the measure; each closer by the search's distance too (or the fit would not
   // keep it).

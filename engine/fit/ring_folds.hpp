@@ -14,7 +14,12 @@
 // rings before it left it (each order, each end, two turns), and each ring already in the chain
 // turned by half a step (its creases stay on the tube's radius: a reflection keeps its plane, and
 // only planes facing them fold those corners in), is made, checked for passing the sheet through
-// itself, and measured; the closest is kept while it brings the sheet closer. Two chains: one of
+// itself, and measured; the closest is kept while it brings the sheet closer. Within the
+// deadline: the two chains grow side by side, a ring each per step, and each step's candidates
+// are scored in two batches (the solved rings at turn 0, then those at half a turn and the corner
+// rings; timed_batches.hpp); a batch the time left would not finish is not started, and when the
+// clock cuts the step the chains are answered as far as they got, each ring made whole (a cancel
+// answers nothing), so how many rings a cut step holds depends on the machine. Two chains: one of
 // rings of 6 to 16 planes, one of 4 to 16 (a ring of n narrows a tube to about 0.65 R for 4, 0.76
 // R for 5, 0.83 R for 6, 0.97 R for 16: ringCutRadius); a greedy chain begun with a deep ring of 4
 // can end farther than one of finer rings, so both are grown and the closer kept.
