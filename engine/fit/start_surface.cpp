@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
+#include <optional>
+#include <random>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/nested_rings.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -45,6 +49,44 @@ constexpr double kPlacedGain = 0.95;
 constexpr double kSameArea = 1e-5;
 // How much a placed sheet's Hausdorff distance counts beside its Chamfer distance.
 constexpr double kPlacedHausdorffWeight = 0.2;
+// Without a kind asked for, the disk placed across a bowl's axis is the start when the nested
+// rings' profile fit from it (nested_rings.hpp) comes within this share of the nearest sheet's
+// Chamfer distance: the rings fold the disk farther than their model says (the corner paper), and
+// a placed cone or a tube is near at once but folds little closer (docs/performance.md).
+constexpr double kRingsGain = 0.2;
+constexpr std::size_t kRingsCreases = 3;
+constexpr std::size_t kRingsProfilePoints = 300;
+
+// The mean two-sided distance in the meridian that the nested rings' profile fit reaches from
+// `disk` toward the samples about `axis` (1 to kRingsCreases creases), or none where the disk does
+// not lie flat across it. Seeded: the same target gives the same choice.
+std::optional<double> ringsReach(const Sheet& disk, const std::vector<SurfaceSample>& samples,
+                                 const RevolutionAxis& axis) {
+  if (!liesFlatAcross(disk, axis) || disk.positions.empty()) return std::nullopt;
+  glm::dvec3 centre(0.0);
+  for (const glm::dvec3& p : disk.positions) centre += p;
+  centre /= static_cast<double>(disk.positions.size());
+  double radius = 0.0;
+  for (const glm::dvec3& p : disk.positions) {
+    const glm::dvec3 d = p - centre;
+    radius = std::max(radius, glm::length(d - glm::dot(d, axis.direction) * axis.direction));
+  }
+  std::vector<glm::dvec2> profile;
+  const std::size_t stride = std::max<std::size_t>(1, samples.size() / kRingsProfilePoints);
+  for (std::size_t i = 0; i < samples.size(); i += stride) {
+    const glm::dvec3 d = samples[i].position - centre;
+    const double h = glm::dot(d, axis.direction);
+    profile.push_back({glm::length(d - h * axis.direction), h});
+  }
+  std::mt19937_64 random(38);
+  std::optional<ProfileCreases> fit;
+  double best = 1e300;
+  for (std::size_t k = 1; k <= kRingsCreases; ++k) {
+    fit = fitProfileCreases(profile, radius, k, fit ? &*fit : nullptr, random);
+    best = std::min(best, fit->score);
+  }
+  return best;
+}
 
 // Where the target lies about the y axis: mean radius overall and over the lowest and highest
 // tenth of its extent along y.
@@ -291,8 +333,8 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
   // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
   // target was folded from the catalogue's sheet where it lies).
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
-  std::optional<PlacedStart> nearest;
-  double nearestChamfer = 0.0, nearestScore = 0.0;
+  std::optional<PlacedStart> nearest, disk;
+  double nearestChamfer = 0.0, nearestScore = 0.0, diskChamfer = 0.0;
   for (PlacedStart& placed : smooth && !anyFoldedFrom && !outOfTime()
                                  ? placedStarts(samples, surfaceArea(target), kind)
                                  : std::vector<PlacedStart>{}) {
@@ -305,13 +347,40 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
     // that covers the whole target (a cone down to a bowl's bottom) folds to it better.
     const SurfaceDistance distance = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples);
     const double score = distance.chamfer + kPlacedHausdorffWeight * distance.hausdorff;
+    if (placed.surface == "disk" && !disk) {
+      disk = placed;
+      diskChamfer = distance.chamfer;
+    }
     if (nearest && !(score < nearestScore)) continue;
     nearestChamfer = distance.chamfer;
     nearestScore = score;
     nearest = std::move(placed);
   }
   // Kept only where clearly nearer: a sheet in the catalogue's frame keeps its symmetries.
-  if (nearest && (!any || nearestChamfer < kPlacedGain * best.chamfer)) {
+  const bool nearestPlaced = nearest && (!any || nearestChamfer < kPlacedGain * best.chamfer);
+  // Without a kind asked for, a bowl's disk whose rings reach far closer than the nearest sheet
+  // is (a placed cone: near at once, folded little closer) is the start.
+  bool ringsDisk = false;
+  if (kind.empty() && disk && !outOfTime() &&
+      !(nearestPlaced ? nearest->surface == "disk" : best.surface == "disk")) {
+    const double nearestNow = nearestPlaced ? nearestChamfer : best.chamfer;
+    const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+    const std::optional<double> reach =
+        axis ? ringsReach(disk->sheet, samples, *axis) : std::nullopt;
+    if (reach && *reach < kRingsGain * nearestNow) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "; its nested rings' profile comes within %.3g mm of the target's, the "
+                    "nearest sheet (%s) %.3g mm",
+                    *reach * 1e3, nearestPlaced ? nearest->surface.c_str() : best.surface.c_str(),
+                    nearestNow * 1e3);
+      nearest = std::move(disk);
+      nearest->placement += text;
+      nearestChamfer = diskChamfer;
+      ringsDisk = true;
+    }
+  }
+  if (nearest && (ringsDisk || nearestPlaced)) {
     best.surface = nearest->surface;
     best.parameters = nearest->parameters;
     best.chamfer = nearestChamfer;
