@@ -194,6 +194,7 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
   const bool crease =
       edge.assignment == CreaseAssignment::Mountain || edge.assignment == CreaseAssignment::Valley;
   double targetDegrees = edge.foldAngleDegrees;
+  double shapeDegrees = 0.0;
   if (crease && targetDegrees == 0.0)  // an M or V with no angle: folded flat, as FOLD says
     targetDegrees = edge.assignment == CreaseAssignment::Valley ? 180.0 : -180.0;
   // A sliver (a triangle lower than half its hinge edge) turns a lot for a small move of its
@@ -206,7 +207,10 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
                            : in.options.creaseStiffness * length) *
                 sliver;
   } else {
-    if (paperMode) targetDegrees = 0.0;  // paper's rest state is flat
+    if (paperMode) {
+      shapeDegrees = targetDegrees;  // the design's bending, where glue must close a slit
+      targetDegrees = 0.0;           // paper's rest state is flat
+    }
     stiffness =
         (paperMode ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) * sliver;
   }
@@ -214,6 +218,7 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
   model.hingeEdge.push_back(static_cast<std::uint32_t>(e));
   model.hingeTriangles.push_back({s.left, s.right});
   model.hingeTarget.push_back(targetDegrees / kDegrees);
+  model.hingeShape.push_back(shapeDegrees / kDegrees);
   model.hingeCrease.push_back(crease ? 1 : 0);
   model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
   model.hingeStiffness.push_back(stiffness);
@@ -361,6 +366,7 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
       model.hingeTriangles.push_back(firstIsLeft ? std::array<std::uint32_t, 2>{first, last}
                                                  : std::array<std::uint32_t, 2>{last, first});
       model.hingeTarget.push_back(target);
+      model.hingeShape.push_back(0.0);
       model.hingeCrease.push_back(0);  // the crossed creases report their own angle errors
       model.hingeDriven.push_back(driven ? 1 : 0);
       model.hingeStiffness.push_back(base * std::min(1.0, 2.0 * weakest));

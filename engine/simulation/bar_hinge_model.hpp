@@ -115,9 +115,12 @@ struct BarHingeModel {
   std::vector<std::uint32_t> hingeEdge;                      // which bar / pattern edge
   std::vector<std::array<std::uint32_t, 2>> hingeTriangles;  // left (a, b, c), right (b, a, d)
   std::vector<double> hingeTarget;                           // radians at fold amount 1
-  std::vector<std::uint8_t> hingeCrease;                     // 1: a crease (Mountain or Valley)
-  std::vector<std::uint8_t> hingeDriven;                     // 1: target scaled by the fold amount
-  std::vector<double> hingeStiffness;                        // per radian^2
+  // Paper mode: a facet hinge's angle as drawn (a design's own bending, which paper mode does not
+  // drive), for the static solver's glued start; 0 for creases and in design mode.
+  std::vector<double> hingeShape;
+  std::vector<std::uint8_t> hingeCrease;  // 1: a crease (Mountain or Valley)
+  std::vector<std::uint8_t> hingeDriven;  // 1: target scaled by the fold amount
+  std::vector<double> hingeStiffness;     // per radian^2
 
   std::vector<std::array<std::uint32_t, 2>> glue;
   double glueStiffness = 0.0;

@@ -153,8 +153,15 @@ bool ownTriangle(const BarHingeModel& model, std::uint32_t v, std::uint32_t t) {
 // Whether the pair is the sheet's own neighbourhood (near on the flat sheet).
 bool excluded(const BarHingeModel& model, std::uint32_t v, std::uint32_t t, double exclusion) {
   const auto& flat = model.flatPositions;
-  return distanceToTriangle(flat[v], corner(model, flat, t, 0), corner(model, flat, t, 1),
-                            corner(model, flat, t, 2)) < exclusion;
+  const auto near = [&](std::uint32_t u) {
+    return distanceToTriangle(flat[u], corner(model, flat, t, 0), corner(model, flat, t, 1),
+                              corner(model, flat, t, 2)) < exclusion;
+  };
+  if (near(v)) return true;
+  // Across a glued seam the sheet is one: a vertex glued to one near the triangle is near it.
+  for (const auto& pair : model.glue)
+    if ((pair[0] == v && near(pair[1])) || (pair[1] == v && near(pair[0]))) return true;
+  return false;
 }
 
 // Per vertex in order, the triangles `accept(v, t)` takes among those whose (already inflated)

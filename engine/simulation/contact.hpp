@@ -11,6 +11,8 @@
 //
 // Pairs whose distance on the flat sheet is below `exclusion` (1.5 (thickness + s^)) are the
 // sheet's own neighbourhood, not layers, and are never pairs: on the flat sheet no pair is active.
+// A vertex glued to one that is that near the triangle is excluded too (across a glued seam the
+// sheet is one; otherwise the barrier pushes the seam apart against the glue).
 // Pairs are found with a bounding-volume hierarchy over the triangles, built for each query
 // (median splits, deterministic), and listed sorted (vertex, then triangle).
 //

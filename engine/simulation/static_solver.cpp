@@ -329,21 +329,41 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     state.hingeAngles = hingeAngles(model, state.positions);
   const double scale = forceScale(model);
   if (options.predictor && !model.hinges.empty()) {
-    SimulationState guess = unfoldedState(model, goal);
     bool anyPinned = false;
     for (std::uint8_t p : model.pinned) anyPinned = anyPinned || p;
-    // In the state's frame (pins already hold the guess where they hold the state).
-    if (!anyPinned)
-      guess.positions =
-          placed(bestRigidPlacement(guess.positions, state.positions), guess.positions);
-    // With contact, a guess that passes the sheet through itself is no start: the barrier cannot
-    // tell which side of a layer a vertex belongs on.
-    if (modelEnergy(model, guess.positions, goal, guess.hingeAngles) <
-            modelEnergy(model, state.positions, goal, state.hingeAngles) &&
-        (!model.contact.enabled || crossingTrianglePairs(model, guess.positions) == 0)) {
-      state.positions.swap(guess.positions);
-      state.hingeAngles.swap(guess.hingeAngles);
-      result.predicted = true;
+    // Paper mode with glue: also the sheet shaped as drawn (facets at their design bending,
+    // creases at the goal), where the glued seams meet. From the flat sheet the glue pulls only
+    // in its plane, so Newton's steps never leave it and the slit is closed by stretching
+    // (a glued cone: 14% strain, NOT settled); the paper's authors shaped the cone and glued it.
+    std::vector<std::vector<double>> candidates{goal};
+    if (model.mode == SimulationMode::Paper && !model.glue.empty() &&
+        model.hingeShape.size() == goal.size()) {
+      std::vector<double> shaped = goal;
+      bool differs = false;
+      for (std::size_t j = 0; j < goal.size(); ++j)
+        if (!model.hingeCrease[j] && model.hingeShape[j] != 0.0) {
+          shaped[j] = model.hingeShape[j];
+          differs = true;
+        }
+      if (differs) candidates.push_back(std::move(shaped));
+    }
+    double energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
+    for (const std::vector<double>& targets : candidates) {
+      SimulationState guess = unfoldedState(model, targets);
+      // In the state's frame (pins already hold the guess where they hold the state).
+      if (!anyPinned)
+        guess.positions =
+            placed(bestRigidPlacement(guess.positions, state.positions), guess.positions);
+      // With contact, a guess that passes the sheet through itself is no start: the barrier
+      // cannot tell which side of a layer a vertex belongs on.
+      const double guessEnergy = modelEnergy(model, guess.positions, goal, guess.hingeAngles);
+      if (guessEnergy < energy &&
+          (!model.contact.enabled || crossingTrianglePairs(model, guess.positions) == 0)) {
+        state.positions.swap(guess.positions);
+        state.hingeAngles.swap(guess.hingeAngles);
+        energy = guessEnergy;
+        result.predicted = true;
+      }
     }
   }
   const std::vector<double> start = state.hingeAngles;
@@ -406,6 +426,9 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     if (!barScales.empty())
       for (std::size_t i = 0; i < model.bars.size(); ++i)
         barModel.barStiffness[i] = model.barStiffness[i] * barScales[stage - 1];
+    // Glue is as stiff as the stiffest bar: softened with them, or a glued slit, pulled shut
+    // from the flat sheet's gap by glue 1e4 times stiffer than the softened bars, crushes them.
+    if (!barScales.empty()) barModel.glueStiffness = model.glueStiffness * barScales[stage - 1];
     const BarHingeModel& m =
         !barScales.empty() && !last ? barModel : (softFacets && !last ? softModel : model);
     const double t = std::min(1.0, static_cast<double>(stage) / static_cast<double>(stages));
