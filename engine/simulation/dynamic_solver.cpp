@@ -41,6 +41,56 @@ namespace {
 constexpr std::size_t kElementGrain = 4096;
 constexpr std::size_t kVertexGrain = 2048;
 
+// Hinges a lane block takes: the kernel runs on local arrays of this many, one hinge a lane, so
+// the compiler vectorizes it.
+constexpr std::size_t kHingeLanes = 8;
+
+// `count` (<= kHingeLanes) hinges from `hinges` on: their angles unwrapped in place and their
+// forces into their slots. The positions are copied into lanes (the last hinge's repeated to
+// fill them), angleWithGradientUsual runs on every lane at once, and a hinge it cannot take goes
+// through angleWithGradient alone; each hinge's bits are angleWithGradient's either way.
+[[gnu::target_clones("avx2", "default")]] void hingeLanes(const Hinge* hinges, std::size_t count, const glm::dvec3* x, double* angles,
+                const double* stiffness, const double* target, const std::uint32_t* scatter,
+                glm::dvec3* forces) {
+  constexpr std::size_t kLanes = kHingeLanes;
+  alignas(64) double in[12][kLanes], previous[kLanes], torque[kLanes];
+  alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const std::size_t j = std::min(k, count - 1);
+    const Hinge& h = hinges[j];
+    const std::uint32_t vertices[4] = {h.a, h.b, h.c, h.d};
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) in[3 * v + axis][k] = x[vertices[v]][axis];
+    previous[k] = angles[j];
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    std::array<glm::dvec3, 4> gradient;
+    double a;
+    const bool ok = hinge_kernel::angleWithGradientUsual(
+        glm::dvec3(in[0][k], in[1][k], in[2][k]), glm::dvec3(in[3][k], in[4][k], in[5][k]),
+        glm::dvec3(in[6][k], in[7][k], in[8][k]), glm::dvec3(in[9][k], in[10][k], in[11][k]),
+        previous[k], a, gradient);
+    angle[k] = a;
+    usual[k] = ok ? 1.0 : 0.0;
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) out[3 * v + axis][k] = gradient[v][axis];
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    std::array<glm::dvec3, 4> gradient;
+    if (usual[k] != 0.0) {
+      for (int v = 0; v < 4; ++v)
+        gradient[v] = glm::dvec3(out[3 * v][k], out[3 * v + 1][k], out[3 * v + 2][k]);
+    } else {
+      const Hinge& h = hinges[k];
+      angle[k] = hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k],
+                                                 gradient);
+    }
+    angles[k] = angle[k];
+    torque[k] = -stiffness[k] * (angle[k] - target[k]);
+    for (int v = 0; v < 4; ++v) forces[scatter[4 * k + v]] = torque[k] * gradient[v];
+  }
+}
+
 // Every element's force on each of its vertices, written where that vertex reads it
 // (BarHingeModel::scatterSlots); every hinge's angle unwrapped in place. The same expressions as
 // elementForces, so the same bits.
@@ -66,28 +116,17 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
       hingeEnd + model.glue.size(), kElementGrain, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < std::min(end, barCount); ++i) {
           const std::uint32_t a = bars[i][0], b = bars[i][1];
-          const glm::dvec3 delta = x[b] - x[a];
-          const double length = glm::length(delta);
-          glm::dvec3 force(0.0);  // on a; b takes the opposite
-          if (length > 0.0) {
-            double pull = barStiffness[i] * (length - barLength[i]);
-            pull +=
-                dampingRatio * barDamping[i] * glm::dot(velocity[b] - velocity[a], delta) / length;
-            force = (pull / length) * delta;
-          }
+          const glm::dvec3 force =  // on a; b takes the opposite
+              hinge_kernel::barForce(x[b] - x[a], velocity[b] - velocity[a], barStiffness[i],
+                                     barLength[i], dampingRatio * barDamping[i]);
           forces[scatter[2 * i]] = force;
           forces[scatter[2 * i + 1]] = -force;
         }
-        for (std::size_t e = std::max(begin, barCount); e < std::min(end, hingeEnd); ++e) {
-          const std::size_t j = e - barCount;
-          const Hinge& h = hinges[j];
-          std::array<glm::dvec3, 4> gradient;
-          const double angle =
-              hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], angles[j], gradient);
-          angles[j] = angle;
-          const double torque = -hingeStiffness[j] * (angle - target[j]);
-          for (int k = 0; k < 4; ++k) forces[hingeScatter[4 * j + k]] = torque * gradient[k];
-        }
+        const std::size_t hingeBegin = std::max(begin, barCount) - barCount;
+        const std::size_t hingeStop = std::max(std::min(end, hingeEnd), barCount) - barCount;
+        for (std::size_t j0 = hingeBegin; j0 < hingeStop; j0 += kHingeLanes)
+          hingeLanes(hinges + j0, std::min(kHingeLanes, hingeStop - j0), x, angles + j0,
+                     hingeStiffness + j0, target + j0, hingeScatter + 4 * j0, forces);
         for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
           const std::size_t g = e - hingeEnd;
           const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
