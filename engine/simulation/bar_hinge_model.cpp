@@ -401,6 +401,12 @@ void buildGatherLists(BarHingeModel& model) {
   model.scatterSlots.resize(model.slotCount);
   for (std::size_t k = 0; k < model.slotCount; ++k)
     model.scatterSlots[model.gatherSlots[k]] = static_cast<std::uint32_t>(k);
+  model.gatherBarEnd.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    std::uint32_t k = model.gatherOffsets[v];
+    while (k < model.gatherOffsets[v + 1] && model.gatherSlots[k] < model.hingeSlot0) ++k;
+    model.gatherBarEnd[v] = k;
+  }
 }
 
 }  // namespace

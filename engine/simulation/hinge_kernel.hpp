@@ -151,13 +151,16 @@ constexpr double kSmallestProduct = 1e-290, kLargestProduct = 1e290;
                                                   const glm::dvec3& relativeVelocity,
                                                   double stiffness, double restLength,
                                                   double damping) {
+  // Without a branch (a loop over bars vectorizes it): a bar of zero length selects 0.
   const double squared = glm::dot(delta, delta);
-  if (!(squared > 0.0)) return glm::dvec3(0.0);
+  const bool usual = squared > 0.0;
   const double length = std::sqrt(squared);
-  const double inverse = 1.0 / length;
+  const double inverse = 1.0 / (usual ? length : 1.0);
   const double pull =
       stiffness * (length - restLength) + damping * glm::dot(relativeVelocity, delta) * inverse;
-  return (pull * inverse) * delta;
+  const double scale = pull * inverse;
+  return glm::dvec3(usual ? scale * delta.x : 0.0, usual ? scale * delta.y : 0.0,
+                    usual ? scale * delta.z : 0.0);
 }
 
 }  // namespace curvefold::hinge_kernel
