@@ -437,6 +437,52 @@ TEST(Simulation, SameInputAndStepsGiveTheSameStateBitForBit) {
                            a.positions.size() * sizeof(glm::dvec3)));
 }
 
+// The hinge kernel (hinge_kernel.hpp: the sine from det(e, u, w) |e|, one reciprocal for the
+// gradient's three divisions, atan2 reduced in one division without branches) against the
+// plain formulas: normals' sine by a cross product over |e|, std::atan2, a division each; over
+// random hinges at every angle (each of atan2's three reductions, both signs, near +-pi).
+TEST(Simulation, HingeKernelMatchesThePlainFormulas) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  double worstAngle = 0.0, worstGradient = 0.0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double scale = std::pow(10.0, 4.0 * unit(random));  // 1e-4 .. 1e4
+    const glm::dvec3 a = scale * glm::dvec3(unit(random), unit(random), unit(random));
+    const glm::dvec3 b = scale * glm::dvec3(unit(random), unit(random), unit(random));
+    const glm::dvec3 c = scale * glm::dvec3(unit(random), unit(random), unit(random));
+    const glm::dvec3 d = scale * glm::dvec3(unit(random), unit(random), unit(random));
+    const glm::dvec3 edge = b - a;
+    const glm::dvec3 n1 = glm::cross(edge, c - a), n2 = glm::cross(a - b, d - b);
+    const double ee = glm::dot(edge, edge), length = std::sqrt(ee);
+    const double expected =
+        std::atan2(-glm::dot(glm::cross(n1, n2), edge) / length, glm::dot(n1, n2));
+    const glm::dvec3 gc = n1 * (length / glm::dot(n1, n1));
+    const glm::dvec3 gd = n2 * (length / glm::dot(n2, n2));
+    const double tc = glm::dot(c - a, edge) / ee, td = glm::dot(d - a, edge) / ee;
+    const glm::dvec3 expectedGradient[4] = {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd,
+                                            gc, gd};
+    // Previous within pi of the angle, so no wrap: the kernel's angle is the raw one.
+    std::array<glm::dvec3, 4> gradient;
+    const double angle = hingeAngleWithGradient(a, b, c, d, expected * 0.5, gradient);
+    worstAngle = std::max(worstAngle, std::abs(angle - expected));
+    EXPECT_EQ(angle, hingeAngle(a, b, c, d, expected * 0.5));
+    double size = 0.0;
+    for (const glm::dvec3& g : expectedGradient) size = std::max(size, glm::length(g));
+    for (int k = 0; k < 4; ++k)
+      worstGradient =
+          std::max(worstGradient, glm::length(gradient[k] - expectedGradient[k]) / size);
+  }
+  EXPECT_LT(worstAngle, 1e-12);
+  EXPECT_LT(worstGradient, 1e-12);
+  // The wrap: an angle near pi tracked from just below -pi comes back within pi of it.
+  const glm::dvec3 a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0), d(0.5, 1, 1e-3);
+  const double nearPi = hingeAngle(a, b, c, d, 0.0);
+  EXPECT_GT(std::abs(nearPi), 3.1);
+  std::array<glm::dvec3, 4> gradient;
+  EXPECT_NEAR(hingeAngleWithGradient(a, b, c, d, nearPi - 2.0 * std::numbers::pi, gradient),
+              nearPi - 2.0 * std::numbers::pi, 1e-12);
+}
+
 // The dynamic step writes each element's forces where each vertex reads them, in gather order
 // (BarHingeModel::scatterSlots), and sums them in one run; the slot layout it replaced
 // (elementForces into a slot per element end, gatherForces through gatherSlots, then the same

@@ -17,8 +17,6 @@ namespace curvefold {
 namespace {
 
 using hinge_kernel::angleWithGradient;
-using hinge_kernel::atan2Cephes;
-using hinge_kernel::unwrapAgainst;
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
@@ -35,33 +33,14 @@ struct EdgeSides {
 
 double hingeAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
                   const glm::dvec3& d, double previous) {
-  const glm::dvec3 n1 = glm::cross(b - a, c - a);
-  const glm::dvec3 n2 = glm::cross(a - b, d - b);
-  const glm::dvec3 edge = b - a;
-  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
-  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) return previous;
-  // creases.hpp's foldAngleDegrees with unnormalized vectors: atan2 needs only their ratio.
-  const double sine = -glm::dot(glm::cross(n1, n2), edge) / std::sqrt(ee);
-  const double cosine = glm::dot(n1, n2);
-  const double raw = atan2Cephes(sine, cosine);
-  return unwrapAgainst(raw, previous);
+  return hinge_kernel::angle(a, b, c, d, previous);
 }
 
 std::array<glm::dvec3, 4> hingeAngleGradient(const glm::dvec3& a, const glm::dvec3& b,
                                              const glm::dvec3& c, const glm::dvec3& d) {
-  const glm::dvec3 edge = b - a;
-  const glm::dvec3 n1 = glm::cross(edge, c - a);
-  const glm::dvec3 n2 = glm::cross(a - b, d - b);
-  const double n1n1 = glm::dot(n1, n1), n2n2 = glm::dot(n2, n2), ee = glm::dot(edge, edge);
-  if (n1n1 == 0.0 || n2n2 == 0.0 || ee == 0.0) return {};
-  const double length = std::sqrt(ee);
-  // A wing moving along its face's normal turns the face by 1 / its height (valley positive).
-  const glm::dvec3 gc = n1 * (length / n1n1);
-  const glm::dvec3 gd = n2 * (length / n2n2);
-  // The edge's ends share the rest so the gradient is blind to translation and rotation.
-  const double tc = glm::dot(c - a, edge) / ee;
-  const double td = glm::dot(d - a, edge) / ee;
-  return {-(1.0 - tc) * gc - (1.0 - td) * gd, -tc * gc - td * gd, gc, gd};
+  std::array<glm::dvec3, 4> gradient;
+  angleWithGradient(a, b, c, d, 0.0, gradient);
+  return gradient;
 }
 
 double hingeAngleWithGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
@@ -428,6 +407,12 @@ void buildGatherLists(BarHingeModel& model) {
   model.scatterSlots.resize(model.slotCount);
   for (std::size_t k = 0; k < model.slotCount; ++k)
     model.scatterSlots[model.gatherSlots[k]] = static_cast<std::uint32_t>(k);
+  model.gatherBarEnd.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    std::uint32_t k = model.gatherOffsets[v];
+    while (k < model.gatherOffsets[v + 1] && model.gatherSlots[k] < model.hingeSlot0) ++k;
+    model.gatherBarEnd[v] = k;
+  }
 }
 
 }  // namespace
@@ -538,16 +523,10 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
     if (e < barCount) {
       const std::size_t i = e;
       const std::uint32_t a = model.bars[i][0], b = model.bars[i][1];
-      const glm::dvec3 delta = x[b] - x[a];
-      const double length = glm::length(delta);
-      glm::dvec3 force(0.0);  // on a; b gets the opposite
-      if (length > 0.0) {
-        double pull = model.barStiffness[i] * (length - model.barLength[i]);
-        if (velocities)
-          pull += dampingRatio * model.barDamping[i] *
-                  glm::dot(velocities[b] - velocities[a], delta) / length;
-        force = (pull / length) * delta;
-      }
+      const glm::dvec3 force = hinge_kernel::barForce(  // on a; b gets the opposite
+          x[b] - x[a], velocities ? velocities[b] - velocities[a] : glm::dvec3(0.0),
+          model.barStiffness[i], model.barLength[i],
+          velocities ? dampingRatio * model.barDamping[i] : 0.0);
       forces[2 * i] = force;
       forces[2 * i + 1] = -force;
     } else if (e < barCount + hingeCount) {

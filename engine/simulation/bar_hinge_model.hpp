@@ -136,6 +136,10 @@ struct BarHingeModel {
   // of gatherSlots), where the step writes its force so that each vertex then reads its forces
   // in one run; the same sums bit for bit as gathering through gatherSlots.
   std::vector<std::uint32_t> scatterSlots;
+  // Where each vertex's bar slots end in its run (they come first, bars' slots being the lowest):
+  // the dynamic step keeps one force per bar in bar order (SimulationState::barForces) and its
+  // ends read it there, +f at slot 2i, -f at 2i + 1, rather than through two scattered slots.
+  std::vector<std::uint32_t> gatherBarEnd;
 
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;
@@ -239,6 +243,7 @@ struct SimulationState {
   std::vector<double> hingeAngles;        // unwrapped, as of the last step or iteration
   std::size_t steps = 0;                  // dynamic steps taken
   std::vector<glm::dvec3> slotForces;     // scratch: one force per element slot
+  std::vector<glm::dvec3> barForces;      // scratch: the dynamic step's force of each bar on its a
   std::vector<double> targets;            // scratch: the hinge targets of the last step
   ContactList contactPairs;               // the dynamic solver's contact pairs (contact.hpp)
   std::vector<glm::dvec3> contactForces;  // scratch: each vertex's contact force, last step

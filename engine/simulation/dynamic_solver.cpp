@@ -41,6 +41,93 @@ namespace {
 constexpr std::size_t kElementGrain = 4096;
 constexpr std::size_t kVertexGrain = 2048;
 
+// Bars a lane block takes (as kHingeLanes for hinges).
+constexpr std::size_t kBarLanes = 16;
+
+// `count` (<= kBarLanes) bars from `bars` on: each one's force on its first end into barForces
+// (in bar order; moveVertices reads it from both ends), by hinge_kernel::barForce on every lane at
+// once (the same bits as one bar at a time).
+[[gnu::target_clones("avx2", "default")]] void barLanes(
+    const std::array<std::uint32_t, 2>* bars, std::size_t count, const glm::dvec3* x,
+    const glm::dvec3* velocity, const double* stiffness, const double* restLength,
+    const double* damping, double dampingRatio, glm::dvec3* barForces) {
+  constexpr std::size_t kLanes = kBarLanes;
+  alignas(64) double in[6][kLanes], parameters[3][kLanes], out[3][kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const std::size_t i = std::min(k, count - 1);
+    const glm::dvec3 delta = x[bars[i][1]] - x[bars[i][0]];
+    const glm::dvec3 relative = velocity[bars[i][1]] - velocity[bars[i][0]];
+    for (int axis = 0; axis < 3; ++axis) {
+      in[axis][k] = delta[axis];
+      in[3 + axis][k] = relative[axis];
+    }
+    parameters[0][k] = stiffness[i];
+    parameters[1][k] = restLength[i];
+    parameters[2][k] = dampingRatio * damping[i];
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const glm::dvec3 force = hinge_kernel::barForce(
+        glm::dvec3(in[0][k], in[1][k], in[2][k]), glm::dvec3(in[3][k], in[4][k], in[5][k]),
+        parameters[0][k], parameters[1][k], parameters[2][k]);
+    for (int axis = 0; axis < 3; ++axis) out[axis][k] = force[axis];
+  }
+  for (std::size_t k = 0; k < count; ++k)
+    barForces[k] = glm::dvec3(out[0][k], out[1][k], out[2][k]);
+}
+
+// Hinges a lane block takes: the kernel runs on local arrays of this many, one hinge a lane, so
+// the compiler vectorizes it.
+constexpr std::size_t kHingeLanes = 8;
+
+// `count` (<= kHingeLanes) hinges from `hinges` on: their angles unwrapped in place and their
+// forces into their slots. The positions are copied into lanes (the last hinge's repeated to
+// fill them), angleWithGradientUsual runs on every lane at once, and a hinge it cannot take goes
+// through angleWithGradient alone; each hinge's bits are angleWithGradient's either way.
+[[gnu::target_clones("avx2", "default")]] void hingeLanes(const Hinge* hinges, std::size_t count,
+                                                          const glm::dvec3* x, double* angles,
+                                                          const double* stiffness,
+                                                          const double* target,
+                                                          const std::uint32_t* scatter,
+                                                          glm::dvec3* forces) {
+  constexpr std::size_t kLanes = kHingeLanes;
+  alignas(64) double in[12][kLanes], previous[kLanes], torque[kLanes];
+  alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const std::size_t j = std::min(k, count - 1);
+    const Hinge& h = hinges[j];
+    const std::uint32_t vertices[4] = {h.a, h.b, h.c, h.d};
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) in[3 * v + axis][k] = x[vertices[v]][axis];
+    previous[k] = angles[j];
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    std::array<glm::dvec3, 4> gradient;
+    double a;
+    const bool ok = hinge_kernel::angleWithGradientUsual(
+        glm::dvec3(in[0][k], in[1][k], in[2][k]), glm::dvec3(in[3][k], in[4][k], in[5][k]),
+        glm::dvec3(in[6][k], in[7][k], in[8][k]), glm::dvec3(in[9][k], in[10][k], in[11][k]),
+        previous[k], a, gradient);
+    angle[k] = a;
+    usual[k] = ok ? 1.0 : 0.0;
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) out[3 * v + axis][k] = gradient[v][axis];
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    std::array<glm::dvec3, 4> gradient;
+    if (usual[k] != 0.0) {
+      for (int v = 0; v < 4; ++v)
+        gradient[v] = glm::dvec3(out[3 * v][k], out[3 * v + 1][k], out[3 * v + 2][k]);
+    } else {
+      const Hinge& h = hinges[k];
+      angle[k] =
+          hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k], gradient);
+    }
+    angles[k] = angle[k];
+    torque[k] = -stiffness[k] * (angle[k] - target[k]);
+    for (int v = 0; v < 4; ++v) forces[scatter[4 * k + v]] = torque[k] * gradient[v];
+  }
+}
+
 // Every element's force on each of its vertices, written where that vertex reads it
 // (BarHingeModel::scatterSlots); every hinge's angle unwrapped in place. The same expressions as
 // elementForces, so the same bits.
@@ -49,6 +136,7 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
   const glm::dvec3* x = state.positions.data();
   const glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* forces = state.slotForces.data();
+  glm::dvec3* barForces = state.barForces.data();
   double* angles = state.hingeAngles.data();
   const std::uint32_t* scatter = model.scatterSlots.data();
   const std::array<std::uint32_t, 2>* bars = model.bars.data();
@@ -64,30 +152,15 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
   const std::uint32_t* glueScatter = scatter + model.glueSlot0;
   forEachRange(
       hingeEnd + model.glue.size(), kElementGrain, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < std::min(end, barCount); ++i) {
-          const std::uint32_t a = bars[i][0], b = bars[i][1];
-          const glm::dvec3 delta = x[b] - x[a];
-          const double length = glm::length(delta);
-          glm::dvec3 force(0.0);  // on a; b takes the opposite
-          if (length > 0.0) {
-            double pull = barStiffness[i] * (length - barLength[i]);
-            pull +=
-                dampingRatio * barDamping[i] * glm::dot(velocity[b] - velocity[a], delta) / length;
-            force = (pull / length) * delta;
-          }
-          forces[scatter[2 * i]] = force;
-          forces[scatter[2 * i + 1]] = -force;
-        }
-        for (std::size_t e = std::max(begin, barCount); e < std::min(end, hingeEnd); ++e) {
-          const std::size_t j = e - barCount;
-          const Hinge& h = hinges[j];
-          std::array<glm::dvec3, 4> gradient;
-          const double angle =
-              hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], angles[j], gradient);
-          angles[j] = angle;
-          const double torque = -hingeStiffness[j] * (angle - target[j]);
-          for (int k = 0; k < 4; ++k) forces[hingeScatter[4 * j + k]] = torque * gradient[k];
-        }
+        for (std::size_t i0 = begin; i0 < std::min(end, barCount); i0 += kBarLanes)
+          barLanes(bars + i0, std::min(kBarLanes, std::min(end, barCount) - i0), x, velocity,
+                   barStiffness + i0, barLength + i0, barDamping + i0, dampingRatio,
+                   barForces + i0);
+        const std::size_t hingeBegin = std::max(begin, barCount) - barCount;
+        const std::size_t hingeStop = std::max(std::min(end, hingeEnd), barCount) - barCount;
+        for (std::size_t j0 = hingeBegin; j0 < hingeStop; j0 += kHingeLanes)
+          hingeLanes(hinges + j0, std::min(kHingeLanes, hingeStop - j0), x, angles + j0,
+                     hingeStiffness + j0, target + j0, hingeScatter + 4 * j0, forces);
         for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
           const std::size_t g = e - hingeEnd;
           const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
@@ -105,14 +178,23 @@ void moveVertices(const BarHingeModel& model, double dt, double keep, const glm:
   const glm::dvec3* forces = state.slotForces.data();
   glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* positions = state.positions.data();
+  const glm::dvec3* barForces = state.barForces.data();
   const std::uint32_t* offsets = model.gatherOffsets.data();
+  const std::uint32_t* barEnd = model.gatherBarEnd.data();
+  const std::uint32_t* slots = model.gatherSlots.data();
   const std::uint8_t* pinned = model.pinned.data();
   const double* mass = model.mass.data();
   forEachRange(model.vertexCount(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       if (pinned[v]) continue;
       glm::dvec3 total(0.0);
-      for (std::uint32_t s = offsets[v]; s < offsets[v + 1]; ++s) total += forces[s];
+      // Its bars' forces (slot 2i: +f, 2i + 1: -f), then its other slots, in gather order.
+      std::uint32_t k = offsets[v];
+      for (; k < barEnd[v]; ++k) {
+        const glm::dvec3& force = barForces[slots[k] >> 1];
+        total += (slots[k] & 1u) ? -force : force;
+      }
+      for (; k < offsets[v + 1]; ++k) total += forces[k];
       if (contact) total += contact[v];
       velocity[v] = (velocity[v] + (dt / mass[v]) * total) * keep;
       positions[v] += dt * velocity[v];
@@ -134,7 +216,8 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   if (state.hingeAngles.size() != model.hinges.size())
     state.hingeAngles = hingeAngles(model, state.positions);
   state.velocities.resize(model.vertexCount(), glm::dvec3(0.0));
-  state.slotForces.resize(model.slotCount);
+  state.slotForces.resize(model.slotCount);  // the bars' slots stay unused (barForces)
+  state.barForces.resize(model.bars.size());
 
   for (std::size_t step = 0; step < steps; ++step) {
     scatterElementForces(model, targets, options.dampingRatio, state);
