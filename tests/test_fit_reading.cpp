@@ -979,8 +979,7 @@ TEST(StartSurface, AFootedBowlStartsFromTheDiskItsRingsFoldNotTheNearerCone) {
   // The cone was nearer as it lies (named in the line, with its distance): the disk was chosen
   // for what its rings reach.
   EXPECT_NE(start.placement.find("nested rings"), std::string::npos) << start.placement;
-  EXPECT_NE(start.placement.find("the nearest sheet (cone)"), std::string::npos)
-      << start.placement;
+  EXPECT_NE(start.placement.find("the nearest sheet (cone)"), std::string::npos) << start.placement;
   validate(*start.placed);
 }
 
