@@ -41,16 +41,31 @@ namespace {
 constexpr std::size_t kElementGrain = 4096;
 constexpr std::size_t kVertexGrain = 2048;
 
+// The lane loops' AVX2 copy, chosen by the loader (an ifunc). ThreadSanitizer's runtime is not up
+// when the loader runs ifunc resolvers (every test binary crashed at start), so under it only the
+// default copy is built.
+#if defined(__SANITIZE_THREAD__)
+#define CURVEFOLD_LANE_CLONES
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define CURVEFOLD_LANE_CLONES
+#endif
+#endif
+#ifndef CURVEFOLD_LANE_CLONES
+#define CURVEFOLD_LANE_CLONES [[gnu::target_clones("avx2", "default")]]
+#endif
+
 // Bars a lane block takes (as kHingeLanes for hinges).
 constexpr std::size_t kBarLanes = 16;
 
 // `count` (<= kBarLanes) bars from `bars` on: each one's force on its first end into barForces
 // (in bar order; moveVertices reads it from both ends), by hinge_kernel::barForce on every lane at
 // once (the same bits as one bar at a time).
-[[gnu::target_clones("avx2", "default")]] void barLanes(
-    const std::array<std::uint32_t, 2>* bars, std::size_t count, const glm::dvec3* x,
-    const glm::dvec3* velocity, const double* stiffness, const double* restLength,
-    const double* damping, double dampingRatio, glm::dvec3* barForces) {
+CURVEFOLD_LANE_CLONES void barLanes(const std::array<std::uint32_t, 2>* bars, std::size_t count,
+                                    const glm::dvec3* x, const glm::dvec3* velocity,
+                                    const double* stiffness, const double* restLength,
+                                    const double* damping, double dampingRatio,
+                                    glm::dvec3* barForces) {
   constexpr std::size_t kLanes = kBarLanes;
   alignas(64) double in[6][kLanes], parameters[3][kLanes], out[3][kLanes];
   for (std::size_t k = 0; k < kLanes; ++k) {
@@ -83,12 +98,9 @@ constexpr std::size_t kHingeLanes = 8;
 // forces into their slots. The positions are copied into lanes (the last hinge's repeated to
 // fill them), angleWithGradientUsual runs on every lane at once, and a hinge it cannot take goes
 // through angleWithGradient alone; each hinge's bits are angleWithGradient's either way.
-[[gnu::target_clones("avx2", "default")]] void hingeLanes(const Hinge* hinges, std::size_t count,
-                                                          const glm::dvec3* x, double* angles,
-                                                          const double* stiffness,
-                                                          const double* target,
-                                                          const std::uint32_t* scatter,
-                                                          glm::dvec3* forces) {
+CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, const glm::dvec3* x,
+                                      double* angles, const double* stiffness, const double* target,
+                                      const std::uint32_t* scatter, glm::dvec3* forces) {
   constexpr std::size_t kLanes = kHingeLanes;
   alignas(64) double in[12][kLanes], previous[kLanes], torque[kLanes];
   alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
