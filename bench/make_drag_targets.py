@@ -26,11 +26,10 @@ remeshed ones from the folded vertices and triangles. manifest.jsonl lines are a
 make` writes them (name, recipe, bucket, surface, parameters, symmetry, folds).
 """
 import argparse
-import json
 import math
 import os
 
-from target_folds import cases, fold_if_whole, unit_vector, write_target
+from target_folds import cases, fold_if_whole, record_case, unit_vector, write_target
 VARIANTS = ["outer", "centre", "remeshed"]
 
 
@@ -135,11 +134,7 @@ def main():
                 else:
                     write_target(design, target)
                 design.save(os.path.join(args.out, name + ".curvefold.json"))
-                entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
-                         "parameters": {}, "symmetry": None, "folds": folds}
-                manifest.write(json.dumps(entry) + "\n")
-                manifest.flush()
-                print(name, folds, "folds", flush=True)
+                record_case(manifest, name, recipe, bucket, surface, folds)
                 made += 1
 
 

@@ -24,13 +24,13 @@ and `check` passes whole. Targets are the OBJ less its `vt` lines; manifest.json
 `reach_targets.py make` writes it.
 """
 import argparse
-import json
 import math
 import os
 import shutil
 import subprocess
 
-from target_folds import boundary_vertices, cases, diagonal, read_obj, strip_vt, unit_vector
+from target_folds import (boundary_vertices, cases, diagonal, read_obj, record_case, strip_vt,
+                          unit_vector)
 
 RECIPES = ["rim-short", "rim-tuck"]
 
@@ -129,11 +129,7 @@ def main():
                 name = f"{recipe}-{bucket}-{made:02d}-{surface}"
                 export_obj(cf, design, os.path.join(args.out, name + ".obj"))
                 shutil.copyfile(design, os.path.join(args.out, name + ".curvefold.json"))
-                entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
-                         "parameters": {}, "symmetry": None, "folds": folds}
-                manifest.write(json.dumps(entry) + "\n")
-                manifest.flush()
-                print(name, folds, "folds", flush=True)
+                record_case(manifest, name, recipe, bucket, surface, folds)
                 made += 1
     shutil.rmtree(work)
 

@@ -5,6 +5,7 @@ and each case's own random stream, and the small geometry they choose folds with
 diagonal, the rim, a uniform direction). How each generator chooses its folds stays its own, so
 their targets differ. make_rim_targets.py drives the binary, not the module: it uses what does
 not fold (read_obj, strip_vt and the rest). distance_truth.py reads OBJ files with read_obj."""
+import json
 import math
 import os
 import random
@@ -20,6 +21,16 @@ def cases(seed, recipes, buckets, surfaces):
             for surface in surfaces:
                 yield (recipe, bucket, BUCKETS[bucket], surface,
                        random.Random(f"{seed}/{recipe}/{bucket}/{surface}"))
+
+
+def record_case(manifest, name, recipe, bucket, surface, folds):
+    """One manifest.jsonl line for a target made (as reach_targets.py reads it), flushed, and
+    the target named on stdout."""
+    entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
+             "parameters": {}, "symmetry": None, "folds": folds}
+    manifest.write(json.dumps(entry) + "\n")
+    manifest.flush()
+    print(name, folds, "folds", flush=True)
 
 
 def diagonal(vertices):

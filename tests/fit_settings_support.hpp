@@ -1,9 +1,12 @@
-// The fit's settings the ring and profile tests share (test_nested_rings.cpp,
+// The fit's settings and deadlines the ring and profile tests share (test_nested_rings.cpp,
 // test_profile_folds.cpp): the sample counts set, everything else the fit's defaults.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 
+#include "engine/fit/deadline.hpp"
 #include "engine/fit/fold_fit.hpp"
 
 namespace curvefold::testing {
@@ -16,6 +19,13 @@ inline FitSettings sampledSettings(std::size_t sheet, std::size_t target, std::s
   settings.targetSamples = target;
   settings.denseTargetSamples = dense;
   return settings;
+}
+
+// `deadline` counting each candidate it scores into `evaluations` (a step the clock cut makes
+// fewer than the whole step).
+inline Deadline counting(Deadline deadline, std::atomic<std::uint64_t>& evaluations) {
+  deadline.evaluations = &evaluations;
+  return deadline;
 }
 
 }  // namespace curvefold::testing

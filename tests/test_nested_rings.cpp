@@ -314,18 +314,12 @@ TEST(NestedRings, AStepTheClockCutsStillAnswersTheCoarsestRingsMadeWhole) {
   // What the whole step makes, with no clock.
   std::mt19937_64 random(5);
   std::atomic<std::uint64_t> all{0};
-  Deadline never;
-  never.evaluations = &all;
-  const std::vector<FoldSuggestion> whole =
-      suggestNestedRings(session, fitter, *axis, samples, 1, never, random, 3);
+  const std::vector<FoldSuggestion> whole = suggestNestedRings(
+      session, fitter, *axis, samples, 1, testing::counting(Deadline{}, all), random, 3);
   ASSERT_EQ(whole.size(), 1u);
   // The profile fits alone (as the step makes them), timed.
-  std::vector<glm::dvec2> profile;  // as the step takes it: 300 of the samples
-  for (std::size_t i = 0; i < samples.size(); i += samples.size() / 300) {
-    const glm::dvec3 d = samples[i].position - axis->point;
-    const double h = glm::dot(d, axis->direction);
-    profile.push_back({glm::length(d - h * axis->direction), h});
-  }
+  // As the step takes it: 300 of the samples.
+  const std::vector<glm::dvec2> profile = meridianProfile(samples, axis->point, *axis, 300);
   const auto started = std::chrono::steady_clock::now();
   std::mt19937_64 fitRandom(5);
   const ProfileCreases one = fitProfileCreases(profile, 0.088, 1, nullptr, fitRandom);
@@ -334,11 +328,10 @@ TEST(NestedRings, AStepTheClockCutsStillAnswersTheCoarsestRingsMadeWhole) {
   const double fitSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::atomic<std::uint64_t> evaluations{0};
-  Deadline deadline = Deadline::in(3.0 * fitSeconds);
-  deadline.evaluations = &evaluations;
   std::mt19937_64 again(5);
   const std::vector<FoldSuggestion> cut =
-      suggestNestedRings(session, fitter, *axis, samples, 1, deadline, again, 3);
+      suggestNestedRings(session, fitter, *axis, samples, 1,
+                         testing::counting(Deadline::in(3.0 * fitSeconds), evaluations), again, 3);
   ASSERT_EQ(cut.size(), 1u) << "a step the clock cut answered nothing";
   // Fewer candidates were made than in the whole step: the clock cut it (or the time left would
   // not hold the next batch, judged by the last).

@@ -468,22 +468,19 @@ TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
   ASSERT_TRUE(axis);
   const FoldSession session(tube);
   std::atomic<std::uint64_t> all{0};
-  Deadline never;
-  never.evaluations = &all;
   std::mt19937_64 random(5);
   const auto started = std::chrono::steady_clock::now();
-  const std::vector<FoldSuggestion> whole =
-      suggestTubeRings(session, fitter, *axis, targetSamples, 1, never, random, 2);
+  const std::vector<FoldSuggestion> whole = suggestTubeRings(
+      session, fitter, *axis, targetSamples, 1, testing::counting(Deadline{}, all), random, 2);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   ASSERT_EQ(whole.size(), 1u);
 
   std::atomic<std::uint64_t> evaluations{0};
-  Deadline deadline = Deadline::in(0.25 * seconds);
-  deadline.evaluations = &evaluations;
   std::mt19937_64 again(5);
   const std::vector<FoldSuggestion> cut =
-      suggestTubeRings(session, fitter, *axis, targetSamples, 1, deadline, again, 2);
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1,
+                       testing::counting(Deadline::in(0.25 * seconds), evaluations), again, 2);
   ASSERT_EQ(cut.size(), 1u) << "a step the clock cut answered nothing";
   EXPECT_LT(evaluations.load(), all.load());  // the clock cut it
   EXPECT_GE(cut.front().folds.size(), 6u);    // a ring at least

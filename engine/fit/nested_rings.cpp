@@ -119,6 +119,20 @@ std::vector<glm::dvec2> profilePolyline(const ProfileCreases& creases, double sh
   return polyline;
 }
 
+std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& samples,
+                                        const glm::dvec3& centre, const RevolutionAxis& axis,
+                                        std::size_t pointCount) {
+  std::vector<glm::dvec2> profile;
+  const std::size_t stride =
+      std::max<std::size_t>(1, samples.size() / std::max<std::size_t>(1, pointCount));
+  for (std::size_t i = 0; i < samples.size(); i += stride) {
+    const glm::dvec3 d = samples[i].position - centre;
+    const double h = glm::dot(d, axis.direction);
+    profile.push_back({glm::length(d - h * axis.direction), h});
+  }
+  return profile;
+}
+
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
                                  std::size_t creaseCount, const ProfileCreases* start,
                                  std::mt19937_64& random) {
@@ -359,13 +373,8 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     orders = {symmetry->order};
   }
 
-  std::vector<glm::dvec2> profile;
-  const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
-  for (std::size_t i = 0; i < targetSamples.size(); i += stride) {
-    const glm::dvec3 d = targetSamples[i].position - centre;
-    const double h = glm::dot(d, axis.direction);
-    profile.push_back({glm::length(d - h * axis.direction), h});
-  }
+  const std::vector<glm::dvec2> profile =
+      meridianProfile(targetSamples, centre, axis, kProfilePoints);
 
   // Fits with 1..mostCreases creases, each grown from the one before (the random draws made
   // here, in order, so a seed repeats).

@@ -67,6 +67,12 @@ struct ProfileCreases {
 // The polyline's vertices: the centre, each crease, the rim.
 std::vector<glm::dvec2> profilePolyline(const ProfileCreases& creases, double sheetRadius);
 
+// The target's meridian profile: up to `pointCount` of `samples` (every k-th, in order) as
+// (distance from `axis.direction` through `centre`, height along it).
+std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& samples,
+                                        const glm::dvec3& centre, const RevolutionAxis& axis,
+                                        std::size_t pointCount);
+
 // The best `creaseCount` creases for a flat sheet of radius `sheetRadius` toward the target's
 // profile points (r, z) (see above). `start`: a fit with fewer creases to grow from (may be empty).
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,

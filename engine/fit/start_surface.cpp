@@ -71,13 +71,8 @@ std::optional<double> ringsReach(const Sheet& disk, const std::vector<SurfaceSam
     const glm::dvec3 d = p - centre;
     radius = std::max(radius, glm::length(d - glm::dot(d, axis.direction) * axis.direction));
   }
-  std::vector<glm::dvec2> profile;
-  const std::size_t stride = std::max<std::size_t>(1, samples.size() / kRingsProfilePoints);
-  for (std::size_t i = 0; i < samples.size(); i += stride) {
-    const glm::dvec3 d = samples[i].position - centre;
-    const double h = glm::dot(d, axis.direction);
-    profile.push_back({glm::length(d - h * axis.direction), h});
-  }
+  const std::vector<glm::dvec2> profile =
+      meridianProfile(samples, centre, axis, kRingsProfilePoints);
   std::mt19937_64 random(38);
   std::optional<ProfileCreases> fit;
   double best = 1e300;
