@@ -214,7 +214,250 @@ void moveVertices(const BarHingeModel& model, double dt, double keep, const glm:
   });
 }
 
+// The blocked step (BarHingeModel::stepBlocks): block `block`'s elements write only the slots of
+// the block's own vertices (those in gather order [lo, lo + span)), read this step's positions,
+// velocities and angles, and the block's vertices move into the next ones; the same expressions
+// in the same order as scatterElementForces and moveVertices, so the same bits.
+struct BlockStep {
+  const BarHingeModel& model;
+  const glm::dvec3* x;
+  const glm::dvec3* velocity;
+  const double* angles;
+  const double* target;
+  const glm::dvec3* contact;
+  double dampingRatio, dt, keep;
+  glm::dvec3* forces;
+  glm::dvec3* nextX;
+  glm::dvec3* nextVelocity;
+  double* nextAngles;
+};
+
+// `count` (<= kBarLanes) of a block's bars (`list`): barLanes' lanes, each force written to the
+// ends the block owns (+f at the first, -f at the second).
+CURVEFOLD_LANE_CLONES void blockBarLanes(const BlockStep& step, const std::uint32_t* list,
+                                         std::size_t count, std::uint32_t lo, std::uint32_t span) {
+  constexpr std::size_t kLanes = kBarLanes;
+  const BarHingeModel& model = step.model;
+  const glm::dvec3* x = step.x;
+  const glm::dvec3* velocity = step.velocity;
+  alignas(64) double in[6][kLanes], parameters[3][kLanes], out[3][kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const std::uint32_t i = list[std::min(k, count - 1)];
+    const std::array<std::uint32_t, 2>& bar = model.bars[i];
+    const glm::dvec3 delta = x[bar[1]] - x[bar[0]];
+    const glm::dvec3 relative = velocity[bar[1]] - velocity[bar[0]];
+    for (int axis = 0; axis < 3; ++axis) {
+      in[axis][k] = delta[axis];
+      in[3 + axis][k] = relative[axis];
+    }
+    parameters[0][k] = model.barStiffness[i];
+    parameters[1][k] = model.barLength[i];
+    parameters[2][k] = step.dampingRatio * model.barDamping[i];
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const glm::dvec3 force = hinge_kernel::barForce(
+        glm::dvec3(in[0][k], in[1][k], in[2][k]), glm::dvec3(in[3][k], in[4][k], in[5][k]),
+        parameters[0][k], parameters[1][k], parameters[2][k]);
+    for (int axis = 0; axis < 3; ++axis) out[axis][k] = force[axis];
+  }
+  const std::uint32_t* scatter = model.scatterSlots.data();
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t i = list[k];
+    const glm::dvec3 force(out[0][k], out[1][k], out[2][k]);
+    const std::uint32_t first = scatter[2 * i] - lo, second = scatter[2 * i + 1] - lo;
+    if (first < span) step.forces[lo + first] = force;
+    if (second < span) step.forces[lo + second] = -force;
+  }
+}
+
+// `count` (<= kHingeLanes) of a block's hinges (`list`): hingeLanes' lanes, each force written to
+// the vertices the block owns, each angle by the block that owns the hinge's a (vertices
+// [v0, v0 + vertices)).
+CURVEFOLD_LANE_CLONES void blockHingeLanes(const BlockStep& step, const std::uint32_t* list,
+                                           std::size_t count, std::uint32_t lo, std::uint32_t span,
+                                           std::uint32_t v0, std::uint32_t vertices) {
+  constexpr std::size_t kLanes = kHingeLanes;
+  const BarHingeModel& model = step.model;
+  const glm::dvec3* x = step.x;
+  alignas(64) double in[12][kLanes], previous[kLanes];
+  alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    const std::uint32_t j = list[std::min(k, count - 1)];
+    const Hinge& h = model.hinges[j];
+    const std::uint32_t corners[4] = {h.a, h.b, h.c, h.d};
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) in[3 * v + axis][k] = x[corners[v]][axis];
+    previous[k] = step.angles[j];
+  }
+  for (std::size_t k = 0; k < kLanes; ++k) {
+    std::array<glm::dvec3, 4> gradient;
+    double a;
+    const bool ok = hinge_kernel::angleWithGradientUsual(
+        glm::dvec3(in[0][k], in[1][k], in[2][k]), glm::dvec3(in[3][k], in[4][k], in[5][k]),
+        glm::dvec3(in[6][k], in[7][k], in[8][k]), glm::dvec3(in[9][k], in[10][k], in[11][k]),
+        previous[k], a, gradient);
+    angle[k] = a;
+    usual[k] = ok ? 1.0 : 0.0;
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis) out[3 * v + axis][k] = gradient[v][axis];
+  }
+  const std::uint32_t* scatter = model.scatterSlots.data() + model.hingeSlot0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t j = list[k];
+    const Hinge& h = model.hinges[j];
+    std::array<glm::dvec3, 4> gradient;
+    if (usual[k] != 0.0) {
+      for (int v = 0; v < 4; ++v)
+        gradient[v] = glm::dvec3(out[3 * v][k], out[3 * v + 1][k], out[3 * v + 2][k]);
+    } else {
+      angle[k] =
+          hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k], gradient);
+    }
+    if (h.a - v0 < vertices) step.nextAngles[j] = angle[k];
+    const double torque = -model.hingeStiffness[j] * (angle[k] - step.target[j]);
+    for (int v = 0; v < 4; ++v) {
+      const std::uint32_t slot = scatter[4 * j + v] - lo;
+      if (slot < span) step.forces[lo + slot] = torque * gradient[v];
+    }
+  }
+}
+
+// One block's elements, then its vertices' sums and moves.
+void stepBlock(const BlockStep& step, std::size_t block) {
+  const BarHingeModel& model = step.model;
+  const BarHingeModel::StepBlocks& blocks = model.stepBlocks;
+  const std::uint32_t v0 = blocks.vertexBegin[block], v1 = blocks.vertexBegin[block + 1];
+  const std::uint32_t* offsets = model.gatherOffsets.data();
+  const std::uint32_t lo = offsets[v0], span = offsets[v1] - lo;
+  for (std::uint32_t k = blocks.barOffsets[block], end = blocks.barOffsets[block + 1]; k < end;
+       k += kBarLanes)
+    blockBarLanes(step, blocks.bars.data() + k, std::min<std::size_t>(kBarLanes, end - k), lo,
+                  span);
+  for (std::uint32_t k = blocks.hingeOffsets[block], end = blocks.hingeOffsets[block + 1]; k < end;
+       k += kHingeLanes)
+    blockHingeLanes(step, blocks.hinges.data() + k, std::min<std::size_t>(kHingeLanes, end - k), lo,
+                    span, v0, v1 - v0);
+  const std::uint32_t* glueScatter = model.scatterSlots.data() + model.glueSlot0;
+  for (std::uint32_t k = blocks.glueOffsets[block]; k < blocks.glueOffsets[block + 1]; ++k) {
+    const std::uint32_t g = blocks.glue[k];
+    const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
+    const glm::dvec3 force = model.glueStiffness * (step.x[b] - step.x[a]);
+    const std::uint32_t first = glueScatter[2 * g] - lo, second = glueScatter[2 * g + 1] - lo;
+    if (first < span) step.forces[lo + first] = force;
+    if (second < span) step.forces[lo + second] = -force;
+  }
+  const std::uint8_t* pinned = model.pinned.data();
+  const double* mass = model.mass.data();
+  for (std::uint32_t v = v0; v < v1; ++v) {
+    if (pinned[v]) {
+      step.nextVelocity[v] = step.velocity[v];
+      step.nextX[v] = step.x[v];
+      continue;
+    }
+    glm::dvec3 total(0.0);
+    for (std::uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) total += step.forces[k];
+    if (step.contact) total += step.contact[v];
+    const glm::dvec3 velocity = (step.velocity[v] + (step.dt / mass[v]) * total) * step.keep;
+    step.nextVelocity[v] = velocity;
+    step.nextX[v] = step.x[v] + step.dt * velocity;
+  }
+}
+
+bool blocksHold(const BarHingeModel& model) {
+  const BarHingeModel::StepBlocks& blocks = model.stepBlocks;
+  return blocks.blockCount() > 0 && blocks.vertexCount == model.vertexCount() &&
+         blocks.barCount == model.bars.size() && blocks.hingeCount == model.hinges.size() &&
+         blocks.glueCount == model.glue.size();
+}
+
+// One step by blocks: one parallel pass, then the next state swapped in.
+void stepByBlocks(const BarHingeModel& model, double dt, double keep, double dampingRatio,
+                  const glm::dvec3* contact, SimulationState& state) {
+  const BlockStep step{model,
+                       state.positions.data(),
+                       state.velocities.data(),
+                       state.hingeAngles.data(),
+                       state.targets.data(),
+                       contact,
+                       dampingRatio,
+                       dt,
+                       keep,
+                       state.slotForces.data(),
+                       state.nextPositions.data(),
+                       state.nextVelocities.data(),
+                       state.nextAngles.data()};
+  forEachRange(model.stepBlocks.blockCount(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t block = begin; block < end; ++block) stepBlock(step, block);
+  });
+  state.positions.swap(state.nextPositions);
+  state.velocities.swap(state.nextVelocities);
+  state.hingeAngles.swap(state.nextAngles);
+}
+
 }  // namespace
+
+BarHingeModel::StepBlocks buildStepBlocks(const BarHingeModel& model, std::size_t blockVertices,
+                                          double maxExtra) {
+  BarHingeModel::StepBlocks blocks;
+  const std::size_t n = model.vertexCount();
+  blockVertices = std::max<std::size_t>(blockVertices, 1);
+  if (n <= blockVertices) return blocks;
+  const std::size_t count = (n + blockVertices - 1) / blockVertices;
+  std::vector<std::uint32_t> blockOf(n);
+  for (std::size_t k = 0; k <= count; ++k)
+    blocks.vertexBegin.push_back(static_cast<std::uint32_t>(n * k / count));
+  for (std::size_t k = 0; k < count; ++k)
+    for (std::uint32_t v = blocks.vertexBegin[k]; v < blocks.vertexBegin[k + 1]; ++v)
+      blockOf[v] = static_cast<std::uint32_t>(k);
+  // Each element into every block one of its vertices is in, by counting then filling (each list
+  // ascending, as the elements are visited in order).
+  const auto listElements = [&](std::size_t elements, const auto& verticesOf,
+                                std::vector<std::uint32_t>& offsets,
+                                std::vector<std::uint32_t>& list) {
+    offsets.assign(count + 1, 0);
+    const auto forBlocksOf = [&](std::size_t e, const auto& visit) {
+      std::uint32_t seen[4];
+      int seenCount = 0;
+      for (std::uint32_t v : verticesOf(e)) {
+        const std::uint32_t b = blockOf[v];
+        if (std::find(seen, seen + seenCount, b) != seen + seenCount) continue;
+        seen[seenCount++] = b;
+        visit(b);
+      }
+    };
+    for (std::size_t e = 0; e < elements; ++e)
+      forBlocksOf(e, [&](std::uint32_t b) { ++offsets[b + 1]; });
+    for (std::size_t k = 0; k < count; ++k) offsets[k + 1] += offsets[k];
+    list.resize(offsets[count]);
+    std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+    for (std::size_t e = 0; e < elements; ++e)
+      forBlocksOf(e, [&](std::uint32_t b) { list[fill[b]++] = static_cast<std::uint32_t>(e); });
+  };
+  listElements(
+      model.bars.size(), [&](std::size_t i) { return model.bars[i]; }, blocks.barOffsets,
+      blocks.bars);
+  listElements(
+      model.hinges.size(),
+      [&](std::size_t j) {
+        const Hinge& h = model.hinges[j];
+        return std::array<std::uint32_t, 4>{h.a, h.b, h.c, h.d};
+      },
+      blocks.hingeOffsets, blocks.hinges);
+  listElements(
+      model.glue.size(), [&](std::size_t g) { return model.glue[g]; }, blocks.glueOffsets,
+      blocks.glue);
+  // Boundary elements are computed once per block they touch: past maxExtra more, two passes win.
+  const double elements =
+      static_cast<double>(model.bars.size() + model.hinges.size() + model.glue.size());
+  const double listed =
+      static_cast<double>(blocks.bars.size() + blocks.hinges.size() + blocks.glue.size());
+  if (listed > (1.0 + maxExtra) * elements) return {};
+  blocks.vertexCount = n;
+  blocks.barCount = model.bars.size();
+  blocks.hingeCount = model.hinges.size();
+  blocks.glueCount = model.glue.size();
+  return blocks;
+}
 
 void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState& state,
                  std::size_t steps, const DynamicOptions& options) {
@@ -231,6 +474,17 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   state.slotForces.resize(model.slotCount);  // the bars' slots stay unused (barForces)
   state.barForces.resize(model.bars.size());
 
+  if (blocksHold(model)) {
+    state.nextPositions.resize(model.vertexCount());
+    state.nextVelocities.resize(model.vertexCount());
+    state.nextAngles.resize(model.hinges.size());
+    for (std::size_t step = 0; step < steps; ++step) {
+      stepByBlocks(model, dt, keep, options.dampingRatio, dynamicContactForces(model, state),
+                   state);
+      ++state.steps;
+    }
+    return;
+  }
   for (std::size_t step = 0; step < steps; ++step) {
     scatterElementForces(model, targets, options.dampingRatio, state);
     moveVertices(model, dt, keep, dynamicContactForces(model, state), state);
