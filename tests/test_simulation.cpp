@@ -1,4 +1,3 @@
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -540,90 +539,6 @@ TEST(Simulation, DynamicStepGivesTheBitsOfTheSlotScatterAndGather) {
     EXPECT_EQ(0, std::memcmp(fast.hingeAngles.data(), reference.hingeAngles.data(),
                              fast.hingeAngles.size() * sizeof(double)));
   }
-}
-
-// The blocked step (BarHingeModel::stepBlocks: one pass, each block computing the elements that
-// touch its vertices, boundary ones once per block) gives the two-pass step's bits: blocks of a
-// few vertices (nearly every element on a boundary, angles written by one block only), pins and
-// glue, paper mode with self-contact pushing, one thread and two.
-TEST(Simulation, DynamicStepByBlocksGivesTheBitsOfTwoPasses) {
-  ModelOptions pinnedAndGlued;
-  pinnedAndGlued.pins = {0, 1};
-  pinnedAndGlued.glue = {{6, 20}};
-  ModelOptions paper;
-  paper.mode = SimulationMode::Paper;
-  paper.contact.enabled = true;
-  struct Case {
-    BarHingeModel model;
-    double amount;
-    bool foldOver;  // the right half laid over the left, within the contact's reach
-  };
-  std::vector<Case> cases;
-  cases.push_back(
-      {buildModel(testing::miuraOri(6, 4, 0.02, 0.02, 0.006, 2.0), pinnedAndGlued), 0.6, false});
-  cases.push_back({buildModel(creasedSquare(40, 20, 90.0, 0.2)), 0.6, false});
-  cases.push_back({buildModel(creasedSquare(20, 10, 180.0, 0.2), paper), 1.0, true});
-  for (const Case& c : cases) {
-    SimulationState start = flatState(c.model);
-    if (c.foldOver) {
-      for (glm::dvec3& p : start.positions)
-        if (p.x > 0.1 + 1e-9) p = {0.2 - p.x, p.y, 1.9e-4};
-      start.hingeAngles = hingeAngles(c.model, start.positions);
-    }
-    BarHingeModel twoPasses = c.model;
-    twoPasses.stepBlocks = {};
-    SimulationState reference = start;
-    stepDynamic(twoPasses, c.amount, reference, 200);
-    double travel = 0.0;
-    for (std::size_t v = 0; v < c.model.vertexCount(); ++v)
-      travel = std::max(travel, glm::distance(reference.positions[v], start.positions[v]));
-    EXPECT_GT(travel, 1e-4);
-    for (const std::size_t blockVertices : {5, 64, 1000}) {
-      if (blockVertices >= c.model.vertexCount()) continue;
-      BarHingeModel blocked = c.model;
-      blocked.stepBlocks = buildStepBlocks(blocked, blockVertices, 100.0);
-      ASSERT_GT(blocked.stepBlocks.blockCount(), 1u) << blockVertices;
-      for (const int threads : {1, 2}) {
-        SCOPED_TRACE(::testing::Message()
-                     << blockVertices << " vertices a block, " << threads << " threads");
-        tbb::task_arena arena(threads);
-        SimulationState state = start;
-        // Two calls: the swapped buffers carry over from one to the next.
-        arena.execute([&] {
-          stepDynamic(blocked, c.amount, state, 150);
-          stepDynamic(blocked, c.amount, state, 50);
-        });
-        EXPECT_EQ(0, std::memcmp(state.positions.data(), reference.positions.data(),
-                                 state.positions.size() * sizeof(glm::dvec3)));
-        EXPECT_EQ(0, std::memcmp(state.velocities.data(), reference.velocities.data(),
-                                 state.velocities.size() * sizeof(glm::dvec3)));
-        ASSERT_EQ(state.hingeAngles.size(), reference.hingeAngles.size());
-        EXPECT_EQ(0, std::memcmp(state.hingeAngles.data(), reference.hingeAngles.data(),
-                                 state.hingeAngles.size() * sizeof(double)));
-        EXPECT_EQ(state.steps, reference.steps);
-      }
-    }
-  }
-}
-
-// The blocks of a mesh whose vertex order is scattered would compute most elements twice or more:
-// there are none, and the step takes its two passes.
-TEST(Simulation, DynamicStepBlocksLeaveAScatteredVertexOrder) {
-  CreasePattern pattern = creasedSquare(60, 30, 90.0, 0.2);
-  std::vector<std::uint32_t> order(pattern.vertices.size());
-  for (std::size_t v = 0; v < order.size(); ++v) order[v] = static_cast<std::uint32_t>(v);
-  std::shuffle(order.begin(), order.end(), std::mt19937(7));
-  CreasePattern shuffled = pattern;
-  for (std::size_t v = 0; v < order.size(); ++v) shuffled.vertices[order[v]] = pattern.vertices[v];
-  for (CreasePatternEdge& edge : shuffled.edges) {
-    edge.a = order[edge.a];
-    edge.b = order[edge.b];
-    if (edge.a > edge.b) std::swap(edge.a, edge.b);
-  }
-  for (auto& triangle : shuffled.triangles)
-    for (std::uint32_t& v : triangle) v = order[v];
-  EXPECT_GT(buildStepBlocks(buildModel(pattern), 512).blockCount(), 1u);
-  EXPECT_EQ(buildStepBlocks(buildModel(shuffled), 512).blockCount(), 0u);
 }
 
 // Bundled designs: the final sheet of each named example recording (examples/recordings and

@@ -447,7 +447,6 @@ BarHingeModel buildModel(const CreasePattern& pattern, const ModelOptions& optio
                         std::min(model.mass[model.bars[i][0]], model.mass[model.bars[i][1]]));
   model.contact = contactParameters(model, options.contact, options.paper.thickness);
   model.timeStep = stableTimeStep(model);
-  model.stepBlocks = buildStepBlocks(model);
   double lightest = INFINITY;
   for (double m : model.mass) lightest = std::min(lightest, m);
   setDynamicContactStep(model.contact, 0.375 * lightest / (model.timeStep * model.timeStep));

@@ -141,20 +141,6 @@ struct BarHingeModel {
   // ends read it there, +f at slot 2i, -f at 2i + 1, rather than through two scattered slots.
   std::vector<std::uint32_t> gatherBarEnd;
 
-  // The dynamic step's blocks (dynamic_solver.hpp, buildStepBlocks): consecutive vertex ranges,
-  // each with the elements that write one of its vertices, so that one task computes a block's
-  // forces and moves its vertices with no pass between (an element on a boundary is computed by
-  // each block it touches). Empty: the step takes two passes over the whole model instead.
-  struct StepBlocks {
-    std::vector<std::uint32_t> vertexBegin;  // block k: vertices [vertexBegin[k], [k + 1])
-    // Block k's bars are bars[barOffsets[k] .. barOffsets[k + 1]), ascending; hinges and glue so.
-    std::vector<std::uint32_t> barOffsets, bars, hingeOffsets, hinges, glueOffsets, glue;
-    // The model's counts as the blocks were built (they are used only while these still hold).
-    std::size_t vertexCount = 0, barCount = 0, hingeCount = 0, glueCount = 0;
-    std::size_t blockCount() const { return vertexBegin.empty() ? 0 : vertexBegin.size() - 1; }
-  };
-  StepBlocks stepBlocks;
-
   // stableTimeStep(model) as built (dynamic_solver.hpp); recompute it after changing a stiffness.
   double timeStep = 0.0;
 
@@ -254,14 +240,10 @@ void forEachIndex(std::size_t count, const Body& body) {
 struct SimulationState {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> velocities;
-  std::vector<double> hingeAngles;     // unwrapped, as of the last step or iteration
-  std::size_t steps = 0;               // dynamic steps taken
-  std::vector<glm::dvec3> slotForces;  // scratch: one force per element slot
-  std::vector<glm::dvec3> barForces;   // scratch: the dynamic step's force of each bar on its a
-  // Scratch of the dynamic step's blocks: the next positions, velocities and angles, written while
-  // other blocks still read this step's, then swapped in.
-  std::vector<glm::dvec3> nextPositions, nextVelocities;
-  std::vector<double> nextAngles;
+  std::vector<double> hingeAngles;        // unwrapped, as of the last step or iteration
+  std::size_t steps = 0;                  // dynamic steps taken
+  std::vector<glm::dvec3> slotForces;     // scratch: one force per element slot
+  std::vector<glm::dvec3> barForces;      // scratch: the dynamic step's force of each bar on its a
   std::vector<double> targets;            // scratch: the hinge targets of the last step
   ContactList contactPairs;               // the dynamic solver's contact pairs (contact.hpp)
   std::vector<glm::dvec3> contactForces;  // scratch: each vertex's contact force, last step

@@ -37,16 +37,6 @@ struct DynamicOptions {
 // BarHingeModel::timeStep, which stepDynamic uses (recompute it after changing a stiffness).
 double stableTimeStep(const BarHingeModel& model);
 
-// The dynamic step's blocks of a model (BarHingeModel::stepBlocks): consecutive vertex ranges of
-// about `blockVertices`, each with the elements that write one of its vertices. A task then takes
-// a block's forces, sums and moves its vertices at once, so a step is one parallel pass rather than
-// two, and a block's forces stay in its core's cache between being written and read. Empty when
-// the model has one block or fewer, or when the vertex order is so scattered that boundary
-// elements (computed once per block they touch) would add more than `maxExtra` of the step's
-// work (listed elements over elements, less one): stepDynamic then takes its two passes.
-BarHingeModel::StepBlocks buildStepBlocks(const BarHingeModel& model,
-                                          std::size_t blockVertices = 1024, double maxExtra = 0.5);
-
 // Advances the state by `steps` fixed steps toward the fold amount (0..1).
 void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState& state,
                  std::size_t steps, const DynamicOptions& options = {});
