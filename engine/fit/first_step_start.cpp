@@ -54,7 +54,7 @@ std::string vectorText(const glm::dvec3& v) {
 }  // namespace
 
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
-                                          const TriangleMesh& target, bool square) {
+                                          const TriangleMesh& target, const std::string& kind) {
   const std::optional<glm::dvec3> normal = flatNormal(flat);
   if (!normal || step.folds.empty() || flat.positions.empty()) return std::nullopt;
   glm::dvec3 centre(0.0), lo(1e300), hi(-1e300);
@@ -84,13 +84,21 @@ std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestio
   }
   if (!any) return std::nullopt;
   double width = grown[0] + grown[1], height = grown[2] + grown[3];
-  const glm::dvec3 middle =
+  glm::dvec3 middle =
       centre + 0.5 * (grown[0] - grown[1]) * line + 0.5 * (grown[2] - grown[3]) * across;
+  const bool square = kind == "square", disk = kind == "disk";
   if (square) width = height = std::max(width, height);
   PlacedStart out;
-  out.surface = square ? "square" : "rectangle";
-  out.parameters = square ? SurfaceParameters{{"size", width}}
-                          : SurfaceParameters{{"width", width}, {"height", height}};
+  out.surface = disk ? "disk" : square ? "square" : "rectangle";
+  if (disk) {
+    // A disk stays round about its centre (a disk's rim moved off centre would leave one side
+    // short): its radius grown to the end that fell shortest.
+    middle = centre;
+    out.parameters = {{"radius", *std::max_element(grown, grown + 4)}};
+  } else {
+    out.parameters = square ? SurfaceParameters{{"size", width}}
+                            : SurfaceParameters{{"width", width}, {"height", height}};
+  }
   out.placement =
       "on the target's footprint with the paper its first step folds away given back, "
       "centred at " +
@@ -135,8 +143,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     }
     const std::vector<FoldSuggestion> steps = tryStart(candidate, false);
     if (steps.empty() || deadline.passed()) continue;
+    const std::string kind = candidate.surface == "disk" ? "disk" : square ? "square" : "rectangle";
     if (const std::optional<PlacedStart> grown =
-            paperGivenBack(candidate.sheet, steps.front(), fitter.target(), square))
+            paperGivenBack(candidate.sheet, steps.front(), fitter.target(), kind))
       tryStart(*grown, true);
   }
   if (best) best->cutShort = cutShort;
@@ -148,13 +157,14 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   // A creased start (folded from that kind at its defaults, start_surface.hpp) is read back by
   // the unfolding onto that very sheet: another sheet would lose the reading.
   if (start.creased || !fitter.smoothTarget() || fitter.revolutionTarget() ||
-      !(kind.empty() || kind == "square" || kind == "rectangle"))
+      !(kind.empty() || kind == "square" || kind == "rectangle" || kind == "disk"))
     return std::nullopt;
   std::vector<PlacedStart> candidates{
       {start.surface, start.parameters, start.placement,
        start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
-  if (kind.empty() && !flatNormal(candidates.front().sheet))
-    for (PlacedStart& flat : footprintStarts(sampleSurface(fitter.target(), kSamples, 3)))
+  // A disk asked for is cut to the target's footprint too (a pringle's rim), though flat.
+  if ((kind.empty() && !flatNormal(candidates.front().sheet)) || kind == "disk")
+    for (PlacedStart& flat : footprintStarts(sampleSurface(fitter.target(), kSamples, 3), kind))
       candidates.push_back(std::move(flat));
   std::optional<FirstStepStart> chosen =
       startByFirstStep(candidates, fitter, deadline, kind == "square");
