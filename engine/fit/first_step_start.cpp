@@ -19,6 +19,7 @@ constexpr std::size_t kSamples = 4000;
 // its fit ended 11.2% from the target (Hausdorff) where the parabola's ended 7.46%.
 constexpr double kHausdorffWeight = 0.5;
 constexpr double kLeastShortfall = 0.005;
+constexpr double kHalfShare = 0.5;
 
 // The unit normal of a flat sheet (none when it is not flat within 1e-6 of its size).
 std::optional<glm::dvec3> flatNormal(const Sheet& sheet) {
@@ -54,7 +55,8 @@ std::string vectorText(const glm::dvec3& v) {
 }  // namespace
 
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
-                                          const TriangleMesh& target, const std::string& kind) {
+                                          const TriangleMesh& target, const std::string& kind,
+                                          double share) {
   const std::optional<glm::dvec3> normal = flatNormal(flat);
   if (!normal || step.folds.empty() || flat.positions.empty()) return std::nullopt;
   glm::dvec3 centre(0.0), lo(1e300), hi(-1e300);
@@ -80,7 +82,7 @@ std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestio
     const double shortfall = std::max(0.0, reach(target.positions, centre, ends[i]) -
                                                reach(step.sheet.positions, centre, ends[i]));
     any = any || shortfall > kLeastShortfall * size;
-    grown[i] = reach(flat.positions, centre, ends[i]) + shortfall;
+    grown[i] = reach(flat.positions, centre, ends[i]) + share * shortfall;
   }
   if (!any) return std::nullopt;
   double width = grown[0] + grown[1], height = grown[2] + grown[3];
@@ -144,9 +146,17 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     const std::vector<FoldSuggestion> steps = tryStart(candidate, false);
     if (steps.empty() || deadline.passed()) continue;
     const std::string kind = candidate.surface == "disk" ? "disk" : square ? "square" : "rectangle";
-    if (const std::optional<PlacedStart> grown =
-            paperGivenBack(candidate.sheet, steps.front(), fitter.target(), kind))
-      tryStart(*grown, true);
+    // All the paper given back, then half of it: a grown sheet's corners (a disk's sides, where
+    // its cross fell short least) may stand past a rounded footprint as far as the ends fell short.
+    for (const double share : {1.0, kHalfShare}) {
+      if (deadline.passed()) {
+        cutShort = true;
+        break;
+      }
+      if (const std::optional<PlacedStart> grown =
+              paperGivenBack(candidate.sheet, steps.front(), fitter.target(), kind, share))
+        tryStart(*grown, true);
+    }
   }
   if (best) best->cutShort = cutShort;
   return best;

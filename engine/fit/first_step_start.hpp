@@ -36,10 +36,12 @@ namespace curvefold {
 // The flat sheet `flat` grown where its first step `step` (a cross from it) ended short of
 // `target` (see above): with `kind` "rectangle" a rectangle along the cross's first line,
 // "square" a square of its larger side, "disk" a disk about the same centre grown to the end that
-// fell shortest. None where no end fell short by over 0.5% of the sheet's size, or `flat` is not
-// flat.
+// fell shortest. `share` of each shortfall is given back (startByFirstStep tries all and half:
+// a grown sheet's corners stand past a rounded footprint). None where no end fell short by over
+// 0.5% of the sheet's size, or `flat` is not flat.
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
-                                          const TriangleMesh& target, const std::string& kind);
+                                          const TriangleMesh& target, const std::string& kind,
+                                          double share = 1.0);
 
 struct FirstStepStart {
   PlacedStart start;
@@ -49,9 +51,9 @@ struct FirstStepStart {
   bool cutShort = false;                  // the deadline left candidates untried
 };
 
-// Of `candidates` (and, for each flat one whose first step is a fold, its sheet with the paper
-// given back: a disk's a disk, else a rectangle, or with `square` a square), the one whose first
-// step lands nearest. None when
+// Of `candidates` (and, for each flat one whose first step is a fold, its sheet with all and with
+// half the paper given back: a disk's a disk, else a rectangle, or with `square` a square), the
+// one whose first step lands nearest. None when
 // `candidates` is empty.
 std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
                                                const FoldFitter& fitter, const Deadline& deadline,
