@@ -383,6 +383,28 @@ TEST(FirstStepStart, GivesBackThePaperACrossFoldsAwaySoTheSaddlesEndsAreCovered)
   EXPECT_LT(most, 0.1 + 0.04);
 }
 
+// A saddle over a disk (a pringle's outline, the classic designer's saddle): the footprint's
+// square and rectangle stand past its rim at their corners (41 mm past the disk's 100 mm
+// radius), and a cross from either leaves those corners out (its first step 12.7% / 12.4% of the
+// diagonal, Hausdorff, measured). The footprint is round, so a disk cut to it is offered first,
+// and its first step, a cross on the disk grown by the paper the cross folds away, lands nearest
+// (6.3%).
+TEST(FirstStepStart, ASaddleOverADiskStartsFromADiskCutToItsRim) {
+  Sheet disk = makeSurface("disk", {{"radius", 0.1}, {"resolution", 24}});
+  for (glm::dvec3& p : disk.positions) p.z = (p.x * p.x - p.y * p.y) / 0.3;
+  const TriangleMesh saddle = meshOf(disk);
+  const FoldFitter fitter(saddle, quickSettings());
+  const std::vector<PlacedStart> footprint = footprintStarts(sampleSurface(saddle, 4000, 3));
+  ASSERT_FALSE(footprint.empty());
+  EXPECT_EQ(footprint.front().surface, "disk");
+  const std::optional<FirstStepStart> chosen = startByFirstStep(footprint, fitter, {});
+  ASSERT_TRUE(chosen.has_value());
+  EXPECT_EQ(chosen->start.surface, "disk") << chosen->start.placement;
+  const double diagonal = fitter.targetDiagonal();
+  EXPECT_LT(chosen->hausdorff, 0.07 * diagonal) << chosen->start.placement;
+  EXPECT_LT(chosen->chamfer, 0.015 * diagonal);
+}
+
 // A hypar over a square turned 30 degrees about its normal, asked for a square: the square
 // placed by the target's principal axes is turned anyhow (a square outline's two axes spread
 // alike) and sized by the target's area, so its corners stand out past the target's sides; the

@@ -34,11 +34,14 @@
 namespace curvefold {
 
 // The flat sheet `flat` grown where its first step `step` (a cross from it) ended short of
-// `target` (see above): a rectangle along the cross's first line, or with `square` a square of
-// its larger side. None where no end fell short by over 0.5% of the sheet's size, or `flat` is
-// not flat.
+// `target` (see above): with `kind` "rectangle" a rectangle along the cross's first line,
+// "square" a square of its larger side, "disk" a disk about the same centre grown to the end that
+// fell shortest. `share` of each shortfall is given back (startByFirstStep tries all and half:
+// a grown sheet's corners stand past a rounded footprint). None where no end fell short by over
+// 0.5% of the sheet's size, or `flat` is not flat.
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
-                                          const TriangleMesh& target, bool square);
+                                          const TriangleMesh& target, const std::string& kind,
+                                          double share = 1.0);
 
 struct FirstStepStart {
   PlacedStart start;
@@ -48,19 +51,21 @@ struct FirstStepStart {
   bool cutShort = false;                  // the deadline left candidates untried
 };
 
-// Of `candidates` (and, for each flat one whose first step is a fold, its sheet with the paper
-// given back; `square`: kept a square), the one whose first step lands nearest. None when
+// Of `candidates` (and, for each flat one whose first step is a fold, its sheet with all and with
+// half the paper given back: a disk's a disk, else a rectangle, or with `square` a square), the
+// one whose first step lands nearest. None when
 // `candidates` is empty.
 std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
                                                const FoldFitter& fitter, const Deadline& deadline,
                                                bool square = false);
 
 // chooseStart's `start` toward a smooth target with no axis (fitter.smoothTarget(), not
-// revolutionTarget()), `kind` "", "square" or "rectangle": the start itself and, where it is not
-// flat and no kind was named, the squares and the rectangle cut to the target's footprint
-// (footprintStarts), each with its paper given back, compared by their first steps; `start` becomes
-// the winner (placed) when that is not `start` itself. None (and `start` untouched) where the rule
-// does not apply (a creased start: the target was folded from it) or `start` won.
+// revolutionTarget()), `kind` "", "square", "rectangle" or "disk": the start itself and, where it
+// is not flat and no kind was named, the squares, the rectangle and the disks cut to the target's
+// footprint (footprintStarts; the disks alone for "disk"), each with its paper given back, compared
+// by their first steps; `start` becomes the winner (placed) when that is not `start` itself. None
+// (and `start` untouched) where the rule does not apply (a creased start: the target was folded
+// from it) or `start` won.
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                 const std::string& kind, const Deadline& deadline);
 

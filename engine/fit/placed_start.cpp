@@ -449,6 +449,47 @@ void footprintIn(const std::vector<SurfaceSample>& samples, const Principal& pri
   }
 }
 
+// Disks cut to a round footprint (a pringle's, a scanned chip's): centred on the footprint's
+// box, the one that covers it (its farthest sample's radius) and, for an oblong one, the disk of
+// its mean reach (the support function's mean over kDiskDirections), whose rim lies nearer an
+// ellipse's. Returns whether the footprint is round: under kRoundOutside of the samples lie
+// outside the ellipse inscribed in its least-area box (a rectangle's corners hold a fifth of it),
+// so a disk is tried before the box's square and rectangle, which the clock may then cut.
+constexpr int kDiskDirections = 36;
+constexpr double kRoundOutside = 0.03;
+
+bool footprintDisks(const std::vector<SurfaceSample>& samples, const Principal& principal,
+                    std::vector<PlacedStart>& out) {
+  const FootprintBox box = footprintBox(samples, principal, false);
+  if (!(box.width > 0.0 && box.height > 0.0)) return false;
+  double widest = 0.0;
+  std::size_t outside = 0;
+  std::vector<double> reach(kDiskDirections, -1e300);
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - box.centre;
+    const double x = glm::dot(d, box.x), y = glm::dot(d, box.y);
+    widest = std::max(widest, std::hypot(x, y));
+    const double u = 2.0 * x / box.width, v = 2.0 * y / box.height;
+    if (u * u + v * v > 1.0) ++outside;
+    for (int k = 0; k < kDiskDirections; ++k) {
+      const double angle = 2.0 * std::numbers::pi * k / kDiskDirections;
+      reach[k] = std::max(reach[k], std::cos(angle) * x + std::sin(angle) * y);
+    }
+  }
+  double mean = 0.0;
+  for (const double r : reach) mean += r / kDiskDirections;
+  Frame frame;
+  frame.origin = box.centre;
+  frame.x = box.x;
+  frame.y = box.y;
+  frame.z = glm::cross(frame.x, frame.y);
+  const std::string placement = "on the target's footprint, centred at " +
+                                vectorText(frame.origin) + " normal " + vectorText(frame.z);
+  addPlaced(out, "disk", {{"radius", widest}}, placement, frame);
+  if (mean < 0.97 * widest) addPlaced(out, "disk", {{"radius", mean}}, placement, frame);
+  return static_cast<double>(outside) < kRoundOutside * static_cast<double>(samples.size());
+}
+
 }  // namespace
 
 Sheet sweptParabola(double curvature, double slope, double from, double to, double length,
@@ -492,9 +533,16 @@ Sheet sweptParabola(double curvature, double slope, double from, double to, doub
   return sheet;
 }
 
-std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples) {
+std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples,
+                                         const std::string& kind) {
   std::vector<PlacedStart> out;
-  if (samples.size() >= 10) footprintIn(samples, principalOf(samples), "", out);
+  if (samples.size() < 10) return out;
+  const Principal principal = principalOf(samples);
+  std::vector<PlacedStart> disks;
+  const bool round = footprintDisks(samples, principal, disks);
+  if (kind.empty()) footprintIn(samples, principal, "", out);
+  if (kind.empty() || kind == "disk")
+    out.insert(round ? out.begin() : out.end(), disks.begin(), disks.end());
   return out;
 }
 

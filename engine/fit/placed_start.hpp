@@ -53,9 +53,13 @@ struct PlacedStart {
 std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
                                       const std::string& kind = "");
 
-// The flat sheets cut to the target's footprint alone (the square of its box, the rectangle; see
-// above): a flat start for the cross of pleats (pleat_folds.hpp) where a curved one starts nearer.
-std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples);
+// The flat sheets cut to the target's footprint alone (the square of its box, the rectangle, and
+// disks: the one that covers it and, for an oblong footprint, one of its mean reach; see above): a
+// flat start for the cross of pleats (pleat_folds.hpp) where a curved one starts nearer. The disks
+// come first where the footprint is round (few samples outside the ellipse inscribed in its box);
+// `kind` "disk" gives the disks alone.
+std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples,
+                                         const std::string& kind = "");
 
 // The cylinder of the samples' widest radius about the line through `point` along `direction`
 // (unit), as long as they reach along it: the largest mean distance from the line over 16 bins
