@@ -27,7 +27,7 @@ constexpr std::array<int, 3> kOrders{8, 12, 16};
 // A fit whose wall turns steeper than this from the sheet's plane is also made with rings of
 // these few planes, first (see the header: the flaps of a ring of n overlap more the more planes
 // it has, and on a steep wall their overlap stands out).
-constexpr double kSteepWall = 50.0 * std::numbers::pi / 180.0;
+constexpr double kSteepWall = 60.0 * std::numbers::pi / 180.0;
 constexpr std::array<int, 3> kSteepOrders{4, 5, 6};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 constexpr double kPi = std::numbers::pi;
