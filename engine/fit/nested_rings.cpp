@@ -24,6 +24,11 @@ constexpr std::size_t kPolylinePoints = 48;  // along the sheet's radius
 constexpr int kRestarts = 5;                 // random starts per crease count
 constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
 constexpr std::array<int, 3> kOrders{8, 12, 16};
+// A fit whose wall turns steeper than this from the sheet's plane is also made with rings of
+// these few planes, first (see the header: the flaps of a ring of n overlap more the more planes
+// it has, and on a steep wall their overlap stands out).
+constexpr double kSteepWall = 60.0 * std::numbers::pi / 180.0;
+constexpr std::array<int, 3> kSteepOrders{4, 5, 6};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 constexpr double kPi = std::numbers::pi;
 // A step whose farthest point stands farther than this times the sheet's before it is not
@@ -339,6 +344,13 @@ struct Candidate {
   bool outerFirst = false;
 };
 
+// The steepest turn of a fit's polyline from the sheet's plane (radians).
+double steepest(const ProfileCreases& creases) {
+  double most = 0.0;
+  for (double angle : creases.angles) most = std::max(most, std::abs(angle));
+  return most;
+}
+
 }  // namespace
 
 bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis) {
@@ -400,12 +412,15 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   for (std::size_t f : byScore) {
     const ProfileCreases& fit = fits[f];
     const bool outerToo = fit.arcs.size() >= 2 && outermostFirstHolds(fit, radius);
-    for (int order : orders) {
+    std::vector<int> fitOrders = orders;
+    if (!session.symmetricFolder() && steepest(fit) > kSteepWall)
+      fitOrders.insert(fitOrders.begin(), kSteepOrders.begin(), kSteepOrders.end());
+    for (int order : fitOrders) {
       candidates.push_back({fit, order, false});
       if (batchEnds.empty()) batchEnds.push_back(candidates.size());  // the coarsest first
     }
     if (outerToo)
-      for (int order : orders) candidates.push_back({fit, order, true});
+      for (int order : fitOrders) candidates.push_back({fit, order, true});
     if (batchEnds.back() != candidates.size()) batchEnds.push_back(candidates.size());
   }
   const double turn = unit(random) * 2.0 * kPi;

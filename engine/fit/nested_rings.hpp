@@ -18,7 +18,11 @@
 // plane through its polyline vertex with normal d_{i-1} - d_i (the bisector: the reflection takes
 // one direction to the other), made at n turns about the axis (a RingShape each, innermost first,
 // so each plane is drawn where the rings before it left the flap). Each fit with k = 1..4
-// creases and n in {8, 12, 16} is made on the sheet itself (each plane's fold seeded on its own
+// creases and n in {8, 12, 16} (and first {4, 5, 6} where the fit's wall turns past 60 degrees:
+// a ring's flap is the whole segment beyond its chord, which on a steep cup, chords near the
+// centre, spans several polygon sides at n = 16 and lays the flaps over each other in a pinwheel
+// that stands out past the wall; at n = 4 to 6 only neighbouring corners overlap) is made on the
+// sheet itself (each plane's fold seeded on its own
 // flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
 // through itself, and taken back.
 //
