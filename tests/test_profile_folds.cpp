@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -413,6 +414,73 @@ TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
   EXPECT_LT(after.hausdorff, before.hausdorff) << before.hausdorff << " -> " << after.hausdorff;
   validate(rings.front().sheet);
   EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
+}
+
+// The mean radius about z of `samples` in each of `bins` bands of height over [low, high].
+std::vector<glm::dvec2> radiusByHeight(const std::vector<glm::dvec3>& points, double low,
+                                       double high, int bins) {
+  std::vector<glm::dvec2> sum(bins, glm::dvec2(0.0));
+  std::vector<int> count(bins, 0);
+  for (const glm::dvec3& p : points) {
+    const int b = std::clamp(static_cast<int>((p.z - low) / (high - low) * bins), 0, bins - 1);
+    sum[b] += glm::dvec2(p.z, std::hypot(p.x, p.y));
+    ++count[b];
+  }
+  std::vector<glm::dvec2> out;
+  for (int b = 0; b < bins; ++b)
+    if (count[b] > 0) out.push_back(sum[b] / static_cast<double>(count[b]));
+  return out;
+}
+
+// The cone around a vase's profile (placed_start.hpp, enclosingCone) lies outside every band's
+// mean radius and touches the belly, tapering as the vase does; the cone fitted through the
+// profile (the start fit places) lies inside the belly, where no ring reaches.
+TEST(TubeStart, TheConeAroundAVaseEnclosesItsBelly) {
+  const TriangleMesh vase = vaseInsideCone();
+  const std::vector<SurfaceSample> samples = sampleSurface(vase, 4000, 3);
+  const std::optional<PlacedStart> around =
+      enclosingCone(samples, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, kTubeRingSteepestTaper);
+  ASSERT_TRUE(around);
+  EXPECT_EQ(around->surface, "cone");
+  // Its radius at each height, read from its own vertices, against the vase's.
+  std::vector<glm::dvec3> targetPoints;
+  for (const SurfaceSample& s : samples) targetPoints.push_back(s.position);
+  const std::vector<glm::dvec2> sheet = radiusByHeight(around->sheet.positions, -0.1, 0.1, 8);
+  const std::vector<glm::dvec2> target = radiusByHeight(targetPoints, -0.1, 0.1, 8);
+  ASSERT_EQ(sheet.size(), target.size());
+  double leastGap = 1e300;
+  for (std::size_t b = 0; b < sheet.size(); ++b) {
+    EXPECT_GE(sheet[b].y, target[b].y - 5e-4) << "band at " << target[b].x;
+    leastGap = std::min(leastGap, sheet[b].y - target[b].y);
+  }
+  EXPECT_LT(leastGap, 1.5e-3);  // it touches the belly, not a tube far outside
+  const StartChoice nearest = chooseStart(vase);
+  ASSERT_TRUE(nearest.placed);
+  const std::vector<glm::dvec2> inside = radiusByHeight(nearest.placed->positions, -0.1, 0.1, 8);
+  double deepest = 0.0;
+  for (std::size_t b = 0; b < std::min(inside.size(), target.size()); ++b)
+    deepest = std::max(deepest, target[b].y - inside[b].y);
+  EXPECT_GT(deepest, 1e-3) << "the nearest start should lie inside the belly";
+}
+
+// Toward a vase whose belly stands outside the cone fitted through its profile, the start is the
+// cone around it (first_step_start.hpp, reviseTubeByFirstStep): its rings' first step lands
+// nearer than the nearest cone's, whose belly no ring widens.
+TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
+  const TriangleMesh vase = vaseInsideCone();
+  const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
+  ASSERT_TRUE(fitter.revolutionTarget());
+  StartChoice start = chooseStart(vase);
+  ASSERT_TRUE(start.placed);
+  const Sheet nearest = *start.placed;
+  const std::optional<FirstStepStart> chosen = reviseTubeByFirstStep(start, fitter, "", {});
+  ASSERT_TRUE(chosen);
+  ASSERT_TRUE(start.placed);
+  EXPECT_NE(start.placed->positions, nearest.positions);
+  EXPECT_NE(start.placement.find("around its profile"), std::string::npos) << start.placement;
+  // Its first step lands nearer than the nearest cone's, and nearer than the cone it started.
+  EXPECT_LT(chosen->chamfer, chosen->replacedChamfer) << chosen->replacedChamfer;
+  EXPECT_LT(chosen->chamfer, chosen->startChamfer);
 }
 
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not

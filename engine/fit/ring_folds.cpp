@@ -26,11 +26,9 @@ constexpr double kTubeSpread = 0.03;
 // Samples a side of the distance rings made on the sheet are chosen by: the search's robust
 // distance caps far points, and a tube's untouched neck is all far points.
 constexpr std::size_t kMeasureSamples = 1500;
-// Rings are chosen by Chamfer + this times Hausdorff: each distance over the goal's bound for it
-// (1.5% and 6% of the diagonal, issue 38), so that a ring of 4 which comes closer on average but
-// leaves a flap across the axis is not taken over finer rings (the example vase: 1.39% / 9.8%
-// against 1.57% / 4.32%).
-constexpr double kHausdorffWeight = 0.25;
+// Rings are chosen by Chamfer + kTubeHausdorffWeight times Hausdorff, so that a ring of 4 which
+// comes closer on average but leaves a flap across the axis is not taken over finer rings (the
+// example vase: 1.39% / 9.8% against 1.57% / 4.32%).
 // The tube's axis and the target's are one direction (cosine of the angle between them).
 constexpr double kSameDirection = 0.98;
 // The orders of the two chains' rings: 6 to 16 (a ring of 6 cuts to 0.83 of the radius, 16 to
@@ -122,7 +120,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
   const double before = fitter.approximateDistance(sheet);
   auto measure = [&](const Sheet& folded) {
     const SurfaceDistance d = surfaceDistance(meshOf(folded), fitter.target(), kMeasureSamples);
-    return d.chamfer + kHausdorffWeight * d.hausdorff;
+    return d.chamfer + kTubeHausdorffWeight * d.hausdorff;
   };
   const double measuredBefore = measure(sheet);
   const bool allowCrossing = fitter.settings().allowSelfIntersection;

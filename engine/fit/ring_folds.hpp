@@ -68,6 +68,10 @@ namespace curvefold {
 // its axis (about 20 degrees): a vase's cone (0.13 on the example vase), not a bowl's flat one.
 inline constexpr double kTubeRingSteepestTaper = 0.36;
 
+// How much the Hausdorff distance counts beside the Chamfer distance in the rings' measure (each
+// over the goal's bound for it, 1.5% and 6% of the diagonal; see above).
+inline constexpr double kTubeHausdorffWeight = 0.25;
+
 // The tube or cone `sheet` is about a line along `direction` (its axis through the middle of the
 // sheet's bounding box, its mean radius), or none when it is no such tube (see above).
 struct TubeAxis {
