@@ -564,6 +564,24 @@ TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
   EXPECT_EQ(session.foldCount(), 0u);
 }
 
+// A cone tilted off the world's axes is a tube about its own axis (ring_folds.hpp, tubeAbout):
+// its axis point is the middle of its box across that axis, not of its box about the world's
+// axes, which a tilted cone's wide base pulls off the axis (the placed cones of the tilted
+// lathe, fluted and gourd vases were no tubes, and their rings were never offered).
+TEST(TubeRings, ATiltedConeIsATubeAboutItsAxis) {
+  Sheet cone =
+      makeSurface("cone", {{"base_radius", 0.064}, {"top_radius", 0.036}, {"height", 0.2}});
+  const glm::dvec3 tilt(1.0, 0.0, 1.0);
+  for (glm::dvec3& p : cone.positions) p = turned(p, tilt, 35.0) + glm::dvec3(0.08, 0.04, 0.25);
+  const glm::dvec3 axis = turned({0.0, 1.0, 0.0}, tilt, 35.0);
+  const std::optional<TubeAxis> tube = tubeAbout(cone, axis);
+  ASSERT_TRUE(tube);
+  EXPECT_NEAR(tube->radius, 0.05, 0.002);
+  // On the cone's axis: the centre of its middle circle.
+  const glm::dvec3 offAxis = tube->axis.point - glm::dvec3(0.08, 0.04, 0.25);
+  EXPECT_LT(glm::length(offAxis - glm::dot(offAxis, axis) * axis), 1e-3);
+}
+
 // A bowl's flat cone is no tube: its radius changes faster than kTubeRingSteepestTaper.
 TEST(TubeRings, ABowlsFlatConeIsNoTube) {
   Sheet cone = makeSurface("cone", {{"base_radius", 0.08}, {"top_radius", 0.01}, {"height", 0.05}});
