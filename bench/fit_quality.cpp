@@ -322,7 +322,8 @@ int run(int argc, char** argv) {
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
       StartChoice start = chooseStart(shape.mesh, shape.from.surface);
-      reviseByFirstStep(start, fitter, shape.from.surface, {});
+      if (!reviseByFirstStep(start, fitter, shape.from.surface, {}))
+        reviseTubeByFirstStep(start, fitter, shape.from.surface, {});
       const Sheet initial =
           start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
       const std::string symmetry =

@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -415,6 +416,73 @@ TEST(TubeRings, AConeIsNarrowedTowardAVaseAsATubeIs) {
   EXPECT_TRUE(findSelfIntersections(rings.front().sheet).intersections.empty());
 }
 
+// The mean radius about z of `samples` in each of `bins` bands of height over [low, high].
+std::vector<glm::dvec2> radiusByHeight(const std::vector<glm::dvec3>& points, double low,
+                                       double high, int bins) {
+  std::vector<glm::dvec2> sum(bins, glm::dvec2(0.0));
+  std::vector<int> count(bins, 0);
+  for (const glm::dvec3& p : points) {
+    const int b = std::clamp(static_cast<int>((p.z - low) / (high - low) * bins), 0, bins - 1);
+    sum[b] += glm::dvec2(p.z, std::hypot(p.x, p.y));
+    ++count[b];
+  }
+  std::vector<glm::dvec2> out;
+  for (int b = 0; b < bins; ++b)
+    if (count[b] > 0) out.push_back(sum[b] / static_cast<double>(count[b]));
+  return out;
+}
+
+// The cone around a vase's profile (placed_start.hpp, enclosingCone) lies outside every band's
+// mean radius and touches the belly, tapering as the vase does; the cone fitted through the
+// profile (the start fit places) lies inside the belly, where no ring reaches.
+TEST(TubeStart, TheConeAroundAVaseEnclosesItsBelly) {
+  const TriangleMesh vase = vaseInsideCone();
+  const std::vector<SurfaceSample> samples = sampleSurface(vase, 4000, 3);
+  const std::optional<PlacedStart> around =
+      enclosingCone(samples, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, kTubeRingSteepestTaper);
+  ASSERT_TRUE(around);
+  EXPECT_EQ(around->surface, "cone");
+  // Its radius at each height, read from its own vertices, against the vase's.
+  std::vector<glm::dvec3> targetPoints;
+  for (const SurfaceSample& s : samples) targetPoints.push_back(s.position);
+  const std::vector<glm::dvec2> sheet = radiusByHeight(around->sheet.positions, -0.1, 0.1, 8);
+  const std::vector<glm::dvec2> target = radiusByHeight(targetPoints, -0.1, 0.1, 8);
+  ASSERT_EQ(sheet.size(), target.size());
+  double leastGap = 1e300;
+  for (std::size_t b = 0; b < sheet.size(); ++b) {
+    EXPECT_GE(sheet[b].y, target[b].y - 5e-4) << "band at " << target[b].x;
+    leastGap = std::min(leastGap, sheet[b].y - target[b].y);
+  }
+  EXPECT_LT(leastGap, 1.5e-3);  // it touches the belly, not a tube far outside
+  const StartChoice nearest = chooseStart(vase);
+  ASSERT_TRUE(nearest.placed);
+  const std::vector<glm::dvec2> inside = radiusByHeight(nearest.placed->positions, -0.1, 0.1, 8);
+  double deepest = 0.0;
+  for (std::size_t b = 0; b < std::min(inside.size(), target.size()); ++b)
+    deepest = std::max(deepest, target[b].y - inside[b].y);
+  EXPECT_GT(deepest, 1e-3) << "the nearest start should lie inside the belly";
+}
+
+// Toward a vase whose belly stands outside the cone fitted through its profile, the start is the
+// cone around it (first_step_start.hpp, reviseTubeByFirstStep): its rings' first step lands
+// nearer than the nearest cone's, whose belly no ring widens.
+TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
+  const TriangleMesh vase = vaseInsideCone();
+  const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
+  ASSERT_TRUE(fitter.revolutionTarget());
+  StartChoice start = chooseStart(vase);
+  ASSERT_TRUE(start.placed);
+  const Sheet nearest = *start.placed;
+  const std::optional<FirstStepStart> chosen = reviseTubeByFirstStep(start, fitter, "", {});
+  ASSERT_TRUE(chosen);
+  ASSERT_TRUE(start.placed);
+  EXPECT_NE(start.placed->positions, nearest.positions);
+  EXPECT_NE(start.placement.find("around its profile"), std::string::npos) << start.placement;
+  // Its first step lands nearer than the nearest cone's, and nearer than the cone it started.
+  EXPECT_LT(chosen->chamfer, chosen->replacedChamfer) << chosen->replacedChamfer;
+  EXPECT_LT(chosen->chamfer, chosen->startChamfer);
+}
+
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not
 // finish at the last batch's rate is not started (nor any after it). Two candidates of 60 ms
 // each, then four more of the same cost with 180 ms left at most: refused.
@@ -491,6 +559,24 @@ TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
   validate(cut.front().sheet);
   EXPECT_TRUE(findSelfIntersections(cut.front().sheet).intersections.empty());
   EXPECT_EQ(session.foldCount(), 0u);
+}
+
+// A cone tilted off the world's axes is a tube about its own axis (ring_folds.hpp, tubeAbout):
+// its axis point is the middle of its box across that axis, not of its box about the world's
+// axes, which a tilted cone's wide base pulls off the axis (the placed cones of the tilted
+// lathe, fluted and gourd vases were no tubes, and their rings were never offered).
+TEST(TubeRings, ATiltedConeIsATubeAboutItsAxis) {
+  Sheet cone =
+      makeSurface("cone", {{"base_radius", 0.064}, {"top_radius", 0.036}, {"height", 0.2}});
+  const glm::dvec3 tilt(1.0, 0.0, 1.0);
+  for (glm::dvec3& p : cone.positions) p = turned(p, tilt, 35.0) + glm::dvec3(0.08, 0.04, 0.25);
+  const glm::dvec3 axis = turned({0.0, 1.0, 0.0}, tilt, 35.0);
+  const std::optional<TubeAxis> tube = tubeAbout(cone, axis);
+  ASSERT_TRUE(tube);
+  EXPECT_NEAR(tube->radius, 0.05, 0.002);
+  // On the cone's axis: the centre of its middle circle.
+  const glm::dvec3 offAxis = tube->axis.point - glm::dvec3(0.08, 0.04, 0.25);
+  EXPECT_LT(glm::length(offAxis - glm::dot(offAxis, axis) * axis), 1e-3);
 }
 
 // A bowl's flat cone is no tube: its radius changes faster than kTubeRingSteepestTaper.

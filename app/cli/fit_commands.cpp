@@ -91,8 +91,12 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest
     // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
     // nearer, and gets the paper its pleats fold away given back.
-    const std::optional<FirstStepStart> firstStep =
+    std::optional<FirstStepStart> firstStep =
         symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
+    // Toward a vase, the cone around its profile where its rings land nearer than the start's
+    // (rings only narrow a tube: a belly outside the start is never reached).
+    if (!symmetric && !firstStep)
+      firstStep = reviseTubeByFirstStep(start, fitter, from.surface, deadline);
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/pleat_folds.hpp"
+#include "engine/fit/profile_folds.hpp"
+#include "engine/fit/ring_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -199,6 +201,52 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   start.placement = chosen->start.placement;
   start.placed = chosen->start.sheet;
   start.chamfer = chosen->startChamfer;
+  start.creased = false;
+  start.symmetryDefaults = false;
+  return chosen;
+}
+
+std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                    const std::string& kind,
+                                                    const Deadline& deadline, std::size_t rings) {
+  if (start.creased || !fitter.smoothTarget() || !fitter.revolutionTarget() ||
+      !(kind.empty() || kind == "cone"))
+    return std::nullopt;
+  const std::vector<SurfaceSample> samples = sampleSurface(fitter.target(), kSamples, 3);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
+  if (!axis) return std::nullopt;
+  const Sheet own = start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
+  if (!tubeAbout(own, axis->direction)) return std::nullopt;
+  std::optional<PlacedStart> around =
+      enclosingCone(samples, axis->point, axis->direction, kTubeRingSteepestTaper);
+  if (!around || (kind == "cone" && around->surface != "cone") ||
+      !tubeAbout(around->sheet, axis->direction))
+    return std::nullopt;
+  // Where each start's first step lands: its chains of rings, measured exactly.
+  auto landing = [&](const Sheet& sheet) {
+    FoldSession session(sheet);
+    std::mt19937_64 random(fitter.settings().seed);
+    const std::vector<FoldSuggestion> steps =
+        suggestTubeRings(session, fitter, *axis, samples, 1, deadline, random, rings);
+    return surfaceDistance(meshOf(steps.empty() ? sheet : steps.front().sheet), fitter.target(),
+                           kSamples);
+  };
+  const SurfaceDistance ownLanded = landing(own);
+  if (deadline.passed()) return std::nullopt;
+  const SurfaceDistance aroundLanded = landing(around->sheet);
+  if (!(aroundLanded.chamfer < ownLanded.chamfer)) return std::nullopt;
+  FirstStepStart chosen{*around,
+                        aroundLanded.chamfer,
+                        aroundLanded.hausdorff,
+                        surfaceDistance(meshOf(around->sheet), fitter.target(), kSamples).chamfer,
+                        false,
+                        false,
+                        ownLanded.chamfer};
+  start.surface = around->surface;
+  start.parameters = around->parameters;
+  start.placement = around->placement;
+  start.placed = around->sheet;
+  start.chamfer = chosen.startChamfer;
   start.creased = false;
   start.symmetryDefaults = false;
   return chosen;

@@ -49,6 +49,8 @@ struct FirstStepStart {
   double startChamfer = 0.0;              // before it
   bool grown = false;                     // paperGivenBack's sheet won
   bool cutShort = false;                  // the deadline left candidates untried
+  // reviseTubeByFirstStep: where the start it replaced landed after its first step (Chamfer, m).
+  double replacedChamfer = 0.0;
 };
 
 // Of `candidates` (and, for each flat one whose first step is a fold, its sheet with all and with
@@ -68,5 +70,25 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 // from it) or `start` won.
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                 const std::string& kind, const Deadline& deadline);
+
+// chooseStart's `start` toward a smooth target of revolution (fitter.revolutionTarget(): a vase),
+// `kind` "" or "cone": the start (a tube about the target's axis, tubeAbout) and the cone around
+// the target's profile (enclosingCone: through the belly and the lip), compared by where their
+// first step lands: the tube rings' chains (ring_folds.hpp) of up to `rings` rings each (two: the
+// foot and the neck), measured exactly (4000 samples), by the Chamfer distance alone: two rings
+// are a chain cut short, whose Hausdorff point is the end a later ring narrows (the example vase:
+// the cone around 2.88 mm / 20.2 mm after two rings, 2.5 mm / 7.4 mm after its whole chain; the
+// cone inside 3.25 / 7.4 mm, 2.9 / 5.9 mm). Rings only narrow a
+// tube, so a cone fitted through the profile, nearer at the start, leaves the belly that stands
+// outside it where it is (the example vase: up to 5.8 mm), while the cone around it is narrowed
+// toward the neck and the foot; a gourd's waist between two bellies the cone around does not
+// reach, and the nearer cone wins there. `start` becomes the winner (placed) when that is not
+// `start` itself. None (and `start` untouched) where the rule does not apply (a creased start,
+// a target with no axis, a start that is no tube about the axis) or `start` won. The enclosing
+// cone is tried only while `deadline` allows once the start's own step is measured.
+std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const FoldFitter& fitter,
+                                                    const std::string& kind,
+                                                    const Deadline& deadline,
+                                                    std::size_t rings = 2);
 
 }  // namespace curvefold

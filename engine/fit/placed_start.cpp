@@ -215,6 +215,81 @@ std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samp
   return std::move(out.front());
 }
 
+std::optional<PlacedStart> enclosingCone(const std::vector<SurfaceSample>& samples,
+                                         const glm::dvec3& point, const glm::dvec3& direction,
+                                         double steepest) {
+  constexpr int kHeightBins = 16;
+  constexpr int kFewestInBin = 8;
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : samples) {
+    const double t = glm::dot(s.position - point, direction);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  if (!(hi > lo)) return std::nullopt;
+  std::vector<double> sum(kHeightBins, 0.0);
+  std::vector<int> count(kHeightBins, 0);
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - point;
+    const double t = glm::dot(d, direction);
+    const int b =
+        std::clamp(static_cast<int>((t - lo) / (hi - lo) * kHeightBins), 0, kHeightBins - 1);
+    sum[b] += glm::length(d - t * direction);
+    ++count[b];
+  }
+  std::vector<glm::dvec2> profile;  // (height at the bin's middle, mean radius)
+  for (int b = 0; b < kHeightBins; ++b)
+    if (count[b] >= kFewestInBin)
+      profile.emplace_back(lo + (b + 0.5) * (hi - lo) / kHeightBins, sum[b] / count[b]);
+  if (profile.empty()) return std::nullopt;
+  double meanHeight = 0.0;
+  for (const glm::dvec2& p : profile) meanHeight += p.x;
+  meanHeight /= static_cast<double>(profile.size());
+  // The least mean gap is the least height of the line at the bins' mean height; the best line
+  // touches the profile's upper hull at two bins (or at its widest, level).
+  double bestA = 0.0, bestB = 0.0, bestAtMean = 1e300;
+  auto consider = [&](double a, double b) {
+    if (std::abs(b) > steepest) return;
+    for (const glm::dvec2& p : profile)
+      if (a + b * p.x < p.y - 1e-12) return;
+    if (a + b * meanHeight < bestAtMean) {
+      bestAtMean = a + b * meanHeight;
+      bestA = a;
+      bestB = b;
+    }
+  };
+  double widest = 0.0;
+  for (const glm::dvec2& p : profile) widest = std::max(widest, p.y);
+  consider(widest, 0.0);
+  for (std::size_t i = 0; i < profile.size(); ++i)
+    for (std::size_t j = i + 1; j < profile.size(); ++j) {
+      const double b = (profile[j].y - profile[i].y) / (profile[j].x - profile[i].x);
+      consider(profile[i].y - b * profile[i].x, b);
+    }
+  double bottom = bestA + bestB * lo, top = bestA + bestB * hi;
+  if (!(std::min(bottom, top) > 0.0)) return std::nullopt;
+  glm::dvec3 up = direction;
+  if (bottom < top) {
+    std::swap(bottom, top);
+    up = -direction;
+  }
+  Frame frame;
+  frame.origin = point + 0.5 * (lo + hi) * direction;
+  frame.y = up;
+  frame.x = perpendicular(up);
+  frame.z = glm::cross(frame.x, frame.y);
+  std::vector<PlacedStart> out;
+  const std::string placement =
+      "axis " + vectorText(up) + " through " + vectorText(frame.origin) + ", around its profile";
+  if (top < 0.98 * bottom)
+    addPlaced(out, "cone", {{"base_radius", bottom}, {"top_radius", top}, {"height", hi - lo}},
+              placement, frame);
+  else
+    addPlaced(out, "cylinder", {{"radius", bottom}, {"height", hi - lo}}, placement, frame);
+  if (out.empty()) return std::nullopt;
+  return std::move(out.front());
+}
+
 namespace {
 
 // Least squares w = k s^2 + b s + e t + f over samples in the frame (x: s, y: t, z: w).

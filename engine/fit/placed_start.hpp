@@ -69,6 +69,17 @@ std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& sampl
 std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
                                           const glm::dvec3& point, const glm::dvec3& direction);
 
+// The cone around the samples about the line through `point` along `direction` (unit): of the
+// lines r = a + b t above every height bin's mean radius (16 bins, bins of under 8 samples left
+// out), taper |b| <= `steepest`, the one with the least mean gap over the bins (it touches the
+// profile at two bins, a belly and a lip, or at one as a cylinder); as long as the samples reach
+// along the line. A vase's start from outside (first_step_start.hpp): rings only narrow a tube,
+// so one that lies inside a belly never reaches it. A cylinder where the line is level within 2%
+// of its radius; none where the samples do not spread along the line.
+std::optional<PlacedStart> enclosingCone(const std::vector<SurfaceSample>& samples,
+                                         const glm::dvec3& point, const glm::dvec3& direction,
+                                         double steepest);
+
 // A swept profile w = curvature s^2 + slope s over s in [from, to], ruled over [0, length],
 // `resolution` segments along the longer side, in the catalogue's frame (s along x, rulings
 // along y, w along z), with an exact development.

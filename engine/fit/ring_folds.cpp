@@ -26,11 +26,9 @@ constexpr double kTubeSpread = 0.03;
 // Samples a side of the distance rings made on the sheet are chosen by: the search's robust
 // distance caps far points, and a tube's untouched neck is all far points.
 constexpr std::size_t kMeasureSamples = 1500;
-// Rings are chosen by Chamfer + this times Hausdorff: each distance over the goal's bound for it
-// (1.5% and 6% of the diagonal, issue 38), so that a ring of 4 which comes closer on average but
-// leaves a flap across the axis is not taken over finer rings (the example vase: 1.39% / 9.8%
-// against 1.57% / 4.32%).
-constexpr double kHausdorffWeight = 0.25;
+// Rings are chosen by Chamfer + kTubeHausdorffWeight times Hausdorff, so that a ring of 4 which
+// comes closer on average but leaves a flap across the axis is not taken over finer rings (the
+// example vase: 1.39% / 9.8% against 1.57% / 4.32%).
 // The tube's axis and the target's are one direction (cosine of the angle between them).
 constexpr double kSameDirection = 0.98;
 // The orders of the two chains' rings: 6 to 16 (a ring of 6 cuts to 0.83 of the radius, 16 to
@@ -49,13 +47,13 @@ std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& directio
     low = glm::min(low, p);
     high = glm::max(high, p);
   }
-  const glm::dvec3 centre = 0.5 * (low + high);
+  const glm::dvec3 boxCentre = 0.5 * (low + high);
   // The tube's own axis: of the given direction and the vertices' principal axes, the one about
   // which the radius varies least (a start placed from other samples lies a little off the
   // target's axis, and a tube as long as it is wide has no distinct principal axis).
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const glm::dvec3& p : sheet.positions) {
-    const Eigen::Vector3d d(p.x - centre.x, p.y - centre.y, p.z - centre.z);
+    const Eigen::Vector3d d(p.x - boxCentre.x, p.y - boxCentre.y, p.z - boxCentre.z);
     covariance += d * d.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
@@ -70,6 +68,19 @@ std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& directio
     if (std::abs(glm::dot(d, glm::normalize(direction))) < kSameDirection) continue;
     // The radius as a line of the height (a cylinder's slope 0, a cone's its taper), by least
     // squares; the spread is that of the radius about the line.
+    // The axis point: the middle of the box across `d` (a tilted cone's box about the world's
+    // axes is not centred on its axis; a box across its own axis is, turn by turn).
+    const glm::dvec3 e1 = glm::normalize(
+        glm::cross(std::abs(d.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0), d));
+    const glm::dvec3 e2 = glm::cross(d, e1);
+    glm::dvec2 acrossLow(1e300), acrossHigh(-1e300);
+    for (const glm::dvec3& p : sheet.positions) {
+      const glm::dvec2 q(glm::dot(p - boxCentre, e1), glm::dot(p - boxCentre, e2));
+      acrossLow = glm::min(acrossLow, q);
+      acrossHigh = glm::max(acrossHigh, q);
+    }
+    const glm::dvec2 acrossMiddle = 0.5 * (acrossLow + acrossHigh);
+    const glm::dvec3 centre = boxCentre + acrossMiddle.x * e1 + acrossMiddle.y * e2;
     double lowest = 1e300, highest = -1e300, sum = 0.0, sumH = 0.0, sumHH = 0.0, sumHR = 0.0;
     std::vector<glm::dvec2> profile;
     profile.reserve(sheet.positions.size());
@@ -122,7 +133,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
   const double before = fitter.approximateDistance(sheet);
   auto measure = [&](const Sheet& folded) {
     const SurfaceDistance d = surfaceDistance(meshOf(folded), fitter.target(), kMeasureSamples);
-    return d.chamfer + kHausdorffWeight * d.hausdorff;
+    return d.chamfer + kTubeHausdorffWeight * d.hausdorff;
   };
   const double measuredBefore = measure(sheet);
   const bool allowCrossing = fitter.settings().allowSelfIntersection;

@@ -34,7 +34,8 @@
 //
 // Inputs: a session whose sheet is a tube or a cone about the target's axis direction (every
 // vertex's distance from a line within 11 degrees of `axis.direction` through the middle of its
-// bounding box within 3% of the mean radius of a least-squares line of radius against height,
+// box across that line (a tilted cone's box about the world's axes is off its axis) within 3% of
+// the mean radius of a least-squares line of radius against height,
 // whose slope is at most kTubeRingSteepestTaper; at least half a radius long; any other sheet
 // gets none: a folded tube's profile is no longer one radius per height) and the target's
 // area-uniform samples. A cone is cut as a tube is (neckRings reads the sheet's radius at each
@@ -68,8 +69,12 @@ namespace curvefold {
 // its axis (about 20 degrees): a vase's cone (0.13 on the example vase), not a bowl's flat one.
 inline constexpr double kTubeRingSteepestTaper = 0.36;
 
+// How much the Hausdorff distance counts beside the Chamfer distance in the rings' measure (each
+// over the goal's bound for it, 1.5% and 6% of the diagonal; see above).
+inline constexpr double kTubeHausdorffWeight = 0.25;
+
 // The tube or cone `sheet` is about a line along `direction` (its axis through the middle of the
-// sheet's bounding box, its mean radius), or none when it is no such tube (see above).
+// sheet's box across it, its mean radius), or none when it is no such tube (see above).
 struct TubeAxis {
   RevolutionAxis axis;
   double radius = 0.0;
