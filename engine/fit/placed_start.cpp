@@ -434,13 +434,26 @@ void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& prin
   }
 }
 
-void flatIn(const Principal& principal, double area, const std::string& kind,
-            std::vector<PlacedStart>& out) {
+void flatIn(const std::vector<SurfaceSample>& samples, const Principal& principal, double area,
+            const std::string& kind, std::vector<PlacedStart>& out) {
   Frame frame;
   frame.origin = principal.centroid;
   frame.x = principal.axes[2];
   frame.y = principal.axes[1];
   frame.z = glm::cross(frame.x, frame.y);
+  // The eigenvectors' signs are arbitrary; the nested rings fold a disk whose normal points to
+  // the bowl's bottom (where the target narrows) and did little from the other side (a judge's
+  // turned bowl: 9 folds, Chamfer 2.66%, against 33 folds and 1.26% upright). Turned so.
+  double widening = 0.0;
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - frame.origin;
+    const double h = glm::dot(d, frame.z);
+    widening += h * glm::length(d - h * frame.z);
+  }
+  if (widening > 0.0) {
+    frame.y = -frame.y;
+    frame.z = -frame.z;
+  }
   const std::string placement =
       "in the plane through " + vectorText(frame.origin) + " normal " + vectorText(frame.z);
   auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
@@ -630,7 +643,7 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
     for (const glm::dvec3& axis : principal.axes)
       revolutionAbout(samples, principal.centroid, axis, kind, out);
   if (kind.empty() || kind == "swept_curve") sweptAbout(samples, principal, out);
-  flatIn(principal, targetArea, kind, out);
+  flatIn(samples, principal, targetArea, kind, out);
   footprintIn(samples, principal, kind, out);
   return out;
 }

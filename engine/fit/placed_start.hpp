@@ -50,6 +50,8 @@ struct PlacedStart {
 
 // Candidates of `kind` ("" for every kind) placed onto the target described by `samples`
 // (area-uniform, at least a few hundred). Candidates a kind's generator refuses are left out.
+// The disk and square in the principal plane face the target's narrower end (a bowl's bottom),
+// whichever sign its principal axes came with.
 std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples, double targetArea,
                                       const std::string& kind = "");
 
