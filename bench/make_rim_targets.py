@@ -27,29 +27,12 @@ import argparse
 import math
 import os
 import shutil
-import subprocess
 
-from target_folds import (boundary_vertices, cases, diagonal, read_obj, record_case, strip_vt,
-                          unit_vector)
+from target_folds import (boundary_vertices, cases, diagonal, export_obj, fmt, read_obj,
+                          record_case, run, unit_vector)
 
 RECIPES = ["rim-short", "rim-tuck"]
 
-
-def run(cmd):
-    return subprocess.run(cmd, capture_output=True, text=True)
-
-
-def export_obj(cf, design, path):
-    """`export --obj`, its vt lines and face texture indices dropped."""
-    full = path + ".full.obj"
-    got = run([cf, "export", design, "--obj", full])
-    if got.returncode != 0:
-        raise RuntimeError(got.stderr)
-    strip_vt(full, path)
-
-
-def fmt(p):
-    return ",".join("%.9g" % x for x in p)
 
 
 def make_one(cf, work, surface, recipe, folds, rng):

@@ -1,14 +1,16 @@
 """What the bench's target generators share (make_drag_targets.py, make_symmetric_targets.py,
-reach_targets.py, make_rim_targets.py): a fold kept only when it moved the sheet and `check`
-passes whole, the target written as `export --obj` less its vt lines, the fold-count buckets
-and each case's own random stream, and the small geometry they choose folds with (the bounding
-diagonal, the rim, a uniform direction). How each generator chooses its folds stays its own, so
-their targets differ. make_rim_targets.py drives the binary, not the module: it uses what does
-not fold (read_obj, strip_vt and the rest). distance_truth.py reads OBJ files with read_obj."""
+reach_targets.py, make_rim_targets.py, make_plane_targets.py): a fold kept only when it moved
+the sheet and `check` passes whole, the target written as `export --obj` less its vt lines, the
+fold-count buckets and each case's own random stream, and the small geometry they choose folds
+with (the bounding diagonal, the rim, a uniform direction). How each generator chooses its folds
+stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
+binary, not the module: they use what does not fold (read_obj, strip_vt and the rest).
+distance_truth.py reads OBJ files with read_obj."""
 import json
 import math
 import os
 import random
+import subprocess
 
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
 
@@ -115,3 +117,22 @@ def write_target(design, path):
     tmp = path + ".full.obj"
     design.export(obj=tmp)
     strip_vt(tmp, path)
+
+
+def run(cmd):
+    """A command line's result, its output captured (the generators that drive the binary)."""
+    return subprocess.run(cmd, capture_output=True, text=True)
+
+
+def export_obj(cf, design, path):
+    """`export --obj`, its vt lines and face texture indices dropped."""
+    full = path + ".full.obj"
+    got = run([cf, "export", design, "--obj", full])
+    if got.returncode != 0:
+        raise RuntimeError(got.stderr)
+    strip_vt(full, path)
+
+
+def fmt(p):
+    """A point as the command line's x,y,z."""
+    return ",".join("%.9g" % x for x in p)
