@@ -270,7 +270,8 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
 namespace {
 // The stages of settleToTargets (below), with the options as given.
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
-                            SimulationState& state, const StaticOptions& options);
+                            SimulationState& state, const StaticOptions& options,
+                            bool* softBarsSkipped = nullptr);
 }  // namespace
 
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
@@ -289,7 +290,9 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
                                          before.hingeAngles.size() == model.hinges.size()
                                              ? before.hingeAngles
                                              : hingeAngles(model, before.positions));
-  StaticResult soft = settleInStages(model, goal, state, options);
+  bool skipped = false;
+  StaticResult soft = settleInStages(model, goal, state, options, &skipped);
+  if (skipped) return soft;  // settled with the paper's own bars already
   const bool softUsable = std::isfinite(soft.energy) && soft.energy <= startEnergy;
   // Left stretched and far from any equilibrium (strain above 0.1%, a residual above the stages'
   // tolerance), the soft stages tangled the sheet without raising its energy past the start's
@@ -321,7 +324,8 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
 namespace {
 
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
-                            SimulationState& state, const StaticOptions& options) {
+                            SimulationState& state, const StaticOptions& options,
+                            bool* softBarsSkipped) {
   StaticResult result;
   const std::size_t n = model.vertexCount();
   state.velocities.assign(n, glm::dvec3(0.0));
@@ -398,8 +402,19 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
   // iterations). The folding stages run with the bars softened to softBarRatio times the creases
   // (as Origami Simulator's stiffnesses are), then stiffening stages at the goal multiply them by
   // barStiffening each until the model's own: each starts near its valley's floor.
+  // From a predicted start the sheet already takes unstretched (the sheet shaped as drawn, glued
+  // shut; a straight crease at its goal) there is no valley to cross: soft bars only let it spring
+  // out of shape (the recorded cone glued: its flaps' contact pushed the softened sheet 25% out of
+  // length, the stiffening stages never pulled it back, and the whole settle was made again with
+  // the paper's bars, which reached the same state in half the iterations).
+  double startStrain = 0.0;
+  if (result.predicted)
+    for (double strain : edgeStrain(model, state.positions))
+      startStrain = std::max(startStrain, std::abs(strain));
+  const bool isometricStart = result.predicted && startStrain <= options.isometricStrain;
+  if (isometricStart && softBarsSkipped) *softBarsSkipped = true;
   std::vector<double> barScales;  // one per stage
-  const double softBars = paperBarScale(model, options);
+  const double softBars = isometricStart ? 1.0 : paperBarScale(model, options);
   if (softBars < 1.0 && options.barStiffening > 1.0) {
     barScales.assign(stages, softBars);
     for (double s = softBars * options.barStiffening; s < 1.0; s *= options.barStiffening)

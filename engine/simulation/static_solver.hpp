@@ -63,6 +63,10 @@ struct StaticOptions {
   // maxSoftStageIterations.
   double softBarRatio = 100.0;
   double barStiffening = 100.0;
+  // ... except from a predicted start no edge of which is strained above this (the sheet shaped as
+  // drawn with its glued seams met, a straight crease at its goal): that start is already on the
+  // paper's valley floor, and the settle runs with the paper's own bars from it.
+  double isometricStrain = 1e-6;
   // The last stage: Newton's step with the energy's exact Hessian (the hinges' k (theta - target)
   // Hess(theta), by differences of their exact gradients, and the bars' compressive part) wherever
   // it is positive definite, Gauss-Newton's elsewhere. False: Gauss-Newton's always, which
