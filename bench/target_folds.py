@@ -6,10 +6,12 @@ with (the bounding diagonal, the rim, a uniform direction). How each generator c
 stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
 binary, not the module: they use what does not fold (read_obj, strip_vt and the rest).
 distance_truth.py reads OBJ files with read_obj."""
+import argparse
 import json
 import math
 import os
 import random
+import shutil
 import subprocess
 
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
@@ -136,3 +138,84 @@ def export_obj(cf, design, path):
 def fmt(p):
     """A point as the command line's x,y,z."""
     return ",".join("%.9g" % x for x in p)
+
+
+def fold_through_cli(cf, work, surface, folds, choose, rng):
+    """`folds` folds of the catalogue's `surface` at its defaults through the binary, each
+    (grab, drop) from `choose(vertices, faces, diagonal, rng)` (None: try again), kept when it
+    moves the sheet and `check` passes whole; the design's path, or None after 30 tries a fold."""
+    design = os.path.join(work, "d.curvefold.json")
+    trial = os.path.join(work, "t.curvefold.json")
+    obj = os.path.join(work, "form.obj")
+    if run([cf, "new", surface, "-o", design]).returncode != 0:
+        return None
+    export_obj(cf, design, obj)
+    vertices, faces = read_obj(obj)
+    diag = diagonal(vertices)
+    made, tries = 0, 0
+    while made < folds and tries < 30 * folds:
+        tries += 1
+        chosen = choose(vertices, faces, diag, rng)
+        if chosen is None:
+            continue
+        grab, drop = chosen
+        if math.dist(grab, drop) < 0.02 * diag:
+            continue
+        folded = run([cf, "fold", design, "--vertex-near", fmt(grab), "--to", fmt(drop), "-o", trial])
+        if folded.returncode != 0 or run([cf, "check", trial]).returncode != 0:
+            continue
+        export_obj(cf, trial, obj)
+        new_vertices, new_faces = read_obj(obj)
+        moved = len(new_vertices) != len(vertices) or any(
+            math.dist(a, b) > 1e-9 for a, b in zip(vertices, new_vertices))
+        if not moved:
+            continue
+        shutil.copyfile(trial, design)
+        vertices, faces = new_vertices, new_faces
+        made += 1
+    return design if made == folds else None
+
+
+def cli_generator_main(description, recipes, buckets, choose):
+    """The command line of a generator that drives the binary: for every recipe, bucket and
+    catalogue surface (`curvefold surfaces`), `--per-surface` targets folded by
+    fold_through_cli with `choose(recipe, vertices, faces, diagonal, rng)`, written with their
+    designs and manifest.jsonl into `out`."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("out")
+    parser.add_argument("--per-surface", type=int, default=1)
+    parser.add_argument("--seed", default="1")
+    parser.add_argument("--buckets", default=buckets)
+    parser.add_argument("--recipes", default=",".join(recipes))
+    parser.add_argument("--surfaces", default="")
+    parser.add_argument("--curvefold", default="build/app/curvefold")
+    args = parser.parse_args()
+    cf = os.path.abspath(args.curvefold)
+    # `surfaces` lists each as "name: what it is", its options indented below.
+    listed = run([cf, "surfaces"]).stdout.splitlines()
+    surfaces = sorted(l.split(":")[0] for l in listed
+                      if l and not l[0].isspace() and ":" in l and " " not in l.split(":")[0])
+    if args.surfaces:
+        surfaces = [s for s in surfaces if s in args.surfaces.split(",")]
+    os.makedirs(args.out, exist_ok=True)
+    work = os.path.join(args.out, ".work")
+    os.makedirs(work, exist_ok=True)
+    with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
+        for recipe, bucket, (lo, hi), surface, rng in cases(
+                args.seed, args.recipes.split(","), args.buckets.split(","), surfaces):
+            made = 0
+            for _ in range(3 * args.per_surface):
+                if made >= args.per_surface:
+                    break
+                folds = rng.randint(lo, hi)
+                design = fold_through_cli(
+                    cf, work, surface, folds,
+                    lambda v, f, d, r, recipe=recipe: choose(recipe, v, f, d, r), rng)
+                if design is None:
+                    continue
+                name = f"{recipe}-{bucket}-{made:02d}-{surface}"
+                export_obj(cf, design, os.path.join(args.out, name + ".obj"))
+                shutil.copyfile(design, os.path.join(args.out, name + ".curvefold.json"))
+                record_case(manifest, name, recipe, bucket, surface, folds)
+                made += 1
+    shutil.rmtree(work)

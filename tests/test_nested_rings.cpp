@@ -50,6 +50,28 @@ TriangleMesh capOf(Height height, double outer, int around, int rings) {
   return mesh;
 }
 
+// A step of nested rings toward `target` from `disk` as the fit makes it: a fitter of 800 / 800 /
+// 8000 samples, 1500 target samples, seed 5.
+struct RingStep {
+  RingStep(const TriangleMesh& target, const Sheet& disk)
+      : fitter(target, testing::sampledSettings(800, 800, 8000)),
+        samples(sampleSurface(target, 1500, 3)),
+        axis(revolutionAxis(samples)),
+        session(disk) {}
+  // One step of rings of 1 to `mostCreases` creases from the session as it is; `before` is the
+  // session's approximate distance.
+  std::vector<FoldSuggestion> step(std::size_t mostCreases) {
+    before = fitter.approximateDistance(session.fixed());
+    std::mt19937_64 random(5);
+    return suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, mostCreases);
+  }
+  FoldFitter fitter;
+  std::vector<SurfaceSample> samples;
+  std::optional<RevolutionAxis> axis;
+  FoldSession session;
+  double before = 0.0;
+};
+
 // The profile (r, z) of a paraboloid bowl 16 cm across and 4 cm deep, its bottom at z = -0.02.
 std::vector<glm::dvec2> paraboloidProfile() {
   std::vector<glm::dvec2> profile;
@@ -153,15 +175,9 @@ TEST(NestedRings, ALippedBowlsRimIsReachedByRingsDrawnOutermostFirst) {
   const TriangleMesh target = capOf(height, outer, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.061}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
-  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
-  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
-  ASSERT_TRUE(axis);
-  FoldSession session(disk);
-  const double before = fitter.approximateDistance(session.fixed());
-  std::mt19937_64 random(5);
-  const std::vector<FoldSuggestion> steps =
-      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, 2);
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  const std::vector<FoldSuggestion> steps = ring.step(2);
   ASSERT_EQ(steps.size(), 1u);
   const FoldSuggestion& step = steps.front();
   validate(step.sheet);
@@ -177,8 +193,8 @@ TEST(NestedRings, ALippedBowlsRimIsReachedByRingsDrawnOutermostFirst) {
   }
   // 5.1 mm here (under 6.5 on the sanitized run's coarser disk too); 8.2 mm with the rings
   // inner first only (8.4 on the coarser disk).
-  EXPECT_LT(rimApart, 0.0065) << "before " << before << ", after " << step.after;
-  EXPECT_LT(step.after, 0.6 * before);
+  EXPECT_LT(rimApart, 0.0065) << "before " << ring.before << ", after " << step.after;
+  EXPECT_LT(step.after, 0.6 * ring.before);
 }
 
 // A steep cup 7 cm across and 4 deep (its wall 74 degrees at the rim): the flaps of a ring of many
@@ -189,22 +205,16 @@ TEST(NestedRings, ASteepCupIsFoldedByRingsOfFewPlanesNotAPinwheel) {
       capOf([](double r) { return 0.04 * std::pow(r / 0.035, 3.0); }, 0.035, 48, 12);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.05}, {"resolution", testing::kSanitized ? 12.0 : 20.0}});
-  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
-  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
-  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
-  ASSERT_TRUE(axis);
-  FoldSession session(disk);
-  const double before = fitter.approximateDistance(session.fixed());
-  std::mt19937_64 random(5);
-  const std::vector<FoldSuggestion> steps =
-      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, 2);
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  const std::vector<FoldSuggestion> steps = ring.step(2);
   ASSERT_EQ(steps.size(), 1u);
   const FoldSuggestion& step = steps.front();
   validate(step.sheet);
   EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
   // 0.41 of the disk's distance (both resolutions); 0.49-0.51 with rings of 8 to 16 planes alone.
-  EXPECT_LT(step.after, 0.45 * before)
-      << "before " << before << ", " << step.folds.size() << " folds";
+  EXPECT_LT(step.after, 0.45 * ring.before)
+      << "before " << ring.before << ", " << step.folds.size() << " folds";
 }
 
 TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
@@ -213,23 +223,17 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
-  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
-  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
-  ASSERT_TRUE(axis);
-  FoldSession session(disk);
-  const double before = fitter.approximateDistance(session.fixed());
-  std::mt19937_64 random(5);
-  const std::vector<FoldSuggestion> steps = suggestNestedRings(
-      session, fitter, *axis, samples, 1, {}, random, testing::kSanitized ? 2 : 3);
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  const std::vector<FoldSuggestion> steps = ring.step(testing::kSanitized ? 2 : 3);
   ASSERT_EQ(steps.size(), 1u);
   const FoldSuggestion& step = steps.front();
   EXPECT_GE(step.folds.size(), 16u);  // rings, not a fold
-  EXPECT_LT(step.after, 0.45 * before) << "before " << before;
-  EXPECT_NEAR(step.after, fitter.approximateDistance(step.sheet), 1e-12);
+  EXPECT_LT(step.after, 0.45 * ring.before) << "before " << ring.before;
+  EXPECT_NEAR(step.after, ring.fitter.approximateDistance(step.sheet), 1e-12);
   validate(step.sheet);
   EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
-  EXPECT_EQ(session.foldCount(), 0u);  // the session is left as it was
+  EXPECT_EQ(ring.session.foldCount(), 0u);  // the session is left as it was
   // The folds replay on a session of their own to the same sheet (a design keeps them).
   FoldSession replayed(disk);
   replayed.applyRecords(step.folds);
@@ -244,16 +248,10 @@ TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
-  const FoldFitter fitter(target, testing::sampledSettings(800, 800, 8000));
-  const std::vector<SurfaceSample> samples = sampleSurface(target, 1500, 3);
-  const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
-  ASSERT_TRUE(axis);
-  FoldSession session(disk);
-  session.setSymmetry(parseSymmetry("rotational:12:z", disk));
-  const double before = fitter.approximateDistance(session.fixed());
-  std::mt19937_64 random(5);
-  const std::vector<FoldSuggestion> steps =
-      suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, 2);
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  ring.session.setSymmetry(parseSymmetry("rotational:12:z", disk));
+  const std::vector<FoldSuggestion> steps = ring.step(2);
   ASSERT_EQ(steps.size(), 1u);
   const FoldSuggestion& step = steps.front();
   // Each ring is one fold and its images (one group), at most two rings and a plane across.
@@ -264,7 +262,7 @@ TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   EXPECT_GT(step.folds.size(), groups.size());  // images beside the folds
   // Such a ring about halves the distance (0.494 of it on the disk of 24 rings, 0.501 on the
   // sanitized run's 12): the bound says it helps, with room for the coarser disk.
-  EXPECT_LT(step.after, 0.6 * before) << "before " << before;
+  EXPECT_LT(step.after, 0.6 * ring.before) << "before " << ring.before;
   validate(step.sheet);
   EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
 }

@@ -50,6 +50,24 @@ glm::dvec3 perpendicular(const glm::dvec3& a) {
   return glm::normalize(glm::cross(other, a));
 }
 
+// The frame whose y is `up` (a unit vector) through `origin`: a surface of revolution's axis.
+Frame axisFrame(const glm::dvec3& origin, const glm::dvec3& up) {
+  Frame frame;
+  frame.origin = origin;
+  frame.y = up;
+  frame.x = perpendicular(up);
+  frame.z = glm::cross(frame.x, frame.y);
+  return frame;
+}
+
+// `axis` or its opposite, so that the radius `bottom` is the larger (swapped if need be): the
+// catalogue's cone is widest at its base, at y = -height / 2.
+glm::dvec3 widerEndDown(double& bottom, double& top, const glm::dvec3& axis) {
+  if (bottom >= top) return axis;
+  std::swap(bottom, top);
+  return -axis;
+}
+
 struct Principal {
   glm::dvec3 centroid{0.0};
   glm::dvec3 axes[3];  // ascending spread: axes[0] the smallest (a sheet's normal)
@@ -113,17 +131,9 @@ void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& cen
   clip(b, a);
   if (!(b.x - a.x > 0.0)) return;  // a disk across the axis: the flat candidates' case
   double bottom = a.y, top = b.y;
-  glm::dvec3 up = axis;
-  if (bottom < top) {
-    std::swap(bottom, top);
-    up = -axis;
-  }
+  const glm::dvec3 up = widerEndDown(bottom, top, axis);
   if (!(top < 0.98 * bottom)) return;
-  Frame frame;
-  frame.origin = centroid + 0.5 * (a.x + b.x) * axis;
-  frame.y = up;
-  frame.x = perpendicular(up);
-  frame.z = glm::cross(frame.x, frame.y);
+  const Frame frame = axisFrame(centroid + 0.5 * (a.x + b.x) * axis, up);
   const SurfaceParameters parameters{
       {"base_radius", bottom}, {"top_radius", top}, {"height", b.x - a.x}};
   addPlaced(out, "cone", parameters,
@@ -153,17 +163,8 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   const Eigen::Vector2d line = a.colPivHouseholderQr().solve(r);
   double bottom = std::max(0.0, line(0) + line(1) * lo),
          top = std::max(0.0, line(0) + line(1) * hi);
-  // The catalogue's cone is widest at its base, at y = -height / 2.
-  glm::dvec3 up = axis;
-  if (bottom < top) {
-    std::swap(bottom, top);
-    up = -axis;
-  }
-  Frame frame;
-  frame.origin = centroid + 0.5 * (lo + hi) * axis;
-  frame.y = up;
-  frame.x = perpendicular(up);
-  frame.z = glm::cross(frame.x, frame.y);
+  const glm::dvec3 up = widerEndDown(bottom, top, axis);
+  const Frame frame = axisFrame(centroid + 0.5 * (lo + hi) * axis, up);
   const std::string placement = "axis " + vectorText(up) + " through " + vectorText(frame.origin);
   auto add = [&](const std::string& surface, const SurfaceParameters& parameters) {
     if (kind.empty() || kind == surface) addPlaced(out, surface, parameters, placement, frame);
@@ -174,13 +175,23 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   coneAcross(samples, centroid, axis, kind, out);
 }
 
-}  // namespace
-
-std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
-                                          const glm::dvec3& point, const glm::dvec3& direction) {
+// The samples' extent [lo, hi] along `direction` from `point`, cut into 16 bands of height, and
+// (the band's middle height, its samples' mean distance from the axis) for each band holding at
+// least 8 samples (fewer say little of the radius there); none where the extent is empty or no
+// band is full enough.
+struct HeightBands {
+  double lo = 0.0, hi = 0.0;
+  std::vector<glm::dvec2> profile;
+};
+std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples,
+                                       const glm::dvec3& point, const glm::dvec3& direction) {
   constexpr int kHeightBins = 16;
   constexpr int kFewestInBin = 8;
-  double lo = 1e300, hi = -1e300;
+  HeightBands bands;
+  double& lo = bands.lo;
+  double& hi = bands.hi;
+  lo = 1e300;
+  hi = -1e300;
   for (const SurfaceSample& s : samples) {
     const double t = glm::dot(s.position - point, direction);
     lo = std::min(lo, t);
@@ -197,15 +208,24 @@ std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samp
     sum[b] += glm::length(d - t * direction);
     ++count[b];
   }
-  double widest = 0.0;
   for (int b = 0; b < kHeightBins; ++b)
-    if (count[b] >= kFewestInBin) widest = std::max(widest, sum[b] / count[b]);
+    if (count[b] >= kFewestInBin)
+      bands.profile.emplace_back(lo + (b + 0.5) * (hi - lo) / kHeightBins, sum[b] / count[b]);
+  if (bands.profile.empty()) return std::nullopt;
+  return bands;
+}
+
+}  // namespace
+
+std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
+                                          const glm::dvec3& point, const glm::dvec3& direction) {
+  const std::optional<HeightBands> bands = heightBands(samples, point, direction);
+  if (!bands) return std::nullopt;
+  const double lo = bands->lo, hi = bands->hi;
+  double widest = 0.0;
+  for (const glm::dvec2& p : bands->profile) widest = std::max(widest, p.y);
   if (!(widest > 0.0)) return std::nullopt;
-  Frame frame;
-  frame.origin = point + 0.5 * (lo + hi) * direction;
-  frame.y = direction;
-  frame.x = perpendicular(direction);
-  frame.z = glm::cross(frame.x, frame.y);
+  const Frame frame = axisFrame(point + 0.5 * (lo + hi) * direction, direction);
   std::vector<PlacedStart> out;
   addPlaced(out, "cylinder", {{"radius", widest}, {"height", hi - lo}},
             "axis " + vectorText(direction) + " through " + vectorText(frame.origin) +
@@ -218,30 +238,10 @@ std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samp
 std::optional<PlacedStart> enclosingCone(const std::vector<SurfaceSample>& samples,
                                          const glm::dvec3& point, const glm::dvec3& direction,
                                          double steepest) {
-  constexpr int kHeightBins = 16;
-  constexpr int kFewestInBin = 8;
-  double lo = 1e300, hi = -1e300;
-  for (const SurfaceSample& s : samples) {
-    const double t = glm::dot(s.position - point, direction);
-    lo = std::min(lo, t);
-    hi = std::max(hi, t);
-  }
-  if (!(hi > lo)) return std::nullopt;
-  std::vector<double> sum(kHeightBins, 0.0);
-  std::vector<int> count(kHeightBins, 0);
-  for (const SurfaceSample& s : samples) {
-    const glm::dvec3 d = s.position - point;
-    const double t = glm::dot(d, direction);
-    const int b =
-        std::clamp(static_cast<int>((t - lo) / (hi - lo) * kHeightBins), 0, kHeightBins - 1);
-    sum[b] += glm::length(d - t * direction);
-    ++count[b];
-  }
-  std::vector<glm::dvec2> profile;  // (height at the bin's middle, mean radius)
-  for (int b = 0; b < kHeightBins; ++b)
-    if (count[b] >= kFewestInBin)
-      profile.emplace_back(lo + (b + 0.5) * (hi - lo) / kHeightBins, sum[b] / count[b]);
-  if (profile.empty()) return std::nullopt;
+  const std::optional<HeightBands> bands = heightBands(samples, point, direction);
+  if (!bands) return std::nullopt;
+  const double lo = bands->lo, hi = bands->hi;
+  const std::vector<glm::dvec2>& profile = bands->profile;
   double meanHeight = 0.0;
   for (const glm::dvec2& p : profile) meanHeight += p.x;
   meanHeight /= static_cast<double>(profile.size());
@@ -268,16 +268,8 @@ std::optional<PlacedStart> enclosingCone(const std::vector<SurfaceSample>& sampl
     }
   double bottom = bestA + bestB * lo, top = bestA + bestB * hi;
   if (!(std::min(bottom, top) > 0.0)) return std::nullopt;
-  glm::dvec3 up = direction;
-  if (bottom < top) {
-    std::swap(bottom, top);
-    up = -direction;
-  }
-  Frame frame;
-  frame.origin = point + 0.5 * (lo + hi) * direction;
-  frame.y = up;
-  frame.x = perpendicular(up);
-  frame.z = glm::cross(frame.x, frame.y);
+  const glm::dvec3 up = widerEndDown(bottom, top, direction);
+  const Frame frame = axisFrame(point + 0.5 * (lo + hi) * direction, up);
   std::vector<PlacedStart> out;
   const std::string placement =
       "axis " + vectorText(up) + " through " + vectorText(frame.origin) + ", around its profile";
