@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -40,6 +41,11 @@ namespace {
 // spend a 10k-vertex step scheduling them, enough that a loaded core's share is taken by the other.
 constexpr std::size_t kElementGrain = 4096;
 constexpr std::size_t kVertexGrain = 2048;
+// Below this many vertices a step runs on one thread: waking the second core for each of the
+// step's two passes costs more than it shares (idle, 2 cores, BM_DynamicStep against
+// BM_DynamicStepOneThread: 10,201 vertices 1.06 ms on two threads, 0.80 ms on one; 30,276
+// vertices 2.76 against 3.58 ms). The result is the same bits either way.
+constexpr std::size_t kOneThreadBelow = 16384;
 
 // The lane loops' AVX2 copy, chosen by the loader (an ifunc). ThreadSanitizer's runtime is not up
 // when the loader runs ifunc resolvers (every test binary crashed at start), so under it only the
@@ -144,7 +150,7 @@ CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, co
 // (BarHingeModel::scatterSlots); every hinge's angle unwrapped in place. The same expressions as
 // elementForces, so the same bits.
 void scatterElementForces(const BarHingeModel& model, const std::vector<double>& targets,
-                          double dampingRatio, SimulationState& state) {
+                          double dampingRatio, SimulationState& state, std::size_t grain) {
   const glm::dvec3* x = state.positions.data();
   const glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* forces = state.slotForces.data();
@@ -162,31 +168,29 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
   const std::size_t hingeEnd = barCount + hingeCount;
   const std::uint32_t* hingeScatter = scatter + model.hingeSlot0;
   const std::uint32_t* glueScatter = scatter + model.glueSlot0;
-  forEachRange(
-      hingeEnd + model.glue.size(), kElementGrain, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i0 = begin; i0 < std::min(end, barCount); i0 += kBarLanes)
-          barLanes(bars + i0, std::min(kBarLanes, std::min(end, barCount) - i0), x, velocity,
-                   barStiffness + i0, barLength + i0, barDamping + i0, dampingRatio,
-                   barForces + i0);
-        const std::size_t hingeBegin = std::max(begin, barCount) - barCount;
-        const std::size_t hingeStop = std::max(std::min(end, hingeEnd), barCount) - barCount;
-        for (std::size_t j0 = hingeBegin; j0 < hingeStop; j0 += kHingeLanes)
-          hingeLanes(hinges + j0, std::min(kHingeLanes, hingeStop - j0), x, angles + j0,
-                     hingeStiffness + j0, target + j0, hingeScatter + 4 * j0, forces);
-        for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
-          const std::size_t g = e - hingeEnd;
-          const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
-          const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
-          forces[glueScatter[2 * g]] = force;
-          forces[glueScatter[2 * g + 1]] = -force;
-        }
-      });
+  forEachRange(hingeEnd + model.glue.size(), grain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i0 = begin; i0 < std::min(end, barCount); i0 += kBarLanes)
+      barLanes(bars + i0, std::min(kBarLanes, std::min(end, barCount) - i0), x, velocity,
+               barStiffness + i0, barLength + i0, barDamping + i0, dampingRatio, barForces + i0);
+    const std::size_t hingeBegin = std::max(begin, barCount) - barCount;
+    const std::size_t hingeStop = std::max(std::min(end, hingeEnd), barCount) - barCount;
+    for (std::size_t j0 = hingeBegin; j0 < hingeStop; j0 += kHingeLanes)
+      hingeLanes(hinges + j0, std::min(kHingeLanes, hingeStop - j0), x, angles + j0,
+                 hingeStiffness + j0, target + j0, hingeScatter + 4 * j0, forces);
+    for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
+      const std::size_t g = e - hingeEnd;
+      const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];
+      const glm::dvec3 force = model.glueStiffness * (x[b] - x[a]);
+      forces[glueScatter[2 * g]] = force;
+      forces[glueScatter[2 * g + 1]] = -force;
+    }
+  });
 }
 
 // Each free vertex sums its forces, one run in gather order, and moves by semi-implicit Euler.
 // `contact` is the self-contact force per vertex, null without contact (dynamicContactForces).
 void moveVertices(const BarHingeModel& model, double dt, double keep, const glm::dvec3* contact,
-                  SimulationState& state) {
+                  SimulationState& state, std::size_t grain) {
   const glm::dvec3* forces = state.slotForces.data();
   glm::dvec3* velocity = state.velocities.data();
   glm::dvec3* positions = state.positions.data();
@@ -196,7 +200,7 @@ void moveVertices(const BarHingeModel& model, double dt, double keep, const glm:
   const std::uint32_t* slots = model.gatherSlots.data();
   const std::uint8_t* pinned = model.pinned.data();
   const double* mass = model.mass.data();
-  forEachRange(model.vertexCount(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
+  forEachRange(model.vertexCount(), grain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       if (pinned[v]) continue;
       glm::dvec3 total(0.0);
@@ -231,9 +235,14 @@ void stepDynamic(const BarHingeModel& model, double foldAmount, SimulationState&
   state.slotForces.resize(model.slotCount);  // the bars' slots stay unused (barForces)
   state.barForces.resize(model.bars.size());
 
+  const bool oneThread = model.vertexCount() < kOneThreadBelow;
+  const std::size_t elementGrain =
+      oneThread ? std::numeric_limits<std::size_t>::max() : kElementGrain;
+  const std::size_t vertexGrain =
+      oneThread ? std::numeric_limits<std::size_t>::max() : kVertexGrain;
   for (std::size_t step = 0; step < steps; ++step) {
-    scatterElementForces(model, targets, options.dampingRatio, state);
-    moveVertices(model, dt, keep, dynamicContactForces(model, state), state);
+    scatterElementForces(model, targets, options.dampingRatio, state, elementGrain);
+    moveVertices(model, dt, keep, dynamicContactForces(model, state), state, vertexGrain);
     ++state.steps;
   }
 }
