@@ -178,9 +178,12 @@ void parseStyleSheet(std::string text, CssRules& rules) {
   }
 }
 
-std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& namedGreen) {
+// `alpha`: the colour's own opacity (#rgba, #rrggbbaa, rgba(), rgb(r g b / a)), 1 without one.
+std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& namedGreen,
+                                              double& alpha) {
   const std::string value = lower(trim(text));
   namedGreen = value == "green";
+  alpha = 1.0;
   static const std::unordered_map<std::string, std::array<int, 3>> named = {
       {"black", {0, 0, 0}},       {"red", {255, 0, 0}},       {"blue", {0, 0, 255}},
       {"lime", {0, 255, 0}},      {"green", {0, 128, 0}},     {"yellow", {255, 255, 0}},
@@ -190,6 +193,8 @@ std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& nam
     const std::string hex = value.substr(1);
     if (hex.find_first_not_of("0123456789abcdef") != std::string::npos) return std::nullopt;
     const auto digit = [&](std::size_t k) { return std::stoi(hex.substr(k, 1), nullptr, 16); };
+    if (hex.size() == 4) alpha = digit(3) * 17 / 255.0;
+    if (hex.size() == 8) alpha = std::stoi(hex.substr(6, 2), nullptr, 16) / 255.0;
     if (hex.size() == 3 || hex.size() == 4)
       return std::array<int, 3>{digit(0) * 17, digit(1) * 17, digit(2) * 17};
     if (hex.size() == 6 || hex.size() == 8)
@@ -215,6 +220,12 @@ std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& nam
         channel *= 2.55;
       }
       rgb[k] = static_cast<int>(std::lround(std::clamp(channel, 0.0, 255.0)));
+    }
+    // The fourth number, after a comma or CSS4's slash: a fraction or a percentage.
+    if (const auto a = scanner.number()) {
+      alpha = *a;
+      if (scanner.peek() == '%') alpha /= 100.0;
+      alpha = std::clamp(alpha, 0.0, 1.0);
     }
     return rgb;
   }
@@ -650,7 +661,8 @@ class SvgReader {
       return;
     }
     bool namedGreen = false;
-    const auto rgb = parseColour(here.stroke, namedGreen);
+    double colourAlpha = 1.0;
+    const auto rgb = parseColour(here.stroke, namedGreen, colourAlpha);
     const auto assignment = rgb ? assignmentForColour(*rgb, namedGreen) : std::nullopt;
     if (!assignment) {
       ++unknownColours_[lower(trim(here.stroke))];
@@ -685,7 +697,8 @@ class SvgReader {
     } else {
       lines = parsePath(node);
     }
-    double opacity = 1.0;
+    // A colour's alpha is opacity as the eye sees it, as stroke-opacity is: both set the angle.
+    double opacity = colourAlpha;
     for (const std::string& text : {valueOf(style, "opacity"), here.strokeOpacity}) {
       if (text.empty()) continue;
       NumberScanner scanner(text);
@@ -881,6 +894,7 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
           (drawing.notes.empty() ? std::string() : "; " + drawing.notes.front()));
     PlanarizeOptions planar;
     planar.strict = false;
+    planar.noteCoincidentPoints = false;
     planar.relativeSnap = options.relativeSnap;
     planarize(drawing, planar);
     TriangulateOptions triangulate;
