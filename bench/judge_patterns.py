@@ -156,7 +156,8 @@ def main(cf, pdir):
                 crease = [k for k, a in enumerate(s["assignment"]) if a in "MV"]
                 for k in crease:
                     ang = dihedral(s["vertices"], s["triangles"].tolist(), int(e[k][0]), int(e[k][1]))
-                    target = {"fold": 90.0 if "quads" in name else 120.0, "svg": 90.0}[name.split("_")[0]]
+                    target = {"fold": 90.0 if "quads" in name else 120.0,
+                              "svg": 90.0}[name.split("_")[0]]
                     want = target * pct / 100
                     if ang is None or abs(ang - want) > 0.5:
                         fails.append(f"{name}: {pct}%: crease at {ang} degrees, wants {want}")

@@ -483,6 +483,24 @@ def main(out):
     g = tower()
     files["fold_tower.fold"] = fold_file(g, "huffman-style tower", unit="m", scale=0.05)
 
+    # 12. waterbomb base with edges_foldAngle only (edges_assignment is optional in FOLD)
+    g = waterbomb_base()
+    doc = fold_file(g, "waterbomb, angles only", faces=False, angles=True)
+    del doc["edges_assignment"]
+    files["fold_waterbomb_angles_only.fold"] = doc
+    # 13. every frame in file_frames, the key frame holding only file_ metadata: a folded form
+    #     first (3D, refused if read), then the crease pattern, in cm
+    flat, fold3, faces, edges, assign, angles = miura(m=4, n=2)
+    files["fold_frames_only_miura.fold"] = {
+        "file_spec": 1.1, "file_creator": "judge39", "file_classes": ["singleModel"],
+        "file_frames": [
+            {"frame_classes": ["foldedForm"], "frame_attributes": ["3D"],
+             "vertices_coords": [list(p) for p in fold3], "edges_vertices": edges,
+             "edges_assignment": assign, "faces_vertices": faces},
+            {"frame_classes": ["creasePattern"], "frame_attributes": ["2D"], "frame_unit": "cm",
+             "vertices_coords": [list(p) for p in flat], "edges_vertices": edges,
+             "edges_assignment": assign, "edges_foldAngle": angles, "faces_vertices": faces}]}
+
     for name, doc in files.items():
         with open(os.path.join(out, name), "w") as fh:
             json.dump(doc, fh, indent=1)
@@ -603,6 +621,12 @@ def main(out):
               f'stroke="{col}" opacity="{op}"/>\n')
     t += "</g></g>\n"
     svgs["svg_tower_nested_g.svg"] = t + "</svg>\n"
+
+    # S10. single crease whose angle is in the colour's alpha: rgba() and #rrggbbaa (90 degrees)
+    t = svg_open("100mm", "100mm", "0 0 100 100")
+    t += '<rect x="0" y="0" width="100" height="100" fill="none" stroke="#000000ff"/>\n'
+    t += '<line x1="50" y1="0" x2="50" y2="100" stroke="rgba(0, 0, 255, 0.5)"/>\n'
+    svgs["svg_single_crease_rgba.svg"] = t + "</svg>\n"
 
     for name, text in svgs.items():
         with open(os.path.join(out, name), "w") as fh:

@@ -35,7 +35,7 @@ std::vector<CreasePatternEdge> creases(const CreasePattern& p) {
 }
 
 std::string svg(const std::string& body) {
-  return R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">)"
+  return R"(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 100 100">)"
          R"(<rect x="0" y="0" width="100" height="100" fill="none" stroke="#000"/>)" +
          body + "</svg>";
 }
@@ -152,5 +152,48 @@ TEST(CreasePatternStrangers, FoldWithEveryFrameInFileFramesReadsTheCreasePattern
   EXPECT_EQ(creases(key).front().assignment, CreaseAssignment::Mountain);
   // A file with no geometry anywhere is refused in one line, as before.
   EXPECT_THROW(readFoldCreasePatternText(R"({"file_frames": [{"frame_title": "x"}]})", "e.fold"),
+               CreasePatternError);
+}
+
+// <use> draws an element again (Inkscape's clones and tiled clones, Illustrator's symbols: how a
+// tessellation is often drawn), moved by its x and y after its transform, with its stroke and
+// stroke-opacity when the element has none; a <symbol> draws only through a <use>. Before, every
+// <use> was dropped with a note ("elements not read: <use>") and its creases were missing.
+TEST(CreasePatternStrangers, SvgUseDrawsTheElementItNamesAgain) {
+  const CreasePattern p = readSvgCreasePatternText(
+      svg(R"(<defs><line id="crease" x1="0" y1="0" x2="0" y2="100"/></defs>)"
+          R"(<use href="#crease" x="25" stroke="#f00"/>)"
+          R"svg(<use xlink:href="#crease" transform="translate(50)" stroke="#00f" stroke-opacity="0.5"/>)svg"
+          R"(<symbol id="s"><line x1="75" y1="0" x2="75" y2="100" stroke="#f00"/></symbol>)"),
+      "use.svg");
+  EXPECT_FALSE(noted(p, "<use>")) << notesOf(p);
+  const auto c = creases(p);
+  ASSERT_EQ(c.size(), 2u) << notesOf(p);
+  for (const CreasePatternEdge& e : c) {
+    const double x = p.vertices[e.a].x;
+    EXPECT_EQ(x, p.vertices[e.b].x);
+    if (e.assignment == CreaseAssignment::Mountain) {
+      EXPECT_EQ(x, 25.0);
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    } else {
+      EXPECT_EQ(x, 50.0);
+      EXPECT_EQ(e.foldAngleDegrees, 90.0);
+    }
+  }
+  // The symbol, drawn by a use: a third crease.
+  const CreasePattern s = readSvgCreasePatternText(
+      svg(R"(<symbol id="s"><line x1="75" y1="0" x2="75" y2="100" stroke="#f00"/></symbol>)"
+          R"(<use href="#s"/>)"),
+      "symbol.svg");
+  EXPECT_EQ(creases(s).size(), 1u) << notesOf(s);
+  // A use of itself, of its own group, or of elements that use each other fails in one line.
+  EXPECT_THROW(readSvgCreasePatternText(svg(R"(<g id="g"><use href="#g"/></g>)"), "self.svg"),
+               CreasePatternError);
+  EXPECT_THROW(readSvgCreasePatternText(
+                   svg(R"(<defs><g id="a"><use href="#b"/></g><g id="b"><use href="#a"/></g>)"
+                       R"(</defs><use href="#a"/>)"),
+                   "cycle.svg"),
+               CreasePatternError);
+  EXPECT_THROW(readSvgCreasePatternText(svg(R"(<use href="#nothing"/>)"), "missing.svg"),
                CreasePatternError);
 }

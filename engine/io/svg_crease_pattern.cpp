@@ -268,6 +268,8 @@ class SvgReader {
   void collectStyles(const xmlNode* node) {
     for (const xmlNode* child = node; child; child = child->next) {
       if (child->type != XML_ELEMENT_NODE) continue;
+      // Every element with an id, for <use> (the first of a repeated id, as a browser takes it).
+      if (const auto id = attribute(child, "id")) ids_.try_emplace(*id, child);
       if (localName(child) == "style") {
         xmlChar* content = xmlNodeGetContent(child);
         if (content) {
@@ -281,18 +283,24 @@ class SvgReader {
   }
 
   void walk(const xmlNode* node, const Inherited& parent) {
-    for (const xmlNode* child = node; child; child = child->next) {
-      if (child->type != XML_ELEMENT_NODE) continue;
+    for (const xmlNode* child = node; child; child = child->next)
+      if (child->type == XML_ELEMENT_NODE) visit(child, parent);
+  }
+
+  // One element and what it holds. `referenced`: reached through a <use>, so a <symbol> draws.
+  void visit(const xmlNode* child, const Inherited& parent, bool referenced = false) {
+    {
       const std::string tag = localName(child);
       static const char* const hidden[] = {
           "defs",           "symbol", "clippath",  "mask",         "marker", "pattern",
           "metadata",       "title",  "desc",      "style",        "script", "lineargradient",
           "radialgradient", "filter", "namedview", "foreignobject"};
-      if (std::find_if(std::begin(hidden), std::end(hidden),
+      if (!(referenced && lower(tag) == "symbol") &&
+          std::find_if(std::begin(hidden), std::end(hidden),
                        [&](const char* h) { return lower(tag) == h; }) != std::end(hidden))
-        continue;
+        return;
       Declarations style = declarationsOf(child, tag);
-      if (lower(valueOf(style, "display")) == "none") continue;
+      if (lower(valueOf(style, "display")) == "none") return;
       Inherited here = parent;
       if (const auto transform = attribute(child, "transform"))
         here.transform = parent.transform * parseTransform(child, *transform);
@@ -302,17 +310,49 @@ class SvgReader {
       if (const std::string opacity = valueOf(style, "stroke-opacity");
           !opacity.empty() && opacity != "inherit")
         here.strokeOpacity = opacity;
-      if (tag == "g" || tag == "svg" || tag == "a" || tag == "switch") {
+      if (tag == "g" || tag == "svg" || tag == "a" || tag == "switch" || tag == "symbol") {
         walk(child->children, here);
-        continue;
+        return;
       }
       if (tag == "line" || tag == "polyline" || tag == "polygon" || tag == "rect" ||
           tag == "path" || tag == "circle" || tag == "ellipse") {
         shape(child, tag, here, style);
-        continue;
+        return;
+      }
+      if (tag == "use") {
+        use(child, here);
+        return;
       }
       ++ignoredElements_[tag];
     }
+  }
+
+  // <use href="#id" x y>: the element with that id drawn again, moved by x and y after the
+  // use's transform, with the use's stroke (Inkscape's clones and tiled clones, Illustrator's
+  // symbols). A reference to itself or an ancestor, or past the copy budget, fails in one line.
+  void use(const xmlNode* node, const Inherited& here) {
+    auto href = attribute(node, "href");  // xlink:href too: xmlGetProp ignores the namespace
+    if (!href || href->empty() || (*href)[0] != '#') {
+      ++ignoredElements_["use"];
+      return;
+    }
+    const auto found = ids_.find(href->substr(1));
+    if (found == ids_.end()) fail(node, "<use> of " + quotedExcerpt(*href, 40) + ": no such id");
+    for (const xmlNode* up = node; up; up = up->parent)
+      if (up == found->second) fail(node, "<use> of " + quotedExcerpt(*href, 40) + " draws itself");
+    if (useDepth_ >= kMaxUseDepth || ++useCopies_ > kMaxUseCopies ||
+        drawing_.lines.size() > kMaxCreasePatternEdges)
+      fail(node, "<use> copies past the limits (" + std::to_string(kMaxUseCopies) + " copies, " +
+                     std::to_string(kMaxUseDepth) + " nested, " +
+                     std::to_string(kMaxCreasePatternEdges) + " lines)");
+    Inherited moved = here;
+    Affine shift;
+    shift.e = length(node, "x");
+    shift.f = length(node, "y");
+    moved.transform = here.transform * shift;
+    ++useDepth_;
+    visit(found->second, moved, true);
+    --useDepth_;
   }
 
   void finish() {
@@ -344,6 +384,11 @@ class SvgReader {
   }
 
  private:
+  static constexpr int kMaxUseDepth = 32;
+  static constexpr std::size_t kMaxUseCopies = 1u << 20;
+  std::unordered_map<std::string, const xmlNode*> ids_;
+  int useDepth_ = 0;
+  std::size_t useCopies_ = 0;
   static std::string localName(const xmlNode* node) {
     return reinterpret_cast<const char*>(node->name);
   }
