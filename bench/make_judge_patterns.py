@@ -628,12 +628,38 @@ def main(out):
     t += '<line x1="50" y1="0" x2="50" y2="100" stroke="rgba(0, 0, 255, 0.5)"/>\n'
     svgs["svg_single_crease_rgba.svg"] = t + "</svg>\n"
 
+    # S11. the same Miura-ori drawn as Inkscape's tiled clones draw it: one strip of two columns
+    #     in <defs>, placed three times by <use> (shared lines drawn twice)
+    #     (the strip's left side is drawn as its right one, a crease where two strips meet;
+    #     on the sheet's edge the reader reads it as border)
+    flat, fold3, faces, edges, assign, angles = miura(m=6, n=4, H=0.6)
+    strip = []
+    for (a_, b_), asg, ang in zip(edges, assign, angles):
+        p, q = flat[a_], flat[b_]
+        if max(p[0], q[0]) > 2.0 + 1e-9 or (p[0] == q[0] == 0.0):
+            continue
+        strip.append((p, q, asg, ang))
+        if p[0] == q[0] == 2.0:
+            strip.append(((0.0, p[1]), (0.0, q[1]), asg, ang))
+    t = svg_open("600", "500", "0 0 600 500",
+                 'xmlns:xlink="http://www.w3.org/1999/xlink"')
+    t += '<defs><g id="strip" transform="scale(80)">\n'
+    for p, q, asg, ang in strip:
+        col, op = ("#000", 1) if asg == "B" else (("#f00" if asg == "M" else "#00f"), abs(ang) / 180)
+        t += (f'<line x1="{f(p[0])}" y1="{f(p[1])}" x2="{f(q[0])}" y2="{f(q[1])}" stroke="{col}" '
+              f'stroke-opacity="{op:.4f}" stroke-width="0.01"/>\n')
+    t += "</g></defs>\n"
+    for k in range(3):
+        t += f'<use xlink:href="#strip" x="{20 + 160 * k}" y="20"/>\n'
+    svgs["svg_miura_use_tiles.svg"] = t + "</svg>\n"
+
     for name, text in svgs.items():
         with open(os.path.join(out, name), "w") as fh:
             fh.write(text)
 
     with open(os.path.join(out, "miura_motion.json"), "w") as fh:
         json.dump({"fold_miura_quads_frames.fold": {"w": 1.0, "h": 1.0, "d": 0.5, "H": 0.75},
+                   "svg_miura_use_tiles.svg": {"w": 80.0, "h": 80.0, "d": 40.0, "H": 48.0},
                    "svg_miura_polylines_named.svg": {"w": 80.0, "h": 80.0, "d": 40.0,
                                                       "H": 0.6 * 80.0, "offset": [20, 20]}},
                   fh, indent=1)
