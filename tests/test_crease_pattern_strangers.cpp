@@ -197,3 +197,24 @@ TEST(CreasePatternStrangers, SvgUseDrawsTheElementItNamesAgain) {
   EXPECT_THROW(readSvgCreasePatternText(svg(R"(<use href="#nothing"/>)"), "missing.svg"),
                CreasePatternError);
 }
+
+// Uses nested over a group ask for its elements many times over: each element drawn again counts,
+// and past 1,048,576 the file is refused in one line, quickly. Here 12 levels of two uses (4,096,
+// few enough for the old count of uses alone) over a group of 1,000 unstroked lines would be 4
+// million visits, each reading the element's style, before "no lines of a crease colour".
+TEST(CreasePatternStrangers, SvgUsesNestedPastTheCopyBudgetAreRefused) {
+  std::string body = R"(<defs><g id="l0">)";
+  for (int k = 0; k < 1000; ++k) body += R"(<line x1="0" y1="0" x2="1" y2="1"/>)";
+  body += "</g>";
+  for (int level = 1; level <= 12; ++level)
+    body += "<g id=\"l" + std::to_string(level) + "\"><use href=\"#l" + std::to_string(level - 1) +
+            "\"/><use href=\"#l" + std::to_string(level - 1) + "\"/></g>";
+  body += R"(</defs><use href="#l12"/>)";
+  try {
+    readSvgCreasePatternText(svg(body), "bomb.svg");
+    ADD_FAILURE() << "read";
+  } catch (const CreasePatternError& error) {
+    EXPECT_NE(std::string(error.what()).find("past the limit of 1048576"), std::string::npos)
+        << error.what();
+  }
+}

@@ -289,6 +289,11 @@ class SvgReader {
 
   // One element and what it holds. `referenced`: reached through a <use>, so a <symbol> draws.
   void visit(const xmlNode* child, const Inherited& parent, bool referenced = false) {
+    // Every element drawn again through a <use> counts against the copy budget, so uses nested
+    // over a large group cannot ask for more work than the file's own elements many times over.
+    if (useDepth_ > 0 && ++useCopies_ > kMaxUseCopies)
+      fail(child, "<use> copies past the limit of " + std::to_string(kMaxUseCopies) +
+                      " elements drawn again");
     {
       const std::string tag = localName(child);
       static const char* const hidden[] = {
@@ -340,10 +345,8 @@ class SvgReader {
     if (found == ids_.end()) fail(node, "<use> of " + quotedExcerpt(*href, 40) + ": no such id");
     for (const xmlNode* up = node; up; up = up->parent)
       if (up == found->second) fail(node, "<use> of " + quotedExcerpt(*href, 40) + " draws itself");
-    if (useDepth_ >= kMaxUseDepth || ++useCopies_ > kMaxUseCopies ||
-        drawing_.lines.size() > kMaxCreasePatternEdges)
-      fail(node, "<use> copies past the limits (" + std::to_string(kMaxUseCopies) + " copies, " +
-                     std::to_string(kMaxUseDepth) + " nested, " +
+    if (useDepth_ >= kMaxUseDepth || drawing_.lines.size() > kMaxCreasePatternEdges)
+      fail(node, "<use> copies past the limits (" + std::to_string(kMaxUseDepth) + " nested, " +
                      std::to_string(kMaxCreasePatternEdges) + " lines)");
     Inherited moved = here;
     Affine shift;
