@@ -44,7 +44,7 @@ def dihedral(verts, tris, a, b):
         p = verts[list(t)]
         v = np.cross(p[1] - p[0], p[2] - p[0])
         n.append(v / np.linalg.norm(v))
-    return math.degrees(math.acos(max(-1.0, min(1.0, abs(float(np.dot(n[0], n[1]))) * 0 + float(np.dot(n[0], n[1]))))))
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(np.dot(n[0], n[1]))))))
 
 
 def kabsch_max(P, Q):
@@ -83,7 +83,7 @@ def miura_closed_form(dev, w, h, d, H, offset=(0.0, 0.0)):
     return np.array(out)
 
 
-def miura_check(path, params, scale):
+def miura_check(path, params):
     """Largest distance (fraction of cell side) to the nearest rigid state, at 25/50/75%."""
     res = {}
     for pct in (25, 50, 75):
@@ -162,7 +162,7 @@ def main(cf, pdir):
                     if ang is None or abs(ang - want) > 0.5:
                         fails.append(f"{name}: {pct}%: crease at {ang} degrees, wants {want}")
         if name in motion:
-            r = miura_check(path, motion[name], 1.0)
+            r = miura_check(path, motion[name])
             for pct, (e, H) in r.items():
                 msg = f"{name}: Miura {pct}%: {100 * e:.3f}% of the cell side off the rigid motion (H {H:.3f})"
                 print(msg)

@@ -7,7 +7,7 @@ angle: 1 is 180 degrees), not from this project's own generators or test pattern
 
     python3 bench/make_judge_patterns.py OUT_DIR
 
-writes ~16 .fold and .svg files into OUT_DIR and OUT_DIR/miura_motion.json (the Miura-ori's
+writes 24 .fold and .svg files into OUT_DIR and OUT_DIR/miura_motion.json (the Miura-ori's
 closed-form rigid-folding motion parameters, read by bench/judge_patterns.py).
 """
 
