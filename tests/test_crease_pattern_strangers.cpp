@@ -218,3 +218,23 @@ TEST(CreasePatternStrangers, SvgUsesNestedPastTheCopyBudgetAreRefused) {
         << error.what();
   }
 }
+
+// stroke="currentColor" (icon editors, hand-written files) is the element's CSS color, inherited
+// from its ancestors as a browser draws it. Before, it was an unknown colour and the line dropped.
+TEST(CreasePatternStrangers, SvgCurrentColorIsTheColorProperty) {
+  const CreasePattern p = readSvgCreasePatternText(
+      svg(R"(<g color="#f00"><line x1="25" y1="0" x2="25" y2="100" stroke="currentColor"/></g>)"
+          R"(<g style="color: blue" stroke="currentcolor">)"
+          R"(<line x1="75" y1="0" x2="75" y2="100" stroke-opacity="0.5"/></g>)"),
+      "current.svg");
+  EXPECT_FALSE(noted(p, "no crease colour")) << notesOf(p);
+  const auto c = creases(p);
+  ASSERT_EQ(c.size(), 2u) << notesOf(p);
+  for (const CreasePatternEdge& e : c) {
+    if (p.vertices[e.a].x == 25.0) {
+      EXPECT_EQ(e.foldAngleDegrees, -180.0);
+    } else {
+      EXPECT_EQ(e.foldAngleDegrees, 90.0);
+    }
+  }
+}

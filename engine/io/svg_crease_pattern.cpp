@@ -254,6 +254,7 @@ struct Inherited {
   Affine transform;
   std::string stroke;  // empty: none given
   std::string strokeOpacity;
+  std::string color;  // CSS's color, what stroke="currentColor" takes
 };
 
 class SvgReader {
@@ -315,6 +316,8 @@ class SvgReader {
       if (const std::string opacity = valueOf(style, "stroke-opacity");
           !opacity.empty() && opacity != "inherit")
         here.strokeOpacity = opacity;
+      if (const std::string color = valueOf(style, "color"); !color.empty() && color != "inherit")
+        here.color = color;
       if (tag == "g" || tag == "svg" || tag == "a" || tag == "switch" || tag == "symbol") {
         walk(child->children, here);
         return;
@@ -412,7 +415,7 @@ class SvgReader {
   // Presentation attributes, then <style> rules by tag, class and tag.class, then style="...".
   Declarations declarationsOf(const xmlNode* node, const std::string& tag) const {
     Declarations out;
-    for (const char* name : {"stroke", "stroke-opacity", "opacity", "display"})
+    for (const char* name : {"stroke", "stroke-opacity", "opacity", "display", "color"})
       if (const auto value = attribute(node, name)) out[name] = trim(*value);
     const auto apply = [&](const std::unordered_map<std::string, Declarations>& table,
                            const std::string& key) {
@@ -710,10 +713,14 @@ class SvgReader {
     }
     bool namedGreen = false;
     double colourAlpha = 1.0;
-    const auto rgb = parseColour(here.stroke, namedGreen, colourAlpha);
+    // currentColor is the element's color property (inherited), as a browser draws it.
+    const std::string& stroke = lower(trim(here.stroke)) == "currentcolor" && !here.color.empty()
+                                    ? here.color
+                                    : here.stroke;
+    const auto rgb = parseColour(stroke, namedGreen, colourAlpha);
     const auto assignment = rgb ? assignmentForColour(*rgb, namedGreen) : std::nullopt;
     if (!assignment) {
-      ++unknownColours_[lower(trim(here.stroke))];
+      ++unknownColours_[lower(trim(stroke))];
       return;
     }
     std::vector<Polyline> lines;
