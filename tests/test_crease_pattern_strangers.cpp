@@ -94,7 +94,9 @@ TEST(CreasePatternStrangers, SvgColourAlphaIsTheFoldAngleAsOpacityIs) {
 
 // FOLD makes edges_assignment optional; a file that gives only edges_foldAngle (a simulator's
 // export, a script's) says by each angle's sign which way it folds: positive valley, negative
-// mountain. Before, every edge was read as unassigned and nothing folded.
+// mountain. Before, every edge was read as unassigned: no crease, so no crease error was reported
+// (the waterbomb of bench/make_judge_patterns.py: 0.00 degrees at 50%, strain 1.9e-2; now 14.6
+// degrees, strain 1.2e-4), and an export named no mountain or valley.
 TEST(CreasePatternStrangers, FoldAnglesWithoutAssignmentsAreMountainsAndValleys) {
   const CreasePattern p = readFoldCreasePatternText(
       R"({"file_spec": 1.1, "vertices_coords": [[0,0],[0.5,0],[1,0],[1,1],[0.5,1],[0,1]],
