@@ -36,9 +36,10 @@ namespace curvefold {
 // The flat sheet `flat` grown where its first step `step` (a cross from it) ended short of
 // `target` (see above): with `kind` "rectangle" a rectangle along the cross's first line,
 // "square" a square of its larger side, "disk" a disk about the same centre grown to the end that
-// fell shortest. `share` of each shortfall is given back (startByFirstStep tries all and half:
-// a grown sheet's corners stand past a rounded footprint). None where no end fell short by over
-// 0.5% of the sheet's size, or `flat` is not flat.
+// fell shortest, "ellipse" `flat` scaled about its centre (development alike) to that end. `share`
+// of each shortfall is given back (startByFirstStep tries all and half: a grown sheet's corners
+// stand past a rounded footprint). None where no end fell short by over 0.5% of the sheet's size,
+// or `flat` is not flat.
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
                                           const TriangleMesh& target, const std::string& kind,
                                           double share = 1.0);
@@ -54,7 +55,8 @@ struct FirstStepStart {
 };
 
 // Of `candidates` (and, for each flat one whose first step is a fold, its sheet with all and with
-// half the paper given back: a disk's a disk, else a rectangle, or with `square` a square), the
+// half the paper given back: a disk's a disk, an ellipse's an ellipse, else a rectangle, or with
+// `square` a square), the
 // one whose first step lands nearest. None when
 // `candidates` is empty.
 std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
@@ -63,8 +65,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 
 // chooseStart's `start` toward a smooth target with no axis (fitter.smoothTarget(), not
 // revolutionTarget()), `kind` "", "square", "rectangle" or "disk": the start itself and, where it
-// is not flat and no kind was named, the squares, the rectangle and the disks cut to the target's
-// footprint (footprintStarts; the disks alone for "disk"), each with its paper given back, compared
+// is not flat and no kind was named, the squares, the rectangle, the disks and (an oblong round
+// footprint's) the ellipses cut to the target's footprint (footprintStarts; the disks alone for
+// "disk"), each with its paper given back, compared
 // by their first steps; `start` becomes the winner (placed) when that is not `start` itself. None
 // (and `start` untouched) where the rule does not apply (a creased start: the target was folded
 // from it) or `start` won.
