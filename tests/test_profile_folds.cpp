@@ -498,10 +498,13 @@ TEST(TubeStart, TheConeAroundAVaseEnclosesItsBelly) {
   EXPECT_GT(deepest, 1e-3) << "the nearest start should lie inside the belly";
 }
 
-// Toward a vase whose belly stands outside the cone fitted through its profile, the start is the
-// cone around it (first_step_start.hpp, reviseTubeByFirstStep): its rings' first step lands
-// nearer than the nearest cone's, whose belly no ring widens.
-TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
+// The cone around a vase's profile is not taken where its rings land nearer by Chamfer but leave
+// the sheet farther from the target by Hausdorff than the start's own rings (first_step_start.hpp,
+// reviseTubeByFirstStep): on this vase, whose belly stands outside the cone fitted through its
+// profile, the cone around's two rings land at 1.81 / 7.48 mm (Chamfer / Hausdorff), the cone
+// through's at 1.82 / 6.05 mm; without the guard the cone around was taken, and the fit started
+// where its farthest point is farther (the lathe vase's fit ended 7.06% -> 10.2% by Hausdorff).
+TEST(TubeStart, TheConeAroundIsNotTakenWhereItsRingsLandFartherByHausdorff) {
   const TriangleMesh vase = vaseInsideCone();
   const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
   ASSERT_TRUE(fitter.revolutionTarget());
@@ -509,13 +512,13 @@ TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
   ASSERT_TRUE(start.placed);
   const Sheet nearest = *start.placed;
   const std::optional<FirstStepStart> chosen = reviseTubeByFirstStep(start, fitter, "", {});
-  ASSERT_TRUE(chosen);
+  if (chosen) {
+    ADD_FAILURE() << "the cone around was taken: its rings land " << chosen->chamfer << " / "
+                  << chosen->hausdorff << " m against " << chosen->replacedChamfer << " / "
+                  << chosen->replacedHausdorff << " m";
+  }
   ASSERT_TRUE(start.placed);
-  EXPECT_NE(start.placed->positions, nearest.positions);
-  EXPECT_NE(start.placement.find("around its profile"), std::string::npos) << start.placement;
-  // Its first step lands nearer than the nearest cone's, and nearer than the cone it started.
-  EXPECT_LT(chosen->chamfer, chosen->replacedChamfer) << chosen->replacedChamfer;
-  EXPECT_LT(chosen->chamfer, chosen->startChamfer);
+  EXPECT_EQ(start.placed->positions, nearest.positions);
 }
 
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not
