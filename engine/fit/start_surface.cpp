@@ -78,7 +78,7 @@ std::optional<double> ringsReach(const Sheet& disk, const std::vector<SurfaceSam
   double best = 1e300;
   for (std::size_t k = 1; k <= kRingsCreases; ++k) {
     fit = fitProfileCreases(profile, radius, k, fit ? &*fit : nullptr, random);
-    best = std::min(best, fit->score);
+    best = std::min(best, fit->mean);
   }
   return best;
 }
