@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -757,9 +758,11 @@ TriangleMesh tube(double radius, double height, int around, int along) {
 // start's choice): on a 100k-triangle scan seconds of CPU, so `fit --time 5` took 16-24 s on a
 // loaded machine. The claim is on work, against one pass over the edges, not on the clock.
 TEST(StartSurface, ANoisyScanIsTakenForSmoothWithoutSearchingItsCreasePlanes) {
-  TriangleMesh scan = tube(0.06, 0.25, 160, 60);  // 19,200 triangles
+  // 25,600 triangles about 1.2 mm apart, each vertex 0.8 mm off (finer than bench's 100k scan,
+  // twice its noise): most edges bend past the smooth threshold, 12 degrees.
+  TriangleMesh scan = tube(0.03, 0.1, 160, 80);
   std::mt19937_64 random(38);
-  std::normal_distribution<double> noise(0.0, 0.0004);
+  std::normal_distribution<double> noise(0.0, 0.0008);
   for (glm::dvec3& p : scan.positions) {
     const double r = std::hypot(p.x, p.z), scale = (r + noise(random)) / r;
     p.x *= scale;
@@ -774,7 +777,9 @@ TEST(StartSurface, ANoisyScanIsTakenForSmoothWithoutSearchingItsCreasePlanes) {
   const double start = testing::processCpuSeconds();
   EXPECT_TRUE(isSmoothOrScanned(scan));
   const double cost = testing::processCpuSeconds() - start;
-  EXPECT_LT(cost, 12.0 * std::max(onePass, 1e-4))
+  std::printf("isSmoothOrScanned %.4f s of CPU, one pass over the edges %.4f s\n", cost, onePass);
+  // Measured: 0.5 passes' worth; through the plane search first, 8.
+  EXPECT_LT(cost, 3.0 * std::max(onePass, 1e-4))
       << cost << " s of CPU, one pass over the edges " << onePass << " s";
 }
 
