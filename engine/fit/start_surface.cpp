@@ -224,6 +224,11 @@ bool isCurved(const TriangleMesh& target) {
 }
 
 bool isSmoothOrScanned(const TriangleMesh& target) {
+  // Noise (many sharp edges) or curvature at most vertices decide it alone, at a few passes over
+  // the edges: tested first, so that a large scan (100k triangles of noise: seconds of plane
+  // hypotheses, before any deadline) never reaches the plane search. The same answer either way.
+  const double sharp = sharpShare(target, kSmoothBendDegrees);
+  if (sharp > kNoisySharpShare || curvedAtMostVertices(target)) return true;
   CreasePlaneOptions options;
   options.minDihedralDegrees = kSmoothBendDegrees;
   options.minSupport = 0.03 * boundingDiagonal(target);
@@ -234,10 +239,8 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
   // A fold's crease holds a good share of the sharp edges, and along it every edge is bent.
   // Noise scatters sharp edges, a few per plane, and where it bends some edges of a row of a
   // depth scan's grid (a plane of edges), most edges of that row are not bent.
-  const double sharp = sharpShare(target, kSmoothBendDegrees);
   const double tolerance = kCreaseTolerance * boundingDiagonal(target);
-  return sharp > kNoisySharpShare || curvedAtMostVertices(target) ||
-         planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
+  return planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
          sharpShare(target, kSmoothBendDegrees, &planes.front().plane, tolerance) <
              kNoisyCreaseShare;
 }
