@@ -81,8 +81,8 @@ struct Anchors {
 struct BoundaryCurve {
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
 
-  explicit BoundaryCurve(const TriangleMesh& mesh) {
-    for (const auto& [edge, faces] : edgeFaces(mesh))
+  BoundaryCurve(const TriangleMesh& mesh, const EdgeFaces& edges) {
+    for (const auto& [edge, faces] : edges)
       if (faces.size() == 1)
         segments.emplace_back(eigenOf(mesh.positions[edge.first]),
                               eigenOf(mesh.positions[edge.second]));
@@ -314,7 +314,8 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   }
   const std::vector<Eigen::Vector3d> normals = vertexNormals(sheet);
   std::vector<char> onBoundary(sheet.positions.size(), 0);
-  for (const auto& [edge, faces] : edgeFaces(sheet))
+  const EdgeFaces sheetEdgeFaces = edgeFaces(sheet);
+  for (const auto& [edge, faces] : sheetEdgeFaces)
     if (faces.size() == 1) onBoundary[edge.first] = onBoundary[edge.second] = 1;
   std::vector<Eigen::Vector3d> sheetBoundary;
   for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
@@ -327,15 +328,23 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   // a set of points it is whole and lies on its copy turned any way about its axis (a disk, a
   // 96-gon, nearly so); only the slit (the corners) says which turn the development's folds
   // were made on. A copy with no boundary of its own (a slit welded shut) says nothing.
-  const BoundaryCurve sheetEdges(sheet), copyEdges(moved);
+  // The copy's, made when a way first lays the surfaces (a copy laid no way needs none).
+  const BoundaryCurve sheetEdges(sheet, sheetEdgeFaces);
+  std::optional<BoundaryCurve> copyEdgesMade;
   std::vector<Eigen::Vector3d> copyBoundary;
-  for (const auto& [a, b] : copyEdges.segments) {
-    copyBoundary.push_back(a);
-    copyBoundary.push_back(b);
-  }
-  const bool edgesTell = !sheetEdges.empty() && !copyEdges.empty();
+  auto copyEdgesOf = [&]() -> const BoundaryCurve& {
+    if (!copyEdgesMade) {
+      copyEdgesMade.emplace(moved, edgeFaces(moved));
+      for (const auto& [a, b] : copyEdgesMade->segments) {
+        copyBoundary.push_back(a);
+        copyBoundary.push_back(b);
+      }
+    }
+    return *copyEdgesMade;
+  };
   auto edgesFit = [&](const RigidMotion& motion) {
-    if (!edgesTell) return true;
+    const BoundaryCurve& copyEdges = copyEdgesOf();
+    if (sheetEdges.empty() || copyEdges.empty()) return true;
     const Eigen::Matrix3d linear = eigenOf(motion.linear);
     const Eigen::Vector3d offset = eigenOf(motion.offset);
     for (const Eigen::Vector3d& p : sheetBoundary)
@@ -399,6 +408,7 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   // sheet on the copy), then refined holding the boundaries together: nothing where no turn
   // lays them.
   auto turnedOntoEdges = [&](const RigidMotion& motion) -> std::optional<RigidMotion> {
+    const BoundaryCurve& copyEdges = copyEdgesOf();
     const Eigen::Matrix3d linear = eigenOf(motion.linear);
     const Eigen::Vector3d offset = eigenOf(motion.offset);
     struct Turned {
