@@ -448,6 +448,8 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   };
   std::vector<RigidMotion> found;
   std::vector<char> foundFits;  // whether each way found lays the boundaries on each other
+  constexpr int kTurnsTried = 2;
+  int turnsTried = 0;  // turns that laid no boundaries
   std::vector<Pose> foundPoses;
   const std::size_t kFirst = 4, kMostRefined = 64;
   const double coarseEnough = 3.0 * starts.front().residual + 2e-3 * scale;
@@ -489,9 +491,12 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
       if (!lays(motion)) continue;
     }
     bool fits = edgesFit(motion);
-    if (!fits) {
+    if (!fits && turnsTried < kTurnsTried) {
       const std::optional<RigidMotion> onEdges = turnedOntoEdges(motion);
       if (deadline.passed()) break;
+      // Where no turn lays the boundaries (a copy whose slit was welded shut), none will for
+      // the next way either: a few tries, not one per way.
+      if (!onEdges) ++turnsTried;
       if (onEdges) {
         const bool seen = std::any_of(found.begin(), found.end(), [&](const RigidMotion& f) {
           double linear = 0.0;
