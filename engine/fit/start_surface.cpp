@@ -329,14 +329,16 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
     any = true;
   }
   // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
-  // target was folded from the catalogue's sheet where it lies).
+  // target was folded from the catalogue's sheet where it lies). At least one is measured when
+  // the clock has cut the catalogue's sheets short: those lie in the catalogue's frame, often far
+  // from a smooth target (a scan kept a default cylinder 177% of its diagonal off at --time 2).
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest, disk;
   double nearestChamfer = 0.0, nearestScore = 0.0, diskChamfer = 0.0;
-  for (PlacedStart& placed : smooth && !anyFoldedFrom && !outOfTime()
+  for (PlacedStart& placed : smooth && !anyFoldedFrom
                                  ? placedStarts(samples, surfaceArea(target), kind)
                                  : std::vector<PlacedStart>{}) {
-    if (outOfTime()) break;
+    if (nearest && outOfTime()) break;
     if (!keeps(placed.sheet)) {
       sizedDropped = true;
       continue;
