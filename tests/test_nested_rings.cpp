@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -65,6 +66,16 @@ struct RingStep {
     before = fitter.approximateDistance(session.fixed());
     std::mt19937_64 random(5);
     return suggestNestedRings(session, fitter, *axis, samples, 1, {}, random, mostCreases);
+  }
+  // The one suggestion such a step makes, checked to be a valid sheet that does not cross itself;
+  // none (and a failure) when it made none or several.
+  std::optional<FoldSuggestion> validStep(std::size_t mostCreases) {
+    std::vector<FoldSuggestion> steps = step(mostCreases);
+    EXPECT_EQ(steps.size(), 1u);
+    if (steps.size() != 1u) return std::nullopt;
+    validate(steps.front().sheet);
+    EXPECT_TRUE(findSelfIntersections(steps.front().sheet).intersections.empty());
+    return std::move(steps.front());
   }
   FoldFitter fitter;
   std::vector<SurfaceSample> samples;
@@ -210,11 +221,9 @@ TEST(NestedRings, ALippedBowlsRimIsReachedByRingsDrawnOutermostFirst) {
       makeSurface("disk", {{"radius", 0.061}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
   RingStep ring(target, disk);
   ASSERT_TRUE(ring.axis);
-  const std::vector<FoldSuggestion> steps = ring.step(2);
-  ASSERT_EQ(steps.size(), 1u);
-  const FoldSuggestion& step = steps.front();
-  validate(step.sheet);
-  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
+  const std::optional<FoldSuggestion> made = ring.validStep(2);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
   // The farthest of the target's rim from the sheet (its vertices: the disk is fine).
   double rimApart = 0.0;
   for (const glm::dvec3& p : target.positions) {
@@ -240,11 +249,9 @@ TEST(NestedRings, ASteepCupIsFoldedByRingsOfFewPlanesNotAPinwheel) {
       makeSurface("disk", {{"radius", 0.05}, {"resolution", testing::kSanitized ? 12.0 : 20.0}});
   RingStep ring(target, disk);
   ASSERT_TRUE(ring.axis);
-  const std::vector<FoldSuggestion> steps = ring.step(2);
-  ASSERT_EQ(steps.size(), 1u);
-  const FoldSuggestion& step = steps.front();
-  validate(step.sheet);
-  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
+  const std::optional<FoldSuggestion> made = ring.validStep(2);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
   // 0.41 of the disk's distance (both resolutions); 0.49-0.51 with rings of 8 to 16 planes alone.
   EXPECT_LT(step.after, 0.45 * ring.before)
       << "before " << ring.before << ", " << step.folds.size() << " folds";
@@ -258,14 +265,12 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
       makeSurface("disk", {{"radius", 0.088}, {"resolution", testing::kSanitized ? 12.0 : 24.0}});
   RingStep ring(target, disk);
   ASSERT_TRUE(ring.axis);
-  const std::vector<FoldSuggestion> steps = ring.step(testing::kSanitized ? 2 : 3);
-  ASSERT_EQ(steps.size(), 1u);
-  const FoldSuggestion& step = steps.front();
+  const std::optional<FoldSuggestion> made = ring.validStep(testing::kSanitized ? 2 : 3);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
   EXPECT_GE(step.folds.size(), 16u);  // rings, not a fold
   EXPECT_LT(step.after, 0.45 * ring.before) << "before " << ring.before;
   EXPECT_NEAR(step.after, ring.fitter.approximateDistance(step.sheet), 1e-12);
-  validate(step.sheet);
-  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
   EXPECT_EQ(ring.session.foldCount(), 0u);  // the session is left as it was
   // The folds replay on a session of their own to the same sheet (a design keeps them).
   FoldSession replayed(disk);
@@ -284,9 +289,9 @@ TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   RingStep ring(target, disk);
   ASSERT_TRUE(ring.axis);
   ring.session.setSymmetry(parseSymmetry("rotational:12:z", disk));
-  const std::vector<FoldSuggestion> steps = ring.step(2);
-  ASSERT_EQ(steps.size(), 1u);
-  const FoldSuggestion& step = steps.front();
+  const std::optional<FoldSuggestion> made = ring.validStep(2);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
   // Each ring is one fold and its images (one group), at most two rings and a plane across.
   std::vector<int> groups;
   for (const FoldRecord& fold : step.folds)
@@ -296,8 +301,6 @@ TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   // Such a ring about halves the distance (0.494 of it on the disk of 24 rings, 0.501 on the
   // sanitized run's 12): the bound says it helps, with room for the coarser disk.
   EXPECT_LT(step.after, 0.6 * ring.before) << "before " << ring.before;
-  validate(step.sheet);
-  EXPECT_TRUE(findSelfIntersections(step.sheet).intersections.empty());
 }
 
 // A coarse hemisphere (7 rings, tilted): each ring's edges bend as much as a fold's crease and
