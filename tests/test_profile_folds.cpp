@@ -505,6 +505,9 @@ TEST(TubeStart, TheConeAroundAVaseEnclosesItsBelly) {
 // through's at 1.82 / 6.05 mm; without the guard the cone around was taken, and the fit started
 // where its farthest point is farther (the lathe vase's fit ended 7.06% -> 10.2% by Hausdorff).
 TEST(TubeStart, TheConeAroundIsNotTakenWhereItsRingsLandFartherByHausdorff) {
+  // Two full starts each given chains of rings: 90 s under the sanitizers, whose run the other
+  // tube tests' chains already cover; the Release run checks the choice.
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the choice (90 s here)";
   const TriangleMesh vase = vaseInsideCone();
   const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
   ASSERT_TRUE(fitter.revolutionTarget());
@@ -526,6 +529,9 @@ TEST(TubeStart, TheConeAroundIsNotTakenWhereItsRingsLandFartherByHausdorff) {
 // (ring_folds.hpp, kTubeChainRings): the chain goes on past four rings and ends closer than the
 // same chain stopped at four (the first four rings are the same: the same seed draws them).
 TEST(TubeRings, ANarrowNeckIsCutByMoreThanFourRings) {
+  // Two chains of up to eight rings: 110 s under the sanitizers, whose run the other tube tests'
+  // chains already cover; the Release run checks the chain's length.
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the chain (110 s here)";
   const TriangleMesh vase = revolved(
       [](double h) {
         const double t = (h + 0.1) / 0.2;
