@@ -16,6 +16,8 @@
 //
 //   build/bench/bench_live_simulation --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include <benchmark/benchmark.h>
@@ -25,18 +27,31 @@
 #include "engine/geometry/fold_session.hpp"
 #include "engine/render/headless_renderer.hpp"
 #include "engine/render/scene_builder.hpp"
+#include "engine/render/vulkan_context.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
 
 namespace curvefold {
 namespace {
 
-// The smallest cylinder resolution with at least this many vertices.
+// The smallest even cylinder resolution with at least this many vertices: the count grows as the
+// resolution squared, so start from that estimate and step by 2 (a 1M-vertex cylinder takes
+// seconds to build; stepping up from 16 would take hundreds).
 Sheet cylinderWithVertices(std::size_t vertices) {
-  for (int resolution = 16;; resolution += 2) {
-    Sheet sheet = makeSurface("cylinder", {{"resolution", resolution}});
-    if (sheet.vertexCount() >= vertices) return sheet;
+  auto cylinder = [](int resolution) {
+    return makeSurface("cylinder", {{"resolution", resolution}});
+  };
+  const double perSquare = double(cylinder(100).vertexCount()) / (100.0 * 100.0);
+  int resolution = std::max(16, int(std::sqrt(double(vertices) / perSquare)) / 2 * 2);
+  Sheet sheet = cylinder(resolution);
+  while (sheet.vertexCount() < vertices) sheet = cylinder(resolution += 2);
+  while (resolution > 16) {
+    Sheet smaller = cylinder(resolution - 2);
+    if (smaller.vertexCount() < vertices) break;
+    sheet = std::move(smaller);
+    resolution -= 2;
   }
+  return sheet;
 }
 
 void BM_SimulatingWindowFrame(benchmark::State& state) {
@@ -90,6 +105,31 @@ BENCHMARK(BM_SimulatingWindowFrame)
     ->Args({10'000, 2, 0, 0})
     ->Args({10'000, 0, 0, 1})
     ->Args({10'000, 1, 0, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->MinTime(3.0);
+
+// For a GPU (issue 39: the compute path at 1M vertices at 90 Hz): a 1M-vertex cylinder stepped on
+// the Vulkan solver; the whole frame, the simulation alone, the drawing alone. Skipped on a CPU
+// device (lavapipe), where one such frame takes seconds.
+void BM_MillionVertexGpuFrame(benchmark::State& state) {
+  static const bool cpuDevice = [] {
+    const VulkanContext context{ContextOptions{}};
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+    return properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  }();
+  if (cpuDevice) {
+    state.SkipWithError("the 1M-vertex frame is for a GPU; this device is a CPU (lavapipe)");
+    return;
+  }
+  BM_SimulatingWindowFrame(state);
+}
+BENCHMARK(BM_MillionVertexGpuFrame)
+    ->Args({1'000'000, 0, 0, 1})
+    ->Args({1'000'000, 1, 0, 1})
+    ->Args({1'000'000, 2, 0, 1})
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime()
