@@ -87,14 +87,24 @@ struct TubeAxis {
 };
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction);
 
+// The chains as far as one call grew them, to be grown on by a later call on the same sheet
+// (the start's probe, first_step_start.hpp, hands its winner's chains to the search, which
+// otherwise grew the same first rings again: about a quarter of a chain's CPU).
+struct TubeChains {
+  std::vector<glm::dvec3> sheet;               // the positions of the sheet they were grown on
+  std::vector<std::vector<RingShape>> chains;  // each chain's rings in order (fine, then all)
+};
+
 // Up to `count` chains of rings (see above) for the tube `session` holds, toward the fitter's
 // target of revolution about `axis` (its direction is used; the tube's own centroid is the axis
-// point) whose samples are `targetSamples`. The session is not changed.
-std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const FoldFitter& fitter,
-                                             const RevolutionAxis& axis,
-                                             const std::vector<SurfaceSample>& targetSamples,
-                                             std::size_t count, const Deadline& deadline,
-                                             std::mt19937_64& random,
-                                             std::size_t mostRings = kTubeChainRings);
+// point) whose samples are `targetSamples`, each of at most `mostRings` rings. The session is not
+// changed. `resume`: chains grown before on this very sheet (its positions equal `resume->sheet`;
+// otherwise ignored), remade ring by ring (makeRing is deterministic) and grown on from there.
+// `grown`: where the chains as grown are written (with the sheet's positions), when given.
+std::vector<FoldSuggestion> suggestTubeRings(
+    const FoldSession& session, const FoldFitter& fitter, const RevolutionAxis& axis,
+    const std::vector<SurfaceSample>& targetSamples, std::size_t count, const Deadline& deadline,
+    std::mt19937_64& random, std::size_t mostRings = kTubeChainRings,
+    const TubeChains* resume = nullptr, TubeChains* grown = nullptr);
 
 }  // namespace curvefold
