@@ -13,9 +13,12 @@
 // one ring per step of the search. At each step every ring neckRings solves for the sheet as the
 // rings before it left it (each order, each end, two turns), and each ring already in the chain
 // turned by half a step (its creases stay on the tube's radius: a reflection keeps its plane, and
-// only planes facing them fold those corners in), is made, checked for passing the sheet through
-// itself, and measured; the closest is kept while it brings the sheet closer. Within the
-// deadline: the two chains grow side by side, a ring each per step, and each step's candidates
+// only planes facing them fold those corners in), and the neck corner rings (per distinct turn of
+// the chain's rings, planes through the corners' radius where the sheet's largest radius begins
+// to stand out of the target's and, where it stands out most, through the target's radius plus
+// 0.5 or 0.75 of the excess: a narrow neck's corners folded in), is made, checked for passing the
+// sheet through itself, and measured; the closest is kept while it brings the sheet closer. Within
+// the deadline: the two chains grow side by side, a ring each per step, and each step's candidates
 // are scored in two batches (the solved rings at turn 0, then those at half a turn and the corner
 // rings; timed_batches.hpp); a batch the time left would not finish is not started, and when the
 // clock cuts the step the chains are answered as far as they got, each ring made whole (a cancel
