@@ -322,8 +322,9 @@ int run(int argc, char** argv) {
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
       StartChoice start = chooseStart(shape.mesh, shape.from.surface);
+      auto chains = std::make_shared<TubeChains>();
       if (!reviseByFirstStep(start, fitter, shape.from.surface, {}))
-        reviseTubeByFirstStep(start, fitter, shape.from.surface, {});
+        reviseTubeByFirstStep(start, fitter, shape.from.surface, {}, 2, chains.get());
       const Sheet initial =
           start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
       const std::string symmetry =
@@ -334,6 +335,7 @@ int run(int argc, char** argv) {
       options.maxFolds = shapeFolds;
       options.seconds = seconds;
       options.maxEvaluations = shapeEvaluations;
+      if (!chains->chains.empty()) options.tubeChains = chains;  // as fit hands them on
       const FitResult result = fitFolds(session, fitter, options);
       std::string trail;
       for (const FitProgress& step : result.steps) {

@@ -642,6 +642,69 @@ TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
   EXPECT_EQ(session.foldCount(), 0u);
 }
 
+// The chains the start's probe grew are handed to the search (ring_folds.hpp, TubeChains;
+// first_step_start.hpp, reviseTubeByFirstStep), which used to grow the same first rings again on
+// the same sheet. Handed a chain as long as it may grow, a step scores no candidate and answers
+// the handed rings themselves; allowed one ring more, it scores only that ring's candidates;
+// handed chains grown on another sheet are not used.
+TEST(TubeRings, AChainHandedOnIsGrownOnNotGrownAgain) {
+  const TriangleMesh bottle = revolved(
+      [](double h) {
+        const double s = std::clamp((h + 0.02) / 0.1, 0.0, 1.0);
+        return 0.05 - 0.025 * s * s * (3.0 - 2.0 * s);
+      },
+      -0.1, 0.1, 48, 30);
+  Sheet tube = makeSurface("cylinder", {{"radius", 0.05}, {"height", 0.2}, {"resolution", 16.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  const FoldFitter fitter(bottle, testing::sampledSettings(400, 1500, 4000));
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(bottle, 1500, 11);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  ASSERT_TRUE(axis);
+  const FoldSession session(tube);
+  TubeChains handed;
+  std::atomic<std::uint64_t> probe{0};
+  std::mt19937_64 random(5);
+  const std::vector<FoldSuggestion> first =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1,
+                       testing::counting(Deadline{}, probe), random, 1, nullptr, &handed);
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_EQ(handed.chains.size(), 2u);
+  EXPECT_EQ(handed.sheet, tube.positions);
+  EXPECT_GT(probe.load(), 0u);
+
+  std::atomic<std::uint64_t> full{0};
+  std::mt19937_64 other(6);
+  const std::vector<FoldSuggestion> again =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1,
+                       testing::counting(Deadline{}, full), other, 1, &handed);
+  EXPECT_EQ(full.load(), 0u) << "the handed rings were searched again";
+  ASSERT_EQ(again.size(), 1u);
+  ASSERT_EQ(again.front().folds.size(), first.front().folds.size());
+  for (std::size_t f = 0; f < first.front().folds.size(); ++f) {
+    EXPECT_EQ(again.front().folds[f].plane.normal, first.front().folds[f].plane.normal);
+  }
+
+  std::atomic<std::uint64_t> fresh{0}, grownOn{0};
+  std::mt19937_64 a(7), b(7);
+  suggestTubeRings(session, fitter, *axis, targetSamples, 1, testing::counting(Deadline{}, fresh),
+                   a, 2);
+  const std::vector<FoldSuggestion> longer =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1,
+                       testing::counting(Deadline{}, grownOn), b, 2, &handed);
+  EXPECT_LT(grownOn.load(), fresh.load());
+  ASSERT_EQ(longer.size(), 1u);
+  EXPECT_LT(longer.front().after, longer.front().before);
+
+  // Chains grown on another sheet (the tube moved along its axis) are not remade on this one.
+  TubeChains elsewhere = handed;
+  for (glm::dvec3& p : elsewhere.sheet) p.y += 0.01;
+  std::atomic<std::uint64_t> ignored{0};
+  std::mt19937_64 c(6);
+  suggestTubeRings(session, fitter, *axis, targetSamples, 1, testing::counting(Deadline{}, ignored),
+                   c, 1, &elsewhere);
+  EXPECT_GT(ignored.load(), 0u);
+}
+
 // A cone tilted off the world's axes is a tube about its own axis (ring_folds.hpp, tubeAbout):
 // its axis point is the middle of its box across that axis, not of its box about the world's
 // axes, which a tilted cone's wide base pulls off the axis (the placed cones of the tilted

@@ -63,7 +63,8 @@ TriangleMesh shapeOf(const std::string& path) {
 // caller checks the start against it.
 // `deadline`: when the choice stops measuring more sheets (a share of --time).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const Deadline& deadline) {
+                   const std::string& output, const Deadline& deadline,
+                   std::shared_ptr<const TubeChains>& tubeChains) {
   const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -100,8 +101,12 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
         symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
     // Toward a vase, the cone around its profile where its rings land nearer than the start's
     // (rings only narrow a tube: a belly outside the start is never reached).
-    if (!symmetric && !firstStep)
-      firstStep = reviseTubeByFirstStep(start, fitter, from.surface, deadline);
+    // The probe's rings are handed to the search, which grows them on.
+    if (!symmetric && !firstStep) {
+      auto chains = std::make_shared<TubeChains>();
+      firstStep = reviseTubeByFirstStep(start, fitter, from.surface, deadline, 2, chains.get());
+      if (!chains->chains.empty()) tubeChains = std::move(chains);
+    }
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -377,7 +382,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(kStartShare * options.seconds)))
             : Deadline{};
-  Design design = startDesign(options.from, command, *fitter, options.output, startDeadline);
+  std::shared_ptr<const TubeChains> tubeChains;
+  Design design =
+      startDesign(options.from, command, *fitter, options.output, startDeadline, tubeChains);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
@@ -395,6 +402,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
   fit.started = started;
   fit.maxEvaluations = options.evaluations;
+  fit.tubeChains = tubeChains;
   fit.cancelled = &InterruptGuard::flag();
   fit.progress = [&](const FitProgress& step) {
     if (step.fold == 0) {

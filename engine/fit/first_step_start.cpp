@@ -233,7 +233,8 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
 
 std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                     const std::string& kind,
-                                                    const Deadline& deadline, std::size_t rings) {
+                                                    const Deadline& deadline, std::size_t rings,
+                                                    TubeChains* handed) {
   if (start.creased || !fitter.smoothTarget() || !fitter.revolutionTarget() ||
       !(kind.empty() || kind == "cone"))
     return std::nullopt;
@@ -248,17 +249,20 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
       !tubeAbout(around->sheet, axis->direction))
     return std::nullopt;
   // Where each start's first step lands: its chains of rings, measured exactly.
-  auto landing = [&](const Sheet& sheet) {
+  // Each start's chains are kept to hand on (the search grows the winner's on).
+  TubeChains ownChains, aroundChains;
+  auto landing = [&](const Sheet& sheet, TubeChains& chains) {
     FoldSession session(sheet);
     std::mt19937_64 random(fitter.settings().seed);
-    const std::vector<FoldSuggestion> steps =
-        suggestTubeRings(session, fitter, *axis, samples, 1, deadline, random, rings);
+    const std::vector<FoldSuggestion> steps = suggestTubeRings(
+        session, fitter, *axis, samples, 1, deadline, random, rings, nullptr, &chains);
     return surfaceDistance(meshOf(steps.empty() ? sheet : steps.front().sheet), fitter.target(),
                            kSamples);
   };
-  const SurfaceDistance ownLanded = landing(own);
+  const SurfaceDistance ownLanded = landing(own, ownChains);
+  if (handed) *handed = ownChains;
   if (deadline.passed()) return std::nullopt;
-  const SurfaceDistance aroundLanded = landing(around->sheet);
+  const SurfaceDistance aroundLanded = landing(around->sheet, aroundChains);
   // Nearer by Chamfer, and no farther by Hausdorff: a cone around whose rings leave a lobe or
   // an end farther than the start's own rings do is not taken (the lathe vase: its two rings
   // 1.41% / 10.1% against the cone through's 1.94% / 7.06%, and its fit ended at 1.62% / 10.2%,
@@ -266,6 +270,7 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
   if (!(aroundLanded.chamfer < ownLanded.chamfer) ||
       !(aroundLanded.hausdorff <= ownLanded.hausdorff))
     return std::nullopt;
+  if (handed) *handed = std::move(aroundChains);
   FirstStepStart chosen{*around,
                         aroundLanded.chamfer,
                         aroundLanded.hausdorff,

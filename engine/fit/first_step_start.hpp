@@ -29,6 +29,7 @@
 #include "engine/fit/deadline.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
+#include "engine/fit/ring_folds.hpp"
 #include "engine/fit/start_surface.hpp"
 
 namespace curvefold {
@@ -92,9 +93,12 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
 // `start` itself. None (and `start` untouched) where the rule does not apply (a creased start,
 // a target with no axis, a start that is no tube about the axis) or `start` won. The enclosing
 // cone is tried only while `deadline` allows once the start's own step is measured.
+// `handed`: the winner's chains as the probe grew them (ring_folds.hpp, TubeChains; set whichever
+// start won, whenever the probe ran), for the search to grow on (FitOptions::tubeChains) rather
+// than grow the same rings again.
 std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const FoldFitter& fitter,
                                                     const std::string& kind,
-                                                    const Deadline& deadline,
-                                                    std::size_t rings = 2);
+                                                    const Deadline& deadline, std::size_t rings = 2,
+                                                    TubeChains* handed = nullptr);
 
 }  // namespace curvefold

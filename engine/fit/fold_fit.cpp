@@ -772,8 +772,8 @@ bool FoldFitter::nestedRingsFrom(const Sheet& sheet) const {
 std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& session,
                                                                 std::size_t count,
                                                                 const Deadline& deadline,
-                                                                std::uint64_t step,
-                                                                bool& tried) const {
+                                                                std::uint64_t step, bool& tried,
+                                                                const TubeChains* handed) const {
   tried = false;
   const Target& target = *target_;
   if (count == 0 || !target.axis || !settings_.nestedRings) return {};
@@ -782,7 +782,8 @@ std::vector<FoldSuggestion> FoldFitter::suggestNestedRingsFirst(FoldSession& ses
   // profile (ring_folds.hpp) likewise come first; a symmetric design makes its own rings.
   if (!session.symmetricFolder() && tubeAbout(session.fixed(), target.axis->direction)) {
     session.cancel();
-    return suggestTubeRings(session, *this, *target.axis, target.queries, count, deadline, random);
+    return suggestTubeRings(session, *this, *target.axis, target.queries, count, deadline, random,
+                            kTubeChainRings, handed);
   }
   if (!nestedRingsFrom(session.fixed())) return {};
   tried = true;
@@ -1638,7 +1639,8 @@ class FitRun {
         // closer they are the step, and the clock is not spent on single folds before them.
         bool ringsTried = false;
         std::vector<FoldSuggestion> nexts = fitter_.suggestNestedRingsFirst(
-            *branch, options_.branching, deadline, 16 * (depth + 1) + k, ringsTried);
+            *branch, options_.branching, deadline, 16 * (depth + 1) + k, ringsTried,
+            options_.tubeChains.get());
         if (nexts.empty()) {
           std::vector<FoldSuggestion> pleats =
               suggestPleats(*branch, fitter_, fitter_.smoothTarget() ? options_.pleats : 0,

@@ -101,6 +101,8 @@ struct FoldSuggestion {
   bool crease = false;  // through a plane of the target's creases
 };
 
+struct TubeChains;  // ring_folds.hpp
+
 class FoldFitter {
  public:
   // Samples the target once. Throws InvalidTarget for a target checkTarget refuses.
@@ -159,9 +161,12 @@ class FoldFitter {
   // rings were drawn), whether or not any brought it closer.
   // Whether the nested rings are drawn from `sheet` (it lies flat across the target's axis).
   bool nestedRingsFrom(const Sheet& sheet) const;
+  // `handed`: tube chains the start's probe grew on this sheet (ring_folds.hpp), grown on
+  // rather than again.
   std::vector<FoldSuggestion> suggestNestedRingsFirst(FoldSession& session, std::size_t count,
                                                       const Deadline& deadline, std::uint64_t step,
-                                                      bool& tried) const;
+                                                      bool& tried,
+                                                      const TubeChains* handed = nullptr) const;
 
  private:
   struct Target;
@@ -215,6 +220,9 @@ struct FitOptions {
   // While searching, after the unfolding and after each depth of the beam: folds, the best
   // sequence's Chamfer distance as the search's samples measure it (approximateMeasure), seconds.
   std::function<void(std::size_t, double, double)> searching;
+  // The tube rings' chains the start's probe grew (reviseTubeByFirstStep): the search's first
+  // step grows them on from there, on the sheet they were grown on.
+  std::shared_ptr<const TubeChains> tubeChains;
 };
 
 struct FitResult {

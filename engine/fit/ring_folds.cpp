@@ -1,10 +1,12 @@
 #include "engine/fit/ring_folds.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -35,6 +37,83 @@ constexpr double kSameDirection = 0.98;
 // 0.97), and 4 to 16 (4 cuts to 0.65, 5 to 0.76, a coarser star).
 constexpr int kFineOrders[] = {6, 8, 12, 16};
 constexpr int kAllOrders[] = {4, 5, 6, 8, 12, 16};
+// A corner ring's planes at these fractions of its ring's distance from the axis.
+constexpr double kCornerInward[] = {1.0, 0.95};
+// Neck corner rings (neckCornerRing): height bins of the profile, how far toward the excess's
+// peak a ring's cut may begin (where the excess falls below this share of the peak), and where
+// between the target's radius and the corners' the planes pass at the peak (0.5: the corners
+// fold onto the target's radius there).
+constexpr int kCornerBins = 24;
+constexpr double kCornerStart = 0.25;
+constexpr double kCornerDepths[] = {0.5, 0.75};
+
+// A corner ring that folds in the corners standing farthest out of the target (a narrow neck's):
+// the ring of `order` planes turned by `turn`, each plane through the corners' radius where the
+// excess of the sheet's largest radius over the target's mean radius (by height) begins, and
+// through `depth` of the way from the target's radius to the corners' at the excess's peak, so
+// the cut deepens toward the peak and past it toward the end `side` (+1 the axis's end, -1 the
+// other) rather than growing linearly from an end as neckRings' rings do. None where no bin
+// stands out by a twentieth of the radius or the cut would begin at the peak.
+std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetSamples,
+                                        const std::vector<SurfaceSample>& targetSamples,
+                                        const RevolutionAxis& axis, int order, double turn,
+                                        int side, double depth) {
+  const auto heightAndRadius = [&](const glm::dvec3& p) {
+    const double h = glm::dot(p - axis.point, axis.direction);
+    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
+  };
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : sheetSamples) {
+    const double h = heightAndRadius(s.position).x;
+    lo = std::min(lo, h);
+    hi = std::max(hi, h);
+  }
+  if (!(hi - lo > 1e-9)) return std::nullopt;
+  std::array<double, kCornerBins> largest{}, targetSum{};
+  std::array<int, kCornerBins> sheetCount{}, targetCount{};
+  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
+  for (const SurfaceSample& s : sheetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
+    largest[b] = std::max(largest[b], hr.y);
+    ++sheetCount[b];
+  }
+  double radius = 0.0;
+  for (const SurfaceSample& s : targetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = bin(hr.x);
+    if (b < 0 || b >= kCornerBins) continue;
+    targetSum[b] += hr.y;
+    ++targetCount[b];
+  }
+  std::array<double, kCornerBins> excess{};
+  int peak = -1;
+  for (int b = 0; b < kCornerBins; ++b) {
+    radius = std::max(radius, largest[b]);
+    excess[b] = sheetCount[b] >= 3 && targetCount[b] >= 3
+                    ? largest[b] - targetSum[b] / targetCount[b]
+                    : -1e300;
+    if (peak < 0 || excess[b] > excess[peak]) peak = b;
+  }
+  if (peak < 0 || !(excess[peak] > 0.05 * radius)) return std::nullopt;
+  // The cut begins on the side away from `side`, where the excess falls off.
+  int begin = peak;
+  while (begin - side >= 0 && begin - side < kCornerBins &&
+         excess[begin] > kCornerStart * excess[peak])
+    begin -= side;
+  if (begin == peak || excess[begin] < -1e299) return std::nullopt;
+  const auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kCornerBins; };
+  const double t0 = centre(begin), tPeak = centre(peak), radius0 = largest[begin];
+  const double rhoPeak = targetSum[peak] / targetCount[peak] + depth * excess[peak];
+  const double g = (rhoPeak - radius0) / (tPeak - t0);
+  RingShape shape;
+  shape.height = t0;
+  shape.radius = radius0;
+  shape.tilt = std::atan(-g);
+  shape.turn = turn;
+  shape.order = order;
+  return shape;
+}
 
 }  // namespace
 
@@ -120,7 +199,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
                                              const RevolutionAxis& targetAxis,
                                              const std::vector<SurfaceSample>& targetSamples,
                                              std::size_t count, const Deadline& deadline,
-                                             std::mt19937_64& random, std::size_t mostRings) {
+                                             std::mt19937_64& random, std::size_t mostRings,
+                                             const TubeChains* resume, TubeChains* grownOut) {
   if (count == 0 || mostRings == 0 || targetSamples.empty() || deadline.givesUp()) return {};
   const Sheet& sheet = session.fixed();
   const std::optional<TubeAxis> tube = tubeAbout(sheet, targetAxis.direction);
@@ -157,6 +237,17 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
     chain.current = measuredBefore;
     chains.push_back(std::move(chain));
   }
+  // Chains handed on from an earlier call on this sheet: their rings remade, not searched again.
+  if (resume && resume->sheet == sheet.positions)
+    for (std::size_t c = 0; c < chains.size() && c < resume->chains.size(); ++c) {
+      Chain& chain = chains[c];
+      for (const RingShape& ring : resume->chains[c]) {
+        if (chain.kept.size() >= mostRings) break;
+        makeRing(*chain.grown, ringOf(ring, axis));
+        chain.kept.push_back(ring);
+      }
+      if (!chain.kept.empty()) chain.current = measure(chain.grown->fixed());
+    }
 
   // The chains grow side by side, a ring each per step, so that a step the clock cuts answers
   // both as far as they got. Each step's candidates are scored in two batches, the solved rings
@@ -167,7 +258,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
   // (timed_batches.hpp): a batch the time left would not finish is not started, and what the
   // chains hold then, each ring made whole, is answered.
   TimedBatches batches(deadline);
-  for (std::size_t step = 0; step < mostRings && !batches.cut(); ++step) {
+  for (Chain& chain : chains) chain.done = chain.kept.size() >= mostRings;
+  while (!batches.cut()) {
     for (Chain& chain : chains) {
       if (chain.done || batches.cut()) continue;
       FoldSession& grown = *chain.grown;
@@ -184,12 +276,29 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
         }
       const std::size_t solved = shapes.size() / 2;  // those at turn 0
       for (const RingShape& ring : chain.kept)
-        for (const double inward : {1.0, 0.95}) {
+        for (const double inward : kCornerInward) {
           RingShape corner = ring;
           corner.turn += std::numbers::pi / ring.order;
           corner.radius *= inward;
           shapes.push_back(corner);
         }
+      // The corners farthest out folded in where they stand out most (a neck), once per
+      // distinct turn of the chain's rings.
+      std::vector<std::pair<int, double>> turns;
+      for (const RingShape& ring : chain.kept) {
+        const double step = 2.0 * std::numbers::pi / ring.order;
+        const double turn = std::fmod(ring.turn + 0.5 * step, step);
+        const bool seen = std::any_of(turns.begin(), turns.end(), [&](const auto& t) {
+          return t.first == ring.order && std::abs(t.second - turn) < 1e-9;
+        });
+        if (seen) continue;
+        turns.emplace_back(ring.order, turn);
+        for (const int side : {1, -1})
+          for (const double depth : kCornerDepths)
+            if (const std::optional<RingShape> corner =
+                    neckCornerRing(samples, targetSamples, axis, ring.order, turn, side, depth))
+              shapes.push_back(*corner);
+      }
       std::vector<double> scores(shapes.size(), 1e300);
       tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
       const auto evaluate = [&](std::size_t r) {
@@ -223,10 +332,16 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       makeRing(grown, ringOf(chosen, axis));
       chain.kept.push_back(chosen);
       chain.current = *best;
+      chain.done = chain.kept.size() >= mostRings;
     }
     if (std::all_of(chains.begin(), chains.end(), [](const Chain& c) { return c.done; })) break;
   }
   if (deadline.isCancelled()) return {};
+  if (grownOut) {
+    grownOut->sheet = sheet.positions;
+    grownOut->chains.clear();
+    for (const Chain& chain : chains) grownOut->chains.push_back(chain.kept);
+  }
 
   std::vector<FoldSuggestion> made;
   std::vector<double> measured;

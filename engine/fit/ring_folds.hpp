@@ -13,9 +13,12 @@
 // one ring per step of the search. At each step every ring neckRings solves for the sheet as the
 // rings before it left it (each order, each end, two turns), and each ring already in the chain
 // turned by half a step (its creases stay on the tube's radius: a reflection keeps its plane, and
-// only planes facing them fold those corners in), is made, checked for passing the sheet through
-// itself, and measured; the closest is kept while it brings the sheet closer. Within the
-// deadline: the two chains grow side by side, a ring each per step, and each step's candidates
+// only planes facing them fold those corners in), and the neck corner rings (per distinct turn of
+// the chain's rings, planes through the corners' radius where the sheet's largest radius begins
+// to stand out of the target's and, where it stands out most, through the target's radius plus
+// 0.5 or 0.75 of the excess: a narrow neck's corners folded in), is made, checked for passing the
+// sheet through itself, and measured; the closest is kept while it brings the sheet closer. Within
+// the deadline: the two chains grow side by side, a ring each per step, and each step's candidates
 // are scored in two batches (the solved rings at turn 0, then those at half a turn and the corner
 // rings; timed_batches.hpp); a batch the time left would not finish is not started, and when the
 // clock cuts the step the chains are answered as far as they got, each ring made whole (a cancel
@@ -87,14 +90,24 @@ struct TubeAxis {
 };
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction);
 
+// The chains as far as one call grew them, to be grown on by a later call on the same sheet
+// (the start's probe, first_step_start.hpp, hands its winner's chains to the search, which
+// otherwise grew the same first rings again: about a quarter of a chain's CPU).
+struct TubeChains {
+  std::vector<glm::dvec3> sheet;               // the positions of the sheet they were grown on
+  std::vector<std::vector<RingShape>> chains;  // each chain's rings in order (fine, then all)
+};
+
 // Up to `count` chains of rings (see above) for the tube `session` holds, toward the fitter's
 // target of revolution about `axis` (its direction is used; the tube's own centroid is the axis
-// point) whose samples are `targetSamples`. The session is not changed.
-std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const FoldFitter& fitter,
-                                             const RevolutionAxis& axis,
-                                             const std::vector<SurfaceSample>& targetSamples,
-                                             std::size_t count, const Deadline& deadline,
-                                             std::mt19937_64& random,
-                                             std::size_t mostRings = kTubeChainRings);
+// point) whose samples are `targetSamples`, each of at most `mostRings` rings. The session is not
+// changed. `resume`: chains grown before on this very sheet (its positions equal `resume->sheet`;
+// otherwise ignored), remade ring by ring (makeRing is deterministic) and grown on from there.
+// `grown`: where the chains as grown are written (with the sheet's positions), when given.
+std::vector<FoldSuggestion> suggestTubeRings(
+    const FoldSession& session, const FoldFitter& fitter, const RevolutionAxis& axis,
+    const std::vector<SurfaceSample>& targetSamples, std::size_t count, const Deadline& deadline,
+    std::mt19937_64& random, std::size_t mostRings = kTubeChainRings,
+    const TubeChains* resume = nullptr, TubeChains* grown = nullptr);
 
 }  // namespace curvefold
