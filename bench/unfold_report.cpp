@@ -14,6 +14,7 @@
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/replayed_motion.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/surfaces/obj_surface.hpp"
@@ -105,6 +106,25 @@ int run(int argc, char** argv) {
     for (const RigidMotion& m : all)
       std::printf(" %zu", wholeSheetReflections(m, initial.positions).size());
     std::printf("\n");
+    // Each way times each of the sheet's own symmetries (sheetSymmetries): the fewest planes by
+    // kind, and how many such ways take one or two planes that miss the sheet.
+    const std::vector<RigidMotion> symmetries = sheetSymmetries(sheet, 1e-4 * size);
+    std::size_t byKind[5] = {0, 0, 0, 0, 0}, made[3] = {0, 0, 0};
+    for (const RigidMotion& m : all)
+      for (const RigidMotion& s : symmetries) {
+        const RigidMotion way{m.linear * s.linear, m.linear * s.offset + m.offset};
+        const std::size_t kind = fewestReflections(way, 1e-4, 1e-4 * size);
+        ++byKind[std::min<std::size_t>(kind, 4)];
+        if (kind >= 1 && kind <= 2 &&
+            !wholeSheetReflections(snappedToFewPlanes(way, 1e-4, 1e-4 * size), initial.positions,
+                                   kind)
+                 .empty())
+          ++made[kind];
+      }
+    std::printf("  %zu symmetries of the sheet; ways times them by kind (0-4 planes): %zu %zu %zu "
+                "%zu %zu; made by 1 plane: %zu, by 2: %zu\n",
+                symmetries.size(), byKind[0], byKind[1], byKind[2], byKind[3], byKind[4], made[1],
+                made[2]);
   }
   return 0;
 }
