@@ -435,12 +435,13 @@ TEST(WholeSheetFolds, AMeasuredMotionNearOneOrTwoPlanesIsMadeWithThem) {
   }
 }
 
-// A disk (a 120-gon) lies on a moved copy of itself 240 ways times its two sides, one every 3
-// degrees; registration returns the ways its starts (every 15 degrees) lead to, and the
-// design's own way, the one its whole-sheet folds made, is often not among them: the ways found
-// then each took 3-4 planes where the design had used 2, past the folds left (issue 38, 1: the
-// disk miss of seed 9, 31%). The sheet's own turns and flips, read from its boundary, times a
-// way found give every way, and one of them is the design's two planes again.
+// A disk (a 120-gon at its defaults) lies on a moved copy of itself 240 ways times its two sides,
+// one every 3 degrees; registration returns the ways its starts (every 15 degrees) lead to, and
+// the design's own way, the one its whole-sheet folds made, may not be among them: each way found
+// then takes 3-4 planes where the design used 2 (issue 38, 1; the disk miss of seed 9 was first
+// taken for this, and turned out a misreading: docs/performance.md, reach12). The sheet's own
+// turns and flips, read from its boundary, times a way found give every way, and one of them is
+// the design's two planes again.
 TEST(WholeSheetFolds, ADisksOwnTurnsTakeAWayFoundToTheDesignsTwoPlanes) {
   const TriangleMesh sheet = meshOf(makeSurface("disk"));
   const double diagonal = boundingDiagonal(sheet);
@@ -461,7 +462,7 @@ TEST(WholeSheetFolds, ADisksOwnTurnsTakeAWayFoundToTheDesignsTwoPlanes) {
   ASSERT_EQ(wholeSheetReflections(design, sheet.positions, 2).size(), 2u);
   // A way registration may return: the design's after the disk's own turn by three corners
   // about its centre, which takes more planes.
-  const std::size_t corners = boundaryEdges(sheet).size();
+  const std::size_t corners = boundaryEdges(sheet).size();  // at its defaults, one edge a side
   const double angle = 3.0 * 2.0 * std::numbers::pi / double(corners);
   const glm::dmat3 turn(glm::dvec3(std::cos(angle), std::sin(angle), 0.0),
                         glm::dvec3(-std::sin(angle), std::cos(angle), 0.0), glm::dvec3(0, 0, 1));
