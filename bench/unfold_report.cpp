@@ -1,6 +1,8 @@
 // Why a reachable target's unfolding misses (issue 38, 1): for a target OBJ and the design that
 // made it, the design's fold planes, the crease planes read off the target (crease_planes.hpp) and
-// which fold each names, and what the unfolding (target_unfolding.hpp) read.
+// which fold each names, and what the unfolding (target_unfolding.hpp) read; where it ends a
+// rigid copy of the sheet, every way the sheet lies on it, each also times each of the sheet's own
+// symmetries and with each fold read flipped, counted by the planes its kind takes.
 //
 //   build/bench/unfold_report TARGET.obj DESIGN.curvefold.json
 #include <chrono>
@@ -12,6 +14,7 @@
 #include <glm/matrix.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/replayed_motion.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
@@ -105,6 +108,44 @@ int run(int argc, char** argv) {
     for (const RigidMotion& m : all)
       std::printf(" %zu", wholeSheetReflections(m, initial.positions).size());
     std::printf("\n");
+    // Each way times each of the sheet's own symmetries (sheetSymmetries): the fewest planes by
+    // kind, and how many such ways take one or two planes that miss the sheet.
+    const std::vector<RigidMotion> symmetries = sheetSymmetries(sheet, 1e-4 * size);
+    std::size_t byKind[5] = {0, 0, 0, 0, 0}, made[3] = {0, 0, 0};
+    for (const RigidMotion& m : all)
+      for (const RigidMotion& s : symmetries) {
+        const RigidMotion way{m.linear * s.linear, m.linear * s.offset + m.offset};
+        const std::size_t kind = fewestReflections(way, 1e-4, 1e-4 * size);
+        ++byKind[std::min<std::size_t>(kind, 4)];
+        if (kind >= 1 && kind <= 2 &&
+            !wholeSheetReflections(snappedToFewPlanes(way, 1e-4, 1e-4 * size), initial.positions,
+                                   kind)
+                 .empty())
+          ++made[kind];
+      }
+    std::printf(
+        "  %zu symmetries of the sheet; ways times them by kind (0-4 planes): %zu %zu %zu "
+        "%zu %zu; made by 1 plane: %zu, by 2: %zu\n",
+        symmetries.size(), byKind[0], byKind[1], byKind[2], byKind[3], byKind[4], made[1], made[2]);
+    // With one fold read made from its other side (the fit's flips): the motion left is then the
+    // mirror through that plane after the way.
+    std::size_t flippedKind[5] = {0, 0, 0, 0, 0};
+    for (const RigidMotion& m : all)
+      for (std::size_t s = 0; s <= symmetries.size(); ++s) {
+        const RigidMotion way = s == symmetries.size()
+                                    ? m
+                                    : RigidMotion{m.linear * symmetries[s].linear,
+                                                  m.linear * symmetries[s].offset + m.offset};
+        for (const UnfoldedFold& u : plan.folds) {
+          const glm::dvec3 n = u.plane.normal;
+          const glm::dmat3 h = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
+          const RigidMotion left{h * way.linear,
+                                 h * way.offset + 2.0 * glm::dot(n, u.plane.point) * n};
+          ++flippedKind[std::min<std::size_t>(fewestReflections(left, 1e-4, 1e-4 * size), 4)];
+        }
+      }
+    std::printf("  one fold read flipped, by kind (0-4 planes): %zu %zu %zu %zu %zu\n",
+                flippedKind[0], flippedKind[1], flippedKind[2], flippedKind[3], flippedKind[4]);
   }
   return 0;
 }

@@ -61,6 +61,11 @@ constexpr std::size_t kMostRegistrations = 24;
 constexpr double kRestTolerance = 1e-3;
 // How near (radians, and of the diagonal) a motion left is taken for one of one or two planes.
 constexpr double kRestSnap = 1e-3;
+// How near (radians, and of the diagonal) a registered way times a symmetry of the sheet is taken
+// for a motion of fewer planes (registration carries the crease planes' errors, 1.6e-5 seen).
+constexpr double kKindSnap = 1e-4;
+// Ways so made (whole_sheet_folds.hpp: sheetSymmetries) offered, at most, beyond those registered.
+constexpr std::size_t kMostSymmetricWays = 8;
 // Whole-sheet folds made and measured, at most, before the unfolding gives way to the search.
 constexpr std::size_t kWholeSheetTries = 6;
 // Seeds spread over the sheet that the last fold read is made from, each its own images.
@@ -1312,12 +1317,55 @@ class FitRun {
       }
       return false;
     };
+    // A sheet with discrete symmetries (a disk's polygon's turns and flips) lies on the copy each
+    // way registered times each of them, and registration's starts reach only some: those whose
+    // kind takes fewer whole-sheet folds than the way itself, and no more than are left, are
+    // offered too, the fewest first (the design's own way, whose folds the design made, is one of
+    // them). A design's own symmetry reads its images instead (optionsFor).
+    auto withSymmetricWays = [&](const std::vector<RigidMotion>& ways) {
+      const double shift = kKindSnap * fitter_.targetDiagonal();
+      auto planesFor = [&](const RigidMotion& m) { return fewestReflections(m, kKindSnap, shift); };
+      std::vector<std::pair<std::size_t, RigidMotion>> kept;
+      for (const RigidMotion& way : ways) kept.emplace_back(planesFor(way), way);
+      auto seen = [&](const RigidMotion& m) {
+        return std::any_of(kept.begin(), kept.end(), [&](const auto& k) {
+          double linear = 0.0;
+          for (int c = 0; c < 3; ++c)
+            linear = std::max(linear, glm::length(k.second.linear[c] - m.linear[c]));
+          return linear < kKindSnap && glm::distance(k.second.offset, m.offset) < shift;
+        });
+      };
+      const std::vector<RigidMotion> symmetries = sheetSymmetries(
+          meshOf(session_.initial()), kWholeSheetTolerance * fitter_.targetDiagonal());
+      std::size_t added = 0;
+      for (std::size_t w = 0; w < ways.size() && added < kMostSymmetricWays; ++w) {
+        const std::size_t own = planesFor(ways[w]);
+        for (const RigidMotion& s : symmetries) {
+          if (added >= kMostSymmetricWays || reading.passed()) break;
+          // x -> way(s(x)): the sheet moved onto itself, then onto the copy.
+          const RigidMotion moved{ways[w].linear * s.linear,
+                                  ways[w].linear * s.offset + ways[w].offset};
+          const std::size_t planes = planesFor(moved);
+          if (planes >= own || planes > most) continue;
+          const RigidMotion snapped = snappedToFewPlanes(moved, kKindSnap, shift);
+          if (seen(snapped)) continue;
+          kept.emplace_back(planes, snapped);
+          ++added;
+        }
+      }
+      std::stable_sort(kept.begin(), kept.end(),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+      std::vector<RigidMotion> all;
+      for (const auto& k : kept) all.push_back(k.second);
+      return all;
+    };
     for (int pass = 0; pass < 2 && tries < kWholeSheetTries; ++pass) {
       if (pass == 1) {
         if (reading.passed()) return false;
         motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
                                        kWholeSheetTolerance * fitter_.targetDiagonal(),
                                        kMostRegistrations, reading);
+        if (!symmetry) motions = withSymmetricWays(motions);
         lastAt.assign(motions.size(), std::nullopt);
         withinCount.assign(motions.size(), 0);
       }

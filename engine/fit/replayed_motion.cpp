@@ -10,6 +10,7 @@
 
 #include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/boundary_edges.hpp"
 #include "engine/geometry/surface_point.hpp"
 
 namespace curvefold {
@@ -57,9 +58,7 @@ std::optional<RigidMotion> restOntoTarget(const Sheet& initial, const Sheet& fol
   if (onSheet.size() != target.positions.size() || target.positions.empty() ||
       initial.triangleCount() == 0)
     return std::nullopt;
-  std::vector<char> onBoundary(target.positions.size(), 0);
-  for (const auto& [edge, around] : edgeFaces(target))
-    if (around.size() == 1) onBoundary[edge.first] = onBoundary[edge.second] = 1;
+  const std::vector<char> onBoundary = boundaryVertexFlags(target);
   const double size = std::max(sheetSize(initial), 1e-9);
   const std::size_t stride = 1 + target.positions.size() / kPairs;
   // Grouped by side of each plane read (up to 64), all pairs together first.

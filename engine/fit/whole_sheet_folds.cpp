@@ -12,6 +12,7 @@
 #include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/geometry/boundary_edges.hpp"
 
 namespace curvefold {
 namespace {
@@ -81,11 +82,10 @@ struct Anchors {
 struct BoundaryCurve {
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
 
-  BoundaryCurve(const TriangleMesh& mesh, const EdgeFaces& edges) {
-    for (const auto& [edge, faces] : edges)
-      if (faces.size() == 1)
-        segments.emplace_back(eigenOf(mesh.positions[edge.first]),
-                              eigenOf(mesh.positions[edge.second]));
+  BoundaryCurve(const TriangleMesh& mesh,
+                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges) {
+    for (const auto& [a, b] : edges)
+      segments.emplace_back(eigenOf(mesh.positions[a]), eigenOf(mesh.positions[b]));
   }
   bool empty() const { return segments.empty(); }
   Eigen::Vector3d closestPoint(const Eigen::Vector3d& p) const {
@@ -314,9 +314,8 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   }
   const std::vector<Eigen::Vector3d> normals = vertexNormals(sheet);
   std::vector<char> onBoundary(sheet.positions.size(), 0);
-  const EdgeFaces sheetEdgeFaces = edgeFaces(sheet);
-  for (const auto& [edge, faces] : sheetEdgeFaces)
-    if (faces.size() == 1) onBoundary[edge.first] = onBoundary[edge.second] = 1;
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> sheetRim = boundaryEdges(sheet);
+  for (const auto& [a, b] : sheetRim) onBoundary[a] = onBoundary[b] = 1;
   std::vector<Eigen::Vector3d> sheetBoundary;
   for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
     all.add(eigenOf(sheet.positions[i]), normals[i], onBoundary[i]);
@@ -329,12 +328,12 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   // 96-gon, nearly so); only the slit (the corners) says which turn the development's folds
   // were made on. A copy with no boundary of its own (a slit welded shut) says nothing.
   // The copy's, made when a way first lays the surfaces (a copy laid no way needs none).
-  const BoundaryCurve sheetEdges(sheet, sheetEdgeFaces);
+  const BoundaryCurve sheetEdges(sheet, sheetRim);
   std::optional<BoundaryCurve> copyEdgesMade;
   std::vector<Eigen::Vector3d> copyBoundary;
   auto copyEdgesOf = [&]() -> const BoundaryCurve& {
     if (!copyEdgesMade) {
-      copyEdgesMade.emplace(moved, edgeFaces(moved));
+      copyEdgesMade.emplace(moved, boundaryEdges(moved));
       for (const auto& [a, b] : copyEdgesMade->segments) {
         copyBoundary.push_back(a);
         copyBoundary.push_back(b);
@@ -718,6 +717,99 @@ std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
   }
   if (planes.size() == count && folds(planes, motion, points, margin, scale)) return planes;
   return {};
+}
+
+}  // namespace curvefold
+
+namespace curvefold {
+
+std::vector<RigidMotion> sheetSymmetries(const TriangleMesh& sheet, double tolerance) {
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> rim = boundaryEdges(sheet);
+  if (rim.empty()) return {};
+  const BoundaryCurve curve(sheet, rim);
+  std::vector<char> seen(sheet.positions.size(), 0);
+  std::vector<Eigen::Vector3d> boundary;
+  for (const auto& [a, b] : rim)
+    for (const std::uint32_t v : {a, b})
+      if (!seen[v]) {
+        seen[v] = 1;
+        boundary.push_back(eigenOf(sheet.positions[v]));
+      }
+  // The boundary's centroid and axes: exact for a regular polygon's corners (area samples are
+  // not), so a turn between corners is exact too.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : boundary) centre += p;
+  centre /= double(boundary.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& p : boundary) covariance += (p - centre) * (p - centre).transpose();
+  const Eigen::Matrix3d axes =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
+  const SurfaceDistanceQuery surface(sheet, "sheet");
+  const std::size_t stride = 1 + sheet.positions.size() / 200;
+  const double scale = boundingDiagonal(sheet);
+  std::vector<RigidMotion> found;
+  auto consider = [&](const Eigen::Matrix3d& linear) {
+    const RigidMotion s{glmOf(linear), glmOf(Eigen::Vector3d(centre - linear * centre))};
+    if (sameMotion(s, RigidMotion{}, scale)) return;
+    for (const RigidMotion& f : found)
+      if (sameMotion(f, s, scale)) return;
+    for (const Eigen::Vector3d& p : boundary)
+      if (!(curve.distance(linear * (p - centre) + centre) <= tolerance)) return;
+    for (std::size_t v = 0; v < sheet.positions.size(); v += stride)
+      if (!(surface.distance(s(sheet.positions[v])) <= tolerance)) return;
+    found.push_back(s);
+  };
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d a = axes.col(k);
+    auto across = [&](const Eigen::Vector3d& p) {
+      const Eigen::Vector3d d = p - centre;
+      return Eigen::Vector3d(d - a * a.dot(d));
+    };
+    // The boundary vertex farthest from the axis: the turn that moves it is the best defined.
+    std::size_t far = 0;
+    for (std::size_t i = 1; i < boundary.size(); ++i)
+      if (across(boundary[i]).norm() > across(boundary[far]).norm()) far = i;
+    const Eigen::Vector3d u = across(boundary[far]);
+    const double height = a.dot(boundary[far] - centre);
+    if (u.norm() <= tolerance) continue;
+    const Eigen::Matrix3d acrossAxis = identity - 2.0 * a * a.transpose();  // height to -height
+    for (const Eigen::Vector3d& q : boundary) {
+      const Eigen::Vector3d w = across(q);
+      if (std::abs(w.norm() - u.norm()) > tolerance) continue;
+      const bool level = std::abs(a.dot(q - centre) - height) <= tolerance;
+      const bool mirrored = std::abs(a.dot(q - centre) + height) <= tolerance;
+      if (!level && !mirrored) continue;
+      // The turn about the axis, and the mirror through the plane that holds the axis and
+      // bisects u and w (holds u, where w is u), each taking u to w.
+      const double angle = std::atan2(a.dot(u.cross(w)), u.dot(w));
+      const Eigen::Matrix3d turned = Eigen::AngleAxisd(angle, a).toRotationMatrix();
+      Eigen::Vector3d n = u - w;
+      if (n.norm() <= 1e-9 * u.norm()) n = a.cross(u);
+      n.normalize();
+      const Eigen::Matrix3d flipped = identity - 2.0 * n * n.transpose();
+      for (const Eigen::Matrix3d& linear : {turned, flipped}) {
+        if (level) consider(linear);
+        if (mirrored) consider(Eigen::Matrix3d(linear * acrossAxis));
+      }
+    }
+  }
+  return found;
+}
+
+std::size_t fewestReflections(const RigidMotion& motion, double angle, double shift) {
+  const Eigen::Matrix3d A = orthogonalPart(motion.linear);
+  const Eigen::Vector3d t = eigenOf(motion.offset);
+  if (A.determinant() < 0.0) {
+    // A mirror is -1 along its normal and shifts only along it.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (A + A.transpose()));
+    const Eigen::Vector3d n = solver.eigenvectors().col(0);
+    const Eigen::Matrix3d mirror = Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
+    return (mirror - A).norm() <= angle && (t - n * n.dot(t)).norm() <= shift ? 1 : 3;
+  }
+  const Eigen::AngleAxisd turned(A);
+  if (std::abs(turned.angle()) <= angle) return t.norm() <= shift ? 0 : 2;
+  return std::abs(turned.axis().dot(t)) <= shift ? 2 : 4;
 }
 
 }  // namespace curvefold

@@ -32,9 +32,17 @@
 // them: each needs its own number of whole-sheet folds, and the fit takes the fewest (a fold
 // that mirrors a star whole is one plane; the star's symmetry times it may take five).
 //
-// Known limits: a disk (a 96-gon) lies on its copy in 192 ways, each turn of its corners; those
-// found are the ones the starts (every 15 degrees) lead to. A copy that is not rigid
-// (creases left) is refused.
+// sheetSymmetries: the sheet's own discrete symmetries (a disk's n-gon's n turns and n flips, each
+// also through the flat sheet's plane), found from its boundary: each turn or flip about a
+// principal axis of the boundary (through its centroid) that takes one boundary vertex onto
+// another, kept where every boundary vertex lands on the boundary and the sheet on itself. A
+// registered way times each is a way too (registerSheetOntoAll's starts, every 15 degrees, reach
+// only some of an n-gon's), and the fit takes those needing the fewest whole-sheet folds
+// (fewestReflections): the design's own way among them.
+//
+// Known limits: a sheet's continuous symmetry (a slit cylinder's turn, when no slit is read) is
+// handled by registration's boundary turn, not here: only turns that take a boundary vertex onto
+// another are tried. A copy that is not rigid (creases left) is refused.
 #pragma once
 
 #include <optional>
@@ -81,5 +89,17 @@ std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
 std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
                                                    const std::vector<glm::dvec3>& points,
                                                    std::size_t count);
+
+// The sheet's discrete symmetries other than the identity (see above): motions taking every
+// boundary vertex within `tolerance` (metres) of the boundary and every so many vertices within it
+// of the sheet. Empty for a sheet with none (or no boundary).
+std::vector<RigidMotion> sheetSymmetries(const TriangleMesh& sheet, double tolerance);
+
+// The fewest reflections that make `motion` by its kind [Cartan-Dieudonne]: 0 the identity, 1 a
+// mirror, 2 a turn about a line or a shift, 3 an improper motion that is no mirror, 4 a screw;
+// `angle` (radians) and `shift` (metres) how far from the fewer kind still counts as it (a
+// measured motion is a little off). Whether planes that many miss the sheet is not asked
+// (wholeSheetReflections is).
+std::size_t fewestReflections(const RigidMotion& motion, double angle, double shift);
 
 }  // namespace curvefold
