@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -127,6 +128,56 @@ TEST(SurfaceDistance, OfASquareAndItsShiftIsTheShift) {
   EXPECT_NEAR(r.hausdorff, 0.1 * std::sqrt(2.0), 1e-12);
   EXPECT_LT(r.fromBMax, 1e-15);
   EXPECT_GT(r.chamfer, 0.01);
+}
+
+// Against a target measured once (its tree, samples and each vertex's nearest sample kept), every
+// figure is surfaceDistance's bit for bit: for each count and seed its own samples, and the peak
+// vertex, which no sample reaches, still measured (a vertex is skipped only where its nearest
+// sample's distance plus their gap cannot pass the farthest sample's).
+TEST(SurfaceDistance, AMeasuredSurfaceMeasuresAsItsMeshBitForBit) {
+  const TriangleMesh flat = meshOf(makeSurface("square", {{"resolution", 8}}));
+  TriangleMesh peaked = meshOf(makeSurface("square", {{"resolution", 3}}));
+  std::size_t centre = 0;
+  for (std::size_t v = 1; v < peaked.positions.size(); ++v)
+    if (glm::length(peaked.positions[v]) < glm::length(peaked.positions[centre])) centre = v;
+  ASSERT_LT(glm::length(peaked.positions[centre]), 0.05);  // inside, off the rim
+  peaked.positions[centre].z = 0.05;
+  const double peak = std::abs(peaked.positions[centre].z);
+  const MeasuredSurface measured(peaked);
+  for (const std::size_t samples : {40, 200, 2000})
+    for (const std::uint64_t seed : {1, 7, 1}) {
+      const SurfaceDistance plain = surfaceDistance(flat, peaked, samples, seed);
+      const SurfaceDistance reused = surfaceDistance(flat, measured, samples, seed);
+      EXPECT_EQ(plain.fromAMax, reused.fromAMax);
+      EXPECT_EQ(plain.fromAMean, reused.fromAMean);
+      EXPECT_EQ(plain.fromBMax, reused.fromBMax);
+      EXPECT_EQ(plain.fromBMean, reused.fromBMean);
+      EXPECT_EQ(plain.hausdorff, reused.hausdorff);
+      EXPECT_EQ(plain.chamfer, reused.chamfer);
+      EXPECT_EQ(plain.diagonal, reused.diagonal);
+      EXPECT_NEAR(reused.fromBMax, peak, 1e-15) << samples << " samples, seed " << seed;
+    }
+}
+
+// A fit measures its target (its start, every fold kept) against one tree of it, made once: the
+// target's triangles are indexed once, not once per measure (a 100k-triangle scan spent most of
+// a short --time building its tree again for each).
+TEST(FoldFitter, AFitIndexesItsTargetOnce) {
+  Sheet bent = makeSurface("square", {{"resolution", 40}});
+  for (glm::dvec3& p : bent.positions) p.z = 4.0 * p.x * p.x - 2.0 * p.y * p.y;  // a saddle
+  const TriangleMesh target = meshOf(bent);
+  const FoldFitter fitter(target);
+  FoldSession session(makeSurface("square", {{"resolution", 4}}));
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 200 : 600;
+  const std::uint64_t before = distanceTreeTriangles();
+  const FitResult result = fitFolds(session, fitter, options);
+  const std::uint64_t indexed = distanceTreeTriangles() - before;
+  ASSERT_GE(result.steps.size(), 1u);
+  EXPECT_GE(indexed, target.triangles.size());
+  EXPECT_LT(indexed, 2 * target.triangles.size()) << result.steps.size() << " measures";
 }
 
 TEST(SurfaceDistance, RefusesAMeshWithoutArea) {
