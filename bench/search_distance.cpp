@@ -34,7 +34,7 @@ int run(int argc, char** argv) {
     const FoldFitter fitter(readObjMesh(argv[i]));
     std::printf("%s: search score %.3f mm\n", argv[i], 1e3 * fitter.approximateDistance(sheet));
     print("search", fitter.approximateMeasure(sheet));
-    print("exact", surfaceDistance(meshOf(sheet), fitter.target()));
+    print("exact", surfaceDistance(meshOf(sheet), fitter.measuredTarget()));
   }
   return 0;
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -127,6 +128,60 @@ TEST(SurfaceDistance, OfASquareAndItsShiftIsTheShift) {
   EXPECT_NEAR(r.hausdorff, 0.1 * std::sqrt(2.0), 1e-12);
   EXPECT_LT(r.fromBMax, 1e-15);
   EXPECT_GT(r.chamfer, 0.01);
+}
+
+// Against a target measured once (its tree, samples and each vertex's nearest sample kept), every
+// figure is surfaceDistance's bit for bit: for each count and seed its own samples, and the peak
+// vertex, which no sample reaches, still measured (a vertex is skipped only where its nearest
+// sample's distance plus their gap cannot pass the farthest sample's).
+TEST(SurfaceDistance, AMeasuredSurfaceMeasuresAsItsMeshBitForBit) {
+  const TriangleMesh flat = meshOf(makeSurface("square", {{"resolution", 8}}));
+  // A tilted square 0 to 4 cm over the flat one (its farthest samples 4 cm off, at one rim), and a
+  // sliver too thin for a sample whose tip rises to 5 cm over the middle, where the nearest
+  // samples are 2 cm off: only the gap from them to the tip says that it may lie farther.
+  TriangleMesh peaked = meshOf(makeSurface("square", {{"resolution", 3}}));
+  for (glm::dvec3& p : peaked.positions) p.z = 0.02 + 0.2 * p.x;
+  const auto base = static_cast<std::uint32_t>(peaked.positions.size());
+  peaked.positions.push_back({0.0, 0.0, 0.02});
+  peaked.positions.push_back({1e-5, 0.0, 0.02});
+  peaked.positions.push_back({0.0, 0.0, 0.05});
+  peaked.triangles.push_back({base, base + 1, base + 2});
+  const double peak = 0.05;
+  const MeasuredSurface measured(peaked);
+  for (const std::size_t samples : {40, 200, 2000})
+    for (const std::uint64_t seed : {1, 7, 1}) {
+      const SurfaceDistance plain = surfaceDistance(flat, peaked, samples, seed);
+      const SurfaceDistance reused = surfaceDistance(flat, measured, samples, seed);
+      EXPECT_EQ(plain.fromAMax, reused.fromAMax);
+      EXPECT_EQ(plain.fromAMean, reused.fromAMean);
+      EXPECT_EQ(plain.fromBMax, reused.fromBMax);
+      EXPECT_EQ(plain.fromBMean, reused.fromBMean);
+      EXPECT_EQ(plain.hausdorff, reused.hausdorff);
+      EXPECT_EQ(plain.chamfer, reused.chamfer);
+      EXPECT_EQ(plain.diagonal, reused.diagonal);
+      EXPECT_NEAR(reused.fromBMax, peak, 1e-15) << samples << " samples, seed " << seed;
+    }
+}
+
+// A fit measures its target (its start, every fold kept) against one tree of it, made once: the
+// target's triangles are indexed once, not once per measure (a 100k-triangle scan spent most of
+// a short --time building its tree again for each).
+TEST(FoldFitter, AFitIndexesItsTargetOnce) {
+  Sheet bent = makeSurface("square", {{"resolution", 40}});
+  for (glm::dvec3& p : bent.positions) p.z = 4.0 * p.x * p.x - 2.0 * p.y * p.y;  // a saddle
+  const TriangleMesh target = meshOf(bent);
+  const FoldFitter fitter(target);
+  FoldSession session(makeSurface("square", {{"resolution", 4}}));
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = testing::kSanitized ? 100 : 200;
+  const std::uint64_t before = distanceTreeTriangles();
+  const FitResult result = fitFolds(session, fitter, options);
+  const std::uint64_t indexed = distanceTreeTriangles() - before;
+  ASSERT_GE(result.steps.size(), 2u);  // the start and a fold kept: two measures at least
+  EXPECT_GE(indexed, target.triangles.size());
+  EXPECT_LT(indexed, 2 * target.triangles.size()) << result.steps.size() << " measures";
 }
 
 TEST(SurfaceDistance, RefusesAMeshWithoutArea) {

@@ -65,7 +65,6 @@ TriangleMesh shapeOf(const std::string& path) {
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
                    const std::string& output, const Deadline& deadline,
                    std::shared_ptr<const TubeChains>& tubeChains) {
-  const TriangleMesh& target = fitter.target();
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
     parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
@@ -90,7 +89,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
     StartChoice start;
     try {
-      start = chooseStart(target, from.surface, symmetric ? from.symmetry : "", deadline);
+      start = chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "",
+                          deadline);
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
@@ -150,7 +150,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
   // The target's rotation is said, not used: measured (docs/performance.md), a ring of images
   // per fold has not yet brought a smooth shape closer than single folds in the same time.
   if (command->get_option("--symmetry")->count() == 0 && !isObj) {
-    const std::string turn = detectRotationalSymmetry(target, initialSheet(design, output));
+    const std::string turn =
+        detectRotationalSymmetry(fitter.measuredTarget(), initialSheet(design, output));
     if (!turn.empty())
       std::cout << "symmetry: the target turns onto itself by " << turn << " (--symmetry " << turn
                 << " folds rings of it)" << std::endl;
@@ -308,7 +309,8 @@ void printFitSummary(const FitCommandOptions& options, const FitResult& result,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const bool timeForFarthest = !timed || elapsed + result.steps.front().seconds < options.seconds;
   if (last.hausdorff > 1e-3 * last.diagonal && !interrupted && timeForFarthest) {
-    const FarthestPoints far = farthestPoints(meshOf(session.fixed()), fitter.target(), 5000);
+    const FarthestPoints far =
+        farthestPoints(meshOf(session.fixed()), fitter.measuredTarget(), 5000);
     char text[256];
     std::snprintf(text, sizeof text,
                   "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
@@ -435,8 +437,8 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   if (!options.png.empty()) {
     renderer = makePictureRenderer();
     outputs.add(options.png, [&](const fs::path& at) {
-      const SurfaceDistanceQuery target(fitter->target(), "target");
-      writeDistancePng(*renderer, session.fixed(), target, "distance to the target", at);
+      writeDistancePng(*renderer, session.fixed(), fitter->measuredTarget().query(),
+                       "distance to the target", at);
     });
   }
   outputs.checkWritable();

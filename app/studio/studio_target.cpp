@@ -254,13 +254,14 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
       retireFound();
       std::vector<TriangleMesh> results;
       for (const FoldSuggestion& suggestion : found_) results.push_back(meshOf(suggestion.sheet));
-      measuringFound_ = std::async(std::launch::async, [fitter = fitter_,
-                                                        results = std::move(results)] {
-        std::vector<double> chamfer;
-        for (const TriangleMesh& result : results)
-          chamfer.push_back(surfaceDistance(result, fitter->target(), kDistanceSamples).chamfer);
-        return chamfer;
-      });
+      measuringFound_ =
+          std::async(std::launch::async, [fitter = fitter_, results = std::move(results)] {
+            std::vector<double> chamfer;
+            for (const TriangleMesh& result : results)
+              chamfer.push_back(
+                  surfaceDistance(result, fitter->measuredTarget(), kDistanceSamples).chamfer);
+            return chamfer;
+          });
       for (const FoldSuggestion& suggestion : found_) {
         const FoldRecord& fold = suggestion.folds.front();
         offered_.push_back({fold.seed, fold.grabbed, fold.target});
@@ -276,13 +277,13 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
   const bool current = measured_ && measured_->session == doc.session.get() &&
                        measured_->revision == doc.session->designRevision();
   if (!current && !measuring_.valid()) {
-    measuring_ = std::async(std::launch::async, [fitter = fitter_,
-                                                 mesh = meshOf(doc.session->fixed()),
-                                                 session =
-                                                     static_cast<const void*>(doc.session.get()),
-                                                 revision = doc.session->designRevision()] {
-      return Measured{revision, session, surfaceDistance(mesh, fitter->target(), kDistanceSamples)};
-    });
+    measuring_ =
+        std::async(std::launch::async, [fitter = fitter_, mesh = meshOf(doc.session->fixed()),
+                                        session = static_cast<const void*>(doc.session.get()),
+                                        revision = doc.session->designRevision()] {
+          return Measured{revision, session,
+                          surfaceDistance(mesh, fitter->measuredTarget(), kDistanceSamples)};
+        });
   }
   measuredCurrent_ = current;
 }

@@ -31,4 +31,13 @@ FarthestPoints farthestPoints(const TriangleMesh& a, const TriangleMesh& b, std:
   return result;
 }
 
+FarthestPoints farthestPoints(const TriangleMesh& a, const MeasuredSurface& b, std::size_t samples,
+                              std::uint64_t seed) {
+  const SurfaceDistanceQuery toA(a, "first");
+  FarthestPoints result;
+  farthestOf(a, b.query(), samples, seed, result.onA, result.fromA);
+  farthestOf(b.mesh(), toA, samples, seed + 1, result.onB, result.fromB);
+  return result;
+}
+
 }  // namespace curvefold

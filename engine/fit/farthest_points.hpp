@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
 namespace curvefold {
@@ -19,6 +20,9 @@ struct FarthestPoints {
 
 // Throws DegenerateMesh for a mesh without area.
 FarthestPoints farthestPoints(const TriangleMesh& a, const TriangleMesh& b,
+                              std::size_t samples = 20'000, std::uint64_t seed = 1);
+// The same against B's tree made once (a fit's target).
+FarthestPoints farthestPoints(const TriangleMesh& a, const MeasuredSurface& b,
                               std::size_t samples = 20'000, std::uint64_t seed = 1);
 
 }  // namespace curvefold

@@ -147,16 +147,18 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     FoldSession session(start.sheet);
     std::vector<FoldSuggestion> steps = suggestPleats(session, fitter, 1, deadline);
     const Sheet& landed = steps.empty() ? start.sheet : steps.front().sheet;
-    const SurfaceDistance distance = surfaceDistance(meshOf(landed), fitter.target(), kSamples);
+    const SurfaceDistance distance =
+        surfaceDistance(meshOf(landed), fitter.measuredTarget(), kSamples);
     const double score = distance.chamfer + kHausdorffWeight * distance.hausdorff;
     if (!best || score < bestScore) {
       bestScore = score;
-      best = FirstStepStart{start,
-                            distance.chamfer,
-                            distance.hausdorff,
-                            surfaceDistance(meshOf(start.sheet), fitter.target(), kSamples).chamfer,
-                            grown,
-                            false};
+      best = FirstStepStart{
+          start,
+          distance.chamfer,
+          distance.hausdorff,
+          surfaceDistance(meshOf(start.sheet), fitter.measuredTarget(), kSamples).chamfer,
+          grown,
+          false};
     }
     return steps;
   };
@@ -256,8 +258,8 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
     std::mt19937_64 random(fitter.settings().seed);
     const std::vector<FoldSuggestion> steps = suggestTubeRings(
         session, fitter, *axis, samples, 1, deadline, random, rings, nullptr, &chains);
-    return surfaceDistance(meshOf(steps.empty() ? sheet : steps.front().sheet), fitter.target(),
-                           kSamples);
+    return surfaceDistance(meshOf(steps.empty() ? sheet : steps.front().sheet),
+                           fitter.measuredTarget(), kSamples);
   };
   const SurfaceDistance ownLanded = landing(own, ownChains);
   if (handed) *handed = ownChains;
@@ -271,14 +273,15 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
       !(aroundLanded.hausdorff <= ownLanded.hausdorff))
     return std::nullopt;
   if (handed) *handed = std::move(aroundChains);
-  FirstStepStart chosen{*around,
-                        aroundLanded.chamfer,
-                        aroundLanded.hausdorff,
-                        surfaceDistance(meshOf(around->sheet), fitter.target(), kSamples).chamfer,
-                        false,
-                        false,
-                        ownLanded.chamfer,
-                        ownLanded.hausdorff};
+  FirstStepStart chosen{
+      *around,
+      aroundLanded.chamfer,
+      aroundLanded.hausdorff,
+      surfaceDistance(meshOf(around->sheet), fitter.measuredTarget(), kSamples).chamfer,
+      false,
+      false,
+      ownLanded.chamfer,
+      ownLanded.hausdorff};
   start.surface = around->surface;
   start.parameters = around->parameters;
   start.placement = around->placement;

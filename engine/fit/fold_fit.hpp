@@ -112,6 +112,9 @@ class FoldFitter {
   FoldFitter& operator=(const FoldFitter&) = delete;
 
   const TriangleMesh& target() const;
+  // The target as every exact measure sees it (surfaceDistance(sheet, measuredTarget())): its
+  // tree and samples made once, at the first measure, for the fitter's life.
+  const MeasuredSurface& measuredTarget() const;
   double targetDiagonal() const;
   // Whether the target is smooth or a scan (isSmoothOrScanned): the search then adds rings and
   // pleats to its single folds.

@@ -42,7 +42,7 @@ constexpr double kFarthestSlack = 1.1;
 constexpr std::size_t kFarthestSamples = 3000;
 
 // The farthest either of the sheet and the target lies from the other, among samples.
-double farthestApart(const Sheet& sheet, const TriangleMesh& target) {
+double farthestApart(const Sheet& sheet, const MeasuredSurface& target) {
   const FarthestPoints far = farthestPoints(meshOf(sheet), target, kFarthestSamples, 7);
   return std::max(far.fromA, far.fromB);
 }
@@ -444,7 +444,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
-  const double farthestBefore = farthestApart(sheet, fitter.target());
+  const double farthestBefore = farthestApart(sheet, fitter.measuredTarget());
   std::vector<FoldSuggestion> made(candidates.size());
   std::vector<double> farthest(candidates.size(), 0.0);
   // Each candidate on a session made afresh at the base design: taking its folds back one undo at
@@ -484,7 +484,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
       made[c].sheet = own.fixed();
       made[c].before = before;
       made[c].after = fitter.approximateDistance(made[c].sheet);
-      farthest[c] = farthestApart(made[c].sheet, fitter.target());
+      farthest[c] = farthestApart(made[c].sheet, fitter.measuredTarget());
     }
   };
   TimedBatches batches(deadline);

@@ -431,7 +431,7 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   const double width = kWidth * fitter.targetDiagonal();
 
   // Where the sheet is far from the target: a spread of its vertices measured.
-  const SurfaceDistanceQuery query(fitter.target(), "target");
+  const SurfaceDistanceQuery& query = fitter.measuredTarget().query();
   const std::size_t stride = std::max<std::size_t>(1, n / kMeasured);
   std::vector<VertexIndex> measured;
   std::vector<glm::dvec3> points;
@@ -545,8 +545,8 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     const bool keeps = after < before && (out.size() < count || after < out.back().after);
     if (keeps && findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore &&
         (farthestWithin == kNone ||
-         surfaceDistance(meshOf(session.fixed()), fitter.target(), kFarthestSamples).hausdorff <=
-             farthestWithin)) {
+         surfaceDistance(meshOf(session.fixed()), fitter.measuredTarget(), kFarthestSamples)
+                 .hausdorff <= farthestWithin)) {
       FoldSuggestion pleat;
       pleat.folds.assign(
           session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
@@ -687,7 +687,8 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
       moved = reflectedAfter(second, reflectedAfter(first, moved));
     }
     if (farthestBefore == kNone)
-      farthestBefore = surfaceDistance(meshOf(sheet), fitter.target(), kFarthestSamples).hausdorff;
+      farthestBefore =
+          surfaceDistance(meshOf(sheet), fitter.measuredTarget(), kFarthestSamples).hausdorff;
     return folds.size() > 4 ? tryFolds(folds, farthestBefore) : kNone;
   };
   if (!flat && !fitter.revolutionTarget())

@@ -212,7 +212,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
   const double before = fitter.approximateDistance(sheet);
   auto measure = [&](const Sheet& folded) {
-    const SurfaceDistance d = surfaceDistance(meshOf(folded), fitter.target(), kMeasureSamples);
+    const SurfaceDistance d =
+        surfaceDistance(meshOf(folded), fitter.measuredTarget(), kMeasureSamples);
     return d.chamfer + kTubeHausdorffWeight * d.hausdorff;
   };
   const double measuredBefore = measure(sheet);

@@ -247,6 +247,12 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
 
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
                         const std::string& symmetry, const Deadline& deadline) {
+  return chooseStart(MeasuredSurface(target, "target"), kind, symmetry, deadline);
+}
+
+StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind,
+                        const std::string& symmetry, const Deadline& deadline) {
+  const TriangleMesh& target = measured.mesh();
   StartChoice best;
   bool any = false;
   std::string lastError;
@@ -315,7 +321,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
         continue;
       }
       sizedKept = sizedKept || !candidate.parameters.empty();
-      candidate.chamfer = surfaceDistance(meshOf(sheet), target, kChoiceSamples).chamfer;
+      candidate.chamfer = surfaceDistance(meshOf(sheet), measured, kChoiceSamples).chamfer;
     } catch (const SurfaceError& e) {
       lastError = e.what();
       continue;
@@ -345,7 +351,8 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
     }
     // Among placed sheets, the farthest point counts too: of two as near on average, the one
     // that covers the whole target (a cone down to a bowl's bottom) folds to it better.
-    const SurfaceDistance distance = surfaceDistance(meshOf(placed.sheet), target, kChoiceSamples);
+    const SurfaceDistance distance =
+        surfaceDistance(meshOf(placed.sheet), measured, kChoiceSamples);
     const double score = distance.chamfer + kPlacedHausdorffWeight * distance.hausdorff;
     if (placed.surface == "disk" && !disk) {
       disk = placed;
@@ -398,7 +405,7 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
     if (tube && keeps(tube->sheet)) {
       best.surface = tube->surface;
       best.parameters = tube->parameters;
-      best.chamfer = surfaceDistance(meshOf(tube->sheet), target, kChoiceSamples).chamfer;
+      best.chamfer = surfaceDistance(meshOf(tube->sheet), measured, kChoiceSamples).chamfer;
       best.placement = tube->placement;
       best.creased = false;
       best.placed = std::move(tube->sheet);
@@ -416,9 +423,14 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
 }
 
 std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial) {
+  return detectRotationalSymmetry(MeasuredSurface(target, "target"), initial);
+}
+
+std::string detectRotationalSymmetry(const MeasuredSurface& measured, const Sheet& initial) {
+  const TriangleMesh& target = measured.mesh();
   const double diagonal = boundingDiagonal(target);
   const std::vector<SurfaceSample> samples = sampleSurface(target, 2000, 5);
-  const SurfaceDistanceQuery query(target, "target");
+  const SurfaceDistanceQuery& query = measured.query();
   std::string best;
   int bestOrder = 1;
   for (const std::string& choice : symmetryChoices(initial)) {

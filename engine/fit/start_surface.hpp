@@ -40,6 +40,7 @@
 #include <string>
 
 #include "engine/fit/deadline.hpp"
+#include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/sheet.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -73,6 +74,10 @@ struct StartChoice {
 // costs two distance measures, seconds on a target of 30,000 triangles (docs/performance.md).
 StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = "",
                         const std::string& symmetry = "", const Deadline& deadline = {});
+// The same with the target's tree and samples made once (FoldFitter::measuredTarget()): on a
+// large target most of what each candidate's measure cost.
+StartChoice chooseStart(const MeasuredSurface& target, const std::string& kind = "",
+                        const std::string& symmetry = "", const Deadline& deadline = {});
 
 // Whether the target is a shape no reflection design reaches exactly: smooth (no plane of edges
 // bent more than a gridded smooth shape bends) or a noisy scan (sharp edges everywhere, not along
@@ -94,5 +99,6 @@ bool isCurved(const TriangleMesh& target);
 
 // The target's rotational symmetry among the sheet's ("rotational:12:y"), or "" for none.
 std::string detectRotationalSymmetry(const TriangleMesh& target, const Sheet& initial);
+std::string detectRotationalSymmetry(const MeasuredSurface& target, const Sheet& initial);
 
 }  // namespace curvefold

@@ -56,6 +56,10 @@ class SurfaceDistanceQuery {
   std::unique_ptr<Tree> tree_;
 };
 
+// The triangles SurfaceDistanceQuery has put in trees in this process so far: what measuring has
+// indexed, for tests and benchmarks (a target indexed once per fit, not once per measure).
+std::uint64_t distanceTreeTriangles();
+
 // Each point's distance to the query's surface (a picture's per-vertex field: a fitted sheet's
 // vertices to its target), on all cores; the same result for any thread count.
 std::vector<double> pointDistances(std::span<const glm::dvec3> points,
@@ -64,6 +68,45 @@ std::vector<double> pointDistances(std::span<const glm::dvec3> points,
 // A against B (B is the reference, a fit's target). Both halves run on all cores; the result is
 // the same for the same samples and seed. Throws DegenerateMesh naming "first" or "second".
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b,
+                                std::size_t samples = kDefaultDistanceSamples,
+                                std::uint64_t seed = 1);
+
+// A reference surface measured against many others (a fit's target: every sheet the start's
+// choice, the fit and the studio measure): its closest-point tree, its used vertices, and its
+// samples with each vertex's nearest sample, made once and shared by every measure against it,
+// where surfaceDistance(a, b) makes them anew for each (on a 100k-triangle scan a third of a
+// second of CPU a measure, nearly all of it the tree and B's vertices). Made lazily: the
+// constructor checks and builds the tree only; the samples of a count and seed at their first
+// measure (the last few kept). `mesh` must outlive it. Safe to measure against from several
+// threads. Throws DegenerateMesh (naming `which`) as SurfaceDistanceQuery does.
+class MeasuredSurface {
+ public:
+  explicit MeasuredSurface(const TriangleMesh& mesh, const char* which = "second");
+  ~MeasuredSurface();
+  MeasuredSurface(const MeasuredSurface&) = delete;
+  MeasuredSurface& operator=(const MeasuredSurface&) = delete;
+
+  const TriangleMesh& mesh() const { return mesh_; }
+  const SurfaceDistanceQuery& query() const { return query_; }
+  double diagonal() const { return diagonal_; }
+
+  struct Samples;  // samples of one count and seed, and each used vertex's nearest
+  std::shared_ptr<const Samples> samples(std::size_t count, std::uint64_t seed) const;
+  const std::vector<glm::dvec3>& usedVertices() const { return vertices_; }
+
+ private:
+  const TriangleMesh& mesh_;
+  SurfaceDistanceQuery query_;
+  double diagonal_ = 0.0;
+  std::vector<glm::dvec3> vertices_;
+  struct Cache;
+  std::unique_ptr<Cache> cache_;
+};
+
+// The same as surfaceDistance(a, b.mesh(), samples, seed), bit for bit, with B's tree and samples
+// made once. B's vertices are measured only where they could lie farther than B's farthest sample
+// (a vertex's distance is at most its nearest sample's plus the two's spacing): the same maximum.
+SurfaceDistance surfaceDistance(const TriangleMesh& a, const MeasuredSurface& b,
                                 std::size_t samples = kDefaultDistanceSamples,
                                 std::uint64_t seed = 1);
 

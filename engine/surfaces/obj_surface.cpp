@@ -64,7 +64,10 @@ class Parser {
       ++line_;
       if (read == LineRead::TooLong) fail("line longer than an OBJ line may be (1 MiB)");
       if (auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
-      const std::vector<std::string_view> tokens = split(text);
+      // The token and corner lists keep their capacity from line to line: a scan of 100k
+      // faces allocated two lists a line.
+      split(text, tokens_);
+      const std::vector<std::string_view>& tokens = tokens_;
       if (tokens.empty()) continue;
       const std::string_view keyword = tokens[0];
       if (keyword == "v") {
@@ -78,7 +81,8 @@ class Parser {
         data.vt.emplace_back(number(tokens[1]), number(tokens[2]));
       } else if (keyword == "f") {
         if (tokens.size() < 4) fail("a face needs at least 3 vertices");
-        std::vector<Corner> corners;
+        std::vector<Corner>& corners = corners_;
+        corners.clear();
         for (std::size_t i = 1; i < tokens.size(); ++i)
           corners.push_back(corner(tokens[i], data.v.size(), data.vt.size()));
         const bool hasVt = corners[0].vt >= 0;
@@ -107,8 +111,8 @@ class Parser {
            std::to_string(kMaxObjElements) + ")";
   }
 
-  static std::vector<std::string_view> split(std::string_view text) {
-    std::vector<std::string_view> tokens;
+  static void split(std::string_view text, std::vector<std::string_view>& tokens) {
+    tokens.clear();
     std::size_t i = 0;
     while (i < text.size()) {
       while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
@@ -117,7 +121,6 @@ class Parser {
       if (j > i) tokens.push_back(text.substr(i, j - i));
       i = j;
     }
-    return tokens;
   }
 
   double number(std::string_view token) const {
@@ -162,6 +165,8 @@ class Parser {
 
   std::string name_;
   std::size_t line_ = 0;
+  std::vector<std::string_view> tokens_;
+  std::vector<Corner> corners_;
 };
 
 double pointsDiagonal(const std::vector<glm::dvec3>& points) {
