@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -280,6 +281,32 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   for (std::size_t v = 0; v < step.sheet.positions.size(); ++v)
     moved = std::max(moved, glm::distance(step.sheet.positions[v], replayed.fixed().positions[v]));
   EXPECT_LT(moved, 1e-9);
+}
+
+// An oval serving bowl (an elliptic paraboloid over an ellipse 1.5 : 1 across, 18 x 12 cm, 4 cm
+// deep: no axis of revolution, its rim as deep all around) from a disk of about its area. Round
+// rings turn the disk up at one distance from the axis all around: past the oval's narrow sides
+// the wall stands out, and along its long ends it stops short of the rim. The rings follow the
+// oval's reach instead (each plane off the axis in proportion to the target's reach its way:
+// nested_rings.cpp, kOblong), so the step ends nearer, by both the mean and the farthest point.
+TEST(NestedRings, AnOvalBowlsRingsFollowItsReachNotACircle) {
+  TriangleMesh target =
+      capOf([](double r) { return 0.04 * (r / 0.06) * (r / 0.06); }, 0.06, 48, 12);
+  for (glm::dvec3& p : target.positions) p.x *= 1.5;
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.085}, {"resolution", testing::kSanitized ? 12.0 : 20.0}});
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  EXPECT_GT(std::abs(ring.axis->direction.z), 0.99);
+  const std::optional<FoldSuggestion> made = ring.validStep(2);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
+  const FarthestPoints far = farthestPoints(meshOf(step.sheet), target, 3000, 7);
+  const double farthest = std::max(far.fromA, far.fromB);
+  // 0.566 (12 segments) and 0.572 (20) of the disk's distance, the farthest 25.2 and 24.3 mm;
+  // with round rings (kOblong past any ratio) 0.583 and 0.591, 27.1 and 28.8 mm.
+  EXPECT_LT(step.after, 0.577 * ring.before) << "before " << ring.before;
+  EXPECT_LT(farthest, 0.0262) << "after " << step.after << ", " << step.folds.size() << " folds";
 }
 
 TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {

@@ -41,6 +41,83 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kFarthestSlack = 1.1;
 constexpr std::size_t kFarthestSamples = 3000;
 
+// An oblong target (an oval serving bowl) is followed by rings whose planes stand off the axis in
+// proportion to the target's reach in their direction: below this ratio of the farthest reach to
+// the nearest (over kReachBins turns about the axis) a target is taken as round and the rings are
+// round, as before.
+constexpr double kOblong = 1.12;
+constexpr int kReachBins = 24;
+
+// The target's reach about the axis by azimuth, as a scale of mean 1 (see kOblong).
+struct AzimuthReach {
+  glm::dvec3 u{0.0}, v{0.0};
+  std::vector<double> scale;  // per bin; empty where the target is round
+  int binOf(const glm::dvec3& radial) const {
+    const double angle = std::atan2(glm::dot(radial, v), glm::dot(radial, u));
+    const int bin = static_cast<int>(std::floor((angle + kPi) / (2.0 * kPi) * kReachBins));
+    return std::clamp(bin, 0, kReachBins - 1);
+  }
+  // Interpolated between the bins' centres, around the turn.
+  double at(const glm::dvec3& radial) const {
+    if (scale.empty()) return 1.0;
+    const double angle = std::atan2(glm::dot(radial, v), glm::dot(radial, u));
+    const double f = (angle + kPi) / (2.0 * kPi) * kReachBins - 0.5;
+    const double lower = std::floor(f);
+    const int a = (static_cast<int>(lower) % kReachBins + kReachBins) % kReachBins;
+    const int b = (a + 1) % kReachBins;
+    const double t = f - lower;
+    return (1.0 - t) * scale[static_cast<std::size_t>(a)] + t * scale[static_cast<std::size_t>(b)];
+  }
+};
+
+// The farthest of `points` from the axis through `centre` in each bin (0 where a bin has none).
+std::vector<double> reachByBin(const AzimuthReach& frame, const std::vector<glm::dvec3>& points,
+                               const glm::dvec3& centre, const glm::dvec3& direction) {
+  std::vector<double> reach(kReachBins, 0.0);
+  for (const glm::dvec3& p : points) {
+    glm::dvec3 radial = p - centre;
+    radial -= glm::dot(radial, direction) * direction;
+    double& bin = reach[static_cast<std::size_t>(frame.binOf(radial))];
+    bin = std::max(bin, glm::length(radial));
+  }
+  return reach;
+}
+
+AzimuthReach azimuthReach(const std::vector<SurfaceSample>& samples, const glm::dvec3& centre,
+                          const glm::dvec3& direction) {
+  AzimuthReach reach;
+  const glm::dvec3 pick =
+      std::abs(direction.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  reach.u = glm::normalize(pick - glm::dot(pick, direction) * direction);
+  reach.v = glm::cross(direction, reach.u);
+  std::vector<glm::dvec3> points;
+  points.reserve(samples.size());
+  for (const SurfaceSample& s : samples) points.push_back(s.position);
+  const std::vector<double> raw = reachByBin(reach, points, centre, direction);
+  // Smoothed over three bins (a hole or noise at the rim moves one bin's farthest sample).
+  std::vector<double> smooth(kReachBins, 0.0);
+  for (int i = 0; i < kReachBins; ++i) {
+    double sum = 0.0, count = 0.0;
+    for (int j = -1; j <= 1; ++j) {
+      const double r = raw[static_cast<std::size_t>((i + j + kReachBins) % kReachBins)];
+      if (r > 0.0) {
+        sum += r;
+        count += 1.0;
+      }
+    }
+    if (!(count > 0.0)) return reach;  // a gap of three bins: no reach to follow
+    smooth[static_cast<std::size_t>(i)] = sum / count;
+  }
+  const auto [least, most] = std::minmax_element(smooth.begin(), smooth.end());
+  if (!(*most < kOblong * *least)) {
+    double mean = 0.0;
+    for (double r : smooth) mean += r;
+    mean /= kReachBins;
+    for (double r : smooth) reach.scale.push_back(r / mean);
+  }
+  return reach;
+}
+
 // The farthest either of the sheet and the target lies from the other, among samples.
 double farthestApart(const Sheet& sheet, const TriangleMesh& target) {
   const FarthestPoints far = farthestPoints(meshOf(sheet), target, kFarthestSamples, 7);
@@ -297,10 +374,17 @@ namespace {
 // own flap and not another the plane reaches. On a session whose rotation makes the ring (its
 // images), only the first plane. Returns how many folds were made, images included.
 std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const RevolutionAxis& axis,
-                           const glm::dvec2& flap) {
+                           const glm::dvec2& flap, const AzimuthReach& reach) {
   std::size_t made = 0;
   Ring ring = ringOf(shape, axis);
   if (session.symmetricFolder()) ring.planes.resize(1);
+  // An oblong target's ring: each plane off the axis in proportion to its reach that way.
+  if (shape.order > 1 && !reach.scale.empty())
+    for (ReflectionPlane& plane : ring.planes) {
+      const double h = glm::dot(plane.point - axis.point, axis.direction);
+      const glm::dvec3 radial = plane.point - axis.point - h * axis.direction;
+      plane.point = axis.point + h * axis.direction + reach.at(radial) * radial;
+    }
   for (const ReflectionPlane& plane : ring.planes) {
     const Sheet& sheet = session.fixed();
     glm::dvec3 radial = plane.point - axis.point;
@@ -380,7 +464,6 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const std::optional<FlatSheet> flat = flatSheetAcross(sheet, axis.direction);
   if (!flat) return {};
   const glm::dvec3 centre = flat->centre;
-  const double radius = flat->radius;
   const RevolutionAxis local{centre, axis.direction, 0.0};
   // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
   // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
@@ -392,13 +475,33 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     const glm::dvec3 off = symmetry->centre - centre;
     if (symmetry->kind != Symmetry::Kind::Rotational ||
         std::abs(glm::dot(about, axis.direction)) < 0.999 ||
-        glm::length(off - glm::dot(off, about) * about) > 0.01 * radius)
+        glm::length(off - glm::dot(off, about) * about) > 0.01 * flat->radius)
       return {};
     orders = {symmetry->order};
   }
 
-  const std::vector<glm::dvec2> profile =
-      meridianProfile(targetSamples, centre, axis, kProfilePoints);
+  // An oblong target: its profile read with each sample's distance from the axis over the
+  // target's reach that way, and the model's radius the sheet's reach over the same, on average.
+  const AzimuthReach reach = session.symmetricFolder()
+                                 ? AzimuthReach{}
+                                 : azimuthReach(targetSamples, centre, axis.direction);
+  std::vector<glm::dvec2> profile = meridianProfile(targetSamples, centre, axis, kProfilePoints);
+  double radius = flat->radius;
+  if (!reach.scale.empty()) {
+    const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
+    for (std::size_t i = 0, k = 0; i < targetSamples.size() && k < profile.size();
+         i += stride, ++k) {
+      glm::dvec3 radial = targetSamples[i].position - centre;
+      radial -= glm::dot(radial, axis.direction) * axis.direction;
+      profile[k].x /= reach.at(radial);
+    }
+    const std::vector<double> sheetReach =
+        reachByBin(reach, sheet.positions, centre, axis.direction);
+    double sum = 0.0;
+    for (int b = 0; b < kReachBins; ++b)
+      sum += sheetReach[static_cast<std::size_t>(b)] / reach.scale[static_cast<std::size_t>(b)];
+    radius = sum / kReachBins;
+  }
 
   // Fits with 1..mostCreases creases, each grown from the one before (the random draws made
   // here, in order, so a seed repeats).
@@ -470,7 +573,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
          nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius,
                           candidate.outerFirst)) {
       const std::size_t foldsBefore = own.foldCount();
-      if (makeNestedRing(own, ring.shape, local, ring.flap) == 0) continue;
+      if (makeNestedRing(own, ring.shape, local, ring.flap, reach) == 0) continue;
       if (!allowCrossing &&
           findSelfIntersections(own.fixed()).intersections.size() > crossingsBefore) {
         while (own.foldCount() > foldsBefore) own.undo();
