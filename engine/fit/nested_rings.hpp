@@ -83,9 +83,10 @@ std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& sample
 
 // The best `creaseCount` creases for a flat sheet of radius `sheetRadius` toward the target's
 // profile points (r, z) (see above). `start`: a fit with fewer creases to grow from (may be empty).
+// `farthestWeight`: how much the farthest profile point counts beside the mean (0.25 above).
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
                                  std::size_t creaseCount, const ProfileCreases* start,
-                                 std::mt19937_64& random);
+                                 std::mt19937_64& random, double farthestWeight = 0.25);
 
 // The rings that fold a flat sheet centred at `axis.point` into `creases`' polyline: first a
 // plane across the axis when the shift is not negligible, then one ring of `order` planes per
