@@ -122,7 +122,7 @@ TEST(NestedRings, ProfileCreasesFollowAParaboloidCloserWithEachCrease) {
 // points spread by area, and a sheet of its area: the disk's radius is the chord from the
 // bottom to the rim, shorter than the meridian, so the polyline cannot follow the whole wall and
 // also reach the rim. By the mean distance alone the fit follows the wall and leaves the rim
-// farther off; the profile's farthest point counts too (nested_rings.cpp, kProfileFarthest).
+// farther off; the profile's farthest point counts too (nested_rings.hpp, kProfileFarthest).
 TEST(NestedRings, ADeepCapsProfileFitReachesTowardItsRim) {
   const double sphere = 0.05, deepest = 75.0 * std::numbers::pi / 180.0;
   std::vector<glm::dvec2> profile;

@@ -83,10 +83,13 @@ std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& sample
 
 // The best `creaseCount` creases for a flat sheet of radius `sheetRadius` toward the target's
 // profile points (r, z) (see above). `start`: a fit with fewer creases to grow from (may be empty).
-// `farthestWeight`: how much the farthest profile point counts beside the mean (0.25 above).
+// The profile's farthest point from the polyline counts this much beside the mean (the goal's
+// Hausdorff / 4): by the mean alone a deep cap's rim, a sliver of the profile, is left unreached.
+inline constexpr double kProfileFarthest = 0.25;
+// `farthestWeight`: how much the farthest profile point counts beside the mean.
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
                                  std::size_t creaseCount, const ProfileCreases* start,
-                                 std::mt19937_64& random, double farthestWeight = 0.25);
+                                 std::mt19937_64& random, double farthestWeight = kProfileFarthest);
 
 // The rings that fold a flat sheet centred at `axis.point` into `creases`' polyline: first a
 // plane across the axis when the shift is not negligible, then one ring of `order` planes per
