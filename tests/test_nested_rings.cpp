@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/fit/farthest_points.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -121,7 +122,7 @@ TEST(NestedRings, ProfileCreasesFollowAParaboloidCloserWithEachCrease) {
 // points spread by area, and a sheet of its area: the disk's radius is the chord from the
 // bottom to the rim, shorter than the meridian, so the polyline cannot follow the whole wall and
 // also reach the rim. By the mean distance alone the fit follows the wall and leaves the rim
-// farther off; the profile's farthest point counts too (nested_rings.cpp, kProfileFarthest).
+// farther off; the profile's farthest point counts too (nested_rings.hpp, kProfileFarthest).
 TEST(NestedRings, ADeepCapsProfileFitReachesTowardItsRim) {
   const double sphere = 0.05, deepest = 75.0 * std::numbers::pi / 180.0;
   std::vector<glm::dvec2> profile;
@@ -282,6 +283,73 @@ TEST(NestedRings, FoldADiskMoreThanTwiceCloserToABowlInOneStep) {
   EXPECT_LT(moved, 1e-9);
 }
 
+// The same deep cap's profile fitted for the rim (nested_rings.cpp, kRimFarthest: the farthest
+// point weighed 0.5 beside the mean, not 0.25), from the same random starts: the rim's fit comes
+// nearer the profile's farthest point than the usual fit, at a larger mean. suggestNestedRings
+// makes both fits' rings and keeps the nearer step (on a judge's 75 degree cap, 10 cm, the rim's:
+// docs/performance.md, issue 38, bowl11).
+TEST(NestedRings, ADeepCapsRimFitReachesNearerItsRimThanTheUsualFit) {
+  const double sphere = 0.05, deepest = 75.0 * std::numbers::pi / 180.0;
+  std::vector<glm::dvec2> profile;
+  for (int i = 0; i < 300; ++i) {
+    const double u = (i + 0.5) / 300.0, theta = std::acos(1.0 - u * (1.0 - std::cos(deepest)));
+    profile.push_back({sphere * std::sin(theta), sphere * (1.0 - std::cos(theta))});
+  }
+  const double radius = 2.0 * sphere * std::sin(0.5 * deepest);
+  const auto farthestOf = [&](const ProfileCreases& creases) {
+    const std::vector<glm::dvec2> polyline = profilePolyline(creases, radius);
+    double farthest = 0.0;
+    for (const glm::dvec2& p : profile) {
+      double nearest = 1e300;
+      for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
+        const glm::dvec2 ab = polyline[i + 1] - polyline[i];
+        const double t = std::clamp(glm::dot(p - polyline[i], ab) / glm::dot(ab, ab), 0.0, 1.0);
+        nearest = std::min(nearest, glm::length(p - (polyline[i] + t * ab)));
+      }
+      farthest = std::max(farthest, nearest);
+    }
+    return farthest;
+  };
+  std::mt19937_64 usualRandom(5), rimRandom(5);
+  const ProfileCreases usualOne = fitProfileCreases(profile, radius, 1, nullptr, usualRandom);
+  const ProfileCreases usualTwo = fitProfileCreases(profile, radius, 2, &usualOne, usualRandom);
+  const ProfileCreases usual = fitProfileCreases(profile, radius, 3, &usualTwo, usualRandom);
+  const ProfileCreases rimOne = fitProfileCreases(profile, radius, 1, nullptr, rimRandom, 0.5);
+  const ProfileCreases rimTwo = fitProfileCreases(profile, radius, 2, &rimOne, rimRandom, 0.5);
+  const ProfileCreases rim = fitProfileCreases(profile, radius, 3, &rimTwo, rimRandom, 0.5);
+  // The usual fit's farthest point 4.39 mm from the polyline (mean 0.52 mm), the rim's 3.27 mm
+  // (mean 0.97 mm); with the weight not passed to the fit, the same 4.39 mm.
+  EXPECT_LT(farthestOf(rim), 0.85 * farthestOf(usual))
+      << "usual " << farthestOf(usual) << " mean " << usual.mean << ", rim mean " << rim.mean;
+  EXPECT_GT(rim.mean, usual.mean);
+}
+
+// An oval serving bowl (an elliptic paraboloid over an ellipse 1.5 : 1 across, 18 x 12 cm, 4 cm
+// deep: no axis of revolution, its rim as deep all around) from a disk of about its area. Round
+// rings turn the disk up at one distance from the axis all around: past the oval's narrow sides
+// the wall stands out, and along its long ends it stops short of the rim. The rings follow the
+// oval's reach instead (each plane off the axis in proportion to the target's reach its way:
+// nested_rings.cpp, kOblong), so the step ends nearer, by both the mean and the farthest point.
+TEST(NestedRings, AnOvalBowlsRingsFollowItsReachNotACircle) {
+  TriangleMesh target =
+      capOf([](double r) { return 0.04 * (r / 0.06) * (r / 0.06); }, 0.06, 48, 12);
+  for (glm::dvec3& p : target.positions) p.x *= 1.5;
+  const Sheet disk =
+      makeSurface("disk", {{"radius", 0.085}, {"resolution", testing::kSanitized ? 12.0 : 20.0}});
+  RingStep ring(target, disk);
+  ASSERT_TRUE(ring.axis);
+  EXPECT_GT(std::abs(ring.axis->direction.z), 0.99);
+  const std::optional<FoldSuggestion> made = ring.validStep(2);
+  ASSERT_TRUE(made);
+  const FoldSuggestion& step = *made;
+  const FarthestPoints far = farthestPoints(meshOf(step.sheet), target, 3000, 7);
+  const double farthest = std::max(far.fromA, far.fromB);
+  // 0.566 (12 segments) and 0.572 (20) of the disk's distance, the farthest 25.2 and 24.3 mm;
+  // with round rings (kOblong past any ratio) 0.583 and 0.591, 27.1 and 28.8 mm.
+  EXPECT_LT(step.after, 0.577 * ring.before) << "before " << ring.before;
+  EXPECT_LT(farthest, 0.0262) << "after " << step.after << ", " << step.folds.size() << " folds";
+}
+
 TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
@@ -418,9 +486,9 @@ TEST(NestedRings, TheFitsFirstStepFromADiskIsTheRingsWithoutTheSingleFoldsSearch
   options.distanceSamples = 2000;
   const FitResult result = fitFolds(session, fitter, options);
   EXPECT_GE(result.folds.size(), 8u);  // a ring at least, as one step
-  // The profile fits and the ring candidates only (4 + 4 * 3, and 3 * 3 drawn outermost first),
-  // not the single folds' hundreds.
-  EXPECT_LE(result.evaluations, 25u);
+  // The profile fits and the ring candidates only (4 + 4 * 3, and 3 * 3 drawn outermost first;
+  // twice: the usual fits and the rim's), not the single folds' hundreds.
+  EXPECT_LE(result.evaluations, 50u);
   EXPECT_LT(result.steps.back().chamfer, 0.6 * result.steps.front().chamfer);
   validate(session.fixed());
 }

@@ -23,9 +23,12 @@ constexpr std::size_t kProfilePoints = 300;  // target samples the profile is fi
 constexpr std::size_t kPolylinePoints = 48;  // along the sheet's radius
 constexpr int kRestarts = 5;                 // random starts per crease count
 constexpr int kProfileEvaluations = 500;     // Subplex evaluations per start
-// The profile's farthest point from the polyline counts this much beside the mean (the goal's
-// Hausdorff / 4): by the mean alone a deep cap's rim, a sliver of the profile, is left unreached.
-constexpr double kProfileFarthest = 0.25;
+// The fits are also made with the farthest point weighed this much (the rim's fits), their rings
+// made after the others' and kept where the sheet comes nearer: on a deep cap whose corner paper
+// leaves the rim unreached, fits that reach for the rim bring the sheet closer by both measures
+// (a judge's 75 degree cap: Hausdorff 6.9% -> 3.8%), on others they do not (a scanned 80 degree
+// cap: 6.9% -> 8.3%), and the real sheet, not the model, tells which.
+constexpr double kRimFarthest = 0.5;
 constexpr std::array<int, 3> kOrders{8, 12, 16};
 // A fit whose wall turns steeper than this from the sheet's plane is also made with rings of
 // these few planes, first (see the header: the flaps of a ring of n overlap more the more planes
@@ -40,6 +43,83 @@ constexpr double kPi = std::numbers::pi;
 // a steep cup, rings whose corner paper stands out past the rim).
 constexpr double kFarthestSlack = 1.1;
 constexpr std::size_t kFarthestSamples = 3000;
+
+// An oblong target (an oval serving bowl) is followed by rings whose planes stand off the axis in
+// proportion to the target's reach in their direction: below this ratio of the farthest reach to
+// the nearest (over kReachBins turns about the axis) a target is taken as round and the rings are
+// round, as before.
+constexpr double kOblong = 1.12;
+constexpr int kReachBins = 24;
+
+// The target's reach about the axis by azimuth, as a scale of mean 1 (see kOblong).
+struct AzimuthReach {
+  glm::dvec3 u{0.0}, v{0.0};
+  std::vector<double> scale;  // per bin; empty where the target is round
+  int binOf(const glm::dvec3& radial) const {
+    const double angle = std::atan2(glm::dot(radial, v), glm::dot(radial, u));
+    const int bin = static_cast<int>(std::floor((angle + kPi) / (2.0 * kPi) * kReachBins));
+    return std::clamp(bin, 0, kReachBins - 1);
+  }
+  // Interpolated between the bins' centres, around the turn.
+  double at(const glm::dvec3& radial) const {
+    if (scale.empty()) return 1.0;
+    const double angle = std::atan2(glm::dot(radial, v), glm::dot(radial, u));
+    const double f = (angle + kPi) / (2.0 * kPi) * kReachBins - 0.5;
+    const double lower = std::floor(f);
+    const int a = (static_cast<int>(lower) % kReachBins + kReachBins) % kReachBins;
+    const int b = (a + 1) % kReachBins;
+    const double t = f - lower;
+    return (1.0 - t) * scale[static_cast<std::size_t>(a)] + t * scale[static_cast<std::size_t>(b)];
+  }
+};
+
+// The farthest of `points` from the axis through `centre` in each bin (0 where a bin has none).
+std::vector<double> reachByBin(const AzimuthReach& frame, const std::vector<glm::dvec3>& points,
+                               const glm::dvec3& centre, const glm::dvec3& direction) {
+  std::vector<double> reach(kReachBins, 0.0);
+  for (const glm::dvec3& p : points) {
+    glm::dvec3 radial = p - centre;
+    radial -= glm::dot(radial, direction) * direction;
+    double& bin = reach[static_cast<std::size_t>(frame.binOf(radial))];
+    bin = std::max(bin, glm::length(radial));
+  }
+  return reach;
+}
+
+AzimuthReach azimuthReach(const std::vector<SurfaceSample>& samples, const glm::dvec3& centre,
+                          const glm::dvec3& direction) {
+  AzimuthReach reach;
+  const glm::dvec3 pick =
+      std::abs(direction.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  reach.u = glm::normalize(pick - glm::dot(pick, direction) * direction);
+  reach.v = glm::cross(direction, reach.u);
+  std::vector<glm::dvec3> points;
+  points.reserve(samples.size());
+  for (const SurfaceSample& s : samples) points.push_back(s.position);
+  const std::vector<double> raw = reachByBin(reach, points, centre, direction);
+  // Smoothed over three bins (a hole or noise at the rim moves one bin's farthest sample).
+  std::vector<double> smooth(kReachBins, 0.0);
+  for (int i = 0; i < kReachBins; ++i) {
+    double sum = 0.0, count = 0.0;
+    for (int j = -1; j <= 1; ++j) {
+      const double r = raw[static_cast<std::size_t>((i + j + kReachBins) % kReachBins)];
+      if (r > 0.0) {
+        sum += r;
+        count += 1.0;
+      }
+    }
+    if (!(count > 0.0)) return reach;  // a gap of three bins: no reach to follow
+    smooth[static_cast<std::size_t>(i)] = sum / count;
+  }
+  const auto [least, most] = std::minmax_element(smooth.begin(), smooth.end());
+  if (!(*most < kOblong * *least)) {
+    double mean = 0.0;
+    for (double r : smooth) mean += r;
+    mean /= kReachBins;
+    for (double r : smooth) reach.scale.push_back(r / mean);
+  }
+  return reach;
+}
 
 // The farthest either of the sheet and the target lies from the other, among samples.
 double farthestApart(const Sheet& sheet, const MeasuredSurface& target) {
@@ -58,7 +138,7 @@ double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec
 // polyline's points weighted by their distance from the centre (the area of the sheet there).
 struct ProfileDistance {
   double mean = 0.0, farthest = 0.0;  // the two-sided mean; the target's farthest point
-  double score() const { return mean + kProfileFarthest * farthest; }
+  double score(double weight) const { return mean + weight * farthest; }
 };
 ProfileDistance profileDistance(const std::vector<glm::dvec2>& polyline,
                                 const std::vector<glm::dvec2>& target, double sheetRadius) {
@@ -148,7 +228,7 @@ std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& sample
 
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
                                  std::size_t creaseCount, const ProfileCreases* start,
-                                 std::mt19937_64& random) {
+                                 std::mt19937_64& random, double farthestWeight) {
   double low = 1e300, high = -1e300;
   for (const glm::dvec2& p : target) {
     low = std::min(low, p.y);
@@ -208,13 +288,13 @@ ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double s
         [&](const std::vector<double>& y) {
           return profileDistance(profilePolyline(unpacked(y, sheetRadius), sheetRadius), target,
                                  sheetRadius)
-              .score();
+              .score(farthestWeight);
         },
         nullptr, &bounds);
     ProfileCreases fitted = unpacked(x, sheetRadius);
     const ProfileDistance distance =
         profileDistance(profilePolyline(fitted, sheetRadius), target, sheetRadius);
-    fitted.score = distance.score();
+    fitted.score = distance.score(farthestWeight);
     fitted.mean = distance.mean;
     if (fitted.score < best.score) best = fitted;
   }
@@ -297,10 +377,17 @@ namespace {
 // own flap and not another the plane reaches. On a session whose rotation makes the ring (its
 // images), only the first plane. Returns how many folds were made, images included.
 std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const RevolutionAxis& axis,
-                           const glm::dvec2& flap) {
+                           const glm::dvec2& flap, const AzimuthReach& reach) {
   std::size_t made = 0;
   Ring ring = ringOf(shape, axis);
   if (session.symmetricFolder()) ring.planes.resize(1);
+  // An oblong target's ring: each plane off the axis in proportion to its reach that way.
+  if (shape.order > 1 && !reach.scale.empty())
+    for (ReflectionPlane& plane : ring.planes) {
+      const double h = glm::dot(plane.point - axis.point, axis.direction);
+      const glm::dvec3 radial = plane.point - axis.point - h * axis.direction;
+      plane.point = axis.point + h * axis.direction + reach.at(radial) * radial;
+    }
   for (const ReflectionPlane& plane : ring.planes) {
     const Sheet& sheet = session.fixed();
     glm::dvec3 radial = plane.point - axis.point;
@@ -354,6 +441,7 @@ struct Candidate {
   ProfileCreases creases;
   int order = 8;
   bool outerFirst = false;
+  bool rim = false;  // from the rim's fits
 };
 
 // The steepest turn of a fit's polyline from the sheet's plane (radians).
@@ -380,7 +468,6 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const std::optional<FlatSheet> flat = flatSheetAcross(sheet, axis.direction);
   if (!flat) return {};
   const glm::dvec3 centre = flat->centre;
-  const double radius = flat->radius;
   const RevolutionAxis local{centre, axis.direction, 0.0};
   // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
   // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
@@ -392,21 +479,50 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
     const glm::dvec3 off = symmetry->centre - centre;
     if (symmetry->kind != Symmetry::Kind::Rotational ||
         std::abs(glm::dot(about, axis.direction)) < 0.999 ||
-        glm::length(off - glm::dot(off, about) * about) > 0.01 * radius)
+        glm::length(off - glm::dot(off, about) * about) > 0.01 * flat->radius)
       return {};
     orders = {symmetry->order};
   }
 
-  const std::vector<glm::dvec2> profile =
-      meridianProfile(targetSamples, centre, axis, kProfilePoints);
+  // An oblong target: its profile read with each sample's distance from the axis over the
+  // target's reach that way, and the model's radius the sheet's reach over the same, on average.
+  const AzimuthReach reach = session.symmetricFolder()
+                                 ? AzimuthReach{}
+                                 : azimuthReach(targetSamples, centre, axis.direction);
+  std::vector<glm::dvec2> profile = meridianProfile(targetSamples, centre, axis, kProfilePoints);
+  double radius = flat->radius;
+  if (!reach.scale.empty()) {
+    const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
+    for (std::size_t i = 0, k = 0; i < targetSamples.size() && k < profile.size();
+         i += stride, ++k) {
+      glm::dvec3 radial = targetSamples[i].position - centre;
+      radial -= glm::dot(radial, axis.direction) * axis.direction;
+      profile[k].x /= reach.at(radial);
+    }
+    const std::vector<double> sheetReach =
+        reachByBin(reach, sheet.positions, centre, axis.direction);
+    double sum = 0.0;
+    for (int b = 0; b < kReachBins; ++b)
+      sum += sheetReach[static_cast<std::size_t>(b)] / reach.scale[static_cast<std::size_t>(b)];
+    radius = sum / kReachBins;
+  }
 
   // Fits with 1..mostCreases creases, each grown from the one before (the random draws made
   // here, in order, so a seed repeats).
+  std::mt19937_64 rimRandom = random;  // the rim's fits (below) start from the same draws
   std::vector<ProfileCreases> fits;
   for (std::size_t k = 1; k <= mostCreases && !deadline.passed(); ++k) {
     deadline.countEvaluation();
     fits.push_back(
         fitProfileCreases(profile, radius, k, fits.empty() ? nullptr : &fits.back(), random));
+  }
+  // The rim's fits (kRimFarthest), from the same random starts as the fits above (a copy of the
+  // generator as it was), so the fits above and the rings' turn below are drawn as before.
+  std::vector<ProfileCreases> rimFits;
+  for (std::size_t k = 1; k <= mostCreases && !deadline.passed(); ++k) {
+    deadline.countEvaluation();
+    rimFits.push_back(fitProfileCreases(
+        profile, radius, k, rimFits.empty() ? nullptr : &rimFits.back(), rimRandom, kRimFarthest));
   }
   if (deadline.givesUp()) return {};
   // Coarse to fine, in batches: first the fit nearest the profile at the coarsest order (a step
@@ -414,25 +530,31 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   // rings drawn outermost first (with two creases or more, where the centre line allows it: see
   // the header), then each other fit by its distance to the profile. Between batches the clock
   // is read, and a batch the time left would not finish (judged by the last batch's seconds per
-  // fold) is not started: the step still lands, coarser, on a loaded machine.
-  std::vector<std::size_t> byScore(fits.size());
-  for (std::size_t i = 0; i < fits.size(); ++i) byScore[i] = i;
-  std::stable_sort(byScore.begin(), byScore.end(),
-                   [&](std::size_t a, std::size_t b) { return fits[a].score < fits[b].score; });
+  // fold) is not started: the step still lands, coarser, on a loaded machine. The rim's fits
+  // follow, in the same order among themselves.
+  std::vector<const ProfileCreases*> byScore;
+  for (const std::vector<ProfileCreases>* set : {&fits, &rimFits}) {
+    const std::size_t from = byScore.size();
+    for (const ProfileCreases& fit : *set) byScore.push_back(&fit);
+    std::stable_sort(
+        byScore.begin() + static_cast<std::ptrdiff_t>(from), byScore.end(),
+        [](const ProfileCreases* a, const ProfileCreases* b) { return a->score < b->score; });
+  }
   std::vector<Candidate> candidates;
   std::vector<std::size_t> batchEnds;
-  for (std::size_t f : byScore) {
-    const ProfileCreases& fit = fits[f];
+  for (const ProfileCreases* each : byScore) {
+    const ProfileCreases& fit = *each;
+    const bool rim = each >= rimFits.data() && each < rimFits.data() + rimFits.size();
     const bool outerToo = fit.arcs.size() >= 2 && outermostFirstHolds(fit, radius);
     std::vector<int> fitOrders = orders;
     if (!session.symmetricFolder() && steepest(fit) > kSteepWall)
       fitOrders.insert(fitOrders.begin(), kSteepOrders.begin(), kSteepOrders.end());
     for (int order : fitOrders) {
-      candidates.push_back({fit, order, false});
+      candidates.push_back({fit, order, false, rim});
       if (batchEnds.empty()) batchEnds.push_back(candidates.size());  // the coarsest first
     }
     if (outerToo)
-      for (int order : fitOrders) candidates.push_back({fit, order, true});
+      for (int order : fitOrders) candidates.push_back({fit, order, true, rim});
     if (batchEnds.back() != candidates.size()) batchEnds.push_back(candidates.size());
   }
   const double turn = unit(random) * 2.0 * kPi;
@@ -470,7 +592,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
          nestedRingShapes(candidate.creases, candidate.order, turn / candidate.order, radius,
                           candidate.outerFirst)) {
       const std::size_t foldsBefore = own.foldCount();
-      if (makeNestedRing(own, ring.shape, local, ring.flap) == 0) continue;
+      if (makeNestedRing(own, ring.shape, local, ring.flap, reach) == 0) continue;
       if (!allowCrossing &&
           findSelfIntersections(own.fixed()).intersections.size() > crossingsBefore) {
         while (own.foldCount() > foldsBefore) own.undo();
@@ -493,9 +615,23 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   // A cancel answers nothing; the clock, what the batches finished (each candidate is whole).
   if (deadline.isCancelled()) return {};
   std::vector<FoldSuggestion> out;
+  const auto offered = [&](std::size_t c) {
+    return !made[c].folds.empty() && made[c].after < before &&
+           farthest[c] <= kFarthestSlack * farthestBefore;
+  };
+  // The rim's fits are there to bring the farthest point in: a step of theirs is offered only
+  // where it stands no farther out than the usual fits' nearest step (on a steep cup one scored
+  // nearer by the search's score, which cuts far distances, and stood out farther: small_cup
+  // Hausdorff 8.73% -> 13.9%).
+  std::optional<double> usualFarthest;
+  double usualAfter = 1e300;
   for (std::size_t c = 0; c < made.size(); ++c)
-    if (!made[c].folds.empty() && made[c].after < before &&
-        farthest[c] <= kFarthestSlack * farthestBefore)
+    if (!candidates[c].rim && offered(c) && made[c].after < usualAfter) {
+      usualAfter = made[c].after;
+      usualFarthest = farthest[c];
+    }
+  for (std::size_t c = 0; c < made.size(); ++c)
+    if (offered(c) && !(candidates[c].rim && usualFarthest && farthest[c] > *usualFarthest))
       out.push_back(std::move(made[c]));
   std::stable_sort(out.begin(), out.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });

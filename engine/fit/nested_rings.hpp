@@ -16,16 +16,20 @@
 // the centre (the sheet's area there), plus a quarter of the farthest profile point's distance
 // from the polyline (the goal's Hausdorff / 4: a disk of a deep cap's area is shorter than its
 // meridian, and by the mean alone the fit followed the wall and left the rim farther off),
-// restarted from random creases and from the best fit with one crease fewer. A crease whose flap
-// points along d_{i-1} and should point along d_i is the plane through its polyline vertex with
-// normal d_{i-1} - d_i (the bisector: the reflection takes one direction to the other), made at n
-// turns about the axis (a RingShape each, innermost first, so each plane is drawn where the rings
-// before it left the flap). Each fit with k = 1..4 creases and n in {8, 12, 16} (and first {4, 5,
-// 6} where the fit's wall turns past 60 degrees: a ring's flap is the whole segment beyond its
-// chord, which on a steep cup, chords near the centre, spans several polygon sides at n = 16 and
-// lays the flaps over each other in a pinwheel that stands out past the wall; at n = 4 to 6 only
-// neighbouring corners overlap) is made on the sheet itself (each plane's fold seeded on its own
-// flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
+// restarted from random creases and from the best fit with one crease fewer; the fits are made
+// again with the farthest point weighed 0.5 (the rim's fits), whose rings are made after the
+// usual ones and offered only where they stand no farther out than the usual fits' nearest step.
+// An oblong target (its reach about the axis 1.12 times farther one way than another) gets rings
+// whose planes stand off the axis in proportion to its reach their way (an oval bowl). A crease
+// whose flap points along d_{i-1} and should point along d_i is the plane through its polyline
+// vertex with normal d_{i-1} - d_i (the bisector: the reflection takes one direction to the other),
+// made at n turns about the axis (a RingShape each, innermost first, so each plane is drawn where
+// the rings before it left the flap). Each fit with k = 1..4 creases and n in {8, 12, 16} (and
+// first {4, 5, 6} where the fit's wall turns past 60 degrees: a ring's flap is the whole segment
+// beyond its chord, which on a steep cup, chords near the centre, spans several polygon sides at n
+// = 16 and lays the flaps over each other in a pinwheel that stands out past the wall; at n = 4 to
+// 6 only neighbouring corners overlap) is made on the sheet itself (each plane's fold seeded on its
+// own flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
 // through itself, and taken back.
 //
 // Inputs: a session whose sheet lies flat across `axis` (height spread at most 2% of its radius;
@@ -83,9 +87,13 @@ std::vector<glm::dvec2> meridianProfile(const std::vector<SurfaceSample>& sample
 
 // The best `creaseCount` creases for a flat sheet of radius `sheetRadius` toward the target's
 // profile points (r, z) (see above). `start`: a fit with fewer creases to grow from (may be empty).
+// The profile's farthest point from the polyline counts this much beside the mean (the goal's
+// Hausdorff / 4): by the mean alone a deep cap's rim, a sliver of the profile, is left unreached.
+inline constexpr double kProfileFarthest = 0.25;
+// `farthestWeight`: how much the farthest profile point counts beside the mean.
 ProfileCreases fitProfileCreases(const std::vector<glm::dvec2>& target, double sheetRadius,
                                  std::size_t creaseCount, const ProfileCreases* start,
-                                 std::mt19937_64& random);
+                                 std::mt19937_64& random, double farthestWeight = kProfileFarthest);
 
 // The rings that fold a flat sheet centred at `axis.point` into `creases`' polyline: first a
 // plane across the axis when the shift is not negligible, then one ring of `order` planes per
