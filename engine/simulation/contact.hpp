@@ -27,8 +27,15 @@
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
 // that force.
 //
-// Known limits: point-triangle pairs only (an edge passing through an edge with no vertex
-// passing a triangle is not stopped; `check` still reports it); the dynamic solver's step is not
+// Edge-edge pairs (layer39): two bars with no end in common whose segments come within the
+// thickness + s^ of each other have the same barrier on the segments' distance (its gradient at
+// the nearest points, Ericson 5.1.9), excluded as vertex-triangle pairs are (near on the flat
+// sheet, or across a glued seam), and bound the static solver's steps alike: without them an
+// edge passed through an edge where no vertex passed a triangle (a glued cone with one fold: 6
+// crossing pairs).
+//
+// Known limits: the distance between nearly parallel segments is not smooth (IPC's mollifier is
+// not applied); the dynamic solver's step is not
 // limited by the barrier's stiffness, which grows as 1 / s^2 deep in it; paper mode only (design
 // mode has no thickness and keeps none).
 #pragma once
@@ -43,6 +50,10 @@ namespace curvefold {
 
 struct BarHingeModel;
 struct SimulationState;
+
+// The point of triangle (a, b, c) nearest p, as barycentric weights.
+glm::dvec3 nearestTriangleWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                  const glm::dvec3& c);
 
 // What ModelOptions asks for.
 struct ContactOptions {
@@ -79,13 +90,21 @@ void setDynamicContactStep(ContactParameters& contact, double largestStiffness);
 ContactParameters contactParameters(const BarHingeModel& model, const ContactOptions& options,
                                     double paperThickness);
 
+// A vertex and a triangle not its own, or (edges) two bars with no end in common: then `vertex`
+// is the first bar and `triangle` the second (vertex < triangle).
 struct ContactPair {
+  std::uint8_t edges = 0;
   std::uint32_t vertex = 0, triangle = 0;
   auto operator<=>(const ContactPair&) const = default;
 };
 
+// The pair's four vertices: the vertex then the triangle's corners, or the first bar's ends then
+// the second's.
+std::array<std::uint32_t, 4> contactPairVertices(const BarHingeModel& model,
+                                                 const ContactPair& pair);
+
 // Every pair (excluded ones left out) whose vertex is within thickness + reach of its triangle,
-// sorted.
+// then every pair of edges as near, sorted (vertex-triangle pairs first).
 std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
                                           const std::vector<glm::dvec3>& positions, double reach);
 
