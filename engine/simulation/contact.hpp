@@ -17,11 +17,12 @@
 // (median splits, deterministic), and listed sorted (vertex, then triangle).
 //
 // Solvers: the static solver adds the barrier's energy, force and Hessian b'' grad(d) grad(d)^T
-// (positive semidefinite; the b' Hess(d) term is dropped) and limits each step so that no pair
-// can close more than 90% of its gap along it (contactStepBound: a gap changes at most by the
-// largest motion of the vertex relative to the triangle's corners), so no vertex passes through a
-// layer between iterations. The dynamic solver adds the same force from a list of pairs within the
-// activation gap plus a skin, found again when a vertex has moved half the skin (ContactList).
+// (positive semidefinite), and in its exact last stage b' Hess(d) too (by differences) and limits
+// each step so that no pair can close more than 90% of its gap along it (contactStepBound: a gap
+// changes at most by the largest motion of the vertex relative to the triangle's corners), so no
+// vertex passes through a layer between iterations. The dynamic solver adds the same force from a
+// list of pairs within the activation gap plus a skin, found again when a vertex has moved half the
+// skin (ContactList).
 //
 // Stiffness kappa: stiffnessScale x the hinges' force scale (the largest k / |e| over hinges, the
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
