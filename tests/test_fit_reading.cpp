@@ -6,9 +6,11 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <numbers>
+#include <random>
 #include <string>
 #include <thread>
 
@@ -292,6 +294,30 @@ TEST(WholeSheetFolds, RegistrationStopsSoonAfterItsDeadline) {
 // on the cylinder (the fit's registration took 9.6 s and over 45 s on such targets under load);
 // point-to-plane steps with the boundary's way back take 2 and 4. Counted in steps (closest-point
 // passes), not seconds.
+// The mesh with each triangle split 1->4 at its edges' midpoints: a copy on a mesh of its own, as
+// a target is (creases split its triangles); on the sheet's own mesh the principal axes, sampled
+// alike, lay it with no step.
+TriangleMesh eachTriangleSplitInFour(const TriangleMesh& sheet) {
+  TriangleMesh split = sheet;
+  split.triangles.clear();
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
+  auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+    const auto [at, added] = midpoints.try_emplace({std::min(a, b), std::max(a, b)},
+                                                   std::uint32_t(split.positions.size()));
+    if (added) split.positions.push_back(0.5 * (sheet.positions[a] + sheet.positions[b]));
+    return at->second;
+  };
+  for (const auto& t : sheet.triangles) {
+    const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]),
+                        ca = midpoint(t[2], t[0]);
+    split.triangles.push_back({t[0], ab, ca});
+    split.triangles.push_back({ab, t[1], bc});
+    split.triangles.push_back({ca, bc, t[2]});
+    split.triangles.push_back({ab, bc, ca});
+  }
+  return split;
+}
+
 TEST(WholeSheetFolds, ANearlySymmetricSheetTurnedALittleIsRegisteredInFewSteps) {
   for (const char* surface : {"disk", "cylinder"}) {
     SCOPED_TRACE(surface);
@@ -307,23 +333,7 @@ TEST(WholeSheetFolds, ANearlySymmetricSheetTurnedALittleIsRegisteredInFewSteps) 
     const ReflectionPlane past{(highest + 0.2 * diagonal) * n, n};
     // On a mesh of its own, as a target is (creases split its triangles): each triangle split
     // 1->4 (on the sheet's own mesh the principal axes, sampled alike, laid it with no step).
-    TriangleMesh moved = sheet;
-    moved.triangles.clear();
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
-    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
-      const auto [at, added] = midpoints.try_emplace({std::min(a, b), std::max(a, b)},
-                                                     std::uint32_t(moved.positions.size()));
-      if (added) moved.positions.push_back(0.5 * (sheet.positions[a] + sheet.positions[b]));
-      return at->second;
-    };
-    for (const auto& t : sheet.triangles) {
-      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]),
-                          ca = midpoint(t[2], t[0]);
-      moved.triangles.push_back({t[0], ab, ca});
-      moved.triangles.push_back({ab, t[1], bc});
-      moved.triangles.push_back({ca, bc, t[2]});
-      moved.triangles.push_back({ab, bc, ca});
-    }
+    TriangleMesh moved = eachTriangleSplitInFour(sheet);
     const double c = std::cos(0.05), s = std::sin(0.05);
     for (glm::dvec3& p : moved.positions)
       p = past.reflect(c * p + s * glm::cross(axis, p) + (1.0 - c) * glm::dot(axis, p) * axis);
@@ -336,6 +346,59 @@ TEST(WholeSheetFolds, ANearlySymmetricSheetTurnedALittleIsRegisteredInFewSteps) 
     for (const glm::dvec3& p : sheet.positions)
       ASSERT_LE(copy.distance(ways[0](p)), 1e-4 * diagonal);
     EXPECT_LE(steps, 40);
+  }
+}
+
+// A slit cone's or cylinder's sides meet in space, so as a set of points the sheet is whole and
+// lies on its copy turned any way about its axis: registration on the surface alone returned the
+// turn its nearest start (every 15 degrees) began at, not the development's, and the folds read
+// then took 3-4 whole-sheet planes where the design had one (issue 38, 1: the slit cone and
+// cylinder misses of reach9 and reach10). The slit fixes the turn: the sheet's boundary (rims and
+// slit) lies on the copy's, not only its surface on the copy's surface. (Its mirror through the
+// plane of the axis and the slit, or the cylinder's end for end, lays it as well: a symmetry.)
+TEST(WholeSheetFolds, ASlitSheetTurnedAboutItsAxisIsRegisteredSlitOnSlit) {
+  // The cone alone under the sanitizers (about 1 s of CPU each here).
+  const std::vector<const char*> surfaces = testing::kSanitized
+                                                ? std::vector<const char*>{"cone"}
+                                                : std::vector<const char*>{"cone", "cylinder"};
+  for (const char* surface : surfaces) {
+    SCOPED_TRACE(surface);
+    const TriangleMesh sheet = meshOf(makeSurface(surface));
+    const double diagonal = boundingDiagonal(sheet);
+    // Both about the y axis; 52.5 degrees lies halfway between two starts.
+    const glm::dvec3 axis(0, 1, 0), n = glm::normalize(glm::dvec3(0.3, -0.4, 0.85));
+    const double angle = 52.5 * std::numbers::pi / 180.0;
+    double highest = -1e300;
+    for (const glm::dvec3& p : sheet.positions) highest = std::max(highest, glm::dot(n, p));
+    const ReflectionPlane past{(highest + 0.2 * diagonal) * n, n};
+    auto moveOf = [&](const glm::dvec3& p) {
+      const double c = std::cos(angle), s = std::sin(angle);
+      return past.reflect(c * p + s * glm::cross(axis, p) + (1.0 - c) * glm::dot(axis, p) * axis);
+    };
+    TriangleMesh moved = eachTriangleSplitInFour(sheet);
+    for (glm::dvec3& p : moved.positions) p = moveOf(p);
+    const std::vector<RigidMotion> ways = registerSheetOntoAll(sheet, moved, 1e-4 * diagonal, 1);
+    ASSERT_EQ(ways.size(), 1u);
+    const SurfaceDistanceQuery copy(moved, "copy");
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> copyEdges;
+    for (const auto& [edge, faces] : edgeFaces(moved))
+      if (faces.size() == 1)
+        copyEdges.emplace_back(moved.positions[edge.first], moved.positions[edge.second]);
+    double offSurface = 0.0, offBoundary = 0.0;
+    for (const auto& [edge, faces] : edgeFaces(sheet)) {
+      if (faces.size() != 1) continue;
+      const glm::dvec3 p = ways[0](sheet.positions[edge.first]);
+      offSurface = std::max(offSurface, copy.distance(p));
+      double nearest = 1e300;
+      for (const auto& [a, b] : copyEdges) {
+        const double t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+        nearest = std::min(nearest, glm::distance(p, a + t * (b - a)));
+      }
+      offBoundary = std::max(offBoundary, nearest);
+    }
+    EXPECT_LE(offSurface, 1e-4 * diagonal);
+    EXPECT_LE(offBoundary, 1e-4 * diagonal) << "a boundary vertex lands " << offBoundary / diagonal
+                                            << " of the diagonal off the copy's boundary";
   }
 }
 
@@ -750,6 +813,37 @@ TriangleMesh tube(double radius, double height, int around, int along) {
   return mesh;
 }
 
+// Issue 38, 3: a scan (noise on every vertex: sharp edges everywhere) is taken for smooth by the
+// cheap tests alone. It once went through the crease-plane search first (hundreds of plane
+// hypotheses, each a pass over every sharp edge), twice before any deadline (the fitter, then the
+// start's choice): on a 100k-triangle scan seconds of CPU, so `fit --time 5` took 16-24 s on a
+// loaded machine. The claim is on work, against one pass over the edges, not on the clock.
+TEST(StartSurface, ANoisyScanIsTakenForSmoothWithoutSearchingItsCreasePlanes) {
+  // 25,600 triangles about 1.2 mm apart, each vertex 0.8 mm off (finer than bench's 100k scan,
+  // twice its noise): most edges bend past the smooth threshold, 12 degrees.
+  TriangleMesh scan = tube(0.03, 0.1, 160, 80);
+  std::mt19937_64 random(38);
+  std::normal_distribution<double> noise(0.0, 0.0008);
+  for (glm::dvec3& p : scan.positions) {
+    const double r = std::hypot(p.x, p.z), scale = (r + noise(random)) / r;
+    p.x *= scale;
+    p.z *= scale;
+  }
+  const int passes = 5;
+  const double before = testing::processCpuSeconds();
+  double largest = 0.0;
+  for (int k = 0; k < passes; ++k) largest += largestDihedralDegrees(scan);
+  const double onePass = (testing::processCpuSeconds() - before) / passes;
+  ASSERT_GT(largest, 5.0 * passes);  // noisy: faces turn by degrees
+  const double start = testing::processCpuSeconds();
+  EXPECT_TRUE(isSmoothOrScanned(scan));
+  const double cost = testing::processCpuSeconds() - start;
+  std::printf("isSmoothOrScanned %.4f s of CPU, one pass over the edges %.4f s\n", cost, onePass);
+  // Measured: 0.5 passes' worth; through the plane search first, 8.
+  EXPECT_LT(cost, 3.0 * std::max(onePass, 1e-4))
+      << cost << " s of CPU, one pass over the edges " << onePass << " s";
+}
+
 TEST(StartSurface, ATubeStartsFromACylinderOfItsSizeAndItsRingOfSymmetry) {
   const TriangleMesh target = tube(0.05, 0.18, 96, 30);
   const StartChoice start = chooseStart(target);
@@ -892,14 +986,18 @@ TEST(StartSurface, ASymmetryAskedForIsKeptByTheStart) {
 }
 
 // The choice of the start keeps to its deadline (issue 38, 3: --time bounds the whole fit): past
-// it, no sheet is measured after the first, and the choice says it was cut short.
-TEST(StartSurface, TheChoiceStopsMeasuringAtItsDeadline) {
+// it, only the first of the catalogue's sheets and the first sheet placed on a smooth target are
+// measured, and the choice says it was cut short. The placed one is measured however short the
+// clock: the catalogue's sheets lie in its own frame (the old choice kept the square of the
+// tube's area about the origin, Chamfer 45 mm, 15% of the diagonal; the placed tube 16 mm).
+TEST(StartSurface, TheChoiceStopsMeasuringAtItsDeadlineButStillPlacesASheetOnTheTarget) {
   const TriangleMesh target =
       moved(tube(0.05, 0.18, 96, 30), {1.0, 0.3, 0.5}, 65.0, {0.02, -0.01, 0.03});
   const StartChoice cut = chooseStart(target, "", "", Deadline::in(0.0));
   EXPECT_TRUE(cut.cutShort);
-  EXPECT_FALSE(cut.placed) << "a sheet placed on the axis was measured past the deadline";
-  EXPECT_EQ(cut.surface, "square");  // the first candidate, the only one measured
+  EXPECT_TRUE(cut.placed) << "no sheet placed on the target was measured";
+  const double diagonal = surfaceDistance(target, target, 100).diagonal;
+  EXPECT_LT(cut.chamfer, 0.1 * diagonal) << cut.surface;
   const StartChoice whole = chooseStart(target, "");
   EXPECT_FALSE(whole.cutShort);
   EXPECT_TRUE(whole.placed);

@@ -498,10 +498,16 @@ TEST(TubeStart, TheConeAroundAVaseEnclosesItsBelly) {
   EXPECT_GT(deepest, 1e-3) << "the nearest start should lie inside the belly";
 }
 
-// Toward a vase whose belly stands outside the cone fitted through its profile, the start is the
-// cone around it (first_step_start.hpp, reviseTubeByFirstStep): its rings' first step lands
-// nearer than the nearest cone's, whose belly no ring widens.
-TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
+// The cone around a vase's profile is not taken where its rings land nearer by Chamfer but leave
+// the sheet farther from the target by Hausdorff than the start's own rings (first_step_start.hpp,
+// reviseTubeByFirstStep): on this vase, whose belly stands outside the cone fitted through its
+// profile, the cone around's two rings land at 1.81 / 7.48 mm (Chamfer / Hausdorff), the cone
+// through's at 1.82 / 6.05 mm; without the guard the cone around was taken, and the fit started
+// where its farthest point is farther (the lathe vase's fit ended 7.06% -> 10.2% by Hausdorff).
+TEST(TubeStart, TheConeAroundIsNotTakenWhereItsRingsLandFartherByHausdorff) {
+  // Two full starts each given chains of rings: 90 s under the sanitizers, whose run the other
+  // tube tests' chains already cover; the Release run checks the choice.
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the choice (90 s here)";
   const TriangleMesh vase = vaseInsideCone();
   const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
   ASSERT_TRUE(fitter.revolutionTarget());
@@ -509,13 +515,53 @@ TEST(TubeStart, AVasesStartIsTheConeAroundItWhereItsRingsLandNearer) {
   ASSERT_TRUE(start.placed);
   const Sheet nearest = *start.placed;
   const std::optional<FirstStepStart> chosen = reviseTubeByFirstStep(start, fitter, "", {});
-  ASSERT_TRUE(chosen);
+  if (chosen) {
+    ADD_FAILURE() << "the cone around was taken: its rings land " << chosen->chamfer << " / "
+                  << chosen->hausdorff << " m against " << chosen->replacedChamfer << " / "
+                  << chosen->replacedHausdorff << " m";
+  }
   ASSERT_TRUE(start.placed);
-  EXPECT_NE(start.placed->positions, nearest.positions);
-  EXPECT_NE(start.placement.find("around its profile"), std::string::npos) << start.placement;
-  // Its first step lands nearer than the nearest cone's, and nearer than the cone it started.
-  EXPECT_LT(chosen->chamfer, chosen->replacedChamfer) << chosen->replacedChamfer;
-  EXPECT_LT(chosen->chamfer, chosen->startChamfer);
+  EXPECT_EQ(start.placed->positions, nearest.positions);
+}
+
+// A neck far narrower than the belly (bench/make_judge_shapes.py's vase: 0.22 of it) is cut by
+// ring after ring, each cutting the corners the rings before it left on the tube's radius
+// (ring_folds.hpp, kTubeChainRings): the chain goes on past four rings and ends closer than the
+// same chain stopped at four (the first four rings are the same: the same seed draws them).
+TEST(TubeRings, ANarrowNeckIsCutByMoreThanFourRings) {
+  // Two chains of up to eight rings: 110 s under the sanitizers, whose run the other tube tests'
+  // chains already cover; the Release run checks the chain's length.
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the chain (110 s here)";
+  const TriangleMesh vase = revolved(
+      [](double h) {
+        const double t = (h + 0.1) / 0.2;
+        return 0.05 * (0.45 + 0.55 * std::exp(-std::pow((t - 0.35) / 0.25, 2.0)) -
+                       0.25 * std::exp(-std::pow((t - 0.8) / 0.1, 2.0)) +
+                       0.25 * std::max(t - 0.88, 0.0) / 0.12);
+      },
+      -0.1, 0.1, 48, 30);
+  Sheet tube = makeSurface(
+      "cylinder",
+      {{"radius", 0.05}, {"height", 0.2}, {"resolution", testing::kSanitized ? 16.0 : 24.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  const FoldFitter fitter(vase, testing::sampledSettings(400, 1500, 4000));
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(vase, 1500, 11);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  ASSERT_TRUE(axis);
+  const FoldSession session(tube);
+  std::mt19937_64 random(5), again(5);
+  const std::vector<FoldSuggestion> chain =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1, Deadline{}, random);
+  const std::vector<FoldSuggestion> four =
+      suggestTubeRings(session, fitter, *axis, targetSamples, 1, Deadline{}, again, 4);
+  ASSERT_EQ(chain.size(), 1u);
+  ASSERT_EQ(four.size(), 1u);
+  EXPECT_GT(chain.front().folds.size(), four.front().folds.size());
+  const SurfaceDistance fourAfter = surfaceDistance(meshOf(four.front().sheet), vase, 4000);
+  const SurfaceDistance after = surfaceDistance(meshOf(chain.front().sheet), vase, 4000);
+  EXPECT_LT(after.chamfer, fourAfter.chamfer) << fourAfter.chamfer << " -> " << after.chamfer;
+  validate(chain.front().sheet);
+  EXPECT_TRUE(findSelfIntersections(chain.front().sheet).intersections.empty());
 }
 
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not

@@ -107,8 +107,9 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     else
       design.surface = GeneratedSurface{start.surface, start.parameters};
     std::string text =
-        "from: " +
-        (start.placed && start.surface == "swept_curve" ? "a swept parabola" : start.surface);
+        "from: " + (start.placed && start.surface == "swept_curve" ? "a swept parabola"
+                    : start.placed && start.surface == "ellipse" ? "a disk stretched to an ellipse"
+                                                                 : start.surface);
     for (const auto& [name, value] : start.parameters) {
       char number[32];
       std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);

@@ -13,16 +13,18 @@
 // whole sheet along the axis (one plane across it) make a polyline of the sheet's length; its
 // parameters are chosen by NLopt's Subplex to lower the mean two-sided distance between the
 // polyline and the target's samples (r, z), each polyline point weighted by its distance s from
-// the centre (the sheet's area there), restarted from random creases and from the best fit with
-// one crease fewer. A crease whose flap points along d_{i-1} and should point along d_i is the
-// plane through its polyline vertex with normal d_{i-1} - d_i (the bisector: the reflection takes
-// one direction to the other), made at n turns about the axis (a RingShape each, innermost first,
-// so each plane is drawn where the rings before it left the flap). Each fit with k = 1..4
-// creases and n in {8, 12, 16} (and first {4, 5, 6} where the fit's wall turns past 60 degrees:
-// a ring's flap is the whole segment beyond its chord, which on a steep cup, chords near the
-// centre, spans several polygon sides at n = 16 and lays the flaps over each other in a pinwheel
-// that stands out past the wall; at n = 4 to 6 only neighbouring corners overlap) is made on the
-// sheet itself (each plane's fold seeded on its own
+// the centre (the sheet's area there), plus a quarter of the farthest profile point's distance
+// from the polyline (the goal's Hausdorff / 4: a disk of a deep cap's area is shorter than its
+// meridian, and by the mean alone the fit followed the wall and left the rim farther off),
+// restarted from random creases and from the best fit with one crease fewer. A crease whose flap
+// points along d_{i-1} and should point along d_i is the plane through its polyline vertex with
+// normal d_{i-1} - d_i (the bisector: the reflection takes one direction to the other), made at n
+// turns about the axis (a RingShape each, innermost first, so each plane is drawn where the rings
+// before it left the flap). Each fit with k = 1..4 creases and n in {8, 12, 16} (and first {4, 5,
+// 6} where the fit's wall turns past 60 degrees: a ring's flap is the whole segment beyond its
+// chord, which on a steep cup, chords near the centre, spans several polygon sides at n = 16 and
+// lays the flaps over each other in a pinwheel that stands out past the wall; at n = 4 to 6 only
+// neighbouring corners overlap) is made on the sheet itself (each plane's fold seeded on its own
 // flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
 // through itself, and taken back.
 //
@@ -65,7 +67,9 @@ namespace curvefold {
 struct ProfileCreases {
   double shift = 0.0;
   std::vector<double> arcs, angles;
-  double score = 0.0;  // mean two-sided distance to the target's profile (metres)
+  // What the fit lowers (metres): the mean two-sided distance to the target's profile (`mean`)
+  // plus a quarter of the profile's farthest point's distance (see above).
+  double score = 0.0, mean = 0.0;
 };
 
 // The polyline's vertices: the centre, each crease, the rim.

@@ -58,7 +58,10 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
 // The flat sheets cut to the target's footprint alone (the square of its box, the rectangle, and
 // disks: the one that covers it and, for an oblong footprint, one of its mean reach; see above): a
 // flat start for the cross of pleats (pleat_folds.hpp) where a curved one starts nearer. The disks
-// come first where the footprint is round (few samples outside the ellipse inscribed in its box);
+// come first where the footprint is round (few samples outside the ellipse inscribed in its box),
+// and before them, where that round footprint is oblong (its box's sides 3% apart), ellipses:
+// that inscribed one and the one scaled about its centre to cover every sample ("ellipse", its
+// width and height: the catalogue's disk stretched, its development alike, so still exact).
 // `kind` "disk" gives the disks alone.
 std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& samples,
                                          const std::string& kind = "");

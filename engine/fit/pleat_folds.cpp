@@ -282,10 +282,46 @@ std::vector<PleatFamily> solveFamilies(const std::vector<glm::dvec3>& points,
 // overlap at the corners, where their heights add as the pleats' turns compose). The best
 // kCrossesTried (directions, hinge places), best first; each the end along +line,
 // -line, +across, -across.
+// The direction in the sheet's plane (normal `up`, spanned by `e1` and `e2`) along which the
+// heights curve most: the principal direction of the least-squares quadric h = A u^2 + B uv +
+// C v^2 + D u + E v + F over the points. A flat square's or disk's own axes spread alike, so
+// its principal axes come out turned anyhow (by rounding: 22.5 degrees off a square's sides,
+// whichever side faces up), and a cross's lines, laid from them, missed the target's rising and
+// falling ends (a saddle turned 20 degrees: its turned-over square's first step 1.12% of the
+// diagonal against 0.552% face up,
+// FirstStepStart.ASaddleFoldsAlikeFromEitherSideOfItsTurnedSquare). Laid from this, they do not
+// depend on how the sheet is turned or which side faces up. `e1` where the heights do not curve.
+glm::dvec3 mostCurvedDirection(const std::vector<glm::dvec3>& points,
+                               const std::vector<double>& heights, const glm::dvec3& centre,
+                               const glm::dvec3& e1, const glm::dvec3& e2) {
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> right = Eigen::Matrix<double, 6, 1>::Zero(), row;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double u = glm::dot(points[i] - centre, e1), v = glm::dot(points[i] - centre, e2);
+    row << u * u, u * v, v * v, u, v, 1.0;
+    normal.noalias() += row * row.transpose();
+    right += heights[i] * row;
+  }
+  normal.diagonal().array() += 1e-12 * (normal.trace() + 1e-30);
+  const Eigen::Matrix<double, 6, 1> q = normal.ldlt().solve(right);
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * q(0), q(1), q(1), 2.0 * q(2);
+  if (!hessian.allFinite() || !(hessian.norm() > 0.0)) return e1;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> curvature(hessian);
+  const Eigen::Vector2d lo = curvature.eigenvectors().col(0), hi = curvature.eigenvectors().col(1);
+  const Eigen::Vector2d most =
+      std::abs(curvature.eigenvalues()(0)) > std::abs(curvature.eigenvalues()(1)) ? lo : hi;
+  const glm::dvec3 direction = most(0) * e1 + most(1) * e2;
+  return glm::length(direction) > 0.5 ? glm::normalize(direction) : e1;
+}
+
 std::vector<std::array<SolvedPleat, 4>> solveCrosses(
     const std::vector<glm::dvec3>& points, const std::vector<double>& heights,
     const glm::dvec3& centre, const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) {
-  const glm::dvec3 up = axisOf(axes, 0), e1 = axisOf(axes, 2), e2 = axisOf(axes, 1);
+  const glm::dvec3 up = axisOf(axes, 0);
+  const glm::dvec3 e1 = mostCurvedDirection(points, heights, centre, axisOf(axes, 2),
+                                            axisOf(axes, 1)),
+                   e2 = glm::cross(up, e1);
   struct Cross {
     std::array<SolvedPleat, 4> pleats;
     double gain = 0.0;

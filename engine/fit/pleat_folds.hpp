@@ -42,14 +42,15 @@
 // the end), then both ends of the line across it pleated on the sheet the bends left (its ends
 // keep their bend, which one reflection would flip; pleats on both lines crossed each other's
 // layers, the paper passing through itself), the four turns solved together from the target's
-// heights (ramps beyond each hinge, as a family's), for 8 directions over a half turn (either
-// line bent first) and 4 x 4 hinge places, the best 4 made at their turns and at 0.7 of them: a
-// saddle rises at two opposite ends and falls at the other two, and a pleat per step leaves three
-// ends as far (the farthest point unchanged). Only where no solved pleat helps, the blind
-// way of before: hinges on the way from the sheet's centre toward its vertices farthest from the
-// target, bends on a grid. Each pleat is made on the real sheet (FoldSession: a sliver is refused
-// as a designer's drag is), scored with FoldFitter::approximateDistance, checked for
-// self-intersection, and taken back.
+// heights (ramps beyond each hinge, as a family's), for 8 directions over a half turn from the
+// heights' most curved direction (a quadric's; not the sheet's own axes, which a square or a
+// disk gives turned anyhow; either line bent first) and 4 x 4 hinge places, the best 4 made at
+// their turns and at 0.7 of them: a saddle rises at two opposite ends and falls at the other two,
+// and a pleat per step leaves three ends as far (the farthest point unchanged). Only where no
+// solved pleat helps, the blind way of before: hinges on the way from the sheet's centre toward its
+// vertices farthest from the target, bends on a grid. Each pleat is made on the real sheet
+// (FoldSession: a sliver is refused as a designer's drag is), scored with
+// FoldFitter::approximateDistance, checked for self-intersection, and taken back.
 //
 // Inputs: a session holding a design without symmetry (a symmetric one gets none: its images
 // would need a pleat group of their own); the fitter's target. Output: up to `count` pleats, each

@@ -78,7 +78,7 @@ std::optional<double> ringsReach(const Sheet& disk, const std::vector<SurfaceSam
   double best = 1e300;
   for (std::size_t k = 1; k <= kRingsCreases; ++k) {
     fit = fitProfileCreases(profile, radius, k, fit ? &*fit : nullptr, random);
-    best = std::min(best, fit->score);
+    best = std::min(best, fit->mean);
   }
   return best;
 }
@@ -224,6 +224,11 @@ bool isCurved(const TriangleMesh& target) {
 }
 
 bool isSmoothOrScanned(const TriangleMesh& target) {
+  // Noise (many sharp edges) or curvature at most vertices decide it alone, at a few passes over
+  // the edges: tested first, so that a large scan (100k triangles of noise: seconds of plane
+  // hypotheses, before any deadline) never reaches the plane search. The same answer either way.
+  const double sharp = sharpShare(target, kSmoothBendDegrees);
+  if (sharp > kNoisySharpShare || curvedAtMostVertices(target)) return true;
   CreasePlaneOptions options;
   options.minDihedralDegrees = kSmoothBendDegrees;
   options.minSupport = 0.03 * boundingDiagonal(target);
@@ -234,10 +239,8 @@ bool isSmoothOrScanned(const TriangleMesh& target) {
   // A fold's crease holds a good share of the sharp edges, and along it every edge is bent.
   // Noise scatters sharp edges, a few per plane, and where it bends some edges of a row of a
   // depth scan's grid (a plane of edges), most edges of that row are not bent.
-  const double sharp = sharpShare(target, kSmoothBendDegrees);
   const double tolerance = kCreaseTolerance * boundingDiagonal(target);
-  return sharp > kNoisySharpShare || curvedAtMostVertices(target) ||
-         planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
+  return planes.front().support < kScatteredCreaseShare * sharp * edgeLength(target) ||
          sharpShare(target, kSmoothBendDegrees, &planes.front().plane, tolerance) <
              kNoisyCreaseShare;
 }
@@ -326,14 +329,16 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind,
     any = true;
   }
   // Sheets moved onto the target: only for a smooth or noisy one (isSmoothOrScanned; a creased
-  // target was folded from the catalogue's sheet where it lies).
+  // target was folded from the catalogue's sheet where it lies). At least one is measured when
+  // the clock has cut the catalogue's sheets short: those lie in the catalogue's frame, often far
+  // from a smooth target (a scan kept a default cylinder 177% of its diagonal off at --time 2).
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
   std::optional<PlacedStart> nearest, disk;
   double nearestChamfer = 0.0, nearestScore = 0.0, diskChamfer = 0.0;
-  for (PlacedStart& placed : smooth && !anyFoldedFrom && !outOfTime()
+  for (PlacedStart& placed : smooth && !anyFoldedFrom
                                  ? placedStarts(samples, surfaceArea(target), kind)
                                  : std::vector<PlacedStart>{}) {
-    if (outOfTime()) break;
+    if (nearest && outOfTime()) break;
     if (!keeps(placed.sheet)) {
       sizedDropped = true;
       continue;

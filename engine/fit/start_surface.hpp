@@ -81,7 +81,9 @@ StartChoice chooseStart(const TriangleMesh& target, const std::string& kind = ""
 // row of a depth scan's grid), or curved (not developable: a quarter of its interior vertices
 // have an angle defect, as on a coarse grid of a hemisphere whose rings bend like creases). A
 // target folded from a catalogue sheet is none of these. Such a target
-// gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp).
+// gets sheets placed on it (above) and the search's rings and pleats (fold_fit.hpp). Cost: the
+// sharp share and the curvature (a few passes over the edges) decide a scan or a curved shape
+// alone; the plane search (hundreds of passes over the sharp edges) runs only when they do not.
 bool isSmoothOrScanned(const TriangleMesh& target);
 
 // Whether the target is curved like no reflection design is: a quarter of its interior vertices

@@ -68,10 +68,43 @@ double meanDistance(const Pose& pose, const std::vector<Eigen::Vector3d>& points
 // Points of the sheet with its unit normals there: what a refinement lays on the copy.
 struct Anchors {
   std::vector<Eigen::Vector3d> points, normals;
-  void add(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+  std::vector<char> onBoundary;  // a vertex of the sheet's boundary (its rim, a slit's side)
+  void add(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, bool boundary = false) {
     points.push_back(point);
     normals.push_back(normal);
+    onBoundary.push_back(boundary ? 1 : 0);
   }
+};
+
+// A mesh's boundary as segments (its edges with one face): a slit's two sides, a sheet's rim.
+// Closest points by brute force: a sheet's boundary holds a few hundred edges.
+struct BoundaryCurve {
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+
+  BoundaryCurve(const TriangleMesh& mesh, const EdgeFaces& edges) {
+    for (const auto& [edge, faces] : edges)
+      if (faces.size() == 1)
+        segments.emplace_back(eigenOf(mesh.positions[edge.first]),
+                              eigenOf(mesh.positions[edge.second]));
+  }
+  bool empty() const { return segments.empty(); }
+  Eigen::Vector3d closestPoint(const Eigen::Vector3d& p) const {
+    Eigen::Vector3d best = p;
+    double bestSquared = 1e300;
+    for (const auto& [a, b] : segments) {
+      const Eigen::Vector3d ab = b - a;
+      const double length = ab.squaredNorm();
+      const double t = length > 0.0 ? std::clamp((p - a).dot(ab) / length, 0.0, 1.0) : 0.0;
+      const Eigen::Vector3d q = a + t * ab;
+      const double squared = (p - q).squaredNorm();
+      if (squared < bestSquared) {
+        bestSquared = squared;
+        best = q;
+      }
+    }
+    return best;
+  }
+  double distance(const Eigen::Vector3d& p) const { return (p - closestPoint(p)).norm(); }
 };
 
 // The vertices' area-weighted normals.
@@ -97,8 +130,11 @@ std::vector<Eigen::Vector3d> vertexNormals(const TriangleMesh& mesh) {
 // of steps, seconds to a minute. Here the interior holds no turn it does not see, and a handful
 // of steps lands the corners. Stops at `deadline` too, checked every step: one step on every
 // vertex of a large sheet takes milliseconds to tens of them.
+// With `boundary` (the copy's), each boundary anchor is also held to the copy's boundary, point
+// to point: what fixes the turn of a sheet that lies on its copy in a continuous family of ways.
 Pose refine(Pose pose, const Anchors& anchors, const SurfaceDistanceQuery& moved, double scale,
-            const Deadline& deadline, int iterations = 100, int* steps = nullptr) {
+            const Deadline& deadline, int iterations = 100, int* steps = nullptr,
+            const BoundaryCurve* boundary = nullptr) {
   const std::size_t count = anchors.points.size();
   std::vector<Eigen::Vector3d> source(count), normal(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -143,6 +179,11 @@ Pose refine(Pose pose, const Anchors& anchors, const SurfaceDistanceQuery& moved
       const Eigen::Vector3d along = off - n * n.dot(off);
       if (along.norm() > 0.3 * distance && along.norm() > 1e-12 * scale)
         row(arm, along.normalized(), along.norm());
+      if (boundary && anchors.onBoundary[i]) {
+        const Eigen::Vector3d offEdge = placed[i] - boundary->closestPoint(placed[i]);
+        sum += offEdge.norm();
+        if (offEdge.norm() > 1e-12 * scale) row(arm, offEdge.normalized(), offEdge.norm());
+      }
     }
     return sum / double(std::max<std::size_t>(1, count));
   };
@@ -189,6 +230,15 @@ RigidMotion motionOf(const Pose& pose) {
   const Eigen::Matrix3d linear =
       pose.mirrored ? Eigen::Matrix3d(pose.rotation * kMirror) : pose.rotation;
   return {glmOf(linear), glmOf(pose.offset)};
+}
+
+Pose poseOf(const RigidMotion& motion) {
+  Pose pose;
+  const Eigen::Matrix3d linear = eigenOf(motion.linear);
+  pose.mirrored = linear.determinant() < 0.0;
+  pose.rotation = pose.mirrored ? Eigen::Matrix3d(linear * kMirror) : linear;
+  pose.offset = eigenOf(motion.offset);
+  return pose;
 }
 
 Eigen::Matrix3d turn(int axis, double radians) {
@@ -264,13 +314,50 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   }
   const std::vector<Eigen::Vector3d> normals = vertexNormals(sheet);
   std::vector<char> onBoundary(sheet.positions.size(), 0);
-  for (const auto& [edge, faces] : edgeFaces(sheet))
+  const EdgeFaces sheetEdgeFaces = edgeFaces(sheet);
+  for (const auto& [edge, faces] : sheetEdgeFaces)
     if (faces.size() == 1) onBoundary[edge.first] = onBoundary[edge.second] = 1;
+  std::vector<Eigen::Vector3d> sheetBoundary;
   for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
-    all.add(eigenOf(sheet.positions[i]), normals[i]);
+    all.add(eigenOf(sheet.positions[i]), normals[i], onBoundary[i]);
     if (onBoundary[i] || i % (1 + sheet.positions.size() / 600) == 0)
-      fine.add(eigenOf(sheet.positions[i]), normals[i]);
+      fine.add(eigenOf(sheet.positions[i]), normals[i], onBoundary[i]);
+    if (onBoundary[i]) sheetBoundary.push_back(eigenOf(sheet.positions[i]));
   }
+  // The boundaries, each onto the other: a slit cone's or cylinder's sides meet in space, so as
+  // a set of points it is whole and lies on its copy turned any way about its axis (a disk, a
+  // 96-gon, nearly so); only the slit (the corners) says which turn the development's folds
+  // were made on. A copy with no boundary of its own (a slit welded shut) says nothing.
+  // The copy's, made when a way first lays the surfaces (a copy laid no way needs none).
+  const BoundaryCurve sheetEdges(sheet, sheetEdgeFaces);
+  std::optional<BoundaryCurve> copyEdgesMade;
+  std::vector<Eigen::Vector3d> copyBoundary;
+  auto copyEdgesOf = [&]() -> const BoundaryCurve& {
+    if (!copyEdgesMade) {
+      copyEdgesMade.emplace(moved, edgeFaces(moved));
+      for (const auto& [a, b] : copyEdgesMade->segments) {
+        copyBoundary.push_back(a);
+        copyBoundary.push_back(b);
+      }
+    }
+    return *copyEdgesMade;
+  };
+  auto edgesFit = [&](const RigidMotion& motion) {
+    const BoundaryCurve& copyEdges = copyEdgesOf();
+    if (sheetEdges.empty() || copyEdges.empty()) return true;
+    const Eigen::Matrix3d linear = eigenOf(motion.linear);
+    const Eigen::Vector3d offset = eigenOf(motion.offset);
+    for (const Eigen::Vector3d& p : sheetBoundary)
+      if (!(copyEdges.distance(linear * p + offset) <= tolerance)) return false;
+    const Eigen::Matrix3d back = linear.transpose();
+    for (const Eigen::Vector3d& q : copyBoundary)
+      if (!(sheetEdges.distance(back * (q - offset)) <= tolerance)) return false;
+    return true;
+  };
+  // Every so many boundary vertices, to choose a turn by.
+  std::vector<Eigen::Vector3d> someBoundary;
+  for (std::size_t i = 0; i < sheetBoundary.size(); i += 1 + sheetBoundary.size() / 96)
+    someBoundary.push_back(sheetBoundary[i]);
 
   // Starts: the principal axes matched with every sign, and turned about each of the sheet's
   // axes (a square's or a disk's axes are any in its plane).
@@ -316,7 +403,53 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
   // The best few starts refined first (the best registration); then, where the sheet lies on the
   // copy several ways (its symmetries), every other start that lies about as well, skipping one
   // that begins near a motion found.
+  // `motion` turned about one of the sheet's principal axes (through its centroid) until the
+  // boundaries lie on each other (every degree, the sheet's boundary on the copy's and the
+  // sheet on the copy), then refined holding the boundaries together: nothing where no turn
+  // lays them.
+  auto turnedOntoEdges = [&](const RigidMotion& motion) -> std::optional<RigidMotion> {
+    const BoundaryCurve& copyEdges = copyEdgesOf();
+    const Eigen::Matrix3d linear = eigenOf(motion.linear);
+    const Eigen::Vector3d offset = eigenOf(motion.offset);
+    struct Turned {
+      double cost = 1e300;
+      RigidMotion motion;
+    };
+    std::vector<Turned> best(3);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int step = 0; step < 360; ++step) {
+        if (deadline.passed()) return std::nullopt;
+        const Eigen::Matrix3d r =
+            Eigen::AngleAxisd(step * std::numbers::pi / 180.0, Eigen::Vector3d(from.axes.col(axis)))
+                .toRotationMatrix();
+        // x -> motion(c + R (x - c))
+        const RigidMotion turned{
+            glmOf(Eigen::Matrix3d(linear * r)),
+            glmOf(Eigen::Vector3d(linear * (from.centre - r * from.centre) + offset))};
+        double cost = 0.0;
+        for (const Eigen::Vector3d& p : someBoundary)
+          cost += copyEdges.distance(eigenOf(turned(glmOf(p))));
+        cost /= double(std::max<std::size_t>(1, someBoundary.size()));
+        for (const Eigen::Vector3d& p : coarsePoints)
+          cost += movedSurface.distance(turned(glmOf(p))) / double(coarsePoints.size());
+        if (cost < best[axis].cost) best[axis] = {cost, turned};
+      }
+    std::sort(best.begin(), best.end(),
+              [](const Turned& a, const Turned& b) { return a.cost < b.cost; });
+    for (const Turned& turned : best) {
+      if (deadline.passed()) return std::nullopt;
+      const Pose pose = refine(poseOf(turned.motion), fine, movedSurface, scale, deadline, 100,
+                               steps, &copyEdges);
+      const RigidMotion refined = motionOf(pose);
+      if (deadline.passed()) return std::nullopt;
+      if (edgesFit(refined) && lays(refined)) return refined;
+    }
+    return std::nullopt;
+  };
   std::vector<RigidMotion> found;
+  std::vector<char> foundFits;  // whether each way found lays the boundaries on each other
+  constexpr int kTurnsTried = 2;
+  int turnsTried = 0;  // turns that laid no boundaries
   std::vector<Pose> foundPoses;
   const std::size_t kFirst = 4, kMostRefined = 64;
   const double coarseEnough = 3.0 * starts.front().residual + 2e-3 * scale;
@@ -357,9 +490,35 @@ std::vector<RigidMotion> registerSheetOntoAll(const TriangleMesh& sheet, const T
       motion = motionOf(pose);
       if (!lays(motion)) continue;
     }
+    bool fits = edgesFit(motion);
+    if (!fits && turnsTried < kTurnsTried) {
+      const std::optional<RigidMotion> onEdges = turnedOntoEdges(motion);
+      if (deadline.passed()) break;
+      // Where no turn lays the boundaries (a copy whose slit was welded shut), none will for
+      // the next way either: a few tries, not one per way.
+      if (!onEdges) ++turnsTried;
+      if (onEdges) {
+        const bool seen = std::any_of(found.begin(), found.end(), [&](const RigidMotion& f) {
+          double linear = 0.0;
+          for (int c = 0; c < 3; ++c)
+            linear = std::max(linear, glm::length(f.linear[c] - onEdges->linear[c]));
+          return linear < 1e-3 && glm::distance(f.offset, onEdges->offset) < 1e-3 * scale;
+        });
+        if (seen) continue;
+        motion = *onEdges;
+        fits = true;
+      }
+    }
     found.push_back(motion);
+    foundFits.push_back(fits ? 1 : 0);
   }
-  return found;
+  // The ways that lay the boundaries together first: the others are the sheet turned along a
+  // near-symmetry off the development's own way.
+  std::vector<RigidMotion> ordered;
+  for (const char wanted : {1, 0})
+    for (std::size_t k = 0; k < found.size(); ++k)
+      if (foundFits[k] == wanted) ordered.push_back(found[k]);
+  return ordered;
 }
 
 std::optional<RigidMotion> registerSheetOnto(const TriangleMesh& sheet, const TriangleMesh& moved,

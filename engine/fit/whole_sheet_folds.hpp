@@ -13,6 +13,13 @@
 // on a sheet with a near-continuous symmetry (a disk, a 96-gon, turned about its normal; a slit
 // cylinder about its axis) only the corners or the slit hold the turn, and point-to-point steps
 // [Besl & McKay 1992], which the interior pins where it is, slid there for hundreds of steps.
+// A way counts only where the boundaries lie on each other too (every boundary vertex of each
+// within the tolerance of the other's boundary): a slit cone or cylinder is whole in space and
+// lies on its copy turned any way about its axis, and only the slit says which turn the
+// development's folds were made on. A way that lays the surface but not the boundary is turned
+// about each of the sheet's principal axes (every degree) to where the boundaries meet, then
+// refined holding each boundary vertex to the copy's boundary (point to point); kept as it was
+// where no turn lays them (a copy whose boundary differs: a slit welded shut).
 //
 // wholeSheetReflections: reflections whose product is the motion, each plane missing the sheet as
 // it lies then, so each is a fold of the whole sheet: one plane (a mirror), two (a turn about a
@@ -25,8 +32,8 @@
 // them: each needs its own number of whole-sheet folds, and the fit takes the fewest (a fold
 // that mirrors a star whole is one plane; the star's symmetry times it may take five).
 //
-// Known limits: a sheet with a continuous symmetry (a disk) lies on its copy in infinitely many
-// ways; those found are the ones the starts (every 15 degrees) lead to. A copy that is not rigid
+// Known limits: a disk (a 96-gon) lies on its copy in 192 ways, each turn of its corners; those
+// found are the ones the starts (every 15 degrees) lead to. A copy that is not rigid
 // (creases left) is refused.
 #pragma once
 

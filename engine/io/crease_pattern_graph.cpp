@@ -172,11 +172,13 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
   std::vector<std::uint32_t> snapped(vertexCount, UINT32_MAX);
   PointSnapper snapper(low, tolerance);
   std::size_t merged = 0;
+  const double noteFloor = options.noteCoincidentPoints ? -1.0 : 1e-9 * diagonal;
   for (CreaseLine& line : drawing.lines)
     for (std::uint32_t* v : {&line.a, &line.b}) {
       if (snapped[*v] == UINT32_MAX) {
         snapped[*v] = snapper.snap(vertices[*v], *v, vertices);
-        merged += snapped[*v] != *v;
+        const glm::dvec2 moved = vertices[snapped[*v]] - vertices[*v];
+        merged += snapped[*v] != *v && std::hypot(moved.x, moved.y) > noteFloor;
       }
       *v = snapped[*v];
     }
@@ -309,9 +311,11 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
     std::vector<CreaseLine> lines;
     std::vector<std::string> names;
     std::unordered_map<std::uint64_t, std::uint32_t> byEnds;
-    const auto add = [&](CreaseLine line, std::size_t source) {
+    // `whole`: the line as the file gave it. A piece of zero length between two splits at one
+    // vertex (lines crossing where a third ends) is the splitting's own, and dropped silently.
+    const auto add = [&](CreaseLine line, std::size_t source, bool whole) {
       if (line.a == line.b) {
-        ++zeroLength;
+        if (whole && round == 0) ++zeroLength;
         return;
       }
       if (line.a > line.b) std::swap(line.a, line.b);
@@ -338,12 +342,12 @@ void planarize(CreaseDrawing& drawing, const PlanarizeOptions& options) {
       for (const Split& cut : cuts) {
         piece.a = from;
         piece.b = cut.vertex;
-        add(piece, i);
+        add(piece, i, false);
         from = cut.vertex;
       }
       piece.a = from;
       piece.b = drawing.lines[i].b;
-      add(piece, i);
+      add(piece, i, cuts.empty());
     }
     drawing.lines = std::move(lines);
     drawing.lineNames = std::move(names);

@@ -66,6 +66,10 @@ struct PlanarizeOptions {
   // true (FOLD): a crossing or a touch without a shared vertex is an error; false (SVG): lines
   // are split there, as Origami Simulator does.
   bool strict = true;
+  // true (FOLD, which lists each vertex once): two vertices merged are worth a note however
+  // close. false (SVG, where every line brings its own two ends): ends at one place are one
+  // vertex without a note; only points moved more than 1e-9 of the diagonal are counted.
+  bool noteCoincidentPoints = true;
 };
 
 // Snaps near points together, drops lines of zero length (a note), merges repeated lines (the

@@ -1,6 +1,8 @@
 #include "engine/io/fold_crease_pattern.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -139,10 +141,8 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
         reader.fail(key, "has " + std::to_string(array->size()) + " entries, edges_vertices " +
                              std::to_string(edges.size()));
     }
-  if (!assignments && !edges.empty())
-    drawing.notes.push_back("no edges_assignment: every edge read as unassigned (U)");
   bool join = false;
-  std::size_t signDisagrees = 0, defaulted = 0;
+  std::size_t signDisagrees = 0, defaulted = 0, bySign = 0;
   drawing.lines.reserve(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const std::string where = JsonReader::item("edges_vertices", i);
@@ -176,6 +176,13 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
         reader.fail(
             JsonReader::item(angleKey, i),
             "fold angle " + shortestDouble(line.foldAngleDegrees) + " outside [-180, 180] degrees");
+      // FOLD makes edges_assignment optional: without it a fold angle's sign says which
+      // (positive valley, negative mountain), as the specification defines it.
+      if (!assignments && line.foldAngleDegrees != 0.0) {
+        line.assignment =
+            line.foldAngleDegrees < 0 ? CreaseAssignment::Mountain : CreaseAssignment::Valley;
+        ++bySign;
+      }
       if ((line.assignment == CreaseAssignment::Mountain && line.foldAngleDegrees > 0) ||
           (line.assignment == CreaseAssignment::Valley && line.foldAngleDegrees < 0))
         ++signDisagrees;
@@ -186,6 +193,12 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
     drawing.lines.push_back(line);
     drawing.lineNames.push_back("edge " + std::to_string(i));
   }
+  if (!assignments && !edges.empty())
+    drawing.notes.push_back(
+        bySign > 0 ? "no edges_assignment: " + std::to_string(bySign) +
+                         " edges read as mountain or valley by their fold angle's sign, the "
+                         "rest as unassigned (U)"
+                   : std::string("no edges_assignment: every edge read as unassigned (U)"));
   if (join) drawing.notes.push_back("edges_assignment: J (join) edges read as flat (F)");
   if (defaulted > 0)
     drawing.notes.push_back(std::to_string(defaulted) +
@@ -274,13 +287,45 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
   return drawing;
 }
 
+// The frame to read: the key frame (the file's top level), or, where it holds no vertices (a
+// file that keeps every frame in file_frames, which FOLD allows), the first frame of file_frames
+// with vertices and edges, one whose frame_classes names a crease pattern first; its index in
+// `index`, SIZE_MAX for the key frame.
+const json& frameToRead(const json& document, std::size_t& index) {
+  index = SIZE_MAX;
+  if (!document.is_object() || document.contains("vertices_coords")) return document;
+  const auto frames = document.find("file_frames");
+  if (frames == document.end() || !frames->is_array()) return document;
+  for (std::size_t k = 0; k < frames->size(); ++k) {
+    const json& frame = (*frames)[k];
+    if (!frame.is_object() || !frame.contains("vertices_coords") ||
+        !frame.contains("edges_vertices"))
+      continue;
+    const auto classes = frame.find("frame_classes");
+    const bool creasePattern =
+        classes != frame.end() && classes->is_array() &&
+        std::find(classes->begin(), classes->end(), json("creasePattern")) != classes->end();
+    if (index == SIZE_MAX || creasePattern) index = k;
+    if (creasePattern) break;
+  }
+  return index == SIZE_MAX ? document : (*frames)[index];
+}
+
 }  // namespace
 
 CreasePattern readFoldCreasePatternText(std::string_view text, std::string_view name) {
   try {
     const json document = parseJsonText(text, name);
-    const JsonReader reader(std::string{name});
-    CreaseDrawing drawing = readDrawing(document, reader);
+    std::size_t frameIndex = SIZE_MAX;
+    const json& frame = frameToRead(document, frameIndex);
+    const JsonReader reader(frameIndex == SIZE_MAX ? std::string{name}
+                                                   : std::string{name} + ": file_frames[" +
+                                                         std::to_string(frameIndex) + "]");
+    CreaseDrawing drawing = readDrawing(frame, reader);
+    if (frameIndex != SIZE_MAX)
+      drawing.notes.insert(drawing.notes.begin(),
+                           "the key frame has no vertices_coords: file_frames[" +
+                               std::to_string(frameIndex) + "] read as the crease pattern");
     PlanarizeOptions options;
     options.strict = true;
     planarize(drawing, options);
@@ -292,7 +337,8 @@ CreasePattern readFoldCreasePatternText(std::string_view text, std::string_view 
         {"m", 1.0},   {"cm", 1e-2},   {"mm", 1e-3},       {"um", 1e-6},
         {"nm", 1e-9}, {"in", 0.0254}, {"pt", 0.0254 / 72}};
     pattern.unitSource = "FOLD coordinates read as metres";
-    if (const auto unit = document.find("frame_unit"); unit != document.end()) {
+    const json& unitFrame = frame.contains("frame_unit") ? frame : document;
+    if (const auto unit = unitFrame.find("frame_unit"); unit != unitFrame.end()) {
       const auto found = unit->is_string() ? metres.find(unit->get<std::string>()) : metres.end();
       if (found != metres.end()) {
         pattern.metresPerUnit = found->second;

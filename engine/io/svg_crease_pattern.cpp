@@ -178,9 +178,12 @@ void parseStyleSheet(std::string text, CssRules& rules) {
   }
 }
 
-std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& namedGreen) {
+// `alpha`: the colour's own opacity (#rgba, #rrggbbaa, rgba(), rgb(r g b / a)), 1 without one.
+std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& namedGreen,
+                                              double& alpha) {
   const std::string value = lower(trim(text));
   namedGreen = value == "green";
+  alpha = 1.0;
   static const std::unordered_map<std::string, std::array<int, 3>> named = {
       {"black", {0, 0, 0}},       {"red", {255, 0, 0}},       {"blue", {0, 0, 255}},
       {"lime", {0, 255, 0}},      {"green", {0, 128, 0}},     {"yellow", {255, 255, 0}},
@@ -190,6 +193,8 @@ std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& nam
     const std::string hex = value.substr(1);
     if (hex.find_first_not_of("0123456789abcdef") != std::string::npos) return std::nullopt;
     const auto digit = [&](std::size_t k) { return std::stoi(hex.substr(k, 1), nullptr, 16); };
+    if (hex.size() == 4) alpha = digit(3) * 17 / 255.0;
+    if (hex.size() == 8) alpha = std::stoi(hex.substr(6, 2), nullptr, 16) / 255.0;
     if (hex.size() == 3 || hex.size() == 4)
       return std::array<int, 3>{digit(0) * 17, digit(1) * 17, digit(2) * 17};
     if (hex.size() == 6 || hex.size() == 8)
@@ -215,6 +220,12 @@ std::optional<std::array<int, 3>> parseColour(const std::string& text, bool& nam
         channel *= 2.55;
       }
       rgb[k] = static_cast<int>(std::lround(std::clamp(channel, 0.0, 255.0)));
+    }
+    // The fourth number, after a comma or CSS4's slash: a fraction or a percentage.
+    if (const auto a = scanner.number()) {
+      alpha = *a;
+      if (scanner.peek() == '%') alpha /= 100.0;
+      alpha = std::clamp(alpha, 0.0, 1.0);
     }
     return rgb;
   }
@@ -243,6 +254,7 @@ struct Inherited {
   Affine transform;
   std::string stroke;  // empty: none given
   std::string strokeOpacity;
+  std::string color;  // CSS's color, what stroke="currentColor" takes
 };
 
 class SvgReader {
@@ -257,6 +269,8 @@ class SvgReader {
   void collectStyles(const xmlNode* node) {
     for (const xmlNode* child = node; child; child = child->next) {
       if (child->type != XML_ELEMENT_NODE) continue;
+      // Every element with an id, for <use> (the first of a repeated id, as a browser takes it).
+      if (const auto id = attribute(child, "id")) ids_.try_emplace(*id, child);
       if (localName(child) == "style") {
         xmlChar* content = xmlNodeGetContent(child);
         if (content) {
@@ -270,18 +284,29 @@ class SvgReader {
   }
 
   void walk(const xmlNode* node, const Inherited& parent) {
-    for (const xmlNode* child = node; child; child = child->next) {
-      if (child->type != XML_ELEMENT_NODE) continue;
+    for (const xmlNode* child = node; child; child = child->next)
+      if (child->type == XML_ELEMENT_NODE) visit(child, parent);
+  }
+
+  // One element and what it holds. `referenced`: reached through a <use>, so a <symbol> draws.
+  void visit(const xmlNode* child, const Inherited& parent, bool referenced = false) {
+    // Every element drawn again through a <use> counts against the copy budget, so uses nested
+    // over a large group cannot ask for more work than the file's own elements many times over.
+    if (useDepth_ > 0 && ++useCopies_ > kMaxUseCopies)
+      fail(child, "<use> copies past the limit of " + std::to_string(kMaxUseCopies) +
+                      " elements drawn again");
+    {
       const std::string tag = localName(child);
       static const char* const hidden[] = {
           "defs",           "symbol", "clippath",  "mask",         "marker", "pattern",
           "metadata",       "title",  "desc",      "style",        "script", "lineargradient",
           "radialgradient", "filter", "namedview", "foreignobject"};
-      if (std::find_if(std::begin(hidden), std::end(hidden),
+      if (!(referenced && lower(tag) == "symbol") &&
+          std::find_if(std::begin(hidden), std::end(hidden),
                        [&](const char* h) { return lower(tag) == h; }) != std::end(hidden))
-        continue;
+        return;
       Declarations style = declarationsOf(child, tag);
-      if (lower(valueOf(style, "display")) == "none") continue;
+      if (lower(valueOf(style, "display")) == "none") return;
       Inherited here = parent;
       if (const auto transform = attribute(child, "transform"))
         here.transform = parent.transform * parseTransform(child, *transform);
@@ -291,17 +316,49 @@ class SvgReader {
       if (const std::string opacity = valueOf(style, "stroke-opacity");
           !opacity.empty() && opacity != "inherit")
         here.strokeOpacity = opacity;
-      if (tag == "g" || tag == "svg" || tag == "a" || tag == "switch") {
+      if (const std::string color = valueOf(style, "color"); !color.empty() && color != "inherit")
+        here.color = color;
+      if (tag == "g" || tag == "svg" || tag == "a" || tag == "switch" || tag == "symbol") {
         walk(child->children, here);
-        continue;
+        return;
       }
       if (tag == "line" || tag == "polyline" || tag == "polygon" || tag == "rect" ||
           tag == "path" || tag == "circle" || tag == "ellipse") {
         shape(child, tag, here, style);
-        continue;
+        return;
+      }
+      if (tag == "use") {
+        use(child, here);
+        return;
       }
       ++ignoredElements_[tag];
     }
+  }
+
+  // <use href="#id" x y>: the element with that id drawn again, moved by x and y after the
+  // use's transform, with the use's stroke (Inkscape's clones and tiled clones, Illustrator's
+  // symbols). A reference to itself or an ancestor, or past the copy budget, fails in one line.
+  void use(const xmlNode* node, const Inherited& here) {
+    auto href = attribute(node, "href");  // xlink:href too: xmlGetProp ignores the namespace
+    if (!href || href->empty() || (*href)[0] != '#') {
+      ++ignoredElements_["use"];
+      return;
+    }
+    const auto found = ids_.find(href->substr(1));
+    if (found == ids_.end()) fail(node, "<use> of " + quotedExcerpt(*href, 40) + ": no such id");
+    for (const xmlNode* up = node; up; up = up->parent)
+      if (up == found->second) fail(node, "<use> of " + quotedExcerpt(*href, 40) + " draws itself");
+    if (useDepth_ >= kMaxUseDepth || drawing_.lines.size() > kMaxCreasePatternEdges)
+      fail(node, "<use> copies past the limits (" + std::to_string(kMaxUseDepth) + " nested, " +
+                     std::to_string(kMaxCreasePatternEdges) + " lines)");
+    Inherited moved = here;
+    Affine shift;
+    shift.e = length(node, "x");
+    shift.f = length(node, "y");
+    moved.transform = here.transform * shift;
+    ++useDepth_;
+    visit(found->second, moved, true);
+    --useDepth_;
   }
 
   void finish() {
@@ -333,6 +390,11 @@ class SvgReader {
   }
 
  private:
+  static constexpr int kMaxUseDepth = 32;
+  static constexpr std::size_t kMaxUseCopies = 1u << 20;
+  std::unordered_map<std::string, const xmlNode*> ids_;
+  int useDepth_ = 0;
+  std::size_t useCopies_ = 0;
   static std::string localName(const xmlNode* node) {
     return reinterpret_cast<const char*>(node->name);
   }
@@ -353,7 +415,7 @@ class SvgReader {
   // Presentation attributes, then <style> rules by tag, class and tag.class, then style="...".
   Declarations declarationsOf(const xmlNode* node, const std::string& tag) const {
     Declarations out;
-    for (const char* name : {"stroke", "stroke-opacity", "opacity", "display"})
+    for (const char* name : {"stroke", "stroke-opacity", "opacity", "display", "color"})
       if (const auto value = attribute(node, name)) out[name] = trim(*value);
     const auto apply = [&](const std::unordered_map<std::string, Declarations>& table,
                            const std::string& key) {
@@ -650,10 +712,15 @@ class SvgReader {
       return;
     }
     bool namedGreen = false;
-    const auto rgb = parseColour(here.stroke, namedGreen);
+    double colourAlpha = 1.0;
+    // currentColor is the element's color property (inherited), as a browser draws it.
+    const std::string& stroke = lower(trim(here.stroke)) == "currentcolor" && !here.color.empty()
+                                    ? here.color
+                                    : here.stroke;
+    const auto rgb = parseColour(stroke, namedGreen, colourAlpha);
     const auto assignment = rgb ? assignmentForColour(*rgb, namedGreen) : std::nullopt;
     if (!assignment) {
-      ++unknownColours_[lower(trim(here.stroke))];
+      ++unknownColours_[lower(trim(stroke))];
       return;
     }
     std::vector<Polyline> lines;
@@ -685,7 +752,8 @@ class SvgReader {
     } else {
       lines = parsePath(node);
     }
-    double opacity = 1.0;
+    // A colour's alpha is opacity as the eye sees it, as stroke-opacity is: both set the angle.
+    double opacity = colourAlpha;
     for (const std::string& text : {valueOf(style, "opacity"), here.strokeOpacity}) {
       if (text.empty()) continue;
       NumberScanner scanner(text);
@@ -881,6 +949,7 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
           (drawing.notes.empty() ? std::string() : "; " + drawing.notes.front()));
     PlanarizeOptions planar;
     planar.strict = false;
+    planar.noteCoincidentPoints = false;
     planar.relativeSnap = options.relativeSnap;
     planarize(drawing, planar);
     TriangulateOptions triangulate;
