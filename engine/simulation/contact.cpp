@@ -349,6 +349,7 @@ ContactParameters contactParameters(const BarHingeModel& model, const ContactOpt
   c.activation = c.thickness;
   c.minimumGap = 1e-3 * c.activation;
   c.exclusion = 1.5 * (c.thickness + c.activation);
+  c.edgePairs = options.edgePairs;
   double scale = 0.0;  // the static solver's forceScale
   for (std::size_t j = 0; j < model.hinges.size(); ++j)
     scale = std::max(scale, model.hingeStiffness[j] / model.barLength[model.hingeEdge[j]]);
@@ -390,6 +391,7 @@ std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
   if (!model.contact.enabled) return {};
   std::vector<ContactPair> pairs =
       pairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
+  if (!model.contact.edgePairs) return pairs;
   const std::vector<ContactPair> edges =
       edgePairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
   pairs.insert(pairs.end(), edges.begin(), edges.end());
@@ -507,6 +509,7 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
       bound[v] = 0.9 * gap / relative;
     });
   });
+  if (!model.contact.edgePairs) return *std::min_element(bound.begin(), bound.end());
   // Edges alike: the segments' distance changes at most by the largest relative motion of an end
   // of one against an end of the other.
   const BoxTree bars = barTree(model, positions, thickness, &step);
