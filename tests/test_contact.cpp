@@ -12,6 +12,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/contact.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/layer_order.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "tests/simulation_test_support.hpp"
 
@@ -134,6 +135,137 @@ TEST(Contact, DynamicStepsKeepTheLayersApart) {
   EXPECT_EQ(crossingTrianglePairs(model, state.positions), 0u);
   EXPECT_GE(smallestLayerDistance(model, state.positions, kThickness, 0.01), 0.9 * kThickness);
   EXPECT_GT(state.contactPairs.rebuilds, 0u);
+}
+
+// A 10 mm sheet with its right half folded exactly flat onto its left (a fold of 180 degrees, as
+// reflection makes them): every vertex of the flap lies on the layer below it, at a distance of 0.
+std::vector<glm::dvec3> foldedFlatInTouch(const BarHingeModel& model) {
+  std::vector<glm::dvec3> x = model.flatPositions;
+  for (glm::dvec3& p : x)
+    if (p.x > 0.005) p = {0.01 - p.x, p.y, 0.0};
+  return x;
+}
+
+// Layers that start in touch go to the side their fold gives: a valley brings the fronts
+// together (the flap onto the front, +z, of the counter-clockwise sheet), a mountain the backs.
+// At a distance of 0 the barrier alone pushed every vertex along its triangle's normal, +z, the
+// mountain's flap through to the front.
+TEST(Contact, LayersThatStartInTouchGoToTheSideTheirFoldGives) {
+  for (const double degrees : {180.0, -180.0}) {
+    SCOPED_TRACE(degrees);
+    const BarHingeModel model =
+        buildModel(scaled(testing::creasedSquare(4, 2, degrees), 0.01), paperOptions(true));
+    std::vector<glm::dvec3> x = foldedFlatInTouch(model);
+    const std::vector<double> angles = hingeAngles(model, x, hingeTargets(model, 1.0));
+    const double side = degrees > 0.0 ? 1.0 : -1.0;
+    // Vertex 3 (x = 7.5 mm) lies on triangle 0 (the corner square's, normal +z).
+    EXPECT_EQ(layerSide(model, x, angles, 3, 0), static_cast<int>(side));
+    const LayerSeparation separation = separateLayers(model, x, angles);
+    EXPECT_GT(separation.pairs, 0u);
+    EXPECT_EQ(separation.left, 0u);
+    for (std::uint32_t v = 0; v < model.vertexCount(); ++v)
+      if (model.flatPositions[v].x > 0.005 + 1e-9) {
+        EXPECT_GT(side * x[v].z, 0.0) << v;
+      }
+    EXPECT_GE(smallestLayerDistance(model, x, kThickness, 0.01), kThickness);
+  }
+}
+
+// The static solver from such a state (a mountain folded flat, layers in touch) settles with the
+// flap behind the sheet, the crease near its goal, no triangle crossing another.
+TEST(Contact, AMountainFoldedFlatInTouchSettlesBehindTheSheet) {
+  const BarHingeModel model =
+      buildModel(scaled(testing::creasedSquare(4, 2, -180.0), 0.01), paperOptions(true));
+  SimulationState state = flatState(model);
+  state.positions = foldedFlatInTouch(model);
+  state.hingeAngles = hingeAngles(model, state.positions, hingeTargets(model, 1.0));
+  StaticOptions options;
+  options.predictor = false;
+  const StaticResult result = settle(model, 1.0, state, options);
+  expectEnergyNeverRises(result);
+  EXPECT_EQ(crossingTrianglePairs(model, state.positions), 0u);
+  for (std::uint32_t v = 0; v < model.vertexCount(); ++v)
+    if (model.flatPositions[v].x > 0.005 + 1e-9) {
+      EXPECT_LT(state.positions[v].z, state.positions[v - 2 * (v % 5 - 2)].z) << v;
+    }
+  const std::vector<double> error =
+      creaseAngleError(model, state.positions, 1.0, state.hingeAngles);
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.hingeCrease[j]) {
+      EXPECT_LT(std::abs(error[model.hingeEdge[j]]), 30.0) << j;
+    }
+}
+
+// Two strips crossing as an X, 1.5 thicknesses apart where their middle edges cross, no vertex
+// over the other strip: only the edges meet. The barrier pushes them apart (the force is its
+// energy's gradient), and a step that would carry one edge through the other is cut short.
+TEST(Contact, EdgesThatCrossKeepTheThicknessApart) {
+  CreasePattern pattern;
+  // Strip A along x (vertices 0..3), strip B along y (4..7), far apart on the flat sheet.
+  pattern.vertices = {{0.0, 0.0}, {0.01, 0.0},  {0.0, 0.002}, {0.01, 0.002},
+                      {0.1, 0.0}, {0.102, 0.0}, {0.1, 0.01},  {0.102, 0.01}};
+  pattern.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}};
+  testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
+    return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
+  });
+  ModelOptions options = paperOptions(true);
+  options.contact.edgePairs = true;  // off unless asked for (EdgePairsOnlyWhenAskedFor)
+  const BarHingeModel model = buildModel(pattern, options);
+  // Strip B turned over strip A's diagonal: its diagonal 4-7 crosses A's 0-3 at their middles.
+  std::vector<glm::dvec3> x = model.flatPositions;
+  const double z = 1.5 * kThickness;
+  x[4] = {0.005, -0.004, z};
+  x[5] = {0.007, -0.004, z};
+  x[7] = {0.003, 0.006, z};
+  x[6] = {0.001, 0.006, z};
+  const std::vector<ContactPair> pairs = findContactPairs(model, x, model.contact.activation);
+  bool edgePair = false;
+  for (const ContactPair& pair : pairs) edgePair = edgePair || pair.edges;
+  ASSERT_TRUE(edgePair);
+  std::vector<glm::dvec3> force(model.vertexCount(), glm::dvec3(0.0));
+  addContactForces(model, x, force);
+  EXPECT_LT(force[0].z + force[3].z, 0.0);  // strip A pushed down, B up
+  EXPECT_GT(force[4].z + force[7].z, 0.0);
+  // Strip B moved down through A: the step is cut before the edges meet.
+  std::vector<glm::dvec3> step(model.vertexCount(), glm::dvec3(0.0));
+  for (int v = 4; v < 8; ++v) step[v] = {0.0, 0.0, -10.0 * kThickness};
+  const double bound = contactStepBound(model, x, step);
+  EXPECT_LE(bound * 10.0 * kThickness, 0.5 * kThickness + 1e-12);
+  EXPECT_GT(bound, 0.0);
+}
+
+// Edge-edge pairs are off unless asked for (contact.hpp: on, the recorded cone glued started deep
+// in their barrier and did not settle): the X of EdgesThatCrossKeepTheThicknessApart has no pair
+// and no step bound by default, and both with ContactOptions::edgePairs.
+TEST(Contact, EdgePairsOnlyWhenAskedFor) {
+  CreasePattern pattern;
+  pattern.vertices = {{0.0, 0.0}, {0.01, 0.0},  {0.0, 0.002}, {0.01, 0.002},
+                      {0.1, 0.0}, {0.102, 0.0}, {0.1, 0.01},  {0.102, 0.01}};
+  pattern.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}};
+  testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
+    return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
+  });
+  std::vector<glm::dvec3> x;
+  std::vector<glm::dvec3> step(8, glm::dvec3(0.0));
+  for (int v = 4; v < 8; ++v) step[v] = {0.0, 0.0, -10.0 * kThickness};
+  for (const bool asked : {false, true}) {
+    SCOPED_TRACE(asked);
+    ModelOptions options = paperOptions(true);
+    options.contact.edgePairs = asked;
+    const BarHingeModel model = buildModel(pattern, options);
+    EXPECT_EQ(model.contact.edgePairs, asked);
+    x = model.flatPositions;
+    const double z = 1.5 * kThickness;
+    x[4] = {0.005, -0.004, z};
+    x[5] = {0.007, -0.004, z};
+    x[7] = {0.003, 0.006, z};
+    x[6] = {0.001, 0.006, z};
+    std::size_t edgePairs = 0;
+    for (const ContactPair& pair : findContactPairs(model, x, model.contact.activation))
+      edgePairs += pair.edges;
+    EXPECT_EQ(edgePairs > 0, asked);
+    EXPECT_EQ(contactStepBound(model, x, step) < 1.0, asked);
+  }
 }
 
 // Design mode has no thickness and keeps none; paper mode's contact can be turned off.

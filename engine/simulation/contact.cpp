@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -10,12 +11,11 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 
 namespace curvefold {
-namespace {
 
-// The point of triangle (a, b, c) nearest p, as barycentric weights (Ericson, "Real-Time
-// Collision Detection", 5.1.5: the Voronoi regions of the corners, the edges, then the face).
-glm::dvec3 nearestWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
-                          const glm::dvec3& c) {
+// Ericson, "Real-Time Collision Detection", 5.1.5: the Voronoi regions of the corners, the edges,
+// then the face.
+glm::dvec3 nearestTriangleWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                  const glm::dvec3& c) {
   const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
   if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
@@ -46,10 +46,41 @@ glm::dvec3 nearestWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::d
   return {1.0 - v - w, v, w};
 }
 
+namespace {
+
 double distanceToTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
                           const glm::dvec3& c) {
-  const glm::dvec3 w = nearestWeights(p, a, b, c);
+  const glm::dvec3 w = nearestTriangleWeights(p, a, b, c);
   return glm::distance(p, w.x * a + w.y * b + w.z * c);
+}
+
+// The nearest points of segments p0 p1 and q0 q1 as their parameters (s, t) in [0, 1] (Ericson,
+// "Real-Time Collision Detection", 5.1.9; parallel segments: s from the first's start).
+std::pair<double, double> nearestSegmentParameters(const glm::dvec3& p0, const glm::dvec3& p1,
+                                                   const glm::dvec3& q0, const glm::dvec3& q1) {
+  const glm::dvec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+  if (!(a > 0.0) && !(e > 0.0)) return {0.0, 0.0};
+  if (!(a > 0.0)) return {0.0, std::clamp(f / e, 0.0, 1.0)};
+  const double c = glm::dot(d1, r);
+  if (!(e > 0.0)) return {std::clamp(-c / a, 0.0, 1.0), 0.0};
+  const double b = glm::dot(d1, d2), denominator = a * e - b * b;
+  double sp = denominator > 0.0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
+  double tp = (b * sp + f) / e;
+  if (tp < 0.0) {
+    tp = 0.0;
+    sp = std::clamp(-c / a, 0.0, 1.0);
+  } else if (tp > 1.0) {
+    tp = 1.0;
+    sp = std::clamp((b - c) / a, 0.0, 1.0);
+  }
+  return {sp, tp};
+}
+
+double segmentDistance(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& q0,
+                       const glm::dvec3& q1) {
+  const auto [sp, tp] = nearestSegmentParameters(p0, p1, q0, q1);
+  return glm::distance(p0 + sp * (p1 - p0), q0 + tp * (q1 - q0));
 }
 
 struct Box {
@@ -164,6 +195,64 @@ bool excluded(const BarHingeModel& model, std::uint32_t v, std::uint32_t t, doub
   return false;
 }
 
+// Whether two bars are the sheet's own neighbourhood: near on the flat sheet, or an end of one
+// glued to a vertex near the other.
+bool edgesExcluded(const BarHingeModel& model, std::uint32_t i, std::uint32_t j, double exclusion) {
+  const auto& flat = model.flatPositions;
+  const auto& e = model.bars[i];
+  const auto& f = model.bars[j];
+  if (segmentDistance(flat[e[0]], flat[e[1]], flat[f[0]], flat[f[1]]) < exclusion) return true;
+  const auto nearBar = [&](std::uint32_t u, const std::array<std::uint32_t, 2>& bar) {
+    return segmentDistance(flat[u], flat[u], flat[bar[0]], flat[bar[1]]) < exclusion;
+  };
+  for (const auto& pair : model.glue)
+    for (int k = 0; k < 2; ++k) {
+      const std::uint32_t end = pair[k], other = pair[1 - k];
+      if ((end == e[0] || end == e[1]) && nearBar(other, f)) return true;
+      if ((end == f[0] || end == f[1]) && nearBar(other, e)) return true;
+    }
+  return false;
+}
+
+bool barsShareAnEnd(const BarHingeModel& model, std::uint32_t i, std::uint32_t j) {
+  const auto& e = model.bars[i];
+  const auto& f = model.bars[j];
+  return e[0] == f[0] || e[0] == f[1] || e[1] == f[0] || e[1] == f[1];
+}
+
+BoxTree barTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
+                const std::vector<glm::dvec3>* step = nullptr);
+
+// The pairs of bars (i < j, no end in common, not excluded) whose segments are nearer than
+// `within`, sorted.
+std::vector<ContactPair> edgePairsWithin(const BarHingeModel& model,
+                                         const std::vector<glm::dvec3>& x, double within,
+                                         double exclusion) {
+  const std::size_t m = model.bars.size();
+  if (m == 0) return {};
+  const BoxTree tree = barTree(model, x, within);
+  std::vector<std::vector<std::uint32_t>> found(m);
+  forEachIndex(m, [&](std::size_t bar) {
+    const std::uint32_t i = static_cast<std::uint32_t>(bar);
+    const auto& e = model.bars[i];
+    Box box;
+    box.add(x[e[0]]);
+    box.add(x[e[1]]);
+    tree.query(box, [&](std::uint32_t j) {
+      if (j <= i || barsShareAnEnd(model, i, j)) return;
+      const auto& f = model.bars[j];
+      if (segmentDistance(x[e[0]], x[e[1]], x[f[0]], x[f[1]]) < within &&
+          !edgesExcluded(model, i, j, exclusion))
+        found[bar].push_back(j);
+    });
+    std::sort(found[bar].begin(), found[bar].end());
+  });
+  std::vector<ContactPair> pairs;
+  for (std::uint32_t i = 0; i < m; ++i)
+    for (std::uint32_t j : found[i]) pairs.push_back({1, i, j});
+  return pairs;
+}
+
 // Per vertex in order, the triangles `accept(v, t)` takes among those whose (already inflated)
 // box meets the vertex's box; concatenated in vertex order, each vertex's sorted.
 template <typename VertexBox, typename Accept>
@@ -180,7 +269,7 @@ std::vector<ContactPair> collectPairs(const BarHingeModel& model, const BoxTree&
   });
   std::vector<ContactPair> pairs;
   for (std::uint32_t v = 0; v < n; ++v)
-    for (std::uint32_t t : found[v]) pairs.push_back({v, t});
+    for (std::uint32_t t : found[v]) pairs.push_back({0, v, t});
   return pairs;
 }
 
@@ -193,6 +282,19 @@ BoxTree triangleTree(const BarHingeModel& model, const std::vector<glm::dvec3>& 
       if (step) boxes[t].add(x[v] + (*step)[v]);
     }
     boxes[t].inflate(inflation);
+  }
+  return BoxTree(std::move(boxes));
+}
+
+BoxTree barTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
+                const std::vector<glm::dvec3>* step) {
+  std::vector<Box> boxes(model.bars.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::uint32_t v : model.bars[i]) {
+      boxes[i].add(x[v]);
+      if (step) boxes[i].add(x[v] + (*step)[v]);
+    }
+    boxes[i].inflate(inflation);
   }
   return BoxTree(std::move(boxes));
 }
@@ -247,6 +349,7 @@ ContactParameters contactParameters(const BarHingeModel& model, const ContactOpt
   c.activation = c.thickness;
   c.minimumGap = 1e-3 * c.activation;
   c.exclusion = 1.5 * (c.thickness + c.activation);
+  c.edgePairs = options.edgePairs;
   double scale = 0.0;  // the static solver's forceScale
   for (std::size_t j = 0; j < model.hinges.size(); ++j)
     scale = std::max(scale, model.hingeStiffness[j] / model.barLength[model.hingeEdge[j]]);
@@ -286,16 +389,52 @@ std::vector<ContactPair> pairsWithin(const BarHingeModel& model,
 std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
                                           const std::vector<glm::dvec3>& positions, double reach) {
   if (!model.contact.enabled) return {};
-  return pairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
+  std::vector<ContactPair> pairs =
+      pairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
+  if (!model.contact.edgePairs) return pairs;
+  const std::vector<ContactPair> edges =
+      edgePairsWithin(model, positions, model.contact.thickness + reach, model.contact.exclusion);
+  pairs.insert(pairs.end(), edges.begin(), edges.end());
+  return pairs;
+}
+
+std::array<std::uint32_t, 4> contactPairVertices(const BarHingeModel& model,
+                                                 const ContactPair& pair) {
+  if (pair.edges) {
+    const auto& e = model.bars[pair.vertex];
+    const auto& f = model.bars[pair.triangle];
+    return {e[0], e[1], f[0], f[1]};
+  }
+  const auto& t = model.triangles[pair.triangle];
+  return {pair.vertex, t[0], t[1], t[2]};
 }
 
 bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                  const ContactPair& pair, ContactTerm& term, bool dynamic) {
   const ContactParameters& c = model.contact;
+  if (pair.edges) {
+    const std::array<std::uint32_t, 4> v = contactPairVertices(model, pair);
+    const glm::dvec3 &p0 = positions[v[0]], &p1 = positions[v[1]];
+    const glm::dvec3 &q0 = positions[v[2]], &q1 = positions[v[3]];
+    const auto [sp, tp] = nearestSegmentParameters(p0, p1, q0, q1);
+    const glm::dvec3 away = (p0 + sp * (p1 - p0)) - (q0 + tp * (q1 - q0));
+    const double d = glm::length(away);
+    const double s = d - c.thickness;
+    if (s >= c.activation) return false;
+    glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(p1 - p0, q1 - q0);
+    if (!(d > 0.0)) {
+      const double length = glm::length(normal);
+      normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
+    }
+    term.vertices = v;
+    term.gradient = {(1.0 - sp) * normal, sp * normal, -(1.0 - tp) * normal, -tp * normal};
+    barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
+    return true;
+  }
   const auto& tri = model.triangles[pair.triangle];
   const glm::dvec3& p = positions[pair.vertex];
   const glm::dvec3 &a = positions[tri[0]], &b = positions[tri[1]], &cc = positions[tri[2]];
-  const glm::dvec3 w = nearestWeights(p, a, b, cc);
+  const glm::dvec3 w = nearestTriangleWeights(p, a, b, cc);
   const glm::dvec3 away = p - (w.x * a + w.y * b + w.z * cc);
   const double d = glm::length(away);
   const double s = d - c.thickness;
@@ -370,7 +509,37 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
       bound[v] = 0.9 * gap / relative;
     });
   });
-  return *std::min_element(bound.begin(), bound.end());
+  if (!model.contact.edgePairs) return *std::min_element(bound.begin(), bound.end());
+  // Edges alike: the segments' distance changes at most by the largest relative motion of an end
+  // of one against an end of the other.
+  const BoxTree bars = barTree(model, positions, thickness, &step);
+  const std::size_t m = model.bars.size();
+  std::vector<double> barBound(m, 1.0);
+  forEachIndex(m, [&](std::size_t bar) {
+    const std::uint32_t i = static_cast<std::uint32_t>(bar);
+    const auto& e = model.bars[i];
+    Box box;
+    for (std::uint32_t v : e) {
+      box.add(positions[v]);
+      box.add(positions[v] + step[v]);
+    }
+    bars.query(box, [&](std::uint32_t j) {
+      if (j <= i || barsShareAnEnd(model, i, j)) return;
+      const auto& f = model.bars[j];
+      double relative = 0.0;
+      for (std::uint32_t a : e)
+        for (std::uint32_t b : f) relative = std::max(relative, glm::length(step[a] - step[b]));
+      const double gap =
+          segmentDistance(positions[e[0]], positions[e[1]], positions[f[0]], positions[f[1]]) -
+          thickness;
+      if (!(gap > 0.0) || 0.9 * gap >= relative * barBound[bar]) return;
+      if (edgesExcluded(model, i, j, model.contact.exclusion)) return;
+      barBound[bar] = 0.9 * gap / relative;
+    });
+  });
+  double smallest = *std::min_element(bound.begin(), bound.end());
+  if (m > 0) smallest = std::min(smallest, *std::min_element(barBound.begin(), barBound.end()));
+  return smallest;
 }
 
 void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,

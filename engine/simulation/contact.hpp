@@ -17,18 +17,29 @@
 // (median splits, deterministic), and listed sorted (vertex, then triangle).
 //
 // Solvers: the static solver adds the barrier's energy, force and Hessian b'' grad(d) grad(d)^T
-// (positive semidefinite; the b' Hess(d) term is dropped) and limits each step so that no pair
-// can close more than 90% of its gap along it (contactStepBound: a gap changes at most by the
-// largest motion of the vertex relative to the triangle's corners), so no vertex passes through a
-// layer between iterations. The dynamic solver adds the same force from a list of pairs within the
-// activation gap plus a skin, found again when a vertex has moved half the skin (ContactList).
+// (positive semidefinite), and in its exact last stage b' Hess(d) too (by differences) and limits
+// each step so that no pair can close more than 90% of its gap along it (contactStepBound: a gap
+// changes at most by the largest motion of the vertex relative to the triangle's corners), so no
+// vertex passes through a layer between iterations. The dynamic solver adds the same force from a
+// list of pairs within the activation gap plus a skin, found again when a vertex has moved half the
+// skin (ContactList).
 //
 // Stiffness kappa: stiffnessScale x the hinges' force scale (the largest k / |e| over hinges, the
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
 // that force.
 //
-// Known limits: point-triangle pairs only (an edge passing through an edge with no vertex
-// passing a triangle is not stopped; `check` still reports it); the dynamic solver's step is not
+// Edge-edge pairs (layer39; off unless ContactOptions::edgePairs): two bars with no end in common
+// whose segments come within the thickness + s^ of each other have the same barrier on the
+// segments' distance (its gradient at the nearest points, Ericson 5.1.9), excluded as
+// vertex-triangle pairs are (near on the flat sheet, or across a glued seam), and bound the static
+// solver's steps alike. Off by default (layer40): on the recorded cone glued, pairs of edges the
+// layer order leaves within the thickness start deep in the barrier (contact energy 1.4e4 against
+// 0.13 without them), and the settle crawled at step bounds of 0.03 (NOT settled, residual 2.9e5,
+// strain 7.9%); without them it settles in 42 iterations. No crossing they stopped was found (the
+// folded cone's were its glued seam's, docs/performance.md).
+//
+// Known limits: the distance between nearly parallel segments is not smooth (IPC's mollifier is
+// not applied); the dynamic solver's step is not
 // limited by the barrier's stiffness, which grows as 1 / s^2 deep in it; paper mode only (design
 // mode has no thickness and keeps none).
 #pragma once
@@ -44,6 +55,10 @@ namespace curvefold {
 struct BarHingeModel;
 struct SimulationState;
 
+// The point of triangle (a, b, c) nearest p, as barycentric weights.
+glm::dvec3 nearestTriangleWeights(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                  const glm::dvec3& c);
+
 // What ModelOptions asks for.
 struct ContactOptions {
   // Off unless asked for (`simulate --paper` asks unless --no-contact): with it the static
@@ -52,6 +67,10 @@ struct ContactOptions {
   bool enabled = false;
   double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
   double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
+  // Edge-edge pairs too (above). Off: on the recorded cone glued they made its settle worse
+  // (pairs the layer order leaves within the thickness: residual 5.0e4 -> 2.9e5, NOT settled)
+  // and stopped no crossing the vertex-triangle pairs let through (docs/performance.md).
+  bool edgePairs = false;
 };
 
 // What the model keeps (BarHingeModel::contact); enabled only in paper mode with contact on.
@@ -62,6 +81,7 @@ struct ContactParameters {
   double minimumGap = 0.0;  // below this gap the barrier is its Taylor polynomial
   double stiffness = 0.0;   // kappa, N/m
   double exclusion = 0.0;   // pairs nearer than this on the flat sheet are never pairs
+  bool edgePairs = false;   // ContactOptions::edgePairs
   // The dynamic solver's barrier is its Taylor polynomial below this gap (setDynamicContactStep),
   // so its stiffness stays within what the explicit step is stable at.
   double dynamicMinimumGap = 0.0;
@@ -79,13 +99,21 @@ void setDynamicContactStep(ContactParameters& contact, double largestStiffness);
 ContactParameters contactParameters(const BarHingeModel& model, const ContactOptions& options,
                                     double paperThickness);
 
+// A vertex and a triangle not its own, or (edges) two bars with no end in common: then `vertex`
+// is the first bar and `triangle` the second (vertex < triangle).
 struct ContactPair {
+  std::uint8_t edges = 0;
   std::uint32_t vertex = 0, triangle = 0;
   auto operator<=>(const ContactPair&) const = default;
 };
 
+// The pair's four vertices: the vertex then the triangle's corners, or the first bar's ends then
+// the second's.
+std::array<std::uint32_t, 4> contactPairVertices(const BarHingeModel& model,
+                                                 const ContactPair& pair);
+
 // Every pair (excluded ones left out) whose vertex is within thickness + reach of its triangle,
-// sorted.
+// then every pair of edges as near, sorted (vertex-triangle pairs first).
 std::vector<ContactPair> findContactPairs(const BarHingeModel& model,
                                           const std::vector<glm::dvec3>& positions, double reach);
 

@@ -24,10 +24,13 @@
 // element-per-slot kernels of bar_hinge_model.hpp.
 //
 // Self-contact (paper mode, contact.hpp): the energy, forces and residual include the barrier
-// between layers, the Hessian its b'' grad(d) grad(d)^T for the pairs near enough to push (the
-// sparse pattern laid out again when a pair it lacks begins to push), each step is shortened so
-// that no vertex can pass through a layer along it, and the predictor's state is taken only when
-// it does not pass the sheet through itself.
+// between layers, the Hessian its b'' grad(d) grad(d)^T (and b' Hess(d) where the last stage is
+// exact) for the pairs near enough to push (the sparse pattern laid out again when a pair it
+// lacks begins to push), each step is shortened so that no vertex can pass through a layer
+// along it, and the predictor's state is taken only when it does not pass the sheet through
+// itself. Layers that start in touch (a design's flat folds) are first moved apart to the sides
+// their folds give (layer_order.hpp), on each predictor guess and on a start the predictor did
+// not replace.
 //
 // Known limits: a state between two stable equilibria may settle in either (the solver takes the
 // one downhill of its start, or the predictor's when that is lower); each iteration is a
