@@ -207,7 +207,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     // The corners that stand past a round rim after the step are tucked under at the fit's end
     // (tuck_folds.hpp, FoldFitter's last step): measured so too, a grown square over a round
     // saddle covers its falling ends and leaves its corners out (saddle_disk, `--from square`).
-    if (!steps.empty() && !deadline.passed()) {
+    // Only a grown sheet's: the start's own cross leaves its ends short too, and the clock's share
+    // for the start is better spent reaching the grown ones.
+    if (grown && !steps.empty() && !deadline.passed()) {
       session.applyRecords(steps.front().folds);
       const std::vector<FoldSuggestion> tucks = suggestTucks(session, fitter, 1, deadline);
       if (!tucks.empty()) {
