@@ -11,7 +11,6 @@
 #include "engine/fit/ring_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
-#include "engine/fit/tuck_folds.hpp"
 #include "engine/geometry/fold_session.hpp"
 
 namespace curvefold {
@@ -202,25 +201,8 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     FoldSession session(start.sheet);
     std::vector<FoldSuggestion> steps = suggestPleats(session, fitter, 1, deadline);
     const Sheet& landed = steps.empty() ? start.sheet : steps.front().sheet;
-    SurfaceDistance distance = surfaceDistance(meshOf(landed), fitter.target(), kSamples);
-    double score = distance.chamfer + kHausdorffWeight * distance.hausdorff;
-    // The corners that stand past a round rim after the step are tucked under at the fit's end
-    // (tuck_folds.hpp, FoldFitter's last step): measured so too, a grown square over a round
-    // saddle covers its falling ends and leaves its corners out (saddle_disk, `--from square`).
-    // Only a grown sheet's: the start's own cross leaves its ends short too, and the clock's share
-    // for the start is better spent reaching the grown ones.
-    if (grown && !steps.empty() && !deadline.passed()) {
-      session.applyRecords(steps.front().folds);
-      const std::vector<FoldSuggestion> tucks = suggestTucks(session, fitter, 1, deadline);
-      if (!tucks.empty()) {
-        const SurfaceDistance tucked =
-            surfaceDistance(meshOf(tucks.front().sheet), fitter.target(), kSamples);
-        if (const double s = tucked.chamfer + kHausdorffWeight * tucked.hausdorff; s < score) {
-          score = s;
-          distance = tucked;
-        }
-      }
-    }
+    const SurfaceDistance distance = surfaceDistance(meshOf(landed), fitter.target(), kSamples);
+    const double score = distance.chamfer + kHausdorffWeight * distance.hausdorff;
     if (!best || score < bestScore) {
       bestScore = score;
       best = FirstStepStart{start,

@@ -16,10 +16,8 @@
 // approximateDistance cuts far distances, and barely sees a corner 24 mm out), kept where that
 // falls by a tenth and the search's score rises by no more than 3%, with no more crossings than
 // before (self_intersection.hpp), and taken back; each far point's best tuck is kept, and all of
-// them made together as one step. The fit makes them as its last step (FitRun::tuckCorners,
-// judged by the exact distances), and the start chosen by its first step counts them
-// (first_step_start.hpp): a sheet grown to cover a round saddle's falling ends stands past its
-// rim at the corners, which a tuck folds under.
+// them made together as one step. The fit makes them as its last steps (FitRun::tuckCorners,
+// up to three rounds, each judged by the exact distances).
 //
 // Inputs: a session holding a design without symmetry; the fitter's target. Output: up to `count`
 // steps, the sheet standing out least first (the tucks of every far point as one group, then
