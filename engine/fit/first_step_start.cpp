@@ -1,6 +1,7 @@
 #include "engine/fit/first_step_start.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <glm/geometric.hpp>
@@ -22,6 +23,10 @@ constexpr std::size_t kSamples = 4000;
 constexpr double kHausdorffWeight = 0.5;
 constexpr double kLeastShortfall = 0.005;
 constexpr double kHalfShare = 0.5;
+// The target's arc length along each end: samples, and the strip's half width (of the sheet's
+// size) about the end's line.
+constexpr std::size_t kArcSamples = 6000;
+constexpr double kArcStrip = 0.04;
 
 // The unit normal of a flat sheet (none when it is not flat within 1e-6 of its size).
 std::optional<glm::dvec3> flatNormal(const Sheet& sheet) {
@@ -46,6 +51,49 @@ double reach(const std::vector<glm::dvec3>& points, const glm::dvec3& centre,
   double most = -1e300;
   for (const glm::dvec3& p : points) most = std::max(most, glm::dot(p - centre, direction));
   return most;
+}
+
+// The target's arc length from `centre` out along `direction` (unit, in the sheet's plane of
+// normal `normal`): its samples within a strip about that line binned by their reach, the
+// polyline through each bin's mean height measured. A steep saddle's rising end is far longer
+// along its surface than its reach across the sheet (saddle_mm_thin: 168 units of arc to a reach
+// of 100), and a flat sheet bent there covers only its own length. 0 where the strip holds too
+// few samples.
+double arcLength(const std::vector<SurfaceSample>& samples, const glm::dvec3& centre,
+                 const glm::dvec3& direction, const glm::dvec3& normal, double halfWidth) {
+  constexpr int kBins = 24;
+  const glm::dvec3 side = glm::cross(normal, direction);
+  double far = 0.0;
+  for (const SurfaceSample& s : samples)
+    if (std::abs(glm::dot(s.position - centre, side)) < halfWidth)
+      far = std::max(far, glm::dot(s.position - centre, direction));
+  if (!(far > 0.0)) return 0.0;
+  std::vector<double> height(kBins, 0.0);
+  std::vector<int> in(kBins, 0);
+  for (const SurfaceSample& s : samples) {
+    const double t = glm::dot(s.position - centre, direction);
+    if (t < 0.0 || std::abs(glm::dot(s.position - centre, side)) >= halfWidth) continue;
+    const int b = std::min(kBins - 1, static_cast<int>(t / far * kBins));
+    height[b] += glm::dot(s.position - centre, normal);
+    ++in[b];
+  }
+  double length = 0.0, lastT = 0.0, lastH = 0.0;
+  bool started = false;
+  int used = 0;
+  for (int b = 0; b < kBins; ++b) {
+    if (in[b] == 0) continue;
+    const double t = (b + 0.5) * far / kBins, h = height[b] / in[b];
+    if (started)
+      length += std::hypot(t - lastT, h - lastH);
+    else
+      length += t;  // from the centre to the first bin, as along the sheet
+    lastT = t;
+    lastH = h;
+    started = true;
+    ++used;
+  }
+  if (used < kBins / 2) return 0.0;
+  return length + (far - lastT);
 }
 
 std::string vectorText(const glm::dvec3& v) {
@@ -78,13 +126,19 @@ std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestio
   const glm::dvec3 across = glm::cross(*normal, line);
   // Each end's reach: the flat sheet's, the sheet's after the step, the target's.
   const glm::dvec3 ends[4] = {line, -line, across, -across};
+  const std::vector<SurfaceSample> samples = sampleSurface(target, kArcSamples, 5);
   double grown[4];
   bool any = false;
   for (int i = 0; i < 4; ++i) {
-    const double shortfall = std::max(0.0, reach(target.positions, centre, ends[i]) -
-                                               reach(step.sheet.positions, centre, ends[i]));
+    // Short of the target's reach after the step, or of its arc length where the target rises
+    // steeply (each end's bend or pleat turns it straight, so the sheet needs the arc's paper).
+    const double flatReach = reach(flat.positions, centre, ends[i]);
+    const double shortfall = std::max(
+        {0.0,
+         reach(target.positions, centre, ends[i]) - reach(step.sheet.positions, centre, ends[i]),
+         arcLength(samples, centre, ends[i], *normal, kArcStrip * size) - flatReach});
     any = any || shortfall > kLeastShortfall * size;
-    grown[i] = reach(flat.positions, centre, ends[i]) + share * shortfall;
+    grown[i] = flatReach + share * shortfall;
   }
   if (!any) return std::nullopt;
   double width = grown[0] + grown[1], height = grown[2] + grown[3];

@@ -39,8 +39,10 @@ namespace curvefold {
 // "square" a square of its larger side, "disk" a disk about the same centre grown to the end that
 // fell shortest, "ellipse" `flat` scaled about its centre (development alike) to that end. `share`
 // of each shortfall is given back (startByFirstStep tries all and half: a grown sheet's corners
-// stand past a rounded footprint). None where no end fell short by over 0.5% of the sheet's size,
-// or `flat` is not flat.
+// stand past a rounded footprint). Each end's shortfall is also counted against the target's arc
+// length along it (its samples in a strip about the end's line, the polyline of their binned mean
+// heights): a steep saddle's rising end is longer along its surface than its reach across the
+// sheet. None where no end fell short by over 0.5% of the sheet's size, or `flat` is not flat.
 std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
                                           const TriangleMesh& target, const std::string& kind,
                                           double share = 1.0);

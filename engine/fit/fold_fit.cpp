@@ -26,6 +26,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/tuck_folds.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -82,6 +83,13 @@ constexpr double kHausdorffSlack = 1.1;
 constexpr double kSameArea = 0.05;
 // A fit within this much of the diagonal (Hausdorff) reaches the target.
 constexpr double kReached = 0.01;
+// Tucked corners (FitRun::tuckCorners) are kept where the farthest point comes in by this share,
+// the Chamfer distance rising by no more than this one.
+constexpr double kTuckGain = 0.03;
+constexpr double kTuckChamferSlack = 0.01;
+// The share of --time the search leaves them (suggestTucks and one exact measure).
+constexpr double kTuckShare = 0.08;
+constexpr int kTuckRounds = 3;
 // A pleat that brings the sheet this much closer (the search's distance) stands for the step
 // toward a smooth target that is no surface of revolution (FitRun::beamSearch).
 constexpr double kPleatEnough = 0.05;
@@ -996,6 +1004,7 @@ class FitRun {
       beamSearch(root);
     }
     commitBest();
+    if (!result_.cancelled) tuckCorners();
     result_.folds.assign(
         session_.folds().begin(),
         session_.folds().begin() + static_cast<std::ptrdiff_t>(session_.foldCount()));
@@ -1023,7 +1032,8 @@ class FitRun {
   // enough for them (and 5% of the time for the rest), whatever the deadline says.
   Deadline searchDeadline(std::size_t groups) const {
     if (end_ == std::chrono::steady_clock::time_point::max()) return deadline_;
-    const double reserve = 0.05 * options_.seconds + foldCost_ * static_cast<double>(groups + 1);
+    const double reserve = 0.05 * options_.seconds + foldCost_ * static_cast<double>(groups + 1) +
+                           (tucksAtEnd() ? kTuckShare * options_.seconds : 0.0);
     return deadline_.notAfter(end_ -
                               std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                   std::chrono::duration<double>(reserve)));
@@ -1862,6 +1872,46 @@ class FitRun {
            chosen->folds.begin() + static_cast<std::ptrdiff_t>(first + chosen->groups[g])});
       result_.steps.push_back(measured.steps[g]);
       if (options_.progress) options_.progress(measured.steps[g]);
+    }
+  }
+
+  // The corners that stand past a smooth target's rim (a square over a round saddle) tucked
+  // under once the search is done (tuck_folds.hpp), kept where the exact measure says the sheet's
+  // farthest point came in by kTuckGain at least and its Chamfer distance rose by no more than
+  // kTuckChamferSlack. The search's robust score barely sees a corner 24 mm out (the judge's
+  // saddle_disk: 1.6% lower), so it is judged here by the distance the goal bounds.
+  bool tucksAtEnd() const {
+    return fitter_.smoothTarget() && !fitter_.revolutionTarget() && options_.pleats > 0 &&
+           !session_.symmetricFolder();
+  }
+  void tuckCorners() {
+    if (!tucksAtEnd() || result_.steps.size() >= options_.maxFolds + 1) return;
+    // Room for the tucked sheet's measure and its report.
+    Deadline deadline = deadline_;
+    if (end_ != std::chrono::steady_clock::time_point::max())
+      deadline =
+          deadline_.notAfter(end_ - std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                        std::chrono::duration<double>(1.5 * foldCost_)));
+    // A few rounds: a round may tuck only some corners (the others' tucks crossed the sheet as
+    // it was, or stood apart from the far points found), and the rest stand out as far.
+    for (int round = 0; round < kTuckRounds; ++round) {
+      if (deadline.passed() || result_.steps.size() >= options_.maxFolds + 1) return;
+      const std::vector<FoldSuggestion> tucks = suggestTucks(session_, fitter_, 1, deadline);
+      if (tucks.empty() || deadline.passed()) return;
+      const FitProgress before = result_.steps.back();
+      session_.applyRecords(tucks.front().folds);
+      FitProgress after = measureNow(result_.steps.size());
+      after.tucked = true;
+      if ((after.hausdorff < (1.0 - kTuckGain) * before.hausdorff &&
+           after.chamfer <= (1.0 + kTuckChamferSlack) * before.chamfer) ||
+          (after.chamfer < (1.0 - options_.minimumGain) * before.chamfer &&
+           after.hausdorff <= before.hausdorff)) {
+        result_.steps.push_back(after);
+        if (options_.progress) options_.progress(after);
+        continue;
+      }
+      session_.undo();
+      return;
     }
   }
 

@@ -187,6 +187,7 @@ struct FitProgress {
   std::size_t fold = 0;                                   // folds kept so far (0: the start)
   double hausdorff = 0.0, chamfer = 0.0, diagonal = 0.0;  // exact, to the target
   double seconds = 0.0;
+  bool tucked = false;  // the step tucked corners under (tuck_folds.hpp)
 };
 
 struct FitOptions {

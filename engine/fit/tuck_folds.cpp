@@ -1,0 +1,218 @@
+#include "engine/fit/tuck_folds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <utility>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/self_intersection.hpp"
+
+namespace curvefold {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+// A vertex this far from the target (of its diagonal) may stand past its rim.
+constexpr double kFar = 0.02;
+// Its way to the target runs along the sheet: under this cosine with the sheet's normal.
+constexpr double kAlongSheet = 0.6;
+// Vertices measured, far points tucked (at least this far apart, of the sheet's size).
+constexpr std::size_t kMeasured = 1500;
+constexpr std::size_t kFarPoints = 4;
+constexpr double kFarApart = 0.25;
+// The hinge's distance back from the far point, in units of how far it stands out.
+constexpr double kDepths[] = {0.8, 1.0, 1.25};
+// The tilt eps of the plane out of the sheet's normal plane (the flap lies at 2 eps).
+constexpr double kTilts[] = {3.0 * kDegree, 7.0 * kDegree};
+// A tuck is kept where the sheet stands out (excess) by this share of before at most, and the
+// search's score (approximateDistance, which cuts far distances) rises by no more than this.
+constexpr double kLessExcess = 0.9;
+constexpr double kScoreSlack = 0.03;
+
+std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
+  std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
+  for (const Triangle& t : sheet.triangles) {
+    const glm::dvec3 n = glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
+                                    sheet.positions[t[2]] - sheet.positions[t[0]]);
+    for (const VertexIndex v : t) normals[v] += n;  // area-weighted
+  }
+  for (glm::dvec3& n : normals) {
+    const double length = glm::length(n);
+    n = length > 0.0 ? n / length : glm::dvec3(0.0);
+  }
+  return normals;
+}
+
+// A step of tucks made, and how far the sheet then stands out (see excess).
+struct Made : FoldSuggestion {
+  double excess = 0.0;
+};
+
+struct Tuck {
+  ReflectionPlane plane;
+  VertexIndex seed = 0;  // a vertex of the flap, where the fold grabs it
+  double after = 0.0;
+};
+
+}  // namespace
+
+std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter& fitter,
+                                         std::size_t count, const Deadline& deadline) {
+  session.cancel();
+  std::vector<FoldSuggestion> out;
+  if (count == 0 || session.symmetricFolder() || deadline.passed()) return out;
+  const Sheet sheet = session.fixed();
+  const std::size_t n = sheet.vertexCount();
+  if (n < 4) return out;
+  const std::vector<glm::dvec3> normals = vertexNormals(sheet);
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : sheet.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double size = glm::length(hi - lo);
+
+  // Where the sheet stands past the target's rim: far, its way to the target along the sheet.
+  const SurfaceDistanceQuery query(fitter.target(), "target");
+  const std::size_t stride = std::max<std::size_t>(1, n / kMeasured);
+  std::vector<VertexIndex> measured;
+  std::vector<glm::dvec3> points;
+  for (std::size_t v = 0; v < n; v += stride) {
+    measured.push_back(static_cast<VertexIndex>(v));
+    points.push_back(sheet.positions[v]);
+  }
+  const std::vector<double> distances = pointDistances(points, query);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < measured.size(); ++i)
+    if (distances[i] > kFar * fitter.targetDiagonal()) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return distances[a] > distances[b]; });
+  struct Far {
+    VertexIndex vertex = 0;
+    double distance = 0.0;
+    glm::dvec3 outward{0.0};  // away from the target, along the sheet
+  };
+  std::vector<Far> far;
+  for (const std::size_t i : order) {
+    if (far.size() == kFarPoints) break;
+    const glm::dvec3 p = points[i];
+    const glm::dvec3 m = normals[measured[i]];
+    const glm::dvec3 away = (p - query.closestPoint(p)) / distances[i];
+    if (!(glm::length(m) > 0.5) || std::abs(glm::dot(away, m)) > kAlongSheet) continue;
+    if (std::any_of(far.begin(), far.end(), [&](const Far& f) {
+          return glm::distance(sheet.positions[f.vertex], p) < kFarApart * size;
+        }))
+      continue;
+    far.push_back({measured[i], distances[i], glm::normalize(away - glm::dot(away, m) * m)});
+  }
+  if (far.empty()) return out;
+
+  const double before = fitter.approximateDistance(sheet);
+  // How far the sheet stands out: the squares of its vertices' distances past kFar.
+  const double far2 = kFar * fitter.targetDiagonal();
+  auto excess = [&](const Sheet& s) {
+    const std::vector<double> d = pointDistances(s.positions, query);
+    double sum = 0.0;
+    for (const double x : d)
+      if (x > far2) sum += (x - far2) * (x - far2);
+    return sum;
+  };
+  const double excessBefore = excess(sheet);
+  const std::size_t crossingsBefore = findSelfIntersections(sheet).intersections.size();
+  const std::size_t foldsBefore = session.foldCount();
+  std::uint32_t group = 1;
+  for (std::size_t f = 0; f < foldsBefore; ++f)
+    group = std::max(group, session.folds()[f].group + 1);
+  auto undoAll = [&] {
+    while (session.foldCount() > foldsBefore) session.undo();
+  };
+  // The tucks made, in turn; false where the session refuses one (a sliver).
+  auto make = [&](const std::vector<Tuck>& tucks) {
+    for (const Tuck& tuck : tucks) {
+      const glm::dvec3 grab = session.beginDragAtDevelopment(sheet.development[tuck.seed]);
+      if (!(tuck.plane.signedDistance(grab) > 0.0)) {
+        session.cancel();
+        return false;
+      }
+      session.updateDrag(tuck.plane.reflect(grab));
+      if (!session.commit()) return false;
+    }
+    return true;
+  };
+  // The tucks made and scored (none where they cross the sheet more than before), taken back.
+  auto score = [&](const std::vector<Tuck>& tucks) -> std::optional<Made> {
+    deadline.countEvaluation();
+    std::optional<Made> made;
+    if (make(tucks)) {
+      const double after = fitter.approximateDistance(session.fixed());
+      const double excessAfter = excess(session.fixed());
+      if (excessAfter < kLessExcess * excessBefore && after <= (1.0 + kScoreSlack) * before &&
+          findSelfIntersections(session.fixed()).intersections.size() <= crossingsBefore) {
+        made.emplace();
+        made->folds.assign(
+            session.folds().begin() + static_cast<std::ptrdiff_t>(foldsBefore),
+            session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
+        // One group: undo takes the tucks at once, and a fit counts them as one step.
+        for (FoldRecord& fold : made->folds) fold.group = group;
+        made->sheet = session.fixed();
+        made->before = before;
+        made->after = after;
+        made->excess = excessAfter;
+      }
+    }
+    undoAll();
+    return made;
+  };
+
+  // Each far point's best tuck.
+  std::vector<std::pair<Tuck, Made>> best;
+  for (const Far& f : far) {
+    std::optional<std::pair<Tuck, Made>> kept;
+    const glm::dvec3 p = sheet.positions[f.vertex];
+    for (const double depth : kDepths) {
+      if (deadline.passed()) break;
+      // The hinge: the sheet's vertex nearest the point that far back, and the sheet's tangent
+      // there along the outward way.
+      const glm::dvec3 wanted = p - depth * f.distance * f.outward;
+      VertexIndex at = 0;
+      double nearest = 1e300;
+      for (std::size_t v = 0; v < n; ++v)
+        if (const double d = glm::distance(sheet.positions[v], wanted); d < nearest) {
+          nearest = d;
+          at = static_cast<VertexIndex>(v);
+        }
+      const glm::dvec3 h = sheet.positions[at], m = normals[at];
+      glm::dvec3 along = f.outward - glm::dot(f.outward, m) * m;
+      if (!(glm::length(along) > 1e-6) || !(glm::length(m) > 0.5)) continue;
+      along = glm::normalize(along);
+      if (!(glm::dot(p - h, along) > 0.0)) continue;
+      for (const double tilt : kTilts)
+        for (const double side : {1.0, -1.0}) {
+          Tuck tuck{{h, std::cos(tilt) * along + side * std::sin(tilt) * m}, f.vertex, 0.0};
+          if (std::optional<Made> made = score({tuck})) {
+            tuck.after = made->excess;
+            if (!kept || tuck.after < kept->first.after) kept.emplace(tuck, std::move(*made));
+          }
+        }
+    }
+    if (kept) best.push_back(std::move(*kept));
+  }
+  if (best.empty()) return out;
+  // Every far point's tuck as one step, then the single tucks.
+  if (best.size() > 1 && !deadline.passed()) {
+    std::vector<Tuck> all;
+    for (const auto& b : best) all.push_back(b.first);
+    if (std::optional<FoldSuggestion> made = score(all)) out.push_back(std::move(*made));
+  }
+  for (auto& b : best) out.push_back(std::move(b.second));
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& a, const auto& b) { return a.after < b.after; });
+  if (out.size() > count) out.resize(count);
+  return out;
+}
+
+}  // namespace curvefold
