@@ -689,5 +689,108 @@ TEST(Simulation, PaperModeGluedFoldedConeSettlesFromItsShapeWithThePapersBars) {
   EXPECT_LT(strain, 1e-3);
 }
 
+// A Huffman-style tower (bench/make_judge_patterns.py's): cols x rows cells of side `cell`,
+// horizontals valley, verticals mountain, each cell's diagonal valley (alternating by row), as
+// FOLD with M/V and no angles (so +-180 degrees at 100%), no faces.
+std::string towerFold(int cols, int rows, double cell) {
+  std::string vertices, edges, assignment;
+  const auto id = [&](int i, int j) { return j * (cols + 1) + i; };
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= cols; ++i)
+      vertices += (vertices.empty() ? "[" : ",[") + std::to_string(i * cell) + "," +
+                  std::to_string(j * cell) + "]";
+  const auto edge = [&](int a, int b, char kind) {
+    edges += (edges.empty() ? "[" : ",[") + std::to_string(a) + "," + std::to_string(b) + "]";
+    assignment += std::string(assignment.empty() ? "\"" : ",\"") + kind + "\"";
+  };
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < cols; ++i) edge(id(i, j), id(i + 1, j), j == 0 || j == rows ? 'B' : 'V');
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i <= cols; ++i) edge(id(i, j), id(i, j + 1), i == 0 || i == cols ? 'B' : 'M');
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i)
+      if (j % 2 == 0)
+        edge(id(i, j), id(i + 1, j + 1), 'V');
+      else
+        edge(id(i + 1, j), id(i, j + 1), 'V');
+  return R"({"file_spec":1.1,"frame_unit":"m","vertices_coords":[)" + vertices +
+         R"(],"edges_vertices":[)" + edges + R"(],"edges_assignment":[)" + assignment + "]}";
+}
+
+// modelEnergyChange is the energy's change from the vertices' moves: for a move large enough,
+// the difference of the two sums; for a move of 1e-13 m, where that difference is
+// lost in the sums' rounding, the first-order change -F . dx (the forces at the start; the
+// second-order term is 1e-7 of it). A difference of sums fails the second (its rounding, about
+// 1e-16 of the energy, is 1e-3 of the change).
+TEST(Simulation, EnergyChangeFromTheMovesIsAccurateWhereSumsRoundAway) {
+  const BarHingeModel model =
+      buildModel(readFoldCreasePatternText(towerFold(4, 2, 0.05), "t.fold"));
+  SimulationState state = flatState(model);
+  stepDynamic(model, 0.5, state, 300);
+  const std::vector<double> targets = hingeTargets(model, 0.5);
+  std::vector<double> angles;
+  std::vector<glm::dvec3> slots, forces;
+  elementForces(model, state.positions, targets, state.hingeAngles, angles, slots);
+  gatherForces(model, slots, forces);
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  std::vector<glm::dvec3> direction(model.vertexCount());
+  for (glm::dvec3& d : direction) d = glm::dvec3(normal(random), normal(random), normal(random));
+  const double energy = modelEnergy(model, state.positions, targets, angles);
+  for (const double size : {1e-3, 1e-13}) {
+    std::vector<glm::dvec3> moved = state.positions;
+    double firstOrder = 0.0;
+    for (std::size_t v = 0; v < moved.size(); ++v) {
+      moved[v] += size * direction[v];
+      firstOrder -= glm::dot(forces[v], moved[v] - state.positions[v]);
+    }
+    const double change = modelEnergyChange(model, state.positions, moved, targets, angles);
+    if (size > 1e-6) {
+      EXPECT_NEAR(change, modelEnergy(model, moved, targets, angles) - energy,
+                  1e-9 * std::abs(energy));
+    } else {
+      ASSERT_GT(std::abs(firstOrder), 1e-15 * energy);  // below the sums' rounding: a real test
+      EXPECT_NEAR(change, firstOrder, 1e-5 * std::abs(firstOrder)) << "energy " << energy;
+    }
+  }
+}
+
+// The Huffman-style tower at 50% (targets +-90 degrees, which the sheet cannot take together, so
+// its equilibrium keeps large hinge errors): the static solver stalled at a residual of 5e-7
+// when it compared energy sums (bench/make_judge_patterns.py's fold_tower.fold: NOT settled in
+// 130 iterations), every trial a rounding above a start whose sum had rounded low. It settles,
+// and no iteration raises the energy.
+TEST(Simulation, HuffmanTowerAtHalfSettlesWithTheEnergyNeverRising) {
+  // The judge's file as written (its vertex and edge order: the stall depends on the path),
+  // faces_vertices left out (the same stall).
+  const char* tower =
+      R"({"file_spec":1.1,"frame_unit":"m","vertices_coords":[[0.0,0.0],[0.05,0.0],[0.1,0.0],)"
+      R"([0.15000000000000002,0.0],[0.2,0.0],[0.25,0.0],[0.30000000000000004,0.0],)"
+      R"([0.35000000000000003,0.0],[0.4,0.0],[0.0,0.05],[0.05,0.05],[0.1,0.05],)"
+      R"([0.15000000000000002,0.05],[0.2,0.05],[0.25,0.05],[0.30000000000000004,0.05],)"
+      R"([0.35000000000000003,0.05],[0.4,0.05],[0.0,0.1],[0.05,0.1],[0.1,0.1],[0.15000000000000002,)"
+      R"(0.1],[0.2,0.1],[0.25,0.1],[0.30000000000000004,0.1],[0.35000000000000003,0.1],[0.4,0.1],)"
+      R"([0.0,0.15000000000000002],[0.05,0.15000000000000002],[0.1,0.15000000000000002],)"
+      R"([0.15000000000000002,0.15000000000000002],[0.2,0.15000000000000002],[0.25,)"
+      R"(0.15000000000000002],[0.30000000000000004,0.15000000000000002],[0.35000000000000003,)"
+      R"(0.15000000000000002],[0.4,0.15000000000000002]],"edges_vertices":[[0,1],[1,2],[2,3],[3,4],)"
+      R"([4,5],[5,6],[6,7],[7,8],[9,10],[10,11],[11,12],[12,13],[13,14],[14,15],[15,16],[16,17],)"
+      R"([18,19],[19,20],[20,21],[21,22],[22,23],[23,24],[24,25],[25,26],[27,28],[28,29],[29,30],)"
+      R"([30,31],[31,32],[32,33],[33,34],[34,35],[0,9],[9,18],[18,27],[8,17],[17,26],[26,35],[1,)"
+      R"(10],[2,11],[3,12],[4,13],[5,14],[6,15],[7,16],[0,10],[1,11],[2,12],[3,13],[4,14],[5,15],)"
+      R"([6,16],[7,17],[10,19],[11,20],[12,21],[13,22],[14,23],[15,24],[16,25],[10,18],[11,19],[12,)"
+      R"(20],[13,21],[14,22],[15,23],[16,24],[17,25],[19,28],[20,29],[21,30],[22,31],[23,32],[24,)"
+      R"(33],[25,34],[18,28],[19,29],[20,30],[21,31],[22,32],[23,33],[24,34],[25,35]],)"
+      R"("edges_assignment":["B","B","B","B","B","B","B","B","V","V","V","V","V","V","V","V","V",)"
+      R"("V","V","V","V","V","V","V","B","B","B","B","B","B","B","B","B","B","B","B","B","B","M",)"
+      R"("M","M","M","M","M","M","V","V","V","V","V","V","V","V","M","M","M","M","M","M","M","V",)"
+      R"("V","V","V","V","V","V","V","M","M","M","M","M","M","M","V","V","V","V","V","V","V","V"]})";
+  const BarHingeModel model = buildModel(readFoldCreasePatternText(tower, "fold_tower.fold"));
+  SimulationState state = flatState(model);
+  const StaticResult result = settle(model, 0.5, state);
+  EXPECT_TRUE(result.converged) << result.iterations << " iterations, residual " << result.residual;
+  for (const StaticIteration& it : result.history) EXPECT_LE(it.energyChange, 0.0);
+}
+
 }  // namespace
 }  // namespace curvefold

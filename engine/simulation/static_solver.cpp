@@ -466,11 +466,12 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     double energy = modelEnergy(m, state.positions, targets, state.hingeAngles);
     double damping = 1e-6;  // mu, relative to the Hessian's diagonal
     const std::size_t stageStart = result.iterations;
+    double lastChange = 0.0;  // the energy's change in the last iteration (0: the stage's start)
     while (true) {
       totalForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
                   state.slotForces, forces);
       const double residual = maxForce(forces) / scale;
-      result.history.push_back({stage, energy, residual});
+      result.history.push_back({stage, energy, residual, lastChange});
       result.residual = residual;
       if (residual <= tolerance) break;
       // A soft stage only has to bring the sheet onto the creases' branch, not to equilibrium.
@@ -547,12 +548,16 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           for (std::size_t v = 0; v < n; ++v)
             trial[v] = state.positions[v] +
                        alpha * glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
-          const double trialEnergy = modelEnergy(m, trial, targets, state.hingeAngles);
-          bool lower = trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope;
-          // Near equilibrium the decrease (about residual^2 / stiffness) falls below the
-          // rounding of the energy's sum, and no step measurably lowers it: a step that leaves
-          // the energy where it was (not above) is then taken if it lowers the residual.
-          if (!lower && trialEnergy <= energy && energy - trialEnergy <= 1e-12 * std::abs(energy)) {
+          // The change from the moves themselves (modelEnergyChange): near equilibrium the
+          // decrease (about residual^2 / stiffness) falls below the rounding of the energy's sum,
+          // and comparing sums there stalled the solver (every trial a rounding above a start
+          // whose sum happened to round low).
+          const double change =
+              modelEnergyChange(m, state.positions, trial, targets, state.hingeAngles);
+          bool lower = change < 0.0 && change <= 1e-4 * alpha * slope;
+          // Where even that is lost (a step of a few ulps), a step that does not raise the
+          // energy is taken if it lowers the residual.
+          if (!lower && change <= 0.0 && -change <= 1e-12 * std::abs(energy)) {
             totalForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots, trialForces);
             lower = maxForce(trialForces) < maxForce(forces);
           }
@@ -560,7 +565,8 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
             trialAngles = hingeAngles(model, trial, state.hingeAngles);
             state.positions.swap(trial);
             state.hingeAngles.swap(trialAngles);
-            energy = trialEnergy;
+            energy = modelEnergy(m, state.positions, targets, state.hingeAngles);
+            lastChange = change;
             accepted = true;
           } else {
             alpha *= 0.5;
