@@ -548,25 +548,23 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           for (std::size_t v = 0; v < n; ++v)
             trial[v] = state.positions[v] +
                        alpha * glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
-          // The change from the moves themselves (modelEnergyChange): near equilibrium the
-          // decrease (about residual^2 / stiffness) falls below the rounding of the energy's sum,
-          // and comparing sums there stalled the solver (every trial a rounding above a start
-          // whose sum happened to round low).
-          const double change =
-              modelEnergyChange(m, state.positions, trial, targets, state.hingeAngles);
-          bool lower = change < 0.0 && change <= 1e-4 * alpha * slope;
-          // Where even that is lost (a step of a few ulps), a step that does not raise the
-          // energy is taken if it lowers the residual.
-          if (!lower && change <= 0.0 && -change <= 1e-12 * std::abs(energy)) {
+          const double trialEnergy = modelEnergy(m, trial, targets, state.hingeAngles);
+          bool lower = trialEnergy < energy && trialEnergy <= energy + 1e-4 * alpha * slope;
+          // Near equilibrium the decrease (about residual^2 / stiffness) falls below the
+          // rounding of the energy's sum, and no step measurably lowers it: a step that leaves
+          // the energy where it was (not above) is then taken if it lowers the residual.
+          if (!lower && trialEnergy <= energy && energy - trialEnergy <= 1e-12 * std::abs(energy)) {
             totalForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots, trialForces);
             lower = maxForce(trialForces) < maxForce(forces);
           }
           if (lower) {
+            // What the step changed, measured from the moves (modelEnergyChange, accurate where
+            // the sums above are rounding): StaticIteration::energyChange, `simulate --verbose`.
+            lastChange = modelEnergyChange(m, state.positions, trial, targets, state.hingeAngles);
             trialAngles = hingeAngles(model, trial, state.hingeAngles);
             state.positions.swap(trial);
             state.hingeAngles.swap(trialAngles);
-            energy = modelEnergy(m, state.positions, targets, state.hingeAngles);
-            lastChange = change;
+            energy = trialEnergy;
             accepted = true;
           } else {
             alpha *= 0.5;

@@ -4,8 +4,8 @@
 // Gauss-Newton Hessian (bars: their exact Hessian with the compressive part dropped; hinges
 // k grad(theta) grad(theta)^T; glue exact), then a backtracking line search (Armijo) takes the
 // longest step of 1, 1/2, 1/4, .. that lowers the energy, so the energy never rises between
-// iterations, judged by modelEnergyChange (the change from the moves, accurate where the difference
-// of two energy sums is rounding); a step whose change is 0 is taken if it lowers the residual.
+// iterations (near equilibrium, where a decrease falls below the rounding of the energy's sum,
+// a step that leaves the energy equal, never above, is taken if it lowers the residual).
 // Large angle changes are reached by continuation: the hinge targets go from the state's angles
 // to the goal in stages of at most maxStageDegrees, each solved loosely, the last
 // to the tolerance; in design mode the stages run with the bent facets as soft as the creases
@@ -80,8 +80,9 @@ struct StaticIteration {
   double energy = 0.0;    // at that stage's targets, after the iteration
   double residual = 0.0;
   // The energy's change in the iteration that ended here, from the vertices' moves
-  // (modelEnergyChange: accurate where the difference of two energies is rounding); never above
-  // 0 within a stage. 0 at a stage's start (its targets differ from the last stage's).
+  // (modelEnergyChange: accurate where the difference of two energy sums is rounding); 0 at a
+  // stage's start (its targets differ from the last stage's). Above 0 only for a step the line
+  // search took on the residual rule with the sums equal: a rise within their rounding.
   double energyChange = 0.0;
 };
 
