@@ -198,7 +198,8 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
 // moves (moved - positions) rather than as a difference of two sums: accurate to the change's own
 // size, where the difference of the sums is lost in their rounding (about 1e-16 of the energy)
 // once a step's decrease falls below it, as it does near an equilibrium whose hinges keep large
-// errors (a Huffman tower at 50%: the static solver stalled at a residual of 5e-7). `angles`:
+// errors (a Huffman tower at 50%, where the static solver stalls at a residual of 5e-7); the
+// static solver records each step's change with it (StaticIteration::energyChange). `angles`:
 // every hinge's angle at `positions`, unwrapped; the moved angles are taken within pi of them.
 // The contact barrier's change (paper mode) is the difference of its sums.
 double modelEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
