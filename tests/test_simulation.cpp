@@ -689,5 +689,71 @@ TEST(Simulation, PaperModeGluedFoldedConeSettlesFromItsShapeWithThePapersBars) {
   EXPECT_LT(strain, 1e-3);
 }
 
+// A Huffman-style tower (bench/make_judge_patterns.py's): cols x rows cells of side `cell`,
+// horizontals valley, verticals mountain, each cell's diagonal valley (alternating by row), as
+// FOLD with M/V and no angles (so +-180 degrees at 100%), no faces.
+std::string towerFold(int cols, int rows, double cell) {
+  std::string vertices, edges, assignment;
+  const auto id = [&](int i, int j) { return j * (cols + 1) + i; };
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= cols; ++i)
+      vertices += (vertices.empty() ? "[" : ",[") + std::to_string(i * cell) + "," +
+                  std::to_string(j * cell) + "]";
+  const auto edge = [&](int a, int b, char kind) {
+    edges += (edges.empty() ? "[" : ",[") + std::to_string(a) + "," + std::to_string(b) + "]";
+    assignment += std::string(assignment.empty() ? "\"" : ",\"") + kind + "\"";
+  };
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < cols; ++i) edge(id(i, j), id(i + 1, j), j == 0 || j == rows ? 'B' : 'V');
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i <= cols; ++i) edge(id(i, j), id(i, j + 1), i == 0 || i == cols ? 'B' : 'M');
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i)
+      if (j % 2 == 0)
+        edge(id(i, j), id(i + 1, j + 1), 'V');
+      else
+        edge(id(i + 1, j), id(i, j + 1), 'V');
+  return R"({"file_spec":1.1,"frame_unit":"m","vertices_coords":[)" + vertices +
+         R"(],"edges_vertices":[)" + edges + R"(],"edges_assignment":[)" + assignment + "]}";
+}
+
+// modelEnergyChange is the energy's change from the vertices' moves: for a move large enough,
+// the difference of the two sums; for a move of 1e-13 m, where that difference is
+// lost in the sums' rounding, the first-order change -F . dx (the forces at the start; the
+// second-order term is 1e-7 of it). A difference of sums fails the second (its rounding, about
+// 1e-16 of the energy, is 1e-3 of the change).
+TEST(Simulation, EnergyChangeFromTheMovesIsAccurateWhereSumsRoundAway) {
+  const BarHingeModel model =
+      buildModel(readFoldCreasePatternText(towerFold(4, 2, 0.05), "t.fold"));
+  SimulationState state = flatState(model);
+  stepDynamic(model, 0.5, state, 300);
+  const std::vector<double> targets = hingeTargets(model, 0.5);
+  std::vector<double> angles;
+  std::vector<glm::dvec3> slots, forces;
+  elementForces(model, state.positions, targets, state.hingeAngles, angles, slots);
+  gatherForces(model, slots, forces);
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  std::vector<glm::dvec3> direction(model.vertexCount());
+  for (glm::dvec3& d : direction) d = glm::dvec3(normal(random), normal(random), normal(random));
+  const double energy = modelEnergy(model, state.positions, targets, angles);
+  for (const double size : {1e-3, 1e-13}) {
+    std::vector<glm::dvec3> moved = state.positions;
+    double firstOrder = 0.0;
+    for (std::size_t v = 0; v < moved.size(); ++v) {
+      moved[v] += size * direction[v];
+      firstOrder -= glm::dot(forces[v], moved[v] - state.positions[v]);
+    }
+    const double change = modelEnergyChange(model, state.positions, moved, targets, angles);
+    if (size > 1e-6) {
+      EXPECT_NEAR(change, modelEnergy(model, moved, targets, angles) - energy,
+                  1e-9 * std::abs(energy));
+    } else {
+      ASSERT_GT(std::abs(firstOrder), 1e-15 * energy);  // below the sums' rounding: a real test
+      EXPECT_NEAR(change, firstOrder, 1e-5 * std::abs(firstOrder)) << "energy " << energy;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace curvefold

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -270,7 +271,7 @@ void addSimulateCommand(CLI::App& app) {
       "Fold the flat sheet of a design with the bar-and-hinge simulation and write the state");
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
-    bool settle = false, gpu = false, motion = false, noContact = false;
+    bool settle = false, verbose = false, gpu = false, motion = false, noContact = false;
     double paperMm = 0.0, modulusGpa = 4.0, sizeMm = 0.0;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -287,6 +288,9 @@ void addSimulateCommand(CLI::App& app) {
   command->add_flag("--settle", options->settle,
                     "Solve each state to equilibrium (static solver) instead of --steps steps of "
                     "the damped dynamic solver");
+  command->add_flag("--verbose", options->verbose,
+                    "With --settle: a line per static iteration (stage, energy, its change, "
+                    "residual)");
   command->add_option("--steps", options->steps,
                       "Dynamic steps per state without --settle (default 2000)");
   command->add_flag("--gpu", options->gpu,
@@ -491,10 +495,25 @@ void addSimulateCommand(CLI::App& app) {
       std::string solved;
       if (options->settle) {
         const StaticResult result = settle(model, amount, state);
-        char text[96];
-        std::snprintf(text, sizeof text, "%s in %zu iterations, residual %.1e",
+        // Whether the energy rose in any iteration (issue 39: it never should), from each
+        // iteration's change as the solver measured it.
+        std::size_t rises = 0;
+        for (const StaticIteration& it : result.history) {
+          if (it.energyChange > 0.0) ++rises;
+          if (options->verbose) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "  stage %zu: energy %.17g, change %.3e, residual %.3e\n", it.stage,
+                          it.energy, it.energyChange, it.residual);
+            statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
+                << text;
+          }
+        }
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "%s in %zu iterations, residual %.1e, energy %.6g (rose in %zu)",
                       result.converged ? "settled" : "NOT settled", result.iterations,
-                      result.residual);
+                      result.residual, result.energy, rises);
         solved = text;
       } else if (gpuSolver) {
         gpuSolver->step(amount, options->steps);
@@ -510,14 +529,28 @@ void addSimulateCommand(CLI::App& app) {
       const std::size_t crossing = crossingTrianglePairs(model, state.positions);
       const std::string crossingText =
           crossing == 0 ? "none" : std::to_string(crossing) + " triangle pairs cross";
-      char line[320];
+      // Creases folded to the other side of flat than their targets (more than half a degree):
+      // a mountain folded as a valley, which paper folding the printed pattern would not do.
+      const std::vector<double> targets = hingeTargets(model, amount);
+      const std::vector<double> angles = state.hingeAngles.size() == model.hinges.size()
+                                             ? state.hingeAngles
+                                             : hingeAngles(model, state.positions);
+      std::size_t wrongWay = 0;
+      for (std::size_t j = 0; j < model.hinges.size(); ++j)
+        if (model.hingeCrease[j] && angles[j] * targets[j] < 0.0 &&
+            std::abs(angles[j]) > 0.5 * std::numbers::pi / 180.0)
+          ++wrongWay;
+      const std::string wrongWayText =
+          wrongWay == 0 ? ""
+                        : ", " + std::to_string(wrongWay) + " creases on the wrong side of flat";
+      char line[384];
       std::snprintf(line, sizeof line,
                     "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "
-                    "(mean %.2f), self-intersection: %s\n",
+                    "(mean %.2f)%s, self-intersection: %s\n",
                     percents[i], solved.c_str(),
                     largestMagnitude(edgeStrain(model, state.positions)),
                     largestMagnitude(angleError), meanCreaseMagnitude(model, angleError),
-                    crossingText.c_str());
+                    wrongWayText.c_str(), crossingText.c_str());
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);

@@ -507,6 +507,68 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
   return energy + contactEnergy(model, positions);
 }
 
+namespace {
+
+// The change of a hinge's angle between two placements of its vertices (p and p + dp), from the
+// moves: the kernel's angle is atan2(y, x) with y = |e| (n1 . w), x = n1 . n2 (hinge_kernel.hpp),
+// and the change is atan2(y' x - x' y, x x' + y y'), whose y' x - x' y = dy x - dx y is formed
+// from dx and dy expanded in the moves, never from y' and x' (which would lose it in rounding).
+double hingeAngleChange(const std::array<glm::dvec3, 4>& p, const std::array<glm::dvec3, 4>& dp) {
+  const glm::dvec3 e = p[1] - p[0], u = p[2] - p[0], w = p[3] - p[0];
+  const glm::dvec3 de = dp[1] - dp[0], du = dp[2] - dp[0], dw = dp[3] - dp[0];
+  const glm::dvec3 e2 = e + de, u2 = u + du, w2 = w + dw;
+  const glm::dvec3 n1 = glm::cross(e, u), n2 = glm::cross(w, e);
+  const glm::dvec3 dn1 = glm::cross(e, du) + glm::cross(de, u2);  // e' x u' - e x u
+  const glm::dvec3 dn2 = glm::cross(w, de) + glm::cross(dw, e2);  // w' x e' - w x e
+  const glm::dvec3 n1b = n1 + dn1, n2b = n2 + dn2;
+  const double ee = glm::dot(e, e), ee2 = glm::dot(e2, e2);
+  if (glm::dot(n1, n1) == 0.0 || glm::dot(n2, n2) == 0.0 || ee == 0.0 ||
+      glm::dot(n1b, n1b) == 0.0 || glm::dot(n2b, n2b) == 0.0 || ee2 == 0.0)
+    return 0.0;  // a degenerate triangle keeps its previous angle (hinge_kernel.hpp)
+  const double length = std::sqrt(ee), length2 = std::sqrt(ee2);
+  const double dLength = glm::dot(de, e + e2) / (length + length2);
+  const double x = glm::dot(n1, n2), y = length * glm::dot(n1, w);
+  const double dx = glm::dot(dn1, n2) + glm::dot(n1b, dn2);
+  const double dy = dLength * glm::dot(n1b, w2) + length * (glm::dot(dn1, w2) + glm::dot(n1, dw));
+  return std::atan2(dy * x - dx * y, x * (x + dx) + y * (y + dy));
+}
+
+}  // namespace
+
+double modelEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                         const std::vector<glm::dvec3>& moved, const std::vector<double>& targets,
+                         const std::vector<double>& angles) {
+  double change = 0.0;
+  for (std::size_t i = 0; i < model.bars.size(); ++i) {
+    const auto [a, b] = model.bars[i];
+    const glm::dvec3 d = positions[b] - positions[a];
+    const glm::dvec3 dd = (moved[b] - positions[b]) - (moved[a] - positions[a]);
+    const double length = glm::length(d), length2 = glm::length(d + dd);
+    if (length + length2 == 0.0) continue;
+    // (l' - L)^2 - (l - L)^2 = dl (2 (l - L) + dl), dl = l' - l from the move
+    const double dl = glm::dot(dd, 2.0 * d + dd) / (length + length2);
+    change += 0.5 * model.barStiffness[i] * dl * (2.0 * (length - model.barLength[i]) + dl);
+  }
+  for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+    const Hinge& h = model.hinges[j];
+    const std::array<glm::dvec3, 4> p{positions[h.a], positions[h.b], positions[h.c],
+                                      positions[h.d]};
+    const std::array<glm::dvec3, 4> dp{moved[h.a] - p[0], moved[h.b] - p[1], moved[h.c] - p[2],
+                                       moved[h.d] - p[3]};
+    const double dTheta = hingeAngleChange(p, dp);
+    change += 0.5 * model.hingeStiffness[j] * dTheta * (2.0 * (angles[j] - targets[j]) + dTheta);
+  }
+  for (const auto& pair : model.glue) {
+    const glm::dvec3 gap = positions[pair[0]] - positions[pair[1]];
+    const glm::dvec3 dGap =
+        (moved[pair[0]] - positions[pair[0]]) - (moved[pair[1]] - positions[pair[1]]);
+    change += 0.5 * model.glueStiffness * glm::dot(dGap, 2.0 * gap + dGap);
+  }
+  if (model.contact.enabled)
+    change += contactEnergy(model, moved) - contactEnergy(model, positions);
+  return change;
+}
+
 void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                    const std::vector<double>& targets, const std::vector<double>& previous,
                    std::vector<double>& angles, std::vector<glm::dvec3>& slotForces,

@@ -502,11 +502,12 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     double energy = modelEnergy(m, state.positions, targets, state.hingeAngles);
     double damping = 1e-6;  // mu, relative to the Hessian's diagonal
     const std::size_t stageStart = result.iterations;
+    double lastChange = 0.0;  // the energy's change in the last iteration (0: the stage's start)
     while (true) {
       totalForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
                   state.slotForces, forces);
       const double residual = maxForce(forces) / scale;
-      result.history.push_back({stage, energy, residual});
+      result.history.push_back({stage, energy, residual, lastChange});
       result.residual = residual;
       if (residual <= tolerance) break;
       // A soft stage only has to bring the sheet onto the creases' branch, not to equilibrium.
@@ -593,6 +594,9 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
             lower = maxForce(trialForces) < maxForce(forces);
           }
           if (lower) {
+            // What the step changed, measured from the moves (modelEnergyChange, accurate where
+            // the sums above are rounding): StaticIteration::energyChange, `simulate --verbose`.
+            lastChange = modelEnergyChange(m, state.positions, trial, targets, state.hingeAngles);
             trialAngles = hingeAngles(model, trial, state.hingeAngles);
             state.positions.swap(trial);
             state.hingeAngles.swap(trialAngles);

@@ -82,6 +82,11 @@ struct StaticIteration {
   std::size_t stage = 0;  // from 1; the last stage has the goal's targets
   double energy = 0.0;    // at that stage's targets, after the iteration
   double residual = 0.0;
+  // The energy's change in the iteration that ended here, from the vertices' moves
+  // (modelEnergyChange: accurate where the difference of two energy sums is rounding); 0 at a
+  // stage's start (its targets differ from the last stage's). Above 0 only for a step the line
+  // search took on the residual rule with the sums equal: a rise within their rounding.
+  double energyChange = 0.0;
 };
 
 struct StaticResult {
