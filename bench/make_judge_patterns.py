@@ -405,6 +405,11 @@ def f(x):
     return ("%.6f" % x).rstrip("0").rstrip(".")
 
 
+def svg_line(p, q, attributes):
+    """One crease or border from p to q as an SVG <line> with the given attributes."""
+    return f'<line x1="{f(p[0])}" y1="{f(p[1])}" x2="{f(q[0])}" y2="{f(q[1])}" {attributes}/>\n'
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     files = {}
@@ -589,8 +594,7 @@ def main(out):
             continue
         p, q = gb.vertices[a_], gb.vertices[b_]
         col = "#FF0000" if asg == "M" else "#0000FF"
-        t += (f'<line x1="{f(p[0])}" y1="{f(p[1])}" x2="{f(q[0])}" y2="{f(q[1])}" '
-              f'style="stroke: {col}; stroke-width: 0.003"/>\n')
+        t += svg_line(p, q, f'style="stroke: {col}; stroke-width: 0.003"')
     t += "</g>\n"
     svgs["svg_bird_base_style.svg"] = t + "</svg>\n"
 
@@ -617,8 +621,7 @@ def main(out):
         p, q = gt.vertices[a_], gt.vertices[b_]
         col = {"B": "#000", "M": "#f00", "V": "#00f"}[asg]
         op = {"B": 1, "M": 0.5, "V": 0.5}[asg]
-        t += (f'<line x1="{f(p[0])}" y1="{f(p[1])}" x2="{f(q[0])}" y2="{f(q[1])}" '
-              f'stroke="{col}" opacity="{op}"/>\n')
+        t += svg_line(p, q, f'stroke="{col}" opacity="{op}"')
     t += "</g></g>\n"
     svgs["svg_tower_nested_g.svg"] = t + "</svg>\n"
 
@@ -646,8 +649,7 @@ def main(out):
     t += '<defs><g id="strip" transform="scale(80)">\n'
     for p, q, asg, ang in strip:
         col, op = ("#000", 1) if asg == "B" else (("#f00" if asg == "M" else "#00f"), abs(ang) / 180)
-        t += (f'<line x1="{f(p[0])}" y1="{f(p[1])}" x2="{f(q[0])}" y2="{f(q[1])}" stroke="{col}" '
-              f'stroke-opacity="{op:.4f}" stroke-width="0.01"/>\n')
+        t += svg_line(p, q, f'stroke="{col}" stroke-opacity="{op:.4f}" stroke-width="0.01"')
     t += "</g></defs>\n"
     for k in range(3):
         t += f'<use xlink:href="#strip" x="{20 + 160 * k}" y="20"/>\n'

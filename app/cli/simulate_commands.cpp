@@ -496,10 +496,9 @@ void addSimulateCommand(CLI::App& app) {
       if (options->settle) {
         const StaticResult result = settle(model, amount, state);
         // Whether the energy rose in any iteration (issue 39: it never should), from each
-        // iteration's change as the solver measured it.
-        std::size_t rises = 0;
+        // iteration's change as the solver measured it (energyRises).
+        const std::size_t rises = energyRises(result.history);
         for (const StaticIteration& it : result.history) {
-          if (it.energyChange > 0.0) ++rises;
           if (options->verbose) {
             char text[160];
             std::snprintf(text, sizeof text,

@@ -77,7 +77,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
   const double size = glm::length(hi - lo);
 
   // Where the sheet stands past the target's rim: far, its way to the target along the sheet.
-  const SurfaceDistanceQuery query(fitter.target(), "target");
+  const SurfaceDistanceQuery& query = fitter.measuredTarget().query();  // indexed once a fit
   const std::size_t stride = std::max<std::size_t>(1, n / kMeasured);
   std::vector<VertexIndex> measured;
   std::vector<glm::dvec3> points;

@@ -654,4 +654,11 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
 
 }  // namespace
 
+std::size_t energyRises(const std::vector<StaticIteration>& history) {
+  std::size_t rises = 0;
+  for (const StaticIteration& it : history)
+    if (it.energyChange > 1e-12 * std::abs(it.energy)) ++rises;
+  return rises;
+}
+
 }  // namespace curvefold

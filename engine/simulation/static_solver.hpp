@@ -89,6 +89,11 @@ struct StaticIteration {
   double energyChange = 0.0;
 };
 
+// Iterations whose energy rose by more than double precision can tell: a change (from the moves)
+// above 1e-12 of the energy. Issue 39's "never rises", as `simulate --settle` reports it; a
+// step the residual rule took near equilibrium may change it by a few units of 1e-20 either way.
+std::size_t energyRises(const std::vector<StaticIteration>& history);
+
 struct StaticResult {
   bool converged = false;
   std::size_t iterations = 0;
