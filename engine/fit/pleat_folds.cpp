@@ -16,7 +16,9 @@
 #include <glm/matrix.hpp>
 
 #include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/nearest_vertex.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/vertex_normals.hpp"
 
 namespace curvefold {
 namespace {
@@ -59,20 +61,6 @@ constexpr double kCrossHinges[] = {0.15, 0.3, 0.45, 0.6};
 constexpr std::size_t kCrossesTried = 4;
 // Samples of the exact distance a family's farthest point is measured with.
 constexpr std::size_t kFarthestSamples = 3000;
-
-std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
-  std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
-  for (const Triangle& t : sheet.triangles) {
-    const glm::dvec3 n = glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
-                                    sheet.positions[t[2]] - sheet.positions[t[0]]);
-    for (const VertexIndex v : t) normals[v] += n;  // area-weighted
-  }
-  for (glm::dvec3& n : normals) {
-    const double length = glm::length(n);
-    n = length > 0.0 ? n / length : glm::dvec3(0.0);
-  }
-  return normals;
-}
 
 // A pleat solved from the target's heights: the end beyond `at` (metres from the sheet's centre
 // along the unit `direction`) turned by `turn` radians toward `up` (negative: away).
@@ -487,13 +475,7 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
                      const glm::dvec3& direction, double t) -> std::optional<Hinge> {
     const std::size_t vertices = on.vertexCount();
     const glm::dvec3 wanted = centre + t * glm::dot(p - centre, direction) * direction;
-    VertexIndex at = 0;
-    double nearestHinge = 1e300;
-    for (std::size_t v = 0; v < vertices; ++v)
-      if (const double d = glm::distance(on.positions[v], wanted); d < nearestHinge) {
-        nearestHinge = d;
-        at = static_cast<VertexIndex>(v);
-      }
+    const auto at = static_cast<VertexIndex>(nearestVertex(on.positions, wanted));
     const glm::dvec3 h = on.positions[at], m = onNormals[at];
     Hinge hinge;
     hinge.along = direction - glm::dot(direction, m) * m;

@@ -100,15 +100,6 @@ std::vector<glm::dvec3> samplePositions(const TriangleMesh& mesh, std::size_t co
   return points;
 }
 
-std::vector<double> distancesTo(std::span<const glm::dvec3> points,
-                                const SurfaceDistanceQuery& to) {
-  std::vector<double> distances(points.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) distances[i] = to.distance(points[i]);
-  });
-  return distances;
-}
-
 // The samples' distances, summed in index order (the mean is the same bit for bit however the
 // queries were split) and their maximum.
 OneSide sampleSide(const std::vector<double>& distances) {
@@ -127,8 +118,8 @@ OneSide measureSide(const TriangleMesh& from, const SurfaceDistanceQuery& to, st
                     std::uint64_t seed) {
   const std::vector<glm::dvec3> samples = samplePositions(from, count, seed);
   const std::vector<glm::dvec3> vertices = usedVerticesOf(from);
-  OneSide side = sampleSide(distancesTo(samples, to));
-  for (double d : distancesTo(vertices, to)) side.max = std::max(side.max, d);
+  OneSide side = sampleSide(pointDistances(samples, to));
+  for (double d : pointDistances(vertices, to)) side.max = std::max(side.max, d);
   return side;
 }
 
@@ -209,11 +200,10 @@ std::shared_ptr<const MeasuredSurface::Samples> MeasuredSurface::samples(std::si
   return made;
 }
 
-SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, std::size_t samples,
-                                std::uint64_t seed) {
-  const SurfaceDistanceQuery toA(a, "first"), toB(b, "second");
-  const OneSide fromA = measureSide(a, toB, samples, seed);
-  const OneSide fromB = measureSide(b, toA, samples, seed + 1);
+namespace {
+
+// Hausdorff and Chamfer from each side's farthest and mean.
+SurfaceDistance bothSides(const OneSide& fromA, const OneSide& fromB, double diagonal) {
   SurfaceDistance result;
   result.fromAMax = fromA.max;
   result.fromAMean = fromA.mean;
@@ -221,8 +211,18 @@ SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, st
   result.fromBMean = fromB.mean;
   result.hausdorff = std::max(fromA.max, fromB.max);
   result.chamfer = 0.5 * (fromA.mean + fromB.mean);
-  result.diagonal = boundingDiagonal(b);
+  result.diagonal = diagonal;
   return result;
+}
+
+}  // namespace
+
+SurfaceDistance surfaceDistance(const TriangleMesh& a, const TriangleMesh& b, std::size_t samples,
+                                std::uint64_t seed) {
+  const SurfaceDistanceQuery toA(a, "first"), toB(b, "second");
+  const OneSide fromA = measureSide(a, toB, samples, seed);
+  const OneSide fromB = measureSide(b, toA, samples, seed + 1);
+  return bothSides(fromA, fromB, boundingDiagonal(b));
 }
 
 SurfaceDistance surfaceDistance(const TriangleMesh& a, const MeasuredSurface& b,
@@ -230,7 +230,7 @@ SurfaceDistance surfaceDistance(const TriangleMesh& a, const MeasuredSurface& b,
   const SurfaceDistanceQuery toA(a, "first");
   const OneSide fromA = measureSide(a, b.query(), samples, seed);
   const std::shared_ptr<const MeasuredSurface::Samples> own = b.samples(samples, seed + 1);
-  const std::vector<double> sampleDistances = distancesTo(own->points, toA);
+  const std::vector<double> sampleDistances = pointDistances(own->points, toA);
   OneSide fromB = sampleSide(sampleDistances);
   // A vertex lies at most its nearest sample's distance plus their gap from A: only those whose
   // bound passes the samples' farthest can raise it (a few near where B is farthest from A).
@@ -242,16 +242,8 @@ SurfaceDistance surfaceDistance(const TriangleMesh& a, const MeasuredSurface& b,
                                                  : sampleDistances[own->nearest[i]] + own->gap[i];
     if (!(bound * (1.0 + kBoundSlack) < bar)) beyond.push_back(vertices[i]);
   }
-  for (double d : distancesTo(beyond, toA)) fromB.max = std::max(fromB.max, d);
-  SurfaceDistance result;
-  result.fromAMax = fromA.max;
-  result.fromAMean = fromA.mean;
-  result.fromBMax = fromB.max;
-  result.fromBMean = fromB.mean;
-  result.hausdorff = std::max(fromA.max, fromB.max);
-  result.chamfer = 0.5 * (fromA.mean + fromB.mean);
-  result.diagonal = b.diagonal();
-  return result;
+  for (double d : pointDistances(beyond, toA)) fromB.max = std::max(fromB.max, d);
+  return bothSides(fromA, fromB, b.diagonal());
 }
 
 }  // namespace curvefold

@@ -10,7 +10,9 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/surface_distance.hpp"
+#include "engine/geometry/nearest_vertex.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/vertex_normals.hpp"
 
 namespace curvefold {
 namespace {
@@ -32,20 +34,6 @@ constexpr double kTilts[] = {3.0 * kDegree, 7.0 * kDegree};
 // search's score (approximateDistance, which cuts far distances) rises by no more than this.
 constexpr double kLessExcess = 0.9;
 constexpr double kScoreSlack = 0.03;
-
-std::vector<glm::dvec3> vertexNormals(const Sheet& sheet) {
-  std::vector<glm::dvec3> normals(sheet.vertexCount(), glm::dvec3(0.0));
-  for (const Triangle& t : sheet.triangles) {
-    const glm::dvec3 n = glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
-                                    sheet.positions[t[2]] - sheet.positions[t[0]]);
-    for (const VertexIndex v : t) normals[v] += n;  // area-weighted
-  }
-  for (glm::dvec3& n : normals) {
-    const double length = glm::length(n);
-    n = length > 0.0 ? n / length : glm::dvec3(0.0);
-  }
-  return normals;
-}
 
 // A step of tucks made, and how far the sheet then stands out (see excess).
 struct Made : FoldSuggestion {
@@ -178,13 +166,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
       // The hinge: the sheet's vertex nearest the point that far back, and the sheet's tangent
       // there along the outward way.
       const glm::dvec3 wanted = p - depth * f.distance * f.outward;
-      VertexIndex at = 0;
-      double nearest = 1e300;
-      for (std::size_t v = 0; v < n; ++v)
-        if (const double d = glm::distance(sheet.positions[v], wanted); d < nearest) {
-          nearest = d;
-          at = static_cast<VertexIndex>(v);
-        }
+      const auto at = static_cast<VertexIndex>(nearestVertex(sheet.positions, wanted));
       const glm::dvec3 h = sheet.positions[at], m = normals[at];
       glm::dvec3 along = f.outward - glm::dot(f.outward, m) * m;
       if (!(glm::length(along) > 1e-6) || !(glm::length(m) > 0.5)) continue;
