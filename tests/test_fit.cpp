@@ -238,6 +238,8 @@ TEST(TargetUnfolding, UnfoldsAFoldedSheetBackToItAndNamesItsFolds) {
 // Targets one random fold away, on a flat, a curved and a conical sheet: reached within 1% of the
 // diagonal, by the crease-reading path and by the search alone.
 TEST(FoldFit, ReachesAOneFoldTargetWithAndWithoutItsCreases) {
+  // Six searches: 50 s under the sanitizers, whose run FoldFit.IsTheSameForTheSameSeed covers.
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the six searches (50 s here)";
   for (const bool creases : {true, false})
     for (const char* surface : {"square", "cylinder", "cone"}) {
       const RandomFoldTarget target = makeRandomFoldTarget(surface, {{"resolution", 24}}, 1, 1005);
@@ -288,6 +290,8 @@ TEST(FoldFit, IsTheSameForTheSameSeed) {
 
 // A saddle no reflection sequence reaches from a square: each fold kept brings it closer.
 TEST(FoldFit, BringsASquareCloserToASaddleWithEveryFold) {
+  if (testing::kSanitized)
+    GTEST_SKIP() << "the Release run checks the search's quality (46 s here)";
   TriangleMesh saddle;
   const int n = 20;
   for (int j = 0; j <= n; ++j)

@@ -139,6 +139,7 @@ TEST(FitReading, ACreaseAlongACylindersFacetsIsAPlaneToo) {
 }
 
 TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the 160 orders (42 s here)";
   expectFoundExactly({"anywhere-long", "square", 6, 620580,
                       "its unfolding ends on the sheet only after more than 160 orders tried"});
 }
@@ -209,6 +210,7 @@ TEST(FitReading, AnUnfoldingOnTheSheetStopsTryingOrders) {
 // read made from its other side mirrors what is left to move through its plane, which then takes
 // 3: 8 folds, exactly the target.
 TEST(FitReading, WholeSheetFoldsBetweenCreasingFoldsFitWithinTheFolds) {
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the search (95 s here)";
   const ReachTarget t = reachTarget("drag_outer_helix_tangent_7");
   const FoldFitter fitter(t.target);
   FoldSession session(t.initial);
@@ -673,6 +675,7 @@ TEST(FitReading, AFoldWhoseImageMovedTheSheetThenMovedWholeIsFoundToo) {
 // rotational:4, then the sheet moved whole along a drag): the target is two groups, the corners'
 // and the whole sheet's (whose images are none: it moves every image of its grab).
 TEST(FitReading, AWholeSheetFoldAfterASymmetricFoldIsFoundToo) {
+  if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the search (35 s here)";
   const Sheet initial = makeSurface("square", {{"resolution", 16}});
   const Symmetry symmetry = parseSymmetry("rotational:4:z", initial);
   FoldSession folding(initial);
