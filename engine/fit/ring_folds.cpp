@@ -46,6 +46,10 @@ constexpr double kCornerInward[] = {1.0, 0.95};
 constexpr int kCornerBins = 24;
 constexpr double kCornerStart = 0.25;
 constexpr double kCornerDepths[] = {0.5, 0.75};
+// Orders of the neck pleats in each chain, and where a pleat's cut begins (of the excess's peak).
+constexpr int kFinePleatOrders[] = {5};
+constexpr int kAllPleatOrders[] = {3, 4, 5};
+constexpr double kPleatStart = 0.25;
 
 // A corner ring that folds in the corners standing farthest out of the target (a narrow neck's):
 // the ring of `order` planes turned by `turn`, each plane through the corners' radius where the
@@ -116,6 +120,95 @@ std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetS
 }
 
 }  // namespace
+
+std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
+                                                  const std::vector<SurfaceSample>& targetSamples,
+                                                  const RevolutionAxis& axis, int order,
+                                                  double turn, int side) {
+  const auto heightAndRadius = [&](const glm::dvec3& p) {
+    const double h = glm::dot(p - axis.point, axis.direction);
+    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
+  };
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : sheetSamples) {
+    const double h = heightAndRadius(s.position).x;
+    lo = std::min(lo, h);
+    hi = std::max(hi, h);
+  }
+  if (!(hi - lo > 1e-9)) return std::nullopt;
+  std::array<double, kCornerBins> largest{}, targetSum{};
+  std::array<int, kCornerBins> sheetCount{}, targetCount{};
+  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
+  for (const SurfaceSample& s : sheetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
+    largest[b] = std::max(largest[b], hr.y);
+    ++sheetCount[b];
+  }
+  for (const SurfaceSample& s : targetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = bin(hr.x);
+    if (b < 0 || b >= kCornerBins) continue;
+    targetSum[b] += hr.y;
+    ++targetCount[b];
+  }
+  std::array<double, kCornerBins> excess{};
+  double radius = 0.0;
+  int peak = -1;
+  for (int b = 0; b < kCornerBins; ++b) {
+    radius = std::max(radius, largest[b]);
+    excess[b] = sheetCount[b] >= 3 && targetCount[b] >= 3
+                    ? largest[b] - targetSum[b] / targetCount[b]
+                    : -1e300;
+    if (peak < 0 || excess[b] > excess[peak]) peak = b;
+  }
+  if (peak < 0 || !(excess[peak] > 0.05 * radius)) return std::nullopt;
+  int begin = peak;
+  while (begin - side >= 0 && begin - side < kCornerBins &&
+         excess[begin] > kPleatStart * excess[peak])
+    begin -= side;
+  const int end = side > 0 ? kCornerBins - 1 : 0;
+  if (begin == peak || end == peak || excess[begin] < -1e299 || sheetCount[end] < 3)
+    return std::nullopt;
+  const auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kCornerBins; };
+  const double t0 = centre(begin), tPeak = centre(peak), radius0 = largest[begin];
+  const double wall = largest[peak], neck = targetSum[peak] / targetCount[peak];
+  // The cut deepens on past the neck to the sheet's end: the wedges must stay apart there too,
+  // at the rim (cos(pi / n)) and within (a flap's bulge stays in its own sector while q >=
+  // 1 / (2 sin(pi / n)): a ring of 3 cut deeper crosses itself near the axis).
+  const double apart =
+      1.02 * std::max(std::cos(std::numbers::pi / order), 0.5 / std::sin(std::numbers::pi / order));
+  const double rhoPeak = std::max(0.5 * (wall + neck), wall * apart);
+  const double slope = std::min((radius0 - rhoPeak) / (tPeak - t0) * side,
+                                (radius0 - largest[end] * apart) / (centre(end) - t0) * side);
+  if (!(slope > 0.0)) return std::nullopt;
+  RingShape in;
+  in.height = t0;
+  in.radius = radius0;
+  in.tilt = std::atan(slope * side);
+  in.turn = turn;
+  in.order = order;
+  // The wall at (r, t) in the meridian of a plane of `in`, reflected through it.
+  const auto reflected = [&](double r, double t) {
+    const double c = std::cos(in.tilt), s = std::sin(in.tilt);
+    const double d = (r - in.radius) * c + (t - in.height) * s;
+    return glm::dvec2(r - 2.0 * d * c, t - 2.0 * d * s);
+  };
+  const glm::dvec2 middle = reflected(wall, tPeak);
+  const glm::dvec2 farEnd = reflected(largest[end], centre(end));
+  if (!(farEnd.x < middle.x - 0.02 * radius)) return std::nullopt;
+  // The return ring: its planes along -e_k (turned by half a turn) at the flap's middle.
+  RingShape back;
+  back.height = middle.y;
+  back.radius = -middle.x;
+  back.tilt = 0.0;
+  back.turn = turn + std::numbers::pi;
+  back.order = order;
+  back.seeded = true;
+  back.seedHeight = farEnd.y;
+  back.seedRadius = -farEnd.x;
+  return std::array<RingShape, 2>{in, back};
+}
 
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction) {
   if (sheet.positions.size() < 4) return std::nullopt;
@@ -222,17 +315,18 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
   // The two chains (see the header), grown on sessions of their own.
   struct Chain {
-    std::span<const int> orders;
+    std::span<const int> orders, pleatOrders;
     std::unique_ptr<FoldSession> grown;
     double current = 0.0;
     std::vector<RingShape> kept;
     bool done = false;
   };
   std::vector<Chain> chains;
-  for (const std::span<const int> orders :
-       {std::span<const int>(kFineOrders), std::span<const int>(kAllOrders)}) {
+  for (const bool fine : {true, false}) {
     Chain chain;
-    chain.orders = orders;
+    chain.orders = fine ? std::span<const int>(kFineOrders) : std::span<const int>(kAllOrders);
+    chain.pleatOrders =
+        fine ? std::span<const int>(kFinePleatOrders) : std::span<const int>(kAllPleatOrders);
     chain.grown = std::make_unique<FoldSession>(session.initial());
     chain.grown->applyRecords(base);
     chain.current = measuredBefore;
@@ -269,24 +363,28 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
       const std::vector<SurfaceSample> samples =
           sampleSurface(meshOf(grown.fixed()), kProfileSamples, random());
-      std::vector<RingShape> shapes;
+      // Each candidate is one ring, or a neck pleat's two.
+      std::vector<std::vector<RingShape>> shapes;
       for (const double turn : {0.0, 0.5})
         for (RingShape shape : neckRings(samples, targetSamples, axis, 0.0, chain.orders)) {
           shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
-          shapes.push_back(shape);
+          shapes.push_back({shape});
         }
       const std::size_t solved = shapes.size() / 2;  // those at turn 0
-      for (const RingShape& ring : chain.kept)
+      for (const RingShape& ring : chain.kept) {
+        if (ring.seeded) continue;  // a pleat's return ring
         for (const double inward : kCornerInward) {
           RingShape corner = ring;
           corner.turn += std::numbers::pi / ring.order;
           corner.radius *= inward;
-          shapes.push_back(corner);
+          shapes.push_back({corner});
         }
+      }
       // The corners farthest out folded in where they stand out most (a neck), once per
       // distinct turn of the chain's rings.
       std::vector<std::pair<int, double>> turns;
       for (const RingShape& ring : chain.kept) {
+        if (ring.seeded) continue;
         const double step = 2.0 * std::numbers::pi / ring.order;
         const double turn = std::fmod(ring.turn + 0.5 * step, step);
         const bool seen = std::any_of(turns.begin(), turns.end(), [&](const auto& t) {
@@ -298,8 +396,16 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           for (const double depth : kCornerDepths)
             if (const std::optional<RingShape> corner =
                     neckCornerRing(samples, targetSamples, axis, ring.order, turn, side, depth))
-              shapes.push_back(*corner);
+              shapes.push_back({*corner});
       }
+      // The neck pleats: flaps narrowed to the neck and turned back out past it.
+      for (const int order : chain.pleatOrders)
+        for (const double turn : {0.0, 0.5})
+          for (const int side : {1, -1})
+            if (const std::optional<std::array<RingShape, 2>> pleat =
+                    neckPleat(samples, targetSamples, axis, order,
+                              turn * 2.0 * std::numbers::pi / order, side))
+              shapes.push_back({(*pleat)[0], (*pleat)[1]});
       std::vector<double> scores(shapes.size(), 1e300);
       tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
       const auto evaluate = [&](std::size_t r) {
@@ -310,7 +416,9 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           local = std::make_unique<FoldSession>(session.initial());
           local->applyRecords(records);
         }
-        if (makeRing(*local, ringOf(shapes[r], axis)) > 0 &&
+        std::size_t made = 0;
+        for (const RingShape& ring : shapes[r]) made += makeRing(*local, ringOf(ring, axis));
+        if (made > 0 &&
             (allowCrossing ||
              findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
           scores[r] = measure(local->fixed());
@@ -318,7 +426,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       };
       const auto foldsOf = [&](std::size_t from, std::size_t to) {
         double folds = 0.0;
-        for (std::size_t r = from; r < to; ++r) folds += shapes[r].order;
+        for (std::size_t r = from; r < to; ++r)
+          for (const RingShape& ring : shapes[r]) folds += ring.order;
         return folds;
       };
       if (batches.run(0, solved, foldsOf(0, solved), evaluate))
@@ -329,9 +438,10 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
         chain.done = true;
         continue;
       }
-      const RingShape& chosen = shapes[static_cast<std::size_t>(best - scores.begin())];
-      makeRing(grown, ringOf(chosen, axis));
-      chain.kept.push_back(chosen);
+      for (const RingShape& chosen : shapes[static_cast<std::size_t>(best - scores.begin())]) {
+        makeRing(grown, ringOf(chosen, axis));
+        chain.kept.push_back(chosen);
+      }
       chain.current = *best;
       chain.done = chain.kept.size() >= mostRings;
     }
