@@ -46,9 +46,7 @@ constexpr double kCornerInward[] = {1.0, 0.95};
 constexpr int kCornerBins = 24;
 constexpr double kCornerStart = 0.25;
 constexpr double kCornerDepths[] = {0.5, 0.75};
-// Orders of the neck pleats in each chain, and where a pleat's cut begins (of the excess's peak).
-constexpr int kFinePleatOrders[] = {5};
-constexpr int kAllPleatOrders[] = {3, 4, 5};
+// Where a neck pleat's cut begins: where the excess falls below this share of its peak.
 constexpr double kPleatStart = 0.25;
 
 // A corner ring that folds in the corners standing farthest out of the target (a narrow neck's):
@@ -315,18 +313,17 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       allowCrossing ? 0 : findSelfIntersections(sheet).intersections.size();
   // The two chains (see the header), grown on sessions of their own.
   struct Chain {
-    std::span<const int> orders, pleatOrders;
+    std::span<const int> orders;
     std::unique_ptr<FoldSession> grown;
     double current = 0.0;
     std::vector<RingShape> kept;
     bool done = false;
   };
   std::vector<Chain> chains;
-  for (const bool fine : {true, false}) {
+  for (const std::span<const int> orders :
+       {std::span<const int>(kFineOrders), std::span<const int>(kAllOrders)}) {
     Chain chain;
-    chain.orders = fine ? std::span<const int>(kFineOrders) : std::span<const int>(kAllOrders);
-    chain.pleatOrders =
-        fine ? std::span<const int>(kFinePleatOrders) : std::span<const int>(kAllPleatOrders);
+    chain.orders = orders;
     chain.grown = std::make_unique<FoldSession>(session.initial());
     chain.grown->applyRecords(base);
     chain.current = measuredBefore;
@@ -363,28 +360,24 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
       const std::vector<SurfaceSample> samples =
           sampleSurface(meshOf(grown.fixed()), kProfileSamples, random());
-      // Each candidate is one ring, or a neck pleat's two.
-      std::vector<std::vector<RingShape>> shapes;
+      std::vector<RingShape> shapes;
       for (const double turn : {0.0, 0.5})
         for (RingShape shape : neckRings(samples, targetSamples, axis, 0.0, chain.orders)) {
           shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
-          shapes.push_back({shape});
+          shapes.push_back(shape);
         }
       const std::size_t solved = shapes.size() / 2;  // those at turn 0
-      for (const RingShape& ring : chain.kept) {
-        if (ring.seeded) continue;  // a pleat's return ring
+      for (const RingShape& ring : chain.kept)
         for (const double inward : kCornerInward) {
           RingShape corner = ring;
           corner.turn += std::numbers::pi / ring.order;
           corner.radius *= inward;
-          shapes.push_back({corner});
+          shapes.push_back(corner);
         }
-      }
       // The corners farthest out folded in where they stand out most (a neck), once per
       // distinct turn of the chain's rings.
       std::vector<std::pair<int, double>> turns;
       for (const RingShape& ring : chain.kept) {
-        if (ring.seeded) continue;
         const double step = 2.0 * std::numbers::pi / ring.order;
         const double turn = std::fmod(ring.turn + 0.5 * step, step);
         const bool seen = std::any_of(turns.begin(), turns.end(), [&](const auto& t) {
@@ -396,16 +389,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           for (const double depth : kCornerDepths)
             if (const std::optional<RingShape> corner =
                     neckCornerRing(samples, targetSamples, axis, ring.order, turn, side, depth))
-              shapes.push_back({*corner});
+              shapes.push_back(*corner);
       }
-      // The neck pleats: flaps narrowed to the neck and turned back out past it.
-      for (const int order : chain.pleatOrders)
-        for (const double turn : {0.0, 0.5})
-          for (const int side : {1, -1})
-            if (const std::optional<std::array<RingShape, 2>> pleat =
-                    neckPleat(samples, targetSamples, axis, order,
-                              turn * 2.0 * std::numbers::pi / order, side))
-              shapes.push_back({(*pleat)[0], (*pleat)[1]});
       std::vector<double> scores(shapes.size(), 1e300);
       tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
       const auto evaluate = [&](std::size_t r) {
@@ -416,9 +401,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           local = std::make_unique<FoldSession>(session.initial());
           local->applyRecords(records);
         }
-        std::size_t made = 0;
-        for (const RingShape& ring : shapes[r]) made += makeRing(*local, ringOf(ring, axis));
-        if (made > 0 &&
+        if (makeRing(*local, ringOf(shapes[r], axis)) > 0 &&
             (allowCrossing ||
              findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
           scores[r] = measure(local->fixed());
@@ -426,8 +409,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       };
       const auto foldsOf = [&](std::size_t from, std::size_t to) {
         double folds = 0.0;
-        for (std::size_t r = from; r < to; ++r)
-          for (const RingShape& ring : shapes[r]) folds += ring.order;
+        for (std::size_t r = from; r < to; ++r) folds += shapes[r].order;
         return folds;
       };
       if (batches.run(0, solved, foldsOf(0, solved), evaluate))
@@ -438,10 +420,9 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
         chain.done = true;
         continue;
       }
-      for (const RingShape& chosen : shapes[static_cast<std::size_t>(best - scores.begin())]) {
-        makeRing(grown, ringOf(chosen, axis));
-        chain.kept.push_back(chosen);
-      }
+      const RingShape& chosen = shapes[static_cast<std::size_t>(best - scores.begin())];
+      makeRing(grown, ringOf(chosen, axis));
+      chain.kept.push_back(chosen);
       chain.current = *best;
       chain.done = chain.kept.size() >= mostRings;
     }

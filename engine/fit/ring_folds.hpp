@@ -16,25 +16,24 @@
 // only planes facing them fold those corners in), and the neck corner rings (per distinct turn of
 // the chain's rings, planes through the corners' radius where the sheet's largest radius begins
 // to stand out of the target's and, where it stands out most, through the target's radius plus
-// 0.5 or 0.75 of the excess: a narrow neck's corners folded in), and the neck pleats (neckPleat
-// below, rings of 3 to 6 planes in the coarse chain, 6 and 8 in the fine one, each end, two
-// turns), is made, checked for passing the sheet through itself, and measured; the closest is kept
-// while it brings the sheet closer. Within the deadline: the two chains grow side by side, a ring
-// each per step, and each step's candidates are scored in two batches (the solved rings at turn 0,
-// then those at half a turn and the corner rings; timed_batches.hpp); a batch the time left would
-// not finish is not started, and when the clock cuts the step the chains are answered as far as
-// they got, each ring made whole (a cancel answers nothing), so how many rings a cut step holds
-// depends on the machine. Two chains: one of rings of 6 to 16 planes, one of 4 to 16 (a ring of n
-// narrows a tube to about 0.65 R for 4, 0.76 R for 5, 0.83 R for 6, 0.97 R for 16: ringCutRadius);
-// a greedy chain begun with a deep ring of 4 can end farther than one of finer rings, so both are
-// grown and the closer kept. Rings are chosen, and the chains ranked, by Chamfer + Hausdorff / 4
-// (surface_distance.hpp, 1500 samples a side: each distance over the goal's bound, 1.5% and 6% of
-// the diagonal), not the search's robust distance, which caps far points: a tube's untouched neck
-// is all far points; by the Chamfer distance alone a ring of 4 that lays a flap near the axis wins
-// (the example vase 1.39% / 9.8% against 1.57% / 4.32%). Each chain's suggestion is all its rings;
-// its `after` the search's distance before scaled by the measure's fall (the beam ranks by it). (A
-// chain solved jointly on a preview of the sheet's samples and refined by Subplex was tried beside
-// these: it never came closer, 14 of 14 fits of 7 vases, and was removed.)
+// 0.5 or 0.75 of the excess: a narrow neck's corners folded in), is made, checked for passing the
+// sheet through itself, and measured; the closest is kept while it brings the sheet closer. Within
+// the deadline: the two chains grow side by side, a ring each per step, and each step's candidates
+// are scored in two batches (the solved rings at turn 0, then those at half a turn and the corner
+// rings; timed_batches.hpp); a batch the time left would not finish is not started, and when the
+// clock cuts the step the chains are answered as far as they got, each ring made whole (a cancel
+// answers nothing), so how many rings a cut step holds depends on the machine. Two chains: one of
+// rings of 6 to 16 planes, one of 4 to 16 (a ring of n narrows a tube to about 0.65 R for 4, 0.76
+// R for 5, 0.83 R for 6, 0.97 R for 16: ringCutRadius); a greedy chain begun with a deep ring of 4
+// can end farther than one of finer rings, so both are grown and the closer kept.
+// Rings are chosen, and the chains ranked, by Chamfer + Hausdorff / 4 (surface_distance.hpp,
+// 1500 samples a side: each distance over the goal's bound, 1.5% and 6% of the diagonal), not the
+// search's robust distance, which caps far points: a tube's untouched neck is all far points; by
+// the Chamfer distance alone a ring of 4 that lays a flap near the axis wins (the example vase
+// 1.39% / 9.8% against 1.57% / 4.32%). Each chain's suggestion is all its rings; its `after` the
+// search's distance before scaled by the measure's fall (the beam ranks by it). (A chain solved
+// jointly on a preview of the sheet's samples and refined by Subplex was tried beside these: it
+// never came closer, 14 of 14 fits of 7 vases, and was removed.)
 //
 // Inputs: a session whose sheet is a tube or a cone about the target's axis direction (every
 // vertex's distance from a line within 11 degrees of `axis.direction` through the middle of its
@@ -93,22 +92,26 @@ struct TubeAxis {
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction);
 
 // A neck pleat: a ring cut in and turned back out (as a paper artist pleats a collar), for a
-// waist under a flaring lip, which a ring's planes alone cut only as deep as the lip beyond it (a
-// plane's cut grows linearly along the axis). The first ring of `order` planes turned by `turn`
-// folds each wedge in about its chord, from where the sheet's largest radius begins to stand out
-// of the target's mean radius (by height, 24 bins, samples of the sheet and of the target) to the
-// neck, where the excess peaks, its flaps' middles reaching the target's radius there (no deeper
-// than cos(pi / order) of the radius, where the wedges would meet), deepening toward the end
-// `side` (+1 the axis's end, -1 the other). The second, the return ring, has one plane parallel
-// to the axis through each flap's middle at the neck, facing the axis; each is seeded in its own
-// flap's far end (RingShape::seeded: the plane's side also holds the tube's far wall), so past
-// the neck the flap heads back out as steeply as it came in. On bench/make_judge_shapes.py's
-// vase_y (neck 0.24 of the belly under a lip of 0.57) a ring alone cut from the lip's end leaves
-// the neck's flaps at 0.5 of the belly or cuts the lip in; see docs/performance.md. None where no
-// height stands out by a twentieth of the radius or the flap's far end lies no deeper than its
-// middle at the neck. Limits: the creases of the first ring stay on the tube's radius (corner
-// rings fold them later), and the lip's flaps widen at the rate the neck's narrowed, not the
-// target's.
+// waist under a flaring lip, which a ring's planes alone cut only as deep as they cut the lip
+// beyond it (a plane's cut grows linearly along the axis). The first ring of `order` planes
+// turned by `turn` folds each wedge in about its chord, from where the sheet's largest radius
+// begins to stand out of the target's mean radius (by height, 24 bins of the samples of the sheet
+// and of the target) to the neck, where that excess peaks, its flaps' middles reaching the
+// target's radius there, deepening toward the end `side` (+1 the axis's end, -1 the other). The
+// cut goes on deepening to the sheet's end, where the wedges must still stay apart: at the rim
+// (q >= cos(pi / n) of the radius) and within (a flap's bulge stays in its own sector while q >=
+// 1 / (2 sin(pi / n)); a ring of 3 cut deeper passes through itself near the axis), so only rings
+// of 3 to 5 cut a pleat, and the far end bounds how deep the neck is cut. The second, the return
+// ring, has one plane parallel to the axis through each flap's middle at the neck, facing the
+// axis, each seeded in its own flap's far end (RingShape::seeded: the plane's side also holds the
+// tube's far wall), so past the neck the flap heads back out as steeply as it came in. None where
+// no height stands out by a twentieth of the radius, the cut cannot deepen, or the flap's far end
+// lies no deeper than its middle at the neck.
+// Not offered by suggestTubeRings: on bench/make_judge_shapes.py's vase_y (a neck of 0.24 of the
+// belly under a lip of 0.57) a pleat never scored best at any step of either chain, and a third
+// chain begun with the best pleat ended farther than the coarse chain (docs/performance.md, issue
+// 38, vase12); its first ring's creases stay on the tube's radius, and its lip's flaps widen at the
+// rate the neck's narrowed, not the target's.
 std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
                                                   const std::vector<SurfaceSample>& targetSamples,
                                                   const RevolutionAxis& axis, int order,
