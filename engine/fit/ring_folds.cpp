@@ -119,6 +119,8 @@ std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetS
 
 }  // namespace
 
+// The profile binned as neckCornerRing bins it; the first ring's depth, then its flaps' middle at
+// the neck and far end reflected in the meridian (see the header).
 std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
                                                   const std::vector<SurfaceSample>& targetSamples,
                                                   const RevolutionAxis& axis, int order,
