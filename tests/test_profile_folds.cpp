@@ -1,5 +1,6 @@
 // Rings of folds toward surfaces of revolution (issue 38, 2; engine/fit/profile_folds.hpp).
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,6 +13,7 @@
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -528,6 +530,19 @@ TEST(TubeStart, TheConeAroundIsNotTakenWhereItsRingsLandFartherByHausdorff) {
   EXPECT_EQ(start.placed->positions, nearest.positions);
 }
 
+// bench/make_judge_shapes.py's vase profile about z, 20 cm tall, belly 5 cm: a neck of 0.24 of
+// the belly at 0.8 of the height under a lip flaring to 0.57 of it.
+TriangleMesh judgeVase() {
+  return revolved(
+      [](double h) {
+        const double t = (h + 0.1) / 0.2;
+        return 0.05 * (0.45 + 0.55 * std::exp(-std::pow((t - 0.35) / 0.25, 2.0)) -
+                       0.25 * std::exp(-std::pow((t - 0.8) / 0.1, 2.0)) +
+                       0.25 * std::max(t - 0.88, 0.0) / 0.12);
+      },
+      -0.1, 0.1, 48, 30);
+}
+
 // A neck far narrower than the belly (bench/make_judge_shapes.py's vase: 0.22 of it) is cut by
 // ring after ring, each cutting the corners the rings before it left on the tube's radius
 // (ring_folds.hpp, kTubeChainRings): the chain goes on past four rings and ends closer than the
@@ -536,14 +551,7 @@ TEST(TubeRings, ANarrowNeckIsCutByMoreThanFourRings) {
   // Two chains of up to eight rings: 110 s under the sanitizers, whose run the other tube tests'
   // chains already cover; the Release run checks the chain's length.
   if (testing::kSanitized) GTEST_SKIP() << "the Release run checks the chain (110 s here)";
-  const TriangleMesh vase = revolved(
-      [](double h) {
-        const double t = (h + 0.1) / 0.2;
-        return 0.05 * (0.45 + 0.55 * std::exp(-std::pow((t - 0.35) / 0.25, 2.0)) -
-                       0.25 * std::exp(-std::pow((t - 0.8) / 0.1, 2.0)) +
-                       0.25 * std::max(t - 0.88, 0.0) / 0.12);
-      },
-      -0.1, 0.1, 48, 30);
+  const TriangleMesh vase = judgeVase();
   Sheet tube = makeSurface(
       "cylinder",
       {{"radius", 0.05}, {"height", 0.2}, {"resolution", testing::kSanitized ? 16.0 : 24.0}});
@@ -566,6 +574,53 @@ TEST(TubeRings, ANarrowNeckIsCutByMoreThanFourRings) {
   EXPECT_LT(after.chamfer, fourAfter.chamfer) << fourAfter.chamfer << " -> " << after.chamfer;
   validate(chain.front().sheet);
   EXPECT_TRUE(findSelfIntersections(chain.front().sheet).intersections.empty());
+}
+
+// A neck pleat (ring_folds.hpp, neckPleat; a ring of 3): its first ring folds each wedge in down
+// to the neck, its return ring turns each flap's part past the neck back out, so the lip stands
+// wider than the neck (the first ring alone leaves it narrower), and the return folds take their
+// own flaps, not the tube's far wall, which their planes' sides also hold (seeded at the farthest
+// vertex, each return fold mirrored the whole tube across its plane: the uncut foot left the axis).
+TEST(TubeRings, ANeckPleatTurnsItsFlapsBackOutPastTheNeck) {
+  const TriangleMesh vase = judgeVase();
+  Sheet tube = makeSurface("cylinder", {{"radius", 0.05}, {"height", 0.2}, {"resolution", 24.0}});
+  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
+  const std::vector<SurfaceSample> targetSamples = sampleSurface(vase, 1500, 11);
+  const std::vector<SurfaceSample> sheetSamples = sampleSurface(meshOf(tube), 1200, 3);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
+  ASSERT_TRUE(axis);
+  ASSERT_GT(std::abs(axis->direction.z), 0.999);
+  const int lipEnd = axis->direction.z > 0.0 ? 1 : -1;
+  const std::optional<std::array<RingShape, 2>> pleat =
+      neckPleat(sheetSamples, targetSamples, *axis, 3, 0.0, lipEnd);
+  ASSERT_TRUE(pleat);
+
+  FoldSession session(tube);
+  ASSERT_EQ(makeRing(session, ringOf((*pleat)[0], *axis)), 3u);
+  // Mean radius about z of 10 bands over the height: the neck at 0.8 (band 8), the lip band 9.
+  const auto bands = [](const Sheet& sheet) {
+    return radiusByHeight(sheet.positions, -0.1, 0.1, 10);
+  };
+  const std::vector<glm::dvec2> cut = bands(session.fixed());
+  ASSERT_EQ(cut.size(), 10u);
+  EXPECT_LT(cut[9].y, cut[8].y) << "the first ring alone deepens past the neck";
+  ASSERT_EQ(makeRing(session, ringOf((*pleat)[1], *axis)), 3u);
+  const std::vector<glm::dvec2> pleated = bands(session.fixed());
+  ASSERT_EQ(pleated.size(), 10u);
+  EXPECT_GT(pleated[9].y, pleated[8].y + 0.002) << "the lip turned back out past the neck";
+  EXPECT_LT(pleated[8].y, 0.045);  // the neck cut in from the tube's 5 cm
+  // The foot, uncut, stays on the axis (the middle of its box: the seam's vertices are twice).
+  glm::dvec2 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : session.fixed().positions)
+    if (p.z < -0.09) {
+      low = glm::min(low, glm::dvec2(p));
+      high = glm::max(high, glm::dvec2(p));
+    }
+  ASSERT_LT(low.x, high.x);
+  EXPECT_LT(glm::length(0.5 * (low + high)), 1e-3) << "the foot moved off the axis";
+  EXPECT_NEAR(pleated[0].y, 0.05, 1e-3);
+  validate(session.fixed());
+  EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not

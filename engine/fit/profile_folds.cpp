@@ -308,6 +308,8 @@ Ring ringOf(const RingShape& shape, const RevolutionAxis& axis) {
                : glm::normalize(std::cos(shape.tilt) * e + std::sin(shape.tilt) * axis.direction);
     ring.planes.push_back(
         {axis.point + shape.height * axis.direction + (across ? 0.0 : shape.radius) * e, normal});
+    if (shape.seeded)
+      ring.seeds.push_back(axis.point + shape.seedHeight * axis.direction + shape.seedRadius * e);
   }
   return ring;
 }
@@ -325,13 +327,23 @@ void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
 std::size_t makeRing(FoldSession& session, const Ring& ring) {
   session.cancel();
   std::size_t made = 0;
-  for (const ReflectionPlane& plane : ring.planes) {
+  const bool seeded = ring.seeds.size() == ring.planes.size();
+  for (std::size_t k = 0; k < ring.planes.size(); ++k) {
+    const ReflectionPlane& plane = ring.planes[k];
     const Sheet& sheet = session.fixed();
     std::size_t farthest = 0;
-    double most = -1e300;
+    double most = -1e300, nearest = 1e300;
     for (std::size_t i = 0; i < sheet.positions.size(); ++i) {
       const double d = plane.signedDistance(sheet.positions[i]);
-      if (d > most) {
+      if (seeded) {
+        // The vertex on the plane's side (clear of it) nearest the seed.
+        const double gap = glm::length(sheet.positions[i] - ring.seeds[k]);
+        if (d > 2.0 * session.minimumDrag() && gap < nearest) {
+          nearest = gap;
+          most = d;
+          farthest = i;
+        }
+      } else if (d > most) {
         most = d;
         farthest = i;
       }

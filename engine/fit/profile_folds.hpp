@@ -86,15 +86,23 @@ std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& s
                                              double maxSpread = 0.1);
 
 // A ring: its planes in folding order; each folds the part of the sheet its normal points to.
+// `seeds`, when not empty (one a plane): the fold of each plane takes the part of the sheet on
+// its side nearest that point rather than the part holding its farthest vertex (a pleat's return
+// fold, ring_folds.hpp: its side also holds the tube's far wall, which must stay).
 struct Ring {
   std::vector<ReflectionPlane> planes;
+  std::vector<glm::dvec3> seeds;
 };
 
 // A ring's shape about an axis (see above): height h along it, distance rho from it, tilt beta
 // (radians; +-pi/2: one plane across the axis), turn phi of the first plane, n planes.
+// `seeded`: each plane's fold is seeded nearest the point at height seedHeight and distance
+// seedRadius along the plane's own direction e_k (Ring::seeds).
 struct RingShape {
   double height = 0.0, radius = 0.0, tilt = 0.0, turn = 0.0;
   int order = 1;
+  bool seeded = false;
+  double seedHeight = 0.0, seedRadius = 0.0;
 };
 
 Ring ringOf(const RingShape& shape, const RevolutionAxis& axis);
@@ -128,7 +136,8 @@ void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
                  std::vector<glm::dvec3>& normals);
 
 // The ring's folds made on `session` (committed); returns how many were made. The session's
-// drag in progress, if any, is cancelled first.
+// drag in progress, if any, is cancelled first. Each fold is seeded at the sheet vertex farthest
+// on its plane's side, or, where the ring has seeds, at the vertex on that side nearest its seed.
 std::size_t makeRing(FoldSession& session, const Ring& ring);
 
 // Up to `count` rings of `proposals` drawn (ringProposals, toward the fitter's target whose

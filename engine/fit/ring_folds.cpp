@@ -46,6 +46,8 @@ constexpr double kCornerInward[] = {1.0, 0.95};
 constexpr int kCornerBins = 24;
 constexpr double kCornerStart = 0.25;
 constexpr double kCornerDepths[] = {0.5, 0.75};
+// Where a neck pleat's cut begins: where the excess falls below this share of its peak.
+constexpr double kPleatStart = 0.25;
 
 // A corner ring that folds in the corners standing farthest out of the target (a narrow neck's):
 // the ring of `order` planes turned by `turn`, each plane through the corners' radius where the
@@ -116,6 +118,97 @@ std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetS
 }
 
 }  // namespace
+
+// The profile binned as neckCornerRing bins it; the first ring's depth, then its flaps' middle at
+// the neck and far end reflected in the meridian (see the header).
+std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
+                                                  const std::vector<SurfaceSample>& targetSamples,
+                                                  const RevolutionAxis& axis, int order,
+                                                  double turn, int side) {
+  const auto heightAndRadius = [&](const glm::dvec3& p) {
+    const double h = glm::dot(p - axis.point, axis.direction);
+    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
+  };
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : sheetSamples) {
+    const double h = heightAndRadius(s.position).x;
+    lo = std::min(lo, h);
+    hi = std::max(hi, h);
+  }
+  if (!(hi - lo > 1e-9)) return std::nullopt;
+  std::array<double, kCornerBins> largest{}, targetSum{};
+  std::array<int, kCornerBins> sheetCount{}, targetCount{};
+  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
+  for (const SurfaceSample& s : sheetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
+    largest[b] = std::max(largest[b], hr.y);
+    ++sheetCount[b];
+  }
+  for (const SurfaceSample& s : targetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = bin(hr.x);
+    if (b < 0 || b >= kCornerBins) continue;
+    targetSum[b] += hr.y;
+    ++targetCount[b];
+  }
+  std::array<double, kCornerBins> excess{};
+  double radius = 0.0;
+  int peak = -1;
+  for (int b = 0; b < kCornerBins; ++b) {
+    radius = std::max(radius, largest[b]);
+    excess[b] = sheetCount[b] >= 3 && targetCount[b] >= 3
+                    ? largest[b] - targetSum[b] / targetCount[b]
+                    : -1e300;
+    if (peak < 0 || excess[b] > excess[peak]) peak = b;
+  }
+  if (peak < 0 || !(excess[peak] > 0.05 * radius)) return std::nullopt;
+  int begin = peak;
+  while (begin - side >= 0 && begin - side < kCornerBins &&
+         excess[begin] > kPleatStart * excess[peak])
+    begin -= side;
+  const int end = side > 0 ? kCornerBins - 1 : 0;
+  if (begin == peak || end == peak || excess[begin] < -1e299 || sheetCount[end] < 3)
+    return std::nullopt;
+  const auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kCornerBins; };
+  const double t0 = centre(begin), tPeak = centre(peak), radius0 = largest[begin];
+  const double wall = largest[peak], neck = targetSum[peak] / targetCount[peak];
+  // The cut deepens on past the neck to the sheet's end: the wedges must stay apart there too,
+  // at the rim (cos(pi / n)) and within (a flap's bulge stays in its own sector while q >=
+  // 1 / (2 sin(pi / n)): a ring of 3 cut deeper crosses itself near the axis).
+  const double apart =
+      1.02 * std::max(std::cos(std::numbers::pi / order), 0.5 / std::sin(std::numbers::pi / order));
+  const double rhoPeak = std::max(0.5 * (wall + neck), wall * apart);
+  const double slope = std::min((radius0 - rhoPeak) / (tPeak - t0) * side,
+                                (radius0 - largest[end] * apart) / (centre(end) - t0) * side);
+  if (!(slope > 0.0)) return std::nullopt;
+  RingShape in;
+  in.height = t0;
+  in.radius = radius0;
+  in.tilt = std::atan(slope * side);
+  in.turn = turn;
+  in.order = order;
+  // The wall at (r, t) in the meridian of a plane of `in`, reflected through it.
+  const auto reflected = [&](double r, double t) {
+    const double c = std::cos(in.tilt), s = std::sin(in.tilt);
+    const double d = (r - in.radius) * c + (t - in.height) * s;
+    return glm::dvec2(r - 2.0 * d * c, t - 2.0 * d * s);
+  };
+  const glm::dvec2 middle = reflected(wall, tPeak);
+  const glm::dvec2 farEnd = reflected(largest[end], centre(end));
+  if (!(farEnd.x < middle.x - 0.02 * radius)) return std::nullopt;
+  // The return ring: its planes along -e_k (turned by half a turn) at the flap's middle.
+  RingShape back;
+  back.height = middle.y;
+  back.radius = -middle.x;
+  back.tilt = 0.0;
+  back.turn = turn + std::numbers::pi;
+  back.order = order;
+  back.seeded = true;
+  back.seedHeight = farEnd.y;
+  back.seedRadius = -farEnd.x;
+  return std::array<RingShape, 2>{in, back};
+}
 
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction) {
   if (sheet.positions.size() < 4) return std::nullopt;

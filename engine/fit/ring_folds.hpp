@@ -54,6 +54,7 @@
 // the ends (a tilted ring deepens toward one end).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <random>
@@ -89,6 +90,32 @@ struct TubeAxis {
   double radius = 0.0;
 };
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction);
+
+// A neck pleat: a ring cut in and turned back out (as a paper artist pleats a collar), for a
+// waist under a flaring lip, which a ring's planes alone cut only as deep as they cut the lip
+// beyond it (a plane's cut grows linearly along the axis). The first ring of `order` planes
+// turned by `turn` folds each wedge in about its chord, from where the sheet's largest radius
+// begins to stand out of the target's mean radius (by height, 24 bins of the samples of the sheet
+// and of the target) to the neck, where that excess peaks, its flaps' middles reaching the
+// target's radius there, deepening toward the end `side` (+1 the axis's end, -1 the other). The
+// cut goes on deepening to the sheet's end, where the wedges must still stay apart: at the rim
+// (q >= cos(pi / n) of the radius) and within (a flap's bulge stays in its own sector while q >=
+// 1 / (2 sin(pi / n)); a ring of 3 cut deeper passes through itself near the axis), so only rings
+// of 3 to 5 cut a pleat, and the far end bounds how deep the neck is cut. The second, the return
+// ring, has one plane parallel to the axis through each flap's middle at the neck, facing the
+// axis, each seeded in its own flap's far end (RingShape::seeded: the plane's side also holds the
+// tube's far wall), so past the neck the flap heads back out as steeply as it came in. None where
+// no height stands out by a twentieth of the radius, the cut cannot deepen, or the flap's far end
+// lies no deeper than its middle at the neck.
+// Not offered by suggestTubeRings: on bench/make_judge_shapes.py's vase_y (a neck of 0.24 of the
+// belly under a lip of 0.57) a pleat never scored best at any step of either chain, and a third
+// chain begun with the best pleat ended farther than the coarse chain (docs/performance.md, issue
+// 38, vase12); its first ring's creases stay on the tube's radius, and its lip's flaps widen at the
+// rate the neck's narrowed, not the target's.
+std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
+                                                  const std::vector<SurfaceSample>& targetSamples,
+                                                  const RevolutionAxis& axis, int order,
+                                                  double turn, int side);
 
 // The chains as far as one call grew them, to be grown on by a later call on the same sheet
 // (the start's probe, first_step_start.hpp, hands its winner's chains to the search, which
