@@ -216,7 +216,7 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
         (start.surface == "square" || start.surface == "rectangle") &&
         distance.fromAMax >= distance.fromBMax) {
       session.applyRecords(steps.front().folds);
-      const std::vector<FoldSuggestion> tucks = suggestTucks(session, fitter, 1, deadline);
+      const std::vector<FoldSuggestion> tucks = suggestTucks(session, fitter, 1, deadline, false);
       if (!tucks.empty()) {
         const SurfaceDistance tucked =
             surfaceDistance(meshOf(tucks.front().sheet), fitter.measuredTarget(), kSamples);

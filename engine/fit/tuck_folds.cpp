@@ -55,7 +55,7 @@ struct Tuck {
 }  // namespace
 
 std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter& fitter,
-                                         std::size_t count, const Deadline& deadline) {
+                                         std::size_t count, const Deadline& deadline, bool dearer) {
   session.cancel();
   std::vector<FoldSuggestion> out;
   if (count == 0 || session.symmetricFolder() || deadline.passed()) return out;
@@ -192,7 +192,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
   };
   for (const Far& f : far) {
     std::optional<std::pair<Tuck, Made>> kept = tryHinges(f, kDepths, kTilts);
-    if (!kept) kept = tryHinges(f, kMoreDepths, kMoreTilts);
+    if (!kept && dearer) kept = tryHinges(f, kMoreDepths, kMoreTilts);
     if (kept) best.push_back(std::move(*kept));
   }
   if (best.empty()) return out;

@@ -41,8 +41,10 @@
 namespace curvefold {
 
 // Up to `count` tucks for the design `session` holds, best first (see above). The session is left
-// as it was.
+// as it was. `dearer`: try the nearer and farther hinges where the usual ones fail (the start
+// choice, which counts tucks on each grown sheet within a share of the clock, leaves them out).
 std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter& fitter,
-                                         std::size_t count, const Deadline& deadline);
+                                         std::size_t count, const Deadline& deadline,
+                                         bool dearer = true);
 
 }  // namespace curvefold
