@@ -17,9 +17,11 @@
 // deadline (the start's share of --time; the candidates after the first are tried only while it
 // allows). Output: each candidate's first step (suggestPleats, the best one) measured exactly
 // (surface_distance.hpp, kChoiceSamples), scored by Chamfer + 0.5 Hausdorff (the goal
-// bounds both), and the best. Known limits: the growth is measured once (not iterated); a grown
-// sheet's corners may stand past a round target's rim; the first step of a curved sheet is its
-// pleats alone here (the fit's search of single folds beside them is left out, for the time).
+// bounds both), and the best; a grown sheet is measured with its corners that stand out
+// tucked under (tuck_folds.hpp), as the fit's end tucks them. Known limits: the growth is measured
+// once (not iterated); a grown sheet's corners may stand past a round target's rim; the first step
+// of a curved sheet is its pleats alone here (the fit's search of single folds beside them is left
+// out, for the time).
 #pragma once
 
 #include <optional>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -24,12 +25,17 @@ constexpr double kFar = 0.02;
 constexpr double kAlongSheet = 0.6;
 // Vertices measured, far points tucked (at least this far apart, of the sheet's size).
 constexpr std::size_t kMeasured = 1500;
-constexpr std::size_t kFarPoints = 4;
+constexpr std::size_t kFarPoints = 6;
 constexpr double kFarApart = 0.25;
 // The hinge's distance back from the far point, in units of how far it stands out.
 constexpr double kDepths[] = {0.8, 1.0, 1.25};
+// Where none of those is kept (its flap crossed the sheet, or stood out as far), the far point is
+// tried again with hinges nearer and farther back and a steeper tilt: a corner left standing out
+// is the sheet's Hausdorff point, so every one that stands out is worth the dearer try.
+constexpr double kMoreDepths[] = {0.6, 1.6, 2.0};
 // The tilt eps of the plane out of the sheet's normal plane (the flap lies at 2 eps).
 constexpr double kTilts[] = {3.0 * kDegree, 7.0 * kDegree};
+constexpr double kMoreTilts[] = {3.0 * kDegree, 7.0 * kDegree, 12.0 * kDegree};
 // A tuck is kept where the sheet stands out (excess) by this share of before at most, and the
 // search's score (approximateDistance, which cuts far distances) rises by no more than this.
 constexpr double kLessExcess = 0.9;
@@ -49,7 +55,7 @@ struct Tuck {
 }  // namespace
 
 std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter& fitter,
-                                         std::size_t count, const Deadline& deadline) {
+                                         std::size_t count, const Deadline& deadline, bool dearer) {
   session.cancel();
   std::vector<FoldSuggestion> out;
   if (count == 0 || session.symmetricFolder() || deadline.passed()) return out;
@@ -156,12 +162,13 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
     return made;
   };
 
-  // Each far point's best tuck.
+  // Each far point's best tuck: the usual hinges, then (none kept) the dearer ones.
   std::vector<std::pair<Tuck, Made>> best;
-  for (const Far& f : far) {
+  auto tryHinges = [&](const Far& f, std::span<const double> depths,
+                       std::span<const double> tilts) {
     std::optional<std::pair<Tuck, Made>> kept;
     const glm::dvec3 p = sheet.positions[f.vertex];
-    for (const double depth : kDepths) {
+    for (const double depth : depths) {
       if (deadline.passed()) break;
       // The hinge: the sheet's vertex nearest the point that far back, and the sheet's tangent
       // there along the outward way.
@@ -172,7 +179,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
       if (!(glm::length(along) > 1e-6) || !(glm::length(m) > 0.5)) continue;
       along = glm::normalize(along);
       if (!(glm::dot(p - h, along) > 0.0)) continue;
-      for (const double tilt : kTilts)
+      for (const double tilt : tilts)
         for (const double side : {1.0, -1.0}) {
           Tuck tuck{{h, std::cos(tilt) * along + side * std::sin(tilt) * m}, f.vertex, 0.0};
           if (std::optional<Made> made = score({tuck})) {
@@ -181,14 +188,35 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
           }
         }
     }
+    return kept;
+  };
+  for (const Far& f : far) {
+    std::optional<std::pair<Tuck, Made>> kept = tryHinges(f, kDepths, kTilts);
+    if (!kept && dearer) kept = tryHinges(f, kMoreDepths, kMoreTilts);
     if (kept) best.push_back(std::move(*kept));
   }
   if (best.empty()) return out;
   // Every far point's tuck as one step, then the single tucks.
+  // Where all of them together are refused (two flaps crossing each other: a grown square's
+  // corner and the middle of a side beside it), a group grown greedily instead, the farthest
+  // point's tuck first, each next one kept where the group with it still scores.
   if (best.size() > 1 && !deadline.passed()) {
     std::vector<Tuck> all;
     for (const auto& b : best) all.push_back(b.first);
-    if (std::optional<FoldSuggestion> made = score(all)) out.push_back(std::move(*made));
+    if (std::optional<FoldSuggestion> made = score(all)) {
+      out.push_back(std::move(*made));
+    } else {
+      std::vector<Tuck> group{best.front().first};
+      std::optional<FoldSuggestion> grown;
+      for (std::size_t i = 1; i < best.size() && !deadline.passed(); ++i) {
+        group.push_back(best[i].first);
+        if (std::optional<FoldSuggestion> made = score(group))
+          grown = std::move(made);
+        else
+          group.pop_back();
+      }
+      if (grown) out.push_back(std::move(*grown));
+    }
   }
   for (auto& b : best) out.push_back(std::move(b.second));
   std::stable_sort(out.begin(), out.end(),

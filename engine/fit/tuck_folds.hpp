@@ -15,9 +15,13 @@
 // stands out (the squares of its vertices' distances past kFar, summed: the search's
 // approximateDistance cuts far distances, and barely sees a corner 24 mm out), kept where that
 // falls by a tenth and the search's score rises by no more than 3%, with no more crossings than
-// before (self_intersection.hpp), and taken back; each far point's best tuck is kept, and all of
-// them made together as one step. The fit makes them as its last steps (FitRun::tuckCorners,
-// up to three rounds, each judged by the exact distances).
+// before (self_intersection.hpp), and taken back; each far point's best tuck is kept (where none
+// of the usual hinges is, hinges nearer and farther back at a steeper tilt are tried), and all of
+// them made together as one step; where that is refused (a grown square's corner flap crossing the
+// flap of its side's middle), a group grown greedily, farthest point first. The fit makes them as
+// its last steps (FitRun::tuckCorners: rounds until no corner stands out, up to eight, each
+// judged by the exact distances), and the start chosen by its first step counts them on grown
+// sheets (first_step_start.hpp).
 //
 // Inputs: a session holding a design without symmetry; the fitter's target. Output: up to `count`
 // steps, the sheet standing out least first (the tucks of every far point as one group, then
@@ -37,8 +41,10 @@
 namespace curvefold {
 
 // Up to `count` tucks for the design `session` holds, best first (see above). The session is left
-// as it was.
+// as it was. `dearer`: try the nearer and farther hinges where the usual ones fail (the start
+// choice, which counts tucks on each grown sheet within a share of the clock, leaves them out).
 std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter& fitter,
-                                         std::size_t count, const Deadline& deadline);
+                                         std::size_t count, const Deadline& deadline,
+                                         bool dearer = true);
 
 }  // namespace curvefold
