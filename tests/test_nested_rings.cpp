@@ -350,6 +350,28 @@ TEST(NestedRings, AnOvalBowlsRingsFollowItsReachNotACircle) {
   EXPECT_LT(farthest, 0.0262) << "after " << step.after << ", " << step.folds.size() << " folds";
 }
 
+// An oval bowl asked of the disk starts from the disk of its area stretched to its footprint:
+// the round disk stands past the narrow sides and stops short of the long ends.
+TEST(NestedRings, AnOvalBowlFromTheDiskStartsOnItsFootprintsEllipse) {
+  TriangleMesh target =
+      capOf([](double r) { return 0.04 * (r / 0.06) * (r / 0.06); }, 0.06, 48, 12);
+  for (glm::dvec3& p : target.positions) p.x *= 1.5;
+  const StartChoice start = chooseStart(target, "disk");
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "ellipse") << start.placement;
+  validate(*start.placed);
+  // Its extents along the oval's axes (x and y here) in the footprint's proportions, 1.5.
+  glm::dvec3 low(1e300), high(-1e300);
+  for (const glm::dvec3& p : start.placed->positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  EXPECT_NEAR((high.x - low.x) / (high.y - low.y), 1.5, 0.1);
+  // It reaches both ends of the oval (9 cm out) and no farther past its narrow sides than there.
+  EXPECT_GT(0.5 * (high.x - low.x), 0.09);
+  EXPECT_LT(0.5 * (high.y - low.y) - 0.06, 0.5 * (high.x - low.x) - 0.09);
+}
+
 TEST(NestedRings, ASymmetricDesignMakesEachRingAsOneFoldAndItsImages) {
   const TriangleMesh target = capOf([](double r) { return r * r / 0.16; }, 0.08, 48, 16);
   const Sheet disk =
