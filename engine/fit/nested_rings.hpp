@@ -43,7 +43,10 @@
 // the bowl; a fold takes what lies beyond its plane and is connected to its seed, so the corners
 // fold with one flap and stand out (the Hausdorff distance shows them), and on a steep profile a
 // second ring's planes take the corner paper of the flaps beside their own and cross it: such a
-// ring is taken back and the rings before it kept. Fits with two creases or more are also made
+// ring is drawn again turned by half a polygon side (its planes at the corners) and kept where
+// that crosses nothing, else taken back and the rings before it kept. Of the steps within 5% of
+// the nearest by the search's score, only the one whose farthest point stands out least is
+// offered (the score cuts far distances). Fits with two creases or more are also made
 // outermost first, each ring on the flat sheet (nestedRingShapes' outerFirst), where
 // outermostFirstHolds: no ring meets corner paper an inner one left, so a lip turning back out is
 // made (a ring drawn so that crosses is taken back alone). The model is exact only along each

@@ -423,6 +423,28 @@ void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& prin
   }
 }
 
+// A footprint whose extents along the target's two largest axes differ by more than this ratio
+// is oval: the disk of the target's area is also offered stretched to it (flatIn). The nested
+// rings follow a target oblong by their own measure (1.12 of reach, nested_rings.cpp).
+constexpr double kOvalFootprint = 1.12;
+
+// The catalogue's disk stretched to an ellipse of semi-axes `a` along the frame's x and `b`
+// along its y, its development stretched alike (a flat sheet, so still exact), placed by `frame`.
+void addEllipse(std::vector<PlacedStart>& out, double a, double b, const std::string& placement,
+                const Frame& frame) {
+  try {
+    Sheet sheet = makeSurface("disk", {{"radius", a}});
+    const double stretch = b / a;
+    for (glm::dvec3& p : sheet.positions) p.y *= stretch;
+    for (glm::dvec2& d : sheet.development) d.y *= stretch;
+    out.push_back({"ellipse",
+                   {{"width", 2.0 * a}, {"height", 2.0 * b}},
+                   placement,
+                   placedSheet(std::move(sheet), frame)});
+  } catch (const SurfaceError&) {
+  }
+}
+
 void flatIn(const std::vector<SurfaceSample>& samples, const Principal& principal, double area,
             const std::string& kind, std::vector<PlacedStart>& out) {
   Frame frame = frameOf(principal.centroid, principal.axes[2], principal.axes[1]);
@@ -445,6 +467,24 @@ void flatIn(const std::vector<SurfaceSample>& samples, const Principal& principa
     if (kind.empty() || kind == surface) addPlaced(out, surface, parameters, placement, frame);
   };
   add("disk", {{"radius", std::sqrt(area / std::numbers::pi)}});
+  // An oval bowl's footprint: the disk of its area stretched to the footprint's proportions (the
+  // area kept), so the sheet reaches both ends; a round disk of the area stands past the narrow
+  // sides and stops short of the long ends (a 28 x 18 cm serving bowl: its rim 28 mm short).
+  if (kind.empty() || kind == "disk") {
+    double loX = 1e300, hiX = -1e300, loY = 1e300, hiY = -1e300;
+    for (const SurfaceSample& s : samples) {
+      const glm::dvec3 d = s.position - frame.origin;
+      loX = std::min(loX, glm::dot(d, frame.x));
+      hiX = std::max(hiX, glm::dot(d, frame.x));
+      loY = std::min(loY, glm::dot(d, frame.y));
+      hiY = std::max(hiY, glm::dot(d, frame.y));
+    }
+    const double aspect = (hiX - loX) / std::max(1e-300, hiY - loY);
+    const double radius = std::sqrt(area / std::numbers::pi);
+    if (aspect > kOvalFootprint || aspect < 1.0 / kOvalFootprint)
+      addEllipse(out, radius * std::sqrt(aspect), radius / std::sqrt(aspect),
+                 placement + ", stretched to its footprint", frame);
+  }
   add("square", {{"size", std::sqrt(area)}});
 }
 
@@ -533,23 +573,6 @@ constexpr int kDiskDirections = 36;
 constexpr double kRoundOutside = 0.03;
 // A footprint whose sides differ by more than this share is oblong.
 constexpr double kOblong = 0.97;
-
-// The catalogue's disk stretched to an ellipse of semi-axes `a` along the frame's x and `b`
-// along its y, its development stretched alike (a flat sheet, so still exact), placed by `frame`.
-void addEllipse(std::vector<PlacedStart>& out, double a, double b, const std::string& placement,
-                const Frame& frame) {
-  try {
-    Sheet sheet = makeSurface("disk", {{"radius", a}});
-    const double stretch = b / a;
-    for (glm::dvec3& p : sheet.positions) p.y *= stretch;
-    for (glm::dvec2& d : sheet.development) d.y *= stretch;
-    out.push_back({"ellipse",
-                   {{"width", 2.0 * a}, {"height", 2.0 * b}},
-                   placement,
-                   placedSheet(std::move(sheet), frame)});
-  } catch (const SurfaceError&) {
-  }
-}
 
 bool footprintDisks(const std::vector<SurfaceSample>& samples, const Principal& principal,
                     std::vector<PlacedStart>& out) {

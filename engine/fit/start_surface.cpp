@@ -339,12 +339,20 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
   // the clock has cut the catalogue's sheets short: those lie in the catalogue's frame, often far
   // from a smooth target (a scan kept a default cylinder 177% of its diagonal off at --time 2).
   const std::vector<SurfaceSample> samples = sampleSurface(target, kChoiceSamples, 3);
-  std::optional<PlacedStart> nearest, disk;
-  double nearestChamfer = 0.0, nearestScore = 0.0, diskChamfer = 0.0;
+  std::optional<PlacedStart> nearest, disk, ellipse;
+  double nearestChamfer = 0.0, nearestScore = 0.0, diskChamfer = 0.0, ellipseChamfer = 0.0;
+  // The disk stretched to an oval footprint is for a bowl, whose nested rings fold it
+  // (nested_rings.hpp): kept only where it lies flat across the target's axis.
+  std::optional<std::optional<RevolutionAxis>> bowlAxis;
+  const auto acrossAxis = [&](const Sheet& sheet) {
+    if (!bowlAxis) bowlAxis = revolutionAxis(samples);
+    return *bowlAxis && liesFlatAcross(sheet, **bowlAxis);
+  };
   for (PlacedStart& placed : smooth && !anyFoldedFrom
                                  ? placedStarts(samples, surfaceArea(target), kind)
                                  : std::vector<PlacedStart>{}) {
     if (nearest && outOfTime()) break;
+    if (placed.surface == "ellipse" && !acrossAxis(placed.sheet)) continue;
     if (!keeps(placed.sheet)) {
       sizedDropped = true;
       continue;
@@ -358,6 +366,10 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
       disk = placed;
       diskChamfer = distance.chamfer;
     }
+    if (placed.surface == "ellipse" && !ellipse) {
+      ellipse = placed;
+      ellipseChamfer = distance.chamfer;
+    }
     if (nearest && !(score < nearestScore)) continue;
     nearestChamfer = distance.chamfer;
     nearestScore = score;
@@ -368,8 +380,11 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
   // Without a kind asked for, a bowl's disk whose rings reach far closer than the nearest sheet
   // is (a placed cone: near at once, folded little closer) is the start.
   bool ringsDisk = false;
+  const auto flatRound = [](const std::string& surface) {
+    return surface == "disk" || surface == "ellipse";
+  };
   if (kind.empty() && disk && !outOfTime() &&
-      !(nearestPlaced ? nearest->surface == "disk" : best.surface == "disk")) {
+      !(nearestPlaced ? flatRound(nearest->surface) : best.surface == "disk")) {
     const double nearestNow = nearestPlaced ? nearestChamfer : best.chamfer;
     const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
     const std::optional<double> reach =
@@ -381,9 +396,12 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
                     "nearest sheet (%s) %.3g mm",
                     *reach * 1e3, nearestPlaced ? nearest->surface.c_str() : best.surface.c_str(),
                     nearestNow * 1e3);
-      nearest = std::move(disk);
+      // An oval bowl's rings fold the disk stretched to its footprint (the round disk's reach
+      // stands for it: the rings follow an oblong target's reach either way).
+      const bool oval = ellipse.has_value();
+      nearest = std::move(oval ? ellipse : disk);
       nearest->placement += text;
-      nearestChamfer = diskChamfer;
+      nearestChamfer = oval ? ellipseChamfer : diskChamfer;
       ringsDisk = true;
     }
   }

@@ -24,6 +24,9 @@
 //
 // Placed sheets: the same kinds moved onto the target's principal axes, and a swept parabola
 // (placed_start.hpp), are candidates too when the target has no creases; the nearest of all wins.
+// An oval bowl's (its footprint 1.12 times longer one way) include the disk of its area
+// stretched to the footprint, kept only where it lies flat across the target's axis (the nested
+// rings fold it); it is the rings' sheet below in place of the round disk.
 // But without a kind asked for, the disk placed across a bowl's axis (revolutionAxis) wins over
 // a nearer sheet when the nested rings' profile fit from it (nested_rings.hpp, 1 to 3 creases,
 // seeded) comes within 0.2 of that sheet's Chamfer distance: the model is exact only along each
