@@ -76,6 +76,12 @@ struct StaticOptions {
   // converges only linearly where the hinges' errors stay large at the equilibrium (targets the
   // sheet cannot take together, as a curved crease's 180 degrees in paper mode).
   bool exactHessian = true;
+  // Where the last stage's exact Hessian is indefinite (a saddle), step with it shifted by a
+  // multiple of its largest diagonal until positive definite instead of with Gauss-Newton's, so
+  // the step follows the negative curvature off the saddle.
+  bool shiftIndefinite = true;
+  // An earlier stage steps with the exact Hessian too once it has taken this many iterations.
+  std::size_t exactAfterIterations = 30;
 };
 
 struct StaticIteration {
