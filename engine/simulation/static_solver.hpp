@@ -12,7 +12,9 @@
 // and one more stage at the goal restores them (StaticOptions::foldingFacetScale); in paper mode
 // they run with the bars softened to a hundred times the creases and stiffening stages at the goal
 // restore paper's (StaticOptions::softBarRatio). The last stage steps with the energy's exact
-// Hessian where it is positive definite (StaticOptions::exactHessian). Before all that,
+// Hessian where it is positive definite (StaticOptions::exactHessian), shifted until it is where
+// it is not (a saddle: StaticOptions::shiftIndefinite), and so does an earlier stage after
+// exactAfterIterations (a stage that crosses a snap). Before all that,
 // a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
 // angles and starts from there if that is lower in energy than the state.
 //
