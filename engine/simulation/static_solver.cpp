@@ -397,17 +397,10 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       // the layer it lies on, as the folds between them order them (layer_order.hpp). Where
       // that passes the sheet through itself (a side the path's folds chose wrongly: xr_studio's
       // 3 pairs in touch became 3 crossing pairs, and the settle from the soft bars ended with
-      // 550), the guess stays as shaped.
-      if (model.contact.enabled) {
-        std::vector<glm::dvec3> shaped = guess.positions;
-        if (separateLayers(model, guess.positions, guess.hingeAngles).pairs > 0) {
-          if (crossingTrianglePairs(model, guess.positions) > 0 &&
-              crossingTrianglePairs(model, shaped) == 0)
-            guess.positions.swap(shaped);
-          else
-            guess.hingeAngles = hingeAngles(model, guess.positions, guess.hingeAngles);
-        }
-      }
+      // 550), the guess stays as shaped (separateLayersUnlessCrossing).
+      if (model.contact.enabled &&
+          separateLayersUnlessCrossing(model, guess.positions, guess.hingeAngles))
+        guess.hingeAngles = hingeAngles(model, guess.positions, guess.hingeAngles);
       // With contact, a guess that passes the sheet through itself is no start: the barrier
       // cannot tell which side of a layer a vertex belongs on.
       const double guessEnergy = modelEnergy(model, guess.positions, goal, guess.hingeAngles);
