@@ -2,6 +2,7 @@
 // the barrier's force is its energy's gradient, a sheet folded flat keeps its layers the paper's
 // thickness apart, and patterns that fold flat in layers settle without passing through
 // themselves.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -174,6 +175,56 @@ TEST(Contact, LayersThatStartInTouchGoToTheSideTheirFoldGives) {
         EXPECT_GT(side * x[v].z, 0.0) << v;
       }
     EXPECT_GE(smallestLayerDistance(model, x, kThickness, 0.01), kThickness);
+  }
+}
+
+// The guard on the predictor's guess (separateLayersUnlessCrossing): a separation that passes the
+// sheet through itself is undone. A 10 mm square (two triangles, z = 0) and, apart from it on the
+// flat sheet, a 6 mm square fan whose centre touches the square's lower triangle from below (its
+// corners 2 mm under it). No fold joins them, so the side falls back to the triangle's front:
+// the centre is pushed up through the square and the fan's triangles pierce it. From above (the
+// corners 2 mm over it) the same side is right and the separation is kept.
+TEST(Contact, ASeparationThatPassesTheSheetThroughItselfIsUndone) {
+  CreasePattern pattern;
+  pattern.vertices = {{0.0, 0.0},   {0.01, 0.0},    {0.01, 0.01},  {0.0, 0.01},   {0.02, 0.0},
+                      {0.026, 0.0}, {0.026, 0.006}, {0.02, 0.006}, {0.023, 0.003}};
+  pattern.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}};
+  testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
+    return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
+  });
+  const BarHingeModel model = buildModel(pattern, paperOptions(true));
+  for (const double below : {1.0, -1.0}) {
+    SCOPED_TRACE(below > 0.0 ? "fan below the square" : "fan above the square");
+    std::vector<glm::dvec3> x(model.vertexCount());
+    for (std::uint32_t v = 0; v < 4; ++v) x[v] = glm::dvec3(pattern.vertices[v], 0.0);
+    // The fan's centre on the square's lower triangle (x > y), its corners 2 mm off it.
+    const glm::dvec3 centre(0.006, 0.003, 0.0);
+    x[8] = centre;
+    for (std::uint32_t v = 4; v < 8; ++v)
+      x[v] = centre + glm::dvec3(pattern.vertices[v] - pattern.vertices[8], -0.002 * below);
+    const std::vector<double> angles = hingeAngles(model, x);
+    ASSERT_EQ(crossingTrianglePairs(model, x), 0u);
+    std::vector<glm::dvec3> separated = x;
+    ASSERT_GT(separateLayers(model, separated, angles).pairs, 0u);
+    std::vector<glm::dvec3> guarded = x;
+    const bool moved = separateLayersUnlessCrossing(model, guarded, angles);
+    const auto largestMove = [&](const std::vector<glm::dvec3>& from) {
+      double largest = 0.0;
+      for (std::uint32_t v = 0; v < model.vertexCount(); ++v)
+        largest = std::max(largest, glm::length(guarded[v] - from[v]));
+      return largest;
+    };
+    if (below > 0.0) {
+      // Unguarded, the fan passes through the square.
+      EXPECT_GT(crossingTrianglePairs(model, separated), 0u);
+      EXPECT_FALSE(moved);
+      EXPECT_EQ(largestMove(x), 0.0);
+    } else {
+      EXPECT_EQ(crossingTrianglePairs(model, separated), 0u);
+      EXPECT_TRUE(moved);
+      EXPECT_EQ(largestMove(separated), 0.0);
+      EXPECT_GE(guarded[8].z - guarded[0].z, kThickness);
+    }
   }
 }
 

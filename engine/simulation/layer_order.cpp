@@ -164,4 +164,15 @@ LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec
   return out;
 }
 
+bool separateLayersUnlessCrossing(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
+                                  const std::vector<double>& hingeAngles) {
+  std::vector<glm::dvec3> given = positions;
+  if (separateLayers(model, positions, hingeAngles).pairs == 0) return false;
+  if (crossingTrianglePairs(model, positions) > 0 && crossingTrianglePairs(model, given) == 0) {
+    positions.swap(given);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace curvefold

@@ -50,4 +50,13 @@ struct LayerSeparation {
 LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
                                const std::vector<double>& hingeAngles);
 
+// separateLayers, undone (the positions left as given) where the separated positions pass the
+// sheet through itself (crossingTrianglePairs, contact.hpp) and the given ones did not: a side
+// the path's folds chose wrongly (xr_studio glued: 3 pairs in touch became 3 crossing pairs, and
+// its settle then ran from the soft bars and ended with 550). The static solver's guard on each
+// predictor guess. True when the positions were moved (some pair was within the thickness and
+// the separation kept); the caller recomputes the hinge angles then.
+bool separateLayersUnlessCrossing(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
+                                  const std::vector<double>& hingeAngles);
+
 }  // namespace curvefold

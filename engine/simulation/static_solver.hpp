@@ -12,7 +12,9 @@
 // and one more stage at the goal restores them (StaticOptions::foldingFacetScale); in paper mode
 // they run with the bars softened to a hundred times the creases and stiffening stages at the goal
 // restore paper's (StaticOptions::softBarRatio). The last stage steps with the energy's exact
-// Hessian where it is positive definite (StaticOptions::exactHessian). Before all that,
+// Hessian where it is positive definite (StaticOptions::exactHessian), shifted until it is where
+// it is not (a saddle: StaticOptions::shiftIndefinite), and so does an earlier stage after
+// exactAfterIterations (a stage that crosses a snap). Before all that,
 // a predictor (StaticOptions::predictor) places the triangles across the hinges at their goal
 // angles and starts from there if that is lower in energy than the state.
 //
@@ -76,6 +78,12 @@ struct StaticOptions {
   // converges only linearly where the hinges' errors stay large at the equilibrium (targets the
   // sheet cannot take together, as a curved crease's 180 degrees in paper mode).
   bool exactHessian = true;
+  // Where the last stage's exact Hessian is indefinite (a saddle), step with it shifted by a
+  // multiple of its largest diagonal until positive definite instead of with Gauss-Newton's, so
+  // the step follows the negative curvature off the saddle.
+  bool shiftIndefinite = true;
+  // An earlier stage steps with the exact Hessian too once it has taken this many iterations.
+  std::size_t exactAfterIterations = 30;
 };
 
 struct StaticIteration {
