@@ -145,6 +145,11 @@ struct Unfolder {
   const Deadline& deadline;
   const std::vector<Isometry>& images;  // a symmetric design's; empty: none
   std::size_t leaves = 0;               // unfoldings finished, to bound the branching
+  // The fewest folds an unfolding that ended smooth has taken, one more where it ended off the
+  // sheet (a rigid copy: its motion takes at least one whole-sheet fold): a branch deeper than
+  // that cannot win, and is not read on (a plane read twice, a piece of one fold's part at a
+  // time, reads more folds than the design made).
+  double smoothCost = kInfinitySharp;
   // The deadline passed: each unfolding under way ends where it is (its steps so far, read off
   // as a finished one is), and the best of those and of the finished ones is kept.
   bool cutShort = false;
@@ -396,18 +401,49 @@ struct Unfolder {
     return result;
   }
 
+  bool smooth(const TargetUnfolding& u) const {
+    return u.sharpLengthLeft < kLeastCrease * diagonal;
+  }
+  bool onSheet(double off) const { return off <= kOffSheet * diagonal; }
+
+  // An unfolding ended: where it ends smooth, the fewest folds so far are noted.
+  TargetUnfolding leaf(const std::vector<Step>& steps, const std::vector<glm::dvec3>& positions,
+                       double sharp) {
+    TargetUnfolding result = bestSides(steps, positions, sharp);
+    if (smooth(result))
+      smoothCost = std::min(smoothCost, static_cast<double>(result.folds.size()) +
+                                            (onSheet(offSheet(result.unfolded)) ? 0.0 : 1.0));
+    return result;
+  }
+
+  // Which of two unfoldings wins: the one that takes away more creases; of smooth ones, the one
+  // that takes fewer folds (one more where it ends off the sheet); then the one on the sheet, then
+  // the one closer to it.
+  bool better(const TargetUnfolding& a, double offA, const TargetUnfolding& b, double offB) const {
+    if (a.sharpLengthLeft < b.sharpLengthLeft - kLeastCrease * diagonal) return true;
+    if (a.sharpLengthLeft > b.sharpLengthLeft + kLeastCrease * diagonal) return false;
+    if (!smooth(a) || !smooth(b)) return offA < offB;  // stopped short alike: the closer
+    const double costA = static_cast<double>(a.folds.size()) + (onSheet(offA) ? 0.0 : 1.0);
+    const double costB = static_cast<double>(b.folds.size()) + (onSheet(offB) ? 0.0 : 1.0);
+    if (costA != costB) return costA < costB;
+    if (onSheet(offA) != onSheet(offB)) return onSheet(offA);
+    return offA < offB;
+  }
+
   // Unfolds from `positions` (the steps so far in `steps`); returns the best unfolding.
   TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
     std::vector<Candidate> candidates;
     if (outOfTime()) return bestSides(steps, positions, sharp);
-    if (steps.size() < maxFolds) candidates = candidatesAt(positions);
+    // One step more would take more folds than an unfolding already found smooth.
+    const bool deeper = static_cast<double>(steps.size()) + 1.0 <= smoothCost;
+    if (steps.size() < maxFolds && deeper) candidates = candidatesAt(positions);
     if (outOfTime()) return bestSides(steps, positions, sharp);
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
     if (candidates.empty() || !(least < sharp - kLeastCrease * diagonal)) {
       ++leaves;
-      return bestSides(steps, positions, sharp);
+      return leaf(steps, positions, sharp);
     }
     // The pieces that take away a crease, best first (the most crease gone, then the smallest
     // piece), one per plane and at most kChoicesPerStep: the fold made last need not have the
@@ -466,10 +502,7 @@ struct Unfolder {
       more.push_back(step);
       TargetUnfolding result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
       const double off = offSheet(result.unfolded);
-      // The unfolding that takes away more creases, then the one that ends on the sheet.
-      if (first || result.sharpLengthLeft < best.sharpLengthLeft - kLeastCrease * diagonal ||
-          (result.sharpLengthLeft <= best.sharpLengthLeft + kLeastCrease * diagonal &&
-           off < bestOff)) {
+      if (first || better(result, off, best, bestOff)) {
         best = std::move(result);
         bestOff = off;
       }
