@@ -264,6 +264,50 @@ TEST(FitReading, AnUnfoldingEndingOffTheSheetReadsNoMoreFoldsThanCrease) {
     }
 }
 
+// Issue 38's drag recipe on the disk (seed 9 of bench/make_outer_third_targets.sh): eight folds,
+// the third and the sixth moving the whole sheet. The six creasing folds read with each crease's
+// piece reflected ended on a copy of the sheet whose motion took 3 or 4 planes whichever way the
+// disk lies on it (its 24 ways times its 479 symmetries): 6 + 3 folds, past the design's 8. Read
+// with the design's own sides, the motion left is the two whole-sheet folds': a turn, 2 planes.
+TEST(FitReading, AnUnfoldingOnACopyTakesTheSidesWhoseMotionNeedsFewestPlanes) {
+  if (testing::kSanitized) GTEST_SKIP() << "a real search: about 12 s of CPU in Release";
+  const Sheet initial = makeSurface("disk", {});
+  FoldSession folding(initial);
+  const glm::dvec3 drags[][2] = {
+      {{0.0191495, 0.0855649, 0.0}, {0.0730906, 0.0940977, 0.0547080}},
+      {{0.0865346, 0.0095576, 0.0149200}, {0.1225619, -0.0072420, 0.0569096}},
+      {{0.0801616, 0.0480743, 0.1723375}, {0.0073805, 0.0301980, 0.1677677}},  // whole
+      {{0.0527947, -0.0620372, 0.0550863}, {-0.0002876, -0.1061204, 0.1039591}},
+      {{0.0571863, -0.0938212, 0.1050113}, {0.0067033, -0.1193015, 0.1213786}},
+      {{0.0219326, -0.1018711, 0.1079264}, {0.0461892, -0.1121948, 0.0705744}},  // whole
+      {{0.0432615, -0.1087997, 0.0620937}, {-0.0029958, -0.1812841, 0.0834671}},
+      {{-0.0675186, -0.3113606, 0.0382409}, {-0.0587095, -0.2666990, 0.1066064}}};
+  for (const auto& drag : drags) {
+    folding.beginDragNear(drag[0]);
+    folding.updateDrag(drag[1]);
+    ASSERT_TRUE(folding.commit());
+  }
+  ASSERT_EQ(folding.foldCount(), 8u);
+  const TriangleMesh target = meshOf(folding.fixed());
+  const TriangleMesh sheet = meshOf(initial);
+  const double size = boundingDiagonal(target);
+  const TargetUnfolding plan = unfoldTarget(target, sheet, sharpEdgeThreshold(sheet), 8);
+  EXPECT_LE(plan.sharpLengthLeft, 1e-3 * size);
+  EXPECT_EQ(plan.folds.size(), 6u);
+  const std::vector<RigidMotion> ways =
+      registerSheetOntoAll(sheet, TriangleMesh{plan.unfolded, target.triangles}, 1e-4 * size, 24);
+  ASSERT_FALSE(ways.empty());
+  std::vector<RigidMotion> symmetries = sheetSymmetries(sheet, 1e-4 * size);
+  symmetries.emplace_back();
+  std::size_t fewest = 5;
+  for (const RigidMotion& way : ways)
+    for (const RigidMotion& sym : symmetries)
+      fewest = std::min(
+          fewest, fewestReflections({way.linear * sym.linear, way.linear * sym.offset + way.offset},
+                                    1e-4, 1e-4 * size));
+  EXPECT_LE(fewest, 2u);
+}
+
 // An unfolding longer than the fit's time (a symmetric disk's 8 folds, which leave it moved
 // whole: 600 orders tried, a minute) ran to the search's deadline and, cut short, answered
 // nothing: the whole time passed with no candidate scored and no fold kept. Cut short, it names
