@@ -24,6 +24,10 @@ constexpr double kBendMarginDegrees = 0.5;
 constexpr double kLeastCrease = 0.003;
 // How far (of the diagonal, on average) an unfolding may end from the sheet and still lie on it.
 constexpr double kOffSheet = 1e-3;
+// The most whole-sheet folds an unfolding that ends off the sheet may leave (a rigid motion is at
+// most 4 reflections): counted to it, as it may be no copy at all (a curved sheet's wrong reading
+// can end smooth off it), so an unfolding on the sheet loses only to one that takes 4 fewer folds.
+constexpr double kMotionPlanes = 4.0;
 // A smooth unfolding off the sheet (a rigid copy): how near (of the diagonal) the sheet must lie
 // on it, how many ways it is registered, and how near a motion must be to a kind of fewer planes
 // (radians, and of the diagonal) to count as it: as the fit makes its whole-sheet folds.
@@ -152,8 +156,8 @@ struct Unfolder {
   const Deadline& deadline;
   const std::vector<Isometry>& images;  // a symmetric design's; empty: none
   std::size_t leaves = 0;               // unfoldings finished, to bound the branching
-  // The fewest folds an unfolding that ended smooth has taken, one more where it ended off the
-  // sheet (a rigid copy: its motion takes at least one whole-sheet fold): a branch deeper than
+  // The fewest folds an unfolding that ended smooth has taken, kMotionPlanes more where it ended
+  // off the sheet (a rigid copy: its motion takes whole-sheet folds): a branch deeper than
   // that cannot win, and is not read on (a plane read twice, a piece of one fold's part at a
   // time, reads more folds than the design made).
   double smoothCost = kInfinitySharp;
@@ -431,8 +435,9 @@ struct Unfolder {
     Read read{bestSides(steps, positions, sharp), steps, positions, sharp};
     const TargetUnfolding& result = read.unfolding;
     if (smooth(result))
-      smoothCost = std::min(smoothCost, static_cast<double>(result.folds.size()) +
-                                            (onSheet(offSheet(result.unfolded)) ? 0.0 : 1.0));
+      smoothCost =
+          std::min(smoothCost, static_cast<double>(result.folds.size()) +
+                                   (onSheet(offSheet(result.unfolded)) ? 0.0 : kMotionPlanes));
     return read;
   }
 
@@ -492,14 +497,16 @@ struct Unfolder {
   }
 
   // Which of two unfoldings wins: the one that takes away more creases; of smooth ones, the one
-  // that takes fewer folds (one more where it ends off the sheet); then the one on the sheet, then
-  // the one closer to it.
+  // that takes fewer folds (kMotionPlanes more where it ends off the sheet); then the one on the
+  // sheet, then the one closer to it.
   bool better(const TargetUnfolding& a, double offA, const TargetUnfolding& b, double offB) const {
     if (a.sharpLengthLeft < b.sharpLengthLeft - kLeastCrease * diagonal) return true;
     if (a.sharpLengthLeft > b.sharpLengthLeft + kLeastCrease * diagonal) return false;
     if (!smooth(a) || !smooth(b)) return offA < offB;  // stopped short alike: the closer
-    const double costA = static_cast<double>(a.folds.size()) + (onSheet(offA) ? 0.0 : 1.0);
-    const double costB = static_cast<double>(b.folds.size()) + (onSheet(offB) ? 0.0 : 1.0);
+    const double costA =
+        static_cast<double>(a.folds.size()) + (onSheet(offA) ? 0.0 : kMotionPlanes);
+    const double costB =
+        static_cast<double>(b.folds.size()) + (onSheet(offB) ? 0.0 : kMotionPlanes);
     if (costA != costB) return costA < costB;
     if (onSheet(offA) != onSheet(offB)) return onSheet(offA);
     return offA < offB;
