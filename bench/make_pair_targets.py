@@ -54,7 +54,7 @@ def make_one(cf, surface, folds, rng):
     reflect = mirror_of(rng.choice(mirrors), centre)
     diag = diagonal(first)
     made, tries = 0, 0
-    while made < folds and tries < 40 * folds:
+    while made < folds and tries < 100 * folds:
         tries += 1
         vertices = design.vertices.tolist()
         lo = [min(v[i] for v in vertices) for i in range(3)]
@@ -101,7 +101,7 @@ def main():
         for recipe, bucket, (lo, hi), surface, rng in cases(args.seed, ["mirror-pairs"],
                                                             args.buckets.split(","), surfaces):
             made = 0
-            for _ in range(4 * args.per_surface):
+            for _ in range(8 * args.per_surface):
                 if made == args.per_surface:
                     break
                 folds = rng.randint(lo, hi)

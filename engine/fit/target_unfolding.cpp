@@ -24,10 +24,9 @@ constexpr double kBendMarginDegrees = 0.5;
 constexpr double kLeastCrease = 0.003;
 // How far (of the diagonal, on average) an unfolding may end from the sheet and still lie on it.
 constexpr double kOffSheet = 1e-3;
-// The most whole-sheet folds an unfolding that ends off the sheet may leave (a rigid motion is at
-// most 4 reflections): counted to it, as it may be no copy at all (a curved sheet's wrong reading
-// can end smooth off it), so an unfolding on the sheet loses only to one that takes 4 fewer folds.
-constexpr double kMotionPlanes = 4.0;
+// The fewest whole-sheet folds an unfolding that ends off the sheet (on a rigid copy) leaves to
+// make: counted to it when unfoldings are ranked by their folds, and no branch read deeper.
+constexpr double kMotionPlanes = 1.0;
 // A smooth unfolding off the sheet (a rigid copy): how near (of the diagonal) the sheet must lie
 // on it, how many ways it is registered (the first: the sheet's own symmetries give the others;
 // 24 took minutes on a cylinder), and how near a motion must be to a kind of fewer planes
