@@ -205,7 +205,8 @@ int run(int argc, char** argv) {
                                       ? m
                                       : RigidMotion{m.linear * symmetries[s].linear,
                                                     m.linear * symmetries[s].offset + m.offset};
-          const RigidMotion left{flips.linear * way.linear, flips.linear * way.offset + flips.offset};
+          const RigidMotion left{flips.linear * way.linear,
+                                 flips.linear * way.offset + flips.offset};
           const std::size_t k = fewestReflections(left, 1e-4, 1e-4 * size);
           if (k < fewest) fewest = k, fewestSet = bits;
         }
