@@ -4,11 +4,13 @@
 // rigid copy of the sheet, every way the sheet lies on it, each also times each of the sheet's own
 // symmetries and with each fold read flipped, counted by the planes its kind takes.
 //
-//   build/bench/unfold_report TARGET.obj DESIGN.curvefold.json
+//   build/bench/unfold_report TARGET.obj DESIGN.curvefold.json [MAX_FOLDS]
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -18,6 +20,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
+#include "engine/geometry/fold_session.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 
@@ -30,10 +33,12 @@ bool samePlane(const ReflectionPlane& a, const ReflectionPlane& b, double size) 
 }
 
 int run(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: unfold_report TARGET.obj DESIGN.curvefold.json\n");
+  if (argc != 3 && argc != 4) {
+    std::fprintf(stderr, "usage: unfold_report TARGET.obj DESIGN.curvefold.json [MAX_FOLDS]\n");
     return 2;
   }
+  // As `fit --folds 8` reads (12 by default).
+  const std::size_t maxFolds = argc == 4 ? std::stoul(argv[3]) : 12;
   const TriangleMesh target = readObjMesh(argv[1]);
   const Design design = loadDesign(argv[2]);
   const Sheet initial = initialSheet(design);
@@ -55,6 +60,37 @@ int run(int argc, char** argv) {
                 design.folds[f].plane.normal.y, design.folds[f].plane.normal.z,
                 glm::dot(design.folds[f].plane.normal, design.folds[f].plane.point), found);
   }
+  // Each creasing fold's plane as the target holds it: moved by every later fold that moved the
+  // whole sheet (its plane missed it), as a reading of the target finds it.
+  std::vector<ReflectionPlane> seen;
+  {
+    std::vector<std::size_t> whole;
+    for (std::size_t f = 0; f < design.folds.size(); ++f) {
+      FoldSession before(initial), after(initial);
+      before.applyRecords({design.folds.begin(), design.folds.begin() + std::ptrdiff_t(f)});
+      after.applyRecords({design.folds.begin(), design.folds.begin() + std::ptrdiff_t(f + 1)});
+      const auto& a = before.fixed().positions;
+      const auto& b = after.fixed().positions;
+      bool all = a.size() == b.size();
+      for (std::size_t v = 0; all && v < a.size(); ++v)
+        all = glm::distance(design.folds[f].plane.reflect(a[v]), b[v]) < 1e-9 * size;
+      if (all) whole.push_back(f);
+    }
+    for (std::size_t f = 0; f < design.folds.size(); ++f) {
+      ReflectionPlane p = design.folds[f].plane;
+      for (std::size_t w : whole)
+        if (w > f) {
+          const ReflectionPlane& m = design.folds[w].plane;
+          const glm::dvec3 n = p.normal - 2.0 * glm::dot(p.normal, m.normal) * m.normal;
+          p = {m.reflect(p.point), n};
+        }
+      const bool isWhole = std::find(whole.begin(), whole.end(), f) != whole.end();
+      seen.push_back(p);
+      std::printf("fold %zu %s, as the target holds it: n=(%.3f %.3f %.3f) d=%.4f\n", f + 1,
+                  isWhole ? "moved the whole sheet" : "creases", p.normal.x, p.normal.y, p.normal.z,
+                  glm::dot(p.normal, p.point));
+    }
+  }
   for (std::size_t p = 0; p < planes.size(); ++p) {
     int fold = -1;
     for (std::size_t f = 0; f < design.folds.size(); ++f)
@@ -67,7 +103,7 @@ int run(int argc, char** argv) {
                                            ? std::vector<Isometry>{}
                                            : parseSymmetry(design.symmetry, initial).images();
   const auto unfoldingStarted = std::chrono::steady_clock::now();
-  const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, 12, {}, images);
+  const TargetUnfolding plan = unfoldTarget(target, sheet, threshold, maxFolds, {}, images);
   const double unfoldingSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - unfoldingStarted).count();
   const TriangleMesh unfolded{plan.unfolded, target.triangles};
@@ -79,9 +115,12 @@ int run(int argc, char** argv) {
     int fold = -1;
     for (std::size_t f = 0; f < design.folds.size(); ++f)
       if (samePlane(u.plane, design.folds[f].plane, size)) fold = int(f) + 1;
-    std::printf("  read n=(%.3f %.3f %.3f) d=%.4f = fold %d%s\n", u.plane.normal.x,
+    int held = -1;
+    for (std::size_t f = 0; f < seen.size(); ++f)
+      if (samePlane(u.plane, seen[f], size)) held = int(f) + 1;
+    std::printf("  read n=(%.3f %.3f %.3f) d=%.4f = fold %d, as held %d%s\n", u.plane.normal.x,
                 u.plane.normal.y, u.plane.normal.z, glm::dot(u.plane.normal, u.plane.point), fold,
-                u.wholeImage ? " (its image moved the whole sheet)" : "");
+                held, u.wholeImage ? " (its image moved the whole sheet)" : "");
   }
   if (plan.sharpLengthLeft < 0.01 * size) {
     const auto registering = std::chrono::steady_clock::now();
@@ -146,6 +185,34 @@ int run(int argc, char** argv) {
       }
     std::printf("  one fold read flipped, by kind (0-4 planes): %zu %zu %zu %zu %zu\n",
                 flippedKind[0], flippedKind[1], flippedKind[2], flippedKind[3], flippedKind[4]);
+    // Any set of folds read made from their other sides (the rest reflected in place of the
+    // piece, read in unfolding order): the copy moves by those reflections, and the motion left
+    // is that after the way. The fewest planes over every set, and the set.
+    std::size_t fewest = 99, fewestSet = 0;
+    const std::size_t n = plan.folds.size();
+    for (std::size_t bits = 0; bits < (std::size_t(1) << n) && n <= 10; ++bits) {
+      RigidMotion flips{glm::dmat3(1.0), glm::dvec3(0.0)};
+      for (std::size_t u = 0; u < n; ++u) {  // unfolding order: the last fold read first
+        if (!(bits >> u & 1)) continue;
+        const ReflectionPlane& p = plan.folds[n - 1 - u].plane;
+        const glm::dmat3 h = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
+        const RigidMotion r{h, 2.0 * glm::dot(p.normal, p.point) * p.normal};
+        flips = {flips.linear * r.linear, flips.linear * r.offset + flips.offset};
+      }
+      for (const RigidMotion& m : all)
+        for (std::size_t s = 0; s <= symmetries.size(); ++s) {
+          const RigidMotion way = s == symmetries.size()
+                                      ? m
+                                      : RigidMotion{m.linear * symmetries[s].linear,
+                                                    m.linear * symmetries[s].offset + m.offset};
+          const RigidMotion left{flips.linear * way.linear,
+                                 flips.linear * way.offset + flips.offset};
+          const std::size_t k = fewestReflections(left, 1e-4, 1e-4 * size);
+          if (k < fewest) fewest = k, fewestSet = bits;
+        }
+    }
+    std::printf("  any folds read flipped: fewest planes %zu, flipping (unfolding order) %zx\n",
+                fewest, fewestSet);
   }
   return 0;
 }

@@ -225,6 +225,91 @@ TEST(FitReading, WholeSheetFoldsBetweenCreasingFoldsFitWithinTheFolds) {
   EXPECT_TRUE(identical(replayFolds(t.initial, result.folds), session.fixed()));
 }
 
+// Issue 38's drag recipe on the square (seed 11 of bench/make_outer_third_targets.sh): five
+// creasing folds and a fourth that moved the whole sheet (its plane missed it). Unfolding ends
+// on a moved copy of the sheet whichever way it goes, and of the unfoldings that end smooth the
+// one nearest the sheet won, though none lies on it: one that read six folds, one plane twice (a
+// piece of one fold's part at a time), which with the copy's motion takes more than 8 folds. Of
+// smooth unfoldings, the fewest folds win, and deeper branches are not read on (the reading took
+// 75 s of wall, 17 s of CPU).
+TEST(FitReading, AnUnfoldingEndingOffTheSheetReadsNoMoreFoldsThanCrease) {
+  if (testing::kSanitized) GTEST_SKIP() << "a real search: about 5 s of CPU in Release";
+  const Sheet initial = makeSurface("square", {});
+  FoldSession folding(initial);
+  // Each fold: the point grabbed on the form, and where it was dropped (the design's records).
+  const glm::dvec3 drags[][2] = {
+      {{-0.0040403, 0.1, 0.0}, {-0.0592203, 0.0846003, 0.0546523}},
+      {{-0.0564710, -0.0861761, 0.0}, {-0.0955553, -0.0841662, 0.0274980}},
+      {{-0.0904131, 0.0566383, 0.0}, {-0.0642769, 0.0386392, -0.0192819}},
+      {{-0.0740598, -0.0869667, 0.0851646}, {-0.0695279, -0.0835831, 0.1871012}},  // whole
+      {{-0.0789742, -0.0909011, 0.2741217}, {-0.1197804, -0.0746314, 0.2425980}},
+      {{-0.1011377, -0.0503123, 0.2623251}, {-0.0612477, -0.1350647, 0.2747379}}};
+  for (const auto& drag : drags) {
+    folding.beginDragNear(drag[0]);
+    folding.updateDrag(drag[1]);
+    ASSERT_TRUE(folding.commit());
+  }
+  ASSERT_EQ(folding.foldCount(), 6u);
+  const TriangleMesh target = meshOf(folding.fixed());
+  const TriangleMesh sheet = meshOf(initial);
+  const TargetUnfolding plan = unfoldTarget(target, sheet, sharpEdgeThreshold(sheet), 8);
+  EXPECT_FALSE(plan.cutShort);
+  EXPECT_LE(plan.sharpLengthLeft, 1e-3 * boundingDiagonal(target));
+  EXPECT_EQ(plan.folds.size(), 5u);
+  for (std::size_t a = 0; a < plan.folds.size(); ++a)
+    for (std::size_t b = a + 1; b < plan.folds.size(); ++b) {
+      const ReflectionPlane& p = plan.folds[a].plane;
+      const ReflectionPlane& q = plan.folds[b].plane;
+      EXPECT_FALSE(std::abs(std::abs(glm::dot(p.normal, q.normal)) - 1.0) < 1e-6 &&
+                   std::abs(p.signedDistance(q.point)) < 1e-5 * boundingDiagonal(target))
+          << "folds " << a << " and " << b << " read one plane";
+    }
+}
+
+// Issue 38's drag recipe on the disk (seed 9 of bench/make_outer_third_targets.sh): eight folds,
+// the third and the sixth moving the whole sheet. The six creasing folds read with each crease's
+// piece reflected ended on a copy of the sheet whose motion took 3 or 4 planes whichever way the
+// disk lies on it (its 24 ways times its 479 symmetries): 6 + 3 folds, past the design's 8. Read
+// with the design's own sides, the motion left is the two whole-sheet folds': a turn, 2 planes.
+TEST(FitReading, AnUnfoldingOnACopyTakesTheSidesWhoseMotionNeedsFewestPlanes) {
+  if (testing::kSanitized) GTEST_SKIP() << "a real search: about 12 s of CPU in Release";
+  const Sheet initial = makeSurface("disk", {});
+  FoldSession folding(initial);
+  const glm::dvec3 drags[][2] = {
+      {{0.0191495, 0.0855649, 0.0}, {0.0730906, 0.0940977, 0.0547080}},
+      {{0.0865346, 0.0095576, 0.0149200}, {0.1225619, -0.0072420, 0.0569096}},
+      {{0.0801616, 0.0480743, 0.1723375}, {0.0073805, 0.0301980, 0.1677677}},  // whole
+      {{0.0527947, -0.0620372, 0.0550863}, {-0.0002876, -0.1061204, 0.1039591}},
+      {{0.0571863, -0.0938212, 0.1050113}, {0.0067033, -0.1193015, 0.1213786}},
+      {{0.0219326, -0.1018711, 0.1079264}, {0.0461892, -0.1121948, 0.0705744}},  // whole
+      {{0.0432615, -0.1087997, 0.0620937}, {-0.0029958, -0.1812841, 0.0834671}},
+      {{-0.0675186, -0.3113606, 0.0382409}, {-0.0587095, -0.2666990, 0.1066064}}};
+  for (const auto& drag : drags) {
+    folding.beginDragNear(drag[0]);
+    folding.updateDrag(drag[1]);
+    ASSERT_TRUE(folding.commit());
+  }
+  ASSERT_EQ(folding.foldCount(), 8u);
+  const TriangleMesh target = meshOf(folding.fixed());
+  const TriangleMesh sheet = meshOf(initial);
+  const double size = boundingDiagonal(target);
+  const TargetUnfolding plan = unfoldTarget(target, sheet, sharpEdgeThreshold(sheet), 8);
+  EXPECT_LE(plan.sharpLengthLeft, 1e-3 * size);
+  EXPECT_EQ(plan.folds.size(), 6u);
+  const std::vector<RigidMotion> ways =
+      registerSheetOntoAll(sheet, TriangleMesh{plan.unfolded, target.triangles}, 1e-4 * size, 24);
+  ASSERT_FALSE(ways.empty());
+  std::vector<RigidMotion> symmetries = sheetSymmetries(sheet, 1e-4 * size);
+  symmetries.emplace_back();
+  std::size_t fewest = 5;
+  for (const RigidMotion& way : ways)
+    for (const RigidMotion& sym : symmetries)
+      fewest = std::min(
+          fewest, fewestReflections({way.linear * sym.linear, way.linear * sym.offset + way.offset},
+                                    1e-4, 1e-4 * size));
+  EXPECT_LE(fewest, 2u);
+}
+
 // An unfolding longer than the fit's time (a symmetric disk's 8 folds, which leave it moved
 // whole: 600 orders tried, a minute) ran to the search's deadline and, cut short, answered
 // nothing: the whole time passed with no candidate scored and no fold kept. Cut short, it names

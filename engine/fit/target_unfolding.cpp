@@ -12,6 +12,7 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/whole_sheet_folds.hpp"
 
 namespace curvefold {
 namespace {
@@ -23,6 +24,16 @@ constexpr double kBendMarginDegrees = 0.5;
 constexpr double kLeastCrease = 0.003;
 // How far (of the diagonal, on average) an unfolding may end from the sheet and still lie on it.
 constexpr double kOffSheet = 1e-3;
+// The fewest whole-sheet folds an unfolding that ends off the sheet (on a rigid copy) leaves to
+// make: counted to it when unfoldings are ranked by their folds, and no branch read deeper.
+constexpr double kMotionPlanes = 1.0;
+// A smooth unfolding off the sheet (a rigid copy): how near (of the diagonal) the sheet must lie
+// on it, how many ways it is registered (the first: the sheet's own symmetries give the others;
+// 24 took minutes on a cylinder), and how near a motion must be to a kind of fewer planes
+// (radians, and of the diagonal) to count as it: as the fit makes its whole-sheet folds.
+constexpr double kCopyTolerance = 1e-4;
+constexpr std::size_t kCopyWays = 1;
+constexpr double kKindSnap = 1e-4;
 
 struct MeshEdge {
   std::uint32_t a = 0, b = 0;
@@ -145,6 +156,11 @@ struct Unfolder {
   const Deadline& deadline;
   const std::vector<Isometry>& images;  // a symmetric design's; empty: none
   std::size_t leaves = 0;               // unfoldings finished, to bound the branching
+  // The fewest folds an unfolding that ended smooth has taken, kMotionPlanes more where it ended
+  // off the sheet (a rigid copy: its motion takes whole-sheet folds): a branch deeper than
+  // that cannot win, and is not read on (a plane read twice, a piece of one fold's part at a
+  // time, reads more folds than the design made).
+  double smoothCost = kInfinitySharp;
   // The deadline passed: each unfolding under way ends where it is (its steps so far, read off
   // as a finished one is), and the best of those and of the finished ones is kept.
   bool cutShort = false;
@@ -265,8 +281,9 @@ struct Unfolder {
   // piece each time, the unfolding with the rest reflected at a set of steps is the same one
   // moved by those steps' reflections in order (each later step's plane moved by the earlier
   // ones), so every choice is read off at the end: the one that ends on the sheet wins.
+  // `forced`: the sides chosen already (sidesForFewestPlanes), made as they are.
   TargetUnfolding bestSides(const std::vector<Step>& steps, const std::vector<glm::dvec3>& unfolded,
-                            double sharp) const {
+                            double sharp, const std::vector<char>* forced = nullptr) const {
     const std::size_t n = steps.size();
     std::vector<glm::dvec3> probe;
     for (std::size_t v = 0; v < unfolded.size(); v += 1 + unfolded.size() / 200)
@@ -300,7 +317,9 @@ struct Unfolder {
     };
     // Past the deadline (an unfolding cut short ends here), the quick choice below, in two rounds.
     const bool late = deadline.passed();
-    if (n <= kExhaustiveSides && !late) {
+    if (forced) {
+      bestRest = *forced;
+    } else if (n <= kExhaustiveSides && !late) {
       std::uint32_t allowed = 0;
       for (std::size_t u = 0; u < n; ++u)
         if (steps[u].restReplayable) allowed |= 1u << u;
@@ -330,7 +349,7 @@ struct Unfolder {
     WholeImage bestImage;  // used where imageFound
     bool imageFound = false;
     const double offSheetLimit = kOffSheet * diagonal * static_cast<double>(probe.size());
-    if (bestOff > offSheetLimit && !images.empty() && n <= kImageSteps) {
+    if (!forced && bestOff > offSheetLimit && !images.empty() && n <= kImageSteps) {
       std::uint32_t allowed = 0;
       for (std::size_t u = 0; u < n; ++u)
         if (steps[u].restReplayable) allowed |= 1u << u;
@@ -374,7 +393,7 @@ struct Unfolder {
     // nearest it says nothing. The pieces then (each step's smaller side moved), so the largest
     // part stays and the folds read are the folds made (a symmetric design's read as the images
     // of one another); the whole motion is found apart (whole_sheet_folds.hpp).
-    if (bestOff > offSheetLimit) bestRest.assign(n, 0);
+    if (!forced && bestOff > offSheetLimit) bestRest.assign(n, 0);
     TargetUnfolding result;
     Motion motion;
     for (std::size_t u = 0; u < n; ++u) {
@@ -396,18 +415,117 @@ struct Unfolder {
     return result;
   }
 
+  // An unfolding, and what it was read off: its steps, where the target lies with every step's
+  // piece reflected, and the crease left.
+  struct Read {
+    TargetUnfolding unfolding;
+    std::vector<Step> steps;
+    std::vector<glm::dvec3> positions;
+    double sharp = 0.0;
+  };
+
+  bool smooth(const TargetUnfolding& u) const {
+    return u.sharpLengthLeft < kLeastCrease * diagonal;
+  }
+  bool onSheet(double off) const { return off <= kOffSheet * diagonal; }
+
+  // An unfolding ended: where it ends smooth, the fewest folds so far are noted.
+  Read leaf(const std::vector<Step>& steps, const std::vector<glm::dvec3>& positions,
+            double sharp) {
+    Read read{bestSides(steps, positions, sharp), steps, positions, sharp};
+    const TargetUnfolding& result = read.unfolding;
+    if (smooth(result))
+      smoothCost =
+          std::min(smoothCost, static_cast<double>(result.folds.size()) +
+                                   (onSheet(offSheet(result.unfolded)) ? 0.0 : kMotionPlanes));
+    return read;
+  }
+
+  // A smooth unfolding that ends off the sheet ends on a rigid copy of it, whose motion the fit
+  // makes as whole-sheet folds; which side of each crease was reflected moves the copy by that
+  // crease's plane (bestSides), one plane more or fewer. Where no choice ends on the sheet, the
+  // sides whose copy's motion takes the fewest planes (of every way the sheet lies on it, times
+  // its own symmetries), then the fewest rests: a design's folds with their own sides leave the
+  // motion its whole-sheet folds made. Nothing where it ends on the sheet, or is not smooth.
+  std::optional<std::vector<char>> sidesForFewestPlanes(const Read& read,
+                                                        const TriangleMesh& sheet) const {
+    const std::size_t n = read.steps.size();
+    if (n == 0 || n > kExhaustiveSides || !smooth(read.unfolding) ||
+        onSheet(offSheet(read.unfolding.unfolded)) || deadline.passed())
+      return std::nullopt;
+    const double tolerance = kCopyTolerance * diagonal;
+    const std::vector<RigidMotion> ways = registerSheetOntoAll(
+        sheet, TriangleMesh{read.positions, target.triangles}, tolerance, kCopyWays, deadline);
+    if (ways.empty()) return std::nullopt;
+    std::vector<RigidMotion> symmetries = sheetSymmetries(sheet, tolerance);
+    symmetries.emplace_back();       // the identity
+    std::vector<RigidMotion> lying;  // every way times every symmetry: x -> way(s(x))
+    for (const RigidMotion& way : ways)
+      for (const RigidMotion& sym : symmetries)
+        lying.push_back({way.linear * sym.linear, way.linear * sym.offset + way.offset});
+    std::uint32_t allowed = 0;
+    for (std::size_t u = 0; u < n; ++u)
+      if (read.steps[u].restReplayable) allowed |= 1u << u;
+    std::size_t fewest = 5, fewestRests = n + 1;
+    std::uint32_t chosen = 0;
+    for (std::uint32_t bits = 0; bits < (1u << n) && !deadline.passed(); ++bits) {
+      if (bits & ~allowed) continue;
+      const std::size_t rests = static_cast<std::size_t>(std::popcount(bits));
+      RigidMotion flips;  // the copy moved by each rest's reflection, as bestSides makes it
+      for (std::size_t u = 0; u < n; ++u) {
+        if (!(bits >> u & 1u)) continue;
+        const ReflectionPlane& p = read.steps[u].plane;
+        const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
+        flips = {flips.linear * mirror,
+                 flips.linear * (2.0 * glm::dot(p.point, p.normal) * p.normal) + flips.offset};
+      }
+      for (const RigidMotion& way : lying) {
+        const std::size_t planes =
+            fewestReflections({flips.linear * way.linear, flips.linear * way.offset + flips.offset},
+                              kKindSnap, kKindSnap * diagonal);
+        if (planes < fewest || (planes == fewest && rests < fewestRests)) {
+          fewest = planes;
+          fewestRests = rests;
+          chosen = bits;
+        }
+      }
+    }
+    if (chosen == 0) return std::nullopt;  // the pieces, as read
+    std::vector<char> rest(n, 0);
+    for (std::size_t u = 0; u < n; ++u) rest[u] = chosen >> u & 1u;
+    return rest;
+  }
+
+  // Which of two unfoldings wins: the one that takes away more creases; of smooth ones, the one
+  // that takes fewer folds (kMotionPlanes more where it ends off the sheet); then the one on the
+  // sheet, then the one closer to it.
+  bool better(const TargetUnfolding& a, double offA, const TargetUnfolding& b, double offB) const {
+    if (a.sharpLengthLeft < b.sharpLengthLeft - kLeastCrease * diagonal) return true;
+    if (a.sharpLengthLeft > b.sharpLengthLeft + kLeastCrease * diagonal) return false;
+    if (!smooth(a) || !smooth(b)) return offA < offB;  // stopped short alike: the closer
+    const double costA =
+        static_cast<double>(a.folds.size()) + (onSheet(offA) ? 0.0 : kMotionPlanes);
+    const double costB =
+        static_cast<double>(b.folds.size()) + (onSheet(offB) ? 0.0 : kMotionPlanes);
+    if (costA != costB) return costA < costB;
+    if (onSheet(offA) != onSheet(offB)) return onSheet(offA);
+    return offA < offB;
+  }
+
   // Unfolds from `positions` (the steps so far in `steps`); returns the best unfolding.
-  TargetUnfolding unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
+  Read unfold(std::vector<glm::dvec3> positions, std::vector<Step> steps, double sharp) {
     std::vector<Candidate> candidates;
-    if (outOfTime()) return bestSides(steps, positions, sharp);
-    if (steps.size() < maxFolds) candidates = candidatesAt(positions);
-    if (outOfTime()) return bestSides(steps, positions, sharp);
+    if (outOfTime()) return leaf(steps, positions, sharp);
+    // One step more would take more folds than an unfolding already found smooth.
+    const bool deeper = static_cast<double>(steps.size()) + 1.0 <= smoothCost;
+    if (steps.size() < maxFolds && deeper) candidates = candidatesAt(positions);
+    if (outOfTime()) return leaf(steps, positions, sharp);
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
     if (candidates.empty() || !(least < sharp - kLeastCrease * diagonal)) {
       ++leaves;
-      return bestSides(steps, positions, sharp);
+      return leaf(steps, positions, sharp);
     }
     // The pieces that take away a crease, best first (the most crease gone, then the smallest
     // piece), one per plane and at most kChoicesPerStep: the fold made last need not have the
@@ -431,7 +549,7 @@ struct Unfolder {
       });
       if (!samePlane) choices.push_back(c);
     }
-    TargetUnfolding best;
+    Read best;
     double bestOff = kInfinitySharp;
     bool first = true;
     for (const Candidate* chosen : choices) {
@@ -464,12 +582,9 @@ struct Unfolder {
       step.restReplayable = lowest > -1e-4 * diagonal || highest < 1e-4 * diagonal;
       std::vector<Step> more = steps;
       more.push_back(step);
-      TargetUnfolding result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
-      const double off = offSheet(result.unfolded);
-      // The unfolding that takes away more creases, then the one that ends on the sheet.
-      if (first || result.sharpLengthLeft < best.sharpLengthLeft - kLeastCrease * diagonal ||
-          (result.sharpLengthLeft <= best.sharpLengthLeft + kLeastCrease * diagonal &&
-           off < bestOff)) {
+      Read result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
+      const double off = offSheet(result.unfolding.unfolded);
+      if (first || better(result.unfolding, off, best.unfolding, bestOff)) {
         best = std::move(result);
         bestOff = off;
       }
@@ -477,7 +592,8 @@ struct Unfolder {
       // On the sheet, with less crease left than one step must take away (so none could take
       // more, and what is left is the sheet's own bends, or a flap laid on it): the target's
       // folds, read whole. Nothing later wins but by lying closer still.
-      if (best.sharpLengthLeft < kLeastCrease * diagonal && bestOff <= 1e-5 * diagonal) break;
+      if (best.unfolding.sharpLengthLeft < kLeastCrease * diagonal && bestOff <= 1e-5 * diagonal)
+        break;
     }
     return best;
   }
@@ -509,7 +625,12 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
       symmetryImages};
   const double sharp =
       sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
-  TargetUnfolding unfolding = unfolder.unfold(target.positions, {}, sharp);
+  const Unfolder::Read read = unfolder.unfold(target.positions, {}, sharp);
+  TargetUnfolding unfolding = read.unfolding;
+  // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
+  if (symmetryImages.empty())
+    if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
+      unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
   unfolding.cutShort = unfolder.outOfTime();
   return unfolding;
 }

@@ -17,8 +17,13 @@
 // reflection of the whole apart; of every such choice along an unfolding, one whose result lies
 // on the initial sheet is kept (the part that never moved stays where the sheet is), with rests
 // only where the rest lies whole on one side of the plane (a drag moves no other) and as few as
-// may be (a symmetric sheet lies on itself several ways); the unfolding that ends closest to the
-// sheet wins.
+// may be (a symmetric sheet lies on itself several ways). Of the unfoldings that end smooth, the
+// one with the fewest folds wins (one more counted where it ends off the sheet, on a rigid copy of
+// it that whole-sheet folds must move), then the one on the sheet, then the closest to it; no
+// branch is read deeper than that. One that ends on a copy (no symmetryImages) takes the sides
+// whose copy's motion needs the fewest planes (the sheet registered onto it, times its own
+// symmetries: whole_sheet_folds.hpp), then the fewest rests. Of unfoldings that stop short alike,
+// the closest to the sheet wins.
 //
 // Known limits: a target must carry its creases as mesh edges (a folded sheet written as a mesh
 // does; a remeshed scan does not); a crease whose faces meet at less than the sharp-edge
