@@ -67,9 +67,13 @@ void hingeForce(uint j) {
     gb = -tc * gc - td * gd;
   }
   angles[j] = angle;
-  const vec4 hinge4 = hingeParameters[j];  // target, driven, stiffness
+  const vec4 hinge4 = hingeParameters[j];  // target, driven, stiffness, signed one-sided stiffness
   const float target = hinge4.y != 0.0 ? hinge4.x * step.foldAmount : hinge4.x;
-  const float torque = -hinge4.z * (angle - target);
+  // A crease kept on its side of flat and short of passing flat-folded (hinge_kernel.hpp's
+  // wrongSideExcess): q along its side, the distance past 0 or pi, times its one-sided stiffness.
+  const float q = sign(hinge4.w) * angle;
+  const float excess = min(q, 0.0) + max(q - kPi, 0.0);
+  const float torque = -(hinge4.z * (angle - target) + hinge4.w * excess);
   const uint slot = hingeSlot0() + 4u * j;
   slotForces[slot] = vec4(torque * ga, 0.0);
   slotForces[slot + 1u] = vec4(torque * gb, 0.0);

@@ -27,7 +27,8 @@ layout(std430, binding = 1) buffer Velocities { vec4 velocities[]; };
 layout(std430, binding = 2) buffer Angles { float angles[]; };  // unwrapped, last step's
 layout(std430, binding = 3) buffer SlotForces { vec4 slotForces[]; };
 // The model: bars (a, b) and (rest length, stiffness, damping, 0); hinges (a, b, c, d) and
-// (target at fold amount 1, driven 1 or 0, stiffness, 0); glue (a, b); per vertex (first gather
+// (target at fold amount 1, driven 1 or 0, stiffness, the crease's one-sided stiffness signed by
+// its side: bar_hinge_model.hpp's hingeWrongSide); glue (a, b); per vertex (first gather
 // slot, past the last, pinned, mass's float bits); the gather list.
 layout(std430, binding = 4) readonly buffer Bars { uvec2 bars[]; };
 layout(std430, binding = 5) buffer BarParameters { vec4 barParameters[]; };

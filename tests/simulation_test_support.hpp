@@ -37,6 +37,23 @@ inline void addEdges(CreasePattern& pattern,
   }
 }
 
+// The judge's square twist (bench/make_judge_patterns.py's fold_square_twist_polygons.fold, as
+// written: its pentagons' triangles include slivers that sliver bridges cross): quads and pentagons
+// traced, M/V with no angles (so +-180 degrees at 100%), a pattern that cannot fold with rigid
+// faces. FOLD text.
+inline const char* squareTwistFold() {
+  return R"({"file_spec":1.1,"vertices_coords":[[0.6352990250365493,0.8266407412190941],[0.173359258)"
+         R"(78090586,0.6352990250365493],[0.36470097496345055,0.1733592587809059],[0.826640741219094)"
+         R"(1,0.36470097496345055],[0.0,0.5634912688865511],[1.0,0.9777048312596459],[0.436508731113)"
+         R"(4488,0.0],[0.02229516874035417,1.0],[1.0,0.4365087311134487],[0.0,0.022295168740354365],)"
+         R"([0.5634912688865511,1.0],[0.9777048312596458,0.0],[0.0,0.0],[1.0,0.0],[1.0,1.0],[0.0,1.0)"
+         R"(]],"edges_vertices":[[0,1],[1,2],[2,3],[0,3],[1,4],[0,5],[2,6],[1,7],[3,8],[2,9],[0,10],)"
+         R"([3,11],[6,12],[6,11],[11,13],[8,13],[5,8],[5,14],[10,14],[7,10],[7,15],[4,15],[4,9],[9,1)"
+         R"(2]],"edges_assignment":["V","V","V","V","M","V","M","V","M","V","M","V","B","B","B","B",)"
+         R"("B","B","B","B","B","B","B","B"],"faces_vertices":[[0,1,2,3],[1,0,10,7],[2,1,4,9],[3,2,6)"
+         R"(,11],[0,3,8,5],[4,1,7,15],[0,5,14,10],[6,2,9,12],[8,3,11,13]]})";
+}
+
 // A side x side square of cells x cells squares (each split by a diagonal, alternating), with a
 // straight crease along x = creaseColumn * side / cells folded to `degrees` (FOLD sign).
 inline CreasePattern creasedSquare(int cells, int creaseColumn, double degrees, double side = 1.0) {

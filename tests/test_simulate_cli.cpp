@@ -78,7 +78,7 @@ TEST_F(SimulateCli, BadOptionsAreOneLineAndWriteNothing) {
        {"--percent 120 --obj s.obj", "--percent nan --obj s.obj", "--percent 0:100:1 --obj s.obj",
         "--percent 50 --paper 0 --obj s.obj", "--percent 50 --glue 0,0 --obj s.obj", "--percent 50",
         "--percent 50 --obj s.obj --fold missing-folder/s.fold",
-        "--percent 50 --stiffness soft --obj s.obj",
+        "--percent 50 --stiffness soft --obj s.obj", "--percent 50 --crease-side -1 --obj s.obj",
         "--percent 50 --stiffness origami-simulator --paper 0.1 --obj s.obj"}) {
     const CommandResult result = run("simulate s.curvefold.json " + options);
     EXPECT_EQ(result.exitCode, 1) << options;
@@ -148,8 +148,9 @@ TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
       {"simulate s.curvefold.json --obj s.obj --percent", "--percent"},
       {base + "--bogus", "--bogus"},
       {base + "--steps x", "--steps"}};
-  for (const char* option : {"--steps", "--paper", "--stiffness", "--modulus", "--pin", "--glue",
-                             "--fold", "--gltf", "--png", "--frames", "--color", "--gif"})
+  for (const char* option :
+       {"--steps", "--paper", "--stiffness", "--modulus", "--pin", "--glue", "--fold", "--gltf",
+        "--png", "--frames", "--color", "--gif", "--crease-side"})
     cases.emplace_back(base + option, option);
   cases.emplace_back("simulate s.curvefold.json --percent 50 --png s.png --color", "--color");
   cases.emplace_back("simulate s.curvefold.json --percent 50 --color --png s.png", "--color");

@@ -273,6 +273,7 @@ void addSimulateCommand(CLI::App& app) {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
     bool settle = false, verbose = false, gpu = false, motion = false, noContact = false;
     double paperMm = 0.0, modulusGpa = 4.0, sizeMm = 0.0;
+    double creaseSide = ModelOptions{}.wrongSideScale;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
   };
@@ -306,6 +307,10 @@ void addSimulateCommand(CLI::App& app) {
       "--stiffness", options->stiffness,
       "Design mode's stiffnesses: `curvefold` (default: stiff bars and facets, soft creases) or "
       "`origami-simulator` (Origami Simulator's: axial 20, crease 0.7, facet 0.7)");
+  command->add_option("--crease-side", options->creaseSide,
+                      "Stiffness that keeps each crease on its side of flat and short of "
+                      "passing flat-folded, times a facet's (default 10; 0: off, the "
+                      "symmetric crease energy alone)");
   CLI::Option* size = command->add_option(
       "--size", options->sizeMm,
       "A crease pattern's larger side in mm (default: as its file states; an SVG's px at 96 per "
@@ -379,6 +384,9 @@ void addSimulateCommand(CLI::App& app) {
             "--stiffness: sets design mode's stiffnesses; --paper takes paper's, "
             "name one");
     }
+    if (!(options->creaseSide >= 0.0 && options->creaseSide <= 1e4))
+      throw UsageError("--crease-side: must be from 0 to 10000");
+    modelOptions.wrongSideScale = options->creaseSide;
     if (paper->count()) {
       if (!(options->paperMm > 0.0 && options->paperMm <= 10.0))
         throw UsageError("--paper: the thickness must be above 0 and at most 10 mm");
@@ -529,19 +537,24 @@ void addSimulateCommand(CLI::App& app) {
       const std::string crossingText =
           crossing == 0 ? "none" : std::to_string(crossing) + " triangle pairs cross";
       // Creases folded to the other side of flat than their targets (more than half a degree):
-      // a mountain folded as a valley, which paper folding the printed pattern would not do.
-      const std::vector<double> targets = hingeTargets(model, amount);
+      // a mountain folded as a valley, which paper folding the printed pattern would not do; and
+      // creases folded past flat-folded (through the paper), as the unwrapped angle tells.
       const std::vector<double> angles = state.hingeAngles.size() == model.hinges.size()
                                              ? state.hingeAngles
                                              : hingeAngles(model, state.positions);
-      std::size_t wrongWay = 0;
-      for (std::size_t j = 0; j < model.hinges.size(); ++j)
-        if (model.hingeCrease[j] && angles[j] * targets[j] < 0.0 &&
-            std::abs(angles[j]) > 0.5 * std::numbers::pi / 180.0)
-          ++wrongWay;
-      const std::string wrongWayText =
+      std::size_t wrongWay = 0, pastFlat = 0;
+      constexpr double kHalfDegree = 0.5 * std::numbers::pi / 180.0;
+      for (std::size_t j = 0; j < model.hinges.size(); ++j) {
+        if (!model.hingeCrease[j] || model.hingeTarget[j] == 0.0) continue;
+        const double along = (model.hingeTarget[j] > 0.0 ? 1.0 : -1.0) * angles[j];
+        if (along < -kHalfDegree) ++wrongWay;
+        if (along > std::numbers::pi + kHalfDegree) ++pastFlat;
+      }
+      std::string wrongWayText =
           wrongWay == 0 ? ""
                         : ", " + std::to_string(wrongWay) + " creases on the wrong side of flat";
+      if (pastFlat > 0)
+        wrongWayText += ", " + std::to_string(pastFlat) + " creases past flat-folded";
       char line[384];
       std::snprintf(line, sizeof line,
                     "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "

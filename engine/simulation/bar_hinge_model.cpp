@@ -181,6 +181,12 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
   const double sliver =
       std::min(1.0, 4.0 * std::min(in.area[s.left], in.area[s.right]) / (length * length));
   double stiffness = 0.0;
+  // The stiffness a facet hinge of this edge would have: the one-sided term's unit.
+  const double facetLike =
+      (paperMode ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) * sliver;
+  double wrongSide = 0.0;
+  if (crease && targetDegrees != 0.0)
+    wrongSide = (targetDegrees > 0.0 ? 1.0 : -1.0) * in.options.wrongSideScale * facetLike;
   if (crease) {
     stiffness = (paperMode ? in.bendingStiffness * length / paper.creaseLength
                            : in.options.creaseStiffness * length) *
@@ -190,8 +196,7 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
       shapeDegrees = targetDegrees;  // the design's bending, where glue must close a slit
       targetDegrees = 0.0;           // paper's rest state is flat
     }
-    stiffness =
-        (paperMode ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) * sliver;
+    stiffness = facetLike;
   }
   model.hinges.push_back(hinge);
   model.hingeEdge.push_back(static_cast<std::uint32_t>(e));
@@ -201,6 +206,7 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
   model.hingeCrease.push_back(crease ? 1 : 0);
   model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
   model.hingeStiffness.push_back(stiffness);
+  model.hingeWrongSide.push_back(wrongSide);
 }
 
 // A bar per edge, in the pattern's edge order, and a hinge per interior edge; returns the
@@ -297,10 +303,18 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
       glm::dvec3 wing = flat[farWing];
       double sum = 0.0;
       bool crease = false, driven = false;
+      // The side of the creases crossed (+1 valley, -1 mountain; 0 for none, or both kinds).
+      double creaseSide = 0.0;
+      bool mixedSides = false;
       for (std::size_t i = path.size(); i-- > 0;) {
         const Hinge& h = model.hinges[path[i]];
         const double target = model.hingeTarget[path[i]];
         sum += target;
+        if (model.hingeWrongSide[path[i]] != 0.0) {
+          const double sideHere = model.hingeWrongSide[path[i]] > 0.0 ? 1.0 : -1.0;
+          mixedSides = mixedSides || (creaseSide != 0.0 && creaseSide != sideHere);
+          creaseSide = sideHere;
+        }
         crease = crease || model.hingeCrease[path[i]];
         driven = driven || model.hingeDriven[path[i]];
         const glm::dvec3 axis = glm::normalize(flat[h.b] - flat[h.a]);
@@ -349,6 +363,13 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
       model.hingeCrease.push_back(0);  // the crossed creases report their own angle errors
       model.hingeDriven.push_back(driven ? 1 : 0);
       model.hingeStiffness.push_back(base * std::min(1.0, 2.0 * weakest));
+      // The crossed creases' one-sided term moves onto the bridge, which now holds their angle
+      // (a square twist's valley crossed so was free to fold as a mountain).
+      const double facetLike =
+          (in.paperMode() ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) *
+          std::min(1.0, 2.0 * weakest);
+      model.hingeWrongSide.push_back(
+          mixedSides ? 0.0 : creaseSide * in.options.wrongSideScale * facetLike);
       for (std::uint32_t k : path) crossed[k] = 1;
     }
   for (std::size_t j = 0; j < hingeCount; ++j)
@@ -497,8 +518,8 @@ double modelEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& po
     const Hinge& h = model.hinges[j];
     const double angle = hingeAngle(positions[h.a], positions[h.b], positions[h.c], positions[h.d],
                                     previous.empty() ? 0.0 : previous[j]);
-    const double error = angle - targets[j];
-    energy += 0.5 * model.hingeStiffness[j] * error * error;
+    energy += hinge_kernel::hingeEnergy(angle, targets[j], model.hingeStiffness[j],
+                                        model.hingeWrongSide[j]);
   }
   for (const auto& [i, k] : model.glue) {
     const glm::dvec3 gap = positions[i] - positions[k];
@@ -557,6 +578,18 @@ double modelEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec
                                        moved[h.d] - p[3]};
     const double dTheta = hingeAngleChange(p, dp);
     change += 0.5 * model.hingeStiffness[j] * dTheta * (2.0 * (angles[j] - targets[j]) + dTheta);
+    const double wrongSide = model.hingeWrongSide[j];
+    if (wrongSide != 0.0) {
+      // The one-sided term's change: the expanded form within one piece (past flat, or past
+      // flat-folded), else the difference of its values.
+      const double before = hinge_kernel::wrongSideExcess(angles[j], wrongSide);
+      const double after = hinge_kernel::wrongSideExcess(angles[j] + dTheta, wrongSide);
+      const double side = wrongSide > 0.0 ? 1.0 : -1.0;
+      const double dq = side * dTheta;
+      const bool samePiece = (before < 0.0 && after < 0.0) || (before > 0.0 && after > 0.0);
+      change += 0.5 * std::abs(wrongSide) *
+                (samePiece ? dq * (2.0 * before + dq) : after * after - before * before);
+    }
   }
   for (const auto& pair : model.glue) {
     const glm::dvec3 gap = positions[pair[0]] - positions[pair[1]];
@@ -598,7 +631,8 @@ void elementForces(const BarHingeModel& model, const std::vector<glm::dvec3>& po
       const double angle = angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d],
                                              previousAngles ? previousAngles[j] : 0.0, gradient);
       angleOut[j] = angle;
-      const double torque = -model.hingeStiffness[j] * (angle - targets[j]);
+      const double torque = -hinge_kernel::hingeMoment(angle, targets[j], model.hingeStiffness[j],
+                                                       model.hingeWrongSide[j]);
       glm::dvec3* slot = forces + model.hingeSlot0 + 4 * j;
       for (int k = 0; k < 4; ++k) slot[k] = torque * gradient[k];
     } else {

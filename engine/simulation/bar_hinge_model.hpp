@@ -7,7 +7,11 @@
 // keep the faces stiff (design mode) or bend with paper's stiffness (paper mode).
 //
 // Energy: bars 1/2 k (l - L)^2, hinges 1/2 k (theta - target)^2, glued vertex pairs 1/2 k |xi -
-// xj|^2; pinned vertices do not move. The dihedral angle theta is the FOLD convention of
+// xj|^2; pinned vertices do not move. A crease also resists leaving its side of flat: along its
+// side (q = theta for a valley, -theta for a mountain) it adds 1/2 kw q^2 below 0 and
+// 1/2 kw (q - pi)^2 past pi, kw ten facets' stiffness by default (ModelOptions::wrongSideScale),
+// so a mountain stays a mountain as paper's does, and the sheet bends instead where the pattern
+// cannot fold with rigid faces. The dihedral angle theta is the FOLD convention of
 // creases.hpp (positive valley), tracked through +-180 degrees by unwrapping against the last
 // known angle (hingeAngle's `previous`).
 //
@@ -78,6 +82,12 @@ struct ModelOptions {
   double axialStiffness = 2000.0;
   double facetStiffness = 200.0;
   double creaseStiffness = 1.0;
+  // A crease's one-sided term (hinge_kernel.hpp's wrongSideExcess): stiffness against passing
+  // through flat to the other side of its target, or past flat-folded, as this many times the
+  // stiffness a facet hinge of the same edge would have (design: facetStiffness x length; paper:
+  // the bending edges'), so the sheet bends its facets rather than fold a mountain as a valley
+  // (the square twist, which cannot fold with rigid faces). 0: off (the symmetric energy alone).
+  double wrongSideScale = 10.0;
   std::vector<std::uint32_t> pins;                            // vertices held where they start
   std::vector<std::pair<std::uint32_t, std::uint32_t>> glue;  // vertex pairs pulled together
   ContactOptions contact;  // paper mode's self-contact (contact.hpp)
@@ -121,6 +131,9 @@ struct BarHingeModel {
   std::vector<std::uint8_t> hingeCrease;  // 1: a crease (Mountain or Valley)
   std::vector<std::uint8_t> hingeDriven;  // 1: target scaled by the fold amount
   std::vector<double> hingeStiffness;     // per radian^2
+  // Per hinge, the one-sided term's stiffness (per radian^2) signed by the crease's side (+
+  // valley, - mountain; the sign of hingeTarget); 0 for facets, bridges and the hinges bridged.
+  std::vector<double> hingeWrongSide;
 
   std::vector<std::array<std::uint32_t, 2>> glue;
   double glueStiffness = 0.0;

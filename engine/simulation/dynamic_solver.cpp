@@ -23,7 +23,8 @@ double stableTimeStep(const BarHingeModel& model) {
     for (const glm::dvec3& g : gradient) sum += glm::length(g);
     const std::uint32_t vertices[4] = {h.a, h.b, h.c, h.d};
     for (int k = 0; k < 4; ++k)
-      stiffness[vertices[k]] += model.hingeStiffness[j] * glm::length(gradient[k]) * sum;
+      stiffness[vertices[k]] += (model.hingeStiffness[j] + std::abs(model.hingeWrongSide[j])) *
+                                glm::length(gradient[k]) * sum;
   }
   for (const auto& pair : model.glue)
     for (std::uint32_t v : pair) stiffness[v] += 2.0 * model.glueStiffness;
@@ -106,7 +107,8 @@ constexpr std::size_t kHingeLanes = 8;
 // through angleWithGradient alone; each hinge's bits are angleWithGradient's either way.
 CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, const glm::dvec3* x,
                                       double* angles, const double* stiffness, const double* target,
-                                      const std::uint32_t* scatter, glm::dvec3* forces) {
+                                      const double* wrongSide, const std::uint32_t* scatter,
+                                      glm::dvec3* forces) {
   constexpr std::size_t kLanes = kHingeLanes;
   alignas(64) double in[12][kLanes], previous[kLanes], torque[kLanes];
   alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
@@ -141,7 +143,7 @@ CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, co
           hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k], gradient);
     }
     angles[k] = angle[k];
-    torque[k] = -stiffness[k] * (angle[k] - target[k]);
+    torque[k] = -hinge_kernel::hingeMoment(angle[k], target[k], stiffness[k], wrongSide[k]);
     for (int v = 0; v < 4; ++v) forces[scatter[4 * k + v]] = torque[k] * gradient[v];
   }
 }
@@ -163,6 +165,7 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
   const double* barDamping = model.barDamping.data();
   const Hinge* hinges = model.hinges.data();
   const double* hingeStiffness = model.hingeStiffness.data();
+  const double* hingeWrongSide = model.hingeWrongSide.data();
   const double* target = targets.data();
   const std::size_t barCount = model.bars.size(), hingeCount = model.hinges.size();
   const std::size_t hingeEnd = barCount + hingeCount;
@@ -176,7 +179,8 @@ void scatterElementForces(const BarHingeModel& model, const std::vector<double>&
     const std::size_t hingeStop = std::max(std::min(end, hingeEnd), barCount) - barCount;
     for (std::size_t j0 = hingeBegin; j0 < hingeStop; j0 += kHingeLanes)
       hingeLanes(hinges + j0, std::min(kHingeLanes, hingeStop - j0), x, angles + j0,
-                 hingeStiffness + j0, target + j0, hingeScatter + 4 * j0, forces);
+                 hingeStiffness + j0, target + j0, hingeWrongSide + j0, hingeScatter + 4 * j0,
+                 forces);
     for (std::size_t e = std::max(begin, hingeEnd); e < end; ++e) {
       const std::size_t g = e - hingeEnd;
       const std::uint32_t a = model.glue[g][0], b = model.glue[g][1];

@@ -145,6 +145,34 @@ constexpr double kSmallestProduct = 1e-290, kLargestProduct = 1e290;
   return unwrapAgainst(raw, previous);
 }
 
+// A crease may not pass through the flat state to the other side (a mountain folded as a valley),
+// nor past its flat-folded state (through the paper): along its side (q = side x angle, side +1
+// for a valley, -1 for a mountain) the crease's energy gains 1/2 |wrongSide| q^2 below q = 0 and
+// 1/2 |wrongSide| (q - pi)^2 above q = pi, zero between (bar_hinge_model.hpp). wrongSide is the
+// signed stiffness of that term (its sign the crease's side; 0: none, as for facets); the
+// distance past either bound, signed along the angle, is returned, so that the term's moment
+// d/dtheta is wrongSide x it. Without a branch (the hinge loop vectorizes).
+[[gnu::always_inline]] inline double wrongSideExcess(double angle, double wrongSide) {
+  const double side = wrongSide > 0.0 ? 1.0 : (wrongSide < 0.0 ? -1.0 : 0.0);
+  const double q = side * angle;
+  const double below = q < 0.0 ? q : 0.0;
+  const double above = q > std::numbers::pi ? q - std::numbers::pi : 0.0;
+  return below + above;
+}
+
+// The hinge energy's moment dE/dtheta: stiffness (angle - target) plus the one-sided term's
+// (wrongSideExcess). For wrongSide 0 the same bits as stiffness (angle - target) alone.
+[[gnu::always_inline]] inline double hingeMoment(double angle, double target, double stiffness,
+                                                 double wrongSide) {
+  return stiffness * (angle - target) + wrongSide * wrongSideExcess(angle, wrongSide);
+}
+
+// The hinge's energy: 1/2 stiffness (angle - target)^2 and the one-sided term.
+inline double hingeEnergy(double angle, double target, double stiffness, double wrongSide) {
+  const double error = angle - target, excess = wrongSideExcess(angle, wrongSide);
+  return 0.5 * stiffness * error * error + 0.5 * std::abs(wrongSide) * excess * excess;
+}
+
 // A bar's force on its first end a (delta = b - a): stiffness (length - rest) plus damping times
 // the ends' relative speed along it (dampingTimesSpeed: damping x (vb - va)), along delta.
 [[gnu::always_inline]] inline glm::dvec3 barForce(const glm::dvec3& delta,

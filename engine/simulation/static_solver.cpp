@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/simulation/hinge_kernel.hpp"
 #include "engine/simulation/hinge_unfolding.hpp"
 #include "engine/simulation/layer_order.hpp"
 #include "engine/simulation/rigid_placement.hpp"
@@ -159,13 +160,17 @@ std::array<std::array<glm::dmat3, 4>, 4> hingeAngleHessian(std::array<glm::dvec3
   return out;
 }
 
-// The energy's Hessian. Gauss-Newton (hingeErrors null): the bars' without their compressive
-// part and the hinges' k grad grad^T, positive semidefinite. Exact (hingeErrors: each hinge's angle
-// minus its target): the bars' whole and the hinges' plus k (theta - target) Hess(theta); where
+// The energy's Hessian at the hinges' angles and targets. Gauss-Newton (exactHessian false): the
+// bars' without their compressive part and the hinges' k grad grad^T, positive semidefinite.
+// Exact (exactHessian): the bars' whole and the hinges' plus k (theta - target) Hess(theta); where
 // targets cannot all be met (a curved crease driven to 180 degrees) the errors stay large at the
 // equilibrium, and Gauss-Newton without that term converges only linearly there.
+//
+// A crease's one-sided term (hinge_kernel.hpp) adds its stiffness to k where the crease is past
+// either bound (its second derivative there), and its moment to the exact term's torque.
 void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, HessianLayout& layout,
-              const std::vector<double>* hingeErrors = nullptr) {
+              const std::vector<double>& angles, const std::vector<double>& targets,
+              bool exactHessian) {
   double* values = layout.matrix.valuePtr();
   std::fill(values, values + layout.matrix.nonZeros(), 0.0);
   for (std::size_t i = 0; i < model.bars.size(); ++i) {
@@ -177,8 +182,8 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
     const double k = model.barStiffness[i];
     // Along the bar k; across it k (1 - L / l) (Gauss-Newton: dropped when compressed, where it
     // would make the matrix indefinite).
-    const double across = hingeErrors ? k * (1.0 - model.barLength[i] / length)
-                                      : k * std::max(0.0, 1.0 - model.barLength[i] / length);
+    const double across = exactHessian ? k * (1.0 - model.barLength[i] / length)
+                                       : k * std::max(0.0, 1.0 - model.barLength[i] / length);
     const glm::dmat3 block = (k - across) * glm::outerProduct(u, u) + across * glm::dmat3(1.0);
     addElementBlocks(values, layout.barBlocks.data() + 9 * i, bar, model.pinned,
                      [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
@@ -186,8 +191,14 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
   for (std::size_t j = 0; j < model.hinges.size(); ++j) {
     const Hinge& h = model.hinges[j];
     const auto g = hingeAngleGradient(x[h.a], x[h.b], x[h.c], x[h.d]);
-    const double k = model.hingeStiffness[j];
-    const double torque = hingeErrors ? k * (*hingeErrors)[j] : 0.0;
+    const double wrongSide = model.hingeWrongSide[j];
+    const double k =
+        model.hingeStiffness[j] +
+        (hinge_kernel::wrongSideExcess(angles[j], wrongSide) != 0.0 ? std::abs(wrongSide) : 0.0);
+    const double torque =
+        exactHessian
+            ? hinge_kernel::hingeMoment(angles[j], targets[j], model.hingeStiffness[j], wrongSide)
+            : 0.0;
     std::array<std::array<glm::dmat3, 4>, 4> second{};
     if (torque != 0.0) second = hingeAngleHessian({x[h.a], x[h.b], x[h.c], x[h.d]});
     addElementBlocks(values, layout.hingeBlocks.data() + 30 * j, hingeVertices(h), model.pinned,
@@ -200,18 +211,18 @@ void assemble(const BarHingeModel& model, const std::vector<glm::dvec3>& x, Hess
     addElementBlocks(values, layout.glueBlocks.data() + 9 * i, model.glue[i], model.pinned,
                      [&](std::size_t p, std::size_t q) { return p == q ? block : -block; });
   }
-  // Contact: b'' grad(d) grad(d)^T, positive semidefinite; exact (hingeErrors given) also
+  // Contact: b'' grad(d) grad(d)^T, positive semidefinite; exact (exactHessian) also
   // b' Hess(d), by central differences of the distance's exact gradient (24 gradients a pair):
   // without it Newton's steps converge only linearly where a pair pushes at the equilibrium (a
   // glued folded cone: its residual halved each iteration and stalled at 2.5e-9).
   ContactTerm term, shifted;
   std::vector<glm::dvec3> moved;
-  if (hingeErrors && !layout.contactPairs.empty()) moved = x;
+  if (exactHessian && !layout.contactPairs.empty()) moved = x;
   const double shift = 1e-5 * model.contact.thickness;
   for (std::size_t i = 0; i < layout.contactPairs.size(); ++i) {
     if (!contactTerm(model, x, layout.contactPairs[i], term)) continue;
     std::array<std::array<glm::dmat3, 4>, 4> second{};
-    bool exactTerm = hingeErrors != nullptr && term.slope != 0.0;
+    bool exactTerm = exactHessian && term.slope != 0.0;
     for (int q = 0; q < 4 && exactTerm; ++q)
       for (int c = 0; c < 3 && exactTerm; ++c) {
         double& coordinate = moved[term.vertices[q]][c];
@@ -478,7 +489,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
   Eigen::VectorXd gradient(3 * n), step(3 * n);
   std::vector<glm::dvec3> forces, trial(n), trialSlots, trialForces, stepVectors(n);
-  std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n), hingeErrors(goal.size());
+  std::vector<double> targets(goal.size()), trialAngles, diagonal(3 * n);
 
   for (std::size_t stage = 1; stage <= allStages; ++stage) {
     const bool last = stage == allStages;
@@ -556,12 +567,10 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       // stage of seven, the energy falling 1e-6 an iteration, and ran out) steps so too.
       bool exact = options.exactHessian &&
                    (last || result.iterations - stageStart >= options.exactAfterIterations);
-      for (std::size_t j = 0; j < goal.size(); ++j)
-        hingeErrors[j] = state.hingeAngles[j] - targets[j];
       double* values = layout.matrix.valuePtr();
       double largestDiagonal = 0.0;
       const auto assembleHessian = [&] {
-        assemble(m, state.positions, layout, exact ? &hingeErrors : nullptr);
+        assemble(m, state.positions, layout, state.hingeAngles, targets, exact);
         largestDiagonal = 0.0;
         for (std::size_t d = 0; d < 3 * n; ++d) {
           diagonal[d] = values[layout.diagonal[d]];

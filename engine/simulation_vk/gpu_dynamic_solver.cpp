@@ -129,7 +129,7 @@ GpuDynamicSolver::GpuDynamicSolver(const VulkanContext& context, const BarHingeM
     const Hinge& h = model.hinges[j];
     hinges[j] = {h.a, h.b, h.c, h.d};
     hingeParameters[j] = {float(model.hingeTarget[j]), model.hingeDriven[j] ? 1.0f : 0.0f,
-                          float(model.hingeStiffness[j]), 0.0f};
+                          float(model.hingeStiffness[j]), float(model.hingeWrongSide[j])};
   }
   std::vector<glm::uvec2> glue(std::max<std::size_t>(glueCount_, 1));
   for (std::size_t g = 0; g < glueCount_; ++g) glue[g] = {model.glue[g][0], model.glue[g][1]};
