@@ -171,15 +171,9 @@ int run(int argc, char** argv) {
     std::size_t flippedKind[5] = {0, 0, 0, 0, 0};
     for (const RigidMotion& m : all)
       for (std::size_t s = 0; s <= symmetries.size(); ++s) {
-        const RigidMotion way = s == symmetries.size()
-                                    ? m
-                                    : RigidMotion{m.linear * symmetries[s].linear,
-                                                  m.linear * symmetries[s].offset + m.offset};
+        const RigidMotion way = s == symmetries.size() ? m : then(symmetries[s], m);
         for (const UnfoldedFold& u : plan.folds) {
-          const glm::dvec3 n = u.plane.normal;
-          const glm::dmat3 h = glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n);
-          const RigidMotion left{h * way.linear,
-                                 h * way.offset + 2.0 * glm::dot(n, u.plane.point) * n};
+          const RigidMotion left = then(way, reflectionOf(u.plane));
           ++flippedKind[std::min<std::size_t>(fewestReflections(left, 1e-4, 1e-4 * size), 4)];
         }
       }
@@ -194,19 +188,12 @@ int run(int argc, char** argv) {
       RigidMotion flips{glm::dmat3(1.0), glm::dvec3(0.0)};
       for (std::size_t u = 0; u < n; ++u) {  // unfolding order: the last fold read first
         if (!(bits >> u & 1)) continue;
-        const ReflectionPlane& p = plan.folds[n - 1 - u].plane;
-        const glm::dmat3 h = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
-        const RigidMotion r{h, 2.0 * glm::dot(p.normal, p.point) * p.normal};
-        flips = {flips.linear * r.linear, flips.linear * r.offset + flips.offset};
+        flips = then(reflectionOf(plan.folds[n - 1 - u].plane), flips);
       }
       for (const RigidMotion& m : all)
         for (std::size_t s = 0; s <= symmetries.size(); ++s) {
-          const RigidMotion way = s == symmetries.size()
-                                      ? m
-                                      : RigidMotion{m.linear * symmetries[s].linear,
-                                                    m.linear * symmetries[s].offset + m.offset};
-          const RigidMotion left{flips.linear * way.linear,
-                                 flips.linear * way.offset + flips.offset};
+          const RigidMotion way = s == symmetries.size() ? m : then(symmetries[s], m);
+          const RigidMotion left = then(way, flips);
           const std::size_t k = fewestReflections(left, 1e-4, 1e-4 * size);
           if (k < fewest) fewest = k, fewestSet = bits;
         }

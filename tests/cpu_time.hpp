@@ -8,11 +8,34 @@
 #include <time.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace curvefold::testing {
+
+// The nice of each of this process's threads (/proc/self/task/*/stat, the 19th field): who
+// yields the cores to whom.
+inline std::vector<int> threadNices() {
+  std::vector<int> nices;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "stat");
+    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t afterName = stat.rfind(')');
+    if (afterName == std::string::npos) continue;
+    std::istringstream fields(stat.substr(afterName + 1));
+    std::string field;
+    for (int k = 3; k <= 19 && fields >> field; ++k)
+      if (k == 19) nices.push_back(std::stoi(field));
+  }
+  return nices;
+}
 
 // Seconds of CPU this process has used so far, all its threads together.
 inline double processCpuSeconds() {

@@ -619,22 +619,6 @@ TEST(SuggestionWorker, AnswersWithinItsTimeLimit) {
   EXPECT_TRUE(worker.take().has_value());
 }
 
-// The nice of each of this process's threads (/proc/self/task/*/stat, the 19th field).
-std::vector<int> threadNices() {
-  std::vector<int> nices;
-  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
-    std::ifstream in(task.path() / "stat");
-    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t afterName = stat.rfind(')');
-    if (afterName == std::string::npos) continue;
-    std::istringstream fields(stat.substr(afterName + 1));
-    std::string field;
-    for (int k = 3; k <= 19 && fields >> field; ++k)
-      if (k == 19) nices.push_back(std::stoi(field));
-  }
-  return nices;
-}
-
 // A frame loop's search gives the cores to the frame first (issue 38, 3: on two cores it took them
 // from the window's renderer as an equal): it runs at the nice asked, the caller's thread stays.
 TEST(SuggestionWorker, SearchesBelowItsCallersPriority) {
@@ -651,7 +635,7 @@ TEST(SuggestionWorker, SearchesBelowItsCallersPriority) {
   int highestNice = callerNice;
   const auto start = std::chrono::steady_clock::now();
   while (highestNice < 10 && std::chrono::steady_clock::now() - start < std::chrono::seconds(1)) {
-    for (const int nice : threadNices()) highestNice = std::max(highestNice, nice);
+    for (const int nice : testing::threadNices()) highestNice = std::max(highestNice, nice);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   EXPECT_GE(highestNice, std::max(callerNice, 10));

@@ -21,6 +21,7 @@
 
 #include "app/studio/headset_studio.hpp"
 #include "app/studio/studio_replay.hpp"
+#include "cpu_time.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
@@ -429,21 +430,11 @@ void writeTargetObj(const RandomFoldTarget& folded, const fs::path& path) {
     out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
 }
 
-// How many of this process's threads run at a nice of at least `nice` (/proc/self/task/*/stat,
-// the 19th field).
+// How many of this process's threads run at a nice of at least `nice`.
 int threadsAtNice(int nice) {
-  int count = 0;
-  for (const auto& task : fs::directory_iterator("/proc/self/task")) {
-    std::ifstream in(task.path() / "stat");
-    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t afterName = stat.rfind(')');
-    if (afterName == std::string::npos) continue;
-    std::istringstream fields(stat.substr(afterName + 1));
-    std::string field;
-    for (int k = 3; k <= 19 && fields >> field; ++k)
-      if (k == 19 && std::stoi(field) >= nice) ++count;
-  }
-  return count;
+  const std::vector<int> nices = testing::threadNices();
+  return static_cast<int>(
+      std::count_if(nices.begin(), nices.end(), [&](int n) { return n >= nice; }));
 }
 
 // The distance is measured below the frame, as the search is (issue 38, 3): a measure at nice 0

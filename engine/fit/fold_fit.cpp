@@ -941,17 +941,11 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
 
 namespace {
 
-// The reflection through `plane` as a rigid motion.
-RigidMotion reflectionThrough(const ReflectionPlane& plane) {
-  const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(plane.normal, plane.normal);
-  return {mirror, 2.0 * glm::dot(plane.point, plane.normal) * plane.normal};
-}
-
 // The unfolding read with fold k made from the other side of its plane: the form after it is the
 // same one mirrored through that plane, so every later fold's plane is mirrored too (its seed, a
 // point of the development, names the same part).
 TargetUnfolding flippedAt(TargetUnfolding plan, std::size_t k) {
-  const RigidMotion mirror = reflectionThrough(plan.folds[k].plane);
+  const RigidMotion mirror = reflectionOf(plan.folds[k].plane);
   for (std::size_t j = k + 1; j < plan.folds.size(); ++j) {
     ReflectionPlane& plane = plan.folds[j].plane;
     plane = {mirror(plane.point), mirror.linear * plane.normal};
@@ -1222,7 +1216,7 @@ class FitRun {
       // later folds with it: the motion left takes that mirror first (one plane more or less).
       RigidMotion left = motion;
       if (flip) {
-        const RigidMotion mirror = reflectionThrough(movedBack.folds[*flip].plane);
+        const RigidMotion mirror = reflectionOf(movedBack.folds[*flip].plane);
         left = {motion.linear * mirror.linear, motion.linear * mirror.offset + motion.offset};
         movedBack = flippedAt(std::move(movedBack), *flip);
       }

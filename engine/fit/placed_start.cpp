@@ -26,6 +26,22 @@ Frame frameOf(const glm::dvec3& origin, const glm::dvec3& x, const glm::dvec3& y
   return {origin, x, y, glm::cross(x, y)};
 }
 
+// The samples' extents along a frame's first two axes, from its origin.
+struct FrameExtents {
+  double xLo = 1e300, xHi = -1e300, yLo = 1e300, yHi = -1e300;
+};
+FrameExtents extentsIn(const std::vector<SurfaceSample>& samples, const Frame& frame) {
+  FrameExtents e;
+  for (const SurfaceSample& sample : samples) {
+    const glm::dvec3 d = sample.position - frame.origin;
+    e.xLo = std::min(e.xLo, glm::dot(d, frame.x));
+    e.xHi = std::max(e.xHi, glm::dot(d, frame.x));
+    e.yLo = std::min(e.yLo, glm::dot(d, frame.y));
+    e.yHi = std::max(e.yHi, glm::dot(d, frame.y));
+  }
+  return e;
+}
+
 Sheet placedSheet(Sheet sheet, const Frame& frame) {
   for (glm::dvec3& p : sheet.positions) p = frame.apply(p);
   return sheet;
@@ -394,14 +410,8 @@ void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& prin
   frame.y = glm::normalize(frame.y + profile(2) * frame.z);
   frame.z = glm::cross(frame.x, frame.y);
   profile = profileFit(samples, frame);
-  double sLo = 1e300, sHi = -1e300, tLo = 1e300, tHi = -1e300;
-  for (const SurfaceSample& sample : samples) {
-    const glm::dvec3 d = sample.position - frame.origin;
-    sLo = std::min(sLo, glm::dot(d, frame.x));
-    sHi = std::max(sHi, glm::dot(d, frame.x));
-    tLo = std::min(tLo, glm::dot(d, frame.y));
-    tHi = std::max(tHi, glm::dot(d, frame.y));
-  }
+  const FrameExtents extents = extentsIn(samples, frame);
+  const double sLo = extents.xLo, sHi = extents.xHi, tLo = extents.yLo, tHi = extents.yHi;
   if (!(sHi > sLo) || !(tHi > tLo)) return;
   // The sheet's rulings run over [tLo, tHi] and its profile's offset f lifts it.
   frame.origin += tLo * frame.y + profile(3) * frame.z;
@@ -471,15 +481,8 @@ void flatIn(const std::vector<SurfaceSample>& samples, const Principal& principa
   // area kept), so the sheet reaches both ends; a round disk of the area stands past the narrow
   // sides and stops short of the long ends (a 28 x 18 cm serving bowl: its rim 28 mm short).
   if (kind.empty() || kind == "disk") {
-    double loX = 1e300, hiX = -1e300, loY = 1e300, hiY = -1e300;
-    for (const SurfaceSample& s : samples) {
-      const glm::dvec3 d = s.position - frame.origin;
-      loX = std::min(loX, glm::dot(d, frame.x));
-      hiX = std::max(hiX, glm::dot(d, frame.x));
-      loY = std::min(loY, glm::dot(d, frame.y));
-      hiY = std::max(hiY, glm::dot(d, frame.y));
-    }
-    const double aspect = (hiX - loX) / std::max(1e-300, hiY - loY);
+    const FrameExtents e = extentsIn(samples, frame);
+    const double aspect = (e.xHi - e.xLo) / std::max(1e-300, e.yHi - e.yLo);
     const double radius = std::sqrt(area / std::numbers::pi);
     if (aspect > kOvalFootprint || aspect < 1.0 / kOvalFootprint)
       addEllipse(out, radius * std::sqrt(aspect), radius / std::sqrt(aspect),

@@ -19,16 +19,6 @@ namespace {
 // Pairs spread over the target: enough to fix a motion well, few enough to be cheap.
 constexpr std::size_t kPairs = 300;
 
-// x -> a(b(x)).
-RigidMotion after(const RigidMotion& a, const RigidMotion& b) {
-  return {a.linear * b.linear, a.linear * b.offset + a.offset};
-}
-
-RigidMotion inverse(const RigidMotion& m) {
-  const glm::dmat3 back = glm::transpose(m.linear);
-  return {back, -(back * m.offset)};
-}
-
 std::optional<RigidMotion> rigidFit(const std::vector<glm::dvec3>& from,
                                     const std::vector<glm::dvec3>& to, double tolerance) {
   if (from.size() < 4) return std::nullopt;
@@ -99,14 +89,13 @@ std::vector<FewerPlaneRest> fewerPlaneRests(const RigidMotion& rest, const glm::
   if (apart > 1e-9 * (1.0 + glm::length(centre))) {
     const glm::dvec3 n = (moved - centre) / apart;
     const glm::dvec3 through = 0.5 * (moved + centre);
-    const RigidMotion mirror{glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n),
-                             2.0 * glm::dot(n, through) * n};
-    found.push_back({mirror, after(inverse(mirror), rest)});  // s = W^-1 rest
+    const RigidMotion mirror = reflectionOf({through, n});
+    found.push_back({mirror, then(rest, inverse(mirror))});  // s = W^-1 rest
   }
   // rest = (rest g^-1) g for each image g of the design's symmetry.
   for (const Isometry& g : images) {
     const RigidMotion s{g.linear, g.offset};
-    found.push_back({after(rest, inverse(s)), s});
+    found.push_back({then(inverse(s), rest), s});
   }
   return found;
 }

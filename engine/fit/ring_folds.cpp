@@ -49,6 +49,60 @@ constexpr double kCornerDepths[] = {0.5, 0.75};
 // Where a neck pleat's cut begins: where the excess falls below this share of its peak.
 constexpr double kPleatStart = 0.25;
 
+// The profile of the sheet and the target about `axis` in kCornerBins height bins over the
+// sheet's height: the sheet's largest radius in each, the target's mean (its sum and count),
+// and the excess of the one over the other (-1e300 where either has fewer than 3 samples), with
+// its peak and the sheet's largest radius over all. None for a sheet of no height.
+struct ProfileBins {
+  double lo = 0.0, hi = 0.0;
+  std::array<double, kCornerBins> largest{}, targetSum{};
+  std::array<int, kCornerBins> sheetCount{}, targetCount{};
+  std::array<double, kCornerBins> excess{};
+  double radius = 0.0;
+  int peak = -1;
+};
+
+std::optional<ProfileBins> binProfile(const std::vector<SurfaceSample>& sheetSamples,
+                                      const std::vector<SurfaceSample>& targetSamples,
+                                      const RevolutionAxis& axis) {
+  const auto heightAndRadius = [&](const glm::dvec3& p) {
+    const double h = glm::dot(p - axis.point, axis.direction);
+    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
+  };
+  ProfileBins out;
+  double lo = 1e300, hi = -1e300;
+  for (const SurfaceSample& s : sheetSamples) {
+    const double h = heightAndRadius(s.position).x;
+    lo = std::min(lo, h);
+    hi = std::max(hi, h);
+  }
+  if (!(hi - lo > 1e-9)) return std::nullopt;
+  out.lo = lo;
+  out.hi = hi;
+  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
+  for (const SurfaceSample& s : sheetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
+    out.largest[b] = std::max(out.largest[b], hr.y);
+    ++out.sheetCount[b];
+  }
+  for (const SurfaceSample& s : targetSamples) {
+    const glm::dvec2 hr = heightAndRadius(s.position);
+    const int b = bin(hr.x);
+    if (b < 0 || b >= kCornerBins) continue;
+    out.targetSum[b] += hr.y;
+    ++out.targetCount[b];
+  }
+  for (int b = 0; b < kCornerBins; ++b) {
+    out.radius = std::max(out.radius, out.largest[b]);
+    out.excess[b] = out.sheetCount[b] >= 3 && out.targetCount[b] >= 3
+                        ? out.largest[b] - out.targetSum[b] / out.targetCount[b]
+                        : -1e300;
+    if (out.peak < 0 || out.excess[b] > out.excess[out.peak]) out.peak = b;
+  }
+  return out;
+}
+
 // A corner ring that folds in the corners standing farthest out of the target (a narrow neck's):
 // the ring of `order` planes turned by `turn`, each plane through the corners' radius where the
 // excess of the sheet's largest radius over the target's mean radius (by height) begins, and
@@ -60,43 +114,13 @@ std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetS
                                         const std::vector<SurfaceSample>& targetSamples,
                                         const RevolutionAxis& axis, int order, double turn,
                                         int side, double depth) {
-  const auto heightAndRadius = [&](const glm::dvec3& p) {
-    const double h = glm::dot(p - axis.point, axis.direction);
-    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
-  };
-  double lo = 1e300, hi = -1e300;
-  for (const SurfaceSample& s : sheetSamples) {
-    const double h = heightAndRadius(s.position).x;
-    lo = std::min(lo, h);
-    hi = std::max(hi, h);
-  }
-  if (!(hi - lo > 1e-9)) return std::nullopt;
-  std::array<double, kCornerBins> largest{}, targetSum{};
-  std::array<int, kCornerBins> sheetCount{}, targetCount{};
-  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
-  for (const SurfaceSample& s : sheetSamples) {
-    const glm::dvec2 hr = heightAndRadius(s.position);
-    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
-    largest[b] = std::max(largest[b], hr.y);
-    ++sheetCount[b];
-  }
-  double radius = 0.0;
-  for (const SurfaceSample& s : targetSamples) {
-    const glm::dvec2 hr = heightAndRadius(s.position);
-    const int b = bin(hr.x);
-    if (b < 0 || b >= kCornerBins) continue;
-    targetSum[b] += hr.y;
-    ++targetCount[b];
-  }
-  std::array<double, kCornerBins> excess{};
-  int peak = -1;
-  for (int b = 0; b < kCornerBins; ++b) {
-    radius = std::max(radius, largest[b]);
-    excess[b] = sheetCount[b] >= 3 && targetCount[b] >= 3
-                    ? largest[b] - targetSum[b] / targetCount[b]
-                    : -1e300;
-    if (peak < 0 || excess[b] > excess[peak]) peak = b;
-  }
+  const std::optional<ProfileBins> bins = binProfile(sheetSamples, targetSamples, axis);
+  if (!bins) return std::nullopt;
+  // Named references, not a structured binding: the lambdas below capture them (clang 15).
+  const double lo = bins->lo, hi = bins->hi, radius = bins->radius;
+  const int peak = bins->peak;
+  const auto &largest = bins->largest, &targetSum = bins->targetSum, &excess = bins->excess;
+  const auto& targetCount = bins->targetCount;
   if (peak < 0 || !(excess[peak] > 0.05 * radius)) return std::nullopt;
   // The cut begins on the side away from `side`, where the excess falls off.
   int begin = peak;
@@ -119,49 +143,19 @@ std::optional<RingShape> neckCornerRing(const std::vector<SurfaceSample>& sheetS
 
 }  // namespace
 
-// The profile binned as neckCornerRing bins it; the first ring's depth, then its flaps' middle at
+// The profile binned (binProfile); the first ring's depth, then its flaps' middle at
 // the neck and far end reflected in the meridian (see the header).
 std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSample>& sheetSamples,
                                                   const std::vector<SurfaceSample>& targetSamples,
                                                   const RevolutionAxis& axis, int order,
                                                   double turn, int side) {
-  const auto heightAndRadius = [&](const glm::dvec3& p) {
-    const double h = glm::dot(p - axis.point, axis.direction);
-    return glm::dvec2(h, glm::length(p - axis.point - h * axis.direction));
-  };
-  double lo = 1e300, hi = -1e300;
-  for (const SurfaceSample& s : sheetSamples) {
-    const double h = heightAndRadius(s.position).x;
-    lo = std::min(lo, h);
-    hi = std::max(hi, h);
-  }
-  if (!(hi - lo > 1e-9)) return std::nullopt;
-  std::array<double, kCornerBins> largest{}, targetSum{};
-  std::array<int, kCornerBins> sheetCount{}, targetCount{};
-  const auto bin = [&](double h) { return static_cast<int>((h - lo) / (hi - lo) * kCornerBins); };
-  for (const SurfaceSample& s : sheetSamples) {
-    const glm::dvec2 hr = heightAndRadius(s.position);
-    const int b = std::clamp(bin(hr.x), 0, kCornerBins - 1);
-    largest[b] = std::max(largest[b], hr.y);
-    ++sheetCount[b];
-  }
-  for (const SurfaceSample& s : targetSamples) {
-    const glm::dvec2 hr = heightAndRadius(s.position);
-    const int b = bin(hr.x);
-    if (b < 0 || b >= kCornerBins) continue;
-    targetSum[b] += hr.y;
-    ++targetCount[b];
-  }
-  std::array<double, kCornerBins> excess{};
-  double radius = 0.0;
-  int peak = -1;
-  for (int b = 0; b < kCornerBins; ++b) {
-    radius = std::max(radius, largest[b]);
-    excess[b] = sheetCount[b] >= 3 && targetCount[b] >= 3
-                    ? largest[b] - targetSum[b] / targetCount[b]
-                    : -1e300;
-    if (peak < 0 || excess[b] > excess[peak]) peak = b;
-  }
+  const std::optional<ProfileBins> bins = binProfile(sheetSamples, targetSamples, axis);
+  if (!bins) return std::nullopt;
+  // Named references, not a structured binding: the lambdas below capture them (clang 15).
+  const double lo = bins->lo, hi = bins->hi, radius = bins->radius;
+  const int peak = bins->peak;
+  const auto &largest = bins->largest, &targetSum = bins->targetSum, &excess = bins->excess;
+  const auto &sheetCount = bins->sheetCount, &targetCount = bins->targetCount;
   if (peak < 0 || !(excess[peak] > 0.05 * radius)) return std::nullopt;
   int begin = peak;
   while (begin - side >= 0 && begin - side < kCornerBins &&

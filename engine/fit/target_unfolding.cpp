@@ -474,15 +474,11 @@ struct Unfolder {
       RigidMotion flips;  // the copy moved by each rest's reflection, as bestSides makes it
       for (std::size_t u = 0; u < n; ++u) {
         if (!(bits >> u & 1u)) continue;
-        const ReflectionPlane& p = read.steps[u].plane;
-        const glm::dmat3 mirror = glm::dmat3(1.0) - 2.0 * glm::outerProduct(p.normal, p.normal);
-        flips = {flips.linear * mirror,
-                 flips.linear * (2.0 * glm::dot(p.point, p.normal) * p.normal) + flips.offset};
+        flips = then(reflectionOf(read.steps[u].plane), flips);
       }
       for (const RigidMotion& way : lying) {
         const std::size_t planes =
-            fewestReflections({flips.linear * way.linear, flips.linear * way.offset + flips.offset},
-                              kKindSnap, kKindSnap * diagonal);
+            fewestReflections(then(way, flips), kKindSnap, kKindSnap * diagonal);
         if (planes < fewest || (planes == fewest && rests < fewestRests)) {
           fewest = planes;
           fewestRests = rests;

@@ -245,16 +245,6 @@ Eigen::Matrix3d turn(int axis, double radians) {
   return Eigen::AngleAxisd(radians, Eigen::Vector3d::Unit(axis)).toRotationMatrix();
 }
 
-// x -> H x + 2 (n.p) n, the reflection through the plane.
-RigidMotion reflectionOf(const ReflectionPlane& plane) {
-  const glm::dvec3 n = plane.normal;
-  return {glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n), 2.0 * glm::dot(n, plane.point) * n};
-}
-
-RigidMotion then(const RigidMotion& first, const RigidMotion& second) {
-  return {second.linear * first.linear, second.linear * first.offset + second.offset};
-}
-
 // As close as registration finds a motion (1e-4 of the diagonal): a motion registered on an
 // unfolded target carries the small errors of the crease planes read (1.6e-5 seen), which a
 // tighter bound took for another motion.

@@ -52,17 +52,11 @@
 #include <glm/vec3.hpp>
 
 #include "engine/fit/deadline.hpp"
+#include "engine/fit/rigid_motion.hpp"
 #include "engine/geometry/reflection.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
 
 namespace curvefold {
-
-// x -> linear x + offset, linear orthogonal.
-struct RigidMotion {
-  glm::dmat3 linear{1.0};
-  glm::dvec3 offset{0.0};
-  glm::dvec3 operator()(const glm::dvec3& x) const { return linear * x + offset; }
-};
 
 // The motion taking `sheet` onto `moved`, when every vertex of each lies within `tolerance`
 // (metres) of the other after it; nothing otherwise.
