@@ -164,6 +164,31 @@ TEST_F(SimulateCli, CommandLinesCli11RefusesExitOneWithOneLine) {
   }
 }
 
+// --pin and --glue take points on the flat sheet in metres; a point off the sheet (here one in
+// millimetres on a 40 mm sheet) is refused in one line naming the sheet's extent, writing nothing,
+// not pinned to the nearest corner; a point on the sheet's corner is taken.
+TEST_F(SimulateCli, APinOrGlueOffTheFlatSheetIsRefused) {
+  std::ofstream(path("flat.fold"))
+      << R"({"file_spec": 1.1, "vertices_coords": [[0, 0], [0.02, 0], [0.04, 0], [0.04, 0.04],
+      [0.02, 0.04], [0, 0.04]], "faces_vertices": [[0, 1, 4, 5], [1, 2, 3, 4]],
+      "edges_vertices": [[0, 1], [1, 2], [2, 3], [3, 4], [4, 5], [5, 0], [1, 4]],
+      "edges_assignment": ["B", "B", "B", "B", "B", "B", "V"],
+      "edges_foldAngle": [0, 0, 0, 0, 0, 0, 90]})";
+  const std::string base = "simulate flat.fold --percent 50 --paper 0.1 --obj p.obj ";
+  for (const auto& [extra, fragment] : std::vector<std::pair<std::string, std::string>>{
+           {"--pin 40,40", "--pin: (40, 40) is off the flat sheet"},
+           {"--glue 0,0:40,0", "--glue: (40, 0) is off the flat sheet"}}) {
+    const CommandResult result = run(base + extra);
+    EXPECT_EQ(result.exitCode, 1) << extra;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_NE(result.err.find(fragment), std::string::npos) << result.err;
+    EXPECT_FALSE(fs::exists(path("p.obj"))) << extra;
+  }
+  const CommandResult corner = run(base + "--pin 0.04,0.04");
+  EXPECT_EQ(corner.exitCode, 0) << corner.err;
+  EXPECT_TRUE(fs::exists(path("p.obj")));
+}
+
 // Paper mode's self-contact, said and checked: a 40 mm sheet with one valley folded flat keeps its
 // layers the thickness apart, says so and that the state does not pass through itself, and
 // `check` of the written state agrees; --no-contact turns it off, and is refused without --paper.

@@ -155,7 +155,27 @@ glm::dvec2 parsePoint(const std::string& text, const std::string& option) {
   return p;
 }
 
-std::uint32_t nearestVertex(const CreasePattern& pattern, const glm::dvec2& p) {
+// The vertex nearest a point given on the flat sheet. A point off the sheet (past its bounding
+// box by more than 1% of the diagonal) is refused rather than pinned to the nearest corner: it is
+// most often a point in the wrong unit (millimetres for metres).
+std::uint32_t nearestVertex(const CreasePattern& pattern, const glm::dvec2& p,
+                            const std::string& option) {
+  glm::dvec2 low(std::numeric_limits<double>::infinity());
+  glm::dvec2 high(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec2& v : pattern.vertices) {
+    low = glm::min(low, v);
+    high = glm::max(high, v);
+  }
+  const double margin = 0.01 * glm::distance(low, high);
+  if (p.x < low.x - margin || p.y < low.y - margin || p.x > high.x + margin ||
+      p.y > high.y + margin) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%s: (%g, %g) is off the flat sheet, which spans x %g to %g and y %g to %g "
+                  "(metres)",
+                  option.c_str(), p.x, p.y, low.x, high.x, low.y, high.y);
+    throw UsageError(line);
+  }
   std::uint32_t best = 0;
   for (std::uint32_t v = 1; v < pattern.vertices.size(); ++v)
     if (glm::distance(pattern.vertices[v], p) < glm::distance(pattern.vertices[best], p)) best = v;
@@ -416,7 +436,7 @@ void addSimulateCommand(CLI::App& app) {
     // What the reader read but did not use, or read otherwise than written (docs/formats.md).
     for (const std::string& note : input.pattern.notes) std::cerr << "note: " << note << "\n";
     for (const std::string& pin : options->pins)
-      modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin")));
+      modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin"), "--pin"));
     for (const std::string& glue : options->glue) {
       if (glue == "slits") {
         if (input.seams.empty()) throw UsageError("--glue slits: the design has no slit");
@@ -427,9 +447,9 @@ void addSimulateCommand(CLI::App& app) {
       if (colon == std::string::npos)
         throw UsageError("--glue: expected X1,Y1:X2,Y2 or slits, got " + quotedExcerpt(glue));
       const std::uint32_t a =
-          nearestVertex(input.pattern, parsePoint(glue.substr(0, colon), "--glue"));
+          nearestVertex(input.pattern, parsePoint(glue.substr(0, colon), "--glue"), "--glue");
       const std::uint32_t b =
-          nearestVertex(input.pattern, parsePoint(glue.substr(colon + 1), "--glue"));
+          nearestVertex(input.pattern, parsePoint(glue.substr(colon + 1), "--glue"), "--glue");
       if (a == b) throw UsageError("--glue: both points are nearest the same vertex");
       modelOptions.glue.emplace_back(a, b);
     }
