@@ -116,6 +116,7 @@ void StudioTarget::reapRetired() {
   reap(retired_);
   reap(retiredFound_);
   reap(retiredLoads_);
+  reap(released_);
 }
 
 StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sheet,
@@ -176,6 +177,7 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
   // The old target's search (if any) is abandoned and its measures left to finish off the frame.
   retireMeasuring();
   retireFound();
+  std::shared_ptr<const FoldFitter> old = std::move(fitter_);
   fitter_ = std::move(loaded.fitter);
   path_ = std::move(loaded.path);
   loadError_.clear();
@@ -185,6 +187,11 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
     else
       worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_, searchNice_);
   }
+  // The worker holds the new target now: the old one goes off the frame (the last holder frees it,
+  // here or in a measure or search still finishing).
+  if (old && !replaying_)
+    released_.push_back(
+        std::async(std::launch::async, [old = std::move(old)]() mutable { old.reset(); }));
   measured_.reset();
   measuredCurrent_ = false;
   answerNote_.clear();
