@@ -59,6 +59,10 @@ Design startForTarget(const std::string& path) {
     // is refused, not met by a sheet a thousand times too large.
     checkTargetAgainst(target, makeSurface("square"));
     const StartChoice start = chooseStart(target);
+    // A sheet moved onto the target (a swept parabola on a saddle) is embedded as it lies, as `fit`
+    // embeds it: its parameters ("curvature") are the placement's, not the catalogue surface's,
+    // which refused them and the window did not open.
+    if (start.placed) return Design{*start.placed, {}};
     return Design{GeneratedSurface{start.surface, start.parameters}, {}};
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": " + e.what());
@@ -69,7 +73,8 @@ StudioStart studioStart(const std::string& input, const std::string& target,
                         const std::string& defaultSurface) {
   if (input.empty() && !target.empty()) {
     Design design = startForTarget(target);
-    const std::string name = std::get<GeneratedSurface>(design.surface).generator;
+    const auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+    const std::string name = generated ? generated->generator : "start";
     return {std::move(design), name};
   }
   return {session::designFor(input, defaultSurface), defaultSurface};
