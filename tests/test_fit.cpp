@@ -607,6 +607,53 @@ TEST(SuggestionWorker, ANewerRequestACancelOrANewTargetStopsTheSearchInFlight) {
   }
 }
 
+// Issue 38, 3: before it searches, the worker makes the design's folds again on a session of its
+// own, a fold's work per fold; it saw an abandon only once all were made, so a long design on a
+// large sheet held the cancel for its whole replay. It looks every kReplayTrianglesPerCheck
+// triangles folded: abandoned a third of the way in, it stops within a few folds' CPU (process
+// CPU, which a loaded machine does not stretch: 30-40 ms here against 174 ms when it checked
+// only after the replay).
+TEST(SuggestionWorker, AnAbandonStopsTheReplayOfALongDesign) {
+  if (testing::kSanitized)
+    GTEST_SKIP() << "the replay's CPU times: SuggestionWorker."
+                    "ANewerRequestACancelOrANewTargetStopsTheSearchInFlight covers the worker's "
+                    "abandon under the sanitizers";
+  // A 29k-triangle sheet and a long design: its two folds made 20 times over (each pair folds and
+  // unfolds the same parts), 40 folds' work (about 130 ms of CPU here, in 14 parts).
+  const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 140}}, 2, 77);
+  std::vector<FoldRecord> folds;
+  for (int k = 0; k < 20; ++k) folds.insert(folds.end(), target.folds.begin(), target.folds.end());
+  ASSERT_GT(folds.size() * target.sheet.triangleCount(),
+            6 * SuggestionWorker::kReplayTrianglesPerCheck);
+  double replayCpu = testing::processCpuSeconds();
+  {
+    FoldSession whole(target.initial);
+    whole.applyRecords(folds);
+  }
+  replayCpu = testing::processCpuSeconds() - replayCpu;
+  const auto fitter = std::make_shared<const FoldFitter>(meshOf(target.sheet), quickSettings());
+  // At the studio's nice: the test's thread, at its own, cancels when it means to, however loaded
+  // the machine.
+  SuggestionWorker worker(fitter, 600.0, SuggestionWorker::kYieldToFrames);
+  const auto initial = std::make_shared<const Sheet>(target.initial);
+  double longest = 0.0;
+  for (int round = 0; round < 3; ++round) {
+    // Cancelled a third of the way into the replay (by the CPU the process has spent since).
+    const double requested = testing::processCpuSeconds();
+    const std::uint64_t number = worker.request({initial, folds, ""}, 3);
+    const auto nap = std::chrono::microseconds(200);  // a sleeping thread spends next to no CPU
+    while (testing::processCpuSeconds() - requested < 0.3 * replayCpu)
+      std::this_thread::sleep_for(nap);
+    ASSERT_EQ(worker.searching(), number) << "the replay ended before the cancel";
+    const double cancelled = testing::processCpuSeconds();
+    worker.cancel();
+    while (worker.searching() == number) std::this_thread::sleep_for(nap);
+    longest = std::max(longest, testing::processCpuSeconds() - cancelled);
+    EXPECT_FALSE(worker.take().has_value());
+  }
+  EXPECT_LT(longest, 0.5 * replayCpu) << "the replay alone takes " << replayCpu << " s of CPU";
+}
+
 // The worker's own time limit: a search that would take seconds answers within it.
 TEST(SuggestionWorker, AnswersWithinItsTimeLimit) {
   const RandomFoldTarget target = makeRandomFoldTarget("cylinder", {{"resolution", 60}}, 2, 2002);

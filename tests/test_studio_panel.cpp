@@ -34,6 +34,7 @@
 #include "app/studio/studio_target.hpp"
 #include "app/studio/zenity_picker.hpp"
 #include "engine/io/design_document.hpp"
+#include "engine/text/utf8.hpp"
 
 namespace curvefold::studio {
 namespace {
@@ -826,6 +827,45 @@ TEST_F(StudioPanelTest, TheTargetLinesMoveNoItem) {
         stats_.targetLine = "(measuring) " + distanceText(0.0244, 0.0244, 0.2001);
         stats_.suggestionLine = "suggestion 1 of 3: Chamfer 0.345 mm -> 0.000752 mm";
       });
+}
+
+// Issue 38, 4: a design --target opened on a cone chosen to match the target, and the New sheet
+// section said "square" (its own default). It shows the document's sheet: Create makes that
+// surface with its parameters.
+TEST_F(StudioPanelTest, NewSheetShowsTheSheetTheDocumentHolds) {
+  doc_ = session::makeDocument(
+      Design{GeneratedSurface{"cone", {{"top_radius", 0.03}, {"resolution", 12}}}, {}}, "cone");
+  std::vector<Design> made;
+  actions_.replaceDocument = [&](const Design& design, const std::string& name) {
+    replaced_.push_back(name);
+    made.push_back(design);
+    doc_ = session::makeDocument(design, name);
+  };
+  frame();
+  EXPECT_TRUE(panel_.itemCentre("top_radius")) << "the cone's sliders are shown";
+  click("Create");
+  ASSERT_EQ(replaced_.size(), 1u);
+  EXPECT_EQ(replaced_[0], "cone");
+  const auto& surface = std::get<GeneratedSurface>(made.at(0).surface);
+  EXPECT_FLOAT_EQ(float(surface.parameters.at("top_radius")), 0.03f);
+  EXPECT_EQ(surface.parameters.at("resolution"), 12.0);
+}
+
+// Issue 38, 4: ImGui draws a field's text from its start, so the target field showed a long
+// path's folders and hid its file's name. The field shows the path's end, whole within its width.
+TEST_F(StudioPanelTest, ALongTargetPathShowsItsFileName) {
+  frame();  // a font for CalcTextSize
+  const std::string path = "/work/main/examples/targets/a rather long folder name/vase.obj";
+  const float width = 0.5f * ImGui::CalcTextSize(path.c_str()).x;
+  const std::string shown = pathEnd(path, width);
+  EXPECT_LE(ImGui::CalcTextSize(shown.c_str()).x, width) << shown;
+  EXPECT_EQ(shown.rfind("..."), 0u) << shown;
+  EXPECT_TRUE(shown.ends_with("/vase.obj")) << shown;
+  EXPECT_GT(shown.size(), std::string(".../vase.obj").size()) << "as much as fits: " << shown;
+  EXPECT_EQ(pathEnd("vase.obj", width), "vase.obj");  // a path that fits is shown whole
+  // A character of several bytes is never cut.
+  const std::string utf8 = pathEnd("/h\xc3\xa9h\xc3\xa9h\xc3\xa9h\xc3\xa9/x.obj", 30.0f);
+  EXPECT_TRUE(isUtf8(utf8)) << utf8;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <utility>
+#include <variant>
 
 #include "app/session/cover_facts.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
@@ -43,6 +44,19 @@ std::string wrapAtSpaces(const std::string& text, float width) {
     at = space + 1;
   }
   return wrapped + line;
+}
+
+std::string pathEnd(const std::string& path, float width) {
+  if (ImGui::CalcTextSize(path.c_str()).x <= width) return path;
+  // The longest end that fits after "...", starting at a character (not inside a UTF-8 one).
+  std::size_t from = 0;
+  while (from < path.size()) {
+    ++from;
+    while (from < path.size() && (static_cast<unsigned char>(path[from]) & 0xC0) == 0x80) ++from;
+    const std::string shown = "..." + path.substr(from);
+    if (ImGui::CalcTextSize(shown.c_str()).x <= width) return shown;
+  }
+  return "...";
 }
 
 StudioPanel::StudioPanel(bool recording, std::string help, std::string exportBase)
@@ -256,6 +270,7 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
   items_.clear();
   takePicked();
   beginWindow();
+  showSheetOf(doc);
   drawNewSheet(actions);
   drawEditButtons(actions, creasePattern);
   // Null while recording (no open).
@@ -289,6 +304,43 @@ void StudioPanel::beginWindow() {
     ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
   }
   ImGui::Begin("curvefold", nullptr, flags);
+}
+
+void StudioPanel::showSheetOf(const session::Document& doc) {
+  if (doc.session.get() == sheetShownOf_) return;
+  sheetShownOf_ = doc.session.get();
+  const Design design = doc.design();
+  const auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+  if (!generated) return;  // a mesh of its own: the section keeps its choice
+  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
+  const auto entry = std::find_if(catalog.begin(), catalog.end(), [&](const SurfaceInfo& info) {
+    return info.name == generated->generator;
+  });
+  if (entry == catalog.end()) return;
+  surfaceIndex_ = int(entry - catalog.begin());
+  resetParameters();
+  for (std::size_t i = 0; i < entry->parameters.size(); ++i) {
+    const auto value = generated->parameters.find(entry->parameters[i].name);
+    if (value != generated->parameters.end()) parameterValues_[i] = float(value->second);
+  }
+  symmetry_ = design.symmetry.empty() ? kNoSymmetry : design.symmetry;
+}
+
+void StudioPanel::showPathEnd(const std::string& path, float fieldWidth) {
+  if (ImGui::IsItemActive()) return;  // being edited: ImGui's own text, scrolled to the cursor
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const std::string shown = pathEnd(path, fieldWidth - 2.0f * style.FramePadding.x);
+  if (shown == path) return;
+  const ImVec2 min = ImGui::GetItemRectMin();
+  const ImVec2 max(min.x + fieldWidth, min.y + ImGui::GetFrameHeight());
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(
+      min, max,
+      ImGui::GetColorU32(ImGui::IsItemHovered() ? ImGuiCol_FrameBgHovered : ImGuiCol_FrameBg),
+      style.FrameRounding);
+  draw->AddText(ImVec2(min.x + style.FramePadding.x, min.y + style.FramePadding.y),
+                ImGui::GetColorU32(ImGuiCol_Text), shown.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
 }
 
 void StudioPanel::drawNewSheet(const StudioActions& actions) {
@@ -472,8 +524,10 @@ void StudioPanel::drawTarget(session::Document& doc, const StudioActions& action
   // The same items whatever the lines say: the lines wrap inside a box of fixed height, so the
   // items keep their places and a recorded session's pointing replays onto the same buttons.
   ImGui::Separator();
+  const float fieldWidth = ImGui::CalcItemWidth();
   ImGui::InputText("target", &targetPath_);
   item("target");
+  showPathEnd(targetPath_, fieldWidth);
   if (button("Load target")) {
     const std::string path = targetPath_;
     guarded(actions, "", [&] { actions.loadTarget(path); });  // the target line says how it went

@@ -65,6 +65,10 @@ struct StudioStats {
 // than `width` is left whole on a line of its own, for ImGui to wrap.
 std::string wrapAtSpaces(const std::string& text, float width);
 
+// `path` as a field `width` wide shows it when it is longer: its end (the file's name) after
+// "...", cut at a character; `path` itself when it fits.
+std::string pathEnd(const std::string& path, float width);
+
 class StudioPanel {
  public:
   // recording: the session is being recorded, so its sheet is fixed by the recording's header (no
@@ -148,6 +152,12 @@ class StudioPanel {
   bool button(const char* label);  // a button whose rectangle item() records
   void beginWindow();
   void drawNewSheet(const StudioActions& actions);
+  // The New sheet section shows the document's sheet when the document is another (a start chosen
+  // to match a target, an opened design): its surface and parameters, when it is the catalog's.
+  void showSheetOf(const session::Document& doc);
+  // Over a path field that is not being edited, its end (pathEnd): ImGui draws a field's text
+  // from its start, which hid a long path's file name.
+  void showPathEnd(const std::string& path, float fieldWidth);
   void drawSymmetryChoice();
   void drawEditButtons(const StudioActions& actions, bool& creasePattern);
   void browseButton(const char* label, bool save);
@@ -167,6 +177,7 @@ class StudioPanel {
   bool recording_;
   std::string help_;
   int surfaceIndex_ = 0;
+  const void* sheetShownOf_ = nullptr;  // the session the New sheet section was set from
   std::vector<float> parameterValues_;
   static constexpr const char* kNoSymmetry = "none";
   std::string symmetry_ = kNoSymmetry;  // of the new sheet

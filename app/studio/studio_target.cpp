@@ -59,6 +59,10 @@ Design startForTarget(const std::string& path) {
     // is refused, not met by a sheet a thousand times too large.
     checkTargetAgainst(target, makeSurface("square"));
     const StartChoice start = chooseStart(target);
+    // A sheet moved onto the target (a swept parabola on a saddle) is embedded as it lies, as `fit`
+    // embeds it: its parameters ("curvature") are the placement's, not the catalogue surface's,
+    // which refused them and the window did not open.
+    if (start.placed) return Design{*start.placed, {}};
     return Design{GeneratedSurface{start.surface, start.parameters}, {}};
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": " + e.what());
@@ -69,7 +73,8 @@ StudioStart studioStart(const std::string& input, const std::string& target,
                         const std::string& defaultSurface) {
   if (input.empty() && !target.empty()) {
     Design design = startForTarget(target);
-    const std::string name = std::get<GeneratedSurface>(design.surface).generator;
+    const auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+    const std::string name = generated ? generated->generator : "start";
     return {std::move(design), name};
   }
   return {session::designFor(input, defaultSurface), defaultSurface};
@@ -116,6 +121,7 @@ void StudioTarget::reapRetired() {
   reap(retired_);
   reap(retiredFound_);
   reap(retiredLoads_);
+  reap(released_);
 }
 
 StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sheet,
@@ -176,6 +182,7 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
   // The old target's search (if any) is abandoned and its measures left to finish off the frame.
   retireMeasuring();
   retireFound();
+  std::shared_ptr<const FoldFitter> old = std::move(fitter_);
   fitter_ = std::move(loaded.fitter);
   path_ = std::move(loaded.path);
   loadError_.clear();
@@ -185,6 +192,11 @@ void StudioTarget::swapIn(Loaded loaded, const session::Document& doc) {
     else
       worker_ = std::make_unique<SuggestionWorker>(fitter_, suggestionSeconds_, searchNice_);
   }
+  // The worker holds the new target now: the old one goes off the frame (the last holder frees it,
+  // here or in a measure or search still finishing).
+  if (old && !replaying_)
+    released_.push_back(
+        std::async(std::launch::async, [old = std::move(old)]() mutable { old.reset(); }));
   measured_.reset();
   measuredCurrent_ = false;
   answerNote_.clear();

@@ -156,6 +156,9 @@ class StudioTarget {
   // Measures of a design or target no longer shown, left to finish (never waited for on a frame).
   std::vector<std::future<Measured>> retired_;
   std::vector<std::future<std::vector<double>>> retiredFound_;
+  // Targets replaced by a newer one, let go on a thread of their own: freeing a target's trees and
+  // samples is a large target's tens of milliseconds, which no frame should wait for.
+  std::vector<std::future<void>> released_;
   void retireMeasuring();
   void retireFound();
   void reapRetired();

@@ -4,6 +4,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <exception>
 #include <map>
@@ -138,6 +139,21 @@ std::optional<SuggestionWorker::Answer> SuggestionWorker::take() {
   return answer;
 }
 
+bool SuggestionWorker::replay(FoldSession& session, const std::vector<FoldRecord>& folds) const {
+  std::size_t made = 0;
+  while (made < folds.size()) {
+    if (abandon_.load(std::memory_order_relaxed)) return false;
+    // As many folds as the sheet's triangles allow per check (folds grow it: counted anew).
+    const std::size_t triangles = std::max<std::size_t>(1, session.fixed().triangleCount());
+    const std::size_t count =
+        std::clamp<std::size_t>(kReplayTrianglesPerCheck / triangles, 1, folds.size() - made);
+    const auto from = folds.begin() + static_cast<std::ptrdiff_t>(made);
+    session.applyRecords({from, from + static_cast<std::ptrdiff_t>(count)});
+    made += count;
+  }
+  return true;
+}
+
 void SuggestionWorker::run() {
   // This thread only searches: it stays at nice_, and the TBB workers in its arena go to it.
   if (threadNice() < nice_) setThreadNice(nice_);
@@ -163,7 +179,11 @@ void SuggestionWorker::run() {
       FoldSession session(*job.first.initial);
       if (!job.first.symmetry.empty())
         session.setSymmetry(parseSymmetry(job.first.symmetry, session.initial()));
-      session.applyRecords(job.first.folds);
+      if (!replay(session, job.first.folds)) {
+        const std::lock_guard lock(mutex_);
+        working_ = 0;  // abandoned while its design was made: nothing to answer
+        continue;
+      }
       Deadline deadline = Deadline::in(timeLimit_);
       deadline.cancelled = &abandon_;
       deadline.answerLate = true;  // out of time, the best scored so far

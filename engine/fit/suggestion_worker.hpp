@@ -2,7 +2,8 @@
 // a worker thread runs the search (FoldFitter::suggest, about a second at 10k triangles) on a
 // snapshot of the design and the frame picks the result up when it is there. A newer request, a
 // cancel (the design changed) or a new target abandons the one in flight: its search stops at its
-// next check (well within 100 ms: bench/bench_fit.cpp) and its result is dropped; none of these
+// next check (the replay of the design's folds checks by the triangles it folds, the search
+// between drags: tens of milliseconds of CPU apart) and its result is dropped; none of these
 // calls waits for the search. Each search has a time limit; only the destructor waits (for the
 // search to see it is abandoned), so a frame loop keeps its worker until it ends. A frame loop
 // gives the search a nice (kYieldToFrames) so that on a machine of few cores the frame and a CPU
@@ -39,6 +40,11 @@ class SuggestionWorker {
   // The nice a frame loop's search runs at: about a tenth of a contended core beside a thread at
   // nice 0, all of an idle one.
   static constexpr int kYieldToFrames = 10;
+  // Before it searches, the worker makes the design's folds again on a session of its own, a
+  // fold's work per fold (about 3.5 ms of CPU per 10k triangles): it looks for an abandon after
+  // every this many triangles folded (folds times the sheet's triangles), so a long design on a
+  // large sheet stops within about 35 ms of CPU, not at the end of its replay (issue 38, 3).
+  static constexpr std::size_t kReplayTrianglesPerCheck = 100'000;
   // nice: the search's threads (this worker's and TBB's while they search for it) run at it, or
   // at their own when that is higher; the caller's thread is left as it is.
   explicit SuggestionWorker(std::shared_ptr<const FoldFitter> fitter,
@@ -68,6 +74,9 @@ class SuggestionWorker {
 
  private:
   void run();
+  // The design's folds made on `session`, kReplayTrianglesPerCheck at a time: false when the
+  // request was abandoned before they were all made.
+  bool replay(FoldSession& session, const std::vector<FoldRecord>& folds) const;
 
   std::shared_ptr<const FoldFitter> fitter_;  // guarded by mutex_
   const double timeLimit_;
