@@ -179,12 +179,15 @@ TEST(Contact, LayersThatStartInTouchGoToTheSideTheirFoldGives) {
 }
 
 // The guard on the predictor's guess (separateLayersUnlessCrossing): a separation that passes the
-// sheet through itself is undone. A 10 mm square (two triangles, z = 0) and, apart from it on the
-// flat sheet, a 6 mm square fan whose centre touches the square's lower triangle from below (its
-// corners 2 mm under it). No fold joins them, so the side falls back to the triangle's front:
-// the centre is pushed up through the square and the fan's triangles pierce it. From above (the
-// corners 2 mm over it) the same side is right and the separation is kept.
-TEST(Contact, ASeparationThatPassesTheSheetThroughItselfIsUndone) {
+// sheet through itself is made again with the crossing pairs on their other side. A 10 mm square
+// (two triangles, z = 0) and, apart from it on the flat sheet, a 6 mm square fan whose centre
+// touches the square's lower triangle from below (its corners 2 mm under it). No fold joins them,
+// so the side falls back to the triangle's front: the centre is pushed up through the square and
+// the fan's triangles pierce it; the guard moves it down instead (before: it undid the separation
+// and left the layers in touch, where the barrier cannot tell the sides apart: xr_studio glued
+// started so at energy 22190 and settled with 18 pairs crossing). From above (the corners 2 mm
+// over it) the first side is right and that separation is kept.
+TEST(Contact, ASeparationThatPassesTheSheetThroughItselfTakesTheOtherSide) {
   CreasePattern pattern;
   pattern.vertices = {{0.0, 0.0},   {0.01, 0.0},    {0.01, 0.01},  {0.0, 0.01},   {0.02, 0.0},
                       {0.026, 0.0}, {0.026, 0.006}, {0.02, 0.006}, {0.023, 0.003}};
@@ -208,21 +211,16 @@ TEST(Contact, ASeparationThatPassesTheSheetThroughItselfIsUndone) {
     ASSERT_GT(separateLayers(model, separated, angles).pairs, 0u);
     std::vector<glm::dvec3> guarded = x;
     const bool moved = separateLayersUnlessCrossing(model, guarded, angles);
-    const auto largestMove = [&](const std::vector<glm::dvec3>& from) {
-      double largest = 0.0;
-      for (std::uint32_t v = 0; v < model.vertexCount(); ++v)
-        largest = std::max(largest, glm::length(guarded[v] - from[v]));
-      return largest;
-    };
+    EXPECT_TRUE(moved);
+    EXPECT_EQ(crossingTrianglePairs(model, guarded), 0u);
     if (below > 0.0) {
-      // Unguarded, the fan passes through the square.
+      // Unguarded, the fan passes through the square; guarded, its centre goes under it.
       EXPECT_GT(crossingTrianglePairs(model, separated), 0u);
-      EXPECT_FALSE(moved);
-      EXPECT_EQ(largestMove(x), 0.0);
+      EXPECT_LE(guarded[8].z - guarded[0].z, -kThickness);
     } else {
       EXPECT_EQ(crossingTrianglePairs(model, separated), 0u);
-      EXPECT_TRUE(moved);
-      EXPECT_EQ(largestMove(separated), 0.0);
+      for (std::uint32_t v = 0; v < model.vertexCount(); ++v)
+        EXPECT_EQ(guarded[v], separated[v]) << v;
       EXPECT_GE(guarded[8].z - guarded[0].z, kThickness);
     }
   }

@@ -979,5 +979,48 @@ TEST(Simulation, ASettledStateIsAMinimumNotASaddle) {
     EXPECT_LE(it.energyChange, 1e-12 * std::abs(it.energy));
 }
 
+// Two valleys 1.1 degrees apart from a boundary vertex, a sliver between them (0.02 of its edge
+// high), which the model bridges (bar_hinge_model.cpp): the bridge holds both creases' angles,
+// a target of 180 + 180 = 360 degrees at 100%. Its one-sided term held it at flat-folded, half a
+// turn short at every amount past half (settled at 75% with energy 1.23, at 100% 4.93: a crease
+// left flat), its 360 degrees made twice the stages the creases need, and as a hinge with a target
+// that is not a crease it was softened with facets in stages cut short (langKnlDragon: NOT settled
+// at 100%). Each amount from the last, as `simulate --percent 25:100:4 --settle` folds it, and from
+// flat by the continuation alone.
+TEST(Simulation, ABridgeOverTwoFlatFoldedValleysWindsAFullTurn) {
+  const char* pattern =
+      R"({"file_spec":1.1,"frame_unit":"m","vertices_coords":[[0,0],[0.5,0],[1,0],[1,1],)"
+      R"([0.52,1],[0.5,1],[0,1]],"edges_vertices":[[0,1],[1,2],[2,3],[3,4],[4,5],[5,6],[6,0],)"
+      R"([1,5],[1,4]],"edges_assignment":["B","B","B","B","B","B","B","V","V"]})";
+  const BarHingeModel model = buildModel(readFoldCreasePatternText(pattern, "valleys.fold"));
+  std::size_t bridges = 0;
+  for (std::size_t j = 0; j < model.hinges.size(); ++j)
+    if (model.bridgeKind(j) == 2) {
+      ++bridges;
+      EXPECT_NEAR(std::abs(model.hingeTarget[j]), 2.0 * std::numbers::pi, 1e-9);
+    }
+  ASSERT_EQ(bridges, 1u);
+  const auto expectAtTargets = [&](const SimulationState& state, double amount,
+                                   const StaticResult& result) {
+    EXPECT_TRUE(result.converged) << amount << ": residual " << result.residual;
+    EXPECT_LT(result.energy, 1e-12) << amount;
+    EXPECT_EQ(energyRises(result.history), 0u) << amount;
+    for (double error : creaseAngleError(model, state.positions, amount, state.hingeAngles))
+      EXPECT_LT(std::abs(error), 0.5) << amount;
+  };
+  SimulationState state = flatState(model);
+  for (double amount : {0.25, 0.5, 0.75, 1.0}) {
+    const StaticResult result = settle(model, amount, state);
+    expectAtTargets(state, amount, result);
+  }
+  // By the continuation alone: 180 / 20 degrees, nine stages, none of them soft.
+  StaticOptions continuation;
+  continuation.predictor = false;
+  SimulationState fromFlat = flatState(model);
+  const StaticResult result = settle(model, 1.0, fromFlat, continuation);
+  expectAtTargets(fromFlat, 1.0, result);
+  EXPECT_EQ(result.stages, 9u);
+}
+
 }  // namespace
 }  // namespace curvefold

@@ -207,6 +207,7 @@ void addHinge(BarHingeModel& model, const ElementInputs& in, std::size_t e, cons
   model.hingeDriven.push_back(crease || !paperMode ? 1 : 0);
   model.hingeStiffness.push_back(stiffness);
   model.hingeWrongSide.push_back(wrongSide);
+  model.hingeBridge.push_back(0);
 }
 
 // A bar per edge, in the pattern's edge order, and a hinge per interior edge; returns the
@@ -364,12 +365,18 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
       model.hingeDriven.push_back(driven ? 1 : 0);
       model.hingeStiffness.push_back(base * std::min(1.0, 2.0 * weakest));
       // The crossed creases' one-sided term moves onto the bridge, which now holds their angle
-      // (a square twist's valley crossed so was free to fold as a mountain).
+      // (a square twist's valley crossed so was free to fold as a mountain). Not where the
+      // bridge's own target passes flat-folded (two valleys of 180 degrees crossed: 360): the
+      // term's bound at flat-folded would hold it half a turn short of its target at every
+      // amount past half (langKnlDragon's two such bridges: NOT settled at 100%, energy 195 at
+      // the last stage's start).
       const double facetLike =
           (in.paperMode() ? 6.0 * in.bendingStiffness : in.options.facetStiffness * length) *
           std::min(1.0, 2.0 * weakest);
+      const bool pastFlatFolded = std::abs(target) > std::numbers::pi;
       model.hingeWrongSide.push_back(
-          mixedSides ? 0.0 : creaseSide * in.options.wrongSideScale * facetLike);
+          mixedSides || pastFlatFolded ? 0.0 : creaseSide * in.options.wrongSideScale * facetLike);
+      model.hingeBridge.push_back(crease ? 2 : 1);
       for (std::uint32_t k : path) crossed[k] = 1;
     }
   for (std::size_t j = 0; j < hingeCount; ++j)

@@ -134,6 +134,11 @@ struct BarHingeModel {
   // Per hinge, the one-sided term's stiffness (per radian^2) signed by the crease's side (+
   // valley, - mountain; the sign of hingeTarget); 0 for facets, bridges and the hinges bridged.
   std::vector<double> hingeWrongSide;
+  // Per hinge: 0 for an edge's own hinge; a bridge across slivers (bar_hinge_model.cpp) 1 when
+  // it crosses facets only, 2 when it crosses a crease (its target then holds the crease's angle,
+  // and may pass flat-folded: the sum of the targets it crosses). Empty for a model built by hand:
+  // read it with bridgeKind.
+  std::vector<std::uint8_t> hingeBridge;
 
   std::vector<std::array<std::uint32_t, 2>> glue;
   double glueStiffness = 0.0;
@@ -171,6 +176,10 @@ struct BarHingeModel {
     return hingeDriven[hinge] ? hingeTarget[hinge] * foldAmount : hingeTarget[hinge];
   }
   double motionTarget(std::size_t hinge, double foldAmount) const;
+  // hingeBridge's value (0 where it is not set).
+  std::uint8_t bridgeKind(std::size_t hinge) const {
+    return hinge < hingeBridge.size() ? hingeBridge[hinge] : 0;
+  }
 };
 
 // Builds the model. In design mode every interior edge is driven to its foldAngleDegrees times

@@ -5,13 +5,18 @@
 #include <deque>
 #include <map>
 #include <numbers>
+#include <set>
 
 #include <glm/geometric.hpp>
 
+#include "engine/geometry/self_intersection.hpp"
 #include "engine/simulation/contact.hpp"
 
 namespace curvefold {
 namespace {
+
+// How many times separateLayersUnlessCrossing flips the sides of pairs where the sheet crosses.
+constexpr int kFlipAttempts = 3;
 
 // The triangles' neighbours across hinges, for the shortest paths between layers.
 class LayerPaths {
@@ -120,13 +125,17 @@ int layerSide(const BarHingeModel& model, const std::vector<glm::dvec3>& positio
   return LayerPaths(model, positions, hingeAngles).side(vertex, triangle);
 }
 
-LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
-                               const std::vector<double>& hingeAngles) {
+namespace {
+
+// separateLayers with the sides of some pairs given (`sides`: those already in it are kept, the
+// others chosen by the folds and added).
+LayerSeparation separateWithSides(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
+                                  const std::vector<double>& hingeAngles,
+                                  std::map<ContactPair, int>& sides) {
   LayerSeparation out;
   if (!model.contact.enabled) return out;
   const double thickness = model.contact.thickness;
   const double wanted = thickness + 0.5 * model.contact.activation;
-  std::map<ContactPair, int> sides;  // chosen once, at the first sweep that finds the pair
   constexpr std::size_t kSweeps = 20;
   for (; out.sweeps < kSweeps; ++out.sweeps) {
     std::vector<ContactPair> pairs = findContactPairs(model, positions, 0.0);
@@ -164,15 +173,58 @@ LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec
   return out;
 }
 
+// The triangles of the pairs that cross (self_intersection.hpp).
+std::set<std::uint32_t> crossingTriangles(const BarHingeModel& model,
+                                          const std::vector<glm::dvec3>& positions) {
+  Sheet sheet;
+  sheet.positions = positions;
+  for (const glm::dvec3& p : model.flatPositions) sheet.development.emplace_back(p.x, p.y);
+  for (const auto& t : model.triangles) sheet.triangles.push_back({t[0], t[1], t[2]});
+  std::set<std::uint32_t> out;
+  for (const auto& [first, second] : findSelfIntersections(sheet).intersections) {
+    out.insert(static_cast<std::uint32_t>(first));
+    out.insert(static_cast<std::uint32_t>(second));
+  }
+  return out;
+}
+
+}  // namespace
+
+LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
+                               const std::vector<double>& hingeAngles) {
+  std::map<ContactPair, int> sides;  // chosen once, at the first sweep that finds the pair
+  return separateWithSides(model, positions, hingeAngles, sides);
+}
+
 bool separateLayersUnlessCrossing(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
                                   const std::vector<double>& hingeAngles) {
-  std::vector<glm::dvec3> given = positions;
-  if (separateLayers(model, positions, hingeAngles).pairs == 0) return false;
-  if (crossingTrianglePairs(model, positions) > 0 && crossingTrianglePairs(model, given) == 0) {
-    positions.swap(given);
-    return false;
+  const std::vector<glm::dvec3> given = positions;
+  std::map<ContactPair, int> sides;
+  if (separateWithSides(model, positions, hingeAngles, sides).pairs == 0) return false;
+  if (crossingTrianglePairs(model, positions) == 0) return true;
+  if (crossingTrianglePairs(model, given) > 0) return true;  // crossed as given: kept, as before
+  // Sides the folds chose wrongly pass the sheet through itself where they moved it (xr_studio
+  // glued: 3 pairs in touch became 3 crossing pairs): the pairs with a vertex or triangle among
+  // the crossing triangles take the other side, and the separation is made again from the given
+  // positions, a few times; what still crosses is undone.
+  for (int attempt = 0; attempt < kFlipAttempts; ++attempt) {
+    const std::set<std::uint32_t> crossing = crossingTriangles(model, positions);
+    std::set<std::uint32_t> crossingVertices;
+    for (std::uint32_t t : crossing)
+      for (std::uint32_t v : model.triangles[t]) crossingVertices.insert(v);
+    bool flipped = false;
+    for (auto& [pair, side] : sides)
+      if (crossing.count(pair.triangle) || crossingVertices.count(pair.vertex)) {
+        side = -side;
+        flipped = true;
+      }
+    if (!flipped) break;
+    positions = given;
+    separateWithSides(model, positions, hingeAngles, sides);
+    if (crossingTrianglePairs(model, positions) == 0) return true;
   }
-  return true;
+  positions = given;
+  return false;
 }
 
 }  // namespace curvefold

@@ -50,12 +50,15 @@ struct LayerSeparation {
 LayerSeparation separateLayers(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
                                const std::vector<double>& hingeAngles);
 
-// separateLayers, undone (the positions left as given) where the separated positions pass the
-// sheet through itself (crossingTrianglePairs, contact.hpp) and the given ones did not: a side
-// the path's folds chose wrongly (xr_studio glued: 3 pairs in touch became 3 crossing pairs, and
-// its settle then ran from the soft bars and ended with 550). The static solver's guard on each
-// predictor guess. True when the positions were moved (some pair was within the thickness and
-// the separation kept); the caller recomputes the hinge angles then.
+// separateLayers, made again where the separated positions pass the sheet through itself
+// (crossingTrianglePairs, contact.hpp) and the given ones did not: a side the path's folds chose
+// wrongly (xr_studio glued: 3 pairs in touch became 3 crossing pairs). Each pair with its vertex
+// or triangle among the crossing triangles takes the other side and the separation runs again
+// from the given positions, up to three times; what then still crosses is undone (the positions
+// left as given: the layers in touch, which the barrier pushes apart blind to their sides, and
+// xr_studio's settle from there ended with 18 pairs crossing). The static solver's guard on each
+// predictor guess. True when the positions were moved (some pair was within the thickness and a
+// separation kept); the caller recomputes the hinge angles then.
 bool separateLayersUnlessCrossing(const BarHingeModel& model, std::vector<glm::dvec3>& positions,
                                   const std::vector<double>& hingeAngles);
 

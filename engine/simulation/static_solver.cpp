@@ -408,7 +408,8 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       // the layer it lies on, as the folds between them order them (layer_order.hpp). Where
       // that passes the sheet through itself (a side the path's folds chose wrongly: xr_studio's
       // 3 pairs in touch became 3 crossing pairs, and the settle from the soft bars ended with
-      // 550), the guess stays as shaped (separateLayersUnlessCrossing).
+      // 550), the pairs there take their other side, and where that crosses too the guess stays
+      // as shaped (separateLayersUnlessCrossing).
       if (model.contact.enabled &&
           separateLayersUnlessCrossing(model, guess.positions, guess.hingeAngles))
         guess.hingeAngles = hingeAngles(model, guess.positions, guess.hingeAngles);
@@ -429,9 +430,13 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       separateLayers(model, state.positions, state.hingeAngles).pairs > 0)
     state.hingeAngles = hingeAngles(model, state.positions, state.hingeAngles);
   const std::vector<double> start = state.hingeAngles;
+  // A bridge's target is the sum of the targets it crosses (bar_hinge_model.cpp), each of which
+  // the stages already limit: counted too, a bridge over two valleys of 180 degrees (360)
+  // doubled the stages (langKnlDragon: 19 from flat, NOT settled in 400 iterations).
   double largestChange = 0.0;
   for (std::size_t j = 0; j < goal.size(); ++j)
-    largestChange = std::max(largestChange, std::abs(goal[j] - start[j]));
+    if (model.bridgeKind(j) == 0)
+      largestChange = std::max(largestChange, std::abs(goal[j] - start[j]));
   const double stageRadians = options.maxStageDegrees * std::numbers::pi / 180.0;
   const std::size_t stages =
       std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(largestChange / stageRadians)));
@@ -448,8 +453,11 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
   if (softFacets) {
     softModel = model;
     softFacets = false;  // unless some facet bends (a crease pattern's flat facets stay stiff)
+    // A bridge across slivers that crosses a crease holds the crease's angle: it is driven with
+    // the creases, not softened with the facets (a crease pattern's bridges made every stage of
+    // langKnlDragon soft, each cut at maxSoftStageIterations short of its tolerance).
     for (std::size_t j = 0; j < model.hinges.size(); ++j)
-      if (!model.hingeCrease[j] && model.hingeTarget[j] != 0.0) {
+      if (!model.hingeCrease[j] && model.bridgeKind(j) != 2 && model.hingeTarget[j] != 0.0) {
         softModel.hingeStiffness[j] *= options.foldingFacetScale;
         softFacets = true;
       }
