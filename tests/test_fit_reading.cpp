@@ -637,6 +637,36 @@ TEST(WholeSheetFolds, AMotionsPlanesArePlacedWhereTheSheetLetsThemMiss) {
   }
 }
 
+// The same in a fit: a rectangle's right part folded up (C), the sheet mirrored whole through
+// x = 0.1 (W, its plane past the part left flat), then the flap's top folded out past that plane
+// (C). Read with the mirror first or last, its plane cuts the sheet (the rectangle reaches 0.1485
+// first, the flap's top 0.1185 last), and within three folds no other way or flip takes one
+// plane; made after the first fold read, it misses the sheet.
+TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
+  if (testing::kSanitized)
+    GTEST_SKIP() << "a real search (registration and replays); "
+                    "WholeSheetFolds.AMotionsPlanesArePlacedWhereTheSheetLetsThemMiss covers the "
+                    "placement";
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  FoldSession folding(initial);
+  auto fold = [&](glm::dvec3 grab, glm::dvec3 drop) {
+    folding.beginDragNear(grab);
+    folding.updateDrag(drop);
+    return folding.commit();
+  };
+  ASSERT_TRUE(fold({0.1485, 0.0, 0.0}, {0.05, 0.0, 0.0985}));  // up about x = 0.05
+  const Sheet before = folding.fixed();
+  ASSERT_TRUE(fold({-0.1485, 0.0, 0.0}, {0.3485, 0.0, 0.0}));  // mirrored whole through x = 0.1
+  for (std::size_t v = 0; v < before.vertexCount(); ++v)
+    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  ASSERT_TRUE(fold({0.15, 0.0, 0.0985}, {0.0815, 0.0, 0.03}));  // the flap's top folded out
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  FoldSession session(initial);
+  const FitResult result = expectFoundByUnfolding(session, target, 3, 300);
+  EXPECT_EQ(session.foldCount(), 3u);
+}
+
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   const Sheet initial = makeSurface("cone", {{"resolution", 24}});
   FoldSession folding(initial);
