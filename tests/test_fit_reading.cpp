@@ -583,9 +583,10 @@ TEST(WholeSheetFolds, ADisksOwnTurnsTakeAWayFoundToTheDesignsTwoPlanes) {
   EXPECT_GE(twoPlaneWays, 1u);
 }
 
-// A design whose whole-sheet folds came between its creasing folds (issue 38, 1: the disk of
-// seed 9, C C W C C W C C): where the sheet lies first and last, every plane of the motion cuts
-// it, and only as it lay in between does one miss it. The fit made whole-sheet folds only first
+// A design whose whole-sheet folds came between its creasing folds (issue 38, 1: C C W C C W C C
+// on the disk of seed 9 was thought such a case; docs/performance.md, unfold14): where the sheet
+// lies first and last, every plane of the motion cuts it, and only as it lay in between does one
+// miss it. The fit made whole-sheet folds only first
 // or last; placed among the folds read, each where it misses the sheet then, they are made.
 // Stages as a fold leaves a flat sheet: a square, then its corner folded far off to one side
 // (the rest smaller), then unfolded wide again.
