@@ -583,6 +583,91 @@ TEST(WholeSheetFolds, ADisksOwnTurnsTakeAWayFoundToTheDesignsTwoPlanes) {
   EXPECT_GE(twoPlaneWays, 1u);
 }
 
+// A design whose whole-sheet folds came between its creasing folds (issue 38, 1: C C W C C W C C
+// on the disk of seed 9 was thought such a case; docs/performance.md, unfold14): where the sheet
+// lies first and last, every plane of the motion cuts it, and only as it lay in between does one
+// miss it. The fit made whole-sheet folds only first
+// or last; placed among the folds read, each where it misses the sheet then, they are made.
+// Stages as a fold leaves a flat sheet: a square, then its corner folded far off to one side
+// (the rest smaller), then unfolded wide again.
+TEST(WholeSheetFolds, AMotionsPlanesArePlacedWhereTheSheetLetsThemMiss) {
+  auto square = [](double x0, double x1, double y0, double y1) {
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i <= 10; ++i)
+      for (int j = 0; j <= 10; ++j)
+        points.emplace_back(x0 + (x1 - x0) * i / 10.0, y0 + (y1 - y0) * j / 10.0, 0.0);
+    return points;
+  };
+  const std::vector<glm::dvec3> wide = square(-1.0, 1.0, -1.0, 1.0);
+  const std::vector<glm::dvec3> aside = square(0.5, 1.0, -0.5, 0.5);
+  auto mirrorThrough = [](glm::dvec3 n, double d) {  // the plane n.x = d
+    n = glm::normalize(n);
+    return RigidMotion{glm::dmat3(1.0) - 2.0 * glm::outerProduct(n, n), 2.0 * d * n};
+  };
+  // A mirror through x = 0.2, and a turn of 40 degrees about the line x = 0.2, y = 0 (two
+  // planes through it): both cut the wide sheet, and miss the one aside.
+  const RigidMotion mirror = mirrorThrough({1.0, 0.0, 0.0}, 0.2);
+  const double a = 40.0 * std::numbers::pi / 180.0;
+  const glm::dvec3 n2(std::cos(0.5 * a), std::sin(0.5 * a), 0.0);
+  const RigidMotion second = mirrorThrough(n2, glm::dot(n2, glm::dvec3(0.2, 0.0, 0.0)));
+  const RigidMotion turn{second.linear * mirror.linear,
+                         second.linear * mirror.offset + second.offset};
+  for (const RigidMotion& motion : {mirror, turn}) {
+    const std::size_t count = glm::determinant(motion.linear) < 0.0 ? 1 : 2;
+    SCOPED_TRACE(count);
+    // First or last only (the stages the fit tried before): none.
+    EXPECT_TRUE(wholeSheetReflections(motion, wide, count).empty());
+    EXPECT_TRUE(placedWholeSheetReflections(motion, {wide, wide}, count).empty());
+    const std::vector<PlacedPlane> placed =
+        placedWholeSheetReflections(motion, {wide, aside, wide}, count);
+    ASSERT_EQ(placed.size(), count);
+    RigidMotion made;
+    for (const PlacedPlane& p : placed) {
+      EXPECT_EQ(p.after, 1u);
+      // Each misses the sheet aside as the planes before it left it.
+      bool above = false, below = false;
+      for (const glm::dvec3& q : aside) {
+        const double d = p.plane.signedDistance(made(q));
+        EXPECT_GT(std::abs(d), 1e-3);
+        (d > 0.0 ? above : below) = true;
+      }
+      EXPECT_FALSE(above && below);
+      made = then(made, reflectionOf(p.plane));
+    }
+    for (const glm::dvec3& q : wide) EXPECT_LT(glm::distance(made(q), motion(q)), 1e-9);
+  }
+}
+
+// The same in a fit: a rectangle's right part folded up (C), the sheet mirrored whole through
+// x = 0.1 (W, its plane past the part left flat), then the flap's top folded out past that plane
+// (C). Read with the mirror first or last, its plane cuts the sheet (the rectangle reaches 0.1485
+// first, the flap's top 0.1185 last), and within three folds no other way or flip takes one
+// plane; made after the first fold read, it misses the sheet.
+TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
+  if (testing::kSanitized)
+    GTEST_SKIP() << "a real search (registration and replays); "
+                    "WholeSheetFolds.AMotionsPlanesArePlacedWhereTheSheetLetsThemMiss covers the "
+                    "placement";
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  FoldSession folding(initial);
+  auto fold = [&](glm::dvec3 grab, glm::dvec3 drop) {
+    folding.beginDragNear(grab);
+    folding.updateDrag(drop);
+    return folding.commit();
+  };
+  ASSERT_TRUE(fold({0.1485, 0.0, 0.0}, {0.05, 0.0, 0.0985}));  // up about x = 0.05
+  const Sheet before = folding.fixed();
+  ASSERT_TRUE(fold({-0.1485, 0.0, 0.0}, {0.3485, 0.0, 0.0}));  // mirrored whole through x = 0.1
+  for (std::size_t v = 0; v < before.vertexCount(); ++v)
+    ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
+  ASSERT_TRUE(fold({0.15, 0.0, 0.0985}, {0.0815, 0.0, 0.03}));  // the flap's top folded out
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  FoldSession session(initial);
+  const FitResult result = expectFoundByUnfolding(session, target, 3, 300);
+  EXPECT_EQ(session.foldCount(), 3u);
+}
+
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   const Sheet initial = makeSurface("cone", {{"resolution", 24}});
   FoldSession folding(initial);

@@ -73,6 +73,10 @@ constexpr std::size_t kWholeSheetTries = 6;
 constexpr std::size_t kLastSeeds = 16;
 // Folds read made from their other side, at most, where the whole-sheet folds take too many.
 constexpr std::size_t kFlipTries = 8;
+// Ways whose whole-sheet folds are placed among the folds read (each a replay to find where the
+// sheet lies after each fold read), and placements made and measured.
+constexpr std::size_t kPlacedWays = 12;
+constexpr std::size_t kPlacedTries = 6;
 // Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
 constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
@@ -1337,6 +1341,28 @@ class FitRun {
       }
       return false;
     };
+    // A design without symmetry whose whole-sheet folds came between its creasing folds
+    // (C C W C C W C C) where no plane of its motion misses the sheet first or last (a turn about
+    // a line through both): the motion's planes placed among the folds read, each where it
+    // misses the sheet as it lies then (placedWholeSheetReflections), the fewest planes first.
+    std::size_t placedWays = 0, placedTries = 0;
+    auto tryPlaced = [&](const RigidMotion& motion) {
+      if (symmetry || plan.folds.empty() || placedWays >= kPlacedWays ||
+          placedTries >= kPlacedTries || reading.passed() || deadline.passed())
+        return false;
+      ++placedWays;
+      const TargetUnfolding movedBack = movedBackBy(motion);
+      std::vector<std::vector<glm::dvec3>> stages;
+      if (!stagesOf(movedBack, stages, reading)) return false;
+      for (std::size_t count = 1; count <= most; ++count) {
+        if (reading.passed()) return false;
+        const std::vector<PlacedPlane> placed = placedWholeSheetReflections(motion, stages, count);
+        if (placed.empty()) continue;
+        ++placedTries;
+        return makePlacedFolds(placed, movedBack, deadline);
+      }
+      return false;
+    };
     // A sheet with discrete symmetries (a disk's polygon's turns and flips) lies on the copy each
     // way registered times each of them, and registration's starts reach only some: those whose
     // kind takes fewer whole-sheet folds than the way itself, and no more than are left, are
@@ -1426,8 +1452,69 @@ class FitRun {
         }
       for (std::size_t way = 0; way < motions.size(); ++way)
         if (!withinCount[way] && tryFlips(motions[way])) return true;
+      for (std::size_t way = 0; way < motions.size(); ++way)
+        if (!withinCount[way] && tryPlaced(motions[way])) return true;
     }
     return false;
+  }
+
+  // The sheet after each of the first k folds of `read` (moved back onto the sheet), k = 0 to
+  // all of them: where the whole-sheet folds may go (placedWholeSheetReflections). False where a
+  // fold read cannot be made or the deadline passes.
+  bool stagesOf(const TargetUnfolding& read, std::vector<std::vector<glm::dvec3>>& stages,
+                const Deadline& deadline) const {
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    const Sheet& initial = session_.initial();
+    stages.assign(1, branch->fixed().positions);
+    for (std::size_t k = 0; k < read.folds.size(); ++k) {
+      if (deadline.passed()) return false;
+      const glm::dvec2 seed = developmentOf(
+          initial, closestSurfacePoint(initial, read.unfolded[read.folds[k].seedVertex]));
+      if (!makeRead(read, k, seed, *branch)) return false;
+      stages.push_back(branch->fixed().positions);
+    }
+    return true;
+  }
+
+  // The folds read (`read`, moved back onto the sheet) with the whole-sheet folds `planes` made
+  // among them where placed: each fold read after a whole-sheet fold made moved by it (its plane
+  // reflected through the plane, its seed the same point of the development), so the form ends
+  // moved by all of them. True when that reaches the target.
+  bool makePlacedFolds(const std::vector<PlacedPlane>& planes, const TargetUnfolding& read,
+                       const Deadline& deadline) {
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    const Sheet& initial = session_.initial();
+    TargetUnfolding moved = read;
+    FoldSequence sequence;
+    RigidMotion made;
+    auto noteGroup = [&](std::size_t before) {
+      sequence.folds.insert(
+          sequence.folds.end(), branch->folds().begin() + static_cast<std::ptrdiff_t>(before),
+          branch->folds().begin() + static_cast<std::ptrdiff_t>(branch->foldCount()));
+      sequence.groups.push_back(branch->foldCount() - before);
+    };
+    std::size_t next = 0;
+    for (std::size_t k = 0; k <= read.folds.size(); ++k) {
+      for (; next < planes.size() && planes[next].after == k; ++next) {
+        const std::size_t before = branch->foldCount();
+        const glm::dvec3 grabbed = branch->beginDragAtDevelopment(branch->fixed().development[0]);
+        branch->updateDrag(planes[next].plane.reflect(grabbed));
+        if (!branch->commit()) return false;
+        noteGroup(before);
+        made = then(made, reflectionOf(planes[next].plane));
+      }
+      if (k == read.folds.size()) break;
+      if (deadline.passed() || sequence.groups.size() >= options_.maxFolds) return false;
+      const ReflectionPlane& was = read.folds[k].plane;
+      moved.folds[k].plane = {made(was.point), glm::normalize(made.linear * was.normal)};
+      const glm::dvec2 seed = developmentOf(
+          initial, closestSurfacePoint(initial, read.unfolded[read.folds[k].seedVertex]));
+      const std::size_t before = branch->foldCount();
+      if (!makeRead(moved, k, seed, *branch)) return false;
+      noteGroup(before);
+    }
+    if (sequence.groups.size() > options_.maxFolds) return false;
+    return offer(std::move(sequence), *branch);
   }
 
   // The whole-sheet folds `planes` and the folds read (`read`, moved back onto the sheet where the

@@ -713,6 +713,110 @@ std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
 
 namespace curvefold {
 
+namespace {
+
+// `planes` placed each at the earliest stage (no earlier than the one before it) where it misses
+// the sheet as it lies then: the stage moved by the planes made before it. Checked with the
+// plane moved back rather than the stage moved (one plane, not every point).
+std::optional<std::vector<PlacedPlane>> placedEarliest(
+    const std::vector<ReflectionPlane>& planes, const std::vector<std::vector<glm::dvec3>>& stages,
+    double margin) {
+  std::vector<PlacedPlane> placed;
+  RigidMotion made;
+  std::size_t k = 0;
+  for (const ReflectionPlane& plane : planes) {
+    const RigidMotion back = inverse(made);
+    const ReflectionPlane onStage{back(plane.point), glm::normalize(back.linear * plane.normal)};
+    while (k < stages.size() && !misses(onStage, stages[k], margin)) ++k;
+    if (k == stages.size()) return std::nullopt;
+    placed.push_back({plane, k});
+    made = then(made, reflectionOf(plane));
+  }
+  return placed;
+}
+
+}  // namespace
+
+std::vector<PlacedPlane> placedWholeSheetReflections(
+    const RigidMotion& motion, const std::vector<std::vector<glm::dvec3>>& stages,
+    std::size_t count) {
+  if (stages.empty() || stages.front().empty() || count == 0) return {};
+  double scale = 1e-9;
+  for (const std::vector<glm::dvec3>& stage : stages) scale = std::max(scale, diagonalOf(stage));
+  const double margin = 1e-3 * scale;  // as wholeSheetReflections keeps clear of the sheet
+  if (sameMotion(motion, RigidMotion{}, scale)) return {};
+  const Eigen::Matrix3d A = orthogonalPart(motion.linear);
+  const glm::dvec3 t = motion.offset;
+  auto made = [&](const std::vector<ReflectionPlane>& planes) {
+    RigidMotion m;
+    for (const ReflectionPlane& plane : planes) m = then(m, reflectionOf(plane));
+    return sameMotion(m, motion, scale);
+  };
+  auto tryPlanes = [&](const std::vector<ReflectionPlane>& planes) {
+    if (!made(planes)) return std::optional<std::vector<PlacedPlane>>{};
+    return placedEarliest(planes, stages, margin);
+  };
+  if (count == 1 && A.determinant() < 0.0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (A + A.transpose()));
+    const glm::dvec3 n = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(0))));
+    if (const auto placed = tryPlanes({{0.5 * glm::dot(t, n) * n, n}})) return *placed;
+    return {};
+  }
+  if (count == 2 && A.determinant() > 0.0) {
+    glm::dvec3 axis;
+    double angle = 0.0;
+    axisAngle(A, axis, angle);
+    if (angle < 1e-9) {
+      // A shift: two parallel planes half its length apart, anywhere along it.
+      const double length = glm::length(t);
+      if (length < 1e-12 * scale) return {};
+      const glm::dvec3 n = t / length;
+      double low = 1e300, high = -1e300;
+      for (const std::vector<glm::dvec3>& stage : stages)
+        for (const glm::dvec3& p : stage) {
+          low = std::min(low, glm::dot(n, p));
+          high = std::max(high, glm::dot(n, p));
+        }
+      constexpr int kSteps = 400;
+      for (int step = 0; step <= kSteps; ++step) {
+        const double d1 =
+            low - length - margin +
+            (high - low + 2.0 * length + 2.0 * margin) * static_cast<double>(step) / kSteps;
+        if (const auto placed = tryPlanes({{d1 * n, n}, {(d1 + 0.5 * length) * n, n}}))
+          return *placed;
+      }
+      return {};
+    }
+    if (std::abs(glm::dot(t, axis)) > 1e-9 * scale) return {};  // a screw: no two planes
+    const glm::dvec3 through = glmOf(Eigen::Vector3d(
+        (Eigen::Matrix3d::Identity() - A).completeOrthogonalDecomposition().solve(eigenOf(t))));
+    const glm::dvec3 u = glm::normalize(
+        glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 w = glm::cross(axis, u);
+    for (int step = 0; step < 720; ++step) {
+      const double phi = step * std::numbers::pi / 360.0;
+      const glm::dvec3 n1 = std::cos(phi) * u + std::sin(phi) * w;
+      for (const double sign : {1.0, -1.0}) {
+        const double psi = phi + sign * 0.5 * angle;
+        if (const auto placed =
+                tryPlanes({{through, n1}, {through, std::cos(psi) * u + std::sin(psi) * w}}))
+          return *placed;
+      }
+    }
+    return {};
+  }
+  if (count < 3) return {};
+  // Three or more: all at one stage, the earliest that takes them.
+  for (std::size_t k = 0; k < stages.size(); ++k) {
+    const std::vector<ReflectionPlane> planes = wholeSheetReflections(motion, stages[k], count);
+    if (planes.empty()) continue;
+    std::vector<PlacedPlane> placed;
+    for (const ReflectionPlane& plane : planes) placed.push_back({plane, k});
+    return placed;
+  }
+  return {};
+}
+
 std::vector<RigidMotion> sheetSymmetries(const TriangleMesh& sheet, double tolerance) {
   const std::vector<std::pair<std::uint32_t, std::uint32_t>> rim = boundaryEdges(sheet);
   if (rim.empty()) return {};

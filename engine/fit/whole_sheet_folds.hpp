@@ -84,6 +84,29 @@ std::vector<ReflectionPlane> wholeSheetReflections(const RigidMotion& motion,
                                                    const std::vector<glm::dvec3>& points,
                                                    std::size_t count);
 
+// A whole-sheet fold placed among the folds read: made after `after` of them (0: before the
+// first), through `plane` as the sheet lies then (moved by the whole-sheet folds before it).
+struct PlacedPlane {
+  ReflectionPlane plane;
+  std::size_t after = 0;
+};
+
+// Planes, in folding order, whose reflections make `motion`, each placed among the folds read
+// where it misses the sheet: `stages[k]` is the sheet after the first k folds read as they lie
+// with every whole-sheet fold last (stages[0] the sheet itself), so the motion is what is left
+// to move the last stage onto the target. A plane made after k folds acts on the stage k moved
+// by the planes before it, and every later fold read is then made moved by it too (its plane
+// reflected through it, its seed in the development as before), so the form ends moved by
+// `motion` whatever the places. A design whose whole-sheet folds came between creasing ones
+// (C C W C C W C C) may take no planes that miss the first or the last stage (a turn about a
+// line through both) and yet the planes it was made with, placed where it made them.
+// One plane (a mirror) and two (a turn about a line, tried every half degree about it, or a
+// shift) are placed one by one, each at the earliest stage it misses; three or more all at one
+// stage (wholeSheetReflections on it). Empty where no placement is found.
+std::vector<PlacedPlane> placedWholeSheetReflections(
+    const RigidMotion& motion, const std::vector<std::vector<glm::dvec3>>& stages,
+    std::size_t count);
+
 // The sheet's discrete symmetries other than the identity (see above): motions taking every
 // boundary vertex within `tolerance` (metres) of the boundary and every so many vertices within it
 // of the sheet. Empty for a sheet with none (or no boundary).
