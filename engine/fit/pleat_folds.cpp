@@ -59,12 +59,6 @@ constexpr double kFamilyShares[] = {0.9, 0.65};
 // way from the centre to the end) and the crosses made, the best by the model.
 constexpr double kCrossHinges[] = {0.15, 0.3, 0.45, 0.6};
 constexpr std::size_t kCrossesTried = 4;
-// Crosses of families (a flat sheet toward a steep saddle): hinges per end, the nearest and the
-// farthest hinge's places (of the way from the centre to the end; evenly between) for each line,
-// the families made (the best by the model).
-constexpr int kCrossFamilyHinges[] = {2, 3};
-constexpr std::pair<double, double> kCrossFamilySpans[] = {{0.15, 0.65}, {0.3, 0.8}};
-constexpr std::size_t kCrossFamiliesTried = 2;
 // Samples of the exact distance a family's farthest point is measured with.
 constexpr std::size_t kFarthestSamples = 3000;
 
@@ -372,89 +366,6 @@ std::vector<std::array<SolvedPleat, 4>> solveCrosses(
   return best;
 }
 
-// A cross of families: both ends of a line and of the line across it, each turned at several
-// hinges (from the centre out), ends in the order of solveCrosses' (+line, -line, +across,
-// -across).
-struct CrossFamily {
-  std::array<std::vector<SolvedPleat>, 4> ends;
-  double gain = 0.0;
-};
-
-// Crosses whose ends turn at several hinges each (kCrossFamilyHinges, evenly spread over each
-// line's span), as a paper artist pleats a steep saddle: one hinge per end turns a straight flap
-// where the target's slope runs from 0 to 2.5 (saddle_mm_thin's rising ends: its fit ended 26%
-// of the diagonal away there). Solved as solveCrosses' (ramps beyond each hinge, in least
-// squares, all turns together), the best kCrossFamiliesTried of each hinge count, best first.
-std::vector<CrossFamily> solveCrossFamilies(
-    const std::vector<glm::dvec3>& points, const std::vector<double>& heights,
-    const glm::dvec3& centre, const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>& axes) {
-  const glm::dvec3 up = axisOf(axes, 0);
-  const glm::dvec3 e1 = mostCurvedDirection(points, heights, centre, axisOf(axes, 2),
-                                            axisOf(axes, 1)),
-                   e2 = glm::cross(up, e1);
-  std::vector<CrossFamily> best;
-  for (const int hinges : kCrossFamilyHinges) {
-    std::vector<CrossFamily> families;
-    for (int k = 0; k < kDirections; ++k) {
-      const double angle = std::numbers::pi * k / kDirections;
-      const glm::dvec3 line = std::cos(angle) * e1 + std::sin(angle) * e2;
-      const glm::dvec3 across = glm::cross(up, line);
-      const std::array<glm::dvec3, 4> directions{line, -line, across, -across};
-      std::array<std::vector<double>, 4> s;
-      std::array<double, 4> reach{};
-      for (int j = 0; j < 4; ++j) {
-        s[j].resize(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-          s[j][i] = glm::dot(points[i] - centre, directions[j]);
-          reach[j] = std::max(reach[j], s[j][i]);
-        }
-      }
-      const int unknowns = 4 * hinges;
-      for (const auto& lineSpan : kCrossFamilySpans)
-        for (const auto& acrossSpan : kCrossFamilySpans) {
-          // Column j * hinges + m: end j's m-th hinge from the centre.
-          std::vector<double> at(unknowns);
-          for (int j = 0; j < 4; ++j) {
-            const auto& [first, last] = j < 2 ? lineSpan : acrossSpan;
-            for (int m = 0; m < hinges; ++m)
-              at[j * hinges + m] = (first + (last - first) * m / (hinges - 1)) * reach[j];
-          }
-          Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(unknowns, unknowns);
-          Eigen::VectorXd right = Eigen::VectorXd::Zero(unknowns), row(unknowns);
-          for (std::size_t i = 0; i < points.size(); ++i) {
-            for (int c = 0; c < unknowns; ++c) row(c) = std::max(0.0, s[c / hinges][i] - at[c]);
-            normal.noalias() += row * row.transpose();
-            right += heights[i] * row;
-          }
-          normal.diagonal().array() += 1e-9 * (normal.trace() + 1e-30);
-          Eigen::VectorXd turn = normal.ldlt().solve(right);
-          // Each turn bounded as a cross's (an end's sum is checked where it is made).
-          for (int c = 0; c < unknowns; ++c) {
-            turn(c) = std::clamp(turn(c), -kMostSolvedTurn, kMostSolvedTurn);
-            if (!(std::abs(turn(c)) >= kLeastSolvedTurn)) turn(c) = 0.0;
-          }
-          CrossFamily family;
-          family.gain = 2.0 * turn.dot(right) - turn.dot(normal * turn);
-          if (!(family.gain > 0.0)) continue;
-          int made = 0;
-          for (int j = 0; j < 4; ++j)
-            for (int m = 0; m < hinges; ++m)
-              if (const int c = j * hinges + m; turn(c) != 0.0) {
-                family.ends[j].push_back({directions[j], up, at[c], turn(c), 0.0});
-                ++made;
-              }
-          // More than a cross: some end turns at two hinges or more.
-          if (made > 4) families.push_back(std::move(family));
-        }
-    }
-    std::stable_sort(families.begin(), families.end(),
-                     [](const auto& a, const auto& b) { return a.gain > b.gain; });
-    for (std::size_t i = 0; i < families.size() && i < kCrossFamiliesTried; ++i)
-      best.push_back(std::move(families[i]));
-  }
-  return best;
-}
-
 // A rigid motion, x -> linear * x + shift: where the pleats made so far on an end have moved it.
 struct Motion {
   glm::dmat3 linear{1.0};
@@ -732,62 +643,6 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
     }
     return scoreMade(kNone);
   };
-  // A cross of families (solveCrossFamilies): the first line's ends bent at each of their hinges
-  // from the centre out, one fold each, each plane laid on the end as the bends before it left it
-  // (the hinge moved with the end, the end's direction turned by the turns so far); then the line
-  // across pleated at each of its hinges on the sheet the bends left, each pleat's planes moved
-  // with its end by the pleats made before it there (as a family's).
-  auto tryCrossFamily = [&](const CrossFamily& family, double share) {
-    Folds first;
-    for (int i = 0; i < 2; ++i) {
-      Motion moved;
-      double turned = 0.0;  // the end's turn so far
-      for (const SolvedPleat& pleat : family.ends[i]) {
-        const std::optional<Hinge> hinge =
-            hingeAt(centre + pleat.at * pleat.direction, pleat.direction, 1.0);
-        if (!hinge) return kNone;
-        const double turn = share * pleat.turn;
-        // A plane through the hinge at half the turn to the end: past a right angle in all the
-        // end would fold back over the sheet.
-        if (!(std::abs(turned + turn) < 80.0 * kDegree)) return kNone;
-        const glm::dvec3 now = std::cos(turned) * hinge->along + std::sin(turned) * pleat.up;
-        const glm::dvec3 then =
-            std::cos(turned + turn) * hinge->along + std::sin(turned + turn) * pleat.up;
-        const ReflectionPlane plane{moved(hinge->middle), glm::normalize(now - then)};
-        first.emplace_back(plane, hinge->seed);
-        moved = reflectedAfter(plane, moved);
-        turned += turn;
-      }
-    }
-    deadline.countEvaluation();
-    if (!makeFolds(first, sheet)) {
-      undoAll();
-      return kNone;
-    }
-    const Sheet bent = session.fixed();
-    const std::vector<glm::dvec3> bentNormals = vertexNormals(bent);
-    Folds second;
-    for (int i = 2; i < 4; ++i) {
-      Motion moved;
-      for (SolvedPleat pleat : family.ends[i]) {
-        pleat.turn *= share;
-        const Folds made = solvedFoldsOn(bent, bentNormals, pleat, true);
-        if (made.size() != 2) {
-          undoAll();
-          return kNone;
-        }
-        const ReflectionPlane a = moved(made[0].first), b = moved(made[1].first);
-        second.emplace_back(a, made[0].second);
-        second.emplace_back(b, made[1].second);
-        moved = reflectedAfter(b, reflectedAfter(a, moved));
-      }
-    }
-    if (!makeFolds(second, bent)) {
-      undoAll();
-      return kNone;
-    }
-    return scoreMade(kNone);
-  };
   const std::vector<double> heights = heightsOver(points, distances, query, axisOf(solver, 0));
   const std::vector<SolvedPleat> solved = solvePleats(points, heights, centre, solver, width);
   // Pairs first: toward a saddle one step turns both ends of a curved sheet. Not on a flat one
@@ -833,13 +688,6 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
         std::array<SolvedPleat, 4> tried = cross;
         for (SolvedPleat& pleat : tried) pleat.turn *= share;
         tryCross(tried);
-      }
-  if (flat && !fitter.revolutionTarget())
-    for (const CrossFamily& family :
-         solveCrossFamilies(points, heightsAlong(points, query, axisOf(solver, 0)), centre, solver))
-      for (const double share : kSolvedShares) {
-        if (deadline.passed()) return out;
-        tryCrossFamily(family, share);
       }
   for (const auto& [a, b] :
        flat ? decltype(solvedPairs(solved, 0.0)){} : solvedPairs(solved, 4.0 * width))
