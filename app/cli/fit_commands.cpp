@@ -63,9 +63,12 @@ TriangleMesh shapeOf(const std::string& path) {
 // symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is sized to (a note says so); the
 // caller checks the start against it.
-// `deadline`: when the choice stops measuring more sheets (a share of --time).
+// `deadline`: when the choice stops measuring more sheets (a share of --time); `work`: the same
+// share counted in work (work_share.hpp), for the sheets measured and the choice by the first
+// step toward a saddle, which read a cancel as the clock's end (the tube rings' probe does not: a
+// cancel drops the rings it grew, so it keeps `deadline`).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const Deadline& deadline,
+                   const std::string& output, const Deadline& deadline, const Deadline& work,
                    std::shared_ptr<const TubeChains>& tubeChains) {
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -91,8 +94,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
     StartChoice start;
     try {
-      start = chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "",
-                          deadline);
+      start =
+          chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "", work);
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
@@ -100,7 +103,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
     // nearer, and gets the paper its pleats fold away given back.
     std::optional<FirstStepStart> firstStep =
-        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
+        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, work);
     // Toward a vase, the cone around its profile where its rings land nearer than the start's
     // (rings only narrow a tube: a belly outside the start is never reached).
     // The probe's rings are handed to the search, which grows them on.
@@ -393,10 +396,14 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
     startShare.emplace(kStartShare * options.seconds - (processCpuSeconds() - startedCpu),
                        kStartShare * options.seconds - elapsed,
                        kStartLatest * options.seconds - elapsed, &InterruptGuard::flag());
-  const Deadline startDeadline = startShare ? startShare->deadline() : Deadline{};
+  const Deadline startDeadline =
+      timed ? Deadline{}.notAfter(started +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(kStartShare * options.seconds)))
+            : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
-  Design design =
-      startDesign(options.from, command, *fitter, options.output, startDeadline, tubeChains);
+  Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
+                              startShare ? startShare->deadline() : Deadline{}, tubeChains);
   startShare.reset();  // its watcher stops
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);

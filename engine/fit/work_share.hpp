@@ -12,8 +12,10 @@
 // Deadline::passed, as they are). On an idle machine with one busy thread the CPU and the wall
 // clock agree and it passes at `wallSeconds`, as before.
 //
-// Limits: passing is seen up to 5 ms late; the searches given the deadline read a cancel as a
-// passed deadline (they give up what they have not finished, as at the clock's end).
+// Limits: passing is seen up to 5 ms late; it is a cancel, so it suits only searches that read a
+// cancel as the clock's end (the choice by the first step toward a saddle, first_step_start.hpp:
+// its pleats, tucks and distances read Deadline::passed alone); the tube rings' probe drops the
+// rings it grew on a cancel (ring_folds.cpp), so the fit gives it the wall clock's share.
 #pragma once
 
 #include <algorithm>
