@@ -3,6 +3,7 @@
 // single reflection does.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -24,6 +26,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/tuck_folds.hpp"
+#include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
@@ -364,6 +367,42 @@ TEST(PleatFolds, TurnAllFourEndsOfASaddleFromAFlatSquareInOneStep) {
   EXPECT_TRUE(identical(replayFolds(session.initial(), best.folds), best.sheet));
 }
 
+// The start choice's share of work (work_share.hpp): past its wall share it passes only once the
+// process has spent its CPU (a loaded machine stretches the wall clock, not the work), always at
+// its latest moment, and at an interrupt.
+TEST(WorkShare, PassesOnceItsCpuIsSpentOrAtItsLatest) {
+  {
+    const WorkShare share(0.05, 0.0, 1e10);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // sleeping spends no CPU
+    EXPECT_FALSE(share.passed());
+    EXPECT_FALSE(share.deadline().passed());
+    volatile double sink = 0.0;
+    const double until = processCpuSeconds() + 0.08;
+    for (long i = 0; processCpuSeconds() < until; ++i) sink = sink + std::sqrt(double(i));
+    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_TRUE(share.deadline().passed());
+  }
+  {
+    const WorkShare share(3600.0, 0.0, 1.0);
+    EXPECT_FALSE(share.passed());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_TRUE(share.deadline().passed());
+  }
+  {
+    std::atomic<bool> interrupt{false};
+    const WorkShare share(3600.0, 3600.0, 3600.0, &interrupt);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_FALSE(share.passed());
+    interrupt = true;
+    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_TRUE(share.passed());
+  }
+}
+
 // The same saddle from the square cut to its footprint: the cross's pleats fold paper away and
 // its bends shorten their ends' reach, so the square's first step leaves the target's ends
 // uncovered (Hausdorff 7.8% of the diagonal, the pleated ends at x = +-0.080 of +-0.1). The start
@@ -374,9 +413,15 @@ TEST(FirstStepStart, GivesBackThePaperACrossFoldsAwaySoTheSaddlesEndsAreCovered)
       heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
   const FoldFitter fitter(saddle, quickSettings());
   const PlacedStart square{"square", {{"size", 0.2}}, "", makeSurface("square", {{"size", 0.2}})};
-  const std::optional<FirstStepStart> chosen = startByFirstStep({square}, fitter, {});
+  // Under a share of work whose wall clock has already passed, as on a machine loaded by others
+  // (`fit --time 60` at a load of 15: 15 s of wall, 1.5 s of CPU): the CPU share not spent, the
+  // choice measures the grown square as it does without a clock (on the wall clock alone it
+  // measured nothing and kept the square: saddle_disk 8.28% Hausdorff against 4.38%).
+  const WorkShare share(3600.0, 0.0, 1e10);
+  const std::optional<FirstStepStart> chosen = startByFirstStep({square}, fitter, share.deadline());
   ASSERT_TRUE(chosen.has_value());
   EXPECT_TRUE(chosen->grown);
+  EXPECT_FALSE(chosen->cutShort);
   const double diagonal = fitter.targetDiagonal();
   EXPECT_LT(chosen->hausdorff, 0.06 * diagonal) << chosen->start.placement;
   EXPECT_LT(chosen->chamfer, 0.01 * diagonal);

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -61,9 +63,12 @@ TriangleMesh shapeOf(const std::string& path) {
 // symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is sized to (a note says so); the
 // caller checks the start against it.
-// `deadline`: when the choice stops measuring more sheets (a share of --time).
+// `deadline`: when the choice stops measuring more sheets (a share of --time); `work`: the same
+// share counted in work (work_share.hpp), for the sheets measured and the choice by the first
+// step toward a saddle, which read a cancel as the clock's end (the tube rings' probe does not: a
+// cancel drops the rings it grew, so it keeps `deadline`).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const Deadline& deadline,
+                   const std::string& output, const Deadline& deadline, const Deadline& work,
                    std::shared_ptr<const TubeChains>& tubeChains) {
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
@@ -89,8 +94,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
     StartChoice start;
     try {
-      start = chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "",
-                          deadline);
+      start =
+          chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "", work);
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
@@ -98,7 +103,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
     // nearer, and gets the paper its pleats fold away given back.
     std::optional<FirstStepStart> firstStep =
-        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, deadline);
+        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, work);
     // Toward a vase, the cone around its profile where its rings land nearer than the start's
     // (rings only narrow a tube: a belly outside the start is never reached).
     // The probe's rings are handed to the search, which grows them on.
@@ -361,6 +366,7 @@ nlohmann::json fitEndLine(const FitResult& result, bool interrupted,
 void runFit(const FitCommandOptions& options, const CLI::App* command) {
   // The time limit counts from here: reading the target and measuring are part of it.
   const auto started = std::chrono::steady_clock::now();
+  const double startedCpu = processCpuSeconds();
   // Ctrl+C or SIGTERM stops the search; the best design found is still written (below).
   const InterruptGuard interrupt;
   // Everything that can be refused is refused before the search (a NaN passes a range check).
@@ -376,17 +382,29 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
   // --evaluations alone: no clock, so nothing depends on the machine's speed.
   const bool timed = command->count("--time") > 0 || options.evaluations == 0;
-  // The start's choice takes at most this share of --time (on a large target each sheet it
-  // measures costs a second or more), leaving the rest to the search.
-  constexpr double kStartShare = 0.25;
+  // The start's choice takes this share of --time (on a large target each sheet it measures
+  // costs a second or more), leaving the rest to the search: a share of work, seconds of the
+  // process's CPU as well as of the wall clock (work_share.hpp), so a machine loaded by others
+  // measures the same sheets as --evaluations does (at --time 60 under a load of 15, 15 s of wall
+  // were 1.5 s of CPU, and saddle_disk's grown square went unmeasured: 8.28% Hausdorff against
+  // 4.38%); the wall clock still ends it at kStartLatest of --time.
+  constexpr double kStartShare = 0.25, kStartLatest = 0.5;
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::optional<WorkShare> startShare;
+  if (timed)
+    startShare.emplace(kStartShare * options.seconds - (processCpuSeconds() - startedCpu),
+                       kStartShare * options.seconds - elapsed,
+                       kStartLatest * options.seconds - elapsed, &InterruptGuard::flag());
   const Deadline startDeadline =
       timed ? Deadline{}.notAfter(started +
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(kStartShare * options.seconds)))
             : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
-  Design design =
-      startDesign(options.from, command, *fitter, options.output, startDeadline, tubeChains);
+  Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
+                              startShare ? startShare->deadline() : Deadline{}, tubeChains);
+  startShare.reset();  // its watcher stops
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));

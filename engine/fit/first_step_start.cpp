@@ -228,13 +228,8 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     }
     if (!best || score < bestScore) {
       bestScore = score;
-      best = FirstStepStart{
-          start,
-          distance.chamfer,
-          distance.hausdorff,
-          surfaceDistance(meshOf(start.sheet), fitter.measuredTarget(), kSamples).chamfer,
-          grown,
-          false};
+      // The start's own distance is measured once, for the winner (below).
+      best = FirstStepStart{start, distance.chamfer, distance.hausdorff, 0.0, grown, false};
     }
     return steps;
   };
@@ -261,7 +256,11 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
         tryStart(*grown, true);
     }
   }
-  if (best) best->cutShort = cutShort;
+  if (best) {
+    best->cutShort = cutShort;
+    best->startChamfer =
+        surfaceDistance(meshOf(best->start.sheet), fitter.measuredTarget(), kSamples).chamfer;
+  }
   return best;
 }
 
