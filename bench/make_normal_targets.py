@@ -20,11 +20,9 @@ moves the whole sheet. Every catalogue surface at its default parameters; a fold
 the sheet and the design passes `check` whole. Targets are `export --obj` less its `vt` lines;
 manifest.jsonl as `reach_targets.py make` writes it, the recipe `normal-push` and no symmetry.
 """
-import argparse
 import math
-import os
 
-from target_folds import cases, diagonal, fold_if_whole, record_case, unit_vector, write_target
+from target_folds import diagonal, fold_if_whole, module_generator_main, unit_vector
 
 
 def cross(a, b):
@@ -78,33 +76,7 @@ def make_one(cf, surface, folds, rng):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out")
-    parser.add_argument("--per-surface", type=int, default=1)
-    parser.add_argument("--seed", default="1")
-    parser.add_argument("--buckets", default="1-2,3-4,5-8")
-    parser.add_argument("--surfaces", default="", help="only these catalogue surfaces (a,b)")
-    args = parser.parse_args()
-    import curvefold as cf
-
-    os.makedirs(args.out, exist_ok=True)
-    surfaces = [s for s in cf.surfaces() if not args.surfaces or s in args.surfaces.split(",")]
-    with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
-        for recipe, bucket, (lo, hi), surface, rng in cases(args.seed, ["normal-push"],
-                                                            args.buckets.split(","), surfaces):
-            made = 0
-            for _ in range(4 * args.per_surface):
-                if made == args.per_surface:
-                    break
-                folds = rng.randint(lo, hi)
-                design = make_one(cf, surface, folds, rng)
-                if design is None:
-                    continue
-                name = f"{recipe}-{bucket}-{made:02d}-{surface}"
-                write_target(design, os.path.join(args.out, name + ".obj"))
-                design.save(os.path.join(args.out, name + ".curvefold.json"))
-                record_case(manifest, name, recipe, bucket, surface, folds)
-                made += 1
+    module_generator_main(__doc__.splitlines()[0], "normal-push", make_one, 4)
 
 
 if __name__ == "__main__":

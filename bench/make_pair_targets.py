@@ -21,11 +21,9 @@ design passes `check` whole (a pair whose second fold is refused is undone whole
 `export --obj` less its `vt` lines; manifest.jsonl as `reach_targets.py make` writes it, the
 recipe `mirror-pairs` and no symmetry.
 """
-import argparse
 import math
-import os
 
-from target_folds import cases, diagonal, fold_if_whole, record_case, unit_vector, write_target
+from target_folds import diagonal, fold_if_whole, module_generator_main, unit_vector
 
 
 def mirror_of(symmetry, centre):
@@ -85,35 +83,13 @@ def make_one(cf, surface, folds, rng):
     return design if made == folds else None
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out")
-    parser.add_argument("--per-surface", type=int, default=1)
-    parser.add_argument("--seed", default="1")
-    parser.add_argument("--buckets", default="1-2,3-4,5-8")
-    parser.add_argument("--surfaces", default="", help="only these catalogue surfaces (a,b)")
-    args = parser.parse_args()
-    import curvefold as cf
+def pair_count(rng, lo, hi):
+    folds = rng.randint(lo, hi)
+    return folds + (folds % 2 if folds < hi else 0)  # whole pairs where the bucket allows
 
-    os.makedirs(args.out, exist_ok=True)
-    surfaces = [s for s in cf.surfaces() if not args.surfaces or s in args.surfaces.split(",")]
-    with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
-        for recipe, bucket, (lo, hi), surface, rng in cases(args.seed, ["mirror-pairs"],
-                                                            args.buckets.split(","), surfaces):
-            made = 0
-            for _ in range(8 * args.per_surface):
-                if made == args.per_surface:
-                    break
-                folds = rng.randint(lo, hi)
-                folds += folds % 2 if folds < hi else 0  # whole pairs where the bucket allows
-                design = make_one(cf, surface, folds, rng)
-                if design is None:
-                    continue
-                name = f"{recipe}-{bucket}-{made:02d}-{surface}"
-                write_target(design, os.path.join(args.out, name + ".obj"))
-                design.save(os.path.join(args.out, name + ".curvefold.json"))
-                record_case(manifest, name, recipe, bucket, surface, folds)
-                made += 1
+
+def main():
+    module_generator_main(__doc__.splitlines()[0], "mirror-pairs", make_one, 8, pair_count)
 
 
 if __name__ == "__main__":

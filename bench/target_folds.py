@@ -219,3 +219,38 @@ def cli_generator_main(description, recipes, buckets, choose):
                 record_case(manifest, name, recipe, bucket, surface, folds)
                 made += 1
     shutil.rmtree(work)
+
+
+def module_generator_main(description, recipe, make_one, tries_per_target,
+                          fold_count=lambda rng, lo, hi: rng.randint(lo, hi)):
+    """The command line of a generator that folds through the Python module: for every bucket
+    and catalogue surface, `--per-surface` targets made by `make_one(cf, surface, folds, rng)`
+    (None when it could not), with `fold_count(rng, lo, hi)` folds, at most `tries_per_target`
+    tries each, written with their designs and manifest.jsonl into `out`."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("out")
+    parser.add_argument("--per-surface", type=int, default=1)
+    parser.add_argument("--seed", default="1")
+    parser.add_argument("--buckets", default="1-2,3-4,5-8")
+    parser.add_argument("--surfaces", default="", help="only these catalogue surfaces (a,b)")
+    args = parser.parse_args()
+    import curvefold as cf
+
+    os.makedirs(args.out, exist_ok=True)
+    surfaces = [s for s in cf.surfaces() if not args.surfaces or s in args.surfaces.split(",")]
+    with open(os.path.join(args.out, "manifest.jsonl"), "w") as manifest:
+        for recipe_, bucket, (lo, hi), surface, rng in cases(args.seed, [recipe],
+                                                             args.buckets.split(","), surfaces):
+            made = 0
+            for _ in range(tries_per_target * args.per_surface):
+                if made == args.per_surface:
+                    break
+                folds = fold_count(rng, lo, hi)
+                design = make_one(cf, surface, folds, rng)
+                if design is None:
+                    continue
+                name = f"{recipe_}-{bucket}-{made:02d}-{surface}"
+                write_target(design, os.path.join(args.out, name + ".obj"))
+                design.save(os.path.join(args.out, name + ".curvefold.json"))
+                record_case(manifest, name, recipe_, bucket, surface, folds)
+                made += 1

@@ -829,28 +829,6 @@ TEST_F(StudioPanelTest, TheTargetLinesMoveNoItem) {
       });
 }
 
-// Issue 38, 4: a design --target opened on a cone chosen to match the target, and the New sheet
-// section said "square" (its own default). It shows the document's sheet: Create makes that
-// surface with its parameters.
-TEST_F(StudioPanelTest, NewSheetShowsTheSheetTheDocumentHolds) {
-  doc_ = session::makeDocument(
-      Design{GeneratedSurface{"cone", {{"top_radius", 0.03}, {"resolution", 12}}}, {}}, "cone");
-  std::vector<Design> made;
-  actions_.replaceDocument = [&](const Design& design, const std::string& name) {
-    replaced_.push_back(name);
-    made.push_back(design);
-    doc_ = session::makeDocument(design, name);
-  };
-  frame();
-  EXPECT_TRUE(panel_.itemCentre("top_radius")) << "the cone's sliders are shown";
-  click("Create");
-  ASSERT_EQ(replaced_.size(), 1u);
-  EXPECT_EQ(replaced_[0], "cone");
-  const auto& surface = std::get<GeneratedSurface>(made.at(0).surface);
-  EXPECT_FLOAT_EQ(float(surface.parameters.at("top_radius")), 0.03f);
-  EXPECT_EQ(surface.parameters.at("resolution"), 12.0);
-}
-
 // Issue 38, 4: ImGui draws a field's text from its start, so the target field showed a long
 // path's folders and hid its file's name. The field shows the path's end, whole within its width.
 TEST_F(StudioPanelTest, ALongTargetPathShowsItsFileName) {

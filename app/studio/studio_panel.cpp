@@ -12,7 +12,6 @@
 #include <stdexcept>
 #include <string_view>
 #include <utility>
-#include <variant>
 
 #include "app/session/cover_facts.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
@@ -270,7 +269,6 @@ void StudioPanel::draw(session::Document& doc, const StudioActions& actions,
   items_.clear();
   takePicked();
   beginWindow();
-  showSheetOf(doc);
   drawNewSheet(actions);
   drawEditButtons(actions, creasePattern);
   // Null while recording (no open).
@@ -304,26 +302,6 @@ void StudioPanel::beginWindow() {
     ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
   }
   ImGui::Begin("curvefold", nullptr, flags);
-}
-
-void StudioPanel::showSheetOf(const session::Document& doc) {
-  if (doc.session.get() == sheetShownOf_) return;
-  sheetShownOf_ = doc.session.get();
-  const Design design = doc.design();
-  const auto* generated = std::get_if<GeneratedSurface>(&design.surface);
-  if (!generated) return;  // a mesh of its own: the section keeps its choice
-  const std::vector<SurfaceInfo>& catalog = surfaceCatalog();
-  const auto entry = std::find_if(catalog.begin(), catalog.end(), [&](const SurfaceInfo& info) {
-    return info.name == generated->generator;
-  });
-  if (entry == catalog.end()) return;
-  surfaceIndex_ = int(entry - catalog.begin());
-  resetParameters();
-  for (std::size_t i = 0; i < entry->parameters.size(); ++i) {
-    const auto value = generated->parameters.find(entry->parameters[i].name);
-    if (value != generated->parameters.end()) parameterValues_[i] = float(value->second);
-  }
-  symmetry_ = design.symmetry.empty() ? kNoSymmetry : design.symmetry;
 }
 
 void StudioPanel::showPathEnd(const std::string& path, float fieldWidth) {

@@ -152,9 +152,6 @@ class StudioPanel {
   bool button(const char* label);  // a button whose rectangle item() records
   void beginWindow();
   void drawNewSheet(const StudioActions& actions);
-  // The New sheet section shows the document's sheet when the document is another (a start chosen
-  // to match a target, an opened design): its surface and parameters, when it is the catalog's.
-  void showSheetOf(const session::Document& doc);
   // Over a path field that is not being edited, its end (pathEnd): ImGui draws a field's text
   // from its start, which hid a long path's file name.
   void showPathEnd(const std::string& path, float fieldWidth);
@@ -177,7 +174,6 @@ class StudioPanel {
   bool recording_;
   std::string help_;
   int surfaceIndex_ = 0;
-  const void* sheetShownOf_ = nullptr;  // the session the New sheet section was set from
   std::vector<float> parameterValues_;
   static constexpr const char* kNoSymmetry = "none";
   std::string symmetry_ = kNoSymmetry;  // of the new sheet

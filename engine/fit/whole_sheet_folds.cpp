@@ -533,6 +533,21 @@ Eigen::Matrix3d orthogonalPart(const glm::dmat3& m) {
   return svd.matrixU() * svd.matrixV().transpose();
 }
 
+// A turn about a line (no shift along it) as two planes through that line: the line's point
+// (least squares across the axis of (I - A) q = t) and two unit directions across the axis;
+// normalAt(phi) is the plane normal at angle phi about the axis.
+struct TurnFrame {
+  glm::dvec3 through, u, w;
+  TurnFrame(const Eigen::Matrix3d& A, const glm::dvec3& t, const glm::dvec3& axis)
+      : through(glmOf(Eigen::Vector3d((Eigen::Matrix3d::Identity() - A)
+                                          .completeOrthogonalDecomposition()
+                                          .solve(eigenOf(t))))),
+        u(glm::normalize(
+            glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)))),
+        w(glm::cross(axis, u)) {}
+  glm::dvec3 normalAt(double phi) const { return std::cos(phi) * u + std::sin(phi) * w; }
+};
+
 // Two planes, both missing the sheet where each acts, making a proper motion: parallel planes
 // for a shift, else planes through the motion's fixed line (a turn with a shift along its axis
 // has none: nothing).
@@ -555,20 +570,14 @@ std::optional<std::vector<ReflectionPlane>> twoPlanes(const RigidMotion& motion,
     return std::nullopt;
   }
   if (std::abs(glm::dot(t, axis)) > 1e-9 * scale) return std::nullopt;
-  // The fixed line: (I - A) q = t, least squares across the axis.
-  const glm::dvec3 through = glmOf(Eigen::Vector3d(
-      (Eigen::Matrix3d::Identity() - A).completeOrthogonalDecomposition().solve(eigenOf(t))));
-  const glm::dvec3 u = glm::normalize(
-      glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-  const glm::dvec3 w = glm::cross(axis, u);
+  const TurnFrame frame(A, t, axis);
   for (int step = 0; step < 720; ++step) {
     const double phi = step * std::numbers::pi / 360.0;
-    const glm::dvec3 n1 = std::cos(phi) * u + std::sin(phi) * w;
-    if (!misses({through, n1}, points, margin)) continue;
+    if (!misses({frame.through, frame.normalAt(phi)}, points, margin)) continue;
     for (const double sign : {1.0, -1.0}) {
-      const double psi = phi + sign * 0.5 * angle;
-      const std::vector<ReflectionPlane> pair{{through, n1},
-                                              {through, std::cos(psi) * u + std::sin(psi) * w}};
+      const std::vector<ReflectionPlane> pair{
+          {frame.through, frame.normalAt(phi)},
+          {frame.through, frame.normalAt(phi + sign * 0.5 * angle)}};
       if (folds(pair, motion, points, margin, scale)) return pair;
     }
   }
@@ -788,20 +797,14 @@ std::vector<PlacedPlane> placedWholeSheetReflections(
       return {};
     }
     if (std::abs(glm::dot(t, axis)) > 1e-9 * scale) return {};  // a screw: no two planes
-    const glm::dvec3 through = glmOf(Eigen::Vector3d(
-        (Eigen::Matrix3d::Identity() - A).completeOrthogonalDecomposition().solve(eigenOf(t))));
-    const glm::dvec3 u = glm::normalize(
-        glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
-    const glm::dvec3 w = glm::cross(axis, u);
+    const TurnFrame frame(A, t, axis);
     for (int step = 0; step < 720; ++step) {
       const double phi = step * std::numbers::pi / 360.0;
-      const glm::dvec3 n1 = std::cos(phi) * u + std::sin(phi) * w;
-      for (const double sign : {1.0, -1.0}) {
-        const double psi = phi + sign * 0.5 * angle;
+      for (const double sign : {1.0, -1.0})
         if (const auto placed =
-                tryPlanes({{through, n1}, {through, std::cos(psi) * u + std::sin(psi) * w}}))
+                tryPlanes({{frame.through, frame.normalAt(phi)},
+                           {frame.through, frame.normalAt(phi + sign * 0.5 * angle)}}))
           return *placed;
-      }
     }
     return {};
   }
