@@ -25,8 +25,15 @@ namespace curvefold::testing {
 inline std::vector<int> threadNices() {
   std::vector<int> nices;
   for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
-    std::ifstream in(task.path() / "stat");
-    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string stat;
+    try {
+      std::ifstream in(task.path() / "stat");
+      stat.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } catch (const std::ios_base::failure&) {
+      // A thread that ended between the listing and the read (ESRCH: libstdc++'s filebuf throws
+      // on a read error): it has no nice left to count.
+      continue;
+    }
     const std::size_t afterName = stat.rfind(')');
     if (afterName == std::string::npos) continue;
     std::istringstream fields(stat.substr(afterName + 1));
