@@ -35,9 +35,8 @@ def urn(t):
     return 0.065 * (1 + 0.25 * math.sin(math.pi * t) - 0.35 * t ** 3 * math.sin(2 * math.pi * t) ** 2)
 
 
-def rows_by_arc_length(profile, height, count):
-    """Heights t in [0, 1] spaced evenly by the profile's arc length."""
-    fine = 2000
+def rows_by_arc_length(profile, height, count, fine=2000):
+    """Heights t in [0, 1] spaced evenly by the profile's arc length, measured on `fine` steps."""
     pts = [(profile(i / fine), height * i / fine) for i in range(fine + 1)]
     s = [0.0]
     for i in range(fine):

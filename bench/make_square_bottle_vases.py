@@ -17,6 +17,7 @@ import math
 import os
 import sys
 
+from make_amphora_vases import rows_by_arc_length
 
 def profile(t):
     """Radius (m) at t in [0, 1] along the 28 cm height."""
@@ -31,21 +32,6 @@ def profile(t):
     return 0.016 + 0.005 * math.sqrt(max(0.0, 1.0 - (2.0 * u - 1.0) ** 2))
 
 
-def rows_by_arc_length(height, count):
-    fine = 4000
-    pts = [(profile(i / fine), height * i / fine) for i in range(fine + 1)]
-    s = [0.0]
-    for i in range(fine):
-        s.append(s[-1] + math.dist(pts[i], pts[i + 1]))
-    out, j = [], 0
-    for k in range(count + 1):
-        goal = s[-1] * k / count
-        while j < fine - 1 and s[j + 1] < goal:
-            j += 1
-        out.append((j + (goal - s[j]) / max(s[j + 1] - s[j], 1e-15)) / fine)
-    return out
-
-
 def squircle(r, a):
     """The point at angle a on |x|^3 + |y|^3 = r^3."""
     c, s = math.cos(a), math.sin(a)
@@ -57,7 +43,7 @@ def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
     height, around, along = 0.28, 40, 44
-    ts = rows_by_arc_length(height, along)
+    ts = rows_by_arc_length(profile, height, along, fine=4000)
     verts = []
     for t in ts:
         for i in range(around):
