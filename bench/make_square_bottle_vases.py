@@ -19,6 +19,7 @@ import sys
 
 from make_amphora_vases import rows_by_arc_length
 
+
 def profile(t):
     """Radius (m) at t in [0, 1] along the 28 cm height."""
     if t < 0.45:  # body, a slight taper
