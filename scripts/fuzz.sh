@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
-# Runs every fuzzer for a bounded time (default 30 s each) from its seed corpus, two at a time
-# (CURVEFOLD_JOBS); CI runs this.
-# Usage: scripts/fuzz.sh [SECONDS]   (build first: scripts/test-sanitized.sh builds the fuzzers)
+# Builds the fuzzers (the "fuzz" CMake preset, into build-fuzz/: the asan preset's flags with
+# libFuzzer's coverage tracing, only the fuzzers and the libraries they link) and runs every one
+# for a bounded time (default 30 s each) from its seed corpus, two at a time (CURVEFOLD_JOBS); CI
+# runs this.
+# Usage: scripts/fuzz.sh [SECONDS]
 # New corpus entries go to a scratch folder; a crash leaves its input in fuzz-artifacts/ and fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-30}"
-build=build-asan
+scripts/setup.sh
+werror=()
+[ "${CI:-}" = "true" ] && werror=(-DCURVEFOLD_WERROR=ON)  # as scripts/build.sh
+cmake --preset fuzz "${werror[@]}" >/dev/null
+cmake --build --preset fuzz -j"${CURVEFOLD_JOBS:-2}"
+build=build-fuzz
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 mkdir -p fuzz-artifacts
