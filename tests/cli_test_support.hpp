@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_paths.hpp"
+
 namespace curvefold::testing {
 
 namespace fs = std::filesystem;

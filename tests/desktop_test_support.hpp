@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "test_paths.hpp"
+
 namespace curvefold::testing {
 
 namespace fs = std::filesystem;

@@ -16,6 +16,7 @@
 
 #include "cli_test_support.hpp"
 #include "sanitizer_support.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 using curvefold::testing::CommandResult;

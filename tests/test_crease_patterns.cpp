@@ -25,6 +25,7 @@
 #include "engine/io/input_limits.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "test_paths.hpp"
 
 using namespace curvefold;
 

@@ -19,6 +19,7 @@
 #include "engine/io/obj_writer.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "io_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {

@@ -25,6 +25,7 @@
 #include "engine/surfaces/surfaces.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {

@@ -20,6 +20,7 @@
 #include "engine/geometry/fold_session.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sanitizer_support.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 using curvefold::testing::CommandResult;

@@ -36,6 +36,7 @@
 #include "engine/surfaces/surfaces.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
+#include "test_paths.hpp"
 #include "tests/support/fold_target_generators.hpp"
 
 namespace curvefold {
@@ -181,7 +182,7 @@ struct ReachTarget {
 };
 ReachTarget reachTarget(const std::string& name) {
   ReachTarget t;
-  t.design = loadDesign(std::string(CURVEFOLD_TEST_DATA "/reach/") + name + ".curvefold.json");
+  t.design = loadDesign(std::string(CURVEFOLD_TEST_DATA) + "/reach/" + name + ".curvefold.json");
   t.initial = initialSheet(t.design);
   t.target = meshOf(buildSheet(t.design));
   return t;

@@ -21,6 +21,7 @@
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
 #include "symmetry_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {

@@ -18,6 +18,7 @@
 
 #include "interaction/hand_input.hpp"
 #include "sim_input/simulated_hand.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {
@@ -230,7 +231,7 @@ TEST(HandInput, AnUntrackedHandHoldsItsPinchAndThePalmIsTheSheetFrame) {
 // bare-hands gesture table (docs/vr.md, moved from the README), and a hand tapping that finger must
 // press that button.
 TEST(HandInput, TapsPressTheButtonsTheDocsGiveEachFinger) {
-  std::ifstream readme(CURVEFOLD_SOURCE_DIR "/docs/vr.md");
+  std::ifstream readme(std::string(CURVEFOLD_SOURCE_DIR) + "/docs/vr.md");
   ASSERT_TRUE(readme) << "docs/vr.md";
   const std::map<std::string, Button> buttons = {{"show or hide the panel", Button::Panel},
                                                  {"undo", Button::Undo},

@@ -30,6 +30,7 @@
 #include "sheet_fixtures.hpp"
 #include "sim_input/gestures.hpp"
 #include "sim_input/recording.hpp"
+#include "test_paths.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {

@@ -12,6 +12,7 @@
 #include "engine/geometry/unfold.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {

@@ -14,6 +14,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "interaction/one_euro_filter.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {

@@ -12,6 +12,7 @@
 #include <stb/stb_image.h>
 
 #include "cli_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 using curvefold::testing::CommandResult;

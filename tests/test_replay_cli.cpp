@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 using curvefold::testing::CommandResult;

@@ -23,6 +23,7 @@
 #include "sim_input/player.hpp"
 #include "sim_input/recorder.hpp"
 #include "sim_input/recording.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold {
 namespace {
@@ -1012,8 +1013,8 @@ TEST(LiveSimulation, FoldsFromFlatToTheDesignAndLeavesTheDesignUntouched) {
 // crown_vessel, a curved fold with sliver triangles: the bundled design the live slider finds
 // hardest.
 Sheet crownVessel() {
-  return replayRecording(
-             readRecording(CURVEFOLD_SOURCE_DIR "/examples/recordings/crown_vessel.jsonl"))
+  return replayRecording(readRecording(std::string(CURVEFOLD_SOURCE_DIR) +
+                                       "/examples/recordings/crown_vessel.jsonl"))
       .sheet;
 }
 
@@ -1101,8 +1102,9 @@ TEST(LiveSimulation, FollowsTheSliderOnACurvedDesignWithoutAJump) {
 // frame at most 0.4% (largest edge 8%). With two local-global relaxations a frame (kPathRelaxations
 // before) this ramp strained it 0.75% (8.8%); six take it to 0.29% (7.0%), docs/performance.md.
 TEST(LiveSimulation, TheSliderKeepsAConesEdgesNearTheirLength) {
-  const Sheet design =
-      replayRecording(readRecording(CURVEFOLD_SOURCE_DIR "/examples/recordings/cone.jsonl")).sheet;
+  const Sheet design = replayRecording(readRecording(std::string(CURVEFOLD_SOURCE_DIR) +
+                                                     "/examples/recordings/cone.jsonl"))
+                           .sheet;
   LiveSimulation live(design);
   const int rampFrames = 30;  // under a sanitizer too: a shorter ramp strains more a frame
   double worstMedian = 0.0, worst = 0.0;

@@ -19,6 +19,7 @@
 
 #include "app/xr/xr_vulkan_graphics.hpp"
 #include "sim_input/xr_runtime/loader_negotiation.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -338,7 +339,8 @@ class SimRuntimeHands : public SimRuntimeSpec {
  protected:
   void prepare() override {
     setenv("CURVEFOLD_SIM_HANDS", "1", 1);
-    setenv("CURVEFOLD_SIM_INPUT", CURVEFOLD_SOURCE_DIR "/examples/recordings/cone.jsonl", 1);
+    setenv("CURVEFOLD_SIM_INPUT",
+           (std::string(CURVEFOLD_SOURCE_DIR) + "/examples/recordings/cone.jsonl").c_str(), 1);
   }
   std::vector<const char*> extensions() const override {
     return {"XR_MND_headless", XR_EXT_HAND_TRACKING_EXTENSION_NAME};

@@ -28,6 +28,7 @@
 #include "sanitizer_support.hpp"
 #include "sim_input/player.hpp"
 #include "sim_input/recording.hpp"
+#include "test_paths.hpp"
 #include "tests/simulation_test_support.hpp"
 
 namespace curvefold {

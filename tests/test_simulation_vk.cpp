@@ -23,6 +23,7 @@
 #include "engine/simulation_vk/gpu_dynamic_solver.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "interaction/interaction_core.hpp"
+#include "test_paths.hpp"
 #include "tests/cli_test_support.hpp"
 #include "tests/sanitizer_support.hpp"
 #include "tests/simulation_test_support.hpp"

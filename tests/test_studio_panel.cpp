@@ -35,6 +35,7 @@
 #include "app/studio/zenity_picker.hpp"
 #include "engine/io/design_document.hpp"
 #include "engine/text/utf8.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold::studio {
 namespace {

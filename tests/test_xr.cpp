@@ -23,6 +23,7 @@
 #include "interaction/xr/xr_check.hpp"
 #include "interaction/xr/xr_input.hpp"
 #include "interaction/xr/xr_program.hpp"
+#include "test_paths.hpp"
 #include "xr_test_support.hpp"
 
 namespace curvefold {

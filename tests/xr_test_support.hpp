@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "test_paths.hpp"
 
 namespace curvefold::testing {
 
