@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Three vases for `fit` (issue 38, 2), made apart from curvefold and unlike the other generators:
+"""Four vases for `fit` (issue 38, 2), made apart from curvefold and unlike the other generators:
 each is a meridian curve given by a closed formula in its own parameter (not a radius against
 height, so a shoulder may run level and a bottom may close on the axis), sampled evenly by arc
 length with numpy, swept about its axis on rows staggered by half a step (every other row turned by half a vertex
@@ -17,6 +17,10 @@ that runs nearly level (a quarter ellipse, 3.1 cm in, 4.5 cm up) into a short ne
 cone_vase_flared: 22 cm in millimetres (220 units), a foot of 6 cm tapering as a cone to a waist
 of 2.8 cm at 0.82 of the height, then a lip flaring to 4.2 cm; axis along -z, moved to
 (40, -25, 300) mm.
+
+jar_closed: 8 cm tall, a closed flat bottom of 4.5 cm (a fifth of its area) under a wall with a
+belly of 1.2 cm, narrowing by 1 cm to the open rim; axis along (0.2, 0.9, -0.4), moved to
+(0.05, 0.1, -0.02).
 
 Usage: bench/make_meridian_vases.py OUTDIR
 """
@@ -110,6 +114,16 @@ def cone_vase(u):
     return waist + 14.0 * np.clip((t - 0.82) / 0.18, 0, None) ** 1.5, 220.0 * t
 
 
+def jar(u):
+    r, h = np.empty_like(u), np.empty_like(u)
+    bottom = u < 0.3
+    r[bottom], h[bottom] = 0.045 * u[bottom] / 0.3, 0.0
+    t = (u[~bottom] - 0.3) / 0.7
+    r[~bottom] = 0.045 + 0.012 * np.sin(np.pi * t) - 0.01 * t
+    h[~bottom] = 0.08 * t
+    return r, h
+
+
 def write(path, comment, verts, faces):
     with open(path, "w") as out:
         out.write("# " + comment + "\n")
@@ -127,6 +141,7 @@ def main():
         ("lampshade_bulge_oblique", lampshade, 30, 64, (0.35, 0.55, -0.76), (0.2, -0.1, 0.3)),
         ("bottle_short_neck", bottle, 70, 48, (0.96, 0.0, 0.28), (-0.1, 0.2, 0.0)),
         ("cone_vase_flared", cone_vase, 36, 56, (0.0, 0.0, -1.0), (40.0, -25.0, 300.0)),
+        ("jar_closed", jar, 40, 56, (0.2, 0.9, -0.4), (0.05, 0.1, -0.02)),
     ]
     for name, curve, rows, around, axis, at in shapes:
         r, h = by_arc_length(curve, rows)
