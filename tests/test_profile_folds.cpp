@@ -113,6 +113,25 @@ TEST(RevolutionAxis, IsFoundOnATiltedVaseAndNotOnASaddle) {
   EXPECT_FALSE(revolutionAxis(sampleSurface(saddle, 2000, 3)));
 }
 
+TEST(RevolutionAxis, IsFoundOnACanWithAClosedBottom) {
+  // A can of 5 cm radius, 10 cm tall, its bottom closed by a disk (a fifth of its area), tilted:
+  // the disk holds every radius from 0 to 5 cm at one height, which read as a spread of 0.11 of
+  // the mean radius by height and no axis (a bottle with a closed bottom got no rings).
+  TriangleMesh can = revolved([](double) { return 0.05; }, 0.0, 0.1, 48, 20);
+  const TriangleMesh bottom = revolvedByRadius([](double) { return 0.0; }, 0.0, 0.05, 48, 12);
+  const auto offset = static_cast<std::uint32_t>(can.positions.size());
+  can.positions.insert(can.positions.end(), bottom.positions.begin(), bottom.positions.end());
+  for (const auto& t : bottom.triangles)
+    can.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const glm::dvec3 tilt(0.3, 1.0, 0.2);
+  for (glm::dvec3& p : can.positions) p = turned(p, tilt, 35.0);
+  const std::optional<RevolutionAxis> axis = revolutionAxis(sampleSurface(can, 2000, 3));
+  ASSERT_TRUE(axis);
+  const glm::dvec3 expected = turned({0, 0, 1}, tilt, 35.0);
+  EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
+  EXPECT_LT(axis->spread, 0.05);
+}
+
 // Four planes tilted 30 degrees from the axis, each cutting a sector of the top rim off a
 // cylinder along y (20 cm tall, 5 cm radius): four flaps turned in.
 Ring fourFlapRim() {

@@ -14,8 +14,11 @@
 // revolutionAxis: the target's axis, among its principal axes through its centroid (PCA), the
 // one about which the distance of samples from the axis varies least at each height (its
 // samples binned by height; the spread is the root mean square deviation from each bin's mean
-// radius, over the mean radius). A target that is not a surface of revolution (spread above the
-// bound) has none.
+// radius, over the mean radius; or its samples binned by radius, a disk's). Caps across the axis
+// (samples whose normal lies within 18 degrees of it: a bottle's closed bottom, a level shoulder)
+// are left out of the spread by height while they are under a quarter of the samples: they hold
+// every radius at one height. A target that is not a surface of revolution (spread above the
+// bound) has none. Known limit: a flat patch off the axis, normal to it, passes as a cap.
 //
 // ringProposals: rings drawn where the sheet's radius profile r(h) departs from the target's (both
 // binned along the axis, the bins weighted by the gap, and by the radius of the one alone where
