@@ -383,17 +383,19 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
       for (std::uint32_t k : path) crossed[k] = 1;
       slivers.insert(slivers.end(), chain.begin(), chain.end());
     }
-  // A sliver's short edges, off the path, turn it too: its plane is as ill-defined for them, and
-  // driven (a 0.26 mm crease beside an 8 mm sliver of langCardinal.svg) they collapsed it in 3D to
-  // a height of 1e-10 m, where their forces (1 / height) of 3e6 cancelled to a residual of 5 that
-  // no step could lower (NOT settled at 100%). Every hinge of a bridged sliver is left to the
-  // bridge; those off the path keep their one-sided term, as the crossed ones do.
+  // A sliver's short edge, off the path, turns it too: the sliver does not weaken its hinge (it
+  // is high over so short an edge), yet its plane is as ill-defined, and driven (a 0.26 mm crease
+  // of langCardinal.svg beside an 8 mm sliver) it collapsed the sliver in 3D to a height of
+  // 1e-10 m, where its force and the crossed hinge's, 3e6 each through the 1 / height lever,
+  // cancelled to a residual of 5 that no step could lower (NOT settled at 100%). Such a hinge is
+  // left to the bridge too, keeping its one-sided term as the crossed ones do.
   std::sort(slivers.begin(), slivers.end());
   for (std::size_t j = 0; j < hingeCount; ++j) {
-    const auto& pair = model.hingeTriangles[j];
-    if (crossed[j] || std::binary_search(slivers.begin(), slivers.end(), pair[0]) ||
-        std::binary_search(slivers.begin(), slivers.end(), pair[1]))
-      model.hingeStiffness[j] = 0.0;
+    bool shortEdge = false;  // of a bridged sliver, which does not weaken its hinge (addHinge)
+    for (std::uint32_t t : model.hingeTriangles[j])
+      shortEdge = shortEdge || (std::binary_search(slivers.begin(), slivers.end(), t) &&
+                                4.0 * in.area[t] >= edgeLength(j) * edgeLength(j));
+    if (crossed[j] || shortEdge) model.hingeStiffness[j] = 0.0;
   }
 }
 
