@@ -10,7 +10,7 @@ writes into OUT_DIR:
   fan12.svg          a degree-12 flat vertex: twelve rays 30 degrees apart, seven mountains and five
                      valleys (Maekawa), a 200 mm square, SVG lines;
   parabola_pleats.svg  seven nested parabolic curved creases, alternating M/V, as SVG polylines of
-                     48 segments, stroke-opacity 0.5 (90 degrees), yellow facet lines none.
+                     48 segments, stroke-opacity 0.5 (90 degrees), no facet lines.
 Each flat-foldable vertex is checked for Kawasaki's and Maekawa's conditions before writing.
 """
 
