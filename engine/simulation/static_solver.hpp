@@ -47,10 +47,12 @@
 namespace curvefold {
 
 struct StaticOptions {
-  double tolerance = 1e-9;          // residual the last stage must reach
-  double stageTolerance = 1e-4;     // residual each earlier stage stops at
-  double maxStageDegrees = 20.0;    // largest change of any hinge's target in one stage
-  std::size_t maxIterations = 400;  // over all stages
+  double tolerance = 1e-9;        // residual the last stage must reach
+  double stageTolerance = 1e-4;   // residual each earlier stage stops at
+  double maxStageDegrees = 20.0;  // largest change of any hinge's target in one stage
+  // Over all stages. 400 cut langHoneycomb.svg at 100% (each stage converging, the last falling
+  // steadily from energy 18.5 to 3.4 through its snap) 12 iterations short from flat, 41 from 75%.
+  std::size_t maxIterations = 800;
   // Start from unfoldedState at the fold amount (hinge_unfolding.hpp), rigidly placed onto the
   // state, when its energy at the goal is lower than the state's: for targets the sheet can take
   // all at once (a design at 100% in design mode, a single crease) that is the equilibrium itself,
