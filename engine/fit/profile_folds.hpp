@@ -14,11 +14,11 @@
 // revolutionAxis: the target's axis, among its principal axes through its centroid (PCA), the
 // one about which the distance of samples from the axis varies least at each height (its
 // samples binned by height; the spread is the root mean square deviation from each bin's mean
-// radius, over the mean radius). Failing that, an oval cup's or bowl's axis: the same spread with
-// each sample's radius divided by the target's reach in its direction (the farthest sample of 24
-// turns about the axis, over their mean), so cross-sections alike ovals count as round (the
-// nested rings follow an oblong target's reach each way). A target that is neither (spread above
-// the bound both ways: a saddle, a leaning cup) has none.
+// radius, over the mean radius). Failing that, an oval cup's, bowl's or vase's axis: the same
+// spread with each sample's radius divided by the target's reach in its direction (the farthest
+// sample of 24 turns about the axis, over their mean), so cross-sections alike ovals count as
+// round (the nested rings follow an oblong target's reach each way). A target that is neither
+// (spread above the bound both ways: a saddle, a leaning cup) has none.
 //
 // ringProposals: rings drawn where the sheet's radius profile r(h) departs from the target's (both
 // binned along the axis, the bins weighted by the gap, and by the radius of the one alone where
