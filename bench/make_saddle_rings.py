@@ -21,25 +21,14 @@ no edge runs along a ruling or a principal direction of the saddle.
 
 Usage: make_saddle_rings.py OUT_DIR   (numpy; writes OUT_DIR/NAME.obj and OUT_DIR/targets.tsv)
 """
+import argparse
 import os
 import sys
 
 import numpy as np
 
-
-def zip_rows(rows):
-    """Triangles between consecutive rows of (ids, parameters), each a list ordered along the row."""
-    triangles = []
-    for (a, ua), (b, ub) in zip(rows, rows[1:]):
-        i = k = 0
-        while i < len(a) - 1 or k < len(b) - 1:
-            if k == len(b) - 1 or (i < len(a) - 1 and ua[i + 1] < ub[k + 1]):
-                triangles.append((a[i], a[i + 1], b[k]))
-                i += 1
-            else:
-                triangles.append((a[i], b[k + 1], b[k]))
-                k += 1
-    return triangles
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_saddle_formulas import write as write_tuples, zip_rows  # noqa: E402
 
 
 def offset_rows(half_x, half_y, spacing, height):
@@ -121,17 +110,13 @@ def compact(v, f):
 
 
 def write(path, v, f):
-    with open(path, "w") as out:
-        for p in v:
-            out.write("v %.9g %.9g %.9g\n" % tuple(p))
-        for t in f:
-            out.write("f %d %d %d\n" % (t[0] + 1, t[1] + 1, t[2] + 1))
+    write_tuples(path, [tuple(p) for p in v], f)
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    out = sys.argv[1]
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out_dir")
+    out = parser.parse_args().out_dir
     os.makedirs(out, exist_ok=True)
     rng = np.random.default_rng(2718)
     rows = []
