@@ -68,9 +68,13 @@ def torus_rows(big, tube, half_u, half_v, rows, spacing):
             positions.append((rho * math.cos(u), rho * math.sin(u), tube * math.sin(v)))
         row_ids.append(ids)
         row_us.append(us)
+    return positions, zip_rows(list(zip(row_ids, row_us)))
+
+
+def zip_rows(rows):
+    """Triangles between consecutive rows, each (vertex ids, parameters) ordered along the row."""
     triangles = []
-    for j in range(rows):
-        a, b, ua, ub = row_ids[j], row_ids[j + 1], row_us[j], row_us[j + 1]
+    for (a, ua), (b, ub) in zip(rows, rows[1:]):
         i = k = 0
         while i < len(a) - 1 or k < len(b) - 1:
             if k == len(b) - 1 or (i < len(a) - 1 and ua[i + 1] < ub[k + 1]):
@@ -79,7 +83,7 @@ def torus_rows(big, tube, half_u, half_v, rows, spacing):
             else:
                 triangles.append((a[i], b[k + 1], b[k]))
                 k += 1
-    return positions, triangles
+    return triangles
 
 
 def rotate_axis(p, axis, degrees):

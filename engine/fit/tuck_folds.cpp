@@ -196,6 +196,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
     if (kept) best.push_back(std::move(*kept));
   }
   if (best.empty()) return out;
+  std::vector<Made> ranked;
   // Every far point's tuck as one step, then the single tucks.
   // Where all of them together are refused (two flaps crossing each other: a grown square's
   // corner and the middle of a side beside it), a group grown greedily instead, the farthest
@@ -203,25 +204,31 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
   if (best.size() > 1 && !deadline.passed()) {
     std::vector<Tuck> all;
     for (const auto& b : best) all.push_back(b.first);
-    if (std::optional<FoldSuggestion> made = score(all)) {
-      out.push_back(std::move(*made));
+    if (std::optional<Made> made = score(all)) {
+      ranked.push_back(std::move(*made));
     } else {
       std::vector<Tuck> group{best.front().first};
-      std::optional<FoldSuggestion> grown;
+      std::optional<Made> grown;
       for (std::size_t i = 1; i < best.size() && !deadline.passed(); ++i) {
         group.push_back(best[i].first);
-        if (std::optional<FoldSuggestion> made = score(group))
+        if (std::optional<Made> made = score(group))
           grown = std::move(made);
         else
           group.pop_back();
       }
-      if (grown) out.push_back(std::move(*grown));
+      if (grown) ranked.push_back(std::move(*grown));
     }
   }
-  for (auto& b : best) out.push_back(std::move(b.second));
-  std::stable_sort(out.begin(), out.end(),
-                   [](const auto& a, const auto& b) { return a.after < b.after; });
-  if (out.size() > count) out.resize(count);
+  for (auto& b : best) ranked.push_back(std::move(b.second));
+  // Ranked by how far the sheet still stands out, not by the search's score, which cuts far
+  // distances and barely sees a corner: ranked by it, the fit's rounds took a near corner's tuck
+  // (Chamfer a little lower) before the farthest one's, one round each (an ellipse saddle from a
+  // square: three rounds with Hausdorff unchanged at 14.2%, the clock's share spent before the
+  // fourth).
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const Made& a, const Made& b) { return a.excess < b.excess; });
+  if (ranked.size() > count) ranked.resize(count);
+  for (Made& made : ranked) out.push_back(std::move(made));
   return out;
 }
 
