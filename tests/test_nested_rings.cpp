@@ -8,7 +8,6 @@
 #include <numbers>
 #include <optional>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -584,6 +583,9 @@ TEST(NestedRings, TheFinalMeasureOfManyRingsKeepsWithinTheTime) {
   FitOptions options;
   options.maxFolds = 16;
   options.seconds = testing::kSanitized ? 20.0 : 5.0;
+  // Measures as dear as the time allows (a tenth of it for the start's: samplesWithinTime), so
+  // the final phase is seconds of work, as a large design's is under --time 60.
+  options.distanceSamples = 1'000'000;
   std::size_t reported = 0;
   options.progress = [&](const FitProgress& step) {
     if (step.fold > 0) reported += findSelfIntersections(session.fixed()).intersections.size() + 1;
@@ -597,8 +599,10 @@ TEST(NestedRings, TheFinalMeasureOfManyRingsKeepsWithinTheTime) {
   const double cpu = afterLimit.seconds();
   EXPECT_TRUE(result.timedOut) << result.stopReason;
   EXPECT_EQ(reported, result.steps.size() - 1);  // every step kept was reported, crossing none
-  const double threads = std::max(1u, std::thread::hardware_concurrency());
-  EXPECT_LT(cpu, threads * (testing::kSanitized ? 2.0 : 0.05 * options.seconds + 0.05))
+  // The final phase is one thread's work: its measure, commit and report past the limit were
+  // 0.22-0.33 s of CPU here with the search's reserve for them removed (the fit 6-10% over its
+  // time); with it, a millisecond.
+  EXPECT_LT(cpu, testing::kSanitized ? 2.0 : 0.02 * options.seconds)
       << cpu << " s of CPU after the limit; " << seconds << " s in all, " << result.folds.size()
       << " folds";
   validate(session.fixed());
