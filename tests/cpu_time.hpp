@@ -88,4 +88,21 @@ class CpuAfter {
   std::thread thread_;
 };
 
+// Runs `run` (a search given `limit` seconds from now): what it returned, the wall seconds it
+// took, and the CPU the process spent after the limit (CpuAfter).
+template <class Run>
+auto runPastLimit(double limit, Run&& run) {
+  struct Timed {
+    decltype(run()) result;
+    double seconds, cpuAfterLimit;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  CpuAfter afterLimit(start + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                  std::chrono::duration<double>(limit)));
+  auto result = run();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Timed{std::move(result), seconds, afterLimit.seconds()};
+}
+
 }  // namespace curvefold::testing
