@@ -17,13 +17,13 @@
 #include <memory>
 #include <thread>
 
-#include <time.h>
 #include <unistd.h>
 
 #include <benchmark/benchmark.h>
 
 #include "app/session/document.hpp"
 #include "app/studio/studio_target.hpp"
+#include "engine/fit/deadline.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {
@@ -131,13 +131,6 @@ BENCHMARK(BM_FrameCallWhileSearching)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
-
-// Seconds of CPU this process has used, all its threads.
-double processCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 // From a newer request (range(1) 0) or a design change (1: a fold committed, and the frame's poll
 // that sees it) until the worker has let the abandoned search go (range(0): milliseconds into the

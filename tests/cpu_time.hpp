@@ -5,7 +5,6 @@
 #pragma once
 
 #include <sys/resource.h>
-#include <time.h>
 
 #include <chrono>
 #include <filesystem>
@@ -17,6 +16,8 @@
 #include <thread>
 #include <utility>
 #include <vector>
+
+#include "engine/fit/deadline.hpp"
 
 namespace curvefold::testing {
 
@@ -44,12 +45,9 @@ inline std::vector<int> threadNices() {
   return nices;
 }
 
-// Seconds of CPU this process has used so far, all its threads together.
-inline double processCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+// Seconds of CPU this process has used so far, all its threads together: the engine's clock
+// (deadline.hpp), which the fit's share of work reads too.
+using curvefold::processCpuSeconds;
 
 // Seconds of CPU of the children this process has waited for (std::system's commands and theirs),
 // user and system together.
@@ -89,5 +87,22 @@ class CpuAfter {
   double atMoment_ = 0.0;
   std::thread thread_;
 };
+
+// Runs `run` (a search given `limit` seconds from now): what it returned, the wall seconds it
+// took, and the CPU the process spent after the limit (CpuAfter).
+template <class Run>
+auto runPastLimit(double limit, Run&& run) {
+  struct Timed {
+    decltype(run()) result;
+    double seconds, cpuAfterLimit;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  CpuAfter afterLimit(start + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                  std::chrono::duration<double>(limit)));
+  auto result = run();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Timed{std::move(result), seconds, afterLimit.seconds()};
+}
 
 }  // namespace curvefold::testing

@@ -28,6 +28,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
+#include "engine/fit/work_share.hpp"
 #include "engine/geometry/boundary_edges.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -315,18 +316,25 @@ TEST(FitReading, AnUnfoldingOnACopyTakesTheSidesWhoseMotionNeedsFewestPlanes) {
 // whole: 600 orders tried, a minute) ran to the search's deadline and, cut short, answered
 // nothing: the whole time passed with no candidate scored and no fold kept. Cut short, it names
 // what it read by then (an unfolding ended where it was), and the reading has only a share of the
-// fit's time: the search after it scores candidates.
+// fit's time: the search after it scores candidates. The unfolding's deadline is a share of CPU
+// (work_share.hpp) and the fit's time is stretched as this process's CPU was while it unfolded:
+// on the wall clock alone a loaded machine read nothing in 1.5 s, or left the search no candidate.
 TEST(FitReading, AnUnfoldingCutShortLeavesTheSearchTimeAndWhatItRead) {
   const ReachTarget t = reachTarget("symmetric_disk_8");
   const TriangleMesh sheet = meshOf(t.initial);
   const auto started = std::chrono::steady_clock::now();
-  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 12,
-                                            Deadline::in(testing::kSanitized ? 6.0 : 1.5));
+  const double startedCpu = testing::processCpuSeconds();
+  const double share = testing::kSanitized ? 6.0 : 1.5;
+  const TargetUnfolding plan =
+      unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 12, workShare(share, 0.0, 1e10));
   const double took =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double cpu = testing::processCpuSeconds() - startedCpu;
   EXPECT_TRUE(plan.cutShort);
-  EXPECT_FALSE(plan.folds.empty()) << took << " s";
+  EXPECT_FALSE(plan.folds.empty()) << took << " s, " << cpu << " s of CPU";
   EXPECT_EQ(plan.unfolded.size(), t.target.positions.size());
+  // It stopped soon after its share (one order tried past it, at most).
+  EXPECT_LT(cpu, share + (testing::kSanitized ? 3.0 : 0.75)) << cpu << " s of CPU";
 
   const FoldFitter fitter(t.target);
   FoldSession session(t.initial);
@@ -334,10 +342,12 @@ TEST(FitReading, AnUnfoldingCutShortLeavesTheSearchTimeAndWhatItRead) {
   FitOptions options;
   options.maxFolds = 8;
   // The reading alone would take minutes, so it is cut at its share whatever the clock; the rest
-  // leaves a loaded machine (two tests on two cores) time to make the folds read and score some.
-  options.seconds = testing::kSanitized ? 12.0 : 6.0;
+  // leaves time to make the folds read and score some. The unfolding is one thread: wall seconds
+  // per CPU second above is how much the load stretches this process (at most 8 times here).
+  const double stretch = std::clamp(took / std::max(cpu, 1e-3), 1.0, 8.0);
+  options.seconds = (testing::kSanitized ? 12.0 : 6.0) * stretch;
   const FitResult result = fitFolds(session, fitter, options);
-  EXPECT_GT(result.evaluations, 0u) << result.stopReason;
+  EXPECT_GT(result.evaluations, 0u) << result.stopReason << "; " << options.seconds << " s";
   EXPECT_TRUE(result.timedOut);
   EXPECT_NO_THROW(validate(session.fixed()));
 }

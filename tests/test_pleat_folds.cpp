@@ -369,37 +369,39 @@ TEST(PleatFolds, TurnAllFourEndsOfASaddleFromAFlatSquareInOneStep) {
 
 // The start choice's share of work (work_share.hpp): past its wall share it passes only once the
 // process has spent its CPU (a loaded machine stretches the wall clock, not the work), always at
-// its latest moment, and at an interrupt.
+// its latest moment, and at an interrupt. Read on the CPU clock when asked: no thread, no delay.
 TEST(WorkShare, PassesOnceItsCpuIsSpentOrAtItsLatest) {
   {
-    const WorkShare share(0.05, 0.0, 1e10);
+    const Deadline share = workShare(0.05, 0.0, 1e10);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));  // sleeping spends no CPU
     EXPECT_FALSE(share.passed());
-    EXPECT_FALSE(share.deadline().passed());
     volatile double sink = 0.0;
     const double until = processCpuSeconds() + 0.08;
     for (long i = 0; processCpuSeconds() < until; ++i) sink = sink + std::sqrt(double(i));
-    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    EXPECT_TRUE(share.deadline().passed());
+    EXPECT_TRUE(share.passed());
+    EXPECT_FALSE(share.isCancelled());  // the clock's end, not a cancel
   }
   {
-    const WorkShare share(3600.0, 0.0, 1.0);
+    const Deadline share = workShare(0.0, 3600.0, 1e10);  // the CPU spent, the wall share not
+    volatile double sink = 0.0;
+    const double until = processCpuSeconds() + 0.02;
+    for (long i = 0; processCpuSeconds() < until; ++i) sink = sink + std::sqrt(double(i));
     EXPECT_FALSE(share.passed());
-    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
-    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    EXPECT_TRUE(share.deadline().passed());
+  }
+  {
+    const Deadline share = workShare(3600.0, 0.0, 1.0);
+    EXPECT_FALSE(share.passed());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1050));
+    EXPECT_TRUE(share.passed());
   }
   {
     std::atomic<bool> interrupt{false};
-    const WorkShare share(3600.0, 3600.0, 3600.0, &interrupt);
+    const Deadline share = workShare(3600.0, 3600.0, 3600.0, &interrupt);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     EXPECT_FALSE(share.passed());
     interrupt = true;
-    for (int wait = 0; wait < 200 && !share.passed(); ++wait)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     EXPECT_TRUE(share.passed());
+    EXPECT_TRUE(share.isCancelled());
   }
 }
 
@@ -417,8 +419,8 @@ TEST(FirstStepStart, GivesBackThePaperACrossFoldsAwaySoTheSaddlesEndsAreCovered)
   // (`fit --time 60` at a load of 15: 15 s of wall, 1.5 s of CPU): the CPU share not spent, the
   // choice measures the grown square as it does without a clock (on the wall clock alone it
   // measured nothing and kept the square: saddle_disk 8.28% Hausdorff against 4.38%).
-  const WorkShare share(3600.0, 0.0, 1e10);
-  const std::optional<FirstStepStart> chosen = startByFirstStep({square}, fitter, share.deadline());
+  const std::optional<FirstStepStart> chosen =
+      startByFirstStep({square}, fitter, workShare(3600.0, 0.0, 1e10));
   ASSERT_TRUE(chosen.has_value());
   EXPECT_TRUE(chosen->grown);
   EXPECT_FALSE(chosen->cutShort);

@@ -65,8 +65,8 @@ TriangleMesh shapeOf(const std::string& path) {
 // caller checks the start against it.
 // `deadline`: when the choice stops measuring more sheets (a share of --time); `work`: the same
 // share counted in work (work_share.hpp), for the sheets measured and the choice by the first
-// step toward a saddle, which read a cancel as the clock's end (the tube rings' probe does not: a
-// cancel drops the rings it grew, so it keeps `deadline`).
+// step toward a saddle (the tube rings' probe times its batches by the wall clock's moment,
+// timed_batches.hpp, so it keeps `deadline`).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
                    const std::string& output, const Deadline& deadline, const Deadline& work,
                    std::shared_ptr<const TubeChains>& tubeChains) {
@@ -391,11 +391,11 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   constexpr double kStartShare = 0.25, kStartLatest = 0.5;
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::optional<WorkShare> startShare;
-  if (timed)
-    startShare.emplace(kStartShare * options.seconds - (processCpuSeconds() - startedCpu),
-                       kStartShare * options.seconds - elapsed,
-                       kStartLatest * options.seconds - elapsed, &InterruptGuard::flag());
+  const Deadline startShare =
+      timed ? workShare(kStartShare * options.seconds - (processCpuSeconds() - startedCpu),
+                        kStartShare * options.seconds - elapsed,
+                        kStartLatest * options.seconds - elapsed, &InterruptGuard::flag())
+            : Deadline{};
   const Deadline startDeadline =
       timed ? Deadline{}.notAfter(started +
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -403,8 +403,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
             : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
   Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
-                              startShare ? startShare->deadline() : Deadline{}, tubeChains);
-  startShare.reset();  // its watcher stops
+                              startShare, tubeChains);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));

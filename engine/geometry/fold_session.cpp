@@ -234,6 +234,9 @@ void FoldSession::applyRecords(const std::vector<FoldRecord>& folds) {
   for (const FoldRecord& fold : folds) {
     sheet = applyFold(sheet, fold);
     history_.push_back(fold);
+    // A keyframe due here is this sheet: addKeyframes would fold it again from the last one.
+    if (history_.size() == keyframes_.size() * kKeyframeInterval)
+      keyframes_.push_back(std::make_shared<const Sheet>(sheet));
   }
   applied_ = history_.size();
   ++designRevision_;
