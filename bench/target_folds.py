@@ -1,6 +1,6 @@
 """What the bench's target generators share (make_drag_targets.py, make_symmetric_targets.py,
-reach_targets.py, make_rim_targets.py, make_plane_targets.py): a fold kept only when it moved
-the sheet and `check` passes whole, the target written as `export --obj` less its vt lines, the
+reach_targets.py, make_rim_targets.py, make_plane_targets.py, make_tangent_targets.py): a fold
+kept only when it moved the sheet and `check` passes whole, the target written as `export --obj` less its vt lines, the
 fold-count buckets and each case's own random stream, and the small geometry they choose folds
 with (the bounding diagonal, the rim, a uniform direction). How each generator chooses its folds
 stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
