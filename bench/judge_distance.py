@@ -38,8 +38,8 @@ def sample(verts, faces, n, rng):
     return (1 - r1)[:, None] * p[t, 0] + (r1 * (1 - r2))[:, None] * p[t, 1] + (r1 * r2)[:, None] * p[t, 2]
 
 
-def closest_on_triangles(q, a, b, c):
-    """Squared distance from each q[i] to triangle (a[i], b[i], c[i]) (Ericson, vectorised)."""
+def closest_points_on_triangles(q, a, b, c):
+    """The point of triangle (a[i], b[i], c[i]) nearest each q[i] (Ericson, vectorised)."""
     ab, ac, ap = b - a, c - a, q - a
     d1, d2 = (ab * ap).sum(-1), (ac * ap).sum(-1)
     bp = q - b
@@ -67,8 +67,12 @@ def closest_on_triangles(q, a, b, c):
     res = np.where(m((vc <= 0) & (d1 >= 0) & (d3 <= 0)), e_ab, res)
     res = np.where(m((d6 >= 0) & (d5 <= d6)), c, res)
     res = np.where(m((d3 >= 0) & (d4 <= d3)), b, res)
-    res = np.where(m((d1 <= 0) & (d2 <= 0)), a, res)
-    return ((q - res) ** 2).sum(-1)
+    return np.where(m((d1 <= 0) & (d2 <= 0)), a, res)
+
+
+def closest_on_triangles(q, a, b, c):
+    """Squared distance from each q[i] to triangle (a[i], b[i], c[i])."""
+    return ((q - closest_points_on_triangles(q, a, b, c)) ** 2).sum(-1)
 
 
 def distances(points, verts, faces, block=48):

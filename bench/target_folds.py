@@ -1,6 +1,6 @@
 """What the bench's target generators share (make_drag_targets.py, make_symmetric_targets.py,
-reach_targets.py, make_rim_targets.py, make_plane_targets.py): a fold kept only when it moved
-the sheet and `check` passes whole, the target written as `export --obj` less its vt lines, the
+reach_targets.py, make_rim_targets.py, make_plane_targets.py, make_tangent_targets.py): a fold
+kept only when it moved the sheet and `check` passes whole, the target written as `export --obj` less its vt lines, the
 fold-count buckets and each case's own random stream, and the small geometry they choose folds
 with (the bounding diagonal, the rim, a uniform direction). How each generator chooses its folds
 stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
@@ -27,11 +27,11 @@ def cases(seed, recipes, buckets, surfaces):
                        random.Random(f"{seed}/{recipe}/{bucket}/{surface}"))
 
 
-def record_case(manifest, name, recipe, bucket, surface, folds):
+def record_case(manifest, name, recipe, bucket, surface, folds, parameters=None):
     """One manifest.jsonl line for a target made (as reach_targets.py reads it), flushed, and
-    the target named on stdout."""
+    the target named on stdout. `parameters`: the sheet's, where not its defaults."""
     entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
-             "parameters": {}, "symmetry": None, "folds": folds}
+             "parameters": parameters or {}, "symmetry": None, "folds": folds}
     manifest.write(json.dumps(entry) + "\n")
     manifest.flush()
     print(name, folds, "folds", flush=True)
@@ -140,14 +140,16 @@ def fmt(p):
     return ",".join("%.9g" % x for x in p)
 
 
-def fold_through_cli(cf, work, surface, folds, choose, rng):
-    """`folds` folds of the catalogue's `surface` at its defaults through the binary, each
-    (grab, drop) from `choose(vertices, faces, diagonal, rng)` (None: try again), kept when it
-    moves the sheet and `check` passes whole; the design's path, or None after 30 tries a fold."""
+def fold_through_cli(cf, work, surface, folds, choose, rng, parameters=None):
+    """`folds` folds of the catalogue's `surface` (at its defaults, or with `parameters`) through
+    the binary, each (grab, drop) from `choose(vertices, faces, diagonal, rng)` (None: try
+    again), kept when it moves the sheet and `check` passes whole; the design's path, or None
+    after 30 tries a fold (or when `new` refuses the parameters)."""
     design = os.path.join(work, "d.curvefold.json")
     trial = os.path.join(work, "t.curvefold.json")
     obj = os.path.join(work, "form.obj")
-    if run([cf, "new", surface, "-o", design]).returncode != 0:
+    options = [x for name, value in (parameters or {}).items() for x in ("--" + name, str(value))]
+    if run([cf, "new", surface, *options, "-o", design]).returncode != 0:
         return None
     export_obj(cf, design, obj)
     vertices, faces = read_obj(obj)
@@ -176,10 +178,12 @@ def fold_through_cli(cf, work, surface, folds, choose, rng):
     return design if made == folds else None
 
 
-def cli_generator_main(description, recipes, buckets, choose):
+def cli_generator_main(description, recipes, buckets, choose,
+                       parameters=lambda recipe, surface, rng: {}):
     """The command line of a generator that drives the binary: for every recipe, bucket and
     catalogue surface (`curvefold surfaces`), `--per-surface` targets folded by
-    fold_through_cli with `choose(recipe, vertices, faces, diagonal, rng)`, written with their
+    fold_through_cli with `choose(recipe, vertices, faces, diagonal, rng)` from the sheet of
+    `parameters(recipe, surface, rng)` (drawn per try; {}: the defaults), written with their
     designs and manifest.jsonl into `out`."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("out")
@@ -207,16 +211,17 @@ def cli_generator_main(description, recipes, buckets, choose):
             for _ in range(3 * args.per_surface):
                 if made >= args.per_surface:
                     break
+                params = parameters(recipe, surface, rng)
                 folds = rng.randint(lo, hi)
                 design = fold_through_cli(
                     cf, work, surface, folds,
-                    lambda v, f, d, r, recipe=recipe: choose(recipe, v, f, d, r), rng)
+                    lambda v, f, d, r, recipe=recipe: choose(recipe, v, f, d, r), rng, params)
                 if design is None:
                     continue
                 name = f"{recipe}-{bucket}-{made:02d}-{surface}"
                 export_obj(cf, design, os.path.join(args.out, name + ".obj"))
                 shutil.copyfile(design, os.path.join(args.out, name + ".curvefold.json"))
-                record_case(manifest, name, recipe, bucket, surface, folds)
+                record_case(manifest, name, recipe, bucket, surface, folds, params)
                 made += 1
     shutil.rmtree(work)
 

@@ -1131,6 +1131,31 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
 // needs, and one whose plane misses the disk moves it whole, leaving none. Both read as smooth,
 // and a sheet sized (radius 0.161, not 0.06) or placed on the target started nearer than the
 // one they were folded from, which the unfolding cannot read back onto: `fit` ended 88.4% away.
+// A cone of other parameters than the defaults, folded twice: `--from cone` alone (a target made
+// at other parameters, the kind named) starts from the sheet the target unfolds to, not from the
+// defaults, onto which no unfolding lies (folds keep the area; the defaults' is another).
+TEST(StartSurface, ACreasedTargetOfAnotherAreaStartsFromTheSheetItUnfoldsTo) {
+  const SurfaceParameters made{{"base_radius", 0.06}, {"height", 0.1}, {"angle", 300.0}};
+  FoldSession folding(makeSurface("cone", made));
+  for (const glm::dvec3& along : {glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1)}) {
+    const std::vector<glm::dvec3>& at = meshOf(folding.fixed()).positions;
+    const glm::dvec3 farthest =
+        *std::max_element(at.begin(), at.end(), [&](const glm::dvec3& a, const glm::dvec3& b) {
+          return glm::dot(a, along) < glm::dot(b, along);
+        });
+    folding.beginDragNear(farthest);
+    folding.updateDrag(farthest - 0.04 * along + glm::dvec3(0.0, 0.03, 0.0));
+    ASSERT_TRUE(folding.commit());
+  }
+  const StartChoice start = chooseStart(meshOf(folding.fixed()), "cone");
+  EXPECT_TRUE(start.creased);
+  EXPECT_FALSE(start.placed);
+  for (const auto& [name, value] : made) {
+    ASSERT_TRUE(start.parameters.count(name)) << name;
+    EXPECT_NEAR(start.parameters.at(name), value, 2e-3 * value) << name;
+  }
+}
+
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {
   FoldRecord fold;
   fold.seed = {-0.0021913213800000032, -0.07875};

@@ -126,7 +126,10 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       text += number;
     }
     std::cout << text
-              << (start.placed    ? " (sized and placed on the target: " + start.placement + ")"
+              << (start.placed ? " (sized and placed on the target: " + start.placement + ")"
+                  : start.creased && !start.parameters.empty()
+                      ? std::string(" (the sheet the target unfolds to: it has creases, and "
+                                    "another area than the defaults')")
                   : start.creased ? std::string(" (its defaults: the target has creases)")
                   : start.symmetryDefaults
                       ? " (its defaults: no sheet sized to the target has " + from.symmetry + ")"

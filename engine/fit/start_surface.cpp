@@ -17,6 +17,7 @@
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/fit/unfolded_sheet.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/unfold.hpp"
 
@@ -311,6 +312,16 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
   bool cutShort = false;
   // Once one sheet is measured, the rest only while the deadline allows.
   auto outOfTime = [&] { return any && (cutShort = cutShort || deadline.passed()); };
+  // The kind asked for at the parameters its unfolding lies on, where a target folded from it
+  // (creased, or flat enough to be: short creases read as smooth) has another area than its
+  // defaults (unfolded_sheet.hpp): read once. Found, it is the sheet, as the defaults are below.
+  std::optional<std::optional<SurfaceParameters>> unfoldedParameters;
+  auto unfoldedFor = [&](const std::string& surface) -> const std::optional<SurfaceParameters>& {
+    static const std::optional<SurfaceParameters> none;
+    if (surface != kind || !developable || foldedFromKind(surface)) return none;
+    if (!unfoldedParameters) unfoldedParameters = parametersFromUnfolding(target, kind, deadline);
+    return *unfoldedParameters;
+  };
   for (StartChoice& candidate : candidatesFor(target, kind)) {
     if (outOfTime()) break;
     // A folded design was folded from the sheet as the catalogue makes it.
@@ -318,6 +329,11 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
       candidate.parameters.clear();
       candidate.creased = true;
       anyFoldedFrom = anyFoldedFrom || foldedFromKind(candidate.surface);
+    }
+    if (const std::optional<SurfaceParameters>& unfolded = unfoldedFor(candidate.surface)) {
+      candidate.parameters = *unfolded;
+      candidate.creased = true;
+      anyFoldedFrom = true;  // no sheet placed on it: the unfolding lies on this one
     }
     try {
       const Sheet sheet = makeSurface(candidate.surface, candidate.parameters);

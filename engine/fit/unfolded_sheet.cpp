@@ -1,0 +1,226 @@
+#include "engine/fit/unfolded_sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include <glm/common.hpp>
+
+#include "engine/fit/crease_planes.hpp"
+#include "engine/fit/subplex.hpp"
+#include "engine/fit/surface_distance.hpp"
+#include "engine/fit/target_unfolding.hpp"
+
+namespace curvefold {
+namespace {
+
+// Folds keep the area: within this share, the defaults may be the sheet.
+constexpr double kSameArea = 1e-5;
+// Crease the unfolding may leave (of the diagonal), as it counts an unfolding smooth.
+constexpr double kSmoothLeft = 0.003;
+// How near (of the diagonal, on average both ways) the fitted sheet must lie on the unfolded one.
+constexpr double kLiesOn = 1e-3;
+// Folds an unfolding may read (the fit's own cap).
+constexpr std::size_t kMaxFolds = 12;
+// Points measured each way per evaluation, and evaluations per fit.
+constexpr std::size_t kPoints = 600;
+constexpr int kEvaluations = 600;
+// Steps whose sides are tried every way (2^n choices) to find the part that never moved.
+constexpr std::size_t kExhaustiveChoices = 8;
+
+bool fitted(const SurfaceParameter& p) {
+  return !p.integer && p.name != "resolution" && p.name != "hole_radius";
+}
+
+std::vector<glm::dvec3> spread(const std::vector<glm::dvec3>& points) {
+  std::vector<glm::dvec3> out;
+  const std::size_t step = 1 + points.size() / kPoints;
+  for (std::size_t i = 0; i < points.size(); i += step) out.push_back(points[i]);
+  return out;
+}
+
+// The unfolded target as it may lie on the sheet: how far a sheet made with some parameters lies
+// from it, on average both ways.
+class Unfolded {
+ public:
+  explicit Unfolded(TriangleMesh mesh)
+      : mesh_(std::move(mesh)),
+        query_(mesh_, "unfolded target"),
+        points_(spread(mesh_.positions)) {}
+  double apart(const std::string& kind, const SurfaceParameters& parameters) const {
+    try {
+      const TriangleMesh sheet = meshOf(makeSurface(kind, parameters));
+      const SurfaceDistanceQuery onSheet(sheet, "sheet");
+      double there = 0.0;
+      for (const glm::dvec3& p : points_) there += onSheet.distance(p);
+      const std::vector<glm::dvec3> sheetPoints = spread(sheet.positions);
+      double back = 0.0;
+      for (const glm::dvec3& p : sheetPoints) back += query_.distance(p);
+      return there / static_cast<double>(points_.size()) +
+             back / static_cast<double>(sheetPoints.size());
+    } catch (const std::exception&) {  // parameters the kind refuses
+      return 1e30;
+    }
+  }
+
+ private:
+  TriangleMesh mesh_;
+  SurfaceDistanceQuery query_;
+  std::vector<glm::dvec3> points_;
+};
+
+// The kind's parameters read off `positions` as they lie in the catalogue's frame (tubes and
+// cones turn about the y axis, flat sheets lie in z = 0), `base` for the rest: the distance has
+// local minima far from the right sheet (a cone's angle), so the search starts here.
+SurfaceParameters guessFor(const std::string& kind, const std::vector<glm::dvec3>& positions,
+                           double area, SurfaceParameters guess) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  double sumRho = 0.0, sumY = 0.0, sumYY = 0.0, sumRhoY = 0.0;
+  for (const glm::dvec3& p : positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+    const double rho = std::hypot(p.x, p.z);
+    sumRho += rho;
+    sumY += p.y;
+    sumYY += p.y * p.y;
+    sumRhoY += rho * p.y;
+  }
+  const double count = static_cast<double>(positions.size());
+  const double meanRho = sumRho / count, meanY = sumY / count;
+  const double height = hi.y - lo.y;
+  const double varY = sumYY / count - meanY * meanY;
+  const double slope = varY > 0.0 ? (sumRhoY / count - meanRho * meanY) / varY : 0.0;
+  constexpr double kDegrees = 180.0 / std::numbers::pi;
+  if (kind == "square") {
+    guess["size"] = std::sqrt(area);
+  } else if (kind == "rectangle") {
+    guess["width"] = hi.x - lo.x;
+    guess["height"] = hi.y - lo.y;
+  } else if (kind == "disk") {
+    guess["radius"] = std::max({hi.x, -lo.x, hi.y, -lo.y});
+  } else if (kind == "cylinder" || kind == "half_cylinder") {
+    guess["radius"] = meanRho;
+    guess["height"] = height;
+    if (kind == "cylinder") guess["angle"] = std::min(360.0, area / (meanRho * height) * kDegrees);
+  } else if (kind == "cone") {
+    const double bottom = meanRho + slope * (lo.y - meanY), top = meanRho + slope * (hi.y - meanY);
+    const double wide = std::max(bottom, top), narrow = std::max(0.0, std::min(bottom, top));
+    const double topRadius = narrow < 0.05 * wide ? 0.0 : narrow;
+    guess["base_radius"] = wide;
+    guess["top_radius"] = topRadius;
+    guess["height"] = height;
+    const double slant = std::hypot(height, wide - topRadius);
+    guess["angle"] =
+        std::min(360.0, area / (std::numbers::pi * (wide + topRadius) * slant) * 360.0);
+  } else if (kind == "swept_curve") {
+    guess["amplitude"] = 0.5 * (hi.z - lo.z);
+    guess["curve_width"] = hi.x - lo.x;
+    guess["length"] = hi.y - lo.y;
+  }
+  return guess;
+}
+
+}  // namespace
+
+std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& target,
+                                                         const std::string& kind,
+                                                         const Deadline& deadline) {
+  const auto& catalog = surfaceCatalog();
+  const auto info = std::find_if(catalog.begin(), catalog.end(),
+                                 [&](const SurfaceInfo& s) { return s.name == kind; });
+  if (info == catalog.end()) return std::nullopt;
+  const TriangleMesh defaults = meshOf(makeSurface(kind));
+  const double area = surfaceArea(target), defaultArea = surfaceArea(defaults);
+  if (std::abs(area - defaultArea) <= kSameArea * area) return std::nullopt;
+  const double diagonal = boundingDiagonal(target);
+  const TargetUnfolding unfolding =
+      unfoldTarget(target, defaults, sharpEdgeThreshold(defaults), kMaxFolds, deadline);
+  if (unfolding.cutShort || deadline.passed() || unfolding.sharpLengthLeft > kSmoothLeft * diagonal)
+    return std::nullopt;
+  // The parameters fitted, from the defaults' lengths scaled to the target's area.
+  std::vector<const SurfaceParameter*> free;
+  SurfaceParameters base;
+  const double scale = std::sqrt(area / defaultArea);
+  for (const SurfaceParameter& p : info->parameters) {
+    if (!fitted(p)) continue;
+    free.push_back(&p);
+    // Lengths scale with the area's root; angles and counts do not.
+    const bool length = p.description.find("metres") != std::string::npos;
+    base[p.name] = length ? p.defaultValue * scale : p.defaultValue;
+  }
+  // Each step of the unfolding moved its piece, so the largest part stayed; the part that never
+  // moved may be a piece (a drag moves the side of its grab, often the larger): every choice of
+  // sides, each a reflection of the whole through the step's plane, and the one whose guess lies
+  // nearest its sheet kept.
+  const std::size_t steps = std::min(unfolding.folds.size(), kExhaustiveChoices);
+  std::vector<glm::dvec3> chosen;
+  SurfaceParameters start = base;
+  double nearest = 1e300;
+  for (std::uint32_t bits = 0; bits < (1u << steps) && !deadline.passed(); ++bits) {
+    std::vector<glm::dvec3> positions = unfolding.unfolded;
+    // A step's reflection of the rest moves every earlier step's result: the last step read
+    // (the design's first fold) applies first.
+    for (std::size_t u = 0; u < steps; ++u)
+      if (bits >> u & 1u)
+        for (glm::dvec3& p : positions) p = unfolding.folds[u].plane.reflect(p);
+    const Unfolded candidate(TriangleMesh{positions, target.triangles});
+    for (const SurfaceParameters& tried : {base, guessFor(kind, positions, area, base)}) {
+      const double d = candidate.apart(kind, tried);
+      if (d < nearest) {
+        nearest = d;
+        start = tried;
+        chosen = positions;
+      }
+    }
+  }
+  if (chosen.empty()) return std::nullopt;
+  const Unfolded unfolded(TriangleMesh{chosen, target.triangles});
+  base = start;
+  auto parametersOf = [&](const std::vector<double>& x) {
+    SurfaceParameters out = base;
+    for (std::size_t i = 0; i < free.size(); ++i) out[free[i]->name] = x[i];
+    return out;
+  };
+  // A star's points are a count: each tried at the start, the nearest kept.
+  const auto points = std::find_if(info->parameters.begin(), info->parameters.end(),
+                                   [](const SurfaceParameter& p) { return p.name == "points"; });
+  if (points != info->parameters.end()) {
+    double best = 1e300;
+    SurfaceParameters tried = base;
+    for (int count = 3; count <= 12 && !deadline.passed(); ++count) {
+      tried["points"] = count;
+      const double d = unfolded.apart(kind, tried);
+      if (d < best) {
+        best = d;
+        base["points"] = count;
+      }
+    }
+  }
+  std::vector<double> x, stepSizes;
+  SubplexBounds bounds;
+  for (const SurfaceParameter* p : free) {
+    x.push_back(base[p->name]);
+    bounds.lower.push_back(p->min);
+    bounds.upper.push_back(p->max);
+    stepSizes.push_back(p->name == "angle" ? 5.0
+                                           : std::max(0.05 * base[p->name], 0.005 * diagonal));
+  }
+  if (!x.empty())
+    minimizeSubplex(
+        x, stepSizes, kEvaluations,
+        [&](const std::vector<double>& y) { return unfolded.apart(kind, parametersOf(y)); },
+        &deadline, &bounds);
+  const SurfaceParameters found = parametersOf(x);
+  if (!(unfolded.apart(kind, found) <= kLiesOn * diagonal)) return std::nullopt;
+  SurfaceParameters changed;
+  for (const auto& [name, value] : found) {
+    const auto p = std::find_if(info->parameters.begin(), info->parameters.end(),
+                                [&](const SurfaceParameter& q) { return q.name == name; });
+    if (p != info->parameters.end() && value != p->defaultValue) changed[name] = value;
+  }
+  return changed;
+}
+
+}  // namespace curvefold

@@ -1,0 +1,36 @@
+// The sheet a creased target was folded from, when it is the named kind at other parameters
+// (issue 38, 1): `fit T --from cone` on a target folded from a cone of another radius, height or
+// angle. Folds keep the area, so a target whose area is not the kind's at its defaults was not
+// folded from them, and the unfolding cannot read it back onto them. Unfolded against the
+// defaults all the same (the creases and pieces it reads do not depend on the sheet), it ends
+// smooth on the sheet the design started from, where the part that never moved lies as the
+// catalogue made it; the kind's continuous parameters are then fitted to that unfolded sheet
+// (subplex on the two-sided mean distance, from the defaults' lengths scaled to the target's area;
+// a star's number of points tried 3 to 12 first), and kept where the sheet lies on it.
+//
+// Inputs: the target (a folded design written as a mesh), the kind's name, a deadline (the
+// unfolding's and the fit's share of a fit's time). Output: the parameters that differ from the
+// defaults' (lengths, angles, a star's points; never the resolution), or nothing: the defaults
+// hold the target's area, the unfolding leaves creases, the deadline passed, or no parameters lay
+// the sheet within 1e-3 of the diagonal (on average) of the unfolded one.
+//
+// Known limits: an unfolding that ends on the sheet moved whole (folds whose planes missed it),
+// or with the part that stayed smaller than a flap, lies off the catalogue's frame and is not
+// fitted; a kind whose parameters leave its area alone (a cylinder's radius at a fixed arc) is
+// told apart only by the unfolding.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "engine/fit/deadline.hpp"
+#include "engine/geometry/triangle_mesh.hpp"
+#include "engine/surfaces/surfaces.hpp"
+
+namespace curvefold {
+
+std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& target,
+                                                         const std::string& kind,
+                                                         const Deadline& deadline = {});
+
+}  // namespace curvefold
