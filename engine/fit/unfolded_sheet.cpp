@@ -215,10 +215,13 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
   const SurfaceParameters found = parametersOf(x);
   if (!(unfolded.apart(kind, found) <= kLiesOn * diagonal)) return std::nullopt;
   SurfaceParameters changed;
-  for (const auto& [name, value] : found) {
+  for (const auto& entry : found) {
+    // Not a structured binding: clang 14 (the sanitized build) cannot capture one.
+    const std::string& name = entry.first;
     const auto p = std::find_if(info->parameters.begin(), info->parameters.end(),
                                 [&](const SurfaceParameter& q) { return q.name == name; });
-    if (p != info->parameters.end() && value != p->defaultValue) changed[name] = value;
+    if (p != info->parameters.end() && entry.second != p->defaultValue)
+      changed[name] = entry.second;
   }
   return changed;
 }
