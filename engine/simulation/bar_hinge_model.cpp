@@ -392,11 +392,15 @@ void addSliverBridges(BarHingeModel& model, const ElementInputs& in) {
   // there keep theirs: freed too, the designs' reflection slivers took up to twice the
   // iterations at 25-75%.)
   std::sort(slivers.begin(), slivers.end());
+  // Short: the sliver stands at least 8 times its length over it (langCardinal's 30; a curved
+  // pleat's ruling triangles, at 2 to 4, keep their creases driven: freed, one stayed 17.5
+  // degrees off its angle with Origami Simulator's soft facets).
+  constexpr double kShortEdge = 4.0;  // area over length squared: half the height over length
   for (std::size_t j = 0; j < hingeCount; ++j) {
     bool shortEdge = false;  // of a bridged sliver, which does not weaken its hinge (addHinge)
     for (std::uint32_t t : model.hingeTriangles[j])
       shortEdge = shortEdge || (std::binary_search(slivers.begin(), slivers.end(), t) &&
-                                4.0 * in.area[t] >= edgeLength(j) * edgeLength(j));
+                                in.area[t] >= kShortEdge * edgeLength(j) * edgeLength(j));
     if (crossed[j] || (shortEdge && model.hingeCrease[j])) model.hingeStiffness[j] = 0.0;
   }
 }
