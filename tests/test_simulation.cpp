@@ -1058,5 +1058,60 @@ TEST(Simulation, ABridgeOverTwoFlatFoldedValleysWindsAFullTurn) {
   EXPECT_EQ(result.stages, 9u);
 }
 
+// A Yoshimura pattern (cols x rows bands of triangles of base `base` and height `height`, user
+// units of a 96-per-inch SVG): horizontal valleys at 0.8 opacity (144 degrees), zigzag mountains
+// at 180, colours from a <style> rule, as another tool would draw it.
+std::string yoshimuraSvg(int cols, int rows, double base, double height) {
+  const double width = cols * base, tall = rows * height;
+  const auto number = [](double v) { return std::to_string(v); };
+  std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 )" + number(width) +
+                    " " + number(tall) +
+                    R"("><style>.m{stroke:#ff0000} .v{stroke:#0000ff;stroke-opacity:0.8}</style>)" +
+                    R"(<polygon fill="none" stroke="#000" points="0,0 )" + number(width) + ",0 " +
+                    number(width) + "," + number(tall) + " 0," + number(tall) + R"("/>)";
+  for (int j = 1; j < rows; ++j)
+    svg += R"(<polyline class="v" fill="none" points="0,)" + number(j * height) + " " +
+           number(width) + "," + number(j * height) + R"("/>)";
+  for (int j = 0; j < rows; ++j) {
+    // The zigzag between lines j and j + 1, odd bands shifted half a base.
+    std::string points;
+    for (int k = 0; k <= 2 * cols + 1; ++k) {
+      const double x = -(j % 2) * base / 2 + k * base / 2;
+      if (x < 0.0 || x > width) continue;
+      points += number(x) + "," + number((j + k % 2) * height) + " ";
+    }
+    svg += R"(<polyline class="m" fill="none" points=")" + points + R"("/>)";
+  }
+  return svg + "</svg>";
+}
+
+// The static solver's iteration budget (StaticOptions::maxIterations, raised from 400 to 800
+// for langHoneycomb.svg). A Yoshimura pattern whose valleys want 144 degrees and mountains 180
+// (no rigid folding takes both: its facets stretch about 0.1%) settles from flat at 100% in
+// over 400 iterations (537 when this was written; each stage converging, the last falling
+// slowly): within the budget it settles to the tolerance, with 400 it stops NOT settled.
+TEST(Simulation, IterationBudgetSettlesAYoshimuraPastFourHundredIterations) {
+  CreasePattern pattern = readSvgCreasePatternText(yoshimuraSvg(12, 4, 30.0, 14.0), "y.svg");
+  scaleToMetres(pattern);
+  const BarHingeModel model = buildModel(pattern);
+  SimulationState state = flatState(model);
+  const StaticOptions options;
+  const StaticResult result = settle(model, 1.0, state, options);
+  EXPECT_TRUE(result.converged) << "residual " << result.residual;
+  EXPECT_LE(result.residual, options.tolerance);
+  // Fewer would no longer test the budget: find a harder pattern then.
+  EXPECT_GT(result.iterations, 400u);
+  EXPECT_LE(result.iterations, options.maxIterations);
+  EXPECT_EQ(energyRises(result.history), 0u);
+
+  StaticOptions oldBudget = options;
+  oldBudget.maxIterations = 400;
+  SimulationState cut = flatState(model);
+  const StaticResult stopped = settle(model, 1.0, cut, oldBudget);
+  EXPECT_FALSE(stopped.converged);
+  EXPECT_EQ(stopped.iterations, 400u);
+  EXPECT_GT(stopped.residual, options.tolerance);
+}
+
 }  // namespace
 }  // namespace curvefold
