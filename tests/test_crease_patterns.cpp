@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/crease_pattern_graph.hpp"
@@ -210,6 +211,40 @@ TEST(CreasePatternFold, ThreeDimensionalFileFlatInYReadsInXZ) {
   EXPECT_NEAR(area(p), 2.0, 1e-12);
   ASSERT_TRUE(edgeBetween(p, {0, 0}, {2, 1}));
   EXPECT_EQ(edgeBetween(p, {0, 0}, {2, 1})->foldAngleDegrees, 45.0);
+}
+
+// A flat sheet in a plane tilted to every axis (a pattern exported in a scene's frame) is as flat
+// as one in z = 0: read in its plane, with a note, not refused as a folded state.
+TEST(CreasePatternFold, ThreeDimensionalFileFlatInATiltedPlaneReadsInThatPlane) {
+  // The 2 x 1 rectangle with a diagonal valley, at x u + y v + (1, 2, 3), u and v orthonormal.
+  const glm::dvec3 u(2.0 / 3, 2.0 / 3, 1.0 / 3), v(-2.0 / 3, 1.0 / 3, 2.0 / 3), at(1, 2, 3);
+  std::string coords;
+  for (const glm::dvec2 q :
+       {glm::dvec2(0, 0), glm::dvec2(2, 0), glm::dvec2(2, 1), glm::dvec2(0, 1)}) {
+    const glm::dvec3 p = at + q.x * u + q.y * v;
+    char text[96];
+    std::snprintf(text, sizeof text, "%s[%.17g,%.17g,%.17g]", coords.empty() ? "" : ",", p.x, p.y,
+                  p.z);
+    coords += text;
+  }
+  const CreasePattern p =
+      readFoldCreasePatternText(R"({"vertices_coords": [)" + coords +
+                                    R"(], "edges_vertices": [[0,1],[1,2],[2,3],[3,0],[0,2]],
+          "edges_assignment": ["B","B","B","B","V"], "edges_foldAngle": [0,0,0,0,45]})",
+                                "tilted.fold");
+  expectValid(p);
+  EXPECT_NEAR(area(p), 2.0, 1e-12);
+  std::size_t creases = 0;
+  for (const CreasePatternEdge& e : p.edges)
+    if (e.assignment == CreaseAssignment::Valley) {
+      ++creases;
+      EXPECT_NEAR(glm::distance(p.vertices[e.a], p.vertices[e.b]), std::sqrt(5.0), 1e-12);
+      EXPECT_EQ(e.foldAngleDegrees, 45.0);
+    }
+  EXPECT_EQ(creases, 1u);
+  EXPECT_TRUE(std::any_of(p.notes.begin(), p.notes.end(), [](const std::string& note) {
+    return note.find("a plane tilted to the axes") != std::string::npos;
+  }));
 }
 
 TEST(CreasePatternFold, CutIsOpenedAndCanSplitThePaper) {

@@ -57,6 +57,39 @@ void checkCount(const JsonReader& reader, const json& array, const char* key, st
                          ")");
 }
 
+// Whether the points lie within `flatness` of one plane (three of them spanning it); gives its
+// unit normal, signed as the nearest axis plane's reading (x, y for z; x, z for y; y, z for x)
+// has it, and the first of that reading's axes projected into the plane.
+bool tiltedPlane(const std::vector<glm::dvec3>& points, double flatness, glm::dvec3& normal,
+                 glm::dvec3& along) {
+  if (points.size() < 3) return false;
+  const glm::dvec3 origin = points[0];
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (glm::distance(points[i], origin) > glm::distance(points[far], origin)) far = i;
+  const glm::dvec3 span = points[far] - origin;
+  glm::dvec3 best(0.0);
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 c = glm::cross(span, p - origin);
+    if (glm::length(c) > glm::length(best)) best = c;
+  }
+  // Collinear within rounding: no plane to read (and no paper either).
+  if (!(glm::length(best) > 1e-6 * glm::dot(span, span))) return false;
+  normal = glm::normalize(best);
+  for (const glm::dvec3& p : points)
+    if (std::abs(glm::dot(p - origin, normal)) > flatness) return false;
+  int axis = 0;  // the axis the normal is nearest: the one an axis plane would drop
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
+  const int first = axis == 0 ? 1 : 0, second = axis == 2 ? 1 : 2;
+  glm::dvec3 a(0.0), b(0.0);
+  a[first] = 1.0;
+  b[second] = 1.0;
+  if (glm::dot(glm::cross(a, b), normal) < 0.0) normal = -normal;
+  along = glm::normalize(a - glm::dot(a, normal) * normal);
+  return true;
+}
+
 CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
   reader.object(document, "");
   CreaseDrawing drawing;
@@ -96,6 +129,10 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
         break;
       }
     }
+    // Flat in a plane tilted to the axes (a sheet exported in a scene's frame): read in that
+    // plane, with the axes of the plane nearest it (so a plane near z = constant reads near x, y).
+    glm::dvec3 normal(0.0), along(0.0);
+    if (dropped < 0 && tiltedPlane(points, flatness, normal, along)) dropped = 3;
     if (dropped < 0) {
       // Name the coordinate that varies least and the vertex furthest off its plane.
       int axis = 0;
@@ -107,15 +144,22 @@ CreaseDrawing readDrawing(const json& document, const JsonReader& reader) {
             std::abs(points[worst][axis] - points[0][axis]))
           worst = i;
       reader.fail("vertices_coords",
-                  "not a flat crease pattern: the 3D vertices lie in no plane x, y or z = constant "
-                  "(vertex " +
+                  "not a flat crease pattern: the 3D vertices lie in no plane (vertex " +
                       std::to_string(worst) + " has " + "xyz"[axis] + " = " +
                       shortestDouble(points[worst][axis]) + ", vertex 0 " +
                       shortestDouble(points[0][axis]) + "); a folded state is not read");
     }
-    if (dropped != 2)
+    if (dropped == 3) {
+      const glm::dvec3 across = glm::cross(normal, along);
+      for (glm::dvec3& p : points) p = {glm::dot(p, along), glm::dot(p, across), 0.0};
+      drawing.notes.push_back("vertices_coords: 3D in a plane tilted to the axes (normal " +
+                              shortestDouble(normal.x) + ", " + shortestDouble(normal.y) + ", " +
+                              shortestDouble(normal.z) + "); read in that plane");
+      dropped = 2;
+    } else if (dropped != 2) {
       drawing.notes.push_back(std::string("vertices_coords: 3D with every ") + "xyz"[dropped] +
                               " equal; read in the plane of the other two");
+    }
   }
   drawing.vertices.reserve(points.size());
   for (const glm::dvec3& p : points) {
