@@ -657,6 +657,25 @@ TEST(CreasePatternFold, AnUnknownFrameUnitIsNoted) {
   EXPECT_NE(unit.unitSource.find("no physical size"), std::string::npos) << unit.unitSource;
 }
 
+// Files under the 64 MiB limit that pass libxml2's own (no XML_PARSE_HUGE): one path of 2.1
+// million segments (a minified file, 10.5 MB in one d attribute), and 22 paths of 100,000 (11
+// MB of long attributes). The message names the limit, where libxml2's said the start tag had no
+// end or "Huge input lookup".
+TEST(CreasePatternSvg, AnAttributePastTheXmlReadersLimitIsNamed) {
+  for (const auto& [paths, segments] : {std::pair{1, 2'100'000}, std::pair{22, 100'000}}) {
+    std::string text = kSvgSquare;
+    for (int p = 0; p < paths; ++p) {
+      text += R"(<path stroke="red" d="M0 0)";
+      for (int k = 0; k < segments; ++k) text += " l0 0";
+      text += R"("/>)";
+    }
+    text += "</svg>";
+    const std::string message = svgError(text);
+    EXPECT_NE(message.find("more than the XML reader takes (10000000 bytes"), std::string::npos)
+        << message;
+  }
+}
+
 TEST(CreasePatternSvg, BadInputGetsOneLineNamingTheProblem) {
   EXPECT_NE(svgError("<svg><line").find("not valid XML at line 1"), std::string::npos);
   EXPECT_NE(svgError("<html/>").find("not an SVG file"), std::string::npos);

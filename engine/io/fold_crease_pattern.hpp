@@ -2,7 +2,8 @@
 // Origami Simulator, Rabbit Ear and ORIPA), read into a triangulated CreasePattern.
 //
 // Read: vertices_coords (2D, or 3D lying in one plane z, y or x = constant, as Origami Simulator
-// writes its [x, 0, z] files), edges_vertices, edges_assignment (B M V F U C, either case; J, a
+// writes its [x, 0, z] files, or in a plane tilted to the axes, read in that plane with a note),
+// edges_vertices, edges_assignment (B M V F U C, either case; J, a
 // join, reads as F), edges_foldAngle (degrees, + valley, - mountain; null or absent: -180 for M,
 // +180 for V, 0 for the rest, as Origami Simulator folds an SVG line of full opacity; an
 // assignment without edges_assignment is U), faces_vertices (optional: without it the faces are
@@ -14,9 +15,9 @@
 //
 // Refused with one line (CreasePatternError, or FileError when the file cannot be read): malformed
 // JSON, a key given twice, a wrong type, an index out of range, an unknown assignment, arrays of
-// different lengths, an angle outside [-180, 180], a 3D file that is not flat, two edges crossing
-// without a vertex, an edge through another vertex, an edge of length zero, an edge with no face,
-// counts past kMaxCreasePattern* (input_limits.hpp).
+// different lengths, an angle outside [-180, 180], a 3D file that lies in no plane, two edges
+// crossing without a vertex, an edge through another vertex, an edge of length zero, an edge with
+// no face, counts past kMaxCreasePattern* (input_limits.hpp).
 #pragma once
 
 #include <filesystem>

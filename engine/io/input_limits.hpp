@@ -26,6 +26,8 @@ inline constexpr std::uint64_t kMaxCreasePatternBytes = 64ull << 20;
 inline constexpr std::uint64_t kMaxCreasePatternVertices = 1'000'000;
 inline constexpr std::uint64_t kMaxCreasePatternEdges = 3'000'000;
 inline constexpr std::uint64_t kMaxCreasePatternFaceCorners = 6'000'000;
+// One SVG attribute value or text: libxml2's limit without XML_PARSE_HUGE (XML_MAX_TEXT_LENGTH).
+inline constexpr std::uint64_t kMaxSvgTokenBytes = 10'000'000;
 
 // The whole file as text, refused (FileError) when it cannot be read, is not a regular file (a
 // folder, a FIFO, a device: notRegularFile), or holds more than maxBytes: "<path>: 104857600 bytes,

@@ -909,6 +909,17 @@ struct XmlDocument {
   }
 };
 
+// The longest run of bytes between markup or quote characters: an attribute value's or a text's
+// length, near enough.
+std::size_t longestToken(std::string_view text) {
+  std::size_t longest = 0, run = 0;
+  for (const char c : text) {
+    run = (c == '<' || c == '>' || c == '"' || c == '\'') ? 0 : run + 1;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
+
 }  // namespace
 
 CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view name,
@@ -929,6 +940,16 @@ CreasePattern readSvgCreasePatternText(std::string_view text, std::string_view n
     if (!xml.document) {
       const xmlError* error = xmlCtxtGetLastError(xml.context);
       std::string message = error && error->message ? trim(error->message) : "unreadable";
+      // libxml2's own limits (no XML_PARSE_HUGE, above): one attribute or text over 10,000,000
+      // bytes, or as much read ahead through long attributes, end in a message about the
+      // input's end or a "Huge input lookup"; name the limit instead.
+      const std::size_t token = longestToken(text);
+      if (token > kMaxSvgTokenBytes || message.find("Huge input lookup") != std::string::npos)
+        throw CreasePatternError(prefix + ": more than the XML reader takes (" +
+                                 std::to_string(kMaxSvgTokenBytes) +
+                                 " bytes in one attribute or text, or read ahead through long "
+                                 "ones; the longest here " +
+                                 std::to_string(token) + " bytes): split long paths");
       throw CreasePatternError(prefix + ": not valid XML at line " +
                                std::to_string(error ? error->line : 0) + ": " +
                                quotedExcerpt(message, 100));

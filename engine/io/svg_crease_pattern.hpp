@@ -33,7 +33,9 @@
 //
 // Refused with one line (CreasePatternError, or FileError when the file cannot be read): malformed
 // XML, a root that is not <svg>, a malformed number, point list, path or transform, a line with
-// no face, no lines of a crease colour, counts past kMaxCreasePattern* (input_limits.hpp).
+// no face, no lines of a crease colour, counts past kMaxCreasePattern* (input_limits.hpp), and
+// what libxml2 refuses without XML_PARSE_HUGE: an attribute or text over kMaxSvgTokenBytes (10
+// MB), or as much read ahead through long attributes (the message names that limit).
 #pragma once
 
 #include <filesystem>
