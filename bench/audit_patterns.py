@@ -33,17 +33,19 @@ def run(cmd, timeout=300):
 
 
 def dihedral(v, tris, a, b):
-    """Fold angle (degrees, unsigned) across edge a-b: 180 minus the angle between the normals'
-    complement, i.e. 0 when flat."""
-    two = [t for t in tris if a in t and b in t]
-    if len(two) != 2:
+    """Fold angle (degrees, unsigned, 0 when flat) across edge a-b: 180 minus the angle between
+    the two triangles' wings (each opposite corner's offset square to the edge)."""
+    e = v[b] - v[a]
+    e = e / np.linalg.norm(e)
+    wings = []
+    for t in tris:
+        if a in t and b in t:
+            o = v[[c for c in t if c not in (a, b)][0]] - v[a]
+            w = o - (o @ e) * e
+            wings.append(w / np.linalg.norm(w))
+    if len(wings) != 2:
         return None
-    n = []
-    for t in two:
-        p = v[list(t)]
-        c = np.cross(p[1] - p[0], p[2] - p[0])
-        n.append(c / np.linalg.norm(c))
-    return math.degrees(math.acos(max(-1.0, min(1.0, float(n[0] @ n[1])))))
+    return 180.0 - math.degrees(math.acos(max(-1.0, min(1.0, float(wings[0] @ wings[1])))))
 
 
 def placed_distance(P, Q):
