@@ -439,6 +439,24 @@ def main(out):
           json.dumps(square(extra_e=[[0, 2], [2, 0]], extra_a=["V", "M"])))
     write(os.path.join(bad, "zero_length.fold"),
           json.dumps(square(extra_v=[[0, 0]], extra_e=[[0, 4]], extra_a=["V"])))
+    write(os.path.join(bad, "tjunction.fold"), json.dumps({
+        "vertices_coords": [[0, 0], [1, 0], [1, 1], [0, 1], [0.5, 0.5]],
+        "edges_vertices": [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2], [4, 1]],
+        "edges_assignment": ["B", "B", "B", "B", "V", "M"]}))
+    # 32 paths of 500 kB: each attribute under libxml2's 10 MB, 16 MB in all
+    with open(os.path.join(bad, "huge_paths.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10"><rect width="10" '
+                'height="10" fill="none" stroke="black"/>')
+        for _ in range(32):
+            f.write('<path stroke="red" d="M0 0 ' + "l0 0 " * 100_000 + '"/>')
+        f.write("</svg>")
+    # not malformed: 12 MB of short lines, past libxml2's 10 MB read-ahead but in small pieces
+    with open(os.path.join(bad, "big_lines.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">\n<rect width="10" '
+                'height="10" fill="none" stroke="black"/>\n')
+        while f.tell() < 12_000_000:
+            f.write('<line x1="1" y1="1" x2="1.000001" y2="1" stroke="#ff0000" stroke-width="0.1"/>\n')
+        f.write("</svg>\n")
     with open(os.path.join(out, "facts.json"), "w") as f:
         json.dump(facts, f, indent=1)
 
