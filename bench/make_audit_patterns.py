@@ -35,6 +35,8 @@ def crimp_assignment(sectors, rng):
     while len(sec) > 2:
         k = len(sec)
         cands = [i for i in range(k) if sec[i] < sec[i - 1] - 1e-9 and sec[i] < sec[(i + 1) % k] - 1e-9]
+        if not cands:  # equal sectors (not from kawasaki_sectors' random ones): crimp a smallest
+            cands = [min(range(k), key=lambda i: sec[i])]
         i = rng.choice(cands)
         a, b = ids[i], ids[(i + 1) % k]
         x = rng.choice("MV")
