@@ -1,17 +1,21 @@
 // `curvefold render` and `curvefold replay --frames`, run as a user runs them: PNG files of the
 // asked size, one-line errors and no file for bad input or a machine without Vulkan.
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
 #include "cli_test_support.hpp"
+#include "sanitizer_support.hpp"
 #include "test_paths.hpp"
 
 namespace fs = std::filesystem;
@@ -444,6 +448,65 @@ TEST_F(ColouredPictures, FitPngColoursTheFittedSheetByItsDistance) {
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
   EXPECT_FALSE(fs::exists(path("g.curvefold.json")));
+}
+
+// fit --png draws its picture within --time (issue 38, 3: the picture came after the search's
+// deadline, with no time kept for it). A saddle, which only the search approaches, so the clock
+// ends it, from a square of a given size (no start to choose); the picture (on lavapipe, 0.15-0.3
+// s of CPU) must then fit in what the search left. Counted in the CPU the command spends after its
+// time (read from /proc/PID/stat at that moment), which a loaded machine does not stretch as it
+// does the wall clock: with no time kept for the picture, 0.12-0.26 s of it landed there (load
+// 17-26); with it, none.
+TEST_F(ColouredPictures, FitPngIsDrawnWithinTheTime) {
+  {
+    std::ofstream out(path("saddle.obj"));
+    for (int j = 0; j <= 16; ++j)
+      for (int i = 0; i <= 16; ++i) {
+        const double x = 0.0125 * i - 0.1, y = 0.0125 * j - 0.1;
+        out << "v " << x << " " << y << " " << 4.0 * (x * x - y * y) << "\n";
+      }
+    for (int j = 0; j < 16; ++j)
+      for (int i = 0; i < 16; ++i) {
+        const int a = j * 17 + i + 1, b = a + 1, c = a + 18, d = a + 17;
+        out << "f " << a << " " << b << " " << c << "\nf " << a << " " << c << " " << d << "\n";
+      }
+  }
+  const double limit = curvefold::testing::kSanitized ? 20.0 : 4.0;
+  const std::string time = std::to_string(limit), target = path("saddle.obj").string(),
+                    design = path("s.curvefold.json").string(), png = path("s.png").string();
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr))
+      _exit(126);
+    execl(CURVEFOLD_BINARY, CURVEFOLD_BINARY, "fit", target.c_str(), "--from", "square", "--size",
+          "0.22", "--folds", "16", "--time", time.c_str(), "-o", design.c_str(), "--png",
+          png.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The child's CPU (user and system, all its threads) at its limit, then at its end.
+  std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                            std::chrono::duration<double>(limit)));
+  const std::string stat = slurp("/proc/" + std::to_string(child) + "/stat");
+  const long tick = sysconf(_SC_CLK_TCK);
+  double atLimit = 0.0;
+  if (const std::size_t name = stat.rfind(')'); name != std::string::npos) {
+    std::istringstream fields(stat.substr(name + 2));
+    std::string field;
+    for (int k = 3; k <= 15 && fields >> field; ++k)
+      if (k >= 14) atLimit += double(std::stol(field)) / double(tick);
+  }
+  int status = 0;
+  rusage usage{};
+  ASSERT_EQ(wait4(child, &status, 0, &usage), child);
+  const double cpu = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+  EXPECT_EQ(pngSize(path("s.png")), std::make_pair(1280u, 720u));
+  // Ended before its limit, the child's stat was read when it was a zombie: the whole CPU.
+  EXPECT_LT(cpu - atLimit, curvefold::testing::kSanitized ? 2.0 : 0.05)
+      << cpu - atLimit << " s of CPU after the limit, " << cpu << " s in all";
 }
 
 TEST_F(ColouredPictures, BadPictureOptionsAreOneLineAndWriteNothing) {

@@ -84,8 +84,11 @@ void addSimulateCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 // A picture of a quantity coloured on a sheet (fit and distance --png, simulate --color), 1280x720
 // with its legend: the renderer is made first, so a machine without Vulkan fails before any work;
-// writeFieldPng renders one value per vertex and writes the PNG at `at` (an OutputSet's writer).
+// writeFieldPng renders one value per vertex and writes the PNG at `at` (an OutputSet's writer);
+// fieldPng gives the PNG's bytes.
 std::unique_ptr<HeadlessRenderer> makePictureRenderer();
+std::string fieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
+                     const std::vector<double>& vertexValues, const ColorLegend& legend);
 void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at);

@@ -89,12 +89,17 @@ std::unique_ptr<HeadlessRenderer> makePictureRenderer() {
   return std::make_unique<HeadlessRenderer>(options);
 }
 
+std::string fieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
+                     const std::vector<double>& vertexValues, const ColorLegend& legend) {
+  const RgbaImage image = renderFieldPicture(renderer, sheet, vertexValues, legend);
+  session::checkValidation(renderer.context());
+  return encodePng(image);
+}
+
 void writeFieldPng(HeadlessRenderer& renderer, const Sheet& sheet,
                    const std::vector<double>& vertexValues, const ColorLegend& legend,
                    const std::string& at) {
-  const RgbaImage image = renderFieldPicture(renderer, sheet, vertexValues, legend);
-  session::checkValidation(renderer.context());
-  writePng(at, image);
+  writeFileAtomically(at, fieldPng(renderer, sheet, vertexValues, legend));
 }
 
 // Replays a recording and writes frame_NNNNNN.png every N frames. The renderer is made first, so
