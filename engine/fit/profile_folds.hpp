@@ -17,12 +17,15 @@
 // radius, over the mean radius; or its samples binned by radius, a disk's). Caps across the axis
 // (samples whose normal lies within 18 degrees of it: a bottle's closed bottom, a level shoulder)
 // are left out of the spread by height while they are under a quarter of the samples: they hold
-// every radius at one height. Failing that, an oval cup's, bowl's or vase's axis: the same
-// spread with each sample's radius divided by the target's reach in its direction (the farthest
-// sample of 24 turns about the axis, over their mean), so cross-sections alike ovals count as
-// round (the nested rings follow an oblong target's reach each way). A target that is neither
-// (spread above the bound both ways: a saddle, a leaning cup) has none. Known limit: a flat patch
-// off the axis, normal to it, passes as a cap.
+// every radius at one height. A principal axis whose variance is within 1.25 of another's (a
+// squat lampshade or pot, about as tall as it is wide: its principal axes lie wherever the
+// samples swing them) is turned to the direction of least spread first (Subplex, 200 passes over
+// the samples, within about 45 degrees; the axis still through the centroid). Failing that, an oval
+// cup's, bowl's or vase's axis: the same spread with each sample's radius divided by the target's
+// reach in its direction (the farthest sample of 24 turns about the axis, over their mean), so
+// cross-sections alike ovals count as round (the nested rings follow an oblong target's reach each
+// way). A target that is neither (spread above the bound both ways: a saddle, a leaning cup) has
+// none. Known limit: a flat patch off the axis, normal to it, passes as a cap.
 //
 // ringProposals: rings drawn where the sheet's radius profile r(h) departs from the target's (both
 // binned along the axis, the bins weighted by the gap, and by the radius of the one alone where
