@@ -24,6 +24,8 @@ import os
 
 import numpy as np
 
+from make_meridian_vases import place, write  # +z turned onto an axis; an OBJ of polygons
+
 
 def natural_spline(x, y, at):
     """The natural cubic spline through (x, y), x increasing, evaluated at `at`."""
@@ -72,35 +74,13 @@ def twisted_grid(radius, height, rows, around, twist, wave, rng):
     return np.array(verts), quads
 
 
-def place(verts, axis, at):
-    """Turn +z onto `axis` (Rodrigues) and move the result to `at`."""
-    z = np.array([0.0, 0.0, 1.0])
-    n = np.asarray(axis, float) / np.linalg.norm(axis)
-    v, c = np.cross(z, n), float(z @ n)
-    if np.linalg.norm(v) < 1e-12:
-        turn = np.eye(3) if c > 0 else np.diag([1.0, -1.0, -1.0])
-    else:
-        k = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
-        turn = np.eye(3) + k + k @ k / (1 + c)
-    return verts @ turn.T + np.asarray(at, float)
-
-
-def write(path, comment, verts, faces):
-    with open(path, "w") as out:
-        out.write("# " + comment + "\n")
-        for v in verts:
-            out.write("v %.7g %.7g %.7g\n" % tuple(v))
-        for f in faces:
-            out.write("f " + " ".join(str(i + 1) for i in f) + "\n")
-
-
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("dir")
-    ap.add_argument("--seed", type=int, default=16)
-    a = ap.parse_args()
-    rng = np.random.default_rng(a.seed)
-    os.makedirs(a.dir, exist_ok=True)
+    ap = argparse.ArgumentParser(description="Vases with a spline profile and a neck (issue 38, 2).")
+    ap.add_argument("dir", help="where the OBJ files and targets.tsv go")
+    ap.add_argument("--seed", type=int, default=16, help="draws the control radii")
+    args = ap.parse_args()
+    os.makedirs(args.dir, exist_ok=True)
+    rng = np.random.default_rng(args.seed)
     # name, height, belly range, neck share range, lip share range, rows, around, twist, wave,
     # axis, place
     shapes = [
@@ -118,10 +98,10 @@ def main():
                                     wave, rng)
         what = (f"spline through radii {', '.join('%.3g' % r for r in rs)} at heights "
                 f"{', '.join('%.2f' % x for x in xs)} of {height:g}, twisted quads")
-        write(os.path.join(a.dir, name + ".obj"), f"{name}: {what} (bench/make_spline_vases.py)",
+        write(os.path.join(args.dir, name + ".obj"), f"{name}: {what} (bench/make_spline_vases.py)",
               place(verts, axis, at), quads)
         table.append((name, "cylinder", what, len(verts), len(quads)))
-    with open(os.path.join(a.dir, "targets.tsv"), "w") as out:
+    with open(os.path.join(args.dir, "targets.tsv"), "w") as out:
         for row in table:
             out.write("\t".join(str(c) for c in row) + "\n")
 
