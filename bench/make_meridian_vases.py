@@ -130,7 +130,7 @@ def write(path, comment, verts, faces):
         for v in verts:
             out.write("v %.7g %.7g %.7g\n" % tuple(v))
         for f in faces:
-            out.write("f %d %d %d\n" % tuple(i + 1 for i in f))
+            out.write("f " + " ".join(str(i + 1) for i in f) + "\n")  # any polygon
 
 
 def main():

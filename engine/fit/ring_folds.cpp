@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <numeric>
 #include <span>
 #include <utility>
 #include <vector>
@@ -446,11 +447,12 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
     measured.push_back(chain.current);
   }
 
-  // Best first by the measure; each closer by the search's distance too (or the fit would not
-  // keep it).
-  std::vector<std::size_t> order;
-  for (std::size_t c = 0; c < made.size(); ++c)
-    if (made[c].after < before) order.push_back(c);
+  // Best first by the measure. Not filtered by the search's distance: it counts a far neck at a
+  // tenth and every millimetre the rings' tilted cuts move a body already on the target in full,
+  // so it can rise while the measure halves (a closed bottle: 0.00149 -> 0.00151 against 0.0156
+  // -> 0.0083), and the chains were dropped; the step's score below is scaled by the measure.
+  std::vector<std::size_t> order(made.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return measured[a] < measured[b]; });
   // The beam ranks steps by `after`: the search's distance before, scaled by the measure's fall

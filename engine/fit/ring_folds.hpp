@@ -46,7 +46,9 @@
 // single folds that the exact measure rejected (the example vase: no fold kept in 3000
 // evaluations; with the chain from the cone, 1.59% -> 1.22% of the diagonal, Chamfer). Output: up
 // to `count` FoldSuggestions (all rings of one chain as one step), best first, each closer than the
-// sheet was by both measures. Known limits:
+// sheet was by the rings' measure (not also by the search's robust distance, which on a closed
+// bottle rose while the measure halved, and its rings were dropped), its `after` scaled by the
+// measure's fall. Known limits:
 // a ring's wedges stay apart only down to about cos(pi / n) of the radius, so a neck narrower than
 // about 0.65 of the tube is approached, not reached; the cut tube is a star of n lobes, not a
 // circle, its creases on the tube until a corner ring folds them; greedy: a first ring is never
