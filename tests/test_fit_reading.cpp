@@ -1126,6 +1126,16 @@ TEST(StartSurface, ANamedKindIsSizedAndAShapeWithoutATurnHasNoSymmetry) {
   EXPECT_TRUE(again.parameters.empty()) << again.parameters.size() << " " << again.chamfer;
 }
 
+// The start is the sheet the target was folded from: its parameters within 0.2%, as read.
+void expectStartsFrom(const StartChoice& start, const SurfaceParameters& made) {
+  EXPECT_TRUE(start.creased);
+  EXPECT_FALSE(start.placed);
+  for (const auto& [name, value] : made) {
+    ASSERT_TRUE(start.parameters.count(name)) << name;
+    EXPECT_NEAR(start.parameters.at(name), value, 2e-3 * value) << name;
+  }
+}
+
 // Issue 38's recipe (bench/make_outer_third_targets.sh): a fold that turns most of the half
 // cylinder about a corner leaves a crease of 1.7% of the diagonal, under the 3% a crease plane
 // needs, and one whose plane misses the disk moves it whole, leaving none. Both read as smooth,
@@ -1148,12 +1158,7 @@ TEST(StartSurface, ACreasedTargetOfAnotherAreaStartsFromTheSheetItUnfoldsTo) {
     ASSERT_TRUE(folding.commit());
   }
   const StartChoice start = chooseStart(meshOf(folding.fixed()), "cone");
-  EXPECT_TRUE(start.creased);
-  EXPECT_FALSE(start.placed);
-  for (const auto& [name, value] : made) {
-    ASSERT_TRUE(start.parameters.count(name)) << name;
-    EXPECT_NEAR(start.parameters.at(name), value, 2e-3 * value) << name;
-  }
+  expectStartsFrom(start, made);
 }
 
 // Folds `made` of `kind` once, its corner farthest along x dragged in and up, and moves the result
@@ -1185,12 +1190,7 @@ TEST(StartSurface, AKindOfOtherParametersMovedWholeStartsFromTheSheetItUnfoldsTo
   const SurfaceParameters made{{"radius", 0.075}, {"height", 0.23}};
   const StartChoice start = chooseStart(
       foldedAndMovedWhole("half_cylinder", made, 0.7, {0.05, -0.03, 0.08}), "half_cylinder");
-  EXPECT_TRUE(start.creased);
-  EXPECT_FALSE(start.placed);
-  for (const auto& [name, value] : made) {
-    ASSERT_TRUE(start.parameters.count(name)) << name;
-    EXPECT_NEAR(start.parameters.at(name), value, 2e-3 * value) << name;
-  }
+  expectStartsFrom(start, made);
 }
 
 // tangent-params-1-2-00-cylinder: a 210-degree tube of radius 0.031 (the defaults': 0.06, whole)
@@ -1201,12 +1201,7 @@ TEST(StartSurface, ATubeOfOtherFacetsStartsFromTheSheetItUnfoldsTo) {
   const SurfaceParameters made{{"radius", 0.031}, {"height", 0.25}, {"angle", 210.0}};
   const StartChoice start =
       chooseStart(foldedAndMovedWhole("cylinder", made, 0.0, glm::dvec3(0.0)), "cylinder");
-  EXPECT_TRUE(start.creased);
-  EXPECT_FALSE(start.placed);
-  for (const auto& [name, value] : made) {
-    ASSERT_TRUE(start.parameters.count(name)) << name;
-    EXPECT_NEAR(start.parameters.at(name), value, 2e-3 * value) << name;
-  }
+  expectStartsFrom(start, made);
 }
 
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {

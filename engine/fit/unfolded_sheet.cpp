@@ -176,12 +176,12 @@ std::vector<glm::dvec3> inFrame(const std::vector<glm::dvec3>& positions, const 
 // kind at some parameters, anywhere) put where the catalogue makes the kind, read from its shape
 // alone: a tube's axis (the normals' plane) on y, its middle height at 0 and its arc's middle on +z
 // (a slit tube's slit on -z); a flat sheet's plane on z = 0 about its centroid, turned so its
-// principal axis lies on x, or its farthest point on `farthest` (a corner or a tip of the sheet
-// at its defaults). Several ways where the shape leaves the turn open; none for other kinds.
+// principal axis lies on x, or its farthest point where the catalogue puts a corner, a disk's
+// first vertex or a star's first point. Several ways where the shape leaves the turn open; none for
+// other kinds.
 std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
                                                      const std::vector<glm::dvec3>& positions,
-                                                     const TriangleMesh& mesh,
-                                                     const glm::dvec3& farthest) {
+                                                     const TriangleMesh& mesh) {
   std::vector<std::vector<glm::dvec3>> out;
   if (kind == "cylinder" || kind == "half_cylinder") {
     const glm::dvec3 axis = momentsOf(positions, mesh, true).axes[0];
@@ -246,7 +246,11 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
     glm::dvec3 far(0.0);
     for (const glm::dvec3& p : flat)
       if (glm::length(glm::dvec3(p.x, p.y, 0.0)) > glm::length(far)) far = {p.x, p.y, 0.0};
-    const double turn = std::atan2(farthest.y, farthest.x) - std::atan2(far.y, far.x);
+    // Where the catalogue puts a corner, a polygon's first vertex, a star's first point.
+    const double toward = kind == "star"     ? 0.5 * std::numbers::pi
+                          : kind == "square" ? 0.25 * std::numbers::pi
+                                             : 0.0;
+    const double turn = toward - std::atan2(far.y, far.x);
     const double c = std::cos(turn), s = std::sin(turn);
     std::vector<glm::dvec3> turned;
     turned.reserve(flat.size());
@@ -288,6 +292,18 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   std::vector<glm::dvec3> chosen;
   SurfaceParameters start = base;
   double nearest = 1e300;
+  // Each way the unfolded target may lie, at the start's and at its shape's parameters.
+  auto consider = [&](const std::vector<glm::dvec3>& positions) {
+    const Unfolded candidate(TriangleMesh{positions, target.triangles});
+    for (const SurfaceParameters& tried : {base, guessFor(kind, positions, area, base)}) {
+      const double d = candidate.apart(kind, tried);
+      if (d < nearest) {
+        nearest = d;
+        start = tried;
+        chosen = positions;
+      }
+    }
+  };
   for (std::uint32_t bits = 0; bits < (1u << steps) && !deadline.passed(); ++bits) {
     std::vector<glm::dvec3> positions = unfolding.unfolded;
     // A step's reflection of the rest moves every earlier step's result: the last step read
@@ -295,33 +311,14 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
     for (std::size_t u = 0; u < steps; ++u)
       if (bits >> u & 1u)
         for (glm::dvec3& p : positions) p = unfolding.folds[u].plane.reflect(p);
-    const Unfolded candidate(TriangleMesh{positions, target.triangles});
-    for (const SurfaceParameters& tried : {base, guessFor(kind, positions, area, base)}) {
-      const double d = candidate.apart(kind, tried);
-      if (d < nearest) {
-        nearest = d;
-        start = tried;
-        chosen = positions;
-      }
-    }
+    consider(positions);
   }
   // Folds whose planes missed the sheet moved it whole: no choice of sides puts it back, but its
   // shape says where the catalogue made it.
-  glm::dvec3 farthest(0.0);
-  for (const glm::dvec3& p : defaults.positions)
-    if (glm::length(glm::dvec3(p.x, p.y, 0.0)) > glm::length(farthest)) farthest = {p.x, p.y, 0.0};
-  for (std::vector<glm::dvec3>& positions :
-       catalogueFrames(kind, unfolding.unfolded, target, farthest)) {
+  for (const std::vector<glm::dvec3>& positions :
+       catalogueFrames(kind, unfolding.unfolded, target)) {
     if (deadline.passed()) break;
-    const Unfolded candidate(TriangleMesh{positions, target.triangles});
-    for (const SurfaceParameters& tried : {base, guessFor(kind, positions, area, base)}) {
-      const double d = candidate.apart(kind, tried);
-      if (d < nearest) {
-        nearest = d;
-        start = tried;
-        chosen = positions;
-      }
-    }
+    consider(positions);
   }
   if (chosen.empty()) return std::nullopt;
   const Unfolded unfolded(TriangleMesh{chosen, target.triangles});
