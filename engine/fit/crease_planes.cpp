@@ -161,7 +161,29 @@ double largestDihedralDegrees(const TriangleMesh& mesh) {
 double sharpEdgeThreshold(const TriangleMesh& initialSheet) {
   // A flat sheet's faces do not bend at all: a shallow fold (a drag mostly off the sheet bends
   // it by a few degrees) is read there as well as a steep one.
-  return std::max(kMinimumSharpDegrees, 1.5 * largestDihedralDegrees(initialSheet) + 2.0);
+  return sharpEdgeThresholdFor(largestDihedralDegrees(initialSheet));
+}
+
+double facetBendDegrees(const TriangleMesh& target) {
+  std::vector<std::pair<double, double>> bends;  // degrees, length
+  double total = 0.0;
+  forEachInteriorEdge(
+      target, [&](std::uint32_t u, std::uint32_t v, const auto&, const auto&, double degrees) {
+        const double length = glm::distance(target.positions[u], target.positions[v]);
+        bends.emplace_back(degrees, length);
+        total += length;
+      });
+  std::sort(bends.begin(), bends.end());
+  double below = 0.0, facets = 0.0;
+  for (const auto& [degrees, length] : bends) {
+    facets = degrees;
+    if ((below += length) >= 0.9 * total) break;
+  }
+  return facets;
+}
+
+double sharpEdgeThresholdFor(double facetBendDegrees) {
+  return std::max(kMinimumSharpDegrees, 1.5 * facetBendDegrees + 2.0);
 }
 
 std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,

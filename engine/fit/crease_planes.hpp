@@ -52,4 +52,12 @@ double largestDihedralDegrees(const TriangleMesh& mesh);
 // facets bend, two degrees more, and at least 4 degrees (a flat sheet's shallow folds).
 double sharpEdgeThreshold(const TriangleMesh& initialSheet);
 
+// How much a folded target's facets bend when its sheet is not known (degrees): the most that nine
+// tenths of its edge length bends (a fold's creases are a small share of a gridded sheet's
+// edges); sharpEdgeThreshold's rule applied to it is the target's own threshold. Limits: where
+// creases are over a tenth of the edge length, or the sheet's facets bend unevenly (a swept
+// curve, a helix), it may fall below the facets' largest bend.
+double facetBendDegrees(const TriangleMesh& target);
+double sharpEdgeThresholdFor(double facetBendDegrees);
+
 }  // namespace curvefold

@@ -603,8 +603,8 @@ struct Unfolder {
 
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
                              double minDihedralDegrees, std::size_t maxFolds,
-                             const Deadline& deadline,
-                             const std::vector<Isometry>& symmetryImages) {
+                             const Deadline& deadline, const std::vector<Isometry>& symmetryImages,
+                             double sheetBendDegrees) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
   Unfolder unfolder{
@@ -614,7 +614,9 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
       1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
       std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
       minDihedralDegrees,
-      std::cos((largestDihedralDegrees(sheet) + kBendMarginDegrees) * std::numbers::pi / 180.0),
+      std::cos(((sheetBendDegrees < 0.0 ? largestDihedralDegrees(sheet) : sheetBendDegrees) +
+                kBendMarginDegrees) *
+               std::numbers::pi / 180.0),
       sheetSurface,
       maxFolds,
       deadline,

@@ -79,10 +79,13 @@ constexpr std::size_t kExhaustiveSides = 10;
 // image moved the whole sheet (a fold of most of a sheet with rotational:2 mirrors the rest of it
 // through the image plane, which then cuts nothing) is tried at each step, for up to kImageSteps
 // creases.
+// `sheetBendDegrees`: how much the sheet's facets bend (any bend beyond is crease), where not
+// `sheet`'s own (negative): a target folded from the kind at other parameters than `sheet`'s.
 TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& sheet,
                              double minDihedralDegrees, std::size_t maxFolds,
                              const Deadline& deadline = {},
-                             const std::vector<Isometry>& symmetryImages = {});
+                             const std::vector<Isometry>& symmetryImages = {},
+                             double sheetBendDegrees = -1.0);
 
 // Creases up to which one fold's whole-sheet image is looked for (2^n sides, times n images).
 constexpr std::size_t kImageSteps = 6;

@@ -14,10 +14,17 @@
 // hold the target's area, the unfolding leaves creases, the deadline passed, or no parameters lay
 // the sheet within 1e-3 of the diagonal (on average) of the unfolded one.
 //
-// Known limits: an unfolding that ends on the sheet moved whole (folds whose planes missed it),
-// or with the part that stayed smaller than a flap, lies off the catalogue's frame and is not
-// fitted; a kind whose parameters leave its area alone (a cylinder's radius at a fixed arc) is
-// told apart only by the unfolding.
+// An unfolding that ends on the sheet moved whole (folds whose planes missed it) is put back in
+// the catalogue's frame by its shape alone, for tubes (the normals' plane gives the axis, a circle
+// fitted across it the centre, the arc's middle or a whole tube's slit the turn) and flat sheets
+// (the plane and centroid of its area, turned by its principal axis or its farthest point). Where
+// the defaults' sharp-edge threshold reads nothing (a tube of another radius or arc bends its
+// facets more, or its crease less, than the defaults'), the reading runs again with the target's
+// own (facetBendDegrees, crease_planes.hpp).
+//
+// Known limits: a cone, a swept curve or a helix moved whole lies off the catalogue's frame and
+// is not fitted; a kind whose parameters leave its area alone (a cylinder's radius at a fixed arc)
+// is told apart only by the unfolding; the second reading doubles the cost where the first fails.
 #pragma once
 
 #include <optional>
