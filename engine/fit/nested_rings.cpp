@@ -38,9 +38,10 @@ constexpr std::array<int, 3> kSteepOrders{4, 5, 6};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
 // A placed disk's normal is read from the target's samples (placed_start.cpp) and the target's
 // axis from others (profile_folds.cpp); on a cup about as deep as wide the two estimates of one
-// principal axis differ by about a degree, and the disk then rose 3% of its radius across the
-// axis: no rings at all (a scattered cup 7.5 cm across and 7.7 high: 1 fold, Chamfer 9.7%). A
-// flat sheet whose own normal lies within this angle of the axis gets rings about that normal.
+// principal axis differ by 1-4 degrees (the axial spread near the others': 0.5-0.75 of the
+// largest), and the disk then rose 3-7% of its radius across the axis: no rings at all
+// (bench/make_cup16_targets.py's tulip_cup, 3.6 degrees apart: 1 fold, Chamfer 9.7%). A flat
+// sheet whose own normal lies within this angle of the axis gets rings about that normal.
 constexpr double kAxisSlack = 6.0 * std::numbers::pi / 180.0;
 constexpr double kPi = std::numbers::pi;
 // A step whose farthest point stands farther than this times the sheet's before it is not

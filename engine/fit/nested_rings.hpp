@@ -33,7 +33,7 @@
 // through itself, and taken back.
 //
 // Inputs: a session whose sheet lies flat across `axis` (height spread at most 2% of its radius,
-// or along its own normal within 3 degrees of the axis: liesFlatAcross; any other sheet gets none:
+// or along its own normal within 6 degrees of the axis: liesFlatAcross; any other sheet gets none:
 // a folded sheet is no longer a segment in the meridian plane) and the target's area-uniform
 // samples. Output: up to `count` FoldSuggestions (all rings of one fit as one step), best first,
 // each closer than the sheet was. Within the deadline: the candidates are made in batches, coarsest
@@ -121,8 +121,8 @@ bool outermostFirstHolds(const ProfileCreases& creases, double sheetRadius);
 
 // Whether `sheet` lies flat across `axis` (the nested rings' start, below): its height spread
 // along `axis.direction` at most 2% of its radius, or along its own normal where that normal lies
-// within 3 degrees of the axis (a disk placed on a cup as deep as wide, whose normal and axis are
-// two estimates of one principal axis from different samples, differ by about a degree).
+// within 6 degrees of the axis (a disk placed on a cup as deep as wide, whose normal and axis are
+// two estimates of one principal axis from different samples, differ by 1-4 degrees).
 bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis);
 
 // The axis the nested rings fold such a sheet about: through the sheet's centroid, along
