@@ -8,13 +8,15 @@ a random smooth function (a few sine terms of random phase). The mesh is not gri
 scattered by dart throwing (uneven density) in the disk of the meridian's length, each point at
 distance s from the centre and azimuth a placed at the meridian's (r(s), z(s)) turned by a, joined
 by a Delaunay triangulation of the disk (bench/make_saddle_delaunay.py's).
-  wavy_cup_mm.obj     millimetres: a bottom 50 mm across, an 8 mm heel, a wall of 74 degrees
-                      that wavers by up to 9 degrees, 62 mm deep; tilted 20 degrees, off the origin;
-  fillet_cup.obj      metres: a small cup 7-8 cm across whose heel is a quarter circle of 1.6 cm
-                      (almost no flat bottom), the wall 80 degrees wavering by 5, 5 cm deep;
+  wavy_cup_mm.obj     millimetres: a bottom 50 mm across, a 12 mm heel, a wall of 74 degrees
+                      that wavers by up to 9 degrees, about 60 mm deep; tilted 20 degrees, off
+                      the origin;
+  fillet_cup.obj      metres: a small cup 7 cm across, a bottom 2.4 cm across and a heel 2.5 cm
+                      long (of a 6.9 cm meridian), the wall 80 degrees wavering by 5, 4.6 cm deep;
   tulip_cup.obj       metres: a narrow bottom 3 cm across, a 1 cm heel, the wall steepening from
-                      60 to 82 degrees and flaring out to 68 at the lip, 6 cm deep, turned 65
-                      degrees about an oblique axis, points twice as dense on one side.
+                      60 to 82 degrees and flaring out to 68 at the lip, about 7.7 cm across and
+                      6 deep, turned 65 degrees about an oblique axis, points twice as dense on
+                      one side.
 Usage: bench/make_cup16_targets.py OUTDIR [--seed N] (deterministic for a seed).
 """
 import argparse
@@ -102,7 +104,7 @@ def main():
               "a cup in mm, a heel and a wall wavering about 74 degrees, scattered points",
               source, verts, tris)
 
-    # Metres: almost all heel (a quarter circle's arc 1.6 * pi / 2 cm), the wall about 80.
+    # Metres: a long heel (2.5 cm of a 6.9 cm meridian), the wall about 80.
     wall = wavering(lambda s: 80 * deg, 5 * deg, 2, rng, 0.05)
     table = meridian(0.012, 0.025, wall, 0.012 + 0.025 + 0.032)
     verts, tris = cup(table, lambda x, y: 0.0036, rng, 72)

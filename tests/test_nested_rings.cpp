@@ -263,8 +263,8 @@ TEST(NestedRings, ASteepCupIsFoldedByRingsOfFewPlanesNotAPinwheel) {
 // A disk placed a degree and a half off a steep cup's axis is still folded by rings, about its
 // own normal: on a cup about as deep as wide the placed disk's normal (placed_start.cpp) and the
 // target's axis (revolutionAxis) are two estimates of one principal axis from different samples,
-// about a degree apart, and the disk rose 3-5% of its radius across the axis, over the 2% a flat
-// sheet may, so the rings were never tried (bench/make_cup16_targets.py's tulip_cup and
+// 1-4 degrees apart, and the disk's height along the axis spanned 3.5-13% of its radius, over the
+// 2% a flat sheet may, so the rings were never tried (bench/make_cup16_targets.py's tulip_cup and
 // wavy_cup_mm: one fold, Chamfer 9.1-9.7%). Ten degrees off is no sheet across the axis.
 TEST(NestedRings, ADiskADegreeOffASteepCupsAxisIsStillFoldedByRings) {
   const TriangleMesh target =

@@ -39,9 +39,10 @@ constexpr double kFlatSheet = 0.02;  // height spread over radius below which a 
 // A placed disk's normal is read from the target's samples (placed_start.cpp) and the target's
 // axis from others (profile_folds.cpp); on a cup about as deep as wide the two estimates of one
 // principal axis differ by 1-4 degrees (the axial spread near the others': 0.5-0.75 of the
-// largest), and the disk then rose 3-7% of its radius across the axis: no rings at all
-// (bench/make_cup16_targets.py's tulip_cup, 3.6 degrees apart: 1 fold, Chamfer 9.7%). A flat
-// sheet whose own normal lies within this angle of the axis gets rings about that normal.
+// largest), and the disk's height along the axis then spanned twice the sine of the angle of its
+// radius, over the 2% of kFlatSheet: no rings at all (bench/make_cup16_targets.py's tulip_cup,
+// 3.7 degrees apart, 13%: 1 fold, Chamfer 9.7%). A flat sheet whose own normal lies within this
+// angle of the axis gets rings about that normal.
 constexpr double kAxisSlack = 6.0 * std::numbers::pi / 180.0;
 constexpr double kPi = std::numbers::pi;
 // A step whose farthest point stands farther than this times the sheet's before it is not
