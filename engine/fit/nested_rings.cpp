@@ -36,6 +36,14 @@ constexpr std::array<int, 3> kOrders{8, 12, 16};
 constexpr double kSteepWall = 60.0 * std::numbers::pi / 180.0;
 constexpr std::array<int, 3> kSteepOrders{4, 5, 6};
 constexpr double kFlatSheet = 0.02;  // height spread over radius below which a sheet is flat
+// A placed disk's normal is read from the target's samples (placed_start.cpp) and the target's
+// axis from others (profile_folds.cpp); on a cup about as deep as wide the two estimates of one
+// principal axis differ by 1-4 degrees (the axial spread near the others': 0.5-0.75 of the
+// largest), and the disk's height along the axis then spanned twice the sine of the angle of its
+// radius, over the 2% of kFlatSheet: no rings at all (bench/make_cup16_targets.py's tulip_cup,
+// 3.7 degrees apart, 13%: 1 fold, Chamfer 9.7%). A flat sheet whose own normal lies within this
+// angle of the axis gets rings about that normal.
+constexpr double kAxisSlack = 6.0 * std::numbers::pi / 180.0;
 constexpr double kPi = std::numbers::pi;
 // A step whose farthest point stands farther than this times the sheet's before it is not
 // offered: the fit keeps no step toward a smooth shape that does so (fold_fit.cpp's
@@ -419,14 +427,16 @@ std::size_t makeNestedRing(FoldSession& session, const RingShape& shape, const R
   return made;
 }
 
-// The sheet's centre and radius about `direction` when it lies flat across it.
+// The sheet's centre and radius about `direction` when it lies flat across it, and that direction
+// (the rings' axis).
 struct FlatSheet {
-  glm::dvec3 centre{0.0};
+  glm::dvec3 centre{0.0}, direction{0.0};
   double radius = 0.0;
 };
-std::optional<FlatSheet> flatSheetAcross(const Sheet& sheet, const glm::dvec3& direction) {
+std::optional<FlatSheet> flatAbout(const Sheet& sheet, const glm::dvec3& direction) {
   if (sheet.positions.empty()) return std::nullopt;
   FlatSheet flat;
+  flat.direction = direction;
   for (const glm::dvec3& p : sheet.positions) flat.centre += p;
   flat.centre /= static_cast<double>(sheet.positions.size());
   double lowest = 1e300, highest = -1e300;
@@ -438,6 +448,21 @@ std::optional<FlatSheet> flatSheetAcross(const Sheet& sheet, const glm::dvec3& d
   }
   if (!(flat.radius > 0.0) || highest - lowest > kFlatSheet * flat.radius) return std::nullopt;
   return flat;
+}
+
+// Flat across `direction`, or about its own normal where that lies within kAxisSlack of it (see
+// kAxisSlack); the rings then fold about the sheet's normal.
+std::optional<FlatSheet> flatSheetAcross(const Sheet& sheet, const glm::dvec3& direction) {
+  if (std::optional<FlatSheet> flat = flatAbout(sheet, direction)) return flat;
+  glm::dvec3 normal(0.0);  // area-weighted: a folded sheet's faces cancel, and it is not flat
+  for (const Triangle& t : sheet.triangles)
+    normal += glm::cross(sheet.positions[t[1]] - sheet.positions[t[0]],
+                         sheet.positions[t[2]] - sheet.positions[t[0]]);
+  if (!(glm::length(normal) > 0.0)) return std::nullopt;
+  normal = glm::normalize(normal);
+  if (glm::dot(normal, direction) < 0.0) normal = -normal;
+  if (glm::dot(normal, direction) < std::cos(kAxisSlack)) return std::nullopt;
+  return flatAbout(sheet, normal);
 }
 
 struct Candidate {
@@ -457,7 +482,13 @@ double steepest(const ProfileCreases& creases) {
 }  // namespace
 
 bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis) {
-  return flatSheetAcross(sheet, axis.direction).has_value();
+  return ringsAxis(sheet, axis).has_value();
+}
+
+std::optional<RevolutionAxis> ringsAxis(const Sheet& sheet, const RevolutionAxis& axis) {
+  const std::optional<FlatSheet> flat = flatSheetAcross(sheet, axis.direction);
+  if (!flat) return std::nullopt;
+  return RevolutionAxis{flat->centre, flat->direction, axis.spread};
 }
 
 std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const FoldFitter& fitter,
@@ -471,7 +502,8 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   const std::optional<FlatSheet> flat = flatSheetAcross(sheet, axis.direction);
   if (!flat) return {};
   const glm::dvec3 centre = flat->centre;
-  const RevolutionAxis local{centre, axis.direction, 0.0};
+  // The target's axis, or the sheet's normal within kAxisSlack of it.
+  const RevolutionAxis local{centre, flat->direction, 0.0};
   // A design with a rotation of its own (--symmetry) folds each ring as one fold and its images,
   // when that rotation is about this axis through the sheet's centre; any other symmetry, none.
   std::vector<int> orders(kOrders.begin(), kOrders.end());
@@ -491,19 +523,19 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
   // target's reach that way, and the model's radius the sheet's reach over the same, on average.
   const AzimuthReach reach = session.symmetricFolder()
                                  ? AzimuthReach{}
-                                 : azimuthReach(targetSamples, centre, axis.direction);
-  std::vector<glm::dvec2> profile = meridianProfile(targetSamples, centre, axis, kProfilePoints);
+                                 : azimuthReach(targetSamples, centre, local.direction);
+  std::vector<glm::dvec2> profile = meridianProfile(targetSamples, centre, local, kProfilePoints);
   double radius = flat->radius;
   if (!reach.scale.empty()) {
     const std::size_t stride = std::max<std::size_t>(1, targetSamples.size() / kProfilePoints);
     for (std::size_t i = 0, k = 0; i < targetSamples.size() && k < profile.size();
          i += stride, ++k) {
       glm::dvec3 radial = targetSamples[i].position - centre;
-      radial -= glm::dot(radial, axis.direction) * axis.direction;
+      radial -= glm::dot(radial, local.direction) * local.direction;
       profile[k].x /= reach.at(radial);
     }
     const std::vector<double> sheetReach =
-        reachByBin(reach, sheet.positions, centre, axis.direction);
+        reachByBin(reach, sheet.positions, centre, local.direction);
     double sum = 0.0;
     for (int b = 0; b < kReachBins; ++b)
       sum += sheetReach[static_cast<std::size_t>(b)] / reach.scale[static_cast<std::size_t>(b)];

@@ -32,29 +32,30 @@
 // own flap, beyond its crease), scored with FoldFitter::approximateDistance, checked for passing
 // through itself, and taken back.
 //
-// Inputs: a session whose sheet lies flat across `axis` (height spread at most 2% of its radius;
-// any other sheet gets none: a folded sheet is no longer a segment in the meridian plane) and the
-// target's area-uniform samples. Output: up to `count` FoldSuggestions (all rings of one fit as
-// one step), best first, each closer than the sheet was. Within the deadline: the candidates are
-// made in batches, coarsest first (the fit nearest the profile at its fewest planes, alone), and a
-// batch the time left would not hold is not started; when the clock cuts the step, the candidates
-// made whole are answered (a cancel answers nothing), so which are made then depends on the
-// machine. Known limits: where n flaps meet at the polygon's corners the sheet has more paper than
-// the bowl; a fold takes what lies beyond its plane and is connected to its seed, so the corners
-// fold with one flap and stand out (the Hausdorff distance shows them), and on a steep profile a
-// second ring's planes take the corner paper of the flaps beside their own and cross it: such a
-// ring is drawn again turned by half a polygon side (its planes at the corners) and kept where
-// that crosses nothing, else taken back and the rings before it kept. Of the steps within 5% of
-// the nearest by the search's score, only the one whose farthest point stands out least is
-// offered (the score cuts far distances). Fits with two creases or more are also made
-// outermost first, each ring on the flat sheet (nestedRingShapes' outerFirst), where
-// outermostFirstHolds: no ring meets corner paper an inner one left, so a lip turning back out is
-// made (a ring drawn so that crosses is taken back alone). The model is exact only along each
-// flap's centre line; the sheet's centre is taken to lie on the axis (the sheet's own centroid is
-// used as the axis point).
+// Inputs: a session whose sheet lies flat across `axis` (height spread at most 2% of its radius,
+// or along its own normal within 6 degrees of the axis: liesFlatAcross; any other sheet gets none:
+// a folded sheet is no longer a segment in the meridian plane) and the target's area-uniform
+// samples. Output: up to `count` FoldSuggestions (all rings of one fit as one step), best first,
+// each closer than the sheet was. Within the deadline: the candidates are made in batches, coarsest
+// first (the fit nearest the profile at its fewest planes, alone), and a batch the time left would
+// not hold is not started; when the clock cuts the step, the candidates made whole are answered (a
+// cancel answers nothing), so which are made then depends on the machine. Known limits: where n
+// flaps meet at the polygon's corners the sheet has more paper than the bowl; a fold takes what
+// lies beyond its plane and is connected to its seed, so the corners fold with one flap and stand
+// out (the Hausdorff distance shows them), and on a steep profile a second ring's planes take the
+// corner paper of the flaps beside their own and cross it: such a ring is drawn again turned by
+// half a polygon side (its planes at the corners) and kept where that crosses nothing, else taken
+// back and the rings before it kept. Of the steps within 5% of the nearest by the search's score,
+// only the one whose farthest point stands out least is offered (the score cuts far distances).
+// Fits with two creases or more are also made outermost first, each ring on the flat sheet
+// (nestedRingShapes' outerFirst), where outermostFirstHolds: no ring meets corner paper an inner
+// one left, so a lip turning back out is made (a ring drawn so that crosses is taken back alone).
+// The model is exact only along each flap's centre line; the sheet's centre is taken to lie on the
+// axis (the sheet's own centroid is used as the axis point).
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -118,8 +119,15 @@ std::vector<NestedRing> nestedRingShapes(const ProfileCreases& creases, int orde
 // half the turn inside it), where the fold would cut it.
 bool outermostFirstHolds(const ProfileCreases& creases, double sheetRadius);
 
-// Whether `sheet` lies flat across `axis` (the nested rings' start, below).
+// Whether `sheet` lies flat across `axis` (the nested rings' start, below): its height spread
+// along `axis.direction` at most 2% of its radius, or along its own normal where that normal lies
+// within 6 degrees of the axis (a disk placed on a cup as deep as wide, whose normal and axis are
+// two estimates of one principal axis from different samples, differ by 1-4 degrees).
 bool liesFlatAcross(const Sheet& sheet, const RevolutionAxis& axis);
+
+// The axis the nested rings fold such a sheet about: through the sheet's centroid, along
+// `axis.direction` or the sheet's own normal (as above); none where the sheet is not flat.
+std::optional<RevolutionAxis> ringsAxis(const Sheet& sheet, const RevolutionAxis& axis);
 
 // Up to `count` nested-ring steps for the design `session` holds, toward the fitter's target of
 // revolution about `axis` whose samples are `targetSamples` (see above), with 1 to `mostCreases`

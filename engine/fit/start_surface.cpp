@@ -67,17 +67,18 @@ constexpr std::size_t kRingsProfilePoints = 300;
 // same target gives the same choice.
 std::optional<double> ringsReach(const Sheet& disk, const std::vector<SurfaceSample>& samples,
                                  const RevolutionAxis& axis) {
-  if (!liesFlatAcross(disk, axis) || disk.positions.empty()) return std::nullopt;
-  glm::dvec3 centre(0.0);
-  for (const glm::dvec3& p : disk.positions) centre += p;
-  centre /= static_cast<double>(disk.positions.size());
+  // About the axis the rings would fold it about (the sheet's own normal where it lies within a
+  // few degrees of the target's axis: nested_rings.hpp).
+  const std::optional<RevolutionAxis> across = ringsAxis(disk, axis);
+  if (!across || disk.positions.empty()) return std::nullopt;
+  const glm::dvec3 centre = across->point, direction = across->direction;
   double radius = 0.0;
   for (const glm::dvec3& p : disk.positions) {
     const glm::dvec3 d = p - centre;
-    radius = std::max(radius, glm::length(d - glm::dot(d, axis.direction) * axis.direction));
+    radius = std::max(radius, glm::length(d - glm::dot(d, direction) * direction));
   }
   const std::vector<glm::dvec2> profile =
-      meridianProfile(samples, centre, axis, kRingsProfilePoints);
+      meridianProfile(samples, centre, *across, kRingsProfilePoints);
   std::mt19937_64 random(38);
   std::optional<ProfileCreases> fit;
   double best = 1e300;
