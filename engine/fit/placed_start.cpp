@@ -96,7 +96,7 @@ constexpr double kHeightField = 0.3;
 // The least spread's axis is kept where it lies within this angle's cosine of the mean normal.
 constexpr double kNormalAgrees = 0.866;  // 30 degrees
 
-Principal principalOf(const std::vector<SurfaceSample>& samples) {
+Principal principalOf(const std::vector<SurfaceSample>& samples, bool byMeanNormal = true) {
   Principal out;
   glm::dvec3 meanNormal(0.0);
   for (const SurfaceSample& s : samples) {
@@ -120,7 +120,7 @@ Principal principalOf(const std::vector<SurfaceSample>& samples) {
   // over an 18 cm square), so its least spread lies across the square and the sheet was laid on
   // edge; its mean normal still points up out of the square. There the mean normal is the
   // sheet's normal and the two larger axes are the spread's across it.
-  if (glm::length(meanNormal) > kHeightField &&
+  if (byMeanNormal && glm::length(meanNormal) > kHeightField &&
       std::abs(glm::dot(glm::normalize(meanNormal), out.axes[0])) < kNormalAgrees) {
     const glm::dvec3 n = glm::normalize(meanNormal);
     const Eigen::Vector3d e(n.x, n.y, n.z);
@@ -721,6 +721,17 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
   if (kind.empty() || kind == "swept_curve") sweptAbout(samples, principal, out);
   flatIn(samples, principal, targetArea, kind, out);
   footprintIn(samples, principal, kind, out);
+  return out;
+}
+
+std::vector<PlacedStart> leastSpreadStarts(const std::vector<SurfaceSample>& samples,
+                                           double targetArea, const std::string& kind) {
+  std::vector<PlacedStart> out;
+  if (samples.size() < 10) return out;
+  const Principal least = principalOf(samples, false);
+  if (std::abs(glm::dot(least.axes[0], principalOf(samples).axes[0])) >= kNormalAgrees) return out;
+  flatIn(samples, least, targetArea, kind, out);
+  footprintIn(samples, least, kind, out);
   return out;
 }
 
