@@ -293,6 +293,11 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
     candidates.insert(candidates.end(), std::make_move_iterator(footprint.begin() + disks),
                       std::make_move_iterator(footprint.end()));
   }
+  // A steep saddle's sheet across its mean normal, and as the least spread laid it (on edge).
+  if (kind.empty() || kind == "square" || kind == "rectangle")
+    for (PlacedStart& other : leastSpreadStarts(sampleSurface(fitter.target(), kSamples, 3),
+                                                surfaceArea(fitter.target()), kind))
+      candidates.push_back(std::move(other));
   std::optional<FirstStepStart> chosen =
       startByFirstStep(candidates, fitter, deadline, kind == "square");
   if (!chosen ||
