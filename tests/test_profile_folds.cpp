@@ -771,6 +771,8 @@ TEST(TimedBatches, ABatchTheTimeLeftWouldNotFinishIsNotStarted) {
 // answers the rings the chains made whole. The deadline is a quarter of what the whole step took
 // here (timed first, so it holds under the sanitizers and under load): the first batch (the fine
 // chain's solved rings) always runs, later batches the time left would not hold do not start.
+// A ring may be of 4 planes (the coarse chain, kAllOrders): under load in CI the cut answered
+// that chain's ring of 4 folds.
 TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
   const TriangleMesh bottle = revolved(
       [](double h) {
@@ -807,7 +809,7 @@ TEST(TubeRings, AStepTheClockCutsStillAnswersTheRingsMadeWhole) {
                        testing::counting(Deadline::in(0.25 * seconds), evaluations), again, 2);
   ASSERT_EQ(cut.size(), 1u) << "a step the clock cut answered nothing";
   EXPECT_LT(evaluations.load(), all.load());  // the clock cut it
-  EXPECT_GE(cut.front().folds.size(), 6u);    // a ring at least
+  EXPECT_GE(cut.front().folds.size(), 4u);    // a ring at least (the fewest planes: 4)
   EXPECT_LT(cut.front().after, cut.front().before);
   const SurfaceDistance before = surfaceDistance(meshOf(tube), bottle, 3000);
   const SurfaceDistance after = surfaceDistance(meshOf(cut.front().sheet), bottle, 3000);
