@@ -11,10 +11,10 @@ ring to ring by a merge on the azimuth, the centre a fan.
                          varying by 3 around the axis (three lobes), 55 mm deep; turned 25
                          degrees, off the origin;
   round_bottom_cup.obj   metres: no flat bottom, a round heel of 3 cm radius turning into a wall
-                         of 82 degrees, about 6.4 cm across and 5.5 deep; tilted 40 degrees about
+                         of 82 degrees, about 6.8 cm across and 5.5 deep; tilted 40 degrees about
                          an oblique axis;
   beaker_mm.obj          millimetres: a coarse mesh (about 700 triangles) with 0.2 mm of noise,
-                         a bottom 60 mm across, a 6 mm heel, the wall 84 degrees (78 to 86 around
+                         a bottom 60 mm across, a 6 mm heel, the wall 82 degrees (78 to 86 around
                          the axis, one lobe), 70 mm deep: deeper than its bottom is wide.
 Usage: bench/make_cup17_targets.py OUTDIR [--seed N] (deterministic for a seed).
 """
