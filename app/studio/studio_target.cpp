@@ -319,6 +319,12 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
   measuredCurrent_ = current;
 }
 
+bool StudioTarget::hasNews() const {
+  if (isReady(loading_) || isReady(measuring_) || isReady(measuringFound_)) return true;
+  // A search asked once its target is there waits for the load, not the worker.
+  return searching_ && !loading_.valid() && worker_ && !worker_->busy();
+}
+
 const TriangleMesh* StudioTarget::offeredResult(const InteractionCore& core) const {
   const SuggestedFold* offer = core.offeredFold();
   if (!offer) return nullptr;

@@ -95,6 +95,11 @@ class StudioTarget {
   // own). Also starts measuring the distance when the design changed.
   void poll(const session::Document& doc, InputFrame& frame);
 
+  // Whether the next poll has something to take in (a load, an answer or a measure is ready):
+  // a window that draws only when something changes looks here between frames. Cheap, never
+  // waits.
+  bool hasNews() const;
+
   // The part the suggestion the core offers moves, where it goes (sheet coordinates), for the
   // preview; null when unknown (a replay's suggestions come without their results).
   const TriangleMesh* offeredResult(const InteractionCore& core) const;
