@@ -37,6 +37,20 @@ constexpr int kWidth = 640, kHeight = 480;
 
 using DesktopWindow = DesktopTest;
 
+// The folds the designer has autosaved to `autosave` (0 before its first).
+std::size_t autosavedFolds(const fs::path& autosave) {
+  if (!fs::exists(autosave)) return 0;
+  return nlohmann::json::parse(slurp(autosave))["folds"].size();
+}
+
+// Sends `takeKey` (shell text for T) each second, for up to a minute, until a fold is autosaved:
+// T takes nothing until the suggestion asked before is there. False when a key was not sent.
+bool takeWhenOffered(const fs::path& autosave, const std::string& takeKey) {
+  for (int i = 0; i < 60 && autosavedFolds(autosave) == 0; ++i)
+    if (shell("sleep 1 && " + takeKey) != 0) return false;
+  return true;
+}
+
 TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
   const std::string display = startXvfb();
@@ -117,12 +131,7 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
       log);
   ASSERT_FALSE(window.empty()) << slurp(log);
   ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  // T takes nothing until the suggestion is there; the autosave says when a fold was made.
-  auto folds = [&] {
-    if (!fs::exists(autosave)) return std::size_t{0};
-    return nlohmann::json::parse(slurp(autosave))["folds"].size();
-  };
-  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
   shell(quit());
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(log), "");
@@ -192,11 +201,7 @@ TEST_F(DesktopWindow, ATargetAloneChoosesTheSheet) {
       "--size 640x480 --target " + target.string() + " --autosave " + autosave.string(), log);
   ASSERT_FALSE(window.empty()) << slurp(log);
   ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  auto folds = [&] {
-    if (!fs::exists(autosave)) return std::size_t{0};
-    return nlohmann::json::parse(slurp(autosave))["folds"].size();
-  };
-  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
   shell("sleep 1 && " + quit());
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(log), "");
@@ -223,15 +228,11 @@ TEST_F(DesktopWindow, TheWindowRestsWhileNothingChanges) {
   ASSERT_FALSE(window.empty()) << slurp(log);
   // Nothing for 4 s, then S, then T each second until the fold is made.
   ASSERT_EQ(shell("sleep 4 && " + key("s")), 0);
-  auto folds = [&] {
-    if (!fs::exists(autosave)) return std::size_t{0};
-    return nlohmann::json::parse(slurp(autosave))["folds"].size();
-  };
-  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
   shell(quit());
   ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
   EXPECT_EQ(slurp(log), "");
-  EXPECT_EQ(folds(), 1u);
+  EXPECT_EQ(autosavedFolds(autosave), 1u);
 
   // Each frame's start on the window's clock (the rests and the frames before it), and its note.
   struct Frame {
