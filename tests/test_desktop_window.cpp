@@ -35,21 +35,26 @@ using namespace curvefold::testing;
 
 constexpr int kWidth = 640, kHeight = 480;
 
-using DesktopWindow = DesktopTest;
-
 // The folds the designer has autosaved to `autosave` (0 before its first).
 std::size_t autosavedFolds(const fs::path& autosave) {
   if (!fs::exists(autosave)) return 0;
   return nlohmann::json::parse(slurp(autosave))["folds"].size();
 }
 
-// Sends `takeKey` (shell text for T) each second, for up to a minute, until a fold is autosaved:
-// T takes nothing until the suggestion asked before is there. False when a key was not sent.
-bool takeWhenOffered(const fs::path& autosave, const std::string& takeKey) {
-  for (int i = 0; i < 60 && autosavedFolds(autosave) == 0; ++i)
-    if (shell("sleep 1 && " + takeKey) != 0) return false;
-  return true;
-}
+class DesktopWindow : public DesktopTest {
+ protected:
+  // After `pause` seconds S, then T each second (for up to a minute) until a fold is autosaved (T
+  // takes nothing until the suggestion is there), then Ctrl+Q: the designer closes and says
+  // nothing. Fatal failures: call through ASSERT_NO_FATAL_FAILURE.
+  void suggestTakeAndQuit(double pause, const fs::path& autosave, const fs::path& log) {
+    ASSERT_EQ(shell("sleep " + std::to_string(pause) + " && " + key("s")), 0);
+    for (int i = 0; i < 60 && autosavedFolds(autosave) == 0; ++i)
+      ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+    shell("sleep 1 && " + quit());
+    ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+    EXPECT_EQ(slurp(log), "");
+  }
+};
 
 TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
@@ -130,11 +135,7 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
           " --autosave " + autosave.string() + " --frame-times " + times.string(),
       log);
   ASSERT_FALSE(window.empty()) << slurp(log);
-  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
-  shell(quit());
-  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
-  EXPECT_EQ(slurp(log), "");
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(1, autosave, log));
   const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
   ASSERT_EQ(saved["folds"].size(), 1u);
   const std::string frames = slurp(recording);
@@ -200,11 +201,7 @@ TEST_F(DesktopWindow, ATargetAloneChoosesTheSheet) {
   const std::string window = startDesigner(
       "--size 640x480 --target " + target.string() + " --autosave " + autosave.string(), log);
   ASSERT_FALSE(window.empty()) << slurp(log);
-  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
-  shell("sleep 1 && " + quit());
-  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
-  EXPECT_EQ(slurp(log), "");
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(1, autosave, log));
   const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
   EXPECT_NE(saved["surface"].dump().find("cylinder"), std::string::npos) << saved["surface"];
   EXPECT_EQ(saved["folds"].size(), 1u);
@@ -227,11 +224,7 @@ TEST_F(DesktopWindow, TheWindowRestsWhileNothingChanges) {
                     log);
   ASSERT_FALSE(window.empty()) << slurp(log);
   // Nothing for 4 s, then S, then T each second until the fold is made.
-  ASSERT_EQ(shell("sleep 4 && " + key("s")), 0);
-  ASSERT_TRUE(takeWhenOffered(autosave, key("t")));
-  shell(quit());
-  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
-  EXPECT_EQ(slurp(log), "");
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(4, autosave, log));
   EXPECT_EQ(autosavedFolds(autosave), 1u);
 
   // Each frame's start on the window's clock (the rests and the frames before it), and its note.
