@@ -24,6 +24,7 @@
 #include "app/session/document.hpp"
 #include "app/studio/studio_target.hpp"
 #include "engine/fit/deadline.hpp"
+#include "engine/surfaces/obj_surface.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold::studio {
@@ -173,6 +174,88 @@ BENCHMARK(BM_SuggestionCancel)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(5);
+
+// A suggestion as the studio makes it, apart from any window (issue 38, 3): the worker at the
+// window's nice, polled every 2 ms as frames would, from the ask to the frame that takes the offer
+// in; range(0) 1: the target loaded and the design's distance measured before, 2: the target
+// loaded before, the design's distance measured meanwhile (as after a load), 3: loaded from its
+// file (read, checked, sampled) with the suggestion asked while it loads, as `desktop_frames`
+// does; 0: the bare search on the same target (FoldFitter::suggest, what BM_SuggestFold times on
+// its own target). "cpu_ms": the process's CPU in that time, which a loaded machine does not
+// stretch (the search's, the load's and the measure's). "figures_ms" and "figures_cpu_ms": from
+// the ask until the offer's line has its figures (the design's Chamfer and the offered fold's,
+// measured off the frame after the offer).
+void BM_StudioSuggestion(benchmark::State& state) {
+  double cpu = 0.0, figures = 0.0, figuresCpu = 0.0;
+  for (auto _ : state) {
+    session::Document doc = session::makeDocument(Design{kCylinder, {}}, "cylinder");
+    StudioTarget goal{
+        false, SuggestionWorker::kDefaultTimeLimit, {}, SuggestionWorker::kYieldToFrames};
+    if (state.range(0) == 1 || state.range(0) == 2) goal.loadNow(targetFile().string(), doc);
+    if (state.range(0) == 1) {
+      InputFrame frame;
+      goal.poll(doc, frame);  // starts the measure
+      while (goal.distanceLine().rfind("measuring", 0) == 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        goal.poll(doc, frame);
+      }
+    }
+    std::shared_ptr<const FoldFitter> bare;
+    if (state.range(0) == 0) {
+      FitSettings settings;
+      settings.rings = 0;  // as the studio's fitter (StudioTarget::read)
+      bare = std::make_shared<const FoldFitter>(readObjMesh(targetFile().string()), settings);
+    }
+    const double cpuStart = processCpuSeconds();
+    const auto start = Clock::now();
+    bool offered = false;
+    if (bare) {
+      offered = !bare->suggest(*doc.session, StudioTarget::kSuggestionsPerRequest).empty();
+    } else {
+      if (state.range(0) == 3) goal.load(targetFile().string(), doc);
+      goal.suggest(doc);
+      InputFrame frame;
+      while (!offered && (goal.searching() || goal.loading())) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        frame = InputFrame{};
+        goal.poll(doc, frame);
+        offered = !frame.suggestions.empty();
+      }
+      if (offered) {
+        state.SetIterationTime(secondsSince(start));
+        cpu += processCpuSeconds() - cpuStart;
+        doc.core->process(frame);  // the core offers the first
+        const auto whole = [&] {
+          const std::string line = goal.suggestionLine(*doc.core);
+          return line.find("measuring") == std::string::npos &&
+                 line.find("...") == std::string::npos;
+        };
+        while (!whole()) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+          InputFrame next;
+          goal.poll(doc, next);
+        }
+        figures += secondsSince(start);
+        figuresCpu += processCpuSeconds() - cpuStart;
+        continue;
+      }
+    }
+    state.SetIterationTime(secondsSince(start));
+    cpu += processCpuSeconds() - cpuStart;
+    if (!offered) state.SkipWithError("no suggestion offered");
+  }
+  const double n = double(state.iterations());
+  state.counters["cpu_ms"] = 1000.0 * cpu / n;
+  if (figures > 0.0) {
+    state.counters["figures_ms"] = 1000.0 * figures / n;
+    state.counters["figures_cpu_ms"] = 1000.0 * figuresCpu / n;
+  }
+}
+BENCHMARK(BM_StudioSuggestion)
+    ->DenseRange(0, 3)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace curvefold::studio

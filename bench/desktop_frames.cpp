@@ -13,11 +13,18 @@
 // the panel, what lavapipe does on that thread); the duration adds lavapipe's rasteriser threads
 // and whatever else shares the cores (the search's threads, other processes).
 //
-//   build/bench/desktop_frames [ROUNDS] [--idle]   (default 4 rounds; needs Xvfb and xdotool;
-//   CURVEFOLD=path/to/curvefold measures another build)
+// The window draws only when something changes (app/desktop/redraw_pacer.hpp): a frame's
+// duration leaves out the rest before it (waited=), a latency counts it. On the frames that note
+// something the window also writes the process's CPU by thread group (cpu=, thread_cpu.hpp):
+// this prints, for each suggestion offered, the CPU each group spent between the asking frame
+// and the offer, and the frames drawn meanwhile, which do not depend on the machine's load.
+//
+//   build/bench/desktop_frames [ROUNDS] [--idle] [--full-rate]   (default 4 rounds; needs Xvfb
+//   and xdotool; CURVEFOLD=path/to/curvefold measures another build)
 //
 // --idle: the same rounds with neither a suggestion nor a load (the pointer only moves), to tell
-// what the machine's load does to the frames from what the studio does.
+// what the machine's load does to the frames from what the studio does. --full-rate: the window
+// draws every frame at once (CURVEFOLD_REDRAW=always), as it did before the pacer.
 #include <unistd.h>
 
 #include <algorithm>
@@ -98,8 +105,17 @@ glm::vec2 panelItem(const fs::path& design, const std::string& label) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 4;
-  const bool idle = argc > 2 && std::string(argv[2]) == "--idle";
+  int rounds = 4;
+  bool idle = false, fullRate = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--idle")
+      idle = true;
+    else if (arg == "--full-rate")
+      fullRate = true;
+    else
+      rounds = std::max(1, std::atoi(arg.c_str()));
+  }
   const fs::path dir = fs::temp_directory_path() / ("curvefold-frames-" + std::to_string(getpid()));
   fs::create_directories(dir);
   // CURVEFOLD names another build of curvefold to measure (a before and after on one machine).
@@ -129,10 +145,10 @@ int main(int argc, char** argv) {
   }
   const std::string env = "DISPLAY=" + display + " ";
   const fs::path times = dir / "frames.txt", log = dir / "designer.log";
-  shell(env + binary + " design " + design.string() + " --target " + target.string() + " --size " +
-        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --autosave " +
-        (dir / "auto.curvefold.json").string() + " --frame-times " + times.string() + " >" +
-        log.string() + " 2>&1 &");
+  shell(env + (fullRate ? "CURVEFOLD_REDRAW=always " : "") + binary + " design " + design.string() +
+        " --target " + target.string() + " --size " + std::to_string(kWidth) + "x" +
+        std::to_string(kHeight) + " --autosave " + (dir / "auto.curvefold.json").string() +
+        " --frame-times " + times.string() + " >" + log.string() + " 2>&1 &");
   const fs::path windowFile = dir / "window";
   shell(env + "timeout 60 xdotool search --sync --name '^curvefold$' | head -1 >" +
         windowFile.string());
@@ -164,10 +180,12 @@ int main(int argc, char** argv) {
   shell("kill " + slurp(xvfbPid) + " 2>/dev/null");
 
   // Each line: the frame's duration, the frame thread's CPU time (ms), the wall time of each step
-  // of the frame loop (phases=, in kPhases' order), and a note.
+  // of the frame loop (phases=, in kPhases' order), the rest before it (waited=), a note, and on a
+  // noted frame the process's CPU by thread group (cpu=).
   struct FrameTime {
-    double wallMs = 0.0, cpuMs = 0.0;
+    double wallMs = 0.0, cpuMs = 0.0, waitedMs = 0.0;
     std::string note, phases;
+    std::vector<double> groupCpu;  // frame, search, render, other, process (ms)
   };
   std::vector<FrameTime> all;
   {
@@ -176,22 +194,37 @@ int main(int argc, char** argv) {
       std::istringstream fields(line);
       FrameTime frame;
       if (fields >> frame.wallMs >> frame.cpuMs) {
-        for (std::string token; fields >> token;)
-          (token.rfind("phases=", 0) == 0 ? frame.phases : frame.note) = token;
+        for (std::string token; fields >> token;) {
+          if (token.rfind("phases=", 0) == 0) {
+            frame.phases = token;
+          } else if (token.rfind("waited=", 0) == 0) {
+            frame.waitedMs = std::atof(token.c_str() + 7);
+          } else if (token.rfind("cpu=", 0) == 0) {
+            for (std::size_t at = token.find(':'); at != std::string::npos;
+                 at = token.find(':', at + 1))
+              frame.groupCpu.push_back(std::atof(token.c_str() + at + 1));
+          } else {
+            frame.note = token;
+          }
+        }
         all.push_back(frame);
       }
     }
   }
   // The first second is the window's start.
   std::size_t first = 0;
-  for (double sum = 0.0; first < all.size() && sum < 1000.0; ++first) sum += all[first].wallMs;
+  for (double sum = 0.0; first < all.size() && sum < 1000.0; ++first)
+    sum += all[first].waitedMs + all[first].wallMs;
   const std::vector<FrameTime> frames(all.begin() + std::ptrdiff_t(first), all.end());
   if (frames.empty()) {
     std::cerr << "desktop_frames: no frames measured; the designer said: " << slurp(log) << "\n";
     return 1;
   }
-  std::printf("frames %zu (after the first second), rounds %d%s\n", frames.size(), rounds,
-              idle ? " (idle: no suggestion, no load)" : "");
+  double seconds = 0.0;
+  for (const FrameTime& frame : frames) seconds += (frame.waitedMs + frame.wallMs) * 1e-3;
+  std::printf("frames %zu in %.1f s (after the first second: %.1f a second), rounds %d%s%s\n",
+              frames.size(), seconds, double(frames.size()) / seconds, rounds,
+              idle ? " (idle: no suggestion, no load)" : "", fullRate ? " (full rate)" : "");
   const auto summary = [](const char* what, std::vector<double> ms) {
     std::sort(ms.begin(), ms.end());
     const auto quantile = [&](double q) {
@@ -208,23 +241,60 @@ int main(int argc, char** argv) {
   }
   summary("frame duration", wall);
   summary("frame thread CPU", cpu);
-  // Where each frame over 50 ms spent its time: the loop's steps (the designer's --frame-times).
-  std::printf(
-      "frames over 50 ms, each step's wall time (ms; events,panel,input,process,view,"
-      "scene,draw):\n");
+  // Where each frame over 50 ms spent its time: the loop's steps (the designer's --frame-times);
+  // on a loaded machine, the 20 longest.
+  std::vector<std::size_t> slow;
   for (std::size_t i = 0; i < frames.size(); ++i)
-    if (frames[i].wallMs > 50.0)
-      std::printf("  frame %zu: %.1f ms, thread CPU %.1f ms, %s %s\n", i, frames[i].wallMs,
-                  frames[i].cpuMs, frames[i].phases.c_str(), frames[i].note.c_str());
+    if (frames[i].wallMs > 50.0) slow.push_back(i);
+  std::stable_sort(slow.begin(), slow.end(), [&](std::size_t a, std::size_t b) {
+    return frames[a].wallMs > frames[b].wallMs;
+  });
+  slow.resize(std::min<std::size_t>(slow.size(), 20));
+  std::sort(slow.begin(), slow.end());
+  std::printf(
+      "frames over 50 ms (the 20 longest), each step's wall time (ms; events,panel,input,process,"
+      "view,scene,draw):\n");
+  for (const std::size_t i : slow)
+    std::printf("  frame %zu: %.1f ms, thread CPU %.1f ms, %s %s\n", i, frames[i].wallMs,
+                frames[i].cpuMs, frames[i].phases.c_str(), frames[i].note.c_str());
   // A suggestion's latency: the frames after the one that asked, up to the one it joined. A
-  // request followed by a newer one before its answer was abandoned (not counted).
+  // request followed by a newer one before its answer was abandoned (not counted). For each, the
+  // frames drawn meanwhile, when the target swapped in (a request asked while it loaded), and the
+  // CPU each thread group spent from the asking frame's end to the offering frame's.
   std::vector<double> latencies;
   std::optional<double> sinceAsked;
-  for (const FrameTime& frame : frames) {
-    if (sinceAsked) *sinceAsked += frame.wallMs;
-    if (frame.note == "suggest") sinceAsked = 0.0;
+  std::size_t asked = 0, framesSince = 0;
+  double loadedAt = -1.0;
+  std::printf(
+      "each suggestion offered: latency, frames drawn, target swapped in at; CPU ms from the ask "
+      "to the offer (frame thread, search thread, lavapipe's threads, the rest: TBB's workers, "
+      "loads, measures; the process)\n");
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const FrameTime& frame = frames[i];
+    if (sinceAsked) {
+      *sinceAsked += frame.waitedMs + frame.wallMs;
+      ++framesSince;
+    }
+    if (frame.note == "suggest") {
+      sinceAsked = 0.0;
+      asked = i;
+      framesSince = 0;
+      loadedAt = -1.0;
+    }
+    if (frame.note == "loaded" && sinceAsked) loadedAt = *sinceAsked;
     if (frame.note == "offered" && sinceAsked) {
       latencies.push_back(*sinceAsked);
+      std::printf("  %.0f ms, %zu frames", *sinceAsked, framesSince);
+      if (loadedAt >= 0.0) std::printf(", loaded at %.0f ms", loadedAt);
+      const std::vector<double>& a = frames[asked].groupCpu;
+      const std::vector<double>& b = frame.groupCpu;
+      if (a.size() == 5 && b.size() == 5) {
+        // The rest from the process's clock: it counts the threads that ended meanwhile.
+        const double rest = (b[4] - a[4]) - (b[0] - a[0]) - (b[1] - a[1]) - (b[2] - a[2]);
+        std::printf(": %.0f, %.0f, %.0f, %.0f; %.0f", b[0] - a[0], b[1] - a[1], b[2] - a[2], rest,
+                    b[4] - a[4]);
+      }
+      std::printf("\n");
       sinceAsked.reset();
     }
   }

@@ -1,10 +1,13 @@
 // The desktop source's mapping (app/desktop/desktop_input.hpp), without a window: rays and
 // projection agree, a press on the sheet grabs the point under the mouse, a drag moves it in the
 // screen-parallel plane, the wheel moves it in depth, and the frames fold through the core.
+#include <chrono>
+
 #include <gtest/gtest.h>
 
 #include "app/desktop/desktop_input.hpp"
 #include "app/desktop/interaction_scene.hpp"
+#include "app/desktop/redraw_pacer.hpp"
 #include "engine/render/color_map.hpp"
 #include "engine/render/scene_builder.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -266,6 +269,37 @@ TEST(HandModels, JointsBonesAndThePinchState) {
   EXPECT_LT(closing.markers[0].color.b, 0.2f);                        // yellow
   EXPECT_GT(pinched.markers[0].color.g, pinched.markers[0].color.r);  // green
   EXPECT_GT(pinched.markers[0].radius, apart.markers[0].radius);
+}
+
+// The window's pacing (issue 38, 3), on a clock of its own: a change is drawn at once and for the
+// settling frames after it, then the window rests, looking again within kStudioCheckSeconds, and
+// draws again after kSeldomRedrawSeconds; something moving is drawn every frame.
+TEST(RedrawPacer, DrawsAChangeThenRestsUntilTheNextOrTheSeldomRedraw) {
+  using Clock = RedrawPacer::Clock;
+  const Clock::time_point t0{};
+  const auto at = [&](double seconds) {
+    return t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  };
+  RedrawPacer pacer;
+  pacer.changed();
+  int drawn = 0;
+  for (double t = 0.0; pacer.due(at(t)) && drawn < 100; t += 0.001) {
+    pacer.drawn(false, at(t));
+    ++drawn;
+  }
+  EXPECT_EQ(drawn, RedrawPacer::kSettleFrames);
+  const double last = 0.001 * (drawn - 1);
+  EXPECT_FALSE(pacer.due(at(last + 0.1)));
+  EXPECT_LE(pacer.wait(at(last + 0.1)), RedrawPacer::kStudioCheckSeconds);
+  EXPECT_GT(pacer.wait(at(last + 0.1)), 0.0);
+  EXPECT_TRUE(pacer.due(at(last + RedrawPacer::kSeldomRedrawSeconds)));
+  pacer.drawn(true, at(1.0));  // moving: the next frame at once
+  EXPECT_TRUE(pacer.due(at(1.0)));
+  EXPECT_EQ(pacer.wait(at(1.0)), 0.0);
+  pacer.drawn(false, at(1.01));
+  EXPECT_FALSE(pacer.due(at(1.02)));
+  pacer.changed();
+  EXPECT_TRUE(pacer.due(at(1.02)));
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <imgui.h>
 
 #include "app/desktop/desktop_input.hpp"
+#include "app/desktop/redraw_pacer.hpp"
 #include "app/session/document.hpp"
 #include "app/studio/studio_panel.hpp"
 #include "desktop_test_support.hpp"
@@ -34,7 +35,26 @@ using namespace curvefold::testing;
 
 constexpr int kWidth = 640, kHeight = 480;
 
-using DesktopWindow = DesktopTest;
+// The folds the designer has autosaved to `autosave` (0 before its first).
+std::size_t autosavedFolds(const fs::path& autosave) {
+  if (!fs::exists(autosave)) return 0;
+  return nlohmann::json::parse(slurp(autosave))["folds"].size();
+}
+
+class DesktopWindow : public DesktopTest {
+ protected:
+  // After `pause` seconds S, then T each second (for up to a minute) until a fold is autosaved (T
+  // takes nothing until the suggestion is there), then Ctrl+Q: the designer closes and says
+  // nothing. Fatal failures: call through ASSERT_NO_FATAL_FAILURE.
+  void suggestTakeAndQuit(double pause, const fs::path& autosave, const fs::path& log) {
+    ASSERT_EQ(shell("sleep " + std::to_string(pause) + " && " + key("s")), 0);
+    for (int i = 0; i < 60 && autosavedFolds(autosave) == 0; ++i)
+      ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
+    shell("sleep 1 && " + quit());
+    ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
+    EXPECT_EQ(slurp(log), "");
+  }
+};
 
 TEST_F(DesktopWindow, DragOnAVertexCommitsOneFoldThatReplays) {
   CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
@@ -115,16 +135,7 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
           " --autosave " + autosave.string() + " --frame-times " + times.string(),
       log);
   ASSERT_FALSE(window.empty()) << slurp(log);
-  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  // T takes nothing until the suggestion is there; the autosave says when a fold was made.
-  auto folds = [&] {
-    if (!fs::exists(autosave)) return std::size_t{0};
-    return nlohmann::json::parse(slurp(autosave))["folds"].size();
-  };
-  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
-  shell(quit());
-  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
-  EXPECT_EQ(slurp(log), "");
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(1, autosave, log));
   const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
   ASSERT_EQ(saved["folds"].size(), 1u);
   const std::string frames = slurp(recording);
@@ -156,7 +167,18 @@ TEST_F(DesktopWindow, ASuggestionTakenFromTheKeyboardReplays) {
     // Within the frame (the steps run between two of its clock reads; printed to 0.01 ms).
     EXPECT_LE(sum, wallMs + 0.1) << line;
     EXPECT_GT(sum, 0.0) << line;
-    if (std::string note; fields >> note) notes.push_back(note);
+    // The rest before the frame (not in its duration), then the note, then on a noted frame the
+    // process's CPU by thread group.
+    std::string waited;
+    ASSERT_TRUE(fields >> waited && waited.rfind("waited=", 0) == 0) << line;
+    EXPECT_GE(std::stod(waited.substr(7)), 0.0) << line;
+    if (std::string note; fields >> note) {
+      notes.push_back(note);
+      std::string cpu;
+      ASSERT_TRUE(fields >> cpu && cpu.rfind("cpu=frame:", 0) == 0) << line;
+      EXPECT_NE(cpu.find(",search:"), std::string::npos) << line;
+      EXPECT_NE(cpu.find(",process:"), std::string::npos) << line;
+    }
   }
   EXPECT_GT(frameCount, 10u);
   EXPECT_EQ(notes, (std::vector<std::string>{"suggest", "offered"}));
@@ -179,18 +201,77 @@ TEST_F(DesktopWindow, ATargetAloneChoosesTheSheet) {
   const std::string window = startDesigner(
       "--size 640x480 --target " + target.string() + " --autosave " + autosave.string(), log);
   ASSERT_FALSE(window.empty()) << slurp(log);
-  ASSERT_EQ(shell("sleep 1 && " + key("s")), 0);
-  auto folds = [&] {
-    if (!fs::exists(autosave)) return std::size_t{0};
-    return nlohmann::json::parse(slurp(autosave))["folds"].size();
-  };
-  for (int i = 0; i < 60 && folds() == 0; ++i) ASSERT_EQ(shell("sleep 1 && " + key("t")), 0);
-  shell("sleep 1 && " + quit());
-  ASSERT_TRUE(waitForDesignerExit()) << "the designer did not close";
-  EXPECT_EQ(slurp(log), "");
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(1, autosave, log));
   const nlohmann::json saved = nlohmann::json::parse(slurp(autosave));
   EXPECT_NE(saved["surface"].dump().find("cylinder"), std::string::npos) << saved["surface"];
   EXPECT_EQ(saved["folds"].size(), 1u);
+}
+
+// Issue 38, 3: the window draws when something changes, not at full rate, so that a CPU renderer
+// (lavapipe) leaves the cores to the search. Counted in frames: while nothing happens the window
+// draws a few a second (RedrawPacer's seldom redraw), where at full rate it drew tens to hundreds;
+// a suggestion asked then is still offered and taken, though no event comes while it is searched.
+TEST_F(DesktopWindow, TheWindowRestsWhileNothingChanges) {
+  CURVEFOLD_REQUIRE_PROGRAMS("Xvfb", "xdotool");
+  ASSERT_FALSE(startXvfb().empty()) << "Xvfb did not start";
+  const fs::path target =
+      fs::path(CURVEFOLD_SOURCE_DIR) / "examples" / "targets" / "tube_tucked.obj";
+  const fs::path autosave = dir() / "auto.curvefold.json", log = dir() / "designer.log",
+                 times = dir() / "frames.txt";
+  const std::string window =
+      startDesigner("cylinder --size 640x480 --target " + target.string() + " --autosave " +
+                        autosave.string() + " --frame-times " + times.string(),
+                    log);
+  ASSERT_FALSE(window.empty()) << slurp(log);
+  // Nothing for 4 s, then S, then T each second until the fold is made.
+  ASSERT_NO_FATAL_FAILURE(suggestTakeAndQuit(4, autosave, log));
+  EXPECT_EQ(autosavedFolds(autosave), 1u);
+
+  // Each frame's start on the window's clock (the rests and the frames before it), and its note.
+  struct Frame {
+    double startS = 0.0, waitedMs = 0.0;
+    std::string note;
+  };
+  std::vector<Frame> frames;
+  std::istringstream lines(slurp(times));
+  double clock = 0.0;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream fields(line);
+    double wallMs = 0.0, cpuMs = 0.0;
+    Frame frame;
+    ASSERT_TRUE(fields >> wallMs >> cpuMs) << line;
+    for (std::string token; fields >> token;) {
+      if (token.rfind("waited=", 0) == 0)
+        frame.waitedMs = std::stod(token.substr(7));
+      else if (token.rfind("phases=", 0) != 0 && token.rfind("cpu=", 0) != 0)
+        frame.note = token;
+    }
+    clock += frame.waitedMs * 1e-3;
+    frame.startS = clock;
+    clock += wallMs * 1e-3;
+    frames.push_back(frame);
+  }
+  const auto asked = std::find_if(frames.begin(), frames.end(),
+                                  [](const Frame& f) { return f.note == "suggest"; });
+  ASSERT_NE(asked, frames.end());
+  EXPECT_NE(std::find_if(asked, frames.end(), [](const Frame& f) { return f.note == "offered"; }),
+            frames.end());
+  // The quiet span: from the window's first second (its start, the first distance measured) to
+  // the frame before S.
+  const double from = 1.0, to = asked->startS - 0.1;
+  ASSERT_GT(to - from, 1.5) << "the window took too long to start";
+  std::size_t quiet = 0, rested = 0;
+  for (auto f = frames.begin(); f != asked; ++f)
+    if (f->startS >= from && f->startS < to) {
+      ++quiet;
+      rested += f->waitedMs >= 100.0;
+    }
+  // At most the seldom redraw's, a few settling frames after a news (the distance measured) and
+  // the span's ends.
+  const double bound = (to - from) / desktop::RedrawPacer::kSeldomRedrawSeconds +
+                       3.0 * desktop::RedrawPacer::kSettleFrames;
+  EXPECT_LE(double(quiet), bound) << "frames drawn in " << to - from << " s with nothing happening";
+  EXPECT_GE(rested, quiet / 2) << "of " << quiet << " frames, few came after a rest";
 }
 
 // Resizing the window: the swapchain follows it (the exit screenshot has the new size and shows

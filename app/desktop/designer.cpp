@@ -27,6 +27,8 @@
 #include "app/desktop/desktop_input.hpp"
 #include "app/desktop/gpu_live_solver.hpp"
 #include "app/desktop/interaction_scene.hpp"
+#include "app/desktop/redraw_pacer.hpp"
+#include "app/desktop/thread_cpu.hpp"
 #include "app/session/document.hpp"
 #include "app/session/recent_designs.hpp"
 #include "app/session/session_outputs.hpp"
@@ -167,14 +169,21 @@ struct InputState {
   glm::dvec2 mouse{0.0};
   bool orbiting = false, panning = false, quit = false;
   bool suggest = false;  // S: the panel's Suggest
+  bool events = false;   // an event came since the last look (RedrawPacer::changed)
   double pendingWheel = 0.0;
 };
+
+// An event the window answers with frames (RedrawPacer).
+void wake(GLFWwindow* window) {
+  static_cast<InputState*>(glfwGetWindowUserPointer(window))->events = true;
+}
 
 // The mouse, wheel and keys into state; installed before ImGui's, so ImGui chains to them.
 void installInputCallbacks(GLFWwindow* window, InputState& state) {
   glfwSetWindowUserPointer(window, &state);
   glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
     auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
+    s.events = true;
     if (action == GLFW_PRESS && ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse)
       return;
     int x = 0, y = 0;
@@ -193,6 +202,7 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
   });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
     auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
+    s.events = true;
     const glm::dvec2 delta = glm::dvec2(x, y) - s.mouse;
     s.mouse = {x, y};
     int width = 0, height = 0;
@@ -202,6 +212,7 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
   });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
     auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
+    s.events = true;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse) return;
     if (s.input.dragging())
       s.input.wheel(-dy);  // wheel towards the user brings the point nearer
@@ -210,6 +221,7 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
   });
   glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
     auto& s = *static_cast<InputState*>(glfwGetWindowUserPointer(w));
+    s.events = true;
     if (action != GLFW_PRESS) return;
     if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
     const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
@@ -222,6 +234,12 @@ void installInputCallbacks(GLFWwindow* window, InputState& state) {
     if (!ctrl && key == GLFW_KEY_T) s.input.pulse(Button::TakeSuggestion);
     if (!ctrl && key == GLFW_KEY_N) s.input.pulse(Button::NextSuggestion);
   });
+  // The rest only wake the window (ImGui chains to the ones it uses).
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned) { wake(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { wake(w); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { wake(w); });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { wake(w); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { wake(w); });
 }
 
 // One frame for --frame-times: its duration, the frame thread's CPU time in it (what the frame's
@@ -231,6 +249,10 @@ struct FrameTime {
   float wallMs = 0.0f;
   float cpuMs = 0.0f;
   const char* note = "";
+  // The window's rest before the frame, waiting for a change (RedrawPacer): not in wallMs.
+  float waitedMs = 0.0f;
+  // On a frame with a note: the process's CPU by thread group at its end (threadGroupCpuToken).
+  std::string cpu;
   // Wall time of each step of the frame loop (DesignerWindow::run), to tell which one a slow
   // frame waited in.
   std::array<float, 7> phaseMs{};
@@ -246,11 +268,13 @@ void writeFrameTimes(const std::string& path, const std::vector<FrameTime>& fram
   std::string text;
   char line[160];
   for (const FrameTime& frame : frameTimes) {
-    std::snprintf(line, sizeof line, "%.3f %.3f phases=%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f%s%s\n",
+    std::snprintf(line, sizeof line,
+                  "%.3f %.3f phases=%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f waited=%.2f%s%s",
                   frame.wallMs, frame.cpuMs, frame.phaseMs[0], frame.phaseMs[1], frame.phaseMs[2],
                   frame.phaseMs[3], frame.phaseMs[4], frame.phaseMs[5], frame.phaseMs[6],
-                  *frame.note ? " " : "", frame.note);
+                  frame.waitedMs, *frame.note ? " " : "", frame.note);
     text += line;
+    text += frame.cpu.empty() ? "\n" : " " + frame.cpu + "\n";
   }
   writeFileAtomically(path, text);
 }
@@ -293,6 +317,8 @@ class DesignerWindow {
   // sceneMade: called between making the scene and drawing it (--frame-times' phases).
   void drawScene(const InputFrame& input, const std::function<void()>& sceneMade);
   void timeFrame();
+  // Waits, drawing nothing, until the pacer says the next frame is due.
+  void waitForChange();
 
   const DesignerOptions& options_;
   const unsigned width_, height_;
@@ -322,6 +348,8 @@ class DesignerWindow {
   const void* viewedSession_ = nullptr;
   bool sheetShown_ = true;
   const TriangleMesh* framedTarget_ = nullptr;
+  RedrawPacer pacer_;      // when the next frame is drawn
+  float waitedMs_ = 0.0f;  // the rest before this frame (FrameTime::waitedMs)
   std::vector<FrameTime> frameTimes_;
   std::array<float, 7> phaseMs_{};  // this frame's steps (FrameTime::phaseMs)
   double lastFrameCpuMs_ = 0.0;
@@ -451,6 +479,8 @@ void DesignerWindow::run() {
   lastFrame_ = Clock::now();
   lastFrameCpuMs_ = threadCpuMs();
   while (!glfwWindowShouldClose(window_) && !state_.quit) {
+    waitForChange();
+    if (glfwWindowShouldClose(window_) || state_.quit) break;
     Clock::time_point phaseStart = Clock::now();
     std::size_t phase = 0;
     const auto endPhase = [&] {
@@ -477,8 +507,33 @@ void DesignerWindow::run() {
     drawScene(input, endPhase);
     endPhase();
     timeFrame();
+    // Something that moves by itself is drawn again at once: a drag (the sheet is drawn a frame
+    // behind it), the live simulation, the camera under a held button, a text field's cursor.
+    pacer_.drawn(doc_.session->dragging() || doc_.core->simulation() != nullptr ||
+                     state_.orbiting || state_.panning || ImGui::GetIO().WantTextInput,
+                 Clock::now());
   }
   frames_.waitAll();
+}
+
+void DesignerWindow::waitForChange() {
+  const Clock::time_point waitStart = Clock::now();
+  // CURVEFOLD_REDRAW=always: every frame drawn at once, as before the pacer (to measure both).
+  static const bool always =
+      std::getenv("CURVEFOLD_REDRAW") && std::string(std::getenv("CURVEFOLD_REDRAW")) == "always";
+  while (!always) {
+    if (state_.events) pacer_.changed();
+    state_.events = false;
+    if (goal_.hasNews()) pacer_.changed();
+    const double wait = pacer_.wait(Clock::now());
+    if (wait <= 0.0 || glfwWindowShouldClose(window_) || state_.quit) break;
+    glfwWaitEventsTimeout(wait);
+  }
+  // The frame's duration starts here: the wait is the window's rest, not its work.
+  const Clock::time_point now = Clock::now();
+  waitedMs_ = float(std::chrono::duration<double, std::milli>(now - waitStart).count());
+  lastFrame_ += now - waitStart;
+  lastFrameCpuMs_ = threadCpuMs();
 }
 
 studio::StudioActions DesignerWindow::panelActions() {
@@ -580,6 +635,7 @@ void DesignerWindow::followView() {
     // A target swapped in (loaded off the frame): framed with the sheet.
     framedTarget_ = goal_.mesh();
     frameView();
+    if (!*frameNote_) frameNote_ = "loaded";
   } else if (viewedSession_ == doc_.session.get() &&
              viewedRevision_ != doc_.session->fixedRevision()) {
     followSheet(state_.camera, sheetShown_,
@@ -613,10 +669,12 @@ void DesignerWindow::timeFrame() {
   stats_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
   lastFrame_ = now;
   const double cpuMs = threadCpuMs();
-  if (!options_.frameTimes.empty())
-    frameTimes_.push_back(
-        {float(stats_.frameMs), float(cpuMs - lastFrameCpuMs_), frameNote_, phaseMs_});
-  lastFrameCpuMs_ = cpuMs;
+  if (!options_.frameTimes.empty()) {
+    frameTimes_.push_back({float(stats_.frameMs), float(cpuMs - lastFrameCpuMs_), frameNote_,
+                           waitedMs_, *frameNote_ ? threadGroupCpuToken(threadGroupCpu()) : "",
+                           phaseMs_});
+  }
+  lastFrameCpuMs_ = threadCpuMs();  // the reading above is not the next frame's work
   frameNote_ = "";
 }
 

@@ -4,6 +4,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -37,12 +38,14 @@ TriangleMesh movedPart(const Sheet& before, const Sheet& folded) {
   return part;
 }
 
-// A measure's own thread (std::async starts one per task) at the search's nice: beside a frame
-// loop it takes the cores after the frame and the renderer, as the search does, and it no longer
+// A measure's own thread (std::async starts one per task) below the search's nice: beside a frame
+// loop it takes the cores after the frame and the renderer, and after the search, so it neither
 // runs ahead of an abandoned search that has to reach its next check (a measure of 10k triangles
-// at nice 0 took the core from the niced search for 100-200 ms of CPU after each design change).
-void measureAtNice(int nice) {
-  if (nice <= 0) return;
+// at nice 0 took the core from the niced search for 100-200 ms of CPU after each design change)
+// nor slows a new one (about a tenth of its CPU, measured beside it after a load).
+void measureAtNice(int searchNice) {
+  if (searchNice <= 0) return;
+  const int nice = std::min(19, searchNice + StudioTarget::kMeasureBelowSearch);
   const auto thread = id_t(syscall(SYS_gettid));
   errno = 0;
   const int now = getpriority(PRIO_PROCESS, thread);
@@ -317,6 +320,12 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
         });
   }
   measuredCurrent_ = current;
+}
+
+bool StudioTarget::hasNews() const {
+  if (isReady(loading_) || isReady(measuring_) || isReady(measuringFound_)) return true;
+  // A search asked once its target is there waits for the load, not the worker.
+  return searching_ && !loading_.valid() && worker_ && !worker_->busy();
 }
 
 const TriangleMesh* StudioTarget::offeredResult(const InteractionCore& core) const {

@@ -53,6 +53,10 @@ class StudioTarget {
   // The samples the panel's distance is measured on (a tenth of a second at 10k triangles, off
   // the frame); `curvefold distance` takes more and is the one to quote.
   static constexpr std::size_t kDistanceSamples = 5'000;
+  // With a search below the frame (searchNice > 0), the distance line's measures run this much
+  // further below, so that a measure started with a search (a target loaded and Suggest asked at
+  // once) takes the cores after it: the suggestion reaches the designer first (issue 38, 3).
+  static constexpr int kMeasureBelowSearch = 5;
 
   // Reads a target file (readObjMesh; a test slows it down).
   using MeshReader = std::function<TriangleMesh(const std::string& path)>;
@@ -61,7 +65,8 @@ class StudioTarget {
   // a load is made at once (a replay runs as fast as it can, and the same way every time).
   // suggestionSeconds: how long a search may take before it answers with what it has.
   // searchNice: the nice its threads run at (a window's or headset's frames ask
-  // SuggestionWorker::kYieldToFrames, so that the frame and a CPU renderer get the cores first).
+  // SuggestionWorker::kYieldToFrames, so that the frame and a CPU renderer get the cores first);
+  // the measures run kMeasureBelowSearch below it.
   explicit StudioTarget(bool replaying = false,
                         double suggestionSeconds = SuggestionWorker::kDefaultTimeLimit,
                         MeshReader reader = {}, int searchNice = 0);
@@ -94,6 +99,11 @@ class StudioTarget {
   // the design as it still is puts its folds into frame.suggestions (a replay's frame brings its
   // own). Also starts measuring the distance when the design changed.
   void poll(const session::Document& doc, InputFrame& frame);
+
+  // Whether the next poll has something to take in (a load, an answer or a measure is ready):
+  // a window that draws only when something changes looks here between frames. Cheap, never
+  // waits.
+  bool hasNews() const;
 
   // The part the suggestion the core offers moves, where it goes (sheet coordinates), for the
   // preview; null when unknown (a replay's suggestions come without their results).

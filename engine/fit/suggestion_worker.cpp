@@ -1,5 +1,6 @@
 #include "engine/fit/suggestion_worker.hpp"
 
+#include <pthread.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -155,6 +156,8 @@ bool SuggestionWorker::replay(FoldSession& session, const std::vector<FoldRecord
 }
 
 void SuggestionWorker::run() {
+  // Named, so a profile or the window's --frame-times can tell the search's CPU from the rest.
+  pthread_setname_np(pthread_self(), "cf-search");
   // This thread only searches: it stays at nice_, and the TBB workers in its arena go to it.
   if (threadNice() < nice_) setThreadNice(nice_);
   tbb::task_arena& arena = searchArena(nice_);
