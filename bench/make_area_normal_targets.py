@@ -35,13 +35,8 @@ import sys
 import curvefold as cf
 import numpy as np
 
-
-def sphere_point(rng):
-    while True:
-        p = [rng.uniform(-1.0, 1.0) for _ in range(3)]
-        n = math.sqrt(sum(c * c for c in p))
-        if 1e-3 < n <= 1.0:
-            return [c / n for c in p]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from target_folds import strip_vt  # noqa: E402
 
 
 def draw_fold(rng, design):
@@ -69,23 +64,17 @@ def draw_fold(rng, design):
     pick = rng.choices(range(len(t)), weights=areas.tolist())[0]
     grab = v[t[pick]].mean(axis=0)
     n = normals[pick] / (np.linalg.norm(normals[pick]) or 1.0)
-    u = np.array(sphere_point(rng))
+    # A uniform direction by rejection in the cube (not target_folds.unit_vector's Gaussian: the
+    # sets measured were drawn so).
+    while True:
+        u = np.array([rng.uniform(-1.0, 1.0) for _ in range(3)])
+        if 1e-3 < np.linalg.norm(u) <= 1.0:
+            u /= np.linalg.norm(u)
+            break
     d = rng.choice([-1.0, 1.0]) * n + 0.9 * u
     d /= np.linalg.norm(d) or 1.0
     share = math.exp(rng.uniform(math.log(0.02), math.log(0.60)))
     return grab.tolist(), (grab + share * diag * d).tolist(), region, share
-
-
-def strip_vt(path):
-    out = []
-    for line in open(path):
-        if line.startswith("vt "):
-            continue
-        if line.startswith("f "):
-            line = "f " + " ".join(w.split("/")[0] for w in line.split()[1:]) + "\n"
-        out.append(line)
-    with open(path, "w") as f:
-        f.writelines(out)
 
 
 def make_target(rng, surface, folds, symmetry, defaults):
@@ -144,8 +133,8 @@ def main():
                     print(name, "no fold passed check; skipped", file=sys.stderr, flush=True)
                     continue
                 target = os.path.join(args.out, name + ".obj")
-                design.export(obj=target)
-                strip_vt(target)
+                design.export(obj=target + ".full.obj")
+                strip_vt(target + ".full.obj", target)
                 design.save(os.path.join(args.out, "designs", name + ".curvefold.json"))
                 entry = {"name": name, "recipe": "area-normal", "bucket": bucket, "surface": surface,
                          "parameters": params, "symmetry": symmetry, "folds": folds, "steps": steps}
