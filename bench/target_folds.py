@@ -4,7 +4,8 @@ kept only when it moved the sheet and `check` passes whole, the target written a
 fold-count buckets and each case's own random stream, and the small geometry they choose folds
 with (the bounding diagonal, the rim, a uniform direction). How each generator chooses its folds
 stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
-binary, not the module: they use what does not fold (read_obj, strip_vt and the rest).
+binary, not the module: they use what does not fold (read_obj, strip_vt and the rest), as
+make_area_normal_targets.py uses strip_vt.
 distance_truth.py reads OBJ files with read_obj."""
 import argparse
 import json
