@@ -66,24 +66,20 @@ def coarse_mesh(rows, around):
 
 
 def subdivide(par, tris):
-    """Every triangle into four by its edges' midpoints in the (angle, height) domain."""
-    par = list(par)
-    mid = {}
-
-    def middle(a, b):
-        key = (min(a, b), max(a, b))
-        if key not in mid:
-            (ua, va), (ub, vb) = par[a], par[b]
-            du = (ub - ua + np.pi) % (2 * np.pi) - np.pi  # across the seam the short way
-            par.append(((ua + 0.5 * du) % (2 * np.pi), 0.5 * (va + vb)))
-            mid[key] = len(par) - 1
-        return mid[key]
-
-    out = []
-    for a, b, c in tris:
-        ab, bc, ca = middle(a, b), middle(b, c), middle(c, a)
-        out += [(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)]
-    return par, out
+    """Every triangle into four by its edges' midpoints in the (angle, height) domain (numpy:
+    each edge's midpoint made once, by the edge's sorted ends)."""
+    par, tris = np.asarray(par, float), np.asarray(tris, int)
+    ends = np.sort(tris[:, [[0, 1], [1, 2], [2, 0]]], axis=2).reshape(-1, 2)
+    edges, which = np.unique(ends, axis=0, return_inverse=True)
+    u0, u1 = par[edges[:, 0], 0], par[edges[:, 1], 0]
+    du = (u1 - u0 + np.pi) % (2 * np.pi) - np.pi  # across the seam the short way
+    middles = np.column_stack([(u0 + 0.5 * du) % (2 * np.pi),
+                               0.5 * (par[edges[:, 0], 1] + par[edges[:, 1], 1])])
+    m = len(par) + which.reshape(-1, 3)  # the midpoints of edges ab, bc, ca of each triangle
+    a, b, c = tris.T
+    ab, bc, ca = m.T
+    four = np.stack([np.column_stack(t) for t in ((a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca))])
+    return np.vstack([par, middles]), four.reshape(-1, 3)
 
 
 def frame(direction):
@@ -99,7 +95,6 @@ def vase(shape, levels=3):
     par, tris = coarse_mesh(shape["rows"], shape["around"])
     for _ in range(levels):
         par, tris = subdivide(par, tris)
-    par = np.array(par)
     height = shape["height"]
     h = par[:, 1] * height
     r = profile(h, height, shape["belly"], shape["belly_at"], shape["neck"], shape["neck_at"],
@@ -134,7 +129,7 @@ def main():
         with open(path, "w") as out:
             out.write(f"# {shape['name']}: {shape['what']} (bench/make_hyperbola_neck_vases.py)\n")
             out.writelines(f"v {x:.5f} {y:.5f} {z:.5f}\n" for x, y, z in pts)
-            out.writelines(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in tris)
+            out.writelines(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in tris.tolist())
         table.append((shape["name"], "cylinder", shape["what"], len(pts), len(tris)))
     with open(os.path.join(args.dir, "targets.tsv"), "w") as out:
         for row in table:
