@@ -53,7 +53,13 @@
 // about 0.65 of the tube is approached, not reached; the cut tube is a star of n lobes, not a
 // circle, its creases on the tube until a corner ring folds them; greedy: a first ring is never
 // cut shallower to let a second go deeper; a waist between two bellies (a gourd) is cut only from
-// the ends (a tilted ring deepens toward one end).
+// the ends (a tilted ring deepens toward one end). A waist under a flaring lip: every ring here
+// turns its part toward the axis and a crease stays where it lay, so the sheet's outer envelope
+// (its largest radius by height) is about the least of the tube's radius and the cutting planes'
+// lines, a concave function of height, which a V-shaped waist's profile is not; how near such an
+// envelope comes is bench/inward_fold_bound.py's bound (bench/make_judge_shapes.py's vase_y: about
+// 6% of the diagonal by Hausdorff, the goal's bound; docs/performance.md, issue 38, vase17), so
+// only a fold that turns a part back out (neckPleat) reaches past it.
 #pragma once
 
 #include <array>
