@@ -595,7 +595,7 @@ TEST(FirstStepStart, ASteepHyparsSquareIsChosenFromEitherFrameByItsFirstStep) {
 // at its x ends and falling 6.75 cm at its y ends): the square is bent along x, the stronger
 // curvature, into the saddle's own centre line, and its development is a square of the arc
 // along that line (0.339 m against 0.18 of reach), exactly, so `check` sees the square it was cut
-// as; the rectangle's sides are the arcs along x and along y (0.234).
+// as; the rectangle's sides are the arcs along x and along y (0.234). A gentle saddle gets none.
 TEST(BentStart, ASteepSaddlesSquareIsBentAlongItsStrongerCurvatureIntoASquare) {
   const auto height = [](double x, double y) { return x * x / 0.06 - y * y / 0.12; };
   const TriangleMesh saddle = heightGrid(0.18, 36, height);
@@ -632,6 +632,11 @@ TEST(BentStart, ASteepSaddlesSquareIsBentAlongItsStrongerCurvatureIntoASquare) {
   const DevelopmentBounds oblong = developmentBounds(rectangles.front().sheet);
   EXPECT_NEAR(oblong.high.x - oblong.low.x, 0.339, 0.006);
   EXPECT_NEAR(oblong.high.y - oblong.low.y, 0.234, 0.006);
+  // A gentle saddle (z = (x^2 - y^2) / 0.3 over 20 cm, arc 1.04 times its reach) is left to the
+  // flat square: a bent one chosen over saddle_disk ended 3 times farther by Hausdorff.
+  const TriangleMesh gentle =
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  EXPECT_TRUE(bentStarts(sampleSurface(gentle, 4000, 3), "square").empty());
 }
 
 // The steep saddle of the judge's saddle_steep_turned (z = (x^2 - y^2) / 0.06 over 18 cm, slope 3

@@ -25,9 +25,11 @@
 // Inputs: area-uniform samples of the target (a few thousand), `kind` "square" or "rectangle".
 // Output: up to two PlacedStarts (surface "bent_square" or "bent_rectangle", parameters the
 // sides and the profile's curvature), the stronger curvature's first; none where the samples do
-// not spread over a plane or the quadric is flat (curvature under 0.05 of the inverse size: a
-// flat sheet is nearer there). Known limits: the profile is one parabola (a saddle's rising end
-// that steepens faster than one is left short); a cone patch is not offered.
+// not spread over a plane or the quadric is flat (curvature under 0.05 of the inverse size), and
+// none along a direction where the profile's arc is under 1.3 times its reach (a gentle saddle:
+// the flat square's cross reaches its ends, and a bent square that its first step chose over a
+// round saddle ended 3 times farther by Hausdorff). Known limits: the profile is one parabola (a
+// saddle's rising end that steepens faster than one is left short); a cone patch is not offered.
 #pragma once
 
 #include <string>
