@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include "engine/fit/bent_start.hpp"
 #include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
@@ -28,6 +29,7 @@
 #include "engine/fit/tuck_folds.hpp"
 #include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
+#include "engine/geometry/validate.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 
@@ -587,6 +589,77 @@ TEST(FirstStepStart, ASteepHyparsSquareIsChosenFromEitherFrameByItsFirstStep) {
   const double score = chosen->chamfer + 0.5 * chosen->hausdorff;
   EXPECT_LT(score, 0.9 * (alone->chamfer + 0.5 * alone->hausdorff))
       << chosen->start.placement << ": " << chosen->hausdorff << " against " << alone->hausdorff;
+}
+
+// A steep saddle with unequal curvatures (z = x^2 / 0.06 - y^2 / 0.12 over 18 cm, rising 13.5 cm
+// at its x ends and falling 6.75 cm at its y ends): the square is bent along x, the stronger
+// curvature, into the saddle's own centre line, and its development is a square of the arc
+// along that line (0.339 m against 0.18 of reach), exactly, so `check` sees the square it was cut
+// as; the rectangle's sides are the arcs along x and along y (0.234). A gentle saddle gets none.
+TEST(BentStart, ASteepSaddlesSquareIsBentAlongItsStrongerCurvatureIntoASquare) {
+  const auto height = [](double x, double y) { return x * x / 0.06 - y * y / 0.12; };
+  const TriangleMesh saddle = heightGrid(0.18, 36, height);
+  const std::vector<SurfaceSample> samples = sampleSurface(saddle, 4000, 3);
+  const std::vector<PlacedStart> squares = bentStarts(samples, "square");
+  ASSERT_EQ(squares.size(), 2u);
+  const PlacedStart& bent = squares.front();
+  EXPECT_EQ(bent.surface, "bent_square");
+  const Sheet& sheet = bent.sheet;
+  EXPECT_NO_THROW(validate(sheet));
+  const DevelopmentBounds bounds = developmentBounds(sheet);
+  const double side = bounds.high.x - bounds.low.x;
+  EXPECT_NEAR(bounds.high.y - bounds.low.y, side, 1e-12 * side);
+  EXPECT_NEAR(side, 0.339, 0.006);
+  for (const Triangle& t : sheet.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const VertexIndex a = t[e], b = t[(e + 1) % 3];
+      EXPECT_NEAR(glm::distance(sheet.positions[a], sheet.positions[b]),
+                  glm::distance(sheet.development[a], sheet.development[b]), 1e-9);
+    }
+  // The middle ruling's profile is the saddle's centre line: up its rising ends, 13.5 cm high.
+  double onLine = 0, worst = 0.0, highest = -1.0;
+  for (const glm::dvec3& p : sheet.positions)
+    if (std::abs(p.y) < 0.004 && std::abs(p.x) <= 0.09) {
+      ++onLine;
+      worst = std::max(worst, std::abs(p.z - height(p.x, p.y)));
+      highest = std::max(highest, p.z);
+    }
+  EXPECT_GT(onLine, 20);
+  EXPECT_LT(worst, 0.003);
+  EXPECT_GT(highest, 0.12);
+  const std::vector<PlacedStart> rectangles = bentStarts(samples, "rectangle");
+  ASSERT_FALSE(rectangles.empty());
+  const DevelopmentBounds oblong = developmentBounds(rectangles.front().sheet);
+  EXPECT_NEAR(oblong.high.x - oblong.low.x, 0.339, 0.006);
+  EXPECT_NEAR(oblong.high.y - oblong.low.y, 0.234, 0.006);
+  // A gentle saddle (z = (x^2 - y^2) / 0.3 over 20 cm, arc 1.04 times its reach) is left to the
+  // flat square: a bent one chosen over saddle_disk ended 3 times farther by Hausdorff.
+  const TriangleMesh gentle =
+      heightGrid(0.2, 40, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  EXPECT_TRUE(bentStarts(sampleSurface(gentle, 4000, 3), "square").empty());
+}
+
+// The steep saddle of the judge's saddle_steep_turned (z = (x^2 - y^2) / 0.06 over 18 cm, slope 3
+// at its rim) under the square bent along x: its rulings, as long as the arc down the falling
+// ends, stand out flat past them (13.5 cm from the target), and the fit tucks them under; the
+// start's first step measures the bent sheet so too, or a flat square would always look nearer.
+TEST(FirstStepStart, ABentSquaresRulingsAreMeasuredTuckedUnder) {
+  if (testing::kSanitized) GTEST_SKIP() << "a tuck search; the plain build checks it";
+  const TriangleMesh saddle =
+      heightGrid(0.18, 36, [](double x, double y) { return (x * x - y * y) / 0.06; });
+  const FoldFitter fitter(saddle, quickSettings());
+  const std::vector<PlacedStart> bent = bentStarts(sampleSurface(saddle, 4000, 3), "square");
+  ASSERT_FALSE(bent.empty());
+  FoldSession session(bent.front().sheet);
+  const std::vector<FoldSuggestion> steps = suggestPleats(session, fitter, 1, {});
+  const double untucked =
+      surfaceDistance(meshOf(steps.empty() ? bent.front().sheet : steps.front().sheet), saddle,
+                      4000)
+          .hausdorff;
+  const std::optional<FirstStepStart> landed = startByFirstStep({bent.front()}, fitter, {}, true);
+  ASSERT_TRUE(landed.has_value());
+  EXPECT_GT(untucked, 0.12);
+  EXPECT_LT(landed->hausdorff, 0.85 * untucked);
 }
 
 // A flat square over a shallow saddle of a disk (radius 10 cm, heights to 3.3 mm): the square's

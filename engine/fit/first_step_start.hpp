@@ -72,7 +72,10 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 // revolutionTarget()), `kind` "", "square", "rectangle" or "disk": the start itself and, where it
 // is not flat and no kind was named, the squares, the rectangle, the disks and (an oblong round
 // footprint's) the ellipses cut to the target's footprint (footprintStarts; the disks alone for
-// "disk"), each with its paper given back, compared
+// "disk"), each with its paper given back, and (kind "", "square" or "rectangle") the sheet bent
+// along the target's curvatures (bent_start.hpp; a square under "square", else a rectangle; not
+// one with over twice the target's area), measured with its rulings' ends tucked under as the
+// fit tucks them, compared
 // by their first steps; `start` becomes the winner (placed) when that is not `start` itself. None
 // (and `start` untouched) where the rule does not apply (a creased start: the target was folded
 // from it) or `start` won.

@@ -84,11 +84,6 @@ glm::dvec3 widerEndDown(double& bottom, double& top, const glm::dvec3& axis) {
   return -axis;
 }
 
-struct Principal {
-  glm::dvec3 centroid{0.0};
-  glm::dvec3 axes[3];  // ascending spread: axes[0] the smallest (a sheet's normal)
-};
-
 // A target whose samples' mean normal is at least this long (of a unit) lies over one plane as a
 // height field (a saddle, a bowl), and that plane's normal is the mean normal; a tube's or a
 // vase's mean normal nearly cancels (under 0.1 on every judge's vase).
@@ -96,8 +91,8 @@ constexpr double kHeightField = 0.3;
 // The least spread's axis is kept where it lies within this angle's cosine of the mean normal.
 constexpr double kNormalAgrees = 0.866;  // 30 degrees
 
-Principal principalOf(const std::vector<SurfaceSample>& samples, bool byMeanNormal = true) {
-  Principal out;
+PrincipalAxes principalOf(const std::vector<SurfaceSample>& samples, bool byMeanNormal = true) {
+  PrincipalAxes out;
   glm::dvec3 meanNormal(0.0);
   for (const SurfaceSample& s : samples) {
     out.centroid += s.position;
@@ -415,7 +410,7 @@ std::optional<Sheet> trimmedTo(const Sheet& sheet, const std::vector<SurfaceSamp
   return out;
 }
 
-void sweptAbout(const std::vector<SurfaceSample>& samples, const Principal& principal,
+void sweptAbout(const std::vector<SurfaceSample>& samples, const PrincipalAxes& principal,
                 std::vector<PlacedStart>& out) {
   const std::size_t n = samples.size();
   const glm::dvec3 u = principal.axes[2], v = principal.axes[1], normal = principal.axes[0];
@@ -486,7 +481,7 @@ void addEllipse(std::vector<PlacedStart>& out, double a, double b, const std::st
   }
 }
 
-void flatIn(const std::vector<SurfaceSample>& samples, const Principal& principal, double area,
+void flatIn(const std::vector<SurfaceSample>& samples, const PrincipalAxes& principal, double area,
             const std::string& kind, std::vector<PlacedStart>& out) {
   Frame frame = frameOf(principal.centroid, principal.axes[2], principal.axes[1]);
   // The eigenvectors' signs are arbitrary; the nested rings fold a disk whose normal points to
@@ -531,7 +526,7 @@ struct FootprintBox {
 };
 constexpr int kFootprintTurns = 90;
 
-FootprintBox footprintBox(const std::vector<SurfaceSample>& samples, const Principal& principal,
+FootprintBox footprintBox(const std::vector<SurfaceSample>& samples, const PrincipalAxes& principal,
                           bool square) {
   const glm::dvec3 e1 = principal.axes[2], e2 = principal.axes[1];
   std::vector<double> u(samples.size()), v(samples.size());
@@ -577,7 +572,7 @@ std::string footprintPlacement(const Frame& frame) {
 // then stand out past the target's), and sized by area, which a curved target's exceeds its
 // outline's. The square of the footprint's box (and one of its mean side, for an oblong
 // footprint), and its rectangle.
-void footprintIn(const std::vector<SurfaceSample>& samples, const Principal& principal,
+void footprintIn(const std::vector<SurfaceSample>& samples, const PrincipalAxes& principal,
                  const std::string& kind, std::vector<PlacedStart>& out) {
   for (const bool square : {true, false}) {
     const std::string surface = square ? "square" : "rectangle";
@@ -608,7 +603,7 @@ constexpr double kRoundOutside = 0.03;
 // A footprint whose sides differ by more than this share is oblong.
 constexpr double kOblong = 0.97;
 
-bool footprintDisks(const std::vector<SurfaceSample>& samples, const Principal& principal,
+bool footprintDisks(const std::vector<SurfaceSample>& samples, const PrincipalAxes& principal,
                     std::vector<PlacedStart>& out) {
   const FootprintBox box = footprintBox(samples, principal, false);
   if (!(box.width > 0.0 && box.height > 0.0)) return false;
@@ -698,7 +693,7 @@ std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& sampl
                                          const std::string& kind) {
   std::vector<PlacedStart> out;
   if (samples.size() < 10) return out;
-  const Principal principal = principalOf(samples);
+  const PrincipalAxes principal = principalOf(samples);
   std::vector<PlacedStart> disks;
   const bool round = footprintDisks(samples, principal, disks);
   if (kind.empty()) footprintIn(samples, principal, "", out);
@@ -714,7 +709,7 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
                                       const std::string& kind) {
   std::vector<PlacedStart> out;
   if (samples.size() < 10) return out;
-  const Principal principal = principalOf(samples);
+  const PrincipalAxes principal = principalOf(samples);
   if (kind.empty() || kind == "cylinder" || kind == "cone")
     for (const glm::dvec3& axis : principal.axes)
       revolutionAbout(samples, principal.centroid, axis, kind, out);
@@ -724,11 +719,15 @@ std::vector<PlacedStart> placedStarts(const std::vector<SurfaceSample>& samples,
   return out;
 }
 
+PrincipalAxes principalAxes(const std::vector<SurfaceSample>& samples) {
+  return principalOf(samples);
+}
+
 std::vector<PlacedStart> leastSpreadStarts(const std::vector<SurfaceSample>& samples,
                                            double targetArea, const std::string& kind) {
   std::vector<PlacedStart> out;
   if (samples.size() < 10) return out;
-  const Principal least = principalOf(samples, false);
+  const PrincipalAxes least = principalOf(samples, false);
   if (std::abs(glm::dot(least.axes[0], principalOf(samples).axes[0])) >= kNormalAgrees) return out;
   flatIn(samples, least, targetArea, kind, out);
   footprintIn(samples, least, kind, out);

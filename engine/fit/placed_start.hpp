@@ -48,6 +48,15 @@ struct PlacedStart {
   Sheet sheet;                   // moved into place
 };
 
+// The frame the placed sheets lie in: the samples' centroid and principal axes in ascending
+// spread, axes[0] the sheet's normal (the samples' mean normal where a steep saddle's least spread
+// lies across it, above).
+struct PrincipalAxes {
+  glm::dvec3 centroid{0.0};
+  glm::dvec3 axes[3];
+};
+PrincipalAxes principalAxes(const std::vector<SurfaceSample>& samples);
+
 // Candidates of `kind` ("" for every kind) placed onto the target described by `samples`
 // (area-uniform, at least a few hundred). Candidates a kind's generator refuses are left out.
 // The disk and square in the principal plane face the target's narrower end (a bowl's bottom),
