@@ -28,8 +28,9 @@
 // own (facetBendDegrees, crease_planes.hpp).
 //
 // Known limits: the frames read a sheet that the folds left whole (a helix with few faces, a
-// swept curve of under half a wave, read worse); a kind whose parameters leave its area alone (a cylinder's radius at a fixed arc)
-// is told apart only by the unfolding; the second reading doubles the cost where the first fails.
+// swept curve of under half a wave, read worse); a kind whose parameters leave its area alone (a
+// cylinder's radius at a fixed arc) is told apart only by the unfolding; the second reading doubles
+// the cost where the first fails.
 #pragma once
 
 #include <optional>
