@@ -27,10 +27,10 @@
 // facets more, or its crease less, than the defaults'), the reading runs again with the target's
 // own (facetBendDegrees, crease_planes.hpp).
 //
-// Known limits: the frames read a sheet that the folds left whole (a helix with few faces, a
-// swept curve of under half a wave, read worse); a kind whose parameters leave its area alone (a
-// cylinder's radius at a fixed arc) is told apart only by the unfolding; the second reading doubles
-// the cost where the first fails.
+// Known limits: the frames were tried on moderate parameters only (a helix of many turns, a swept
+// curve of under half a wave, a very thin cone: not tried); a kind whose parameters leave its area
+// alone (a cylinder's radius at a fixed arc) is told apart only by the unfolding; the second
+// reading doubles the cost where the first fails.
 #pragma once
 
 #include <optional>
