@@ -1204,6 +1204,36 @@ TEST(StartSurface, ATubeOfOtherFacetsStartsFromTheSheetItUnfoldsTo) {
   expectStartsFrom(start, made);
 }
 
+// tangent-params-1-2-00-helix_tangent (make_tangent_targets.py, seed 15): a fold whose plane
+// missed the sheet moved a helix of other parameters whole, and no frame put a helix back where
+// the catalogue makes it: `--from helix_tangent` started from the defaults, 9.92% away at `--time
+// 60` (and the 3-4 and 5-8 helices, 103% and 111%). Its normals' cone names the axis and the
+// rise, the principal normals the axis's place and the radius; a reflection's mirror image too.
+TEST(StartSurface, AHelixOfOtherParametersMovedWholeStartsFromTheSheetItUnfoldsTo) {
+  const SurfaceParameters made{{"radius", 0.033}, {"pitch", 0.105}, {"turns", 0.6}};
+  const TriangleMesh turned = foldedAndMovedWhole("helix_tangent", made, 0.7, {0.05, -0.03, 0.08});
+  expectStartsFrom(chooseStart(turned, "helix_tangent"), made);
+  TriangleMesh mirrored = turned;
+  for (glm::dvec3& p : mirrored.positions) p.x = 0.02 - p.x;
+  for (auto& t : mirrored.triangles) std::swap(t[1], t[2]);
+  expectStartsFrom(chooseStart(mirrored, "helix_tangent"), made);
+}
+
+// tangent-params-5-8-00-cone and -swept_curve: folds whose planes missed the sheet moved a
+// whole cone, and a swept sine, of other parameters, and nothing put them back where the catalogue
+// makes them (`--from cone`: 40.9%, `--from swept_curve`: 77.5% at `--time 60`). A cone's apex is
+// where its faces' planes meet, its axis its normals' cone's; a swept sine's rulings lie across
+// its normals, its curve leans off its principal axis by what the sine's best fit says.
+TEST(StartSurface, AConeOrASweptCurveOfOtherParametersMovedWholeStartsFromTheSheetItUnfoldsTo) {
+  const SurfaceParameters cone{{"base_radius", 0.1}, {"height", 0.075}};
+  expectStartsFrom(chooseStart(foldedAndMovedWhole("cone", cone, 0.7, {0.05, -0.03, 0.08}), "cone"),
+                   cone);
+  const SurfaceParameters swept{{"amplitude", 0.01}, {"wavelength", 0.17}};
+  expectStartsFrom(chooseStart(foldedAndMovedWhole("swept_curve", swept, 0.7, {0.05, -0.03, 0.08}),
+                               "swept_curve"),
+                   swept);
+}
+
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {
   FoldRecord fold;
   fold.seed = {-0.0021913213800000032, -0.07875};

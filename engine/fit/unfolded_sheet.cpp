@@ -15,6 +15,7 @@
 #include "engine/fit/subplex.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/geometry/boundary_edges.hpp"
 
 namespace curvefold {
 namespace {
@@ -25,6 +26,9 @@ constexpr double kSameArea = 1e-5;
 constexpr double kSmoothLeft = 0.003;
 // How near (of the diagonal, on average both ways) the fitted sheet must lie on the unfolded one.
 constexpr double kLiesOn = 1e-3;
+// How near (of the diagonal, on average both ways) a choice of sides must lie on a sheet at its
+// guessed parameters to be polished before the frames read from the shape are tried.
+constexpr double kNearStart = 0.02;
 // Folds an unfolding may read (the fit's own cap).
 constexpr std::size_t kMaxFolds = 12;
 // Points measured each way per evaluation, and evaluations per fit.
@@ -32,6 +36,17 @@ constexpr std::size_t kPoints = 600;
 constexpr int kEvaluations = 600;
 // Steps whose sides are tried every way (2^n choices) to find the part that never moved.
 constexpr std::size_t kExhaustiveChoices = 8;
+// Wavelengths a swept curve's sine is read at: so many, from and to these shares of its width.
+constexpr int kWavelengths = 240;
+constexpr double kShortestWave = 0.05, kLongestWave = 4.0;
+// Leans (radians, either way) of a swept curve's axis off its principal axis tried, and how many.
+constexpr double kMostLean = 0.6;
+constexpr int kLeans = 121;
+// Steps of each finer scan about the best lean and wavelength, each way, and such scans.
+constexpr int kFiner = 10;
+constexpr int kFinerRounds = 4;
+// Angles (radians) about a helix's axis closer than this are one strip's.
+constexpr double kStripGap = 1e-3;
 // How far (degrees) from the defaults' threshold the target's own must be to be tried too.
 constexpr double kThresholdStep = 0.5;
 
@@ -60,7 +75,12 @@ class Unfolded {
       const SurfaceDistanceQuery onSheet(sheet, "sheet");
       double there = 0.0;
       for (const glm::dvec3& p : points_) there += onSheet.distance(p);
-      const std::vector<glm::dvec3> sheetPoints = spread(sheet.positions);
+      // The sheet's whole boundary too: a spread of its vertices may miss a row of its grid,
+      // and a sheet a row longer than the unfolded one would then lie as near.
+      std::vector<glm::dvec3> sheetPoints = spread(sheet.positions);
+      const std::vector<char> rim = boundaryVertexFlags(sheet);
+      for (std::size_t i = 0; i < rim.size(); ++i)
+        if (rim[i]) sheetPoints.push_back(sheet.positions[i]);
       double back = 0.0;
       for (const glm::dvec3& p : sheetPoints) back += query_.distance(p);
       return there / static_cast<double>(points_.size()) +
@@ -123,6 +143,30 @@ SurfaceParameters guessFor(const std::string& kind, const std::vector<glm::dvec3
     guess["amplitude"] = 0.5 * (hi.z - lo.z);
     guess["curve_width"] = hi.x - lo.x;
     guess["length"] = hi.y - lo.y;
+    // The wave's length: the one whose sine (least squares, z = a sin(2 pi x / wavelength)) the
+    // points lie nearest; the distance from a sheet of another wavelength has minima at its
+    // multiples and fractions, so the polish alone stays where it starts.
+    const double width = hi.x - lo.x;
+    double bestResidual = 1e300;
+    for (int i = 0; i < kWavelengths && width > 0.0; ++i) {
+      const double wavelength =
+          width * kShortestWave * std::pow(kLongestWave / kShortestWave, i / (kWavelengths - 1.0));
+      const double k = 2.0 * std::numbers::pi / wavelength;
+      double zs = 0.0, ss = 0.0, zz = 0.0;
+      for (const glm::dvec3& p : positions) {
+        const double sine = std::sin(k * p.x);
+        zs += p.z * sine;
+        ss += sine * sine;
+        zz += p.z * p.z;
+      }
+      if (!(ss > 0.0)) continue;
+      const double residual = zz - zs * zs / ss;
+      if (residual < bestResidual) {
+        bestResidual = residual;
+        guess["wavelength"] = wavelength;
+        guess["amplitude"] = std::abs(zs / ss);
+      }
+    }
   }
   return guess;
 }
@@ -172,6 +216,152 @@ std::vector<glm::dvec3> inFrame(const std::vector<glm::dvec3>& positions, const 
   return out;
 }
 
+// A tangent developable of a helix moved whole, put where the catalogue makes it: the helix about
+// y, its first ruling's foot on +z at height -rise pi turns. Its normals are the helix's binormals,
+// which all make one angle with the axis (the axis: their covariance's least eigenvector, as a
+// tube's), and a face's foot on the helix lies the radius from the axis along the principal
+// normal, axis x normal: those lines fix the axis's place and the radius (least squares), the
+// cone of normals the rise. Each face's angle about the axis, unwrapped by its foot's height,
+// gives the helix's start and turns; the screw along it the height. Both senses of the axis are
+// tried, the frame mirrored where a reflection turned the helix's hand; a sense along which the
+// rulings run back (their foot ahead of them) is dropped.
+struct HelixFrame {
+  std::vector<glm::dvec3> positions;
+  SurfaceParameters guess;
+};
+
+std::vector<HelixFrame> helixFrames(const std::vector<glm::dvec3>& positions,
+                                    const TriangleMesh& mesh) {
+  std::vector<HelixFrame> out;
+  const glm::dvec3 axis = momentsOf(positions, mesh, true).axes[0];
+  const glm::dvec3 e0 = glm::normalize(
+      glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+  const glm::dvec3 e1 = glm::cross(axis, e0);
+  struct Face {
+    glm::dvec3 centre, normal;
+    double area;
+  };
+  std::vector<Face> faces;
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec3 a = positions[t[0]], b = positions[t[1]], c = positions[t[2]];
+    const glm::dvec3 cross = glm::cross(b - a, c - a);
+    const double area = 0.5 * glm::length(cross);
+    if (!(area > 0.0)) continue;
+    faces.push_back({(a + b + c) / 3.0, cross / (2.0 * area), area});
+  }
+  // The axis's place (u, v across it) and the radius: n . O - r = n . q for each face's principal
+  // normal n (unit, across the axis) and centre q.
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  double cosine = 0.0, total = 0.0;
+  std::vector<glm::dvec2> across(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Face& f = faces[i];
+    const glm::dvec3 principal = glm::cross(axis, f.normal);
+    const double length = glm::length(principal);
+    cosine += f.area * glm::dot(f.normal, axis);
+    total += f.area;
+    if (!(length > 1e-9)) continue;
+    across[i] = glm::dvec2(glm::dot(principal, e0), glm::dot(principal, e1)) / length;
+    const Eigen::Vector3d row(across[i].x, across[i].y, -1.0);
+    m += f.area * row * row.transpose();
+    rhs += f.area * row *
+           (across[i].x * glm::dot(f.centre, e0) + across[i].y * glm::dot(f.centre, e1));
+  }
+  if (!(total > 0.0)) return out;
+  const Eigen::Vector3d solved = m.ldlt().solve(rhs);
+  double radius = solved.z();
+  const glm::dvec3 centre = solved.x() * e0 + solved.y() * e1;
+  // The principal normals point from the foot to the axis: where the normals' sense made the
+  // radius negative, they point away.
+  const double flip = radius < 0.0 ? -1.0 : 1.0;
+  radius = std::abs(radius);
+  const double along = std::min(1.0, std::abs(cosine) / total);  // r / L
+  if (!(radius > 0.0) || !(along > 1e-3) || !(along < 1.0 - 1e-9)) return out;
+  const double slant = radius / along, rise = std::sqrt(slant * slant - radius * radius);
+  for (const double sense : {1.0, -1.0}) {
+    for (const double hand : {1.0, -1.0}) {
+      const glm::dvec3 y = sense * axis, z = e0, x = hand * glm::cross(y, z);
+      // Each face's angle from z toward x, its foot's height and its distance along the ruling.
+      std::vector<double> angle, height, ruling;
+      std::vector<std::size_t> used;
+      double forward = 0.0;
+      for (std::size_t i = 0; i < faces.size(); ++i) {
+        if (!(glm::length(across[i]) > 0.5)) continue;
+        const glm::dvec3 toAxis = flip * (across[i].x * e0 + across[i].y * e1);
+        const glm::dvec3 q = faces[i].centre - centre;
+        const glm::dvec3 qAcross = q - glm::dot(q, axis) * axis;
+        const glm::dvec3 foot = -radius * toAxis;  // across the axis
+        const double a = std::atan2(glm::dot(-toAxis, x), glm::dot(-toAxis, z));
+        const glm::dvec3 tangent = std::cos(a) * x - std::sin(a) * z;
+        const double ahead = glm::dot(qAcross - foot, tangent);
+        forward += faces[i].area * ahead;
+        const double u = std::abs(ahead) * slant / radius;
+        angle.push_back(a);
+        ruling.push_back(u);
+        height.push_back(glm::dot(q, y) - u * rise / slant);
+        used.push_back(i);
+      }
+      if (used.empty() || !(forward > 0.0)) continue;
+      // Unwrapped by height from the lowest foot.
+      const std::size_t low =
+          static_cast<std::size_t>(std::min_element(height.begin(), height.end()) - height.begin());
+      constexpr double kTurn = 2.0 * std::numbers::pi;
+      double first = 1e300, last = -1e300, offset = 0.0, weights = 0.0;
+      double nearest = 1e300, farthest = -1e300;
+      std::vector<double> unwrapped;
+      for (std::size_t k = 0; k < used.size(); ++k) {
+        const double expected = angle[low] + (rise > 0.0 ? (height[k] - height[low]) / rise : 0.0);
+        const double t = angle[k] + kTurn * std::round((expected - angle[k]) / kTurn);
+        unwrapped.push_back(t);
+        first = std::min(first, t);
+        last = std::max(last, t);
+        offset += faces[used[k]].area * (height[k] - rise * t);
+        weights += faces[used[k]].area;
+        nearest = std::min(nearest, ruling[k]);
+        farthest = std::max(farthest, ruling[k]);
+      }
+      offset /= weights;
+      // A strip between rulings i and i + 1 lies in the plane of the helix's samples i to i + 2,
+      // so its faces read sample i + 1: the first ruling's foot is a step (the usual one between
+      // the strips read) before the first read, and ruling i's points lie a chord (the step's
+      // length along the helix) nearer the foot read than on their own ruling.
+      std::sort(unwrapped.begin(), unwrapped.end());
+      std::vector<double> steps;
+      for (std::size_t k = 1; k < unwrapped.size(); ++k)
+        if (unwrapped[k] - unwrapped[k - 1] > kStripGap)
+          steps.push_back(unwrapped[k] - unwrapped[k - 1]);
+      double step = 0.0;
+      if (!steps.empty()) {
+        std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+        step = steps[steps.size() / 2];
+        first -= step;
+      }
+      const double turns = (last - first) / kTurn;
+      if (!(turns > 0.0)) continue;
+      // The catalogue's helix: angle 0 at the start, height rise (t - pi turns).
+      const double turn = first;
+      const double shift = offset + rise * turn + rise * std::numbers::pi * turns;
+      const double c = std::cos(turn), s = std::sin(turn);
+      HelixFrame frame;
+      frame.positions.reserve(positions.size());
+      for (const glm::dvec3& p : positions) {
+        const glm::dvec3 d = p - centre;
+        const double px = glm::dot(d, x), pz = glm::dot(d, z);
+        // Turned back by the start's angle about y (z toward x is the positive sense).
+        frame.positions.emplace_back(c * px - s * pz, glm::dot(d, y) - shift, s * px + c * pz);
+      }
+      frame.guess["radius"] = radius;
+      frame.guess["pitch"] = kTurn * rise;
+      frame.guess["turns"] = turns;
+      frame.guess["ruling_start"] = nearest + step * slant;
+      frame.guess["ruling_width"] = farthest - nearest - step * slant;
+      out.push_back(std::move(frame));
+    }
+  }
+  return out;
+}
+
 // A smooth unfolded sheet that folds whose planes missed it moved whole (a rigid copy of the
 // kind at some parameters, anywhere) put where the catalogue makes the kind, read from its shape
 // alone: a tube's axis (the normals' plane) on y, its middle height at 0 and its arc's middle on +z
@@ -183,26 +373,54 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
                                                      const std::vector<glm::dvec3>& positions,
                                                      const TriangleMesh& mesh) {
   std::vector<std::vector<glm::dvec3>> out;
-  if (kind == "cylinder" || kind == "half_cylinder") {
-    const glm::dvec3 axis = momentsOf(positions, mesh, true).axes[0];
+  if (kind == "cylinder" || kind == "half_cylinder" || kind == "cone") {
+    glm::dvec3 axis = momentsOf(positions, mesh, true).axes[0];
     const glm::dvec3 e0 = glm::normalize(
         glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
     const glm::dvec3 e1 = glm::cross(axis, e0);
-    // The axis through the circle the points lie on across it (least squares, Kasa).
-    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d b = Eigen::Vector3d::Zero();
     double lo = 1e300, hi = -1e300;
     for (const glm::dvec3& p : positions) {
-      const double u = glm::dot(p, e0), v = glm::dot(p, e1), t = glm::dot(p, axis);
-      lo = std::min(lo, t);
-      hi = std::max(hi, t);
-      const Eigen::Vector3d row(u, v, 1.0);
-      a += row * row.transpose();
-      b -= row * (u * u + v * v);
+      lo = std::min(lo, glm::dot(p, axis));
+      hi = std::max(hi, glm::dot(p, axis));
     }
-    const Eigen::Vector3d circle = a.ldlt().solve(b);
-    const glm::dvec3 centre =
-        -0.5 * circle.x() * e0 - 0.5 * circle.y() * e1 + 0.5 * (lo + hi) * axis;
+    glm::dvec3 centre(0.0);
+    if (kind == "cone") {
+      // Every face's plane holds the apex (least squares), which lies above the base (+y).
+      Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d b = Eigen::Vector3d::Zero();
+      glm::dvec3 mean(0.0);
+      for (const auto& t : mesh.triangles) {
+        const glm::dvec3 p0 = positions[t[0]], p1 = positions[t[1]], p2 = positions[t[2]];
+        const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
+        if (!(glm::length(cross) > 0.0)) continue;
+        const Eigen::Vector3d n = eigenOf(glm::normalize(cross));
+        // Weighed by area: a sliver's normal is noise.
+        const double w = 0.5 * glm::length(cross);
+        a += w * n * n.transpose();
+        b += w * n * n.dot(eigenOf(p0));
+        mean += w * (p0 + p1 + p2) / 3.0;
+      }
+      const glm::dvec3 apex = glmOf(Eigen::Vector3d(a.ldlt().solve(b)));
+      if (glm::dot(apex - mean, axis) < 0.0) {
+        axis = -axis;
+        std::swap(lo, hi);
+        lo = -lo;
+        hi = -hi;
+      }
+      centre = apex - glm::dot(apex, axis) * axis + 0.5 * (lo + hi) * axis;
+    } else {
+      // The axis through the circle the points lie on across it (least squares, Kasa).
+      Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d b = Eigen::Vector3d::Zero();
+      for (const glm::dvec3& p : positions) {
+        const double u = glm::dot(p, e0), v = glm::dot(p, e1);
+        const Eigen::Vector3d row(u, v, 1.0);
+        a += row * row.transpose();
+        b -= row * (u * u + v * v);
+      }
+      const Eigen::Vector3d circle = a.ldlt().solve(b);
+      centre = -0.5 * circle.x() * e0 - 0.5 * circle.y() * e1 + 0.5 * (lo + hi) * axis;
+    }
     auto across = [&](const glm::dvec3& p) {
       const glm::dvec3 d = p - centre;
       return d - glm::dot(d, axis) * axis;
@@ -236,6 +454,64 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
     const glm::dvec3 z = glm::normalize(middle);
     const glm::dvec3 frame[3] = {glm::cross(axis, z), axis, z};
     out.push_back(inFrame(positions, centre, frame));
+  } else if (kind == "swept_curve") {
+    // Swept along y: the normals lie across it (their least eigenvector), the curve spreads
+    // most along x about the centroid (a sine over a span centred on a node: its mean is 0),
+    // and its sheet is the same turned half about y; a reflection's mirror image is z's sign.
+    const glm::dvec3 y = momentsOf(positions, mesh, true).axes[0];
+    const Moments m = momentsOf(positions, mesh, false);
+    glm::dvec3 x(0.0);
+    for (int i = 2; i >= 0 && !(glm::length(x) > 0.5); --i)
+      x = m.axes[i] - glm::dot(m.axes[i], y) * y;
+    if (!(glm::length(x) > 0.5)) return out;
+    x = glm::normalize(x);
+    // A sine spans a node's both sides unevenly (x and z correlate), so the principal axis leans
+    // off the curve's x: the lean and the wavelength whose sine (least squares) the points lie
+    // nearest, on a spread of them.
+    const glm::dvec3 z = glm::cross(x, y);
+    const std::vector<glm::dvec3> points = spread(positions);
+    double width = 0.0, bestResidual = 1e300, bestLean = 0.0, bestWave = 0.0;
+    for (const glm::dvec3& p : points)
+      width = std::max(width, 2.0 * std::abs(glm::dot(p - m.mean, x)));
+    if (!(width > 0.0)) return out;
+    auto tryLean = [&](double lean, double wavelength) {
+      const glm::dvec3 u = std::cos(lean) * x + std::sin(lean) * z;
+      const glm::dvec3 w = glm::cross(u, y);
+      const double k = 2.0 * std::numbers::pi / wavelength;
+      double zs = 0.0, ss = 0.0, zz = 0.0;
+      for (const glm::dvec3& p : points) {
+        const double sine = std::sin(k * glm::dot(p - m.mean, u)), h = glm::dot(p - m.mean, w);
+        zs += h * sine;
+        ss += sine * sine;
+        zz += h * h;
+      }
+      if (ss > 0.0 && zz - zs * zs / ss < bestResidual) {
+        bestResidual = zz - zs * zs / ss;
+        bestLean = lean;
+        bestWave = wavelength;
+      }
+    };
+    const double ratio = std::pow(kLongestWave / kShortestWave, 1.0 / (kWavelengths - 1.0));
+    for (int j = 0; j < kLeans; ++j)
+      for (int i = 0; i < kWavelengths; i += 2)
+        tryLean(kMostLean * (2.0 * j / (kLeans - 1.0) - 1.0),
+                width * kShortestWave * std::pow(ratio, i));
+    // Then finer about the best, a coarse step each way, and again a fifth of that each time.
+    double leanSpan = 2.0 * kMostLean / (kLeans - 1.0), waveSpan = ratio * ratio;
+    for (int round = 0; round < kFinerRounds; ++round) {
+      const double aboutLean = bestLean, aboutWave = bestWave;
+      for (int j = -kFiner; j <= kFiner; ++j)
+        for (int i = -kFiner; i <= kFiner; ++i)
+          tryLean(aboutLean + leanSpan * j / kFiner,
+                  aboutWave * std::pow(waveSpan, static_cast<double>(i) / kFiner));
+      leanSpan /= 5.0;
+      waveSpan = std::pow(waveSpan, 0.2);
+    }
+    const glm::dvec3 along = std::cos(bestLean) * x + std::sin(bestLean) * z;
+    for (const double side : {1.0, -1.0}) {
+      const glm::dvec3 frame[3] = {along, y, side * glm::cross(along, y)};
+      out.push_back(inFrame(positions, m.mean, frame));
+    }
   } else if (kind == "square" || kind == "rectangle" || kind == "disk" || kind == "star") {
     const Moments m = momentsOf(positions, mesh, false);
     const glm::dvec3 normal = m.axes[0];
@@ -293,9 +569,12 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   SurfaceParameters start = base;
   double nearest = 1e300;
   // Each way the unfolded target may lie, at the start's and at its shape's parameters.
-  auto consider = [&](const std::vector<glm::dvec3>& positions) {
+  auto consider = [&](const std::vector<glm::dvec3>& positions,
+                      const SurfaceParameters& read = {}) {
     const Unfolded candidate(TriangleMesh{positions, target.triangles});
-    for (const SurfaceParameters& tried : {base, guessFor(kind, positions, area, base)}) {
+    SurfaceParameters fromShape = guessFor(kind, positions, area, base);
+    for (const auto& [name, value] : read) fromShape[name] = value;
+    for (const SurfaceParameters& tried : {base, fromShape}) {
       const double d = candidate.apart(kind, tried);
       if (d < nearest) {
         nearest = d;
@@ -313,54 +592,78 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
         for (glm::dvec3& p : positions) p = unfolding.folds[u].plane.reflect(p);
     consider(positions);
   }
-  // Folds whose planes missed the sheet moved it whole: no choice of sides puts it back, but its
-  // shape says where the catalogue made it.
-  for (const std::vector<glm::dvec3>& positions :
-       catalogueFrames(kind, unfolding.unfolded, target)) {
-    if (deadline.passed()) break;
-    consider(positions);
-  }
-  if (chosen.empty()) return std::nullopt;
-  const Unfolded unfolded(TriangleMesh{chosen, target.triangles});
-  base = start;
-  auto parametersOf = [&](const std::vector<double>& x) {
-    SurfaceParameters out = base;
-    for (std::size_t i = 0; i < free.size(); ++i) out[free[i]->name] = x[i];
-    return out;
-  };
-  // A star's points are a count: each tried at the start, the nearest kept.
-  const auto points = std::find_if(info->parameters.begin(), info->parameters.end(),
-                                   [](const SurfaceParameter& p) { return p.name == "points"; });
-  if (points != info->parameters.end()) {
-    double best = 1e300;
-    SurfaceParameters tried = base;
-    for (int count = 3; count <= 12 && !deadline.passed(); ++count) {
-      tried["points"] = count;
-      const double d = unfolded.apart(kind, tried);
-      if (d < best) {
-        best = d;
-        base["points"] = count;
+  // The parameters that lay the sheet nearest the unfolded target as chosen, polished (nothing
+  // where none lies on it).
+  auto polish = [&]() {
+    if (chosen.empty()) return std::optional<SurfaceParameters>();
+    const Unfolded unfolded(TriangleMesh{chosen, target.triangles});
+    SurfaceParameters from = start;
+    auto parametersOf = [&](const std::vector<double>& x) {
+      SurfaceParameters out = from;
+      for (std::size_t i = 0; i < free.size(); ++i) out[free[i]->name] = x[i];
+      return out;
+    };
+    // A star's points are a count: each tried at the start, the nearest kept.
+    const auto points = std::find_if(info->parameters.begin(), info->parameters.end(),
+                                     [](const SurfaceParameter& p) { return p.name == "points"; });
+    if (points != info->parameters.end()) {
+      double best = 1e300;
+      SurfaceParameters tried = from;
+      for (int count = 3; count <= 12 && !deadline.passed(); ++count) {
+        tried["points"] = count;
+        const double d = unfolded.apart(kind, tried);
+        if (d < best) {
+          best = d;
+          from["points"] = count;
+        }
       }
     }
+    std::vector<double> x, stepSizes;
+    SubplexBounds bounds;
+    for (const SurfaceParameter* p : free) {
+      x.push_back(from[p->name]);
+      bounds.lower.push_back(p->min);
+      bounds.upper.push_back(p->max);
+      stepSizes.push_back(p->name == "angle" ? 5.0
+                                             : std::max(0.05 * from[p->name], 0.005 * diagonal));
+    }
+    if (!x.empty())
+      minimizeSubplex(
+          x, stepSizes, kEvaluations,
+          [&](const std::vector<double>& y) { return unfolded.apart(kind, parametersOf(y)); },
+          &deadline, &bounds);
+    const SurfaceParameters found = parametersOf(x);
+    if (!(unfolded.apart(kind, found) <= kLiesOn * diagonal))
+      return std::optional<SurfaceParameters>();
+    return std::optional<SurfaceParameters>(found);
+  };
+  // The choices of sides first: where one lies on a sheet it is the sheet exactly, which a frame
+  // read from the shape may only approach. One far from every sheet is not polished alone (600
+  // sheets measured for nothing) but beside the frames.
+  const bool near = nearest <= kNearStart * diagonal;
+  std::optional<SurfaceParameters> found = near ? polish() : std::nullopt;
+  if (!found && !deadline.passed()) {
+    if (near) {
+      nearest = 1e300;
+      chosen.clear();
+    }
+    // Folds whose planes missed the sheet moved it whole: no choice of sides puts it back, but its
+    // shape says where the catalogue made it.
+    for (const std::vector<glm::dvec3>& positions :
+         catalogueFrames(kind, unfolding.unfolded, target)) {
+      if (deadline.passed()) break;
+      consider(positions);
+    }
+    if (kind == "helix_tangent")
+      for (const HelixFrame& helix : helixFrames(unfolding.unfolded, target)) {
+        if (deadline.passed()) break;
+        consider(helix.positions, helix.guess);
+      }
+    found = polish();
   }
-  std::vector<double> x, stepSizes;
-  SubplexBounds bounds;
-  for (const SurfaceParameter* p : free) {
-    x.push_back(base[p->name]);
-    bounds.lower.push_back(p->min);
-    bounds.upper.push_back(p->max);
-    stepSizes.push_back(p->name == "angle" ? 5.0
-                                           : std::max(0.05 * base[p->name], 0.005 * diagonal));
-  }
-  if (!x.empty())
-    minimizeSubplex(
-        x, stepSizes, kEvaluations,
-        [&](const std::vector<double>& y) { return unfolded.apart(kind, parametersOf(y)); },
-        &deadline, &bounds);
-  const SurfaceParameters found = parametersOf(x);
-  if (!(unfolded.apart(kind, found) <= kLiesOn * diagonal)) return std::nullopt;
+  if (!found) return std::nullopt;
   SurfaceParameters changed;
-  for (const auto& entry : found) {
+  for (const auto& entry : *found) {
     // Not a structured binding: clang 14 (the sanitized build) cannot capture one.
     const std::string& name = entry.first;
     const auto p = std::find_if(info->parameters.begin(), info->parameters.end(),

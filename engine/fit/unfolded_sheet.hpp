@@ -16,15 +16,21 @@
 //
 // An unfolding that ends on the sheet moved whole (folds whose planes missed it) is put back in
 // the catalogue's frame by its shape alone, for tubes (the normals' plane gives the axis, a circle
-// fitted across it the centre, the arc's middle or a whole tube's slit the turn) and flat sheets
-// (the plane and centroid of its area, turned by its principal axis or its farthest point). Where
+// fitted across it the centre, the arc's middle or a whole tube's slit the turn), cones (the
+// normals' cone the axis, its faces' planes the apex, then as a tube), swept curves (the rulings
+// across the normals; the sine's lean and wavelength by least squares on a grid, refined),
+// helices' tangent developables (the normals' cone the axis and the rise, the principal normals'
+// lines the axis's place and the radius, the faces' angles the start and the turns; both hands)
+// and flat sheets (the plane and centroid of its area, turned by its principal axis or its
+// farthest point). A choice of sides that lies near a sheet is polished before the frames. Where
 // the defaults' sharp-edge threshold reads nothing (a tube of another radius or arc bends its
 // facets more, or its crease less, than the defaults'), the reading runs again with the target's
 // own (facetBendDegrees, crease_planes.hpp).
 //
-// Known limits: a cone, a swept curve or a helix moved whole lies off the catalogue's frame and
-// is not fitted; a kind whose parameters leave its area alone (a cylinder's radius at a fixed arc)
-// is told apart only by the unfolding; the second reading doubles the cost where the first fails.
+// Known limits: the frames were tried on moderate parameters only (a helix of many turns, a swept
+// curve of under half a wave, a very thin cone: not tried); a kind whose parameters leave its area
+// alone (a cylinder's radius at a fixed arc) is told apart only by the unfolding; the second
+// reading doubles the cost where the first fails.
 #pragma once
 
 #include <optional>
