@@ -1234,6 +1234,31 @@ TEST(StartSurface, AConeOrASweptCurveOfOtherParametersMovedWholeStartsFromTheShe
                    swept);
 }
 
+// tangent-params-3-4-00-star (make_tangent_targets.py, seed 15; its three folds): a 7-point star
+// creased once, then moved whole twice (planes that missed it). The frame turned onto its first
+// point lies on the unfolded copy exactly, but measured at the defaults' 5 points and radii scaled
+// by the area it lay farther than the frame turned by the principal axis (a star's is any), whose
+// polish ended 0.27% of the diagonal off: `--from star` started from the defaults, 36.9% away. The
+// points' count and radii are read off the shape first.
+TEST(StartSurface, AStarOfOtherPointsMovedWholeStartsFromTheSheetItUnfoldsTo) {
+  const SurfaceParameters made{{"points", 7.0},
+                               {"outer_radius", 0.09884354781292355},
+                               {"inner_radius", 0.052015951886228616}};
+  std::vector<FoldRecord> folds(3);
+  folds[0].seed = {0.0754284361, 0.0581414368};
+  folds[0].plane = {{0.08359355096504403, 0.017191825242014954, 0.00946846325},
+                    {0.19070337096855883, -0.9564138556242826, 0.22114420876686364}};
+  folds[1].seed = {0.06817850496604175, 0.05917223192497795};
+  folds[1].plane = {{0.10474202430334893, 0.006084887428761546, 0.01639977018519419},
+                    {0.4993955745426573, 0.8614099568174572, -0.09261180498703046}};
+  folds[2].seed = {0.02869134658956938, 0.004055324565259008};
+  folds[2].plane = {{0.0207738437618391, 0.01988398970364085, -0.03608542142337006},
+                    {-0.6233489943454277, -0.6763515355072013, -0.3924087558472606}};
+  FoldSession folding(makeSurface("star", made));
+  folding.applyRecords(folds);
+  expectStartsFrom(chooseStart(meshOf(folding.fixed()), "star"), made);
+}
+
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {
   FoldRecord fold;
   fold.seed = {-0.0021913213800000032, -0.07875};

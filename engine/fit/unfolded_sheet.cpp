@@ -47,6 +47,10 @@ constexpr int kFiner = 10;
 constexpr int kFinerRounds = 4;
 // Angles (radians) about a helix's axis closer than this are one strip's.
 constexpr double kStripGap = 1e-3;
+// A star's points: vertices within this share of the farthest one's radius, apart by more than
+// this angle (radians; a 12-point star's are 0.52 apart).
+constexpr double kTipShare = 1e-3;
+constexpr double kTipGap = 0.05;
 // How far (degrees) from the defaults' threshold the target's own must be to be tried too.
 constexpr double kThresholdStep = 0.5;
 
@@ -139,6 +143,30 @@ SurfaceParameters guessFor(const std::string& kind, const std::vector<glm::dvec3
     const double slant = std::hypot(height, wide - topRadius);
     guess["angle"] =
         std::min(360.0, area / (std::numbers::pi * (wide + topRadius) * slant) * 360.0);
+  } else if (kind == "star") {
+    // The points lie farthest, all at the outer radius: their count is the number of angles the
+    // farthest vertices gather at, and the inner radius follows from the area (n R r sin(pi / n)).
+    // Without it a frame turned right but measured at the defaults' count and radii lies farther
+    // than one turned wrong, and the polish cannot turn it (issue 38, a 7-point star).
+    double outer = 0.0;
+    for (const glm::dvec3& p : positions) outer = std::max(outer, std::hypot(p.x, p.y));
+    std::vector<double> tips;
+    for (const glm::dvec3& p : positions)
+      if (std::hypot(p.x, p.y) >= (1.0 - kTipShare) * outer) tips.push_back(std::atan2(p.y, p.x));
+    std::sort(tips.begin(), tips.end());
+    int count = 0;
+    for (std::size_t i = 0; i < tips.size(); ++i) {
+      const double next = i + 1 < tips.size() ? tips[i + 1] : tips.front() + 2.0 * std::numbers::pi;
+      if (next - tips[i] > kTipGap) ++count;
+    }
+    if (count >= 3 && count <= 12 && outer > 0.0) {
+      const double inner = area / (count * outer * std::sin(std::numbers::pi / count));
+      if (inner < outer) {
+        guess["points"] = count;
+        guess["outer_radius"] = outer;
+        guess["inner_radius"] = inner;
+      }
+    }
   } else if (kind == "swept_curve") {
     guess["amplitude"] = 0.5 * (hi.z - lo.z);
     guess["curve_width"] = hi.x - lo.x;
