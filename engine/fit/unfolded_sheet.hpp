@@ -5,8 +5,9 @@
 // defaults all the same (the creases and pieces it reads do not depend on the sheet), it ends
 // smooth on the sheet the design started from, where the part that never moved lies as the
 // catalogue made it; the kind's continuous parameters are then fitted to that unfolded sheet
-// (subplex on the two-sided mean distance, from the defaults' lengths scaled to the target's area;
-// a star's number of points tried 3 to 12 first), and kept where the sheet lies on it.
+// (subplex on the two-sided mean distance, from the defaults' lengths scaled to the target's area,
+// or what the shape says: a star's points counted at its farthest vertices, its inner radius from
+// the area; a star's number of points tried 3 to 12 first), and kept where the sheet lies on it.
 //
 // Inputs: the target (a folded design written as a mesh), the kind's name, a deadline (the
 // unfolding's and the fit's share of a fit's time). Output: the parameters that differ from the
