@@ -679,6 +679,50 @@ TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
   EXPECT_EQ(session.foldCount(), 3u);
 }
 
+// A fold that creases the sheet, then the sheet moved whole by three folds whose planes miss it
+// (a turn and a shift): the motion takes three whole-sheet folds, more than the one that two
+// folds leave, first, last, flipped or placed among the folds read. Where the start may be moved
+// (FitOptions::mayPlaceStart: `fit --from KIND` without parameters), it starts moved by the
+// motion and makes the creasing fold alone; the design embeds the moved sheet, passes `check`
+// and replays to the fitted sheet. Where it may not, the fit stays on the sheet as given.
+TEST(FitReading, AMotionPastTheFoldsLeftStartsTheSheetPlaced) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  FoldSession folding(initial);
+  folding.beginDragNear({0.1485, 0.099, 0.0});
+  folding.updateDrag({0.07, 0.06, 0.07});  // a corner folded up
+  ASSERT_TRUE(folding.commit());
+  for (const glm::dvec3& along :
+       {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)})
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.2));
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 300;
+  {
+    FoldSession session(initial);
+    const FitResult result = fitFolds(session, fitter, options);
+    EXPECT_FALSE(result.placedStart);
+    EXPECT_TRUE(identical(session.initial(), initial));
+  }
+  options.mayPlaceStart = true;
+  FoldSession session(initial);
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  ASSERT_TRUE(result.placedStart);
+  EXPECT_TRUE(identical(session.initial(), *result.placedStart));
+  EXPECT_EQ(session.foldCount(), 1u);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(identical(replayFolds(*result.placedStart, result.folds), session.fixed()));
+  const Design fitted(*result.placedStart, result.folds);
+  const session::DesignCheck check =
+      session::checkDesign(fitted, "fitted", *result.placedStart, session.fixed(), false);
+  EXPECT_TRUE(check.passed()) << check.firstFailure();
+}
+
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {
   const Sheet initial = makeSurface("cone", {{"resolution", 24}});
   FoldSession folding(initial);
