@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -96,6 +97,17 @@ void foldTheWholeSheetAlong(FoldSession& folding, glm::dvec3 along, double dista
     ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
 }
 
+// A corner grabbed at `grab` folded up to `drop`, then the sheet moved whole along each of
+// `alongs` in turn (foldTheWholeSheetAlong): a creasing fold and a motion of one plane each.
+void foldACornerThenMoveWhole(FoldSession& folding, const glm::dvec3& grab, const glm::dvec3& drop,
+                              const std::vector<glm::dvec3>& alongs, double distance) {
+  folding.beginDragNear(grab);
+  folding.updateDrag(drop);
+  ASSERT_TRUE(folding.commit());
+  for (const glm::dvec3& along : alongs)
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, distance));
+}
+
 // Fits `target` from `session`'s sheet (its symmetry set) with no time limit, and expects the
 // unfolding to name every fold and the fit to reach the target; returns what the fit did.
 FitResult expectFoundByUnfolding(FoldSession& session, const TriangleMesh& target,
@@ -153,13 +165,11 @@ TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
 TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   const Sheet initial = makeSurface("square", {{"resolution", 16}});
   FoldSession folding(initial);
-  folding.beginDragNear({0.1, 0.1, 0.0});
-  folding.updateDrag({0.03, 0.05, 0.06});  // a corner folded up
-  ASSERT_TRUE(folding.commit());
-  // Then the sheet's farthest point along a direction dragged on along it: the plane lies past
-  // the sheet, and all of it moves.
-  for (const glm::dvec3& along : {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)})
-    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.15));
+  // A corner folded up, then the sheet's farthest point along a direction dragged on along it:
+  // the plane lies past the sheet, and all of it moves.
+  ASSERT_NO_FATAL_FAILURE(
+      foldACornerThenMoveWhole(folding, {0.1, 0.1, 0.0}, {0.03, 0.05, 0.06},
+                               {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)}, 0.15));
   const TriangleMesh target = meshOf(folding.fixed());
 
   const FoldFitter fitter(target);
@@ -688,12 +698,9 @@ TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
 TEST(FitReading, AMotionPastTheFoldsLeftStartsTheSheetPlaced) {
   const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
   FoldSession folding(initial);
-  folding.beginDragNear({0.1485, 0.099, 0.0});
-  folding.updateDrag({0.07, 0.06, 0.07});  // a corner folded up
-  ASSERT_TRUE(folding.commit());
-  for (const glm::dvec3& along :
-       {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)})
-    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.2));
+  ASSERT_NO_FATAL_FAILURE(foldACornerThenMoveWhole(
+      folding, {0.1485, 0.099, 0.0}, {0.07, 0.06, 0.07},
+      {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)}, 0.2));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
   const FoldFitter fitter(target);
