@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -96,6 +97,17 @@ void foldTheWholeSheetAlong(FoldSession& folding, glm::dvec3 along, double dista
     ASSERT_GT(glm::distance(before.positions[v], folding.fixed().positions[v]), 1e-3);
 }
 
+// A corner grabbed at `grab` folded up to `drop`, then the sheet moved whole along each of
+// `alongs` in turn (foldTheWholeSheetAlong): a creasing fold and a motion of one plane each.
+void foldACornerThenMoveWhole(FoldSession& folding, const glm::dvec3& grab, const glm::dvec3& drop,
+                              const std::vector<glm::dvec3>& alongs, double distance) {
+  folding.beginDragNear(grab);
+  folding.updateDrag(drop);
+  ASSERT_TRUE(folding.commit());
+  for (const glm::dvec3& along : alongs)
+    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, distance));
+}
+
 // Fits `target` from `session`'s sheet (its symmetry set) with no time limit, and expects the
 // unfolding to name every fold and the fit to reach the target; returns what the fit did.
 FitResult expectFoundByUnfolding(FoldSession& session, const TriangleMesh& target,
@@ -153,13 +165,11 @@ TEST(FitReading, SixFoldsMayNeedManyOrdersTried) {
 TEST(FitReading, FoldsThatMoveTheWholeSheetAreFoundToo) {
   const Sheet initial = makeSurface("square", {{"resolution", 16}});
   FoldSession folding(initial);
-  folding.beginDragNear({0.1, 0.1, 0.0});
-  folding.updateDrag({0.03, 0.05, 0.06});  // a corner folded up
-  ASSERT_TRUE(folding.commit());
-  // Then the sheet's farthest point along a direction dragged on along it: the plane lies past
-  // the sheet, and all of it moves.
-  for (const glm::dvec3& along : {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)})
-    ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, 0.15));
+  // A corner folded up, then the sheet's farthest point along a direction dragged on along it:
+  // the plane lies past the sheet, and all of it moves.
+  ASSERT_NO_FATAL_FAILURE(
+      foldACornerThenMoveWhole(folding, {0.1, 0.1, 0.0}, {0.03, 0.05, 0.06},
+                               {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39)}, 0.15));
   const TriangleMesh target = meshOf(folding.fixed());
 
   const FoldFitter fitter(target);
@@ -677,6 +687,47 @@ TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
   FoldSession session(initial);
   const FitResult result = expectFoundByUnfolding(session, target, 3, 300);
   EXPECT_EQ(session.foldCount(), 3u);
+}
+
+// A fold that creases the sheet, then the sheet moved whole by three folds whose planes miss it
+// (a turn and a shift): the motion takes three whole-sheet folds, more than the one that two
+// folds leave, first, last, flipped or placed among the folds read. Where the start may be moved
+// (FitOptions::mayPlaceStart: `fit --from KIND` without parameters), it starts moved by the
+// motion and makes the creasing fold alone; the design embeds the moved sheet, passes `check`
+// and replays to the fitted sheet. Where it may not, the fit stays on the sheet as given.
+TEST(FitReading, AMotionPastTheFoldsLeftStartsTheSheetPlaced) {
+  const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
+  FoldSession folding(initial);
+  ASSERT_NO_FATAL_FAILURE(foldACornerThenMoveWhole(
+      folding, {0.1485, 0.099, 0.0}, {0.07, 0.06, 0.07},
+      {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)}, 0.2));
+  const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
+
+  const FoldFitter fitter(target);
+  FitOptions options;
+  options.maxFolds = 2;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = 300;
+  {
+    FoldSession session(initial);
+    const FitResult result = fitFolds(session, fitter, options);
+    EXPECT_FALSE(result.placedStart);
+    EXPECT_TRUE(identical(session.initial(), initial));
+  }
+  options.mayPlaceStart = true;
+  FoldSession session(initial);
+  const FitResult result = fitFolds(session, fitter, options);
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  ASSERT_TRUE(result.placedStart);
+  EXPECT_TRUE(identical(session.initial(), *result.placedStart));
+  EXPECT_EQ(session.foldCount(), 1u);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  testing::expectInvariants(session.fixed(), session.initial());
+  EXPECT_TRUE(identical(replayFolds(*result.placedStart, result.folds), session.fixed()));
+  const Design fitted(*result.placedStart, result.folds);
+  const session::DesignCheck check =
+      session::checkDesign(fitted, "fitted", *result.placedStart, session.fixed(), false);
+  EXPECT_TRUE(check.passed()) << check.firstFailure();
 }
 
 TEST(FitReading, WholeSheetFoldsThatReachACreaselessTargetAreKept) {

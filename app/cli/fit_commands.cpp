@@ -66,15 +66,17 @@ TriangleMesh shapeOf(const std::string& path) {
 // `deadline`: when the choice stops measuring more sheets (a share of --time); `work`: the same
 // share counted in work (work_share.hpp), for the sheets measured and the choice by the first
 // step toward a saddle (the tube rings' probe times its batches by the wall clock's moment,
-// timed_batches.hpp, so it keeps `deadline`).
+// timed_batches.hpp, so it keeps `deadline`). `chosen`: set when the sheet was chosen or sized
+// here (no .obj and no parameters given), so the fit may move it whole (FitOptions::mayPlaceStart).
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
                    const std::string& output, const Deadline& deadline, const Deadline& work,
-                   std::shared_ptr<const TubeChains>& tubeChains) {
+                   std::shared_ptr<const TubeChains>& tubeChains, bool& chosen) {
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
     parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
   const bool isObj = fs::path(from.surface).extension() == ".obj";
   Design design;
+  chosen = !isObj && !parametersGiven;
   if (isObj || parametersGiven) {
     design = designFromSurfaceOptions(from, command, output);
   } else {
@@ -428,8 +430,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                                       std::chrono::duration<double>(kStartShare * options.seconds)))
             : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
+  bool chosen = false;
   Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
-                              startShare, tubeChains);
+                              startShare, tubeChains, chosen);
   const Sheet initial = initialSheet(design, options.output);
   FoldSession session(initial);
   if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
@@ -448,6 +451,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   fit.started = started;
   fit.maxEvaluations = options.evaluations;
   fit.tubeChains = tubeChains;
+  fit.mayPlaceStart = chosen && design.symmetry.empty();
   fit.cancelled = &InterruptGuard::flag();
   fit.progress = [&](const FitProgress& step) {
     if (step.fold == 0) {
@@ -494,6 +498,12 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
     fit.seconds = std::max(
         1e-3, fit.seconds - pictureReserve(*renderer, initial, fitter->measuredTarget().query()));
   const FitResult result = fitFolds(session, *fitter, fit);
+  if (result.placedStart) {
+    design.surface = *result.placedStart;  // the folds are made on it: embedded as it lies
+    std::cout << "start placed: the sheet moved whole onto the target's reading (its motion took "
+                 "more whole-sheet folds than --folds left), then the folds read"
+              << std::endl;
+  }
   design.folds = result.folds;
   const bool interrupted = InterruptGuard::flag().load();
   fitEnd = fitEndLine(result, interrupted, started);

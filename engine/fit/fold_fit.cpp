@@ -77,6 +77,8 @@ constexpr std::size_t kFlipTries = 8;
 // sheet lies after each fold read), and placements made and measured.
 constexpr std::size_t kPlacedWays = 12;
 constexpr std::size_t kPlacedTries = 6;
+// Ways whose motion starts the sheet placed (FitOptions::mayPlaceStart), at most: each a replay.
+constexpr std::size_t kPlacedStartWays = 2;
 // Seeds tried for a fold read on a symmetric design, beyond the one the unfolding names.
 constexpr std::size_t kOtherSeeds = 12;
 // Toward a smooth target, a fold kept leaves the exact Hausdorff distance at most this much above
@@ -1477,6 +1479,33 @@ class FitRun {
       for (std::size_t way = 0; way < motions.size(); ++way)
         if (!withinCount[way] && tryPlaced(motions[way])) return true;
     }
+    // No way made within the folds left: where the start may be placed, the sheet moved whole
+    // by the motion instead, and only the folds read.
+    if (options_.mayPlaceStart && !symmetry && !reading.passed())
+      for (std::size_t way = 0; way < std::min(motions.size(), kPlacedStartWays); ++way)
+        if (!withinCount[way] && startPlaced(motions[way], plan, deadline)) return true;
+    return false;
+  }
+
+  // The session's initial sheet moved by `motion` (onto the unfolded target) as the start, and
+  // the folds read made on it: kept, with the session holding the moved sheet as its initial
+  // one, only when that reaches the target; else the session and the best found are as before.
+  bool startPlaced(const RigidMotion& motion, const TargetUnfolding& plan,
+                   const Deadline& deadline) {
+    if (deadline.passed()) return false;
+    Sheet placed = session_.initial();
+    for (glm::dvec3& p : placed.positions) p = motion(p);
+    Sheet before = session_.initial();
+    const FoldSequence bestBefore = best_;
+    session_.restartFrom(placed);
+    const std::unique_ptr<FoldSession> branch = sessionFor({});
+    const FoldSequence made = replay(plan, *branch, session_.initial(), deadline);
+    if (!deadline.passed() && made.groups.size() <= options_.maxFolds && offer(made, *branch)) {
+      result_.placedStart = std::move(placed);
+      return true;
+    }
+    session_.restartFrom(std::move(before));
+    best_ = bestBefore;
     return false;
   }
 

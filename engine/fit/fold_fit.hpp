@@ -227,6 +227,12 @@ struct FitOptions {
   // The tube rings' chains the start's probe grew (reviseTubeByFirstStep): the search's first
   // step grows them on from there, on the sheet they were grown on.
   std::shared_ptr<const TubeChains> tubeChains;
+  // The start may be moved whole (the caller chose it: `fit --from KIND` without parameters, or
+  // no --from; never a sheet whose parameters or folds were given): where the target's reading
+  // finds its creasing folds but the motion of the whole sheet takes more planes than the folds
+  // left allow, the fit starts from the sheet moved by that motion and makes only the creasing
+  // folds (FitResult::placedStart). Only without symmetry and on a session without folds.
+  bool mayPlaceStart = false;
 };
 
 struct FitResult {
@@ -241,6 +247,9 @@ struct FitResult {
   // its development), summed over the search's steps: each step scores its folds on that many
   // fewer samples than FitSettings::sheetSamples. 0 on any sane sheet.
   std::uint64_t droppedSamples = 0;
+  // Set where the fit started from the session's initial sheet moved whole (mayPlaceStart): the
+  // session then holds it as its initial sheet, and the design must embed it as its surface.
+  std::optional<Sheet> placedStart;
 };
 
 // Folds `session`'s design toward the fitter's target: a beam search over fold sequences (the

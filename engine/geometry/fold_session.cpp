@@ -36,6 +36,20 @@ FoldSession::FoldSession(Sheet initial)
   keyframes_.push_back(initial_);
 }
 
+void FoldSession::restartFrom(Sheet initial) {
+  initial_ = std::make_shared<const Sheet>(std::move(initial));
+  epsilon_ = sheetEpsilon(*initial_);
+  dragging_ = folded_ = sliver_ = grabInserted_ = previewing_ = false;
+  grabVertex_ = kNoIndex;
+  history_.clear();
+  applied_ = 0;
+  keyframes_.assign(1, initial_);
+  symmetric_.reset();
+  previewFolder_.reset();
+  setFixed(*initial_);
+  ++designRevision_;
+}
+
 void FoldSession::setFixed(Sheet sheet) {
   fixed_ = std::move(sheet);
   temporal_ = fixed_;

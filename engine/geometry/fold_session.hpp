@@ -119,6 +119,10 @@ class FoldSession {
   bool canRedo() const { return applied_ < history_.size(); }
   // Applies recorded folds as committed (a design opened), groups as recorded; drops any redo.
   void applyRecords(const std::vector<FoldRecord>& folds);
+  // Starts over from `initial`: no folds, no history, no symmetry, no drag (a fit that moved its
+  // start whole, FitResult::placedStart): a session cannot be moved or assigned (its workspace's
+  // memory pool), so it starts over in place.
+  void restartFrom(Sheet initial);
   // Undo and redo take a symmetric fold's group (the fold and its images) at once.
   bool undo();
   bool redo();
