@@ -12,7 +12,8 @@ a vertex of an earlier crease (an edge whose faces turn by over 20 degrees) and 
 that crease, 10-40% of the diagonal, turned up to 30 degrees off it: the fold's bisector plane
 then stands across the crease and cuts it (and the flap it bounds). The first fold grabs a
 uniform vertex and drags it 15-45% of the diagonal in a uniform direction. Every catalogue
-surface at its defaults (recipe `crossing`). A fold is kept when it moved the sheet and `check`
+surface at its defaults (recipe `crossing`), or at parameters drawn by make_tangent_targets.py's
+rules (`--recipes crossing-params`: another size, radius, cone angle, sine, helix). A fold is kept when it moved the sheet and `check`
 passes whole. Targets are `export --obj` less its `vt` lines; manifest.jsonl as
 `reach_targets.py make` writes it.
 """
@@ -20,9 +21,10 @@ import math
 
 import numpy as np
 
+from make_tangent_targets import drawn_parameters
 from target_folds import cli_generator_main, unit_vector
 
-RECIPES = ["crossing"]
+RECIPES = ["crossing"]  # the default; `--recipes crossing-params` draws the parameters
 
 
 def crease_edges(v, faces):
@@ -66,4 +68,6 @@ def choose(vertices, faces, diag, rng):
 
 if __name__ == "__main__":
     cli_generator_main(__doc__.splitlines()[0], RECIPES, "1-2,3-4,5-8",
-                       lambda recipe, vertices, faces, diag, rng: choose(vertices, faces, diag, rng))
+                       lambda recipe, vertices, faces, diag, rng: choose(vertices, faces, diag, rng),
+                       lambda recipe, surface, rng:
+                       drawn_parameters(surface, rng) if recipe == "crossing-params" else {})
