@@ -20,10 +20,10 @@ nearly flat, a narrow tube. A fold is kept when it moved the sheet and `check` p
 Targets are `export --obj` less its `vt` lines; manifest.jsonl as `reach_targets.py make` writes it
 (with the parameters).
 """
-import math
 
 import numpy as np
 
+from make_crossing_targets import crease_edges, turned_off
 from target_folds import cli_generator_main, unit_vector
 
 RECIPES = ["chain-extreme"]
@@ -50,17 +50,9 @@ def extreme_parameters(surface, rng):
 
 
 def sharp_edges(v, faces):
-    """Edges whose two faces turn by over 20 degrees: (midpoint, unit direction) arrays."""
-    tri = v[np.array(faces)]
-    normals = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
-    around = {}
-    for f, (a, b, c) in enumerate(faces):
-        for e in ((a, b), (b, c), (c, a)):
-            around.setdefault((min(e), max(e)), []).append(f)
-    cos20 = math.cos(math.radians(20.0))
-    edges = [e for e, fs in around.items()
-             if len(fs) == 2 and normals[fs[0]].dot(normals[fs[1]]) < cos20]
+    """Edges whose two faces turn by over 20 degrees (make_crossing_targets.py's): (midpoint,
+    unit direction) arrays."""
+    edges = crease_edges(v, faces)
     if not edges:
         return np.zeros((0, 3)), np.zeros((0, 3))
     a = v[np.array([e[0] for e in edges])]
@@ -105,13 +97,9 @@ class Chain:
             return grab.tolist(), drop.tolist()
         k = rng.randrange(len(mid))
         point, along = mid[k], direction[k]
-        off = np.array(unit_vector(rng))
-        off -= off.dot(along) * along
-        if np.linalg.norm(off) < 1e-6:
+        normal = turned_off(along, 35.0, rng)
+        if normal is None:
             return None
-        off /= np.linalg.norm(off)
-        turn = math.radians(rng.uniform(0.0, 35.0))
-        normal = math.cos(turn) * along + math.sin(turn) * off
         side = (v - point) @ normal
         lo, hi = 0.05 * diag, 0.40 * diag
         sign = rng.choice([-1.0, 1.0])

@@ -41,6 +41,18 @@ def crease_edges(v, faces):
             if len(fs) == 2 and normals[fs[0]].dot(normals[fs[1]]) < cos20]
 
 
+def turned_off(along, most_degrees, rng):
+    """The unit vector `along` turned by up to `most_degrees` toward a uniform direction across
+    it (None where the drawn direction lies along it)."""
+    off = np.array(unit_vector(rng))
+    off -= off.dot(along) * along
+    if np.linalg.norm(off) < 1e-6:
+        return None
+    off /= np.linalg.norm(off)
+    turn = math.radians(rng.uniform(0.0, most_degrees))
+    return math.cos(turn) * along + math.sin(turn) * off
+
+
 def choose(vertices, faces, diag, rng):
     v = np.array(vertices)
     creases = crease_edges(v, faces)
@@ -55,13 +67,9 @@ def choose(vertices, faces, diag, rng):
     if rng.random() < 0.5:
         along = -along
     # Turned off the crease by up to 30 degrees in a uniform direction across it.
-    off = np.array(unit_vector(rng))
-    off -= off.dot(along) * along
-    if np.linalg.norm(off) < 1e-6:
+    direction = turned_off(along, 30.0, rng)
+    if direction is None:
         return None
-    off /= np.linalg.norm(off)
-    turn = math.radians(rng.uniform(0.0, 30.0))
-    direction = math.cos(turn) * along + math.sin(turn) * off
     grab = v[a if rng.random() < 0.5 else b]
     return grab.tolist(), (grab + diag * rng.uniform(0.10, 0.40) * direction).tolist()
 
