@@ -9,7 +9,7 @@ curvefold`, built in build/python), by rules of its own, and measures with the c
     PYTHONPATH=build/python /usr/bin/python3 bench/reach_targets.py make OUT [--per-bucket K] [--seed S]
         [--recipes a,b] [--buckets 1-2,3-4,5-8] [--surfaces swept_curve,cone]
     /usr/bin/python3 bench/reach_targets.py fit OUT [--time 20] [--curvefold build/app/curvefold]
-        [--only RECIPE] [--bucket 5-8]
+        [--only RECIPE] [--bucket 5-8] [--evaluations N] [--kind-only] [--label L]
 
 Recipes (each target a catalogue surface; the surfaces taken in turn, a fold count drawn in the
 bucket; a fold kept only when it moves part of the sheet and the design still passes `check`):
@@ -45,6 +45,7 @@ import math
 import os
 import random
 import re
+import resource
 import subprocess
 import sys
 import time
@@ -255,17 +256,21 @@ def run_fit(args, entry):
     cmd = [args.curvefold, "fit", target, "--from", entry["surface"], "--folds",
            str(max(6, entry["folds"]) if args.folds is None else args.folds), "--time", str(args.time),
            "-o", fitted]
-    for name, value in entry["parameters"].items():
+    if args.evaluations:  # clock-free: the same design on any machine, whatever the load
+        cmd += ["--evaluations", str(args.evaluations), "--seed", "1"]
+    for name, value in ({} if args.kind_only else entry["parameters"]).items():
         cmd += ["--" + name, repr(float(value)) if name != "points" else str(value)]
     if entry["symmetry"]:
         cmd += ["--symmetry", entry["symmetry"]]
-    started = time.monotonic()
+    started, cpu = time.monotonic(), resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
     run = subprocess.run(cmd, capture_output=True, text=True)
     seconds = time.monotonic() - started
+    user = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - cpu
     if run.returncode != 0:
         return {"error": (run.stderr or run.stdout).strip().splitlines()[-1:], "seconds": seconds}
     unfolded = "the target unfolded" in run.stdout
     return {"hausdorff_percent": hausdorff_percent(args, entry["name"]), "seconds": seconds,
+            "user_seconds": user,
             "unfolded": unfolded,
             "stop": [l for l in run.stdout.splitlines() if l.startswith("stopped")]}
 
@@ -298,8 +303,8 @@ def command_fit(args):
 
 
 def table(entries, done):
-    print("| recipe | folds | targets | Hausdorff <= 1% | <= 3% | unfolded | median time |")
-    print("| --- | --- | --- | --- | --- | --- | --- |")
+    print("| recipe | folds | targets | Hausdorff <= 1% | <= 3% | unfolded | median time | median user |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     groups = {}
     for e in entries:
         if e["name"] in done:
@@ -307,9 +312,10 @@ def table(entries, done):
     for (recipe, bucket), rs in groups.items():
         h = [r.get("hausdorff_percent", float("inf")) for r in rs]
         times = sorted(r["seconds"] for r in rs)
+        users = sorted(r.get("user_seconds", float("nan")) for r in rs)
         print(f"| {recipe} | {bucket} | {len(rs)} | {sum(x <= 1 for x in h)} | "
               f"{sum(x <= 3 for x in h)} | {sum(bool(r.get('unfolded')) for r in rs)} | "
-              f"{times[len(times) // 2]:.1f} s |")
+              f"{times[len(times) // 2]:.1f} s | {users[len(users) // 2]:.1f} s |")
 
 
 def main():
@@ -330,6 +336,10 @@ def main():
     fit.add_argument("--only", default="")
     fit.add_argument("--bucket", default="")
     fit.add_argument("--label", default="run")
+    fit.add_argument("--evaluations", type=int, default=0,
+                     help="fit --evaluations N --seed 1 (with a --time long enough: clock-free)")
+    fit.add_argument("--kind-only", action="store_true",
+                     help="--from the surface's kind alone, not the target's parameters")
     args = parser.parse_args()
     (command_make if args.command == "make" else command_fit)(args)
 

@@ -1310,6 +1310,30 @@ TEST(StartSurface, AStarOfOtherPointsMovedWholeStartsFromTheSheetItUnfoldsTo) {
   expectStartsFrom(chooseStart(meshOf(folding.fixed()), "star"), made);
 }
 
+// tangent-params-3-4-00-swept_curve (make_tangent_targets.py, seed 15; its three folds): a sine
+// of amplitude 0.026 and wavelength 0.127 bends its facets by up to 19.2 degrees, more than nine
+// tenths of its edges (9.3) and than the defaults' (a threshold of 26.6 reads its creases, but
+// the defaults' facets bend less: 1.2 m of its own bends were left as crease; the target's own
+// threshold of 15.9 read its facets as creases). `--from swept_curve` started from the defaults,
+// 11.6% away. Its creases bend by 77.5 degrees and more: the gap between parts them.
+TEST(StartSurface, ASweptCurveWhoseFacetsBendAsMuchAsACreaseStartsFromTheSheetItUnfoldsTo) {
+  const SurfaceParameters made{{"amplitude", 0.025786187231774},
+                               {"wavelength", 0.12664931558204076}};
+  std::vector<FoldRecord> folds(3);
+  folds[0].seed = {-0.01916571151236993, 0.0701925139};
+  folds[0].plane = {{0.01164351236393005, 0.032312734520000004, 0.025993616036697885},
+                    {0.395369121333999, -0.6258573810039787, 0.6722988892884045}};
+  folds[1].seed = {-0.058447648415007505, 0.09999999967207115};
+  folds[1].plane = {{0.033292494930235825, -0.024730326310061057, 0.13194237815024584},
+                    {0.16868583801135517, -0.21383010095699836, 0.9621963292276305}};
+  folds[2].seed = {-0.0007328137582164286, -0.1};
+  folds[2].plane = {{0.042580942865611635, -0.145622274330513, 0.23055727505877305},
+                    {0.4350319109652398, 0.5503296524518875, 0.7126601645062789}};
+  FoldSession folding(makeSurface("swept_curve", made));
+  folding.applyRecords(folds);
+  expectStartsFrom(chooseStart(meshOf(folding.fixed()), "swept_curve"), made);
+}
+
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {
   FoldRecord fold;
   fold.seed = {-0.0021913213800000032, -0.07875};

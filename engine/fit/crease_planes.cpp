@@ -182,6 +182,29 @@ double facetBendDegrees(const TriangleMesh& target) {
   return facets;
 }
 
+std::optional<double> facetBendBelowGap(const TriangleMesh& target, double* above) {
+  const double floor = facetBendDegrees(target);
+  std::vector<double> bends;
+  forEachInteriorEdge(target,
+                      [&](std::uint32_t, std::uint32_t, const auto&, const auto&, double degrees) {
+                        if (degrees >= floor) bends.push_back(degrees);
+                      });
+  std::sort(bends.begin(), bends.end());
+  // Bends under a degree part by large ratios from nothing: they are facets whatever follows.
+  double best = kFacetGap, lower = 0.0, upper = 0.0;
+  for (std::size_t k = 0; k + 1 < bends.size(); ++k) {
+    const double low = std::max(bends[k], 1.0), ratio = bends[k + 1] / low;
+    if (ratio >= best) {
+      best = ratio;
+      lower = bends[k];
+      upper = bends[k + 1];
+    }
+  }
+  if (upper <= 0.0) return std::nullopt;
+  if (above) *above = upper;
+  return lower;
+}
+
 double sharpEdgeThresholdFor(double facetBendDegrees) {
   return std::max(kMinimumSharpDegrees, 1.5 * facetBendDegrees + 2.0);
 }

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "engine/geometry/reflection.hpp"
@@ -58,6 +59,13 @@ double sharpEdgeThreshold(const TriangleMesh& initialSheet);
 // creases are over a tenth of the edge length, or the sheet's facets bend unevenly (a swept
 // curve, a helix), it may fall below the facets' largest bend.
 double facetBendDegrees(const TriangleMesh& target);
+// How much a folded target's facets bend where they bend unevenly (a swept curve's facets bend by
+// its curvature, up to as much as nine tenths of its edges and more): the largest bend below the
+// widest gap in its edges' bends (as a ratio: kFacetGap at least) above facetBendDegrees, the
+// facets' bends below it and the creases' above. Empty where no such gap parts them (a shallow
+// crease among the facets' bends). `above`: the gap's upper end (the least crease bend), degrees.
+std::optional<double> facetBendBelowGap(const TriangleMesh& target, double* above = nullptr);
+constexpr double kFacetGap = 2.0;
 double sharpEdgeThresholdFor(double facetBendDegrees);
 
 }  // namespace curvefold

@@ -723,8 +723,19 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
     return found;
   const double bend = facetBendDegrees(target), own = sharpEdgeThresholdFor(bend);
   if (std::abs(own - threshold) > kThresholdStep && !deadline.passed())
-    return fromUnfolding(target, *info, defaults, own, bend, deadline);
-  return std::nullopt;
+    if (std::optional<SurfaceParameters> found =
+            fromUnfolding(target, *info, defaults, own, bend, deadline))
+      return found;
+  // Facets that bend unevenly (a swept curve's by its curvature) bend more than nine tenths of
+  // the edges: read as creases at `own`, and left as crease after it. The bends below the gap
+  // that parts them from the creases are facets (the threshold kept under the gap's top).
+  double creases = 0.0;
+  const std::optional<double> uneven = facetBendBelowGap(target, &creases);
+  if (!uneven || deadline.passed()) return std::nullopt;
+  const double gapped = std::min(sharpEdgeThresholdFor(*uneven), std::sqrt(*uneven * creases));
+  if (std::abs(gapped - own) <= kThresholdStep && std::abs(*uneven - bend) <= kThresholdStep)
+    return std::nullopt;  // read so above
+  return fromUnfolding(target, *info, defaults, gapped, *uneven, deadline);
 }
 
 }  // namespace curvefold

@@ -26,12 +26,14 @@
 // farthest point). A choice of sides that lies near a sheet is polished before the frames. Where
 // the defaults' sharp-edge threshold reads nothing (a tube of another radius or arc bends its
 // facets more, or its crease less, than the defaults'), the reading runs again with the target's
-// own (facetBendDegrees, crease_planes.hpp).
+// own (facetBendDegrees, crease_planes.hpp), and where that reads nothing either (facets that bend
+// unevenly, a swept curve's up to as much as a crease's threshold), a third time with the bends
+// below the widest gap in the target's bends taken as facets (facetBendBelowGap).
 //
 // Known limits: the frames were tried on moderate parameters only (a helix of many turns, a swept
 // curve of under half a wave, a very thin cone: not tried); a kind whose parameters leave its area
 // alone (a cylinder's radius at a fixed arc) is told apart only by the unfolding; the second
-// reading doubles the cost where the first fails.
+// and third readings add to the cost where the first fails.
 #pragma once
 
 #include <optional>
