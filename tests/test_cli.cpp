@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -40,6 +41,25 @@ TEST_F(Cli, SurfacesListsEveryInitialSurface) {
                            "cone", "swept_curve", "helix_tangent"})
     EXPECT_NE(r.out.find(std::string(name) + ":"), std::string::npos) << name;
   EXPECT_NE(r.out.find("--resolution"), std::string::npos);
+}
+
+// A setting of the environment that takes named values refuses any other in one line naming the
+// variable and its values (CURVEFOLD_VK_VALIDATION=yes used to leave the layer off without a word).
+TEST_F(Cli, AnUnknownValueOfAnEnvironmentSettingIsRefused) {
+  for (const auto& [variable, value, takes] :
+       {std::tuple{"CURVEFOLD_REDRAW", "sometimes", "\"always\""},
+        std::tuple{"CURVEFOLD_VK_VALIDATION", "yes", "\"1\" or \"0\""}}) {
+    const CommandResult r = run("surfaces", std::string(variable) + "=" + value);
+    EXPECT_EQ(r.exitCode, 1) << variable;
+    EXPECT_EQ(r.out, "") << variable;
+    EXPECT_EQ(r.err, std::string("curvefold: error: ") + variable + "=\"" + value +
+                         "\": not a value it takes (" + takes + ", or unset)\n");
+  }
+  for (const char* allowed : {"CURVEFOLD_REDRAW=always", "CURVEFOLD_VK_VALIDATION=0",
+                              "CURVEFOLD_VK_VALIDATION=1", "CURVEFOLD_REDRAW="}) {
+    const CommandResult r = run("surfaces", allowed);
+    EXPECT_EQ(r.exitCode, 0) << allowed << ": " << r.err;
+  }
 }
 
 TEST_F(Cli, EverySubcommandHasHelp) {

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli/commands.hpp"
+#include "engine/text/environment_choice.hpp"
 #include "engine/text/excerpt.hpp"
 
 namespace {
@@ -84,6 +85,8 @@ int main(int argc, char** argv) {
   curvefold::cli::addXrCommand(app);
   curvefold::cli::requireDecimalNumbers(app);
   try {
+    // A misspelt setting (CURVEFOLD_REDRAW, CURVEFOLD_VK_VALIDATION) stops every command at once.
+    curvefold::checkEnvironmentChoices();
     app.parse(argc, argv);
     if (app.get_subcommands().empty()) curvefold::cli::runDefault();
   } catch (const CLI::ParseError& e) {

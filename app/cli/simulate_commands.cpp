@@ -41,6 +41,7 @@
 #include "engine/simulation/static_solver.hpp"
 #include "engine/simulation_vk/gpu_dynamic_solver.hpp"
 #include "engine/text/decimal.hpp"
+#include "engine/text/environment_choice.hpp"
 #include "engine/text/excerpt.hpp"
 #include "engine/text/input_path.hpp"
 
@@ -503,8 +504,7 @@ void addSimulateCommand(CLI::App& app) {
     if (options->gpu) {
       if (!renderer) {
         ContextOptions contextOptions;
-        const char* validation = std::getenv("CURVEFOLD_VK_VALIDATION");
-        contextOptions.instance.validation = validation && std::string(validation) == "1";
+        contextOptions.instance.validation = vulkanValidationAsked();
         gpuContext = std::make_unique<VulkanContext>(contextOptions);
       }
       gpuSolver =

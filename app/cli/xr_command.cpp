@@ -1,6 +1,5 @@
 // `curvefold xr [DESIGN|SURFACE|RECORDING] [--record REC] [--hands] [--left-handed]`, and plain
 // `curvefold` choosing XR, the desktop window, or a line saying what is missing.
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -8,6 +7,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/interrupt_guard.hpp"
 #include "app/xr/xr_app.hpp"
+#include "engine/text/environment_choice.hpp"
 #include "interaction/xr/xr_check.hpp"
 
 namespace curvefold::cli {
@@ -79,8 +79,7 @@ void addXrCommand(CLI::App& app) {
     if (!run.exportDir.empty() && std::filesystem::exists(run.exportDir) &&
         !std::filesystem::is_directory(run.exportDir))
       throw UsageError("--export-dir " + run.exportDir + ": exists and is not a folder");
-    if (const char* v = std::getenv("CURVEFOLD_VK_VALIDATION"); v && std::string(v) == "1")
-      run.validation = true;
+    if (vulkanValidationAsked()) run.validation = true;
     runXr(run);
   });
 }

@@ -48,6 +48,7 @@
 #include "engine/render/swapchain_target.hpp"
 #include "engine/render/vulkan_objects.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "engine/text/environment_choice.hpp"
 #include "sim_input/player.hpp"
 
 namespace curvefold::desktop {
@@ -137,9 +138,7 @@ ContextOptions contextOptionsFor(GLFWwindow* window, bool validation) {
   const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
   for (std::uint32_t i = 0; i < extensionCount; ++i)
     contextOptions.instance.extensions.push_back(extensions[i]);
-  contextOptions.instance.validation =
-      validation || (std::getenv("CURVEFOLD_VK_VALIDATION") &&
-                     std::string(std::getenv("CURVEFOLD_VK_VALIDATION")) == "1");
+  contextOptions.instance.validation = validation || vulkanValidationAsked();
   contextOptions.device.extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
   contextOptions.createSurface = [window](VkInstance instance) {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
@@ -519,8 +518,7 @@ void DesignerWindow::run() {
 void DesignerWindow::waitForChange() {
   const Clock::time_point waitStart = Clock::now();
   // CURVEFOLD_REDRAW=always: every frame drawn at once, as before the pacer (to measure both).
-  static const bool always =
-      std::getenv("CURVEFOLD_REDRAW") && std::string(std::getenv("CURVEFOLD_REDRAW")) == "always";
+  static const bool always = redrawAlways();
   while (!always) {
     if (state_.events) pacer_.changed();
     state_.events = false;

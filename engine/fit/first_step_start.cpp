@@ -106,11 +106,12 @@ std::string vectorText(const glm::dvec3& v) {
   return text;
 }
 
-}  // namespace
-
-std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
-                                          const TriangleMesh& target, const std::string& kind,
-                                          double share) {
+// paperGivenBack with the target's arc samples (sampleSurface(target, kArcSamples, 5)) given:
+// startByFirstStep gives each candidate's paper back twice (all, half) from one sampling.
+std::optional<PlacedStart> paperGivenBackFrom(const Sheet& flat, const FoldSuggestion& step,
+                                              const TriangleMesh& target,
+                                              const std::vector<SurfaceSample>& samples,
+                                              const std::string& kind, double share) {
   const std::optional<glm::dvec3> normal = flatNormal(flat);
   if (!normal || step.folds.empty() || flat.positions.empty()) return std::nullopt;
   glm::dvec3 centre(0.0), lo(1e300), hi(-1e300);
@@ -130,7 +131,6 @@ std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestio
   const glm::dvec3 across = glm::cross(*normal, line);
   // Each end's reach: the flat sheet's, the sheet's after the step, the target's.
   const glm::dvec3 ends[4] = {line, -line, across, -across};
-  const std::vector<SurfaceSample> samples = sampleSurface(target, kArcSamples, 5);
   double grown[4];
   bool any = false;
   for (int i = 0; i < 4; ++i) {
@@ -194,12 +194,22 @@ std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestio
   return out;
 }
 
+}  // namespace
+
+std::optional<PlacedStart> paperGivenBack(const Sheet& flat, const FoldSuggestion& step,
+                                          const TriangleMesh& target, const std::string& kind,
+                                          double share) {
+  return paperGivenBackFrom(flat, step, target, sampleSurface(target, kArcSamples, 5), kind, share);
+}
+
 std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& candidates,
                                                const FoldFitter& fitter, const Deadline& deadline,
                                                bool square) {
   std::optional<FirstStepStart> best;
   double bestScore = 0.0;
   bool cutShort = false;
+  // The target's arc samples for paperGivenBack: drawn once, at the first sheet given paper.
+  std::optional<std::vector<SurfaceSample>> arcSamples;
   // The first step of `start` measured; kept when it lands nearest. Returns the step.
   auto tryStart = [&](const PlacedStart& start, bool grown) {
     FoldSession session(start.sheet);
@@ -260,8 +270,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
         cutShort = true;
         break;
       }
-      if (const std::optional<PlacedStart> grown =
-              paperGivenBack(candidate.sheet, steps.front(), fitter.target(), kind, share))
+      if (!arcSamples) arcSamples = sampleSurface(fitter.target(), kArcSamples, 5);
+      if (const std::optional<PlacedStart> grown = paperGivenBackFrom(
+              candidate.sheet, steps.front(), fitter.target(), *arcSamples, kind, share))
         tryStart(*grown, true);
     }
   }
@@ -283,11 +294,16 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   std::vector<PlacedStart> candidates{
       {start.surface, start.parameters, start.placement,
        start.placed ? *start.placed : makeSurface(start.surface, start.parameters)}};
+  // The target's samples, drawn once for the footprint, the least spread and the bent sheets.
+  std::optional<std::vector<SurfaceSample>> drawn;
+  auto samples = [&]() -> const std::vector<SurfaceSample>& {
+    if (!drawn) drawn = sampleSurface(fitter.target(), kSamples, 3);
+    return *drawn;
+  };
   // A disk asked for is cut to the target's footprint too (a pringle's rim), though flat.
   std::size_t own = 0;  // the start itself among the candidates
   if ((kind.empty() && !flatNormal(candidates.front().sheet)) || kind == "disk") {
-    std::vector<PlacedStart> footprint =
-        footprintStarts(sampleSurface(fitter.target(), kSamples, 3), kind);
+    std::vector<PlacedStart> footprint = footprintStarts(samples(), kind);
     // A round footprint's disks go first, before the start itself: under a short --time the
     // clock may leave only the first candidate measured, and a curved sheet's first step toward
     // a round saddle lands farther (hypar_disk_scan: the swept parabola's 1.98% against the
@@ -304,8 +320,7 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   }
   // A steep saddle's sheet across its mean normal, and as the least spread laid it (on edge).
   if (kind.empty() || kind == "square" || kind == "rectangle")
-    for (PlacedStart& other : leastSpreadStarts(sampleSurface(fitter.target(), kSamples, 3),
-                                                surfaceArea(fitter.target()), kind))
+    for (PlacedStart& other : leastSpreadStarts(samples(), surfaceArea(fitter.target()), kind))
       candidates.push_back(std::move(other));
   // The sheet bent along the target's curvatures (bent_start.hpp), its other direction left to
   // the pleats and its rulings' ends to the tucks: last, so that under a short --time the clock
@@ -315,8 +330,8 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   // target's paper (hypar_steep_mm's square along its diagonals: about 3.6 times, by its arc of
   // 512 mm a side), which its folds would mostly fold away.
   if (kind.empty() || kind == "square" || kind == "rectangle") {
-    std::vector<PlacedStart> bent = bentStarts(sampleSurface(fitter.target(), kSamples, 3),
-                                               kind == "square" ? "square" : "rectangle");
+    std::vector<PlacedStart> bent =
+        bentStarts(samples(), kind == "square" ? "square" : "rectangle");
     std::erase_if(bent, [&](const PlacedStart& sheet) {
       const DevelopmentBounds bounds = developmentBounds(sheet.sheet);
       return (bounds.high.x - bounds.low.x) * (bounds.high.y - bounds.low.y) >

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <random>
 #include <sstream>
+#include <tuple>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -994,15 +995,17 @@ class FitRun {
     // What one fold kept costs at the end (its exact measure and the caller's report of it):
     // about the start's measure, twice over (the report, and a sheet grown by folds).
     foldCost_ = 2.0 * result_.steps.back().seconds - 2.0 * startedAt_;
-    if (options_.progress) options_.progress(result_.steps.back());
     FoldSequence root{{}, {}, fitter_.approximateDistance(session_.fixed())};
     best_ = bestMonotone_ = root;
     result_.stopReason = "reached the most folds asked for";
     // A bowl from a flat sheet (the nested rings' start) has no creases to read: on a scan the
     // unfolding reads its noise, and took the whole time; nor has a curved shape (a vase, a
     // saddle) or one of another area than the sheet (readsCreasesFrom).
-    if (readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) &&
-        fitter_.readsCreasesFrom(session_.initial()) && unfoldTarget()) {
+    // The start is reported after the reading, which may place it (startPlaced).
+    const bool read = readCreases_ && !fitter_.nestedRingsFrom(session_.fixed()) &&
+                      fitter_.readsCreasesFrom(session_.initial()) && unfoldTarget();
+    announceStart();
+    if (read) {
       result_.stopReason = "the target unfolded: its creases named every fold";
       readingCut_ = false;  // what it read reached the target: no run finds more
     } else {
@@ -1109,6 +1112,26 @@ class FitRun {
   }
 
   // The exact measure of `sheet` (the session's, unless given) as the step after `folds` folds.
+  // The start's progress (result_.steps.front()) said once, then the search lines held back
+  // until it (the reading's offers come before the start is known: it may be placed).
+  void announceStart() {
+    if (startAnnounced_) return;
+    startAnnounced_ = true;
+    if (options_.progress) options_.progress(result_.steps.front());
+    if (options_.searching)
+      for (const auto& [depth, distance, at] : heldSearching_)
+        options_.searching(depth, distance, at);
+    heldSearching_.clear();
+  }
+
+  void reportSearching(std::size_t depth, double distance, double at) {
+    if (!options_.searching) return;
+    if (startAnnounced_)
+      options_.searching(depth, distance, at);
+    else
+      heldSearching_.emplace_back(depth, distance, at);
+  }
+
   FitProgress measureNow(std::size_t folds, const Sheet* sheet = nullptr) {
     if (folds == 0) startedAt_ = seconds();
     const SurfaceDistance d = surfaceDistance(meshOf(sheet ? *sheet : session_.fixed()),
@@ -1502,6 +1525,13 @@ class FitRun {
     const FoldSequence made = replay(plan, *branch, session_.initial(), deadline);
     if (!deadline.passed() && made.groups.size() <= options_.maxFolds && offer(made, *branch)) {
       result_.placedStart = std::move(placed);
+      // The start is the placed sheet: its distance is the one reported and folds must beat
+      // (the time of the start's measure kept: what a measure costs, FitProgress::seconds).
+      const double at = startedAt_;
+      const FitProgress placedMeasure = measureNow(0);
+      startedAt_ = at;
+      result_.steps.front().hausdorff = placedMeasure.hausdorff;
+      result_.steps.front().chamfer = placedMeasure.chamfer;
       return true;
     }
     session_.restartFrom(std::move(before));
@@ -1747,8 +1777,8 @@ class FitRun {
     if (better) best_ = sequence;
     // Said only when it is the best so far: the line says "best".
     if (better && options_.searching)
-      options_.searching(sequence.groups.size(), fitter_.approximateMeasure(branch.fixed()).chamfer,
-                         seconds());
+      reportSearching(sequence.groups.size(), fitter_.approximateMeasure(branch.fixed()).chamfer,
+                      seconds());
     return better &&
            surfaceDistance(meshOf(branch.fixed()), fitter_.measuredTarget(), measureSamples_)
                    .relativeHausdorff() <= kUnfoldedCloseEnough;
@@ -1909,8 +1939,7 @@ class FitRun {
       // Reported as the Chamfer distance the search's samples measure: the score it ranks by cuts
       // far distances, so it is no distance (a sheet 25 mm off scores 4 mm).
       if (options_.searching)
-        options_.searching(depth + 1, fitter_.approximateMeasure(front->fixed()).chamfer,
-                           seconds());
+        reportSearching(depth + 1, fitter_.approximateMeasure(front->fixed()).chamfer, seconds());
     }
   }
 
@@ -2104,9 +2133,11 @@ class FitRun {
   static constexpr std::size_t kProbeSamples = 1000;
   // The reading (readingDeadline) takes at most this share of the search's time.
   static constexpr double kReadingShare = 0.6;
-  bool readingCut_ = false;             // the reading's share of the time ran out before it ended
-  std::size_t measureSamples_ = 0;      // of every exact measure (samplesWithinTime)
-  double startedAt_ = 0.0;              // seconds from start_ to the start's measure
+  bool readingCut_ = false;         // the reading's share of the time ran out before it ended
+  std::size_t measureSamples_ = 0;  // of every exact measure (samplesWithinTime)
+  double startedAt_ = 0.0;          // seconds from start_ to the start's measure
+  bool startAnnounced_ = false;     // the start's progress said (announceStart)
+  std::vector<std::tuple<std::size_t, double, double>> heldSearching_;  // until then
   double foldCost_ = 0.0;               // seconds one fold kept costs at the end, at the start
   double finalCost_ = 0.0;              // estimated final phase of the largest design found
   std::size_t finalGroups_ = 0;         // its groups

@@ -1,7 +1,9 @@
 #include "engine/fit/unfolded_sheet.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -34,6 +36,20 @@ constexpr std::size_t kMaxFolds = 12;
 // Points measured each way per evaluation, and evaluations per fit.
 constexpr std::size_t kPoints = 600;
 constexpr int kEvaluations = 600;
+// The coarse measure: every this many-th of those points each way (the sheet's rim too). A
+// polish runs on it first, and the fine one follows only where it came near the unfolded
+// sheet: far (over kCoarseNear times kLiesOn), the fine one never lay on it either.
+constexpr std::size_t kCoarseStride = 4;
+constexpr double kCoarseNear = 4.0;
+// The fine polish from the coarse one's end: its evaluations, and its first steps (of the
+// coarse polish's first steps).
+constexpr int kFineEvaluations = 300;
+constexpr double kFineStep = 0.1;
+// A coarse polish within this (of the diagonal) lies on the unfolded sheet: no fine one follows.
+constexpr double kExact = 1e-9;
+// Sheets one reading (parametersFromUnfolding's, at one threshold) measures at most, all choices
+// and polishes together: a clock-free bound where no deadline is given.
+constexpr std::size_t kMostEvaluations = 3000;
 // Steps whose sides are tried every way (2^n choices) to find the part that never moved.
 constexpr std::size_t kExhaustiveChoices = 8;
 // Wavelengths a swept curve's sine is read at: so many, from and to these shares of its width.
@@ -65,30 +81,63 @@ std::vector<glm::dvec3> spread(const std::vector<glm::dvec3>& points) {
   return out;
 }
 
+// One reading's sheets measured (its bound, and UnfoldingWork's count), and the points measured
+// on a sheet of the grid measured last: a spread of its vertices, then its whole boundary (a
+// spread may miss a row of its grid, and a sheet a row longer than the unfolded one would then
+// lie as near). The same for every sheet of one grid (the parameters a polish moves keep it):
+// found once per grid, not per sheet.
+struct Budget {
+  UnfoldingWork* work = nullptr;
+  std::size_t used = 0;
+  std::vector<std::array<std::uint32_t, 3>> grid;
+  std::size_t gridVertices = 0;
+  std::vector<std::uint32_t> picked;
+
+  bool spent() const { return used >= kMostEvaluations; }
+  int left() const { return static_cast<int>(kMostEvaluations - std::min(used, kMostEvaluations)); }
+  const std::vector<std::uint32_t>& sheetPoints(const TriangleMesh& sheet) {
+    if (sheet.triangles == grid && sheet.positions.size() == gridVertices) return picked;
+    grid = sheet.triangles;
+    gridVertices = sheet.positions.size();
+    picked.clear();
+    const std::size_t step = 1 + sheet.positions.size() / kPoints;
+    for (std::size_t i = 0; i < sheet.positions.size(); i += step)
+      picked.push_back(static_cast<std::uint32_t>(i));
+    const std::vector<char> rim = boundaryVertexFlags(sheet);
+    if (work) ++work->boundaries;
+    for (std::size_t i = 0; i < rim.size(); ++i)
+      if (rim[i]) picked.push_back(static_cast<std::uint32_t>(i));
+    return picked;
+  }
+};
+
 // The unfolded target as it may lie on the sheet: how far a sheet made with some parameters lies
-// from it, on average both ways.
+// from it, on average both ways, finely (kPoints each way) or coarsely (every kCoarseStride-th).
 class Unfolded {
  public:
-  explicit Unfolded(TriangleMesh mesh)
+  Unfolded(TriangleMesh mesh, Budget& budget)
       : mesh_(std::move(mesh)),
         query_(mesh_, "unfolded target"),
-        points_(spread(mesh_.positions)) {}
-  double apart(const std::string& kind, const SurfaceParameters& parameters) const {
+        points_(spread(mesh_.positions)),
+        budget_(budget) {}
+  double apart(const std::string& kind, const SurfaceParameters& parameters,
+               bool coarse = false) const {
+    ++budget_.used;
+    if (budget_.work) ++budget_.work->evaluations;
+    const std::size_t stride = coarse ? kCoarseStride : 1;
     try {
       const TriangleMesh sheet = meshOf(makeSurface(kind, parameters));
       const SurfaceDistanceQuery onSheet(sheet, "sheet");
       double there = 0.0;
-      for (const glm::dvec3& p : points_) there += onSheet.distance(p);
-      // The sheet's whole boundary too: a spread of its vertices may miss a row of its grid,
-      // and a sheet a row longer than the unfolded one would then lie as near.
-      std::vector<glm::dvec3> sheetPoints = spread(sheet.positions);
-      const std::vector<char> rim = boundaryVertexFlags(sheet);
-      for (std::size_t i = 0; i < rim.size(); ++i)
-        if (rim[i]) sheetPoints.push_back(sheet.positions[i]);
+      std::size_t thereCount = 0;
+      for (std::size_t i = 0; i < points_.size(); i += stride, ++thereCount)
+        there += onSheet.distance(points_[i]);
+      const std::vector<std::uint32_t>& picked = budget_.sheetPoints(sheet);
       double back = 0.0;
-      for (const glm::dvec3& p : sheetPoints) back += query_.distance(p);
-      return there / static_cast<double>(points_.size()) +
-             back / static_cast<double>(sheetPoints.size());
+      std::size_t backCount = 0;
+      for (std::size_t i = 0; i < picked.size(); i += stride, ++backCount)
+        back += query_.distance(sheet.positions[picked[i]]);
+      return there / static_cast<double>(thereCount) + back / static_cast<double>(backCount);
     } catch (const std::exception&) {  // parameters the kind refuses
       return 1e30;
     }
@@ -98,6 +147,7 @@ class Unfolded {
   TriangleMesh mesh_;
   SurfaceDistanceQuery query_;
   std::vector<glm::dvec3> points_;
+  Budget& budget_;
 };
 
 // The kind's parameters read off `positions` as they lie in the catalogue's frame (tubes and
@@ -568,7 +618,8 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
 std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
                                                const SurfaceInfo& kindInfo,
                                                const TriangleMesh& defaults, double threshold,
-                                               double facetBend, const Deadline& deadline) {
+                                               double facetBend, const Deadline& deadline,
+                                               Budget& budget) {
   const std::string& kind = kindInfo.name;
   const SurfaceInfo* info = &kindInfo;
   const double area = surfaceArea(target), defaultArea = surfaceArea(defaults);
@@ -599,7 +650,7 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   // Each way the unfolded target may lie, at the start's and at its shape's parameters.
   auto consider = [&](const std::vector<glm::dvec3>& positions,
                       const SurfaceParameters& read = {}) {
-    const Unfolded candidate(TriangleMesh{positions, target.triangles});
+    const Unfolded candidate(TriangleMesh{positions, target.triangles}, budget);
     SurfaceParameters fromShape = guessFor(kind, positions, area, base);
     for (const auto& [name, value] : read) fromShape[name] = value;
     for (const SurfaceParameters& tried : {base, fromShape}) {
@@ -611,7 +662,8 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
       }
     }
   };
-  for (std::uint32_t bits = 0; bits < (1u << steps) && !deadline.passed(); ++bits) {
+  for (std::uint32_t bits = 0; bits < (1u << steps) && !deadline.passed() && !budget.spent();
+       ++bits) {
     std::vector<glm::dvec3> positions = unfolding.unfolded;
     // A step's reflection of the rest moves every earlier step's result: the last step read
     // (the design's first fold) applies first.
@@ -624,7 +676,7 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   // where none lies on it).
   auto polish = [&]() {
     if (chosen.empty()) return std::optional<SurfaceParameters>();
-    const Unfolded unfolded(TriangleMesh{chosen, target.triangles});
+    const Unfolded unfolded(TriangleMesh{chosen, target.triangles}, budget);
     SurfaceParameters from = start;
     auto parametersOf = [&](const std::vector<double>& x) {
       SurfaceParameters out = from;
@@ -637,7 +689,7 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
     if (points != info->parameters.end()) {
       double best = 1e300;
       SurfaceParameters tried = from;
-      for (int count = 3; count <= 12 && !deadline.passed(); ++count) {
+      for (int count = 3; count <= 12 && !deadline.passed() && !budget.spent(); ++count) {
         tried["points"] = count;
         const double d = unfolded.apart(kind, tried);
         if (d < best) {
@@ -655,11 +707,36 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
       stepSizes.push_back(p->name == "angle" ? 5.0
                                              : std::max(0.05 * from[p->name], 0.005 * diagonal));
     }
-    if (!x.empty())
-      minimizeSubplex(
-          x, stepSizes, kEvaluations,
-          [&](const std::vector<double>& y) { return unfolded.apart(kind, parametersOf(y)); },
-          &deadline, &bounds);
+    // Subplex from x, on the coarse or the fine measure; x left at the best point it measured
+    // (NLopt's own x after a forced stop is its last), and that point's value.
+    auto minimize = [&](std::vector<double>& at, const std::vector<double>& steps, int evaluations,
+                        bool coarse) {
+      double best = 1e300;
+      std::vector<double> bestAt = at;
+      if (evaluations > 0)
+        minimizeSubplex(
+            at, steps, evaluations,
+            [&](const std::vector<double>& y) {
+              const double d = unfolded.apart(kind, parametersOf(y), coarse);
+              if (d < best) {
+                best = d;
+                bestAt = y;
+              }
+              return d;
+            },
+            &deadline, &bounds);
+      at = bestAt;
+      return best;
+    };
+    if (!x.empty()) {
+      // Coarse first: where it ends far from the unfolded sheet, no fine polish lies on it.
+      const double coarse = minimize(x, stepSizes, std::min(kEvaluations, budget.left()), true);
+      if (!(coarse <= kCoarseNear * kLiesOn * diagonal)) return std::optional<SurfaceParameters>();
+      // Lying on it (a sheet the target was folded from), the fine measure finds no nearer.
+      for (double& step : stepSizes) step *= kFineStep;
+      if (!(coarse <= kExact * diagonal))
+        minimize(x, stepSizes, std::min(kFineEvaluations, budget.left()), false);
+    }
     const SurfaceParameters found = parametersOf(x);
     if (!(unfolded.apart(kind, found) <= kLiesOn * diagonal))
       return std::optional<SurfaceParameters>();
@@ -679,12 +756,12 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
     // shape says where the catalogue made it.
     for (const std::vector<glm::dvec3>& positions :
          catalogueFrames(kind, unfolding.unfolded, target)) {
-      if (deadline.passed()) break;
+      if (deadline.passed() || budget.spent()) break;
       consider(positions);
     }
     if (kind == "helix_tangent")
       for (const HelixFrame& helix : helixFrames(unfolding.unfolded, target)) {
-        if (deadline.passed()) break;
+        if (deadline.passed() || budget.spent()) break;
         consider(helix.positions, helix.guess);
       }
     found = polish();
@@ -706,7 +783,8 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
 
 std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& target,
                                                          const std::string& kind,
-                                                         const Deadline& deadline) {
+                                                         const Deadline& deadline,
+                                                         UnfoldingWork* work) {
   const auto& catalog = surfaceCatalog();
   const auto info = std::find_if(catalog.begin(), catalog.end(),
                                  [&](const SurfaceInfo& s) { return s.name == kind; });
@@ -718,13 +796,15 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
   // bends more or less, so the defaults' threshold reads its facets as creases, or misses a
   // shallow crease. Where the defaults' bends read nothing, the target's own.
   const double threshold = sharpEdgeThreshold(defaults);
+  Budget first, second, third;
+  first.work = second.work = third.work = work;
   if (std::optional<SurfaceParameters> found =
-          fromUnfolding(target, *info, defaults, threshold, -1.0, deadline))
+          fromUnfolding(target, *info, defaults, threshold, -1.0, deadline, first))
     return found;
   const double bend = facetBendDegrees(target), own = sharpEdgeThresholdFor(bend);
   if (std::abs(own - threshold) > kThresholdStep && !deadline.passed())
     if (std::optional<SurfaceParameters> found =
-            fromUnfolding(target, *info, defaults, own, bend, deadline))
+            fromUnfolding(target, *info, defaults, own, bend, deadline, second))
       return found;
   // Facets that bend unevenly (a swept curve's by its curvature) bend more than nine tenths of
   // the edges: read as creases at `own`, and left as crease after it. The bends below the gap
@@ -735,7 +815,7 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
   const double gapped = std::min(sharpEdgeThresholdFor(*uneven), std::sqrt(*uneven * creases));
   if (std::abs(gapped - own) <= kThresholdStep && std::abs(*uneven - bend) <= kThresholdStep)
     return std::nullopt;  // read so above
-  return fromUnfolding(target, *info, defaults, gapped, *uneven, deadline);
+  return fromUnfolding(target, *info, defaults, gapped, *uneven, deadline, third);
 }
 
 }  // namespace curvefold

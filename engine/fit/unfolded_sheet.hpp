@@ -30,12 +30,20 @@
 // unevenly, a swept curve's up to as much as a crease's threshold), a third time with the bends
 // below the widest gap in the target's bends taken as facets (facetBendBelowGap).
 //
+// Cost (issue 38, 3): each sheet measured is made and its closest-point tree built; the points
+// measured on it (a spread and its boundary) are found once per grid, not per sheet. A polish runs
+// first on a coarse measure (a quarter of the points each way), and the fine one (300 sheets at
+// most, from a tenth of the first steps) only where the coarse one ended within 4 times the limit
+// above; each reading measures 3000 sheets at most (choices of sides, frames, a star's counts and
+// polishes together), and stops at the deadline. UnfoldingWork counts the sheets and boundaries.
+//
 // Known limits: the frames were tried on moderate parameters only (a helix of many turns, a swept
 // curve of under half a wave, a very thin cone: not tried); a kind whose parameters leave its area
 // alone (a cylinder's radius at a fixed arc) is told apart only by the unfolding; the second
 // and third readings add to the cost where the first fails.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -45,8 +53,16 @@
 
 namespace curvefold {
 
+// What parametersFromUnfolding spent: sheets measured (each a sheet made and measured against the
+// unfolded target), and the sheets' boundaries found (once per polish: a polish keeps its grid).
+struct UnfoldingWork {
+  std::size_t evaluations = 0;
+  std::size_t boundaries = 0;
+};
+
 std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& target,
                                                          const std::string& kind,
-                                                         const Deadline& deadline = {});
+                                                         const Deadline& deadline = {},
+                                                         UnfoldingWork* work = nullptr);
 
 }  // namespace curvefold

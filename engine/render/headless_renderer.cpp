@@ -1,9 +1,7 @@
 #include "engine/render/headless_renderer.hpp"
 
-#include <cstdlib>
-#include <cstring>
-
 #include "engine/render/render_memory.hpp"
+#include "engine/text/environment_choice.hpp"
 
 namespace curvefold {
 
@@ -11,8 +9,7 @@ HeadlessRenderer::HeadlessRenderer(const HeadlessOptions& options) {
   // Before the driver is loaded: out of memory inside vkCreateDevice is a crash, not an error.
   checkRenderMemory(options.width, options.height, options.samples);
   ContextOptions contextOptions;
-  const char* env = std::getenv("CURVEFOLD_VK_VALIDATION");
-  contextOptions.instance.validation = options.validation || (env && std::strcmp(env, "1") == 0);
+  contextOptions.instance.validation = options.validation || vulkanValidationAsked();
   context_ = std::make_unique<VulkanContext>(contextOptions);
   target_ = std::make_unique<OffscreenTarget>(*context_, VkExtent2D{options.width, options.height},
                                               options.samples, kFramesInFlight, options.color);
