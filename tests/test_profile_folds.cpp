@@ -8,7 +8,9 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -383,6 +385,30 @@ TEST(StartSurface, AVasesCylinderIsAsWideAsItsBelly) {
   // the whole vase is about 4.95 cm).
   EXPECT_NEAR(start.parameters.at("radius"), 0.0549, 0.0006);
   EXPECT_NEAR(start.parameters.at("height"), 0.2, 0.002);
+}
+
+// A vase 2.5 radii tall (two principal axes nearly alike) with two holes, as a scan leaves it:
+// its principal axes lie 30 degrees off the one it turns about, and without a kind asked for the
+// start was a cone placed on them, 5.1% of the diagonal away (Chamfer) against `--from
+// cylinder`'s 1.75% (judge19). The tube and the cone about its own axis are candidates too.
+TEST(StartSurface, AScannedSquatVaseStartsAboutItsOwnAxis) {
+  TriangleMesh vase = revolved(
+      [](double h) {
+        return 0.04 * (1.0 + 0.15 * std::sin(std::numbers::pi * (h + 0.05) / 0.1 + 0.5));
+      },
+      -0.05, 0.05, 48, 30);
+  const std::vector<std::pair<glm::dvec3, double>> holes = {{{0.045, 0.0, 0.02}, 0.02},
+                                                            {{-0.03, 0.03, -0.03}, 0.015}};
+  std::erase_if(vase.triangles, [&](const auto& t) {
+    const glm::dvec3 c = (vase.positions[t[0]] + vase.positions[t[1]] + vase.positions[t[2]]) / 3.0;
+    return std::any_of(holes.begin(), holes.end(),
+                       [&](const auto& hole) { return glm::length(c - hole.first) < hole.second; });
+  });
+  const StartChoice tube = chooseStart(vase, "cylinder");
+  const StartChoice any = chooseStart(vase);
+  ASSERT_TRUE(any.placed);
+  EXPECT_TRUE(any.surface == "cylinder" || any.surface == "cone") << any.surface;
+  EXPECT_LT(any.chamfer, 1.1 * tube.chamfer) << any.placement;
 }
 
 // From the widest tube, the fit's first step is a chain of rings solved together on the

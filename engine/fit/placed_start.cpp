@@ -259,6 +259,14 @@ std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples
 
 }  // namespace
 
+std::vector<PlacedStart> revolutionStarts(const std::vector<SurfaceSample>& samples,
+                                          const glm::dvec3& point, const glm::dvec3& direction,
+                                          const std::string& kind) {
+  std::vector<PlacedStart> out;
+  if (samples.size() >= 10) revolutionAbout(samples, point, direction, kind, out);
+  return out;
+}
+
 std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
                                           const glm::dvec3& point, const glm::dvec3& direction) {
   const std::optional<HeightBands> bands = heightBands(samples, point, direction);

@@ -83,6 +83,15 @@ std::vector<PlacedStart> footprintStarts(const std::vector<SurfaceSample>& sampl
 std::vector<PlacedStart> leastSpreadStarts(const std::vector<SurfaceSample>& samples,
                                            double targetArea, const std::string& kind = "");
 
+// The cylinder and the cone (kind "" both, "cylinder" or "cone" the one) fitted to the samples'
+// radii about the line through `point` along `direction` (unit), as placedStarts makes them about
+// each principal axis: the mean radius, and the line through the radii (a cone where it tapers
+// by over 2%). For the axis a target turns about when its principal axes miss it (a vase about
+// sqrt(6) radii tall has two of them alike, and a scan's holes turn them anywhere in that plane).
+std::vector<PlacedStart> revolutionStarts(const std::vector<SurfaceSample>& samples,
+                                          const glm::dvec3& point, const glm::dvec3& direction,
+                                          const std::string& kind);
+
 // The cylinder of the samples' widest radius about the line through `point` along `direction`
 // (unit), as long as they reach along it: the largest mean distance from the line over 16 bins
 // of height (bins of under 8 samples left out). The start of a vase's joint ring fit

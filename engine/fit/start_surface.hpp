@@ -22,7 +22,8 @@
 // maps the target onto itself, within 1% of its diagonal on average and 3% at most (measured at
 // 2000 area-uniform points); none when no rotation does.
 //
-// Placed sheets: the same kinds moved onto the target's principal axes, and a swept parabola
+// Placed sheets: the same kinds moved onto the target's principal axes (and the tube and cone
+// about the axis it turns about, revolutionAxis, where no principal axis is it), and a swept parabola
 // (placed_start.hpp), are candidates too when the target has no creases; the nearest of all wins.
 // An oval bowl's (its footprint 1.12 times longer one way) include the disk of its area
 // stretched to the footprint, kept only where it lies flat across the target's axis (the nested
