@@ -770,7 +770,7 @@ TEST(FitReading, ASymmetricDesignItsImagesCannotReadIsReadAsPlainFolds) {
 
 // A corner of a rectangle folded with rotational:2:z (the fold and its image), then the sheet
 // moved whole by three folds: read with the symmetry, the motion takes three planes where --folds
-// leaves none, and a symmetric design was never placed. Read as plain folds where the start may
+// leaves one, and a symmetric design was never placed. Read as plain folds where the start may
 // be moved, it starts placed and makes the two creasing folds; the placed sheet drops the
 // symmetry (it need not hold about the moved sheet's frame).
 TEST(FitReading, ASymmetricDesignPastTheFoldsLeftStartsPlacedAsPlainFolds) {
@@ -785,7 +785,7 @@ TEST(FitReading, ASymmetricDesignPastTheFoldsLeftStartsPlacedAsPlainFolds) {
 
   const FoldFitter fitter(target);
   FitOptions options;
-  options.maxFolds = 2;
+  options.maxFolds = 3;
   options.seconds = std::numeric_limits<double>::infinity();
   options.maxEvaluations = 300;
   options.mayPlaceStart = true;
