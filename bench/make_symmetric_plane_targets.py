@@ -20,7 +20,7 @@ sheet, the class whose images move it whole); *whole* (15%, at most once, never 
 past the sheet (the whole of it mirrored, which symmetric fits read as a motion); a kind that
 finds no fold passing `check` in 40 tries gives way to a crossing fold. The drop is the grab mirrored through
 the plane, so the fold is that plane's. A fold is kept when it moved
-the sheet and `check` passes whole (else undone, 60 tries per fold). Every catalogue surface
+the sheet and `check` passes whole (`target_folds.fold_if_whole`; 60 tries per fold). Every catalogue surface
 that has a symmetry, at its default parameters (written out in the manifest, so `fit
 --symmetry` starts from the sheet the symmetry is of). Targets are `export --obj` less its `vt`
 lines; OUT/manifest.jsonl (read by `bench/judge_fit_runner.py`) names the surface, symmetry
@@ -38,7 +38,7 @@ import curvefold as cf
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from target_folds import strip_vt  # noqa: E402
+from target_folds import fold_if_whole, write_target  # noqa: E402
 
 # Per surface, the symmetries drawn from (each once as likely).
 SYMMETRIES = {
@@ -115,19 +115,10 @@ def make_target(rng, surface, folds, symmetry, params):
                 continue
             grab, to = drawn
             before = len(design.folds)
-            try:
-                result = design.fold(grab=tuple(grab), to=tuple(to))
-            except ValueError:
-                continue
-            if not result.folded:
-                if len(design.folds) > before:
-                    design.undo()
-                continue
-            if design.check().passed:
+            if fold_if_whole(design, tuple(grab), tuple(to)):
                 steps.append({"kind": kind, "folds_with_images": len(design.folds) - before})
                 whole = whole or kind == "whole"
                 break
-            design.undo()
         else:
             return None, None
     return design, steps
@@ -163,9 +154,7 @@ def main():
                 if design is None:
                     print(name, "no fold passed check; skipped", file=sys.stderr, flush=True)
                     continue
-                target = os.path.join(args.out, name + ".obj")
-                design.export(obj=target + ".full.obj")
-                strip_vt(target + ".full.obj", target)
+                write_target(design, os.path.join(args.out, name + ".obj"))
                 design.save(os.path.join(args.out, "designs", name + ".curvefold.json"))
                 entry = {"name": name, "recipe": "symmetric-plane", "bucket": bucket,
                          "surface": surface, "parameters": params, "symmetry": symmetry,

@@ -108,6 +108,23 @@ void foldACornerThenMoveWhole(FoldSession& folding, const glm::dvec3& grab, cons
     ASSERT_NO_FATAL_FAILURE(foldTheWholeSheetAlong(folding, along, distance));
 }
 
+// A rectangle's corner folded up, then the sheet turned and shifted by three whole-sheet folds
+// (a motion of three planes).
+void foldACornerThenTurnAndShift(FoldSession& folding) {
+  foldACornerThenMoveWhole(
+      folding, {0.1485, 0.099, 0.0}, {0.07, 0.06, 0.07},
+      {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)}, 0.2);
+}
+
+// A fit of at most `maxFolds` folds with no clock and `evaluations` scored.
+FitOptions clockFree(std::size_t maxFolds, std::size_t evaluations) {
+  FitOptions options;
+  options.maxFolds = maxFolds;
+  options.seconds = std::numeric_limits<double>::infinity();
+  options.maxEvaluations = evaluations;
+  return options;
+}
+
 // Fits `target` from `session`'s sheet (its symmetry set) with no time limit, and expects the
 // unfolding to name every fold and the fit to reach the target; returns what the fit did.
 FitResult expectFoundByUnfolding(FoldSession& session, const TriangleMesh& target,
@@ -698,16 +715,11 @@ TEST(FitReading, AWholeSheetFoldBetweenCreasingFoldsIsMadeWhereItWasMade) {
 TEST(FitReading, AMotionPastTheFoldsLeftStartsTheSheetPlaced) {
   const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
   FoldSession folding(initial);
-  ASSERT_NO_FATAL_FAILURE(foldACornerThenMoveWhole(
-      folding, {0.1485, 0.099, 0.0}, {0.07, 0.06, 0.07},
-      {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)}, 0.2));
+  ASSERT_NO_FATAL_FAILURE(foldACornerThenTurnAndShift(folding));
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
   const FoldFitter fitter(target);
-  FitOptions options;
-  options.maxFolds = 2;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = 300;
+  FitOptions options = clockFree(2, 300);
   {
     FoldSession session(initial);
     const FitResult result = fitFolds(session, fitter, options);
@@ -777,17 +789,12 @@ TEST(FitReading, ASymmetricDesignPastTheFoldsLeftStartsPlacedAsPlainFolds) {
   const Sheet initial = makeSurface("rectangle", {{"resolution", 12}});
   FoldSession folding(initial);
   folding.setSymmetry(parseSymmetry("rotational:2:z", initial));
-  ASSERT_NO_FATAL_FAILURE(foldACornerThenMoveWhole(
-      folding, {0.1485, 0.099, 0.0}, {0.07, 0.06, 0.07},
-      {glm::dvec3(0.6, -0.3, 0.74), glm::dvec3(-0.2, 0.9, 0.39), glm::dvec3(0.5, 0.5, -0.7)}, 0.2));
+  ASSERT_NO_FATAL_FAILURE(foldACornerThenTurnAndShift(folding));
   ASSERT_EQ(folding.folds()[1].group, 1u);  // the corner's image
   const TriangleMesh target = testing::exportedWithoutDevelopment(folding.fixed());
 
   const FoldFitter fitter(target);
-  FitOptions options;
-  options.maxFolds = 3;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = 300;
+  FitOptions options = clockFree(3, 300);
   options.mayPlaceStart = true;
   FoldSession session(initial);
   session.setSymmetry(parseSymmetry("rotational:2:z", initial));
