@@ -451,7 +451,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   fit.started = started;
   fit.maxEvaluations = options.evaluations;
   fit.tubeChains = tubeChains;
-  fit.mayPlaceStart = chosen && design.symmetry.empty();
+  fit.mayPlaceStart = chosen;
   fit.cancelled = &InterruptGuard::flag();
   fit.progress = [&](const FitProgress& step) {
     if (step.fold == 0) {
@@ -504,6 +504,11 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                  "more whole-sheet folds than --folds left), then the folds read"
               << std::endl;
   }
+  if (result.readPlain)
+    std::cout << "read as a design without symmetry: the folds and their images each a fold of "
+                 "its own (its creases read with images did not reach the target)"
+              << (session.symmetry() ? "" : "; the placed sheet keeps no symmetry") << std::endl;
+  if (!session.symmetry()) design.symmetry.clear();  // a placed start's sheet may lack it
   design.folds = result.folds;
   const bool interrupted = InterruptGuard::flag().load();
   fitEnd = fitEndLine(result, interrupted, started);

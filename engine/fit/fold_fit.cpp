@@ -1211,14 +1211,56 @@ class FitRun {
     if (planned.groups.size() >= options_.maxFolds ||
         surfaceDistance(unfolded, meshOf(session_.initial()), measureSamples_)
                 .relativeHausdorff() <= kUnfoldedCloseEnough)
-      return false;
+      return readPlain();
     // Smooth but off the sheet: folds that left no crease (their planes missed the sheet) moved
     // it whole. That motion, as such folds, then the folds read.
     if (plan.sharpLengthLeft <= kSmoothLeft * fitter_.targetDiagonal() && base_.empty() &&
         foldWholeSheetFirst(plan, unfolded, reading, deadline))
       return true;
-    if (plan.folds.empty() || deadline.passed()) return false;
+    if (deadline.passed()) return false;
+    // Before the search from what was read: a symmetric design read as plain folds.
+    if (readPlain()) return true;
+    if (plan.folds.empty() || deadline.passed() || !searchUnfolded_) return false;
     return searchTowardUnfolded(plan, unfolded, planned.groups.size());
+  }
+
+  // A symmetric design whose reading with images did not reach the target (a fold or an image
+  // moved the whole sheet, and the images of a whole-sheet fold made about the sheet's centre
+  // reach none of its ways), read as a design without symmetry: its folds and their images each a
+  // fold of its own, with the flips, the placed planes and (mayPlaceStart) the placed start that
+  // only a plain design is offered. Without --symmetry such targets were read exactly (judge17).
+  // Kept only where it reaches the target; the folds then have no group (FitResult::readPlain),
+  // and a placed start leaves the session without its symmetry. True when it reaches.
+  bool readPlain() {
+    if (!session_.symmetry()) return false;
+    const Deadline deadline = searchDeadline(1);
+    if (deadline.passed()) return false;
+    FoldSession plain(session_.initial());
+    plain.applyRecords(base_);
+    FitOptions options = options_;
+    options.progress = nullptr;  // the outer run reports what it keeps
+    FitRun run(plain, fitter_, options);
+    run.searchUnfolded_ = false;  // a search toward the unfolded copy is the outer run's
+    run.measureSamples_ = measureSamples_;
+    run.foldCost_ = foldCost_;
+    run.finalCost_ = finalCost_;
+    run.finalGroups_ = finalGroups_;
+    run.best_ = run.bestMonotone_ =
+        FoldSequence{{}, {}, fitter_.approximateDistance(session_.fixed())};
+    const bool reached = run.unfoldTarget();
+    evaluations_ += run.evaluations_.load();
+    droppedSamples_ += run.droppedSamples_.load();
+    if (run.result_.cancelled) result_.cancelled = true;
+    if (run.readingCut_) readingCut_ = true;
+    if (!reached) return false;
+    if (run.result_.placedStart) {
+      session_.restartFrom(*run.result_.placedStart);
+      session_.applyRecords(base_);
+      result_.placedStart = std::move(run.result_.placedStart);
+    }
+    best_ = std::move(run.best_);
+    result_.readPlain = true;
+    return true;
   }
 
   // The rigid motion from the sheet to the smooth unfolded target, made as folds of the whole
@@ -2119,6 +2161,7 @@ class FitRun {
   }
 
   const bool readCreases_;
+  bool searchUnfolded_ = true;  // the reading may end in a search toward the unfolded copy
   FoldSession& session_;
   const FoldFitter& fitter_;
   const FitOptions& options_;

@@ -231,7 +231,8 @@ struct FitOptions {
   // no --from; never a sheet whose parameters or folds were given): where the target's reading
   // finds its creasing folds but the motion of the whole sheet takes more planes than the folds
   // left allow, the fit starts from the sheet moved by that motion and makes only the creasing
-  // folds (FitResult::placedStart). Only without symmetry and on a session without folds.
+  // folds (FitResult::placedStart). Only on a session without folds, and on a symmetric one only
+  // where its design is read as plain folds (FitResult::readPlain), which then drops the symmetry.
   bool mayPlaceStart = false;
 };
 
@@ -250,6 +251,10 @@ struct FitResult {
   // Set where the fit started from the session's initial sheet moved whole (mayPlaceStart): the
   // session then holds it as its initial sheet, and the design must embed it as its surface.
   std::optional<Sheet> placedStart;
+  // Set where a symmetric session's target was read only as a design without symmetry (its folds
+  // and their images each a fold of its own, none grouped): the folds reach the target, and the
+  // session keeps its symmetry for folds made after (unless placedStart, which drops it).
+  bool readPlain = false;
 };
 
 // Folds `session`'s design toward the fitter's target: a beam search over fold sequences (the
