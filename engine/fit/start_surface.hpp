@@ -23,9 +23,9 @@
 // 2000 area-uniform points); none when no rotation does.
 //
 // Placed sheets: the same kinds moved onto the target's principal axes (and the tube and cone
-// about the axis it turns about, revolutionAxis, where no principal axis is it), and a swept parabola
-// (placed_start.hpp), are candidates too when the target has no creases; the nearest of all wins.
-// An oval bowl's (its footprint 1.12 times longer one way) include the disk of its area
+// about the axis it turns about, revolutionAxis, where no principal axis is it), and a swept
+// parabola (placed_start.hpp), are candidates too when the target has no creases; the nearest of
+// all wins. An oval bowl's (its footprint 1.12 times longer one way) include the disk of its area
 // stretched to the footprint, kept only where it lies flat across the target's axis (the nested
 // rings fold it); it is the rings' sheet below in place of the round disk.
 // But without a kind asked for, the disk placed across a bowl's axis (revolutionAxis) wins over
