@@ -1239,6 +1239,7 @@ class FitRun {
     plain.applyRecords(base_);
     FitOptions options = options_;
     options.progress = nullptr;  // the outer run reports what it keeps
+    options.started = start_;    // the outer run's clock: the search after it keeps its share
     FitRun run(plain, fitter_, options);
     run.searchUnfolded_ = false;  // a search toward the unfolded copy is the outer run's
     run.measureSamples_ = measureSamples_;
@@ -1257,6 +1258,7 @@ class FitRun {
       session_.restartFrom(*run.result_.placedStart);
       session_.applyRecords(base_);
       result_.placedStart = std::move(run.result_.placedStart);
+      measurePlacedStart();
     }
     best_ = std::move(run.best_);
     result_.readPlain = true;
@@ -1552,6 +1554,18 @@ class FitRun {
     return false;
   }
 
+  // The start is the placed sheet: its distance is the one reported and folds must beat (the
+  // time of the start's measure kept: what a measure costs, FitProgress::seconds). A run inside
+  // another (readPlain) has measured no start: the outer run measures its own.
+  void measurePlacedStart() {
+    if (result_.steps.empty()) return;
+    const double at = startedAt_;
+    const FitProgress placedMeasure = measureNow(0);
+    startedAt_ = at;
+    result_.steps.front().hausdorff = placedMeasure.hausdorff;
+    result_.steps.front().chamfer = placedMeasure.chamfer;
+  }
+
   // The session's initial sheet moved by `motion` (onto the unfolded target) as the start, and
   // the folds read made on it: kept, with the session holding the moved sheet as its initial
   // one, only when that reaches the target; else the session and the best found are as before.
@@ -1567,13 +1581,7 @@ class FitRun {
     const FoldSequence made = replay(plan, *branch, session_.initial(), deadline);
     if (!deadline.passed() && made.groups.size() <= options_.maxFolds && offer(made, *branch)) {
       result_.placedStart = std::move(placed);
-      // The start is the placed sheet: its distance is the one reported and folds must beat
-      // (the time of the start's measure kept: what a measure costs, FitProgress::seconds).
-      const double at = startedAt_;
-      const FitProgress placedMeasure = measureNow(0);
-      startedAt_ = at;
-      result_.steps.front().hausdorff = placedMeasure.hausdorff;
-      result_.steps.front().chamfer = placedMeasure.chamfer;
+      measurePlacedStart();
       return true;
     }
     session_.restartFrom(std::move(before));
