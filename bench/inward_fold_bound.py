@@ -38,11 +38,11 @@ def read_vertices(path):
     return np.array(out, float)
 
 
-def profile(verts, bins=60):
-    """(heights, radii) of the mean radius by height about the best principal axis, from 0 up."""
-    x = verts - verts.mean(0)
+def principal_axes(x, bins):
+    """For each principal axis a of the centred points x: (spread, a, heights, radii, bin edges,
+    bin of each point), spread the mean spread of the radius within a height bin over the mean
+    radius (the axis of revolution spreads least)."""
     _, axes = np.linalg.eigh(np.cov(x.T))
-    best = None
     for k in range(3):
         a = axes[:, k]
         h = x @ a
@@ -50,6 +50,14 @@ def profile(verts, bins=60):
         edges = np.linspace(h.min(), h.max(), bins + 1)
         idx = np.clip(np.digitize(h, edges) - 1, 0, bins - 1)
         spread = np.mean([r[idx == i].std() for i in range(bins) if (idx == i).sum() > 2]) / r.mean()
+        yield spread, a, h, r, edges, idx
+
+
+def profile(verts, bins=60):
+    """(heights, radii) of the mean radius by height about the best principal axis, from 0 up."""
+    x = verts - verts.mean(0)
+    best = None
+    for spread, a, h, r, edges, idx in principal_axes(x, bins):
         if best is None or spread < best[0]:
             rad = np.array([r[idx == i].mean() if (idx == i).any() else np.nan for i in range(bins)])
             mid = 0.5 * (edges[1:] + edges[:-1]) - h.min()

@@ -105,13 +105,18 @@ def distances(points, verts, faces, block=48):
     return out
 
 
-def main():
+def pair_parser():
+    """The arguments of a measure between two meshes: A.obj B.obj (B the target), --samples, --seed."""
     ap = argparse.ArgumentParser()
     ap.add_argument("a")
     ap.add_argument("b")
     ap.add_argument("--samples", type=int, default=40000)
     ap.add_argument("--seed", type=int, default=1)
-    args = ap.parse_args()
+    return ap
+
+
+def main():
+    args = pair_parser().parse_args()
     rng = np.random.default_rng(args.seed)
     va, fa = read_obj(args.a)
     vb, fb = read_obj(args.b)

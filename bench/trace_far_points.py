@@ -20,7 +20,6 @@ Usage: bench/trace_far_points.py SHEET.obj TARGET.obj [--samples N] [--seed S] [
 Limits: a model of revolution: the target's mean radius by height says nothing of a target that
 is not one; the sheet's `vt` lines are ignored.
 """
-import argparse
 import json
 import os
 import sys
@@ -28,26 +27,15 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from judge_distance import distances, read_obj, sample  # noqa: E402
+from inward_fold_bound import principal_axes  # noqa: E402
+from judge_distance import distances, pair_parser, read_obj, sample  # noqa: E402
 
 
 def target_axis(verts):
     """The principal axis about which the radius varies least by height, through the centroid,
     pointing along its largest component's positive direction."""
     centre = verts.mean(0)
-    x = verts - centre
-    _, axes = np.linalg.eigh(np.cov(x.T))
-    best = None
-    for k in range(3):
-        a = axes[:, k]
-        h = x @ a
-        r = np.linalg.norm(x - np.outer(h, a), axis=1)
-        edges = np.linspace(h.min(), h.max(), 31)
-        idx = np.clip(np.digitize(h, edges) - 1, 0, 29)
-        spread = np.mean([r[idx == i].std() for i in range(30) if (idx == i).sum() > 2]) / r.mean()
-        if best is None or spread < best[0]:
-            best = (spread, a)
-    axis = best[1]
+    axis = min(principal_axes(verts - centre, 30), key=lambda c: c[0])[1]
     # An eigenvector's sign is arbitrary: heights are read along the axis's largest component.
     return centre, axis if axis[np.argmax(np.abs(axis))] > 0 else -axis
 
@@ -79,18 +67,14 @@ def fold_planes(path):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("sheet")
-    ap.add_argument("target")
-    ap.add_argument("--samples", type=int, default=40000)
-    ap.add_argument("--seed", type=int, default=1)
+    ap = pair_parser()  # a: the sheet, b: the target
     ap.add_argument("--far", type=int, default=8)
     ap.add_argument("--bands", type=int, default=20)
     ap.add_argument("--design")
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
-    vs, fs = read_obj(a.sheet)
-    vt, ft = read_obj(a.target)
+    vs, fs = read_obj(a.a)
+    vt, ft = read_obj(a.b)
     ps, pt = sample(vs, fs, a.samples, rng), sample(vt, ft, a.samples, rng)
     ds, dt = distances(ps, vt, ft), distances(pt, vs, fs)
     diag = np.linalg.norm(vt.max(0) - vt.min(0))
