@@ -96,10 +96,12 @@ def pair_forbids(hd, i, j, th, tr, offsets=5, between=16):
     return bool((nearest.max(-1) > hd).all())
 
 
-def bound(th, tr, lo, hi, steps=12):
-    """The smallest Hausdorff distance no pair of profile points forbids (bisection)."""
+def bound(th, tr, lo, hi, steps=12, pairs=None):
+    """The smallest Hausdorff distance no pair of profile points (`pairs`, all unless given)
+    forbids (bisection)."""
     n = len(th)
-    pairs = [(i, j) for i in range(n) for j in range(i + 2, n)]
+    if pairs is None:
+        pairs = [(i, j) for i in range(n) for j in range(i + 2, n)]
     worst = None
     for _ in range(steps):
         hd = 0.5 * (lo + hi)
@@ -112,9 +114,30 @@ def bound(th, tr, lo, hi, steps=12):
     return lo, worst
 
 
+def break_bound(th, tr, lo, hi, steps=12):
+    """bound() for an envelope concave on each side of one profile point k (no chord spans it):
+    the smallest distance for which some k leaves no forbidding pair on one side, and that k (of
+    those, the narrowest profile point)."""
+    n = len(th)
+    pairs = [(i, j) for i in range(n) for j in range(i + 2, n)]
+    at = None
+    for _ in range(steps):
+        hd = 0.5 * (lo + hi)
+        forbidding = [(i, j) for i, j in pairs if pair_forbids(hd, i, j, th, tr)]
+        free = [k for k in range(2, n - 2) if not any(j <= k or i >= k for i, j in forbidding)]
+        if free:
+            hi, at = hd, min(free, key=lambda k: tr[k])
+        else:
+            lo = hd
+    return lo, at
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("targets", nargs="+")
+    ap.add_argument("--break", dest="split", action="store_true",
+                    help="also the bound for an envelope concave on each side of one height (a "
+                    "free break: the least over the bins' heights)")
     args = ap.parse_args()
     for path in args.targets:
         verts = read_vertices(path)
@@ -125,6 +148,11 @@ def main():
                                          f"{hs[pair[1]]:.4g}, radii {rs[pair[0]]:.4g} and {rs[pair[1]]:.4g})")
         print(f"{path}: diagonal {diag:.4g}, height {height:.4g}: a concave envelope stays at least "
               f"{hd:.4g} ({100 * hd / diag:.2f}% of the diagonal) from it{where}", flush=True)
+        if args.split:
+            broken, k = break_bound(hs, rs, 0.0, hd)
+            at = "" if k is None else f" at height {hs[k]:.4g}, radius {rs[k]:.4g}"
+            print(f"{path}: with one free break ({at.strip() or 'none found'}): {broken:.4g} "
+                  f"({100 * broken / diag:.2f}% of the diagonal)", flush=True)
 
 
 if __name__ == "__main__":

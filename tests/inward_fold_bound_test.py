@@ -5,7 +5,8 @@ A straight tube is its own concave envelope: bound about 0. An hourglass of two 
 at half the height H, sides of slope s, ends of radius r_n + s H / 2) keeps a concave envelope
 off its neck: the sheet must reach within d of both ends, so at the neck's height it stands at
 least at the ends' radius less d, which lies (s H / 2 - d) / sqrt(1 + s^2) from the cones; the
-bound is where that equals d: d = (s H / 2) / (1 + sqrt(1 + s^2)). Usage: inward_fold_bound_test.py
+bound is where that equals d: d = (s H / 2) / (1 + sqrt(1 + s^2)). With one free break (--break),
+the hourglass is two cones, each its own envelope: about 0, the break at its neck. Usage: inward_fold_bound_test.py
 --source DIR (the repository).
 """
 import argparse
@@ -42,7 +43,11 @@ def main():
         lathe(glass, lambda h: neck + slope * abs(h - height / 2), height)
         out = subprocess.run([sys.executable, tool, tube, glass], capture_output=True, text=True,
                              check=True).stdout
+        split = subprocess.run([sys.executable, tool, glass, "--break"], capture_output=True,
+                               text=True, check=True).stdout
     found = [float(x) for x in re.findall(r"stays at least (\S+) ", out)]
+    broken = [float(v) for pair in re.findall(r"with one free break \(at height (\S+), radius \S+\): (\S+) ",
+                                           split) for v in pair]
     expected = (slope * height / 2) / (1 + math.sqrt(1 + slope ** 2))
     failures = []
     if len(found) != 2:
@@ -53,6 +58,13 @@ def main():
         # The profile is binned (the ends' points half a bin inside), so a little under.
         if not 0.88 * expected <= found[1] <= 1.02 * expected:
             failures.append(f"the hourglass's bound {found[1]:.4g}, expected {expected:.4g} (0.88-1.02 of it)")
+    # With one free break the hourglass is two cones, each its own concave envelope: about 0,
+    # the break at the neck (half the height, within a bin).
+    if len(broken) != 2:
+        failures.append(f"expected one bound with a break, got: {split!r}")
+    elif broken[1] > 0.05 or abs(broken[0] - height / 2) > 0.1:
+        failures.append(f"the hourglass with a free break: {broken[1]:.4g} at height {broken[0]:.4g}, "
+                        f"expected about 0 at {height / 2}")
     for f in failures:
         print("FAIL:", f)
     if not failures:
