@@ -22,7 +22,7 @@ import os
 
 import numpy as np
 
-from make_lattice_saddles import write
+from make_lattice_saddles import clip, write
 from make_saddle_quadrics import rotation
 
 
@@ -67,19 +67,10 @@ def fan_rings(radius_at, centre, rings, step):
     return np.array(points), np.array(triangles)
 
 
-def drop_hole(points, triangles, centre, radius):
-    """The triangles whose centre lies outside the hole, reindexed."""
-    keep = [t for t in triangles if np.linalg.norm(points[t].mean(axis=0) - centre) > radius]
-    keep = np.array(keep)
-    used = np.unique(keep)
-    remap = -np.ones(len(points), int)
-    remap[used] = np.arange(len(used))
-    return points[used], remap[keep]
-
-
 def star_radius(outline, centre):
-    """The distance from `centre` to the outline `outline(phi) -> (x, y)` along each ray, by
-    bisection on the outline's own polar form (the outlines here are star-shaped about it)."""
+    """The distance from `centre` to the outline `outline(t) -> (x, y)` along each ray,
+    interpolated from 4000 of its points by their angle about `centre` (the outlines here are
+    star-shaped about it)."""
     samples = np.array([outline(t) for t in np.linspace(0.0, 2 * math.pi, 4000, endpoint=False)])
     rel = samples - np.array(centre)
     ang = np.mod(np.arctan2(rel[:, 1], rel[:, 0]), 2 * math.pi)
@@ -140,7 +131,7 @@ def main():
 
     centre = (0.02, 0.02)
     p, t = fan_rings(star_radius(lobes, centre), centre, 22, 0.0065)
-    p, t = drop_hole(p, t, np.array([-0.03, -0.02]), 0.011)
+    p, t = clip(p, t, lambda q: True, [(np.array([-0.03, -0.02]), 0.011)])
     x, y = p[:, 0], p[:, 1]
     z = (x ** 2 - y ** 2) / 0.06 + x * y ** 2 / 0.3
     z += rng.normal(0.0, 0.0003, len(z))
