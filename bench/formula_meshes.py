@@ -1,8 +1,12 @@
 """What the bench's saddle generators share (make_saddle_targets.py, make_saddle_scatter.py,
 make_saddle_delaunay.py): placing a mesh made in the xy plane (turned about z, tilted about x,
-moved), and writing it as an OBJ that names its generator. How each makes its points and
-triangles stays its own, so their targets differ."""
+moved), and writing it as an OBJ that names its generator; and the command line of the numpy
+generators that write into one folder from one seed (make_lattice_saddles.py,
+make_waist_spline_vases.py). How each makes its points and triangles stays its own, so their
+targets differ."""
+import argparse
 import math
+import os
 
 
 def place(p, yaw, tilt, shift):
@@ -27,3 +31,16 @@ def write_obj(path, comment, generator, verts, tris, number="%.8f", used_only=Tr
             out.write(line % tuple(verts[v]))
         for t in tris:
             out.write("f %d %d %d\n" % tuple(index[v] + 1 for v in t))
+
+
+def folder_and_seed(description, seed):
+    """The command line `OUT [--seed S]` (`seed` unless given): OUT made, and the arguments with a
+    numpy random generator seeded by S."""
+    import numpy as np
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("out")
+    parser.add_argument("--seed", type=int, default=seed)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    return args, np.random.default_rng(args.seed)

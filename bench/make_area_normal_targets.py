@@ -25,18 +25,15 @@ sheet the symmetry is of) and fold count; OUT/designs/ keeps each design that ma
 build/bench/unfold_report).
 """
 
-import argparse
-import json
 import math
 import os
-import random
 import sys
 
 import curvefold as cf
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from target_folds import strip_vt  # noqa: E402
+from target_folds import seeded_generator_main  # noqa: E402
 
 
 def draw_fold(rng, design):
@@ -102,45 +99,18 @@ def make_target(rng, surface, folds, symmetry, defaults):
     return design, params, steps
 
 
+def draw_symmetry(args, rng, catalogue, surface):
+    """One of the surface's own symmetries, for a share of the targets (--symmetric-share)."""
+    if catalogue[surface]["symmetries"] and rng.random() < args.symmetric_share:
+        return rng.choice(catalogue[surface]["symmetries"])
+    return None
+
+
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("out")
-    p.add_argument("--seed", type=int, default=17)
-    p.add_argument("--per-surface", type=int, default=1)
-    p.add_argument("--buckets", default="1-2,3-4,5-8")
-    p.add_argument("--surfaces", default="")
-    p.add_argument("--symmetric-share", type=float, default=0.25)
-    args = p.parse_args()
-    os.makedirs(os.path.join(args.out, "designs"), exist_ok=True)
-    catalogue = cf.surfaces()
-    surfaces = args.surfaces.split(",") if args.surfaces else sorted(catalogue)
-    manifest = open(os.path.join(args.out, "manifest.jsonl"), "a")
-    for surface in surfaces:
-        defaults = {k: v["default"] for k, v in catalogue[surface]["parameters"].items()}
-        defaults = {k: int(v) if catalogue[surface]["parameters"][k]["integer"] else v
-                    for k, v in defaults.items()}
-        for bucket in args.buckets.split(","):
-            lo, hi = (int(x) for x in bucket.split("-"))
-            for k in range(args.per_surface):
-                name = f"an{args.seed}-{surface}-{bucket}-{k}"
-                rng = random.Random(f"{args.seed}/{name}")
-                folds = rng.randint(lo, hi)
-                symmetry = None
-                if catalogue[surface]["symmetries"] and rng.random() < args.symmetric_share:
-                    symmetry = rng.choice(catalogue[surface]["symmetries"])
-                design, params, steps = make_target(rng, surface, folds, symmetry, defaults)
-                if design is None:
-                    print(name, "no fold passed check; skipped", file=sys.stderr, flush=True)
-                    continue
-                target = os.path.join(args.out, name + ".obj")
-                design.export(obj=target + ".full.obj")
-                strip_vt(target + ".full.obj", target)
-                design.save(os.path.join(args.out, "designs", name + ".curvefold.json"))
-                entry = {"name": name, "recipe": "area-normal", "bucket": bucket, "surface": surface,
-                         "parameters": params, "symmetry": symmetry, "folds": folds, "steps": steps}
-                manifest.write(json.dumps(entry) + "\n")
-                manifest.flush()
-                print(name, folds, symmetry or "", steps, flush=True)
+    seeded_generator_main(
+        __doc__.splitlines()[0], "an", "area-normal", 17, "1-2,3-4,5-8", sorted, draw_symmetry,
+        make_target,
+        lambda p: p.add_argument("--symmetric-share", type=float, default=0.25))
 
 
 if __name__ == "__main__":

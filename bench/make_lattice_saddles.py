@@ -17,12 +17,12 @@ cut by dropping the triangles near their centres, and the height is a cubic or a
 Usage: make_lattice_saddles.py OUT_DIR [--seed S]
 Writes OUT_DIR/NAME.obj for the three.
 """
-import argparse
 import math
 import os
 
 import numpy as np
 
+from formula_meshes import folder_and_seed
 from make_saddle_quadrics import rotation
 
 
@@ -84,12 +84,7 @@ def write(path, vertices, triangles, note):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out")
-    parser.add_argument("--seed", type=int, default=19)
-    args = parser.parse_args()
-    rng = np.random.default_rng(args.seed)
-    os.makedirs(args.out, exist_ok=True)
+    args, rng = folder_and_seed(__doc__.splitlines()[0], 19)
     R = 0.10
 
     # Monkey saddle over a disk, ragged rim, two holes, noise, tilted.

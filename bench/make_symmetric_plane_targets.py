@@ -27,18 +27,14 @@ lines; OUT/manifest.jsonl (read by `bench/judge_fit_runner.py`) names the surfac
 and fold count; OUT/designs/ keeps each design.
 """
 
-import argparse
-import json
-import math
 import os
-import random
 import sys
 
 import curvefold as cf
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from target_folds import fold_if_whole, write_target  # noqa: E402
+from target_folds import fold_if_whole, seeded_generator_main  # noqa: E402
 
 # Per surface, the symmetries drawn from (each once as likely).
 SYMMETRIES = {
@@ -120,48 +116,15 @@ def make_target(rng, surface, folds, symmetry, params):
                 whole = whole or kind == "whole"
                 break
         else:
-            return None, None
-    return design, steps
+            return None, None, None
+    return design, params, steps
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("out")
-    p.add_argument("--seed", type=int, default=19)
-    p.add_argument("--per-surface", type=int, default=1)
-    p.add_argument("--buckets", default="1-2,3-4,5-6")
-    p.add_argument("--surfaces", default="")
-    args = p.parse_args()
-    os.makedirs(os.path.join(args.out, "designs"), exist_ok=True)
-    catalogue = cf.surfaces()
-    surfaces = args.surfaces.split(",") if args.surfaces else sorted(SYMMETRIES)
-    manifest = open(os.path.join(args.out, "manifest.jsonl"), "a")
-    for surface in surfaces:
-        spec = catalogue[surface]["parameters"]
-        params = {k: int(s["default"]) if s["integer"] else s["default"] for k, s in spec.items()}
-        for bucket in args.buckets.split(","):
-            lo, hi = (int(x) for x in bucket.split("-"))
-            for k in range(args.per_surface):
-                name = f"sp{args.seed}-{surface}-{bucket}-{k}"
-                rng = random.Random(f"{args.seed}/{name}")
-                folds = rng.randint(lo, hi)
-                symmetry = rng.choice(SYMMETRIES[surface])
-                try:
-                    design, steps = make_target(rng, surface, folds, symmetry, params)
-                except ValueError as e:  # a symmetry the sheet lacks
-                    print(name, symmetry, "refused:", e, file=sys.stderr, flush=True)
-                    continue
-                if design is None:
-                    print(name, "no fold passed check; skipped", file=sys.stderr, flush=True)
-                    continue
-                write_target(design, os.path.join(args.out, name + ".obj"))
-                design.save(os.path.join(args.out, "designs", name + ".curvefold.json"))
-                entry = {"name": name, "recipe": "symmetric-plane", "bucket": bucket,
-                         "surface": surface, "parameters": params, "symmetry": symmetry,
-                         "folds": folds, "steps": steps}
-                manifest.write(json.dumps(entry) + "\n")
-                manifest.flush()
-                print(name, folds, symmetry, steps, flush=True)
+    seeded_generator_main(
+        __doc__.splitlines()[0], "sp", "symmetric-plane", 19, "1-2,3-4,5-6",
+        lambda catalogue: sorted(SYMMETRIES),
+        lambda args, rng, catalogue, surface: rng.choice(SYMMETRIES[surface]), make_target)
 
 
 if __name__ == "__main__":

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Vases with a waist at different heights for `fit` (issue 38, 2; branch vase19).
 
-Usage: bench/make_waist_spline_vases.py DIR [--seed N]
-Writes DIR/<name>.obj and DIR/targets.tsv (name, file, the start to fit from).
+Usage: bench/make_waist_spline_vases.py OUT [--seed N]
+Writes OUT/<name>.obj and OUT/targets.tsv (name, file, the start to fit from).
 
 Unlike the other vase generators: the profile is a monotone piecewise-cubic Hermite curve
 (Fritsch-Carlson slopes, so no overshoot between control radii) through a foot, a belly, a waist
@@ -12,10 +12,11 @@ turned by a random angle, its quads split along the shorter diagonal; open at bo
 centimetres, the axis drawn at random and the centre off the origin. Manifold and consistently
 oriented (checked here with numpy).
 """
-import argparse
 import os
 
 import numpy as np
+
+from formula_meshes import folder_and_seed
 
 
 def pchip(xs, ys, x):
@@ -90,12 +91,7 @@ def placed(rng, v):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("dir")
-    parser.add_argument("--seed", type=int, default=19)
-    args = parser.parse_args()
-    rng = np.random.default_rng(args.seed)
-    os.makedirs(args.dir, exist_ok=True)
+    args, rng = folder_and_seed(__doc__.splitlines()[0], 19)
     jitter = lambda x: x * rng.uniform(0.92, 1.08)
     # (name, height cm, knots as (height fraction, radius over height)).
     shapes = [
@@ -109,12 +105,12 @@ def main():
          [(0.0, jitter(0.15)), (0.4, jitter(0.26)), (0.7, jitter(0.17)), (0.85, jitter(0.07)),
           (1.0, jitter(0.15))]),
     ]
-    with open(os.path.join(args.dir, "targets.tsv"), "w") as tsv:
+    with open(os.path.join(args.out, "targets.tsv"), "w") as tsv:
         for name, height, knots in shapes:
             v, f = vase(rng, height, knots)
             check(v, f)
             v = placed(rng, v)
-            path = os.path.join(args.dir, name + ".obj")
+            path = os.path.join(args.out, name + ".obj")
             with open(path, "w") as out:
                 out.write("# %s: bench/make_waist_spline_vases.py, centimetres\n" % name)
                 for p in v:

@@ -4,9 +4,9 @@ kept only when it moved the sheet and `check` passes whole, the target written a
 fold-count buckets and each case's own random stream, and the small geometry they choose folds
 with (the bounding diagonal, the rim, a uniform direction). How each generator chooses its folds
 stays its own, so their targets differ. make_rim_targets.py and make_plane_targets.py drive the
-binary, not the module: they use what does not fold (read_obj, strip_vt and the rest), as
-make_area_normal_targets.py uses strip_vt.
-distance_truth.py reads OBJ files with read_obj."""
+binary, not the module: they use what does not fold (read_obj, strip_vt and the rest).
+make_area_normal_targets.py and make_symmetric_plane_targets.py share seeded_generator_main (their
+command line, manifest and files). distance_truth.py reads OBJ files with read_obj."""
 import argparse
 import json
 import math
@@ -14,6 +14,7 @@ import os
 import random
 import shutil
 import subprocess
+import sys
 
 BUCKETS = {"1-2": (1, 2), "3-4": (3, 4), "5-8": (5, 8)}
 
@@ -260,3 +261,56 @@ def module_generator_main(description, recipe, make_one, tries_per_target,
                 design.save(os.path.join(args.out, name + ".curvefold.json"))
                 record_case(manifest, name, recipe_, bucket, surface, folds)
                 made += 1
+
+
+def seeded_generator_main(description, prefix, recipe, seed, buckets, surfaces, draw_symmetry,
+                          make_target, add_options=lambda parser: None):
+    """The command line of a generator that folds through the Python module and names each target
+    by its seed (make_area_normal_targets.py, make_symmetric_plane_targets.py): for every surface
+    (`surfaces(catalogue)`, or --surfaces), bucket and --per-surface, the target
+    `{prefix}{seed}-{surface}-{bucket}-{k}` from its own random stream, which draws the fold count,
+    then `draw_symmetry(args, rng, catalogue, surface)` (None: none), then `make_target(rng,
+    surface, folds, symmetry, defaults)` -> (design, parameters, steps) (design None: skipped; a
+    ValueError: a symmetry the sheet lacks, refused). Written into `out` with its design
+    (designs/) and a manifest.jsonl line (appended); `add_options(parser)` adds a generator's own."""
+    import curvefold as cf
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("out")
+    parser.add_argument("--seed", type=int, default=seed)
+    parser.add_argument("--per-surface", type=int, default=1)
+    parser.add_argument("--buckets", default=buckets)
+    parser.add_argument("--surfaces", default="")
+    add_options(parser)
+    args = parser.parse_args()
+    os.makedirs(os.path.join(args.out, "designs"), exist_ok=True)
+    catalogue = cf.surfaces()
+    chosen = args.surfaces.split(",") if args.surfaces else surfaces(catalogue)
+    with open(os.path.join(args.out, "manifest.jsonl"), "a") as manifest:
+        for surface in chosen:
+            spec = catalogue[surface]["parameters"]
+            defaults = {k: int(s["default"]) if s["integer"] else s["default"]
+                        for k, s in spec.items()}
+            for bucket in args.buckets.split(","):
+                lo, hi = (int(x) for x in bucket.split("-"))
+                for k in range(args.per_surface):
+                    name = f"{prefix}{args.seed}-{surface}-{bucket}-{k}"
+                    rng = random.Random(f"{args.seed}/{name}")
+                    folds = rng.randint(lo, hi)
+                    symmetry = draw_symmetry(args, rng, catalogue, surface)
+                    try:
+                        design, params, steps = make_target(rng, surface, folds, symmetry, defaults)
+                    except ValueError as e:  # a symmetry the sheet lacks
+                        print(name, symmetry, "refused:", e, file=sys.stderr, flush=True)
+                        continue
+                    if design is None:
+                        print(name, "no fold passed check; skipped", file=sys.stderr, flush=True)
+                        continue
+                    write_target(design, os.path.join(args.out, name + ".obj"))
+                    design.save(os.path.join(args.out, "designs", name + ".curvefold.json"))
+                    entry = {"name": name, "recipe": recipe, "bucket": bucket, "surface": surface,
+                             "parameters": params, "symmetry": symmetry, "folds": folds,
+                             "steps": steps}
+                    manifest.write(json.dumps(entry) + "\n")
+                    manifest.flush()
+                    print(name, folds, symmetry or "", steps, flush=True)

@@ -193,7 +193,8 @@ void writeDistancePng(HeadlessRenderer& renderer, const Sheet& sheet,
 }
 
 // The seconds that fit --png's picture is given within --time: its rehearsal on the start's
-// sheet (measured, drawn and encoded, not written), timed on the wall clock as the limit is. The
+// sheet, or before the start is chosen on its kind's defaults (rehearsalSheet), measured, drawn
+// and encoded, not written, timed on the wall clock as the limit is. The
 // fitted sheet has more triangles, but the drawing's first use also compiles its shaders, which
 // the picture after it does not: that is the margin. Load 20-27: the example bowl's rehearsal on
 // 4,224 triangles took 1.13 s, its picture on 16,240 0.45 s, written; a saddle's 1.09 s and
@@ -215,6 +216,19 @@ struct FitCommandOptions {
   std::string seed = "1";
   bool allowSelfIntersection = false;
 };
+
+// The sheet fit --png's picture is rehearsed on before the start is chosen: the sheet given (an
+// .obj, or a kind with parameters), else the kind's defaults (the square's without --from), as
+// many triangles as a start sized to the target has.
+Sheet rehearsalSheet(const FitCommandOptions& options, const CLI::App* command) {
+  bool parametersGiven = false;
+  for (const auto& [name, value] : options.from.values)
+    parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
+  if (hasExtension(options.from.surface, ".obj") || parametersGiven)
+    return initialSheet(designFromSurfaceOptions(options.from, command, options.output),
+                        options.output);
+  return makeSurface(options.from.surface.empty() ? "square" : options.from.surface);
+}
 
 // The options of `fit`, read into `options`.
 void addFitOptions(CLI::App* command, FitCommandOptions& options) {
@@ -410,6 +424,18 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
   // --evaluations alone: no clock, so nothing depends on the machine's speed.
   const bool timed = command->count("--time") > 0 || options.evaluations == 0;
+  // The renderer first: a machine without Vulkan fails before any work. The picture's rehearsal
+  // is timed before any stage takes its share of --time, and every share is of what the
+  // picture leaves (`budget`): rehearsed after the start's choice, it began the search past the
+  // limit (the example bowl at --time 5 ended at 6.3 s, load 26).
+  std::unique_ptr<HeadlessRenderer> renderer;
+  double budget = options.seconds;
+  if (!options.png.empty()) {
+    renderer = makePictureRenderer();
+    if (timed)
+      budget = std::max(1e-3, budget - pictureReserve(*renderer, rehearsalSheet(options, command),
+                                                      fitter->measuredTarget().query()));
+  }
   // The start's choice takes this share of --time (on a large target each sheet it measures
   // costs a second or more), leaving the rest to the search: a share of work, seconds of the
   // process's CPU as well as of the wall clock (work_share.hpp), so a machine loaded by others
@@ -420,14 +446,14 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const Deadline startShare =
-      timed ? workShare(kStartShare * options.seconds - (processCpuSeconds() - startedCpu),
-                        kStartShare * options.seconds - elapsed,
-                        kStartLatest * options.seconds - elapsed, &InterruptGuard::flag())
+      timed ? workShare(kStartShare * budget - (processCpuSeconds() - startedCpu),
+                        kStartShare * budget - elapsed, kStartLatest * budget - elapsed,
+                        &InterruptGuard::flag())
             : Deadline{};
   const Deadline startDeadline =
       timed ? Deadline{}.notAfter(started +
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(kStartShare * options.seconds)))
+                                      std::chrono::duration<double>(kStartShare * budget)))
             : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
   bool chosen = false;
@@ -447,7 +473,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
   FitOptions fit;
   fit.maxFolds = options.folds;
-  fit.seconds = timed ? options.seconds : std::numeric_limits<double>::infinity();
+  fit.seconds = timed ? budget : std::numeric_limits<double>::infinity();
   fit.started = started;
   fit.maxEvaluations = options.evaluations;
   fit.tubeChains = tubeChains;
@@ -482,21 +508,13 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
       text += fitEnd.dump() + "\n";
       writeFileAtomically(at, text);
     });
-  // The renderer before the search: a machine without Vulkan fails before any work.
-  std::unique_ptr<HeadlessRenderer> renderer;
-  if (!options.png.empty()) {
-    renderer = makePictureRenderer();
+  if (renderer) {
     outputs.add(options.png, [&](const fs::path& at) {
       writeDistancePng(*renderer, session.fixed(), fitter->measuredTarget().query(),
                        "distance to the target", at);
     });
   }
   outputs.checkWritable();
-  // The picture is made after the search, within --time: the search ends before it (and never
-  // passes a limit the picture alone overruns: it then only measures its start).
-  if (renderer && timed)
-    fit.seconds = std::max(
-        1e-3, fit.seconds - pictureReserve(*renderer, initial, fitter->measuredTarget().query()));
   const FitResult result = fitFolds(session, *fitter, fit);
   if (result.placedStart) {
     design.surface = *result.placedStart;  // the folds are made on it: embedded as it lies

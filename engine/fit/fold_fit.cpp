@@ -1240,6 +1240,12 @@ class FitRun {
     FitOptions options = options_;
     options.progress = nullptr;  // the outer run reports what it keeps
     options.started = start_;    // the outer run's clock: the search after it keeps its share
+    // and what is left of its budget of evaluations: the reading scores none (measured: 0 on
+    // judge17's symmetric targets read so), and were it to search, the two runs together would
+    // still be held to one budget, as searchTowardUnfolded's inner run is.
+    if (options_.maxEvaluations > 0)
+      options.maxEvaluations = std::max<std::uint64_t>(
+          1, options_.maxEvaluations - std::min(options_.maxEvaluations, evaluations_.load()));
     FitRun run(plain, fitter_, options);
     run.searchUnfolded_ = false;  // a search toward the unfolded copy is the outer run's
     run.measureSamples_ = measureSamples_;

@@ -394,8 +394,18 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     assert report["dropped_samples"] == 0
     design.save(tmp_path / "python.curvefold.json")
     out = cli("fit", target, "--from", "square", "--resolution", "12", "--folds", "2",
-              "--evaluations", "30", "--seed", "5", "-o", tmp_path / "cli.curvefold.json").stdout
+              "--evaluations", "30", "--seed", "5", "-o", tmp_path / "cli.curvefold.json",
+              "--log", tmp_path / "cli.jsonl").stdout
     assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
+    # The same numbers, not only the same three digits: each step's distances as the log writes
+    # them, and the candidates scored.
+    log = [json.loads(line) for line in (tmp_path / "cli.jsonl").read_text().splitlines()]
+    end = log.pop()
+    steps = {}  # per step (a pleat logs each of its folds): the distance after it
+    for entry in log:
+        steps[entry["fold"]] = (entry["hausdorff"], entry["chamfer"])
+    assert [(s["hausdorff"], s["chamfer"]) for s in report["steps"][1:]] == list(steps.values())
+    assert report["evaluations"] == end["evaluations"] and report["stop"] == end["stop"]
     wrote = [line for line in out.splitlines() if line.startswith("wrote ")][0]
     hausdorff_mm = float(wrote.split("Hausdorff ")[1].split(" mm")[0])
     chamfer_mm = float(wrote.split("Chamfer ")[1].split(" mm")[0])
