@@ -23,7 +23,8 @@ import sys
 
 def write(path, verts, faces):
     with open(path, "w") as f:
-        f.write("# %s: made from a formula by bench/make_judge20_shapes.py\n" % os.path.basename(path))
+        name = os.path.basename(path)
+        f.write("# %s: made from a formula by bench/make_judge20_shapes.py\n" % name)
         for v in verts:
             f.write("v %.7f %.7f %.7f\n" % tuple(v))
         for t in faces:
@@ -119,7 +120,8 @@ def main():
     for name, make in (("vase20", vase), ("bowl20", bowl), ("saddle20", saddle)):
         write(os.path.join(out, name + ".obj"), *make())
     with open(os.path.join(out, "manifest.tsv"), "w") as f:
-        f.write("vase20\tcylinder\t\t0\tsmooth\nbowl20\tdisk\t\t0\tsmooth\nsaddle20\tsquare\t\t0\tsmooth\n")
+        for name, kind in (("vase20", "cylinder"), ("bowl20", "disk"), ("saddle20", "square")):
+            f.write("%s\t%s\t\t0\tsmooth\n" % (name, kind))
 
 
 if __name__ == "__main__":

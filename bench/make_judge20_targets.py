@@ -127,7 +127,8 @@ def main():
                 while True:
                     params = {}
                     if a.set == "random":
-                        params = {p: v * rng.uniform(0.6, 1.6) for p, v in DEFAULTS[surface].items()}
+                        params = {p: v * rng.uniform(0.6, 1.6)
+                                  for p, v in DEFAULTS[surface].items()}
                         if surface == "star":  # notches inside the points
                             params["inner_radius"] = min(params["inner_radius"],
                                                          0.8 * params["outer_radius"])

@@ -8,9 +8,8 @@ Usage: bench/run_judge20.py CURVEFOLD MANIFEST OUT.tsv [--only NAME,...] -- FIT-
 MANIFEST: tab-separated name, surface ('-' for no --from), parameters, folds, band; the target
 is MANIFEST's folder/<name>.obj. OUT.tsv gets one line per target: name, band, target folds,
 fitted folds, start Hausdorff% and Chamfer% (the fit's own `start:` line), judged Hausdorff%
-and Chamfer%, user CPU seconds, wall seconds, the fit's `stopped:` line, whether `check` passes the design
-whole; OUT.tsv.NAME.txt keeps
-the fit's command and output.
+and Chamfer%, user CPU seconds, wall seconds, the fit's `stopped:` line, and whether `check`
+passes the design whole; OUT.tsv.NAME.txt keeps the fit's command and output.
 """
 import os
 import re
