@@ -55,7 +55,7 @@ def main():
             m = re.search(r"start: Hausdorff [^(]*\(([\d.]+)%\), Chamfer [^(]*\(([\d.]+)%\)", text)
             start = (m.group(1), m.group(2)) if m else ("?", "?")
             stop = re.search(r"stopped: (.*)", text)
-            nf = re.search(r"wrote \S+ \((\d+) folds?", text)
+            nf = re.search(r"wrote \S+ \((?:\d+ steps?, )?(\d+) folds?", text)
             if r.returncode != 0:
                 log.write("\t".join([name, band, folds, "ERR", *start, "?", "?", "%.1f" % user,
                                      "%.1f" % wall, text.strip().splitlines()[-1]]) + "\n")
