@@ -46,10 +46,10 @@ def diagonal(vertices):
     return math.dist(lo, hi)
 
 
-def unit_vector(rng):
+def unit_vector(rng, dimensions=3):
     """A direction uniform on the sphere (a normalised Gaussian)."""
     while True:
-        v = [rng.gauss(0.0, 1.0) for _ in range(3)]
+        v = [rng.gauss(0.0, 1.0) for _ in range(dimensions)]
         n = math.sqrt(sum(x * x for x in v))
         if n > 1e-9:
             return [x / n for x in v]

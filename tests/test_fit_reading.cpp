@@ -1399,6 +1399,25 @@ TEST(StartSurface, AConeOrASweptCurveOfOtherParametersMovedWholeStartsFromTheShe
                    swept);
 }
 
+// crossing-params-1-2-00-cone (make_crossing_targets.py, seed 19): a full cone of other
+// parameters creased once and moved whole, its apex then on the far side of the origin along its
+// axis. The frame's apex was told from the base by a sum of area-weighed centroids taken for their
+// mean (a point near the origin, wherever the sheet lay), so the cone was read upside down and no
+// sheet lay on it: `--from cone` started from the defaults and ended 22.5% away.
+TEST(StartSurface, AConeMovedWholeFarFromTheOriginReadsItsApexAbove) {
+  const SurfaceParameters made{{"base_radius", 0.1045}, {"height", 0.0842}};  // angle 360
+  const std::optional<SurfaceParameters> read =
+      parametersFromUnfolding(foldedAndMovedWhole("cone", made, 0.7, {0.1, -0.6, 0.2}), "cone");
+  ASSERT_TRUE(read);
+  for (const auto& [name, value] : made) {
+    ASSERT_TRUE(read->count(name)) << name;
+    EXPECT_NEAR(read->at(name), value, 2e-3 * value) << name;
+  }
+  if (read->count("angle")) {
+    EXPECT_NEAR(read->at("angle"), 360.0, 0.5);
+  }
+}
+
 // tangent-params-3-4-00-star (make_tangent_targets.py, seed 15; its three folds): a 7-point star
 // creased once, then moved whole twice (planes that missed it). The frame turned onto its first
 // point lies on the unfolded copy exactly, but measured at the defaults' 5 points and radii scaled
@@ -1446,6 +1465,30 @@ TEST(StartSurface, ASweptCurveWhoseFacetsBendAsMuchAsACreaseStartsFromTheSheetIt
   FoldSession folding(makeSurface("swept_curve", made));
   folding.applyRecords(folds);
   expectStartsFrom(chooseStart(meshOf(folding.fixed()), "swept_curve"), made);
+}
+
+// tangent-params-1-2-00-swept_curve (make_tangent_targets.py, seed 19; its one fold): a sine
+// steeper than the defaults' at their resolution bends its facets by up to 26.5 degrees, under the
+// defaults' threshold (26.6) but over their facets' 16.4, and its curved crease bends by 32 to 176
+// along its length (no gap parts them from the facets: a ratio of 1.2). The first reading saw the
+// crease and unfolded it, but counted the facets as 2.4 m of crease left; the target's own
+// threshold read facets as creases: `--from swept_curve` started from the defaults, 4.91% away.
+TEST(StartSurface, ASweptCurveWhoseFacetsBendUnderTheThresholdButMoreThanTheDefaultsIsRead) {
+  const SurfaceParameters made{{"amplitude", 0.016393522164296303},
+                               {"wavelength", 0.08477901237237805}};
+  FoldRecord fold;
+  fold.seed = {0.12207820340211872, 0.06663515350000002};
+  fold.plane = {{0.08213509964487392, 0.07146796845, -0.0047430210846902575},
+                {-0.5861528578474959, 0.2702810891123646, -0.7637885571972437}};
+  FoldSession folding(makeSurface("swept_curve", made));
+  folding.applyRecords({fold});
+  const std::optional<SurfaceParameters> read =
+      parametersFromUnfolding(meshOf(folding.fixed()), "swept_curve");
+  ASSERT_TRUE(read);
+  for (const auto& [name, value] : made) {
+    ASSERT_TRUE(read->count(name)) << name;
+    EXPECT_NEAR(read->at(name), value, 2e-3 * value) << name;
+  }
 }
 
 TEST(StartSurface, AFoldedSheetWithShortOrNoCreasesStartsFromItsKindsDefaults) {

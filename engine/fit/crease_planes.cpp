@@ -158,6 +158,14 @@ double largestDihedralDegrees(const TriangleMesh& mesh) {
   return largest;
 }
 
+double largestBendBelow(const TriangleMesh& mesh, double degrees) {
+  double largest = 0.0;
+  forEachInteriorEdge(mesh, [&](auto, auto, const auto&, const auto&, double bend) {
+    if (bend < degrees) largest = std::max(largest, bend);
+  });
+  return largest;
+}
+
 double sharpEdgeThreshold(const TriangleMesh& initialSheet) {
   // A flat sheet's faces do not bend at all: a shallow fold (a drag mostly off the sheet bends
   // it by a few degrees) is read there as well as a steep one.

@@ -49,6 +49,11 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
 // smooth initial surface, how much its facets bend (a sharp-edge threshold must lie above it).
 double largestDihedralDegrees(const TriangleMesh& mesh);
 
+// The largest angle, degrees, by which two faces of the mesh that share an edge turn, of those
+// under `degrees` (0 where none): what a target's facets may bend where every bend under a
+// sharp-edge threshold is taken for theirs.
+double largestBendBelow(const TriangleMesh& mesh, double degrees);
+
 // The sharp-edge threshold for targets folded from `initialSheet`: half as much again as its
 // facets bend, two degrees more, and at least 4 degrees (a flat sheet's shallow folds).
 double sharpEdgeThreshold(const TriangleMesh& initialSheet);

@@ -467,6 +467,7 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
       Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
       Eigen::Vector3d b = Eigen::Vector3d::Zero();
       glm::dvec3 mean(0.0);
+      double weights = 0.0;
       for (const auto& t : mesh.triangles) {
         const glm::dvec3 p0 = positions[t[0]], p1 = positions[t[1]], p2 = positions[t[2]];
         const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
@@ -477,7 +478,12 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
         a += w * n * n.transpose();
         b += w * n * n.dot(eigenOf(p0));
         mean += w * (p0 + p1 + p2) / 3.0;
+        weights += w;
       }
+      if (!(weights > 0.0)) return out;
+      // The area's centroid (a sum of weighed centroids is not one: the apex would be placed by
+      // where the folds moved the sheet, not by the sheet).
+      mean /= weights;
       const glm::dvec3 apex = glmOf(Eigen::Vector3d(a.ldlt().solve(b)));
       if (glm::dot(apex - mean, axis) < 0.0) {
         axis = -axis;
@@ -811,11 +817,23 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
   // that parts them from the creases are facets (the threshold kept under the gap's top).
   double creases = 0.0;
   const std::optional<double> uneven = facetBendBelowGap(target, &creases);
-  if (!uneven || deadline.passed()) return std::nullopt;
-  const double gapped = std::min(sharpEdgeThresholdFor(*uneven), std::sqrt(*uneven * creases));
-  if (std::abs(gapped - own) <= kThresholdStep && std::abs(*uneven - bend) <= kThresholdStep)
-    return std::nullopt;  // read so above
-  return fromUnfolding(target, *info, defaults, gapped, *uneven, deadline, third);
+  if (uneven && !deadline.passed()) {
+    const double gapped = std::min(sharpEdgeThresholdFor(*uneven), std::sqrt(*uneven * creases));
+    if (std::abs(gapped - own) > kThresholdStep || std::abs(*uneven - bend) > kThresholdStep)
+      if (std::optional<SurfaceParameters> found =
+              fromUnfolding(target, *info, defaults, gapped, *uneven, deadline, third))
+        return found;
+  }
+  // A sheet whose facets bend more than the defaults' but still under their threshold (a steeper
+  // sine at the same resolution): the first reading saw every crease, but its facets' bends
+  // counted as crease left. Where a crease's bend falls near the facets' along it (a curved
+  // fold's angle varies), no gap parts them: every bend under the threshold is the facets'.
+  const double under = largestBendBelow(target, threshold);
+  if (under <= largestDihedralDegrees(defaults) + kThresholdStep || deadline.passed())
+    return std::nullopt;
+  Budget fourth;
+  fourth.work = work;
+  return fromUnfolding(target, *info, defaults, threshold, under, deadline, fourth);
 }
 
 }  // namespace curvefold

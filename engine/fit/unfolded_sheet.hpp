@@ -28,7 +28,11 @@
 // facets more, or its crease less, than the defaults'), the reading runs again with the target's
 // own (facetBendDegrees, crease_planes.hpp), and where that reads nothing either (facets that bend
 // unevenly, a swept curve's up to as much as a crease's threshold), a third time with the bends
-// below the widest gap in the target's bends taken as facets (facetBendBelowGap).
+// below the widest gap in the target's bends taken as facets (facetBendBelowGap), and where that
+// reads nothing, at the defaults' threshold with every bend under it taken as the facets'
+// (largestBendBelow: a steeper sine whose facets bend more than the defaults' but under their
+// threshold, its curved crease's bend falling near theirs along it, so no gap parts them). A
+// cone's apex is told from its base by the area's centroid.
 //
 // Cost (issue 38, 3): each sheet measured is made and its closest-point tree built; the points
 // measured on it (a spread and its boundary) are found once per grid, not per sheet. A polish runs
