@@ -50,20 +50,25 @@ void expectEnergyNeverRises(const StaticResult& result) {
     }
 }
 
+// A 10 mm sheet's right half turned over onto the left, 1.5 thicknesses above it, then jittered.
+std::vector<glm::dvec3> halvesTurnedOver(const BarHingeModel& model, unsigned seed) {
+  std::vector<glm::dvec3> x = model.flatPositions;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-0.2 * kThickness, 0.2 * kThickness);
+  for (glm::dvec3& p : x) {
+    if (p.x > 0.005) p = {0.01 - p.x, p.y, 1.5 * kThickness};
+    p += glm::dvec3(jitter(random), jitter(random), jitter(random));
+  }
+  return x;
+}
+
 // The force addContactForces gives is minus the gradient of contactEnergy (central differences),
 // on a sheet folded so that its halves lie within the activation gap of each other.
 TEST(Contact, ForceIsTheBarriersGradient) {
   const BarHingeModel model =
       buildModel(scaled(testing::creasedSquare(4, 2, 180.0), 0.01), paperOptions(true));
   ASSERT_TRUE(model.contact.enabled);
-  // The right half turned over onto the left, 1.5 thicknesses above it, then jittered.
-  std::vector<glm::dvec3> x = model.flatPositions;
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> jitter(-0.2 * kThickness, 0.2 * kThickness);
-  for (glm::dvec3& p : x) {
-    if (p.x > 0.005) p = {0.01 - p.x, p.y, 1.5 * kThickness};
-    p += glm::dvec3(jitter(random), jitter(random), jitter(random));
-  }
+  const std::vector<glm::dvec3> x = halvesTurnedOver(model, 3);
   ASSERT_FALSE(findContactPairs(model, x, model.contact.activation).empty());
   std::vector<glm::dvec3> force(model.vertexCount(), glm::dvec3(0.0));
   addContactForces(model, x, force);
@@ -89,13 +94,7 @@ TEST(Contact, ForceIsTheBarriersGradient) {
 TEST(Contact, ABarriersChangeOverATinyMoveIsItsForceTimesTheMove) {
   const BarHingeModel model =
       buildModel(scaled(testing::creasedSquare(8, 4, 180.0), 0.01), paperOptions(true));
-  std::vector<glm::dvec3> x = model.flatPositions;
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-0.2 * kThickness, 0.2 * kThickness);
-  for (glm::dvec3& p : x) {
-    if (p.x > 0.005) p = {0.01 - p.x, p.y, 1.5 * kThickness};
-    p += glm::dvec3(jitter(random), jitter(random), jitter(random));
-  }
+  const std::vector<glm::dvec3> x = halvesTurnedOver(model, 5);
   ASSERT_GT(findContactPairs(model, x, model.contact.activation).size(), 20u);
   std::vector<glm::dvec3> force(model.vertexCount(), glm::dvec3(0.0));
   addContactForces(model, x, force);
@@ -284,28 +283,37 @@ TEST(Contact, AMountainFoldedFlatInTouchSettlesBehindTheSheet) {
     }
 }
 
-// Two strips crossing as an X, 1.5 thicknesses apart where their middle edges cross, no vertex
-// over the other strip: only the edges meet. The barrier pushes them apart (the force is its
-// energy's gradient), and a step that would carry one edge through the other is cut short.
-TEST(Contact, EdgesThatCrossKeepTheThicknessApart) {
+// Strip A along x (vertices 0..3) and strip B along y (4..7), far apart on the flat sheet.
+CreasePattern crossedStrips() {
   CreasePattern pattern;
-  // Strip A along x (vertices 0..3), strip B along y (4..7), far apart on the flat sheet.
   pattern.vertices = {{0.0, 0.0}, {0.01, 0.0},  {0.0, 0.002}, {0.01, 0.002},
                       {0.1, 0.0}, {0.102, 0.0}, {0.1, 0.01},  {0.102, 0.01}};
   pattern.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}};
   testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
     return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
   });
-  ModelOptions options = paperOptions(true);
-  options.contact.edgePairs = true;  // the default on a sheet without glue
-  const BarHingeModel model = buildModel(pattern, options);
-  // Strip B turned over strip A's diagonal: its diagonal 4-7 crosses A's 0-3 at their middles.
-  std::vector<glm::dvec3> x = model.flatPositions;
+  return pattern;
+}
+
+// Strip B turned over strip A's diagonal, 1.5 thicknesses above it: its diagonal 4-7 crosses A's
+// 0-3 at their middles, no vertex over the other strip.
+void crossStrips(std::vector<glm::dvec3>& x) {
   const double z = 1.5 * kThickness;
   x[4] = {0.005, -0.004, z};
   x[5] = {0.007, -0.004, z};
   x[7] = {0.003, 0.006, z};
   x[6] = {0.001, 0.006, z};
+}
+
+// Two strips crossing as an X, 1.5 thicknesses apart where their middle edges cross, no vertex
+// over the other strip: only the edges meet. The barrier pushes them apart (the force is its
+// energy's gradient), and a step that would carry one edge through the other is cut short.
+TEST(Contact, EdgesThatCrossKeepTheThicknessApart) {
+  ModelOptions options = paperOptions(true);
+  options.contact.edgePairs = true;  // off unless asked for (EdgePairsOnlyWhenAskedFor)
+  const BarHingeModel model = buildModel(crossedStrips(), options);
+  std::vector<glm::dvec3> x = model.flatPositions;
+  crossStrips(x);
   const std::vector<ContactPair> pairs = findContactPairs(model, x, model.contact.activation);
   bool edgePair = false;
   for (const ContactPair& pair : pairs) edgePair = edgePair || pair.edges;
@@ -362,22 +370,12 @@ TEST(Contact, AVertexSlidingOverALayerIsNotCutWhenTheBoundAdvances) {
 // whole when the bound advances along the step for edge pairs as for vertex-triangle pairs;
 // strip B moved down through A, the advanced bound still stops before the edges meet.
 TEST(Contact, EdgesSlidingOverALayerAreNotCutWhenTheBoundAdvances) {
-  CreasePattern pattern;
-  pattern.vertices = {{0.0, 0.0}, {0.01, 0.0},  {0.0, 0.002}, {0.01, 0.002},
-                      {0.1, 0.0}, {0.102, 0.0}, {0.1, 0.01},  {0.102, 0.01}};
-  pattern.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}};
-  testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
-    return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
-  });
+  const CreasePattern pattern = crossedStrips();
   ModelOptions options = paperOptions(true);
   options.contact.edgePairs = true;
   const BarHingeModel model = buildModel(pattern, options);
   std::vector<glm::dvec3> x = model.flatPositions;
-  const double z = 1.5 * kThickness;
-  x[4] = {0.005, -0.004, z};
-  x[5] = {0.007, -0.004, z};
-  x[7] = {0.003, 0.006, z};
-  x[6] = {0.001, 0.006, z};
+  crossStrips(x);
   std::vector<glm::dvec3> slide(model.vertexCount(), glm::dvec3(0.0));
   for (int v = 0; v < 8; ++v) slide[v] = {v < 4 ? 0.0 : 0.002, 0.0, 0.75 * kThickness};
   EXPECT_LT(contactStepBound(model, x, slide), 0.05);
@@ -389,25 +387,21 @@ TEST(Contact, EdgesSlidingOverALayerAreNotCutWhenTheBoundAdvances) {
   EXPECT_LE(advanced * 10.0 * kThickness, 0.5 * kThickness + 1e-12);
 }
 
-// Edge-edge pairs are on by default where the sheet has no glue, and on a glued sheet only when
-// asked for (contact.hpp: on, the recorded cone glued settled at 5.5% strain): the X of
-// EdgesThatCrossKeepTheThicknessApart has pairs and a step bound by default; with two vertices of
-// strip A glued, neither unless edgePairsWhereGlued; with edgePairs off, neither.
-TEST(Contact, EdgePairsOnWhereTheSheetHasNoGlueOrWhenAskedFor) {
-  CreasePattern pattern;
-  pattern.vertices = {{0.0, 0.0}, {0.01, 0.0},  {0.0, 0.002}, {0.01, 0.002},
-                      {0.1, 0.0}, {0.102, 0.0}, {0.1, 0.01},  {0.102, 0.01}};
-  pattern.triangles = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}};
-  testing::addEdges(pattern, [](std::uint32_t a, std::uint32_t b) {
-    return CreasePatternEdge{a, b, CreaseAssignment::Flat, 0.0};
-  });
+// Edge-edge pairs are off unless asked for (contact.hpp: on, two settles stopped short of the
+// tolerance, and the recorded cone glued settled at 5.5% strain), and on a glued sheet only if
+// edgePairsWhereGlued (its default) is left on: the X of EdgesThatCrossKeepTheThicknessApart has
+// no pair and no step bound by default, both when asked for, and neither with two vertices of
+// strip A glued and edgePairsWhereGlued off.
+TEST(Contact, EdgePairsOnlyWhenAskedFor) {
+  const CreasePattern pattern = crossedStrips();
   std::vector<glm::dvec3> x;
   std::vector<glm::dvec3> step(8, glm::dvec3(0.0));
   for (int v = 4; v < 8; ++v) step[v] = {0.0, 0.0, -10.0 * kThickness};
   struct Case {
     bool edgePairs, glued, whereGlued, expected;
   };
-  for (const Case& c : {Case{true, false, false, true}, Case{false, false, false, false},
+  EXPECT_FALSE(ContactOptions{}.edgePairs);
+  for (const Case& c : {Case{true, false, false, true}, Case{false, false, true, false},
                         Case{true, true, false, false}, Case{true, true, true, true}}) {
     SCOPED_TRACE(::testing::Message() << c.edgePairs << c.glued << c.whereGlued);
     ModelOptions options = paperOptions(true);
@@ -417,11 +411,7 @@ TEST(Contact, EdgePairsOnWhereTheSheetHasNoGlueOrWhenAskedFor) {
     const BarHingeModel model = buildModel(pattern, options);
     EXPECT_EQ(model.contact.edgePairs, c.expected);
     x = model.flatPositions;
-    const double z = 1.5 * kThickness;
-    x[4] = {0.005, -0.004, z};
-    x[5] = {0.007, -0.004, z};
-    x[7] = {0.003, 0.006, z};
-    x[6] = {0.001, 0.006, z};
+    crossStrips(x);
     std::size_t edgePairs = 0;
     for (const ContactPair& pair : findContactPairs(model, x, model.contact.activation))
       edgePairs += pair.edges;

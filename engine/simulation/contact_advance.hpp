@@ -8,7 +8,7 @@
 // from there (up to 2000 rounds a pair) until the whole step, or until an advance falls under 0.1%
 // of the share reached (the gap closing on a tenth of its start).
 //
-// Edge pairs (on where the sheet has no glue, ContactOptions::edgePairs) are advanced alike on
+// Edge pairs (ContactOptions::edgePairs) are advanced alike on
 // the segments' distance (the largest relative motion of an end of one against an end of the
 // other bounds its change): the edges of flat-folded layers slide over each other as the tips do.
 //
@@ -16,11 +16,11 @@
 // Output: a share (0..1] of the step, never below contactStepBound's, along which no pair's gap
 // falls below a tenth of its start (pairs already inside the thickness not counted). Limits:
 // costs up to 2000 distances for each pair the one-shot bound cuts; a slide whose one-shot share
-// 0.9 gap / motion is under 1e-3 stops near a thousand times it, not at 1; on a glued sheet
-// (edge pairs off) it cannot keep edges from passing through edges, and the static solver checks
-// its longer steps for that. Defined in contact.cpp beside contactStepBound, whose pair search it
-// shares. Used by the static solver after kAdvanceAfterCuts (20) one-shot cuts in a row
-// (static_solver.cpp; contact19 and contact20 in docs/performance.md).
+// 0.9 gap / motion is under 1e-3 stops near a thousand times it, not at 1; with edge pairs off
+// it cannot keep edges from passing through edges. Defined in contact.cpp beside
+// contactStepBound, whose pair search it shares. Used by the static solver only with edge pairs
+// on, after kAdvanceAfterCuts (20) one-shot cuts in a row (static_solver.cpp; contact19 and
+// contact20 in docs/performance.md).
 #pragma once
 
 #include <vector>

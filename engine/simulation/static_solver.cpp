@@ -26,11 +26,11 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 constexpr double kMinExactShift = 1e-12;
 constexpr double kMaxExactShift = 1e-2;
 
-// Self-contact: after this many iterations in a row whose step contactStepBound cut, the bound is
-// advanced along the step (contact_advance.hpp; a longer step that makes a triangle pair cross
-// is cut back). On with edge pairs (contact20): alone it let edges pass through edges on the
-// longer steps (contact19: crossings rose in 22 runs); with them, of contact19's 126 runs none
-// crosses more than main and the creeping ones settle (docs/performance.md).
+// Self-contact: with edge pairs (ContactOptions::edgePairs), after this many iterations in a row
+// whose step contactStepBound cut, the bound is advanced along the step (contact_advance.hpp; a
+// longer step that makes a triangle pair cross is cut back). Without edge pairs it let edges pass
+// through edges on the longer steps (contact19: crossings rose in 22 runs); with them no crossing
+// rose in contact19's 126 runs (contact20, docs/performance.md).
 constexpr std::size_t kAdvanceAfterCuts = 20;
 
 // The Hessian's lower block triangle, laid out once: for each element, the value index of the
@@ -644,14 +644,13 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           // it: a flap's tip sliding over a layer at a steady gap (vertex6_s2: 2 um of closing
           // along a step of 9 mm) was cut to 0.5% for 600 iterations. Once it has cut that
           // many in a row, the bound is advanced along the step (contact_advance.hpp).
-          if (oneShot < 1.0 && boundCuts >= kAdvanceAfterCuts) {
+          if (model.contact.edgePairs && oneShot < 1.0 && boundCuts >= kAdvanceAfterCuts) {
             alpha = advancedContactStepBound(model, state.positions, stepVectors);
             advanced = alpha > oneShot;
           }
         }
-        // Where edge pairs are off (a glued sheet) vertex-triangle pairs cannot keep edges from
-        // passing through edges: a longer step that makes more triangle pairs cross is cut back
-        // to the one-shot bound.
+        // The barrier's edge pairs keep edges from passing through edges only where they push:
+        // a longer step that makes more triangle pairs cross is cut back to the one-shot bound.
         const std::size_t crossingsBefore =
             advanced ? crossingTrianglePairs(model, state.positions) : 0;
         const double longest = alpha;
