@@ -626,8 +626,7 @@ double modelEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec
         (moved[pair[0]] - positions[pair[0]]) - (moved[pair[1]] - positions[pair[1]]);
     change += 0.5 * model.glueStiffness * glm::dot(dGap, 2.0 * gap + dGap);
   }
-  if (model.contact.enabled)
-    change += contactEnergy(model, moved) - contactEnergy(model, positions);
+  if (model.contact.enabled) change += contactEnergyChange(model, positions, moved);
   return change;
 }
 

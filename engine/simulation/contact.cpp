@@ -1,7 +1,10 @@
 #include "engine/simulation/contact.hpp"
+#include "engine/simulation/contact_advance.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -349,7 +352,7 @@ ContactParameters contactParameters(const BarHingeModel& model, const ContactOpt
   c.activation = c.thickness;
   c.minimumGap = 1e-3 * c.activation;
   c.exclusion = 1.5 * (c.thickness + c.activation);
-  c.edgePairs = options.edgePairs;
+  c.edgePairs = options.edgePairs && (model.glue.empty() || options.edgePairsWhereGlued);
   double scale = 0.0;  // the static solver's forceScale
   for (std::size_t j = 0; j < model.hinges.size(); ++j)
     scale = std::max(scale, model.hingeStiffness[j] / model.barLength[model.hingeEdge[j]]);
@@ -459,6 +462,83 @@ double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& 
   return energy;
 }
 
+namespace {
+
+// The pair's distance at `x` (vertex to triangle, or segment to segment) and its change to
+// `moved`. A move far below the distance (under 1e-6 of it: a Newton step near equilibrium) is
+// measured from the moves with the nearest points' weights held (the change they make is of the
+// move's second order over the distance, 1e-20 m and less there), as d' - d = da (2 a + da) /
+// (|a + da| + d), not as the difference of two distances rounded at 1e-17 m.
+std::pair<double, double> pairDistanceChange(const BarHingeModel& model,
+                                             const std::vector<glm::dvec3>& x,
+                                             const std::vector<glm::dvec3>& moved,
+                                             const ContactPair& pair) {
+  const std::array<std::uint32_t, 4> v = contactPairVertices(model, pair);
+  std::array<double, 4> w{};  // a = sum w_k x_k, the nearest points' difference
+  const auto distanceAt = [&](const std::vector<glm::dvec3>& at) {
+    return pair.edges ? segmentDistance(at[v[0]], at[v[1]], at[v[2]], at[v[3]])
+                      : distanceToTriangle(at[v[0]], at[v[1]], at[v[2]], at[v[3]]);
+  };
+  if (pair.edges) {
+    const auto [sp, tp] = nearestSegmentParameters(x[v[0]], x[v[1]], x[v[2]], x[v[3]]);
+    w = {1.0 - sp, sp, -(1.0 - tp), -tp};
+  } else {
+    const glm::dvec3 b = nearestTriangleWeights(x[v[0]], x[v[1]], x[v[2]], x[v[3]]);
+    w = {1.0, -b.x, -b.y, -b.z};
+  }
+  glm::dvec3 a(0.0), da(0.0);
+  for (int k = 0; k < 4; ++k) {
+    a += w[k] * x[v[k]];
+    da += w[k] * (moved[v[k]] - x[v[k]]);
+  }
+  const double d = distanceAt(x);
+  if (!(glm::length(da) < 1e-6 * d)) return {d, distanceAt(moved) - d};
+  return {d, glm::dot(da, 2.0 * a + da) / (glm::length(a + da) + glm::length(a))};
+}
+
+// b(s + ds) - b(s) of the static barrier, from ds itself where both gaps lie in one piece of it
+// (the log's piece or the Taylor polynomial's), so that a change far below b's own rounding
+// (a Newton step near equilibrium) is not lost in the difference of two values.
+double barrierChange(const ContactParameters& c, double s, double ds) {
+  const double sHat = c.activation, kappa = c.stiffness, t = c.minimumGap, s2 = s + ds;
+  const auto value = [&](double at) {
+    if (at >= sHat) return 0.0;
+    double b = 0.0, d1 = 0.0, d2 = 0.0;
+    barrier(c, at, b, d1, d2);
+    return b;
+  };
+  if (s >= sHat && s2 >= sHat) return 0.0;
+  if (s >= t && s2 >= t && s < sHat && s2 < sHat) {
+    // -kappa ((g + ds)^2 ln(s2 / sHat) - g^2 ln(s / sHat)), g = s - sHat
+    const double g = s - sHat, log = std::log(s / sHat);
+    return -kappa * ((2.0 * g + ds) * ds * log + (g + ds) * (g + ds) * std::log1p(ds / s));
+  }
+  if (s < t && s2 < t) {
+    double b = 0.0, d1 = 0.0, d2 = 0.0;
+    barrier(c, s, b, d1, d2);  // d1, d2 at s; the polynomial's change is exact in ds
+    return ds * (d1 + 0.5 * d2 * ds);
+  }
+  return value(s2) - value(s);
+}
+
+}  // namespace
+
+double contactEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                           const std::vector<glm::dvec3>& moved) {
+  if (!model.contact.enabled) return 0.0;
+  const double reach = model.contact.activation;
+  std::vector<ContactPair> pairs = findContactPairs(model, positions, reach);
+  const std::vector<ContactPair> after = findContactPairs(model, moved, reach);
+  std::vector<ContactPair> both;
+  std::set_union(pairs.begin(), pairs.end(), after.begin(), after.end(), std::back_inserter(both));
+  double change = 0.0;
+  for (const ContactPair& pair : both) {
+    const auto [d, dd] = pairDistanceChange(model, positions, moved, pair);
+    change += barrierChange(model.contact, d - model.contact.thickness, dd);
+  }
+  return change;
+}
+
 void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                       const std::vector<ContactPair>& pairs, std::vector<glm::dvec3>& vertexForces,
                       bool dynamic) {
@@ -484,8 +564,32 @@ void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>&
                    vertexForces);
 }
 
-double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
-                        const std::vector<glm::dvec3>& step) {
+namespace {
+
+constexpr int kAdvanceRounds = 2000;  // per pair; a sliding layer takes gap / motion per round
+
+// Conservative advancement of one pair along the step (stepBound's `advance`): the gap changes
+// at most by `relative` per unit of the share, so from a share where the gap is g it may grow by
+// (g - floor) / relative keeping the gap above floor (a tenth of the gap at the start, as the
+// one-shot bound keeps); taken again from there until the share reaches `upTo` or an advance
+// falls under 0.1% of the share reached (the gap closing on its floor). A layer sliding at a
+// steady gap advances by the same share each round and passes. gapAt(share): the pair's gap there.
+template <typename GapAt>
+double advancedShare(GapAt&& gapAt, double gap, double relative, double upTo) {
+  const double floor = 0.1 * gap;
+  double share = 0.0, here = gap;
+  for (int round = 0; round < kAdvanceRounds && share < upTo; ++round) {
+    const double further = (here - floor) / relative;
+    if (!(further > 1e-3 * (share + further))) break;  // converged onto the closing
+    share = std::min(upTo, share + further);
+    here = gapAt(share);
+  }
+  return std::max(share, 0.9 * gap / relative);
+}
+
+// contactStepBound and advancedContactStepBound (contact_advance.hpp): one search of the pairs.
+double stepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                 const std::vector<glm::dvec3>& step, bool advance) {
   if (!model.contact.enabled || model.triangles.empty()) return 1.0;
   const double thickness = model.contact.thickness;
   const BoxTree tree = triangleTree(model, positions, thickness, &step);
@@ -506,7 +610,14 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
                          thickness;
       if (!(gap > 0.0) || 0.9 * gap >= relative * bound[v]) return;
       if (excluded(model, static_cast<std::uint32_t>(v), t, model.contact.exclusion)) return;
-      bound[v] = 0.9 * gap / relative;
+      const auto gapAt = [&](double share) {
+        return distanceToTriangle(positions[v] + share * step[v],
+                                  positions[tri[0]] + share * step[tri[0]],
+                                  positions[tri[1]] + share * step[tri[1]],
+                                  positions[tri[2]] + share * step[tri[2]]) -
+               thickness;
+      };
+      bound[v] = advance ? advancedShare(gapAt, gap, relative, bound[v]) : 0.9 * gap / relative;
     });
   });
   if (!model.contact.edgePairs) return *std::min_element(bound.begin(), bound.end());
@@ -534,12 +645,32 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
           thickness;
       if (!(gap > 0.0) || 0.9 * gap >= relative * barBound[bar]) return;
       if (edgesExcluded(model, i, j, model.contact.exclusion)) return;
-      barBound[bar] = 0.9 * gap / relative;
+      const auto gapAt = [&](double share) {
+        return segmentDistance(
+                   positions[e[0]] + share * step[e[0]], positions[e[1]] + share * step[e[1]],
+                   positions[f[0]] + share * step[f[0]], positions[f[1]] + share * step[f[1]]) -
+               thickness;
+      };
+      barBound[bar] =
+          advance ? advancedShare(gapAt, gap, relative, barBound[bar]) : 0.9 * gap / relative;
     });
   });
   double smallest = *std::min_element(bound.begin(), bound.end());
   if (m > 0) smallest = std::min(smallest, *std::min_element(barBound.begin(), barBound.end()));
   return smallest;
+}
+
+}  // namespace
+
+double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                        const std::vector<glm::dvec3>& step) {
+  return stepBound(model, positions, step, false);
+}
+
+double advancedContactStepBound(const BarHingeModel& model,
+                                const std::vector<glm::dvec3>& positions,
+                                const std::vector<glm::dvec3>& step) {
+  return stepBound(model, positions, step, true);
 }
 
 void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,

@@ -28,15 +28,14 @@
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
 // that force.
 //
-// Edge-edge pairs (layer39; off unless ContactOptions::edgePairs): two bars with no end in common
-// whose segments come within the thickness + s^ of each other have the same barrier on the
-// segments' distance (its gradient at the nearest points, Ericson 5.1.9), excluded as
+// Edge-edge pairs (layer39; on where the sheet has no glue, ContactOptions): two bars with no end
+// in common whose segments come within the thickness + s^ of each other have the same barrier on
+// the segments' distance (its gradient at the nearest points, Ericson 5.1.9), excluded as
 // vertex-triangle pairs are (near on the flat sheet, or across a glued seam), and bound the static
-// solver's steps alike. Off by default (layer40): on the recorded cone glued, pairs of edges the
-// layer order leaves within the thickness start deep in the barrier (contact energy 1.4e4 against
-// 0.13 without them), and the settle crawled at step bounds of 0.03 (NOT settled, residual 2.9e5,
-// strain 7.9%); without them it settles in 42 iterations. No crossing they stopped was found (the
-// folded cone's were its glued seam's, docs/performance.md).
+// solver's steps alike. Off by default (layer40, contact17, contact20): on the recorded cone glued,
+// pairs of edges the layer order leaves within the thickness start deep in the barrier, and it
+// settles at 5.5% strain (0.9% without); on sheets without glue they keep edges from passing
+// through edges, which vertex-triangle pairs cannot, but two settles stop short of the tolerance.
 //
 // Known limits: the distance between nearly parallel segments is not smooth (IPC's mollifier is
 // not applied); the dynamic solver's step is not
@@ -67,10 +66,15 @@ struct ContactOptions {
   bool enabled = false;
   double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
   double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
-  // Edge-edge pairs too (above). Off: on the recorded cone glued they made its settle worse
-  // (pairs the layer order leaves within the thickness: residual 5.0e4 -> 2.9e5, NOT settled)
-  // and stopped no crossing the vertex-triangle pairs let through (docs/performance.md).
+  // Edge-edge pairs too (above), and with them the static solver's step bound advanced along
+  // the step (contact_advance.hpp). Off (main's behaviour): asked for on sheets without glue
+  // (edgePairsWhereGlued false) no triangle pair crossed more than without in contact19's 126
+  // paper runs (1 to 625 fewer in 30), 33 more states settled, but two states that settle
+  // without stopped at residuals 1.8e-9 and 4.2e-9 (the tolerance 1e-9) and strain rose in 31
+  // runs (contact20, docs/performance.md). On a glued sheet only with edgePairsWhereGlued: the
+  // recorded cone glued settles at 5.5% strain with them (0.9% without).
   bool edgePairs = false;
+  bool edgePairsWhereGlued = true;
 };
 
 // What the model keeps (BarHingeModel::contact); enabled only in paper mode with contact on.
@@ -131,6 +135,13 @@ bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& posi
 
 // The barrier's energy at these positions (0 when contact is off). Summed in pair order.
 double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions);
+
+// contactEnergy(moved) - contactEnergy(positions), summed pair by pair from each pair's change of
+// gap (both pieces of the barrier expanded in it): accurate where the difference of the two sums
+// is rounding (a step near equilibrium changes the barrier by 1e-20 J against sums of 1e-3 J).
+// Pairs within the activation gap at either positions, sorted (vertex-triangle pairs first).
+double contactEnergyChange(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                           const std::vector<glm::dvec3>& moved);
 
 // Adds each listed pair's force (minus the barrier's gradient) to vertexForces, in pair order;
 // pinned vertices get none. Without a list, the pairs within the activation gap are found.

@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/simulation/contact_advance.hpp"
 #include "engine/simulation/hinge_kernel.hpp"
 #include "engine/simulation/hinge_unfolding.hpp"
 #include "engine/simulation/layer_order.hpp"
@@ -24,6 +25,13 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 // shares of its largest diagonal entry, from the smallest up by tens.
 constexpr double kMinExactShift = 1e-12;
 constexpr double kMaxExactShift = 1e-2;
+
+// Self-contact: with edge pairs (ContactOptions::edgePairs), after this many iterations in a row
+// whose step contactStepBound cut, the bound is advanced along the step (contact_advance.hpp; a
+// longer step that makes a triangle pair cross is cut back). Without edge pairs it let edges pass
+// through edges on the longer steps (contact19: crossings rose in 22 runs); with them no crossing
+// rose in contact19's 126 runs (contact20, docs/performance.md).
+constexpr std::size_t kAdvanceAfterCuts = 20;
 
 // The Hessian's lower block triangle, laid out once: for each element, the value index of the
 // first row of each of its 3x3 blocks' columns, so assembly adds into the matrix directly.
@@ -533,6 +541,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     bool movesMeasured = false;  // the line search's second pass (below) for the rest of the stage
     double exactShift =
         0.0;  // of the largest diagonal, added where the exact Hessian is indefinite
+    std::size_t boundCuts = 0;  // iterations in a row whose step the contact bound cut
     while (true) {
       totalForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
                   state.slotForces, forces);
@@ -625,12 +634,25 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
         step = solver.solve(-gradient);
         const double slope = gradient.dot(step);
         // No longer than lets a vertex pass through a layer (contact.hpp).
-        double alpha = 1.0;
+        double alpha = 1.0, oneShot = 1.0;
+        bool advanced = false;
         if (model.contact.enabled) {
           for (std::size_t v = 0; v < n; ++v)
             stepVectors[v] = glm::dvec3(step[3 * v], step[3 * v + 1], step[3 * v + 2]);
-          alpha = contactStepBound(model, state.positions, stepVectors);
+          alpha = oneShot = contactStepBound(model, state.positions, stepVectors);
+          // The one-shot bound takes a vertex's whole motion against a triangle as closing on
+          // it: a flap's tip sliding over a layer at a steady gap (vertex6_s2: 2 um of closing
+          // along a step of 9 mm) was cut to 0.5% for 600 iterations. Once it has cut that
+          // many in a row, the bound is advanced along the step (contact_advance.hpp).
+          if (model.contact.edgePairs && oneShot < 1.0 && boundCuts >= kAdvanceAfterCuts) {
+            alpha = advancedContactStepBound(model, state.positions, stepVectors);
+            advanced = alpha > oneShot;
+          }
         }
+        // The barrier's edge pairs keep edges from passing through edges only where they push:
+        // a longer step that makes more triangle pairs cross is cut back to the one-shot bound.
+        const std::size_t crossingsBefore =
+            advanced ? crossingTrianglePairs(model, state.positions) : 0;
         const double longest = alpha;
         for (int halving = 0; halving < 30 && slope < 0.0 && !accepted; ++halving) {
           for (std::size_t v = 0; v < n; ++v)
@@ -654,6 +676,12 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
             totalForces(m, trial, targets, state.hingeAngles, trialAngles, trialSlots, trialForces);
             lower = maxForce(trialForces) < maxForce(forces);
           }
+          if (lower && advanced && alpha > oneShot &&
+              crossingTrianglePairs(model, trial) > crossingsBefore) {
+            lower = false;
+            alpha = 2.0 * oneShot;  // halved below to the one-shot bound
+            advanced = false;
+          }
           if (lower) {
             // What the step changed, measured from the moves (modelEnergyChange, accurate where
             // the sums above are rounding): StaticIteration::energyChange, `simulate --verbose`.
@@ -667,6 +695,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
             alpha *= 0.5;
           }
         }
+        if (accepted) boundCuts = oneShot < 1.0 ? boundCuts + 1 : 0;
         if (accepted) {
           damping = alpha == longest ? std::max(1e-9, damping / 4.0) : damping * 2.0;
           // The next iteration tries a tenth of the shift first (none once it is that small).
