@@ -217,6 +217,19 @@ TEST_F(SimulateCli, PaperModeSaysItsContactAndWhetherTheStatePassesThroughItself
   EXPECT_NE(refused.err.find("--no-contact: only paper mode"), std::string::npos) << refused.err;
 }
 
+// Edges against edges in paper mode: a flat-foldable degree-4 vertex
+// (bench/make_audit_patterns.py's vertex4_s7, copied) settles with one triangle pair crossing where
+// only vertex-triangle pairs keep the layers apart (an edge passes through an edge); with edge
+// pairs it settles, none.
+TEST_F(SimulateCli, PaperModeKeepsEdgesFromPassingThroughEdges) {
+  const std::string pattern = std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/vertex4_s7.fold";
+  const CommandResult result =
+      run("simulate " + pattern + " --percent 100 --settle --paper 0.1 --obj v.obj");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("100%: settled in "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find(", self-intersection: none"), std::string::npos) << result.out;
+}
+
 // --motion: the waterbomb base settles on its targets at 50% (about 44 degrees off them with the
 // targets scaled linearly), and says how far its motion was followed.
 TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {

@@ -67,7 +67,8 @@ struct ContactOptions {
   double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
   double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
   // Edge-edge pairs too (above), and with them the static solver's step bound advanced along
-  // the step (contact_advance.hpp). Off (main's behaviour): asked for on sheets without glue
+  // the step (contact_advance.hpp). Off here; `simulate --paper` asks for them on sheets without
+  // glue. Asked for on sheets without glue
   // (edgePairsWhereGlued false) no triangle pair crossed more than without in contact19's 126
   // paper runs (1 to 625 fewer in 30), 33 more states settled, but two states that settle
   // without stopped at residuals 1.8e-9 and 4.2e-9 (the tolerance 1e-9) and strain rose in 31
