@@ -465,13 +465,18 @@ struct SimulateArguments {
   ModelOptions model;
 };
 
+// Paper mode is the command line's (setPaperMode): the same modulus default and self-contact, so
+// `curvefold simulate INPUT --paper T` and simulate(paper=T) give the same state bit for bit.
 SimulateArguments simulateArguments(const py::object& percentArg, const py::object& settleArg,
-                                    const py::object& paperArg, const py::object& stepsArg) {
+                                    const py::object& paperArg, const py::object& modulusArg,
+                                    const py::object& contactArg, const py::object& stepsArg) {
   SimulateArguments arguments;
   arguments.percent = number(percentArg, "percent");
   arguments.settle = flag(settleArg, "settle");
-  std::optional<double> paperMm;
+  std::optional<double> paperMm, modulusGpa;
   if (!paperArg.is_none()) paperMm = number(paperArg, "paper");
+  if (!modulusArg.is_none()) modulusGpa = number(modulusArg, "modulus");
+  const bool contact = flag(contactArg, "contact");
   const std::int64_t steps = integer(stepsArg, "steps");
   if (!(arguments.percent >= 0.0 && arguments.percent <= 100.0))
     throw std::invalid_argument("percent: must be from 0 to 100");
@@ -479,10 +484,12 @@ SimulateArguments simulateArguments(const py::object& percentArg, const py::obje
     throw std::invalid_argument("steps: must lie in 0 to 10000000");
   arguments.steps = static_cast<std::size_t>(steps);
   if (paperMm) {
-    if (!(*paperMm > 0.0 && *paperMm <= 10.0))
-      throw std::invalid_argument("paper: the thickness must be above 0 and at most 10 mm");
-    arguments.model.mode = SimulationMode::Paper;
-    arguments.model.paper.thickness = *paperMm * 1e-3;
+    // "paper: ..." or "modulus: ..." for a value out of range (ValueError).
+    setPaperMode(arguments.model, *paperMm, modulusGpa.value_or(kDefaultPaperModulusGpa), contact);
+  } else if (modulusGpa) {
+    throw std::invalid_argument("modulus: only paper mode (paper=THICKNESS_MM) has a modulus");
+  } else if (!contact) {
+    throw std::invalid_argument("contact: only paper mode (paper=THICKNESS_MM) has self-contact");
   }
   return arguments;
 }
@@ -550,8 +557,10 @@ py::dict simulatePattern(const CreasePattern& pattern, const SimulateArguments& 
 // Design.simulate: the design's flat sheet folded toward the design.
 py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
                         const py::object& settleArg, const py::object& paperArg,
+                        const py::object& modulusArg, const py::object& contactArg,
                         const py::object& stepsArg) {
-  const SimulateArguments arguments = simulateArguments(percentArg, settleArg, paperArg, stepsArg);
+  const SimulateArguments arguments =
+      simulateArguments(percentArg, settleArg, paperArg, modulusArg, contactArg, stepsArg);
   const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
   CreasePattern pattern;
   {
@@ -566,8 +575,10 @@ py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
 // simulate` reads it. Messages about a dict start "pattern: ".
 py::dict simulateCreasePattern(const py::object& source, const py::object& percentArg,
                                const py::object& settleArg, const py::object& paperArg,
+                               const py::object& modulusArg, const py::object& contactArg,
                                const py::object& stepsArg) {
-  const SimulateArguments arguments = simulateArguments(percentArg, settleArg, paperArg, stepsArg);
+  const SimulateArguments arguments =
+      simulateArguments(percentArg, settleArg, paperArg, modulusArg, contactArg, stepsArg);
   CreasePattern pattern;
   if (py::isinstance<py::dict>(source)) {
     const py::cpp_function asList([](const py::object& value) -> py::object {
@@ -940,11 +951,14 @@ void defineDesignEditing(py::class_<PyDesign>& design) {
           },
           py::arg("path"), "Writes the design file atomically (the same bytes as the command line)")
       .def("simulate", &simulateDesign, py::kw_only(), py::arg("percent") = 100.0,
-           py::arg("settle") = true, py::arg("paper") = py::none(), py::arg("steps") = 2000,
+           py::arg("settle") = true, py::arg("paper") = py::none(), py::arg("modulus") = py::none(),
+           py::arg("contact") = true, py::arg("steps") = 2000,
            "Folds the design's flat sheet to `percent` with the bar-and-hinge simulation: to "
            "equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM for "
-           "paper mode. Returns a dict as curvefold.simulate does (vertices numbered as the "
-           "design's)")
+           "paper mode as `curvefold simulate DESIGN --paper` (the same state bit for bit): "
+           "modulus=GPA (default 4), self-contact keeping the layers the thickness apart unless "
+           "contact=False (--no-contact). Returns a dict as curvefold.simulate does (vertices "
+           "numbered as the design's)")
       .def(
           "fold",
           [](PyDesign& d, const py::object& grab, const py::object& to) {
@@ -1066,12 +1080,15 @@ void defineFunctions(py::module_& m) {
   m.def(
       "simulate", &simulateCreasePattern, py::arg("pattern"), py::kw_only(),
       py::arg("percent") = 100.0, py::arg("settle") = true, py::arg("paper") = py::none(),
-      py::arg("steps") = 2000,
+      py::arg("modulus") = py::none(), py::arg("contact") = true, py::arg("steps") = 2000,
       "Folds a crease pattern from another tool (a FOLD dict as json.load gives it, or the path "
       "of a FOLD or SVG file in Origami Simulator's convention) with the bar-and-hinge "
       "simulation, as `curvefold simulate` does: from flat to `percent` of every crease's "
       "angle, to equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM "
-      "for paper mode. Returns a dict: vertices (n, 3) and development (n, 2) (the pattern's "
+      "for paper mode as `curvefold simulate PATTERN --paper` (the same state bit for bit): "
+      "modulus=GPA (default 4), self-contact keeping the layers the thickness apart unless "
+      "contact=False (--no-contact). Returns a dict: vertices (n, 3) and development (n, 2) (the "
+      "pattern's "
       "flat vertices, after crossings are split, faces triangulated and cuts opened), triangles "
       "(m, 3), edges (e, 2), assignment (a str, one FOLD letter per edge), strain (e,), "
       "crease_angle_error (e,) in degrees, converged, residual, notes (what was read but not "

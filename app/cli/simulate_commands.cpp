@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -293,7 +294,7 @@ void addSimulateCommand(CLI::App& app) {
   struct Options {
     std::string input, percent, obj, fold, gltf, png, frames, color, gif, stiffness;
     bool settle = false, verbose = false, gpu = false, motion = false, noContact = false;
-    double paperMm = 0.0, modulusGpa = 4.0, sizeMm = 0.0;
+    double paperMm = 0.0, modulusGpa = kDefaultPaperModulusGpa, sizeMm = 0.0;
     double creaseSide = ModelOptions{}.wrongSideScale;
     std::size_t steps = 2000;
     std::vector<std::string> pins, glue;
@@ -409,19 +410,13 @@ void addSimulateCommand(CLI::App& app) {
       throw UsageError("--crease-side: must be from 0 to 10000");
     modelOptions.wrongSideScale = options->creaseSide;
     if (paper->count()) {
-      if (!(options->paperMm > 0.0 && options->paperMm <= 10.0))
-        throw UsageError("--paper: the thickness must be above 0 and at most 10 mm");
-      if (!(options->modulusGpa > 0.0 && options->modulusGpa <= 1000.0))
-        throw UsageError("--modulus: must be above 0 and at most 1000 GPa");
-      modelOptions.mode = SimulationMode::Paper;
-      modelOptions.paper.thickness = options->paperMm * 1e-3;
-      modelOptions.paper.youngsModulus = options->modulusGpa * 1e9;
       // The compute shaders have no contact: the GPU path folds through itself, as it says.
-      modelOptions.contact.enabled = !options->noContact && !options->gpu;
-      // Edges against edges too, where no seam is glued: layers of a flat fold then stop
-      // passing through each other (contact20: 47 of 126 paper runs crossed, 3 with them).
-      modelOptions.contact.edgePairs = true;
-      modelOptions.contact.edgePairsWhereGlued = false;
+      try {
+        setPaperMode(modelOptions, options->paperMm, options->modulusGpa,
+                     !options->noContact && !options->gpu);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--") + e.what());  // "--paper: ..." or "--modulus: ..."
+      }
     } else if (options->noContact) {
       throw UsageError("--no-contact: only paper mode (--paper) has self-contact");
     }

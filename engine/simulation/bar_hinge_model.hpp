@@ -101,6 +101,24 @@ struct ModelOptions {
 // at once from flat; in design mode. The project's own defaults above keep faces rigid instead.
 ModelOptions simulatorModelOptions();
 
+// Paper mode as `curvefold simulate --paper` and Python's simulate(paper=...) both set it (one
+// copy, so the two fold the same sheet to the same state bit for bit).
+//
+// Inputs:
+//   options      the options to turn to paper mode (its other fields kept: pins, glue, ...)
+//   thicknessMm  the paper's thickness, above 0 and at most 10 mm
+//   modulusGpa   its Young's modulus, above 0 and at most 1000 GPa
+//   contact      self-contact: layers kept the thickness apart, and edge pairs too where no seam
+//                is glued (contact20: 47 of 126 paper runs crossed without them, 3 with)
+// Outputs:
+//   options      mode Paper, paper thickness and modulus in SI units, contact as above
+// Throws std::invalid_argument for a value out of range, its message starting with the value's
+// name and a colon ("paper: ..." or "modulus: ..."), for each caller to prefix as it names them.
+void setPaperMode(ModelOptions& options, double thicknessMm, double modulusGpa, bool contact);
+
+// setPaperMode's modulus when none is given (PaperProperties::youngsModulus's, in GPa).
+inline constexpr double kDefaultPaperModulusGpa = 4.0;
+
 // The hinge of an interior edge: a -> b is the edge as its left triangle (a, b, c) runs it; the
 // right triangle is (b, a, d).
 struct Hinge {

@@ -2,11 +2,16 @@
 
 import json
 import os
+import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import curvefold
+
+CLI = os.environ.get("CURVEFOLD_BINARY", "build/app/curvefold")
+SOURCE = Path(os.environ.get("CURVEFOLD_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 
 
 def test_simulate_folds_a_design_from_flat_to_itself():
@@ -132,6 +137,9 @@ def test_simulate_bad_values_are_value_errors_naming_the_parameter():
         (lambda: curvefold.simulate(square_with_crease(), percent=150), "percent: "),
         (lambda: curvefold.simulate(square_with_crease(), percent=float("nan")), "percent: "),
         (lambda: curvefold.simulate(square_with_crease(), paper=0), "paper: "),
+        (lambda: curvefold.simulate(square_with_crease(), paper=0.1, modulus=0), "modulus: "),
+        (lambda: curvefold.simulate(square_with_crease(), modulus=4), "modulus: only paper"),
+        (lambda: curvefold.simulate(square_with_crease(), contact=False), "contact: only paper"),
         (lambda: curvefold.simulate(square_with_crease(), steps=-1), "steps: "),
     ]
     for call, prefix in cases:
@@ -143,6 +151,7 @@ def test_simulate_bad_values_are_value_errors_naming_the_parameter():
         (lambda: curvefold.simulate([1, 2]), "pattern"),
         (lambda: curvefold.simulate(square_with_crease(), percent="50"), "percent"),
         (lambda: curvefold.simulate(square_with_crease(), settle="yes"), "settle"),
+        (lambda: curvefold.simulate(square_with_crease(), paper=0.1, contact=1), "contact"),
         (lambda: curvefold.simulate(square_with_crease(), steps=2.5), "steps"),
     ]:
         with pytest.raises(curvefold.ArgumentError) as error:
@@ -175,3 +184,33 @@ def test_simulate_reads_a_fold_dicts_frame_unit_as_a_files():
     pattern = dict(square_with_crease(), frame_unit="mm")
     result = curvefold.simulate(pattern, percent=50, settle=True)
     assert abs(np.abs(result["development"]).max() - 0.002) < 1e-15
+
+
+def obj_vertices(path):
+    """The `v` lines of an OBJ the command line wrote (shortest round-trip text: exact doubles)."""
+    return np.array([[float(x) for x in line.split()[1:4]]
+                     for line in path.read_text().splitlines() if line.startswith("v ")])
+
+
+def test_simulate_paper_mode_is_the_command_lines_bit_for_bit_with_its_contact(tmp_path):
+    # A flat-foldable degree-4 vertex (tests/data, SimulateCli's): without self-contact its layers
+    # settle through each other, 0.13 m from the state the command line settles with it.
+    pattern = SOURCE / "tests" / "data" / "crease_patterns" / "vertex4_s7.fold"
+    states = {}
+    for contact, extra in ((True, []), (False, ["--no-contact"])):
+        obj = tmp_path / f"contact_{contact}.obj"
+        subprocess.run([CLI, "simulate", pattern, "--percent", "100", "--settle", "--paper", "0.1",
+                        "--modulus", "3", "--obj", obj, *extra], capture_output=True, check=True)
+        result = curvefold.simulate(pattern, percent=100, paper=0.1, modulus=3, contact=contact)
+        assert np.array_equal(result["vertices"], obj_vertices(obj)), contact
+        states[contact] = result["vertices"]
+    assert np.abs(states[True] - states[False]).max() > 0.01
+    # Design.simulate takes the same paper mode: a folded cylinder (its contact moves the settled
+    # state 11 mm) as `simulate DESIGN --paper` settles it.
+    design = curvefold.Design.new("cylinder", radius=0.05, resolution=8)
+    design.fold(grab=(0.05, 0.1, 0.0), to=(0.03, 0.07, 0.02))
+    design.save(tmp_path / "d.curvefold.json")
+    subprocess.run([CLI, "simulate", tmp_path / "d.curvefold.json", "--percent", "100", "--settle",
+                    "--paper", "0.1", "--obj", tmp_path / "d.obj"], capture_output=True, check=True)
+    result = design.simulate(percent=100, paper=0.1)
+    assert np.array_equal(result["vertices"], obj_vertices(tmp_path / "d.obj"))
