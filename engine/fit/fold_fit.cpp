@@ -57,6 +57,11 @@ constexpr double kKeptWhole = 1e-3;
 constexpr double kSmoothLeft = 0.01;
 // How close (of the diagonal) the sheet must lie on that copy, both ways, once moved onto it.
 constexpr double kWholeSheetTolerance = 1e-4;
+// Where no way lies within that: a sheet read from the unfolding lies on it only as near as the
+// reading's polish (unfolded_sheet.cpp's kLiesOn, 1e-3 of the diagonal on average: a helix's
+// ruling read 0.1 mm off on 353 mm), and an unfolding counted smooth may keep a short crease
+// (0.6 mm on 300): the ways within this instead, the folds made on them measured as any.
+constexpr double kLooseWholeSheetTolerance = 5e-3;
 // At most this many ways the sheet lies on that copy are tried (a star of 7 points mirrored: 14).
 constexpr std::size_t kMostRegistrations = 24;
 // How far a replayed sheet may lie from the target, after the motion left, in target diagonals.
@@ -1280,9 +1285,14 @@ class FitRun {
     // and its own count of whole-sheet folds. The first way found first, and every way (dearer:
     // each registered) only where that one takes more folds than are left.
     // Within the deadline too: a copy that lies on the sheet no way refines every start (minutes).
+    double wholeSheetTolerance = kWholeSheetTolerance * fitter_.targetDiagonal();
     std::vector<RigidMotion> motions =
-        registerSheetOntoAll(meshOf(session_.initial()), unfolded,
-                             kWholeSheetTolerance * fitter_.targetDiagonal(), 1, reading);
+        registerSheetOntoAll(meshOf(session_.initial()), unfolded, wholeSheetTolerance, 1, reading);
+    if (motions.empty() && !reading.passed()) {
+      wholeSheetTolerance = kLooseWholeSheetTolerance * fitter_.targetDiagonal();
+      motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded, wholeSheetTolerance, 1,
+                                     reading);
+    }
     if (motions.empty()) return false;
     // The whole-sheet folds first (on the sheet), or last (on the sheet folded by the folds read,
     // moved back by the motion): whichever takes fewer, as a plane that misses the sheet at one
@@ -1505,8 +1515,7 @@ class FitRun {
     for (int pass = 0; pass < 2 && tries < kWholeSheetTries; ++pass) {
       if (pass == 1) {
         if (reading.passed()) return false;
-        motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded,
-                                       kWholeSheetTolerance * fitter_.targetDiagonal(),
+        motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded, wholeSheetTolerance,
                                        kMostRegistrations, reading);
         if (!symmetry) motions = withSymmetricWays(motions);
         lastAt.assign(motions.size(), std::nullopt);
