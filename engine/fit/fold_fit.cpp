@@ -2111,8 +2111,22 @@ class FitRun {
       falls = falls && measured.steps[g].chamfer <
                            (g > 0 ? measured.steps[g - 1] : result_.steps.front()).chamfer;
     if (!reaches && !falls) {
-      chosen = &bestMonotone_;
-      measured = measure(bestMonotone_, true);
+      Measured monotone = measure(bestMonotone_, true);
+      // Toward a target folded by reflections (not smooth) the distance is the goal: a sequence
+      // read off its creases that moves the sheet whole on the way (farther first) and ends
+      // nearer, both ways, than every fold of the monotone one stays (a cone read 41.3% -> 15.3%
+      // in 3 folds, where the monotone best kept none).
+      const FitProgress& start = result_.steps.front();
+      const FitProgress& end = measured.keep > 0 ? measured.steps[measured.keep - 1] : start;
+      const FitProgress& monotoneEnd =
+          monotone.keep > 0 ? monotone.steps[monotone.keep - 1] : start;
+      const bool nearer = !fitter_.smoothTarget() && measured.keep > 0 &&
+                          end.hausdorff < monotoneEnd.hausdorff &&
+                          end.chamfer < monotoneEnd.chamfer;
+      if (!nearer) {
+        chosen = &bestMonotone_;
+        measured = std::move(monotone);
+      }
     }
     // A clock that cut the search is the reason it stopped, though the folds it found last gain
     // little too (a run under load said otherwise while saying the time limit cut it short).
