@@ -1288,7 +1288,9 @@ class FitRun {
     double wholeSheetTolerance = kWholeSheetTolerance * fitter_.targetDiagonal();
     std::vector<RigidMotion> motions =
         registerSheetOntoAll(meshOf(session_.initial()), unfolded, wholeSheetTolerance, 1, reading);
-    if (motions.empty() && !reading.passed()) {
+    // Only where folds were read: with none, the copy is the whole target, and a crease too
+    // short to read (a star's 0.65 mm) is what the search must fold, not a way to lie.
+    if (motions.empty() && !plan.folds.empty() && !reading.passed()) {
       wholeSheetTolerance = kLooseWholeSheetTolerance * fitter_.targetDiagonal();
       motions = registerSheetOntoAll(meshOf(session_.initial()), unfolded, wholeSheetTolerance, 1,
                                      reading);
