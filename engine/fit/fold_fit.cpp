@@ -2117,7 +2117,7 @@ class FitRun {
       // Toward a target folded by reflections (not smooth) the distance is the goal: a sequence
       // read off its creases that moves the sheet whole on the way (farther first) and ends
       // nearer, both ways, than every fold of the monotone one stays (a cone read 41.3% -> 15.3%
-      // in 3 folds, where the monotone best kept none).
+      // in 5 folds, where the monotone best kept none).
       const FitProgress& start = result_.steps.front();
       const FitProgress& end = measured.keep > 0 ? measured.steps[measured.keep - 1] : start;
       const FitProgress& monotoneEnd =
