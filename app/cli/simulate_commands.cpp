@@ -39,6 +39,8 @@
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/folding_motion.hpp"
+#include "engine/simulation/simulate_options.hpp"
+#include "engine/simulation/state_report.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/simulation_vk/gpu_dynamic_solver.hpp"
 #include "engine/text/decimal.hpp"
@@ -53,7 +55,6 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMaxFrames = 1000;
 constexpr std::size_t kMaxSteps = 10'000'000;
-constexpr std::size_t kMaxMotionVertices = 20'000;  // a static solve per step of the motion
 
 // What is simulated: the pattern, and for a design its sheet (tags, seams).
 struct SimulationInput {
@@ -80,8 +81,19 @@ Sheet sheetOfPattern(const CreasePattern& pattern) {
   return sheet;
 }
 
-// sizeMm > 0: a crease pattern's larger side in millimetres (--size).
-SimulationInput readInput(const fs::path& path, double sizeMm, std::string& sizeLine) {
+// A value the engine checks (simulate_options.hpp, setPaperMode, sheetSizeMetres), whose message
+// starts with the value's name: a usage error naming the option ("--pin: ...").
+template <typename Check>
+auto checkedOption(Check check) {
+  try {
+    return check();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--") + e.what());
+  }
+}
+
+// sizeMetres > 0: a crease pattern's larger side (--size).
+SimulationInput readInput(const fs::path& path, double sizeMetres, std::string& sizeLine) {
   SimulationInput input;
   // A crease pattern from another tool (docs/formats.md); anything else is a curvefold design.
   if (hasExtension(path, ".fold") || hasExtension(path, ".svg")) {
@@ -91,8 +103,8 @@ SimulationInput readInput(const fs::path& path, double sizeMm, std::string& size
     std::string source = asRead.unitSource;
     scaleToMetres(asRead);
     input.pattern = std::move(asRead);
-    if (sizeMm > 0.0) {
-      scaleToSize(input.pattern, sizeMm * 1e-3);
+    if (sizeMetres > 0.0) {
+      scaleToSize(input.pattern, sizeMetres);
       source = "--size";
     }
     glm::dvec2 low(INFINITY), high(-INFINITY);
@@ -107,7 +119,7 @@ SimulationInput readInput(const fs::path& path, double sizeMm, std::string& size
     input.sheet = sheetOfPattern(input.pattern);
     return input;
   }
-  if (sizeMm > 0.0)
+  if (sizeMetres > 0.0)
     throw UsageError("--size: sizes a crease pattern (.fold, .svg); a design is in metres already");
   input.sheet = buildSheet(loadDesign(path), path.string());
   DesignPattern design = designPattern(input.sheet);
@@ -146,60 +158,10 @@ std::vector<double> parsePercents(const std::string& text) {
   return percents;
 }
 
-glm::dvec2 parsePoint(const std::string& text, const std::string& option) {
-  const std::size_t comma = text.find(',');
-  glm::dvec2 p;
-  if (comma == std::string::npos || !readDecimal(std::string_view(text).substr(0, comma), p.x) ||
-      !readDecimal(std::string_view(text).substr(comma + 1), p.y) || !std::isfinite(p.x) ||
-      !std::isfinite(p.y))
-    throw UsageError(option + ": expected X,Y on the flat sheet in metres, got " +
-                     quotedExcerpt(text));
-  return p;
-}
-
-// The vertex nearest a point given on the flat sheet. A point off the sheet (past its bounding
-// box by more than 1% of the diagonal) is refused rather than pinned to the nearest corner: it is
-// most often a point in the wrong unit (millimetres for metres).
-std::uint32_t nearestVertex(const CreasePattern& pattern, const glm::dvec2& p,
-                            const std::string& option) {
-  glm::dvec2 low(std::numeric_limits<double>::infinity());
-  glm::dvec2 high(-std::numeric_limits<double>::infinity());
-  for (const glm::dvec2& v : pattern.vertices) {
-    low = glm::min(low, v);
-    high = glm::max(high, v);
-  }
-  const double margin = 0.01 * glm::distance(low, high);
-  if (p.x < low.x - margin || p.y < low.y - margin || p.x > high.x + margin ||
-      p.y > high.y + margin) {
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "%s: (%g, %g) is off the flat sheet, which spans x %g to %g and y %g to %g "
-                  "(metres)",
-                  option.c_str(), p.x, p.y, low.x, high.x, low.y, high.y);
-    throw UsageError(line);
-  }
-  std::uint32_t best = 0;
-  for (std::uint32_t v = 1; v < pattern.vertices.size(); ++v)
-    if (glm::distance(pattern.vertices[v], p) < glm::distance(pattern.vertices[best], p)) best = v;
-  return best;
-}
-
 double largestMagnitude(const std::vector<double>& values) {
   double largest = 0.0;
   for (double v : values) largest = std::max(largest, std::abs(v));
   return largest;
-}
-
-// The mean magnitude of a per-edge value over the crease hinges (0 when there is none).
-double meanCreaseMagnitude(const BarHingeModel& model, const std::vector<double>& edgeValues) {
-  double sum = 0.0;
-  std::size_t creases = 0;
-  for (std::size_t j = 0; j < model.hinges.size(); ++j)
-    if (model.hingeCrease[j]) {
-      sum += std::abs(edgeValues[model.hingeEdge[j]]);
-      ++creases;
-    }
-  return creases ? sum / static_cast<double>(creases) : 0.0;
 }
 
 // What --color paints on the sheet.
@@ -395,28 +357,18 @@ void addSimulateCommand(CLI::App& app) {
     if (options->steps == 0 || options->steps > kMaxSteps)
       throw UsageError("--steps: must be from 1 to " + std::to_string(kMaxSteps));
     ModelOptions modelOptions;
-    if (stiffness->count()) {
-      if (options->stiffness == "origami-simulator")
-        modelOptions = simulatorModelOptions();
-      else if (options->stiffness != "curvefold")
-        throw UsageError("--stiffness: expected curvefold or origami-simulator, got " +
-                         quotedExcerpt(options->stiffness));
-      if (paper->count())
-        throw UsageError(
-            "--stiffness: sets design mode's stiffnesses; --paper takes paper's, "
-            "name one");
-    }
+    if (stiffness->count())
+      checkedOption(
+          [&] { setStiffnessPreset(modelOptions, options->stiffness, paper->count() > 0); });
     if (!(options->creaseSide >= 0.0 && options->creaseSide <= 1e4))
       throw UsageError("--crease-side: must be from 0 to 10000");
     modelOptions.wrongSideScale = options->creaseSide;
     if (paper->count()) {
       // The compute shaders have no contact: the GPU path folds through itself, as it says.
-      try {
+      checkedOption([&] {
         setPaperMode(modelOptions, options->paperMm, options->modulusGpa,
                      !options->noContact && !options->gpu);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--") + e.what());  // "--paper: ..." or "--modulus: ..."
-      }
+      });
     } else if (options->noContact) {
       throw UsageError("--no-contact: only paper mode (--paper) has self-contact");
     }
@@ -425,34 +377,19 @@ void addSimulateCommand(CLI::App& app) {
       if (!output->empty() && *output != "-" && sameFile(*output, options->input))
         throw UsageError("simulate: " + *output + " is the input; write to another file");
 
-    if (size->count() && !(options->sizeMm > 0.0 && options->sizeMm <= 1e6))
-      throw UsageError("--size: must be above 0 and at most 1000000 mm (1 km)");
+    const double sizeMetres =
+        size->count() ? checkedOption([&] { return sheetSizeMetres(options->sizeMm); }) : 0.0;
     std::string sizeLine;
-    SimulationInput input =
-        readInput(options->input, size->count() ? options->sizeMm : 0.0, sizeLine);
+    SimulationInput input = readInput(options->input, sizeMetres, sizeLine);
     if (!sizeLine.empty())
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
           << sizeLine;
     // What the reader read but did not use, or read otherwise than written (docs/formats.md).
     for (const std::string& note : input.pattern.notes) std::cerr << "note: " << note << "\n";
     for (const std::string& pin : options->pins)
-      modelOptions.pins.push_back(nearestVertex(input.pattern, parsePoint(pin, "--pin"), "--pin"));
-    for (const std::string& glue : options->glue) {
-      if (glue == "slits") {
-        if (input.seams.empty()) throw UsageError("--glue slits: the design has no slit");
-        modelOptions.glue.insert(modelOptions.glue.end(), input.seams.begin(), input.seams.end());
-        continue;
-      }
-      const std::size_t colon = glue.find(':');
-      if (colon == std::string::npos)
-        throw UsageError("--glue: expected X1,Y1:X2,Y2 or slits, got " + quotedExcerpt(glue));
-      const std::uint32_t a =
-          nearestVertex(input.pattern, parsePoint(glue.substr(0, colon), "--glue"), "--glue");
-      const std::uint32_t b =
-          nearestVertex(input.pattern, parsePoint(glue.substr(colon + 1), "--glue"), "--glue");
-      if (a == b) throw UsageError("--glue: both points are nearest the same vertex");
-      modelOptions.glue.emplace_back(a, b);
-    }
+      checkedOption([&] { addPin(modelOptions, input.pattern, parseSheetPoint(pin, "pin")); });
+    for (const std::string& glue : options->glue)
+      checkedOption([&] { addGlueText(modelOptions, input.pattern, input.seams, glue); });
     BarHingeModel model;
     try {
       model = buildModel(input.pattern, modelOptions);
@@ -462,12 +399,7 @@ void addSimulateCommand(CLI::App& app) {
     }
 
     if (options->motion) {
-      if (model.vertexCount() > kMaxMotionVertices)
-        throw UsageError("--motion: the pattern has " + std::to_string(model.vertexCount()) +
-                         " vertices; the motion is found for at most " +
-                         std::to_string(kMaxMotionVertices));
-      const FoldingMotion motion = foldingMotion(model);
-      setFoldingMotion(model, motion);
+      const FoldingMotion motion = checkedOption([&] { return followFoldingMotion(model); });
       char line[160];
       std::snprintf(line, sizeof line, "folding motion: %zu states, followed to %.1f%%%s\n",
                     motion.amounts.size(), 100.0 * motion.amounts[motion.amounts.size() - 2],
@@ -549,39 +481,25 @@ void addSimulateCommand(CLI::App& app) {
         stepDynamic(model, amount, state, options->steps);
         solved = std::to_string(options->steps) + " dynamic steps";
       }
-      const std::vector<double> angleError =
-          creaseAngleError(model, state.positions, amount, state.hingeAngles);
-      // Whether the state passes through itself, as `check` tests it.
-      const std::size_t crossing = crossingTrianglePairs(model, state.positions);
+      // Its strain, crease angle error, creases on the wrong side of flat or past flat-folded,
+      // and whether it passes through itself (as `check` tests it), as Python reports them.
+      const StateReport report = reportState(model, state, amount);
       const std::string crossingText =
-          crossing == 0 ? "none" : std::to_string(crossing) + " triangle pairs cross";
-      // Creases folded to the other side of flat than their targets (more than half a degree):
-      // a mountain folded as a valley, which paper folding the printed pattern would not do; and
-      // creases folded past flat-folded (through the paper), as the unwrapped angle tells.
-      const std::vector<double> angles = state.hingeAngles.size() == model.hinges.size()
-                                             ? state.hingeAngles
-                                             : hingeAngles(model, state.positions);
-      std::size_t wrongWay = 0, pastFlat = 0;
-      constexpr double kHalfDegree = 0.5 * std::numbers::pi / 180.0;
-      for (std::size_t j = 0; j < model.hinges.size(); ++j) {
-        if (!model.hingeCrease[j] || model.hingeTarget[j] == 0.0) continue;
-        const double along = (model.hingeTarget[j] > 0.0 ? 1.0 : -1.0) * angles[j];
-        if (along < -kHalfDegree) ++wrongWay;
-        if (along > std::numbers::pi + kHalfDegree) ++pastFlat;
-      }
-      std::string wrongWayText =
-          wrongWay == 0 ? ""
-                        : ", " + std::to_string(wrongWay) + " creases on the wrong side of flat";
-      if (pastFlat > 0)
-        wrongWayText += ", " + std::to_string(pastFlat) + " creases past flat-folded";
+          report.crossingPairs == 0
+              ? "none"
+              : std::to_string(report.crossingPairs) + " triangle pairs cross";
+      std::string wrongWayText = report.wrongSideCreases == 0
+                                     ? ""
+                                     : ", " + std::to_string(report.wrongSideCreases) +
+                                           " creases on the wrong side of flat";
+      if (report.pastFlatCreases > 0)
+        wrongWayText += ", " + std::to_string(report.pastFlatCreases) + " creases past flat-folded";
       char line[384];
       std::snprintf(line, sizeof line,
                     "%g%%: %s, largest strain %.2e, largest crease angle error %.2f degrees "
                     "(mean %.2f)%s, self-intersection: %s\n",
-                    percents[i], solved.c_str(),
-                    largestMagnitude(edgeStrain(model, state.positions)),
-                    largestMagnitude(angleError), meanCreaseMagnitude(model, angleError),
-                    wrongWayText.c_str(), crossingText.c_str());
+                    percents[i], solved.c_str(), report.largestStrain, report.largestAngleError,
+                    report.meanAngleError, wrongWayText.c_str(), crossingText.c_str());
       statusFor({options->obj, options->fold, options->gltf, options->png, options->gif}) << line;
       sheet.positions = state.positions;
       if (frames->count()) frameSheets.push_back(sheet);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 #include <string>
 
 #include <glm/common.hpp>
@@ -51,6 +52,12 @@ void scaleToSize(CreasePattern& pattern, double largerSide) {
   const double side = std::max(high.x - low.x, high.y - low.y);
   if (!(side > 0.0)) return;
   for (glm::dvec2& v : pattern.vertices) v *= largerSide / side;
+}
+
+double sheetSizeMetres(double sizeMm) {
+  if (!(sizeMm > 0.0 && sizeMm <= 1e6))
+    throw std::invalid_argument("size: must be above 0 and at most 1000000 mm (1 km)");
+  return sizeMm * 1e-3;
 }
 
 }  // namespace curvefold

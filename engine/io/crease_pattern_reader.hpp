@@ -22,4 +22,9 @@ void scaleToMetres(CreasePattern& pattern);
 // (a pattern whose file states no size, or one printed at another size).
 void scaleToSize(CreasePattern& pattern, double largerSide);
 
+// A larger side given in millimetres (`simulate --size`, Python's simulate(size=)), checked and in
+// metres for scaleToSize. Throws std::invalid_argument "size: must be above 0 and at most 1000000
+// mm (1 km)" (the caller prefixes it as it names the value).
+double sheetSizeMetres(double sizeMm);
+
 }  // namespace curvefold
