@@ -20,6 +20,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "app/session/design_check.hpp"
@@ -53,6 +54,8 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
+#include "engine/simulation/simulate_options.hpp"
+#include "engine/simulation/state_report.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/obj_surface.hpp"
 #include "engine/surfaces/surfaces.hpp"
@@ -457,32 +460,115 @@ void exportDesign(const PyDesign& design, const py::object& foldArg, const py::o
     throw py::error_already_set();  // warnings made errors (python -W error)
 }
 
-// What a simulation is asked for (Design.simulate and curvefold.simulate), checked by name.
+// What a simulation is asked for (Design.simulate and curvefold.simulate), checked by name. Pins
+// and glue name points of the flat sheet, taken to vertices once the pattern is read: each a
+// point or the command line's text for it ("X,Y"; "X1,Y1:X2,Y2" or "slits").
 struct SimulateArguments {
   double percent = 100.0;
   bool settle = true;
   std::size_t steps = 2000;
+  bool motion = false;
+  double sizeMetres = 0.0;  // curvefold.simulate's size=, 0: as the pattern states
   ModelOptions model;
+  std::vector<std::variant<std::string, glm::dvec2>> pins;
+  std::vector<std::variant<std::string, std::array<glm::dvec2, 2>>> glue;
 };
 
-// Paper mode is the command line's (setPaperMode): the same modulus default and self-contact, so
-// `curvefold simulate INPUT --paper T` and simulate(paper=T) give the same state bit for bit.
-SimulateArguments simulateArguments(const py::object& percentArg, const py::object& settleArg,
-                                    const py::object& paperArg, const py::object& modulusArg,
-                                    const py::object& contactArg, const py::object& stepsArg) {
+// The keywords of Design.simulate and curvefold.simulate as given (size: the latter's only).
+struct SimulateKeywords {
+  py::object percent, settle, paper, modulus, contact, steps, stiffness, motion, pin, glue;
+  py::object size = py::none();
+};
+
+// Two numbers, (2,) or a 2-sequence; finiteness is the engine's to check (sheetVertexNear).
+std::optional<glm::dvec2> point2(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return std::nullopt;
+  const auto a = py::array_t<double, py::array::forcecast>::ensure(value);
+  if (!a || a.ndim() != 1 || a.shape(0) != 2) return std::nullopt;
+  return glm::dvec2{a.at(0), a.at(1)};
+}
+
+// The items of a list, tuple or array (not a str, which is one item where `single` says so).
+std::vector<py::object> items(const py::handle& value, const std::string& name,
+                              const std::string& expected, bool single) {
+  if (single && py::isinstance<py::str>(value)) return {py::reinterpret_borrow<py::object>(value)};
+  if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+      !(py::isinstance<py::sequence>(value) || py::isinstance<py::array>(value)))
+    throw ArgumentTypeError(name + ": expected " + expected + ", got " + given(value));
+  std::vector<py::object> out;
+  for (const py::handle& item : value) out.push_back(py::reinterpret_borrow<py::object>(item));
+  return out;
+}
+
+// pin=[(x, y) or "X,Y", ...] (--pin, repeated).
+std::vector<std::variant<std::string, glm::dvec2>> pinArguments(const py::handle& value) {
+  const std::string expected = "a list of points (x, y) on the flat sheet in metres";
+  std::vector<std::variant<std::string, glm::dvec2>> pins;
+  if (value.is_none()) return pins;
+  for (const py::object& item : items(value, "pin", expected, false)) {
+    if (py::isinstance<py::str>(item)) {
+      pins.emplace_back(item.cast<std::string>());
+    } else if (const std::optional<glm::dvec2> p = point2(item)) {
+      pins.emplace_back(*p);
+    } else {
+      throw ArgumentTypeError("pin: expected " + expected + ", got an item " + given(item));
+    }
+  }
+  return pins;
+}
+
+// glue="slits", or [((x1, y1), (x2, y2)) or "X1,Y1:X2,Y2" or "slits", ...] (--glue, repeated).
+std::vector<std::variant<std::string, std::array<glm::dvec2, 2>>> glueArguments(
+    const py::handle& value) {
+  const std::string expected =
+      "\"slits\" or a list of point pairs ((x1, y1), (x2, y2)) on the flat sheet in metres";
+  std::vector<std::variant<std::string, std::array<glm::dvec2, 2>>> glue;
+  if (value.is_none()) return glue;
+  for (const py::object& item : items(value, "glue", expected, true)) {
+    if (py::isinstance<py::str>(item)) {
+      glue.emplace_back(item.cast<std::string>());
+      continue;
+    }
+    std::optional<glm::dvec2> a, b;
+    if (!py::isinstance<py::str>(item) &&
+        (py::isinstance<py::sequence>(item) || py::isinstance<py::array>(item)) &&
+        py::len(item) == 2) {
+      a = point2(item[py::int_(0)]);
+      b = point2(item[py::int_(1)]);
+    }
+    if (!a || !b)
+      throw ArgumentTypeError("glue: expected " + expected + ", got an item " + given(item));
+    glue.push_back(std::array<glm::dvec2, 2>{*a, *b});
+  }
+  return glue;
+}
+
+// Everything but pins and glue is checked before the pattern is read, in the command line's order
+// and by its functions: stiffness (setStiffnessPreset), paper mode (setPaperMode, the same modulus
+// default and self-contact), size (sheetSizeMetres); so `curvefold simulate INPUT --paper T` and
+// simulate(paper=T) give the same state bit for bit.
+SimulateArguments simulateArguments(const SimulateKeywords& keywords) {
   SimulateArguments arguments;
-  arguments.percent = number(percentArg, "percent");
-  arguments.settle = flag(settleArg, "settle");
+  arguments.percent = number(keywords.percent, "percent");
+  arguments.settle = flag(keywords.settle, "settle");
   std::optional<double> paperMm, modulusGpa;
-  if (!paperArg.is_none()) paperMm = number(paperArg, "paper");
-  if (!modulusArg.is_none()) modulusGpa = number(modulusArg, "modulus");
-  const bool contact = flag(contactArg, "contact");
-  const std::int64_t steps = integer(stepsArg, "steps");
+  if (!keywords.paper.is_none()) paperMm = number(keywords.paper, "paper");
+  if (!keywords.modulus.is_none()) modulusGpa = number(keywords.modulus, "modulus");
+  const bool contact = flag(keywords.contact, "contact");
+  const std::int64_t steps = integer(keywords.steps, "steps");
+  arguments.motion = flag(keywords.motion, "motion");
+  std::optional<std::string> stiffness;
+  if (!keywords.stiffness.is_none()) stiffness = text(keywords.stiffness, "stiffness");
+  std::optional<double> sizeMm;
+  if (!keywords.size.is_none()) sizeMm = number(keywords.size, "size");
+  arguments.pins = pinArguments(keywords.pin);
+  arguments.glue = glueArguments(keywords.glue);
   if (!(arguments.percent >= 0.0 && arguments.percent <= 100.0))
     throw std::invalid_argument("percent: must be from 0 to 100");
   if (steps < 0 || steps > 10'000'000)
     throw std::invalid_argument("steps: must lie in 0 to 10000000");
   arguments.steps = static_cast<std::size_t>(steps);
+  if (stiffness) setStiffnessPreset(arguments.model, *stiffness, paperMm.has_value());
   if (paperMm) {
     // "paper: ..." or "modulus: ..." for a value out of range (ValueError).
     setPaperMode(arguments.model, *paperMm, modulusGpa.value_or(kDefaultPaperModulusGpa), contact);
@@ -491,30 +577,54 @@ SimulateArguments simulateArguments(const py::object& percentArg, const py::obje
   } else if (!contact) {
     throw std::invalid_argument("contact: only paper mode (paper=THICKNESS_MM) has self-contact");
   }
+  if (sizeMm) arguments.sizeMetres = sheetSizeMetres(*sizeMm);
   return arguments;
+}
+
+// The pins and glue on the pattern read, in the command line's order (every pin, then the glue).
+void placePinsAndGlue(SimulateArguments& arguments, const CreasePattern& pattern,
+                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& seams) {
+  for (const auto& pin : arguments.pins) {
+    if (const auto* text = std::get_if<std::string>(&pin))
+      addPin(arguments.model, pattern, parseSheetPoint(*text, "pin"));
+    else
+      addPin(arguments.model, pattern, std::get<glm::dvec2>(pin));
+  }
+  for (const auto& glue : arguments.glue) {
+    if (const auto* text = std::get_if<std::string>(&glue))
+      addGlueText(arguments.model, pattern, seams, *text);
+    else
+      addGlue(arguments.model, pattern, std::get<1>(glue)[0], std::get<1>(glue)[1]);
+  }
 }
 
 // The bar-and-hinge simulation (engine/simulation) of a crease pattern from flat to the fold
 // amount, as numpy arrays: vertices (n, 3), development (n, 2), triangles (m, 3), edges (e, 2)
-// with their assignment letters, strain and crease angle error per edge, converged, residual.
-// Call with the GIL held; it is released while the model is built and solved.
-py::dict simulatePattern(const CreasePattern& pattern, const SimulateArguments& arguments) {
+// with their assignment letters, strain and crease angle error per edge, and what `curvefold
+// simulate` prints of the state (reportState: largest strain, crease angle errors, creases on the
+// wrong side, crossing triangle pairs; converged, iterations, residual, energy), and with motion
+// the folding motion's line. Call with the GIL held; it is released while the model is built and
+// solved.
+py::dict simulatePattern(const CreasePattern& pattern, SimulateArguments arguments,
+                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& seams = {}) {
+  placePinsAndGlue(arguments, pattern, seams);
   BarHingeModel model;
   SimulationState state;
   StaticResult result;
+  FoldingMotion motion;
+  StateReport report;
   const double amount = arguments.percent / 100.0;
-  std::vector<double> strain, angleError;
   double residual = 0.0;
   {
     py::gil_scoped_release release;
     model = buildModel(pattern, arguments.model);
+    if (arguments.motion) motion = followFoldingMotion(model);
     state = flatState(model);
     if (arguments.settle)
       result = settle(model, amount, state);
     else
       stepDynamic(model, amount, state, arguments.steps);
-    strain = edgeStrain(model, state.positions);
-    angleError = creaseAngleError(model, state.positions, amount, state.hingeAngles);
+    report = reportState(model, state, amount);
     residual = arguments.settle ? result.residual
                                 : staticResidual(model, state.positions, amount, state.hingeAngles);
   }
@@ -546,39 +656,49 @@ py::dict simulatePattern(const CreasePattern& pattern, const SimulateArguments& 
   out["triangles"] = triangles;
   out["edges"] = edges;
   out["assignment"] = assignment;
-  out["strain"] = py::array_t<double>(py::ssize_t(e), strain.data());
-  out["crease_angle_error"] = py::array_t<double>(py::ssize_t(e), angleError.data());
+  out["strain"] = py::array_t<double>(py::ssize_t(e), report.strain.data());
+  out["crease_angle_error"] = py::array_t<double>(py::ssize_t(e), report.angleError.data());
+  out["largest_strain"] = report.largestStrain;
+  out["largest_crease_angle_error"] = report.largestAngleError;
+  out["mean_crease_angle_error"] = report.meanAngleError;
+  out["wrong_side_creases"] = report.wrongSideCreases;
+  out["past_flat_creases"] = report.pastFlatCreases;
+  out["crossing_pairs"] = report.crossingPairs;
   out["converged"] = arguments.settle ? result.converged : false;
+  out["iterations"] = arguments.settle ? result.iterations : std::size_t(0);
+  out["energy_rises"] = arguments.settle ? energyRises(result.history) : std::size_t(0);
   out["residual"] = residual;
+  if (arguments.settle) out["energy"] = result.energy;
+  if (arguments.motion) {
+    py::dict line;
+    line["states"] = motion.amounts.size();
+    line["followed_to"] = 100.0 * motion.amounts[motion.amounts.size() - 2];
+    line["reached_full"] = motion.reachedFull;
+    out["motion"] = line;
+  }
   out["notes"] = pattern.notes;
   return out;
 }
 
 // Design.simulate: the design's flat sheet folded toward the design.
-py::dict simulateDesign(const PyDesign& design, const py::object& percentArg,
-                        const py::object& settleArg, const py::object& paperArg,
-                        const py::object& modulusArg, const py::object& contactArg,
-                        const py::object& stepsArg) {
-  const SimulateArguments arguments =
-      simulateArguments(percentArg, settleArg, paperArg, modulusArg, contactArg, stepsArg);
+// glue="slits" glues its slits (designPattern's seams), as `--glue slits`.
+py::dict simulateDesign(const PyDesign& design, const SimulateKeywords& keywords) {
+  const SimulateArguments arguments = simulateArguments(keywords);
   const std::shared_ptr<const Sheet> sheet = snapshotOf(design);
-  CreasePattern pattern;
+  DesignPattern pattern;
   {
     py::gil_scoped_release release;
-    pattern = designPattern(*sheet).pattern;
+    pattern = designPattern(*sheet);
   }
-  return simulatePattern(pattern, arguments);
+  return simulatePattern(pattern.pattern, arguments, pattern.seams);
 }
 
 // curvefold.simulate: a crease pattern from another tool, as a FOLD dict (what json.load gives;
 // numpy arrays in it are taken as lists) or a path to a FOLD or SVG file, read as `curvefold
 // simulate` reads it. Messages about a dict start "pattern: ".
-py::dict simulateCreasePattern(const py::object& source, const py::object& percentArg,
-                               const py::object& settleArg, const py::object& paperArg,
-                               const py::object& modulusArg, const py::object& contactArg,
-                               const py::object& stepsArg) {
-  const SimulateArguments arguments =
-      simulateArguments(percentArg, settleArg, paperArg, modulusArg, contactArg, stepsArg);
+// size=MM scales it as --size does (after its frame_unit or the SVG's size).
+py::dict simulateCreasePattern(const py::object& source, const SimulateKeywords& keywords) {
+  const SimulateArguments arguments = simulateArguments(keywords);
   CreasePattern pattern;
   if (py::isinstance<py::dict>(source)) {
     const py::cpp_function asList([](const py::object& value) -> py::object {
@@ -610,6 +730,7 @@ py::dict simulateCreasePattern(const py::object& source, const py::object& perce
     throw ArgumentTypeError(
         "pattern: expected a FOLD dict or the path of a .fold or .svg file, got " + given(source));
   }
+  if (arguments.sizeMetres > 0.0) scaleToSize(pattern, arguments.sizeMetres);
   return simulatePattern(pattern, arguments);
 }
 
@@ -950,15 +1071,29 @@ void defineDesignEditing(py::class_<PyDesign>& design) {
             saveDesign(whole, path);
           },
           py::arg("path"), "Writes the design file atomically (the same bytes as the command line)")
-      .def("simulate", &simulateDesign, py::kw_only(), py::arg("percent") = 100.0,
-           py::arg("settle") = true, py::arg("paper") = py::none(), py::arg("modulus") = py::none(),
-           py::arg("contact") = true, py::arg("steps") = 2000,
-           "Folds the design's flat sheet to `percent` with the bar-and-hinge simulation: to "
-           "equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM for "
-           "paper mode as `curvefold simulate DESIGN --paper` (the same state bit for bit): "
-           "modulus=GPA (default 4), self-contact keeping the layers the thickness apart unless "
-           "contact=False (--no-contact). Returns a dict as curvefold.simulate does (vertices "
-           "numbered as the design's)")
+      .def(
+          "simulate",
+          [](const PyDesign& d, const py::object& percent, const py::object& settle,
+             const py::object& paper, const py::object& modulus, const py::object& contact,
+             const py::object& steps, const py::object& stiffness, const py::object& motion,
+             const py::object& pin, const py::object& glue) {
+            return simulateDesign(
+                d, {percent, settle, paper, modulus, contact, steps, stiffness, motion, pin, glue});
+          },
+          py::kw_only(), py::arg("percent") = 100.0, py::arg("settle") = true,
+          py::arg("paper") = py::none(), py::arg("modulus") = py::none(), py::arg("contact") = true,
+          py::arg("steps") = 2000, py::arg("stiffness") = py::none(), py::arg("motion") = false,
+          py::arg("pin") = py::none(), py::arg("glue") = py::none(),
+          "Folds the design's flat sheet to `percent` with the bar-and-hinge simulation, as "
+          "`curvefold simulate DESIGN` does (the same state bit for bit): to equilibrium "
+          "(settle=True, --settle) or by `steps` damped dynamic steps; paper=THICKNESS_MM for "
+          "paper mode (--paper): modulus=GPA (default 4), self-contact keeping the layers the "
+          "thickness apart unless contact=False (--no-contact); stiffness='curvefold' or "
+          "'origami-simulator' (--stiffness, design mode); motion=True (--motion): targets along "
+          "the sheet's folding motion; pin=[(x, y), ...] (--pin): hold the vertex nearest each "
+          "flat-sheet point (metres); glue=[((x1, y1), (x2, y2)), ...] or 'slits' (--glue): pull "
+          "the vertices nearest two points together, or glue every slit shut. Returns a dict as "
+          "curvefold.simulate does (vertices numbered as the design's)")
       .def(
           "fold",
           [](PyDesign& d, const py::object& grab, const py::object& to) {
@@ -1078,21 +1213,37 @@ void defineFunctions(py::module_& m) {
         "chamfer_relative, a_to_b_max, a_to_b_mean, b_to_a_max, b_to_a_mean}, metres; with "
         "png=PATH also a picture of a coloured by its distance to b (1280x720, legend in mm)");
   m.def(
-      "simulate", &simulateCreasePattern, py::arg("pattern"), py::kw_only(),
-      py::arg("percent") = 100.0, py::arg("settle") = true, py::arg("paper") = py::none(),
-      py::arg("modulus") = py::none(), py::arg("contact") = true, py::arg("steps") = 2000,
+      "simulate",
+      [](const py::object& pattern, const py::object& percent, const py::object& settle,
+         const py::object& paper, const py::object& modulus, const py::object& contact,
+         const py::object& steps, const py::object& stiffness, const py::object& motion,
+         const py::object& pin, const py::object& glue, const py::object& size) {
+        return simulateCreasePattern(pattern, {percent, settle, paper, modulus, contact, steps,
+                                               stiffness, motion, pin, glue, size});
+      },
+      py::arg("pattern"), py::kw_only(), py::arg("percent") = 100.0, py::arg("settle") = true,
+      py::arg("paper") = py::none(), py::arg("modulus") = py::none(), py::arg("contact") = true,
+      py::arg("steps") = 2000, py::arg("stiffness") = py::none(), py::arg("motion") = false,
+      py::arg("pin") = py::none(), py::arg("glue") = py::none(), py::arg("size") = py::none(),
       "Folds a crease pattern from another tool (a FOLD dict as json.load gives it, or the path "
       "of a FOLD or SVG file in Origami Simulator's convention) with the bar-and-hinge "
-      "simulation, as `curvefold simulate` does: from flat to `percent` of every crease's "
-      "angle, to equilibrium (settle=True) or by `steps` damped dynamic steps; paper=THICKNESS_MM "
-      "for paper mode as `curvefold simulate PATTERN --paper` (the same state bit for bit): "
-      "modulus=GPA (default 4), self-contact keeping the layers the thickness apart unless "
-      "contact=False (--no-contact). Returns a dict: vertices (n, 3) and development (n, 2) (the "
-      "pattern's "
-      "flat vertices, after crossings are split, faces triangulated and cuts opened), triangles "
-      "(m, 3), edges (e, 2), assignment (a str, one FOLD letter per edge), strain (e,), "
-      "crease_angle_error (e,) in degrees, converged, residual, notes (what was read but not "
-      "used)");
+      "simulation, as `curvefold simulate PATTERN` does (the same state bit for bit): from flat "
+      "to `percent` of every crease's angle, to equilibrium (settle=True, --settle) or by "
+      "`steps` damped dynamic steps; paper=THICKNESS_MM for paper mode (--paper): modulus=GPA "
+      "(default 4), self-contact keeping the layers the thickness apart unless contact=False "
+      "(--no-contact); stiffness='curvefold' or 'origami-simulator' (--stiffness, design "
+      "mode); motion=True (--motion): targets along the pattern's folding motion (a "
+      "waterbomb's); pin=[(x, y), ...] (--pin): hold the vertex nearest each flat-sheet point "
+      "(metres, after size); glue=[((x1, y1), (x2, y2)), ...] (--glue): pull the vertices "
+      "nearest two points together; size=MM (--size): the sheet's larger side in millimetres. "
+      "Returns a dict: vertices (n, 3) and development (n, 2) (the pattern's flat vertices, "
+      "after crossings are split, faces triangulated and cuts opened), triangles (m, 3), edges "
+      "(e, 2), assignment (a str, one FOLD letter per edge), strain (e,), crease_angle_error "
+      "(e,) in degrees, and what the command line prints of the state: largest_strain, "
+      "largest_crease_angle_error and mean_crease_angle_error (degrees), wrong_side_creases, "
+      "past_flat_creases, crossing_pairs (triangle pairs that cross), converged (settled), "
+      "iterations, energy_rises, residual, energy (with settle), motion (with motion=True: "
+      "states, followed_to in percent, reached_full); and notes (what was read but not used)");
   m.def("surfaces", &surfacesInfo,
         "The catalogue: {name: {description, parameters: {name: {default, min, max, integer, "
         "description}}, symmetries}}");

@@ -7,6 +7,8 @@ import numpy.typing as npt
 
 # A point is three numbers: a 3-sequence or a (3,) array (not (3, 1)), finite.
 Point = Sequence[float] | npt.NDArray[np.floating[Any]]
+# A point of the flat sheet in metres, (x, y) (simulate's pin and glue; "X,Y" as a str too).
+SheetPoint = Sequence[float] | npt.NDArray[np.floating[Any]]
 
 # The rule for every call: a bad value raises ValueError naming its parameter; a value of the wrong
 # type raises ArgumentError (a ValueError and a TypeError) naming it; a file that cannot be read or
@@ -69,6 +71,9 @@ class Design:
     def simulate(
         self, *, percent: float = 100.0, settle: bool = True, paper: float | None = None,
         modulus: float | None = None, contact: bool = True, steps: int = 2000,
+        stiffness: str | None = None, motion: bool = False,
+        pin: Sequence[SheetPoint | str] | None = None,
+        glue: str | Sequence[tuple[SheetPoint, SheetPoint] | str] | None = None,
     ) -> dict[str, Any]: ...
     def fold(self, *, grab: Point, to: Point) -> FoldResult: ...
     def undo(self) -> bool: ...
@@ -135,8 +140,11 @@ def surfaces() -> dict[str, dict[str, Any]]: ...
 
 # What Design.simulate and simulate return: vertices (n, 3) float64, development (n, 2) float64,
 # triangles (m, 3) uint32, edges (e, 2) uint32, assignment (str, one FOLD letter per edge), strain
-# (e,) float64, crease_angle_error (e,) float64 degrees, converged (bool), residual (float), notes
-# (list[str]).
+# (e,) float64, crease_angle_error (e,) float64 degrees; what `curvefold simulate` prints of the
+# state: largest_strain, largest_crease_angle_error and mean_crease_angle_error (float, degrees),
+# wrong_side_creases, past_flat_creases, crossing_pairs (int), converged (bool), iterations and
+# energy_rises (int, 0 without settle), residual (float), energy (float, with settle), motion
+# (with motion=True: {states, followed_to, reached_full}); notes (list[str]).
 def simulate(
     pattern: dict[str, Any] | str | PathLike[str],
     *,
@@ -146,5 +154,10 @@ def simulate(
     modulus: float | None = None,
     contact: bool = True,
     steps: int = 2000,
+    stiffness: str | None = None,
+    motion: bool = False,
+    pin: Sequence[SheetPoint | str] | None = None,
+    glue: str | Sequence[tuple[SheetPoint, SheetPoint] | str] | None = None,
+    size: float | None = None,
 ) -> dict[str, Any]: ...
 def replay(recording: str | PathLike[str]) -> Design: ...

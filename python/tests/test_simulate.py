@@ -214,3 +214,129 @@ def test_simulate_paper_mode_is_the_command_lines_bit_for_bit_with_its_contact(t
                     "--paper", "0.1", "--obj", tmp_path / "d.obj"], capture_output=True, check=True)
     result = design.simulate(percent=100, paper=0.1)
     assert np.array_equal(result["vertices"], obj_vertices(tmp_path / "d.obj"))
+
+
+# The command line's other options as keywords (issue 39, 5): each the same state bit for bit as
+# `curvefold simulate` with the option, and a state the option moves, so a keyword left unused
+# fails. Each case also checks the report the command line prints against the returned numbers.
+WATERBOMB = SOURCE / "tests" / "data" / "crease_patterns" / "waterbomb_base.fold"
+
+
+def simulate_cli(source, tmp_path, *options):
+    """The OBJ's vertices and the report of `curvefold simulate SOURCE --settle OPTIONS`."""
+    obj = tmp_path / "cli.obj"
+    run = subprocess.run([CLI, "simulate", source, "--settle", "--obj", obj, *options],
+                         capture_output=True, text=True, check=True)
+    return obj_vertices(obj), run.stdout
+
+
+def printed_report(result):
+    """The command line's lines for a settled state, from the numbers simulate returns."""
+    crossing = result["crossing_pairs"]
+    line = (f"{'settled' if result['converged'] else 'NOT settled'} in {result['iterations']} "
+            f"iterations, residual {result['residual']:.1e}, energy {result['energy']:.6g} (rose "
+            f"in {result['energy_rises']}), largest strain {result['largest_strain']:.2e}, "
+            f"largest crease angle error {result['largest_crease_angle_error']:.2f} degrees "
+            f"(mean {result['mean_crease_angle_error']:.2f})")
+    for count, what in ((result["wrong_side_creases"], "creases on the wrong side of flat"),
+                        (result["past_flat_creases"], "creases past flat-folded")):
+        line += f", {count} {what}" if count else ""
+    line += f", self-intersection: {f'{crossing} triangle pairs cross' if crossing else 'none'}"
+    lines = [line]
+    if "motion" in result:
+        motion = result["motion"]
+        lines.append(f"folding motion: {motion['states']} states, followed to "
+                     f"{motion['followed_to']:.1f}%"
+                     + (" (the 100% angles)" if motion["reached_full"] else ", then linear"))
+    return lines
+
+
+@pytest.mark.parametrize("options, keywords", [
+    (["--pin", "0.5,0.5"], dict(pin=[(0.5, 0.5)])),
+    (["--pin", "1,0", "--pin=-1,-1"], dict(pin=["1,0", np.array([-1.0, -1.0])])),
+    (["--glue", "-1,-1:1,1"], dict(glue=[((-1, -1), (1, 1))])),
+    (["--glue=-1,1:1,-1"], dict(glue=["-1,1:1,-1"])),
+    (["--stiffness", "origami-simulator"], dict(stiffness="origami-simulator")),
+    (["--motion"], dict(motion=True)),
+    (["--size", "50"], dict(size=50)),
+], ids=["pin", "pins", "glue", "glue-text", "stiffness", "motion", "size"])
+def test_simulate_keywords_are_the_command_lines_options_bit_for_bit(tmp_path, options, keywords):
+    # The waterbomb base (9 vertices) at 50% in design mode, where every one of them moves it.
+    expected, printed = simulate_cli(WATERBOMB, tmp_path, "--percent", "50", *options)
+    result = curvefold.simulate(WATERBOMB, percent=50, **keywords)
+    assert np.array_equal(result["vertices"], expected)
+    plain = curvefold.simulate(WATERBOMB, percent=50)["vertices"]
+    assert np.abs(plain - expected).max() > 0.05  # the option moves the state
+    for line in printed_report(result):
+        assert line in printed, (line, printed)
+
+
+@pytest.mark.parametrize("surface, options, keywords", [
+    ("cylinder", ["--pin", "PIN"], dict(pin=["PIN"])),
+    ("cylinder", ["--glue", "GLUE"], dict(glue=["GLUE"])),
+    ("cylinder", ["--stiffness", "origami-simulator"], dict(stiffness="origami-simulator")),
+    ("cone", ["--glue", "slits", "--paper", "0.1"], dict(glue="slits", paper=0.1)),
+], ids=["pin", "glue", "stiffness", "glue-slits"])
+def test_design_simulate_keywords_are_the_command_lines_options_bit_for_bit(tmp_path, surface,
+                                                                             options, keywords):
+    # A folded cylinder at 50% (its creases and bending disagree there: the stiffnesses matter;
+    # --motion finds no other motion for it, so the waterbomb above alone covers motion); a cone
+    # with its slit glued in paper mode.
+    design = curvefold.Design.new(surface, resolution=8)
+    if surface == "cylinder":
+        design = curvefold.Design.new(surface, radius=0.05, resolution=8)
+        design.fold(grab=(0.05, 0.1, 0.0), to=(0.03, 0.07, 0.02))
+    design.save(tmp_path / "d.curvefold.json")
+    # Points of the flat sheet as the command line takes them (shortest round-trip text: exact).
+    development = np.asarray(design.development)
+    corner, far = development[0], development[np.argmax(np.linalg.norm(development - development[0],
+                                                                       axis=1))]
+    point = lambda p: f"{p[0]!r},{p[1]!r}"
+    texts = {"PIN": point(corner), "GLUE": point(corner) + ":" + point(far)}
+    options = [texts.get(option, option) for option in options]
+    keywords = {key: [texts.get(v, v) for v in value] if isinstance(value, list) else value
+                for key, value in keywords.items()}
+    percent = 100 if "paper" in keywords else 50
+    expected, printed = simulate_cli(tmp_path / "d.curvefold.json", tmp_path, "--percent",
+                                     str(percent), *options)
+    result = design.simulate(percent=percent, **keywords)
+    assert np.array_equal(result["vertices"], expected)
+    plain = design.simulate(percent=percent, paper=keywords.get("paper"))["vertices"]
+    assert np.abs(plain - expected).max() > 1e-3  # the option moves the state
+    for line in printed_report(result):
+        assert line in printed, (line, printed)
+
+
+def test_simulate_keywords_refuse_what_the_command_line_refuses_with_its_message(tmp_path):
+    # Each bad value as an option and as a keyword: the command line's one line, less its "--",
+    # is the ValueError's (one function checks both: engine/simulation/simulate_options.hpp).
+    cases = [
+        (["--pin", "40,40"], dict(pin=[(40, 40)])),
+        (["--pin", "x"], dict(pin=["x"])),
+        (["--pin", "nan,0"], dict(pin=["nan,0"])),
+        (["--glue", "0,0:0.01,0"], dict(glue=[((0, 0), (0.01, 0))])),
+        (["--glue", "0,0"], dict(glue="0,0")),
+        (["--glue", "slits"], dict(glue="slits")),
+        (["--stiffness", "soft"], dict(stiffness="soft")),
+        (["--stiffness", "curvefold", "--paper", "0.1"], dict(stiffness="curvefold", paper=0.1)),
+        (["--size", "0"], dict(size=0)),
+        (["--size", "2e6"], dict(size=2e6)),
+    ]
+    for options, keywords in cases:
+        run = subprocess.run([CLI, "simulate", WATERBOMB, "--percent", "50", "--obj",
+                              tmp_path / "x.obj", *options], capture_output=True, text=True)
+        assert run.returncode == 1 and not (tmp_path / "x.obj").exists(), options
+        message = run.stderr.splitlines()[-1].removeprefix("curvefold: error: --")
+        with pytest.raises(ValueError) as error:
+            curvefold.simulate(WATERBOMB, percent=50, **keywords)
+        assert not isinstance(error.value, TypeError), options
+        assert one_line(error) == message, options
+    # Only a crease pattern takes a size (a design is in metres): Design.simulate has no size.
+    with pytest.raises(TypeError):
+        curvefold.Design.new("square").simulate(size=50)
+    for keywords in (dict(pin=(0.5, 0.5)), dict(pin="0.5,0.5"), dict(pin=[(0.5, 0.5, 0)]),
+                     dict(glue=[(0, 0)]), dict(glue=5), dict(stiffness=3), dict(motion="yes"),
+                     dict(size="50")):
+        with pytest.raises(curvefold.ArgumentError) as error:
+            curvefold.simulate(WATERBOMB, percent=50, **keywords)
+        assert one_line(error).startswith(next(iter(keywords)) + ": "), keywords
