@@ -238,6 +238,21 @@ ReachTarget reachTarget(const std::string& name) {
   return t;
 }
 
+// The reach target `name` unfolds, within 15 s (150 s sanitized), to `folds` folds that end on
+// its sheet.
+void expectUnfoldsOntoItsSheet(const std::string& name, std::size_t folds) {
+  const ReachTarget t = reachTarget(name);
+  const TriangleMesh sheet = meshOf(t.initial);
+  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 8,
+                                            Deadline::in(testing::kSanitized ? 150.0 : 15.0));
+  EXPECT_FALSE(plan.cutShort);
+  EXPECT_EQ(plan.folds.size(), folds);
+  ASSERT_EQ(plan.unfolded.size(), t.target.positions.size());
+  EXPECT_LE(
+      surfaceDistance(TriangleMesh{plan.unfolded, t.target.triangles}, sheet).relativeHausdorff(),
+      1e-3);
+}
+
 // A sequence read off a reachable target's creases that moves the sheet whole on the way (farther
 // first) and ends far nearer than the start, though short of reaching it: the fit fell back on the
 // best sequence whose every fold gains, here none, and kept no fold (41.3%). Toward a target
@@ -278,16 +293,7 @@ TEST(FitReading, AStripBetweenACreaseAndTheRimIsGrabbedOffTheCrease) {
 // inside the sheet where another sharp edge goes on is read after those that run from rim to
 // rim: the folds made last first, 8 folds, on the sheet.
 TEST(FitReading, ACreaseALaterFoldCutIsReadAfterTheFoldsThatCutIt) {
-  const ReachTarget t = reachTarget("interior_cone_8");
-  const TriangleMesh sheet = meshOf(t.initial);
-  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 8,
-                                            Deadline::in(testing::kSanitized ? 100.0 : 15.0));
-  EXPECT_FALSE(plan.cutShort);
-  EXPECT_EQ(plan.folds.size(), 8u);
-  EXPECT_LT(plan.sharpLengthLeft, 1e-3 * boundingDiagonal(t.target));
-  EXPECT_LE(
-      surfaceDistance(TriangleMesh{plan.unfolded, t.target.triangles}, sheet).relativeHausdorff(),
-      1e-3);
+  expectUnfoldsOntoItsSheet("interior_cone_8", 8);
 }
 
 // Eight folds, each through an earlier crease: the first unfolding lies on the sheet with 0.08%
@@ -295,16 +301,7 @@ TEST(FitReading, ACreaseALaterFoldCutIsReadAfterTheFoldsThatCutIt) {
 // stopped at, so it tried 359 more orders (40 s of CPU) for nothing it could prefer. Less crease
 // left than one step must take away, on the sheet, ends it.
 TEST(FitReading, AnUnfoldingOnTheSheetStopsTryingOrders) {
-  const ReachTarget t = reachTarget("cuts_half_cylinder_8");
-  const TriangleMesh sheet = meshOf(t.initial);
-  const TargetUnfolding plan = unfoldTarget(t.target, sheet, sharpEdgeThreshold(sheet), 8,
-                                            Deadline::in(testing::kSanitized ? 150.0 : 15.0));
-  EXPECT_FALSE(plan.cutShort);
-  EXPECT_EQ(plan.folds.size(), 8u);
-  ASSERT_EQ(plan.unfolded.size(), t.target.positions.size());
-  EXPECT_LE(
-      surfaceDistance(TriangleMesh{plan.unfolded, t.target.triangles}, sheet).relativeHausdorff(),
-      1e-3);
+  expectUnfoldsOntoItsSheet("cuts_half_cylinder_8", 8);
 }
 
 // Whole-sheet folds made between creasing folds (issue 38's drag recipe on the helix's tangent
