@@ -45,9 +45,12 @@ struct Connectivity {
   std::vector<MeshEdge> interior;                      // edges with exactly two faces
   std::vector<std::vector<std::uint32_t>> neighbours;  // per vertex
   std::vector<char> onBoundary;                        // per vertex: on an edge with one face
+  // Per vertex: on the boundary where another boundary vertex lies (within `tolerance`): a slit's
+  // two sides, where a point names either side of the development.
+  std::vector<char> onSlit;
 };
 
-Connectivity connectivityOf(const TriangleMesh& mesh) {
+Connectivity connectivityOf(const TriangleMesh& mesh, double tolerance) {
   const EdgeFaces faces = edgeFaces(mesh);
   Connectivity c;
   c.neighbours.resize(mesh.positions.size());
@@ -58,6 +61,21 @@ Connectivity connectivityOf(const TriangleMesh& mesh) {
     c.neighbours[edge.second].push_back(edge.first);
     if (around.size() == 2) c.interior.push_back({edge.first, edge.second, {around[0], around[1]}});
   }
+  // Boundary vertices swept along x: those within the tolerance of one another are a slit's.
+  std::vector<std::uint32_t> rim;
+  for (std::uint32_t v = 0; v < mesh.positions.size(); ++v)
+    if (c.onBoundary[v]) rim.push_back(v);
+  std::sort(rim.begin(), rim.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return mesh.positions[a].x < mesh.positions[b].x;
+  });
+  c.onSlit.assign(mesh.positions.size(), 0);
+  for (std::size_t i = 0; i < rim.size(); ++i)
+    for (std::size_t j = i + 1; j < rim.size(); ++j) {
+      const glm::dvec3& a = mesh.positions[rim[i]];
+      const glm::dvec3& b = mesh.positions[rim[j]];
+      if (b.x - a.x > tolerance) break;
+      if (glm::distance(a, b) <= tolerance) c.onSlit[rim[i]] = c.onSlit[rim[j]] = 1;
+    }
   return c;
 }
 
@@ -78,6 +96,9 @@ struct Candidate {
   ReflectionPlane plane;
   std::vector<std::uint32_t> part;
   double sharpAfter = 0.0;
+  // Its crease ends inside the sheet where another crease goes on: a crease a later fold moved in
+  // part (the rest of it lies in another plane), which the fold made last cannot leave.
+  bool interrupted = false;
 };
 
 }  // namespace
@@ -179,6 +200,29 @@ struct Unfolder {
     return count ? sum / static_cast<double>(count) : 0.0;
   }
 
+  // Whether the crease in a plane (its sharp edges in it, `d` the vertices' distances to it) ends
+  // at a vertex off the boundary from which another sharp edge goes on, off the plane: a crease
+  // a later fold moved in part (the rest of it lies in another plane), which the fold made last
+  // cannot leave. The last fold's crease runs from rim to rim (a later one crossing it goes on
+  // through), or fades under the threshold (no sharp edge goes on).
+  bool interrupted(const std::vector<glm::dvec3>& positions, const std::vector<double>& d) const {
+    std::vector<std::uint8_t> inPlane(positions.size(), 0), offPlane(positions.size(), 0);
+    for (const MeshEdge& e : connectivity.interior) {
+      const glm::dvec3 n0 = faceNormal(positions, target.triangles[e.faces[0]]);
+      const glm::dvec3 n1 = faceNormal(positions, target.triangles[e.faces[1]]);
+      if (glm::dot(n0, n1) >= cosThreshold) continue;
+      if (std::abs(d[e.a]) <= onPlane && std::abs(d[e.b]) <= onPlane) {
+        inPlane[e.a] = static_cast<std::uint8_t>(std::min(inPlane[e.a] + 1, 2));
+        inPlane[e.b] = static_cast<std::uint8_t>(std::min(inPlane[e.b] + 1, 2));
+      } else {
+        offPlane[e.a] = offPlane[e.b] = 1;
+      }
+    }
+    for (std::size_t v = 0; v < positions.size(); ++v)
+      if (inPlane[v] == 1 && !connectivity.onBoundary[v] && offPlane[v]) return true;
+    return false;
+  }
+
   std::vector<Candidate> candidatesAt(const std::vector<glm::dvec3>& positions) const {
     TriangleMesh current{positions, target.triangles};
     CreasePlaneOptions options;
@@ -193,6 +237,7 @@ struct Unfolder {
       std::vector<double> d(positions.size());
       for (std::size_t v = 0; v < positions.size(); ++v) d[v] = plane.signedDistance(positions[v]);
       std::fill(component.begin(), component.end(), -1);
+      const bool cut = interrupted(positions, d);
       // The pieces next to the crease: grown from each vertex of a face on a sharp edge in the
       // plane, through vertices on its side.
       for (const MeshEdge& e : connectivity.interior) {
@@ -238,6 +283,7 @@ struct Unfolder {
             std::vector<glm::dvec3> moved = positions;
             for (std::uint32_t v : candidate.part) moved[v] = plane.reflect(moved[v]);
             candidate.sharpAfter = sharpLength(target, connectivity, moved, cosBent);
+            candidate.interrupted = cut;
             candidates.push_back(std::move(candidate));
           }
       }
@@ -532,6 +578,7 @@ struct Unfolder {
     for (const Candidate& c : candidates)
       if (c.sharpAfter < sharp - kLeastCrease * diagonal) ranked.push_back(&c);
     std::stable_sort(ranked.begin(), ranked.end(), [&](const Candidate* a, const Candidate* b) {
+      if (a->interrupted != b->interrupted) return b->interrupted;
       if (a->sharpAfter < b->sharpAfter - 1e-6 * diagonal) return true;
       if (b->sharpAfter < a->sharpAfter - 1e-6 * diagonal) return false;
       return a->part.size() < b->part.size();
@@ -554,13 +601,20 @@ struct Unfolder {
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
       Step step{chosen->plane, {}, {}};
-      // The seeds: the deepest vertices off the boundary (any, where a side has none).
+      // The seeds: the deepest vertices off the boundary and off the plane; where a side has
+      // none (a strip between a crease and a rim, one row of faces wide: its inner vertices lie
+      // on the crease, and a seed there grabs the crease and folds nothing), the deepest on a
+      // rim, not a slit's (a point there names either side); any, where it has neither.
       double deepestPiece = -1.0, deepestRest = -1.0;
       for (std::size_t v = 0; v < positions.size(); ++v) {
         if (connectivity.neighbours[v].empty()) continue;
         if (inPiece[v]) next[v] = chosen->plane.reflect(next[v]);
-        const double depth = std::abs(chosen->plane.signedDistance(next[v])) +
-                             (connectivity.onBoundary[v] ? 0.0 : 2.0 * diagonal);
+        const double off = std::abs(chosen->plane.signedDistance(next[v]));
+        const double rank = off <= onPlane                ? 0.0
+                            : !connectivity.onBoundary[v] ? 4.0
+                            : !connectivity.onSlit[v]     ? 2.0
+                                                          : 0.0;
+        const double depth = off + rank * diagonal;
         double& deepest = inPiece[v] ? deepestPiece : deepestRest;
         if (depth > deepest) {
           deepest = depth;
@@ -609,7 +663,7 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
   Unfolder unfolder{
       target,
-      connectivityOf(target),
+      connectivityOf(target, 1e-5 * diagonal),
       diagonal,
       1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
       std::cos(minDihedralDegrees * std::numbers::pi / 180.0),

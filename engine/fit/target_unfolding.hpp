@@ -10,9 +10,10 @@
 //
 // Each step takes, among the target's crease planes (crease_planes.hpp) and the pieces next to
 // their creases, a reflection that takes crease away (any bend beyond the sheet's own facets is
-// crease), up to four planes a step, best first and depth first, up to 600 unfoldings or until one
-// ends smooth and on the sheet (the fold made last may leave the shortest crease, and a crease a
-// later fold moved can be unfolded first and lead nowhere). It stops when no reflection takes
+// crease), up to four planes a step, best first (a crease that ends inside the sheet where another
+// sharp edge goes on, which a later fold cut, last) and depth first, up to 600 unfoldings or until
+// one ends smooth and on the sheet (the fold made last may leave the shortest crease, and a crease
+// a later fold moved can be unfolded first and lead nowhere). It stops when no reflection takes
 // away a crease. Reflecting a piece or the rest of the target unfolds its crease alike, one
 // reflection of the whole apart; of every such choice along an unfolding, one whose result lies
 // on the initial sheet is kept (the part that never moved stays where the sheet is), with rests
@@ -50,8 +51,10 @@ struct UnfoldedFold {
   ReflectionPlane plane;
   // A vertex of the target deep in the part the fold reflected, where it lay before the fold,
   // and its index: where it lies on the sheet (TargetUnfolding::unfolded) names it in the
-  // development, which no fold moves. Never on the target's boundary (a slit's two sides lie at
-  // one place: a point there names either).
+  // development, which no fold moves. Off the fold's plane (a seed on it grabs the crease and
+  // folds nothing), and off the target's boundary, but for a part whose inner vertices all lie on
+  // the crease (a strip one row of faces wide along a rim): then on a rim, never on a slit (its
+  // two sides lie at one place: a point there names either).
   glm::dvec3 seedBefore{0.0};
   std::uint32_t seedVertex = 0;
   // A symmetric design's fold whose image moved the whole sheet (its plane missed the folded
