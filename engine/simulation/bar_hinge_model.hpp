@@ -108,8 +108,8 @@ ModelOptions simulatorModelOptions();
 //   options      the options to turn to paper mode (its other fields kept: pins, glue, ...)
 //   thicknessMm  the paper's thickness, above 0 and at most 10 mm
 //   modulusGpa   its Young's modulus, above 0 and at most 1000 GPa
-//   contact      self-contact: layers kept the thickness apart, and edge pairs too where no seam
-//                is glued (contact20: 47 of 126 paper runs crossed without them, 3 with)
+//   contact      self-contact: layers kept the thickness apart, and edge pairs too, glued
+//                seams or not (contact20: 47 of 126 paper runs crossed without them, 3 with)
 // Outputs:
 //   options      mode Paper, paper thickness and modulus in SI units, contact as above
 // Throws std::invalid_argument for a value out of range, its message starting with the value's

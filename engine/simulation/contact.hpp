@@ -28,14 +28,18 @@
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
 // that force.
 //
-// Edge-edge pairs (layer39; on where the sheet has no glue, ContactOptions): two bars with no end
-// in common whose segments come within the thickness + s^ of each other have the same barrier on
-// the segments' distance (its gradient at the nearest points, Ericson 5.1.9), excluded as
-// vertex-triangle pairs are (near on the flat sheet, or across a glued seam), and bound the static
-// solver's steps alike. Off by default (layer40, contact17, contact20): on the recorded cone glued,
-// pairs of edges the layer order leaves within the thickness start deep in the barrier, and it
-// settles at 5.5% strain (0.9% without); on sheets without glue they keep edges from passing
-// through edges, which vertex-triangle pairs cannot, but two settles stop short of the tolerance.
+// Edge-edge pairs (layer39; ContactOptions, which `simulate --paper` asks for): two bars with no
+// end in common whose segments come within the thickness + s^ of each other have the same barrier
+// on the segments' distance (its gradient at the nearest points, Ericson 5.1.9), excluded as
+// vertex-triangle pairs are (near on the flat sheet, within 3 x exclusion for edges, or across a
+// glued seam), and bound the static solver's steps alike. They keep edges from passing through
+// edges, which vertex-triangle pairs cannot. Edges nearer on the flat sheet meet beside a crease,
+// where the sharp fold cannot hold them a thickness apart (kEdgeExclusionScale, contact.cpp: with
+// the exclusion of vertex-triangle pairs the recorded cone glued settled at 5.5% strain, 0.9%
+// without edge pairs). Off by default in the engine; two settles of contact20's 126 paper runs
+// stop short of the tolerance with them (residuals 1.8e-9 and 4.2e-9; the second's forces are
+// under what moving a vertex by its coordinates' last place changes: contact21,
+// docs/performance.md).
 //
 // Known limits: the distance between nearly parallel segments is not smooth (IPC's mollifier is
 // not applied); the dynamic solver's step is not
@@ -67,13 +71,12 @@ struct ContactOptions {
   double thickness = 0.0;        // m; 0: the paper's (PaperProperties::thickness)
   double stiffnessScale = 10.0;  // kappa = stiffnessScale x force scale / activation
   // Edge-edge pairs too (above), and with them the static solver's step bound advanced along
-  // the step (contact_advance.hpp). Off here; `simulate --paper` asks for them on sheets without
-  // glue. Asked for on sheets without glue
-  // (edgePairsWhereGlued false) no triangle pair crossed more than without in contact19's 126
-  // paper runs (1 to 625 fewer in 30), 33 more states settled, but two states that settle
+  // the step (contact_advance.hpp). Off here; `simulate --paper` asks for them (setPaperMode).
+  // Asked for on sheets without glue no triangle pair crossed more than without in contact19's
+  // 126 paper runs (1 to 625 fewer in 30), 33 more states settled, but two states that settle
   // without stopped at residuals 1.8e-9 and 4.2e-9 (the tolerance 1e-9) and strain rose in 31
-  // runs (contact20, docs/performance.md). On a glued sheet only with edgePairsWhereGlued: the
-  // recorded cone glued settles at 5.5% strain with them (0.9% without).
+  // runs (contact20, docs/performance.md). On a glued sheet only with edgePairsWhereGlued (on
+  // here and in setPaperMode; the glued designs settle as without edge pairs since contact21).
   bool edgePairs = false;
   bool edgePairsWhereGlued = true;
 };
