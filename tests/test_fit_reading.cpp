@@ -13,6 +13,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -1452,6 +1453,48 @@ TEST(StartSurface, AHelixOfOtherParametersMovedWholeStartsFromTheSheetItUnfoldsT
   for (glm::dvec3& p : mirrored.positions) p.x = 0.02 - p.x;
   for (auto& t : mirrored.triangles) std::swap(t[1], t[2]);
   expectStartsFrom(chooseStart(mirrored, "helix_tangent"), made);
+}
+
+// Seed-19 tangent-params-3-4-00-helix_tangent (tests/data/reach): its ruling width was read 1%
+// short (0.07922 for 0.08), a sheet one grid row short of the unfolded target, whose far row (34
+// vertices a ruling, every 4th taken in index order) no point of the target's spread met: both
+// measures read 0 there, and the fit ended 70.1% away. The target's rim is measured too.
+TEST(StartSurface, AHelixReadShortIsSeenAtTheUnfoldedTargetsRim) {
+  const ReachTarget t = reachTarget("tangent_params_helix_tangent_3");
+  const std::optional<SurfaceParameters> read = parametersFromUnfolding(t.target, "helix_tangent");
+  ASSERT_TRUE(read);
+  SurfaceParameters made = std::get<GeneratedSurface>(t.design.surface).parameters;
+  made.emplace("ruling_start", 0.02);  // the defaults
+  made.emplace("ruling_width", 0.08);
+  for (const auto& [name, value] : made) {
+    const double got = read->count(name) ? read->at(name) : (name == "ruling_start" ? 0.02 : 0.08);
+    EXPECT_NEAR(got, value, 1e-4 * value) << name;
+  }
+}
+
+// The reading's coarse measure takes every 4th point of a sheet's rim: in index order a grid's
+// rim alternates its near and far row, so every 4th met one row only (a helix's far rim, a row
+// wider than the unfolded target's, measured 0: its width read 1.2% wide, judge20). Along the rim
+// each offset meets every side.
+TEST(BoundaryEdges, EveryFourthVertexAlongARimMeetsEachSideOfTheGrid) {
+  const TriangleMesh sheet = meshOf(makeSurface("helix_tangent", {{"radius", 0.0390782},
+                                                                  {"pitch", 0.121837},
+                                                                  {"turns", 0.946481},
+                                                                  {"ruling_width", 0.1155286}}));
+  constexpr std::size_t kRulings = 65, kRows = 30;  // grid vertex i * kRows + j
+  ASSERT_EQ(sheet.positions.size(), kRulings * kRows);
+  const std::vector<std::uint32_t> rim = boundaryVerticesAlong(sheet);
+  EXPECT_EQ(rim.size(), 2 * (kRulings + kRows) - 4);
+  for (std::size_t offset = 0; offset < 4; ++offset) {
+    bool near = false, far = false, first = false, last = false;
+    for (std::size_t k = offset; k < rim.size(); k += 4) {
+      near = near || rim[k] % kRows == 0;
+      far = far || rim[k] % kRows == kRows - 1;
+      first = first || rim[k] / kRows == 0;
+      last = last || rim[k] / kRows == kRulings - 1;
+    }
+    EXPECT_TRUE(near && far && first && last) << "offset " << offset;
+  }
 }
 
 // tangent-params-5-8-00-cone and -swept_curve: folds whose planes missed the sheet moved a

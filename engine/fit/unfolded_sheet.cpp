@@ -81,6 +81,17 @@ std::vector<glm::dvec3> spread(const std::vector<glm::dvec3>& points) {
   return out;
 }
 
+// A spread of the unfolded target's vertices and its whole rim (boundaryVerticesAlong, found once
+// per reading: every way the target lies keeps its triangles). A sheet too short leaves the
+// target's rim off it, which a spread in index order may never meet: a helix's far row of 34
+// per ruling, every 4th vertex taken, read its width 1% short (seed-19 tangent-params 3-4).
+std::vector<glm::dvec3> spreadAndRim(const std::vector<glm::dvec3>& positions,
+                                     const std::vector<std::uint32_t>& rim) {
+  std::vector<glm::dvec3> out = spread(positions);
+  for (const std::uint32_t v : rim) out.push_back(positions[v]);
+  return out;
+}
+
 // One reading's sheets measured (its bound, and UnfoldingWork's count), and the points measured
 // on a sheet of the grid measured last: a spread of its vertices, then its whole boundary (a
 // spread may miss a row of its grid, and a sheet a row longer than the unfolded one would then
@@ -103,22 +114,25 @@ struct Budget {
     const std::size_t step = 1 + sheet.positions.size() / kPoints;
     for (std::size_t i = 0; i < sheet.positions.size(); i += step)
       picked.push_back(static_cast<std::uint32_t>(i));
-    const std::vector<char> rim = boundaryVertexFlags(sheet);
+    // Along the rim, not in index order: every k-th (the coarse measure's) then samples each side
+    // of the grid, where in index order it kept to one (a helix's far rim, one row longer than the
+    // unfolded target's, measured 0 and its width was read 1.2% wide).
+    const std::vector<std::uint32_t> rim = boundaryVerticesAlong(sheet);
     if (work) ++work->boundaries;
-    for (std::size_t i = 0; i < rim.size(); ++i)
-      if (rim[i]) picked.push_back(static_cast<std::uint32_t>(i));
+    picked.insert(picked.end(), rim.begin(), rim.end());
     return picked;
   }
 };
 
 // The unfolded target as it may lie on the sheet: how far a sheet made with some parameters lies
-// from it, on average both ways, finely (kPoints each way) or coarsely (every kCoarseStride-th).
+// from it, on average both ways, finely (kPoints each way, and each one's rim) or coarsely (every
+// kCoarseStride-th).
 class Unfolded {
  public:
-  Unfolded(TriangleMesh mesh, Budget& budget)
+  Unfolded(TriangleMesh mesh, const std::vector<std::uint32_t>& rim, Budget& budget)
       : mesh_(std::move(mesh)),
         query_(mesh_, "unfolded target"),
-        points_(spread(mesh_.positions)),
+        points_(spreadAndRim(mesh_.positions, rim)),
         budget_(budget) {}
   double apart(const std::string& kind, const SurfaceParameters& parameters,
                bool coarse = false) const {
@@ -651,12 +665,13 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   // nearest its sheet kept.
   const std::size_t steps = std::min(unfolding.folds.size(), kExhaustiveChoices);
   std::vector<glm::dvec3> chosen;
+  const std::vector<std::uint32_t> targetRim = boundaryVerticesAlong(target);
   SurfaceParameters start = base;
   double nearest = 1e300;
   // Each way the unfolded target may lie, at the start's and at its shape's parameters.
   auto consider = [&](const std::vector<glm::dvec3>& positions,
                       const SurfaceParameters& read = {}) {
-    const Unfolded candidate(TriangleMesh{positions, target.triangles}, budget);
+    const Unfolded candidate(TriangleMesh{positions, target.triangles}, targetRim, budget);
     SurfaceParameters fromShape = guessFor(kind, positions, area, base);
     for (const auto& [name, value] : read) fromShape[name] = value;
     for (const SurfaceParameters& tried : {base, fromShape}) {
@@ -682,7 +697,7 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
   // where none lies on it).
   auto polish = [&]() {
     if (chosen.empty()) return std::optional<SurfaceParameters>();
-    const Unfolded unfolded(TriangleMesh{chosen, target.triangles}, budget);
+    const Unfolded unfolded(TriangleMesh{chosen, target.triangles}, targetRim, budget);
     SurfaceParameters from = start;
     auto parametersOf = [&](const std::vector<double>& x) {
       SurfaceParameters out = from;

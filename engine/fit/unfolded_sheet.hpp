@@ -34,8 +34,15 @@
 // threshold, its curved crease's bend falling near theirs along it, so no gap parts them). A
 // cone's apex is told from its base by the area's centroid.
 //
+// The measure's points each way: a spread of the vertices (every k-th in index order) and the whole
+// rim, in the order a walk along it meets it (boundaryVerticesAlong), so that the coarse measure's
+// every 4th meets each side of a grid: a sheet a row longer or shorter than the unfolded target
+// differs there alone (a helix's ruling width was read 1% off where only the spread, or the rim
+// in index order, was measured).
+//
 // Cost (issue 38, 3): each sheet measured is made and its closest-point tree built; the points
-// measured on it (a spread and its boundary) are found once per grid, not per sheet. A polish runs
+// measured on it (a spread and its boundary) are found once per grid, not per sheet; the unfolded
+// target's rim once per reading. A polish runs
 // first on a coarse measure (a quarter of the points each way), and the fine one (300 sheets at
 // most, from a tenth of the first steps) only where the coarse one ended within 4 times the limit
 // above; each reading measures 3000 sheets at most (choices of sides, frames, a star's counts and

@@ -17,4 +17,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> boundaryEdges(const Triangl
 // Whether each vertex lies on such an edge (1) or not (0), indexed as the mesh's positions.
 std::vector<char> boundaryVertexFlags(const TriangleMesh& mesh);
 
+// The vertices on such edges, each once, in the order a walk along them meets them: each loop
+// from its lowest vertex on, the lowest unvisited neighbour next where a vertex has several
+// (a pinched rim). Every k-th of them is then spread along the whole rim, each side of a sheet's
+// grid sampled, where every k-th in index order may keep to one side (a grid's rows alias k).
+// Cost: one pass over the edges (edgeFaces) and one over the boundary.
+std::vector<std::uint32_t> boundaryVerticesAlong(const TriangleMesh& mesh);
+
 }  // namespace curvefold
