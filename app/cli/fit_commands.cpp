@@ -422,6 +422,16 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                            {hasExtension(options.from.surface, ".obj") ? options.from.surface : "",
                             "the surface read (--from)"}});
   const std::unique_ptr<FoldFitter> fitter = makeFitter(options);
+  // The outputs' paths, checked before any work too: the picture's rehearsal and the start's choice
+  // take a share of --time (an unwritable --log was refused after 4 s of CPU choosing a cylinder's
+  // start).
+  {
+    OutputSet paths;  // as `outputs` below adds them
+    paths.add(options.output, [](const fs::path&) {});
+    for (const std::string& path : {options.log, options.png})
+      if (!path.empty()) paths.add(path, [](const fs::path&) {});
+    paths.checkWritable();
+  }
   // --evaluations alone: no clock, so nothing depends on the machine's speed.
   const bool timed = command->count("--time") > 0 || options.evaluations == 0;
   // The renderer first: a machine without Vulkan fails before any work. The picture's rehearsal

@@ -25,11 +25,13 @@ struct CgalTriangleTree {
       CGAL::AABB_triangle_primitive<CgalKernel, std::vector<CgalTriangle>::const_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<CgalKernel, Primitive>>;
 
-  // Builds the tree over `triangles`, which stay as they are from then on.
-  void build() {
+  // Builds the tree over `triangles`, which stay as they are from then on. `searchTree`: CGAL's
+  // own KD-tree of the triangles' first vertices, the hint of a query without one (a caller that
+  // gives its own hints leaves it out).
+  void build(bool searchTree = true) {
     tree.insert(triangles.cbegin(), triangles.cend());
     tree.build();
-    tree.accelerate_distance_queries();
+    if (searchTree) tree.accelerate_distance_queries();
   }
 
   std::vector<CgalTriangle> triangles;

@@ -315,6 +315,17 @@ struct Unfolder {
     }
   };
 
+  // The probes moved by `motion`, their distances to the sheet summed in order; the sum stops
+  // (and is returned) once it passes `bar`, where the caller drops the choice.
+  double probesOff(const std::vector<glm::dvec3>& probe, const Motion& motion, double bar) const {
+    double off = 0.0;
+    for (const glm::dvec3& p : probe) {
+      off += sheetSurface.distance(motion(p));
+      if (off > bar) break;
+    }
+    return off;
+  }
+
   // One fold whose symmetric image moved the whole sheet: at unfolding step `step`, the fold's
   // plane before the image and the image's plane.
   struct WholeImage {
@@ -338,22 +349,23 @@ struct Unfolder {
     // rest that reaches across the plane elsewhere is not what a fold moved. Of the choices
     // that end on the sheet (a symmetric sheet has several), the fewest rests.
     // `rest[u]`: step u reflected the rest rather than the piece.
-    auto offOf = [&](const std::vector<char>& rest) {
+    // The probes' distances summed, stopped once past `bar`: distances are not negative, so the
+    // sum only grows, and a choice past the bar cannot win (the same choice as the whole sum;
+    // most choices lie far off and stop within a few probes).
+    auto offOf = [&](const std::vector<char>& rest, double bar) {
       Motion motion;
       for (std::size_t u = 0; u < n; ++u)
         if (rest[u]) motion = motion.then(steps[u].plane);
-      double off = 0.0;
-      for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
-      return off;
+      return probesOff(probe, motion, bar);
     };
     auto rests = [](const std::vector<char>& rest) {
       return std::count(rest.begin(), rest.end(), char(1));
     };
     const double tie = 1e-7 * diagonal * static_cast<double>(probe.size());
     std::vector<char> bestRest(n, 0), rest(n, 0);
-    double bestOff = offOf(bestRest);
+    double bestOff = offOf(bestRest, kInfinitySharp);
     auto consider = [&](const std::vector<char>& choice) {
-      const double off = offOf(choice);
+      const double off = offOf(choice, bestOff + tie);
       if (off < bestOff - tie || (off <= bestOff + tie && rests(choice) < rests(bestRest))) {
         bestOff = std::min(off, bestOff);
         bestRest = choice;
@@ -415,8 +427,7 @@ struct Unfolder {
               Motion motion = plain.before(image);
               for (std::size_t w = u + 1; w < n; ++w)
                 if (rest[w]) motion = motion.then(steps[w].plane);
-              double off = 0.0;
-              for (const glm::dvec3& p : probe) off += sheetSurface.distance(motion(p));
+              const double off = probesOff(probe, motion, imageOff + tie);
               if (off < imageOff - tie ||
                   (off <= imageOff + tie && rests(rest) < rests(imageRest))) {
                 imageOff = std::min(off, imageOff);
@@ -468,7 +479,14 @@ struct Unfolder {
     std::vector<Step> steps;
     std::vector<glm::dvec3> positions;
     double sharp = 0.0;
+    double off = -1.0;  // offSheet of the unfolding's end, once measured (every level asks)
   };
+
+  // offSheet of `read`'s end, measured once: each level of the unfolding above asks again.
+  double offSheetOf(Read& read) const {
+    if (read.off < 0.0) read.off = offSheet(read.unfolding.unfolded);
+    return read.off;
+  }
 
   bool smooth(const TargetUnfolding& u) const {
     return u.sharpLengthLeft < kLeastCrease * diagonal;
@@ -479,11 +497,9 @@ struct Unfolder {
   Read leaf(const std::vector<Step>& steps, const std::vector<glm::dvec3>& positions,
             double sharp) {
     Read read{bestSides(steps, positions, sharp), steps, positions, sharp};
-    const TargetUnfolding& result = read.unfolding;
-    if (smooth(result))
-      smoothCost =
-          std::min(smoothCost, static_cast<double>(result.folds.size()) +
-                                   (onSheet(offSheet(result.unfolded)) ? 0.0 : kMotionPlanes));
+    if (smooth(read.unfolding))
+      smoothCost = std::min(smoothCost, static_cast<double>(read.unfolding.folds.size()) +
+                                            (onSheet(offSheetOf(read)) ? 0.0 : kMotionPlanes));
     return read;
   }
 
@@ -497,7 +513,8 @@ struct Unfolder {
                                                         const TriangleMesh& sheet) const {
     const std::size_t n = read.steps.size();
     if (n == 0 || n > kExhaustiveSides || !smooth(read.unfolding) ||
-        onSheet(offSheet(read.unfolding.unfolded)) || deadline.passed())
+        onSheet(read.off >= 0.0 ? read.off : offSheet(read.unfolding.unfolded)) ||
+        deadline.passed())
       return std::nullopt;
     const double tolerance = kCopyTolerance * diagonal;
     const std::vector<RigidMotion> ways = registerSheetOntoAll(
@@ -633,7 +650,7 @@ struct Unfolder {
       std::vector<Step> more = steps;
       more.push_back(step);
       Read result = unfold(std::move(next), std::move(more), chosen->sharpAfter);
-      const double off = offSheet(result.unfolding.unfolded);
+      const double off = offSheetOf(result);
       if (first || better(result.unfolding, off, best.unfolding, bestOff)) {
         best = std::move(result);
         bestOff = off;

@@ -634,12 +634,27 @@ std::vector<std::vector<glm::dvec3>> catalogueFrames(const std::string& kind,
   return out;
 }
 
+// Whether two unfoldings give a reading the same sheets to measure: what fromUnfolding uses of
+// them (the planes and where the target lies unfolded).
+bool sameUnfolding(const TargetUnfolding& a, const TargetUnfolding& b) {
+  if (a.folds.size() != b.folds.size() || a.unfolded != b.unfolded) return false;
+  for (std::size_t u = 0; u < a.folds.size(); ++u)
+    if (a.folds[u].plane.point != b.folds[u].plane.point ||
+        a.folds[u].plane.normal != b.folds[u].plane.normal)
+      return false;
+  return true;
+}
+
 // The parameters, with creases read above `threshold` degrees (see parametersFromUnfolding).
+// `failed`: the unfoldings earlier readings found no sheet on; one the same again is not read
+// again (a smooth target reads no crease at either threshold: the same thousands of sheets to
+// the same end), and this one is added where it is read.
 std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
                                                const SurfaceInfo& kindInfo,
                                                const TriangleMesh& defaults, double threshold,
                                                double facetBend, const Deadline& deadline,
-                                               Budget& budget) {
+                                               Budget& budget,
+                                               std::vector<TargetUnfolding>& failed) {
   const std::string& kind = kindInfo.name;
   const SurfaceInfo* info = &kindInfo;
   const double area = surfaceArea(target), defaultArea = surfaceArea(defaults);
@@ -648,6 +663,9 @@ std::optional<SurfaceParameters> fromUnfolding(const TriangleMesh& target,
       unfoldTarget(target, defaults, threshold, kMaxFolds, deadline, {}, facetBend);
   if (unfolding.cutShort || deadline.passed() || unfolding.sharpLengthLeft > kSmoothLeft * diagonal)
     return std::nullopt;
+  for (const TargetUnfolding& earlier : failed)
+    if (sameUnfolding(earlier, unfolding)) return std::nullopt;
+  failed.push_back(unfolding);  // a reading that finds its sheet ends the search
   // The parameters fitted, from the defaults' lengths scaled to the target's area.
   std::vector<const SurfaceParameter*> free;
   SurfaceParameters base;
@@ -819,13 +837,14 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
   const double threshold = sharpEdgeThreshold(defaults);
   Budget first, second, third;
   first.work = second.work = third.work = work;
+  std::vector<TargetUnfolding> failed;
   if (std::optional<SurfaceParameters> found =
-          fromUnfolding(target, *info, defaults, threshold, -1.0, deadline, first))
+          fromUnfolding(target, *info, defaults, threshold, -1.0, deadline, first, failed))
     return found;
   const double bend = facetBendDegrees(target), own = sharpEdgeThresholdFor(bend);
   if (std::abs(own - threshold) > kThresholdStep && !deadline.passed())
     if (std::optional<SurfaceParameters> found =
-            fromUnfolding(target, *info, defaults, own, bend, deadline, second))
+            fromUnfolding(target, *info, defaults, own, bend, deadline, second, failed))
       return found;
   // Facets that bend unevenly (a swept curve's by its curvature) bend more than nine tenths of
   // the edges: read as creases at `own`, and left as crease after it. The bends below the gap
@@ -836,7 +855,7 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
     const double gapped = std::min(sharpEdgeThresholdFor(*uneven), std::sqrt(*uneven * creases));
     if (std::abs(gapped - own) > kThresholdStep || std::abs(*uneven - bend) > kThresholdStep)
       if (std::optional<SurfaceParameters> found =
-              fromUnfolding(target, *info, defaults, gapped, *uneven, deadline, third))
+              fromUnfolding(target, *info, defaults, gapped, *uneven, deadline, third, failed))
         return found;
   }
   // A sheet whose facets bend more than the defaults' but still under their threshold (a steeper
@@ -848,7 +867,7 @@ std::optional<SurfaceParameters> parametersFromUnfolding(const TriangleMesh& tar
     return std::nullopt;
   Budget fourth;
   fourth.work = work;
-  return fromUnfolding(target, *info, defaults, threshold, under, deadline, fourth);
+  return fromUnfolding(target, *info, defaults, threshold, under, deadline, fourth, failed);
 }
 
 }  // namespace curvefold
