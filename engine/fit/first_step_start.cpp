@@ -359,7 +359,7 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
                                                     const std::string& kind,
                                                     const Deadline& deadline, std::size_t rings,
                                                     TubeChains* handed) {
-  if (start.creased || !fitter.smoothTarget() || !fitter.revolutionTarget() ||
+  if (start.creased || start.widestTube || !fitter.smoothTarget() || !fitter.revolutionTarget() ||
       !(kind.empty() || kind == "cone"))
     return std::nullopt;
   const std::vector<SurfaceSample> samples = sampleSurface(fitter.target(), kSamples, 3);

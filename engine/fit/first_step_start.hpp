@@ -98,7 +98,8 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
 // toward the neck and the foot; a gourd's waist between two bellies the cone around does not
 // reach, and the nearer cone wins there. `start` becomes the winner (placed) when that is not
 // `start` itself. None (and `start` untouched) where the rule does not apply (a creased start,
-// a target with no axis, a start that is no tube about the axis) or `start` won. The enclosing
+// a target with no axis, a start that is no tube about the axis, the widest tube chosen by the
+// rings' reach: StartChoice::widestTube) or `start` won. The enclosing
 // cone is tried only while `deadline` allows once the start's own step is measured.
 // `handed`: the winner's chains as the probe grew them (ring_folds.hpp, TubeChains; set whichever
 // start won, whenever the probe ran), for the search to grow on (FitOptions::tubeChains) rather

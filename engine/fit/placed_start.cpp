@@ -217,14 +217,8 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
   coneAcross(samples, centroid, axis, kind, out);
 }
 
-// The samples' extent [lo, hi] along `direction` from `point`, cut into 16 bands of height, and
-// (the band's middle height, its samples' mean distance from the axis) for each band holding at
-// least 8 samples (fewer say little of the radius there); none where the extent is empty or no
-// band is full enough.
-struct HeightBands {
-  double lo = 0.0, hi = 0.0;
-  std::vector<glm::dvec2> profile;
-};
+}  // namespace
+
 std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples,
                                        const glm::dvec3& point, const glm::dvec3& direction) {
   constexpr int kHeightBins = 16;
@@ -256,8 +250,6 @@ std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples
   if (bands.profile.empty()) return std::nullopt;
   return bands;
 }
-
-}  // namespace
 
 std::vector<PlacedStart> revolutionStarts(const std::vector<SurfaceSample>& samples,
                                           const glm::dvec3& point, const glm::dvec3& direction,

@@ -92,6 +92,17 @@ std::vector<PlacedStart> revolutionStarts(const std::vector<SurfaceSample>& samp
                                           const glm::dvec3& point, const glm::dvec3& direction,
                                           const std::string& kind);
 
+// The samples' extent [lo, hi] along `direction` (unit) from `point`, cut into 16 bands of
+// height, and (the band's middle height, its samples' mean distance from the axis) for each band
+// holding at least 8 samples (fewer say little of the radius there); none where the extent is
+// empty or no band is full enough. The profile the tube starts below are sized from.
+struct HeightBands {
+  double lo = 0.0, hi = 0.0;
+  std::vector<glm::dvec2> profile;
+};
+std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples,
+                                       const glm::dvec3& point, const glm::dvec3& direction);
+
 // The cylinder of the samples' widest radius about the line through `point` along `direction`
 // (unit), as long as they reach along it: the largest mean distance from the line over 16 bins
 // of height (bins of under 8 samples left out). The start of a vase's joint ring fit

@@ -70,6 +70,10 @@ struct StartChoice {
   bool symmetryDefaults = false;
   // The deadline passed before every candidate was measured: the nearest of those measured.
   bool cutShort = false;
+  // Without a kind asked for, the tube of a vase's widest radius replaced a tube about its axis
+  // by the rings' reach (tube_reach.hpp): its rings are grown by the search, as from `--from
+  // cylinder`, not weighed against the cone around by two rings (first_step_start.hpp).
+  bool widestTube = false;
 };
 
 // `kind`: a catalogue surface name, or "" for any of the candidates above. `symmetry` (as
