@@ -667,17 +667,19 @@ TEST(SheetViews, NearlyFlatSheetsAreLaidDownAndSeenFromAboveATubeAsBefore) {
     const glm::vec3 centre = worldBounds(saddle).centre();
     EXPECT_LT(glm::length(worldBounds(saddle, view.worldFromSheet).centre() - centre), 0.02f);
   }
-  // A bowl opening down (-z) is turned to open upwards: its rim above its middle.
-  Sheet bowl = testing::flatGrid(20, 20, 0.01);
-  for (glm::dvec3& p : bowl.positions) {
-    p -= glm::dvec3(0.1, 0.1, 0.0);
-    p.z = -2.0 * (p.x * p.x + p.y * p.y);
+  // A bowl opening down (-z, or -y with y up) is turned to open upwards: its rim above its middle.
+  for (const bool yUp : {false, true}) {
+    Sheet bowl = testing::flatGrid(20, 20, 0.01);
+    for (glm::dvec3& p : bowl.positions) {
+      const double x = p.x - 0.1, y = p.y - 0.1, z = -2.0 * (x * x + y * y);
+      p = yUp ? glm::dvec3(x, z, y) : glm::dvec3(x, y, z);
+    }
+    const glm::mat4 laid = viewForSheet(bowl).worldFromSheet;
+    auto height = [&](VertexIndex v) {
+      return (laid * glm::vec4(glm::vec3(bowl.positions[v]), 1.0f)).y;
+    };
+    EXPECT_GT(height(0), height(VertexIndex(bowl.vertexCount() / 2)) + 0.02f) << "y up: " << yUp;
   }
-  const glm::mat4 laid = viewForSheet(bowl).worldFromSheet;
-  auto height = [&](VertexIndex v) {
-    return (laid * glm::vec4(glm::vec3(bowl.positions[v]), 1.0f)).y;
-  };
-  EXPECT_GT(height(0), height(VertexIndex(bowl.vertexCount() / 2)) + 0.02f);
   const Sheet tube = makeSurface("cylinder");
   const SheetView view = viewForSheet(tube);
   EXPECT_EQ(view.worldFromSheet, glm::mat4(1.0f));

@@ -63,10 +63,12 @@ SheetView viewForSheet(const Sheet& sheet) {
     normal = -normal;
   // The shortest turn of the normal onto +y (about x when it is +z: the sheet's x stays x).
   const glm::dvec3 up(0.0, 1.0, 0.0);
-  const glm::dvec3 axis = glm::cross(normal, up);
+  glm::dvec3 axis = glm::cross(normal, up);
   const double angle = std::atan2(glm::length(axis), glm::dot(normal, up));
+  if (glm::length(axis) < 1e-9)
+    axis = {1.0, 0.0, 0.0};  // already up, or straight down: a half turn
   const glm::vec3 centre(centreD);
-  if (glm::length(axis) > 1e-9)
+  if (angle > 1e-9)
     view.worldFromSheet =
         glm::translate(glm::mat4(1.0f), centre) *
         glm::rotate(glm::mat4(1.0f), float(angle), glm::vec3(glm::normalize(axis))) *
