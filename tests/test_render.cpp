@@ -26,6 +26,7 @@
 #include "engine/render/scene_builder.hpp"
 #include "engine/render/scope_fail.hpp"
 #include "engine/render/sheet_tracker.hpp"
+#include "engine/render/sheet_view.hpp"
 #include "engine/render/vulkan_objects.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "tests/sheet_fixtures.hpp"
@@ -638,6 +639,51 @@ TEST_F(Render, AColouredSheetShowsItsFarRegionInTheHighColour) {
   const RgbaImage paper = renderer_->render(plain);
   EXPECT_EQ(countPixels(paper, isViridisHigh), 0u);
   EXPECT_EQ(countPixels(paper, isViridisLow), 0u);
+}
+
+// A 20 cm square bent into a saddle 22 mm high, in the xy plane (as the fit's square lies) and
+// in the xz plane (an OBJ with y up): the chosen view lays it on the ground (its normal onto +y)
+// and looks from within 36 degrees of that normal, where the fixed iso view stood it up as a wall
+// or saw it from 69 degrees. A tube keeps the iso view unturned.
+TEST(SheetViews, NearlyFlatSheetsAreLaidDownAndSeenFromAboveATubeAsBefore) {
+  for (const bool yUp : {false, true}) {
+    Sheet saddle = testing::flatGrid(20, 20, 0.01);
+    glm::dvec3 normal(0.0, 0.0, 1.0);
+    for (glm::dvec3& p : saddle.positions) {
+      const double x = p.x - 0.1, y = p.y - 0.1, z = 0.011 * (x * x - y * y) / 0.01;
+      p = yUp ? glm::dvec3(x, z, y) : glm::dvec3(x, y, z);
+    }
+    if (yUp) normal = {0.0, 1.0, 0.0};
+    const SheetView view = viewForSheet(saddle);
+    const glm::vec3 worldNormal =
+        glm::normalize(glm::mat3(view.worldFromSheet) * glm::vec3(normal));
+    EXPECT_GT(std::abs(worldNormal.y), std::cos(glm::radians(5.0f))) << "y up: " << yUp;
+    EXPECT_NEAR(glm::length(view.direction), 1.0f, 1e-5f);
+    const float fromNormal =
+        glm::degrees(std::acos(std::abs(glm::dot(view.direction, worldNormal))));
+    EXPECT_LT(fromNormal, 36.0f) << "y up: " << yUp;
+    EXPECT_GT(fromNormal, 25.0f) << "y up: " << yUp;  // at an angle, so its heights read
+    // The rotation turns about the sheet's centre: the picture frames the same sheet.
+    const glm::vec3 centre = worldBounds(saddle).centre();
+    EXPECT_LT(glm::length(worldBounds(saddle, view.worldFromSheet).centre() - centre), 0.02f);
+  }
+  // A bowl opening down (-z, or -y with y up) is turned to open upwards: its rim above its middle.
+  for (const bool yUp : {false, true}) {
+    Sheet bowl = testing::flatGrid(20, 20, 0.01);
+    for (glm::dvec3& p : bowl.positions) {
+      const double x = p.x - 0.1, y = p.y - 0.1, z = -2.0 * (x * x + y * y);
+      p = yUp ? glm::dvec3(x, z, y) : glm::dvec3(x, y, z);
+    }
+    const glm::mat4 laid = viewForSheet(bowl).worldFromSheet;
+    auto height = [&](VertexIndex v) {
+      return (laid * glm::vec4(glm::vec3(bowl.positions[v]), 1.0f)).y;
+    };
+    EXPECT_GT(height(0), height(VertexIndex(bowl.vertexCount() / 2)) + 0.02f) << "y up: " << yUp;
+  }
+  const Sheet tube = makeSurface("cylinder");
+  const SheetView view = viewForSheet(tube);
+  EXPECT_EQ(view.worldFromSheet, glm::mat4(1.0f));
+  EXPECT_LT(glm::length(view.direction - viewDirection(ViewPreset::Iso)), 1e-6f);
 }
 
 TEST(ViewPresets, ParseKnownNamesOnly) {

@@ -3,19 +3,27 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/render/sheet_view.hpp"
+
 namespace curvefold {
 
 RgbaImage renderFieldPicture(HeadlessRenderer& renderer, const Sheet& sheet,
                              std::span<const double> vertexValues, const ColorLegend& legend,
-                             ViewPreset view) {
+                             std::optional<ViewPreset> view) {
   if (vertexValues.size() != sheet.vertexCount())
     throw std::invalid_argument("renderFieldPicture: one value per vertex is needed");
   const VkExtent2D extent = renderer.target().extent();
   const std::uint32_t strip = legendWidth(extent.width);
   const bool withLegend = extent.width > strip * 2;
   const std::uint32_t viewWidth = withLegend ? extent.width - strip : extent.width;
-  Scene scene =
-      sceneForSheet(sheet, view, float(viewWidth) / float(std::max(extent.height, 1u)), false);
+  const float aspect = float(viewWidth) / float(std::max(extent.height, 1u));
+  Scene scene;
+  if (view) {
+    scene = sceneForSheet(sheet, *view, aspect, false);
+  } else {
+    const SheetView chosen = viewForSheet(sheet);
+    scene = sceneForSheet(sheet, chosen.direction, aspect, false, chosen.worldFromSheet);
+  }
   if (withLegend) {
     // The strip is the scene's side panel, empty: the view is framed beside it, not under it.
     scene.panel.enabled = true;

@@ -4,6 +4,7 @@
 // the legend (color_legend.hpp) in a strip at the right that the 3D view leaves free.
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include "engine/geometry/sheet.hpp"
@@ -15,9 +16,10 @@ namespace curvefold {
 
 // vertexValues: one per sheet vertex (throws std::invalid_argument otherwise), mapped with
 // legend.low at the map's low end and legend.high at its high end. The picture is the renderer's
-// size.
+// size. view: a named view, or nothing to choose one from the sheet (sheet_view.hpp: a nearly
+// flat sheet laid down and seen from above at an angle, whatever plane it lies in).
 RgbaImage renderFieldPicture(HeadlessRenderer& renderer, const Sheet& sheet,
                              std::span<const double> vertexValues, const ColorLegend& legend,
-                             ViewPreset view = ViewPreset::Iso);
+                             std::optional<ViewPreset> view = std::nullopt);
 
 }  // namespace curvefold

@@ -49,33 +49,36 @@ Bounds worldBounds(const Sheet& sheet, const glm::mat4& worldFromSheet) {
   return bounds;
 }
 
+glm::vec3 viewDirection(ViewPreset view) {
+  switch (view) {
+    case ViewPreset::Iso:
+      return glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
+    case ViewPreset::Front:
+      return {0.0f, 0.0f, 1.0f};
+    case ViewPreset::Back:
+      return {0.0f, 0.0f, -1.0f};
+    case ViewPreset::Top:
+      return {0.0f, 1.0f, 0.0f};
+    case ViewPreset::Left:
+      return {-1.0f, 0.0f, 0.0f};
+    case ViewPreset::Right:
+      return {1.0f, 0.0f, 0.0f};
+  }
+  return {0.0f, 0.0f, 1.0f};
+}
+
 Camera frameBounds(const Bounds& bounds, ViewPreset view, float aspect, float fovYDegrees) {
+  return frameBounds(bounds, viewDirection(view), aspect, fovYDegrees);
+}
+
+Camera frameBounds(const Bounds& bounds, const glm::vec3& direction, float aspect,
+                   float fovYDegrees) {
   Camera camera;
   camera.fovYDegrees = fovYDegrees;
   const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.centre();
   const float radius = std::max(bounds.radius(), 1e-3f);
-  glm::vec3 direction(0.0f, 0.0f, 1.0f);
-  switch (view) {
-    case ViewPreset::Iso:
-      direction = glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
-      break;
-    case ViewPreset::Front:
-      direction = {0.0f, 0.0f, 1.0f};
-      break;
-    case ViewPreset::Back:
-      direction = {0.0f, 0.0f, -1.0f};
-      break;
-    case ViewPreset::Top:
-      direction = {0.0f, 1.0f, 0.0f};
-      camera.up = {0.0f, 0.0f, -1.0f};
-      break;
-    case ViewPreset::Left:
-      direction = {-1.0f, 0.0f, 0.0f};
-      break;
-    case ViewPreset::Right:
-      direction = {1.0f, 0.0f, 0.0f};
-      break;
-  }
+  // Straight down (or up) the y axis, y cannot be up: -z is, as the top view has it.
+  if (std::abs(direction.y) > 0.999f) camera.up = {0.0f, 0.0f, direction.y > 0.0f ? -1.0f : 1.0f};
   const float halfY = glm::radians(fovYDegrees) * 0.5f;
   const float halfX = std::atan(std::tan(halfY) * aspect);
   const float distance = 1.08f * radius / std::sin(std::min(halfX, halfY));
@@ -180,15 +183,21 @@ Sheet meshSheet(const TriangleMesh& mesh) {
 }
 
 Scene sceneForSheet(const Sheet& sheet, ViewPreset view, float aspect, bool panel) {
+  return sceneForSheet(sheet, viewDirection(view), aspect, panel);
+}
+
+Scene sceneForSheet(const Sheet& sheet, const glm::vec3& direction, float aspect, bool panel,
+                    const glm::mat4& worldFromSheet) {
   Scene scene;
   scene.sheet.sheet = &sheet;
-  const Bounds bounds = worldBounds(sheet);
+  scene.sheet.worldFromSheet = worldFromSheet;
+  const Bounds bounds = worldBounds(sheet, worldFromSheet);
   if (panel) {
     scene.panel = creasePatternPanel(sheet, scene.colors);
     aspect *= 1.0f - scene.panel.widthFraction;
   }
-  scene.camera = frameBounds(bounds, view, aspect);
-  scene.creases = creaseLines(sheet, glm::mat4(1.0f), scene.colors);
+  scene.camera = frameBounds(bounds, direction, aspect);
+  scene.creases = creaseLines(sheet, worldFromSheet, scene.colors);
   scene.ground = groundBelow(bounds);
   // The key light comes from the camera's side, above and to the left, so both sides read.
   const glm::vec3 toEye = glm::normalize(scene.camera.eye - scene.camera.target);

@@ -38,6 +38,12 @@ Bounds worldBounds(const Sheet& sheet, const glm::mat4& worldFromSheet = glm::ma
 // A camera on the view's side of the bounds (front = +z, the side a flat sheet's front faces;
 // top = +y; right = +x; iso = front, right and above), far enough that the bounding sphere fits.
 Camera frameBounds(const Bounds& bounds, ViewPreset view, float aspect, float fovYDegrees = 35.0f);
+// The same from `direction` (unit, from the bounds' centre towards the eye).
+Camera frameBounds(const Bounds& bounds, const glm::vec3& direction, float aspect,
+                   float fovYDegrees = 35.0f);
+
+// The unit vector from the target towards the eye for a named view.
+glm::vec3 viewDirection(ViewPreset view);
 
 // Crease edges of the sheet as world segments: valleys blue, mountains red, opacity growing with
 // |fold angle| (flat creases are left out). Finds each crease's two triangles with one pass over
@@ -58,5 +64,9 @@ Sheet meshSheet(const TriangleMesh& mesh);
 // A still image of a sheet: framed camera, creases, ground and (optionally) the panel. The scene
 // points at `sheet`, which must outlive it. aspect: of the whole image.
 Scene sceneForSheet(const Sheet& sheet, ViewPreset view, float aspect, bool creasePatternPanel);
+// The same from `direction` (unit, towards the eye), the sheet placed by worldFromSheet
+// (sheet_view.hpp chooses both from the sheet).
+Scene sceneForSheet(const Sheet& sheet, const glm::vec3& direction, float aspect,
+                    bool creasePatternPanel, const glm::mat4& worldFromSheet = glm::mat4(1.0f));
 
 }  // namespace curvefold
