@@ -543,6 +543,33 @@ TEST(StartSurface, ASquareTowardASaddleIsTurnedAndSizedToItsFootprint) {
   EXPECT_LT(farthestCorner, 0.1 * std::sqrt(2.0) + 0.004) << start.placement;
 }
 
+// The saddle written y up (x, y, z -> x, z, -y, as many OBJ exporters write it; branch yup21):
+// the flat sheets placed on it are those placed on the z-up saddle, turned alike, each vertex
+// within 0.1 mm (Hausdorff). Were they laid in the catalogue's frame or on the world's axes, the
+// y-up square would lie across the saddle's height, not under it.
+TEST(StartSurface, ASaddleWrittenYUpGetsTheFlatStartsOfTheZUpOneTurned) {
+  const TriangleMesh saddle =
+      heightGrid(0.2, 24, [](double x, double y) { return (x * x - y * y) / 0.3; });
+  TriangleMesh yUp = saddle;
+  for (glm::dvec3& p : yUp.positions) p = glm::dvec3(p.x, p.z, -p.y);
+  const double area = surfaceArea(saddle);
+  const std::vector<PlacedStart> zStarts =
+      placedStarts(sampleSurface(saddle, 1000, 3), area, "square");
+  const std::vector<PlacedStart> yStarts =
+      placedStarts(sampleSurface(yUp, 1000, 3), area, "square");
+  ASSERT_FALSE(zStarts.empty());
+  ASSERT_EQ(zStarts.size(), yStarts.size());
+  for (std::size_t i = 0; i < zStarts.size(); ++i) {
+    // The y-up sheet turned back (x, y, z -> x, -z, y), measured as a surface: its mesh may differ
+    // (the mesher splits a size that differs in its last bit otherwise).
+    Sheet back = yStarts[i].sheet;
+    for (glm::dvec3& p : back.positions) p = glm::dvec3(p.x, -p.z, p.y);
+    EXPECT_EQ(zStarts[i].surface, yStarts[i].surface);
+    EXPECT_LT(surfaceDistance(meshOf(back), meshOf(zStarts[i].sheet), 500).hausdorff, 1e-4)
+        << zStarts[i].placement << " | " << yStarts[i].placement;
+  }
+}
+
 // A steep saddle (z = (x^2 - y^2) / 0.06 over an 18 cm square, heights to +-13.5 cm, turned 30
 // degrees): it spreads more in height than across, so its least principal axis lies across the
 // square, and a square placed by the principal axes stood on edge through it (the judge's
