@@ -544,7 +544,7 @@ TEST(StartSurface, ASquareTowardASaddleIsTurnedAndSizedToItsFootprint) {
 }
 
 // The saddle written y up (x, y, z -> x, z, -y, as many OBJ exporters write it; branch yup21):
-// the flat sheets placed on it are those placed on the z-up saddle, turned alike, each vertex
+// the flat sheets placed on it are those placed on the z-up saddle, turned alike, each pair
 // within 0.1 mm (Hausdorff). Were they laid in the catalogue's frame or on the world's axes, the
 // y-up square would lie across the saddle's height, not under it.
 TEST(StartSurface, ASaddleWrittenYUpGetsTheFlatStartsOfTheZUpOneTurned) {
