@@ -799,49 +799,6 @@ TEST(TubeRings, ANeckPleatTurnsItsFlapsBackOutPastTheNeck) {
   EXPECT_TRUE(findSelfIntersections(session.fixed()).intersections.empty());
 }
 
-// A waist pleat (ring_folds.hpp, waistPleat; a ring of 4): its first ring cuts the judge's
-// profile in to the waist as deep as the wedges stay apart there, deeper than a neck pleat whose
-// cut must keep them apart at the sheet's end (neckPleat), and its return ring turns each flap's
-// part past the waist back out toward the lip, so the lip band stands wider than the cut left it.
-TEST(TubeRings, AWaistPleatCutsTheWaistDeeperThanTheSheetsEndAllowsAndTurnsTheLipOut) {
-  const TriangleMesh vase = judgeVase();
-  Sheet tube = makeSurface("cylinder", {{"radius", 0.05}, {"height", 0.2}, {"resolution", 24.0}});
-  for (glm::dvec3& p : tube.positions) p = {p.x, -p.z, p.y};
-  const std::vector<SurfaceSample> targetSamples = sampleSurface(vase, 1500, 11);
-  const std::vector<SurfaceSample> sheetSamples = sampleSurface(meshOf(tube), 1200, 3);
-  const std::optional<RevolutionAxis> axis = revolutionAxis(targetSamples);
-  ASSERT_TRUE(axis);
-  const int lipEnd = axis->direction.z > 0.0 ? 1 : -1;
-  const auto pleat = waistPleat(sheetSamples, targetSamples, *axis, 4, 0.0, lipEnd);
-  ASSERT_TRUE(pleat);
-  EXPECT_FALSE(waistPleat(sheetSamples, targetSamples, *axis, 4, 0.0, -lipEnd))
-      << "no waist toward the foot";
-  const auto neck = neckPleat(sheetSamples, targetSamples, *axis, 4, 0.0, lipEnd);
-  ASSERT_TRUE(neck);
-  // Mean radius about z of 10 bands over the height: the waist at 0.8 (band 8), the lip band 9.
-  const auto bands = [](const Sheet& sheet) {
-    return radiusByHeight(sheet.positions, -0.1, 0.1, 10);
-  };
-  FoldSession neckSession(tube);
-  ASSERT_EQ(makeRing(neckSession, ringOf((*neck)[0], *axis)), 4u);
-  const std::vector<glm::dvec2> neckCut = bands(neckSession.fixed());
-  FoldSession session(tube);
-  ASSERT_EQ(makeRing(session, ringOf((*pleat)[0], *axis)), 4u);
-  const std::vector<glm::dvec2> cut = bands(session.fixed());
-  ASSERT_EQ(cut.size(), 10u);
-  ASSERT_EQ(neckCut.size(), 10u);
-  EXPECT_LT(cut[8].y, neckCut[8].y - 0.002) << "cut no deeper than the sheet's end allows";
-  ASSERT_EQ(makeRing(session, ringOf((*pleat)[1], *axis)), 4u);
-  const std::vector<glm::dvec2> pleated = bands(session.fixed());
-  ASSERT_EQ(pleated.size(), 10u);
-  // The return lifts the lip band (its flaps' bands nearer the axis than its planes turned back
-  // out), but not above the waist's: the flaps' sides, hinged on the creases to the sheet's end,
-  // go on inward (docs/performance.md, issue 38, waist22).
-  EXPECT_GT(pleated[9].y, cut[9].y + 0.002) << "the lip not turned back out past the waist";
-  EXPECT_NEAR(pleated[0].y, 0.05, 1e-3);  // the foot uncut, on the axis
-  validate(session.fixed());
-}
-
 // The batches' clock (timed_batches.hpp): the first batch runs, and one the time left would not
 // finish at the last batch's rate is not started (nor any after it). Two candidates of 60 ms
 // each, then four more of the same cost with 180 ms left at most: refused.

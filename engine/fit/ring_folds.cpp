@@ -49,11 +49,6 @@ constexpr double kCornerStart = 0.25;
 constexpr double kCornerDepths[] = {0.5, 0.75};
 // Where a neck pleat's cut begins: where the excess falls below this share of its peak.
 constexpr double kPleatStart = 0.25;
-// A waist (waistPleat): its bin's target radius at least this share of the sheet's radius under
-// the widest bin on each side.
-constexpr double kWaistRise = 0.05;
-// The orders of waist pleats the chain of rings of 4 to 16 is offered (fewer wedges cut deeper).
-constexpr int kWaistPleatOrders[] = {3, 4, 5};
 
 // The profile of the sheet and the target about `axis` in kCornerBins height bins over the
 // sheet's height: the sheet's largest radius in each, the target's mean (its sum and count),
@@ -210,93 +205,6 @@ std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSampl
   return std::array<RingShape, 2>{in, back};
 }
 
-// The waist (the target's narrowest bin with a wider bin on each side), the in ring's depth there
-// (its wedges apart at the waist, not at the sheet's end), its flap's middle and direction past
-// the waist in the meridian, and the return plane along their bisector with the lip's line.
-std::optional<std::array<RingShape, 2>> waistPleat(const std::vector<SurfaceSample>& sheetSamples,
-                                                   const std::vector<SurfaceSample>& targetSamples,
-                                                   const RevolutionAxis& axis, int order,
-                                                   double turn, int side) {
-  const std::optional<ProfileBins> bins = binProfile(sheetSamples, targetSamples, axis);
-  if (!bins || order < 3) return std::nullopt;
-  const double lo = bins->lo, hi = bins->hi, radius = bins->radius;
-  const auto &largest = bins->largest, &excess = bins->excess;
-  std::array<double, kCornerBins> mean{};
-  std::array<bool, kCornerBins> valid{};
-  for (int b = 0; b < kCornerBins; ++b) {
-    valid[b] = bins->sheetCount[b] >= 3 && bins->targetCount[b] >= 3;
-    mean[b] = valid[b] ? bins->targetSum[b] / bins->targetCount[b] : 0.0;
-  }
-  // The widest valid bin strictly past `b` toward `dir`; -1 if none.
-  const auto widestPast = [&](int b, int dir) {
-    int best = -1;
-    for (int c = b + dir; c >= 0 && c < kCornerBins; c += dir)
-      if (valid[c] && (best < 0 || mean[c] > mean[best])) best = c;
-    return best;
-  };
-  int waist = -1;
-  for (int b = 0; b < kCornerBins; ++b) {
-    if (!valid[b]) continue;
-    const int lip = widestPast(b, side), belly = widestPast(b, -side);
-    // The lip: the narrower wide part (either, between two bellies alike).
-    if (lip < 0 || belly < 0 || mean[lip] > mean[belly]) continue;
-    const double rise = kWaistRise * radius;
-    if (mean[lip] < mean[b] + rise || mean[belly] < mean[b] + rise) continue;
-    if (waist < 0 || mean[b] < mean[waist]) waist = b;
-  }
-  if (waist < 0 || !(excess[waist] > 0.05 * radius)) return std::nullopt;
-  const int lip = widestPast(waist, side);
-  int begin = waist;
-  while (begin - side >= 0 && begin - side < kCornerBins &&
-         excess[begin] > kPleatStart * excess[waist])
-    begin -= side;
-  const int end = side > 0 ? kCornerBins - 1 : 0;
-  if (begin == waist || excess[begin] < -1e299 || bins->sheetCount[end] < 3) return std::nullopt;
-  const auto centre = [&](int b) { return lo + (hi - lo) * (b + 0.5) / kCornerBins; };
-  const double t0 = centre(begin), tWaist = centre(waist), radius0 = largest[begin];
-  const double wall = largest[waist];
-  // The wedges apart at the waist only (the return turns what lies past it back out).
-  const double apart =
-      1.02 * std::max(std::cos(std::numbers::pi / order), 0.5 / std::sin(std::numbers::pi / order));
-  const double rho = std::max(0.5 * (wall + mean[waist]), wall * apart);
-  const double slope = (radius0 - rho) / (tWaist - t0) * side;
-  if (!(slope > 0.0)) return std::nullopt;
-  RingShape in;
-  in.height = t0;
-  in.radius = radius0;
-  in.tilt = std::atan(slope * side);
-  in.turn = turn;
-  in.order = order;
-  const glm::dvec2 normal(std::cos(in.tilt), std::sin(in.tilt));
-  const auto reflected = [&](const glm::dvec2& p) {
-    const double d = glm::dot(p - glm::dvec2(in.radius, in.height), normal);
-    return p - 2.0 * d * normal;
-  };
-  const glm::dvec2 middle = reflected({wall, tWaist});
-  const glm::dvec2 farEnd = reflected({largest[end], centre(end)});
-  if (!(middle.x > 0.02 * radius)) return std::nullopt;
-  // The flap's way past the waist (the wall's way along the axis, reflected) and the lip's way.
-  const glm::dvec2 wallWay(0.0, side);
-  const glm::dvec2 flapWay = wallWay - 2.0 * glm::dot(wallWay, normal) * normal;
-  const glm::dvec2 lipWay = glm::normalize(glm::dvec2(mean[lip], centre(lip)) - middle);
-  const glm::dvec2 line = glm::normalize(flapWay + lipWay);
-  glm::dvec2 back(-line.y, line.x);
-  if (glm::dot(back, flapWay) < 0.0) back = -back;
-  if (!(glm::dot(farEnd - middle, back) > 0.02 * radius)) return std::nullopt;
-  // The plane's own e_k faces the way its normal leans across the axis.
-  const double sign = back.x < 0.0 ? -1.0 : 1.0;
-  RingShape out;
-  out.height = middle.y;
-  out.radius = sign * middle.x;
-  out.tilt = std::atan2(back.y, sign * back.x);
-  out.turn = turn + (sign < 0.0 ? std::numbers::pi : 0.0);
-  out.order = order;
-  out.seeded = true;
-  out.seedHeight = farEnd.y;
-  out.seedRadius = sign * farEnd.x;
-  return std::array<RingShape, 2>{in, out};
-}
-
 std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction) {
   if (sheet.positions.size() < 4) return std::nullopt;
   // The middle of its bounding box: a tube's seam has its vertices twice, which pulls the
@@ -423,7 +331,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
     for (std::size_t c = 0; c < chains.size() && c < resume->chains.size(); ++c) {
       Chain& chain = chains[c];
       for (const RingShape& ring : resume->chains[c]) {
-        if (chain.kept.size() >= mostRings && !ring.seeded) break;  // a pleat stays whole
+        if (chain.kept.size() >= mostRings) break;
         makeRing(*chain.grown, ringOf(ring, axis));
         chain.kept.push_back(ring);
       }
@@ -449,28 +357,24 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
       const std::vector<SurfaceSample> samples =
           sampleSurface(meshOf(grown.fixed()), kProfileSamples, random());
-      // Each candidate is one ring, or a waist pleat's two made as one.
-      std::vector<std::vector<RingShape>> shapes;
+      std::vector<RingShape> shapes;
       for (const double turn : {0.0, 0.5})
         for (RingShape shape : neckRings(samples, targetSamples, axis, 0.0, chain.orders)) {
           shape.turn = turn * 2.0 * std::numbers::pi / shape.order;
-          shapes.push_back({shape});
+          shapes.push_back(shape);
         }
       const std::size_t solved = shapes.size() / 2;  // those at turn 0
-      // A return ring's seeded planes get no corner rings of their own.
       for (const RingShape& ring : chain.kept)
         for (const double inward : kCornerInward) {
-          if (ring.seeded) continue;
           RingShape corner = ring;
           corner.turn += std::numbers::pi / ring.order;
           corner.radius *= inward;
-          shapes.push_back({corner});
+          shapes.push_back(corner);
         }
       // The corners farthest out folded in where they stand out most (a neck), once per
       // distinct turn of the chain's rings.
       std::vector<std::pair<int, double>> turns;
       for (const RingShape& ring : chain.kept) {
-        if (ring.seeded) continue;
         const double step = 2.0 * std::numbers::pi / ring.order;
         const double turn = std::fmod(ring.turn + 0.5 * step, step);
         const bool seen = std::any_of(turns.begin(), turns.end(), [&](const auto& t) {
@@ -482,20 +386,8 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           for (const double depth : kCornerDepths)
             if (const std::optional<RingShape> corner =
                     neckCornerRing(samples, targetSamples, axis, ring.order, turn, side, depth))
-              shapes.push_back({*corner});
+              shapes.push_back(*corner);
       }
-      // Waist pleats (waistPleat), in the chain of rings of 4 to 16 while it has turned nothing
-      // back out.
-      const bool coarse = chain.orders.front() == kAllOrders[0];
-      const bool turnedOut = std::any_of(chain.kept.begin(), chain.kept.end(),
-                                         [](const RingShape& r) { return r.seeded; });
-      if (coarse && !turnedOut)
-        for (const int order : kWaistPleatOrders)
-          for (const double turn : {0.0, 0.5})
-            for (const int side : {1, -1})
-              if (const auto pleat = waistPleat(samples, targetSamples, axis, order,
-                                                turn * 2.0 * std::numbers::pi / order, side))
-                shapes.push_back({(*pleat)[0], (*pleat)[1]});
       std::vector<double> scores(shapes.size(), 1e300);
       tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
       const auto evaluate = [&](std::size_t r) {
@@ -506,12 +398,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
           local = std::make_unique<FoldSession>(session.initial());
           local->applyRecords(records);
         }
-        std::size_t made = 0;
-        for (const RingShape& ring : shapes[r]) {
-          const std::size_t m = makeRing(*local, ringOf(ring, axis));
-          made += m;
-        }
-        if (made > 0 &&
+        if (makeRing(*local, ringOf(shapes[r], axis)) > 0 &&
             (allowCrossing ||
              findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
           scores[r] = measure(local->fixed());
@@ -519,8 +406,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       };
       const auto foldsOf = [&](std::size_t from, std::size_t to) {
         double folds = 0.0;
-        for (std::size_t r = from; r < to; ++r)
-          for (const RingShape& ring : shapes[r]) folds += ring.order;
+        for (std::size_t r = from; r < to; ++r) folds += shapes[r].order;
         return folds;
       };
       if (batches.run(0, solved, foldsOf(0, solved), evaluate))
@@ -531,10 +417,9 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
         chain.done = true;
         continue;
       }
-      for (const RingShape& chosen : shapes[static_cast<std::size_t>(best - scores.begin())]) {
-        makeRing(grown, ringOf(chosen, axis));
-        chain.kept.push_back(chosen);
-      }
+      const RingShape& chosen = shapes[static_cast<std::size_t>(best - scores.begin())];
+      makeRing(grown, ringOf(chosen, axis));
+      chain.kept.push_back(chosen);
       chain.current = *best;
       chain.done = chain.kept.size() >= mostRings;
     }

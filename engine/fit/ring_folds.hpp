@@ -125,28 +125,6 @@ std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSampl
                                                   const RevolutionAxis& axis, int order,
                                                   double turn, int side);
 
-// A waist pleat: at the target's waist (the narrowest of 24 height bins with a bin at least a
-// twentieth of the sheet's radius wider on each side), a ring of `order` planes turned by `turn`
-// folds each wedge in from where the sheet begins to stand out of the target (toward the belly,
-// the side away from `side`) down to the waist, its flaps' middles at the target's radius there
-// where the wedges stay apart at the waist (q >= cos(pi / n) and 1 / (2 sin(pi / n)), not at the
-// sheet's end, as neckPleat's must); a return ring of as many planes, through each flap's middle
-// at the waist along the bisector of the flap's way on and the target's line from the waist to
-// the lip (the widest bin past it toward `side`), turns the flap's part past the waist back out
-// toward the lip, each fold seeded in its flap's far end. Offered by suggestTubeRings (rings of 3
-// to 5, two turns, either side) to the chain of rings of 4 to 16 while it has turned nothing back
-// out, the two rings made and measured as one candidate. None where the target has no waist
-// toward `side`, the sheet does not stand out at the waist by a twentieth of its radius, the cut
-// cannot deepen, the flap's middle reaches the axis, or its far end lies on the plane's other
-// side. Known limits: the return turns only the flap's band nearer the axis than its plane (the
-// strips between the first ring's creases and the flap's edges go on inward), and the first
-// ring's flaps past the waist may still cross each other before it (the candidate is checked
-// whole).
-std::optional<std::array<RingShape, 2>> waistPleat(const std::vector<SurfaceSample>& sheetSamples,
-                                                   const std::vector<SurfaceSample>& targetSamples,
-                                                   const RevolutionAxis& axis, int order,
-                                                   double turn, int side);
-
 // The chains as far as one call grew them, to be grown on by a later call on the same sheet
 // (the start's probe, first_step_start.hpp, hands its winner's chains to the search, which
 // otherwise grew the same first rings again: about a quarter of a chain's CPU).
