@@ -10,6 +10,9 @@
 
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
+
+#include "engine/fit/eigen_glm.hpp"
+#include "engine/geometry/principal_moments.hpp"
 #include "engine/geometry/validate.hpp"
 
 namespace curvefold {
@@ -94,18 +97,16 @@ constexpr double kNormalAgrees = 0.866;  // 30 degrees
 PrincipalAxes principalOf(const std::vector<SurfaceSample>& samples, bool byMeanNormal = true) {
   PrincipalAxes out;
   glm::dvec3 meanNormal(0.0);
+  std::vector<glm::dvec3> positions;
+  positions.reserve(samples.size());
   for (const SurfaceSample& s : samples) {
-    out.centroid += s.position;
+    positions.push_back(s.position);
     meanNormal += s.normal;
   }
-  out.centroid /= static_cast<double>(samples.size());
   meanNormal /= static_cast<double>(samples.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const SurfaceSample& s : samples) {
-    const glm::dvec3 d = s.position - out.centroid;
-    const Eigen::Vector3d e(d.x, d.y, d.z);
-    covariance += e * e.transpose();
-  }
+  const PointMoments moments = pointMoments(positions);
+  out.centroid = moments.centre;
+  const Eigen::Matrix3d covariance = eigenOf(moments.scatter);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d v = solver.eigenvectors().col(i);
@@ -141,19 +142,16 @@ void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& cen
                 const glm::dvec3& axis, const std::string& kind, std::vector<PlacedStart>& out) {
   if (!kind.empty() && kind != "cone") return;
   std::vector<glm::dvec2> profile;  // (height, radius)
-  glm::dvec2 mean(0.0);
   for (const SurfaceSample& sample : samples) {
     const glm::dvec3 d = sample.position - centroid;
     const double t = glm::dot(d, axis);
     profile.emplace_back(t, glm::length(d - t * axis));
-    mean += profile.back();
   }
-  mean /= static_cast<double>(profile.size());
-  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
-  for (const glm::dvec2& p : profile) {
-    const Eigen::Vector2d e(p.x - mean.x, p.y - mean.y);
-    covariance += e * e.transpose();
-  }
+  const PointMoments2 moments = pointMoments(profile);
+  const glm::dvec2 mean = moments.centre;
+  Eigen::Matrix2d covariance;
+  covariance << moments.scatter[0][0], moments.scatter[1][0], moments.scatter[0][1],
+      moments.scatter[1][1];
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(covariance);
   glm::dvec2 along(solver.eigenvectors()(0, 1), solver.eigenvectors()(1, 1));
   if (along.x < 0.0) along = -along;  // up the axis

@@ -15,8 +15,10 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/nearest_vertex.hpp"
+#include "engine/geometry/principal_moments.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/vertex_normals.hpp"
 
@@ -452,12 +454,8 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   };
   // Directions to pleat along: toward the far point, and the sheet's own principal direction
   // nearest it (a swept sheet's rulings or profile, across which a hinge is straight).
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const glm::dvec3& q : sheet.positions) {
-    const Eigen::Vector3d e(q.x - centre.x, q.y - centre.y, q.z - centre.z);
-    covariance += e * e.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+      eigenOf(pointMoments(sheet.positions, {}, centre).scatter));
   std::vector<glm::dvec3> axes;
   for (int i = 1; i < 3; ++i) {
     const Eigen::Vector3d v = solver.eigenvectors().col(i);

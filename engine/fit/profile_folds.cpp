@@ -12,8 +12,10 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/subplex.hpp"
 #include "engine/fit/unit_draw.hpp"
+#include "engine/geometry/principal_moments.hpp"
 #include "engine/geometry/self_intersection.hpp"
 
 namespace curvefold {
@@ -183,16 +185,12 @@ RevolutionAxis polishedAxis(const std::vector<SurfaceSample>& samples,
 std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& samples,
                                              double maxSpread) {
   if (samples.size() < 50) return {};
-  glm::dvec3 centroid(0.0);
-  for (const SurfaceSample& s : samples) centroid += s.position;
-  centroid /= static_cast<double>(samples.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const SurfaceSample& s : samples) {
-    const glm::dvec3 d = s.position - centroid;
-    const Eigen::Vector3d e(d.x, d.y, d.z);
-    covariance += e * e.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  std::vector<glm::dvec3> positions;
+  positions.reserve(samples.size());
+  for (const SurfaceSample& s : samples) positions.push_back(s.position);
+  const PointMoments moments = pointMoments(positions);
+  const glm::dvec3 centroid = moments.centre;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(eigenOf(moments.scatter));
   // A squat target (a lampshade or a pot about as tall as it is wide) has principal variances
   // nearly equal, and the samples swing those eigenvectors: bench/make_implicit_shapes.py's
   // lampshade_march (variances within 1.13 of each other) had its axis 14 degrees off the

@@ -16,8 +16,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "engine/fit/eigen_glm.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/timed_batches.hpp"
+#include "engine/geometry/principal_moments.hpp"
 #include "engine/geometry/self_intersection.hpp"
 
 namespace curvefold {
@@ -218,12 +220,8 @@ std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& directio
   // The tube's own axis: of the given direction and the vertices' principal axes, the one about
   // which the radius varies least (a start placed from other samples lies a little off the
   // target's axis, and a tube as long as it is wide has no distinct principal axis).
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const glm::dvec3& p : sheet.positions) {
-    const Eigen::Vector3d d(p.x - boxCentre.x, p.y - boxCentre.y, p.z - boxCentre.z);
-    covariance += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+      eigenOf(pointMoments(sheet.positions, {}, boxCentre).scatter));
   std::vector<glm::dvec3> candidates{glm::normalize(direction)};
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d e = solver.eigenvectors().col(k);

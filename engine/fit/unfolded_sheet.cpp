@@ -18,6 +18,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
 #include "engine/geometry/boundary_edges.hpp"
+#include "engine/geometry/principal_moments.hpp"
 
 namespace curvefold {
 namespace {
@@ -272,25 +273,20 @@ struct Moments {
 
 Moments momentsOf(const std::vector<glm::dvec3>& positions, const TriangleMesh& mesh,
                   bool normals) {
-  std::vector<std::pair<glm::dvec3, double>> points;
-  double total = 0.0;
+  std::vector<glm::dvec3> points;
+  std::vector<double> areas;
   for (const auto& t : mesh.triangles) {
     const glm::dvec3 a = positions[t[0]], b = positions[t[1]], c = positions[t[2]];
     const glm::dvec3 cross = glm::cross(b - a, c - a);
     const double area = 0.5 * glm::length(cross);
     if (!(area > 0.0)) continue;
-    points.emplace_back(normals ? cross / (2.0 * area) : (a + b + c) / 3.0, area);
-    total += area;
+    points.push_back(normals ? cross / (2.0 * area) : (a + b + c) / 3.0);
+    areas.push_back(area);
   }
+  const PointMoments moments = pointMoments(points, areas);
   Moments m;
-  for (const auto& [p, w] : points) m.mean += w * p;
-  if (total > 0.0) m.mean /= total;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const auto& [p, w] : points) {
-    const Eigen::Vector3d d = eigenOf(p - m.mean);
-    covariance += w * d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  m.mean = moments.centre;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(eigenOf(moments.scatter));
   for (int i = 0; i < 3; ++i)
     m.axes[i] = glm::normalize(glmOf(Eigen::Vector3d(solver.eigenvectors().col(i))));
   return m;

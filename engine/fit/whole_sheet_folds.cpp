@@ -13,6 +13,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/boundary_edges.hpp"
+#include "engine/geometry/principal_moments.hpp"
 
 namespace curvefold {
 namespace {
@@ -33,15 +34,14 @@ struct Frame {
 
 Frame principalFrame(const TriangleMesh& mesh) {
   const std::vector<SurfaceSample> samples = sampleSurface(mesh, 4000, 11);
+  std::vector<glm::dvec3> positions;
+  positions.reserve(samples.size());
+  for (const SurfaceSample& s : samples) positions.push_back(s.position);
+  const PointMoments moments = pointMoments(positions);
   Frame frame;
-  for (const SurfaceSample& s : samples) frame.centre += eigenOf(s.position);
-  frame.centre /= double(std::max<std::size_t>(1, samples.size()));
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const SurfaceSample& s : samples) {
-    const Eigen::Vector3d d = eigenOf(s.position) - frame.centre;
-    covariance += d * d.transpose();
-  }
-  frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
+  frame.centre = eigenOf(moments.centre);
+  frame.axes =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(eigenOf(moments.scatter)).eigenvectors();
   return frame;
 }
 
@@ -825,22 +825,21 @@ std::vector<RigidMotion> sheetSymmetries(const TriangleMesh& sheet, double toler
   if (rim.empty()) return {};
   const BoundaryCurve curve(sheet, rim);
   std::vector<char> seen(sheet.positions.size(), 0);
-  std::vector<Eigen::Vector3d> boundary;
+  std::vector<glm::dvec3> corners;
   for (const auto& [a, b] : rim)
     for (const std::uint32_t v : {a, b})
       if (!seen[v]) {
         seen[v] = 1;
-        boundary.push_back(eigenOf(sheet.positions[v]));
+        corners.push_back(sheet.positions[v]);
       }
+  std::vector<Eigen::Vector3d> boundary;
+  for (const glm::dvec3& p : corners) boundary.push_back(eigenOf(p));
   // The boundary's centroid and axes: exact for a regular polygon's corners (area samples are
   // not), so a turn between corners is exact too.
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : boundary) centre += p;
-  centre /= double(boundary.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& p : boundary) covariance += (p - centre) * (p - centre).transpose();
+  const PointMoments moments = pointMoments(corners);
+  const Eigen::Vector3d centre = eigenOf(moments.centre);
   const Eigen::Matrix3d axes =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance).eigenvectors();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(eigenOf(moments.scatter)).eigenvectors();
   const SurfaceDistanceQuery surface(sheet, "sheet");
   const std::size_t stride = 1 + sheet.positions.size() / 200;
   const double scale = boundingDiagonal(sheet);

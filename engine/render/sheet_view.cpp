@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/geometry/principal_moments.hpp"
 #include "engine/render/scene_builder.hpp"
 
 namespace curvefold {
@@ -14,27 +15,14 @@ SheetView viewForSheet(const Sheet& sheet) {
   SheetView view;
   const glm::dvec3 iso(viewDirection(ViewPreset::Iso));
   view.direction = glm::vec3(iso);
-  // Area-weighted moments; each triangle's second moment is exact: (sum v v^T + s s^T) / 12.
-  double area = 0.0;
-  Eigen::Vector3d first = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  for (const Triangle& t : sheet.triangles) {
-    const glm::dvec3 a = sheet.positions[t[0]], b = sheet.positions[t[1]];
-    const glm::dvec3 c = sheet.positions[t[2]];
-    const double w = 0.5 * glm::length(glm::cross(b - a, c - a));
-    if (!(w > 0.0)) continue;
-    area += w;
-    const glm::dvec3 s = a + b + c;
-    first += (w / 3.0) * Eigen::Vector3d(s.x, s.y, s.z);
-    for (const glm::dvec3& v : {a, b, c, s}) {
-      const Eigen::Vector3d e(v.x, v.y, v.z);
-      second += (w / 12.0) * e * e.transpose();
-    }
-  }
+  // Area-weighted moments, each triangle's second moment exact.
+  const AreaMoments moments = areaMoments(sheet);
+  const double area = moments.area;
   if (!(area > 0.0)) return view;
-  const Eigen::Vector3d mean = first / area;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(second / area -
-                                                              mean * mean.transpose());
+  Eigen::Matrix3d covariance;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) covariance(r, c) = moments.covariance[c][r];
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   const Eigen::Vector3d variances = solver.eigenvalues();  // ascending
   if (solver.info() != Eigen::Success || !(variances[0] < kFlatVarianceRatio * variances[1]))
     return view;
@@ -42,7 +30,7 @@ SheetView viewForSheet(const Sheet& sheet) {
   glm::dvec3 normal(thin.x(), thin.y(), thin.z());
   // A bowl or a dome opens upwards (its rim higher than its middle: height and squared distance
   // from the centre correlate); any other sheet (a saddle, a plane) faces the iso view's side.
-  const glm::dvec3 centreD(mean.x(), mean.y(), mean.z());
+  const glm::dvec3 centreD = moments.centre;
   double hh = 0.0, rr = 0.0, hr = 0.0, rMean = 0.0;
   for (int pass = 0; pass < 2; ++pass)
     for (const Triangle& t : sheet.triangles) {
