@@ -26,6 +26,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/replayed_motion.hpp"
+#include "engine/fit/snapped_plane.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_unfolding.hpp"
@@ -295,6 +296,43 @@ TEST(FitReading, AStripBetweenACreaseAndTheRimIsGrabbedOffTheCrease) {
 // rim: the folds made last first, 8 folds, on the sheet.
 TEST(FitReading, ACreaseALaterFoldCutIsReadAfterTheFoldsThatCutIt) {
   expectUnfoldsOntoItsSheet("interior_cone_8", 8);
+}
+
+// Seven folds, each through a vertex of the sheet as it lay (a plane set to leave a share of the
+// vertices behind it): fold 2's plane meets a grid vertex and a crease vertex of fold 1 beside it.
+// Its crease read back passes them by 2e-10 m and tilts by 2e-9, and the fold made again cut
+// slivers there, which no one shift of the plane took away: refused, the fit searched blind from
+// fold 1 (190% of the diagonal). The plane moved through the vertices it all but meets makes it.
+TEST(FitReading, AReadPlaneThatPassesSheetVerticesByAHairFoldsThroughThem) {
+  const ReachTarget t = reachTarget("most_moved_helix_tangent_7");
+  FoldSession session(t.initial);
+  const FitResult result = fitFolds(session, FoldFitter(t.target), clockFree(8, 300));
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_EQ(session.foldCount(), 7u);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-6);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
+// Two points a hair off a plane, on either side and far apart (a turn and a shift), and one far
+// off it: the plane nearest it through both, the far point left where it was.
+TEST(SnappedPlane, APlaneIsTurnedAndShiftedThroughThePointsItAllButMeets) {
+  const ReflectionPlane plane{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}};
+  const std::vector<glm::dvec3> points = {
+      {0.1, 0.0, 3e-10}, {-0.05, 0.02, -1e-10}, {0.0, 0.1, 0.01}};
+  const std::optional<ReflectionPlane> snapped =
+      planeThroughNearPoints(plane, points, 1e-7, 0.3, 1e-15);
+  ASSERT_TRUE(snapped.has_value());
+  EXPECT_LE(std::abs(snapped->signedDistance(points[0])), 1e-15);
+  EXPECT_LE(std::abs(snapped->signedDistance(points[1])), 1e-15);
+  EXPECT_NEAR(snapped->signedDistance(points[2]), 0.01, 1e-8);
+  EXPECT_NEAR(glm::length(snapped->normal), 1.0, 1e-15);
+  EXPECT_GT(snapped->normal.z, 1.0 - 1e-16);
+  // No point within reach; points within reach that no plane holds (a hair off each corner of a
+  // small square, alternately above and below).
+  EXPECT_FALSE(planeThroughNearPoints(plane, {{0.0, 0.0, 1e-3}}, 1e-7, 0.3, 1e-15));
+  const std::vector<glm::dvec3> twisted = {
+      {0.0, 0.0, 5e-8}, {1e-9, 0.0, -5e-8}, {0.0, 1e-9, -5e-8}, {1e-9, 1e-9, 5e-8}};
+  EXPECT_FALSE(planeThroughNearPoints(plane, twisted, 1e-7, 0.3, 1e-15));
 }
 
 // Eight folds, each through an earlier crease: the first unfolding lies on the sheet with 0.08%

@@ -23,6 +23,7 @@
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/replayed_motion.hpp"
 #include "engine/fit/ring_folds.hpp"
+#include "engine/fit/snapped_plane.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
@@ -33,6 +34,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/symmetry.hpp"
+#include "engine/geometry/tolerances.hpp"
 #include "engine/geometry/topology.hpp"
 
 namespace curvefold {
@@ -1807,13 +1809,22 @@ class FitRun {
     };
     const Sheet sheet = branch.fixed();  // before the fold
     double side = 0.0;                   // where the seed lies, of the plane
+    ReflectionPlane made = plan.folds[k].plane;
     auto make = [&](const glm::dvec2& at) {
       const glm::dvec3 grabbed = branch.beginDragAtDevelopment(at);
-      if (side == 0.0) side = plane.signedDistance(grabbed);
-      branch.updateDrag(plane.reflect(grabbed));
+      if (side == 0.0) side = made.signedDistance(grabbed);
+      branch.updateDrag(made.reflect(grabbed));
       return branch.commit();
     };
-    if (!make(seed)) return false;
+    if (!make(seed)) {
+      // Refused (a sliver beside a vertex the read plane passes by a hair, where the fold that
+      // made the crease passed through it): the plane moved through the vertices it all but meets.
+      const std::optional<ReflectionPlane> snapped = planeThroughNearPoints(
+          made, sheet.positions, kRelativeGrabSnap * size, size, 0.1 * kRelativeEpsilon * size);
+      if (!snapped) return false;
+      made = *snapped;
+      if (!make(seed)) return false;
+    }
     if (!symmetry || seedGiven || imagesRead()) return true;
     branch.undo();
     const Sheet& initial = session_.initial();
