@@ -33,6 +33,24 @@ def write_obj(path, comment, generator, verts, tris, number="%.8f", used_only=Tr
             out.write("f %d %d %d\n" % tuple(index[v] + 1 for v in t))
 
 
+def vertex_normals(verts, faces):
+    """Each vertex's unit normal: the sum of its triangles' area-weighted normals."""
+    acc = [[0.0, 0.0, 0.0] for _ in verts]
+    for f in faces:
+        a, b, c = (verts[i] for i in f)
+        u = [b[k] - a[k] for k in range(3)]
+        v = [c[k] - a[k] for k in range(3)]
+        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+        for i in f:
+            for k in range(3):
+                acc[i][k] += n[k]
+    out = []
+    for n in acc:
+        length = math.sqrt(sum(c * c for c in n)) or 1.0
+        out.append([c / length for c in n])
+    return out
+
+
 def folder_and_seed(description, seed):
     """The command line `OUT [--seed S]` (`seed` unless given): OUT made, and the arguments with a
     numpy random generator seeded by S."""

@@ -24,6 +24,9 @@ import os
 import random
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from formula_meshes import vertex_normals  # noqa: E402
+
 
 def amphora(t):
     bump = lambda c, w: 1.0 / (1.0 + ((t - c) / w) ** 2)
@@ -89,23 +92,6 @@ def rotate(axis, angle, p):
     return tuple(p[k] * c + cr[k] * s + (x, y, z)[k] * d * (1 - c) for k in range(3))
 
 
-def normals(verts, faces):
-    acc = [[0.0, 0.0, 0.0] for _ in verts]
-    for f in faces:
-        a, b, c = (verts[i] for i in f)
-        u = [b[k] - a[k] for k in range(3)]
-        v = [c[k] - a[k] for k in range(3)]
-        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-        for i in f:
-            for k in range(3):
-                acc[i][k] += n[k]
-    out = []
-    for n in acc:
-        length = math.sqrt(sum(c * c for c in n)) or 1.0
-        out.append([c / length for c in n])
-    return out
-
-
 def write(path, comment, verts, faces):
     used = sorted({i for f in faces for i in f})
     index = {old: new + 1 for new, old in enumerate(used)}
@@ -131,7 +117,7 @@ def main():
           verts, faces)
 
     verts, faces = lathe(urn, 0.24, 56, 0.007)
-    ns = normals(verts, faces)
+    ns = vertex_normals(verts, faces)
     verts = [tuple(v[k] + rng.gauss(0.0, 0.0005) * n[k] for k in range(3)) for v, n in zip(verts, ns)]
     holes = [verts[rng.randrange(len(verts))] for _ in range(2)]
     faces = [f for f in faces
