@@ -431,6 +431,14 @@ std::array<std::uint32_t, 4> contactPairVertices(const BarHingeModel& model,
 
 namespace {
 
+// The distance's gradient direction: away / d, or where the distance is 0 the unit `fallback`
+// (the triangle's or the two edges' normal; 0 where that is 0 too).
+glm::dvec3 pairNormal(const glm::dvec3& away, double d, const glm::dvec3& fallback) {
+  if (d > 0.0) return away / d;
+  const double length = glm::length(fallback);
+  return length > 0.0 ? fallback / length : glm::dvec3(0.0);
+}
+
 // A vertex-triangle pair's term from its nearest point's weights w, p minus that point (away)
 // and its length d: contactTerm's and triangleLanes' one copy.
 bool triangleTerm(const ContactParameters& c, const ContactPair& pair,
@@ -439,11 +447,7 @@ bool triangleTerm(const ContactParameters& c, const ContactPair& pair,
                   const glm::dvec3& cc, ContactTerm& term, bool dynamic) {
   const double s = d - c.thickness;
   if (s >= c.activation) return false;
-  glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(b - a, cc - a);
-  if (!(d > 0.0)) {
-    const double length = glm::length(normal);
-    normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
-  }
+  const glm::dvec3 normal = pairNormal(away, d, glm::cross(b - a, cc - a));
   term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
   term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
   barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
@@ -464,11 +468,7 @@ bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& posi
     const double d = glm::length(away);
     const double s = d - c.thickness;
     if (s >= c.activation) return false;
-    glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(p1 - p0, q1 - q0);
-    if (!(d > 0.0)) {
-      const double length = glm::length(normal);
-      normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
-    }
+    const glm::dvec3 normal = pairNormal(away, d, glm::cross(p1 - p0, q1 - q0));
     term.vertices = v;
     term.gradient = {(1.0 - sp) * normal, sp * normal, -(1.0 - tp) * normal, -tp * normal};
     barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
