@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 #include <tbb/task_arena.h>
@@ -57,41 +58,77 @@ BENCHMARK(BM_DynamicStepOneThread)->Arg(100)->Arg(173)->Arg(316)->Unit(benchmark
 // The dynamic step in paper mode (0.1 mm) with self-contact off (second argument 0) or on (1), on
 // the grid 0.2 m a side with its right half folded over onto its left 1.9 thicknesses above it
 // (third argument 1: every vertex of both halves within the barrier's reach of the other layer,
-// which pushes gently there)
-// or left flat (0: the contact's list is kept, no pair pushes); fourth argument 1: edge pairs too
-// (what `simulate --paper` asks for, setPaperMode).
+// which pushes it away: no rest state, the steps push the layers apart and the list is found
+// again several times), or folded at rest (2: restingFold), or left flat (0: the contact's list is
+// kept, no pair pushes); fourth argument 1: edge pairs too (what `simulate --paper` asks for,
+// setPaperMode). Counters: pairs listed and pushing at the end, and the list's rebuilds in the
+// timed steps alone.
+//
+// restingFold: the right half folded over onto the left with its layers thickness + activation
+// (2 t) apart, where the barrier begins: the crease column at the fold's apex t above the lower
+// layer, the two columns beside it leaning by asin(t / h) (h the cell) and every bar at its
+// length, driven at the fold amount whose crease target is the angle it has (180 - 2 asin(t / h)
+// degrees), so no element and no pair pushes: the steps time the list's forces as the live window
+// meets a sheet folded flat, not its rebuilds.
+std::vector<glm::dvec3> restingFold(const BarHingeModel& model, double side, double cell, double t,
+                                    double& amount) {
+  const double crease = 0.5 * side, lean = cell - std::sqrt(cell * cell - t * t);
+  std::vector<glm::dvec3> x = model.flatPositions;
+  for (glm::dvec3& p : x) {
+    if (std::abs(p.x - crease) < 1e-9)
+      p = {crease, p.y, t};
+    else if (p.x < crease)
+      p = {p.x + lean, p.y, 0.0};
+    else
+      p = {2.0 * crease - p.x + lean, p.y, 2.0 * t};
+  }
+  amount = (180.0 - 2.0 * std::asin(t / cell) * 180.0 / std::numbers::pi) / 180.0;
+  return x;
+}
+
 void BM_DynamicStepPaper(benchmark::State& bench) {
   const int cells = static_cast<int>(bench.range(0));
+  constexpr double kSide = 0.2, kThickness = 1e-4;
   ModelOptions options;
   options.mode = SimulationMode::Paper;
-  options.paper.thickness = 1e-4;
+  options.paper.thickness = kThickness;
   options.contact.enabled = bench.range(1) == 1;
   options.contact.edgePairs = bench.range(3) == 1;
   const BarHingeModel model =
-      buildModel(testing::creasedSquare(cells, cells / 2, 180.0, 0.2), options);
+      buildModel(testing::creasedSquare(cells, cells / 2, 180.0, kSide), options);
   SimulationState state = flatState(model);
+  double amount = 1.0;
   if (bench.range(2) == 1) {
     for (glm::dvec3& p : state.positions)
       if (p.x > 0.1 + 1e-9) p = {0.2 - p.x, p.y, 1.9e-4};
     state.hingeAngles = hingeAngles(model, state.positions);
+  } else if (bench.range(2) == 2) {
+    state.positions = restingFold(model, kSide, kSide / cells, kThickness, amount);
+    state.hingeAngles = hingeAngles(model, state.positions);
   }
-  stepDynamic(model, 1.0, state, 10);
+  stepDynamic(model, amount, state, 10);
+  const std::size_t rebuildsBefore = state.contactPairs.rebuilds;
   for (auto _ : bench) {
-    stepDynamic(model, 1.0, state, 1);
+    stepDynamic(model, amount, state, 1);
     benchmark::DoNotOptimize(state.positions.data());
   }
-  std::size_t edgePairs = 0;
-  for (const ContactPair& pair : state.contactPairs.pairs) edgePairs += pair.edges;
+  std::size_t edgePairs = 0, pushing = 0;
+  ContactTerm term;
+  for (const ContactPair& pair : state.contactPairs.pairs) {
+    edgePairs += pair.edges;
+    pushing += contactTerm(model, state.positions, pair, term, true);
+  }
   bench.counters["vertices"] = static_cast<double>(model.vertexCount());
   bench.counters["pairs"] = static_cast<double>(state.contactPairs.pairs.size());
+  bench.counters["pushing"] = static_cast<double>(pushing);
   bench.counters["edge_pairs"] = static_cast<double>(edgePairs);
-  bench.counters["rebuilds"] = static_cast<double>(state.contactPairs.rebuilds);
+  bench.counters["rebuilds"] = static_cast<double>(state.contactPairs.rebuilds - rebuildsBefore);
 }
 // 100 cells: 10,201 vertices; 316: 100,489 (the 1 ms and 10 ms).
 void paperStepCases(benchmark::internal::Benchmark* bench) {
   // contact, folded, edge pairs
-  constexpr std::int64_t kCases[][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
-                                        {1, 1, 0}, {1, 0, 1}, {1, 1, 1}};
+  constexpr std::int64_t kCases[][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 1},
+                                        {1, 1, 1}, {0, 2, 0}, {1, 2, 0}, {1, 2, 1}};
   for (const std::int64_t cells : {100, 316})
     for (const auto& c : kCases) bench->Args({cells, c[0], c[1], c[2]});
 }

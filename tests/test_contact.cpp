@@ -4,10 +4,12 @@
 // themselves.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
 #include "engine/simulation/bar_hinge_model.hpp"
@@ -472,6 +474,113 @@ TEST(Contact, OnlyInPaperMode) {
   const BarHingeModel model = buildModel(pattern, paperOptions(true));
   EXPECT_DOUBLE_EQ(model.contact.thickness, kThickness);
   EXPECT_EQ(contactEnergy(model, model.flatPositions), 0.0);
+}
+
+// The dynamic solver's list (ContactList: the pairs within the activation gap plus a skin of twice
+// the activation gap) is found again when, and only when, some vertex has moved more than half the
+// skin since it was found: every vertex moved just under half of it, each its own way, keeps the
+// list; one vertex just past it finds it again, as findContactPairs finds it there.
+TEST(Contact, TheDynamicListIsFoundAgainWhenAndOnlyWhenAVertexPassesHalfItsSkin) {
+  const BarHingeModel model =
+      buildModel(scaled(testing::creasedSquare(8, 4, 180.0), 0.01), paperOptions(true));
+  const std::vector<glm::dvec3> x = halvesTurnedOver(model, 3);
+  ContactList list;
+  EXPECT_TRUE(refreshContactList(model, x, list));
+  EXPECT_EQ(list.rebuilds, 1u);
+  EXPECT_EQ(list.skin, 2.0 * model.contact.activation);
+  const double half = 0.5 * list.skin;
+  EXPECT_FALSE(list.pairs.empty());
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal;
+  std::vector<glm::dvec3> moved = x;
+  for (glm::dvec3& p : moved)
+    p += 0.999 * half * glm::normalize(glm::dvec3(normal(random), normal(random), normal(random)));
+  EXPECT_FALSE(refreshContactList(model, moved, list));
+  EXPECT_EQ(list.rebuilds, 1u);
+  EXPECT_NEAR(list.moved, 0.999 * half, 1e-9 * half);
+  moved[17] = x[17] + glm::dvec3(0.0, 0.0, 1.001 * half);
+  EXPECT_TRUE(refreshContactList(model, moved, list));
+  EXPECT_EQ(list.rebuilds, 2u);
+  EXPECT_EQ(list.moved, 0.0);
+  EXPECT_EQ(list.pairs, findContactPairs(model, moved, model.contact.activation + list.skin));
+  EXPECT_FALSE(refreshContactList(model, moved, list));
+  EXPECT_EQ(list.rebuilds, 2u);
+}
+
+// A 10 mm sheet of 32 x 32 cells (1,089 vertices, some 6,000 listed pairs: enough that two
+// threads share them) with its halves turned over 1.5 thicknesses apart, jittered.
+BarHingeModel turnedOverGrid(bool edgePairs) {
+  ModelOptions options = paperOptions(true);
+  options.contact.edgePairs = edgePairs;
+  return buildModel(scaled(testing::creasedSquare(32, 16, 180.0), 0.01), options);
+}
+
+// Each step's contact force from the list (dynamicContactForces: only the pairs that can have
+// come within the barrier since the list was found, vertex-triangle pairs eight at a time in
+// lanes, each vertex's forces added in pair order) is bit for bit every listed pair's force added
+// pair by pair (addContactForces), as the step took it before: on one thread and on two, when the
+// list is found and after moves short of half its skin, with edge pairs, none on a pinned vertex.
+TEST(Contact, TheDynamicListsForceIsEveryListedPairsForceBitForBit) {
+  for (const bool edges : {false, true}) {
+    SCOPED_TRACE(edges);
+    BarHingeModel model = turnedOverGrid(edges);
+    constexpr std::uint32_t kPinned = 600;  // on the lower layer, under the flap
+    model.pinned[kPinned] = 1;
+    // Moves up to 0.26 of half the skin (the activation gap) a round, 0.78 in three.
+    const double step = 0.15 * model.contact.activation;
+    for (const int threads : {1, 2}) {
+      SCOPED_TRACE(threads);
+      tbb::task_arena arena(threads);
+      SimulationState state = flatState(model);
+      state.positions = halvesTurnedOver(model, 7);
+      std::mt19937 random(13);
+      std::uniform_real_distribution<double> jitter(-step, step);
+      std::size_t pushed = 0, onPinned = 0;
+      for (int round = 0; round < 4; ++round) {
+        const glm::dvec3* forces = nullptr;
+        arena.execute([&] { forces = dynamicContactForces(model, state); });
+        ASSERT_NE(forces, nullptr);
+        std::vector<glm::dvec3> expected(model.vertexCount(), glm::dvec3(0.0));
+        addContactForces(model, state.positions, state.contactPairs.pairs, expected, true);
+        EXPECT_EQ(0, std::memcmp(forces, expected.data(), expected.size() * sizeof(glm::dvec3)))
+            << "round " << round;
+        EXPECT_EQ(forces[kPinned], glm::dvec3(0.0));
+        for (const glm::dvec3& force : expected) pushed += force != glm::dvec3(0.0);
+        for (const ContactPair& pair : state.contactPairs.pairs)
+          for (std::uint32_t v : contactPairVertices(model, pair)) onPinned += v == kPinned;
+        for (glm::dvec3& p : state.positions)
+          p += glm::dvec3(jitter(random), jitter(random), jitter(random));
+      }
+      EXPECT_EQ(state.contactPairs.rebuilds, 1u);  // the moves stay within half the skin
+      EXPECT_GT(state.contactPairs.pairs.size(), 4096u);
+      EXPECT_GT(pushed, 1000u);
+      EXPECT_GT(onPinned, 0u);
+    }
+  }
+}
+
+// Dynamic steps with contact give the same state bit for bit on one thread and on two (the pairs'
+// forces computed on all cores, each vertex's summed in pair order), and the list was found again
+// on the way (the steps push the layers apart).
+TEST(Contact, DynamicStepsWithContactGiveTheSameStateOnAnyThreadCount) {
+  for (const bool edges : {false, true}) {
+    SCOPED_TRACE(edges);
+    const BarHingeModel model = turnedOverGrid(edges);
+    const auto run = [&](int threads) {
+      tbb::task_arena arena(threads);
+      SimulationState state = flatState(model);
+      state.positions = halvesTurnedOver(model, 5);
+      state.hingeAngles = hingeAngles(model, state.positions);
+      arena.execute([&] { stepDynamic(model, 1.0, state, 60); });
+      return state;
+    };
+    const SimulationState one = run(1), two = run(2);
+    EXPECT_EQ(0, std::memcmp(one.positions.data(), two.positions.data(),
+                             one.positions.size() * sizeof(glm::dvec3)));
+    EXPECT_EQ(0, std::memcmp(one.velocities.data(), two.velocities.data(),
+                             one.velocities.size() * sizeof(glm::dvec3)));
+    EXPECT_GT(two.contactPairs.rebuilds, 1u);
+  }
 }
 
 }  // namespace

@@ -7,11 +7,16 @@
 #include <iterator>
 #include <utility>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/lane_clones.hpp"
 
 namespace curvefold {
 
@@ -424,6 +429,33 @@ std::array<std::uint32_t, 4> contactPairVertices(const BarHingeModel& model,
   return {pair.vertex, t[0], t[1], t[2]};
 }
 
+namespace {
+
+// The distance's gradient direction: away / d, or where the distance is 0 the unit `fallback`
+// (the triangle's or the two edges' normal; 0 where that is 0 too).
+glm::dvec3 pairNormal(const glm::dvec3& away, double d, const glm::dvec3& fallback) {
+  if (d > 0.0) return away / d;
+  const double length = glm::length(fallback);
+  return length > 0.0 ? fallback / length : glm::dvec3(0.0);
+}
+
+// A vertex-triangle pair's term from its nearest point's weights w, p minus that point (away)
+// and its length d: contactTerm's and triangleLanes' one copy.
+bool triangleTerm(const ContactParameters& c, const ContactPair& pair,
+                  const std::array<std::uint32_t, 3>& tri, const glm::dvec3& w,
+                  const glm::dvec3& away, double d, const glm::dvec3& a, const glm::dvec3& b,
+                  const glm::dvec3& cc, ContactTerm& term, bool dynamic) {
+  const double s = d - c.thickness;
+  if (s >= c.activation) return false;
+  const glm::dvec3 normal = pairNormal(away, d, glm::cross(b - a, cc - a));
+  term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
+  term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
+  barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
+  return true;
+}
+
+}  // namespace
+
 bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                  const ContactPair& pair, ContactTerm& term, bool dynamic) {
   const ContactParameters& c = model.contact;
@@ -436,11 +468,7 @@ bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& posi
     const double d = glm::length(away);
     const double s = d - c.thickness;
     if (s >= c.activation) return false;
-    glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(p1 - p0, q1 - q0);
-    if (!(d > 0.0)) {
-      const double length = glm::length(normal);
-      normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
-    }
+    const glm::dvec3 normal = pairNormal(away, d, glm::cross(p1 - p0, q1 - q0));
     term.vertices = v;
     term.gradient = {(1.0 - sp) * normal, sp * normal, -(1.0 - tp) * normal, -tp * normal};
     barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
@@ -451,18 +479,7 @@ bool contactTerm(const BarHingeModel& model, const std::vector<glm::dvec3>& posi
   const glm::dvec3 &a = positions[tri[0]], &b = positions[tri[1]], &cc = positions[tri[2]];
   const glm::dvec3 w = nearestTriangleWeights(p, a, b, cc);
   const glm::dvec3 away = p - (w.x * a + w.y * b + w.z * cc);
-  const double d = glm::length(away);
-  const double s = d - c.thickness;
-  if (s >= c.activation) return false;
-  glm::dvec3 normal = d > 0.0 ? away / d : glm::cross(b - a, cc - a);
-  if (!(d > 0.0)) {
-    const double length = glm::length(normal);
-    normal = length > 0.0 ? normal / length : glm::dvec3(0.0);
-  }
-  term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
-  term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
-  barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
-  return true;
+  return triangleTerm(c, pair, tri, w, away, glm::length(away), a, b, cc, term, dynamic);
 }
 
 double contactEnergy(const BarHingeModel& model, const std::vector<glm::dvec3>& positions) {
@@ -685,28 +702,251 @@ double advancedContactStepBound(const BarHingeModel& model,
   return stepBound(model, positions, step, true);
 }
 
-void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+namespace {
+
+// The dynamic list's skin over the activation gap: searched again every skin / 2 of motion, each
+// step evaluating the pairs within the activation gap plus twice the motion since. At 2 (main
+// had 1) the folding grids of bench_simulation (BM_DynamicStepPaper) are searched about half as
+// often, and a sheet folded flat lists no more pairs (contact22, docs/performance.md).
+constexpr double kSkinScale = 2.0;
+
+// Pairs a task of the list's passes takes.
+constexpr std::size_t kPairGrain = 2048;
+
+// Vertex-triangle pairs a lane block takes.
+constexpr std::size_t kContactLanes = 8;
+
+// `count` (<= kContactLanes) vertex-triangle pairs, each its four vertices (p, then the triangle's
+// a, b, c), a lane each (the last repeated to fill the block): per pair nearestTriangleWeights
+// (result[4..6]), p minus the nearest point (result[0..2]) and its length (result[3]), as
+// contactTerm computes them.
+// Every Voronoi region's weights are computed and the first region whose test holds is taken,
+// in nearestTriangleWeights' order and with its expressions (a division by zero only in a region
+// not taken), so the bits are its own; without branches (the tests joined by &, not &&, which
+// branches) the loop vectorizes.
+CURVEFOLD_LANE_CLONES void triangleLanes(const glm::dvec3* x,
+                                         const std::array<std::uint32_t, 4>* vertices,
+                                         std::size_t count, double (&result)[7][kContactLanes]) {
+  // Local arrays, filled here: the loop vectorizes over arrays of its own.
+  alignas(64) double in[12][kContactLanes], out[7][kContactLanes];
+  for (std::size_t k = 0; k < kContactLanes; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int axis = 0; axis < 3; ++axis)
+        in[3 * j + axis][k] = x[vertices[std::min(k, count - 1)][j]][axis];
+  for (std::size_t k = 0; k < kContactLanes; ++k) {
+    const glm::dvec3 p(in[0][k], in[1][k], in[2][k]), a(in[3][k], in[4][k], in[5][k]);
+    const glm::dvec3 b(in[6][k], in[7][k], in[8][k]), c(in[9][k], in[10][k], in[11][k]);
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a, bp = p - b, cp = p - c;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    const double sum = va + vb + vc;
+    const double v = vb / sum, w = vc / sum;  // the face
+    double w0 = 1.0 - v - w, w1 = v, w2 = w;
+    const bool degenerate = !(sum > 0.0);  // its first corner
+    w0 = degenerate ? 1.0 : w0;
+    w1 = degenerate ? 0.0 : w1;
+    w2 = degenerate ? 0.0 : w2;
+    const double onBc = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    const bool bc = (va <= 0.0) & ((d4 - d3) >= 0.0) & ((d5 - d6) >= 0.0);
+    w0 = bc ? 0.0 : w0;
+    w1 = bc ? 1.0 - onBc : w1;
+    w2 = bc ? onBc : w2;
+    const double onAc = d2 / (d2 - d6);
+    const bool acEdge = (vb <= 0.0) & (d2 >= 0.0) & (d6 <= 0.0);
+    w0 = acEdge ? 1.0 - onAc : w0;
+    w1 = acEdge ? 0.0 : w1;
+    w2 = acEdge ? onAc : w2;
+    const bool cCorner = (d6 >= 0.0) & (d5 <= d6);
+    w0 = cCorner ? 0.0 : w0;
+    w1 = cCorner ? 0.0 : w1;
+    w2 = cCorner ? 1.0 : w2;
+    const double onAb = d1 / (d1 - d3);
+    const bool abEdge = (vc <= 0.0) & (d1 >= 0.0) & (d3 <= 0.0);
+    w0 = abEdge ? 1.0 - onAb : w0;
+    w1 = abEdge ? onAb : w1;
+    w2 = abEdge ? 0.0 : w2;
+    const bool bCorner = (d3 >= 0.0) & (d4 <= d3);
+    w0 = bCorner ? 0.0 : w0;
+    w1 = bCorner ? 1.0 : w1;
+    w2 = bCorner ? 0.0 : w2;
+    const bool aCorner = (d1 <= 0.0) & (d2 <= 0.0);
+    w0 = aCorner ? 1.0 : w0;
+    w1 = aCorner ? 0.0 : w1;
+    w2 = aCorner ? 0.0 : w2;
+    const glm::dvec3 away = p - (w0 * a + w1 * b + w2 * c);
+    out[0][k] = away.x;
+    out[1][k] = away.y;
+    out[2][k] = away.z;
+    out[3][k] = glm::length(away);
+    out[4][k] = w0;
+    out[5][k] = w1;
+    out[6][k] = w2;
+  }
+  for (int j = 0; j < 7; ++j)
+    for (std::size_t k = 0; k < count; ++k) result[j][k] = out[j][k];
+}
+
+// The pair's distance (vertex to triangle, or segment to segment).
+double pairDistance(const BarHingeModel& model, const std::vector<glm::dvec3>& x,
+                    const ContactPair& pair) {
+  const std::array<std::uint32_t, 4> v = contactPairVertices(model, pair);
+  return pair.edges ? segmentDistance(x[v[0]], x[v[1]], x[v[2]], x[v[3]])
+                    : distanceToTriangle(x[v[0]], x[v[1]], x[v[2]], x[v[3]]);
+}
+
+// The list's per-pair distances and per-vertex slots (pair * 4 + corner, in pair order) after a
+// search; the contact forces zeroed (a vertex with no slot keeps 0 until the next search).
+void indexContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                      ContactList& list, std::vector<glm::dvec3>& contactForces) {
+  const std::size_t n = positions.size(), count = list.pairs.size();
+  list.builtDistance.resize(count);
+  forEachRange(count, kPairGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      list.builtDistance[i] = pairDistance(model, positions, list.pairs[i]);
+  });
+  list.forces.resize(count);
+  list.pushing.assign(count, 0);
+  list.slotOffsets.assign(n + 1, 0);
+  for (const ContactPair& pair : list.pairs)
+    for (std::uint32_t v : contactPairVertices(model, pair)) ++list.slotOffsets[v + 1];
+  list.touched.clear();
+  for (std::size_t v = 0; v < n; ++v) {
+    if (list.slotOffsets[v + 1] > 0) list.touched.push_back(static_cast<std::uint32_t>(v));
+    list.slotOffsets[v + 1] += list.slotOffsets[v];
+  }
+  list.slots.resize(list.slotOffsets[n]);
+  std::vector<std::uint32_t> next(list.slotOffsets.begin(), list.slotOffsets.end() - 1);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const std::array<std::uint32_t, 4> v = contactPairVertices(model, list.pairs[i]);
+    for (std::uint32_t k = 0; k < 4; ++k) list.slots[next[v[k]]++] = 4 * i + k;
+  }
+  contactForces.assign(n, glm::dvec3(0.0));
+  list.indexed = list.rebuilds;
+}
+
+}  // namespace
+
+bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                         ContactList& list) {
   if (!model.contact.enabled) {
     list.pairs.clear();
-    return;
+    return false;
   }
-  const double skin = model.contact.activation;
+  const double skin = kSkinScale * model.contact.activation;
+  list.skin = skin;
   bool stale = list.builtAt.size() != positions.size();
-  for (std::size_t v = 0; v < positions.size() && !stale; ++v)
-    stale = glm::distance(positions[v], list.builtAt[v]) > 0.5 * skin;
-  if (!stale) return;
+  if (!stale) {
+    // The largest motion since the search, by chunks on all cores (a maximum: any order).
+    constexpr std::size_t kGrain = 8192;
+    const std::size_t n = positions.size(), chunks = (n + kGrain - 1) / kGrain;
+    std::vector<double> largest(chunks, 0.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+                          double most = 0.0;
+                          for (std::size_t v = chunk * kGrain;
+                               v < std::min(n, (chunk + 1) * kGrain); ++v) {
+                            const glm::dvec3 d = positions[v] - list.builtAt[v];
+                            most = std::max(most, glm::dot(d, d));
+                          }
+                          largest[chunk] = most;
+                        }
+                      });
+    list.moved = n > 0 ? std::sqrt(*std::max_element(largest.begin(), largest.end())) : 0.0;
+    stale = list.moved > 0.5 * skin;
+  }
+  if (!stale) return false;
   list.pairs = findContactPairs(model, positions, model.contact.activation + skin);
   list.builtAt = positions;
+  list.moved = 0.0;
   ++list.rebuilds;
+  return true;
 }
 
 const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationState& state) {
   if (!model.contact.enabled) return nullptr;
-  refreshContactList(model, state.positions, state.contactPairs);
-  if (state.contactPairs.pairs.empty()) return nullptr;
-  state.contactForces.assign(model.vertexCount(), glm::dvec3(0.0));
-  addContactForces(model, state.positions, state.contactPairs.pairs, state.contactForces, true);
+  ContactList& list = state.contactPairs;
+  refreshContactList(model, state.positions, list);
+  if (list.indexed != list.rebuilds)
+    indexContactList(model, state.positions, list, state.contactForces);
+  if (list.pairs.empty()) return nullptr;
+  // A pair pushes only below thickness + activation; since the search its distance fell at most
+  // by its vertices' motions (2 moved), so one found farther than that cannot (the margin far
+  // above the distances' rounding).
+  const ContactParameters& c = model.contact;
+  const double reach = c.thickness + c.activation * (1.0 + 1e-6) + 2.0 * list.moved;
+  const std::vector<glm::dvec3>& x = state.positions;
+  // Calls keep(i, pushes, term) for the pairs [begin, end) in order, the vertex-triangle pairs
+  // that can push computed in lane blocks (the last lane's pair repeated to fill a block).
+  const auto evaluate = [&](std::size_t begin, std::size_t end, const auto& keep) {
+    ContactTerm term;
+    alignas(64) double out[7][kContactLanes];
+    std::array<std::uint32_t, 4> vertices[kContactLanes];
+    std::size_t lanePair[kContactLanes], filled = 0;
+    const auto runLanes = [&] {
+      triangleLanes(x.data(), vertices, filled, out);
+      for (std::size_t k = 0; k < filled; ++k) {
+        const ContactPair& pair = list.pairs[lanePair[k]];
+        const auto& tri = model.triangles[pair.triangle];
+        const glm::dvec3 w(out[4][k], out[5][k], out[6][k]);
+        const glm::dvec3 away(out[0][k], out[1][k], out[2][k]);
+        keep(lanePair[k],
+             triangleTerm(c, pair, tri, w, away, out[3][k], x[tri[0]], x[tri[1]], x[tri[2]], term,
+                          true),
+             term);
+      }
+      filled = 0;
+    };
+    for (std::size_t i = begin; i < end; ++i) {
+      const ContactPair& pair = list.pairs[i];
+      if (!(list.builtDistance[i] < reach)) {
+        keep(i, false, term);  // adds nothing: the lanes' pairs may come after it
+      } else if (pair.edges) {
+        if (filled > 0) runLanes();  // the pair order
+        keep(i, contactTerm(model, x, pair, term, true), term);
+      } else {
+        const auto& tri = model.triangles[pair.triangle];
+        vertices[filled] = {pair.vertex, tri[0], tri[1], tri[2]};
+        lanePair[filled++] = i;
+        if (filled == kContactLanes) runLanes();
+      }
+    }
+    if (filled > 0) runLanes();
+  };
+  const std::uint8_t* pinned = model.pinned.data();
+  std::vector<glm::dvec3>& forces = state.contactForces;
+  if (list.pairs.size() <= kPairGrain || tbb::this_task_arena::max_concurrency() == 1) {
+    // One thread: each pair's force added as it is found, in pair order (no scratch to pass).
+    for (std::uint32_t v : list.touched) forces[v] = glm::dvec3(0.0);
+    evaluate(0, list.pairs.size(), [&](std::size_t, bool pushes, const ContactTerm& term) {
+      if (!pushes) return;
+      for (int k = 0; k < 4; ++k)
+        if (!pinned[term.vertices[k]]) forces[term.vertices[k]] -= term.slope * term.gradient[k];
+    });
+    return forces.data();
+  }
+  // On all cores: each pair's forces, then each vertex its pairs' in pair order.
+  forEachRange(list.pairs.size(), kPairGrain, [&](std::size_t begin, std::size_t end) {
+    evaluate(begin, end, [&](std::size_t i, bool pushes, const ContactTerm& term) {
+      list.pushing[i] = pushes;
+      if (pushes)
+        for (int k = 0; k < 4; ++k) list.forces[i][k] = term.slope * term.gradient[k];
+    });
+  });
+  forEachRange(list.touched.size(), kPairGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) {
+      const std::uint32_t v = list.touched[j];
+      if (pinned[v]) continue;
+      glm::dvec3 force(0.0);
+      for (std::uint32_t k = list.slotOffsets[v]; k < list.slotOffsets[v + 1]; ++k) {
+        const std::uint32_t slot = list.slots[k];
+        if (list.pushing[slot >> 2]) force -= list.forces[slot >> 2][slot & 3u];
+      }
+      forces[v] = force;
+    }
+  });
   return state.contactForces.data();
 }
 

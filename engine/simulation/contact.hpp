@@ -22,7 +22,7 @@
 // changes at most by the largest motion of the vertex relative to the triangle's corners), so no
 // vertex passes through a layer between iterations. The dynamic solver adds the same force from a
 // list of pairs within the activation gap plus a skin, found again when a vertex has moved half the
-// skin (ContactList).
+// skin (ContactList), evaluating only those that can have come within the activation gap.
 //
 // Stiffness kappa: stiffnessScale x the hinges' force scale (the largest k / |e| over hinges, the
 // static solver's forceScale) / s^; at half the activation gap a pair pushes with about 12 times
@@ -160,14 +160,33 @@ void addContactForces(const BarHingeModel& model, const std::vector<glm::dvec3>&
 double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                         const std::vector<glm::dvec3>& step);
 
-// The dynamic solver's pairs: those within the activation gap plus a skin (the activation gap
-// again), found again when some vertex has moved more than half the skin since.
+// The dynamic solver's pairs (a Verlet list): those within the activation gap plus a skin (twice
+// the activation gap: kSkinScale, contact.cpp), found again when, and only when, some vertex has
+// moved more than half the skin since (a pair's distance changes at most by its vertices' two
+// largest motions, so no pair outside the list can push before then). Each pair keeps its distance
+// when found: a step evaluates only the pairs whose distance then, less twice the largest motion
+// since, is within reach of the barrier (the others cannot push), each on all cores, and each
+// vertex sums its pairs' forces in pair order (its slots, found with the list), also on all cores:
+// the same bits as summing pair by pair, for any thread count. Inputs: the model (contact enabled)
+// and the positions; `rebuilds` counts the searches. Limits: a sheet whose vertices all move (a
+// flap swinging as it folds) is searched again every skin / 2 of motion even where no layer is
+// near; the search builds its tree of triangles anew each time.
 struct ContactList {
   std::vector<ContactPair> pairs;
   std::vector<glm::dvec3> builtAt;
   std::size_t rebuilds = 0;
+  std::vector<double> builtDistance;  // per pair: its distance when found
+  double moved = 0.0;                 // the largest motion of a vertex since then
+  double skin = 0.0;                  // the skin it was found with
+  // Scratch of the forces: per pair its four vertices' forces and whether it pushes; per vertex
+  // with pairs (touched) its run of slots (pair * 4 + corner) in pair order.
+  std::vector<std::array<glm::dvec3, 4>> forces;
+  std::vector<std::uint8_t> pushing;
+  std::vector<std::uint32_t> touched, slotOffsets, slots;
+  std::size_t indexed = 0;  // the search (rebuilds) the scratch belongs to
 };
-void refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+// Searches again when stale (above); returns whether it did.
+bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                         ContactList& list);
 
 // The dynamic step's hook: refreshes the state's list and returns each vertex's contact force

@@ -1,6 +1,7 @@
 #include "engine/simulation/dynamic_solver.hpp"
 
 #include "engine/simulation/hinge_kernel.hpp"
+#include "engine/simulation/lane_clones.hpp"
 
 #include <algorithm>
 #include <array>
@@ -47,20 +48,6 @@ constexpr std::size_t kVertexGrain = 2048;
 // BM_DynamicStepOneThread: 10,201 vertices 1.06 ms on two threads, 0.80 ms on one; 30,276
 // vertices 2.76 against 3.58 ms). The result is the same bits either way.
 constexpr std::size_t kOneThreadBelow = 16384;
-
-// The lane loops' AVX2 copy, chosen by the loader (an ifunc). ThreadSanitizer's runtime is not up
-// when the loader runs ifunc resolvers (every test binary crashed at start), so under it only the
-// default copy is built.
-#if defined(__SANITIZE_THREAD__)
-#define CURVEFOLD_LANE_CLONES
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-#define CURVEFOLD_LANE_CLONES
-#endif
-#endif
-#ifndef CURVEFOLD_LANE_CLONES
-#define CURVEFOLD_LANE_CLONES [[gnu::target_clones("avx2", "default")]]
-#endif
 
 // Bars a lane block takes (as kHingeLanes for hinges).
 constexpr std::size_t kBarLanes = 16;
