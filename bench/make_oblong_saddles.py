@@ -20,7 +20,7 @@ import os
 
 import numpy as np
 
-from formula_meshes import folder_and_seed
+from formula_meshes import folder_and_seed, write_kinds
 from make_lattice_saddles import write
 from make_saddle_quadrics import rotation
 
@@ -74,9 +74,7 @@ def main():
           "z = (0.9 x^2 - y^2) / 70 over a rounded rectangle 260 x 110 mm, turned, moved (mm)")
     made.append("oblong_saddle_stadium_mm")
 
-    with open(os.path.join(args.out, "targets.tsv"), "w") as out:
-        for name in made:
-            out.write(f"{name}\tsquare\n")
+    write_kinds(args.out, made, "square")
 
 
 if __name__ == "__main__":
