@@ -62,3 +62,10 @@ def folder_and_seed(description, seed):
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     return args, np.random.default_rng(args.seed)
+
+
+def write_kinds(folder, names, kind):
+    """OUT/targets.tsv: one line per target, its name and the start kind to fit it from."""
+    with open(os.path.join(folder, "targets.tsv"), "w") as out:
+        for name in names:
+            out.write(f"{name}\t{kind}\n")

@@ -21,7 +21,7 @@ import os
 
 import numpy as np
 
-from formula_meshes import folder_and_seed
+from formula_meshes import folder_and_seed, write_kinds
 from make_lattice_saddles import clip, write
 from make_saddle_quadrics import rotation
 
@@ -136,9 +136,7 @@ def main():
           "(2, 2) cm, noise 0.3 mm, a hole, tilted 20, m")
     names.append("lean_saddle_lobes")
 
-    with open(os.path.join(args.out, "targets.tsv"), "w") as out:
-        for name in names:
-            out.write(f"{name}\tsquare\n")
+    write_kinds(args.out, names, "square")
 
 
 if __name__ == "__main__":

@@ -15,10 +15,17 @@ each height (inward_fold_bound.py's `profile` rule), through the target's centro
 With `--design D.curvefold.json`, each far sheet sample also names the fold planes it lies
 nearest (a corner lies on two creases of one ring; a flap on one side of a plane).
 
+With `--frame height` (a saddle, a height field), each far sample is placed instead in the
+target's height frame: its mean normal (the samples' least spread where the normals cancel) and,
+across it, the directions of the least-squares quadric's stronger and weaker curvature: (s, t,
+height), the quadric's height at (s, t), and the distance in (s, t) to the target's outline's
+nearest sample (0 inside the outline: a far sheet sample with a positive one is paper standing
+out past the target's rim; a far target sample inside is a wing the sheet does not reach).
+
 Usage: bench/trace_far_points.py SHEET.obj TARGET.obj [--samples N] [--seed S] [--far K]
-       [--bands B] [--design D.curvefold.json]
-Limits: a model of revolution: the target's mean radius by height says nothing of a target that
-is not one; the sheet's `vt` lines are ignored.
+       [--bands B] [--design D.curvefold.json] [--frame axis|height]
+Limits: a model of revolution (`axis`): the target's mean radius by height says nothing of a
+target that is not one; `height` assumes one height field; the sheet's `vt` lines are ignored.
 """
 import json
 import os
@@ -51,6 +58,66 @@ def cylindrical(points, centre, axis):
     return h, np.linalg.norm(across, axis=1), np.degrees(np.arctan2(across @ v, across @ u))
 
 
+def height_frame(verts, faces, points):
+    """(centre, normal, s axis, t axis, quadric) of the target's height frame (see above)."""
+    p = verts[faces]
+    cross = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    mean_normal = cross.sum(0) / np.linalg.norm(cross, axis=1).sum()  # area-weighted unit normals
+    centre = points.mean(0)
+    d = points - centre
+    least = np.linalg.eigh(d.T @ d)[1][:, 0]
+    n = mean_normal / np.linalg.norm(mean_normal) if np.linalg.norm(mean_normal) > 0.3 else least
+    u = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    a, b, w = d @ u, d @ v, d @ n
+    q = np.linalg.lstsq(np.stack([a * a, a * b, b * b, a, b, np.ones_like(a)], 1), w, rcond=None)[0]
+    values, vectors = np.linalg.eigh(np.array([[2 * q[0], q[1]], [q[1], 2 * q[2]]]))
+    order = np.argsort(-np.abs(values))
+    s_axis = vectors[0, order[0]] * u + vectors[1, order[0]] * v
+    return centre, n, s_axis, np.cross(n, s_axis), (q, u, v)
+
+
+def height_coordinates(points, frame):
+    centre, n, s_axis, t_axis, (q, u, v) = frame
+    d = points - centre
+    a, b = d @ u, d @ v
+    quadric = q[0] * a * a + q[1] * a * b + q[2] * b * b + q[3] * a + q[4] * b + q[5]
+    return d @ s_axis, d @ t_axis, d @ n, quadric
+
+
+def outside_outline(st, target_st, spacing):
+    """Distance in (s, t) from each point to the nearest target sample, less the samples' spacing."""
+    out = np.empty(len(st))
+    for i in range(0, len(st), 256):
+        d = np.linalg.norm(st[i:i + 256, None, :] - target_st[None, :, :], axis=2).min(1)
+        out[i:i + 256] = np.maximum(d - spacing, 0.0)
+    return out
+
+
+def trace_height(a, ps, pt, ds, dt, vt, ft, diag, planes):
+    frame = height_frame(vt, ft, pt)
+    ss, ts, hs, qs = height_coordinates(ps, frame)
+    st, tt, ht, qt = height_coordinates(pt, frame)
+    target_st = np.stack([st, tt], 1)
+    spacing = 2.0 * np.sqrt((np.ptp(st) * np.ptp(tt)) / len(pt))
+    print("height frame: normal (%.4f %.4f %.4f), s (%.4f %.4f %.4f) along the stronger curvature" %
+          (*frame[1], *frame[2]))
+    print("  target's s %.4g..%.4g, t %.4g..%.4g, height %.4g..%.4g" %
+          (st.min(), st.max(), tt.min(), tt.max(), ht.min(), ht.max()))
+    for name, d, s, t, h, q in (("sheet", ds, ss, ts, hs, qs), ("target", dt, st, tt, ht, qt)):
+        far = np.argsort(-d)[:a.far]
+        past = outside_outline(np.stack([s[far], t[far]], 1), target_st, spacing)
+        print("farthest %s samples: s, t, height, quadric's height, past the outline, distance" % name)
+        for k, i in enumerate(far):
+            line = "  %.4g %.4g %.4g %.4g %.4g %.4g (%.2f%%)" % (
+                s[i], t[i], h[i], q[i], past[k], d[i], 100 * d[i] / diag)
+            if name == "sheet" and planes:
+                near = sorted((abs((ps[i] - p) @ n), j) for j, p, n in planes)[:2]
+                line += "  nearest planes " + ", ".join("%d (%.3g)" % (j, dd) for dd, j in near)
+            print(line)
+
+
 def fold_planes(path):
     """The design's fold planes as (index, point, normal)."""
     with open(path) as f:
@@ -71,6 +138,7 @@ def main():
     ap.add_argument("--far", type=int, default=8)
     ap.add_argument("--bands", type=int, default=20)
     ap.add_argument("--design")
+    ap.add_argument("--frame", choices=("axis", "height"), default="axis")
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
     vs, fs = read_obj(a.a)
@@ -80,6 +148,10 @@ def main():
     diag = np.linalg.norm(vt.max(0) - vt.min(0))
     print("hausdorff %.4f%% chamfer %.4f%% (diagonal %.6g)" %
           (100 * max(ds.max(), dt.max()) / diag, 100 * 0.5 * (ds.mean() + dt.mean()) / diag, diag))
+    planes = fold_planes(a.design) if a.design else []
+    if a.frame == "height":
+        trace_height(a, ps, pt, ds, dt, vt, ft, diag, planes)
+        return
     centre, axis = target_axis(vt)
     hs, rs, angs = cylindrical(ps, centre, axis)
     ht, rt, angt = cylindrical(pt, centre, axis)
@@ -90,7 +162,6 @@ def main():
         i = np.clip(np.digitize(h, edges) - 1, 0, a.bands - 1)
         return np.array([rt[(ht >= edges[k]) & (ht <= edges[k + 1])].mean() for k in np.atleast_1d(i)])
 
-    planes = fold_planes(a.design) if a.design else []
     print("axis (%.4f %.4f %.4f) through (%.4g %.4g %.4g); heights from the target's lowest" %
           (*axis, *centre))
     for name, d, h, r, ang in (("sheet", ds, hs, rs, angs), ("target", dt, ht, rt, angt)):

@@ -41,7 +41,7 @@ std::string vectorText(const glm::dvec3& v) {
 }  // namespace
 
 std::vector<PlacedStart> bentStarts(const std::vector<SurfaceSample>& samples,
-                                    const std::string& kind) {
+                                    const std::string& kind, double mostPaper) {
   std::vector<PlacedStart> out;
   if (samples.size() < 10 || (kind != "square" && kind != "rectangle")) return out;
   const PrincipalAxes frame = principalAxes(samples);
@@ -96,6 +96,7 @@ std::vector<PlacedStart> bentStarts(const std::vector<SurfaceSample>& samples,
     const double alongArc = parabolaArc(curvature, slope, sLo, sHi);
     if (alongArc < kSteep * (sHi - sLo)) continue;
     const double acrossArc = parabolaArc(acrossCurvature, acrossSlope, tLo, tHi);
+    if (alongArc * acrossArc > mostPaper) continue;
     const bool square = kind == "square";
     const double rulings = square ? std::max(alongArc, acrossArc) : acrossArc;
     if (square && alongArc < rulings) {

@@ -22,7 +22,12 @@
 // development is that square or rectangle exactly (chords of the profile's samples along, the
 // rulings across: sweptParabola), so `check` and `export` see the sheet as it was cut.
 //
-// Inputs: area-uniform samples of the target (a few thousand), `kind` "square" or "rectangle".
+// Inputs: area-uniform samples of the target (a few thousand), `kind` "square" or "rectangle",
+// `mostPaper` the most paper (m^2) a sheet's bend may bring: the rectangle of its two arcs, along
+// and across, is measured against it, not the square's sides, since a square's paper past that
+// rectangle is the kind's, asked for, and a flat square carries it too (lean_saddle_rect, 24 x 16
+// cm and slopes to 3.8: its square, a side of 50 cm on its 50 and 22 cm arcs, 2.9 times the
+// target's paper where the arcs' rectangle is 1.3 times).
 // Output: up to two PlacedStarts (surface "bent_square" or "bent_rectangle", parameters the
 // sides and the profile's curvature), the stronger curvature's first; none where the samples do
 // not spread over a plane or the quadric is flat (curvature under 0.05 of the inverse size), and
@@ -41,6 +46,6 @@
 namespace curvefold {
 
 std::vector<PlacedStart> bentStarts(const std::vector<SurfaceSample>& samples,
-                                    const std::string& kind);
+                                    const std::string& kind, double mostPaper = 1e300);
 
 }  // namespace curvefold

@@ -326,17 +326,13 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   // the pleats and its rulings' ends to the tucks: last, so that under a short --time the clock
   // keeps the flat candidates (measured right after the start itself, saddle_steep_turned at
   // --time 60 under a load of 20 was left its bent square with no time for the tucks: 0 folds,
-  // 30.6% Hausdorff, against the flat square's cross at 22.5%). Not where it has over twice the
-  // target's paper (hypar_steep_mm's square along its diagonals: about 3.6 times, by its arc of
-  // 512 mm a side), which its folds would mostly fold away.
+  // 30.6% Hausdorff, against the flat square's cross at 22.5%). Not where the rectangle of its
+  // arcs has over twice the target's paper (hypar_steep_mm's square along its diagonals: about
+  // 3.6 times, by its arc of 512 mm a side), which its folds would mostly fold away; a square's
+  // paper past that rectangle is the kind's (bent_start.hpp).
   if (kind.empty() || kind == "square" || kind == "rectangle") {
-    std::vector<PlacedStart> bent =
-        bentStarts(samples(), kind == "square" ? "square" : "rectangle");
-    std::erase_if(bent, [&](const PlacedStart& sheet) {
-      const DevelopmentBounds bounds = developmentBounds(sheet.sheet);
-      return (bounds.high.x - bounds.low.x) * (bounds.high.y - bounds.low.y) >
-             kMostBentPaper * surfaceArea(fitter.target());
-    });
+    std::vector<PlacedStart> bent = bentStarts(samples(), kind == "square" ? "square" : "rectangle",
+                                               kMostBentPaper * surfaceArea(fitter.target()));
     candidates.insert(candidates.end(), std::make_move_iterator(bent.begin()),
                       std::make_move_iterator(bent.end()));
   }
