@@ -326,6 +326,38 @@ TEST(FoldSession, UndoRedoAcrossKeyframes) {
   EXPECT_EQ(session.folds()[0].seed, all[0].seed);
 }
 
+// undoTo(n) leaves the session as `while (foldCount() > n) undo();` does, folding the sheet again
+// once: the same folds (a group whole, though it reaches below n), the same sheet bit for bit,
+// the same redo.
+TEST(FoldSession, UndoToTakesBackWholeGroupsAsRepeatedUndoDoes) {
+  FoldSession made(flatGrid(10, 10, 0.02));
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> coordinate(0.0, 0.2);
+  for (int i = 0; i < 11; ++i)
+    drag(made, {coordinate(random), coordinate(random), 0.0},
+         {{coordinate(random), coordinate(random), 0.05 + coordinate(random) * 0.2}});
+  ASSERT_EQ(made.foldCount(), 11u);
+  std::vector<FoldRecord> records = made.folds();
+  for (std::size_t i = 4; i < 7; ++i) records[i].group = 1;  // folds 5 to 7 one group
+  FoldSession stepped(made.initial()), once(made.initial());
+  stepped.applyRecords(records);
+  once.applyRecords(records);
+  for (const std::size_t to : {9u, 6u}) {
+    while (stepped.foldCount() > to) stepped.undo();
+    const std::size_t before = once.foldCount();
+    EXPECT_EQ(once.undoTo(to), before - stepped.foldCount());
+    EXPECT_EQ(once.foldCount(), stepped.foldCount());
+    EXPECT_TRUE(identical(once.fixed(), stepped.fixed()));
+  }
+  EXPECT_EQ(once.foldCount(), 4u);  // the group of folds 5 to 7 went whole
+  EXPECT_EQ(once.undoTo(4), 0u);    // nothing left to take back
+  ASSERT_TRUE(once.redo());
+  ASSERT_TRUE(stepped.redo());
+  EXPECT_EQ(once.foldCount(), 7u);
+  EXPECT_TRUE(identical(once.fixed(), stepped.fixed()));
+  EXPECT_TRUE(identical(once.fixed(), replayFolds(once.initial(), firstFolds(once, 7))));
+}
+
 // docs/design.md 8: the fixed + temporal pair stays below three sheets while dragging.
 TEST(FoldSession, FixedAndTemporalStayBelowThreeSheets) {
   FoldSession session(flatGrid(100, 100, 0.002));

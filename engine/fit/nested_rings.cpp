@@ -633,7 +633,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
                findSelfIntersections(own.fixed()).intersections.size() > crossingsBefore;
       };
       if (crosses()) {
-        while (own.foldCount() > foldsBefore) own.undo();
+        own.undoTo(foldsBefore);
         if (candidate.outerFirst) continue;
         // On a steep cup the rings after the second met the corner paper the first two left
         // and crossed it, so every fit stopped at two rings short of the rim: such a ring is
@@ -643,7 +643,7 @@ std::vector<FoldSuggestion> suggestNestedRings(const FoldSession& session, const
           RingShape turned = ring.shape;
           turned.turn += kPi / turned.order;
           if (makeNestedRing(own, turned, local, ring.flap, reach) > 0 && !crosses()) continue;
-          while (own.foldCount() > foldsBefore) own.undo();
+          own.undoTo(foldsBefore);
         }
         break;
       }

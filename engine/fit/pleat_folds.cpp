@@ -449,9 +449,7 @@ std::vector<FoldSuggestion> suggestPleats(FoldSession& session, const FoldFitter
   std::uint32_t group = 1;
   for (std::size_t f = 0; f < foldsBefore; ++f)
     group = std::max(group, session.folds()[f].group + 1);
-  auto undoAll = [&] {
-    while (session.foldCount() > foldsBefore) session.undo();
-  };
+  auto undoAll = [&] { session.undoTo(foldsBefore); };
   // Directions to pleat along: toward the far point, and the sheet's own principal direction
   // nearest it (a swept sheet's rulings or profile, across which a hinge is straight).
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(

@@ -589,7 +589,7 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
       made[r].before = before;
       made[r].after = fitter.approximateDistance(made[r].sheet);
     }
-    while (local->foldCount() > base.size()) local->undo();
+    local->undoTo(base.size());
   });
   if (deadline.givesUp()) return {};
   std::vector<FoldSuggestion> out;

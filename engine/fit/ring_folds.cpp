@@ -400,7 +400,7 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
             (allowCrossing ||
              findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
           scores[r] = measure(local->fixed());
-        while (local->foldCount() > records.size()) local->undo();
+        local->undoTo(records.size());
       };
       const auto foldsOf = [&](std::size_t from, std::size_t to) {
         double folds = 0.0;

@@ -126,9 +126,7 @@ std::vector<FoldSuggestion> suggestTucks(FoldSession& session, const FoldFitter&
   std::uint32_t group = 1;
   for (std::size_t f = 0; f < foldsBefore; ++f)
     group = std::max(group, session.folds()[f].group + 1);
-  auto undoAll = [&] {
-    while (session.foldCount() > foldsBefore) session.undo();
-  };
+  auto undoAll = [&] { session.undoTo(foldsBefore); };
   // The tucks made, in turn; false where the session refuses one (a sliver).
   auto make = [&](const std::vector<Tuck>& tucks) {
     for (const Tuck& tuck : tucks) {

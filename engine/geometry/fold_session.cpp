@@ -318,6 +318,20 @@ bool FoldSession::undo() {
   return true;
 }
 
+std::size_t FoldSession::undoTo(std::size_t foldCount) {
+  if (applied_ <= foldCount) return 0;  // as the loop of undo() calls: not even a cancel
+  cancel();
+  const std::size_t before = applied_;
+  while (applied_ > foldCount) {
+    const std::uint32_t group = history_[applied_ - 1].group;
+    --applied_;
+    while (group != 0 && applied_ > 0 && history_[applied_ - 1].group == group) --applied_;
+  }
+  ++designRevision_;
+  setFixed(sheetAfter(applied_));
+  return before - applied_;
+}
+
 bool FoldSession::redo() {
   cancel();
   if (!canRedo()) return false;

@@ -126,6 +126,11 @@ class FoldSession {
   // Undo and redo take a symmetric fold's group (the fold and its images) at once.
   bool undo();
   bool redo();
+  // Undoes until at most `foldCount` folds are left (whole groups, as repeated undo() does), the
+  // sheet folded again from its keyframe once, not once per fold taken back: the same sheet as
+  // `while (foldCount() > n) undo();`, for a search that makes a ring or pleats and takes them
+  // back (a ring of 16 folds took 16 replays of up to 7 folds each). Returns the folds taken back.
+  std::size_t undoTo(std::size_t foldCount);
 
   // --- Symmetry -----------------------------------------------------------------------------
   // From now on every commit is followed by the fold's images under `symmetry` (which the initial
