@@ -481,6 +481,12 @@ TEST_F(FitCli, ASmoothTargetInOtherUnitsIsSizedToNotRefused) {
   ASSERT_EQ(fit.exitCode, 0) << fit.err;
   EXPECT_NE(fit.out.find("note: against the default square"), std::string::npos) << fit.out;
   EXPECT_NE(fit.out.find("sized"), std::string::npos) << fit.out;
+  // Its lengths are printed as its own units, not as metres it is not in ("the target's 377 m
+  // diagonal", "Hausdorff 1.06e+05 mm").
+  EXPECT_NE(fit.out.find("-unit diagonal"), std::string::npos) << fit.out;
+  EXPECT_NE(fit.out.find("units ("), std::string::npos) << fit.out;
+  EXPECT_EQ(fit.out.find(" mm"), std::string::npos) << fit.out;
+  EXPECT_EQ(fit.out.find(" m diagonal"), std::string::npos) << fit.out;
   // The sheet lies on the target in its units (28% of its 377-unit diagonal after one step of
   // pleats); a 0.2 m square at the origin would lie 700 units, over 180%, away.
   const CommandResult distance = run("distance " + design + " " + target + " --samples 2000");

@@ -52,6 +52,15 @@ std::uint64_t parseSeed(const std::string& text) {
 }
 
 // A shape to measure: an OBJ, or a design's folded form.
+// Whether a target's lengths read as metres: its diagonal within a hundred times the default
+// square's either way (checkTargetAgainst's "are its units metres?"). Else they are its own units
+// (a millimetre vase 391 across is not "391 m", nor its distance "7.9e+04 mm"), printed as such.
+bool lengthsInMetres(double targetDiagonal) {
+  static const double paper = boundingDiagonal(meshOf(makeSurface("square")));
+  const double ratio = targetDiagonal / paper;
+  return ratio <= 100.0 && ratio >= 0.01;
+}
+
 TriangleMesh shapeOf(const std::string& path) {
   if (hasExtension(path, ".obj")) return readObjMesh(path);
   const Design design = loadDesign(path);
@@ -147,7 +156,8 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       std::cout << "start chosen by its first step: "
                 << (firstStep->grown ? "the paper that step folds away given back; " : "")
                 << "after it "
-                << distanceText(firstStep->hausdorff, firstStep->chamfer, fitter.targetDiagonal())
+                << distanceText(firstStep->hausdorff, firstStep->chamfer, fitter.targetDiagonal(),
+                                lengthsInMetres(fitter.targetDiagonal()))
                 << std::endl;
     if (start.cutShort)
       std::cout << "the time limit cut the choice of the start short: the nearest of the sheets "
@@ -174,22 +184,25 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
 }
 
 // The picture of `sheet` coloured by each vertex's distance to `reference` (fit and distance
-// --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres. The
-// PNG's bytes.
+// --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres (in the
+// target's own units where its lengths are not metres: lengthsInMetres). The PNG's bytes.
 std::string distancePng(HeadlessRenderer& renderer, const Sheet& sheet,
-                        const SurfaceDistanceQuery& reference, const std::string& title) {
-  std::vector<double> millimetres = pointDistances(sheet.positions, reference);
+                        const SurfaceDistanceQuery& reference, const std::string& title,
+                        bool metres = true) {
+  std::vector<double> distances = pointDistances(sheet.positions, reference);
+  const double scale = metres ? 1e3 : 1.0;
   double largest = 0.0;
-  for (double& d : millimetres) largest = std::max(largest, d *= 1e3);
+  for (double& d : distances) largest = std::max(largest, d *= scale);
   // An exact fit is all dark, not all the map's middle.
-  const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, 1e-6), title, "mm"};
-  return fieldPng(renderer, sheet, millimetres, legend);
+  const ColorLegend legend{ColorMap::Viridis, 0.0, std::max(largest, metres ? 1e-6 : 1e-9), title,
+                           metres ? "mm" : "units"};
+  return fieldPng(renderer, sheet, distances, legend);
 }
 
 void writeDistancePng(HeadlessRenderer& renderer, const Sheet& sheet,
                       const SurfaceDistanceQuery& reference, const std::string& title,
-                      const std::string& at) {
-  writeFileAtomically(at, distancePng(renderer, sheet, reference, title));
+                      const std::string& at, bool metres = true) {
+  writeFileAtomically(at, distancePng(renderer, sheet, reference, title, metres));
 }
 
 // The seconds that fit --png's picture is given within --time: its rehearsal on the start's
@@ -330,6 +343,8 @@ std::string foldCountText(std::size_t steps, std::size_t folds, bool symmetric) 
 void printFitSummary(const FitCommandOptions& options, const FitResult& result,
                      const Design& design, const FoldSession& session, const FoldFitter& fitter,
                      bool interrupted, bool timed, std::chrono::steady_clock::time_point started) {
+  const bool metres = lengthsInMetres(fitter.targetDiagonal());
+  const auto length = metres ? millimetresText : unitsText;
   const FitProgress& last = result.steps.back();
   std::cout << "stopped: " << result.stopReason << "; " << result.evaluations
             << " candidate folds scored\n";
@@ -346,7 +361,7 @@ void printFitSummary(const FitCommandOptions& options, const FitResult& result,
     std::cout << "interrupted: wrote the best design found so far to " << options.output << " ("
               << count << ")\n";
   std::cout << "wrote " << options.output << " (" << count << "; "
-            << distanceText(last.hausdorff, last.chamfer, last.diagonal) << ")\n";
+            << distanceText(last.hausdorff, last.chamfer, last.diagonal, metres) << ")\n";
   if (!options.log.empty()) std::cout << "wrote " << options.log << "\n";
   if (!options.png.empty()) std::cout << "wrote " << options.png << "\n";
   // Where a fit that does not reach its target is farthest from it: where to look, or fold on.
@@ -362,8 +377,8 @@ void printFitSummary(const FitCommandOptions& options, const FitResult& result,
     std::snprintf(text, sizeof text,
                   "farthest: the sheet at (%.4g, %.4g, %.4g) lies %s from the target; the "
                   "target at (%.4g, %.4g, %.4g) lies %s from the sheet\n",
-                  far.onA.x, far.onA.y, far.onA.z, millimetresText(far.fromA).c_str(), far.onB.x,
-                  far.onB.y, far.onB.z, millimetresText(far.fromB).c_str());
+                  far.onA.x, far.onA.y, far.onA.z, length(far.fromA).c_str(), far.onB.x, far.onB.y,
+                  far.onB.z, length(far.fromB).c_str());
     std::cout << text;
   }
   std::cout.flush();
@@ -382,10 +397,10 @@ std::unique_ptr<FoldFitter> makeFitter(const FitCommandOptions& options) {
 }
 
 // The search's progress at each depth.
-void printSearching(std::size_t depth, double distance, double seconds) {
+void printSearching(std::size_t depth, double distance, double seconds, bool metres) {
   char text[96];
   std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
-                millimetresText(distance).c_str(), seconds);
+                (metres ? millimetresText : unitsText)(distance).c_str(), seconds);
   std::cout << text << std::endl;
 }
 
@@ -479,6 +494,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   }
 
   std::vector<FoldLogEntry> log;
+  const bool metres = lengthsInMetres(fitter->targetDiagonal());
   std::size_t trianglesBefore = initial.triangleCount();
   std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
   FitOptions fit;
@@ -491,8 +507,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   fit.cancelled = &InterruptGuard::flag();
   fit.progress = [&](const FitProgress& step) {
     if (step.fold == 0) {
-      std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal)
-                << " of the target's " << step.diagonal << " m diagonal" << std::endl;
+      std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres)
+                << " of the target's " << step.diagonal
+                << (metres ? " m diagonal" : "-unit diagonal") << std::endl;
       return;
     }
     const std::size_t first = foldsBefore, count = session.foldCount() - foldsBefore;
@@ -504,9 +521,11 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                                     std::to_string(first + count)
                               : stepText(session, first, count))
               << ", " << seconds << ": "
-              << distanceText(step.hausdorff, step.chamfer, step.diagonal) << std::endl;
+              << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
   };
-  fit.searching = printSearching;
+  fit.searching = [metres](std::size_t depth, double distance, double seconds) {
+    printSearching(depth, distance, seconds, metres);
+  };
   // The outputs, checked before the search: a path that cannot be written fails now.
   nlohmann::json fitEnd;
   OutputSet outputs;
@@ -521,7 +540,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
   if (renderer) {
     outputs.add(options.png, [&](const fs::path& at) {
       writeDistancePng(*renderer, session.fixed(), fitter->measuredTarget().query(),
-                       "distance to the target", at);
+                       "distance to the target", at, metres);
     });
   }
   outputs.checkWritable();

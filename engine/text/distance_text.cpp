@@ -17,9 +17,20 @@ std::string percentText(double fraction) {
   return text;
 }
 
+std::string unitsText(double length) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g units", length);
+  return text;
+}
+
+std::string distanceText(double hausdorff, double chamfer, double diagonal, bool metres) {
+  const auto length = metres ? millimetresText : unitsText;
+  return "Hausdorff " + length(hausdorff) + " (" + percentText(hausdorff / diagonal) +
+         "), Chamfer " + length(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
+}
+
 std::string distanceText(double hausdorff, double chamfer, double diagonal) {
-  return "Hausdorff " + millimetresText(hausdorff) + " (" + percentText(hausdorff / diagonal) +
-         "), Chamfer " + millimetresText(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
+  return distanceText(hausdorff, chamfer, diagonal, true);
 }
 
 }  // namespace curvefold

@@ -12,5 +12,10 @@ std::string millimetresText(double metres);
 std::string percentText(double fraction);
 // "Hausdorff 4.2 mm (1.3%), Chamfer 1.1 mm (0.35%)": each also relative to the target's diagonal.
 std::string distanceText(double hausdorff, double chamfer, double diagonal);
+// "12.3 units": a length of a target in other units (a millimetre scan is read as metres, 1000
+// times paper's size), in its own numbers, since which units they are cannot be known.
+std::string unitsText(double length);
+// As above, in the target's own units where `metres` is false: "Hausdorff 4.2 units (1.3%), ...".
+std::string distanceText(double hausdorff, double chamfer, double diagonal, bool metres);
 
 }  // namespace curvefold
