@@ -580,6 +580,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     double exactShift =
         0.0;  // of the largest diagonal, added where the exact Hessian is indefinite
     std::size_t boundCuts = 0;  // iterations in a row whose step the contact bound cut
+    bool dampingReset = false;  // since the last accepted step (below)
     // Stopped above the tolerance at the goal: settled if no representable move can do better
     // (the rounding floor, static_solver.hpp), from the forces of the state stopped at.
     const auto judgeRoundingFloor = [&](double toleranceForce) {
@@ -753,8 +754,19 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       }
       for (std::size_t d = 0; d < 3 * n; ++d) values[layout.diagonal[d]] = diagonal[d];
       ++result.iterations;
+      if (accepted) dampingReset = false;
       if (!accepted) {  // no step lowers the energy: as close as double precision gets
         if (last) judgeRoundingFloor(tolerance * scale);
+        // Short of that floor: the damping grows with every short step and tenfold with every
+        // refused attempt, and at a stall it can stand at 1e10 to 1e14 of the diagonal, its steps
+        // too short to move a coordinate (the curved-pleats annulus at 25%: residual 1.8e-9,
+        // twice its floor, at damping 8e11). One iteration tries again from the stage's first.
+        if (!result.atRoundingFloor && !dampingReset) {
+          dampingReset = true;
+          damping = 1e-6;
+          lastChange = 0.0;  // no move
+          continue;
+        }
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
         return result;
       }
