@@ -30,7 +30,9 @@
 // kRoundingFloorScale x the trace of its 3x3 diagonal block of the (Gauss-Newton) Hessian x the
 // unit in the last place of the largest coordinate of it and the vertices its bars join
 // (StaticResult::atRoundingFloor, roundingFloor). Only at that stop: a state that reaches the
-// tolerance settles exactly as without the floor, bit for bit.
+// tolerance settles exactly as without the floor, bit for bit. A stall short of the floor (or in
+// an earlier stage) is first tried again once from the stage's first damping, which by then can
+// stand at 1e10 to 1e14 of the diagonal.
 //
 // Deterministic: sequential assembly and a sequential factorization; the forces are the
 // element-per-slot kernels of bar_hinge_model.hpp.
