@@ -668,6 +668,10 @@ py::dict simulatePattern(const CreasePattern& pattern, SimulateArguments argumen
   out["iterations"] = arguments.settle ? result.iterations : std::size_t(0);
   out["energy_rises"] = arguments.settle ? energyRises(result.history) : std::size_t(0);
   out["residual"] = residual;
+  // Settled at the rounding floor (static_solver.hpp): converged with a residual above the
+  // tolerance that no representable move can lower, and that floor.
+  out["at_rounding_floor"] = arguments.settle && result.atRoundingFloor;
+  out["rounding_floor"] = arguments.settle ? result.roundingFloor : 0.0;
   if (arguments.settle) out["energy"] = result.energy;
   if (arguments.motion) {
     py::dict line;
@@ -1242,7 +1246,9 @@ void defineFunctions(py::module_& m) {
       "(e,) in degrees, and what the command line prints of the state: largest_strain, "
       "largest_crease_angle_error and mean_crease_angle_error (degrees), wrong_side_creases, "
       "past_flat_creases, crossing_pairs (triangle pairs that cross), converged (settled), "
-      "iterations, energy_rises, residual, energy (with settle), motion (with motion=True: "
+      "at_rounding_floor and rounding_floor (settled where the positions' rounding stops the "
+      "residual above the tolerance, and that floor), iterations, energy_rises, residual, energy "
+      "(with settle), motion (with motion=True: "
       "states, followed_to in percent, reached_full); and notes (what was read but not used)");
   m.def("surfaces", &surfacesInfo,
         "The catalogue: {name: {description, parameters: {name: {default, min, max, integer, "

@@ -230,6 +230,23 @@ TEST_F(SimulateCli, PaperModeKeepsEdgesFromPassingThroughEdges) {
   EXPECT_NE(result.out.find(", self-intersection: none"), std::string::npos) << result.out;
 }
 
+// A stall short of the rounding floor is tried again from the stage's first damping
+// (static_solver.cpp): a Miura-ori in quads with a 3D frame (miura_quads_frames.fold,
+// bench/make_judge_patterns.py's, a 6 m sheet read as metres) folded 25:100:4 in paper mode
+// stalled at its 75% state, residual 2.8e-9 (2.3 times its floor) with the damping at 3.2e10 of
+// the diagonal, its steps too short to move a coordinate; from 1e-6 again it reaches its floor
+// (1.3e-9), and every state settles (to the tolerance, or at the floor).
+TEST_F(SimulateCli, AStallTriedAgainFromTheFirstDampingSettlesEveryPaperMiuraState) {
+  const std::string pattern =
+      std::string(CURVEFOLD_TEST_DATA) + "/crease_patterns/miura_quads_frames.fold";
+  const CommandResult result =
+      run("simulate " + pattern + " --percent 25:100:4 --settle --paper 0.1 --obj m.obj");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const char* state : {"25%: settled ", "50%: settled ", "75%: settled ", "100%: settled "})
+    EXPECT_NE(result.out.find(state), std::string::npos) << state << "\n" << result.out;
+  EXPECT_EQ(result.out.find("NOT settled"), std::string::npos) << result.out;
+}
+
 // --motion: the waterbomb base settles on its targets at 50% (about 44 degrees off them with the
 // targets scaled linearly), and says how far its motion was followed.
 TEST_F(SimulateCli, MotionBringsTheWaterbombOntoItsTargets) {

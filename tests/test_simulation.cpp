@@ -23,6 +23,7 @@
 #include "engine/simulation/folding_motion.hpp"
 #include "engine/simulation/hinge_unfolding.hpp"
 #include "engine/simulation/rigid_placement.hpp"
+#include "engine/simulation/state_report.hpp"
 #include "engine/simulation/static_solver.hpp"
 #include "engine/surfaces/surfaces.hpp"
 #include "sanitizer_support.hpp"
@@ -166,6 +167,57 @@ TEST(Simulation, SingleStraightCreaseReachesItsShareOfTheTarget) {
               << "percent " << percent << " hinge " << j;
         }
       }
+}
+
+// The rounding floor (static_solver.hpp): a tolerance far below what doubles resolve (1e-25 of the
+// force scale) cannot be met, and the last stage stops where no step lowers the energy. There the
+// state is settled at the rounding floor: every vertex's force within kRoundingFloorScale x its
+// stiffness x its coordinates' last place, and the report says so. Without the floor it was "NOT
+// settled" at a residual no representable move can lower.
+TEST(Simulation, AToleranceBelowDoublePrecisionSettlesAtTheRoundingFloor) {
+  const BarHingeModel model = buildModel(testing::miuraOri(4, 4, 1.0, 1.0, 0.5, 120.0 / kDegrees));
+  StaticOptions options;
+  options.tolerance = 1e-25;
+  SimulationState state = flatState(model);
+  const StaticResult result = settle(model, 0.6, state, options);
+  EXPECT_TRUE(result.converged) << "residual " << result.residual;
+  EXPECT_TRUE(result.atRoundingFloor);
+  EXPECT_LT(result.iterations, options.maxIterations);  // stopped: no step lowered the energy
+  EXPECT_GT(result.residual, options.tolerance);
+  EXPECT_LE(result.residual, result.roundingFloor);
+  EXPECT_LT(result.roundingFloor, 1e-12);  // a floor of doubles, not of the solver
+  EXPECT_EQ(energyRises(result.history), 0u);
+  EXPECT_EQ(settleSummary(result).rfind("settled at the rounding floor (residual ", 0), 0u)
+      << settleSummary(result);
+  // The stated tolerance, where doubles resolve it, decides alone.
+  SimulationState plain = flatState(model);
+  const StaticResult settled = settle(model, 0.6, plain);
+  EXPECT_TRUE(settled.converged);
+  EXPECT_FALSE(settled.atRoundingFloor);
+  EXPECT_EQ(settled.roundingFloor, 0.0);
+  EXPECT_EQ(settleSummary(settled).rfind("settled in ", 0), 0u) << settleSummary(settled);
+}
+
+// ... and a state short of equilibrium is not at the floor: the same Miura-ori cut after 21
+// iterations, at a residual 2.5 times the tolerance (25,000 times the floor of the first test),
+// is NOT settled, with the plain tolerance or one below doubles (a floor 1e7 times as lax called
+// it settled).
+TEST(Simulation, AStateShortOfEquilibriumIsNotAtTheRoundingFloor) {
+  const BarHingeModel model = buildModel(testing::miuraOri(4, 4, 1.0, 1.0, 0.5, 120.0 / kDegrees));
+  for (double tolerance : {StaticOptions{}.tolerance, 1e-25}) {
+    StaticOptions options;
+    options.tolerance = tolerance;
+    options.maxIterations = 21;
+    SimulationState state = flatState(model);
+    const StaticResult result = settle(model, 0.6, state, options);
+    // Near equilibrium, else this tests nothing: find the cut that is if the solver changes.
+    EXPECT_GT(result.residual, StaticOptions{}.tolerance);
+    EXPECT_LT(result.residual, 1e-8);
+    EXPECT_FALSE(result.converged) << tolerance;
+    EXPECT_FALSE(result.atRoundingFloor) << tolerance;
+    EXPECT_EQ(settleSummary(result).rfind("NOT settled in 21 iterations", 0), 0u)
+        << settleSummary(result);
+  }
 }
 
 // The largest distance between corresponding vertices after the best rigid placement.

@@ -454,11 +454,10 @@ void addSimulateCommand(CLI::App& app) {
       std::string solved;
       if (options->settle) {
         const StaticResult result = settle(model, amount, state);
-        // Whether the energy rose in any iteration (issue 39: it never should), from each
-        // iteration's change as the solver measured it (energyRises).
-        const std::size_t rises = energyRises(result.history);
-        for (const StaticIteration& it : result.history) {
-          if (options->verbose) {
+        // Whether the energy rose in any iteration (issue 39: it never should) is in the
+        // summary, from each iteration's change as the solver measured it (energyRises).
+        if (options->verbose)
+          for (const StaticIteration& it : result.history) {
             char text[160];
             std::snprintf(text, sizeof text,
                           "  stage %zu: energy %.17g, change %.3e, residual %.3e\n", it.stage,
@@ -466,13 +465,7 @@ void addSimulateCommand(CLI::App& app) {
             statusFor({options->obj, options->fold, options->gltf, options->png, options->gif})
                 << text;
           }
-        }
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "%s in %zu iterations, residual %.1e, energy %.6g (rose in %zu)",
-                      result.converged ? "settled" : "NOT settled", result.iterations,
-                      result.residual, result.energy, rises);
-        solved = text;
+        solved = settleSummary(result);
       } else if (gpuSolver) {
         gpuSolver->step(amount, options->steps);
         gpuSolver->state(state);

@@ -39,7 +39,8 @@
 // without edge pairs). Off by default in the engine; two settles of contact20's 126 paper runs
 // stop short of the tolerance with them (residuals 1.8e-9 and 4.2e-9; the second's forces are
 // under what moving a vertex by its coordinates' last place changes: contact21,
-// docs/performance.md).
+// docs/performance.md; both settle now, at the rounding floor and after a stall retried from the
+// first damping: static_solver.hpp, settle22).
 //
 // Known limits: the distance between nearly parallel segments is not smooth (IPC's mollifier is
 // not applied); the dynamic solver's step is not

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "engine/simulation/contact.hpp"
@@ -35,6 +36,22 @@ StateReport reportState(const BarHingeModel& model, const SimulationState& state
     if (along > std::numbers::pi + kHalfDegree) ++report.pastFlatCreases;
   }
   return report;
+}
+
+std::string settleSummary(const StaticResult& result) {
+  char text[200];
+  const std::size_t rises = energyRises(result.history);
+  if (result.atRoundingFloor)
+    std::snprintf(text, sizeof text,
+                  "settled at the rounding floor (residual %.1e, floor %.1e) in %zu iterations, "
+                  "energy %.6g (rose in %zu)",
+                  result.residual, result.roundingFloor, result.iterations, result.energy, rises);
+  else
+    std::snprintf(text, sizeof text,
+                  "%s in %zu iterations, residual %.1e, energy %.6g (rose in %zu)",
+                  result.converged ? "settled" : "NOT settled", result.iterations, result.residual,
+                  result.energy, rises);
+  return text;
 }
 
 }  // namespace curvefold

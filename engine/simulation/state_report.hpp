@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/static_solver.hpp"
 
 namespace curvefold {
 
@@ -29,5 +31,11 @@ struct StateReport {
 // fold amount (0..1) the state was folded toward. Output: the report. Cost: the crossing test
 // (a bounding-volume search over the triangles) dominates.
 StateReport reportState(const BarHingeModel& model, const SimulationState& state, double amount);
+
+// The static solver's verdict on a state as `curvefold simulate --settle` prints it: "settled in
+// N iterations, residual R, energy E (rose in K)", "NOT settled in ...", or, where the rounding
+// floor decided (StaticResult::atRoundingFloor), "settled at the rounding floor (residual R,
+// floor F) in N iterations, energy E (rose in K)"; K is energyRises(result.history).
+std::string settleSummary(const StaticResult& result);
 
 }  // namespace curvefold

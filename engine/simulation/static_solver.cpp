@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/SparseCholesky>
@@ -316,6 +317,43 @@ double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>&
   return maxForce(forces) / forceScale(model);
 }
 
+double roundingFloorForce(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                          const std::vector<double>& angles, const std::vector<double>& targets,
+                          const std::vector<glm::dvec3>& forces, double toleranceForce) {
+  const std::size_t n = model.vertexCount();
+  // The unit in the last place of the largest coordinate of each vertex and its bars' others.
+  std::vector<double> largest(n, 0.0), place(n, 0.0);
+  for (std::size_t v = 0; v < n; ++v)
+    for (int c = 0; c < 3; ++c) largest[v] = std::max(largest[v], std::abs(positions[v][c]));
+  for (std::size_t v = 0; v < n; ++v) place[v] = largest[v];
+  for (const auto& bar : model.bars) {
+    place[bar[0]] = std::max(place[bar[0]], largest[bar[1]]);
+    place[bar[1]] = std::max(place[bar[1]], largest[bar[0]]);
+  }
+  HessianLayout layout;
+  bool assembled = false;
+  double floor = 0.0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const double force = glm::length(forces[v]);
+    if (model.pinned[v] || force <= toleranceForce) continue;
+    if (!assembled) {  // Gauss-Newton's: each element's stiffness, positive on the diagonal
+      layout = buildLayout(model, model.contact.enabled
+                                      ? findContactPairs(model, positions, model.contact.activation)
+                                      : std::vector<ContactPair>{});
+      assemble(model, positions, layout, angles, targets, false);
+      assembled = true;
+    }
+    const double* values = layout.matrix.valuePtr();
+    double trace = 0.0;
+    for (int c = 0; c < 3; ++c) trace += values[layout.diagonal[3 * v + c]];
+    const double ulp = std::nextafter(place[v], std::numeric_limits<double>::infinity()) - place[v];
+    const double vertexFloor = kRoundingFloorScale * trace * ulp;
+    if (!(force <= vertexFloor)) return -1.0;
+    floor = std::max(floor, vertexFloor);
+  }
+  return floor;
+}
+
 namespace {
 // The stages of settleToTargets (below), with the options as given.
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
@@ -542,6 +580,16 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
     double exactShift =
         0.0;  // of the largest diagonal, added where the exact Hessian is indefinite
     std::size_t boundCuts = 0;  // iterations in a row whose step the contact bound cut
+    bool dampingReset = false;  // since the last accepted step (below)
+    // Stopped above the tolerance at the goal: settled if no representable move can do better
+    // (the rounding floor, static_solver.hpp), from the forces of the state stopped at.
+    const auto judgeRoundingFloor = [&](double toleranceForce) {
+      const double floor = roundingFloorForce(model, state.positions, state.hingeAngles, targets,
+                                              forces, toleranceForce);
+      if (floor <= 0.0) return;
+      result.converged = result.atRoundingFloor = true;
+      result.roundingFloor = floor / scale;
+    };
     while (true) {
       totalForces(m, state.positions, targets, state.hingeAngles, state.hingeAngles,
                   state.slotForces, forces);
@@ -554,6 +602,7 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
           result.iterations - stageStart >= options.maxSoftStageIterations)
         break;
       if (result.iterations >= options.maxIterations) {
+        if (last) judgeRoundingFloor(tolerance * scale);
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
         return result;
       }
@@ -705,7 +754,19 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       }
       for (std::size_t d = 0; d < 3 * n; ++d) values[layout.diagonal[d]] = diagonal[d];
       ++result.iterations;
+      if (accepted) dampingReset = false;
       if (!accepted) {  // no step lowers the energy: as close as double precision gets
+        if (last) judgeRoundingFloor(tolerance * scale);
+        // Short of that floor: the damping grows with every short step and tenfold with every
+        // refused attempt, and at a stall it can stand at 1e10 to 1e14 of the diagonal, its steps
+        // too short to move a coordinate (the curved-pleats annulus at 25%: residual 1.8e-9,
+        // twice its floor, at damping 8e11). One iteration tries again from the stage's first.
+        if (!result.atRoundingFloor && !dampingReset) {
+          dampingReset = true;
+          damping = 1e-6;
+          lastChange = 0.0;  // no move
+          continue;
+        }
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);
         return result;
       }

@@ -22,6 +22,18 @@
 // forceScale(model), the force a hinge exerts at one radian of error through a lever of its own
 // edge's length (the largest over hinges). Converged when it is at most `tolerance`.
 //
+// The rounding floor: positions are doubles, so a vertex's force cannot be brought below what
+// moving it and its neighbours by their last place makes (its stiffness times that place), and a
+// tolerance below it is no tolerance. Where the last stage stops above the tolerance (no step
+// lowers the energy, or the iterations run out), the state counts as settled at the rounding
+// floor when every free vertex whose force is above the tolerance is within its floor,
+// kRoundingFloorScale x the trace of its 3x3 diagonal block of the (Gauss-Newton) Hessian x the
+// unit in the last place of the largest coordinate of it and the vertices its bars join
+// (StaticResult::atRoundingFloor, roundingFloor). Only at that stop: a state that reaches the
+// tolerance settles exactly as without the floor, bit for bit. A stall short of the floor (or in
+// an earlier stage) is first tried again once from the stage's first damping, which by then can
+// stand at 1e10 to 1e14 of the diagonal.
+//
 // Deterministic: sequential assembly and a sequential factorization; the forces are the
 // element-per-slot kernels of bar_hinge_model.hpp.
 //
@@ -45,6 +57,12 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 
 namespace curvefold {
+
+// The floor's factor c: each coordinate of a vertex and of its neighbours at best within half a
+// unit in the last place u of the equilibrium's, a bar's length is off by at most
+// |dw - dv| <= sqrt(3) u, so its pull by k sqrt(3) u; summed over the vertex's bars, whose
+// stiffnesses k sum to at most the trace of its diagonal block, c = sqrt(3).
+inline constexpr double kRoundingFloorScale = 1.7320508075688772;
 
 struct StaticOptions {
   double tolerance = 1e-9;        // residual the last stage must reach
@@ -105,7 +123,12 @@ struct StaticIteration {
 std::size_t energyRises(const std::vector<StaticIteration>& history);
 
 struct StaticResult {
-  bool converged = false;
+  bool converged = false;  // the residual within the tolerance, or at the rounding floor
+  // Settled at the rounding floor (above): converged, with a residual above the tolerance that no
+  // representable move can lower; roundingFloor is the largest floor of a vertex above the
+  // tolerance, in the residual's units (0 when the tolerance decided).
+  bool atRoundingFloor = false;
+  double roundingFloor = 0.0;
   std::size_t iterations = 0;
   std::size_t stages = 0;
   bool predicted = false;  // started from the predictor (StaticOptions::predictor)
@@ -125,6 +148,14 @@ double forceScale(const BarHingeModel& model);
 // The residual of a state: the largest force on a free vertex / forceScale(model).
 double staticResidual(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                       double foldAmount, const std::vector<double>& previousAngles);
+
+// The rounding floor's verdict on a state (above), with the forces already computed on it (the
+// free vertices' totals, contact included). Output: the largest floor of a vertex whose force is
+// above toleranceForce, in newtons; 0 when no vertex is above it; -1 when one is above both.
+// Cost: one assembly of the Hessian (its layout built for the pushing contact pairs).
+double roundingFloorForce(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
+                          const std::vector<double>& angles, const std::vector<double>& targets,
+                          const std::vector<glm::dvec3>& forces, double toleranceForce);
 
 // Moves the state to equilibrium at the fold amount (0..1). Velocities are zeroed; hinge angles
 // are updated.

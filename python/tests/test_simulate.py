@@ -233,8 +233,13 @@ def simulate_cli(source, tmp_path, *options):
 def printed_report(result):
     """The command line's lines for a settled state, from the numbers simulate returns."""
     crossing = result["crossing_pairs"]
-    line = (f"{'settled' if result['converged'] else 'NOT settled'} in {result['iterations']} "
-            f"iterations, residual {result['residual']:.1e}, energy {result['energy']:.6g} (rose "
+    if result["at_rounding_floor"]:
+        verdict = (f"settled at the rounding floor (residual {result['residual']:.1e}, floor "
+                   f"{result['rounding_floor']:.1e}) in {result['iterations']} iterations")
+    else:
+        verdict = (f"{'settled' if result['converged'] else 'NOT settled'} in "
+                   f"{result['iterations']} iterations, residual {result['residual']:.1e}")
+    line = (f"{verdict}, energy {result['energy']:.6g} (rose "
             f"in {result['energy_rises']}), largest strain {result['largest_strain']:.2e}, "
             f"largest crease angle error {result['largest_crease_angle_error']:.2f} degrees "
             f"(mean {result['mean_crease_angle_error']:.2f})")
