@@ -56,11 +56,13 @@ def main():
     turn = np.arctan2(offset @ np.cross(axis, side), offset @ side)
     ring = rim[end][np.argsort(turn)]
     fan = [(len(verts), ring[i], ring[(i + 1) % len(ring)]) for i in range(len(ring))]
-    with open(out, "w") as o:
+    partial = out + ".partial"  # written whole, then moved over OUT
+    with open(partial, "w") as o:
         for p in np.vstack([verts, centre]):
             o.write("v %.9g %.9g %.9g\n" % tuple(p))
         for f in np.vstack([faces, np.array(fan)]):
             o.write("f %d %d %d\n" % tuple(np.asarray(f) + 1))
+    os.replace(partial, out)
     print(f"hole radius {radius[end].mean():.6g}")
     judge = os.path.join(os.path.dirname(os.path.abspath(__file__)), "judge_distance.py")
     os.execv(sys.executable, [sys.executable, judge, out, target])
