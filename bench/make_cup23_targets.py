@@ -6,7 +6,8 @@ Unlike the other cup generators (profiles of revolution meshed in rings or latti
 here is the outside of a solid given only as a function f(x, y, z) < 0, marched to triangles by
 marching tetrahedra on a jittered grid (six tetrahedra a cube), and cut open at its rim: the
 triangles are as the grid cuts them (slivers and all, in no rings), the rim is ragged at the
-grid's step, and the rim's height varies around the cup (an uneven cut, not a level plane).
+grid's step, and on the tumbler and the mug the rim's height varies around the cup (an uneven
+cut, not a level plane).
 - marched_tumbler (metres): a tapered tumbler, a smooth union of a flat floor and a wall whose
   radius grows from 2.6 to 3.4 cm over 6 cm of height (the heel rounded over 6 mm), cut at
   5.2 cm with the rim rising 4 mm one way, tilted 40 degrees and moved off the origin.
@@ -165,8 +166,9 @@ def main():
 
     v, t = march(mug, (-44.0, -44.0, -8.0), (44.0, 44.0, 70.0), 5.2, rng)
     t = open_cup(v, t, lambda x, y: 62.0 + 3.0 * np.cos(2.0 * np.arctan2(y, x)))
-    write(args.out, "marched_mug_mm", "three-lobed mug marched from an implicit solid, wavy rim, mm",
-          v, t, -40.0, 15.0, (5.0, 20.0, -3.0), "%.5f")
+    write(args.out, "marched_mug_mm",
+          "three-lobed mug marched from an implicit solid, wavy rim, in mm", v, t,
+          -40.0, 15.0, (5.0, 20.0, -3.0), "%.5f")
 
     # marched_beaker: a cone leaning 20 degrees, a domed floor, noise.
     def beaker(x, y, z):
@@ -177,8 +179,9 @@ def main():
     v, t = march(beaker, (-0.045, -0.045, -0.006), (0.045, 0.045, 0.058), 0.005, rng)
     t = open_cup(v, t, lambda x, y: 0.05 + 0.0 * x)
     v = v + rng.normal(0.0, 0.00015, v.shape)
-    write(args.out, "marched_beaker", "leaning beaker marched from an implicit solid, noise, metres",
-          v, t, 65.0, 70.0, (-0.02, 0.0, 0.01), "%.8f")
+    write(args.out, "marched_beaker",
+          "leaning beaker marched from an implicit solid, noise, metres", v, t,
+          65.0, 70.0, (-0.02, 0.0, 0.01), "%.8f")
 
 
 if __name__ == "__main__":
