@@ -33,6 +33,32 @@ bool boxesMeet(const Corners& a, const Corners& b, double tolerance) {
   return true;
 }
 
+// Each triangle's bounding box, found once per sheet: most pairs a walk reaches stop at the box
+// test, which then reads two boxes instead of copying and scanning six corners per pair.
+struct TriangleBox {
+  glm::dvec3 low{0.0}, high{0.0};
+};
+
+std::vector<TriangleBox> triangleBoxes(const Sheet& sheet) {
+  std::vector<TriangleBox> boxes(sheet.triangleCount());
+  for (TriangleIndex t = 0; t < sheet.triangleCount(); ++t) {
+    const Corners c = cornersOf(sheet, t);
+    for (int axis = 0; axis < 3; ++axis) {
+      boxes[t].low[axis] = std::min({c[0][axis], c[1][axis], c[2][axis]});
+      boxes[t].high[axis] = std::max({c[0][axis], c[1][axis], c[2][axis]});
+    }
+  }
+  return boxes;
+}
+
+// boxesMeet of the two triangles' corners, from their boxes.
+bool boxesMeet(const TriangleBox& a, const TriangleBox& b, double tolerance) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (a.low[axis] > b.high[axis] + tolerance || b.low[axis] > a.high[axis] + tolerance)
+      return false;
+  return true;
+}
+
 // Neighbours across an edge are the crease itself: their dihedral is the fold, never a crossing.
 // Triangles sharing one corner are tested (the classifier excludes that corner): a fan folded
 // past itself passes through the sheet beyond it.
@@ -221,12 +247,12 @@ bool shareVertex(const Triangle& a, const Triangle& b) {
   return false;
 }
 
-void record(const Sheet& sheet, TriangleIndex s, TriangleIndex t, double tolerance,
-            SelfIntersectionReport& report) {
+void record(const Sheet& sheet, const std::vector<TriangleBox>& boxes, TriangleIndex s,
+            TriangleIndex t, double tolerance, SelfIntersectionReport& report) {
   if (shareEdge(sheet.triangles[s], sheet.triangles[t])) return;
-  const Corners a = cornersOf(sheet, s), b = cornersOf(sheet, t);
-  if (!boxesMeet(a, b, tolerance)) return;
-  const TrianglePairKind kind = classifyTrianglePair(a, b, tolerance);
+  if (!boxesMeet(boxes[s], boxes[t], tolerance)) return;
+  const TrianglePairKind kind =
+      classifyTrianglePair(cornersOf(sheet, s), cornersOf(sheet, t), tolerance);
   if (kind == TrianglePairKind::Apart) return;
   auto& list = kind == TrianglePairKind::Intersect ? report.intersections : report.contacts;
   list.emplace_back(std::min(s, t), std::max(s, t));
@@ -284,7 +310,8 @@ constexpr std::size_t kSmallStar = 16;
 // that both wedges hold (within the tolerance, an angle of about tolerance / edge length): each
 // wedge's directions are an arc on the unit sphere, and only pairs whose arcs' boxes meet are
 // classified. A fan of n triangles costs about n log n, not n^2.
-void recordStars(const Sheet& sheet, double tolerance, SelfIntersectionReport& report) {
+void recordStars(const Sheet& sheet, const std::vector<TriangleBox>& boxes, double tolerance,
+                 SelfIntersectionReport& report) {
   const std::size_t n = sheet.vertexCount();
   std::vector<std::uint32_t> start(n + 1, 0);
   for (const Triangle& t : sheet.triangles)
@@ -305,7 +332,7 @@ void recordStars(const Sheet& sheet, double tolerance, SelfIntersectionReport& r
     if (count <= kSmallStar) {
       for (std::uint32_t i = first; i < first + count; ++i)
         for (std::uint32_t j = i + 1; j < first + count; ++j)
-          record(sheet, star[i], star[j], tolerance, report);
+          record(sheet, boxes, star[i], star[j], tolerance, report);
       continue;
     }
     const glm::dvec3 centre = sheet.positions[v];
@@ -341,7 +368,7 @@ void recordStars(const Sheet& sheet, double tolerance, SelfIntersectionReport& r
     for (std::size_t i = 0; i < arcs.size(); ++i)
       for (std::size_t j = i + 1; j < arcs.size() && arcs[j].low[axis] <= arcs[i].high[axis]; ++j)
         if (overlaps(arcs[i].low, arcs[i].high, arcs[j].low, arcs[j].high, 0.0))
-          record(sheet, arcs[i].triangle, arcs[j].triangle, tolerance, report);
+          record(sheet, boxes, arcs[i].triangle, arcs[j].triangle, tolerance, report);
   }
 }
 
@@ -352,7 +379,8 @@ void recordStars(const Sheet& sheet, double tolerance, SelfIntersectionReport& r
 SelfIntersectionReport findSelfIntersections(const Sheet& sheet) {
   SelfIntersectionReport report;
   const double tolerance = kRelativeContactTolerance * sheetSize(sheet);
-  recordStars(sheet, tolerance, report);
+  const std::vector<TriangleBox> boxes = triangleBoxes(sheet);
+  recordStars(sheet, boxes, tolerance, report);
   const TriangleTree tree = buildTriangleTree(sheet);
   if (tree.nodes.empty()) {
     finish(sheet, tolerance, report);
@@ -361,7 +389,7 @@ SelfIntersectionReport findSelfIntersections(const Sheet& sheet) {
   const std::vector<CommonVertices> common = commonVertices(sheet, tree);
   auto recordApart = [&](TriangleIndex s, TriangleIndex t) {
     if (!shareVertex(sheet.triangles[s], sheet.triangles[t]))
-      record(sheet, s, t, tolerance, report);
+      record(sheet, boxes, s, t, tolerance, report);
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
   while (!stack.empty()) {
@@ -402,9 +430,10 @@ SelfIntersectionReport findSelfIntersections(const Sheet& sheet) {
 SelfIntersectionReport findSelfIntersectionsBruteForce(const Sheet& sheet) {
   SelfIntersectionReport report;
   const double tolerance = kRelativeContactTolerance * sheetSize(sheet);
+  const std::vector<TriangleBox> boxes = triangleBoxes(sheet);
   for (TriangleIndex s = 0; s < sheet.triangleCount(); ++s)
     for (TriangleIndex t = s + 1; t < sheet.triangleCount(); ++t)
-      record(sheet, s, t, tolerance, report);
+      record(sheet, boxes, s, t, tolerance, report);
   finish(sheet, tolerance, report);
   return report;
 }
