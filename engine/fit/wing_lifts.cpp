@@ -23,7 +23,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kFar = 0.03;
 // Target vertices measured, wings lifted (at least this far apart, of the sheet's size).
 constexpr std::size_t kMeasured = 1500;
-constexpr std::size_t kWings = 3;
+constexpr std::size_t kWings = 6;
 constexpr double kWingApart = 0.25;
 // Hinges at these shares of the far point's reach from the sheet's centre (and where the far
 // point and the wing lie as far from the hinge, when that falls between the two).
@@ -220,8 +220,11 @@ std::vector<FoldSuggestion> suggestWingLifts(FoldSession& session, const FoldFit
               made->distance.fromAMax > before.hausdorff ||
               made->distance.chamfer > (1.0 + kChamferSlack) * before.chamfer)
             continue;
-          if (!kept || made->wing < kept->wing)
-            kept = Lift{folds, std::move(made->made), made->wing, made->distance.chamfer};
+          // Ranked by the farther of the wing's far points and the sheet's own farthest point:
+          // the nearest wing alone takes a wide cap, which overlaps the next wing's.
+          const double left = std::max(made->wing, made->distance.fromAMax);
+          if (!kept || left < kept->wing)
+            kept = Lift{folds, std::move(made->made), left, made->distance.chamfer};
         }
       }
     }
