@@ -517,10 +517,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
     log.push_back(logEntryOfStep(session, step, first, count, trianglesBefore));
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
-    const std::string folds = std::to_string(first + 1) + "-" + std::to_string(first + count);
-    std::cout << (step.tucked   ? "corners tucked under: folds " + folds
-                  : step.lifted ? "wings lifted toward: folds " + folds
-                                : stepText(session, first, count))
+    std::cout << (step.tucked ? "corners tucked under: folds " + std::to_string(first + 1) + "-" +
+                                    std::to_string(first + count)
+                              : stepText(session, first, count))
               << ", " << seconds << ": "
               << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
   };

@@ -31,7 +31,6 @@
 #include "engine/fit/tuck_folds.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
-#include "engine/fit/wing_lifts.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/surface_point.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -2186,36 +2185,29 @@ class FitRun {
     // refuses a round's best step, its next ones are tried.
     for (int round = 0; round < kTuckRounds; ++round) {
       if (deadline.passed() || result_.steps.size() >= options_.maxFolds + 1) return;
-      // The corners' tucks first; where none is kept, the wings' lifts (wing_lifts.hpp): a steep
-      // or lobed saddle's farthest points are often its wings, high over the sheet, not a corner.
-      if (!keepTuck(suggestTucks(session_, fitter_, kTuckTries, deadline), deadline, false) &&
-          (deadline.passed() ||
-           !keepTuck(suggestWingLifts(session_, fitter_, kTuckTries, deadline), deadline, true)))
-        return;
-    }
-  }
-  // The first of `steps` the exact measure keeps (the farthest point nearer, the Chamfer distance
-  // no farther than a share; or the Chamfer distance nearer, the farthest point no farther), made
-  // and reported; false where none is.
-  bool keepTuck(const std::vector<FoldSuggestion>& steps, const Deadline& deadline, bool lifts) {
-    for (const FoldSuggestion& step : steps) {
-      if (deadline.passed()) return false;
-      const FitProgress before = result_.steps.back();
-      session_.applyRecords(step.folds);
-      FitProgress after = measureNow(result_.steps.size());
-      after.tucked = !lifts;
-      after.lifted = lifts;
-      if ((after.hausdorff < (1.0 - kTuckGain) * before.hausdorff &&
-           after.chamfer <= (1.0 + kTuckChamferSlack) * before.chamfer) ||
-          (after.chamfer < (1.0 - options_.minimumGain) * before.chamfer &&
-           after.hausdorff <= before.hausdorff)) {
-        result_.steps.push_back(after);
-        if (options_.progress) options_.progress(after);
-        return true;
+      const std::vector<FoldSuggestion> tucks =
+          suggestTucks(session_, fitter_, kTuckTries, deadline);
+      if (tucks.empty() || deadline.passed()) return;
+      bool kept = false;
+      for (const FoldSuggestion& tuck : tucks) {
+        if (deadline.passed()) return;
+        const FitProgress before = result_.steps.back();
+        session_.applyRecords(tuck.folds);
+        FitProgress after = measureNow(result_.steps.size());
+        after.tucked = true;
+        if ((after.hausdorff < (1.0 - kTuckGain) * before.hausdorff &&
+             after.chamfer <= (1.0 + kTuckChamferSlack) * before.chamfer) ||
+            (after.chamfer < (1.0 - options_.minimumGain) * before.chamfer &&
+             after.hausdorff <= before.hausdorff)) {
+          result_.steps.push_back(after);
+          if (options_.progress) options_.progress(after);
+          kept = true;
+          break;
+        }
+        session_.undo();
       }
-      session_.undo();
+      if (!kept) return;
     }
-    return false;
   }
 
   const bool readCreases_;

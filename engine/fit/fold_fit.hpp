@@ -188,7 +188,6 @@ struct FitProgress {
   double hausdorff = 0.0, chamfer = 0.0, diagonal = 0.0;  // exact, to the target
   double seconds = 0.0;
   bool tucked = false;  // the step tucked corners under (tuck_folds.hpp)
-  bool lifted = false;  // the step lifted the sheet toward the target's wings (wing_lifts.hpp)
 };
 
 struct FitOptions {
