@@ -57,8 +57,7 @@ std::uint64_t parseSeed(const std::string& text) {
 // (a millimetre vase 391 across is not "391 m", nor its distance "7.9e+04 mm"), printed as such.
 bool lengthsInMetres(double targetDiagonal) {
   static const double paper = boundingDiagonal(meshOf(makeSurface("square")));
-  const double ratio = targetDiagonal / paper;
-  return ratio <= 100.0 && ratio >= 0.01;
+  return sameUnits(targetDiagonal, paper);
 }
 
 TriangleMesh shapeOf(const std::string& path) {
@@ -604,13 +603,16 @@ void addDistanceCommand(CLI::App& app) {
         options->png.empty() ? nullptr : makePictureRenderer();
     const TriangleMesh a = shapeOf(options->a);
     const TriangleMesh b = shapeOf(options->b);
+    // B's lengths in its own numbers where they are not metres, as fit prints a target's.
+    const bool metres = lengthsInMetres(boundingDiagonal(b));
     OutputSet outputs;
     if (renderer) {
       outputs.add(options->png, [&](const fs::path& at) {
         const Sheet sheet = hasExtension(options->a, ".obj")
                                 ? meshSheet(a)
                                 : buildSheetCached(loadDesign(options->a), options->a);
-        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at);
+        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at,
+                         metres);
       });
       outputs.checkWritable();
     }
@@ -623,13 +625,13 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
-              << millimetresText(d.fromAMean) << "\n"
-              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
-              << millimetresText(d.fromBMean) << "\n"
-              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
-              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
-              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
+    const auto length = metres ? millimetresText : unitsText;
+    std::cout << "A -> B: max " << length(d.fromAMax) << ", mean " << length(d.fromAMean) << "\n"
+              << "B -> A: max " << length(d.fromBMax) << ", mean " << length(d.fromBMean) << "\n"
+              << "Hausdorff (two-sided): " << length(d.hausdorff) << " ("
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
+              << (metres ? " m" : " units") << ")\n"
+              << "Chamfer (mean two-sided): " << length(d.chamfer) << " ("
               << percentText(d.relativeChamfer()) << ")\n";
     if (renderer) {
       outputs.write();

@@ -506,6 +506,11 @@ glm::dvec3 boxCentre(const TriangleMesh& mesh) {
 
 }  // namespace
 
+bool sameUnits(double size, double reference) {
+  const double ratio = size / reference;
+  return ratio <= 100.0 && ratio >= 0.01;
+}
+
 void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet) {
   const TriangleMesh mesh = meshOf(sheet);
   const double size = boundingDiagonal(mesh), targetSize = boundingDiagonal(target);
@@ -513,7 +518,7 @@ void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet) {
   const double ratio = targetSize / size;
   std::ostringstream text;
   text.precision(3);
-  if (ratio > 100.0 || ratio < 0.01) {
+  if (!sameUnits(targetSize, size)) {
     text << "the target is " << ratio << " times the sheet's size (" << targetSize
          << " m across against " << size << " m): are its units metres?";
     throw InvalidTarget(text.str());
