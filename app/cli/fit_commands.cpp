@@ -21,6 +21,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -52,14 +53,6 @@ std::uint64_t parseSeed(const std::string& text) {
 }
 
 // A shape to measure: an OBJ, or a design's folded form.
-// Whether a target's lengths read as metres: its diagonal within a hundred times the default
-// square's either way (checkTargetAgainst's "are its units metres?"). Else they are its own units
-// (a millimetre vase 391 across is not "391 m", nor its distance "7.9e+04 mm"), printed as such.
-bool lengthsInMetres(double targetDiagonal) {
-  static const double paper = boundingDiagonal(meshOf(makeSurface("square")));
-  return sameUnits(targetDiagonal, paper);
-}
-
 TriangleMesh shapeOf(const std::string& path) {
   if (hasExtension(path, ".obj")) return readObjMesh(path);
   const Design design = loadDesign(path);
@@ -184,7 +177,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
 
 // The picture of `sheet` coloured by each vertex's distance to `reference` (fit and distance
 // --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres (in the
-// target's own units where its lengths are not metres: lengthsInMetres). The PNG's bytes.
+// target's own units where its lengths are not metres: target_units.hpp). The PNG's bytes.
 std::string distancePng(HeadlessRenderer& renderer, const Sheet& sheet,
                         const SurfaceDistanceQuery& reference, const std::string& title,
                         bool metres = true) {

@@ -28,6 +28,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/tuck_folds.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
@@ -505,11 +506,6 @@ glm::dvec3 boxCentre(const TriangleMesh& mesh) {
 }
 
 }  // namespace
-
-bool sameUnits(double size, double reference) {
-  const double ratio = size / reference;
-  return ratio <= 100.0 && ratio >= 0.01;
-}
 
 void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet) {
   const TriangleMesh mesh = meshOf(sheet);

@@ -69,10 +69,6 @@ class InvalidTarget : public std::invalid_argument {
 // larger size apart) and is of its size within a hundredfold (its units). Throw InvalidTarget.
 void checkTarget(const TriangleMesh& target);
 void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet);
-// Whether a shape of diagonal `size` reads in the units of one of diagonal `reference`: within a
-// hundredfold either way. checkTargetAgainst's units rule, and the front ends' choice of printing
-// a target's lengths in metres or in its own numbers.
-bool sameUnits(double size, double reference);
 
 struct FitSettings {
   std::size_t sheetSamples = 1500;          // sample vertices of the evaluation copy
