@@ -522,4 +522,22 @@ TEST_F(FitCli, DistanceMeasuresDesignsAndObjs) {
   EXPECT_NE(few.err.find("--samples"), std::string::npos) << few.err;
 }
 
+// Shapes in millimetres (a 200-unit square and the same 10 up) are measured in their own numbers,
+// as `fit` prints such a target: not "1e+04 mm" of a 283 m diagonal.
+TEST_F(FitCli, DistanceOfShapesInOtherUnitsIsPrintedInTheirUnits) {
+  std::ofstream(path("mm.obj")) << "v -100 -100 0\nv 100 -100 0\nv 100 100 0\nv -100 100 0\n"
+                                   "f 1 2 3\nf 1 3 4\n";
+  std::ofstream(path("mm_up.obj")) << "v -100 -100 10\nv 100 -100 10\nv 100 100 10\nv -100 100 10\n"
+                                      "f 1 2 3\nf 1 3 4\n";
+  const CommandResult r =
+      run("distance " + path("mm_up.obj").string() + " " + path("mm.obj").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("A -> B: max 10 units, mean 10 units"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Hausdorff (two-sided): 10 units (3.54% of B's diagonal, 282.843 units)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("Chamfer (mean two-sided): 10 units"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" mm"), std::string::npos) << r.out;
+}
+
 }  // namespace

@@ -431,6 +431,27 @@ TEST(StartSurface, AVaseWhoseBellyStandsOutsideThePlacedConeStartsFromItsWidestT
   EXPECT_NEAR(start.parameters.at("radius"), 0.055, 0.0015) << start.placement;
 }
 
+// The same vase in millimetres: the start's note gives the rings' reach in the target's own
+// numbers, as the fit's lines do (target_units.hpp), not as metres it is not in ("2.28e+03 mm").
+TEST(StartSurface, AVaseInMillimetresIsToldItsRingsReachInItsOwnUnits) {
+  TriangleMesh vase = revolved(
+      [](double h) {
+        const double s = (h + 0.105) / 0.21;
+        return 0.045 + 0.011 * std::sin(1.7 * std::numbers::pi * s) -
+               0.006 * (2.0 * s - 1.0) * (2.0 * s - 1.0);
+      },
+      -0.105, 0.105, 48, 24);
+  for (glm::dvec3& p : vase.positions) p *= 1000.0;
+  const StartChoice start = chooseStart(vase);
+  ASSERT_TRUE(start.placed);
+  EXPECT_EQ(start.surface, "cylinder") << start.placement;
+  EXPECT_NE(start.placement.find("its rings could come within"), std::string::npos)
+      << start.placement;
+  EXPECT_NE(start.placement.find(" units of the target's profile"), std::string::npos)
+      << start.placement;
+  EXPECT_EQ(start.placement.find(" mm"), std::string::npos) << start.placement;
+}
+
 // The tubes' reach: the upper concave hull passes over a waist by the chord from the belly to
 // the lip, and a profile already concave is its own hull.
 TEST(TubeReach, TheHullBridgesAWaistAndKeepsAConcaveProfile) {

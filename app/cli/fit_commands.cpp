@@ -21,6 +21,7 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
@@ -52,15 +53,6 @@ std::uint64_t parseSeed(const std::string& text) {
 }
 
 // A shape to measure: an OBJ, or a design's folded form.
-// Whether a target's lengths read as metres: its diagonal within a hundred times the default
-// square's either way (checkTargetAgainst's "are its units metres?"). Else they are its own units
-// (a millimetre vase 391 across is not "391 m", nor its distance "7.9e+04 mm"), printed as such.
-bool lengthsInMetres(double targetDiagonal) {
-  static const double paper = boundingDiagonal(meshOf(makeSurface("square")));
-  const double ratio = targetDiagonal / paper;
-  return ratio <= 100.0 && ratio >= 0.01;
-}
-
 TriangleMesh shapeOf(const std::string& path) {
   if (hasExtension(path, ".obj")) return readObjMesh(path);
   const Design design = loadDesign(path);
@@ -185,7 +177,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
 
 // The picture of `sheet` coloured by each vertex's distance to `reference` (fit and distance
 // --png): viridis from 0 (dark) to the largest vertex distance (yellow), in millimetres (in the
-// target's own units where its lengths are not metres: lengthsInMetres). The PNG's bytes.
+// target's own units where its lengths are not metres: target_units.hpp). The PNG's bytes.
 std::string distancePng(HeadlessRenderer& renderer, const Sheet& sheet,
                         const SurfaceDistanceQuery& reference, const std::string& title,
                         bool metres = true) {
@@ -604,13 +596,16 @@ void addDistanceCommand(CLI::App& app) {
         options->png.empty() ? nullptr : makePictureRenderer();
     const TriangleMesh a = shapeOf(options->a);
     const TriangleMesh b = shapeOf(options->b);
+    // B's lengths in its own numbers where they are not metres, as fit prints a target's.
+    const bool metres = lengthsInMetres(boundingDiagonal(b));
     OutputSet outputs;
     if (renderer) {
       outputs.add(options->png, [&](const fs::path& at) {
         const Sheet sheet = hasExtension(options->a, ".obj")
                                 ? meshSheet(a)
                                 : buildSheetCached(loadDesign(options->a), options->a);
-        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at);
+        writeDistancePng(*renderer, sheet, SurfaceDistanceQuery(b, "second"), "distance to B", at,
+                         metres);
       });
       outputs.checkWritable();
     }
@@ -623,13 +618,13 @@ void addDistanceCommand(CLI::App& app) {
           (std::string(e.what()).find("first") != std::string::npos ? options->a : options->b) +
           ")");
     }
-    std::cout << "A -> B: max " << millimetresText(d.fromAMax) << ", mean "
-              << millimetresText(d.fromAMean) << "\n"
-              << "B -> A: max " << millimetresText(d.fromBMax) << ", mean "
-              << millimetresText(d.fromBMean) << "\n"
-              << "Hausdorff (two-sided): " << millimetresText(d.hausdorff) << " ("
-              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal << " m)\n"
-              << "Chamfer (mean two-sided): " << millimetresText(d.chamfer) << " ("
+    const auto length = metres ? millimetresText : unitsText;
+    std::cout << "A -> B: max " << length(d.fromAMax) << ", mean " << length(d.fromAMean) << "\n"
+              << "B -> A: max " << length(d.fromBMax) << ", mean " << length(d.fromBMean) << "\n"
+              << "Hausdorff (two-sided): " << length(d.hausdorff) << " ("
+              << percentText(d.relativeHausdorff()) << " of B's diagonal, " << d.diagonal
+              << (metres ? " m" : " units") << ")\n"
+              << "Chamfer (mean two-sided): " << length(d.chamfer) << " ("
               << percentText(d.relativeChamfer()) << ")\n";
     if (renderer) {
       outputs.write();

@@ -28,6 +28,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/target_unfolding.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/tuck_folds.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/fit/whole_sheet_folds.hpp"
@@ -513,7 +514,7 @@ void checkTargetAgainst(const TriangleMesh& target, const Sheet& sheet) {
   const double ratio = targetSize / size;
   std::ostringstream text;
   text.precision(3);
-  if (ratio > 100.0 || ratio < 0.01) {
+  if (!sameUnits(targetSize, size)) {
     text << "the target is " << ratio << " times the sheet's size (" << targetSize
          << " m across against " << size << " m): are its units metres?";
     throw InvalidTarget(text.str());

@@ -18,10 +18,12 @@
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/tube_reach.hpp"
 #include "engine/fit/unfolded_sheet.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/unfold.hpp"
+#include "engine/text/distance_text.hpp"
 
 namespace curvefold {
 namespace {
@@ -468,12 +470,12 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
     const std::optional<double> reach =
         axis ? ringsReach(disk->sheet, samples, *axis) : std::nullopt;
     if (reach && *reach < kRingsGain * nearestNow) {
-      char text[240];
-      std::snprintf(text, sizeof text,
-                    "; its nested rings' profile comes within %.3g mm of the target's (mean + "
-                    "farthest / 4), the nearest sheet (%s) %.3g mm (Chamfer + Hausdorff / 4)",
-                    *reach * 1e3, nearestPlaced ? nearest->surface.c_str() : best.surface.c_str(),
-                    nearestNow * 1e3);
+      const bool metres = lengthsInMetres(boundingDiagonal(target));
+      const std::string text = "; its nested rings' profile comes within " +
+                               lengthText(*reach, metres) +
+                               " of the target's (mean + farthest / 4), the nearest sheet (" +
+                               (nearestPlaced ? nearest->surface : best.surface) + ") " +
+                               lengthText(nearestNow, metres) + " (Chamfer + Hausdorff / 4)";
       // An oval bowl's rings fold the disk stretched to its footprint (the round disk's reach
       // stands for it: the rings follow an oblong target's reach either way).
       const bool oval = ellipse.has_value();
@@ -506,11 +508,10 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
       if (tube && bellyBetweenEnds(samples, *axis) && keeps(tube->sheet))
         reachTube = tubeRingsReach(tube->sheet, samples, *axis);
       if (reachNow && reachTube && *reachTube < kTubeRingsGain * *reachNow) {
-        char text[200];
-        std::snprintf(text, sizeof text,
-                      "; its rings could come within %.3g mm of the target's profile (mean + "
-                      "farthest / 4), the %s's %.3g mm",
-                      *reachTube * 1e3, best.surface.c_str(), *reachNow * 1e3);
+        const bool metres = lengthsInMetres(boundingDiagonal(target));
+        const std::string text = "; its rings could come within " + lengthText(*reachTube, metres) +
+                                 " of the target's profile (mean + farthest / 4), the " +
+                                 best.surface + "'s " + lengthText(*reachNow, metres);
         best.surface = tube->surface;
         best.parameters = tube->parameters;
         best.chamfer = surfaceDistance(meshOf(tube->sheet), measured, kChoiceSamples).chamfer;

@@ -23,10 +23,13 @@ std::string unitsText(double length) {
   return text;
 }
 
+std::string lengthText(double length, bool metres) {
+  return metres ? millimetresText(length) : unitsText(length);
+}
+
 std::string distanceText(double hausdorff, double chamfer, double diagonal, bool metres) {
-  const auto length = metres ? millimetresText : unitsText;
-  return "Hausdorff " + length(hausdorff) + " (" + percentText(hausdorff / diagonal) +
-         "), Chamfer " + length(chamfer) + " (" + percentText(chamfer / diagonal) + ")";
+  return "Hausdorff " + lengthText(hausdorff, metres) + " (" + percentText(hausdorff / diagonal) +
+         "), Chamfer " + lengthText(chamfer, metres) + " (" + percentText(chamfer / diagonal) + ")";
 }
 
 std::string distanceText(double hausdorff, double chamfer, double diagonal) {

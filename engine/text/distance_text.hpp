@@ -15,6 +15,8 @@ std::string distanceText(double hausdorff, double chamfer, double diagonal);
 // "12.3 units": a length of a target in other units (a millimetre scan is read as metres, 1000
 // times paper's size), in its own numbers, since which units they are cannot be known.
 std::string unitsText(double length);
+// millimetresText where `metres`, else unitsText.
+std::string lengthText(double length, bool metres);
 // As above, in the target's own units where `metres` is false: "Hausdorff 4.2 units (1.3%), ...".
 std::string distanceText(double hausdorff, double chamfer, double diagonal, bool metres);
 
