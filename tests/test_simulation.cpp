@@ -2,6 +2,7 @@
 #include <cstring>
 #include <numbers>
 #include <random>
+#include <sstream>
 
 #include <tbb/task_arena.h>
 
@@ -364,6 +365,73 @@ TEST(Simulation, PaperModeCurvedPleatAt180DegreesReachesTheStaticTolerance) {
     if (model.hingeCrease[j]) {
       EXPECT_LT(std::abs(error[model.hingeEdge[j]]), 90.0) << j;
     }
+}
+
+// Concentric curved pleats on an annulus as FOLD text: rings + 1 circles of `segments` points
+// from radius 0.12 to 1 m, the inner and outer borders, the others alternating mountain and
+// valley at 60 degrees, quads between them (bench/make_judge_patterns.py's annulus, coarser).
+std::string annulusFold(int rings, int segments) {
+  std::ostringstream coords, edges, assignments, angles, faces;
+  const auto index = [&](int k, int s) { return k * segments + (s % segments); };
+  const auto comma = [](std::ostringstream& list) -> std::ostringstream& {
+    if (list.tellp() > 0) list << ',';
+    return list;
+  };
+  coords.precision(17);
+  for (int k = 0; k <= rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      const double r = 0.12 + 0.88 * k / rings, t = 2.0 * std::numbers::pi * s / segments;
+      comma(coords) << '[' << r * std::cos(t) << ',' << r * std::sin(t) << ']';
+    }
+  for (int k = 0; k <= rings; ++k) {
+    const bool border = k == 0 || k == rings;
+    for (int s = 0; s < segments; ++s) {
+      comma(edges) << '[' << index(k, s) << ',' << index(k, s + 1) << ']';
+      comma(assignments) << (border ? "\"B\"" : (k % 2 ? "\"M\"" : "\"V\""));
+      comma(angles) << (border ? 0 : (k % 2 ? -60 : 60));
+    }
+  }
+  for (int k = 0; k < rings; ++k)
+    for (int s = 0; s < segments; ++s) {
+      comma(edges) << '[' << index(k, s) << ',' << index(k + 1, s) << ']';
+      comma(assignments) << "\"F\"";
+      comma(angles) << 0;
+      comma(faces) << '[' << index(k, s) << ',' << index(k, s + 1) << ',' << index(k + 1, s + 1)
+                   << ',' << index(k + 1, s) << ']';
+    }
+  std::ostringstream fold;
+  fold << R"({"file_spec": 1.1, "vertices_coords": [)" << coords.str()
+       << R"(], "edges_vertices": [)" << edges.str() << R"(], "edges_assignment": [)"
+       << assignments.str() << R"(], "edges_foldAngle": [)" << angles.str()
+       << R"(], "faces_vertices": [)" << faces.str() << "]}";
+  return fold.str();
+}
+
+// ... folded at 100% in paper mode (0.1 mm, self-contact) within 400 iterations: with each soft
+// stage cut at 30 iterations, the last stage, with the paper's bars, starts far from its
+// equilibrium and needs 504 iterations in all; made again with the soft stages run to their
+// tolerance it settles in 319 (issue 39: the judge's finer annulus crept 688 iterations to a
+// residual of 1.2 and ran out at 800).
+TEST(Simulation, PaperModeSoftStagesCutShortAreRunToTheirToleranceWhereTheSettleRunsOut) {
+  CreasePattern pattern = readFoldCreasePatternText(annulusFold(6, 24), "annulus.fold");
+  scaleToMetres(pattern);
+  ModelOptions paper;
+  setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
+  const BarHingeModel model = buildModel(pattern, paper);
+  StaticOptions options;
+  options.maxIterations = 400;
+  SimulationState state = flatState(model);
+  const StaticResult result = settle(model, 1.0, state, options);
+  EXPECT_TRUE(result.converged) << "residual " << result.residual;
+  // Made again (so the settle with its stages cut ran out): else this tests nothing.
+  EXPECT_TRUE(result.patientSoftStages);
+  EXPECT_FALSE(result.atRoundingFloor);
+  EXPECT_LE(result.residual, options.tolerance);
+  EXPECT_LE(staticResidual(model, state.positions, 1.0, state.hingeAngles), options.tolerance);
+  // Never rising, as the moves measure it (the sums of a step the residual rule took near
+  // equilibrium can read a rounding above).
+  EXPECT_EQ(energyRises(result.history), 0u);
+  EXPECT_EQ(crossingTrianglePairs(model, state.positions), 0u);
 }
 
 // The waterbomb base's creases all at +-180 degrees, driven to half and three quarters: targets

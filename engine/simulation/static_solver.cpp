@@ -358,7 +358,12 @@ namespace {
 // The stages of settleToTargets (below), with the options as given.
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
                             SimulationState& state, const StaticOptions& options,
-                            bool* softBarsSkipped = nullptr);
+                            bool* softBarsSkipped = nullptr, bool* softStageCut = nullptr);
+// settleToTargets' settle in paper mode with the bars softened (below). softStageCut: set where a
+// soft stage stopped at maxSoftStageIterations short of its tolerance.
+StaticResult settleWithSoftBars(const BarHingeModel& model, const std::vector<double>& goal,
+                                SimulationState& state, const StaticOptions& options,
+                                bool& softStageCut);
 }  // namespace
 
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
@@ -369,6 +374,38 @@ StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationSta
 StaticResult settleToTargets(const BarHingeModel& model, const std::vector<double>& goal,
                              SimulationState& state, const StaticOptions& options) {
   if (paperBarScale(model, options) == 1.0) return settleInStages(model, goal, state, options);
+  const SimulationState before = state;
+  bool softStageCut = false;
+  StaticResult result = settleWithSoftBars(model, goal, state, options, softStageCut);
+  // Not settled (with the paper's bars too where those were tried): a soft stage cut at
+  // maxSoftStageIterations far from its equilibrium leaves the next, with bars a hundred times
+  // stiffer, to crawl along the narrow valley they make (the curved-pleats annulus at 100%: its
+  // last stage began at residual 29 and ran out of iterations at 1.2). Made again from the start
+  // with every soft stage run to its tolerance; kept where that settles, else the first result
+  // stands, bit for bit. Only here, so every state that settled before settles as it did.
+  const std::size_t patientIterations = options.patientSoftStageIterations;
+  if (result.converged || !softStageCut || patientIterations <= options.maxSoftStageIterations)
+    return result;
+  const SimulationState cut = state;
+  state = before;
+  StaticOptions patient = options;
+  patient.maxSoftStageIterations = patientIterations;
+  StaticResult retried = settleWithSoftBars(model, goal, state, patient, softStageCut);
+  if (retried.converged) {
+    retried.iterations += result.iterations;
+    retried.patientSoftStages = true;
+    return retried;
+  }
+  state = cut;
+  result.iterations += retried.iterations;
+  return result;
+}
+
+namespace {
+
+StaticResult settleWithSoftBars(const BarHingeModel& model, const std::vector<double>& goal,
+                                SimulationState& state, const StaticOptions& options,
+                                bool& softStageCut) {
   // Soft bars can let a triangle turn inside out on the way; stiffened again it cannot turn
   // back, and the sheet ends strained far above where it began (one of Origami Simulator's
   // examples, Crossing_curves: 33%). Then the settle is made again with the paper's own bars.
@@ -378,7 +415,7 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
                                              ? before.hingeAngles
                                              : hingeAngles(model, before.positions));
   bool skipped = false;
-  StaticResult soft = settleInStages(model, goal, state, options, &skipped);
+  StaticResult soft = settleInStages(model, goal, state, options, &skipped, &softStageCut);
   if (skipped) return soft;  // settled with the paper's own bars already
   const bool softUsable = std::isfinite(soft.energy) && soft.energy <= startEnergy;
   // Left stretched and far from any equilibrium (strain above 0.1%, a residual above the stages'
@@ -408,11 +445,9 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   return result;
 }
 
-namespace {
-
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
                             SimulationState& state, const StaticOptions& options,
-                            bool* softBarsSkipped) {
+                            bool* softBarsSkipped, bool* softStageCut) {
   StaticResult result;
   const std::size_t n = model.vertexCount();
   state.velocities.assign(n, glm::dvec3(0.0));
@@ -599,8 +634,10 @@ StaticResult settleInStages(const BarHingeModel& model, const std::vector<double
       if (residual <= tolerance) break;
       // A soft stage only has to bring the sheet onto the creases' branch, not to equilibrium.
       if ((softFacets || !barScales.empty()) && !last &&
-          result.iterations - stageStart >= options.maxSoftStageIterations)
+          result.iterations - stageStart >= options.maxSoftStageIterations) {
+        if (softStageCut && !barScales.empty()) *softStageCut = true;
         break;
+      }
       if (result.iterations >= options.maxIterations) {
         if (last) judgeRoundingFloor(tolerance * scale);
         result.energy = modelEnergy(model, state.positions, goal, state.hingeAngles);

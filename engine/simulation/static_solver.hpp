@@ -88,6 +88,10 @@ struct StaticOptions {
   // maxSoftStageIterations.
   double softBarRatio = 100.0;
   double barStiffening = 100.0;
+  // Paper mode, where that settle ends NOT settled: it is made again from the start with each
+  // soft-bar stage allowed this many iterations (run to stageTolerance, not cut), and kept where
+  // it settles (StaticResult::patientSoftStages; iterations count both). 0: off.
+  std::size_t patientSoftStageIterations = 200;
   // ... except from a predicted start no edge of which is strained above this (the sheet shaped as
   // drawn with its glued seams met, a straight crease at its goal): that start is already on the
   // paper's valley floor, and the settle runs with the paper's own bars from it.
@@ -136,6 +140,9 @@ struct StaticResult {
   // out), or short of equilibrium (a residual above stageTolerance) where the paper's own bars
   // came nearer, so the settle was made again with those (iterations count both).
   bool softBarsUndone = false;
+  // Paper mode: settled only when made again with the soft stages run to their tolerance
+  // (StaticOptions::patientSoftStageIterations).
+  bool patientSoftStages = false;
   double energy = 0.0;                   // at the goal's targets
   double residual = 0.0;                 // at the end
   std::vector<StaticIteration> history;  // one entry per iteration, and one for each stage's start
