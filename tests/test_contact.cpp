@@ -621,40 +621,5 @@ TEST(Contact, ARefittedTreeFindsThePairsABuiltTreeFinds) {
   }
 }
 
-// A listed pair is evaluated when its distance when found, less its own vertices' motions since
-// (its vertex's plus the largest of its triangle's corners', or the largest of each bar's ends'),
-// can be within the barrier's reach. Only the lower layer moved up toward the top one, 0.95 of
-// half the skin: the top layer's vertices, which did not move, are pushed by the triangles that
-// came up under them, and the list's force is addContactForces' over the list bit for bit, on one
-// thread and on two, with edge pairs and without.
-TEST(Contact, APairsOwnMotionBoundCountsItsTrianglesCorners) {
-  for (const bool edges : {false, true}) {
-    SCOPED_TRACE(edges);
-    const BarHingeModel model = turnedOverGrid(edges);
-    for (const int threads : {1, 2}) {
-      SCOPED_TRACE(threads);
-      tbb::task_arena arena(threads);
-      SimulationState state = flatState(model);
-      for (glm::dvec3& p : state.positions)
-        if (p.x > 0.005) p = {0.01 - p.x, p.y, 2.9 * kThickness};
-      const glm::dvec3* forces = nullptr;
-      arena.execute([&] { forces = dynamicContactForces(model, state); });
-      ASSERT_NE(forces, nullptr);
-      const double half = 0.5 * state.contactPairs.skin;
-      for (glm::dvec3& p : state.positions)
-        if (p.z < kThickness) p.z += 0.95 * half;
-      arena.execute([&] { forces = dynamicContactForces(model, state); });
-      EXPECT_EQ(state.contactPairs.rebuilds, 1u);
-      std::vector<glm::dvec3> expected(model.vertexCount(), glm::dvec3(0.0));
-      addContactForces(model, state.positions, state.contactPairs.pairs, expected, true);
-      EXPECT_EQ(0, std::memcmp(forces, expected.data(), expected.size() * sizeof(glm::dvec3)));
-      std::size_t topPushed = 0;
-      for (std::size_t v = 0; v < model.vertexCount(); ++v)
-        topPushed += state.positions[v].z > 2.0 * kThickness && expected[v] != glm::dvec3(0.0);
-      EXPECT_GT(topPushed, 100u);
-    }
-  }
-}
-
 }  // namespace
 }  // namespace curvefold

@@ -936,12 +936,9 @@ bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3
   bool stale = list.builtAt.size() != positions.size();
   if (!stale) {
     // The largest motion since the search, by chunks on all cores (a maximum: any order).
-    // Each vertex's motion kept (the pairs' own bound in dynamicContactForces); the largest is
-    // sqrt of the largest square, as before (sqrt is monotonic and correctly rounded).
     constexpr std::size_t kGrain = 8192;
     const std::size_t n = positions.size(), chunks = (n + kGrain - 1) / kGrain;
     std::vector<double> largest(chunks, 0.0);
-    list.motion.resize(n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
@@ -949,20 +946,18 @@ bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3
                           for (std::size_t v = chunk * kGrain;
                                v < std::min(n, (chunk + 1) * kGrain); ++v) {
                             const glm::dvec3 d = positions[v] - list.builtAt[v];
-                            list.motion[v] = std::sqrt(glm::dot(d, d));
-                            most = std::max(most, list.motion[v]);
+                            most = std::max(most, glm::dot(d, d));
                           }
                           largest[chunk] = most;
                         }
                       });
-    list.moved = n > 0 ? *std::max_element(largest.begin(), largest.end()) : 0.0;
+    list.moved = n > 0 ? std::sqrt(*std::max_element(largest.begin(), largest.end())) : 0.0;
     stale = list.moved > 0.5 * skin;
   }
   if (!stale) return false;
   list.pairs = searchContactList(model, positions, model.contact.activation + skin, list);
   list.builtAt = positions;
   list.moved = 0.0;
-  list.motion.assign(positions.size(), 0.0);
   ++list.rebuilds;
   return true;
 }
@@ -977,12 +972,8 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
   // A pair pushes only below thickness + activation; since the search its distance fell at most
   // by its vertices' motions (2 moved), so one found farther than that cannot (the margin far
   // above the distances' rounding).
-  // Each pair's own bound, its vertex's (or first bar's ends') motion plus its triangle's corners'
-  // (the second bar's ends') largest, is within that and tighter where a few vertices move.
   const ContactParameters& c = model.contact;
-  const double base = c.thickness + c.activation * (1.0 + 1e-6);
-  const double reach = base + 2.0 * list.moved;
-  const double* motion = list.motion.data();
+  const double reach = c.thickness + c.activation * (1.0 + 1e-6) + 2.0 * list.moved;
   const std::vector<glm::dvec3>& x = state.positions;
   // Calls keep(i, pushes, term) for the pairs [begin, end) in order, the vertex-triangle pairs
   // that can push computed in lane blocks (the last lane's pair repeated to fill a block).
@@ -1010,25 +1001,10 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
       if (!(list.builtDistance[i] < reach)) {
         keep(i, false, term);  // adds nothing: the lanes' pairs may come after it
       } else if (pair.edges) {
-        const auto& e = model.bars[pair.vertex];
-        const auto& f = model.bars[pair.triangle];
-        if (!(list.builtDistance[i] < base) &&
-            !(list.builtDistance[i] < base + (std::max(motion[e[0]], motion[e[1]]) +
-                                              std::max(motion[f[0]], motion[f[1]])))) {
-          keep(i, false, term);
-          continue;
-        }
         if (filled > 0) runLanes();  // the pair order
         keep(i, contactTerm(model, x, pair, term, true), term);
       } else {
         const auto& tri = model.triangles[pair.triangle];
-        if (!(list.builtDistance[i] < base) &&  // within reach as found: no bound to read
-            !(list.builtDistance[i] <
-              base + (motion[pair.vertex] +
-                      std::max(motion[tri[0]], std::max(motion[tri[1]], motion[tri[2]]))))) {
-          keep(i, false, term);
-          continue;
-        }
         vertices[filled] = {pair.vertex, tri[0], tri[1], tri[2]};
         lanePair[filled++] = i;
         if (filled == kContactLanes) runLanes();

@@ -169,15 +169,13 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
 // when found: a step evaluates only the pairs whose distance then, less twice the largest motion
 // since, is within reach of the barrier (the others cannot push), each on all cores, and each
 // vertex sums its pairs' forces in pair order (its slots, found with the list), also on all cores:
-// the same bits as summing pair by pair, for any thread count. A pair's own bound is its vertex's
-// motion plus the largest of its triangle's corners' (or the largest of each bar's ends'), kept per
-// vertex by the staleness scan: tighter than twice the largest where few vertices move. A search
-// after the first refits the trees of the last (the triangles' and the bars' boxes, the splits
-// kept: the same pairs as a tree built anew) while the splits stay fit (kRefitStaleness,
-// contact.cpp), and builds them anew otherwise. Inputs: the model (contact enabled) and the
-// positions; `rebuilds` counts the searches, `refits` those that refitted. Limits: a sheet whose
-// vertices all move (a flap swinging as it folds) is searched again every skin / 2 of motion even
-// where no layer is near; every listed pair within reach is evaluated each step.
+// the same bits as summing pair by pair, for any thread count. A search after the first refits the
+// trees of the last (the triangles' and the bars' boxes, the splits kept: the same pairs as a tree
+// built anew) while the splits stay fit (kRefitStaleness, contact.cpp), and builds them anew
+// otherwise. Inputs: the model (contact enabled) and the positions; `rebuilds` counts the searches,
+// `refits` those that refitted. Limits: a sheet whose vertices all move (a flap swinging as it
+// folds) is searched again every skin / 2 of motion even where no layer is near; every listed pair
+// within reach is evaluated each step.
 struct ContactTrees;  // contact.cpp: the search's trees, kept to be refitted
 struct ContactList {
   std::vector<ContactPair> pairs;
