@@ -61,8 +61,8 @@ BENCHMARK(BM_DynamicStepOneThread)->Arg(100)->Arg(173)->Arg(316)->Unit(benchmark
 // which pushes it away: no rest state, the steps push the layers apart and the list is found
 // again several times), or folded at rest (2: restingFold), or left flat (0: the contact's list is
 // kept, no pair pushes); fourth argument 1: edge pairs too (what `simulate --paper` asks for,
-// setPaperMode). Counters: pairs listed and pushing at the end, and the list's rebuilds in the
-// timed steps alone.
+// setPaperMode). Counters: pairs listed and pushing at the end, and the list's rebuilds (searches)
+// and refits (searches that refitted the trees) in the timed steps alone.
 //
 // restingFold: the right half folded over onto the left with its layers thickness + activation
 // (2 t) apart, where the barrier begins: the crease column at the fold's apex t above the lower
@@ -108,6 +108,7 @@ void BM_DynamicStepPaper(benchmark::State& bench) {
   }
   stepDynamic(model, amount, state, 10);
   const std::size_t rebuildsBefore = state.contactPairs.rebuilds;
+  const std::size_t refitsBefore = state.contactPairs.refits;
   for (auto _ : bench) {
     stepDynamic(model, amount, state, 1);
     benchmark::DoNotOptimize(state.positions.data());
@@ -123,6 +124,7 @@ void BM_DynamicStepPaper(benchmark::State& bench) {
   bench.counters["pushing"] = static_cast<double>(pushing);
   bench.counters["edge_pairs"] = static_cast<double>(edgePairs);
   bench.counters["rebuilds"] = static_cast<double>(state.contactPairs.rebuilds - rebuildsBefore);
+  bench.counters["refits"] = static_cast<double>(state.contactPairs.refits - refitsBefore);
 }
 // 100 cells: 10,201 vertices; 316: 100,489 (the 1 ms and 10 ms).
 void paperStepCases(benchmark::internal::Benchmark* bench) {

@@ -583,5 +583,43 @@ TEST(Contact, DynamicStepsWithContactGiveTheSameStateOnAnyThreadCount) {
   }
 }
 
+// A search after the first refits the list's trees to the positions, their splits kept, and
+// finds the list a tree built anew finds (findContactPairs), with edge pairs and without, as the
+// top layer slides over the lower one most of a cell at a time; lifted far off, the trees' splits
+// go stale and are built anew (splitting the layers), and laid back they are refitted: the list is
+// the same each time.
+TEST(Contact, ARefittedTreeFindsThePairsABuiltTreeFinds) {
+  for (const bool edges : {false, true}) {
+    SCOPED_TRACE(edges);
+    const BarHingeModel model = turnedOverGrid(edges);
+    std::vector<glm::dvec3> x = halvesTurnedOver(model, 5);
+    ContactList list;
+    ASSERT_TRUE(refreshContactList(model, x, list));
+    EXPECT_EQ(list.refits, 0u);
+    const double within = model.contact.activation + list.skin, cell = 0.01 / 32.0;
+    const auto top = [&](const glm::dvec3& p) { return p.z > 0.75 * kThickness; };
+    std::size_t changed = 0;
+    for (int round = 0; round < 5; ++round) {
+      const std::vector<ContactPair> before = list.pairs;
+      for (glm::dvec3& p : x)
+        if (top(p)) p += glm::dvec3(0.7 * cell, 0.4 * cell, 0.0);
+      ASSERT_TRUE(refreshContactList(model, x, list));
+      EXPECT_EQ(list.pairs, findContactPairs(model, x, within)) << "round " << round;
+      changed += list.pairs != before;
+    }
+    EXPECT_EQ(list.refits, 5u);
+    EXPECT_EQ(changed, 5u);
+    for (const double lift : {0.02, -0.02}) {
+      for (glm::dvec3& p : x)
+        if (p.z > 0.75 * kThickness + (lift < 0.0 ? 0.01 : 0.0)) p.z += lift;
+      ASSERT_TRUE(refreshContactList(model, x, list));
+      EXPECT_EQ(list.pairs, findContactPairs(model, x, within)) << "lift " << lift;
+      EXPECT_EQ(list.refits, lift > 0.0 ? 5u : 6u);  // built anew, then refitted
+    }
+    EXPECT_EQ(list.rebuilds, 8u);
+    EXPECT_GT(list.pairs.size(), 1000u);
+  }
+}
+
 }  // namespace
 }  // namespace curvefold

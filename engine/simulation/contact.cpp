@@ -121,11 +121,40 @@ struct Box {
 // on the centres, ties by index: the same tree for the same boxes).
 class BoxTree {
  public:
+  BoxTree() = default;
   explicit BoxTree(std::vector<Box> boxes) : boxes_(std::move(boxes)) {
     order_.resize(boxes_.size());
     for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
     if (!boxes_.empty()) build(0, static_cast<std::uint32_t>(order_.size()));
+    builtLooseness_ = looseness();
   }
+  std::size_t size() const { return boxes_.size(); }
+  std::vector<Box> releaseBoxes() { return std::move(boxes_); }
+  // New boxes for the same items: every node's box fitted to them again, the splits kept (a
+  // node's children come after it, so one pass from the back). A query finds what it finds in a
+  // tree built on these boxes; only its speed depends on the splits.
+  void refit(std::vector<Box> boxes) {
+    boxes_ = std::move(boxes);
+    for (std::size_t i = nodes_.size(); i-- > 0;) {
+      Node& node = nodes_[i];
+      Box box;
+      if (node.count > 0) {
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+          box.add(boxes_[order_[k]].low);
+          box.add(boxes_[order_[k]].high);
+        }
+      } else {
+        for (const std::uint32_t child : {node.left, node.right}) {
+          box.add(nodes_[child].box.low);
+          box.add(nodes_[child].box.high);
+        }
+      }
+      node.box = box;
+    }
+  }
+  // How far its splits have gone stale: the nodes' half-perimeters summed over the items',
+  // against that sum when the tree was built (1: as built).
+  double staleness() const { return looseness() / builtLooseness_; }
   // Calls visit(item) for every box that meets `query`.
   template <typename Visit>
   void query(const Box& query, Visit&& visit) const {
@@ -184,9 +213,21 @@ class BoxTree {
     return index;
   }
 
+  static double halfPerimeter(const Box& box) {
+    const glm::dvec3 size = box.high - box.low;
+    return size.x + size.y + size.z;
+  }
+  double looseness() const {
+    double nodes = 0.0, items = 0.0;
+    for (const Node& node : nodes_) nodes += halfPerimeter(node.box);
+    for (const Box& box : boxes_) items += halfPerimeter(box);
+    return items > 0.0 ? nodes / items : 1.0;
+  }
+
   std::vector<Box> boxes_;
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
+  double builtLooseness_ = 1.0;
 };
 
 const glm::dvec3& corner(const BarHingeModel& model, const std::vector<glm::dvec3>& x,
@@ -245,12 +286,15 @@ BoxTree barTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, do
 
 // The pairs of bars (i < j, no end in common, not excluded) whose segments are nearer than
 // `within`, sorted.
+// `tree`: the bars' boxes at x inflated by `within` (built here when null).
 std::vector<ContactPair> edgePairsWithin(const BarHingeModel& model,
                                          const std::vector<glm::dvec3>& x, double within,
-                                         double exclusion) {
+                                         double exclusion, const BoxTree* given = nullptr) {
   const std::size_t m = model.bars.size();
   if (m == 0) return {};
-  const BoxTree tree = barTree(model, x, within);
+  BoxTree built;
+  if (!given) built = barTree(model, x, within);
+  const BoxTree& tree = given ? *given : built;
   std::vector<std::vector<std::uint32_t>> found(m);
   forEachIndex(m, [&](std::size_t bar) {
     const std::uint32_t i = static_cast<std::uint32_t>(bar);
@@ -293,30 +337,29 @@ std::vector<ContactPair> collectPairs(const BarHingeModel& model, const BoxTree&
   return pairs;
 }
 
-BoxTree triangleTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
-                     const std::vector<glm::dvec3>* step = nullptr) {
-  std::vector<Box> boxes(model.triangles.size());
-  for (std::size_t t = 0; t < boxes.size(); ++t) {
-    for (std::uint32_t v : model.triangles[t]) {
-      boxes[t].add(x[v]);
-      if (step) boxes[t].add(x[v] + (*step)[v]);
-    }
-    boxes[t].inflate(inflation);
-  }
-  return BoxTree(std::move(boxes));
-}
-
-BoxTree barTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
-                const std::vector<glm::dvec3>* step) {
-  std::vector<Box> boxes(model.bars.size());
+// Each element's box (its corners, and with `step` the corners moved by it), inflated.
+template <typename Elements>
+std::vector<Box> elementBoxes(const Elements& elements, const std::vector<glm::dvec3>& x,
+                              double inflation, const std::vector<glm::dvec3>* step) {
+  std::vector<Box> boxes(elements.size());
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    for (std::uint32_t v : model.bars[i]) {
+    for (std::uint32_t v : elements[i]) {
       boxes[i].add(x[v]);
       if (step) boxes[i].add(x[v] + (*step)[v]);
     }
     boxes[i].inflate(inflation);
   }
-  return BoxTree(std::move(boxes));
+  return boxes;
+}
+
+BoxTree triangleTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
+                     const std::vector<glm::dvec3>* step = nullptr) {
+  return BoxTree(elementBoxes(model.triangles, x, inflation, step));
+}
+
+BoxTree barTree(const BarHingeModel& model, const std::vector<glm::dvec3>& x, double inflation,
+                const std::vector<glm::dvec3>* step) {
+  return BoxTree(elementBoxes(model.bars, x, inflation, step));
 }
 
 // The barrier b(s) and its first two derivatives (ContactParameters; header).
@@ -384,11 +427,14 @@ namespace {
 
 // The pairs (vertex, triangle not its own) nearer than `within`, those nearer than `exclusion` on
 // the flat sheet left out.
+// `tree`: the triangles' boxes at the positions inflated by `within` (built here when null).
 std::vector<ContactPair> pairsWithin(const BarHingeModel& model,
                                      const std::vector<glm::dvec3>& positions, double within,
-                                     double exclusion) {
+                                     double exclusion, const BoxTree* given = nullptr) {
   if (model.triangles.empty()) return {};
-  const BoxTree tree = triangleTree(model, positions, within);
+  BoxTree built;
+  if (!given) built = triangleTree(model, positions, within);
+  const BoxTree& tree = given ? *given : built;
   return collectPairs(
       model, tree,
       [&](std::uint32_t v) {
@@ -710,6 +756,12 @@ namespace {
 // often, and a sheet folded flat lists no more pairs (contact22, docs/performance.md).
 constexpr double kSkinScale = 2.0;
 
+// A search refits the list's trees (ContactTrees) while their nodes' half-perimeters, summed over
+// their items', stay within this factor of the sum when built; beyond it builds them anew. A
+// folding sheet's boxes move apart from their siblings, and a stale tree visits more nodes per
+// query; a refit costs a pass over the nodes, a build sorts every level.
+constexpr double kRefitStaleness = 1.5;
+
 // Pairs a task of the list's passes takes.
 constexpr std::size_t kPairGrain = 2048;
 
@@ -828,6 +880,51 @@ void indexContactList(const BarHingeModel& model, const std::vector<glm::dvec3>&
 
 }  // namespace
 
+// The dynamic list's trees (ContactList::trees): the triangles' and the bars' boxes inflated by
+// what the search reaches, as of the last search.
+struct ContactTrees {
+  BoxTree triangles, bars;
+};
+
+namespace {
+
+// findContactPairs(model, positions, reach) with the list's trees: refitted to the positions
+// (their splits kept) while their staleness stays within kRefitStaleness, built anew otherwise.
+std::vector<ContactPair> searchContactList(const BarHingeModel& model,
+                                           const std::vector<glm::dvec3>& positions, double reach,
+                                           ContactList& list) {
+  const double within = model.contact.thickness + reach;  // findContactPairs' sum
+  if (!list.trees)
+    list.trees = std::make_shared<ContactTrees>();
+  else if (list.trees.use_count() > 1)  // a copied state's list: refit a copy of its own
+    list.trees = std::make_shared<ContactTrees>(*list.trees);
+  ContactTrees& trees = *list.trees;
+  // Returns whether it refitted.
+  const auto fit = [&](BoxTree& tree, std::vector<Box> boxes) {
+    if (tree.size() == boxes.size() && !boxes.empty()) {
+      tree.refit(std::move(boxes));
+      if (tree.staleness() <= kRefitStaleness) return true;
+      tree = BoxTree(tree.releaseBoxes());
+      return false;
+    }
+    tree = BoxTree(std::move(boxes));
+    return false;
+  };
+  bool refitted = fit(trees.triangles, elementBoxes(model.triangles, positions, within, nullptr));
+  std::vector<ContactPair> pairs =
+      pairsWithin(model, positions, within, model.contact.exclusion, &trees.triangles);
+  if (model.contact.edgePairs) {
+    refitted = fit(trees.bars, elementBoxes(model.bars, positions, within, nullptr)) && refitted;
+    const std::vector<ContactPair> edges =
+        edgePairsWithin(model, positions, within, model.contact.exclusion, &trees.bars);
+    pairs.insert(pairs.end(), edges.begin(), edges.end());
+  }
+  list.refits += refitted;
+  return pairs;
+}
+
+}  // namespace
+
 bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3>& positions,
                         ContactList& list) {
   if (!model.contact.enabled) {
@@ -858,7 +955,7 @@ bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3
     stale = list.moved > 0.5 * skin;
   }
   if (!stale) return false;
-  list.pairs = findContactPairs(model, positions, model.contact.activation + skin);
+  list.pairs = searchContactList(model, positions, model.contact.activation + skin, list);
   list.builtAt = positions;
   list.moved = 0.0;
   ++list.rebuilds;

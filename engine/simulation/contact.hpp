@@ -50,6 +50,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -168,17 +169,24 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
 // when found: a step evaluates only the pairs whose distance then, less twice the largest motion
 // since, is within reach of the barrier (the others cannot push), each on all cores, and each
 // vertex sums its pairs' forces in pair order (its slots, found with the list), also on all cores:
-// the same bits as summing pair by pair, for any thread count. Inputs: the model (contact enabled)
-// and the positions; `rebuilds` counts the searches. Limits: a sheet whose vertices all move (a
-// flap swinging as it folds) is searched again every skin / 2 of motion even where no layer is
-// near; the search builds its tree of triangles anew each time.
+// the same bits as summing pair by pair, for any thread count. A search after the first refits the
+// trees of the last (the triangles' and the bars' boxes, the splits kept: the same pairs as a tree
+// built anew) while the splits stay fit (kRefitStaleness, contact.cpp), and builds them anew
+// otherwise. Inputs: the model (contact enabled) and the positions; `rebuilds` counts the searches,
+// `refits` those that refitted. Limits: a sheet whose vertices all move (a flap swinging as it
+// folds) is searched again every skin / 2 of motion even where no layer is near; every listed pair
+// within reach is evaluated each step.
+struct ContactTrees;  // contact.cpp: the search's trees, kept to be refitted
 struct ContactList {
   std::vector<ContactPair> pairs;
   std::vector<glm::dvec3> builtAt;
   std::size_t rebuilds = 0;
-  std::vector<double> builtDistance;  // per pair: its distance when found
-  double moved = 0.0;                 // the largest motion of a vertex since then
-  double skin = 0.0;                  // the skin it was found with
+  std::size_t refits = 0;               // of the searches, those that refitted every tree
+  std::vector<double> builtDistance;    // per pair: its distance when found
+  std::vector<double> motion;           // per vertex: its motion since then
+  double moved = 0.0;                   // the largest motion of a vertex since then
+  double skin = 0.0;                    // the skin it was found with
+  std::shared_ptr<ContactTrees> trees;  // shared by copies of a state until one searches
   // Scratch of the forces: per pair its four vertices' forces and whether it pushes; per vertex
   // with pairs (touched) its run of slots (pair * 4 + corner) in pair order.
   std::vector<std::array<glm::dvec3, 4>> forces;
