@@ -183,7 +183,6 @@ struct ContactList {
   std::size_t rebuilds = 0;
   std::size_t refits = 0;               // of the searches, those that refitted every tree
   std::vector<double> builtDistance;    // per pair: its distance when found
-  std::vector<double> motion;           // per vertex: its motion since then
   double moved = 0.0;                   // the largest motion of a vertex since then
   double skin = 0.0;                    // the skin it was found with
   std::shared_ptr<ContactTrees> trees;  // shared by copies of a state until one searches
