@@ -754,6 +754,44 @@ TEST(CreasePatternGraph, ReadingIsDeterministic) {
   }
 }
 
+// An SVG circle is 64 segments; the constrained Delaunay triangulation of its inside from its own
+// points alone is a fan of lenses (three points of the circle, as low as its sagitta over two or
+// three segments), which collapse when the circle folds (the static solver's residual at 1e5,
+// NOT settled). Inside a region so bounded points are added: no triangle keeps all three corners
+// on the circle, every triangle inside it is well shaped, and the circle keeps its 64 creases.
+TEST(CreasePatternGraph, ACircleCreaseIsNotTriangulatedFromItsOwnPointsAlone) {
+  const CreasePattern p = readSvgCreasePatternText(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="60mm" height="60mm" viewBox="0 0 60 60">
+      <rect width="60" height="60" stroke="black" fill="none"/>
+      <circle cx="30" cy="30" r="16" stroke="blue" stroke-opacity="0.5" fill="none"/></svg>)",
+      "circle.svg");
+  expectValid(p);
+  const glm::dvec2 centre(30.0, -30.0);
+  const auto onCircle = [&](std::uint32_t v) {
+    return std::abs(glm::distance(p.vertices[v], centre) - 16.0) < 1e-9;
+  };
+  std::size_t creases = 0;
+  for (const CreasePatternEdge& e : p.edges)
+    if (e.assignment == CreaseAssignment::Valley) {
+      ++creases;
+      EXPECT_TRUE(onCircle(e.a) && onCircle(e.b));
+    }
+  EXPECT_EQ(creases, 64u);
+  std::size_t inside = 0;
+  for (const auto& t : p.triangles) {
+    EXPECT_FALSE(onCircle(t[0]) && onCircle(t[1]) && onCircle(t[2]));
+    const glm::dvec2 a = p.vertices[t[0]], b = p.vertices[t[1]], c = p.vertices[t[2]];
+    if (glm::distance((a + b + c) / 3.0, centre) >= 16.0) continue;
+    ++inside;
+    // Twice the area over the longest side squared: 0.87 equilateral; a lens here is 0.07.
+    const double longest =
+        std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
+    const glm::dvec2 u = b - a, w = c - a;
+    EXPECT_GT(std::abs(u.x * w.y - u.y * w.x) / (longest * longest), 0.2);
+  }
+  EXPECT_GT(inside, 64u);
+}
+
 TEST(CreasePatternGraph, ValidateCatchesBrokenPatterns) {
   CreasePattern p = readFoldCreasePattern(kPatterns / "single_crease.fold");
   expectValid(p);
