@@ -142,11 +142,13 @@ struct Split {
 // solver's residual stood at 1e5 to 1e8 (NOT settled). Every paper region that holds such a
 // triangle (all three corners on one smooth chain of lines: degree-2 vertices whose lines keep
 // their assignment and angle and turn by less than kSmoothTurnDegrees) gets a triangular lattice
-// of points at the spacing of its lines' median length, none nearer than half a spacing to its
-// lines, so its triangles reach across it. Regions without such a triangle are left as they are,
+// of points, kLatticeSpacing times its lines' median length apart (1 tripled the iterations'
+// CPU for settled energies within 0.2 to 4%), none nearer than half a spacing to its lines,
+// so its triangles reach across it. Regions without such a triangle are left as they are,
 // bit for bit. Returns the points added (appended to vertices, numbered after them).
 constexpr double kSmoothTurnDegrees = 30.0;
 constexpr std::size_t kMaxAddedPoints = 200'000;
+constexpr double kLatticeSpacing = 2.0;  // times the median length of the region's lines
 
 std::size_t addPointsInsideCurves(Cdt& cdt, std::vector<glm::dvec2>& vertices,
                                   const std::vector<CreaseLine>& lines,
@@ -224,7 +226,7 @@ std::size_t addPointsInsideCurves(Cdt& cdt, std::vector<glm::dvec2>& vertices,
     std::vector<double> lengths;
     for (const auto& [a, b] : sides) lengths.push_back(glm::distance(a, b));
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-    double spacing = lengths[lengths.size() / 2];
+    double spacing = kLatticeSpacing * lengths[lengths.size() / 2];
     const glm::dvec2 size = high - low;
     // Within the budget of points (a region far larger than its lines' spacing).
     const double rows = size.y / (spacing * 0.8660254037844386);
