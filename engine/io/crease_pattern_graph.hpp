@@ -92,6 +92,10 @@ struct TriangulateOptions {
 // triangles (counter-clockwise), Flat edges for the triangulation, creases on the paper's border
 // read as Boundary (a note), Cut lines opened (and inner Boundary lines, see above), a line
 // through another vertex split there (a note).
+// A paper region whose triangulation has a triangle on three points of one smooth chain of lines
+// (the inside of a circle drawn as segments, which would be a fan of lenses that collapse when it
+// folds) gets a triangular lattice of points inside it, numbered after the drawing's (a note);
+// every other region takes no new point.
 // Throws CreasePatternError: "edge 5 has no face" (a line outside the paper), "no paper: ...",
 // a given face whose sides are not edges, lines that cross after all.
 CreasePattern triangulateCreaseDrawing(const CreaseDrawing& drawing,
