@@ -16,8 +16,9 @@ blue), and the fold angle as stroke-opacity (1 is 180 degrees):
                      relative and absolute), inner valley, outer mountain;
   rings_scaled.svg   two circles inside a <g transform="translate() scale()">, a 0.5 opacity style
                      attribute instead of stroke-opacity;
-  rings_pleat_hole.svg  four alternating rings around a cut-out hole (green <circle> cut), the
-                     circular pleat with its middle removed.
+  rings_pleat_hole.svg  four alternating rings around a green <circle> cut, the circular pleat
+                     with its middle cut free (read as Origami Simulator reads a closed cut: the
+                     inside stays paper, a loose disc).
 """
 
 import math
