@@ -15,6 +15,7 @@
 #include "engine/simulation/bar_hinge_model.hpp"
 #include "engine/simulation/contact.hpp"
 #include "engine/simulation/contact_advance.hpp"
+#include "engine/simulation/contact_lanes.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/layer_order.hpp"
 #include "engine/simulation/static_solver.hpp"
@@ -581,6 +582,102 @@ TEST(Contact, DynamicStepsWithContactGiveTheSameStateOnAnyThreadCount) {
                              one.velocities.size() * sizeof(glm::dvec3)));
     EXPECT_GT(two.contactPairs.rebuilds, 1u);
   }
+}
+
+// The dynamic list's distance lanes (contact_lanes.hpp) give nearestTriangleWeights' bits, the
+// nearest point's offset and its length as contactTerm computes them, in every Voronoi region:
+// random triangles (some slivers, some degenerate: a corner doubled, three corners in a line,
+// three in one point) and points placed in each corner's, each edge's and the face's region, on
+// the planes between regions (p - a square to an edge: a dot product exactly 0 or the region's
+// test at its edge) and at random, 1 to 8 lanes a block.
+TEST(Contact, TheDistanceLanesGiveNearestTriangleWeightsBitsInEveryRegion) {
+  std::mt19937 random(39);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), share(0.0, 1.0);
+  std::uniform_int_distribution<int> kind(0, 9), lanes(1, static_cast<int>(kContactLanes));
+  const auto vector = [&] { return glm::dvec3(unit(random), unit(random), unit(random)); };
+  std::vector<glm::dvec3> x;
+  std::vector<std::array<std::uint32_t, 4>> pairs;
+  for (int n = 0; n < 20000; ++n) {
+    const glm::dvec3 a = 0.1 * vector();
+    glm::dvec3 b = a + 0.01 * vector(), c = a + 0.01 * vector();
+    switch (n % 10) {
+      case 6:  // a sliver: c off the line ab by 1e-9 of it
+        c = a + share(random) * (b - a) + 1e-11 * vector();
+        break;
+      case 7:  // a corner doubled
+        c = (kind(random) % 2 == 0) ? a : b;
+        break;
+      case 8:  // three corners in a line
+        c = a + 2.0 * (b - a);
+        break;
+      case 9:  // one point
+        b = a;
+        c = a;
+        break;
+      default:
+        break;
+    }
+    const glm::dvec3 normal = glm::cross(b - a, c - a);
+    const glm::dvec3 corners[3] = {a, b, c};
+    glm::dvec3 p;
+    const glm::dvec3 lift = 1e-3 * unit(random) * vector();
+    switch (kind(random)) {
+      case 0:  // beyond a corner
+        p = corners[n % 3] + 0.01 * vector();
+        break;
+      case 1:  // beyond an edge, square to it through a point on it
+      case 2: {
+        const glm::dvec3 e0 = corners[n % 3], e1 = corners[(n + 1) % 3];
+        const glm::dvec3 along = e0 + share(random) * (e1 - e0);
+        p = along + 0.01 * glm::cross(e1 - e0, normal) * unit(random) + lift;
+        break;
+      }
+      case 3:  // over the face
+        p = a + share(random) * (b - a) + 0.5 * share(random) * (c - a) + lift;
+        break;
+      case 4:  // on a corner's boundary plane: p - a square to ab (d1 = 0 up to rounding)
+        p = a + glm::cross(b - a, normal) * unit(random) + lift;
+        break;
+      case 5:  // exactly at a corner or on an edge
+        p = kind(random) % 2 == 0 ? corners[n % 3] : 0.5 * (corners[n % 3] + corners[(n + 1) % 3]);
+        break;
+      default:  // anywhere near
+        p = a + 0.02 * vector();
+        break;
+    }
+    const std::uint32_t first = static_cast<std::uint32_t>(x.size());
+    x.insert(x.end(), {p, a, b, c});
+    pairs.push_back({first, first + 1, first + 2, first + 3});
+  }
+  // Which region the reference took: a corner (one weight 1), an edge (one 0), the face (none).
+  std::array<int, 3> regions{};
+  std::size_t compared = 0;
+  for (std::size_t begin = 0; begin < pairs.size();) {
+    const std::size_t count = std::min<std::size_t>(lanes(random), pairs.size() - begin);
+    double out[7][kContactLanes];
+    triangleDistanceLanes(x.data(), pairs.data() + begin, count, out);
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& v = pairs[begin + k];
+      const glm::dvec3 &p = x[v[0]], &a = x[v[1]], &b = x[v[2]], &c = x[v[3]];
+      const glm::dvec3 w = nearestTriangleWeights(p, a, b, c);
+      const glm::dvec3 away = p - (w.x * a + w.y * b + w.z * c);
+      const double expected[7] = {away.x, away.y, away.z, glm::length(away), w.x, w.y, w.z};
+      for (int j = 0; j < 7; ++j) {
+        EXPECT_EQ(std::memcmp(&out[j][k], &expected[j], sizeof(double)), 0)
+            << "pair " << begin + k << " output " << j << ": " << out[j][k] << " against "
+            << expected[j];
+      }
+      const int zeros = (w.x == 0.0) + (w.y == 0.0) + (w.z == 0.0);
+      ++regions[zeros == 2 ? 0 : (zeros == 1 ? 1 : 2)];
+      ++compared;
+    }
+    begin += count;
+  }
+  EXPECT_EQ(compared, pairs.size());
+  // Every kind of region met, each many times.
+  EXPECT_GT(regions[0], 1000) << "corners";
+  EXPECT_GT(regions[1], 1000) << "edges";
+  EXPECT_GT(regions[2], 1000) << "faces";
 }
 
 // A search after the first refits the list's trees to the positions, their splits kept, and

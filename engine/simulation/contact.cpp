@@ -1,5 +1,6 @@
 #include "engine/simulation/contact.hpp"
 #include "engine/simulation/contact_advance.hpp"
+#include "engine/simulation/contact_lanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,6 @@
 
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
-#include "engine/simulation/lane_clones.hpp"
 
 namespace curvefold {
 
@@ -486,14 +486,14 @@ glm::dvec3 pairNormal(const glm::dvec3& away, double d, const glm::dvec3& fallba
 }
 
 // A vertex-triangle pair's term from its nearest point's weights w, p minus that point (away)
-// and its length d: contactTerm's and triangleLanes' one copy.
+// and its length d: contactTerm's and triangleDistanceLanes' one copy.
 bool triangleTerm(const ContactParameters& c, const ContactPair& pair,
                   const std::array<std::uint32_t, 3>& tri, const glm::dvec3& w,
                   const glm::dvec3& away, double d, const glm::dvec3& a, const glm::dvec3& b,
                   const glm::dvec3& cc, ContactTerm& term, bool dynamic) {
   const double s = d - c.thickness;
   if (s >= c.activation) return false;
-  const glm::dvec3 normal = pairNormal(away, d, glm::cross(b - a, cc - a));
+  const glm::dvec3 normal = d > 0.0 ? away / d : pairNormal(away, d, glm::cross(b - a, cc - a));
   term.vertices = {pair.vertex, tri[0], tri[1], tri[2]};
   term.gradient = {normal, -w.x * normal, -w.y * normal, -w.z * normal};
   barrier(c, s, term.energy, term.slope, term.curvature, dynamic);
@@ -765,81 +765,6 @@ constexpr double kRefitStaleness = 1.5;
 // Pairs a task of the list's passes takes.
 constexpr std::size_t kPairGrain = 2048;
 
-// Vertex-triangle pairs a lane block takes.
-constexpr std::size_t kContactLanes = 8;
-
-// `count` (<= kContactLanes) vertex-triangle pairs, each its four vertices (p, then the triangle's
-// a, b, c), a lane each (the last repeated to fill the block): per pair nearestTriangleWeights
-// (result[4..6]), p minus the nearest point (result[0..2]) and its length (result[3]), as
-// contactTerm computes them.
-// Every Voronoi region's weights are computed and the first region whose test holds is taken,
-// in nearestTriangleWeights' order and with its expressions (a division by zero only in a region
-// not taken), so the bits are its own; without branches (the tests joined by &, not &&, which
-// branches) the loop vectorizes.
-CURVEFOLD_LANE_CLONES void triangleLanes(const glm::dvec3* x,
-                                         const std::array<std::uint32_t, 4>* vertices,
-                                         std::size_t count, double (&result)[7][kContactLanes]) {
-  // Local arrays, filled here: the loop vectorizes over arrays of its own.
-  alignas(64) double in[12][kContactLanes], out[7][kContactLanes];
-  for (std::size_t k = 0; k < kContactLanes; ++k)
-    for (int j = 0; j < 4; ++j)
-      for (int axis = 0; axis < 3; ++axis)
-        in[3 * j + axis][k] = x[vertices[std::min(k, count - 1)][j]][axis];
-  for (std::size_t k = 0; k < kContactLanes; ++k) {
-    const glm::dvec3 p(in[0][k], in[1][k], in[2][k]), a(in[3][k], in[4][k], in[5][k]);
-    const glm::dvec3 b(in[6][k], in[7][k], in[8][k]), c(in[9][k], in[10][k], in[11][k]);
-    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a, bp = p - b, cp = p - c;
-    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
-    const double sum = va + vb + vc;
-    const double v = vb / sum, w = vc / sum;  // the face
-    double w0 = 1.0 - v - w, w1 = v, w2 = w;
-    const bool degenerate = !(sum > 0.0);  // its first corner
-    w0 = degenerate ? 1.0 : w0;
-    w1 = degenerate ? 0.0 : w1;
-    w2 = degenerate ? 0.0 : w2;
-    const double onBc = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    const bool bc = (va <= 0.0) & ((d4 - d3) >= 0.0) & ((d5 - d6) >= 0.0);
-    w0 = bc ? 0.0 : w0;
-    w1 = bc ? 1.0 - onBc : w1;
-    w2 = bc ? onBc : w2;
-    const double onAc = d2 / (d2 - d6);
-    const bool acEdge = (vb <= 0.0) & (d2 >= 0.0) & (d6 <= 0.0);
-    w0 = acEdge ? 1.0 - onAc : w0;
-    w1 = acEdge ? 0.0 : w1;
-    w2 = acEdge ? onAc : w2;
-    const bool cCorner = (d6 >= 0.0) & (d5 <= d6);
-    w0 = cCorner ? 0.0 : w0;
-    w1 = cCorner ? 0.0 : w1;
-    w2 = cCorner ? 1.0 : w2;
-    const double onAb = d1 / (d1 - d3);
-    const bool abEdge = (vc <= 0.0) & (d1 >= 0.0) & (d3 <= 0.0);
-    w0 = abEdge ? 1.0 - onAb : w0;
-    w1 = abEdge ? onAb : w1;
-    w2 = abEdge ? 0.0 : w2;
-    const bool bCorner = (d3 >= 0.0) & (d4 <= d3);
-    w0 = bCorner ? 0.0 : w0;
-    w1 = bCorner ? 1.0 : w1;
-    w2 = bCorner ? 0.0 : w2;
-    const bool aCorner = (d1 <= 0.0) & (d2 <= 0.0);
-    w0 = aCorner ? 1.0 : w0;
-    w1 = aCorner ? 0.0 : w1;
-    w2 = aCorner ? 0.0 : w2;
-    const glm::dvec3 away = p - (w0 * a + w1 * b + w2 * c);
-    out[0][k] = away.x;
-    out[1][k] = away.y;
-    out[2][k] = away.z;
-    out[3][k] = glm::length(away);
-    out[4][k] = w0;
-    out[5][k] = w1;
-    out[6][k] = w2;
-  }
-  for (int j = 0; j < 7; ++j)
-    for (std::size_t k = 0; k < count; ++k) result[j][k] = out[j][k];
-}
-
 // The pair's distance (vertex to triangle, or segment to segment).
 double pairDistance(const BarHingeModel& model, const std::vector<glm::dvec3>& x,
                     const ContactPair& pair) {
@@ -983,7 +908,7 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
     std::array<std::uint32_t, 4> vertices[kContactLanes];
     std::size_t lanePair[kContactLanes], filled = 0;
     const auto runLanes = [&] {
-      triangleLanes(x.data(), vertices, filled, out);
+      triangleDistanceLanes(x.data(), vertices, filled, out);
       for (std::size_t k = 0; k < filled; ++k) {
         const ContactPair& pair = list.pairs[lanePair[k]];
         const auto& tri = model.triangles[pair.triangle];

@@ -1,9 +1,9 @@
 // CURVEFOLD_LANE_CLONES: the attribute that gives a lane loop (a kernel written on local arrays,
 // one element a lane, so the compiler vectorizes it) an AVX2 copy beside the default one, chosen
 // by the loader (an ifunc). Used by the dynamic step's bar and hinge lanes (dynamic_solver.cpp)
-// and the contact list's distance lanes (contact.cpp); their sources are compiled without errno
-// on math calls, without floating-point traps and without contraction (CMakeLists.txt), so each
-// copy gives the scalar code's bits. ThreadSanitizer's runtime is not up when the loader runs
+// and the contact list's distance lanes (contact_lanes.cpp); their sources are compiled without
+// errno on math calls, without floating-point traps and without contraction (CMakeLists.txt), so
+// each copy gives the scalar code's bits. ThreadSanitizer's runtime is not up when the loader runs
 // ifunc resolvers (every test binary crashed at start), so under it only the default copy is built.
 #pragma once
 
