@@ -631,7 +631,9 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
           distanceText(ended(i).hausdorff, ended(i).chamfer, ended(i).diagonal, metres) +
           (i == keep ? ", nearer by both: kept" : "");
     }
-    if (keep == 0) {
+    if (fits.size() == 1) {
+      std::cout << runnersUp.fromLine << "; its runners-up not folded (interrupted)" << std::endl;
+    } else if (keep == 0) {
       std::cout << runnersUp.fromLine << "; kept over the runners-up it was folded beside, none "
                 << "nearer by both measures: it ended at "
                 << distanceText(ended(0).hausdorff, ended(0).chamfer, ended(0).diagonal, metres)
