@@ -114,7 +114,7 @@ constexpr double kTubeRingsGain = 0.6;
 // model's ratio of the two lies within this factor of the rule's threshold either way: the
 // steep cups' disks were chosen at ratios 0.55-0.70 (kRingsGain 0.75), of which the cone's fit
 // ended nearer by both measures on the tumbler (0.70) and the marched beaker (0.55), farther on
-// the deep cup (0.67) and the marched mug (0.58); bowls' disks lie at 0.34-0.39, clear of it
+// the deep cup (0.67) and the marched mug (0.58); bowls' disks lie at 0.13-0.39, clear of it
 // (docs/performance.md, portfolio24).
 constexpr double kRunnerUpMargin = 1.5;
 // `--from cylinder`: the alternative tube's radius, as a share of the widest.

@@ -93,7 +93,7 @@ struct StartChoice {
   // choice's model within kRunnerUpMargin of the rule's own threshold (a disk's rings within 0.5
   // of the nearest sheet, where the rule takes the disk under 0.75; a vase's widest tube within
   // 0.9 of the cone's rings, where it takes the tube under 0.6); a bowl's disk (its rings within
-  // 0.34-0.39 of the cone) has none. `--from cylinder`: the tube at 0.9 of the widest radius
+  // 0.13-0.39 of the cone) has none. `--from cylinder`: the tube at 0.9 of the widest radius
   // (docs/performance.md, vase23: nearer by both on 4 of 8 vases). Empty when a symmetry is asked
   // for, or the target was folded from a catalogue sheet.
   std::vector<RunnerUpStart> runnersUp;
