@@ -9,7 +9,9 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -69,9 +71,35 @@ TriangleMesh shapeOf(const std::string& path) {
 // step toward a saddle (the tube rings' probe times its batches by the wall clock's moment,
 // timed_batches.hpp, so it keeps `deadline`). `chosen`: set when the sheet was chosen or sized
 // here (no .obj and no parameters given), so the fit may move it whole (FitOptions::mayPlaceStart).
+// "cone --base_radius 0.08 ...": a start's kind (a placed oval disk, parabola or bent sheet in
+// words) and the parameters it was sized to.
+std::string startText(const std::string& surface, const SurfaceParameters& parameters,
+                      bool placed) {
+  std::string text = placed && surface == "swept_curve"   ? "a swept parabola"
+                     : placed && surface == "ellipse"     ? "a disk stretched to an ellipse"
+                     : placed && surface == "bent_square" ? "a square bent into a cylinder patch"
+                     : placed && surface == "bent_rectangle"
+                         ? "a rectangle bent into a cylinder patch"
+                         : surface;
+  for (const auto& [name, value] : parameters) {
+    char number[32];
+    std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
+    text += number;
+  }
+  return text;
+}
+
+// The starts `fit` folds besides the rule's choice (StartChoice::runnersUp), and the `from:`
+// line, held back where there are any: it names the start whose fit was kept, after them.
+struct StartRunnersUp {
+  std::vector<RunnerUpStart> starts;
+  std::string fromLine;  // the rule's choice, as the line would have said it
+};
+
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
                    const std::string& output, const Deadline& deadline, const Deadline& work,
-                   std::shared_ptr<const TubeChains>& tubeChains, bool& chosen) {
+                   std::shared_ptr<const TubeChains>& tubeChains, bool& chosen,
+                   StartRunnersUp& runnersUp) {
   bool parametersGiven = false;
   for (const auto& [name, value] : from.values)
     parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
@@ -119,31 +147,24 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
       design.surface = GeneratedSurface{start.surface, start.parameters};
-    std::string text =
-        "from: " + (start.placed && start.surface == "swept_curve" ? "a swept parabola"
-                    : start.placed && start.surface == "ellipse" ? "a disk stretched to an ellipse"
-                    : start.placed && start.surface == "bent_square"
-                        ? "a square bent into a cylinder patch"
-                    : start.placed && start.surface == "bent_rectangle"
-                        ? "a rectangle bent into a cylinder patch"
-                        : start.surface);
-    for (const auto& [name, value] : start.parameters) {
-      char number[32];
-      std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);
-      text += number;
-    }
-    std::cout << text
-              << (start.placed ? " (sized and placed on the target: " + start.placement + ")"
-                  : start.creased && !start.parameters.empty()
-                      ? std::string(" (the sheet the target unfolds to: it has creases, and "
-                                    "another area than the defaults')")
-                  : start.creased ? std::string(" (its defaults: the target has creases)")
-                  : start.symmetryDefaults
-                      ? " (its defaults: no sheet sized to the target has " + from.symmetry + ")"
-                  : start.parameters.empty()
-                      ? std::string(" (its defaults: nearer the target than one sized to it)")
-                      : std::string(" (sized to the target)"))
-              << std::endl;
+    std::ostringstream line;
+    line << "from: " << startText(start.surface, start.parameters, start.placed.has_value())
+         << (start.placed ? " (sized and placed on the target: " + start.placement + ")"
+             : start.creased && !start.parameters.empty()
+                 ? std::string(" (the sheet the target unfolds to: it has creases, and "
+                               "another area than the defaults')")
+             : start.creased ? std::string(" (its defaults: the target has creases)")
+             : start.symmetryDefaults
+                 ? " (its defaults: no sheet sized to the target has " + from.symmetry + ")"
+             : start.parameters.empty()
+                 ? std::string(" (its defaults: nearer the target than one sized to it)")
+                 : std::string(" (sized to the target)"));
+    // A symmetric design keeps its start (the runners-up seldom have the symmetry).
+    if (!symmetric) runnersUp.starts = std::move(start.runnersUp);
+    if (runnersUp.starts.empty())
+      std::cout << line.str() << std::endl;
+    else
+      runnersUp.fromLine = line.str();
     if (firstStep)
       std::cout << "start chosen by its first step: "
                 << (firstStep->grown ? "the paper that step folds away given back; " : "")
@@ -389,11 +410,12 @@ std::unique_ptr<FoldFitter> makeFitter(const FitCommandOptions& options) {
 }
 
 // The search's progress at each depth.
-void printSearching(std::size_t depth, double distance, double seconds, bool metres) {
+void printSearching(std::ostream& out, std::size_t depth, double distance, double seconds,
+                    bool metres) {
   char text[96];
   std::snprintf(text, sizeof text, "searching: %zu folds, best %s (approximate), %.1f s", depth,
                 (metres ? millimetresText : unitsText)(distance).c_str(), seconds);
-  std::cout << text << std::endl;
+  out << text << std::endl;
 }
 
 // The log's last line: how the fit ended (a line of its own kind, after the folds').
@@ -474,71 +496,167 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
             : Deadline{};
   std::shared_ptr<const TubeChains> tubeChains;
   bool chosen = false;
+  StartRunnersUp runnersUp;
   Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
-                              startShare, tubeChains, chosen);
-  const Sheet initial = initialSheet(design, options.output);
-  FoldSession session(initial);
-  if (!design.symmetry.empty()) session.setSymmetry(parseSymmetry(design.symmetry, initial));
-  try {
-    fitter->checkAgainst(initial);
-  } catch (const InvalidTarget& e) {
-    throw UsageError(options.target + ": " + e.what());
-  }
-
-  std::vector<FoldLogEntry> log;
+                              startShare, tubeChains, chosen, runnersUp);
   const bool metres = lengthsInMetres(fitter->targetDiagonal());
-  std::size_t trianglesBefore = initial.triangleCount();
-  std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
-  FitOptions fit;
-  fit.maxFolds = options.folds;
-  fit.seconds = timed ? budget : std::numeric_limits<double>::infinity();
-  fit.started = started;
-  fit.maxEvaluations = options.evaluations;
-  fit.tubeChains = tubeChains;
-  fit.mayPlaceStart = chosen;
-  fit.cancelled = &InterruptGuard::flag();
-  fit.progress = [&](const FitProgress& step) {
-    if (step.fold == 0) {
-      std::cout << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres)
-                << " of the target's " << step.diagonal
-                << (metres ? " m diagonal" : "-unit diagonal") << std::endl;
-      return;
+
+  // One start's fit: its session, result, log and the lines it printed (held back while runners-up
+  // are folded: only the kept one's are printed).
+  struct StartFit {
+    Design design;
+    std::unique_ptr<FoldSession> session;
+    FitResult result;
+    std::vector<FoldLogEntry> log;
+    std::ostringstream lines;
+  };
+  // The rule's choice, then its runners-up (runnersUp.starts); each gets an equal share of what is
+  // left of --time and --evaluations, cumulatively: what one leaves, the next may use. A fit's
+  // first step (its rings) is seldom cut by the count (checked between steps), so a share repeats
+  // what the whole count made where that step used it all (every measured target, docs/
+  // performance.md, portfolio24).
+  const std::size_t starts = 1 + runnersUp.starts.size();
+  const double searchFrom =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::uint64_t evaluationsUsed = 0;
+  auto fitFrom = [&](Design from, std::size_t index,
+                     const std::shared_ptr<const TubeChains>& chains, bool live) {
+    auto out = std::make_unique<StartFit>();
+    out->design = std::move(from);
+    const Sheet initial = initialSheet(out->design, options.output);
+    out->session = std::make_unique<FoldSession>(initial);
+    FoldSession& session = *out->session;
+    if (!out->design.symmetry.empty())
+      session.setSymmetry(parseSymmetry(out->design.symmetry, initial));
+    try {
+      fitter->checkAgainst(initial);
+    } catch (const InvalidTarget& e) {
+      throw UsageError(options.target + ": " + e.what());
     }
-    const std::size_t first = foldsBefore, count = session.foldCount() - foldsBefore;
-    foldsBefore = session.foldCount();
-    log.push_back(logEntryOfStep(session, step, first, count, trianglesBefore));
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
-    std::cout << (step.tucked ? "corners tucked under: folds " + std::to_string(first + 1) + "-" +
-                                    std::to_string(first + count)
-                              : stepText(session, first, count))
-              << ", " << seconds << ": "
-              << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
+    std::ostream& print = live ? std::cout : out->lines;
+    std::size_t trianglesBefore = initial.triangleCount();
+    std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
+    FitOptions fit;
+    fit.maxFolds = options.folds;
+    const double share = static_cast<double>(index + 1) / static_cast<double>(starts);
+    fit.seconds = timed ? searchFrom + share * (budget - searchFrom)
+                        : std::numeric_limits<double>::infinity();
+    fit.started = started;
+    if (options.evaluations > 0) {
+      const auto upTo =
+          static_cast<std::uint64_t>(std::ceil(share * static_cast<double>(options.evaluations)));
+      fit.maxEvaluations = std::max<std::uint64_t>(1, upTo - std::min(upTo, evaluationsUsed));
+    }
+    fit.tubeChains = chains;
+    fit.mayPlaceStart = chosen;
+    fit.cancelled = &InterruptGuard::flag();
+    StartFit& self = *out;
+    fit.progress = [&](const FitProgress& step) {
+      if (step.fold == 0) {
+        print << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres)
+              << " of the target's " << step.diagonal << (metres ? " m diagonal" : "-unit diagonal")
+              << std::endl;
+        return;
+      }
+      const std::size_t first = foldsBefore, count = session.foldCount() - foldsBefore;
+      foldsBefore = session.foldCount();
+      self.log.push_back(logEntryOfStep(session, step, first, count, trianglesBefore));
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
+      print << (step.tucked ? "corners tucked under: folds " + std::to_string(first + 1) + "-" +
+                                  std::to_string(first + count)
+                            : stepText(session, first, count))
+            << ", " << seconds << ": "
+            << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
+    };
+    fit.searching = [&print, metres](std::size_t depth, double distance, double seconds) {
+      printSearching(print, depth, distance, seconds, metres);
+    };
+    out->result = fitFolds(session, *fitter, fit);
+    evaluationsUsed += out->result.evaluations;
+    return out;
   };
-  fit.searching = [metres](std::size_t depth, double distance, double seconds) {
-    printSearching(depth, distance, seconds, metres);
-  };
-  // The outputs, checked before the search: a path that cannot be written fails now.
+  // The outputs, checked before the search: a path that cannot be written fails now. They write
+  // the kept fit (`kept`, set below).
+  const StartFit* kept = nullptr;
   nlohmann::json fitEnd;
   OutputSet outputs;
-  outputs.add(options.output, [&](const fs::path& at) { saveDesign(design, at); });
+  outputs.add(options.output, [&](const fs::path& at) { saveDesign(kept->design, at); });
   if (!options.log.empty())
     outputs.add(options.log, [&](const fs::path& at) {
       std::string text;
-      for (const FoldLogEntry& entry : log) text += foldLogLine(entry) + "\n";
+      for (const FoldLogEntry& entry : kept->log) text += foldLogLine(entry) + "\n";
       text += fitEnd.dump() + "\n";
       writeFileAtomically(at, text);
     });
   if (renderer) {
     outputs.add(options.png, [&](const fs::path& at) {
-      writeDistancePng(*renderer, session.fixed(), fitter->measuredTarget().query(),
+      writeDistancePng(*renderer, kept->session->fixed(), fitter->measuredTarget().query(),
                        "distance to the target", at, metres);
     });
   }
   outputs.checkWritable();
-  const FitResult result = fitFolds(session, *fitter, fit);
+  std::vector<std::unique_ptr<StartFit>> fits;
+  fits.push_back(fitFrom(design, 0, tubeChains, runnersUp.starts.empty()));
+  for (std::size_t i = 0; i < runnersUp.starts.size() && !InterruptGuard::flag().load(); ++i) {
+    const RunnerUpStart& alternative = runnersUp.starts[i];
+    Design other = design;
+    if (alternative.placed)
+      other.surface = *alternative.placed;
+    else
+      other.surface = GeneratedSurface{alternative.surface, alternative.parameters};
+    fits.push_back(fitFrom(std::move(other), i + 1, nullptr, false));
+  }
+  // The rule's choice, unless a runner-up's fit ended nearer by both measures (of those, the
+  // nearest by Chamfer + Hausdorff / 4, as the rule weighs a start).
+  std::size_t keep = 0;
+  const auto ended = [&](std::size_t i) -> const FitProgress& {
+    return fits[i]->result.steps.back();
+  };
+  for (std::size_t i = 1; i < fits.size(); ++i) {
+    const bool nearer =
+        ended(i).hausdorff < ended(0).hausdorff && ended(i).chamfer < ended(0).chamfer;
+    const auto score = [&](std::size_t j) { return ended(j).chamfer + 0.25 * ended(j).hausdorff; };
+    if (nearer && (keep == 0 || score(i) < score(keep))) keep = i;
+  }
+  if (!runnersUp.starts.empty()) {
+    // Which start's fit was kept, and why, on the `from:` line.
+    std::string why;
+    for (std::size_t i = 1; i < fits.size(); ++i) {
+      const RunnerUpStart& alternative = runnersUp.starts[i - 1];
+      why +=
+          (i == 1 ? "" : "; ") +
+          startText(alternative.surface, alternative.parameters, alternative.placed.has_value()) +
+          (alternative.why.empty() ? "" : " (" + alternative.why + ")") + " ended at " +
+          distanceText(ended(i).hausdorff, ended(i).chamfer, ended(i).diagonal, metres) +
+          (i == keep ? ", nearer by both: kept" : "");
+    }
+    if (fits.size() == 1) {
+      std::cout << runnersUp.fromLine << "; its runners-up not folded (interrupted)" << std::endl;
+    } else if (keep == 0) {
+      std::cout << runnersUp.fromLine << "; kept over the runners-up it was folded beside, none "
+                << "nearer by both measures: it ended at "
+                << distanceText(ended(0).hausdorff, ended(0).chamfer, ended(0).diagonal, metres)
+                << ", " << why << std::endl;
+    } else {
+      const RunnerUpStart& won = runnersUp.starts[keep - 1];
+      std::cout << "from: " << startText(won.surface, won.parameters, won.placed.has_value())
+                << (won.placed ? " (sized and placed on the target: " + won.placement + ")"
+                               : std::string(" (sized to the target)"))
+                << "; a runner-up of the start's rule, its fit nearer by both measures: " << why
+                << "; the rule's choice, " << runnersUp.fromLine.substr(6) << ", ended at "
+                << distanceText(ended(0).hausdorff, ended(0).chamfer, ended(0).diagonal, metres)
+                << std::endl;
+    }
+    std::cout << fits[keep]->lines.str();
+  }
+  kept = fits[keep].get();
+  StartFit& won = *fits[keep];
+  Design& keptDesign = won.design;
+  FoldSession& session = *won.session;
+  const FitResult& result = won.result;
   if (result.placedStart) {
-    design.surface = *result.placedStart;  // the folds are made on it: embedded as it lies
+    keptDesign.surface = *result.placedStart;  // the folds are made on it: embedded as it lies
     std::cout << "start placed: the sheet moved whole onto the target's reading (its motion took "
                  "more whole-sheet folds than --folds left), then the folds read"
               << std::endl;
@@ -547,13 +665,13 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
     std::cout << "read as a design without symmetry: the folds and their images each a fold of "
                  "its own (its creases read with images did not reach the target)"
               << (session.symmetry() ? "" : "; the placed sheet keeps no symmetry") << std::endl;
-  if (!session.symmetry()) design.symmetry.clear();  // a placed start's sheet may lack it
-  design.folds = result.folds;
+  if (!session.symmetry()) keptDesign.symmetry.clear();  // a placed start's sheet may lack it
+  keptDesign.folds = result.folds;
   const bool interrupted = InterruptGuard::flag().load();
   fitEnd = fitEndLine(result, interrupted, started);
 
   outputs.write();
-  printFitSummary(options, result, design, session, *fitter, interrupted, timed, started);
+  printFitSummary(options, result, keptDesign, session, *fitter, interrupted, timed, started);
   if (interrupted) throw ExitStatus(InterruptGuard::exitStatus());
 }
 

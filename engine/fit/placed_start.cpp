@@ -258,7 +258,8 @@ std::vector<PlacedStart> revolutionStarts(const std::vector<SurfaceSample>& samp
 }
 
 std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
-                                          const glm::dvec3& point, const glm::dvec3& direction) {
+                                          const glm::dvec3& point, const glm::dvec3& direction,
+                                          double share) {
   const std::optional<HeightBands> bands = heightBands(samples, point, direction);
   if (!bands) return std::nullopt;
   const double lo = bands->lo, hi = bands->hi;
@@ -267,10 +268,10 @@ std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samp
   if (!(widest > 0.0)) return std::nullopt;
   const Frame frame = axisFrame(point + 0.5 * (lo + hi) * direction, direction);
   std::vector<PlacedStart> out;
-  addPlaced(out, "cylinder", {{"radius", widest}, {"height", hi - lo}},
-            "axis " + vectorText(direction) + " through " + vectorText(frame.origin) +
-                ", its widest radius",
-            frame);
+  char text[64] = ", its widest radius";
+  if (share != 1.0) std::snprintf(text, sizeof text, ", %.2g of its widest radius", share);
+  addPlaced(out, "cylinder", {{"radius", share * widest}, {"height", hi - lo}},
+            "axis " + vectorText(direction) + " through " + vectorText(frame.origin) + text, frame);
   if (out.empty()) return std::nullopt;
   return std::move(out.front());
 }

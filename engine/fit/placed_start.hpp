@@ -108,8 +108,11 @@ std::optional<HeightBands> heightBands(const std::vector<SurfaceSample>& samples
 // of height (bins of under 8 samples left out). The start of a vase's joint ring fit
 // (ring_folds.hpp): rings only narrow a tube, so it starts as wide as the belly. None where the
 // samples do not spread along the line.
+// `share`: the tube's radius as this share of the widest (a narrower tube lowers a neck's
+// corners and leaves the belly that far outside: StartChoice::runnersUp).
 std::optional<PlacedStart> widestCylinder(const std::vector<SurfaceSample>& samples,
-                                          const glm::dvec3& point, const glm::dvec3& direction);
+                                          const glm::dvec3& point, const glm::dvec3& direction,
+                                          double share = 1.0);
 
 // The cone around the samples about the line through `point` along `direction` (unit): of the
 // lines r = a + b t above every height bin's mean radius (16 bins, bins of under 8 samples left

@@ -54,6 +54,17 @@
 
 namespace curvefold {
 
+// A start the rule ranked just below its choice (StartChoice::runnersUp): a sheet placed on the
+// target, and why it was close.
+struct RunnerUpStart {
+  std::string surface;
+  SurfaceParameters parameters;
+  std::optional<Sheet> placed;  // moved onto the target, as StartChoice::placed (else the kind
+                                // in the catalogue's frame)
+  std::string placement;        // how, for the user
+  std::string why;              // the model's numbers that made it close, for the user
+};
+
 struct StartChoice {
   std::string surface;
   SurfaceParameters parameters;  // those the rule set (the rest at their defaults)
@@ -74,6 +85,18 @@ struct StartChoice {
   // by the rings' reach (tube_reach.hpp): its rings are grown by the search, as from `--from
   // cylinder`, not weighed against the cone around by two rings (first_step_start.hpp).
   bool widestTube = false;
+  // Without a kind asked for (or `cylinder`, whose tube's radius has an alternative), the starts
+  // the rule's model ranked close below its choice, nearest first: the model does not foretell
+  // where a fit ends (a steep cup's disk, chosen by its rings' profile within 0.70 of the placed
+  // cone's, ended at 19.0% / 4.28% Hausdorff / Chamfer where the cone's fit ended at 8.90% /
+  // 1.41%), so `fit` folds these too and keeps the design nearer by both measures. Close: the
+  // choice's model within kRunnerUpMargin of the rule's own threshold (a disk's rings within 0.5
+  // of the nearest sheet, where the rule takes the disk under 0.75; a vase's widest tube within
+  // 0.9 of the cone's rings, where it takes the tube under 0.6); a bowl's disk (its rings within
+  // 0.13-0.39 of the cone) has none. `--from cylinder`: the tube at 0.9 of the widest radius
+  // (docs/performance.md, vase23: nearer by both on 4 of 8 vases). Empty when a symmetry is asked
+  // for, or the target was folded from a catalogue sheet.
+  std::vector<RunnerUpStart> runnersUp;
 };
 
 // `kind`: a catalogue surface name, or "" for any of the candidates above. `symmetry` (as
