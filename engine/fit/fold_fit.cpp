@@ -18,6 +18,7 @@
 #include <nlopt.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/floor_rings.hpp"
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -943,6 +944,12 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
+  // Toward a cup's floor past a cone's open end, a ring that turns the band past it inward
+  // (floor_rings.hpp).
+  if (target.axis && !folding.symmetric)
+    for (FoldSuggestion& floor :
+         suggestFloorRing(session, *this, *target.axis, target.queries, deadline))
+      suggestions.push_back(std::move(floor));
   // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp; on
   // a symmetric design whose rotation is about that axis, each ring is one fold and its images).
   if (target.axis && settings_.nestedRings && nestedRings)
@@ -951,6 +958,14 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       suggestions.push_back(std::move(rings));
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
+  // The best step closed by a floor ring under it, as one step (floor_rings.hpp).
+  if (target.axis && !folding.symmetric && !suggestions.empty())
+    for (FoldSuggestion& closed : suggestFloorRing(session, *this, *target.axis, target.queries,
+                                                   deadline, &suggestions.front())) {
+      suggestions.push_back(std::move(closed));
+      std::stable_sort(suggestions.begin(), suggestions.end(),
+                       [](const auto& a, const auto& b) { return a.after < b.after; });
+    }
   return bestAndCrease(std::move(suggestions), count);
 }
 
