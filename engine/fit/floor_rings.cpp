@@ -20,7 +20,8 @@ namespace {
 
 constexpr double kFacingAlong = 0.866;  // 30 degrees
 constexpr double kFewestFloorSamples = 0.04;
-constexpr double kShortestBand = 0.1;  // of the heel's radius
+constexpr double kShortestBand = 0.1;        // of the heel's radius
+constexpr double kShortestExtension = 0.25;  // of the cone's radius at the floor
 // The heel's radius: the sheet's vertices within this much of the heel's radius along the axis.
 constexpr double kHeelSlab = 0.15;
 constexpr int kOrders[] = {4, 5, 6, 8};
@@ -68,6 +69,9 @@ double bandPastFloor(const std::vector<SurfaceSample>& samples, const glm::dvec3
   const double taper = (bottom - top) / height;
   const double radius = std::max(top - taper * floor->height, 0.0);
   const double band = floor->height + kFloorBand * radius;
+  // A cone already reaching past the floor by most of the band (placed across a rounded bottom)
+  // is left as placed: its end is the band.
+  if (band < kShortestExtension * radius) return 0.0;
   const double toApex = top / taper;
   return std::clamp(band, 0.0, 0.9 * toApex);
 }

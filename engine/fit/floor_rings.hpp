@@ -59,8 +59,9 @@ std::optional<TargetFloor> targetFloor(const std::vector<SurfaceSample>& samples
 // The cone (base_radius `bottom` at the wide end, `top` at the narrow one, `height` long, the
 // narrow end at `narrowEnd` along the unit axis `up` from it to the apex) continued toward its
 // apex past the target's floor by kFloorBand of its radius there (no farther than 0.9 of the way
-// to the apex): the length to add, 0 where the target has no floor at the narrow end or the cone
-// does not taper.
+// to the apex): the length to add, 0 where the target has no floor at the narrow end, the cone
+// does not taper, or it reaches past the floor already by over half the band (the cone placed
+// across a rounded bottom: a longer one only changed the rings' search, superellipse_cup_mm).
 double bandPastFloor(const std::vector<SurfaceSample>& samples, const glm::dvec3& narrowEnd,
                      const glm::dvec3& up, double bottom, double top, double height);
 

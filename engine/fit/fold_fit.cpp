@@ -944,12 +944,6 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
     for (FoldSuggestion& ring : suggestRings(session, *this, *target.axis, target.queries, count,
                                              settings_.rings, deadline, random))
       suggestions.push_back(std::move(ring));
-  // Toward a cup's floor past a cone's open end, a ring that turns the band past it inward
-  // (floor_rings.hpp).
-  if (target.axis && !folding.symmetric)
-    for (FoldSuggestion& floor :
-         suggestFloorRing(session, *this, *target.axis, target.queries, deadline))
-      suggestions.push_back(std::move(floor));
   // From a flat sheet across that axis, nested rings fitted to its profile (nested_rings.hpp; on
   // a symmetric design whose rotation is about that axis, each ring is one fold and its images).
   if (target.axis && settings_.nestedRings && nestedRings)
@@ -958,14 +952,22 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       suggestions.push_back(std::move(rings));
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
-  // The best step closed by a floor ring under it, as one step (floor_rings.hpp).
-  if (target.axis && !folding.symmetric && !suggestions.empty())
-    for (FoldSuggestion& closed : suggestFloorRing(session, *this, *target.axis, target.queries,
-                                                   deadline, &suggestions.front())) {
-      suggestions.push_back(std::move(closed));
+  // Toward a cup's floor past a cone's open end, a ring that turns the band past it inward
+  // (floor_rings.hpp): alone, and under the step's best as one step (a fit whose evaluations end
+  // after one step keeps both).
+  if (target.axis && !folding.symmetric) {
+    std::vector<FoldSuggestion> floors =
+        suggestFloorRing(session, *this, *target.axis, target.queries, deadline);
+    if (!suggestions.empty())
+      for (FoldSuggestion& closed : suggestFloorRing(session, *this, *target.axis, target.queries,
+                                                     deadline, &suggestions.front()))
+        floors.push_back(std::move(closed));
+    if (!floors.empty()) {
+      for (FoldSuggestion& floor : floors) suggestions.push_back(std::move(floor));
       std::stable_sort(suggestions.begin(), suggestions.end(),
                        [](const auto& a, const auto& b) { return a.after < b.after; });
     }
+  }
   return bestAndCrease(std::move(suggestions), count);
 }
 
