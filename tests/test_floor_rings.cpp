@@ -12,7 +12,6 @@
 
 #include "engine/fit/floor_rings.hpp"
 #include "engine/fit/fold_fit.hpp"
-#include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -54,12 +53,13 @@ double nearestVertex(const Sheet& sheet, const glm::dvec3& point) {
   return nearest;
 }
 
-// The cone along the cup's wall, continued half the heel's radius past its floor (as the
-// placed cone is, placed_start.hpp): its open end leaves the floor's centre 3.9 cm from the
-// sheet; the floor ring turns the band in, and the centre comes within half that.
+// The cone along the cup's wall, reaching half the heel's radius past its floor (as the cone
+// placed across a cup's profile reaches past it, narrower): its open end leaves the floor's
+// centre 3.9 cm from the sheet; the floor ring turns the band in, and the centre comes within
+// half that.
 TEST(FloorRings, AConeUnderAFlatFlooredCupHasTheFloorsCentreBroughtNearer) {
   const TriangleMesh cup = flatFlooredCup();
-  const double band = kFloorBand * 0.04, taper = 0.1;
+  const double band = 0.5 * 0.04, taper = 0.1;
   Sheet cone = makeSurface("cone", {{"base_radius", 0.05},
                                     {"top_radius", 0.04 - taper * band},
                                     {"height", 0.1 + band},
@@ -89,18 +89,22 @@ TEST(FloorRings, AConeUnderAFlatFlooredCupHasTheFloorsCentreBroughtNearer) {
   EXPECT_LT(floorMeasure(closed, fitter), floorMeasure(cone, fitter));
 }
 
-// A cup with no floor (a tube open at both ends) has none to close, and its placed cone is not
-// continued; a flat-floored cup's placed cone is continued past its floor.
-TEST(FloorRings, OnlyACupWithAFloorHasItsConeContinuedPastIt) {
+// A cup with no floor (a tube open at both ends) has none to close; a flat-floored cup's floor is
+// found at its end, whichever way the axis is given.
+TEST(FloorRings, OnlyACupWithAFloorHasOne) {
   const TriangleMesh cup = flatFlooredCup();
   TriangleMesh open = cup;
   open.triangles.erase(open.triangles.begin(), open.triangles.begin() + 48 + 2 * 48 * 5);
   const std::vector<SurfaceSample> cupSamples = sampleSurface(cup, 1500, 3);
   const std::vector<SurfaceSample> openSamples = sampleSurface(open, 1500, 3);
   EXPECT_FALSE(targetFloor(openSamples, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)).has_value());
-  const glm::dvec3 narrowEnd(0.0, 0.05, 0.0), up(0.0, 1.0, 0.0);
-  EXPECT_EQ(bandPastFloor(openSamples, narrowEnd, up, 0.05, 0.04, 0.1), 0.0);
-  EXPECT_NEAR(bandPastFloor(cupSamples, narrowEnd, up, 0.05, 0.04, 0.1), kFloorBand * 0.04, 1e-6);
+  for (const double sign : {1.0, -1.0}) {
+    const std::optional<TargetFloor> floor =
+        targetFloor(cupSamples, glm::dvec3(0.0, 0.01, 0.0), glm::dvec3(0.0, sign, 0.0));
+    ASSERT_TRUE(floor.has_value());
+    EXPECT_GT(floor->toward.y, 0.99);
+    EXPECT_NEAR(floor->height, 0.04, 1e-6);
+  }
 }
 
 }  // namespace

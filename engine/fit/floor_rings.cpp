@@ -20,8 +20,7 @@ namespace {
 
 constexpr double kFacingAlong = 0.866;  // 30 degrees
 constexpr double kFewestFloorSamples = 0.04;
-constexpr double kShortestBand = 0.1;        // of the heel's radius
-constexpr double kShortestExtension = 0.25;  // of the cone's radius at the floor
+constexpr double kShortestBand = 0.1;  // of the heel's radius
 // The heel's radius: the sheet's vertices within this much of the heel's radius along the axis.
 constexpr double kHeelSlab = 0.15;
 constexpr int kOrders[] = {4, 5, 6, 8};
@@ -58,22 +57,6 @@ std::optional<TargetFloor> targetFloor(const std::vector<SurfaceSample>& samples
     return TargetFloor{toward, facingHeight / facing};
   }
   return std::nullopt;
-}
-
-double bandPastFloor(const std::vector<SurfaceSample>& samples, const glm::dvec3& narrowEnd,
-                     const glm::dvec3& up, double bottom, double top, double height) {
-  if (!(height > 0.0) || !(bottom > top)) return 0.0;
-  const std::optional<TargetFloor> floor = targetFloor(samples, narrowEnd, up);
-  // Only a floor at the narrow end, near it (the cone stops at the lowest samples).
-  if (!floor || glm::dot(floor->toward, up) <= 0.0 || floor->height < -0.25 * height) return 0.0;
-  const double taper = (bottom - top) / height;
-  const double radius = std::max(top - taper * floor->height, 0.0);
-  const double band = floor->height + kFloorBand * radius;
-  // A cone already reaching past the floor by most of the band (placed across a rounded bottom)
-  // is left as placed: its end is the band.
-  if (band < kShortestExtension * radius) return 0.0;
-  const double toApex = top / taper;
-  return std::clamp(band, 0.0, 0.9 * toApex);
 }
 
 Ring floorRingOf(const FloorRingShape& shape, const glm::dvec3& point, const glm::dvec3& toward,

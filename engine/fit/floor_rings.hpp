@@ -1,25 +1,28 @@
-// A steep cup's floor closed from a cone start (issue 38, 2): the placed cone continued past the
-// cup's floor toward its apex, and a ring of folds through the heel that turns that band inward,
-// toward the axis, its flaps stacked a small gap apart.
+// A steep cup's floor closed from a cone start (issue 38, 2): the band of the placed cone that
+// reaches past the cup's floor turned inward, toward the axis, by a ring of folds through the
+// heel, its flaps stacked a small gap apart.
 //
-// Why a band and a ring: a cone fitted to a cup's wall ends open at the floor (its narrow end at
-// the lowest samples), so the floor's centre stays as far from the sheet as the hole's radius
-// (docs/performance.md, issue 38, cup23). A fold along a circle keeps a tube's radius
-// (profile_folds.hpp), so no single reflection lays the tube's paper across the floor; a ring of
-// n planes, plane k through the chord of the heel's circle at cos(pi / n) of its radius r, tilted
-// by `tilt` from the radial direction toward the floor (45 degrees turns an upright wall level),
-// folds the band past the floor inward. Each flap is the band reflected: a piece of a cylinder of
-// the wall's radius lying across the axis, its middle line level just inside the floor and
-// reaching about d inward for a band d long, its sides rising past the floor by up to d (a tube
-// reflected is a tube), so the floor's centre comes to about max(d, r cos(pi / n) - d) of the
-// sheet, not to zero. Flaps of one ring overlap near the axis (the band holds more paper than
-// the floor's circle); plane k lies `gap` k nearer the rim than plane 0, so the flaps lie in
-// layers, not in one plane (in one plane they would cross or touch: reflections make exact
-// layers). Every ring is made on the sheet, refused where it passes the sheet through itself, and
-// kept only where it brings the sheet nearer by the tube rings' measure (ring_folds.hpp), so a
-// cup reached now never gets farther.
+// Why a band and a ring: a cone fitted to a cup's wall ends open at the floor, so the floor's
+// centre stays as far from the sheet as the hole's radius (docs/performance.md, issue 38, cup23);
+// the cone placed across the profile (placed_start.hpp: its line spans the profile's extreme
+// projections) reaches past the floor's height, narrower than the heel, and that end is the band. A
+// fold along a circle keeps a tube's radius (profile_folds.hpp), so no single reflection lays the
+// tube's paper across the floor; a ring of n planes, plane k through the chord of the heel's circle
+// at cos(pi / n) of its radius r, tilted by `tilt` from the radial direction toward the floor (45
+// degrees turns an upright wall level), folds the band past the floor inward. Each flap is the band
+// reflected: a piece of a cylinder of the wall's radius lying across the axis, its middle line
+// level just inside the floor and reaching about d inward for a band d long, its sides rising past
+// the floor by up to d (a tube reflected is a tube), so the floor's centre comes to about max(d, r
+// cos(pi / n) - d) of the sheet, not to zero. Flaps of one ring overlap near the axis (the band
+// holds more paper than the floor's circle); plane k lies `gap` k nearer the rim than plane 0, so
+// the flaps lie in layers, not in one plane (in one plane they would cross or touch: reflections
+// make exact layers). Every ring is made on the sheet, refused where it passes the sheet through
+// itself, and kept only where it brings the sheet nearer by the tube rings' measure
+// (ring_folds.hpp), so a cup reached now never gets farther.
 //
-// Known limits: one ring; a flap's sides stand past the floor by the band's length (on a
+// Known limits: the placed cone is not continued toward its apex (tried: by half its radius past
+// the floor, it made marched_mug_mm's first step find no fold at all, Chamfer 2.28% -> 2.75%);
+// one ring; a flap's sides stand past the floor by the band's length (on a
 // 40 mm heel: the floor's centre 40 -> 15-17 mm, the sides 11 mm out, against a flat floor's
 // bound of 0); the floor is found only where the target's samples facing along its axis (within
 // 30 degrees) at the narrow end are many; a rounded heel is treated as the floor's edge at the
@@ -41,9 +44,6 @@
 
 namespace curvefold {
 
-// How far a cone continues past the floor, of its radius there.
-inline constexpr double kFloorBand = 0.5;
-
 // The target's floor across its axis through `point` along `direction` (unit): the end past the
 // samples' mean height along `direction` (tried first) or its opposite where the samples facing
 // along the axis (within 30 degrees) are at least 4% of all samples; `toward` points past it (the
@@ -55,15 +55,6 @@ struct TargetFloor {
 };
 std::optional<TargetFloor> targetFloor(const std::vector<SurfaceSample>& samples,
                                        const glm::dvec3& point, const glm::dvec3& direction);
-
-// The cone (base_radius `bottom` at the wide end, `top` at the narrow one, `height` long, the
-// narrow end at `narrowEnd` along the unit axis `up` from it to the apex) continued toward its
-// apex past the target's floor by kFloorBand of its radius there (no farther than 0.9 of the way
-// to the apex): the length to add, 0 where the target has no floor at the narrow end, the cone
-// does not taper, or it reaches past the floor already by over half the band (the cone placed
-// across a rounded bottom: a longer one only changed the rings' search, superellipse_cup_mm).
-double bandPastFloor(const std::vector<SurfaceSample>& samples, const glm::dvec3& narrowEnd,
-                     const glm::dvec3& up, double bottom, double top, double height);
 
 // One floor ring's shape: n planes through the heel's chords (see above).
 struct FloorRingShape {

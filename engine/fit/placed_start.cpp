@@ -12,7 +12,6 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/eigen_glm.hpp"
-#include "engine/fit/floor_rings.hpp"
 #include "engine/geometry/principal_moments.hpp"
 #include "engine/geometry/validate.hpp"
 
@@ -86,17 +85,6 @@ glm::dvec3 widerEndDown(double& bottom, double& top, const glm::dvec3& axis) {
   if (bottom >= top) return axis;
   std::swap(bottom, top);
   return -axis;
-}
-
-// A cone whose narrow end stops at a cup's floor (its frame's origin `origin`, y along `up`)
-// continued toward its apex past the floor (floor_rings.hpp): the band a floor ring turns in.
-void continuePastFloor(const std::vector<SurfaceSample>& samples, glm::dvec3& origin,
-                       const glm::dvec3& up, double bottom, double& top, double& height) {
-  const double band = bandPastFloor(samples, origin + 0.5 * height * up, up, bottom, top, height);
-  if (!(band > 0.0)) return;
-  top -= (bottom - top) / height * band;
-  height += band;
-  origin += 0.5 * band * up;
 }
 
 // A target whose samples' mean normal is at least this long (of a unit) lies over one plane as a
@@ -185,12 +173,9 @@ void coneAcross(const std::vector<SurfaceSample>& samples, const glm::dvec3& cen
   double bottom = a.y, top = b.y;
   const glm::dvec3 up = widerEndDown(bottom, top, axis);
   if (!(top < 0.98 * bottom)) return;
-  glm::dvec3 origin = centroid + 0.5 * (a.x + b.x) * axis;
-  double height = b.x - a.x;
-  continuePastFloor(samples, origin, up, bottom, top, height);
-  const Frame frame = axisFrame(origin, up);
+  const Frame frame = axisFrame(centroid + 0.5 * (a.x + b.x) * axis, up);
   const SurfaceParameters parameters{
-      {"base_radius", bottom}, {"top_radius", top}, {"height", height}};
+      {"base_radius", bottom}, {"top_radius", top}, {"height", b.x - a.x}};
   addPlaced(out, "cone", parameters,
             "axis " + vectorText(up) + " through " + vectorText(frame.origin), frame);
 }
@@ -225,13 +210,8 @@ void revolutionAbout(const std::vector<SurfaceSample>& samples, const glm::dvec3
     if (kind.empty() || kind == surface) addPlaced(out, surface, parameters, placement, frame);
   };
   add("cylinder", {{"radius", mean}, {"height", height}});
-  if (top < 0.98 * bottom && (kind.empty() || kind == "cone")) {
-    glm::dvec3 origin = frame.origin;
-    double length = height;
-    continuePastFloor(samples, origin, up, bottom, top, length);
-    addPlaced(out, "cone", {{"base_radius", bottom}, {"top_radius", top}, {"height", length}},
-              "axis " + vectorText(up) + " through " + vectorText(origin), axisFrame(origin, up));
-  }
+  if (top < 0.98 * bottom)
+    add("cone", {{"base_radius", bottom}, {"top_radius", top}, {"height", height}});
   coneAcross(samples, centroid, axis, kind, out);
 }
 
