@@ -18,6 +18,7 @@
 #include <nlopt.hpp>
 
 #include "engine/fit/crease_planes.hpp"
+#include "engine/fit/floor_rings.hpp"
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -951,6 +952,22 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
       suggestions.push_back(std::move(rings));
   std::stable_sort(suggestions.begin(), suggestions.end(),
                    [](const auto& a, const auto& b) { return a.after < b.after; });
+  // Toward a cup's floor past a cone's open end, a ring that turns the band past it inward
+  // (floor_rings.hpp): alone, and under the step's best as one step (a fit whose evaluations end
+  // after one step keeps both).
+  if (target.axis && !folding.symmetric) {
+    std::vector<FoldSuggestion> floors =
+        suggestFloorRing(session, *this, *target.axis, target.queries, deadline);
+    if (!suggestions.empty())
+      for (FoldSuggestion& closed : suggestFloorRing(session, *this, *target.axis, target.queries,
+                                                     deadline, &suggestions.front()))
+        floors.push_back(std::move(closed));
+    if (!floors.empty()) {
+      for (FoldSuggestion& floor : floors) suggestions.push_back(std::move(floor));
+      std::stable_sort(suggestions.begin(), suggestions.end(),
+                       [](const auto& a, const auto& b) { return a.after < b.after; });
+    }
+  }
   return bestAndCrease(std::move(suggestions), count);
 }
 

@@ -17,6 +17,7 @@
 #include <glm/vec2.hpp>
 
 #include "engine/fit/eigen_glm.hpp"
+#include "engine/fit/floor_rings.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/timed_batches.hpp"
 #include "engine/geometry/principal_moments.hpp"
@@ -422,6 +423,18 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
       chain.done = chain.kept.size() >= mostRings;
     }
     if (std::all_of(chains.begin(), chains.end(), [](const Chain& c) { return c.done; })) break;
+  }
+  // Toward a cup whose floor the cone reaches past (floor_rings.hpp), each chain closed by the
+  // floor ring that brings it nearest, where one brings it nearer (a chain handed on keeps its
+  // rings alone: the floor is tried again after them).
+  bool bareTried = false;
+  for (Chain& chain : chains) {
+    if (deadline.passed() || (chain.kept.empty() && std::exchange(bareTried, true))) continue;
+    if (const std::optional<FloorRing> floor =
+            bestFloorRing(*chain.grown, fitter, axis, targetSamples, chain.current, deadline)) {
+      makeRing(*chain.grown, floor->ring);
+      chain.current = floor->measured;
+    }
   }
   if (deadline.isCancelled()) return {};
   if (grownOut) {
