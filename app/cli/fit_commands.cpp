@@ -120,13 +120,16 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     else
       design.surface = GeneratedSurface{start.surface, start.parameters};
     std::string text =
-        "from: " + (start.placed && start.surface == "swept_curve" ? "a swept parabola"
-                    : start.placed && start.surface == "ellipse" ? "a disk stretched to an ellipse"
-                    : start.placed && start.surface == "bent_square"
-                        ? "a square bent into a cylinder patch"
-                    : start.placed && start.surface == "bent_rectangle"
-                        ? "a rectangle bent into a cylinder patch"
-                        : start.surface);
+        "from: " +
+        (start.placed && start.surface == "swept_curve"   ? "a swept parabola"
+         : start.placed && start.surface == "ellipse"     ? "a disk stretched to an ellipse"
+         : start.placed && start.surface == "bent_square" ? "a square bent into a cylinder patch"
+         : start.placed && start.surface == "bent_rectangle"
+             ? "a rectangle bent into a cylinder patch"
+         : start.placed && start.surface == "winged_square" ? "a square with its wings folded first"
+         : start.placed && start.surface == "winged_rectangle"
+             ? "a rectangle with its wings folded first"
+             : start.surface);
     for (const auto& [name, value] : start.parameters) {
       char number[32];
       std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);

@@ -20,7 +20,7 @@ constexpr double kHinges[] = {0.2, 0.35, 0.5, 0.65};
 constexpr double kLessTurn = 0.6;
 constexpr std::size_t kMostWings = 6;
 // Wings the height model ranks best, made and measured exactly each round.
-constexpr std::size_t kMeasured = 10;
+constexpr std::size_t kMeasured = 64;
 // The wedge of target samples a wing's turn is solved on: this half angle about its direction.
 constexpr double kWedgeDegrees = 30.0;
 // Turns steeper than this are left short (a fold near 90 degrees stands the flap on edge).
@@ -68,7 +68,7 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
 
   FoldSession session(sheet);
   const SurfaceDistance flatDistance = measure(sheet);
-  double best = scoreOf(flatDistance), farthest = flatDistance.hausdorff;
+  double best = scoreOf(flatDistance);
   const double start = best;
   std::size_t crossings = findSelfIntersections(sheet).intersections.size();
   const double tanWedge = std::tan(kWedgeDegrees * M_PI / 180.0);
@@ -86,7 +86,7 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
       glm::dvec2 seed{0.0};
       glm::dvec3 along{0.0};
       double hinge = 0.0, slope = 0.0, gain = 0.0;
-      double score = 1e300, hausdorff = 1e300;
+      double score = 1e300;
     };
     std::vector<Wing> ranked, tried;
     for (int k = 0; k < kDirections && !deadline.passed(); ++k) {
@@ -183,7 +183,6 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
       const SurfaceDistance landed = measure(session.fixed());
       Wing made = wing;
       made.score = scoreOf(landed);
-      made.hausdorff = landed.hausdorff;
       tried.push_back(made);
       session.undoTo(foldsBefore);
     }
@@ -193,7 +192,6 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
     bool kept = false;
     for (const Wing& wing : tried) {
       if (!(wing.score < (1.0 - kLeastGain) * best)) break;
-      if (wing.hausdorff > farthest) continue;
       const glm::dvec3 grab = session.beginDragAtDevelopment(wing.seed);
       session.updateDrag(wing.plane.reflect(grab));
       if (!session.commit()) continue;
@@ -201,7 +199,6 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
       if (now <= crossings) {
         crossings = now;
         best = wing.score;
-        farthest = wing.hausdorff;
         kept = true;
         for (std::size_t i = 0; i < samples.size(); ++i) {
           const double x = glm::dot(samples[i].position - centre, wing.along) - wing.hinge;
