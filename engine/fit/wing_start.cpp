@@ -20,7 +20,7 @@ constexpr double kHinges[] = {0.2, 0.35, 0.5, 0.65};
 constexpr double kLessTurn = 0.6;
 constexpr std::size_t kMostWings = 6;
 // Wings the height model ranks best, made and measured exactly each round.
-constexpr std::size_t kMeasured = 64;
+constexpr std::size_t kMeasured = 24;
 // The wedge of target samples a wing's turn is solved on: this half angle about its direction.
 constexpr double kWedgeDegrees = 30.0;
 // Turns steeper than this are left short (a fold near 90 degrees stands the flap on edge).

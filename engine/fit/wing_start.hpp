@@ -15,7 +15,7 @@
 // hinge (at 1 and 0.6 of it), by the slope out to the wedge's far half (a wing that steepens toward
 // its tip) and by the slope over the whole flap (as wide as the sheet: a lobe's neighbours too);
 // ranked by the squared height each removes from a model of the sheet (each kept wing a ramp beyond
-// its hinge), the best 64 made on the real sheet (FoldSession: slivers refused) and measured
+// its hinge), the best 24 made on the real sheet (FoldSession: slivers refused) and measured
 // exactly (surfaceDistance, 600 samples a side) by Chamfer + 0.5 Hausdorff, as startByFirstStep
 // scores. The best that lowers the score by 2% and crosses the sheet no more than before is kept (a
 // flap that stands out past its wing's rim is left to the tucks, as the fit makes them), and so on
