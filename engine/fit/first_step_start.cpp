@@ -229,7 +229,8 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     // A bent sheet's too (bent_start.hpp): its rulings are cut as long as the target's arc
     // across, so they stand out flat past the falling ends until the fit tucks them under
     // (saddle_steep_turned: Hausdorff 28.4% -> 16.3% by the fit's tucks), whether or not its
-    // pleats helped first.
+    // pleats helped first. A winged sheet's too (wing_start.hpp): its turned flaps' corners
+    // stand out past the wings' rims until the fit tucks them.
     const bool bent = start.surface == "bent_square" || start.surface == "bent_rectangle" ||
                       start.surface.starts_with("winged_");
     if (((grown && !steps.empty() && distance.fromAMax >= distance.fromBMax &&
