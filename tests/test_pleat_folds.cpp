@@ -27,6 +27,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/tuck_folds.hpp"
+#include "engine/fit/wing_start.hpp"
 #include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/validate.hpp"
@@ -521,6 +522,38 @@ TEST(FirstStepStart, APringleStartsFromAnEllipseCutToItsOutline) {
   EXPECT_LT(ellipse->hausdorff, 0.05 * diagonal) << ellipse->start.placement;
   EXPECT_LT(ellipse->hausdorff, 0.6 * disk->hausdorff);
   EXPECT_LT(ellipse->chamfer, disk->chamfer);
+}
+
+// A steep monkey saddle over an 18 cm disk (three wings rising to slope 3 at the rim, three
+// falling): the flat square's first step (a cross) bends one line's two ends and pleats the other
+// line's, so at most two wings each way are followed. Its wings folded first (wing_start.hpp), one
+// hinge each on the flat square (26 cm: a wing's arc needs more paper than its reach), bring the
+// sheet nearer by Chamfer before any pleat, and the winged square is the start whose first step
+// lands nearest.
+TEST(WingStart, AMonkeySaddlesSquareHasItsWingsFoldedBeforeAnyPleat) {
+  Sheet disk = makeSurface("disk", {{"radius", 0.09}, {"resolution", 14}});
+  for (glm::dvec3& p : disk.positions) p.z = (p.x * p.x * p.x - 3.0 * p.x * p.y * p.y) / 0.008;
+  const TriangleMesh monkey = meshOf(disk);
+  const FoldFitter fitter(monkey, quickSettings());
+  const PlacedStart square{"square", {{"size", 0.26}}, "", makeSurface("square", {{"size", 0.26}})};
+  const std::optional<PlacedStart> winged = wingStart(square, fitter, {});
+  ASSERT_TRUE(winged.has_value());
+  EXPECT_EQ(winged->surface, "winged_square");
+  EXPECT_NO_THROW(validate(winged->sheet));
+  EXPECT_TRUE(findSelfIntersections(winged->sheet).intersections.empty());
+  // The same paper: its development is the square's.
+  const DevelopmentBounds bounds = developmentBounds(winged->sheet);
+  EXPECT_NEAR(bounds.high.x - bounds.low.x, 0.26, 1e-9);
+  EXPECT_NEAR(bounds.high.y - bounds.low.y, 0.26, 1e-9);
+  const SurfaceDistance flat = surfaceDistance(meshOf(square.sheet), monkey, 4000);
+  const SurfaceDistance folded = surfaceDistance(meshOf(winged->sheet), monkey, 4000);
+  // Nearer on the whole, and the target's farthest point no farther from the sheet (the sheet's
+  // corners past the rim are left to the tucks).
+  EXPECT_LT(folded.chamfer, 0.8 * flat.chamfer) << winged->placement;
+  EXPECT_LE(folded.fromBMax, flat.fromBMax * (1.0 + 1e-9)) << winged->placement;
+  const std::optional<FirstStepStart> chosen = startByFirstStep({square, *winged}, fitter, {});
+  ASSERT_TRUE(chosen.has_value());
+  EXPECT_EQ(chosen->start.surface, "winged_square");
 }
 
 // A hypar over a square turned 30 degrees about its normal, asked for a square: the square

@@ -75,12 +75,14 @@ TriangleMesh shapeOf(const std::string& path) {
 // words) and the parameters it was sized to.
 std::string startText(const std::string& surface, const SurfaceParameters& parameters,
                       bool placed) {
-  std::string text = placed && surface == "swept_curve"   ? "a swept parabola"
-                     : placed && surface == "ellipse"     ? "a disk stretched to an ellipse"
-                     : placed && surface == "bent_square" ? "a square bent into a cylinder patch"
-                     : placed && surface == "bent_rectangle"
-                         ? "a rectangle bent into a cylinder patch"
-                         : surface;
+  std::string text =
+      placed && surface == "swept_curve"        ? "a swept parabola"
+      : placed && surface == "ellipse"          ? "a disk stretched to an ellipse"
+      : placed && surface == "bent_square"      ? "a square bent into a cylinder patch"
+      : placed && surface == "bent_rectangle"   ? "a rectangle bent into a cylinder patch"
+      : placed && surface == "winged_square"    ? "a square with its wings folded first"
+      : placed && surface == "winged_rectangle" ? "a rectangle with its wings folded first"
+                                                : surface;
   for (const auto& [name, value] : parameters) {
     char number[32];
     std::snprintf(number, sizeof number, " --%s %.4g", name.c_str(), value);

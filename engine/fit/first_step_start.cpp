@@ -13,6 +13,7 @@
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
 #include "engine/fit/tuck_folds.hpp"
+#include "engine/fit/wing_start.hpp"
 #include "engine/geometry/fold_session.hpp"
 
 namespace curvefold {
@@ -228,8 +229,10 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
     // A bent sheet's too (bent_start.hpp): its rulings are cut as long as the target's arc
     // across, so they stand out flat past the falling ends until the fit tucks them under
     // (saddle_steep_turned: Hausdorff 28.4% -> 16.3% by the fit's tucks), whether or not its
-    // pleats helped first.
-    const bool bent = start.surface == "bent_square" || start.surface == "bent_rectangle";
+    // pleats helped first. A winged sheet's too (wing_start.hpp): its turned flaps' corners
+    // stand out past the wings' rims until the fit tucks them.
+    const bool bent = start.surface == "bent_square" || start.surface == "bent_rectangle" ||
+                      start.surface.starts_with("winged_");
     if (((grown && !steps.empty() && distance.fromAMax >= distance.fromBMax &&
           (start.surface == "square" || start.surface == "rectangle")) ||
          bent) &&
@@ -338,6 +341,20 @@ std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFi
   }
   std::optional<FirstStepStart> chosen =
       startByFirstStep(candidates, fitter, deadline, kind == "square");
+  // The winner, where it is a flat square or rectangle (as cut, or grown by the paper its cross
+  // folds away), with a steep or lobed saddle's wings folded first (wing_start.hpp), which neither
+  // its cross nor one bend follows: taken only where its own first step lands nearer still.
+  if (chosen && (kind.empty() || kind == "square" || kind == "rectangle") &&
+      (chosen->start.surface == "square" || chosen->start.surface == "rectangle") &&
+      flatNormal(chosen->start.sheet) && !deadline.passed())
+    if (const std::optional<PlacedStart> winged = wingStart(chosen->start, fitter, deadline))
+      if (std::optional<FirstStepStart> landed = startByFirstStep({*winged}, fitter, deadline);
+          landed && landed->chamfer + kHausdorffWeight * landed->hausdorff <
+                        chosen->chamfer + kHausdorffWeight * chosen->hausdorff) {
+        landed->grown = chosen->grown;
+        landed->cutShort = chosen->cutShort;
+        chosen = std::move(landed);
+      }
   if (!chosen ||
       (!chosen->grown && chosen->start.sheet.positions == candidates[own].sheet.positions))
     return std::nullopt;

@@ -76,7 +76,9 @@ std::optional<FirstStepStart> startByFirstStep(const std::vector<PlacedStart>& c
 // along the target's curvatures (bent_start.hpp; a square under "square", else a rectangle; not
 // one with over twice the target's area), measured with its rulings' ends tucked under as the
 // fit tucks them, compared
-// by their first steps; `start` becomes the winner (placed) when that is not `start` itself. None
+// by their first steps; a flat square or rectangle that wins is then folded toward the target's
+// wings (wing_start.hpp) and replaced by that sheet where its first step (its tucks measured too)
+// lands nearer; `start` becomes the winner (placed) when that is not `start` itself. None
 // (and `start` untouched) where the rule does not apply (a creased start: the target was folded
 // from it) or `start` won.
 std::optional<FirstStepStart> reviseByFirstStep(StartChoice& start, const FoldFitter& fitter,
