@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -232,6 +233,7 @@ struct Unfolder {
   std::size_t formsAtLastLeaf = 0;  // forms read when the last unfolding ended
   std::size_t newFormLeaves = 0;    // unfoldings ended that read a form none before had
   std::vector<char> onFace{};       // per vertex: on a face (a pose is checked on these)
+  bool useTable = true;             // false: every node read, the 600 unfoldings counted whole
 
   bool outOfTime() {
     cutShort = cutShort || deadline.passed();
@@ -276,6 +278,7 @@ struct Unfolder {
   // before in another pose (its planes moved by the pose), else read and kept.
   std::vector<Candidate> candidatesFor(const std::vector<glm::dvec3>& positions) {
     ++formsMet;
+    if (!useTable) return candidatesAt(positions);
     std::vector<std::uint32_t> crease = creaseOf(positions);
     std::vector<std::size_t>& same = formsByCrease[crease];
     for (std::size_t f : same) {
@@ -733,7 +736,8 @@ struct Unfolder {
     double bestOff = kInfinitySharp;
     bool first = true;
     for (const Candidate* chosen : choices) {
-      if (!first && (newFormLeaves >= kMaxUnfoldings || leaves >= kMaxOrders || outOfTime())) break;
+      const std::size_t counted = useTable ? newFormLeaves : leaves;
+      if (!first && (counted >= kMaxUnfoldings || leaves >= kMaxOrders || outOfTime())) break;
       std::vector<char> inPiece(positions.size(), 0);
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
@@ -789,7 +793,7 @@ struct Unfolder {
   // Unfoldings that read a form none before had; those that read only forms in the table cost
   // the side choice alone, and are bounded apart.
   static constexpr std::size_t kMaxUnfoldings = 600;
-  static constexpr std::size_t kMaxOrders = 6000;
+  static constexpr std::size_t kMaxOrders = 3000;
   // How near (of the diagonal) a form moved by a pose must lie on one read to be it.
   static constexpr double kSamePose = 1e-6;
   // Forms kept at most (each holds its pose and pieces: a few hundred kilobytes on a fine mesh).
@@ -805,35 +809,62 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                              double sheetBendDegrees) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
-  Unfolder unfolder{
-      target,
-      connectivityOf(target, 1e-5 * diagonal),
-      diagonal,
-      1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
-      std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
-      minDihedralDegrees,
-      std::cos(((sheetBendDegrees < 0.0 ? largestDihedralDegrees(sheet) : sheetBendDegrees) +
-                kBendMarginDegrees) *
-               std::numbers::pi / 180.0),
-      sheetSurface,
-      maxFolds,
-      deadline,
-      symmetryImages};
-  for (const auto& around : unfolder.connectivity.neighbours)
-    unfolder.onFace.push_back(around.empty() ? 0 : 1);
-  const double sharp =
-      sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
-  const Unfolder::Read read = unfolder.unfold(target.positions, {}, sharp);
-  TargetUnfolding unfolding = read.unfolding;
-  // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
-  if (symmetryImages.empty())
-    if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
-      unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
-  unfolding.cutShort = unfolder.outOfTime();
-  unfolding.formsRead = unfolder.forms.size();
-  unfolding.formsMet = unfolder.formsMet;
-  unfolding.unfoldings = unfolder.leaves;
-  return unfolding;
+  const Connectivity connectivity = connectivityOf(target, 1e-5 * diagonal);
+  std::size_t formsRead = 0, formsMet = 0, unfoldings = 0;
+  // One search over orders: with the table of forms (issue 38), or reading every node as the
+  // search before it did. `onSheet`: whether it ended smooth on the sheet.
+  auto search = [&](bool table, const Deadline& until, bool& onSheet) {
+    Unfolder unfolder{
+        target,
+        connectivity,
+        diagonal,
+        1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
+        std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
+        minDihedralDegrees,
+        std::cos(((sheetBendDegrees < 0.0 ? largestDihedralDegrees(sheet) : sheetBendDegrees) +
+                  kBendMarginDegrees) *
+                 std::numbers::pi / 180.0),
+        sheetSurface,
+        maxFolds,
+        until,
+        symmetryImages};
+    unfolder.useTable = table;
+    for (const auto& around : unfolder.connectivity.neighbours)
+      unfolder.onFace.push_back(around.empty() ? 0 : 1);
+    const double sharp =
+        sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
+    Unfolder::Read read = unfolder.unfold(target.positions, {}, sharp);
+    onSheet = unfolder.smooth(read.unfolding) && unfolder.onSheet(unfolder.offSheetOf(read));
+    TargetUnfolding unfolding = read.unfolding;
+    // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
+    if (symmetryImages.empty())
+      if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
+        unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
+    unfolding.cutShort = unfolder.outOfTime();
+    formsRead += table ? unfolder.forms.size() : unfolder.formsMet;
+    formsMet += unfolder.formsMet;
+    unfoldings += unfolder.leaves;
+    unfolding.formsRead = formsRead;
+    unfolding.formsMet = formsMet;
+    unfolding.unfoldings = unfoldings;
+    return unfolding;
+  };
+  // The table's search first, in at most half the time left: where it ends smooth on the sheet,
+  // that is the target's folds. Where it does not, the search that reads every node: a form's
+  // planes read in another pose may differ a little (the reading is not wholly free of the pose),
+  // so which unfolding off the sheet wins may differ, and the one the fit was measured on is kept.
+  // A symmetric design's images are looked for at every end (dear): that search alone.
+  if (symmetryImages.empty()) {
+    Deadline half = deadline;
+    const auto now = std::chrono::steady_clock::now();
+    if (deadline.at != std::chrono::steady_clock::time_point::max() && deadline.at > now)
+      half = deadline.notAfter(now + (deadline.at - now) / 2);
+    bool onSheet = false;
+    TargetUnfolding withTable = search(true, half, onSheet);
+    if (onSheet && !withTable.cutShort) return withTable;
+  }
+  bool onSheet = false;
+  return search(false, deadline, onSheet);
 }
 
 }  // namespace curvefold
