@@ -854,17 +854,32 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
   // planes read in another pose may differ a little (the reading is not wholly free of the pose),
   // so which unfolding off the sheet wins may differ, and the one the fit was measured on is kept.
   // A symmetric design's images are looked for at every end (dear): that search alone.
+  // Cut short, the one that took away more crease is kept (the second may have had no time).
+  std::optional<TargetUnfolding> withTable;
   if (symmetryImages.empty()) {
-    Deadline half = deadline;
+    Deadline half = deadline;  // half of the clock's time left, and of a share of CPU
     const auto now = std::chrono::steady_clock::now();
     if (deadline.at != std::chrono::steady_clock::time_point::max() && deadline.at > now)
       half = deadline.notAfter(now + (deadline.at - now) / 2);
+    if (deadline.shareAt != std::chrono::steady_clock::time_point::max()) {
+      const double cpu = processCpuSeconds();
+      if (deadline.cpuAt > cpu) half.cpuAt = cpu + 0.5 * (deadline.cpuAt - cpu);
+    }
     bool onSheet = false;
-    TargetUnfolding withTable = search(true, half, onSheet);
-    if (onSheet && !withTable.cutShort) return withTable;
+    withTable = search(true, half, onSheet);
+    if (onSheet && !withTable->cutShort) return *withTable;
   }
   bool onSheet = false;
-  return search(false, deadline, onSheet);
+  TargetUnfolding reading = search(false, deadline, onSheet);
+  if (reading.cutShort && withTable &&
+      withTable->sharpLengthLeft < reading.sharpLengthLeft - kLeastCrease * diagonal) {
+    withTable->formsRead = reading.formsRead;
+    withTable->formsMet = reading.formsMet;
+    withTable->unfoldings = reading.unfoldings;
+    withTable->cutShort = true;
+    return *withTable;
+  }
+  return reading;
 }
 
 }  // namespace curvefold
