@@ -111,6 +111,8 @@ int run(int argc, char** argv) {
       "unfolding (%.2f s): %zu folds, sharp left %.4f (%.2f%%), off sheet Hausdorff %.3f%%\n",
       unfoldingSeconds, plan.folds.size(), plan.sharpLengthLeft, 100 * plan.sharpLengthLeft / size,
       100 * surfaceDistance(unfolded, sheet, 5000).relativeHausdorff());
+  std::printf("  forms read %zu, met %zu times; %zu unfoldings ended%s\n", plan.formsRead,
+              plan.formsMet, plan.unfoldings, plan.cutShort ? " (cut short)" : "");
   for (const UnfoldedFold& u : plan.folds) {
     int fold = -1;
     for (std::size_t f = 0; f < design.folds.size(); ++f)

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -101,6 +103,43 @@ struct Candidate {
   bool interrupted = false;
 };
 
+// A form the unfolding met, read once (issue 38): the same form is met again by other orders of
+// the steps before it, moved by another product of reflections (a pose), and its crease planes
+// and pieces (the dear part of a step) are those read, moved by the pose; its pieces are vertex
+// sets and its crease left after each pose-free.
+struct Form {
+  std::vector<glm::dvec3> positions;   // the pose it was read in
+  std::uint32_t frame[3] = {0, 0, 0};  // three vertices far apart: they fix a pose
+  std::vector<Candidate> candidates;   // in that pose
+};
+
+// The isometry x -> linear x + offset (a rotation or a reflection's) that takes `from` onto `to`,
+// vertex by vertex within `tolerance`, found from the frame's three vertices; none where no
+// isometry does (`used`: the vertices to check, those on a face).
+std::optional<Isometry> poseBetween(const std::vector<glm::dvec3>& from,
+                                    const std::vector<glm::dvec3>& to, const std::uint32_t frame[3],
+                                    const std::vector<char>& used, double tolerance) {
+  auto axes = [&](const std::vector<glm::dvec3>& p) {
+    const glm::dvec3 e1 = glm::normalize(p[frame[1]] - p[frame[0]]);
+    const glm::dvec3 along = p[frame[2]] - p[frame[0]];
+    const glm::dvec3 e2 = glm::normalize(along - glm::dot(along, e1) * e1);
+    return glm::dmat3(e1, e2, glm::cross(e1, e2));
+  };
+  const glm::dmat3 a = axes(from), b = axes(to);
+  for (const double handed : {1.0, -1.0}) {
+    glm::dmat3 mirrored = b;
+    mirrored[2] *= handed;
+    Isometry pose;
+    pose.linear = mirrored * glm::transpose(a);
+    pose.offset = to[frame[0]] - pose.linear * from[frame[0]];
+    bool holds = true;
+    for (std::size_t v = 0; holds && v < from.size(); ++v)
+      holds = !used[v] || glm::distance(pose.apply(from[v]), to[v]) <= tolerance;
+    if (holds) return pose;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::vector<ReflectionPlane> planesBeforeWholeImage(const ReflectionPlane& moved,
@@ -186,9 +225,81 @@ struct Unfolder {
   // as a finished one is), and the best of those and of the finished ones is kept.
   bool cutShort = false;
 
+  // The forms read (issue 38), by their crease: the edges bent past the sheet's facets, which no
+  // pose changes (the folds keep the vertices); forms with the same crease told apart by a pose.
+  std::vector<Form> forms{};
+  std::map<std::vector<std::uint32_t>, std::vector<std::size_t>> formsByCrease{};
+  std::size_t formsMet = 0;  // nodes whose planes were asked for: read, or found in the table
+  std::size_t formsAtLastLeaf = 0;  // forms read when the last unfolding ended
+  std::size_t newFormLeaves = 0;    // unfoldings ended that read a form none before had
+  std::vector<char> onFace{};       // per vertex: on a face (a pose is checked on these)
+  bool useTable = true;             // false: every node read, the 600 unfoldings counted whole
+
   bool outOfTime() {
     cutShort = cutShort || deadline.passed();
     return cutShort;
+  }
+
+  // The interior edges bent past the sheet's facets: a form's crease, its key in the table.
+  std::vector<std::uint32_t> creaseOf(const std::vector<glm::dvec3>& positions) const {
+    std::vector<std::uint32_t> crease;
+    for (std::size_t e = 0; e < connectivity.interior.size(); ++e) {
+      const MeshEdge& edge = connectivity.interior[e];
+      if (glm::dot(faceNormal(positions, target.triangles[edge.faces[0]]),
+                   faceNormal(positions, target.triangles[edge.faces[1]])) < cosBent)
+        crease.push_back(static_cast<std::uint32_t>(e));
+    }
+    return crease;
+  }
+
+  // Three vertices far apart on a face: the first, the farthest from it, the farthest from the
+  // line through both.
+  void frameOf(Form& form) const {
+    const std::vector<glm::dvec3>& p = form.positions;
+    std::uint32_t a = 0;
+    while (a + 1 < p.size() && !onFace[a]) ++a;
+    std::uint32_t b = a, c = a;
+    double far = -1.0;
+    for (std::uint32_t v = 0; v < p.size(); ++v)
+      if (onFace[v] && glm::distance(p[v], p[a]) > far) far = glm::distance(p[v], p[a]), b = v;
+    const glm::dvec3 line = glm::normalize(p[b] - p[a]);
+    far = -1.0;
+    for (std::uint32_t v = 0; v < p.size(); ++v) {
+      const glm::dvec3 d = p[v] - p[a];
+      const double off = glm::length(d - glm::dot(d, line) * line);
+      if (onFace[v] && off > far) far = off, c = v;
+    }
+    form.frame[0] = a;
+    form.frame[1] = b;
+    form.frame[2] = c;
+  }
+
+  // The form's crease planes and pieces (candidatesAt): from the table where the form was read
+  // before in another pose (its planes moved by the pose), else read and kept.
+  std::vector<Candidate> candidatesFor(const std::vector<glm::dvec3>& positions) {
+    ++formsMet;
+    if (!useTable) return candidatesAt(positions);
+    std::vector<std::uint32_t> crease = creaseOf(positions);
+    std::vector<std::size_t>& same = formsByCrease[crease];
+    for (std::size_t f : same) {
+      const Form& form = forms[f];
+      const std::optional<Isometry> pose =
+          poseBetween(form.positions, positions, form.frame, onFace, kSamePose * diagonal);
+      if (!pose) continue;
+      std::vector<Candidate> moved = form.candidates;
+      for (Candidate& c : moved)
+        c.plane = {pose->apply(c.plane.point), glm::normalize(pose->linear * c.plane.normal)};
+      return moved;
+    }
+    Form form;
+    form.positions = positions;
+    form.candidates = candidatesAt(positions);
+    // Maybe cut short: not kept; nor past the table's bound (its memory).
+    if (deadline.passed() || forms.size() >= kMaxForms) return form.candidates;
+    frameOf(form);
+    same.push_back(forms.size());
+    forms.push_back(std::move(form));
+    return forms.back().candidates;
   }
 
   // Where the unfolded target lies off the sheet, on average: the right unfolding lies on it.
@@ -375,12 +486,26 @@ struct Unfolder {
     };
     // Past the deadline (an unfolding cut short ends here), the quick choice below, in two rounds.
     const bool late = deadline.passed();
+    const double offSheetLimit = kOffSheet * diagonal * static_cast<double>(probe.size());
+    // Whether some choice may end on the sheet: each choice's sum stopped once past the limit
+    // (a choice off the sheet most often after a probe or two). Where none does, the closest
+    // choice is not kept (the pieces are, below), so it is not looked for: an unfolding that
+    // ends on a moved copy (most orders of a search) costs a few probes a choice.
+    std::uint32_t allowed = 0;
+    for (std::size_t u = 0; u < n; ++u)
+      if (steps[u].restReplayable) allowed |= 1u << u;
+    bool mayLand = bestOff <= offSheetLimit;
+    if (!forced && n <= kExhaustiveSides && !late)
+      for (std::uint32_t bits = 1; bits < (1u << n) && !mayLand; ++bits) {
+        if (bits & ~allowed) continue;
+        for (std::size_t u = 0; u < n; ++u) rest[u] = bits >> u & 1u;
+        mayLand = offOf(rest, offSheetLimit) <= offSheetLimit;
+      }
     if (forced) {
       bestRest = *forced;
+    } else if (n <= kExhaustiveSides && !late && !mayLand) {
+      bestOff = kInfinitySharp;  // no choice on the sheet: the pieces (below)
     } else if (n <= kExhaustiveSides && !late) {
-      std::uint32_t allowed = 0;
-      for (std::size_t u = 0; u < n; ++u)
-        if (steps[u].restReplayable) allowed |= 1u << u;
       for (std::uint32_t bits = 1; bits < (1u << n) && !deadline.passed(); ++bits) {
         if (bits & ~allowed) continue;
         for (std::size_t u = 0; u < n; ++u) rest[u] = bits >> u & 1u;
@@ -406,11 +531,7 @@ struct Unfolder {
     // plane a whose image b = g(a) reflects it onto the crease's plane: b undone before the fold.
     WholeImage bestImage;  // used where imageFound
     bool imageFound = false;
-    const double offSheetLimit = kOffSheet * diagonal * static_cast<double>(probe.size());
     if (!forced && bestOff > offSheetLimit && !images.empty() && n <= kImageSteps) {
-      std::uint32_t allowed = 0;
-      for (std::size_t u = 0; u < n; ++u)
-        if (steps[u].restReplayable) allowed |= 1u << u;
       double imageOff = kInfinitySharp;
       std::vector<char> imageRest;
       for (std::uint32_t bits = 0; bits < (1u << n) && !deadline.passed(); ++bits) {
@@ -577,13 +698,15 @@ struct Unfolder {
     if (outOfTime()) return leaf(steps, positions, sharp);
     // One step more would take more folds than an unfolding already found smooth.
     const bool deeper = static_cast<double>(steps.size()) + 1.0 <= smoothCost;
-    if (steps.size() < maxFolds && deeper) candidates = candidatesAt(positions);
+    if (steps.size() < maxFolds && deeper) candidates = candidatesFor(positions);
     if (outOfTime()) return leaf(steps, positions, sharp);
     double least = kInfinitySharp;
     for (const Candidate& c : candidates) least = std::min(least, c.sharpAfter);
     // Unfolding must take a crease away, not trade one for another.
     if (candidates.empty() || !(least < sharp - kLeastCrease * diagonal)) {
       ++leaves;
+      if (forms.size() > formsAtLastLeaf) ++newFormLeaves;
+      formsAtLastLeaf = forms.size();
       return leaf(steps, positions, sharp);
     }
     // The pieces that take away a crease, best first (the most crease gone, then the smallest
@@ -613,7 +736,8 @@ struct Unfolder {
     double bestOff = kInfinitySharp;
     bool first = true;
     for (const Candidate* chosen : choices) {
-      if (!first && (leaves >= kMaxUnfoldings || outOfTime())) break;
+      const std::size_t counted = useTable ? newFormLeaves : leaves;
+      if (!first && (counted >= kMaxUnfoldings || leaves >= kMaxOrders || outOfTime())) break;
       std::vector<char> inPiece(positions.size(), 0);
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
       std::vector<glm::dvec3> next = positions;
@@ -666,7 +790,14 @@ struct Unfolder {
   }
 
   static constexpr double kInfinitySharp = 1e300;
+  // Unfoldings that read a form none before had; those that read only forms in the table cost
+  // the side choice alone, and are bounded apart.
   static constexpr std::size_t kMaxUnfoldings = 600;
+  static constexpr std::size_t kMaxOrders = 3000;
+  // How near (of the diagonal) a form moved by a pose must lie on one read to be it.
+  static constexpr double kSamePose = 1e-6;
+  // Forms kept at most (each holds its pose and pieces: a few hundred kilobytes on a fine mesh).
+  static constexpr std::size_t kMaxForms = 2000;
   static constexpr std::size_t kChoicesPerStep = 4;
 };
 
@@ -678,30 +809,77 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
                              double sheetBendDegrees) {
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
-  Unfolder unfolder{
-      target,
-      connectivityOf(target, 1e-5 * diagonal),
-      diagonal,
-      1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
-      std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
-      minDihedralDegrees,
-      std::cos(((sheetBendDegrees < 0.0 ? largestDihedralDegrees(sheet) : sheetBendDegrees) +
-                kBendMarginDegrees) *
-               std::numbers::pi / 180.0),
-      sheetSurface,
-      maxFolds,
-      deadline,
-      symmetryImages};
-  const double sharp =
-      sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
-  const Unfolder::Read read = unfolder.unfold(target.positions, {}, sharp);
-  TargetUnfolding unfolding = read.unfolding;
-  // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
-  if (symmetryImages.empty())
-    if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
-      unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
-  unfolding.cutShort = unfolder.outOfTime();
-  return unfolding;
+  const Connectivity connectivity = connectivityOf(target, 1e-5 * diagonal);
+  std::size_t formsRead = 0, formsMet = 0, unfoldings = 0;
+  // One search over orders: with the table of forms (issue 38), or reading every node as the
+  // search before it did. `onSheet`: whether it ended smooth on the sheet.
+  auto search = [&](bool table, const Deadline& until, bool& onSheet) {
+    Unfolder unfolder{
+        target,
+        connectivity,
+        diagonal,
+        1e-5 * diagonal,  // a crease's vertices, to the digits a file keeps
+        std::cos(minDihedralDegrees * std::numbers::pi / 180.0),
+        minDihedralDegrees,
+        std::cos(((sheetBendDegrees < 0.0 ? largestDihedralDegrees(sheet) : sheetBendDegrees) +
+                  kBendMarginDegrees) *
+                 std::numbers::pi / 180.0),
+        sheetSurface,
+        maxFolds,
+        until,
+        symmetryImages};
+    unfolder.useTable = table;
+    for (const auto& around : unfolder.connectivity.neighbours)
+      unfolder.onFace.push_back(around.empty() ? 0 : 1);
+    const double sharp =
+        sharpLength(target, unfolder.connectivity, target.positions, unfolder.cosBent);
+    Unfolder::Read read = unfolder.unfold(target.positions, {}, sharp);
+    onSheet = unfolder.smooth(read.unfolding) && unfolder.onSheet(unfolder.offSheetOf(read));
+    TargetUnfolding unfolding = read.unfolding;
+    // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
+    if (symmetryImages.empty())
+      if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
+        unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
+    unfolding.cutShort = unfolder.outOfTime();
+    formsRead += table ? unfolder.forms.size() : unfolder.formsMet;
+    formsMet += unfolder.formsMet;
+    unfoldings += unfolder.leaves;
+    unfolding.formsRead = formsRead;
+    unfolding.formsMet = formsMet;
+    unfolding.unfoldings = unfoldings;
+    return unfolding;
+  };
+  // The table's search first, in at most half the time left: where it ends smooth on the sheet,
+  // that is the target's folds. Where it does not, the search that reads every node: a form's
+  // planes read in another pose may differ a little (the reading is not wholly free of the pose),
+  // so which unfolding off the sheet wins may differ, and the one the fit was measured on is kept.
+  // A symmetric design's images are looked for at every end (dear): that search alone.
+  // Cut short, the one that took away more crease is kept (the second may have had no time).
+  std::optional<TargetUnfolding> withTable;
+  if (symmetryImages.empty()) {
+    Deadline half = deadline;  // half of the clock's time left, and of a share of CPU
+    const auto now = std::chrono::steady_clock::now();
+    if (deadline.at != std::chrono::steady_clock::time_point::max() && deadline.at > now)
+      half = deadline.notAfter(now + (deadline.at - now) / 2);
+    if (deadline.shareAt != std::chrono::steady_clock::time_point::max()) {
+      const double cpu = processCpuSeconds();
+      if (deadline.cpuAt > cpu) half.cpuAt = cpu + 0.5 * (deadline.cpuAt - cpu);
+    }
+    bool onSheet = false;
+    withTable = search(true, half, onSheet);
+    if (onSheet && !withTable->cutShort) return *withTable;
+  }
+  bool onSheet = false;
+  TargetUnfolding reading = search(false, deadline, onSheet);
+  if (reading.cutShort && withTable &&
+      withTable->sharpLengthLeft < reading.sharpLengthLeft - kLeastCrease * diagonal) {
+    withTable->formsRead = reading.formsRead;
+    withTable->formsMet = reading.formsMet;
+    withTable->unfoldings = reading.unfoldings;
+    withTable->cutShort = true;
+    return *withTable;
+  }
+  return reading;
 }
 
 }  // namespace curvefold
