@@ -358,6 +358,39 @@ TEST(FoldSession, UndoToTakesBackWholeGroupsAsRepeatedUndoDoes) {
   EXPECT_TRUE(identical(once.fixed(), replayFolds(once.initial(), firstFolds(once, 7))));
 }
 
+// A search folds, measures and takes back to one point again and again (tucks, pleats, rings):
+// undoTo keeps that point's sheet and adjacency and copies them back. Each return is the sheet
+// the records make, a fold made there is the one their replay makes (the adjacency is the
+// sheet's), and after a restart from another sheet, no folds is that sheet, not the one kept.
+TEST(FoldSession, UndoToTheSamePointAgainIsTheSheetItsRecordsMake) {
+  FoldSession session(flatGrid(10, 10, 0.02));
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> coordinate(0.0, 0.2);
+  auto randomDrag = [&] {
+    drag(session, {coordinate(random), coordinate(random), 0.0},
+         {{coordinate(random), coordinate(random), 0.05 + coordinate(random) * 0.2}});
+  };
+  for (int i = 0; i < 10; ++i) randomDrag();
+  ASSERT_EQ(session.foldCount(), 10u);
+  for (int round = 0; round < 3; ++round) {
+    randomDrag();
+    randomDrag();
+    session.undoTo(9);
+    ASSERT_EQ(session.foldCount(), 9u);
+    EXPECT_TRUE(identical(session.fixed(), replayFolds(session.initial(), firstFolds(session, 9))))
+        << "round " << round;
+  }
+  randomDrag();
+  ASSERT_EQ(session.foldCount(), 10u);
+  EXPECT_TRUE(identical(session.fixed(), replayFolds(session.initial(), session.folds())));
+
+  session.undoTo(0);
+  session.restartFrom(flatGrid(8, 8, 0.025));
+  randomDrag();
+  ASSERT_EQ(session.undoTo(0), 1u);
+  EXPECT_TRUE(identical(session.fixed(), session.initial()));
+}
+
 // docs/design.md 8: the fixed + temporal pair stays below three sheets while dragging.
 TEST(FoldSession, FixedAndTemporalStayBelowThreeSheets) {
   FoldSession session(flatGrid(100, 100, 0.002));

@@ -172,24 +172,29 @@ void addSurfaceOptions(CLI::App* command, SurfaceOptions& options) {
 }
 
 Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
-                                const std::string& nameForErrors) {
+                                Sheet* sheet) {
   Design design;
+  // The initial sheet, made once: a large one (a star of 10,000 m: 14.7 million triangles) took
+  // seconds to mesh, and was meshed again by the symmetry's check and by the caller.
+  Sheet initial;
   if (hasExtension(options.surface, ".obj")) {
     for (const auto& [name, value] : options.values)
       if (command->get_option("--" + name)->count() > 0)
         throw UsageError("--" + name + " does not apply to an OBJ surface");
     design.surface = readObjSurface(options.surface);
+    initial = std::get<Sheet>(design.surface);
   } else {
     GeneratedSurface generated{options.surface, {}};
     for (const auto& [name, value] : options.values)
       if (command->get_option("--" + name)->count() > 0) generated.parameters[name] = value;
-    makeSurface(generated.generator, generated.parameters);  // refuses bad parameters now
+    // Refuses bad parameters now; initialSheet(design) makes this very sheet.
+    initial = makeSurface(generated.generator, generated.parameters);
     design.surface = generated;
   }
   // Given is given: `--symmetry ""` is refused, not read as none.
   if (command->get_option("--symmetry")->count() > 0) {
     try {
-      design.symmetry = parseSymmetry(options.symmetry, initialSheet(design, nameForErrors)).name();
+      design.symmetry = parseSymmetry(options.symmetry, initial).name();
     } catch (const InvalidSymmetry& e) {
       // A disk has every rotation and a star one by each divisor of its points: a rotation the
       // default mesh lacks is meshed for (its "rotations"), unless the user chose them.
@@ -201,14 +206,16 @@ Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* c
       GeneratedSurface meshed = *generated;
       meshed.parameters["rotations"] = *order;
       try {
-        const Sheet sheet = makeSurface(meshed.generator, meshed.parameters);
-        design.symmetry = parseSymmetry(options.symmetry, sheet).name();
+        Sheet remeshed = makeSurface(meshed.generator, meshed.parameters);
+        design.symmetry = parseSymmetry(options.symmetry, remeshed).name();
+        initial = std::move(remeshed);
       } catch (const std::invalid_argument&) {
         throw UsageError("--symmetry " + session::symmetryProblem(e));
       }
       design.surface = meshed;
     }
   }
+  if (sheet) *sheet = std::move(initial);
   return design;
 }
 
@@ -234,8 +241,8 @@ void addNewCommand(CLI::App& app) {
         {options->output},
         {{hasExtension(options->surface.surface, ".obj") ? options->surface.surface : "",
           "the surface read"}});
-    const Design design = designFromSurfaceOptions(options->surface, command, options->output);
-    const Sheet sheet = initialSheet(design, options->output);
+    Sheet sheet;
+    const Design design = designFromSurfaceOptions(options->surface, command, &sheet);
     saveDesign(design, options->output);
     // A sheet may have several pieces (an OBJ of separate parts): each is its own piece of
     // paper, laid side by side in the development and printed on one crease pattern.

@@ -54,8 +54,10 @@ struct SurfaceOptions {
 };
 void addSurfaceOptions(CLI::App* command, SurfaceOptions& options);
 // The design the options make (no folds); throws UsageError or the surface's own error.
+// `sheet`, when given, receives the design's initial sheet (initialSheet(design)): the one made
+// here to check the parameters, so a caller does not mesh the surface again.
 Design designFromSurfaceOptions(const SurfaceOptions& options, const CLI::App* command,
-                                const std::string& nameForErrors);
+                                Sheet* sheet = nullptr);
 
 // The files a folding session (the window or the headset) records to, autosaves to and folds
 // toward; `autosaveWhen` says when the session writes its autosave.

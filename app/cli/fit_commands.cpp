@@ -109,7 +109,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
   Design design;
   chosen = !isObj && !parametersGiven;
   if (isObj || parametersGiven) {
-    design = designFromSurfaceOptions(from, command, output);
+    design = designFromSurfaceOptions(from, command);
   } else {
     // An unknown name is refused as such. The sheet is sized to the target, so a target in
     // other units (millimetres) or away from the origin is not refused against the defaults
@@ -252,9 +252,11 @@ Sheet rehearsalSheet(const FitCommandOptions& options, const CLI::App* command) 
   bool parametersGiven = false;
   for (const auto& [name, value] : options.from.values)
     parametersGiven = parametersGiven || command->get_option("--" + name)->count() > 0;
-  if (hasExtension(options.from.surface, ".obj") || parametersGiven)
-    return initialSheet(designFromSurfaceOptions(options.from, command, options.output),
-                        options.output);
+  if (hasExtension(options.from.surface, ".obj") || parametersGiven) {
+    Sheet sheet;
+    designFromSurfaceOptions(options.from, command, &sheet);
+    return sheet;
+  }
   return makeSurface(options.from.surface.empty() ? "square" : options.from.surface);
 }
 

@@ -42,6 +42,7 @@ void FoldSession::restartFrom(Sheet initial) {
   dragging_ = folded_ = sliver_ = grabInserted_ = previewing_ = false;
   grabVertex_ = kNoIndex;
   history_.clear();
+  undoPoint_.reset();  // another initial sheet
   applied_ = 0;
   keyframes_.assign(1, initial_);
   symmetric_.reset();
@@ -201,6 +202,7 @@ bool FoldSession::commit() {
   dragging_ = false;
   folded_ = false;
   previewing_ = false;
+  historyChangesFrom(applied_);
   history_.resize(applied_);
   // Keyframe k holds the sheet after k * interval folds; later ones belong to the dropped redo.
   if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
@@ -241,6 +243,7 @@ void FoldSession::addKeyframes() {
 void FoldSession::applyRecords(const std::vector<FoldRecord>& folds) {
   cancel();
   if (folds.empty()) return;
+  historyChangesFrom(applied_);
   history_.resize(applied_);
   if (keyframes_.size() > applied_ / kKeyframeInterval + 1)
     keyframes_.resize(applied_ / kKeyframeInterval + 1);
@@ -296,6 +299,8 @@ SessionMemory FoldSession::memoryUse() const {
                        adjacencyBytes(fixedAdjacency_) + adjacencyBytes(adjacencyBeforeGrab_),
                        workspace_.memoryBytes(), 0};
   for (std::size_t k = 1; k < keyframes_.size(); ++k) memory.history += sheetBytes(*keyframes_[k]);
+  if (undoPoint_)
+    memory.history += sheetBytes(undoPoint_->sheet) + adjacencyBytes(undoPoint_->adjacency);
   return memory;
 }
 
@@ -314,7 +319,7 @@ bool FoldSession::undo() {
   --applied_;
   while (group != 0 && applied_ > 0 && history_[applied_ - 1].group == group) --applied_;
   ++designRevision_;
-  setFixed(sheetAfter(applied_));
+  fixedFromHistory();
   return true;
 }
 
@@ -328,8 +333,30 @@ std::size_t FoldSession::undoTo(std::size_t foldCount) {
     while (group != 0 && applied_ > 0 && history_[applied_ - 1].group == group) --applied_;
   }
   ++designRevision_;
-  setFixed(sheetAfter(applied_));
+  fixedFromHistory();
   return before - applied_;
+}
+
+void FoldSession::fixedFromHistory() {
+  // The sheet after the same folds is the same bit for bit (the keyframes and records before the
+  // point stand: historyChangesFrom), and so is its adjacency; copies cost far less than the
+  // folds replayed and the adjacency built again.
+  if (undoPoint_ && undoPoint_->foldCount == applied_) {
+    fixed_ = undoPoint_->sheet;
+    temporal_ = fixed_;
+    fixedAdjacency_ = undoPoint_->adjacency;
+    ++fixedRevision_;
+    return;
+  }
+  setFixed(sheetAfter(applied_));
+  undoPoint_ = UndoPoint{applied_, fixed_, fixedAdjacency_};
+}
+
+void FoldSession::historyChangesFrom(std::size_t fold) {
+  // Today the folds fall below the point only through undo and undoTo, which move it, or
+  // restartFrom, which drops it, so a commit keeps every record before it; this keeps the point
+  // right should that change.
+  if (undoPoint_ && undoPoint_->foldCount > fold) undoPoint_.reset();
 }
 
 bool FoldSession::redo() {

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,8 @@ struct SessionMemory {
   std::size_t temporal = 0;   // the temporal sheet's arrays
   std::size_t adjacency = 0;  // the fixed sheet's vertex rows
   std::size_t workspace = 0;  // the reflection's scratch
-  std::size_t history = 0;    // undo keyframes (the initial sheet is shared with the caller's)
+  std::size_t history = 0;    // undo keyframes and the last point undone to (the initial sheet is
+                              // shared with the caller's)
 };
 
 class FoldSession {
@@ -156,6 +158,8 @@ class FoldSession {
   void fixedChanged();  // after fixed_ changed: its adjacency and revision
   void addKeyframes();  // up to the folds applied
   Sheet sheetAfter(std::size_t foldCount) const;
+  void fixedFromHistory();  // fixed_ as the first applied_ folds make it (undo, undoTo)
+  void historyChangesFrom(std::size_t fold);  // the records from `fold` on are dropped
 
   std::shared_ptr<const Sheet> initial_;
   double epsilon_ = 0.0;
@@ -187,6 +191,15 @@ class FoldSession {
   std::vector<FoldRecord> history_;
   std::size_t applied_ = 0;
   std::vector<std::shared_ptr<const Sheet>> keyframes_;  // keyframes_[k]: after k*interval folds
+  // The sheet and adjacency of the last point undone to, while the folds before it stand: a search
+  // that makes folds and takes them back to one point (tucks, pleats, rings: undoTo) copies them
+  // there, not folding the sheet again from its keyframe and building its adjacency each time.
+  struct UndoPoint {
+    std::size_t foldCount = 0;
+    Sheet sheet;
+    SheetAdjacency adjacency;
+  };
+  std::optional<UndoPoint> undoPoint_;
 
   std::shared_ptr<const SymmetricFolder> symmetric_;  // none: folds have no images
   std::shared_ptr<const SymmetricFolder> previewFolder_;
