@@ -5,7 +5,6 @@
 #include <memory>
 #include <numbers>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
@@ -129,9 +128,6 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
   const std::vector<FloorRingShape> shapes =
       floorRingShapes(session.fixed().positions, axis.point, *floor, heel);
   if (shapes.empty()) return std::nullopt;
-  const std::vector<FoldRecord> records(
-      session.folds().begin(),
-      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
@@ -139,20 +135,13 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
   for (const FloorRingShape& shape : shapes)
     rings.push_back(floorRingOf(shape, axis.point, floor->toward, floor->height, heel));
   std::vector<double> scores(rings.size(), 1e300);
-  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
+  RingTrials trials(session, allowCrossing ? std::nullopt : std::optional(crossingsBefore));
   tbb::parallel_for(std::size_t{0}, rings.size(), [&](std::size_t r) {
     if (deadline.passed()) return;
     deadline.countEvaluation();
-    std::unique_ptr<FoldSession>& local = sessions.local();
-    if (!local) {
-      local = std::make_unique<FoldSession>(session.initial());
-      local->applyRecords(records);
-    }
-    if (makeRing(*local, rings[r]) == rings[r].planes.size() &&
-        (allowCrossing ||
-         findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
-      scores[r] = floorMeasure(local->fixed(), fitter);
-    local->undoTo(records.size());
+    trials.tryRing(rings[r], rings[r].planes.size(), [&](const FoldSession& copy) {
+      scores[r] = floorMeasure(copy.fixed(), fitter);
+    });
   });
   if (deadline.passed()) return std::nullopt;  // the scores are partial
   const auto best = std::min_element(scores.begin(), scores.end());

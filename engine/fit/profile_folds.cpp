@@ -9,7 +9,6 @@
 #include <glm/geometric.hpp>
 #include <memory>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "engine/fit/eigen_glm.hpp"
@@ -440,6 +439,26 @@ void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
       }
 }
 
+RingTrials::RingTrials(const FoldSession& session, std::optional<std::size_t> mostCrossings)
+    : session_(session),
+      records_(session.folds().begin(),
+               session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount())),
+      mostCrossings_(mostCrossings) {}
+
+void RingTrials::tryRing(const Ring& ring, std::size_t leastFolds,
+                         const std::function<void(const FoldSession&)>& made) {
+  std::unique_ptr<FoldSession>& copy = copies_.local();
+  if (!copy) {
+    copy = std::make_unique<FoldSession>(session_.initial());
+    copy->applyRecords(records_);
+  }
+  if (makeRing(*copy, ring) >= leastFolds &&
+      (!mostCrossings_ ||
+       findSelfIntersections(copy->fixed()).intersections.size() <= *mostCrossings_))
+    made(*copy);
+  copy->undoTo(records_.size());
+}
+
 std::size_t makeRing(FoldSession& session, const Ring& ring) {
   session.cancel();
   std::size_t made = 0;
@@ -563,33 +582,21 @@ std::vector<FoldSuggestion> suggestRings(const FoldSession& session, const FoldF
 
   // Each refined ring made on the sheet itself (a session of each thread's own), scored, checked
   // for passing through itself, and taken back.
-  const std::vector<FoldRecord> base(
-      session.folds().begin(),
-      session.folds().begin() + static_cast<std::ptrdiff_t>(session.foldCount()));
   const double before = fitter.approximateDistance(session.fixed());
   const bool allowCrossing = fitter.settings().allowSelfIntersection;
   const std::size_t crossingsBefore =
       allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
   std::vector<FoldSuggestion> made(refined.size());
-  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
+  RingTrials trials(session, allowCrossing ? std::nullopt : std::optional(crossingsBefore));
   tbb::parallel_for(std::size_t(0), refined.size(), [&](std::size_t r) {
     if (deadline.passed()) return;
-    std::unique_ptr<FoldSession>& local = sessions.local();
-    if (!local) {
-      local = std::make_unique<FoldSession>(session.initial());
-      local->applyRecords(base);
-    }
-    if (makeRing(*local, ringOf(refined[r], axis)) > 0 &&
-        (allowCrossing ||
-         findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore)) {
-      made[r].folds.assign(
-          local->folds().begin() + static_cast<std::ptrdiff_t>(base.size()),
-          local->folds().begin() + static_cast<std::ptrdiff_t>(local->foldCount()));
-      made[r].sheet = local->fixed();
+    trials.tryRing(ringOf(refined[r], axis), 1, [&](const FoldSession& copy) {
+      made[r].folds.assign(copy.folds().begin() + static_cast<std::ptrdiff_t>(trials.baseFolds()),
+                           copy.folds().begin() + static_cast<std::ptrdiff_t>(copy.foldCount()));
+      made[r].sheet = copy.fixed();
       made[r].before = before;
       made[r].after = fitter.approximateDistance(made[r].sheet);
-    }
-    local->undoTo(base.size());
+    });
   });
   if (deadline.givesUp()) return {};
   std::vector<FoldSuggestion> out;

@@ -68,11 +68,14 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <random>
 #include <span>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <glm/vec3.hpp>
 
 #include "engine/fit/deadline.hpp"
@@ -149,6 +152,28 @@ void previewRing(const Ring& ring, std::vector<glm::dvec3>& points,
 // drag in progress, if any, is cancelled first. Each fold is seeded at the sheet vertex farthest
 // on its plane's side, or, where the ring has seeds, at the vertex on that side nearest its seed.
 std::size_t makeRing(FoldSession& session, const Ring& ring);
+
+// Rings tried on the sheet itself, in parallel: each thread's own copy of `session` (its initial
+// sheet and its folds so far, replayed once a thread), on which a ring is made, handed on where it
+// is made and passes through the sheet no more than `mostCrossings` allows (std::nullopt: crossing
+// allowed), then taken back. One home for what the ring searches share (ring_folds.hpp,
+// floor_rings.hpp, suggestRings below).
+class RingTrials {
+ public:
+  RingTrials(const FoldSession& session, std::optional<std::size_t> mostCrossings);
+  // Makes `ring` on this thread's copy; where at least `leastFolds` of its folds are made and the
+  // crossings hold, calls `made(copy)`; then undoes the copy to `session`'s folds. Safe to call
+  // from several threads at once (tbb::parallel_for).
+  void tryRing(const Ring& ring, std::size_t leastFolds,
+               const std::function<void(const FoldSession&)>& made);
+  std::size_t baseFolds() const { return records_.size(); }
+
+ private:
+  const FoldSession& session_;
+  std::vector<FoldRecord> records_;
+  std::optional<std::size_t> mostCrossings_;
+  tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> copies_;
+};
 
 // Up to `count` rings of `proposals` drawn (ringProposals, toward the fitter's target whose
 // samples are `targetSamples`) that bring the session's design closer (the fitter's distance)

@@ -10,7 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
 #include <Eigen/Dense>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -351,9 +350,6 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
     for (Chain& chain : chains) {
       if (chain.done || batches.cut()) continue;
       FoldSession& grown = *chain.grown;
-      const std::vector<FoldRecord> records(
-          grown.folds().begin(),
-          grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
       const std::vector<SurfaceSample> samples =
           sampleSurface(meshOf(grown.fixed()), kProfileSamples, random());
       std::vector<RingShape> shapes;
@@ -388,20 +384,12 @@ std::vector<FoldSuggestion> suggestTubeRings(const FoldSession& session, const F
               shapes.push_back(*corner);
       }
       std::vector<double> scores(shapes.size(), 1e300);
-      tbb::enumerable_thread_specific<std::unique_ptr<FoldSession>> sessions;
+      RingTrials trials(grown, allowCrossing ? std::nullopt : std::optional(crossingsBefore));
       const auto evaluate = [&](std::size_t r) {
         if (deadline.passed()) return;
         deadline.countEvaluation();
-        std::unique_ptr<FoldSession>& local = sessions.local();
-        if (!local) {
-          local = std::make_unique<FoldSession>(session.initial());
-          local->applyRecords(records);
-        }
-        if (makeRing(*local, ringOf(shapes[r], axis)) > 0 &&
-            (allowCrossing ||
-             findSelfIntersections(local->fixed()).intersections.size() <= crossingsBefore))
-          scores[r] = measure(local->fixed());
-        local->undoTo(records.size());
+        trials.tryRing(ringOf(shapes[r], axis), 1,
+                       [&](const FoldSession& copy) { scores[r] = measure(copy.fixed()); });
       };
       const auto foldsOf = [&](std::size_t from, std::size_t to) {
         double folds = 0.0;
