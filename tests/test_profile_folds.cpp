@@ -847,6 +847,32 @@ TEST(TimedBatches, ABatchTheTimeLeftWouldNotFinishIsNotStarted) {
   EXPECT_FALSE(never.cut());
 }
 
+// A step's batches differ in cost per unit (the nested rings' solved rings and searched shapes:
+// 1.9-3.8 ms per fold made in one step), so the next batch is judged by the dearest rate seen, not
+// the last (a batch judged by a cheap one ran past the fit's deadline: the final measure of
+// NestedRings.TheFinalMeasureOfManyRingsKeepsWithinTheTime then fell after the limit). One
+// candidate of 100 ms per unit, four of 10 ms per unit, then ten units with under 0.9 s left:
+// refused at the dearest rate (1 s), though the last (0.1 s) would start it.
+TEST(TimedBatches, ABatchIsJudgedByTheDearestRateItsStepHasSeen) {
+  const Deadline deadline = Deadline::in(1.0);
+  TimedBatches batches(deadline);
+  std::atomic<int> ran{0};
+  const auto taking = [&](int milliseconds) {
+    return [&ran, milliseconds](std::size_t) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
+      ++ran;
+    };
+  };
+  tbb::task_arena one(1);  // one at a time, whatever the machine's cores
+  one.execute([&] {
+    EXPECT_TRUE(batches.run(0, 1, 1.0, taking(100)));
+    EXPECT_TRUE(batches.run(1, 5, 4.0, taking(10)));
+    EXPECT_FALSE(batches.run(5, 15, 10.0, taking(1)));
+  });
+  EXPECT_EQ(ran.load(), 5);
+  EXPECT_TRUE(batches.cut());
+}
+
 // The chains cut short by the clock (issue 38, 2: at --time 60 on a loaded machine a vase kept no
 // fold, the chain answering nothing until every ring of both chains was made): the step still
 // answers the rings the chains made whole. The deadline is a quarter of what the whole step took
