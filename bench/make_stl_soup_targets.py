@@ -9,9 +9,10 @@ OBJ the way a naive converter does it: every facet its own three `v` lines (a tr
 vertex shared, every edge a boundary edge of the file), `vn` lines from the facet normals and
 faces `f a//n b//n c//n`. On some targets a share of the facets is wound the other way (an STL
 whose normals disagree with its winding, as a repaired or merged model has), and units are
-inches, centimetres or millimetres (drawn per target, not metres). Shapes are lathed from closed
-formulas, meshed as rings whose vertex count halves or doubles between bands (T-junction-free
-2:1 transitions), the axis a uniform random direction, the whole moved off the origin:
+inches, centimetres or millimetres (set per target, not metres). Shapes are closed formulas:
+the tubes lathed as rings whose vertex count doubles past 0.55 of the widest radius (2:1 bands,
+no T-junction), the dishes, the bowl and the saddle as rings about a centre whose count grows
+with the radius, merged by angle; the axis a uniform random direction, moved off the origin:
 
   lamp_bulge      a lampshade with a bulge: r(t) = r0 + (r1 - r0) t + b sin(pi t)^2, open at top
                   and bottom;
