@@ -27,6 +27,7 @@
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/surface_samples.hpp"
+#include "engine/fit/target_units.hpp"
 #include "engine/fit/timed_batches.hpp"
 #include "engine/fit/tube_reach.hpp"
 #include "engine/geometry/self_intersection.hpp"
@@ -447,6 +448,27 @@ TEST(StartSurface, AVaseInMillimetresIsToldItsRingsReachInItsOwnUnits) {
   EXPECT_EQ(start.surface, "cylinder") << start.placement;
   EXPECT_NE(start.placement.find("its rings could come within"), std::string::npos)
       << start.placement;
+  EXPECT_NE(start.placement.find(" units of the target's profile"), std::string::npos)
+      << start.placement;
+  EXPECT_EQ(start.placement.find(" mm"), std::string::npos) << start.placement;
+}
+
+// The same vase in inches (10.3 across its diagonal: 36 times the default square's, within the
+// hundredfold that the check of a sheet keeps): its lengths are its own numbers too, not metres
+// (bench/make_stl_soup_targets.py's lamp_bulge_in, 18.7 inches across, printed "842 mm").
+TEST(StartSurface, AVaseInInchesIsToldItsRingsReachInItsOwnUnits) {
+  TriangleMesh vase = revolved(
+      [](double h) {
+        const double s = (h + 0.105) / 0.21;
+        return 0.045 + 0.011 * std::sin(1.7 * std::numbers::pi * s) -
+               0.006 * (2.0 * s - 1.0) * (2.0 * s - 1.0);
+      },
+      -0.105, 0.105, 48, 24);
+  for (glm::dvec3& p : vase.positions) p /= 0.0254;
+  EXPECT_FALSE(lengthsInMetres(boundingDiagonal(vase)));
+  EXPECT_TRUE(lengthsInMetres(0.0254 * boundingDiagonal(vase)));  // the vase in metres
+  const StartChoice start = chooseStart(vase);
+  ASSERT_TRUE(start.placed);
   EXPECT_NE(start.placement.find(" units of the target's profile"), std::string::npos)
       << start.placement;
   EXPECT_EQ(start.placement.find(" mm"), std::string::npos) << start.placement;

@@ -10,8 +10,14 @@ namespace curvefold {
 // within a hundredfold either way. Both positive.
 bool sameUnits(double size, double reference);
 
-// Whether a target's lengths read as metres: sameUnits against the default square's diagonal.
-// Else they are printed as its own numbers ("12.3 units": distance_text.hpp's unitsText).
+// How many times the default square's diagonal a target's may be and its lengths still read as
+// metres (2.83 m): below sameUnits' hundredfold, since a model in inches or centimetres (a
+// lampshade 18.7 inches across) is read as that many metres and sameUnits passes it.
+inline constexpr double kMetresAtMost = 10.0;
+
+// Whether a target's lengths read as metres: its diagonal within a hundredth and kMetresAtMost
+// times the default square's. Else they are printed as its own numbers ("12.3 units":
+// distance_text.hpp's unitsText). The check of a sheet against a target keeps sameUnits.
 bool lengthsInMetres(double targetDiagonal);
 
 }  // namespace curvefold
