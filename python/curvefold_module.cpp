@@ -31,7 +31,9 @@
 #include "engine/fabrication/crease_pattern_pdf.hpp"
 #include "engine/fabrication/cutter_svg.hpp"
 #include "engine/fabrication/svg_crease_pattern.hpp"
+#include "engine/fit/fit_start.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/runner_up_fits.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/geometry/creases.hpp"
 #include "engine/geometry/fold_session.hpp"
@@ -944,6 +946,126 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
   return report;
 }
 
+// `curvefold fit TARGET` (start None) or `curvefold fit TARGET --from KIND` (a catalogue name,
+// sized to the target): the start chosen and revised as the command line chooses it
+// (fit_start.hpp), folded with its runners-up and the nearer kept (runner_up_fits.hpp), with the
+// GIL released. The kept design, and a report as Design.fit's with which start was kept and
+// where every start's fit ended.
+py::tuple fitTarget(const py::object& target, std::size_t folds, std::optional<double> time,
+                    std::uint64_t seed, std::optional<std::uint64_t> evaluations,
+                    std::optional<std::string> start, bool allowSelfIntersection) {
+  if (folds < 1 || folds > 64) throw std::invalid_argument("fit: folds must lie in 1 to 64");
+  if (time && !(*time >= 0.1 && *time <= 86400.0))
+    throw std::invalid_argument("fit: time must lie in 0.1 to 86400 seconds");
+  if (evaluations && (*evaluations < 1 || *evaluations > 1'000'000'000'000ull))
+    throw std::invalid_argument("fit: evaluations must lie in 1 to 10^12");
+  const auto started = std::chrono::steady_clock::now();
+  const double startedCpu = processCpuSeconds();
+  const std::string kind = start.value_or("");
+  if (!kind.empty()) {
+    try {
+      makeSurface(kind);  // an unknown name is refused as such, before the target is read
+    } catch (const SurfaceError& e) {
+      throw std::invalid_argument(std::string("fit: start: ") + e.what());
+    }
+  }
+  const std::string targetName = shapeName(target);
+  TriangleMesh mesh = shapeOf(target, "fit: target");
+  Design design;
+  RunnerUpFits fits;
+  std::vector<RunnerUpStart> runnersUp;
+  std::string ruleSurface;  // the rule's choice: its kind, and whether it was placed
+  bool rulePlaced = false;
+  {
+    py::gil_scoped_release release;
+    FitSettings settings;
+    settings.seed = seed;
+    settings.allowSelfIntersection = allowSelfIntersection;
+    std::unique_ptr<FoldFitter> fitter;
+    try {
+      fitter = std::make_unique<FoldFitter>(std::move(mesh), settings);
+    } catch (const InvalidTarget& e) {
+      throw std::invalid_argument(targetName + ": " + e.what());
+    }
+    // As the command line: evaluations alone use no clock.
+    const double seconds = time          ? *time
+                           : evaluations ? std::numeric_limits<double>::infinity()
+                                         : 60.0;
+    FitStart chosen;
+    try {
+      chosen = chooseFitStart(*fitter, kind, std::nullopt,
+                              FitStartClock{started, startedCpu, seconds, nullptr});
+    } catch (const SurfaceError& e) {
+      throw std::invalid_argument(std::string("fit: start: ") + e.what());
+    }
+    const StartChoice& choice = chosen.choice;
+    ruleSurface = choice.surface;
+    rulePlaced = choice.placed.has_value();
+    if (choice.placed)
+      design.surface = *choice.placed;
+    else
+      design.surface = GeneratedSurface{choice.surface, choice.parameters};
+    FitOptions options;
+    options.maxFolds = folds;
+    options.seconds = seconds;
+    options.started = started;
+    options.maxEvaluations = evaluations.value_or(0);
+    options.tubeChains = chosen.tubeChains;
+    options.mayPlaceStart = true;  // chosen here, as `fit` without --from parameters
+    runnersUp = choice.runnersUp;
+    try {
+      fits = fitWithRunnersUp(*fitter, initialSheet(design), "", runnersUp, options);
+    } catch (const InvalidTarget& e) {
+      throw std::invalid_argument(targetName + ": " + e.what());
+    }
+  }
+  const std::size_t kept = fits.kept;
+  if (kept > 0) {
+    const RunnerUpStart& won = runnersUp[kept - 1];
+    if (won.placed)
+      design.surface = *won.placed;
+    else
+      design.surface = GeneratedSurface{won.surface, won.parameters};
+  }
+  const FitResult& result = fits.keptFit().result;
+  if (result.placedStart) design.surface = *result.placedStart;  // the folds are made on it
+  design.folds = result.folds;
+  py::list steps, starts;
+  for (const FitProgress& step : result.steps) {
+    py::dict item;
+    item["folds"] = step.fold;
+    item["hausdorff"] = step.hausdorff;
+    item["chamfer"] = step.chamfer;
+    item["seconds"] = step.seconds;
+    steps.append(item);
+  }
+  for (std::size_t i = 0; i < fits.fits.size(); ++i) {
+    const FitProgress& ended = fits.fits[i].result.steps.back();
+    py::dict item;
+    item["surface"] = i == 0 ? ruleSurface : runnersUp[i - 1].surface;
+    item["placed"] = i == 0 ? rulePlaced : runnersUp[i - 1].placed.has_value();
+    item["hausdorff"] = ended.hausdorff;
+    item["chamfer"] = ended.chamfer;
+    item["kept"] = i == kept;
+    starts.append(item);
+  }
+  const FitProgress& last = result.steps.back();
+  py::dict report;
+  report["folds"] = result.steps.size() - 1;
+  report["hausdorff"] = last.hausdorff;
+  report["chamfer"] = last.chamfer;
+  report["diagonal"] = last.diagonal;
+  report["steps"] = steps;
+  report["stop"] = result.stopReason;
+  report["timed_out"] = result.timedOut;
+  report["out_of_evaluations"] = result.outOfEvaluations;
+  report["evaluations"] = result.evaluations;
+  report["dropped_samples"] = result.droppedSamples;
+  report["starts"] = starts;
+  const std::string name = session::surfaceName(design);
+  return py::make_tuple(PyDesign(std::move(design), name), report);
+}
+
 // The module's exceptions: ArgumentError, and the engine's one-line errors as Python's own.
 void defineErrors(py::module_& m) {
   // An argument of the wrong type: both a ValueError (the module's rule: a bad argument is
@@ -1209,6 +1331,16 @@ void defineFunctions(py::module_& m) {
         return seconds;
       },
       py::arg("design"), py::arg("grab"), py::arg("to"), py::arg("repeats"));
+  m.def("fit", &fitTarget, py::arg("target"), py::kw_only(), py::arg("folds") = 6,
+        py::arg("time") = py::none(), py::arg("seed") = 1, py::arg("evaluations") = py::none(),
+        py::arg("start") = py::none(), py::arg("allow_self_intersection") = false,
+        "Folds a sheet toward a target shape (an OBJ path, a design file or a Design) as "
+        "`curvefold fit TARGET` does: start=None chooses and sizes the sheet as `fit` without "
+        "--from, folds the rule's close runners-up too and keeps the design nearer by both "
+        "measures; start='cone' (a catalogue name) sizes that kind, as --from cone. folds, time, "
+        "seed and evaluations as Design.fit. Returns (Design, report): the report as "
+        "Design.fit's, with starts: [{surface, placed, hausdorff, chamfer, kept}] for every start "
+        "folded, the rule's choice first");
   m.def("distance", &distanceOf, py::arg("a"), py::arg("b"), py::kw_only(),
         py::arg("samples") = kDefaultDistanceSamples, py::arg("seed") = 1,
         py::arg("png") = py::none(),

@@ -20,11 +20,12 @@
 #include "app/session/document.hpp"
 #include "engine/fit/farthest_points.hpp"
 #include "engine/fit/first_step_start.hpp"
+#include "engine/fit/fit_start.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/runner_up_fits.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
 #include "engine/fit/target_units.hpp"
-#include "engine/fit/work_share.hpp"
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/io/atomic_file.hpp"
@@ -66,11 +67,9 @@ TriangleMesh shapeOf(const std::string& path) {
 // symmetry is printed when --symmetry is not given.
 // A target far from the catalogue's frame or in other units is sized to (a note says so); the
 // caller checks the start against it.
-// `deadline`: when the choice stops measuring more sheets (a share of --time); `work`: the same
-// share counted in work (work_share.hpp), for the sheets measured and the choice by the first
-// step toward a saddle (the tube rings' probe times its batches by the wall clock's moment,
-// timed_batches.hpp, so it keeps `deadline`). `chosen`: set when the sheet was chosen or sized
-// here (no .obj and no parameters given), so the fit may move it whole (FitOptions::mayPlaceStart).
+// `clock`: the fit's, of which the choice takes its share (fit_start.hpp). `chosen`: set when the
+// sheet was chosen or sized here (no .obj and no parameters given), so the fit may move it whole
+// (FitOptions::mayPlaceStart).
 // "cone --base_radius 0.08 ...": a start's kind (a placed oval disk, parabola or bent sheet in
 // words) and the parameters it was sized to.
 std::string startText(const std::string& surface, const SurfaceParameters& parameters,
@@ -99,7 +98,7 @@ struct StartRunnersUp {
 };
 
 Design startDesign(const SurfaceOptions& from, const CLI::App* command, const FoldFitter& fitter,
-                   const std::string& output, const Deadline& deadline, const Deadline& work,
+                   const std::string& output, const FitStartClock& clock,
                    std::shared_ptr<const TubeChains>& tubeChains, bool& chosen,
                    StartRunnersUp& runnersUp) {
   bool parametersGiven = false;
@@ -125,26 +124,18 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
     }
     // A symmetry asked for is kept: only sheets that have it are sized or placed.
     const bool symmetric = command->get_option("--symmetry")->count() > 0;
-    StartChoice start;
+    // The rule's sheet, revised by its first step toward a saddle or a vase (fit_start.hpp).
+    FitStart fitStart;
     try {
-      start =
-          chooseStart(fitter.measuredTarget(), from.surface, symmetric ? from.symmetry : "", work);
+      fitStart = chooseFitStart(
+          fitter, from.surface,
+          symmetric ? std::optional<std::string>(from.symmetry) : std::nullopt, clock);
     } catch (const InvalidSymmetry& e) {
       throw UsageError("--symmetry " + session::symmetryProblem(e));
     }
-    // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest
-    // (first_step_start.hpp): a flat sheet's cross of pleats beats a swept parabola that starts
-    // nearer, and gets the paper its pleats fold away given back.
-    std::optional<FirstStepStart> firstStep =
-        symmetric ? std::nullopt : reviseByFirstStep(start, fitter, from.surface, work);
-    // Toward a vase, the cone around its profile where its rings land nearer than the start's
-    // (rings only narrow a tube: a belly outside the start is never reached).
-    // The probe's rings are handed to the search, which grows them on.
-    if (!symmetric && !firstStep) {
-      auto chains = std::make_shared<TubeChains>();
-      firstStep = reviseTubeByFirstStep(start, fitter, from.surface, deadline, 2, chains.get());
-      if (!chains->chains.empty()) tubeChains = std::move(chains);
-    }
+    StartChoice& start = fitStart.choice;
+    const std::optional<FirstStepStart>& firstStep = fitStart.firstStep;
+    tubeChains = std::move(fitStart.tubeChains);
     if (start.placed)
       design.surface = *start.placed;  // moved onto the target: embedded as it lies
     else
@@ -161,8 +152,7 @@ Design startDesign(const SurfaceOptions& from, const CLI::App* command, const Fo
              : start.parameters.empty()
                  ? std::string(" (its defaults: nearer the target than one sized to it)")
                  : std::string(" (sized to the target)"));
-    // A symmetric design keeps its start (the runners-up seldom have the symmetry).
-    if (!symmetric) runnersUp.starts = std::move(start.runnersUp);
+    runnersUp.starts = std::move(start.runnersUp);  // none with a symmetry
     if (runnersUp.starts.empty())
       std::cout << line.str() << std::endl;
     else
@@ -479,154 +469,105 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
       budget = std::max(1e-3, budget - pictureReserve(*renderer, rehearsalSheet(options, command),
                                                       fitter->measuredTarget().query()));
   }
-  // The start's choice takes this share of --time (on a large target each sheet it measures
-  // costs a second or more), leaving the rest to the search: a share of work, seconds of the
-  // process's CPU as well as of the wall clock (work_share.hpp), so a machine loaded by others
-  // measures the same sheets as --evaluations does (at --time 60 under a load of 15, 15 s of wall
-  // were 1.5 s of CPU, and saddle_disk's grown square went unmeasured: 8.28% Hausdorff against
-  // 4.38%); the wall clock still ends it at kStartLatest of --time.
-  constexpr double kStartShare = 0.25, kStartLatest = 0.5;
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const Deadline startShare =
-      timed ? workShare(kStartShare * budget - (processCpuSeconds() - startedCpu),
-                        kStartShare * budget - elapsed, kStartLatest * budget - elapsed,
-                        &InterruptGuard::flag())
-            : Deadline{};
-  const Deadline startDeadline =
-      timed ? Deadline{}.notAfter(started +
-                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(kStartShare * budget)))
-            : Deadline{};
+  // The start's choice takes a share of --time (fit_start.hpp: kStartShare of work, CPU and wall
+  // clock, so a machine loaded by others measures the same sheets as --evaluations does; at
+  // --time 60 under a load of 15, 15 s of wall were 1.5 s of CPU, and saddle_disk's grown square
+  // went unmeasured: 8.28% Hausdorff against 4.38%), leaving the rest to the search.
+  const double limit = timed ? budget : std::numeric_limits<double>::infinity();
   std::shared_ptr<const TubeChains> tubeChains;
   bool chosen = false;
   StartRunnersUp runnersUp;
-  Design design = startDesign(options.from, command, *fitter, options.output, startDeadline,
-                              startShare, tubeChains, chosen, runnersUp);
+  Design design = startDesign(options.from, command, *fitter, options.output,
+                              FitStartClock{started, startedCpu, limit, &InterruptGuard::flag()},
+                              tubeChains, chosen, runnersUp);
   const bool metres = lengthsInMetres(fitter->targetDiagonal());
 
-  // One start's fit: its session, result, log and the lines it printed (held back while runners-up
-  // are folded: only the kept one's are printed).
-  struct StartFit {
-    Design design;
-    std::unique_ptr<FoldSession> session;
-    FitResult result;
+  // Each start's log and the lines it printed (held back while runners-up are folded: only the
+  // kept one's are printed).
+  struct StartLines {
     std::vector<FoldLogEntry> log;
     std::ostringstream lines;
+    std::size_t trianglesBefore = 0, foldsBefore = 0;  // foldsBefore: those before the step
   };
-  // The rule's choice, then its runners-up (runnersUp.starts); each gets an equal share of what is
-  // left of --time and --evaluations, cumulatively: what one leaves, the next may use. A fit's
-  // first step (its rings) is seldom cut by the count (checked between steps), so a share repeats
-  // what the whole count made where that step used it all (every measured target, docs/
-  // performance.md, portfolio24).
-  const std::size_t starts = 1 + runnersUp.starts.size();
-  const double searchFrom =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::uint64_t evaluationsUsed = 0;
-  auto fitFrom = [&](Design from, std::size_t index,
-                     const std::shared_ptr<const TubeChains>& chains, bool live) {
-    auto out = std::make_unique<StartFit>();
-    out->design = std::move(from);
-    const Sheet initial = initialSheet(out->design, options.output);
-    out->session = std::make_unique<FoldSession>(initial);
-    FoldSession& session = *out->session;
-    if (!out->design.symmetry.empty())
-      session.setSymmetry(parseSymmetry(out->design.symmetry, initial));
-    try {
-      fitter->checkAgainst(initial);
-    } catch (const InvalidTarget& e) {
-      throw UsageError(options.target + ": " + e.what());
-    }
-    std::ostream& print = live ? std::cout : out->lines;
-    std::size_t trianglesBefore = initial.triangleCount();
-    std::size_t foldsBefore = session.foldCount();  // the folds before the step being reported
-    FitOptions fit;
-    fit.maxFolds = options.folds;
-    const double share = static_cast<double>(index + 1) / static_cast<double>(starts);
-    fit.seconds = timed ? searchFrom + share * (budget - searchFrom)
-                        : std::numeric_limits<double>::infinity();
-    fit.started = started;
-    if (options.evaluations > 0) {
-      const auto upTo =
-          static_cast<std::uint64_t>(std::ceil(share * static_cast<double>(options.evaluations)));
-      fit.maxEvaluations = std::max<std::uint64_t>(1, upTo - std::min(upTo, evaluationsUsed));
-    }
-    fit.tubeChains = chains;
-    fit.mayPlaceStart = chosen;
-    fit.cancelled = &InterruptGuard::flag();
-    StartFit& self = *out;
-    fit.progress = [&](const FitProgress& step) {
+  std::vector<std::unique_ptr<StartLines>> printed;
+  const bool live = runnersUp.starts.empty();
+  // The rule's choice, then its runners-up, each on an equal cumulative share of what is left of
+  // --time and --evaluations (runner_up_fits.hpp). A fit's first step (its rings) is seldom cut
+  // by the count (checked between steps), so a share repeats what the whole count made where that
+  // step used it all (every measured target, docs/performance.md, portfolio24).
+  FitOptions fit;
+  fit.maxFolds = options.folds;
+  fit.seconds = limit;
+  fit.started = started;
+  fit.maxEvaluations = options.evaluations;
+  fit.tubeChains = tubeChains;
+  fit.mayPlaceStart = chosen;
+  fit.cancelled = &InterruptGuard::flag();
+  const PrepareStartFit prepare = [&](std::size_t, const FoldSession& session, FitOptions& each) {
+    printed.push_back(std::make_unique<StartLines>());
+    StartLines& self = *printed.back();
+    std::ostream* print = live ? &std::cout : &self.lines;
+    self.trianglesBefore = session.initial().triangleCount();
+    self.foldsBefore = session.foldCount();
+    each.progress = [&self, print, &session, metres](const FitProgress& step) {
       if (step.fold == 0) {
-        print << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres)
-              << " of the target's " << step.diagonal << (metres ? " m diagonal" : "-unit diagonal")
-              << std::endl;
+        *print << "start: " << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres)
+               << " of the target's " << step.diagonal
+               << (metres ? " m diagonal" : "-unit diagonal") << std::endl;
         return;
       }
-      const std::size_t first = foldsBefore, count = session.foldCount() - foldsBefore;
-      foldsBefore = session.foldCount();
-      self.log.push_back(logEntryOfStep(session, step, first, count, trianglesBefore));
+      const std::size_t first = self.foldsBefore, count = session.foldCount() - self.foldsBefore;
+      self.foldsBefore = session.foldCount();
+      self.log.push_back(logEntryOfStep(session, step, first, count, self.trianglesBefore));
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%.1f s", step.seconds);
-      print << (step.tucked ? "corners tucked under: folds " + std::to_string(first + 1) + "-" +
-                                  std::to_string(first + count)
-                            : stepText(session, first, count))
-            << ", " << seconds << ": "
-            << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
+      *print << (step.tucked ? "corners tucked under: folds " + std::to_string(first + 1) + "-" +
+                                   std::to_string(first + count)
+                             : stepText(session, first, count))
+             << ", " << seconds << ": "
+             << distanceText(step.hausdorff, step.chamfer, step.diagonal, metres) << std::endl;
     };
-    fit.searching = [&print, metres](std::size_t depth, double distance, double seconds) {
-      printSearching(print, depth, distance, seconds, metres);
+    each.searching = [print, metres](std::size_t depth, double distance, double seconds) {
+      printSearching(*print, depth, distance, seconds, metres);
     };
-    out->result = fitFolds(session, *fitter, fit);
-    evaluationsUsed += out->result.evaluations;
-    return out;
   };
   // The outputs, checked before the search: a path that cannot be written fails now. They write
-  // the kept fit (`kept`, set below).
-  const StartFit* kept = nullptr;
+  // the kept fit (set below).
+  Design keptDesign;
+  const StartLines* keptLines = nullptr;
+  const FoldSession* keptSession = nullptr;
   nlohmann::json fitEnd;
   OutputSet outputs;
-  outputs.add(options.output, [&](const fs::path& at) { saveDesign(kept->design, at); });
+  outputs.add(options.output, [&](const fs::path& at) { saveDesign(keptDesign, at); });
   if (!options.log.empty())
     outputs.add(options.log, [&](const fs::path& at) {
       std::string text;
-      for (const FoldLogEntry& entry : kept->log) text += foldLogLine(entry) + "\n";
+      for (const FoldLogEntry& entry : keptLines->log) text += foldLogLine(entry) + "\n";
       text += fitEnd.dump() + "\n";
       writeFileAtomically(at, text);
     });
   if (renderer) {
     outputs.add(options.png, [&](const fs::path& at) {
-      writeDistancePng(*renderer, kept->session->fixed(), fitter->measuredTarget().query(),
+      writeDistancePng(*renderer, keptSession->fixed(), fitter->measuredTarget().query(),
                        "distance to the target", at, metres);
     });
   }
   outputs.checkWritable();
-  std::vector<std::unique_ptr<StartFit>> fits;
-  fits.push_back(fitFrom(design, 0, tubeChains, runnersUp.starts.empty()));
-  for (std::size_t i = 0; i < runnersUp.starts.size() && !InterruptGuard::flag().load(); ++i) {
-    const RunnerUpStart& alternative = runnersUp.starts[i];
-    Design other = design;
-    if (alternative.placed)
-      other.surface = *alternative.placed;
-    else
-      other.surface = GeneratedSurface{alternative.surface, alternative.parameters};
-    fits.push_back(fitFrom(std::move(other), i + 1, nullptr, false));
+  RunnerUpFits fits;
+  try {
+    fits = fitWithRunnersUp(*fitter, initialSheet(design, options.output), design.symmetry,
+                            runnersUp.starts, fit, prepare);
+  } catch (const InvalidTarget& e) {
+    throw UsageError(options.target + ": " + e.what());
   }
-  // The rule's choice, unless a runner-up's fit ended nearer by both measures (of those, the
-  // nearest by Chamfer + Hausdorff / 4, as the rule weighs a start).
-  std::size_t keep = 0;
+  const std::size_t keep = fits.kept;
   const auto ended = [&](std::size_t i) -> const FitProgress& {
-    return fits[i]->result.steps.back();
+    return fits.fits[i].result.steps.back();
   };
-  for (std::size_t i = 1; i < fits.size(); ++i) {
-    const bool nearer =
-        ended(i).hausdorff < ended(0).hausdorff && ended(i).chamfer < ended(0).chamfer;
-    const auto score = [&](std::size_t j) { return ended(j).chamfer + 0.25 * ended(j).hausdorff; };
-    if (nearer && (keep == 0 || score(i) < score(keep))) keep = i;
-  }
   if (!runnersUp.starts.empty()) {
     // Which start's fit was kept, and why, on the `from:` line.
     std::string why;
-    for (std::size_t i = 1; i < fits.size(); ++i) {
+    for (std::size_t i = 1; i < fits.fits.size(); ++i) {
       const RunnerUpStart& alternative = runnersUp.starts[i - 1];
       why +=
           (i == 1 ? "" : "; ") +
@@ -635,7 +576,7 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
           distanceText(ended(i).hausdorff, ended(i).chamfer, ended(i).diagonal, metres) +
           (i == keep ? ", nearer by both: kept" : "");
     }
-    if (fits.size() == 1) {
+    if (fits.fits.size() == 1) {
       std::cout << runnersUp.fromLine << "; its runners-up not folded (interrupted)" << std::endl;
     } else if (keep == 0) {
       std::cout << runnersUp.fromLine << "; kept over the runners-up it was folded beside, none "
@@ -652,13 +593,20 @@ void runFit(const FitCommandOptions& options, const CLI::App* command) {
                 << distanceText(ended(0).hausdorff, ended(0).chamfer, ended(0).diagonal, metres)
                 << std::endl;
     }
-    std::cout << fits[keep]->lines.str();
+    std::cout << printed[keep]->lines.str();
   }
-  kept = fits[keep].get();
-  StartFit& won = *fits[keep];
-  Design& keptDesign = won.design;
-  FoldSession& session = *won.session;
-  const FitResult& result = won.result;
+  keptDesign = design;
+  if (keep > 0) {
+    const RunnerUpStart& won = runnersUp.starts[keep - 1];
+    if (won.placed)
+      keptDesign.surface = *won.placed;
+    else
+      keptDesign.surface = GeneratedSurface{won.surface, won.parameters};
+  }
+  keptLines = printed[keep].get();
+  keptSession = fits.keptFit().session.get();
+  const FoldSession& session = *keptSession;
+  const FitResult& result = fits.keptFit().result;
   if (result.placedStart) {
     keptDesign.surface = *result.placedStart;  // the folds are made on it: embedded as it lies
     std::cout << "start placed: the sheet moved whole onto the target's reading (its motion took "

@@ -13,7 +13,7 @@
 //
 // Limits: a search that times its batches by Deadline::at (timed_batches.hpp: the nested and
 // tube rings) sees only `latestSeconds` there; the fit gives the tube rings' probe the wall
-// clock's share instead (fit_commands.cpp).
+// clock's share instead (fit_start.cpp).
 #pragma once
 
 #include <algorithm>

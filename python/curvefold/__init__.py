@@ -10,6 +10,7 @@ and hand its meshes to numpy, trimesh or polyscope without files.
     assert design.check().passed
     design.export(svg="cylinder.svg", pdf="cylinder.pdf")
     report = curvefold.Design.new("cylinder").fit("target.obj", folds=4, evaluations=20000)
+    design, report = curvefold.fit("target.obj", folds=16, evaluations=1500)  # as `curvefold fit`
     curvefold.distance(design, "target.obj")["hausdorff"]   # metres, as `curvefold distance`
     state = curvefold.simulate("pattern.fold", percent=50)   # any crease pattern, folded halfway
     state["vertices"], state["triangles"], state["strain"]
@@ -29,11 +30,11 @@ import functools as _functools
 import re as _re
 
 from . import _curvefold
-from ._curvefold import (ArgumentError, CheckResult, Design, FoldResult, distance, replay, simulate,
-                         surfaces)
+from ._curvefold import (ArgumentError, CheckResult, Design, FoldResult, distance, fit, replay,
+                         simulate, surfaces)
 
 __all__ = [
-    "ArgumentError", "CheckResult", "Design", "FoldResult", "distance", "replay", "simulate",
+    "ArgumentError", "CheckResult", "Design", "FoldResult", "distance", "fit", "replay", "simulate",
     "surfaces"
 ]
 
@@ -68,7 +69,8 @@ for _name, _member in list(vars(_curvefold.Design).items()):
                 staticmethod(_one_line_call_errors(_member.__func__, f"Design.{_name}")))
     elif type(_member).__name__ == "instancemethod":
         setattr(Design, _name, _one_line_call_errors(_member.__func__, f"Design.{_name}"))
-for _name in ("distance", "replay", "simulate", "surfaces"):
+for _name in ("distance", "fit", "replay", "simulate", "surfaces"):
     globals()[_name] = _one_line_call_errors(getattr(_curvefold, _name), _name)
 distance, replay, surfaces = globals()["distance"], globals()["replay"], globals()["surfaces"]
+fit = globals()["fit"]
 simulate = globals()["simulate"]

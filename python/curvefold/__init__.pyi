@@ -136,6 +136,16 @@ def distance(
     seed: int = 1,
     png: str | PathLike[str] | None = None,
 ) -> dict[str, float]: ...
+def fit(
+    target: str | PathLike[str] | Design,
+    *,
+    folds: int = 6,
+    time: float | None = None,
+    seed: int = 1,
+    evaluations: int | None = None,
+    start: str | None = None,
+    allow_self_intersection: bool = False,
+) -> tuple[Design, dict[str, Any]]: ...
 def surfaces() -> dict[str, dict[str, Any]]: ...
 
 # What Design.simulate and simulate return: vertices (n, 3) float64, development (n, 2) float64,

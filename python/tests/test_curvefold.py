@@ -418,6 +418,36 @@ def test_fit_is_the_command_lines_fit(tmp_path):
     assert design.check().passed
 
 
+def test_module_fit_is_the_command_lines_fit_without_from(tmp_path):
+    """curvefold.fit chooses the start as `curvefold fit` without --from (here the folded tube's
+    own cylinder: the target has its creases) and keeps the same folds: the same design file, byte
+    for byte, and the same distances as the log's."""
+    target = TARGETS / "tube_tucked.obj"
+    design, report = curvefold.fit(target, folds=2, evaluations=30, seed=1)
+    assert isinstance(design, curvefold.Design) and design.surface == "cylinder"
+    design.save(tmp_path / "python.curvefold.json")
+    out = cli("fit", target, "--folds", "2", "--evaluations", "30", "--seed", "1", "-o",
+              tmp_path / "cli.curvefold.json", "--log", tmp_path / "cli.jsonl").stdout
+    assert out.startswith("from: cylinder")
+    assert (tmp_path / "python.curvefold.json").read_bytes() == (tmp_path / "cli.curvefold.json").read_bytes()
+    log = [json.loads(line) for line in (tmp_path / "cli.jsonl").read_text().splitlines()]
+    end = log.pop()
+    assert [(s["hausdorff"], s["chamfer"]) for s in report["steps"][1:]] == [
+        (entry["hausdorff"], entry["chamfer"]) for entry in log]
+    assert report["evaluations"] == end["evaluations"] and report["stop"] == end["stop"]
+    # No runner-up here: the one start folded, kept.
+    assert report["starts"] == [{"surface": "cylinder", "placed": False,
+                                 "hausdorff": report["hausdorff"], "chamfer": report["chamfer"],
+                                 "kept": True}]
+    assert design.check().passed
+    with pytest.raises(ValueError, match="start"):
+        curvefold.fit(target, start="nonesuch")
+    with pytest.raises(ValueError, match="folds"):
+        curvefold.fit(target, folds=0)
+    with pytest.raises(TypeError):
+        curvefold.fit(target, start=3)
+
+
 def test_fit_refuses_bad_values_and_keeps_the_design(tmp_path):
     design = folded_cylinder()
     before = design.folds
