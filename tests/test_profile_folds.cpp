@@ -173,6 +173,60 @@ TEST(RevolutionAxis, IsFoundOnASquatLampshade) {
   EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
 }
 
+// A height field z(x, y) over the equilateral triangle of circumradius `radius` whose corners
+// lie at 60, 180 and 300 degrees, as a grid of `cells` a side whose triangles inside it are kept.
+template <typename Height>
+TriangleMesh overTriangle(Height height, double radius, int cells) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = radius * (2.0 * i / cells - 1.0), y = radius * (2.0 * j / cells - 1.0);
+      mesh.positions.emplace_back(x, y, height(x, y));
+    }
+  // Inside: on the inner side of each edge, whose outward normals point away from the corners.
+  const auto inside = [&](const glm::dvec3& p) {
+    for (const double degrees : {0.0, 120.0, 240.0}) {
+      const double a = degrees * std::numbers::pi / 180.0;
+      if (p.x * std::cos(a) + p.y * std::sin(a) > 0.5 * radius) return false;
+    }
+    return true;
+  };
+  const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i)
+      for (const std::array<std::uint32_t, 3> t :
+           {std::array<std::uint32_t, 3>{at(i, j), at(i + 1, j), at(i + 1, j + 1)},
+            std::array<std::uint32_t, 3>{at(i, j), at(i + 1, j + 1), at(i, j + 1)}})
+        if (inside((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0))
+          mesh.triangles.push_back(t);
+  return mesh;
+}
+
+// A monkey saddle z = 0.8 (x^3 - 3 x y^2) / R^2 over a triangle of circumradius R = 10 cm whose
+// corners lie on its falling lobes (bench/make_lattice_saddles.py's monkey_saddle_triangle) holds
+// nearly one height at each radius past the triangle's inner circle, so its height spread by
+// radius (0.075 of the mean radius) read as a dish's: it had an axis, and the fit laid nested
+// rings on it. Its height swings with the turn (3 lobes up, 3 down) where a dish's does not: no
+// axis. The dish z = 4 r^2 over the same triangle keeps its axis.
+TEST(RevolutionAxis, IsNotFoundOnAMonkeySaddleOverATriangle) {
+  const double radius = 0.1;
+  const glm::dvec3 tilt(0.4, -1.0, 0.3), shift(0.02, 0.05, -0.03);
+  auto placed = [&](TriangleMesh mesh) {
+    for (glm::dvec3& p : mesh.positions) p = turned(p, tilt, 40.0) + shift;
+    return mesh;
+  };
+  const TriangleMesh saddle = placed(overTriangle(
+      [&](double x, double y) { return 0.8 * (x * x * x - 3.0 * x * y * y) / (radius * radius); },
+      radius, 40));
+  EXPECT_FALSE(revolutionAxis(sampleSurface(saddle, 2000, 3)));
+  const TriangleMesh dish =
+      placed(overTriangle([](double x, double y) { return 4.0 * (x * x + y * y); }, radius, 40));
+  const std::optional<RevolutionAxis> axis = revolutionAxis(sampleSurface(dish, 2000, 3));
+  ASSERT_TRUE(axis);
+  const glm::dvec3 expected = turned({0, 0, 1}, tilt, 40.0);
+  EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
+}
+
 // Four planes tilted 30 degrees from the axis, each cutting a sector of the top rim off a
 // cylinder along y (20 cm tall, 5 cm radius): four flaps turned in.
 Ring fourFlapRim() {

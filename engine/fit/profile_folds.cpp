@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <Eigen/Dense>
 #include <glm/geometric.hpp>
@@ -126,9 +127,10 @@ double ovalSpreadWithin(std::vector<glm::dvec2> profile, const std::vector<Surfa
 // bottle's closed bottom holds its radii 0 to R in one bin, 0.24 R deviation; the meridian
 // bottle read 0.103 with them) or by radius (a disk, a shallow dish, whose radius runs over its
 // whole range within a thin band of heights), the lesser; `profile` gets every sample's (height,
-// radius). -1 where the samples lie on the axis.
+// radius), `byHeight` (when given) the spread by height alone. -1 where the samples lie on the
+// axis.
 double plainSpread(const std::vector<SurfaceSample>& samples, const RevolutionAxis& axis,
-                   std::vector<glm::dvec2>& profile) {
+                   std::vector<glm::dvec2>& profile, double* byHeight = nullptr) {
   profile.clear();
   std::vector<glm::dvec2> walls;
   double meanRadius = 0.0;
@@ -142,8 +144,93 @@ double plainSpread(const std::vector<SurfaceSample>& samples, const RevolutionAx
   const bool capped = walls.size() < profile.size() &&
                       static_cast<double>(walls.size()) >=
                           (1.0 - kMostCapped) * static_cast<double>(profile.size());
-  return std::min(spreadWithin(capped ? walls : profile, true, meanRadius),
-                  spreadWithin(profile, false, meanRadius));
+  const double height = spreadWithin(capped ? walls : profile, true, meanRadius);
+  if (byHeight) *byHeight = height;
+  return std::min(height, spreadWithin(profile, false, meanRadius));
+}
+
+// Whether the target's height along `axis` swings with the turn about it, as a saddle's does and
+// no surface of revolution's: read by radius (the samples binned by distance from the axis, only
+// the bins the target covers all around), the height's harmonics of order 2 to 6 in the turn
+// (order 1 is a tilt of the axis) stand out farther than the bins' mean heights rise from the
+// innermost's, and hold most of the height's spread within the bins. A monkey saddle over a
+// triangle whose corners lie on its falling lobes (bench/make_lattice_saddles.py) holds nearly one
+// height at each radius past the triangle's inner circle, so its spread by radius (0.075 of the
+// mean radius) passed as a dish's; inside that circle its height is 0.8 r^3 / R^2 cos(3 t): mean
+// zero, all swing. An oval bowl's height swings at order 2 too, but by a fraction of its rise
+// (0.3 of it where the footprint is 1.36 times longer one way); a tube's heights within a bin
+// are scattered along its length, no harmonic holds them. Asked only where the axis holds by radius
+// alone (its spread by height above the bound): a mug's handle swings a cup's heights by radius,
+// but its walls keep one radius at each height.
+bool swingsWithTurn(const std::vector<SurfaceSample>& samples, const RevolutionAxis& axis) {
+  constexpr int kOrders = 6;
+  constexpr int kTerms = 2 * kOrders + 1;
+  constexpr int kSectors = 12;              // the turn's sectors a bin must cover, all but one
+  constexpr int kLeastPerBin = 4 * kTerms;  // samples a bin's fit needs
+  const glm::dvec3 u = perpendicular(axis.direction);
+  const glm::dvec3 v = glm::cross(axis.direction, u);
+  std::vector<glm::dvec3> polar;  // (radius, height, angle)
+  polar.reserve(samples.size());
+  double most = 0.0;
+  for (const SurfaceSample& s : samples) {
+    const glm::dvec3 d = s.position - axis.point;
+    const double h = glm::dot(d, axis.direction);
+    const glm::dvec3 across = d - h * axis.direction;
+    polar.emplace_back(glm::length(across), h,
+                       std::atan2(glm::dot(across, v), glm::dot(across, u)));
+    most = std::max(most, polar.back().x);
+  }
+  if (!(most > 0.0)) return false;
+  std::array<std::vector<int>, kBins> bins;
+  for (std::size_t i = 0; i < polar.size(); ++i)
+    bins[static_cast<std::size_t>(
+             std::clamp(static_cast<int>(polar[i].x / most * kBins), 0, kBins - 1))]
+        .push_back(static_cast<int>(i));
+  double swing = 0.0, rise = 0.0, swingSquares = 0.0, restSquares = 0.0, counted = 0.0;
+  std::optional<double> innermost;
+  for (const std::vector<int>& bin : bins) {
+    if (static_cast<int>(bin.size()) < kLeastPerBin) continue;
+    std::array<bool, kSectors> covered{};
+    Eigen::Matrix<double, kTerms, kTerms> normal = Eigen::Matrix<double, kTerms, kTerms>::Zero();
+    Eigen::Matrix<double, kTerms, 1> right = Eigen::Matrix<double, kTerms, 1>::Zero();
+    auto terms = [](double angle) {
+      Eigen::Matrix<double, kTerms, 1> t;
+      t(0) = 1.0;
+      for (int k = 1; k <= kOrders; ++k) {
+        t(2 * k - 1) = std::cos(k * angle);
+        t(2 * k) = std::sin(k * angle);
+      }
+      return t;
+    };
+    for (const int i : bin) {
+      const double angle = polar[static_cast<std::size_t>(i)].z;
+      covered[static_cast<std::size_t>(std::clamp(
+          static_cast<int>((angle + std::numbers::pi) / (2.0 * std::numbers::pi) * kSectors), 0,
+          kSectors - 1))] = true;
+      const Eigen::Matrix<double, kTerms, 1> t = terms(angle);
+      normal += t * t.transpose();
+      right += t * polar[static_cast<std::size_t>(i)].y;
+    }
+    if (std::count(covered.begin(), covered.end(), true) < kSectors - 1) continue;
+    const Eigen::Matrix<double, kTerms, 1> c = normal.ldlt().solve(right);
+    double harmonic = 0.0;  // the mean square of the orders 2 to 6 over the turn
+    for (int j = 3; j < kTerms; ++j) harmonic += 0.5 * c(j) * c(j);
+    double rest = 0.0;
+    for (const int i : bin) {
+      const double r =
+          polar[static_cast<std::size_t>(i)].y - terms(polar[static_cast<std::size_t>(i)].z).dot(c);
+      rest += r * r;
+    }
+    const double n = static_cast<double>(bin.size());
+    if (!innermost) innermost = c(0);
+    swing += n * std::sqrt(harmonic);
+    rise += n * std::abs(c(0) - *innermost);
+    swingSquares += n * harmonic;
+    counted += n;
+    restSquares += rest;
+  }
+  // Measurably (a flat sheet's heights differ by rounding alone): a thousandth of the reach.
+  return innermost && swing > rise && swingSquares > restSquares && swing > 1e-3 * most * counted;
 }
 
 // `start` (its spread set) turned through its point (the centroid, which a surface of
@@ -208,12 +295,22 @@ std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& s
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d v = solver.eigenvectors().col(i);
     RevolutionAxis axis{centroid, glm::normalize(glm::dvec3(v.x(), v.y(), v.z())), 0.0};
-    axis.spread = plainSpread(samples, axis, profile);
+    double byHeight = 0.0;
+    axis.spread = plainSpread(samples, axis, profile, &byHeight);
     if (axis.spread < 0.0) continue;
+    // A saddle's axis, no revolution's: held by radius alone, its heights swing with the turn.
+    const auto saddle = [&](const RevolutionAxis& a, double heightSpread) {
+      return heightSpread > maxSpread && swingsWithTurn(samples, a);
+    };
+    if (saddle(axis, byHeight)) continue;
     RevolutionAxis turned = axis;
     turned.spread = ovalSpreadWithin(profile, samples, axis);
     if (!oval || turned.spread < oval->spread) oval = turned;
-    if (swung(i)) axis = polishedAxis(samples, axis);
+    if (swung(i)) {
+      axis = polishedAxis(samples, axis);
+      plainSpread(samples, axis, profile, &byHeight);
+      if (saddle(axis, byHeight)) continue;
+    }
     if (!best || axis.spread < best->spread) best = axis;
   }
   if (best && best->spread <= maxSpread) return best;

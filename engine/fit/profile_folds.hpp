@@ -25,7 +25,12 @@
 // reach in its direction (the farthest sample of 24 turns about the axis, over their mean), so
 // cross-sections alike ovals count as round (the nested rings follow an oblong target's reach each
 // way). A target that is neither (spread above the bound both ways: a saddle, a leaning cup) has
-// none. Known limit: a flat patch off the axis, normal to it, passes as a cap.
+// none; nor has one held by radius alone whose height swings with the turn about the axis (its
+// harmonics of order 2 to 6 in the turn, within the radii it covers all around, outweigh the rise
+// of its mean height from the middle and hold most of its spread there): a saddle over an outline
+// whose corners lie on its falling lobes (a monkey saddle over a triangle) holds nearly one
+// height at each radius, as a dish does, but its height swings about the axis, a dish's does not.
+// Known limit: a flat patch off the axis, normal to it, passes as a cap.
 //
 // ringProposals: rings drawn where the sheet's radius profile r(h) departs from the target's (both
 // binned along the axis, the bins weighted by the gap, and by the radius of the one alone where
