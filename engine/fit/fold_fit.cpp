@@ -1827,21 +1827,37 @@ class FitRun {
     };
     const Sheet sheet = branch.fixed();  // before the fold
     double side = 0.0;                   // where the seed lies, of the plane
+    double thinnest = 0.0;               // the last fold's thinnest cut piece
     ReflectionPlane made = plan.folds[k].plane;
     auto make = [&](const glm::dvec2& at) {
       const glm::dvec3 grabbed = branch.beginDragAtDevelopment(at);
       if (side == 0.0) side = made.signedDistance(grabbed);
-      branch.updateDrag(made.reflect(grabbed));
+      thinnest = branch.updateDrag(made.reflect(grabbed)).thinnestCut;
       return branch.commit();
     };
-    if (!make(seed)) {
-      // Refused (a sliver beside a vertex the read plane passes by a hair, where the fold that
-      // made the crease passed through it): the plane moved through the vertices it all but meets.
+    const bool madeAsRead = make(seed);
+    // Refused, or made with a piece thinner than a cut may leave (reflection.hpp's plane shift
+    // can pass through one vertex, not two the read plane passes by a hair on either side): the
+    // fold that made the crease passed through them, and a sliver left here is what a later
+    // fold's cut pushes below the floor (the most-moved cone's fourth fold). The plane moved
+    // through the vertices it all but meets, kept where that cuts cleaner.
+    if (!madeAsRead || thinnest < kRelativeCutFeatureSize * size) {
       const std::optional<ReflectionPlane> snapped = planeThroughNearPoints(
           made, sheet.positions, kRelativeGrabSnap * size, size, 0.1 * kRelativeEpsilon * size);
-      if (!snapped) return false;
+      if (!snapped) return madeAsRead;
+      const double thinnestAsRead = madeAsRead ? thinnest : -1.0;
+      if (madeAsRead) branch.undo();
+      const ReflectionPlane read = made;
       made = *snapped;
-      if (!make(seed)) return false;
+      if (!make(seed)) {
+        if (!madeAsRead) return false;
+        made = read;
+        if (!make(seed)) return false;
+      } else if (thinnest <= thinnestAsRead) {
+        branch.undo();
+        made = read;
+        if (!make(seed)) return false;
+      }
     }
     if (!symmetry || seedGiven || imagesRead()) return true;
     branch.undo();

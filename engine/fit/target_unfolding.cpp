@@ -36,6 +36,10 @@ constexpr double kMotionPlanes = 1.0;
 constexpr double kCopyTolerance = 1e-4;
 constexpr std::size_t kCopyWays = 1;
 constexpr double kKindSnap = 1e-4;
+// A target with more area than the sheet by this share is no fold of it (every fold keeps the
+// area; a catalogue sheet at another resolution differs by about 1%, as FoldFitter's reading
+// allows): no order of its folds ends on the sheet.
+constexpr double kMoreArea = 0.05;
 
 struct MeshEdge {
   std::uint32_t a = 0, b = 0;
@@ -202,6 +206,14 @@ std::vector<ReflectionPlane> planesBeforeWholeImage(const ReflectionPlane& moved
 
 namespace {
 
+// The forms read, by their crease: the edges bent past the sheet's facets, which no pose changes
+// (the folds keep the vertices); forms with the same crease told apart by a pose. Kept from one
+// search over orders to the next.
+struct FormTable {
+  std::vector<Form> forms;
+  std::map<std::vector<std::uint32_t>, std::vector<std::size_t>> byCrease;
+};
+
 struct Unfolder {
   const TriangleMesh& target;
   const Connectivity connectivity;
@@ -225,15 +237,15 @@ struct Unfolder {
   // as a finished one is), and the best of those and of the finished ones is kept.
   bool cutShort = false;
 
-  // The forms read (issue 38), by their crease: the edges bent past the sheet's facets, which no
-  // pose changes (the folds keep the vertices); forms with the same crease told apart by a pose.
-  std::vector<Form> forms{};
-  std::map<std::vector<std::uint32_t>, std::vector<std::size_t>> formsByCrease{};
+  // The forms read (issue 38); null: every node read.
+  FormTable* table = nullptr;
+  // The 600 unfoldings count only those that read a form none before had (3,000 in all), else
+  // every one.
+  bool newFormsOnly = false;
   std::size_t formsMet = 0;  // nodes whose planes were asked for: read, or found in the table
-  std::size_t formsAtLastLeaf = 0;  // forms read when the last unfolding ended
+  std::size_t formsAtLastLeaf = 0;  // forms in the table when the last unfolding ended
   std::size_t newFormLeaves = 0;    // unfoldings ended that read a form none before had
   std::vector<char> onFace{};       // per vertex: on a face (a pose is checked on these)
-  bool useTable = true;             // false: every node read, the 600 unfoldings counted whole
 
   bool outOfTime() {
     cutShort = cutShort || deadline.passed();
@@ -278,9 +290,9 @@ struct Unfolder {
   // before in another pose (its planes moved by the pose), else read and kept.
   std::vector<Candidate> candidatesFor(const std::vector<glm::dvec3>& positions) {
     ++formsMet;
-    if (!useTable) return candidatesAt(positions);
-    std::vector<std::uint32_t> crease = creaseOf(positions);
-    std::vector<std::size_t>& same = formsByCrease[crease];
+    if (!table) return candidatesAt(positions);
+    std::vector<Form>& forms = table->forms;
+    std::vector<std::size_t>& same = table->byCrease[creaseOf(positions)];
     for (std::size_t f : same) {
       const Form& form = forms[f];
       const std::optional<Isometry> pose =
@@ -705,8 +717,9 @@ struct Unfolder {
     // Unfolding must take a crease away, not trade one for another.
     if (candidates.empty() || !(least < sharp - kLeastCrease * diagonal)) {
       ++leaves;
-      if (forms.size() > formsAtLastLeaf) ++newFormLeaves;
-      formsAtLastLeaf = forms.size();
+      const std::size_t read = table ? table->forms.size() : 0;
+      if (read > formsAtLastLeaf) ++newFormLeaves;
+      formsAtLastLeaf = read;
       return leaf(steps, positions, sharp);
     }
     // The pieces that take away a crease, best first (the most crease gone, then the smallest
@@ -736,7 +749,7 @@ struct Unfolder {
     double bestOff = kInfinitySharp;
     bool first = true;
     for (const Candidate* chosen : choices) {
-      const std::size_t counted = useTable ? newFormLeaves : leaves;
+      const std::size_t counted = newFormsOnly ? newFormLeaves : leaves;
       if (!first && (counted >= kMaxUnfoldings || leaves >= kMaxOrders || outOfTime())) break;
       std::vector<char> inPiece(positions.size(), 0);
       for (std::uint32_t v : chosen->part) inPiece[v] = 1;
@@ -810,10 +823,17 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
   const double diagonal = boundingDiagonal(target);
   const SurfaceDistanceQuery sheetSurface(sheet, "sheet");
   const Connectivity connectivity = connectivityOf(target, 1e-5 * diagonal);
-  std::size_t formsRead = 0, formsMet = 0, unfoldings = 0;
-  // One search over orders: with the table of forms (issue 38), or reading every node as the
-  // search before it did. `onSheet`: whether it ended smooth on the sheet.
-  auto search = [&](bool table, const Deadline& until, bool& onSheet) {
+  std::size_t formsMet = 0, unfoldings = 0;
+  // The forms read, kept from the first search to the second; a symmetric design's search reads
+  // every node (its ends look for images: dear, so it runs once, as before the table).
+  FormTable table;
+  FormTable* kept = symmetryImages.empty() ? &table : nullptr;
+  std::size_t formsReadPlain = 0;  // nodes read without a table
+  // One search over orders, with the table where kept. `newFormsOnly`: its 600 unfoldings count
+  // only those that read a form none before had (3,000 in all), else all. `sides`: where it ends
+  // on a copy, the sides whose copy's motion takes the fewest planes (only the answer needs them).
+  // `onSheet`: whether it ended smooth on the sheet.
+  auto search = [&](bool newFormsOnly, const Deadline& until, bool sides, bool& onSheet) {
     Unfolder unfolder{
         target,
         connectivity,
@@ -828,7 +848,9 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
         maxFolds,
         until,
         symmetryImages};
-    unfolder.useTable = table;
+    unfolder.table = kept;
+    unfolder.newFormsOnly = newFormsOnly;
+    if (kept) unfolder.formsAtLastLeaf = kept->forms.size();
     for (const auto& around : unfolder.connectivity.neighbours)
       unfolder.onFace.push_back(around.empty() ? 0 : 1);
     const double sharp =
@@ -837,49 +859,48 @@ TargetUnfolding unfoldTarget(const TriangleMesh& target, const TriangleMesh& she
     onSheet = unfolder.smooth(read.unfolding) && unfolder.onSheet(unfolder.offSheetOf(read));
     TargetUnfolding unfolding = read.unfolding;
     // A symmetric design's images are read by bestSides (a fold whose image moved the sheet).
-    if (symmetryImages.empty())
-      if (const std::optional<std::vector<char>> sides = unfolder.sidesForFewestPlanes(read, sheet))
-        unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*sides);
+    if (sides && symmetryImages.empty())
+      if (const std::optional<std::vector<char>> chosen =
+              unfolder.sidesForFewestPlanes(read, sheet))
+        unfolding = unfolder.bestSides(read.steps, read.positions, read.sharp, &*chosen);
     unfolding.cutShort = unfolder.outOfTime();
-    formsRead += table ? unfolder.forms.size() : unfolder.formsMet;
+    if (!kept) formsReadPlain += unfolder.formsMet;
     formsMet += unfolder.formsMet;
     unfoldings += unfolder.leaves;
-    unfolding.formsRead = formsRead;
+    unfolding.formsRead = kept ? kept->forms.size() : formsReadPlain;
     unfolding.formsMet = formsMet;
     unfolding.unfoldings = unfoldings;
     return unfolding;
   };
-  // The table's search first, in at most half the time left: where it ends smooth on the sheet,
-  // that is the target's folds. Where it does not, the search that reads every node: a form's
-  // planes read in another pose may differ a little (the reading is not wholly free of the pose),
-  // so which unfolding off the sheet wins may differ, and the one the fit was measured on is kept.
-  // A symmetric design's images are looked for at every end (dear): that search alone.
-  // Cut short, the one that took away more crease is kept (the second may have had no time).
-  std::optional<TargetUnfolding> withTable;
-  if (symmetryImages.empty()) {
-    Deadline half = deadline;  // half of the clock's time left, and of a share of CPU
-    const auto now = std::chrono::steady_clock::now();
-    if (deadline.at != std::chrono::steady_clock::time_point::max() && deadline.at > now)
-      half = deadline.notAfter(now + (deadline.at - now) / 2);
-    if (deadline.shareAt != std::chrono::steady_clock::time_point::max()) {
-      const double cpu = processCpuSeconds();
-      if (deadline.cpuAt > cpu) half.cpuAt = cpu + 0.5 * (deadline.cpuAt - cpu);
-    }
-    bool onSheet = false;
-    withTable = search(true, half, onSheet);
-    if (onSheet && !withTable->cutShort) return *withTable;
-  }
+  // First the search as it was before the table (600 unfoldings in all, depth first), its forms
+  // read once: where it lands, or is cut short, that is the answer.
+  // The further search goes past the first only where the first stopped at its 600 (else it
+  // tried every order it could, and the further one would try the same again), and only where
+  // an order may land: a target folded from a larger sheet (the kind at other parameters)
+  // unfolds onto a copy of that one, whatever the order.
   bool onSheet = false;
-  TargetUnfolding reading = search(false, deadline, onSheet);
-  if (reading.cutShort && withTable &&
-      withTable->sharpLengthLeft < reading.sharpLengthLeft - kLeastCrease * diagonal) {
-    withTable->formsRead = reading.formsRead;
-    withTable->formsMet = reading.formsMet;
-    withTable->unfoldings = reading.unfoldings;
-    withTable->cutShort = true;
-    return *withTable;
+  TargetUnfolding first = search(false, deadline, true, onSheet);
+  if (onSheet || first.cutShort || !kept || first.unfoldings < Unfolder::kMaxUnfoldings ||
+      surfaceArea(target) > (1.0 + kMoreArea) * surfaceArea(sheet))
+    return first;
+  // Else the same search on, in at most half the time left, past those 600 to 600 that read a
+  // form none before had (3,000 in all), with the forms read so far: the design's own order may
+  // come later (the most-moved cone's and disk's did). Kept only where it lands: which unfolding
+  // off the sheet wins is left as the first search found it (the one the fit was measured on).
+  Deadline half = deadline;  // half of the clock's time left, and of a share of CPU
+  const auto now = std::chrono::steady_clock::now();
+  if (deadline.at != std::chrono::steady_clock::time_point::max() && deadline.at > now)
+    half = deadline.notAfter(now + (deadline.at - now) / 2);
+  if (deadline.shareAt != std::chrono::steady_clock::time_point::max()) {
+    const double cpu = processCpuSeconds();
+    if (deadline.cpuAt > cpu) half.cpuAt = cpu + 0.5 * (deadline.cpuAt - cpu);
   }
-  return reading;
+  TargetUnfolding further = search(true, half, false, onSheet);
+  if (onSheet && !further.cutShort) return further;
+  first.formsRead = further.formsRead;
+  first.formsMet = further.formsMet;
+  first.unfoldings = further.unfoldings;
+  return first;
 }
 
 }  // namespace curvefold

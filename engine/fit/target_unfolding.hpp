@@ -14,13 +14,14 @@
 // sharp edge goes on, which a later fold cut, last) and depth first, up to 600 unfoldings or until
 // one ends smooth and on the sheet (the fold made last may leave the shortest crease, and a crease
 // a later fold moved can be unfolded first and lead nowhere). It stops when no reflection takes
-// away a crease. Without symmetryImages a search over a table of forms goes first, in at most half
-// the time: other orders of the same steps meet the same form again in another pose (a product of
-// reflections apart), so each form's crease planes and pieces are read once, kept keyed by the
-// edges its crease bends, and moved by the pose (found from three far vertices, checked on all);
-// its 600 unfoldings count those that read a form none before had (3,000 in all). Where it ends
-// smooth on the sheet it is the answer; else the search that reads every node runs (a reading is
-// not wholly free of the pose, so its end off the sheet may differ, and that search's is kept).
+// away a crease. Without symmetryImages the search keeps a table of forms: other orders of the
+// same steps meet the same form again in another pose (a product of reflections apart), so each
+// form's crease planes and pieces are read once, kept keyed by the edges its crease bends, and
+// moved by the pose (found from three far vertices, checked on all). Where that search stops at
+// its 600 unfoldings off the sheet, it goes on with the same table, in at most half the time
+// left, to 600 unfoldings that read a form none before had (3,000 in all), kept only where it
+// ends smooth on the sheet; not where the target has more area than the sheet (folded from
+// another sheet: no order ends on this one).
 // Reflecting a piece or the rest of the target unfolds its crease alike, one reflection of the
 // whole apart; of every such choice along an unfolding, one whose result lies on the initial sheet
 // is kept (the part that never moved stays where the sheet is), with rests only where the rest lies
