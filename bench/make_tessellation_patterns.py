@@ -6,7 +6,7 @@ these repeat a unit cell over a sheet at several sizes, so a pattern has many ve
 same kind folding at once, and they are written the way other tools write FOLD: polygon faces in
 faces_vertices (quads and hexagons where a cell's region is one), signed edges_foldAngle in
 degrees (valley +, mountain -, FOLD's convention) next to edges_assignment, a frame_unit of
-"mm", "cm" or "in", and vertex coordinates as [x, y, 0] in some files and [x, y] in others:
+"mm" or "in", and vertex coordinates as [x, y, 0] in some files and [x, y] in others:
 
   waterbomb_tess_N_A   N x N waterbomb bases (diagonals valley, midlines mountain), every other
                        row shifted by half a cell (the "magic ball"), cut to the sheet's square;
