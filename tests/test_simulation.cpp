@@ -19,6 +19,7 @@
 #include "engine/io/fold_crease_pattern.hpp"
 #include "engine/io/svg_crease_pattern.hpp"
 #include "engine/simulation/bar_hinge_model.hpp"
+#include "engine/simulation/central_differences.hpp"
 #include "engine/simulation/design_input.hpp"
 #include "engine/simulation/dynamic_solver.hpp"
 #include "engine/simulation/folding_motion.hpp"
@@ -78,6 +79,40 @@ TEST(Simulation, HingeGradientMatchesFiniteDifferences) {
                                (2 * h);
         EXPECT_NEAR(gradient[v][c], numeric, 1e-6) << "vertex " << v << " coordinate " << c;
       }
+  }
+}
+
+// The exact Hessian's central differences (central_differences.hpp) give the same second
+// derivatives wherever the points lie: a hinge of 5 mm edges, as traditionalCrane's, at the origin
+// and 1 m out (the angle and its derivatives are the same there). Divided by twice the step, not
+// by the width the coordinate moved as rounded, entries 1 m out were off by up to ulp(1) / 2h =
+// 2.2e-8 of their size (issue 39: the crane at 75% of 25:100:4, 0.13 m from the origin, stalled
+// at residual 1.9e-7).
+TEST(Simulation, CentralDifferenceHessianIsTheSameWhereverTheHingeLies) {
+  const std::array<glm::dvec3, 4> hinge{glm::dvec3(0.0, 0.0, 0.0), glm::dvec3(0.005, 0.0, 0.0),
+                                        glm::dvec3(0.0021, 0.0043, 0.0007),
+                                        glm::dvec3(0.0032, -0.0029, 0.0021)};
+  const auto gradientOf = [](const std::array<glm::dvec3, 4>& p, std::array<glm::dvec3, 4>& g) {
+    g = hingeAngleGradient(p[0], p[1], p[2], p[3]);
+    return true;
+  };
+  const double step = 1e-6 * glm::length(hinge[1] - hinge[0]);
+  std::array<std::array<glm::dmat3, 4>, 4> here{}, there{};
+  ASSERT_TRUE(centralDifferenceHessian(hinge, step, gradientOf, here));
+  for (const glm::dvec3 offset : {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.13, -0.09, 1.0)}) {
+    std::array<glm::dvec3, 4> moved = hinge;
+    for (glm::dvec3& p : moved) p += offset;
+    ASSERT_TRUE(centralDifferenceHessian(moved, step, gradientOf, there));
+    double largest = 0.0, apart = 0.0;
+    for (int p = 0; p < 4; ++p)
+      for (int q = 0; q < 4; ++q)
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) {
+            largest = std::max(largest, std::abs(here[p][q][c][r]));
+            apart = std::max(apart, std::abs(there[p][q][c][r] - here[p][q][c][r]));
+          }
+    EXPECT_GT(largest, 1e3);  // 1 / (5 mm)^2 scale: a hinge that bends
+    EXPECT_LT(apart / largest, 2e-9) << offset.x << " " << offset.y << " " << offset.z;
   }
 }
 
