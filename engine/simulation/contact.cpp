@@ -947,7 +947,7 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
     return forces.data();
   }
   // On all cores: each pair's forces; then the pushing pairs' slots (pair * 4 + corner) per
-  // vertex, in pair order, by a counting sort over those pairs alone (at rest 5 to 12% of the
+  // vertex, in pair order, by a counting sort over those pairs alone (at rest 4 to 30% of the
   // list push; each vertex read every listed slot of its own before); then each vertex sums its
   // run, on all cores.
   forEachRange(list.pairs.size(), kPairGrain, [&](std::size_t begin, std::size_t end) {
