@@ -186,11 +186,13 @@ struct ContactList {
   double moved = 0.0;                   // the largest motion of a vertex since then
   double skin = 0.0;                    // the skin it was found with
   std::shared_ptr<ContactTrees> trees;  // shared by copies of a state until one searches
-  // Scratch of the forces: per pair its four vertices' forces and whether it pushes; per vertex
-  // with pairs (touched) its run of slots (pair * 4 + corner) in pair order.
+  // Scratch of the forces: per pair its four vertices' forces and whether it pushes; the
+  // vertices in some pair (touched); per step on all cores, the pairs that push and per vertex
+  // its run of their slots (pair * 4 + corner) in pair order.
   std::vector<std::array<glm::dvec3, 4>> forces;
   std::vector<std::uint8_t> pushing;
-  std::vector<std::uint32_t> touched, slotOffsets, slots;
+  std::vector<std::uint32_t> touched;
+  std::vector<std::uint32_t> pushedPairs, pushOffsets, pushSlots, pushNext;
   std::size_t indexed = 0;  // the search (rebuilds) the scratch belongs to
 };
 // Searches again when stale (above); returns whether it did.

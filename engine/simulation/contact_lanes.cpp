@@ -7,14 +7,20 @@
 namespace curvefold {
 namespace {
 
-// The lanes' coordinates: in[3 j + axis][k] of lane k's j-th vertex.
+// The lanes' coordinates: in[3 j + axis][k] of lane k's j-th vertex, four lanes a store
+// (storeLaneQuad).
 [[gnu::always_inline]] inline void gather(const glm::dvec3* x,
                                           const std::array<std::uint32_t, 4>* pairs,
                                           std::size_t count, double (&in)[12][kContactLanes]) {
-  for (std::size_t k = 0; k < kContactLanes; ++k)
+  static_assert(kContactLanes % 4 == 0);
+  for (std::size_t k0 = 0; k0 < kContactLanes; k0 += 4) {
+    const std::array<std::uint32_t, 4>* lane[4];
+    for (std::size_t q = 0; q < 4; ++q) lane[q] = &pairs[k0 + q < count ? k0 + q : count - 1];
     for (int j = 0; j < 4; ++j)
       for (int axis = 0; axis < 3; ++axis)
-        in[3 * j + axis][k] = x[pairs[k < count ? k : count - 1][j]][axis];
+        storeLaneQuad(&in[3 * j + axis][k0], x[(*lane[0])[j]][axis], x[(*lane[1])[j]][axis],
+                      x[(*lane[2])[j]][axis], x[(*lane[3])[j]][axis]);
+  }
 }
 
 // triangleDistanceLanes on gathered lanes. Without branches (the tests joined by &, not &&, which

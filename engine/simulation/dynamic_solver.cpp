@@ -89,23 +89,39 @@ CURVEFOLD_LANE_CLONES void barLanes(const std::array<std::uint32_t, 2>* bars, st
 constexpr std::size_t kHingeLanes = 8;
 
 // `count` (<= kHingeLanes) hinges from `hinges` on: their angles unwrapped in place and their
-// forces into their slots. The positions are copied into lanes (the last hinge's repeated to
-// fill them), angleWithGradientUsual runs on every lane at once, and a hinge it cannot take goes
-// through angleWithGradient alone; each hinge's bits are angleWithGradient's either way.
+// forces into their slots. The positions and parameters are copied into lanes (the last hinge's
+// repeated to fill them), angleWithGradientUsual, the moment and the four forces run on every
+// lane at once (the scalar tail only stores them: it was a third of the lanes' time), and a hinge
+// it cannot take goes through angleWithGradient alone; each hinge's bits are angleWithGradient's
+// and hingeMoment's either way.
 CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, const glm::dvec3* x,
                                       double* angles, const double* stiffness, const double* target,
                                       const double* wrongSide, const std::uint32_t* scatter,
                                       glm::dvec3* forces) {
   constexpr std::size_t kLanes = kHingeLanes;
-  alignas(64) double in[12][kLanes], previous[kLanes], torque[kLanes];
+  alignas(64) double in[12][kLanes], previous[kLanes], parameters[3][kLanes];
   alignas(64) double out[12][kLanes], angle[kLanes], usual[kLanes];
+  static_assert(kLanes % 4 == 0);
+  for (std::size_t k0 = 0; k0 < kLanes; k0 += 4) {
+    std::uint32_t vertices[4][4];  // [corner][lane]
+    for (std::size_t q = 0; q < 4; ++q) {
+      const Hinge& h = hinges[std::min(k0 + q, count - 1)];
+      vertices[0][q] = h.a;
+      vertices[1][q] = h.b;
+      vertices[2][q] = h.c;
+      vertices[3][q] = h.d;
+    }
+    for (int v = 0; v < 4; ++v)
+      for (int axis = 0; axis < 3; ++axis)
+        storeLaneQuad(&in[3 * v + axis][k0], x[vertices[v][0]][axis], x[vertices[v][1]][axis],
+                      x[vertices[v][2]][axis], x[vertices[v][3]][axis]);
+  }
   for (std::size_t k = 0; k < kLanes; ++k) {
     const std::size_t j = std::min(k, count - 1);
-    const Hinge& h = hinges[j];
-    const std::uint32_t vertices[4] = {h.a, h.b, h.c, h.d};
-    for (int v = 0; v < 4; ++v)
-      for (int axis = 0; axis < 3; ++axis) in[3 * v + axis][k] = x[vertices[v]][axis];
     previous[k] = angles[j];
+    parameters[0][k] = target[j];
+    parameters[1][k] = stiffness[j];
+    parameters[2][k] = wrongSide[j];
   }
   for (std::size_t k = 0; k < kLanes; ++k) {
     std::array<glm::dvec3, 4> gradient;
@@ -116,22 +132,26 @@ CURVEFOLD_LANE_CLONES void hingeLanes(const Hinge* hinges, std::size_t count, co
         previous[k], a, gradient);
     angle[k] = a;
     usual[k] = ok ? 1.0 : 0.0;
+    const double torque =
+        -hinge_kernel::hingeMoment(a, parameters[0][k], parameters[1][k], parameters[2][k]);
     for (int v = 0; v < 4; ++v)
-      for (int axis = 0; axis < 3; ++axis) out[3 * v + axis][k] = gradient[v][axis];
+      for (int axis = 0; axis < 3; ++axis) out[3 * v + axis][k] = torque * gradient[v][axis];
   }
   for (std::size_t k = 0; k < count; ++k) {
-    std::array<glm::dvec3, 4> gradient;
     if (usual[k] != 0.0) {
+      angles[k] = angle[k];
       for (int v = 0; v < 4; ++v)
-        gradient[v] = glm::dvec3(out[3 * v][k], out[3 * v + 1][k], out[3 * v + 2][k]);
-    } else {
-      const Hinge& h = hinges[k];
-      angle[k] =
-          hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k], gradient);
+        forces[scatter[4 * k + v]] =
+            glm::dvec3(out[3 * v][k], out[3 * v + 1][k], out[3 * v + 2][k]);
+      continue;
     }
-    angles[k] = angle[k];
-    torque[k] = -hinge_kernel::hingeMoment(angle[k], target[k], stiffness[k], wrongSide[k]);
-    for (int v = 0; v < 4; ++v) forces[scatter[4 * k + v]] = torque[k] * gradient[v];
+    std::array<glm::dvec3, 4> gradient;
+    const Hinge& h = hinges[k];
+    angles[k] =
+        hinge_kernel::angleWithGradient(x[h.a], x[h.b], x[h.c], x[h.d], previous[k], gradient);
+    const double torque =
+        -hinge_kernel::hingeMoment(angles[k], target[k], stiffness[k], wrongSide[k]);
+    for (int v = 0; v < 4; ++v) forces[scatter[4 * k + v]] = torque * gradient[v];
   }
 }
 
