@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
-#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -61,30 +59,15 @@ std::optional<double> tubeRingsReach(const Sheet& tube, const std::vector<Surfac
   const double slope = varianceH > 0.0 ? (sumHR / n - (sumH / n) * (sumR / n)) / varianceH : 0.0;
   const double intercept = sumR / n - slope * sumH / n;
   const std::vector<glm::dvec2>& profile = bands->profile;
-  const std::size_t bandCount = profile.size();
-  // An end past the last ring may stand at the radius that ring left it (a lip flared over a
-  // band or two above a neck is cut in, not bridged to from the belly): of the envelopes whose
-  // hull leaves out up to a quarter of the bands at either end, held level past them, the nearest.
-  const std::size_t trims = bandCount / 4;
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t low = 0; low <= trims; ++low)
-    for (std::size_t high = 0; high <= trims; ++high) {  // low + high <= half the bands
-      const std::vector<glm::dvec2> kept(profile.begin() + static_cast<std::ptrdiff_t>(low),
-                                         profile.end() - static_cast<std::ptrdiff_t>(high));
-      const std::vector<double> hull = upperConcaveHull(kept);
-      double sum = 0.0, most = 0.0;
-      for (std::size_t i = 0; i < bandCount; ++i) {
-        const double standing = i < low                 ? hull.front()
-                                : i >= bandCount - high ? hull.back()
-                                                        : hull[i - low];
-        const double envelope = std::min(intercept + slope * profile[i].x, standing);
-        const double gap = std::abs(envelope - profile[i].y);
-        sum += gap;
-        most = std::max(most, gap);
-      }
-      best = std::min(best, sum / static_cast<double>(bandCount) + kProfileFarthest * most);
-    }
-  return best;
+  const std::vector<double> hull = upperConcaveHull(profile);
+  double sum = 0.0, most = 0.0;
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const double envelope = std::min(intercept + slope * profile[i].x, hull[i]);
+    const double gap = std::abs(envelope - profile[i].y);
+    sum += gap;
+    most = std::max(most, gap);
+  }
+  return sum / static_cast<double>(profile.size()) + kProfileFarthest * most;
 }
 
 }  // namespace curvefold

@@ -10,15 +10,9 @@
 // the target's profile r(h) lets them stand on it, its upper concave hull H(h) (the least concave
 // function over it). The envelope is then e(h) = min(r_s(h), H(h)): a belly that stands outside
 // the start stays that far off (no ring widens), a waist under the hull stays as far as the
-// hull's chord passes over it (no ring turns a part back out). An end past the last ring may
-// stand level at the radius that ring left it: the hull may leave out up to a quarter of the
-// bands at either end, held at its end band's radius over them (a lip flared over a band above a
-// neck is cut in rather than bridged to from the belly: bench/make_stl_soup_targets.py's
-// open_vase_mm, whose whole hull ranked the widest tube no nearer than the cone, 14.6 against
-// 14.5 mm, where its fit ended nearer by both measures). The reach is the mean of |e - r| over
-// the target's height bands plus a quarter of its largest (the goal's Hausdorff beside its
-// Chamfer, nested_rings.hpp's kProfileFarthest), in the target's units: the least over those
-// hulls.
+// hull's chord passes over it (no ring turns a part back out). The reach is the mean of |e - r|
+// over the target's height bands plus a quarter of its largest (the goal's Hausdorff beside its
+// Chamfer, nested_rings.hpp's kProfileFarthest), in the target's units.
 //
 // Inputs: a sheet (a cone or a cylinder, as placed), the target's area-uniform samples and its
 // axis of revolution. Output: the reach, or none where the sheet is no tube about the axis
