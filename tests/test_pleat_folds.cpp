@@ -551,6 +551,8 @@ TEST(WingStart, AMonkeySaddlesSquareHasItsWingsFoldedBeforeAnyPleat) {
   // corners past the rim are left to the tucks).
   EXPECT_LT(folded.chamfer, 0.8 * flat.chamfer) << winged->placement;
   EXPECT_LE(folded.fromBMax, flat.fromBMax * (1.0 + 1e-9)) << winged->placement;
+  // The engine knows no unit: a target in millimetres printed "score 51.78 -> 43.67 m".
+  EXPECT_EQ(winged->placement.find(" m)"), std::string::npos) << winged->placement;
   const std::optional<FirstStepStart> chosen = startByFirstStep({square, *winged}, fitter, {});
   ASSERT_TRUE(chosen.has_value());
   EXPECT_EQ(chosen->start.surface, "winged_square");

@@ -213,7 +213,8 @@ std::optional<PlacedStart> wingStart(const PlacedStart& flat, const FoldFitter& 
   if (wings == 0) return std::nullopt;
   PlacedStart out{"winged_" + flat.surface, flat.parameters, "", session.fixed()};
   char text[160];
-  std::snprintf(text, sizeof text, "%zu wing%s folded first (score %.4g -> %.4g m); ", wings,
+  std::snprintf(text, sizeof text,
+                "%zu wing%s folded first (score %.4g -> %.4g, in the target's units); ", wings,
                 wings == 1 ? "" : "s", start, best);
   out.placement = text + flat.placement;
   return out;
