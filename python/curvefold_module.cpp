@@ -867,17 +867,49 @@ py::dict distanceOf(const py::object& a, const py::object& b, std::size_t sample
   return distanceDict(d);
 }
 
+// Design.fit's and curvefold.fit's limits, refused as the command line refuses them.
+void checkFitLimits(std::size_t folds, std::optional<double> time,
+                    std::optional<std::uint64_t> evaluations) {
+  if (folds < 1 || folds > 64) throw std::invalid_argument("fit: folds must lie in 1 to 64");
+  if (time && !(*time >= 0.1 && *time <= 86400.0))
+    throw std::invalid_argument("fit: time must lie in 0.1 to 86400 seconds");
+  if (evaluations && (*evaluations < 1 || *evaluations > 1'000'000'000'000ull))
+    throw std::invalid_argument("fit: evaluations must lie in 1 to 10^12");
+}
+
+// A fit's report: where it ended, its steps, why it stopped and what it spent.
+py::dict fitReport(const FitResult& result) {
+  py::list steps;
+  for (const FitProgress& step : result.steps) {
+    py::dict item;
+    item["folds"] = step.fold;
+    item["hausdorff"] = step.hausdorff;
+    item["chamfer"] = step.chamfer;
+    item["seconds"] = step.seconds;
+    steps.append(item);
+  }
+  const FitProgress& last = result.steps.back();
+  py::dict report;
+  report["folds"] = result.steps.size() - 1;
+  report["hausdorff"] = last.hausdorff;
+  report["chamfer"] = last.chamfer;
+  report["diagonal"] = last.diagonal;
+  report["steps"] = steps;
+  report["stop"] = result.stopReason;
+  report["timed_out"] = result.timedOut;
+  report["out_of_evaluations"] = result.outOfEvaluations;
+  report["evaluations"] = result.evaluations;
+  report["dropped_samples"] = result.droppedSamples;
+  return report;
+}
+
 // `curvefold fit TARGET --from <this design's surface>`, continuing from this design's folds:
 // the search runs on a session of its own with the GIL released, and the folds it keeps are made
 // on the design at the end, with the GIL held (the design never shows half a fit).
 py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
                    std::optional<double> time, std::uint64_t seed,
                    std::optional<std::uint64_t> evaluations, bool allowSelfIntersection) {
-  if (folds < 1 || folds > 64) throw std::invalid_argument("fit: folds must lie in 1 to 64");
-  if (time && !(*time >= 0.1 && *time <= 86400.0))
-    throw std::invalid_argument("fit: time must lie in 0.1 to 86400 seconds");
-  if (evaluations && (*evaluations < 1 || *evaluations > 1'000'000'000'000ull))
-    throw std::invalid_argument("fit: evaluations must lie in 1 to 10^12");
+  checkFitLimits(folds, time, evaluations);
   const auto started = std::chrono::steady_clock::now();
   const std::string targetName = shapeName(target);
   TriangleMesh mesh = shapeOf(target, "fit: target");
@@ -922,28 +954,7 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
       throw std::runtime_error("fit: the design changed while it was fitted; fit it again");
     d.session(guard.lock).applyRecords(added);
   }
-  py::list steps;
-  for (const FitProgress& step : result.steps) {
-    py::dict item;
-    item["folds"] = step.fold;
-    item["hausdorff"] = step.hausdorff;
-    item["chamfer"] = step.chamfer;
-    item["seconds"] = step.seconds;
-    steps.append(item);
-  }
-  const FitProgress& last = result.steps.back();
-  py::dict report;
-  report["folds"] = result.steps.size() - 1;
-  report["hausdorff"] = last.hausdorff;
-  report["chamfer"] = last.chamfer;
-  report["diagonal"] = last.diagonal;
-  report["steps"] = steps;
-  report["stop"] = result.stopReason;
-  report["timed_out"] = result.timedOut;
-  report["out_of_evaluations"] = result.outOfEvaluations;
-  report["evaluations"] = result.evaluations;
-  report["dropped_samples"] = result.droppedSamples;
-  return report;
+  return fitReport(result);
 }
 
 // `curvefold fit TARGET` (start None) or `curvefold fit TARGET --from KIND` (a catalogue name,
@@ -954,11 +965,7 @@ py::dict fitDesign(PyDesign& d, const py::object& target, std::size_t folds,
 py::tuple fitTarget(const py::object& target, std::size_t folds, std::optional<double> time,
                     std::uint64_t seed, std::optional<std::uint64_t> evaluations,
                     std::optional<std::string> start, bool allowSelfIntersection) {
-  if (folds < 1 || folds > 64) throw std::invalid_argument("fit: folds must lie in 1 to 64");
-  if (time && !(*time >= 0.1 && *time <= 86400.0))
-    throw std::invalid_argument("fit: time must lie in 0.1 to 86400 seconds");
-  if (evaluations && (*evaluations < 1 || *evaluations > 1'000'000'000'000ull))
-    throw std::invalid_argument("fit: evaluations must lie in 1 to 10^12");
+  checkFitLimits(folds, time, evaluations);
   const auto started = std::chrono::steady_clock::now();
   const double startedCpu = processCpuSeconds();
   const std::string kind = start.value_or("");
@@ -1030,15 +1037,7 @@ py::tuple fitTarget(const py::object& target, std::size_t folds, std::optional<d
   const FitResult& result = fits.keptFit().result;
   if (result.placedStart) design.surface = *result.placedStart;  // the folds are made on it
   design.folds = result.folds;
-  py::list steps, starts;
-  for (const FitProgress& step : result.steps) {
-    py::dict item;
-    item["folds"] = step.fold;
-    item["hausdorff"] = step.hausdorff;
-    item["chamfer"] = step.chamfer;
-    item["seconds"] = step.seconds;
-    steps.append(item);
-  }
+  py::list starts;
   for (std::size_t i = 0; i < fits.fits.size(); ++i) {
     const FitProgress& ended = fits.fits[i].result.steps.back();
     py::dict item;
@@ -1049,18 +1048,7 @@ py::tuple fitTarget(const py::object& target, std::size_t folds, std::optional<d
     item["kept"] = i == kept;
     starts.append(item);
   }
-  const FitProgress& last = result.steps.back();
-  py::dict report;
-  report["folds"] = result.steps.size() - 1;
-  report["hausdorff"] = last.hausdorff;
-  report["chamfer"] = last.chamfer;
-  report["diagonal"] = last.diagonal;
-  report["steps"] = steps;
-  report["stop"] = result.stopReason;
-  report["timed_out"] = result.timedOut;
-  report["out_of_evaluations"] = result.outOfEvaluations;
-  report["evaluations"] = result.evaluations;
-  report["dropped_samples"] = result.droppedSamples;
+  py::dict report = fitReport(result);
   report["starts"] = starts;
   const std::string name = session::surfaceName(design);
   return py::make_tuple(PyDesign(std::move(design), name), report);
