@@ -1,5 +1,6 @@
-// The fit's settings and deadlines the ring and profile tests share (test_nested_rings.cpp,
-// test_profile_folds.cpp): the sample counts set, everything else the fit's defaults.
+// The fit's settings and deadlines the fit tests share (test_nested_rings.cpp,
+// test_profile_folds.cpp, test_fit.cpp, ...): the sample counts set, everything else the fit's
+// defaults.
 #pragma once
 
 #include <atomic>
@@ -18,6 +19,14 @@ inline FitSettings sampledSettings(std::size_t sheet, std::size_t target, std::s
   settings.sheetSamples = sheet;
   settings.targetSamples = target;
   settings.denseTargetSamples = dense;
+  return settings;
+}
+
+// Small and quick, also under the sanitizers: the fit tests' settings (test_fit.cpp,
+// test_pleat_folds.cpp, test_runner_up_fits.cpp).
+inline FitSettings quickSettings() {
+  FitSettings settings = sampledSettings(700, 700, 8000);
+  settings.proposals = 160;
   return settings;
 }
 

@@ -29,6 +29,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "fit_settings_support.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "tests/support/random_fold_target.hpp"
@@ -36,15 +37,7 @@
 namespace curvefold {
 namespace {
 
-// Small and quick, also under the sanitizers.
-FitSettings quickSettings() {
-  FitSettings settings;
-  settings.sheetSamples = 700;
-  settings.targetSamples = 700;
-  settings.denseTargetSamples = 8000;
-  settings.proposals = 160;
-  return settings;
-}
+using testing::quickSettings;
 
 FitOptions quickOptions(std::size_t folds) {
   FitOptions options;

@@ -32,6 +32,7 @@
 #include "engine/geometry/self_intersection.hpp"
 #include "engine/geometry/validate.hpp"
 #include "engine/io/design_document.hpp"
+#include "fit_settings_support.hpp"
 #include "sanitizer_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "test_paths.hpp"
@@ -60,14 +61,7 @@ TriangleMesh troughWithEndTurned() {
   return meshOf(sheet);
 }
 
-FitSettings quickSettings() {
-  FitSettings settings;
-  settings.sheetSamples = 700;
-  settings.targetSamples = 700;
-  settings.denseTargetSamples = 8000;
-  settings.proposals = 160;
-  return settings;
-}
+using testing::quickSettings;
 
 TEST(PleatPlanes, TurnTheEndAboutTheHingeByTheBendOverTheFirstCrease) {
   const glm::dvec3 hinge(0.0), along(1, 0, 0), down(0, 0, -1);

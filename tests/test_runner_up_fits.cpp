@@ -13,21 +13,14 @@
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/runner_up_fits.hpp"
 #include "engine/surfaces/surfaces.hpp"
+#include "fit_settings_support.hpp"
 #include "sheet_fixtures.hpp"
 #include "tests/support/random_fold_target.hpp"
 
 namespace curvefold {
 namespace {
 
-// Small and quick, also under the sanitizers.
-FitSettings quickSettings() {
-  FitSettings settings;
-  settings.sheetSamples = 700;
-  settings.targetSamples = 700;
-  settings.denseTargetSamples = 8000;
-  settings.proposals = 160;
-  return settings;
-}
+using testing::quickSettings;
 
 FitOptions quickOptions(std::uint64_t evaluations) {
   FitOptions options;
