@@ -464,6 +464,20 @@ def test_fit_refuses_bad_values_and_keeps_the_design(tmp_path):
     assert design.folds == before
 
 
+def test_module_fit_refuses_bad_values_before_fitting(tmp_path):
+    target = TARGETS / "tube_tucked.obj"
+    with pytest.raises(ValueError, match="folds"):
+        curvefold.fit(target, folds=0)
+    with pytest.raises(ValueError, match="evaluations"):
+        curvefold.fit(target, evaluations=0)
+    with pytest.raises(ValueError, match="time"):
+        curvefold.fit(target, time=float("nan"))
+    with pytest.raises(ValueError, match="start"):
+        curvefold.fit(target, start="teapot")
+    with pytest.raises((OSError, ValueError), match="missing.obj"):
+        curvefold.fit(tmp_path / "missing.obj")
+
+
 def test_a_long_fit_lets_other_python_threads_run():
     design = curvefold.Design.new("square", resolution=12)
     ticks = []
