@@ -240,3 +240,38 @@ TEST(CreasePatternStrangers, SvgCurrentColorIsTheColorProperty) {
     }
   }
 }
+
+// The transform property set by CSS (a <style> rule, or style="...") moves an element as the
+// attribute does, and over the attribute: SVG 2 made transform a presentation attribute, and
+// Rabbit Ear's test files scale their border and mirror their creases so. CSS writes its units
+// (px, deg); one that is not a user unit is refused in one line. Before, only the attribute was
+// read: the lines stayed where they were drawn.
+TEST(CreasePatternStrangers, SvgCssTransformMovesTheElementAsTheAttributeDoes) {
+  const CreasePattern p = readSvgCreasePatternText(
+      svg(R"(<style>.shifted { transform: translate(50px, 0px); }</style>)"
+          R"(<line class="shifted" x1="0" y1="0" x2="0" y2="100" stroke="#f00"/>)"
+          R"svg(<line transform="translate(10)" style="transform: translateX(25px)")svg"
+          R"( x1="0" y1="0" x2="0" y2="100" stroke="#00f"/>)"
+          R"svg(<line style="transform: rotate(90deg)" x1="0" y1="-75" x2="100" y2="-75" stroke="#f00"/>)svg"),
+      "css.svg");
+  const auto c = creases(p);
+  ASSERT_EQ(c.size(), 3u) << notesOf(p);
+  std::vector<std::pair<double, CreaseAssignment>> found;
+  for (const CreasePatternEdge& e : c) {
+    EXPECT_NEAR(p.vertices[e.a].x, p.vertices[e.b].x, 1e-9);
+    found.emplace_back(std::round(p.vertices[e.a].x * 1e6) / 1e6, e.assignment);
+  }
+  std::sort(found.begin(), found.end());
+  EXPECT_EQ(found,
+            (std::vector<std::pair<double, CreaseAssignment>>{{25.0, CreaseAssignment::Valley},
+                                                              {50.0, CreaseAssignment::Mountain},
+                                                              {75.0, CreaseAssignment::Mountain}}));
+  try {
+    readSvgCreasePatternText(
+        svg(R"svg(<line style="transform: translate(5mm)" x1="0" y1="0" x2="0" y2="100" stroke="#f00"/>)svg"),
+        "mm.svg");
+    ADD_FAILURE() << "read";
+  } catch (const CreasePatternError& error) {
+    EXPECT_NE(std::string(error.what()).find("unit \"mm\""), std::string::npos) << error.what();
+  }
+}

@@ -244,6 +244,10 @@ struct FitResult {
   bool cancelled = false;          // FitOptions::cancelled cut it short
   bool outOfEvaluations = false;   // maxEvaluations cut it short (the same on every run)
   std::uint64_t evaluations = 0;   // candidate folds scored
+  // Seconds from the fit's start to the end of its last reading of the target's creases (its
+  // unfoldings; 0 where none ran): within FitRun's reading share of the time, so the search after
+  // it has the rest.
+  double readingSeconds = 0.0;
   // Sheet samples the search drew but could not place on the sheet (rounding put them outside
   // its development), summed over the search's steps: each step scores its folds on that many
   // fewer samples than FitSettings::sheetSamples. 0 on any sane sheet.

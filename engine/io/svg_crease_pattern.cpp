@@ -97,11 +97,13 @@ class NumberScanner {
     ++pos_;
     return ch == '1' ? 1.0 : 0.0;
   }
-  // Skips a unit or percent sign after a number.
-  void skipUnit() {
+  // Skips a unit or percent sign after a number; returns it.
+  std::string_view skipUnit() {
+    const std::size_t start = pos_;
     while (pos_ < text_.size() &&
            (std::isalpha(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '%'))
       ++pos_;
+    return text_.substr(start, pos_ - start);
   }
 
  private:
@@ -308,8 +310,11 @@ class SvgReader {
       Declarations style = declarationsOf(child, tag);
       if (lower(valueOf(style, "display")) == "none") return;
       Inherited here = parent;
-      if (const auto transform = attribute(child, "transform"))
-        here.transform = parent.transform * parseTransform(child, *transform);
+      // The attribute, or a style rule's or style="..."'s transform property over it (SVG 2
+      // made it a presentation attribute; Rabbit Ear's test files scale the border so).
+      if (const std::string transform = valueOf(style, "transform");
+          !transform.empty() && lower(transform) != "none")
+        here.transform = parent.transform * parseTransform(child, transform);
       if (const std::string stroke = valueOf(style, "stroke");
           !stroke.empty() && stroke != "inherit")
         here.stroke = stroke;
@@ -415,7 +420,8 @@ class SvgReader {
   // Presentation attributes, then <style> rules by tag, class and tag.class, then style="...".
   Declarations declarationsOf(const xmlNode* node, const std::string& tag) const {
     Declarations out;
-    for (const char* name : {"stroke", "stroke-opacity", "opacity", "display", "color"})
+    for (const char* name :
+         {"stroke", "stroke-opacity", "opacity", "display", "color", "transform"})
       if (const auto value = attribute(node, name)) out[name] = trim(*value);
     const auto apply = [&](const std::unordered_map<std::string, Declarations>& table,
                            const std::string& key) {
@@ -457,11 +463,27 @@ class SvgReader {
       if (close == std::string::npos) fail(node, "malformed transform " + quotedExcerpt(text));
       const std::string kind = trim(std::string_view(text).substr(pos, open - pos));
       NumberScanner scanner(std::string_view(text).substr(open + 1, close - open - 1));
+      const bool angles = kind == "rotate" || kind == "skewX" || kind == "skewY" || kind == "skew";
       std::vector<double> v;
       while (!scanner.atEnd()) {
         const auto number = scanner.number();
         if (!number || v.size() == 6) fail(node, "malformed transform " + quotedExcerpt(text));
-        v.push_back(*number);
+        // CSS's transform property writes its units: angles in deg, rad, grad or turn, lengths
+        // in px (the user unit); the attribute writes none.
+        const std::string unit = lower(std::string(scanner.skipUnit()));
+        double scale = 1.0;
+        if (unit.empty() || (unit == "px" && !angles) || (unit == "deg" && angles)) {
+        } else if (unit == "rad" && angles) {
+          scale = 180.0 / std::numbers::pi;
+        } else if (unit == "grad" && angles) {
+          scale = 0.9;
+        } else if (unit == "turn" && angles) {
+          scale = 360.0;
+        } else {
+          fail(node, "transform " + quotedExcerpt(kind) + " with the unit " + quotedExcerpt(unit) +
+                         " (not read)");
+        }
+        v.push_back(*number * scale);
       }
       const auto need = [&](std::size_t low, std::size_t high) {
         if (v.size() < low || v.size() > high)
@@ -487,6 +509,16 @@ class SvgReader {
         if (v.size() == 3)
           rotation = Affine{1, 0, 0, 1, v[1], v[2]} * rotation * Affine{1, 0, 0, 1, -v[1], -v[2]};
         step = rotation;
+      } else if (kind == "translateX" || kind == "translateY") {  // CSS's own functions
+        need(1, 1);
+        (kind == "translateX" ? step.e : step.f) = v[0];
+      } else if (kind == "scaleX" || kind == "scaleY") {
+        need(1, 1);
+        (kind == "scaleX" ? step.a : step.d) = v[0];
+      } else if (kind == "skew") {
+        need(1, 2);
+        step.c = std::tan(v[0] * std::numbers::pi / 180.0);
+        step.b = v.size() > 1 ? std::tan(v[1] * std::numbers::pi / 180.0) : 0.0;
       } else if (kind == "skewX") {
         need(1, 1);
         step.c = std::tan(v[0] * std::numbers::pi / 180.0);
