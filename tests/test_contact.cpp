@@ -599,46 +599,6 @@ TEST(Contact, OnTwoThreadsAVertexWhosePairsStopPushingGetsNoForce) {
   EXPECT_GT(state.contactPairs.pairs.size(), 4096u);  // the list's passes run on all cores
 }
 
-// A pair measured clear of the barrier sleeps until the sheet has travelled half its margin
-// (ContactList::wakeAt): layers that close from both sides, each a little a step, so that a gap
-// falls by twice the largest motion, wake every pair before it pushes. The flap is lifted 0.45 of
-// the activation gap (its pairs measured there), then it sinks and the lower layer rises 0.05 a
-// step each, the list kept: each step's forces are bit for bit every listed pair's, and pairs
-// measured clear at the lift push later.
-TEST(Contact, APairMeasuredClearOfTheBarrierIsFoundWhenTheLayersCloseFromBothSides) {
-  const BarHingeModel model = turnedOverGrid(false);
-  const double activation = model.contact.activation;
-  for (const int threads : {1, 2}) {
-    SCOPED_TRACE(threads);
-    tbb::task_arena arena(threads);
-    SimulationState state = flatState(model);
-    state.positions = halvesTurnedOver(model, 7);
-    const std::vector<glm::dvec3> laid = state.positions;
-    std::vector<std::uint8_t> pushedAtLift(model.vertexCount(), 0);
-    std::size_t woken = 0;
-    for (int round = 0; round < 11; ++round) {
-      SCOPED_TRACE(round);
-      // 0: laid (the search); 1: the flap lifted; then closing, 0.1 a step in all.
-      const double lift = round == 0 ? 0.0 : 0.45 * activation - 0.05 * (round - 1) * activation;
-      const double rise = round < 2 ? 0.0 : 0.05 * (round - 1) * activation;
-      state.positions = laid;
-      for (glm::dvec3& p : state.positions) p.z += p.z > 0.75 * kThickness ? lift : rise;
-      const glm::dvec3* forces = nullptr;
-      arena.execute([&] { forces = dynamicContactForces(model, state); });
-      ASSERT_NE(forces, nullptr);
-      std::vector<glm::dvec3> expected(model.vertexCount(), glm::dvec3(0.0));
-      addContactForces(model, state.positions, state.contactPairs.pairs, expected, true);
-      EXPECT_EQ(0, std::memcmp(forces, expected.data(), expected.size() * sizeof(glm::dvec3)));
-      for (std::size_t v = 0; v < model.vertexCount(); ++v) {
-        if (round == 1) pushedAtLift[v] = forces[v] != glm::dvec3(0.0);
-        if (round == 10) woken += !pushedAtLift[v] && forces[v] != glm::dvec3(0.0);
-      }
-    }
-    EXPECT_EQ(state.contactPairs.rebuilds, 1u);  // moves within half the skin: the list kept
-    EXPECT_GT(woken, 60u);  // 122: vertices whose pairs pushed only after the lift
-  }
-}
-
 // Dynamic steps with contact give the same state bit for bit on one thread and on two (the pairs'
 // forces computed on all cores, each vertex's summed in pair order), and the list was found again
 // on the way (the steps push the layers apart).

@@ -757,11 +757,6 @@ namespace {
 // often, and a sheet folded flat lists no more pairs (contact22, docs/performance.md).
 constexpr double kSkinScale = 2.0;
 
-// The travel clock (ContactList::travelled) restarts past this many skins: a sheet that shakes
-// in place travels far while it moves little, and a pair's wakeAt sums a distance and the clock
-// (kept far from rounding the barrier's margin of 1e-6 of the activation gap away).
-constexpr double kClockRestart = 64.0;
-
 // A search refits the list's trees (ContactTrees) while their nodes' half-perimeters, summed over
 // their items', stay within this factor of the sum when built; beyond it builds them anew. A
 // folding sheet's boxes move apart from their siblings, and a stale tree visits more nodes per
@@ -789,7 +784,6 @@ void indexContactList(const BarHingeModel& model, const std::vector<glm::dvec3>&
     for (std::size_t i = begin; i < end; ++i)
       list.builtDistance[i] = pairDistance(model, positions, list.pairs[i]);
   });
-  list.wakeAt = list.builtDistance;  // the travel clock starts at 0 with the search
   list.forces.resize(count);
   list.pushing.assign(count, 0);
   std::vector<std::uint8_t> inPair(n, 0);
@@ -859,48 +853,29 @@ bool refreshContactList(const BarHingeModel& model, const std::vector<glm::dvec3
   list.skin = skin;
   bool stale = list.builtAt.size() != positions.size();
   if (!stale) {
-    // The largest motion since the search and since the last refresh (the travel clock's tick),
-    // by chunks on all cores (maxima: any order); the positions kept for the next tick.
+    // The largest motion since the search, by chunks on all cores (a maximum: any order).
     constexpr std::size_t kGrain = 8192;
     const std::size_t n = positions.size(), chunks = (n + kGrain - 1) / kGrain;
-    std::vector<double> largest(2 * chunks, 0.0);
+    std::vector<double> largest(chunks, 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk) {
-                          double most = 0.0, tick = 0.0;
+                          double most = 0.0;
                           for (std::size_t v = chunk * kGrain;
                                v < std::min(n, (chunk + 1) * kGrain); ++v) {
                             const glm::dvec3 d = positions[v] - list.builtAt[v];
-                            const glm::dvec3 e = positions[v] - list.lastAt[v];
                             most = std::max(most, glm::dot(d, d));
-                            tick = std::max(tick, glm::dot(e, e));
-                            list.lastAt[v] = positions[v];
                           }
-                          largest[2 * chunk] = most;
-                          largest[2 * chunk + 1] = tick;
+                          largest[chunk] = most;
                         }
                       });
-    double most = 0.0, tick = 0.0;
-    for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-      most = std::max(most, largest[2 * chunk]);
-      tick = std::max(tick, largest[2 * chunk + 1]);
-    }
-    list.moved = std::sqrt(most);
-    list.travelled += std::sqrt(tick);
+    list.moved = n > 0 ? std::sqrt(*std::max_element(largest.begin(), largest.end())) : 0.0;
     stale = list.moved > 0.5 * skin;
-    if (!stale && list.travelled > kClockRestart * skin) {
-      // A sheet that shakes in place: the clock restarted at the motion since the search, each
-      // pair's distance at the search's (wakeAt's test then is the search's own).
-      list.travelled = list.moved;
-      if (list.wakeAt.size() == list.builtDistance.size()) list.wakeAt = list.builtDistance;
-    }
   }
   if (!stale) return false;
   list.pairs = searchContactList(model, positions, model.contact.activation + skin, list);
   list.builtAt = positions;
-  list.lastAt = positions;
   list.moved = 0.0;
-  list.travelled = 0.0;
   ++list.rebuilds;
   return true;
 }
@@ -916,8 +891,7 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
   // by its vertices' motions (2 moved), so one found farther than that cannot (the margin far
   // above the distances' rounding).
   const ContactParameters& c = model.contact;
-  const double edge = c.thickness + c.activation * (1.0 + 1e-6);
-  const double reach = edge + 2.0 * list.moved, wake = edge + 2.0 * list.travelled;
+  const double reach = c.thickness + c.activation * (1.0 + 1e-6) + 2.0 * list.moved;
   const std::vector<glm::dvec3>& x = state.positions;
   // Calls keep(i, pushes, term) for the pairs [begin, end) in order, the vertex-triangle pairs
   // that can push computed in lane blocks (the last lane's pair repeated to fill a block).
@@ -929,7 +903,6 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
     const auto runLanes = [&] {
       triangleDistanceLanes(x.data(), vertices, filled, out);
       for (std::size_t k = 0; k < filled; ++k) {
-        list.wakeAt[lanePair[k]] = out[3][k] + 2.0 * list.travelled;  // measured now
         if (out[3][k] - c.thickness >= c.activation) {  // triangleTerm's test, before its loads
           keep(lanePair[k], false, term);
           continue;
@@ -947,7 +920,7 @@ const glm::dvec3* dynamicContactForces(const BarHingeModel& model, SimulationSta
     };
     for (std::size_t i = begin; i < end; ++i) {
       const ContactPair& pair = list.pairs[i];
-      if (!(list.builtDistance[i] < reach) || list.wakeAt[i] >= wake) {
+      if (!(list.builtDistance[i] < reach)) {
         keep(i, false, term);  // adds nothing: the lanes' pairs may come after it
       } else if (pair.edges) {
         if (filled > 0) runLanes();  // the pair order

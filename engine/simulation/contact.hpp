@@ -166,11 +166,8 @@ double contactStepBound(const BarHingeModel& model, const std::vector<glm::dvec3
 // the activation gap: kSkinScale, contact.cpp), found again when, and only when, some vertex has
 // moved more than half the skin since (a pair's distance changes at most by its vertices' two
 // largest motions, so no pair outside the list can push before then). Each pair keeps its distance
-// when found, and again each time a step measures it (wakeAt, with the list's travel clock then):
-// a step evaluates only the pairs whose distance when found, less twice the largest motion since,
-// and whose distance when last measured, less twice the travel since, are within reach of the
-// barrier (the others cannot push: a pair that measured clear of the barrier sleeps until the
-// sheet has moved half its margin, not until the next search), each on all cores, and each
+// when found: a step evaluates only the pairs whose distance then, less twice the largest motion
+// since, is within reach of the barrier (the others cannot push), each on all cores, and each
 // vertex sums its pairs' forces in pair order (its slots, found with the list), also on all cores:
 // the same bits as summing pair by pair, for any thread count. A search after the first refits the
 // trees of the last (the triangles' and the bars' boxes, the splits kept: the same pairs as a tree
@@ -184,15 +181,9 @@ struct ContactList {
   std::vector<ContactPair> pairs;
   std::vector<glm::dvec3> builtAt;
   std::size_t rebuilds = 0;
-  std::size_t refits = 0;             // of the searches, those that refitted every tree
-  std::vector<double> builtDistance;  // per pair: its distance when found
-  double moved = 0.0;                 // the largest motion of a vertex since then
-  // The travel clock: the sum over refreshes of the largest motion of a vertex since the last
-  // (lastAt: the positions then), so a vertex moved at most travelled - T between the clock's
-  // T and now. Per pair: its distance when last measured plus twice the clock then.
-  double travelled = 0.0;
-  std::vector<glm::dvec3> lastAt;
-  std::vector<double> wakeAt;
+  std::size_t refits = 0;               // of the searches, those that refitted every tree
+  std::vector<double> builtDistance;    // per pair: its distance when found
+  double moved = 0.0;                   // the largest motion of a vertex since then
   double skin = 0.0;                    // the skin it was found with
   std::shared_ptr<ContactTrees> trees;  // shared by copies of a state until one searches
   // Scratch of the forces: per pair its four vertices' forces and whether it pushes; the
