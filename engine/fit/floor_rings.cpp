@@ -111,6 +111,83 @@ std::vector<FloorRingShape> floorRingShapes(const std::vector<glm::dvec3>& posit
   return shapes;
 }
 
+namespace {
+
+// An orthonormal frame at positions[0] from two vertices far apart (the same indices in both
+// sheets of a rigid pair): columns x, y, z.
+struct Frame {
+  glm::dvec3 origin, axes[3];
+};
+Frame frameOf(const std::vector<glm::dvec3>& positions, std::size_t i, std::size_t j) {
+  Frame f;
+  f.origin = positions[0];
+  f.axes[0] = glm::normalize(positions[i] - f.origin);
+  const glm::dvec3 w = positions[j] - f.origin;
+  f.axes[1] = glm::normalize(w - glm::dot(w, f.axes[0]) * f.axes[0]);
+  f.axes[2] = glm::cross(f.axes[0], f.axes[1]);
+  return f;
+}
+
+}  // namespace
+
+std::optional<ContinuedCone> continuedCone(const Sheet& cone, const SurfaceParameters& parameters,
+                                           const std::vector<SurfaceSample>& samples,
+                                           const RevolutionAxis& axis) {
+  const auto base = parameters.find("base_radius"), top = parameters.find("top_radius"),
+             tall = parameters.find("height");
+  if (base == parameters.end() || top == parameters.end() || tall == parameters.end())
+    return std::nullopt;
+  const double r0 = base->second, r1 = top->second, h = tall->second;
+  if (!(r1 > 0.0 && r0 > r1 && h > 0.0)) return std::nullopt;
+  const std::optional<TargetFloor> floor = targetFloor(samples, axis.point, axis.direction);
+  if (!floor) return std::nullopt;
+  // The rigid motion that placed the catalogue cone: frames of the same three vertices.
+  const Sheet catalogue = makeSurface("cone", parameters);
+  if (catalogue.positions.size() != cone.positions.size() || cone.positions.size() < 3)
+    return std::nullopt;
+  std::size_t i = 1, j = 1;
+  for (std::size_t k = 1; k < cone.positions.size(); ++k)
+    if (glm::length(cone.positions[k] - cone.positions[0]) >
+        glm::length(cone.positions[i] - cone.positions[0]))
+      i = k;
+  const glm::dvec3 along = glm::normalize(cone.positions[i] - cone.positions[0]);
+  double off = -1.0;
+  for (std::size_t k = 1; k < cone.positions.size(); ++k) {
+    const glm::dvec3 w = cone.positions[k] - cone.positions[0];
+    const double d = glm::length(w - glm::dot(w, along) * along);
+    if (d > off) off = d, j = k;
+  }
+  if (!(off > 1e-9)) return std::nullopt;
+  const Frame from = frameOf(catalogue.positions, i, j), to = frameOf(cone.positions, i, j);
+  const auto moved = [&](const glm::dvec3& p) {
+    const glm::dvec3 q = p - from.origin;
+    return to.origin + glm::dot(q, from.axes[0]) * to.axes[0] +
+           glm::dot(q, from.axes[1]) * to.axes[1] + glm::dot(q, from.axes[2]) * to.axes[2];
+  };
+  // The catalogue's cone stands along y, its base at -h / 2, its narrow end at +h / 2.
+  const glm::dvec3 wide = moved(glm::dvec3(0.0, -0.5 * h, 0.0));
+  const glm::dvec3 narrow = moved(glm::dvec3(0.0, 0.5 * h, 0.0));
+  const glm::dvec3 direction = glm::normalize(narrow - wide);
+  if (glm::dot(direction, floor->toward) < 0.9) return std::nullopt;  // its narrow end elsewhere
+  const glm::dvec3 floorPoint = axis.point + floor->height * floor->toward;
+  const double atFloor = glm::dot(floorPoint - wide, direction);  // along the cone from its base
+  const double slope = (r0 - r1) / h;
+  const double heel = r0 - slope * atFloor;
+  if (!(heel > 0.0)) return std::nullopt;
+  const double band = h - atFloor;  // past the floor now
+  double extra = kContinuedBand * heel - band;
+  extra = std::min(extra, (r1 - 0.2 * heel) / slope);
+  if (!(extra > 0.1 * heel)) return std::nullopt;
+  ContinuedCone out;
+  out.parameters = parameters;
+  out.parameters["top_radius"] = r1 - slope * extra;
+  out.parameters["height"] = h + extra;
+  out.sheet = makeSurface("cone", out.parameters);
+  // Its base where the cone's was: the catalogue's longer cone moved by half the extra along y.
+  for (glm::dvec3& p : out.sheet.positions) p = moved(p + glm::dvec3(0.0, 0.5 * extra, 0.0));
+  return out;
+}
+
 double floorMeasure(const Sheet& sheet, const FoldFitter& fitter) {
   const SurfaceDistance d =
       surfaceDistance(meshOf(sheet), fitter.measuredTarget(), kMeasureSamples);
