@@ -89,61 +89,6 @@ TEST(FloorRings, AConeUnderAFlatFlooredCupHasTheFloorsCentreBroughtNearer) {
   EXPECT_LT(floorMeasure(closed, fitter), floorMeasure(cone, fitter));
 }
 
-// The cone of the first test ending only a tenth of the heel's radius past the floor (a tumbler's
-// placed cone), tilted and moved with the cup: continued toward its apex so half the heel's radius
-// lies past the floor, its rim where it was; its floor ring then brings the floor's centre nearer
-// than the short cone's; a cone already long enough, or whose narrow end is at the rim, is left.
-TEST(FloorRings, AConeEndingShortOfTheFloorIsContinuedPastIt) {
-  const double angle = 0.5, band = 0.1 * 0.04, taper = 0.1;
-  const glm::dvec3 shift(0.01, -0.02, 0.03);
-  const auto place = [&](glm::dvec3 p) {  // about x by `angle`, then moved
-    return shift + glm::dvec3(p.x, std::cos(angle) * p.y - std::sin(angle) * p.z,
-                              std::sin(angle) * p.y + std::cos(angle) * p.z);
-  };
-  TriangleMesh cup = flatFlooredCup();
-  for (glm::dvec3& p : cup.positions) p = place(p);
-  const SurfaceParameters parameters{{"base_radius", 0.05},
-                                     {"top_radius", 0.04 - taper * band},
-                                     {"height", 0.1 + band},
-                                     {"resolution", 40.0}};
-  Sheet cone = makeSurface("cone", parameters);
-  for (glm::dvec3& p : cone.positions) p = place(p + glm::dvec3(0.0, 0.5 * band, 0.0));
-  const RevolutionAxis axis{shift, place(glm::dvec3(0.0, 1.0, 0.0)) - shift, 0.0};
-  const std::vector<SurfaceSample> samples = sampleSurface(cup, 1500, 7);
-  const auto along = [&](const Sheet& sheet, double sign) {  // the sheet's reach along the axis
-    double most = -1e300;
-    for (const glm::dvec3& p : sheet.positions)
-      most = std::max(most, sign * glm::dot(p - shift, axis.direction));
-    return most;
-  };
-
-  const std::optional<ContinuedCone> longer = continuedCone(cone, parameters, samples, axis);
-  ASSERT_TRUE(longer.has_value());
-  validate(longer->sheet);
-  EXPECT_NEAR(along(longer->sheet, 1.0) - 0.05, kContinuedBand * 0.04, 0.002);  // past the floor
-  EXPECT_NEAR(along(longer->sheet, -1.0), along(cone, -1.0), 1e-9);             // the rim stays
-  EXPECT_NEAR(longer->parameters.at("height"), 0.05 + 0.05 + kContinuedBand * 0.04, 0.002);
-
-  const FoldFitter fitter(cup, testing::sampledSettings(400, 1500, 2000));
-  const auto floorCentreAfterRing = [&](const Sheet& sheet) {
-    const std::vector<FoldSuggestion> step =
-        suggestFloorRing(FoldSession(sheet), fitter, axis, samples,
-                         Deadline::in(std::numeric_limits<double>::infinity()));
-    return nearestVertex(step.empty() ? sheet : step.front().sheet, place({0.0, 0.05, 0.0}));
-  };
-  EXPECT_LT(floorCentreAfterRing(longer->sheet), 0.8 * floorCentreAfterRing(cone));
-
-  // Long enough already: the continued cone's own band.
-  EXPECT_FALSE(continuedCone(longer->sheet, longer->parameters, samples, axis).has_value());
-  // The narrow end at the rim: the same cone turned end over end (half a turn about x through
-  // the cup's middle).
-  Sheet upended = cone;
-  const glm::dvec3 x(1.0, 0.0, 0.0);
-  for (glm::dvec3& p : upended.positions)
-    p = shift + 2.0 * glm::dot(p - shift, x) * x - (p - shift);
-  EXPECT_FALSE(continuedCone(upended, parameters, samples, axis).has_value());
-}
-
 // A cup with no floor (a tube open at both ends) has none to close; a flat-floored cup's floor is
 // found at its end, whichever way the axis is given.
 TEST(FloorRings, OnlyACupWithAFloorHasOne) {

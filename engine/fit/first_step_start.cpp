@@ -7,7 +7,6 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/bent_start.hpp"
-#include "engine/fit/floor_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/ring_folds.hpp"
@@ -379,7 +378,7 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
   const std::vector<SurfaceSample> samples = sampleSurface(fitter.target(), kSamples, 3);
   const std::optional<RevolutionAxis> axis = revolutionAxis(samples);
   if (!axis) return std::nullopt;
-  Sheet own = start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
+  const Sheet own = start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
   if (!tubeAbout(own, axis->direction)) return std::nullopt;
   std::optional<PlacedStart> around =
       enclosingCone(samples, axis->point, axis->direction, kTubeRingSteepestTaper);
@@ -397,36 +396,7 @@ std::optional<FirstStepStart> reviseTubeByFirstStep(StartChoice& start, const Fo
     return surfaceDistance(meshOf(steps.empty() ? sheet : steps.front().sheet),
                            fitter.measuredTarget(), kSamples);
   };
-  SurfaceDistance ownLanded = landing(own, ownChains);
-  // Toward a cup whose floor the cone ends short of, the cone continued past it
-  // (floor_rings.hpp), where its first step (the floor ring turning that band in) lands nearer by
-  // the tube rings' measure and no farther by Hausdorff: a cup reached now never gets farther.
-  if (start.surface == "cone" && !deadline.passed())
-    if (std::optional<ContinuedCone> longer =
-            continuedCone(own, start.parameters, samples, *axis)) {
-      TubeChains longerChains;
-      const SurfaceDistance longerLanded = landing(longer->sheet, longerChains);
-      const auto measure = [](const SurfaceDistance& d) {
-        return d.chamfer + kTubeHausdorffWeight * d.hausdorff;
-      };
-      // The search grows rings only on a tube about its own axis (FoldFitter::targetAxis, read
-      // from other samples than this probe's): the longer a cone, the farther its far end from
-      // that axis when the two differ (marched_mug_mm: about 1.7 degrees, a radius spread of 6.8%
-      // over 77 mm, past tubeAbout's 3%), and where the search finds no tube it never makes the
-      // floor ring this probe landed (it kept no fold, 9.7% -> 19.4% Hausdorff).
-      const RevolutionAxis* searched = fitter.targetAxis();
-      if (!deadline.passed() && searched && tubeAbout(longer->sheet, searched->direction) &&
-          measure(longerLanded) < measure(ownLanded) &&
-          longerLanded.hausdorff <= ownLanded.hausdorff) {
-        own = std::move(longer->sheet);
-        ownLanded = longerLanded;
-        ownChains = std::move(longerChains);
-        start.parameters = std::move(longer->parameters);
-        start.placed = own;
-        start.placement += ", continued past the floor";
-        start.chamfer = surfaceDistance(meshOf(own), fitter.measuredTarget(), kSamples).chamfer;
-      }
-    }
+  const SurfaceDistance ownLanded = landing(own, ownChains);
   if (handed) *handed = ownChains;
   if (deadline.passed()) return std::nullopt;
   const SurfaceDistance aroundLanded = landing(around->sheet, aroundChains);

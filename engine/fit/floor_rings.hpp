@@ -41,7 +41,6 @@
 #include "engine/fit/surface_samples.hpp"
 #include "engine/geometry/fold_session.hpp"
 #include "engine/geometry/sheet.hpp"
-#include "engine/surfaces/surfaces.hpp"
 
 namespace curvefold {
 
@@ -91,25 +90,6 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
                                        const RevolutionAxis& axis,
                                        const std::vector<SurfaceSample>& targetSamples,
                                        double current, const Deadline& deadline);
-
-// The cone start continued past the floor (issue 38, 2, floor25): a floor ring's flaps reach
-// inward about as far as the band past the floor is long, so a cone that ends a quarter of the
-// heel's radius past it (a tumbler's placed cone) leaves the floor's centre about 0.7 of that
-// radius from the sheet, whatever the ring. `cone` is a catalogue cone of `parameters`
-// (base_radius, top_radius, height) moved rigidly (a placed start) or not; where its narrow end
-// points to the target's floor (targetFloor about `axis`) and reaches past it by under
-// kContinuedBand of the heel's radius, the same cone made longer toward its apex (its wide end
-// where it was, its narrow end still at least a fifth of the heel's radius) so the band past the
-// floor is that long; none otherwise. The caller weighs it against the cone as it was (it sticks
-// out past the floor until a floor ring turns it in).
-inline constexpr double kContinuedBand = 0.5;  // of the heel's radius
-struct ContinuedCone {
-  SurfaceParameters parameters;
-  Sheet sheet;
-};
-std::optional<ContinuedCone> continuedCone(const Sheet& cone, const SurfaceParameters& parameters,
-                                           const std::vector<SurfaceSample>& samples,
-                                           const RevolutionAxis& axis);
 
 // The tube rings' measure of `sheet` against the fitter's target (see above).
 double floorMeasure(const Sheet& sheet, const FoldFitter& fitter);

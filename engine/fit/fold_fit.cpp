@@ -471,10 +471,6 @@ bool FoldFitter::revolutionTarget() const {
   return target_->axis.has_value();
 }
 
-const RevolutionAxis* FoldFitter::targetAxis() const {
-  return target_->axis ? &*target_->axis : nullptr;
-}
-
 bool FoldFitter::readsCreasesFrom(const Sheet& initial) const {
   if (!settings_.useCreases) return false;
   const Target& t = *target_;

@@ -101,8 +101,7 @@ struct FoldSuggestion {
   bool crease = false;  // through a plane of the target's creases
 };
 
-struct TubeChains;      // ring_folds.hpp
-struct RevolutionAxis;  // profile_folds.hpp
+struct TubeChains;  // ring_folds.hpp
 
 class FoldFitter {
  public:
@@ -122,9 +121,6 @@ class FoldFitter {
   bool smoothTarget() const;
   // Whether rings are drawn about the target's axis (a smooth surface of revolution).
   bool revolutionTarget() const;
-  // That axis as the search reads it from its own samples (null where none is): a start's probe
-  // reads its own, a degree or two apart.
-  const RevolutionAxis* targetAxis() const;
   // Whether a fit from `initial` (a design's sheet before its folds) reads the target's creases
   // (the unfolding fitFolds tries first, and proposals through crease planes). A target folded
   // by reflections has creases to read. A smooth target or a scan may still be the sheet moved
