@@ -356,11 +356,20 @@ namespace {
 StaticResult settleInStages(const BarHingeModel& model, const std::vector<double>& goal,
                             SimulationState& state, const StaticOptions& options,
                             bool* softBarsSkipped = nullptr, bool* softStageCut = nullptr);
+// The settle with the paper's own bars from the start state (settleWithSoftBars' fallback) and
+// the state it ended at, kept for the patient retry (settleToTargets), whose own would be the
+// same bits: its options differ only in the soft stages' iterations, which it has none of.
+struct StiffSettle {
+  bool made = false;
+  StaticResult result;
+  SimulationState state;
+};
 // settleToTargets' settle in paper mode with the bars softened (below). softStageCut: set where a
-// soft stage stopped at maxSoftStageIterations short of its tolerance.
+// soft stage stopped at maxSoftStageIterations short of its tolerance. stiffSettle: the fallback
+// with the paper's bars, made (and kept there) unless already made.
 StaticResult settleWithSoftBars(const BarHingeModel& model, const std::vector<double>& goal,
                                 SimulationState& state, const StaticOptions& options,
-                                bool& softStageCut);
+                                bool& softStageCut, StiffSettle& stiffSettle);
 }  // namespace
 
 StaticResult settle(const BarHingeModel& model, double foldAmount, SimulationState& state,
@@ -373,7 +382,8 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   if (paperBarScale(model, options) == 1.0) return settleInStages(model, goal, state, options);
   const SimulationState before = state;
   bool softStageCut = false;
-  StaticResult result = settleWithSoftBars(model, goal, state, options, softStageCut);
+  StiffSettle stiff;
+  StaticResult result = settleWithSoftBars(model, goal, state, options, softStageCut, stiff);
   // Not settled (with the paper's bars too where those were tried): a soft stage cut at
   // maxSoftStageIterations far from its equilibrium leaves the next, with bars a hundred times
   // stiffer, to crawl along the narrow valley they make (the curved-pleats annulus at 100%: its
@@ -387,7 +397,7 @@ StaticResult settleToTargets(const BarHingeModel& model, const std::vector<doubl
   state = before;
   StaticOptions patient = options;
   patient.maxSoftStageIterations = patientIterations;
-  StaticResult retried = settleWithSoftBars(model, goal, state, patient, softStageCut);
+  StaticResult retried = settleWithSoftBars(model, goal, state, patient, softStageCut, stiff);
   if (retried.converged) {
     retried.iterations += result.iterations;
     retried.patientSoftStages = true;
@@ -402,7 +412,7 @@ namespace {
 
 StaticResult settleWithSoftBars(const BarHingeModel& model, const std::vector<double>& goal,
                                 SimulationState& state, const StaticOptions& options,
-                                bool& softStageCut) {
+                                bool& softStageCut, StiffSettle& stiffSettle) {
   // Soft bars can let a triangle turn inside out on the way; stiffened again it cannot turn
   // back, and the sheet ends strained far above where it began (one of Origami Simulator's
   // examples, Crossing_curves: 33%). Then the settle is made again with the paper's own bars.
@@ -428,10 +438,17 @@ StaticResult settleWithSoftBars(const BarHingeModel& model, const std::vector<do
       (soft.converged || soft.residual <= options.stageTolerance || softStrain <= 1e-3))
     return soft;
   const SimulationState softState = state;
-  state = before;
-  StaticOptions stiff = options;
-  stiff.softBarRatio = 0.0;
-  StaticResult result = settleInStages(model, goal, state, stiff);
+  const bool made = stiffSettle.made;
+  if (!made) {
+    stiffSettle.state = before;
+    StaticOptions stiff = options;
+    stiff.softBarRatio = 0.0;
+    stiffSettle.result = settleInStages(model, goal, stiffSettle.state, stiff);
+    stiffSettle.made = true;
+  }
+  state = stiffSettle.state;
+  StaticResult result = stiffSettle.result;
+  if (made) result.iterations = 0;  // counted where it was made
   if (softUsable && !(result.residual < soft.residual)) {
     state = softState;
     soft.iterations += result.iterations;
