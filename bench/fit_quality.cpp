@@ -36,7 +36,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/fit/crease_planes.hpp"
-#include "engine/fit/first_step_start.hpp"
+#include "engine/fit/fit_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/fit/surface_distance.hpp"
@@ -321,10 +321,10 @@ int run(int argc, char** argv) {
         writeObj(shape.mesh,
                  std::filesystem::path(writeTargets) / (std::string(shape.name) + ".obj"));
       const FoldFitter fitter(shape.mesh);
-      StartChoice start = chooseStart(shape.mesh, shape.from.surface);
-      auto chains = std::make_shared<TubeChains>();
-      if (!reviseByFirstStep(start, fitter, shape.from.surface, {}))
-        reviseTubeByFirstStep(start, fitter, shape.from.surface, {}, 2, chains.get());
+      // The start `fit --from KIND --evaluations` folds (fit_start.hpp: no clock), its runners-up
+      // not folded.
+      const FitStart chosen = chooseFitStart(fitter, shape.from.surface, std::nullopt, {});
+      const StartChoice& start = chosen.choice;
       const Sheet initial =
           start.placed ? *start.placed : makeSurface(start.surface, start.parameters);
       const std::string symmetry =
@@ -335,7 +335,7 @@ int run(int argc, char** argv) {
       options.maxFolds = shapeFolds;
       options.seconds = seconds;
       options.maxEvaluations = shapeEvaluations;
-      if (!chains->chains.empty()) options.tubeChains = chains;  // as fit hands them on
+      options.tubeChains = chosen.tubeChains;  // as fit hands them on
       const FitResult result = fitFolds(session, fitter, options);
       std::string trail;
       for (const FitProgress& step : result.steps) {

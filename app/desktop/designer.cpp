@@ -307,6 +307,7 @@ class DesignerWindow {
   void startRecording();
   void frameView();  // the sheet and the target together (issue 38, 4)
   void replaceDocument(Design next, const std::string& name);
+  void takeRevisedStart();  // the start `fit` would choose, once it is ready
   // One frame's steps, in order.
   void drawPanel();
   studio::StudioActions panelActions();
@@ -473,6 +474,16 @@ void DesignerWindow::replaceDocument(Design next, const std::string& name) {
   ground_ = groundBelow(worldBounds(doc_.session->fixed()));
 }
 
+void DesignerWindow::takeRevisedStart() {
+  // Before the frame's input is read, so that a press meets the sheet it is drawn on. A live
+  // simulation is the designer at work on the sheet open, as a fold is.
+  std::optional<Design> revised = goal_.takeRevisedStart(doc_, doc_.core->simulation() != nullptr);
+  if (!revised) return;
+  replaceDocument(std::move(*revised), options_.input);
+  frameNote_ = "start";
+  std::cout << goal_.suggestionLine(*doc_.core) << std::endl;  // which sheet, where it is said
+}
+
 void DesignerWindow::run() {
   start_ = Clock::now();
   lastFrame_ = Clock::now();
@@ -488,6 +499,7 @@ void DesignerWindow::run() {
           float(std::chrono::duration<double, std::milli>(now - phaseStart).count());
       phaseStart = now;
     };
+    takeRevisedStart();
     glfwPollEvents();
     {
       const glm::dvec2 size = windowSize(window_);
@@ -705,6 +717,12 @@ void runDesigner(const DesignerOptions& options) {
                                   [&doc] { return doc.design(); },
                                   {{options.target, "the target"}});
   if (outputs.wantsRecording()) session::startFromCommittedFolds(doc);
+  // The window opens on the rule's sheet at once; the start `fit` would choose (its first step's
+  // revisions: seconds) comes off the frame and replaces it while the designer has not begun
+  // (StudioTarget::takeRevisedStart). Not with --record: the recording starts from the sheet open.
+  if (options.input.empty() && !options.resume && !options.target.empty() &&
+      !outputs.wantsRecording())
+    goal.reviseStart(doc);
   DesignerWindow window(options, width, height, start, doc, goal, outputs);
   window.run();
   window.finish();

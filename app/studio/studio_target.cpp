@@ -1,5 +1,6 @@
 #include "app/studio/studio_target.hpp"
 
+#include <pthread.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -10,7 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <variant>
 
+#include "engine/fit/fit_start.hpp"
 #include "engine/fit/start_surface.hpp"
 #include "engine/geometry/symmetry.hpp"
 #include "engine/geometry/triangle_mesh.hpp"
@@ -52,6 +55,18 @@ void measureAtNice(int searchNice) {
   if (errno == 0 && now < nice) setpriority(PRIO_PROCESS, thread, nice);
 }
 
+// The design a chosen start opens as. A sheet moved onto the target (a swept parabola on a
+// saddle) is embedded as it lies, as `fit` embeds it: its parameters ("curvature") are the
+// placement's, not the catalogue surface's, which refused them and the window did not open.
+Design designOf(const StartChoice& start) {
+  if (start.placed) return Design{*start.placed, {}};
+  return Design{GeneratedSurface{start.surface, start.parameters}, {}};
+}
+
+// `fit`'s --time when none is given (fit_commands.cpp), of which the start's choice takes its
+// share (kStartShare): the studio's revision is cut where `fit T` would cut it.
+constexpr double kFitDefaultSeconds = 60.0;
+
 }  // namespace
 
 Design startForTarget(const std::string& path) {
@@ -61,15 +76,28 @@ Design startForTarget(const std::string& path) {
     // Units and place as a sheet at the catalogue's defaults has them: a target in millimetres
     // is refused, not met by a sheet a thousand times too large.
     checkTargetAgainst(target, makeSurface("square"));
-    const StartChoice start = chooseStart(target);
-    // A sheet moved onto the target (a swept parabola on a saddle) is embedded as it lies, as `fit`
-    // embeds it: its parameters ("curvature") are the placement's, not the catalogue surface's,
-    // which refused them and the window did not open.
-    if (start.placed) return Design{*start.placed, {}};
-    return Design{GeneratedSurface{start.surface, start.parameters}, {}};
+    return designOf(chooseStart(target));
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+}
+
+Design fitStartForTarget(const TriangleMesh& target, const std::atomic<bool>* cancelled) {
+  // `fit`'s fitter (its default settings and seed 1, as makeFitter makes it without options).
+  const FoldFitter fitter(target);
+  FitStartClock clock;
+  clock.seconds = kFitDefaultSeconds;
+  clock.cancelled = cancelled;
+  return designOf(chooseFitStart(fitter, "", std::nullopt, clock).choice);
+}
+
+bool sameStart(const InitialSurface& a, const InitialSurface& b) {
+  const auto* generatedA = std::get_if<GeneratedSurface>(&a);
+  const auto* generatedB = std::get_if<GeneratedSurface>(&b);
+  if (generatedA || generatedB) return generatedA && generatedB && *generatedA == *generatedB;
+  const Sheet& sheetA = std::get<Sheet>(a);
+  const Sheet& sheetB = std::get<Sheet>(b);
+  return sheetA.positions == sheetB.positions && sheetA.triangles == sheetB.triangles;
 }
 
 StudioStart studioStart(const std::string& input, const std::string& target,
@@ -92,7 +120,9 @@ StudioTarget::StudioTarget(bool replaying, double suggestionSeconds, MeshReader 
 
 // The worker, the loads and the measures still running are waited for here, when the studio ends
 // (each stops at its next check, or within a measure or a read).
-StudioTarget::~StudioTarget() = default;
+StudioTarget::~StudioTarget() {
+  if (reviseCancel_) *reviseCancel_ = true;  // the start's revision stops at its next check
+}
 
 void StudioTarget::retireMeasuring() {
   // A future of std::async waits for its task when destroyed: kept until it is ready.
@@ -125,6 +155,7 @@ void StudioTarget::reapRetired() {
   reap(retiredFound_);
   reap(retiredLoads_);
   reap(released_);
+  reap(retiredRevisions_);
 }
 
 StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sheet,
@@ -149,6 +180,7 @@ StudioTarget::Loaded StudioTarget::read(const std::string& path, const Sheet& sh
 void StudioTarget::load(const std::string& path, const session::Document& doc) {
   // The user asked for another target: what is searched toward the old one is of no use.
   if (worker_) worker_->cancel();
+  if (revising_.valid()) dropRevision("");
   searching_ = false;
   suggestAfterLoad_ = false;
   answerNote_.clear();
@@ -323,7 +355,8 @@ void StudioTarget::poll(const session::Document& doc, InputFrame& frame) {
 }
 
 bool StudioTarget::hasNews() const {
-  if (isReady(loading_) || isReady(measuring_) || isReady(measuringFound_)) return true;
+  if (isReady(loading_) || isReady(measuring_) || isReady(measuringFound_) || isReady(revising_))
+    return true;
   // A search asked once its target is there waits for the load, not the worker.
   return searching_ && !loading_.valid() && worker_ && !worker_->busy();
 }
@@ -363,10 +396,11 @@ std::string StudioTarget::suggestionLine(const InteractionCore& core) const {
     }
     return line;
   }
-  return answerNote_;
+  return answerNote_.empty() ? startNote_ : answerNote_;
 }
 
 void StudioTarget::documentReplaced() {
+  if (revising_.valid()) dropRevision("");  // the start it revised is gone
   if (worker_) worker_->cancel();
   searching_ = false;
   requestSession_ = nullptr;
@@ -380,6 +414,61 @@ void StudioTarget::documentReplaced() {
   retireMeasuring();
   measured_.reset();
   measuredCurrent_ = false;
+}
+
+void StudioTarget::dropRevision(const std::string& note) {
+  if (reviseCancel_) *reviseCancel_ = true;
+  if (revising_.valid()) retiredRevisions_.push_back(std::move(revising_));
+  revising_ = {};
+  reviseCancel_.reset();
+  startNote_ = note;
+}
+
+void StudioTarget::reviseStart(const session::Document& doc) {
+  if (replaying_ || !fitter_) return;
+  dropRevision("choosing the start as fit would ...");
+  reviseSession_ = doc.session.get();
+  reviseRevision_ = doc.session->designRevision();
+  reviseCancel_ = std::make_shared<std::atomic<bool>>(false);
+  revising_ = std::async(std::launch::async, [fitter = fitter_, open = doc.surface,
+                                              cancel = reviseCancel_, nice = searchNice_] {
+    pthread_setname_np(pthread_self(), "cf-start");
+    Revised revised;
+    runAtSearchNice(nice, [&] {
+      try {
+        Design design = fitStartForTarget(fitter->target(), cancel.get());
+        const auto* generated = std::get_if<GeneratedSurface>(&design.surface);
+        revised.kind = generated ? generated->generator : "a sheet placed on the target";
+        if (!sameStart(design.surface, open)) revised.design = std::move(design);
+      } catch (const std::exception& e) {
+        revised.error = e.what();
+      }
+    });
+    return revised;
+  });
+}
+
+std::optional<Design> StudioTarget::takeRevisedStart(const session::Document& doc, bool busy) {
+  if (!revising_.valid()) return std::nullopt;
+  // The designer went on from the sheet open (a fold, an undo, a Suggest): theirs is kept, and
+  // the revision, of no use now, stops.
+  const bool untouched = reviseSession_ == doc.session.get() &&
+                         reviseRevision_ == doc.session->designRevision() &&
+                         requestSession_ == nullptr && !busy;
+  if (!untouched) {
+    dropRevision("");
+    return std::nullopt;
+  }
+  if (doc.session->dragging() || !isReady(revising_)) return std::nullopt;  // after the drag
+  Revised revised = revising_.get();
+  revising_ = {};
+  reviseCancel_.reset();
+  if (!revised.error.empty()) {
+    startNote_ = "the start fit would choose: " + revised.error;
+    return std::nullopt;
+  }
+  startNote_ = revised.design ? "start: " + revised.kind + ", as fit chooses it" : "";
+  return std::move(revised.design);
 }
 
 }  // namespace curvefold::studio

@@ -13,6 +13,7 @@
 // The desktop window and the headset's panel share it.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <future>
@@ -34,6 +35,17 @@ namespace curvefold::studio {
 // after the same check of its units and place against the default square. Reads the target;
 // throws a one-line error naming the file.
 Design startForTarget(const std::string& path);
+
+// The start `fit T` chooses without --from (issue 38, 4; fit_start.hpp's chooseFitStart): the
+// rule's sheet revised by its first step toward a saddle or a vase, measured by a fitter with
+// `fit`'s settings and seed, on `fit`'s default clock (60 s, of which the choice takes its share).
+// The revisions cost seconds, so a window opens on startForTarget's sheet and takes this one from
+// StudioTarget::reviseStart when it is ready. `cancelled` stops it (unset: never). Throws as
+// startForTarget does, without the file's name.
+Design fitStartForTarget(const TriangleMesh& target, const std::atomic<bool>* cancelled = nullptr);
+
+// Whether two starts are the same sheet: the same generator and parameters, or the same mesh.
+bool sameStart(const InitialSurface& a, const InitialSurface& b);
 
 // What a studio (the desktop window, the headset) opens: the input named (a design file or a
 // surface), else, with a target, the start chosen to match it (startForTarget), else
@@ -116,8 +128,24 @@ class StudioTarget {
   std::string suggestionLine(const InteractionCore& core) const;
 
   // The document was replaced (a new sheet, an opened design): what was found for the old one
-  // goes; the target stays.
+  // goes; the target stays. A start still being revised is dropped.
   void documentReplaced();
+
+  // After a window opened on startForTarget's sheet (the rule's choice alone, at once): chooses
+  // the start `fit` would (fitStartForTarget) from the loaded target, on a thread of its own at
+  // the search's nice, so no frame waits for its seconds. A no-op while replaying or without a
+  // target.
+  void reviseStart(const session::Document& doc);
+  // Once a frame, before the frame's input reaches the core: the revised start, once, when it is
+  // ready, is another sheet than the one open, and the designer has left the design as it opened
+  // (no fold, no drag under way, no suggestion asked); the host opens it in place of the
+  // document (and calls documentReplaced), and the suggestion line names it. Overtaken by a fold,
+  // a Suggest, another target or document, it is dropped (its thread cancelled): the designer's
+  // sheet is never swapped under their work. Never waits.
+  // `busy`: the host's own work on the sheet open (a live simulation), which keeps it as a fold
+  // does.
+  std::optional<Design> takeRevisedStart(const session::Document& doc, bool busy = false);
+  bool revisingStart() const { return revising_.valid(); }
 
  private:
   struct Measured {
@@ -172,6 +200,20 @@ class StudioTarget {
   void retireMeasuring();
   void retireFound();
   void reapRetired();
+
+  // The start's revision (reviseStart): the design `fit` would start from, or why not.
+  struct Revised {
+    std::optional<Design> design;  // unset: the same sheet as the one open
+    std::string kind;              // the revised sheet's generator
+    std::string error;
+  };
+  std::future<Revised> revising_;
+  std::shared_ptr<std::atomic<bool>> reviseCancel_;
+  const void* reviseSession_ = nullptr;  // the document it is for, as it opened
+  std::uint64_t reviseRevision_ = 0;
+  std::string startNote_;  // what became of the revision, for the suggestion line
+  std::vector<std::future<Revised>> retiredRevisions_;
+  void dropRevision(const std::string& note);
 };
 
 }  // namespace curvefold::studio

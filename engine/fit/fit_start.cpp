@@ -16,11 +16,13 @@ FitStart chooseFitStart(const FoldFitter& fitter, const std::string& kind,
                         kStartShare * clock.seconds - elapsed,
                         kStartLatest * clock.seconds - elapsed, clock.cancelled)
             : Deadline{};
-  const Deadline wall =
+  Deadline wall =
       timed ? Deadline{}.notAfter(clock.started +
                                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(kStartShare * clock.seconds)))
             : Deadline{};
+  // An interrupt, or a studio closed while it chooses, ends the probe too, not at its share.
+  if (timed) wall.cancelled = clock.cancelled;
   FitStart out;
   const bool symmetric = symmetry.has_value();
   out.choice = chooseStart(fitter.measuredTarget(), kind, symmetric ? *symmetry : "", work);

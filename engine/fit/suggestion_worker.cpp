@@ -79,6 +79,15 @@ tbb::task_arena& searchArena(int nice) {
 
 }  // namespace
 
+void runAtSearchNice(int nice, const std::function<void()>& work) {
+  if (nice <= 0) {
+    work();
+    return;
+  }
+  if (threadNice() < nice) setThreadNice(nice);
+  searchArena(nice).execute(work);
+}
+
 SuggestionWorker::SuggestionWorker(std::shared_ptr<const FoldFitter> fitter, double timeLimit,
                                    int nice)
     : fitter_(std::move(fitter)), timeLimit_(timeLimit), nice_(nice), thread_([this] { run(); }) {}

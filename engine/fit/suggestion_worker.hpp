@@ -14,6 +14,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -31,6 +32,12 @@ struct DesignSnapshot {
   std::vector<FoldRecord> folds;
   std::string symmetry;  // "" none
 };
+
+// Runs `work` on the calling thread lowered to `nice` (where that is below it), in the TBB arena a
+// SuggestionWorker of that nice searches in, so that its parallel parts yield to the frames as the
+// search's do: other work a studio does off the frame at the search's priority (the start's
+// revision, app/studio/studio_target.hpp). The thread stays at `nice` after it.
+void runAtSearchNice(int nice, const std::function<void()>& work);
 
 class SuggestionWorker {
  public:
