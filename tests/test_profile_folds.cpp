@@ -20,7 +20,6 @@
 #include <glm/vec2.hpp>
 
 #include "engine/fit/first_step_start.hpp"
-#include "engine/fit/fit_start.hpp"
 #include "engine/fit/fold_fit.hpp"
 #include "engine/fit/lobed_saddle.hpp"
 #include "engine/fit/placed_start.hpp"
@@ -291,24 +290,6 @@ TEST(LobedSaddleAxis, IsReadWithTheLobesOrder) {
   EXPECT_FALSE(lobedSaddleAxis(sampleSurface(
       placed(overTriangle([](double x, double y) { return 4.0 * (x * x + y * y); }, radius, 40)),
       2000, 3)));
-}
-
-// From the square, the four-lobed saddle's fit is offered rings about that axis beside the pleats
-// (saddle25 refused the axis; its rings had come nearer: polygon_saddle_k4 7.37% / 0.85% against
-// the pleats' 9.38% / 1.17%): a runner-up, the square as the rule sized it with rings folded first.
-TEST(LobedSaddleAxis, OffersTheSquareRingsAboutItAsARunnerUp) {
-  const FoldFitter fitter(fourLobedSaddle({0.4, -1.0, 0.3}), testing::quickSettings());
-  ASSERT_TRUE(fitter.smoothTarget());
-  ASSERT_FALSE(fitter.revolutionTarget());
-  const FitStart start = chooseFitStart(fitter, "square", std::nullopt, FitStartClock{});
-  const auto rings =
-      std::find_if(start.choice.runnersUp.begin(), start.choice.runnersUp.end(),
-                   [](const RunnerUpStart& r) { return r.surface == "ringed_square"; });
-  ASSERT_NE(rings, start.choice.runnersUp.end());
-  ASSERT_TRUE(rings->placed);
-  EXPECT_NE(rings->why.find("order 4"), std::string::npos) << rings->why;
-  // Folded: its rings moved the sheet off the plane it was cut in.
-  EXPECT_NE(rings->placement.find("folded first"), std::string::npos) << rings->placement;
 }
 
 // Four planes tilted 30 degrees from the axis, each cutting a sector of the top rim off a

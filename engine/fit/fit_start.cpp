@@ -1,9 +1,5 @@
 #include "engine/fit/fit_start.hpp"
 
-#include <cstdio>
-
-#include "engine/fit/lobed_saddle.hpp"
-#include "engine/fit/surface_samples.hpp"
 #include "engine/fit/work_share.hpp"
 
 namespace curvefold {
@@ -28,35 +24,9 @@ FitStart chooseFitStart(const FoldFitter& fitter, const std::string& kind,
   FitStart out;
   const bool symmetric = symmetry.has_value();
   out.choice = chooseStart(fitter.measuredTarget(), kind, symmetric ? *symmetry : "", work);
-  // The rule's sheet as chosen, before its first step revises it: a lobed saddle's rings start
-  // from it, as they did when the saddle's axis was read as a revolution's (saddle25).
-  const StartChoice chosen = out.choice;
   // Toward a saddle (smooth, no axis) the start is the one whose first step lands nearest: a
   // flat sheet's cross of pleats beats a swept parabola that starts nearer.
   if (!symmetric) out.firstStep = reviseByFirstStep(out.choice, fitter, kind, work);
-  // Toward a lobed saddle, the rule's sheet with rings about its axis of order k folded first,
-  // a runner-up beside the pleats (lobed_saddle.hpp): on bench/make_polygon_saddles.py's k4 the
-  // rings came nearer (docs/performance.md, saddle25 and saddle26).
-  if (!symmetric && !chosen.creased && fitter.smoothTarget() && !fitter.revolutionTarget()) {
-    const FitSettings& settings = fitter.settings();
-    if (const std::optional<LobedAxis> lobed = lobedSaddleAxis(
-            sampleSurface(fitter.target(), settings.targetSamples, settings.seed + 1))) {
-      const PlacedStart flat{
-          chosen.surface, chosen.parameters, chosen.placement,
-          chosen.placed ? *chosen.placed : makeSurface(chosen.surface, chosen.parameters)};
-      if (std::optional<PlacedStart> ringed = ringedStart(flat, fitter, *lobed, work)) {
-        RunnerUpStart runnerUp;
-        runnerUp.surface = ringed->surface;
-        runnerUp.parameters = ringed->parameters;
-        runnerUp.placed = std::move(ringed->sheet);
-        runnerUp.placement = ringed->placement;
-        char why[64];
-        std::snprintf(why, sizeof why, "rings about its lobes' axis of order %d", lobed->order);
-        runnerUp.why = why;
-        out.choice.runnersUp.push_back(std::move(runnerUp));
-      }
-    }
-  }
   // Toward a vase, the cone around its profile where its rings land nearer than the start's
   // (rings only narrow a tube: a belly outside the start is never reached). The probe's rings
   // are handed to the search, which grows them on.

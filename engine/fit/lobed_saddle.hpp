@@ -1,5 +1,5 @@
-// Rings about a lobed saddle's axis, folded first (issue 38, 2): a runner-up start toward a saddle
-// of k >= 3 lobes (fit_start.hpp), beside the pleats its first step chose.
+// A lobed saddle's axis (issue 38, 2): the axis of a saddle of k >= 3 lobes, about which rings
+// once folded it (saddle25).
 //
 // Why: revolutionAxis (profile_folds.hpp) refuses a saddle's axis where its height swings with
 // the turn (saddle25), which took rings from every saddle. On bench/make_polygon_saddles.py's
@@ -13,21 +13,15 @@
 // (saddle_rect_30 and saddle_long from the square, 9.70% and 12.0% Hausdorff against 2.40% and
 // 4.23%, saddle25). Defined in profile_folds.cpp, beside the reading it shares.
 //
-// ringedStart: the flat sheet with rings about that axis folded first, greedily: each step the
-// best ring of suggestRings (profile_folds.hpp) and of suggestNestedRings (nested_rings.hpp), each
-// measured exactly (kRingedSamples a side) by Chamfer + 0.5 Hausdorff (startByFirstStep's score),
-// kept while it lowers that by kRingedLeastGain, up to kRingedSteps rings. The fit folds on from
-// it without an axis (its pleats and single folds). None where no ring helps.
-// Known limits: the rings are chosen by the fitter's score counting the target in full (the
-// saddle's); their planes are made on the sheet once and not refitted after later folds.
+// Tried, not kept (docs/performance.md, saddle26): the rule's sheet with up to 4 rings about this
+// axis folded first (suggestRings and suggestNestedRings, greedily, measured exactly), offered as
+// a runner-up start: on polygon_saddle_k4 its fit ended at 7.3% / 1.57% from the square, 7.24% /
+// 1.56% from the rectangle, nearer by Hausdorff only, so never kept, for 48% more CPU.
 #pragma once
 
 #include <optional>
 #include <vector>
 
-#include "engine/fit/deadline.hpp"
-#include "engine/fit/fold_fit.hpp"
-#include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
 
 namespace curvefold {
@@ -42,11 +36,5 @@ inline constexpr int kLeastLobes = 3;
 
 std::optional<LobedAxis> lobedSaddleAxis(const std::vector<SurfaceSample>& samples,
                                          double maxSpread = 0.1);
-
-inline constexpr std::size_t kRingedSteps = 4, kRingedSamples = 1500;
-inline constexpr double kRingedLeastGain = 0.02;
-
-std::optional<PlacedStart> ringedStart(const PlacedStart& flat, const FoldFitter& fitter,
-                                       const LobedAxis& lobed, const Deadline& deadline);
 
 }  // namespace curvefold
