@@ -21,6 +21,7 @@
 
 #include "engine/fit/first_step_start.hpp"
 #include "engine/fit/fold_fit.hpp"
+#include "engine/fit/lobed_saddle.hpp"
 #include "engine/fit/placed_start.hpp"
 #include "engine/fit/profile_folds.hpp"
 #include "engine/fit/ring_folds.hpp"
@@ -225,6 +226,70 @@ TEST(RevolutionAxis, IsNotFoundOnAMonkeySaddleOverATriangle) {
   ASSERT_TRUE(axis);
   const glm::dvec3 expected = turned({0, 0, 1}, tilt, 40.0);
   EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
+}
+
+// A height field z(x, y) over the square [-half, half]^2 (its corners at 45 degrees), a grid of
+// `cells` a side.
+template <typename Height>
+TriangleMesh overSquare(Height height, double half, int cells) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      const double x = half * (2.0 * i / cells - 1.0), y = half * (2.0 * j / cells - 1.0);
+      mesh.positions.emplace_back(x, y, height(x, y));
+    }
+  const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// A saddle of four lobes, z = 0.4 rho^4 cos(4 t) / R^3 over a square of corner radius R = 10 cm
+// (its corners on the falling lobes, slope 1.6 there: bench/make_polygon_saddles.py's k4), tilted.
+TriangleMesh fourLobedSaddle(const glm::dvec3& tilt) {
+  const double half = 0.1 / std::numbers::sqrt2, cube = 0.1 * 0.1 * 0.1;
+  TriangleMesh mesh = overSquare(
+      [&](double x, double y) {
+        return 0.4 * (x * x * x * x - 6.0 * x * x * y * y + y * y * y * y) / cube;
+      },
+      half, 40);
+  for (glm::dvec3& p : mesh.positions) p = turned(p, tilt, 40.0) + glm::dvec3(0.02, 0.05, -0.03);
+  return mesh;
+}
+
+// The axis revolutionAxis refuses on a lobed saddle for its swing is read with the lobes' order:
+// 4 on the saddle over a square, 3 on the monkey saddle over a triangle; a dish has its own axis
+// and no lobed one.
+TEST(LobedSaddleAxis, IsReadWithTheLobesOrder) {
+  const glm::dvec3 tilt(0.4, -1.0, 0.3);
+  const glm::dvec3 expected = turned({0, 0, 1}, tilt, 40.0);
+  const std::vector<SurfaceSample> four = sampleSurface(fourLobedSaddle(tilt), 2000, 3);
+  EXPECT_FALSE(revolutionAxis(four));
+  const std::optional<LobedAxis> lobed = lobedSaddleAxis(four);
+  ASSERT_TRUE(lobed);
+  EXPECT_EQ(lobed->order, 4);
+  EXPECT_GT(std::abs(glm::dot(lobed->axis.direction, expected)),
+            std::cos(2.0 * std::numbers::pi / 180));
+  const double radius = 0.1;
+  auto placed = [&](TriangleMesh mesh) {
+    for (glm::dvec3& p : mesh.positions) p = turned(p, tilt, 40.0);
+    return mesh;
+  };
+  const std::optional<LobedAxis> monkey = lobedSaddleAxis(
+      sampleSurface(placed(overTriangle(
+                        [&](double x, double y) {
+                          return 0.8 * (x * x * x - 3.0 * x * y * y) / (radius * radius);
+                        },
+                        radius, 40)),
+                    2000, 3));
+  ASSERT_TRUE(monkey);
+  EXPECT_EQ(monkey->order, 3);
+  EXPECT_FALSE(lobedSaddleAxis(sampleSurface(
+      placed(overTriangle([](double x, double y) { return 4.0 * (x * x + y * y); }, radius, 40)),
+      2000, 3)));
 }
 
 // Four planes tilted 30 degrees from the axis, each cutting a sector of the top rim off a

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/fit/eigen_glm.hpp"
+#include "engine/fit/lobed_saddle.hpp"
 #include "engine/fit/subplex.hpp"
 #include "engine/fit/unit_draw.hpp"
 #include "engine/geometry/principal_moments.hpp"
@@ -162,7 +163,10 @@ double plainSpread(const std::vector<SurfaceSample>& samples, const RevolutionAx
 // are scattered along its length, no harmonic holds them. Asked only where the axis holds by radius
 // alone (its spread by height above the bound): a mug's handle swings a cup's heights by radius,
 // but its walls keep one radius at each height.
-bool swingsWithTurn(const std::vector<SurfaceSample>& samples, const RevolutionAxis& axis) {
+// `order` and `share`, when given: the order whose harmonic holds most of the swing's mean square
+// (summed over the bins as weighted), and its share of it.
+bool swingsWithTurn(const std::vector<SurfaceSample>& samples, const RevolutionAxis& axis,
+                    int* order = nullptr, double* share = nullptr) {
   constexpr int kOrders = 6;
   constexpr int kTerms = 2 * kOrders + 1;
   constexpr int kSectors = 12;              // the turn's sectors a bin must cover, all but one
@@ -187,6 +191,7 @@ bool swingsWithTurn(const std::vector<SurfaceSample>& samples, const RevolutionA
              std::clamp(static_cast<int>(polar[i].x / most * kBins), 0, kBins - 1))]
         .push_back(static_cast<int>(i));
   double swing = 0.0, rise = 0.0, swingSquares = 0.0, restSquares = 0.0, counted = 0.0;
+  std::array<double, kOrders + 1> byOrder{};  // each order's mean square, weighted
   std::optional<double> innermost;
   for (const std::vector<int>& bin : bins) {
     if (static_cast<int>(bin.size()) < kLeastPerBin) continue;
@@ -226,9 +231,15 @@ bool swingsWithTurn(const std::vector<SurfaceSample>& samples, const RevolutionA
     swing += n * std::sqrt(harmonic);
     rise += n * std::abs(c(0) - *innermost);
     swingSquares += n * harmonic;
+    for (int k = 2; k <= kOrders; ++k)
+      byOrder[static_cast<std::size_t>(k)] +=
+          n * 0.5 * (c(2 * k - 1) * c(2 * k - 1) + c(2 * k) * c(2 * k));
     counted += n;
     restSquares += rest;
   }
+  const auto leading = std::max_element(byOrder.begin() + 2, byOrder.end());
+  if (order) *order = static_cast<int>(leading - byOrder.begin());
+  if (share) *share = swingSquares > 0.0 ? *leading / swingSquares : 0.0;
   // Measurably (a flat sheet's heights differ by rounding alone): a thousandth of the reach.
   return innermost && swing > rise && swingSquares > restSquares && swing > 1e-3 * most * counted;
 }
@@ -266,10 +277,10 @@ RevolutionAxis polishedAxis(const std::vector<SurfaceSample>& samples,
   return best;
 }
 
-}  // namespace
-
-std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& samples,
-                                             double maxSpread) {
+// revolutionAxis's reading; `lobed`, when given, set to the least spread of the axes refused
+// for their swing alone (lobedSaddleAxis's, its order not yet asked).
+std::optional<RevolutionAxis> readAxis(const std::vector<SurfaceSample>& samples, double maxSpread,
+                                       std::optional<LobedAxis>* lobed) {
   if (samples.size() < 50) return {};
   std::vector<glm::dvec3> positions;
   positions.reserve(samples.size());
@@ -300,7 +311,13 @@ std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& s
     if (axis.spread < 0.0) continue;
     // A saddle's axis, no revolution's: held by radius alone, its heights swing with the turn.
     const auto saddle = [&](const RevolutionAxis& a, double heightSpread) {
-      return heightSpread > maxSpread && swingsWithTurn(samples, a);
+      LobedAxis read;
+      read.axis = a;
+      if (!(heightSpread > maxSpread && swingsWithTurn(samples, a, &read.order, &read.share)))
+        return false;
+      if (lobed && a.spread <= maxSpread && (!*lobed || a.spread < (*lobed)->axis.spread))
+        *lobed = read;
+      return true;
     };
     if (saddle(axis, byHeight)) continue;
     RevolutionAxis turned = axis;
@@ -317,6 +334,21 @@ std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& s
   // An oval cup or bowl (its cross-sections alike ovals, not circles): the axis about which its
   // shape along the turn spreads least (the nested rings follow its reach each way).
   if (oval && oval->spread <= maxSpread) return oval;
+  return {};
+}
+
+}  // namespace
+
+std::optional<RevolutionAxis> revolutionAxis(const std::vector<SurfaceSample>& samples,
+                                             double maxSpread) {
+  return readAxis(samples, maxSpread, nullptr);
+}
+
+std::optional<LobedAxis> lobedSaddleAxis(const std::vector<SurfaceSample>& samples,
+                                         double maxSpread) {
+  std::optional<LobedAxis> lobed;
+  if (readAxis(samples, maxSpread, &lobed)) return {};
+  if (lobed && lobed->order >= kLeastLobes && lobed->share >= kLobedOrderShare) return lobed;
   return {};
 }
 
