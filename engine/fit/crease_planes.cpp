@@ -342,8 +342,9 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
     std::vector<std::size_t> inside;
     for (std::size_t i : open)
       if (holds(best.plane, sharp[i])) inside.push_back(i);
-    if (const std::optional<CreaseLine> line =
-            straightCrease(sharp, inside, tolerance, best.plane.normal)) {
+    const std::optional<CreaseLine> line =
+        straightCrease(sharp, inside, tolerance, best.plane.normal);
+    if (line) {
       const ReflectionPlane refined{line->point, line->normal};
       const double s = support(refined);
       if (s >= 0.98 * best.support) best = {refined, s};
@@ -358,8 +359,12 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
     inside.clear();
     for (std::size_t i : open)
       if (holds(best.plane, sharp[i])) inside.push_back(i);
-    if (const std::optional<CreasePlane> tight = tightPlane(
-            sharp, inside, holdsWithin, kTightTolerance * diagonal, options.seed + planes.size())) {
+    // A straight crease's plane is refitted to its whole line above (three of its points and a
+    // stub of another crease beside it name a plane turned about it).
+    if (const std::optional<CreasePlane> tight =
+            line ? std::nullopt
+                 : tightPlane(sharp, inside, holdsWithin, kTightTolerance * diagonal,
+                              options.seed + planes.size())) {
       // The normal's sign as the consensus read it (a fold's plane faces the way it was read).
       const ReflectionPlane plane{tight->plane.point,
                                   glm::dot(tight->plane.normal, best.plane.normal) < 0.0
