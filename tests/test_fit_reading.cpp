@@ -333,6 +333,25 @@ TEST(FitReading, AReadFoldThatLeavesASliverIsMadeThroughTheVerticesItAllButMeets
   EXPECT_TRUE(check.passed()) << check.firstFailure();
 }
 
+// Four folds on the half cylinder, each plane through two vertices of the form (the two-vertex
+// generator, seed 25): folds 2-4 lie in nearly one plane (normals within 3 degrees, offsets within
+// 1.5 mm), their creases laid along each other. The plane read for fold 3 held fold 2's crease
+// beside its own within the consensus tolerance and lay 8e-5 of the diagonal off fold 3's plane
+// by fold 2's crease: a vertex of fold 2's crease fell within the unfolding's on-plane tolerance,
+// the piece reflected stopped short of it, and the form left read as planes no fold made (5 folds,
+// 174% of the diagonal of crease left). A crease is read in the plane that holds most of it to
+// the digits the mesh keeps: the 4 folds, on the sheet.
+TEST(FitReading, OverlaidCreasesOfNearlyCoplanarFoldsAreReadInTheirOwnPlanes) {
+  expectUnfoldsOntoItsSheet("two_vertex_half_cylinder_4", 4);
+  const ReachTarget t = reachTarget("two_vertex_half_cylinder_4");
+  FoldSession session(t.initial);
+  const FitResult result = fitFolds(session, FoldFitter(t.target), clockFree(8, 300));
+  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  EXPECT_EQ(session.foldCount(), 4u);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-6);
+  testing::expectInvariants(session.fixed(), session.initial());
+}
+
 // Two points a hair off a plane, on either side and far apart (a turn and a shift), and one far
 // off it: the plane nearest it through both, the far point left where it was.
 TEST(SnappedPlane, APlaneIsTurnedAndShiftedThroughThePointsItAllButMeets) {

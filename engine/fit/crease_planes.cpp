@@ -144,6 +144,43 @@ std::vector<std::size_t> edgesAlong(const std::vector<SharpEdge>& sharp,
   return on;
 }
 
+// How near (of the diagonal) a fold's own crease lies in its plane: a mesh written to full
+// precision keeps it to 1e-9, one written to six digits to about 1e-6.
+constexpr double kTightTolerance = 2e-6;
+constexpr int kTightHypotheses = 200;
+
+// Of `inside` (sharp edges a plane holds within the consensus tolerance), the plane through
+// three of their end points far apart that holds the most of their length within `within`
+// (`holds(plane, edge, within)`), where it holds more than half of it; none where no wide triangle
+// is drawn (a straight crease: its points leave the plane free to turn about it).
+template <typename Holds>
+std::optional<CreasePlane> tightPlane(const std::vector<SharpEdge>& sharp,
+                                      const std::vector<std::size_t>& inside, Holds holds,
+                                      double within, std::uint64_t seed) {
+  if (inside.size() < 3) return std::nullopt;
+  double total = 0.0;
+  for (std::size_t i : inside) total += sharp[i].length;
+  std::mt19937_64 random(seed);
+  auto draw = [&]() -> const SharpEdge& {
+    return sharp[inside[std::size_t(unit(random) * inside.size()) % inside.size()]];
+  };
+  std::optional<CreasePlane> best;
+  for (int k = 0; k < kTightHypotheses; ++k) {
+    const glm::dvec3 a = draw().a, b = draw().b, c = draw().a;
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    if (glm::length(n) < 1e-2 * glm::distance(a, b) * glm::distance(a, c) ||
+        !(glm::length(n) > 0.0))
+      continue;
+    const ReflectionPlane plane{a, glm::normalize(n)};
+    double held = 0.0;
+    for (std::size_t i : inside)
+      if (holds(plane, sharp[i], within)) held += sharp[i].length;
+    if (!best || held > best->support) best = CreasePlane{plane, held};
+  }
+  if (!best || !(best->support > 0.5 * total)) return std::nullopt;
+  return best;
+}
+
 constexpr double kMinimumSharpDegrees = 4.0;
 // A crease this long (of the diagonal) names a plane: a fold of a corner makes a short one.
 constexpr double kMinimumSupport = 0.005;
@@ -241,9 +278,9 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
   // along an edge of a curved sheet's facets, its faces come from two facets, which bent apart
   // by up to two thirds of it before the fold.
   const double consistent = std::cos(options.minDihedralDegrees * std::numbers::pi / 180.0);
-  auto holds = [&](const ReflectionPlane& plane, const SharpEdge& e) {
-    if (std::abs(plane.signedDistance(e.a)) > tolerance ||
-        std::abs(plane.signedDistance(e.b)) > tolerance)
+  auto holdsWithin = [&](const ReflectionPlane& plane, const SharpEdge& e, double within) {
+    if (std::abs(plane.signedDistance(e.a)) > within ||
+        std::abs(plane.signedDistance(e.b)) > within)
       return false;
     // A reflection turns a face over: the fold's plane mirrors one face's normal onto the
     // other's reversed. The plane across it through the crease mirrors it onto the other's
@@ -251,6 +288,9 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
     // which would otherwise hold them all.
     const glm::dvec3 mirrored = e.na - 2.0 * glm::dot(e.na, plane.normal) * plane.normal;
     return -glm::dot(mirrored, e.nb) >= consistent;
+  };
+  auto holds = [&](const ReflectionPlane& plane, const SharpEdge& e) {
+    return holdsWithin(plane, e, tolerance);
   };
   auto support = [&](const ReflectionPlane& plane) {
     double total = 0.0;
@@ -302,14 +342,40 @@ std::vector<CreasePlane> findCreasePlanes(const TriangleMesh& mesh,
     std::vector<std::size_t> inside;
     for (std::size_t i : open)
       if (holds(best.plane, sharp[i])) inside.push_back(i);
-    if (const std::optional<CreaseLine> line =
-            straightCrease(sharp, inside, tolerance, best.plane.normal)) {
+    const std::optional<CreaseLine> line =
+        straightCrease(sharp, inside, tolerance, best.plane.normal);
+    if (line) {
       const ReflectionPlane refined{line->point, line->normal};
       const double s = support(refined);
       if (s >= 0.98 * best.support) best = {refined, s};
     }
+    // Near-coplanar folds lay their creases along each other: a plane within the tolerance of
+    // both may hold edges of each and so lie up to the tolerance off the fold's own plane, enough
+    // to leave a crease vertex of the other fold on the wrong side of it (the unfolding then
+    // reflects a piece short of that vertex). A fold's own crease lies in its plane to the digits
+    // the mesh keeps: where a plane through three of the edges holds most of them (by length)
+    // within kTightTolerance, that plane is the fold's. Its own random draws, so the planes read
+    // after it are drawn as before.
+    inside.clear();
     for (std::size_t i : open)
-      if (holds(best.plane, sharp[i])) used[i] = 1;
+      if (holds(best.plane, sharp[i])) inside.push_back(i);
+    // A straight crease's plane is refitted to its whole line above (three of its points and a
+    // stub of another crease beside it name a plane turned about it).
+    if (const std::optional<CreasePlane> tight =
+            line ? std::nullopt
+                 : tightPlane(sharp, inside, holdsWithin, kTightTolerance * diagonal,
+                              options.seed + planes.size())) {
+      // The normal's sign as the consensus read it (a fold's plane faces the way it was read).
+      const ReflectionPlane plane{tight->plane.point,
+                                  glm::dot(tight->plane.normal, best.plane.normal) < 0.0
+                                      ? -tight->plane.normal
+                                      : tight->plane.normal};
+      best = {plane, support(plane)};
+      inside.clear();
+      for (std::size_t i : open)
+        if (holds(best.plane, sharp[i])) inside.push_back(i);
+    }
+    for (std::size_t i : inside) used[i] = 1;
     planes.push_back(best);
   }
   return planes;
