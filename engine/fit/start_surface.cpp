@@ -562,6 +562,20 @@ StartChoice chooseStart(const MeasuredSurface& measured, const std::string& kind
         best.widestTube = true;
       } else if (ranked && reachTube < kTubeRingsGain * kRunnerUpMargin * reachNow) {
         runnerUp(tube->surface, tube->parameters, tube->sheet, tube->placement, numbers);
+      } else if (ranked) {
+        // Ranked by hulls whose ends may stand level (a lip flared above a neck cut in), the
+        // tube a runner-up where it reaches: kept only where its fit ends nearer by both
+        // (as the rule's model it traded Hausdorff for Chamfer on four vases, open25).
+        const double trimmedNow =
+            tubeRingsReach(now, samples, *axis, TubeHull::EndsMayStandLevel).value_or(kNone);
+        const double trimmedTube =
+            tubeRingsReach(tube->sheet, samples, *axis, TubeHull::EndsMayStandLevel)
+                .value_or(kNone);
+        if (trimmedTube < kTubeRingsGain * trimmedNow)
+          runnerUp(tube->surface, tube->parameters, tube->sheet, tube->placement,
+                   "the widest tube's rings " + lengthText(trimmedTube, metres) + ", the " +
+                       best.surface + "'s " + lengthText(trimmedNow, metres) +
+                       ", their hulls' ends standing level");
       }
     }
   // A tube toward a smooth target of revolution is as wide as its belly: the rings that fold

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -38,7 +40,7 @@ std::vector<double> upperConcaveHull(const std::vector<glm::dvec2>& profile) {
 }
 
 std::optional<double> tubeRingsReach(const Sheet& tube, const std::vector<SurfaceSample>& samples,
-                                     const RevolutionAxis& axis) {
+                                     const RevolutionAxis& axis, TubeHull hullKind) {
   const std::optional<TubeAxis> own = tubeAbout(tube, axis.direction);
   const std::optional<HeightBands> bands = heightBands(samples, axis.point, axis.direction);
   if (!own || !bands) return std::nullopt;
@@ -59,15 +61,27 @@ std::optional<double> tubeRingsReach(const Sheet& tube, const std::vector<Surfac
   const double slope = varianceH > 0.0 ? (sumHR / n - (sumH / n) * (sumR / n)) / varianceH : 0.0;
   const double intercept = sumR / n - slope * sumH / n;
   const std::vector<glm::dvec2>& profile = bands->profile;
-  const std::vector<double> hull = upperConcaveHull(profile);
-  double sum = 0.0, most = 0.0;
-  for (std::size_t i = 0; i < profile.size(); ++i) {
-    const double envelope = std::min(intercept + slope * profile[i].x, hull[i]);
-    const double gap = std::abs(envelope - profile[i].y);
-    sum += gap;
-    most = std::max(most, gap);
-  }
-  return sum / static_cast<double>(profile.size()) + kProfileFarthest * most;
+  const std::size_t bandCount = profile.size();
+  const std::size_t trims = hullKind == TubeHull::EndsMayStandLevel ? bandCount / 4 : 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t low = 0; low <= trims; ++low)
+    for (std::size_t high = 0; high <= trims; ++high) {  // low + high <= half the bands
+      const std::vector<glm::dvec2> kept(profile.begin() + static_cast<std::ptrdiff_t>(low),
+                                         profile.end() - static_cast<std::ptrdiff_t>(high));
+      const std::vector<double> hull = upperConcaveHull(kept);
+      double sum = 0.0, most = 0.0;
+      for (std::size_t i = 0; i < bandCount; ++i) {
+        const double standing = i < low                 ? hull.front()
+                                : i >= bandCount - high ? hull.back()
+                                                        : hull[i - low];
+        const double envelope = std::min(intercept + slope * profile[i].x, standing);
+        const double gap = std::abs(envelope - profile[i].y);
+        sum += gap;
+        most = std::max(most, gap);
+      }
+      best = std::min(best, sum / static_cast<double>(bandCount) + kProfileFarthest * most);
+    }
+  return best;
 }
 
 }  // namespace curvefold

@@ -13,6 +13,12 @@
 // hull's chord passes over it (no ring turns a part back out). The reach is the mean of |e - r|
 // over the target's height bands plus a quarter of its largest (the goal's Hausdorff beside its
 // Chamfer, nested_rings.hpp's kProfileFarthest), in the target's units.
+// TubeHull::EndsMayStandLevel: an end past the last ring may stand level at the radius that ring
+// left it: the hull may leave out up to a quarter of the bands at either end, held at its end
+// band's radius over them, the reach the least over those hulls (a lip flared over a band above a
+// neck is cut in, not bridged to from the belly: bench/make_stl_soup_targets.py's open_vase_mm,
+// open25). It ranks the widest tube a runner-up only (start_surface.cpp, open26): as the rule's
+// model it traded Hausdorff for Chamfer on four vases.
 //
 // Inputs: a sheet (a cone or a cylinder, as placed), the target's area-uniform samples and its
 // axis of revolution. Output: the reach, or none where the sheet is no tube about the axis
@@ -33,8 +39,11 @@
 
 namespace curvefold {
 
+enum class TubeHull { Whole, EndsMayStandLevel };
+
 std::optional<double> tubeRingsReach(const Sheet& tube, const std::vector<SurfaceSample>& samples,
-                                     const RevolutionAxis& axis);
+                                     const RevolutionAxis& axis,
+                                     TubeHull hullKind = TubeHull::Whole);
 
 // The upper concave hull of profile points (height, radius) sorted by height, evaluated at each
 // point's height (tubeRingsReach's H): exposed for its test.
