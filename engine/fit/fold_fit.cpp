@@ -19,6 +19,7 @@
 
 #include "engine/fit/crease_planes.hpp"
 #include "engine/fit/floor_rings.hpp"
+#include "engine/fit/lip_pleats.hpp"
 #include "engine/fit/nested_rings.hpp"
 #include "engine/fit/pleat_folds.hpp"
 #include "engine/fit/profile_folds.hpp"
@@ -964,6 +965,17 @@ std::vector<FoldSuggestion> FoldFitter::suggest(FoldSession& session, std::size_
         floors.push_back(std::move(closed));
     if (!floors.empty()) {
       for (FoldSuggestion& floor : floors) suggestions.push_back(std::move(floor));
+      std::stable_sort(suggestions.begin(), suggestions.end(),
+                       [](const auto& a, const auto& b) { return a.after < b.after; });
+    }
+  }
+  // Toward a flare standing out of a bare cone's wide end, pleats across the axis that step its
+  // lip out (lip_pleats.hpp): rings only turn parts toward the axis.
+  if (target.axis && !folding.symmetric) {
+    std::vector<FoldSuggestion> lips =
+        suggestLipPleats(session, *this, *target.axis, target.queries, deadline);
+    if (!lips.empty()) {
+      for (FoldSuggestion& lip : lips) suggestions.push_back(std::move(lip));
       std::stable_sort(suggestions.begin(), suggestions.end(),
                        [](const auto& a, const auto& b) { return a.after < b.after; });
     }

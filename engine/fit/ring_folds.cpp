@@ -207,7 +207,8 @@ std::optional<std::array<RingShape, 2>> neckPleat(const std::vector<SurfaceSampl
   return std::array<RingShape, 2>{in, back};
 }
 
-std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction) {
+std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction,
+                                  double steepestTaper) {
   if (sheet.positions.size() < 4) return std::nullopt;
   // The middle of its bounding box: a tube's seam has its vertices twice, which pulls the
   // centroid toward it.
@@ -265,7 +266,7 @@ std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& directio
     if (!(radius > 0.0) || highest - lowest < 0.5 * radius) continue;
     const double meanH = sumH / n, varianceH = sumHH / n - meanH * meanH;
     const double slope = varianceH > 0.0 ? (sumHR / n - meanH * radius) / varianceH : 0.0;
-    if (std::abs(slope) > kTubeRingSteepestTaper) continue;
+    if (std::abs(slope) > steepestTaper) continue;
     double nearest = 1e300, farthest = -1e300;
     for (const glm::dvec2& hr : profile) {
       const double off = hr.y - (radius + slope * (hr.x - meanH));

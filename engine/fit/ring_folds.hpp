@@ -93,11 +93,13 @@ inline constexpr double kTubeHausdorffWeight = 0.25;
 
 // The tube or cone `sheet` is about a line along `direction` (its axis through the middle of the
 // sheet's box across it, its mean radius), or none when it is no such tube (see above).
+// `steepestTaper`: the steepest cone taken (lip_pleats.hpp takes steeper ones).
 struct TubeAxis {
   RevolutionAxis axis;
   double radius = 0.0;
 };
-std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction);
+std::optional<TubeAxis> tubeAbout(const Sheet& sheet, const glm::dvec3& direction,
+                                  double steepestTaper = kTubeRingSteepestTaper);
 
 // A neck pleat: a ring cut in and turned back out (as a paper artist pleats a collar), for a
 // waist under a flaring lip, which a ring's planes alone cut only as deep as they cut the lip
