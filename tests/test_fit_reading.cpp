@@ -129,17 +129,14 @@ FitOptions clockFree(std::size_t maxFolds, std::size_t evaluations) {
 }
 
 // Fits `target` from `session`'s sheet (its symmetry set) with no time limit, and expects the
-// unfolding to name every fold and the fit to reach the target; returns what the fit did.
+// unfolding to name every fold and the fit to reach the target (within `within` of its
+// diagonal); returns what the fit did.
 FitResult expectFoundByUnfolding(FoldSession& session, const TriangleMesh& target,
-                                 std::size_t maxFolds, std::size_t evaluations) {
-  const FoldFitter fitter(target);
-  FitOptions options;
-  options.maxFolds = maxFolds;
-  options.seconds = std::numeric_limits<double>::infinity();
-  options.maxEvaluations = evaluations;
-  FitResult result = fitFolds(session, fitter, options);
+                                 std::size_t maxFolds, std::size_t evaluations,
+                                 double within = 1e-3) {
+  FitResult result = fitFolds(session, FoldFitter(target), clockFree(maxFolds, evaluations));
   EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), 1e-3);
+  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), target).relativeHausdorff(), within);
   testing::expectInvariants(session.fixed(), session.initial());
   return result;
 }
@@ -306,11 +303,8 @@ TEST(FitReading, ACreaseALaterFoldCutIsReadAfterTheFoldsThatCutIt) {
 TEST(FitReading, AReadPlaneThatPassesSheetVerticesByAHairFoldsThroughThem) {
   const ReachTarget t = reachTarget("most_moved_helix_tangent_7");
   FoldSession session(t.initial);
-  const FitResult result = fitFolds(session, FoldFitter(t.target), clockFree(8, 300));
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  expectFoundByUnfolding(session, t.target, 8, 300, 1e-6);
   EXPECT_EQ(session.foldCount(), 7u);
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-6);
-  testing::expectInvariants(session.fixed(), session.initial());
 }
 
 // Six folds, each through a vertex of the sheet as it lay (the most-moved cone, seed 21): fold 3's
@@ -322,11 +316,8 @@ TEST(FitReading, AReadPlaneThatPassesSheetVerticesByAHairFoldsThroughThem) {
 TEST(FitReading, AReadFoldThatLeavesASliverIsMadeThroughTheVerticesItAllButMeets) {
   const ReachTarget t = reachTarget("most_moved_cone_6");
   FoldSession session(t.initial);
-  const FitResult result = fitFolds(session, FoldFitter(t.target), clockFree(8, 300));
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  const FitResult result = expectFoundByUnfolding(session, t.target, 8, 300, 1e-6);
   EXPECT_EQ(session.foldCount(), 6u);
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-6);
-  testing::expectInvariants(session.fixed(), session.initial());
   const session::DesignCheck check =
       session::checkDesign(Design(GeneratedSurface{"cone", {}}, result.folds), "fitted", t.initial,
                            session.fixed(), false);
@@ -345,11 +336,8 @@ TEST(FitReading, OverlaidCreasesOfNearlyCoplanarFoldsAreReadInTheirOwnPlanes) {
   expectUnfoldsOntoItsSheet("two_vertex_half_cylinder_4", 4);
   const ReachTarget t = reachTarget("two_vertex_half_cylinder_4");
   FoldSession session(t.initial);
-  const FitResult result = fitFolds(session, FoldFitter(t.target), clockFree(8, 300));
-  EXPECT_EQ(result.stopReason, "the target unfolded: its creases named every fold");
+  expectFoundByUnfolding(session, t.target, 8, 300, 1e-6);
   EXPECT_EQ(session.foldCount(), 4u);
-  EXPECT_LE(surfaceDistance(meshOf(session.fixed()), t.target).relativeHausdorff(), 1e-6);
-  testing::expectInvariants(session.fixed(), session.initial());
 }
 
 // Two points a hair off a plane, on either side and far apart (a turn and a shift), and one far

@@ -174,33 +174,39 @@ TEST(RevolutionAxis, IsFoundOnASquatLampshade) {
   EXPECT_GT(std::abs(glm::dot(axis->direction, expected)), std::cos(2.0 * std::numbers::pi / 180));
 }
 
-// A height field z(x, y) over the equilateral triangle of circumradius `radius` whose corners
-// lie at 60, 180 and 300 degrees, as a grid of `cells` a side whose triangles inside it are kept.
-template <typename Height>
-TriangleMesh overTriangle(Height height, double radius, int cells) {
+// A height field z(x, y) over the square [-half, half]^2 as a grid of `cells` a side, each cell
+// cut in two triangles, kept where `keep` holds at the triangle's centroid.
+template <typename Height, typename Keep>
+TriangleMesh overGrid(Height height, double half, int cells, Keep keep) {
   TriangleMesh mesh;
   for (int j = 0; j <= cells; ++j)
     for (int i = 0; i <= cells; ++i) {
-      const double x = radius * (2.0 * i / cells - 1.0), y = radius * (2.0 * j / cells - 1.0);
+      const double x = half * (2.0 * i / cells - 1.0), y = half * (2.0 * j / cells - 1.0);
       mesh.positions.emplace_back(x, y, height(x, y));
     }
-  // Inside: on the inner side of each edge, whose outward normals point away from the corners.
-  const auto inside = [&](const glm::dvec3& p) {
-    for (const double degrees : {0.0, 120.0, 240.0}) {
-      const double a = degrees * std::numbers::pi / 180.0;
-      if (p.x * std::cos(a) + p.y * std::sin(a) > 0.5 * radius) return false;
-    }
-    return true;
-  };
   const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
   for (int j = 0; j < cells; ++j)
     for (int i = 0; i < cells; ++i)
       for (const std::array<std::uint32_t, 3> t :
            {std::array<std::uint32_t, 3>{at(i, j), at(i + 1, j), at(i + 1, j + 1)},
             std::array<std::uint32_t, 3>{at(i, j), at(i + 1, j + 1), at(i, j + 1)}})
-        if (inside((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0))
+        if (keep((mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0))
           mesh.triangles.push_back(t);
   return mesh;
+}
+
+// A height field z(x, y) over the equilateral triangle of circumradius `radius` whose corners
+// lie at 60, 180 and 300 degrees, as a grid of `cells` a side whose triangles inside it are kept.
+template <typename Height>
+TriangleMesh overTriangle(Height height, double radius, int cells) {
+  // Inside: on the inner side of each edge, whose outward normals point away from the corners.
+  return overGrid(height, radius, cells, [&](const glm::dvec3& p) {
+    for (const double degrees : {0.0, 120.0, 240.0}) {
+      const double a = degrees * std::numbers::pi / 180.0;
+      if (p.x * std::cos(a) + p.y * std::sin(a) > 0.5 * radius) return false;
+    }
+    return true;
+  });
 }
 
 // A monkey saddle z = 0.8 (x^3 - 3 x y^2) / R^2 over a triangle of circumradius R = 10 cm whose
@@ -232,19 +238,7 @@ TEST(RevolutionAxis, IsNotFoundOnAMonkeySaddleOverATriangle) {
 // `cells` a side.
 template <typename Height>
 TriangleMesh overSquare(Height height, double half, int cells) {
-  TriangleMesh mesh;
-  for (int j = 0; j <= cells; ++j)
-    for (int i = 0; i <= cells; ++i) {
-      const double x = half * (2.0 * i / cells - 1.0), y = half * (2.0 * j / cells - 1.0);
-      mesh.positions.emplace_back(x, y, height(x, y));
-    }
-  const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
-  for (int j = 0; j < cells; ++j)
-    for (int i = 0; i < cells; ++i) {
-      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return mesh;
+  return overGrid(height, half, cells, [](const glm::dvec3&) { return true; });
 }
 
 // A saddle of four lobes, z = 0.4 rho^4 cos(4 t) / R^3 over a square of corner radius R = 10 cm

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <utility>
 
 #include <tbb/task_arena.h>
 
@@ -48,6 +49,14 @@ BarHingeModel squareTwist(double wrongSideScale = ModelOptions{}.wrongSideScale)
   ModelOptions options;
   options.wrongSideScale = wrongSideScale;
   return buildModel(readFoldCreasePatternText(testing::squareTwistFold(), "twist.fold"), options);
+}
+
+// `pattern` in metres as paper 0.1 mm thick, of the default modulus, with self-contact.
+BarHingeModel paperModelOf(CreasePattern pattern) {
+  scaleToMetres(pattern);
+  ModelOptions paper;
+  setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
+  return buildModel(pattern, paper);
 }
 
 // Creases past flat to the other side of their targets, or past flat-folded (through the
@@ -416,10 +425,7 @@ TEST(Simulation, PaperModeCircleCreaseFromAnSvgCircleSettles) {
       <rect width="60" height="60" stroke="black" fill="none"/>
       <circle cx="30" cy="30" r="16.2" stroke="blue" stroke-opacity="0.5" fill="none"/></svg>)",
       "circle.svg");
-  scaleToMetres(pattern);
-  ModelOptions paper;
-  setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
-  const BarHingeModel model = buildModel(pattern, paper);
+  const BarHingeModel model = paperModelOf(std::move(pattern));
   SimulationState state = flatState(model);
   const StaticOptions options;
   const StaticResult result = settle(model, 1.0, state, options);
@@ -500,10 +506,7 @@ std::string annulusFold(int rings, int segments) {
 // residual of 1.2 and ran out at 800).
 TEST(Simulation, PaperModeSoftStagesCutShortAreRunToTheirToleranceWhereTheSettleRunsOut) {
   CreasePattern pattern = readFoldCreasePatternText(annulusFold(6, 24), "annulus.fold");
-  scaleToMetres(pattern);
-  ModelOptions paper;
-  setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
-  const BarHingeModel model = buildModel(pattern, paper);
+  const BarHingeModel model = paperModelOf(std::move(pattern));
   StaticOptions options;
   options.maxIterations = 400;
   SimulationState state = flatState(model);
@@ -1337,10 +1340,7 @@ TEST(Simulation, PaperModeSettleWithThePapersBarsIsMadeOnceForThePatientRetry) {
   for (int i = 0; i < 4; ++i) line(60 * i, 80, 60 * (i + 1), 80, i % 2 ? "#FF0000" : "#0000FF");
   svg += "</svg>";
   CreasePattern pattern = readSvgCreasePatternText(svg, "map.svg");
-  scaleToMetres(pattern);
-  ModelOptions paper;
-  setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
-  const BarHingeModel model = buildModel(pattern, paper);
+  const BarHingeModel model = paperModelOf(std::move(pattern));
   StaticOptions options;
   options.maxIterations = 100;
   SimulationState state = flatState(model);
@@ -1368,10 +1368,7 @@ TEST(SimulationExternal, OrigamiSimulatorWaterbombAndBrochureSettleInPaperModeAt
   if (!root) GTEST_SKIP() << "CURVEFOLD_ORIGAMI_SIMULATOR_ASSETS is not set";
   for (const char* file : {"SimpleFolds/brochurefold.svg", "Tessellations/waterbomb.svg"}) {
     CreasePattern pattern = readSvgCreasePattern(std::filesystem::path(root) / file);
-    scaleToMetres(pattern);
-    ModelOptions paper;
-    setPaperMode(paper, 0.1, kDefaultPaperModulusGpa, true);
-    const BarHingeModel model = buildModel(pattern, paper);
+    const BarHingeModel model = paperModelOf(std::move(pattern));
     SimulationState state = flatState(model);
     const StaticResult result = settle(model, 1.0, state);
     EXPECT_TRUE(result.converged) << file << ": residual " << result.residual;

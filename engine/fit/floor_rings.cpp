@@ -128,12 +128,24 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
   const std::vector<FloorRingShape> shapes =
       floorRingShapes(session.fixed().positions, axis.point, *floor, heel);
   if (shapes.empty()) return std::nullopt;
-  const bool allowCrossing = fitter.settings().allowSelfIntersection;
-  const std::size_t crossingsBefore =
-      allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
   std::vector<Ring> rings;
   for (const FloorRingShape& shape : shapes)
     rings.push_back(floorRingOf(shape, axis.point, floor->toward, floor->height, heel));
+  const std::optional<std::vector<double>> scores =
+      floorMeasuresOf(session, fitter, rings, deadline);
+  if (!scores) return std::nullopt;
+  const auto best = std::min_element(scores->begin(), scores->end());
+  if (!(*best < current)) return std::nullopt;
+  return FloorRing{rings[static_cast<std::size_t>(best - scores->begin())], *best};
+}
+
+std::optional<std::vector<double>> floorMeasuresOf(const FoldSession& session,
+                                                   const FoldFitter& fitter,
+                                                   const std::vector<Ring>& rings,
+                                                   const Deadline& deadline) {
+  const bool allowCrossing = fitter.settings().allowSelfIntersection;
+  const std::size_t crossingsBefore =
+      allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
   std::vector<double> scores(rings.size(), 1e300);
   RingTrials trials(session, allowCrossing ? std::nullopt : std::optional(crossingsBefore));
   tbb::parallel_for(std::size_t{0}, rings.size(), [&](std::size_t r) {
@@ -143,10 +155,8 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
       scores[r] = floorMeasure(copy.fixed(), fitter);
     });
   });
-  if (deadline.passed()) return std::nullopt;  // the scores are partial
-  const auto best = std::min_element(scores.begin(), scores.end());
-  if (!(*best < current)) return std::nullopt;
-  return FloorRing{rings[static_cast<std::size_t>(best - scores.begin())], *best};
+  if (deadline.passed()) return std::nullopt;
+  return scores;
 }
 
 std::vector<FoldSuggestion> suggestFloorRing(const FoldSession& session, const FoldFitter& fitter,

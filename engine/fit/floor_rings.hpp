@@ -94,6 +94,15 @@ std::optional<FloorRing> bestFloorRing(const FoldSession& session, const FoldFit
 // The tube rings' measure of `sheet` against the fitter's target (see above).
 double floorMeasure(const Sheet& sheet, const FoldFitter& fitter);
 
+// Each ring made on its own copy of `session` (RingTrials, on all cores) and measured by
+// floorMeasure; a ring not made, or one passing the sheet through itself more than it did (unless
+// the fitter allows it), scores 1e300. std::nullopt where the deadline passed (the scores are
+// partial). One home for the floor ring's and the lip pleats' trials (lip_pleats.hpp).
+std::optional<std::vector<double>> floorMeasuresOf(const FoldSession& session,
+                                                   const FoldFitter& fitter,
+                                                   const std::vector<Ring>& rings,
+                                                   const Deadline& deadline);
+
 // The best floor ring as one step of the search (the session unchanged): its `after` the
 // search's distance before scaled by the measure's fall, as the tube rings' (ring_folds.hpp).
 // With `first` (a suggestion made on this session), the floor ring is made after its folds and

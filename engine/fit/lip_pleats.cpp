@@ -4,13 +4,10 @@
 #include <cmath>
 #include <cstddef>
 
-#include <tbb/parallel_for.h>
-
 #include <glm/geometric.hpp>
 
 #include "engine/fit/floor_rings.hpp"
 #include "engine/fit/ring_folds.hpp"
-#include "engine/geometry/self_intersection.hpp"
 
 namespace curvefold {
 
@@ -173,29 +170,19 @@ std::vector<FoldSuggestion> suggestLipPleats(const FoldSession& session, const F
   if (!cone) return {};
   const std::vector<std::vector<LipStep>> staircases = lipStaircases(*cone, targetSamples);
   if (staircases.empty()) return {};
-  const bool allowCrossing = fitter.settings().allowSelfIntersection;
-  const std::size_t crossingsBefore =
-      allowCrossing ? 0 : findSelfIntersections(session.fixed()).intersections.size();
   std::vector<Ring> rings;
   for (const std::vector<LipStep>& steps : staircases) rings.push_back(lipPleatRing(*cone, steps));
-  std::vector<double> scores(rings.size(), 1e300);
-  RingTrials trials(session, allowCrossing ? std::nullopt : std::optional(crossingsBefore));
-  tbb::parallel_for(std::size_t{0}, rings.size(), [&](std::size_t r) {
-    if (deadline.passed()) return;
-    deadline.countEvaluation();
-    trials.tryRing(rings[r], rings[r].planes.size(), [&](const FoldSession& copy) {
-      scores[r] = floorMeasure(copy.fixed(), fitter);
-    });
-  });
-  if (deadline.passed()) return {};  // the scores are partial
+  const std::optional<std::vector<double>> scores =
+      floorMeasuresOf(session, fitter, rings, deadline);
+  if (!scores) return {};
   const double measuredBefore = floorMeasure(session.fixed(), fitter);
-  const auto best = std::min_element(scores.begin(), scores.end());
+  const auto best = std::min_element(scores->begin(), scores->end());
   if (!(*best < measuredBefore)) return {};
   FoldSession grown(session.initial());
   const std::size_t base = session.foldCount();
   grown.applyRecords(std::vector<FoldRecord>(
       session.folds().begin(), session.folds().begin() + static_cast<std::ptrdiff_t>(base)));
-  makeRing(grown, rings[static_cast<std::size_t>(best - scores.begin())]);
+  makeRing(grown, rings[static_cast<std::size_t>(best - scores->begin())]);
   FoldSuggestion suggestion;
   suggestion.folds.assign(grown.folds().begin() + static_cast<std::ptrdiff_t>(base),
                           grown.folds().begin() + static_cast<std::ptrdiff_t>(grown.foldCount()));
