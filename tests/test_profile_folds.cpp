@@ -526,19 +526,24 @@ TEST(StartSurface, AScannedSquatVaseStartsAboutItsOwnAxis) {
   EXPECT_LT(any.chamfer, 1.1 * tube.chamfer) << any.placement;
 }
 
-// bench/make_judge20_shapes.py's vase about z: a belly low (5.5 cm), a foot of 3.9 cm, a neck
-// narrowing to 3 cm. The cone placed through its profile starts nearer, but its belly stands
-// outside it, where no ring reaches; without a kind asked for the start was that cone, whose
-// fit ended at 6.36% Hausdorff against 3.36% from the tube as wide as the belly (judge20). The
-// tubes' reach (tube_reach.hpp) now picks the widest tube.
-TEST(StartSurface, AVaseWhoseBellyStandsOutsideThePlacedConeStartsFromItsWidestTube) {
-  const TriangleMesh vase = revolved(
+// bench/make_judge20_shapes.py's vase about z, in metres (see below).
+TriangleMesh judge20Vase() {
+  return revolved(
       [](double h) {
         const double s = (h + 0.105) / 0.21;
         return 0.045 + 0.011 * std::sin(1.7 * std::numbers::pi * s) -
                0.006 * (2.0 * s - 1.0) * (2.0 * s - 1.0);
       },
       -0.105, 0.105, 48, 24);
+}
+
+// bench/make_judge20_shapes.py's vase about z: a belly low (5.5 cm), a foot of 3.9 cm, a neck
+// narrowing to 3 cm. The cone placed through its profile starts nearer, but its belly stands
+// outside it, where no ring reaches; without a kind asked for the start was that cone, whose
+// fit ended at 6.36% Hausdorff against 3.36% from the tube as wide as the belly (judge20). The
+// tubes' reach (tube_reach.hpp) now picks the widest tube.
+TEST(StartSurface, AVaseWhoseBellyStandsOutsideThePlacedConeStartsFromItsWidestTube) {
+  const TriangleMesh vase = judge20Vase();
   const StartChoice start = chooseStart(vase);
   ASSERT_TRUE(start.placed);
   EXPECT_EQ(start.surface, "cylinder") << start.placement;
@@ -548,13 +553,7 @@ TEST(StartSurface, AVaseWhoseBellyStandsOutsideThePlacedConeStartsFromItsWidestT
 // The same vase in millimetres: the start's note gives the rings' reach in the target's own
 // numbers, as the fit's lines do (target_units.hpp), not as metres it is not in ("2.28e+03 mm").
 TEST(StartSurface, AVaseInMillimetresIsToldItsRingsReachInItsOwnUnits) {
-  TriangleMesh vase = revolved(
-      [](double h) {
-        const double s = (h + 0.105) / 0.21;
-        return 0.045 + 0.011 * std::sin(1.7 * std::numbers::pi * s) -
-               0.006 * (2.0 * s - 1.0) * (2.0 * s - 1.0);
-      },
-      -0.105, 0.105, 48, 24);
+  TriangleMesh vase = judge20Vase();
   for (glm::dvec3& p : vase.positions) p *= 1000.0;
   const StartChoice start = chooseStart(vase);
   ASSERT_TRUE(start.placed);
@@ -570,13 +569,7 @@ TEST(StartSurface, AVaseInMillimetresIsToldItsRingsReachInItsOwnUnits) {
 // hundredfold that the check of a sheet keeps): its lengths are its own numbers too, not metres
 // (bench/make_stl_soup_targets.py's lamp_bulge_in, 18.7 inches across, printed "842 mm").
 TEST(StartSurface, AVaseInInchesIsToldItsRingsReachInItsOwnUnits) {
-  TriangleMesh vase = revolved(
-      [](double h) {
-        const double s = (h + 0.105) / 0.21;
-        return 0.045 + 0.011 * std::sin(1.7 * std::numbers::pi * s) -
-               0.006 * (2.0 * s - 1.0) * (2.0 * s - 1.0);
-      },
-      -0.105, 0.105, 48, 24);
+  TriangleMesh vase = judge20Vase();
   for (glm::dvec3& p : vase.positions) p /= 0.0254;
   EXPECT_FALSE(lengthsInMetres(boundingDiagonal(vase)));
   EXPECT_TRUE(lengthsInMetres(0.0254 * boundingDiagonal(vase)));  // the vase in metres
